@@ -1,0 +1,356 @@
+//! `FrameCapture`: everything one frame did, stage by stage — the matrices with their factors,
+//! the vertex table, the fate of every primitive, the raster triangles, the per-sample and
+//! per-pixel buffers — and the images made from them. The app shows it, the exporter writes it,
+//! the tests assert on it: a number comes from one place.
+
+use glam::{I64Vec2, Vec3};
+use image::{ImageBuffer, Luma, Rgba, RgbaImage};
+use serde::Serialize;
+
+use crate::clip::{ClipPlane, ClipVertex};
+use crate::overlay::{self, Overlay, OverlayKind, Shape};
+use crate::raster::{NONE, ONE, RasterCounts, RasterTriangle, SampleBuffers};
+use crate::scene::{Camera, Projection, RenderSettings};
+use crate::transform::NamedMatrix;
+use crate::vertex::VertexRecord;
+
+/// The matrices of the frame.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Matrices {
+    /// One model matrix per object, with its factors `T·Rz·Ry·Rx·S`.
+    pub models: Vec<NamedMatrix>,
+    /// The view matrix `LookAt(eye, at, up)`, with GAMES101's factors `R_view·T_view`.
+    pub view: NamedMatrix,
+    /// The projection in Angel's / OpenGL's form, with its factors.
+    pub projection: NamedMatrix,
+    /// The same projection in GAMES101's form (`M_ortho·M_persp→ortho`); equals
+    /// `−Z·P` (perspective) or `Z·P` (parallel) with `Z = diag(1, 1, −1, 1)`.
+    pub projection_games101: NamedMatrix,
+    /// The viewport transform.
+    pub viewport: NamedMatrix,
+}
+
+/// What happened to a primitive (an input triangle).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "fate")]
+pub enum Fate {
+    /// Entirely inside the view volume, rasterized as it is.
+    Drawn,
+    /// Partly inside: clipped, and the remaining polygon rasterized as triangles.
+    Clipped,
+    /// Entirely outside one plane of the view volume: dropped by clipping.
+    Outside {
+        /// The plane all three vertices are outside of.
+        plane: ClipPlane,
+    },
+    /// Discarded by face culling.
+    Culled {
+        /// `true` for a back face (clockwise on screen), `false` for a front face.
+        back: bool,
+    },
+    /// No area on screen after snapping to the sub-pixel grid: nothing to rasterize.
+    Degenerate,
+}
+
+/// The record of one primitive.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PrimitiveRecord {
+    /// The primitive id (triangles counted across objects in drawing order).
+    pub id: u32,
+    /// The object it belongs to.
+    pub object: u32,
+    /// Rows of the vertex table of its three vertices.
+    pub vertices: [u32; 3],
+    /// What happened to it.
+    #[serde(flatten)]
+    pub fate: Fate,
+    /// The polygon left after clipping, when it was clipped.
+    pub clipped_polygon: Option<Vec<ClipVertex>>,
+    /// Its raster triangles: indices `start..end` into [`FrameCapture::triangles`].
+    pub triangles: [u32; 2],
+    /// Samples covered and written (after the depth test), over all its raster triangles.
+    pub counts: RasterCounts,
+}
+
+/// Per-pixel buffers, top image row first (`index = row·width + column`).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct PixelBuffers {
+    /// Number of the pixel's samples that a primitive covers (after the depth test).
+    pub coverage: Vec<u8>,
+    /// Window depth `z_w ∈ [0, 1]`, the mean over the pixel's samples (cleared ones count as the
+    /// clear depth); with one sample, the depth at the pixel centre.
+    pub depth: Vec<f32>,
+    /// The primitive that owns most of the pixel's samples (ties: the earliest sample), or
+    /// [`NONE`].
+    pub primitive: Vec<u32>,
+    /// Perspective-correct barycentric weights of that primitive's vertices at the pixel centre.
+    pub bary_perspective: Vec<[f32; 3]>,
+    /// Affine (screen-space) barycentric weights at the pixel centre.
+    pub bary_affine: Vec<[f32; 3]>,
+    /// The resolved colour: each sample takes the colour of its triangle evaluated once at the
+    /// pixel centre (multisampling shades once per pixel), uncovered samples the background;
+    /// the pixel is their mean.
+    pub color: Vec<[f32; 3]>,
+}
+
+/// Which image of a capture.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BufferKind {
+    /// The final colour, 8 bits per channel = round(255·c), no gamma conversion.
+    Color,
+    /// Window depth as grey, stretched from the nearest (black) to the farthest (white) depth
+    /// present; background white.
+    Depth,
+    /// Covered samples / samples per pixel as grey (black: none, white: all).
+    Coverage,
+    /// Each primitive id in its own hue (golden-ratio hue steps); background black.
+    PrimitiveId,
+    /// Perspective-correct barycentrics `(b0, b1, b2)` as `(R, G, B)`; background black.
+    BaryPerspective,
+    /// Affine barycentrics `(λ0, λ1, λ2)` as `(R, G, B)`; background black.
+    BaryAffine,
+}
+
+impl BufferKind {
+    /// Every 8-bit image kind, in the order of the stages.
+    pub const ALL: [BufferKind; 6] = [
+        Self::Coverage,
+        Self::PrimitiveId,
+        Self::Depth,
+        Self::BaryPerspective,
+        Self::BaryAffine,
+        Self::Color,
+    ];
+
+    /// A file-name friendly name.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Color => "color",
+            Self::Depth => "depth",
+            Self::Coverage => "coverage",
+            Self::PrimitiveId => "primitive_id",
+            Self::BaryPerspective => "bary_perspective",
+            Self::BaryAffine => "bary_affine",
+        }
+    }
+
+    /// How the buffer's values become colours (for documentation and the capture's JSON).
+    #[must_use]
+    pub fn mapping(self) -> &'static str {
+        match self {
+            Self::Color => "RGB = round(255·colour), no gamma conversion",
+            Self::Depth => {
+                "grey = 255·(z_w − z_min)/(z_max − z_min) over covered pixels (depth_range); \
+                 background white"
+            }
+            Self::Coverage => "grey = 255·covered samples/samples per pixel",
+            Self::PrimitiveId => {
+                "hue = fract(id·0.618034), full saturation and value; background black"
+            }
+            Self::BaryPerspective => {
+                "RGB = 255·(b0, b1, b2), perspective-correct; background black"
+            }
+            Self::BaryAffine => "RGB = 255·(λ0, λ1, λ2), screen-space; background black",
+        }
+    }
+}
+
+/// A summary of one object, for the capture's JSON.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ObjectSummary {
+    /// Its name.
+    pub name: String,
+    /// Its mesh's name.
+    pub mesh: String,
+    /// Vertices in the mesh.
+    pub vertices: usize,
+    /// Triangles in the mesh.
+    pub triangles: usize,
+}
+
+/// Everything one frame did.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FrameCapture {
+    /// The settings it was rendered with.
+    pub settings: RenderSettings,
+    /// The camera.
+    pub camera: Camera,
+    /// The projection.
+    pub projection: Projection,
+    /// The objects drawn.
+    pub objects: Vec<ObjectSummary>,
+    /// The matrices with their factors.
+    pub matrices: Matrices,
+    /// The vertex table: every vertex of every object through every space.
+    pub vertices: Vec<VertexRecord>,
+    /// One record per input triangle.
+    pub primitives: Vec<PrimitiveRecord>,
+    /// The triangles that were rasterized, in order (clipping may split a primitive into several).
+    pub triangles: Vec<RasterTriangle>,
+    /// Per-sample depth and owner.
+    pub samples: SampleBuffers,
+    /// Per-pixel buffers.
+    pub pixels: PixelBuffers,
+}
+
+fn to_u8(v: f32) -> u8 {
+    (v.clamp(0.0, 1.0) * 255.0).round() as u8
+}
+
+fn hue_color(id: u32) -> [u8; 3] {
+    let h = (id as f32 * 0.618_034).fract() * 6.0;
+    let x = 1.0 - ((h % 2.0) - 1.0).abs();
+    let (r, g, b) = match h as u32 {
+        0 => (1.0, x, 0.0),
+        1 => (x, 1.0, 0.0),
+        2 => (0.0, 1.0, x),
+        3 => (0.0, x, 1.0),
+        4 => (x, 0.0, 1.0),
+        _ => (1.0, 0.0, x),
+    };
+    [to_u8(r), to_u8(g), to_u8(b)]
+}
+
+impl FrameCapture {
+    /// Width in pixels.
+    #[must_use]
+    pub fn width(&self) -> u32 {
+        self.settings.width
+    }
+
+    /// Height in pixels.
+    #[must_use]
+    pub fn height(&self) -> u32 {
+        self.settings.height
+    }
+
+    /// The nearest and farthest window depth over covered pixels, if any pixel is covered.
+    #[must_use]
+    pub fn depth_range(&self) -> Option<[f32; 2]> {
+        let mut range: Option<[f32; 2]> = None;
+        for (d, &c) in self.pixels.depth.iter().zip(&self.pixels.coverage) {
+            if c > 0 {
+                let r = range.get_or_insert([*d, *d]);
+                r[0] = r[0].min(*d);
+                r[1] = r[1].max(*d);
+            }
+        }
+        range
+    }
+
+    /// The image of one buffer (see [`BufferKind`] for each colour mapping).
+    #[must_use]
+    pub fn image(&self, kind: BufferKind) -> RgbaImage {
+        let (w, h) = (self.width(), self.height());
+        let px = &self.pixels;
+        let samples = self.settings.samples.count() as f32;
+        let depth_range = self.depth_range().unwrap_or([0.0, 1.0]);
+        let span = (depth_range[1] - depth_range[0]).max(f32::EPSILON);
+        ImageBuffer::from_fn(w, h, |x, y| {
+            let i = (y * w + x) as usize;
+            let covered = px.primitive[i] != NONE;
+            let rgb = match kind {
+                BufferKind::Color => px.color[i].map(to_u8),
+                BufferKind::Depth if covered => [to_u8((px.depth[i] - depth_range[0]) / span); 3],
+                BufferKind::Depth => [255; 3],
+                BufferKind::Coverage => [to_u8(f32::from(px.coverage[i]) / samples); 3],
+                BufferKind::PrimitiveId if covered => hue_color(px.primitive[i]),
+                BufferKind::BaryPerspective if covered => px.bary_perspective[i].map(to_u8),
+                BufferKind::BaryAffine if covered => px.bary_affine[i].map(to_u8),
+                BufferKind::PrimitiveId | BufferKind::BaryPerspective | BufferKind::BaryAffine => {
+                    [0; 3]
+                }
+            };
+            Rgba([rgb[0], rgb[1], rgb[2], 255])
+        })
+    }
+
+    /// The depth buffer as 16-bit grey, `round(z_w·65535)`, with no stretching.
+    #[must_use]
+    pub fn depth16(&self) -> ImageBuffer<Luma<u16>, Vec<u16>> {
+        let w = self.width();
+        ImageBuffer::from_fn(w, self.height(), |x, y| {
+            let d = self.pixels.depth[(y * w + x) as usize];
+            Luma([(d.clamp(0.0, 1.0) * 65535.0).round() as u16])
+        })
+    }
+
+    /// Converts window coordinates (y up) to image pixel coordinates (y down).
+    #[must_use]
+    pub fn window_to_image(&self, p: Vec3) -> [f32; 2] {
+        [p.x, self.height() as f32 - p.y]
+    }
+
+    /// The shapes of one overlay, in image pixel coordinates.
+    #[must_use]
+    pub fn overlay(&self, kind: OverlayKind) -> Overlay {
+        let h = self.height() as f32;
+        let shapes = match kind {
+            OverlayKind::TriangleEdges => self
+                .triangles
+                .iter()
+                .map(|t| Shape::Polyline {
+                    points: t.window.iter().map(|p| self.window_to_image(*p)).collect(),
+                    closed: true,
+                    color: [255, 255, 255, 220],
+                    width: 1.0,
+                })
+                .collect(),
+            OverlayKind::BoundingBoxes => self
+                .triangles
+                .iter()
+                .map(|t| {
+                    let [x0, y0, x1, y1] = t.bbox.map(|v| v as f32);
+                    Shape::Rect {
+                        min: [x0, h - (y1 + 1.0)],
+                        max: [x1 + 1.0, h - y0],
+                        color: [255, 200, 40, 200],
+                        width: 1.0,
+                    }
+                })
+                .collect(),
+        };
+        Overlay { kind, shapes }
+    }
+
+    /// `kind`'s image magnified `zoom` times (nearest neighbour, so pixels stay crisp) with the
+    /// given overlays drawn over it by tiny-skia.
+    #[must_use]
+    pub fn image_with_overlays(
+        &self,
+        kind: BufferKind,
+        overlays: &[OverlayKind],
+        zoom: u32,
+    ) -> RgbaImage {
+        let zoom = zoom.max(1);
+        let base = self.image(kind);
+        let (w, h) = (base.width() * zoom, base.height() * zoom);
+        let Some(mut pixmap) = tiny_skia::Pixmap::new(w, h) else {
+            return base;
+        };
+        for (i, px) in pixmap.pixels_mut().iter_mut().enumerate() {
+            let (x, y) = (i as u32 % w / zoom, i as u32 / w / zoom);
+            let c = base.get_pixel(x, y).0;
+            if let Some(p) = tiny_skia::PremultipliedColorU8::from_rgba(c[0], c[1], c[2], 255) {
+                *px = p;
+            }
+        }
+        for &k in overlays {
+            overlay::draw(&mut pixmap, &self.overlay(k).shapes, zoom as f32);
+        }
+        ImageBuffer::from_fn(w, h, |x, y| {
+            let c = pixmap.pixel(x, y).map(|p| p.demultiply());
+            c.map_or(Rgba([0, 0, 0, 255]), |c| {
+                Rgba([c.red(), c.green(), c.blue(), c.alpha()])
+            })
+        })
+    }
+
+    /// The centre of window pixel `(x, y)` in fixed point.
+    #[must_use]
+    pub fn pixel_centre_fixed(x: u32, y: u32) -> I64Vec2 {
+        I64Vec2::new(i64::from(x) * ONE + ONE / 2, i64::from(y) * ONE + ONE / 2)
+    }
+}

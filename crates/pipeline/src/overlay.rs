@@ -1,0 +1,149 @@
+//! Overlays: 2-D shapes in image pixel space (x right, y down, pixel `(c, r)` is the square
+//! `[c, c+1] × [r, r+1]`), described once and drawn both by the app (egui) and, here, by
+//! tiny-skia into exported PNGs.
+
+use serde::Serialize;
+use tiny_skia::{Color, LineCap, Paint, PathBuilder, Pixmap, Rect, Stroke, Transform};
+
+/// A straight-alpha sRGB colour.
+pub type Rgba = [u8; 4];
+
+/// One shape.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "shape")]
+pub enum Shape {
+    /// A polygon outline (closed) or a polyline (open).
+    Polyline {
+        /// Points in image pixel coordinates.
+        points: Vec<[f32; 2]>,
+        /// Whether the last point joins the first.
+        closed: bool,
+        /// Stroke colour.
+        color: Rgba,
+        /// Stroke width in output pixels (independent of any zoom).
+        width: f32,
+    },
+    /// An axis-aligned rectangle outline.
+    Rect {
+        /// Top-left corner.
+        min: [f32; 2],
+        /// Bottom-right corner.
+        max: [f32; 2],
+        /// Stroke colour.
+        color: Rgba,
+        /// Stroke width in output pixels.
+        width: f32,
+    },
+    /// A filled dot (a sample point, a vertex).
+    Dot {
+        /// Centre.
+        center: [f32; 2],
+        /// Radius in output pixels.
+        radius: f32,
+        /// Fill colour.
+        color: Rgba,
+    },
+}
+
+/// The overlays a capture can show.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum OverlayKind {
+    /// The edges of every rasterized triangle (after clipping).
+    TriangleEdges,
+    /// The pixel bounding box each triangle's rasterization scans.
+    BoundingBoxes,
+}
+
+impl OverlayKind {
+    /// Every overlay, in drawing order.
+    pub const ALL: [OverlayKind; 2] = [Self::BoundingBoxes, Self::TriangleEdges];
+
+    /// A file-name friendly name.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::TriangleEdges => "edges",
+            Self::BoundingBoxes => "bboxes",
+        }
+    }
+}
+
+/// A named group of shapes.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Overlay {
+    /// What it shows.
+    pub kind: OverlayKind,
+    /// The shapes.
+    pub shapes: Vec<Shape>,
+}
+
+fn paint(c: Rgba) -> Paint<'static> {
+    let mut p = Paint::default();
+    p.set_color(Color::from_rgba8(c[0], c[1], c[2], c[3]));
+    p.anti_alias = true;
+    p
+}
+
+/// Draws `shapes` onto `pixmap`, whose pixels are `zoom` times the image's pixels.
+pub fn draw(pixmap: &mut Pixmap, shapes: &[Shape], zoom: f32) {
+    let t = Transform::identity();
+    for shape in shapes {
+        match shape {
+            Shape::Polyline {
+                points,
+                closed,
+                color,
+                width,
+            } => {
+                let mut pb = PathBuilder::new();
+                for (i, p) in points.iter().enumerate() {
+                    if i == 0 {
+                        pb.move_to(p[0] * zoom, p[1] * zoom);
+                    } else {
+                        pb.line_to(p[0] * zoom, p[1] * zoom);
+                    }
+                }
+                if *closed {
+                    pb.close();
+                }
+                if let Some(path) = pb.finish() {
+                    let stroke = Stroke {
+                        width: *width,
+                        line_cap: LineCap::Round,
+                        ..Stroke::default()
+                    };
+                    pixmap.stroke_path(&path, &paint(*color), &stroke, t, None);
+                }
+            }
+            Shape::Rect {
+                min,
+                max,
+                color,
+                width,
+            } => {
+                if let Some(r) =
+                    Rect::from_ltrb(min[0] * zoom, min[1] * zoom, max[0] * zoom, max[1] * zoom)
+                {
+                    let path = PathBuilder::from_rect(r);
+                    let stroke = Stroke {
+                        width: *width,
+                        ..Stroke::default()
+                    };
+                    pixmap.stroke_path(&path, &paint(*color), &stroke, t, None);
+                }
+            }
+            Shape::Dot {
+                center,
+                radius,
+                color,
+            } => {
+                if let Some(path) =
+                    PathBuilder::from_circle(center[0] * zoom, center[1] * zoom, *radius)
+                {
+                    pixmap.fill_path(&path, &paint(*color), tiny_skia::FillRule::Winding, t, None);
+                }
+            }
+        }
+    }
+}

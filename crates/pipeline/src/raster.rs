@@ -1,0 +1,343 @@
+//! Rasterization: from a triangle in window coordinates to the samples it covers.
+//!
+//! **Window coordinates** have their origin at the bottom-left corner of the viewport, x to the
+//! right, y up (OpenGL's convention); pixel `(i, j)` is the square `[i, i+1] × [j, j+1]` and its
+//! centre is `(i + ½, j + ½)`. Images are stored top row first, so pixel row `j` is image row
+//! `height − 1 − j`.
+//!
+//! **Snapping.** Vertex positions are snapped to a grid of 1/256 pixel ([`SUBPIXEL_BITS`] = 8) and
+//! every inside test is done on integers, exactly: two triangles that share an edge see the same
+//! edge function with opposite signs, so each sample on the edge goes to exactly one of them.
+//!
+//! **Edge functions.** For the edge `a → b`, `E(p) = (b.x − a.x)·(p.y − a.y) − (b.y − a.y)·(p.x − a.x)`,
+//! twice the signed area of the triangle `a, b, p`. Triangles are made counter-clockwise first,
+//! so that `E ≥ 0` on the inside of all three edges; `E_i` is the edge opposite vertex `i`, and the
+//! screen-space barycentric weights are `λ_i = E_i / (E_0 + E_1 + E_2)`.
+//!
+//! **Fill rule (top-left).** A sample exactly on an edge (`E = 0`) belongs to the triangle only if
+//! that edge is a *top* edge (horizontal, the triangle below it) or a *left* edge (the triangle to
+//! its right), as seen on screen. For a counter-clockwise triangle with y up: a top edge has
+//! `Δy = 0, Δx < 0`; a left edge has `Δy < 0`.
+//!
+//! **Depth** is `z_w = λ_0·z_0 + λ_1·z_1 + λ_2·z_2`, linear in screen space (NDC z is an affine
+//! function of screen x, y across a triangle). **Attributes** are interpolated perspective-correctly,
+//! `b_i = (λ_i / w_i) / Σ_k (λ_k / w_k)`, or affinely (`b_i = λ_i`) for comparison.
+
+use glam::{I64Vec2, Vec3};
+use serde::Serialize;
+
+use crate::scene::{DepthTest, Samples};
+
+/// Bits of sub-pixel precision of snapped vertex positions.
+pub const SUBPIXEL_BITS: u32 = 8;
+/// One pixel in fixed-point units.
+pub const ONE: i64 = 1 << SUBPIXEL_BITS;
+/// The primitive / triangle id of a sample nothing covered.
+pub const NONE: u32 = u32::MAX;
+
+/// Sample positions of the standard multisample patterns (those of Direct3D, which OpenGL
+/// implementations share), in 1/16 pixel from the pixel centre, **y down** as they are published.
+const PATTERN_1: [(i8, i8); 1] = [(0, 0)];
+const PATTERN_4: [(i8, i8); 4] = [(-2, -6), (6, -2), (-6, 2), (2, 6)];
+const PATTERN_8: [(i8, i8); 8] = [
+    (1, -3),
+    (-1, 3),
+    (5, 1),
+    (-3, -5),
+    (-5, 5),
+    (-7, -1),
+    (3, 7),
+    (7, -7),
+];
+const PATTERN_16: [(i8, i8); 16] = [
+    (1, 1),
+    (-1, -3),
+    (-3, 2),
+    (4, -1),
+    (-5, -2),
+    (2, 5),
+    (5, 3),
+    (3, -5),
+    (-2, 6),
+    (0, -7),
+    (-4, -6),
+    (-6, 4),
+    (-8, 0),
+    (7, -4),
+    (6, 7),
+    (-7, -8),
+];
+
+fn pattern(samples: Samples) -> &'static [(i8, i8)] {
+    match samples {
+        Samples::X1 => &PATTERN_1,
+        Samples::X4 => &PATTERN_4,
+        Samples::X8 => &PATTERN_8,
+        Samples::X16 => &PATTERN_16,
+    }
+}
+
+/// The sample positions inside a pixel, as offsets from its bottom-left corner in fixed point
+/// (window coordinates, y up).
+#[must_use]
+pub fn sample_offsets_fixed(samples: Samples) -> Vec<I64Vec2> {
+    pattern(samples)
+        .iter()
+        .map(|&(dx, dy)| {
+            I64Vec2::new(
+                (8 + i64::from(dx)) * ONE / 16,
+                (8 - i64::from(dy)) * ONE / 16,
+            )
+        })
+        .collect()
+}
+
+/// The sample positions inside a pixel as fractions of a pixel from its **top-left** corner
+/// (image coordinates, y down), for drawing them.
+#[must_use]
+pub fn sample_offsets_image(samples: Samples) -> Vec<[f32; 2]> {
+    pattern(samples)
+        .iter()
+        .map(|&(dx, dy)| [(8.0 + f32::from(dx)) / 16.0, (8.0 + f32::from(dy)) / 16.0])
+        .collect()
+}
+
+/// Snaps a window coordinate to the sub-pixel grid.
+#[must_use]
+#[inline]
+pub fn snap(v: f32) -> i64 {
+    (f64::from(v) * ONE as f64).round() as i64
+}
+
+/// A triangle ready to be rasterized: snapped, counter-clockwise, with its edge equations.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct RasterTriangle {
+    /// The primitive (input triangle) this piece belongs to.
+    pub primitive: u32,
+    /// Window coordinates `(x, y, z_w)` of the corners, counter-clockwise.
+    pub window: [Vec3; 3],
+    /// `1/w_clip` of the corners (for perspective-correct interpolation).
+    pub inv_w: [f32; 3],
+    /// Barycentric weights of the corners with respect to the original triangle.
+    pub bary: [Vec3; 3],
+    /// Pixel bounding box `[x_min, y_min, x_max, y_max]` (inclusive, window pixels, y up),
+    /// clamped to the viewport.
+    pub bbox: [u32; 4],
+    #[serde(skip)]
+    edges: [Edge; 3],
+    #[serde(skip)]
+    area2: i64,
+}
+
+/// One edge equation `E(p) = a·p.x + b·p.y + c`, plus the fill-rule bias (`0` for top-left edges,
+/// `−1` otherwise, so that `E + bias ≥ 0` is the inside test on integers).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Edge {
+    a: i64,
+    b: i64,
+    c: i64,
+    bias: i64,
+}
+
+impl Edge {
+    fn new(p: I64Vec2, q: I64Vec2) -> Self {
+        let d = q - p;
+        let (a, b) = (-d.y, d.x);
+        let top_left = (d.y == 0 && d.x < 0) || d.y < 0;
+        Self {
+            a,
+            b,
+            c: -(a * p.x + b * p.y),
+            bias: if top_left { 0 } else { -1 },
+        }
+    }
+
+    #[inline]
+    fn at(&self, p: I64Vec2) -> i64 {
+        self.a * p.x + self.b * p.y + self.c
+    }
+}
+
+/// Why a triangle produced no raster triangle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SetupRejection {
+    /// Zero area after snapping.
+    Degenerate,
+    /// Clockwise on screen (a back face) with back-face culling on.
+    BackFace,
+    /// Counter-clockwise (a front face) with front-face culling on.
+    FrontFace,
+}
+
+impl RasterTriangle {
+    /// Sets up a triangle from window coordinates. Returns the signed orientation test result
+    /// through `Err` when it is degenerate or culled.
+    ///
+    /// # Errors
+    /// [`SetupRejection`] when the triangle has no area or is culled.
+    pub fn setup(
+        primitive: u32,
+        window: [Vec3; 3],
+        inv_w: [f32; 3],
+        bary: [Vec3; 3],
+        cull: crate::scene::CullMode,
+        size: (u32, u32),
+    ) -> Result<Self, SetupRejection> {
+        let mut fixed = window.map(|p| I64Vec2::new(snap(p.x), snap(p.y)));
+        let area2 = (fixed[1] - fixed[0]).perp_dot(fixed[2] - fixed[0]);
+        if area2 == 0 {
+            return Err(SetupRejection::Degenerate);
+        }
+        let front = area2 > 0;
+        match cull {
+            crate::scene::CullMode::Back if !front => return Err(SetupRejection::BackFace),
+            crate::scene::CullMode::Front if front => return Err(SetupRejection::FrontFace),
+            _ => {}
+        }
+        let (mut window, mut inv_w, mut bary) = (window, inv_w, bary);
+        if !front {
+            fixed.swap(1, 2);
+            window.swap(1, 2);
+            inv_w.swap(1, 2);
+            bary.swap(1, 2);
+        }
+        let edges = [
+            Edge::new(fixed[1], fixed[2]),
+            Edge::new(fixed[2], fixed[0]),
+            Edge::new(fixed[0], fixed[1]),
+        ];
+        let lo = fixed[0].min(fixed[1]).min(fixed[2]);
+        let hi = fixed[0].max(fixed[1]).max(fixed[2]);
+        let clamp = |v: i64, max: u32| v.div_euclid(ONE).clamp(0, i64::from(max) - 1) as u32;
+        let bbox = [
+            clamp(lo.x, size.0),
+            clamp(lo.y, size.1),
+            clamp(hi.x, size.0),
+            clamp(hi.y, size.1),
+        ];
+        Ok(Self {
+            primitive,
+            window,
+            inv_w,
+            bary,
+            bbox,
+            edges,
+            area2: area2.abs(),
+        })
+    }
+
+    /// Whether the sample at fixed-point position `p` is covered (top-left rule).
+    #[must_use]
+    #[inline]
+    pub fn covers(&self, p: I64Vec2) -> bool {
+        self.edges.iter().all(|e| e.at(p) + e.bias >= 0)
+    }
+
+    /// Screen-space barycentric weights `λ` at a fixed-point position (extrapolated outside).
+    #[must_use]
+    #[inline]
+    pub fn lambda(&self, p: I64Vec2) -> Vec3 {
+        let inv = 1.0 / self.area2 as f64;
+        let l1 = self.edges[1].at(p) as f64 * inv;
+        let l2 = self.edges[2].at(p) as f64 * inv;
+        Vec3::new((1.0 - l1 - l2) as f32, l1 as f32, l2 as f32)
+    }
+
+    /// Window depth at screen-space weights `λ`.
+    #[must_use]
+    #[inline]
+    pub fn depth(&self, l: Vec3) -> f32 {
+        l.x * self.window[0].z + l.y * self.window[1].z + l.z * self.window[2].z
+    }
+
+    /// Barycentric weights of the **original** triangle at screen-space weights `λ`:
+    /// perspective-correct, `b = Σ (λ_i/w_i)·bary_i / Σ (λ_i/w_i)`, or affine, `b = Σ λ_i·bary_i`.
+    #[must_use]
+    #[inline]
+    pub fn original_bary(&self, l: Vec3, perspective_correct: bool) -> Vec3 {
+        let k = if perspective_correct {
+            let k = l * Vec3::from(self.inv_w);
+            k / (k.x + k.y + k.z)
+        } else {
+            l
+        };
+        self.bary[0] * k.x + self.bary[1] * k.y + self.bary[2] * k.z
+    }
+}
+
+/// Per-sample visibility: the depth buffer and which raster triangle owns each sample.
+/// Sample `s` of the pixel at image row `r`, column `c` is at `(r·width + c)·samples + s`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SampleBuffers {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Samples per pixel.
+    pub samples: Samples,
+    /// Window depth per sample.
+    pub depth: Vec<f32>,
+    /// Index of the raster triangle that wrote each sample last, or [`NONE`].
+    pub triangle: Vec<u32>,
+    offsets: Vec<I64Vec2>,
+}
+
+/// What rasterizing one triangle did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct RasterCounts {
+    /// Samples inside the triangle.
+    pub covered: u32,
+    /// Samples that passed the depth test and were written.
+    pub written: u32,
+}
+
+impl SampleBuffers {
+    /// Buffers cleared to `clear_depth` and no triangle.
+    #[must_use]
+    pub fn new(width: u32, height: u32, samples: Samples, clear_depth: f32) -> Self {
+        let n = width as usize * height as usize * samples.count();
+        Self {
+            width,
+            height,
+            samples,
+            depth: vec![clear_depth; n],
+            triangle: vec![NONE; n],
+            offsets: sample_offsets_fixed(samples),
+        }
+    }
+
+    /// The index of sample `s` of window pixel `(x, y)` (y up).
+    #[must_use]
+    #[inline]
+    pub fn index(&self, x: u32, y: u32, s: usize) -> usize {
+        let row = (self.height - 1 - y) as usize;
+        (row * self.width as usize + x as usize) * self.samples.count() + s
+    }
+
+    /// Rasterizes `tri` (whose index in the capture's triangle list is `index`): every covered
+    /// sample that passes the depth test takes the triangle's depth and index.
+    pub fn rasterize(&mut self, tri: &RasterTriangle, index: u32, test: DepthTest) -> RasterCounts {
+        let mut counts = RasterCounts::default();
+        let [x0, y0, x1, y1] = tri.bbox;
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
+                for s in 0..self.offsets.len() {
+                    let p = corner + self.offsets[s];
+                    if !tri.covers(p) {
+                        continue;
+                    }
+                    counts.covered += 1;
+                    let z = tri.depth(tri.lambda(p));
+                    let i = self.index(x, y, s);
+                    if test.passes(z, self.depth[i]) {
+                        self.depth[i] = z;
+                        self.triangle[i] = index;
+                        counts.written += 1;
+                    }
+                }
+            }
+        }
+        counts
+    }
+}

@@ -1,0 +1,494 @@
+//! What is drawn and how: objects (a mesh placed in the world), the camera, the projection and
+//! the render settings. Plain data; [`Scene::validate`] says what is wrong with it in words.
+
+use std::sync::Arc;
+
+use glam::{Mat4, Vec3};
+use serde::Serialize;
+
+use crate::mesh::Mesh;
+use crate::transform::{self, NamedMatrix, TransformError};
+
+/// Where a fragment's colour comes from, before lighting exists.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ColorSource {
+    /// The mesh's vertex colours, interpolated (meshes without colours use [`ColorSource::Normal`]).
+    Vertex,
+    /// The object-space normal shown as a colour, `(n + 1)/2`.
+    Normal,
+    /// One colour for the whole object.
+    Uniform(Vec3),
+}
+
+/// A mesh placed in the world by its model transform `M = T·Rz·Ry·Rx·S`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Object {
+    /// Name shown in the app and the capture.
+    pub name: String,
+    /// The mesh, shared (meshes can be large).
+    pub mesh: Arc<Mesh>,
+    /// Translation `T(tx, ty, tz)`.
+    pub translate: Vec3,
+    /// Rotation angles about x, y, z in degrees, applied x first: `Rz·Ry·Rx`.
+    pub rotate_deg: Vec3,
+    /// Scale `S(sx, sy, sz)`.
+    pub scale: Vec3,
+    /// The colour of its fragments.
+    pub color: ColorSource,
+}
+
+impl Object {
+    /// An object with the identity transform and its mesh's own colours.
+    #[must_use]
+    pub fn new(name: &str, mesh: Mesh) -> Self {
+        Self {
+            name: name.to_owned(),
+            mesh: Arc::new(mesh),
+            translate: Vec3::ZERO,
+            rotate_deg: Vec3::ZERO,
+            scale: Vec3::ONE,
+            color: ColorSource::Vertex,
+        }
+    }
+
+    /// The model matrix `M = T·Rz(θz)·Ry(θy)·Rx(θx)·S` with its factors.
+    #[must_use]
+    pub fn model_matrix(&self) -> NamedMatrix {
+        let r = self.rotate_deg * (std::f32::consts::PI / 180.0);
+        let factors = vec![
+            NamedMatrix::new("T", "T(tx, ty, tz)", transform::translate(self.translate)),
+            NamedMatrix::new("Rz", "Rz(θz)", transform::rotate_z(r.z)),
+            NamedMatrix::new("Ry", "Ry(θy)", transform::rotate_y(r.y)),
+            NamedMatrix::new("Rx", "Rx(θx)", transform::rotate_x(r.x)),
+            NamedMatrix::new("S", "S(sx, sy, sz)", transform::scale(self.scale)),
+        ];
+        let m = factors.iter().fold(Mat4::IDENTITY, |m, f| m * f.matrix);
+        NamedMatrix::new(
+            &format!("M_model({})", self.name),
+            "M = T·Rz·Ry·Rx·S: scale, rotate about x, y, z, then translate",
+            m,
+        )
+        .with_factors(factors)
+    }
+}
+
+/// The camera: `LookAt(eye, at, up)`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Camera {
+    /// The eye point (centre of projection).
+    pub eye: Vec3,
+    /// The point looked at.
+    pub at: Vec3,
+    /// The up vector `v_up` (need not be perpendicular to the view direction).
+    pub up: Vec3,
+}
+
+impl Default for Camera {
+    fn default() -> Self {
+        Self {
+            eye: Vec3::new(0.0, 0.0, 3.0),
+            at: Vec3::ZERO,
+            up: Vec3::Y,
+        }
+    }
+}
+
+/// The projection, in Angel's / OpenGL's terms (`near`, `far` positive distances).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "kind")]
+pub enum Projection {
+    /// `Perspective(fovy, aspect, near, far)`; `aspect` `None` takes the viewport's width/height.
+    Perspective {
+        /// Vertical field of view in degrees, in (0, 180).
+        fovy_deg: f32,
+        /// Width / height of the view volume; `None`: the viewport's.
+        aspect: Option<f32>,
+        /// Distance to the near plane (> 0).
+        near: f32,
+        /// Distance to the far plane (> near).
+        far: f32,
+    },
+    /// `Frustum(left, right, bottom, top, near, far)`, possibly asymmetric.
+    Frustum {
+        /// The near rectangle `[l, r] × [b, t]` at `z = −near`.
+        #[allow(missing_docs)]
+        left: f32,
+        #[allow(missing_docs)]
+        right: f32,
+        #[allow(missing_docs)]
+        bottom: f32,
+        #[allow(missing_docs)]
+        top: f32,
+        /// Distance to the near plane (> 0).
+        near: f32,
+        /// Distance to the far plane (> near).
+        far: f32,
+    },
+    /// `Ortho(left, right, bottom, top, near, far)`.
+    Ortho {
+        /// The box `[l, r] × [b, t] × [−far, −near]`.
+        #[allow(missing_docs)]
+        left: f32,
+        #[allow(missing_docs)]
+        right: f32,
+        #[allow(missing_docs)]
+        bottom: f32,
+        #[allow(missing_docs)]
+        top: f32,
+        /// `z = −near` is the near face (may be negative: behind the eye).
+        near: f32,
+        /// `z = −far` is the far face (> near).
+        far: f32,
+    },
+}
+
+impl Default for Projection {
+    fn default() -> Self {
+        Self::Perspective {
+            fovy_deg: 45.0,
+            aspect: None,
+            near: 0.1,
+            far: 50.0,
+        }
+    }
+}
+
+impl Projection {
+    /// The view volume `[l, r, b, t, near, far]` for a viewport of the given aspect ratio.
+    #[must_use]
+    pub fn bounds(&self, viewport_aspect: f32) -> [f32; 6] {
+        match *self {
+            Self::Perspective {
+                fovy_deg,
+                aspect,
+                near,
+                far,
+            } => {
+                let [l, r, b, t] = transform::perspective_bounds(
+                    fovy_deg,
+                    aspect.unwrap_or(viewport_aspect),
+                    near,
+                );
+                [l, r, b, t, near, far]
+            }
+            Self::Frustum {
+                left,
+                right,
+                bottom,
+                top,
+                near,
+                far,
+            }
+            | Self::Ortho {
+                left,
+                right,
+                bottom,
+                top,
+                near,
+                far,
+            } => [left, right, bottom, top, near, far],
+        }
+    }
+
+    /// Whether this is a perspective (rather than parallel) projection.
+    #[must_use]
+    pub fn is_perspective(&self) -> bool {
+        !matches!(self, Self::Ortho { .. })
+    }
+
+    /// The OpenGL projection matrix with its factors (`N·S·H` for a frustum, `S·T` for ortho).
+    #[must_use]
+    pub fn matrix(&self, viewport_aspect: f32) -> NamedMatrix {
+        let [l, r, b, t, n, f] = self.bounds(viewport_aspect);
+        match *self {
+            Self::Perspective {
+                fovy_deg, aspect, ..
+            } => transform::perspective(fovy_deg, aspect.unwrap_or(viewport_aspect), n, f),
+            Self::Frustum { .. } => transform::frustum(l, r, b, t, n, f),
+            Self::Ortho { .. } => transform::ortho(l, r, b, t, n, f),
+        }
+    }
+
+    /// The same projection in GAMES101's terms (`n = −near`, `f = −far`):
+    /// `M_ortho·M_persp→ortho` for perspective, `M_ortho` for parallel projection.
+    #[must_use]
+    pub fn matrix_games101(&self, viewport_aspect: f32) -> NamedMatrix {
+        let [l, r, b, t, near, far] = self.bounds(viewport_aspect);
+        if self.is_perspective() {
+            transform::perspective_games101(l, r, b, t, -near, -far)
+        } else {
+            transform::ortho_games101(l, r, b, t, -far, -near)
+        }
+    }
+
+    /// What is wrong with these parameters, if anything (each as a sentence).
+    #[must_use]
+    pub fn problems(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        let [l, r, b, t, near, far] = self.bounds(1.0);
+        if let Self::Perspective {
+            fovy_deg, aspect, ..
+        } = *self
+        {
+            if !(fovy_deg > 0.0 && fovy_deg < 180.0) {
+                out.push(format!(
+                    "fovy must be between 0° and 180° (exclusive), got {fovy_deg}"
+                ));
+            }
+            if let Some(a) = aspect
+                && !(a > 0.0 && a.is_finite())
+            {
+                out.push(format!("aspect must be a positive number, got {a}"));
+            }
+        } else {
+            if !(l < r) {
+                out.push(format!(
+                    "left must be less than right, got left = {l}, right = {r}"
+                ));
+            }
+            if !(b < t) {
+                out.push(format!(
+                    "bottom must be less than top, got bottom = {b}, top = {t}"
+                ));
+            }
+        }
+        if self.is_perspective() && !(near > 0.0) {
+            out.push(format!(
+                "near must be positive for a perspective projection (it is a distance in front of \
+                 the eye), got {near}"
+            ));
+        }
+        if !(far > near) {
+            out.push(format!(
+                "far must be greater than near, got near = {near}, far = {far}"
+            ));
+        }
+        if [l, r, b, t, near, far].iter().any(|v| !v.is_finite()) {
+            out.push("every projection parameter must be a finite number".to_owned());
+        }
+        out
+    }
+}
+
+/// The number of samples per pixel and where they lie.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub enum Samples {
+    /// One sample at the pixel centre.
+    #[default]
+    X1,
+    /// The standard rotated grid of four.
+    X4,
+    /// The standard pattern of eight.
+    X8,
+    /// The standard pattern of sixteen.
+    X16,
+}
+
+impl Samples {
+    /// The count, 1, 4, 8 or 16.
+    #[must_use]
+    pub fn count(self) -> usize {
+        match self {
+            Self::X1 => 1,
+            Self::X4 => 4,
+            Self::X8 => 8,
+            Self::X16 => 16,
+        }
+    }
+
+    /// The pattern for a count, if it is one of 1, 4, 8, 16.
+    #[must_use]
+    pub fn from_count(n: u32) -> Option<Self> {
+        match n {
+            1 => Some(Self::X1),
+            4 => Some(Self::X4),
+            8 => Some(Self::X8),
+            16 => Some(Self::X16),
+            _ => None,
+        }
+    }
+}
+
+/// Which faces are discarded before rasterization. Front faces are counter-clockwise in window
+/// coordinates (OpenGL's default `glFrontFace(GL_CCW)`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CullMode {
+    /// Draw both sides (OpenGL's default: culling disabled).
+    #[default]
+    None,
+    /// Discard triangles seen from behind.
+    Back,
+    /// Discard triangles seen from the front.
+    Front,
+}
+
+/// The depth test: a fragment is kept when `compare(fragment_depth, stored_depth)` holds.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DepthTest {
+    /// `<` (OpenGL's default `GL_LESS`): nearer wins, the first of equals stays.
+    #[default]
+    Less,
+    /// `≤`: nearer wins, the last of equals replaces.
+    LessEqual,
+    /// `>`: farther wins.
+    Greater,
+    /// `≥`.
+    GreaterEqual,
+    /// Always pass: the last fragment drawn wins (painter's order).
+    Always,
+}
+
+impl DepthTest {
+    /// Whether a fragment at `z` replaces the stored `stored`.
+    #[must_use]
+    #[inline]
+    pub fn passes(self, z: f32, stored: f32) -> bool {
+        match self {
+            Self::Less => z < stored,
+            Self::LessEqual => z <= stored,
+            Self::Greater => z > stored,
+            Self::GreaterEqual => z >= stored,
+            Self::Always => true,
+        }
+    }
+
+    /// The depth the buffer is cleared to: the far end for `<`/`≤`, the near end otherwise.
+    #[must_use]
+    pub fn clear_value(self) -> f32 {
+        match self {
+            Self::Greater | Self::GreaterEqual => 0.0,
+            _ => 1.0,
+        }
+    }
+}
+
+/// How the image is produced: size, samples, culling, depth test, interpolation.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct RenderSettings {
+    /// Viewport width in pixels.
+    pub width: u32,
+    /// Viewport height in pixels.
+    pub height: u32,
+    /// Samples per pixel.
+    pub samples: Samples,
+    /// Face culling.
+    pub cull: CullMode,
+    /// Depth comparison.
+    pub depth_test: DepthTest,
+    /// Interpolate attributes perspective-correctly (`false`: affine in screen space, for comparison).
+    pub perspective_correct: bool,
+    /// The clear colour, linear RGB in `[0, 1]`.
+    pub background: Vec3,
+}
+
+impl Default for RenderSettings {
+    fn default() -> Self {
+        Self {
+            width: 640,
+            height: 480,
+            samples: Samples::X1,
+            cull: CullMode::None,
+            depth_test: DepthTest::Less,
+            perspective_correct: true,
+            background: Vec3::new(0.08, 0.09, 0.11),
+        }
+    }
+}
+
+/// The largest width or height of a viewport.
+pub const MAX_VIEWPORT_SIDE: u32 = 16_384;
+/// The largest number of samples in one capture (width × height × samples): about 64 M, so a
+/// capture stays within a few gigabytes even at its largest.
+pub const MAX_CAPTURE_SAMPLES: u64 = 1 << 26;
+
+impl RenderSettings {
+    /// Width / height.
+    #[must_use]
+    pub fn aspect(&self) -> f32 {
+        self.width as f32 / self.height as f32
+    }
+
+    /// What is wrong with these settings, if anything.
+    #[must_use]
+    pub fn problems(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        for (name, v) in [("width", self.width), ("height", self.height)] {
+            if v == 0 || v > MAX_VIEWPORT_SIDE {
+                out.push(format!(
+                    "the viewport {name} must be between 1 and {MAX_VIEWPORT_SIDE} pixels, got {v}"
+                ));
+            }
+        }
+        let total = u64::from(self.width) * u64::from(self.height) * self.samples.count() as u64;
+        if total > MAX_CAPTURE_SAMPLES {
+            out.push(format!(
+                "{}×{} pixels × {} samples = {total} samples is more than one capture may hold \
+                 ({MAX_CAPTURE_SAMPLES}); lower the size or the sample count",
+                self.width,
+                self.height,
+                self.samples.count()
+            ));
+        }
+        if !self.background.is_finite() {
+            out.push("the background colour must be finite".to_owned());
+        }
+        out
+    }
+}
+
+/// Everything that is drawn: objects, camera and projection.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Scene {
+    /// The objects, drawn in this order (primitive ids count across them in this order).
+    pub objects: Vec<Object>,
+    /// The viewing camera.
+    pub camera: Camera,
+    /// The projection.
+    pub projection: Projection,
+}
+
+impl Scene {
+    /// The view matrix `LookAt(eye, at, up)`.
+    ///
+    /// # Errors
+    /// When the camera is degenerate (see [`transform::camera_frame`]).
+    pub fn view_matrix(&self) -> Result<NamedMatrix, TransformError> {
+        let Camera { eye, at, up } = self.camera;
+        let m = transform::look_at(eye, at, up)?;
+        let gt = transform::look_at_gt(eye, at - eye, up)?;
+        Ok(NamedMatrix::new(
+            "V = LookAt(eye, at, up)",
+            "rows u, v, n and −p·u, −p·v, −p·n with n = (eye−at)/|eye−at|, u = v_up×n/|v_up×n|, \
+             v = n×u; equals GAMES101's R_view·T_view with g = at − eye, t = up",
+            m,
+        )
+        .with_factors(gt.factors))
+    }
+
+    /// Every problem with the scene and settings, as sentences; empty when it can be drawn.
+    #[must_use]
+    pub fn problems(&self, settings: &RenderSettings) -> Vec<String> {
+        let mut out = settings.problems();
+        out.extend(self.projection.problems());
+        let Camera { eye, at, up } = self.camera;
+        if !(eye.is_finite() && at.is_finite() && up.is_finite()) {
+            out.push("the camera's eye, at and up must be finite".to_owned());
+        } else if let Err(e) = transform::camera_frame(eye, at, up) {
+            out.push(e.to_string());
+        }
+        for o in &self.objects {
+            if !(o.translate.is_finite() && o.rotate_deg.is_finite() && o.scale.is_finite()) {
+                out.push(format!("object `{}`: its transform must be finite", o.name));
+            }
+            if let ColorSource::Uniform(c) = o.color
+                && !c.is_finite()
+            {
+                out.push(format!("object `{}`: its colour must be finite", o.name));
+            }
+        }
+        out
+    }
+}

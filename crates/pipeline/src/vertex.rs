@@ -1,0 +1,87 @@
+//! The vertex stage: every vertex through model → world → eye → clip, then (when `w > 0`) the
+//! perspective division to NDC and the viewport transform to window coordinates, all recorded.
+//!
+//! - world `= M·p`, eye `= V·world`, clip `= P·eye` (homogeneous 4-vectors);
+//! - NDC `= (x_c/w_c, y_c/w_c, z_c/w_c)`, defined only for `w_c > 0` (a vertex behind the eye
+//!   has `w_c ≤ 0`: its division means nothing, the clipper deals with it);
+//! - window `= viewport·(NDC, 1)`.
+
+use glam::{Mat4, Vec2, Vec3, Vec4};
+use serde::Serialize;
+
+use crate::scene::{ColorSource, Object};
+
+/// One vertex through every space, a row of the vertex table.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct VertexRecord {
+    /// Index of the object in the scene.
+    pub object: u32,
+    /// Index of the vertex in its mesh.
+    pub index: u32,
+    /// Object (model) coordinates, `w = 1`.
+    pub object_pos: Vec4,
+    /// World coordinates `M·p`.
+    pub world: Vec4,
+    /// Eye (camera) coordinates `V·M·p`.
+    pub eye: Vec4,
+    /// Clip coordinates `P·V·M·p`.
+    pub clip: Vec4,
+    /// Normalized device coordinates, `None` when `w_clip ≤ 0`.
+    pub ndc: Option<Vec3>,
+    /// Window coordinates `(x_w, y_w, z_w)`, `None` when `w_clip ≤ 0`.
+    pub window: Option<Vec3>,
+    /// The vertex colour that is interpolated across the triangle.
+    pub color: Vec3,
+    /// Texture coordinates, when the mesh has them.
+    pub uv: Option<Vec2>,
+}
+
+/// The matrices the vertex stage applies to one object.
+#[derive(Clone, Copy, Debug)]
+pub struct VertexMatrices {
+    /// Model matrix `M`.
+    pub model: Mat4,
+    /// View matrix `V`.
+    pub view: Mat4,
+    /// Projection matrix `P`.
+    pub projection: Mat4,
+    /// Viewport matrix.
+    pub viewport: Mat4,
+}
+
+/// Runs the vertex stage on every vertex of `object` (index `object_index` in the scene),
+/// appending one row per vertex to `out`.
+pub fn transform_object(
+    object: &Object,
+    object_index: u32,
+    m: &VertexMatrices,
+    out: &mut Vec<VertexRecord>,
+) {
+    let mesh = &object.mesh;
+    out.reserve(mesh.positions.len());
+    for (i, &p) in mesh.positions.iter().enumerate() {
+        let object_pos = p.extend(1.0);
+        let world = m.model * object_pos;
+        let eye = m.view * world;
+        let clip = m.projection * eye;
+        let ndc = (clip.w > 0.0).then(|| clip.truncate() / clip.w);
+        let window = ndc.map(|n| (m.viewport * n.extend(1.0)).truncate());
+        let color = match object.color {
+            ColorSource::Uniform(c) => c,
+            ColorSource::Vertex if !mesh.colors.is_empty() => mesh.colors[i],
+            ColorSource::Vertex | ColorSource::Normal => (mesh.normals[i] + 1.0) / 2.0,
+        };
+        out.push(VertexRecord {
+            object: object_index,
+            index: i as u32,
+            object_pos,
+            world,
+            eye,
+            clip,
+            ndc,
+            window,
+            color,
+            uv: mesh.uvs.get(i).copied(),
+        });
+    }
+}
