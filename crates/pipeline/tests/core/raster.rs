@@ -1,0 +1,529 @@
+//! The rasterization rules, proved on the cases where they matter.
+
+use glam::{Vec2, Vec3};
+use pipeline::capture::Fate;
+use pipeline::mesh::Mesh;
+use pipeline::raster::NONE;
+use pipeline::scene::{
+    Camera, ColorSource, DepthTest, Object, Projection, RenderSettings, Samples, Scene,
+};
+
+use crate::support::{pixel_scene, render, sample_position};
+
+/// Counts how often each sample is covered over all primitives (depth test `Always` keeps every
+/// write visible in the counts) and returns (sum of per-primitive covered counts, distinct samples).
+fn cover_counts(capture: &pipeline::capture::FrameCapture) -> (u64, u64) {
+    let sum = capture
+        .primitives
+        .iter()
+        .map(|p| u64::from(p.counts.covered))
+        .sum();
+    let distinct = capture
+        .samples
+        .triangle
+        .iter()
+        .filter(|&&t| t != NONE)
+        .count() as u64;
+    (sum, distinct)
+}
+
+/// Point-in-convex-polygon with a margin: `Some(true)` clearly inside, `Some(false)` clearly
+/// outside, `None` within `margin` of the boundary (where the fill rule decides).
+fn inside_convex(poly: &[Vec2], p: Vec2, margin: f32) -> Option<bool> {
+    let mut min_d = f32::INFINITY;
+    for i in 0..poly.len() {
+        let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+        let d = (b - a).perp_dot(p - a) / (b - a).length();
+        min_d = min_d.min(d);
+    }
+    if min_d > margin {
+        Some(true)
+    } else if min_d < -margin {
+        Some(false)
+    } else {
+        None
+    }
+}
+
+#[test]
+fn a_fan_of_random_triangles_covers_every_sample_exactly_once() {
+    for samples in [Samples::X1, Samples::X4] {
+        for seed in 0..40 {
+            let mut rng = fastrand::Rng::with_seed(seed);
+            let (w, h) = (64, 48);
+            let centre = Vec2::new(20.0 + rng.f32() * 24.0, 15.0 + rng.f32() * 18.0);
+            // A convex polygon: points on an ellipse at increasing random angles.
+            // Angles (i + jitter)·2π/n with n ≥ 4: consecutive gaps stay below π, so the centre
+            // is inside and the fan does not fold over itself.
+            let n = 4 + rng.usize(..12);
+            let angles: Vec<f32> = (0..n)
+                .map(|i| (i as f32 + rng.f32() * 0.8) * std::f32::consts::TAU / n as f32)
+                .collect();
+            let ring: Vec<Vec2> = angles
+                .iter()
+                .map(|a| centre + Vec2::new(a.cos() * 18.0, a.sin() * 13.0))
+                .collect();
+            let tris: Vec<[Vec2; 3]> = (0..n)
+                .map(|i| [centre, ring[i], ring[(i + 1) % n]])
+                .collect();
+            let (scene, mut settings) = pixel_scene(w, h, &tris);
+            settings.samples = samples;
+            let capture = render(&scene, &settings);
+            let (sum, distinct) = cover_counts(&capture);
+            assert_eq!(sum, distinct, "seed {seed}: some sample was covered twice");
+            // No gaps: every sample clearly inside the polygon (the fan's union when the centre
+            // is inside it) is covered.
+            for y in 0..h {
+                for x in 0..w {
+                    for s in 0..samples.count() {
+                        let p = sample_position(samples, x, y, s);
+                        let covered =
+                            capture.samples.triangle[capture.samples.index(x, y, s)] != NONE;
+                        // Snapping moves vertices by up to 1/512 pixel: decide only beyond that.
+                        match inside_convex(&ring, p, 0.01) {
+                            Some(true) => assert!(covered, "seed {seed}: gap at {p}"),
+                            Some(false) => assert!(!covered, "seed {seed}: spill at {p}"),
+                            None => {}
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn a_jittered_grid_of_triangles_is_watertight() {
+    for seed in 0..30 {
+        let mut rng = fastrand::Rng::with_seed(1000 + seed);
+        let (w, h) = (60u32, 40u32);
+        let (nx, ny) = (7usize, 5usize);
+        // Grid points over [2, 58] × [2, 38]; inner points jittered, boundary kept straight.
+        let mut pts = vec![Vec2::ZERO; (nx + 1) * (ny + 1)];
+        for j in 0..=ny {
+            for i in 0..=nx {
+                let mut p = Vec2::new(
+                    2.0 + 56.0 * i as f32 / nx as f32,
+                    2.0 + 36.0 * j as f32 / ny as f32,
+                );
+                if i > 0 && i < nx && j > 0 && j < ny {
+                    p += Vec2::new(rng.f32() - 0.5, rng.f32() - 0.5) * 5.0;
+                    // Some points exactly on pixel centres and pixel corners.
+                    if rng.bool() {
+                        p = (p * 2.0).round() / 2.0;
+                    }
+                }
+                pts[j * (nx + 1) + i] = p;
+            }
+        }
+        let mut tris = Vec::new();
+        for j in 0..ny {
+            for i in 0..nx {
+                let at = |a: usize, b: usize| pts[b * (nx + 1) + a];
+                let (p00, p10, p11, p01) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+                if rng.bool() {
+                    tris.push([p00, p10, p11]);
+                    tris.push([p00, p11, p01]);
+                } else {
+                    // Mixed orientation: clockwise triangles must follow the same rule.
+                    tris.push([p00, p01, p10]);
+                    tris.push([p10, p01, p11]);
+                }
+            }
+        }
+        let (scene, settings) = pixel_scene(w, h, &tris);
+        let capture = render(&scene, &settings);
+        let (sum, distinct) = cover_counts(&capture);
+        assert_eq!(sum, distinct, "seed {seed}: double cover");
+        // Every pixel centre inside the outer rectangle (2, 38) is covered; the rectangle's own
+        // boundary lies on pixel borders, so centres are strictly inside or outside.
+        let expected: u64 = (2..58).count() as u64 * (2..38).count() as u64;
+        assert_eq!(distinct, expected, "seed {seed}: gaps");
+    }
+}
+
+#[test]
+fn top_left_rule_on_edges_through_pixel_centres() {
+    // The square [1.5, 5.5]², split along a diagonal: every edge passes through pixel centres.
+    let (a, b, c, d) = (
+        Vec2::new(1.5, 1.5),
+        Vec2::new(5.5, 1.5),
+        Vec2::new(5.5, 5.5),
+        Vec2::new(1.5, 5.5),
+    );
+    let (scene, settings) = pixel_scene(16, 16, &[[a, b, c], [a, c, d]]);
+    let capture = render(&scene, &settings);
+    let (sum, distinct) = cover_counts(&capture);
+    assert_eq!(
+        sum, distinct,
+        "the diagonal's centres go to one triangle only"
+    );
+    // Left edge x = 1.5 and top edge y = 5.5 are in; right x = 5.5 and bottom y = 1.5 are out:
+    // columns 1..=4, window rows 2..=5.
+    for y in 0..16 {
+        for x in 0..16 {
+            let covered = capture.samples.triangle[capture.samples.index(x, y, 0)] != NONE;
+            let expected = (1..=4).contains(&x) && (2..=5).contains(&y);
+            assert_eq!(covered, expected, "pixel ({x}, {y})");
+        }
+    }
+    // On the diagonal (centres (k+.5, k+.5)), the lower-right triangle a,b,c has it as its
+    // top-left edge ("left": the edge c→a goes down): it owns them.
+    for k in 2..=4 {
+        let t = capture.samples.triangle[capture.samples.index(k, k, 0)];
+        assert_eq!(
+            capture.triangles[t as usize].primitive, 0,
+            "diagonal pixel {k}"
+        );
+    }
+    // A lone triangle with a horizontal top edge through centres: its top row is in.
+    let (scene, settings) = pixel_scene(
+        16,
+        16,
+        &[[
+            Vec2::new(2.5, 8.5),
+            Vec2::new(8.5, 2.5),
+            Vec2::new(8.5, 8.5),
+        ]],
+    );
+    let capture = render(&scene, &settings);
+    let row = |y: u32| {
+        (0..16)
+            .filter(|&x| capture.samples.triangle[capture.samples.index(x, y, 0)] != NONE)
+            .count()
+    };
+    // Top edge y = 8.5 is in (centres x = 2.5..=7.5, the right edge x = 8.5 is out): 6 pixels.
+    assert_eq!(row(8), 6);
+    // The hypotenuse (8.5,2.5)…(2.5,8.5) is a left edge (the triangle lies to its right): at
+    // y = 3.5 the only centre inside is x = 7.5, exactly on it, and it is in.
+    assert_eq!(row(3), 1, "row 3: {}", row(3));
+    assert_eq!(
+        row(2),
+        0,
+        "the bottom vertex's row has only the corner centre, on two edges"
+    );
+}
+
+#[test]
+fn degenerate_and_sliver_triangles() {
+    let collinear = [
+        Vec2::new(1.0, 1.0),
+        Vec2::new(5.0, 3.0),
+        Vec2::new(9.0, 5.0),
+    ];
+    let point = [Vec2::new(4.5, 4.5); 3];
+    let sliver = [
+        Vec2::new(0.5, 0.5),
+        Vec2::new(15.5, 0.6),
+        Vec2::new(0.5, 0.52),
+    ];
+    let (scene, settings) = pixel_scene(16, 16, &[collinear, point, sliver]);
+    let capture = render(&scene, &settings);
+    assert_eq!(capture.primitives[0].fate, Fate::Degenerate);
+    assert_eq!(capture.primitives[1].fate, Fate::Degenerate);
+    assert_eq!(
+        capture.primitives[0].counts.covered + capture.primitives[1].counts.covered,
+        0
+    );
+    // The sliver is drawn; the only centre it could hold is (0.5, 0.5), its corner, which lies
+    // on its bottom edge (not a top or left edge), so it covers at most that one.
+    assert_eq!(capture.primitives[2].fate, Fate::Drawn);
+    assert!(capture.primitives[2].counts.covered <= 1);
+    let any_nan = capture
+        .pixels
+        .color
+        .iter()
+        .flatten()
+        .any(|v| !v.is_finite());
+    assert!(!any_nan, "no NaN anywhere");
+}
+
+#[test]
+fn coverage_of_a_triangle_is_the_sum_over_a_split() {
+    let mut rng = fastrand::Rng::with_seed(99);
+    for _ in 0..200 {
+        let mut p = || Vec2::new(rng.f32() * 40.0, rng.f32() * 30.0);
+        let (a, b, c) = (p(), p(), p());
+        // Split through a: m on b–c.
+        let t = rng.f32();
+        let m = b + (c - b) * t;
+        let whole = pixel_scene(40, 30, &[[a, b, c]]);
+        let split = pixel_scene(40, 30, &[[a, b, m], [a, m, c]]);
+        for samples in [Samples::X1, Samples::X4] {
+            let mut s1 = whole.1;
+            s1.samples = samples;
+            let mut s2 = split.1;
+            s2.samples = samples;
+            let (cw, cs) = (render(&whole.0, &s1), render(&split.0, &s2));
+            let (sum_w, distinct_w) = cover_counts(&cw);
+            let (sum_s, distinct_s) = cover_counts(&cs);
+            assert_eq!(sum_s, distinct_s, "halves overlap");
+            // m is not on the snapping grid, so the halves can differ from the whole only in
+            // samples within 1/256 pixel of the line b–c; allow none for clear cases.
+            let diff = sum_w.abs_diff(sum_s);
+            assert!(diff <= 2, "whole {sum_w} ({distinct_w}) vs halves {sum_s}");
+        }
+    }
+}
+
+/// A camera at the origin looking down −z, 90° field of view, square viewport.
+fn camera_scene(mesh: Mesh, size: u32) -> (Scene, RenderSettings) {
+    let mut object = Object::new("plane", mesh);
+    object.color = ColorSource::Vertex;
+    let scene = Scene {
+        objects: vec![object],
+        camera: Camera {
+            eye: Vec3::ZERO,
+            at: Vec3::NEG_Z,
+            up: Vec3::Y,
+        },
+        projection: Projection::Perspective {
+            fovy_deg: 90.0,
+            aspect: None,
+            near: 0.5,
+            far: 200.0,
+        },
+    };
+    let settings = RenderSettings {
+        width: size,
+        height: size,
+        ..RenderSettings::default()
+    };
+    (scene, settings)
+}
+
+/// The world point seen through the centre of window pixel (x, y) on the plane y = −1, for the
+/// camera of [`camera_scene`]: the ray (sx, sy, −1) with s = 2(x+½)/size − 1 (tan 45° = 1).
+fn floor_hit(x: u32, y: u32, size: u32) -> Option<Vec3> {
+    let sx = 2.0 * (x as f32 + 0.5) / size as f32 - 1.0;
+    let sy = 2.0 * (y as f32 + 0.5) / size as f32 - 1.0;
+    (sy < 0.0).then(|| Vec3::new(sx, sy, -1.0) * (-1.0 / sy))
+}
+
+fn mesh_of(positions: Vec<Vec3>, colors: Vec<Vec3>, indices: Vec<[u32; 3]>) -> Mesh {
+    let n = positions.len();
+    Mesh {
+        name: "test".into(),
+        positions,
+        normals: vec![Vec3::Y; n],
+        uvs: Vec::new(),
+        colors,
+        indices,
+    }
+}
+
+#[test]
+fn a_triangle_crossing_the_near_plane_renders_exactly_its_visible_part() {
+    // On the floor y = −1: one vertex far in front, two behind the camera (z = +10).
+    let tri = [
+        Vec3::new(-30.0, -1.0, 10.0),
+        Vec3::new(30.0, -1.0, 10.0),
+        Vec3::new(0.0, -1.0, -60.0),
+    ];
+    let size = 64;
+    let (scene, settings) = camera_scene(
+        mesh_of(tri.to_vec(), vec![Vec3::ONE; 3], vec![[0, 1, 2]]),
+        size,
+    );
+    let capture = render(&scene, &settings);
+    assert_eq!(capture.primitives[0].fate, Fate::Clipped);
+    let poly = capture.primitives[0]
+        .clipped_polygon
+        .as_ref()
+        .expect("clipped polygon recorded");
+    for v in poly {
+        let c = v.clip;
+        assert!(
+            c.w > 0.0 && c.z >= -c.w * (1.0 + 1e-5),
+            "clipped vertex {c} outside"
+        );
+    }
+    let tri2 = tri.map(|p| Vec2::new(p.x, p.z));
+    let mut checked = 0;
+    for y in 0..size {
+        for x in 0..size {
+            let covered = capture.samples.triangle[capture.samples.index(x, y, 0)] != NONE;
+            let expected = floor_hit(x, y, size).map_or(Some(false), |hit| {
+                let in_depth = -hit.z >= 0.5 && -hit.z <= 200.0;
+                // The triangle's xz outline is clockwise seen from +y; test with both windings.
+                let mut ring = tri2.to_vec();
+                ring.reverse();
+                if !in_depth {
+                    Some(false)
+                } else {
+                    inside_convex(&ring, Vec2::new(hit.x, hit.z), 0.05)
+                }
+            });
+            if let Some(e) = expected {
+                assert_eq!(covered, e, "pixel ({x}, {y})");
+                checked += 1;
+            }
+        }
+    }
+    assert!(
+        checked > size * size * 9 / 10,
+        "most pixels are decided analytically ({checked})"
+    );
+}
+
+#[test]
+fn vertices_behind_the_camera_and_across_w_zero() {
+    let behind = vec![
+        Vec3::new(-1.0, 0.0, 2.0),
+        Vec3::new(1.0, 0.0, 2.0),
+        Vec3::new(0.0, 1.0, 3.0),
+    ];
+    let (scene, settings) = camera_scene(mesh_of(behind, vec![Vec3::ONE; 3], vec![[0, 1, 2]]), 32);
+    let capture = render(&scene, &settings);
+    assert!(matches!(capture.primitives[0].fate, Fate::Outside { .. }));
+    assert!(
+        capture
+            .vertices
+            .iter()
+            .all(|v| v.ndc.is_none() && v.clip.w < 0.0)
+    );
+    assert!(capture.samples.triangle.iter().all(|&t| t == NONE));
+
+    // A triangle with a vertex at the eye is seen edge-on: a line on screen, nothing drawn.
+    let edge_on = vec![
+        Vec3::ZERO,
+        Vec3::new(1.0, -1.0, -5.0),
+        Vec3::new(-1.0, -1.0, -2.0),
+    ];
+    let (scene, settings) = camera_scene(mesh_of(edge_on, vec![Vec3::ONE; 3], vec![[0, 1, 2]]), 32);
+    let capture = render(&scene, &settings);
+    assert_eq!(capture.primitives[0].fate, Fate::Degenerate);
+    assert!(capture.pixels.color.iter().flatten().all(|v| v.is_finite()));
+
+    // A vertex beside the eye (z_eye = 0, so w = 0) and one exactly on the near plane.
+    let mixed = vec![
+        Vec3::new(2.0, 0.0, 0.0),
+        Vec3::new(1.0, -1.0, -5.0),
+        Vec3::new(-0.2, -0.2, -0.5),
+    ];
+    let (scene, settings) = camera_scene(mesh_of(mixed, vec![Vec3::ONE; 3], vec![[0, 1, 2]]), 32);
+    let capture = render(&scene, &settings);
+    assert_eq!(capture.vertices[0].clip.w, 0.0);
+    assert!(capture.vertices[0].ndc.is_none(), "no division by w = 0");
+    assert_eq!(capture.primitives[0].fate, Fate::Clipped);
+    let finite = capture.pixels.color.iter().flatten().all(|v| v.is_finite())
+        && capture.pixels.depth.iter().all(|v| v.is_finite());
+    assert!(finite, "no NaN or infinity in any buffer");
+}
+
+#[test]
+fn perspective_correct_interpolation_on_a_grazing_plane() {
+    // A floor quad x ∈ [−4, 4], z ∈ [−1, −41] at y = −1, colours = (u, v, 0) with
+    // u = (x + 4)/8, v = (−1 − z)/40: the analytic u, v at each pixel come from the ray hit.
+    let corners = [(-4.0, -1.0), (4.0, -1.0), (4.0, -41.0), (-4.0, -41.0)];
+    let positions: Vec<Vec3> = corners
+        .iter()
+        .map(|&(x, z)| Vec3::new(x, -1.0, z))
+        .collect();
+    let uv = |p: Vec3| Vec3::new((p.x + 4.0) / 8.0, (-1.0 - p.z) / 40.0, 0.0);
+    let colors = positions.iter().map(|&p| uv(p)).collect();
+    let size = 96;
+    let mesh = mesh_of(positions, colors, vec![[0, 1, 2], [0, 2, 3]]);
+    let (scene, mut settings) = camera_scene(mesh, size);
+    let correct = render(&scene, &settings);
+    settings.perspective_correct = false;
+    let affine = render(&scene, &settings);
+    let (mut max_correct, mut max_affine, mut n) = (0.0f32, 0.0f32, 0);
+    for y in 0..size {
+        for x in 0..size {
+            let i = ((size - 1 - y) * size + x) as usize;
+            if correct.pixels.coverage[i] == 0 {
+                continue;
+            }
+            let Some(hit) = floor_hit(x, y, size) else {
+                panic!("pixel ({x}, {y}) covered above the horizon");
+            };
+            let expect = uv(hit);
+            let got = Vec3::from(correct.pixels.color[i]);
+            let got_affine = Vec3::from(affine.pixels.color[i]);
+            max_correct = max_correct.max((got - expect).abs().max_element());
+            max_affine = max_affine.max((got_affine - expect).abs().max_element());
+            n += 1;
+        }
+    }
+    assert!(
+        n > 1000,
+        "the plane covers the lower part of the image ({n} pixels)"
+    );
+    assert!(
+        max_correct < 2e-3,
+        "perspective-correct error {max_correct}"
+    );
+    assert!(
+        max_affine > 0.1,
+        "affine interpolation must visibly differ ({max_affine})"
+    );
+}
+
+#[test]
+fn the_depth_test_keeps_the_nearest_whatever_the_order() {
+    let near_tri = [
+        Vec3::new(-1.0, -1.0, -2.0),
+        Vec3::new(1.0, -1.0, -2.0),
+        Vec3::new(0.0, 1.0, -2.0),
+    ];
+    let far_tri = [
+        Vec3::new(-2.0, -2.0, -4.0),
+        Vec3::new(2.0, -2.0, -4.0),
+        Vec3::new(0.0, 2.0, -4.0),
+    ];
+    for order in [[near_tri, far_tri], [far_tri, near_tri]] {
+        let positions: Vec<Vec3> = order.iter().flatten().copied().collect();
+        let colors = positions
+            .iter()
+            .map(|p| if p.z == -2.0 { Vec3::X } else { Vec3::Y })
+            .collect();
+        let (scene, mut settings) =
+            camera_scene(mesh_of(positions, colors, vec![[0, 1, 2], [3, 4, 5]]), 32);
+        settings.depth_test = DepthTest::Less;
+        let c = render(&scene, &settings);
+        let centre = (16 * 32 + 16) as usize;
+        assert_eq!(
+            c.pixels.color[centre],
+            [1.0, 0.0, 0.0],
+            "the near (red) triangle wins"
+        );
+        // Depth at the centre: window z of eye depth 2 with near 0.5, far 200:
+        // z_ndc = (f+n)/(f−n) − 2fn/((f−n)·d), z_w = (z_ndc+1)/2.
+        let (n, f, d) = (0.5f32, 200.0f32, 2.0f32);
+        let z_ndc = (f + n) / (f - n) - 2.0 * f * n / ((f - n) * d);
+        assert!((c.pixels.depth[centre] - (z_ndc + 1.0) / 2.0).abs() < 1e-5);
+    }
+}
+
+#[test]
+fn multisampling_counts_samples_and_resolves_colour() {
+    // A half-plane x ≤ 8.5 (through the centres of column 8) over a 16×16 window, 4 samples.
+    let (scene, mut settings) = pixel_scene(
+        16,
+        16,
+        &[
+            [
+                Vec2::new(-10.0, -10.0),
+                Vec2::new(8.5, -10.0),
+                Vec2::new(8.5, 40.0),
+            ],
+            [
+                Vec2::new(-10.0, -10.0),
+                Vec2::new(8.5, 40.0),
+                Vec2::new(-10.0, 40.0),
+            ],
+        ],
+    );
+    settings.samples = Samples::X4;
+    settings.background = Vec3::ZERO;
+    let c = render(&scene, &settings);
+    // Column 8: the rotated-grid samples at x offsets 0.375, 0.875, 0.125, 0.625: two are left of
+    // 8.5 → coverage 2 of 4 in every row; columns < 8 fully covered, > 8 empty.
+    for y in 0..16 {
+        let i = |x: u32| ((15 - y) * 16 + x) as usize;
+        assert_eq!(c.pixels.coverage[i(7)], 4);
+        assert_eq!(c.pixels.coverage[i(8)], 2);
+        assert_eq!(c.pixels.coverage[i(9)], 0);
+    }
+}
