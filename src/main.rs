@@ -1,1 +1,5 @@
-fn main() {}
+//! The `pipelens` binary: see `pipelens --help`.
+
+fn main() -> std::process::ExitCode {
+    pipelens::cli::main()
+}

@@ -1,0 +1,234 @@
+//! The command line: `pipelens [COMMAND]`.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::str::FromStr;
+
+use anyhow::{Context, Result};
+use clap::{Parser, Subcommand};
+use pipeline::scene::{MAX_VIEWPORT_SIDE, Samples};
+
+use crate::export::{ExportOptions, export_capture};
+use crate::lesson::{self, SceneSpec};
+
+/// pipelens — the graphics pipeline as a glass box.
+#[derive(Debug, Parser)]
+#[command(name = "pipelens", version, about, long_about = None)]
+pub struct Cli {
+    /// What to do; with none, pipelens exports the built-in scene into ./pipelens-export.
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Render a scene with no window and write every stage's buffers as PNG, plus capture.json.
+    Export {
+        /// The scene file (TOML); the built-in scene when omitted.
+        scene: Option<PathBuf>,
+        /// The folder to write into (created if missing).
+        #[arg(long, short)]
+        out: PathBuf,
+        /// Viewport size, e.g. 1280x720 (overrides the scene's).
+        #[arg(long)]
+        size: Option<Size>,
+        /// Samples per pixel: 1, 4, 8 or 16 (overrides the scene's).
+        #[arg(long)]
+        samples: Option<u32>,
+        /// Magnification of overlays.png (0: at least 1280 pixels wide).
+        #[arg(long, default_value_t = 0)]
+        zoom: u32,
+        /// At most this many vertex rows and primitive records in capture.json.
+        #[arg(long, default_value_t = 200_000)]
+        max_records: usize,
+    },
+    /// Validate scene files and print every problem with file:line:column.
+    Check {
+        /// The files to check.
+        #[arg(required = true)]
+        paths: Vec<PathBuf>,
+    },
+    /// Time each stage of the pipeline on standard scenes.
+    Bench {
+        /// One frame per case (a smoke run).
+        #[arg(long)]
+        quick: bool,
+        /// Frames per case (the median is shown).
+        #[arg(long)]
+        frames: Option<usize>,
+    },
+}
+
+/// A viewport size `WIDTHxHEIGHT`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Size {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+}
+
+impl FromStr for Size {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let (w, h) = s
+            .split_once(['x', 'X', '×'])
+            .ok_or_else(|| format!("expected WIDTHxHEIGHT such as 1280x720, got \"{s}\""))?;
+        let side = |v: &str| -> Result<u32, String> {
+            v.trim()
+                .parse::<u32>()
+                .ok()
+                .filter(|n| (1..=MAX_VIEWPORT_SIDE).contains(n))
+                .ok_or_else(|| format!("each side must be a whole number from 1 to {MAX_VIEWPORT_SIDE}, got \"{v}\""))
+        };
+        Ok(Self {
+            width: side(w)?,
+            height: side(h)?,
+        })
+    }
+}
+
+/// Parses the command line, runs it, prints errors as one clear message, and returns the exit code.
+#[must_use]
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("pipelens: error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// Runs a parsed command line.
+///
+/// # Errors
+/// Any failure, with its context, for `main` to print.
+pub fn run(cli: Cli) -> Result<ExitCode> {
+    match cli.command {
+        None => {
+            let out = PathBuf::from("pipelens-export");
+            export(None, &out, None, None, 0, 200_000)?;
+            println!(
+                "The desktop app is not built yet: pipelens exported the built-in scene instead.\n\
+                 Open {}/overlays.png and color.png, or read capture.json.",
+                out.display()
+            );
+            Ok(ExitCode::SUCCESS)
+        }
+        Some(Command::Export {
+            scene,
+            out,
+            size,
+            samples,
+            zoom,
+            max_records,
+        }) => {
+            export(scene.as_deref(), &out, size, samples, zoom, max_records)?;
+            Ok(ExitCode::SUCCESS)
+        }
+        Some(Command::Check { paths }) => Ok(check(&paths)),
+        Some(Command::Bench { quick, frames }) => {
+            crate::bench::run(quick, frames, &mut std::io::stdout().lock())?;
+            Ok(ExitCode::SUCCESS)
+        }
+    }
+}
+
+/// Loads a scene file, or the built-in scene for `None`.
+///
+/// # Errors
+/// The file's diagnostics, all of them.
+pub fn load(scene: Option<&Path>) -> Result<SceneSpec> {
+    let spec = match scene {
+        Some(p) => lesson::load_scene_file(p),
+        None => lesson::default_scene(),
+    };
+    spec.map_err(|d| anyhow::anyhow!("{d}"))
+}
+
+fn export(
+    scene: Option<&Path>,
+    out: &Path,
+    size: Option<Size>,
+    samples: Option<u32>,
+    zoom: u32,
+    max_records: usize,
+) -> Result<()> {
+    let mut spec = load(scene)?;
+    if let Some(s) = size {
+        spec.settings.width = s.width;
+        spec.settings.height = s.height;
+    }
+    if let Some(n) = samples {
+        spec.settings.samples = Samples::from_count(n)
+            .with_context(|| format!("--samples must be 1, 4, 8 or 16, got {n}"))?;
+    }
+    let capture = pipeline::render(&spec.scene, &spec.settings)?;
+    let opts = ExportOptions {
+        out: out.to_path_buf(),
+        overlay_zoom: zoom,
+        max_records,
+    };
+    let mut stderr = std::io::stderr().lock();
+    let written = export_capture(&capture, &opts, &mut |done, all, name| {
+        let _ = write!(stderr, "\rwriting {done}/{all}: {name:<24}");
+    })?;
+    let _ = writeln!(stderr);
+    println!(
+        "Exported {} files ({}×{}, {} sample(s), {} primitives) to {}:",
+        written.len(),
+        spec.settings.width,
+        spec.settings.height,
+        spec.settings.samples.count(),
+        capture.primitives.len(),
+        out.display()
+    );
+    for p in &written {
+        println!("  {}", p.display());
+    }
+    Ok(())
+}
+
+fn check(paths: &[PathBuf]) -> ExitCode {
+    let mut failed = 0;
+    for p in paths {
+        match lesson::load_scene_file(p) {
+            Ok(_) => println!("{}: ok", p.display()),
+            Err(d) => {
+                failed += 1;
+                eprintln!("{d}");
+            }
+        }
+    }
+    if failed > 0 {
+        eprintln!("{failed} of {} file(s) have errors", paths.len());
+        ExitCode::FAILURE
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Size;
+
+    #[test]
+    fn sizes_parse_and_reject() {
+        assert_eq!(
+            "640x480".parse::<Size>(),
+            Ok(Size {
+                width: 640,
+                height: 480
+            })
+        );
+        assert_eq!("1280×720".parse::<Size>().map(|s| s.width), Ok(1280));
+        for bad in ["640", "0x10", "10x0", "100000x100000", "axb", "-5x5"] {
+            assert!(bad.parse::<Size>().is_err(), "{bad} should be rejected");
+        }
+    }
+}

@@ -1,0 +1,169 @@
+//! Export of a capture: one PNG per buffer, the overlays drawn over the colour image, and
+//! `capture.json` with the numbers. Everything is encoded in memory first; then each file is
+//! written to a temporary name beside its target and renamed, so a file is either whole or absent.
+
+mod json;
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, Result};
+use image::{ImageEncoder, codecs::png::PngEncoder};
+use pipeline::capture::{BufferKind, FrameCapture};
+use pipeline::overlay::OverlayKind;
+
+pub use json::capture_json;
+
+/// Options of an export.
+#[derive(Clone, Debug)]
+pub struct ExportOptions {
+    /// The folder the files go to (created if missing).
+    pub out: PathBuf,
+    /// Magnification of the overlay image (nearest-neighbour, so pixels stay visible);
+    /// 0 chooses one that makes it at least 1280 pixels wide (at most 16×).
+    pub overlay_zoom: u32,
+    /// The most vertex and primitive records written to `capture.json` (the rest is counted).
+    pub max_records: usize,
+}
+
+/// One file of an export.
+#[derive(Clone, Debug)]
+pub struct ExportFile {
+    /// File name within the folder.
+    pub name: String,
+    /// What it holds.
+    pub description: String,
+    /// Its bytes.
+    pub bytes: Vec<u8>,
+}
+
+/// The files of a capture, encoded, in the order they are written.
+///
+/// # Errors
+/// When an image cannot be encoded.
+pub fn encode_capture(capture: &FrameCapture, opts: &ExportOptions) -> Result<Vec<ExportFile>> {
+    let mut files = Vec::new();
+    for kind in BufferKind::ALL {
+        let img = capture.image(kind);
+        files.push(ExportFile {
+            name: format!("{}.png", kind.name()),
+            description: kind.mapping().to_owned(),
+            bytes: png_rgba(&img)?,
+        });
+    }
+    let d16 = capture.depth16();
+    let mut bytes = Vec::new();
+    PngEncoder::new(&mut bytes)
+        .write_image(
+            d16.as_raw()
+                .iter()
+                .flat_map(|v| v.to_be_bytes())
+                .collect::<Vec<u8>>()
+                .as_slice(),
+            d16.width(),
+            d16.height(),
+            image::ExtendedColorType::L16,
+        )
+        .context("encoding depth16.png")?;
+    files.push(ExportFile {
+        name: "depth16.png".into(),
+        description: "16-bit grey = round(65535·z_w), window depth with no stretching".into(),
+        bytes,
+    });
+    let zoom = if opts.overlay_zoom == 0 {
+        1280u32.div_ceil(capture.width()).clamp(1, 16)
+    } else {
+        opts.overlay_zoom
+    };
+    let overlays = capture.image_with_overlays(BufferKind::Color, &OverlayKind::ALL, zoom);
+    files.push(ExportFile {
+        name: "overlays.png".into(),
+        description: format!(
+            "the colour image magnified {zoom}× with each triangle's bounding box (amber) and edges (white)"
+        ),
+        bytes: png_rgba(&overlays)?,
+    });
+    let listing: Vec<(String, String)> = files
+        .iter()
+        .map(|f| (f.name.clone(), f.description.clone()))
+        .collect();
+    let json = capture_json(capture, &listing, opts.max_records);
+    files.push(ExportFile {
+        name: "capture.json".into(),
+        description: "matrices, vertex table, primitive records, raster triangles".into(),
+        bytes: serde_json::to_vec_pretty(&json).context("encoding capture.json")?,
+    });
+    Ok(files)
+}
+
+fn png_rgba(img: &image::RgbaImage) -> Result<Vec<u8>> {
+    let mut bytes = Vec::new();
+    PngEncoder::new(&mut bytes)
+        .write_image(
+            img.as_raw(),
+            img.width(),
+            img.height(),
+            image::ExtendedColorType::Rgba8,
+        )
+        .context("encoding a PNG")?;
+    Ok(bytes)
+}
+
+/// Encodes and writes every file of a capture into `opts.out`; returns the paths written.
+/// `progress` is called after each file with (files done, files in all, name).
+///
+/// # Errors
+/// When the folder cannot be created or a file cannot be written; files already renamed into
+/// place stay whole, and no partial file is left behind.
+pub fn export_capture(
+    capture: &FrameCapture,
+    opts: &ExportOptions,
+    progress: &mut dyn FnMut(usize, usize, &str),
+) -> Result<Vec<PathBuf>> {
+    let files = encode_capture(capture, opts)?;
+    write_files(&opts.out, &files, progress)
+}
+
+/// Writes files into a folder, each through a temporary file and a rename.
+///
+/// # Errors
+/// When the folder cannot be created or a file cannot be written.
+pub fn write_files(
+    dir: &Path,
+    files: &[ExportFile],
+    progress: &mut dyn FnMut(usize, usize, &str),
+) -> Result<Vec<PathBuf>> {
+    std::fs::create_dir_all(dir)
+        .with_context(|| format!("cannot create the folder {}", dir.display()))?;
+    let mut written = Vec::with_capacity(files.len());
+    for (i, f) in files.iter().enumerate() {
+        let target = dir.join(&f.name);
+        write_atomically(&target, &f.bytes)?;
+        written.push(target);
+        progress(i + 1, files.len(), &f.name);
+    }
+    Ok(written)
+}
+
+/// Writes `bytes` to `target` whole or not at all: a temporary file in the same folder, flushed
+/// to disk, then renamed over the target.
+///
+/// # Errors
+/// When the temporary file cannot be created, written or renamed (it is removed then).
+pub fn write_atomically(target: &Path, bytes: &[u8]) -> Result<()> {
+    let name = target
+        .file_name()
+        .map_or_else(|| "file".into(), |n| n.to_string_lossy().into_owned());
+    let tmp = target.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
+    let result = (|| -> std::io::Result<()> {
+        let mut f = std::fs::File::create(&tmp)?;
+        f.write_all(bytes)?;
+        f.sync_all()?;
+        std::fs::rename(&tmp, target)
+    })();
+    if let Err(e) = result {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(e).with_context(|| format!("cannot write {}", target.display()));
+    }
+    Ok(())
+}

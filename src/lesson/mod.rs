@@ -1,0 +1,128 @@
+//! Scene files (and, later, lessons): plain TOML that a teacher can write, parsed in two tiers.
+//!
+//! 1. [`raw`] mirrors the file (serde, unknown keys rejected, every value with its position);
+//! 2. [`validate`] resolves it into a `pipeline::scene::Scene` and `RenderSettings`, collecting
+//!    every problem as a [`Diagnostic`] with file:line:column and what was expected.
+//!
+//! The grammar of a scene file is documented in `lessons/README.md`.
+
+mod diagnostic;
+pub mod raw;
+pub mod validate;
+
+use std::path::{Path, PathBuf};
+
+pub use diagnostic::{Diagnostic, Diagnostics};
+use pipeline::scene::{RenderSettings, Scene};
+
+/// The scene built into pipelens, used when no file is given.
+pub const DEFAULT_SCENE: &str = include_str!("../../assets/scenes/default.toml");
+/// The name under which the built-in scene appears in messages.
+pub const DEFAULT_SCENE_NAME: &str = "<built-in default scene>";
+
+/// A scene ready to render.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneSpec {
+    /// What is drawn.
+    pub scene: Scene,
+    /// How it is drawn.
+    pub settings: RenderSettings,
+}
+
+/// The largest scene or lesson file read (a larger one is surely a mistake).
+pub const MAX_FILE_BYTES: u64 = 4 * 1024 * 1024;
+
+/// Reads and validates a scene file. Relative mesh paths are relative to the file's folder.
+///
+/// # Errors
+/// Every problem found, each with its position.
+pub fn load_scene_file(path: &Path) -> Result<SceneSpec, Diagnostics> {
+    let shown = path.display().to_string();
+    let text = read_text(path)?;
+    let base = path.parent().map_or_else(PathBuf::new, Path::to_path_buf);
+    parse_scene(&text, &shown, &base)
+}
+
+/// Reads a text file with a size limit and a clear message for each failure.
+///
+/// # Errors
+/// A diagnostic naming the file and why it cannot be read.
+pub fn read_text(path: &Path) -> Result<String, Diagnostics> {
+    let shown = path.display().to_string();
+    let fail = |m: String| Diagnostics(vec![Diagnostic::whole_file(&shown, m)]);
+    let meta = std::fs::metadata(path).map_err(|e| fail(format!("cannot read the file: {e}")))?;
+    if meta.is_dir() {
+        return Err(fail("this is a folder, not a file".to_owned()));
+    }
+    if meta.len() > MAX_FILE_BYTES {
+        return Err(fail(format!(
+            "the file is {} bytes; a scene or lesson file may have at most {MAX_FILE_BYTES}",
+            meta.len()
+        )));
+    }
+    let bytes = std::fs::read(path).map_err(|e| fail(format!("cannot read the file: {e}")))?;
+    String::from_utf8(bytes).map_err(|e| {
+        fail(format!(
+            "the file is not UTF-8 text (invalid byte at offset {}): is it a binary file?",
+            e.utf8_error().valid_up_to()
+        ))
+    })
+}
+
+/// Parses and validates scene text. `file` names it in messages; `base` resolves mesh paths.
+///
+/// # Errors
+/// Every problem found, each with its position.
+pub fn parse_scene(text: &str, file: &str, base: &Path) -> Result<SceneSpec, Diagnostics> {
+    let raw: raw::RawSceneFile = parse_toml(text, file)?;
+    validate::scene(&raw.scene, text, file, base)
+}
+
+/// The built-in default scene.
+///
+/// # Errors
+/// Never for the shipped scene (a test checks it); the type is shared with files.
+pub fn default_scene() -> Result<SceneSpec, Diagnostics> {
+    parse_scene(DEFAULT_SCENE, DEFAULT_SCENE_NAME, Path::new("."))
+}
+
+/// Deserializes TOML, turning a syntax or shape error into a diagnostic with a suggestion for
+/// misspelt keys.
+///
+/// # Errors
+/// The one error the TOML reader reports, with its position.
+pub fn parse_toml<T: serde::de::DeserializeOwned>(
+    text: &str,
+    file: &str,
+) -> Result<T, Diagnostics> {
+    if text.trim().is_empty() {
+        return Err(Diagnostics(vec![Diagnostic::whole_file(
+            file,
+            "the file is empty: a scene file needs a [scene] table (see lessons/README.md)",
+        )]));
+    }
+    toml::from_str(text).map_err(|e| {
+        let span = e.span().unwrap_or(0..0);
+        let message = with_suggestion(e.message().trim());
+        Diagnostics(vec![Diagnostic::at(file, text, span, message)])
+    })
+}
+
+/// Adds "did you mean `x`?" to serde's "unknown field `y`, expected one of `a`, `b`" messages.
+fn with_suggestion(message: &str) -> String {
+    let Some(rest) = message.strip_prefix("unknown field `") else {
+        return message.to_owned();
+    };
+    let Some((unknown, expected)) = rest.split_once('`') else {
+        return message.to_owned();
+    };
+    let candidates = expected.split('`').skip(1).step_by(2);
+    let best = candidates
+        .map(|c| (strsim::damerau_levenshtein(unknown, c), c))
+        .filter(|(d, c)| *d <= 2.max(c.len() / 3))
+        .min_by_key(|(d, _)| *d);
+    match best {
+        Some((_, c)) => format!("{message}; did you mean `{c}`?"),
+        None => message.to_owned(),
+    }
+}

@@ -1,0 +1,135 @@
+//! The file as written: serde structures that mirror the TOML one to one, with the position of
+//! every value kept (`Spanned`) so that validation can point at it. Unknown keys are rejected
+//! here (`deny_unknown_fields`); ranges and meanings are checked in `validate`.
+
+// The fields are the keys of the file, documented one by one in lessons/README.md.
+#![allow(missing_docs)]
+
+use serde::Deserialize;
+use toml::Spanned;
+
+/// A scene file: one `[scene]` table. Lessons add their own tables beside it.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawSceneFile {
+    /// The scene.
+    pub scene: Spanned<RawScene>,
+}
+
+/// `[scene]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawScene {
+    /// `[scene.camera]`.
+    pub camera: Option<Spanned<RawCamera>>,
+    /// `[scene.projection]`.
+    pub projection: Option<Spanned<RawProjection>>,
+    /// `[scene.render]`.
+    pub render: Option<Spanned<RawRender>>,
+    /// `[[scene.objects]]`.
+    #[serde(default)]
+    pub objects: Vec<Spanned<RawObject>>,
+}
+
+/// A 3-vector as written: `[x, y, z]`.
+pub type RawVec3 = Spanned<[f64; 3]>;
+
+/// `[scene.camera]`: `LookAt(eye, at, up)`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCamera {
+    pub eye: Option<RawVec3>,
+    pub at: Option<RawVec3>,
+    pub up: Option<RawVec3>,
+}
+
+/// `[scene.projection]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawProjection {
+    pub kind: Option<Spanned<String>>,
+    pub fovy: Option<Spanned<f64>>,
+    pub aspect: Option<Spanned<f64>>,
+    pub near: Option<Spanned<f64>>,
+    pub far: Option<Spanned<f64>>,
+    pub left: Option<Spanned<f64>>,
+    pub right: Option<Spanned<f64>>,
+    pub bottom: Option<Spanned<f64>>,
+    pub top: Option<Spanned<f64>>,
+}
+
+/// `[scene.render]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawRender {
+    pub width: Option<Spanned<i64>>,
+    pub height: Option<Spanned<i64>>,
+    pub samples: Option<Spanned<i64>>,
+    pub cull: Option<Spanned<String>>,
+    pub depth_test: Option<Spanned<String>>,
+    pub perspective_correct: Option<bool>,
+    pub background: Option<RawVec3>,
+}
+
+/// One `[[scene.objects]]` entry.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawObject {
+    pub name: Option<Spanned<String>>,
+    /// A built-in name (`"cube"`), an OBJ path (`"models/bunny.obj"`), or a table
+    /// `{ builtin = "uv_sphere", segments = 64, rings = 32 }` / `{ obj = "path.obj" }`.
+    pub mesh: Spanned<RawMesh>,
+    pub translate: Option<RawVec3>,
+    pub rotate: Option<RawVec3>,
+    /// `[sx, sy, sz]` or one number for a uniform scale.
+    pub scale: Option<Spanned<RawScale>>,
+    /// `"vertex"`, `"normal"` or `[r, g, b]`.
+    pub color: Option<Spanned<RawColor>>,
+}
+
+/// A mesh as written.
+#[derive(Debug, Deserialize)]
+#[serde(
+    untagged,
+    expecting = "a built-in mesh name, a path to an .obj file, or a table such as \
+    { builtin = \"uv_sphere\", segments = 32, rings = 16 }"
+)]
+pub enum RawMesh {
+    Name(String),
+    Table(RawMeshTable),
+}
+
+/// `{ builtin = …, … }` or `{ obj = … }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawMeshTable {
+    pub builtin: Option<String>,
+    pub obj: Option<String>,
+    pub segments: Option<i64>,
+    pub rings: Option<i64>,
+    pub divisions: Option<i64>,
+    pub sides: Option<i64>,
+    pub minor: Option<f64>,
+}
+
+/// A scale as written.
+#[derive(Debug, Deserialize)]
+#[serde(
+    untagged,
+    expecting = "a number or an array of three numbers [sx, sy, sz]"
+)]
+pub enum RawScale {
+    Uniform(f64),
+    Axes([f64; 3]),
+}
+
+/// A colour as written.
+#[derive(Debug, Deserialize)]
+#[serde(
+    untagged,
+    expecting = "\"vertex\", \"normal\" or an array of three numbers [r, g, b] in 0…1"
+)]
+pub enum RawColor {
+    Named(String),
+    Rgb([f64; 3]),
+}

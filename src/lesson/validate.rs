@@ -1,0 +1,513 @@
+//! The second tier: resolves what the file says into a scene, checking every range and
+//! reference, and collecting every problem with its position (not just the first).
+
+use std::ops::Range;
+use std::path::Path;
+
+use glam::Vec3;
+use pipeline::mesh::{BuiltinMesh, Mesh};
+use pipeline::scene::{
+    Camera, ColorSource, CullMode, DepthTest, MAX_CAPTURE_SAMPLES, MAX_VIEWPORT_SIDE, Object,
+    Projection, RenderSettings, Samples, Scene,
+};
+use toml::Spanned;
+
+use super::raw::{
+    RawColor, RawMesh, RawMeshTable, RawObject, RawProjection, RawRender, RawScale, RawScene,
+    RawVec3,
+};
+use super::{Diagnostic, Diagnostics, SceneSpec};
+
+/// Collects diagnostics against one source text.
+struct Checker<'a> {
+    text: &'a str,
+    file: &'a str,
+    found: Vec<Diagnostic>,
+}
+
+impl Checker<'_> {
+    fn error(&mut self, span: Range<usize>, message: impl Into<String>) {
+        self.found
+            .push(Diagnostic::at(self.file, self.text, span, message));
+    }
+
+    /// A finite number, else a diagnostic naming the key.
+    fn finite(&mut self, key: &str, v: &Spanned<f64>) -> Option<f32> {
+        let x = *v.get_ref();
+        if x.is_finite() && x.abs() <= f64::from(f32::MAX) {
+            Some(x as f32)
+        } else {
+            self.error(
+                v.span(),
+                format!("`{key}` must be a finite number, got {x}"),
+            );
+            None
+        }
+    }
+
+    fn vec3(&mut self, key: &str, v: &RawVec3) -> Option<Vec3> {
+        let [x, y, z] = *v.get_ref();
+        if [x, y, z].iter().all(|c| c.is_finite() && c.abs() <= 1e15) {
+            Some(Vec3::new(x as f32, y as f32, z as f32))
+        } else {
+            self.error(
+                v.span(),
+                format!("`{key}` must be three finite numbers of magnitude at most 1e15, got [{x}, {y}, {z}]"),
+            );
+            None
+        }
+    }
+
+    fn choice<T: Copy>(
+        &mut self,
+        key: &str,
+        v: &Spanned<String>,
+        options: &[(&str, T)],
+    ) -> Option<T> {
+        let found = options
+            .iter()
+            .find(|(name, _)| *name == v.get_ref().as_str());
+        if found.is_none() {
+            let names: Vec<String> = options.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+            self.error(
+                v.span(),
+                format!(
+                    "`{key}` must be one of {}, got \"{}\"",
+                    names.join(", "),
+                    v.get_ref()
+                ),
+            );
+        }
+        found.map(|(_, t)| *t)
+    }
+}
+
+/// Validates `[scene]` into a renderable scene.
+///
+/// # Errors
+/// Every problem found.
+pub fn scene(
+    raw: &Spanned<RawScene>,
+    text: &str,
+    file: &str,
+    base: &Path,
+) -> Result<SceneSpec, Diagnostics> {
+    let mut c = Checker {
+        text,
+        file,
+        found: Vec::new(),
+    };
+    let s = raw.get_ref();
+    let mut camera = Camera::default();
+    if let Some(cam) = &s.camera {
+        let cam_ref = cam.get_ref();
+        for (key, v, slot) in [
+            ("eye", &cam_ref.eye, &mut camera.eye),
+            ("at", &cam_ref.at, &mut camera.at),
+            ("up", &cam_ref.up, &mut camera.up),
+        ] {
+            if let Some(v) = v.as_ref().and_then(|v| c.vec3(key, v)) {
+                *slot = v;
+            }
+        }
+        if let Err(e) = pipeline::transform::camera_frame(camera.eye, camera.at, camera.up) {
+            c.error(cam.span(), format!("the camera is degenerate: {e}"));
+        }
+    }
+    let settings = s
+        .render
+        .as_ref()
+        .map_or_else(RenderSettings::default, |r| render(&mut c, r));
+    let projection = s
+        .projection
+        .as_ref()
+        .map_or_else(Projection::default, |p| projection(&mut c, p));
+    if s.objects.is_empty() {
+        c.error(
+            raw.span().start..raw.span().start,
+            "the scene has no objects: add at least one [[scene.objects]] with a `mesh`",
+        );
+    }
+    let objects = s
+        .objects
+        .iter()
+        .enumerate()
+        .filter_map(|(i, o)| object(&mut c, o, i, base))
+        .collect();
+    if c.found.is_empty() {
+        Ok(SceneSpec {
+            scene: Scene {
+                objects,
+                camera,
+                projection,
+            },
+            settings,
+        })
+    } else {
+        Err(Diagnostics(c.found))
+    }
+}
+
+fn render(c: &mut Checker<'_>, r: &Spanned<RawRender>) -> RenderSettings {
+    let raw = r.get_ref();
+    let mut s = RenderSettings::default();
+    for (key, v, slot) in [
+        ("width", &raw.width, &mut s.width),
+        ("height", &raw.height, &mut s.height),
+    ] {
+        if let Some(v) = v {
+            match u32::try_from(*v.get_ref()) {
+                Ok(n) if (1..=MAX_VIEWPORT_SIDE).contains(&n) => *slot = n,
+                _ => c.error(
+                    v.span(),
+                    format!("`{key}` must be a whole number of pixels from 1 to {MAX_VIEWPORT_SIDE}, got {}", v.get_ref()),
+                ),
+            }
+        }
+    }
+    if let Some(v) = &raw.samples {
+        match u32::try_from(*v.get_ref())
+            .ok()
+            .and_then(Samples::from_count)
+        {
+            Some(n) => s.samples = n,
+            None => c.error(
+                v.span(),
+                format!("`samples` must be 1, 4, 8 or 16, got {}", v.get_ref()),
+            ),
+        }
+    }
+    let total = u64::from(s.width) * u64::from(s.height) * s.samples.count() as u64;
+    if total > MAX_CAPTURE_SAMPLES {
+        c.error(
+            r.span(),
+            format!(
+                "{}×{} pixels × {} samples is more than one capture may hold ({MAX_CAPTURE_SAMPLES} samples)",
+                s.width,
+                s.height,
+                s.samples.count()
+            ),
+        );
+    }
+    if let Some(v) = &raw.cull {
+        s.cull = c
+            .choice(
+                "cull",
+                v,
+                &[
+                    ("none", CullMode::None),
+                    ("back", CullMode::Back),
+                    ("front", CullMode::Front),
+                ],
+            )
+            .unwrap_or_default();
+    }
+    if let Some(v) = &raw.depth_test {
+        s.depth_test = c
+            .choice(
+                "depth_test",
+                v,
+                &[
+                    ("less", DepthTest::Less),
+                    ("less_equal", DepthTest::LessEqual),
+                    ("greater", DepthTest::Greater),
+                    ("greater_equal", DepthTest::GreaterEqual),
+                    ("always", DepthTest::Always),
+                ],
+            )
+            .unwrap_or_default();
+    }
+    if let Some(b) = raw.perspective_correct {
+        s.perspective_correct = b;
+    }
+    if let Some(v) = &raw.background
+        && let Some(bg) = c.vec3("background", v)
+    {
+        if bg.min_element() < 0.0 || bg.max_element() > 1.0 {
+            c.error(v.span(), "`background` components must be between 0 and 1");
+        }
+        s.background = bg;
+    }
+    s
+}
+
+fn projection(c: &mut Checker<'_>, p: &Spanned<RawProjection>) -> Projection {
+    let raw = p.get_ref();
+    let kind = raw
+        .kind
+        .as_ref()
+        .map_or("perspective", |k| k.get_ref().as_str());
+    let before = c.found.len();
+    let mut num = |key: &str, v: &Option<Spanned<f64>>| v.as_ref().and_then(|v| c.finite(key, v));
+    let fovy = num("fovy", &raw.fovy);
+    let aspect = num("aspect", &raw.aspect);
+    let near = num("near", &raw.near);
+    let far = num("far", &raw.far);
+    let sides = [
+        num("left", &raw.left),
+        num("right", &raw.right),
+        num("bottom", &raw.bottom),
+        num("top", &raw.top),
+    ];
+    let side_spans = [&raw.left, &raw.right, &raw.bottom, &raw.top];
+    let projection = match kind {
+        "perspective" => {
+            for (key, v) in ["left", "right", "bottom", "top"].iter().zip(side_spans) {
+                if let Some(v) = v {
+                    c.error(
+                        v.span(),
+                        format!("`{key}` belongs to kind = \"frustum\" or \"ortho\"; a perspective projection is given by fovy, aspect, near, far"),
+                    );
+                }
+            }
+            Projection::Perspective {
+                fovy_deg: fovy.unwrap_or(45.0),
+                aspect,
+                near: near.unwrap_or(0.1),
+                far: far.unwrap_or(50.0),
+            }
+        }
+        "frustum" | "ortho" => {
+            for (key, v) in [("fovy", &raw.fovy), ("aspect", &raw.aspect)] {
+                if let Some(v) = v {
+                    c.error(
+                        v.span(),
+                        format!("`{key}` belongs to kind = \"perspective\""),
+                    );
+                }
+            }
+            let missing: Vec<&str> = ["left", "right", "bottom", "top"]
+                .iter()
+                .zip(side_spans)
+                .filter(|(_, v)| v.is_none())
+                .map(|(k, _)| *k)
+                .collect();
+            if !missing.is_empty() {
+                c.error(
+                    p.span(),
+                    format!(
+                        "a {kind} projection needs left, right, bottom and top; missing: {}",
+                        missing.join(", ")
+                    ),
+                );
+            }
+            let [l, r, b, t] = sides.map(|v| v.unwrap_or(0.0));
+            let (near, far) = (near.unwrap_or(0.1), far.unwrap_or(50.0));
+            if kind == "frustum" {
+                Projection::Frustum {
+                    left: l,
+                    right: r,
+                    bottom: b,
+                    top: t,
+                    near,
+                    far,
+                }
+            } else {
+                Projection::Ortho {
+                    left: l,
+                    right: r,
+                    bottom: b,
+                    top: t,
+                    near,
+                    far,
+                }
+            }
+        }
+        other => {
+            let span = raw.kind.as_ref().map_or(p.span(), Spanned::span);
+            c.error(
+                span,
+                format!(
+                    "`kind` must be \"perspective\", \"frustum\" or \"ortho\", got \"{other}\""
+                ),
+            );
+            Projection::default()
+        }
+    };
+    if c.found.len() == before {
+        report_ranges(c, p, &projection);
+    }
+    projection
+}
+
+/// Reports the projection's range problems, each pointed at the value that breaks it.
+fn report_ranges(c: &mut Checker<'_>, p: &Spanned<RawProjection>, projection: &Projection) {
+    let raw = p.get_ref();
+    for problem in projection.problems() {
+        let value = match problem.split_whitespace().next().unwrap_or("") {
+            "fovy" => &raw.fovy,
+            "aspect" => &raw.aspect,
+            "near" => &raw.near,
+            "far" => &raw.far,
+            "left" => &raw.left,
+            "bottom" => &raw.bottom,
+            _ => &None,
+        };
+        c.error(value.as_ref().map_or(p.span(), Spanned::span), problem);
+    }
+}
+
+fn object(
+    c: &mut Checker<'_>,
+    o: &Spanned<RawObject>,
+    index: usize,
+    base: &Path,
+) -> Option<Object> {
+    let raw = o.get_ref();
+    let mesh = mesh(c, &raw.mesh, base)?;
+    let name = raw
+        .name
+        .as_ref()
+        .map_or_else(|| format!("{}#{index}", mesh.name), |n| n.get_ref().clone());
+    let mut object = Object::new(&name, mesh);
+    if let Some(v) = raw.translate.as_ref().and_then(|v| c.vec3("translate", v)) {
+        object.translate = v;
+    }
+    if let Some(v) = raw.rotate.as_ref().and_then(|v| c.vec3("rotate", v)) {
+        object.rotate_deg = v;
+    }
+    if let Some(s) = &raw.scale {
+        let v = match *s.get_ref() {
+            RawScale::Uniform(k) => [k; 3],
+            RawScale::Axes(a) => a,
+        };
+        if let Some(v) = c.vec3("scale", &Spanned::new(s.span(), v)) {
+            if v.cmpeq(Vec3::ZERO).any() {
+                c.error(s.span(), "`scale` must not be zero in any axis (the object would be flattened to nothing)");
+            }
+            object.scale = v;
+        }
+    }
+    if let Some(col) = &raw.color {
+        object.color = match col.get_ref() {
+            RawColor::Named(n) if n == "vertex" => ColorSource::Vertex,
+            RawColor::Named(n) if n == "normal" => ColorSource::Normal,
+            RawColor::Named(n) => {
+                c.error(
+                    col.span(),
+                    format!("`color` must be \"vertex\", \"normal\" or [r, g, b], got \"{n}\""),
+                );
+                ColorSource::Vertex
+            }
+            RawColor::Rgb(rgb) => {
+                let v = c
+                    .vec3("color", &Spanned::new(col.span(), *rgb))
+                    .unwrap_or(Vec3::ONE);
+                if v.min_element() < 0.0 || v.max_element() > 1.0 {
+                    c.error(col.span(), "`color` components must be between 0 and 1");
+                }
+                ColorSource::Uniform(v)
+            }
+        };
+    }
+    Some(object)
+}
+
+fn mesh(c: &mut Checker<'_>, m: &Spanned<RawMesh>, base: &Path) -> Option<Mesh> {
+    let span = m.span();
+    let table = match m.get_ref() {
+        RawMesh::Name(n) if n.to_ascii_lowercase().ends_with(".obj") => {
+            return load_obj(c, span, &base.join(n));
+        }
+        RawMesh::Name(n) => &RawMeshTable {
+            builtin: Some(n.clone()),
+            obj: None,
+            segments: None,
+            rings: None,
+            divisions: None,
+            sides: None,
+            minor: None,
+        },
+        RawMesh::Table(t) => t,
+    };
+    match (&table.builtin, &table.obj) {
+        (Some(_), Some(_)) | (None, None) => {
+            c.error(
+                span,
+                "a mesh table needs exactly one of `builtin = \"…\"` or `obj = \"path.obj\"`",
+            );
+            None
+        }
+        (None, Some(path)) => load_obj(c, span, &base.join(path)),
+        (Some(name), None) => builtin(c, span, name, table).map(BuiltinMesh::build),
+    }
+}
+
+fn load_obj(c: &mut Checker<'_>, span: Range<usize>, path: &Path) -> Option<Mesh> {
+    match Mesh::load_obj(path) {
+        Ok(m) => Some(m),
+        Err(e) => {
+            c.error(span, e.to_string());
+            None
+        }
+    }
+}
+
+fn builtin(
+    c: &mut Checker<'_>,
+    span: Range<usize>,
+    name: &str,
+    t: &RawMeshTable,
+) -> Option<BuiltinMesh> {
+    let minor = match t.minor {
+        None => 0.35,
+        Some(v) if v > 0.0 && v < 1.0 => v as f32,
+        Some(v) => {
+            c.error(
+                span.clone(),
+                format!("`minor` of a torus must be between 0 and 1 (exclusive), got {v}"),
+            );
+            0.35
+        }
+    };
+    let mut count = |key: &str, v: Option<i64>, default: u32, min: u32, max: u32| -> u32 {
+        match v {
+            None => default,
+            Some(n) if (i64::from(min)..=i64::from(max)).contains(&n) => n as u32,
+            Some(n) => {
+                c.error(
+                    span.clone(),
+                    format!("`{key}` of a {name} must be from {min} to {max}, got {n}"),
+                );
+                default
+            }
+        }
+    };
+    let mesh = match name {
+        "triangle" => BuiltinMesh::Triangle,
+        "two_triangles" => BuiltinMesh::TwoTriangles,
+        "cube" => BuiltinMesh::Cube,
+        "uv_sphere" | "sphere" => BuiltinMesh::UvSphere {
+            segments: count("segments", t.segments, 32, 3, 4096),
+            rings: count("rings", t.rings, 16, 2, 4096),
+        },
+        "plane" => BuiltinMesh::Plane {
+            divisions: count("divisions", t.divisions, 1, 1, 4096),
+        },
+        "cylinder" => BuiltinMesh::Cylinder {
+            segments: count("segments", t.segments, 32, 3, 4096),
+        },
+        "torus" => BuiltinMesh::Torus {
+            minor,
+            segments: count("segments", t.segments, 48, 3, 4096),
+            sides: count("sides", t.sides, 24, 3, 4096),
+        },
+        other => {
+            let suggestion = BuiltinMesh::NAMES
+                .iter()
+                .min_by_key(|n| strsim::damerau_levenshtein(other, n))
+                .filter(|n| strsim::damerau_levenshtein(other, n) <= 3)
+                .map(|n| format!("; did you mean \"{n}\"?"))
+                .unwrap_or_default();
+            c.error(
+                span,
+                format!(
+                    "unknown built-in mesh \"{other}\" (expected one of {}, or a path ending in .obj){suggestion}",
+                    BuiltinMesh::NAMES.map(|n| format!("\"{n}\"")).join(", ")
+                ),
+            );
+            return None;
+        }
+    };
+    Some(mesh)
+}

@@ -1,0 +1,206 @@
+//! The command line, run as a user runs it.
+
+use crate::support::{pipelens, repo, text};
+
+const EXPECTED_FILES: [&str; 9] = [
+    "color.png",
+    "depth.png",
+    "depth16.png",
+    "coverage.png",
+    "primitive_id.png",
+    "bary_perspective.png",
+    "bary_affine.png",
+    "overlays.png",
+    "capture.json",
+];
+
+#[test]
+fn export_writes_every_buffer_and_the_numbers() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("snap");
+    let o = pipelens(
+        dir.path(),
+        &[
+            "export",
+            "--out",
+            out.to_str().expect("utf-8 path"),
+            "--size",
+            "160x100",
+            "--samples",
+            "4",
+        ],
+    );
+    assert!(o.status.success(), "{}", text(&o));
+    for f in EXPECTED_FILES {
+        assert!(out.join(f).is_file(), "{f} missing");
+    }
+    // No temporary files are left behind.
+    let names: Vec<String> = std::fs::read_dir(&out)
+        .expect("listing")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(names.len(), EXPECTED_FILES.len(), "{names:?}");
+    let color = image::open(out.join("color.png")).expect("color.png decodes");
+    assert_eq!((color.width(), color.height()), (160, 100));
+    let d16 = image::open(out.join("depth16.png")).expect("depth16.png decodes");
+    assert!(
+        matches!(d16, image::DynamicImage::ImageLuma16(_)),
+        "16-bit grey"
+    );
+    let overlays = image::open(out.join("overlays.png")).expect("overlays.png decodes");
+    assert_eq!(overlays.width(), 160 * 8, "magnified to at least 1280 wide");
+    let json: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("capture.json")).expect("read"))
+            .expect("valid JSON");
+    assert_eq!(json["settings"]["width"], 160);
+    assert_eq!(json["settings"]["samples"], "X4");
+    assert_eq!(
+        json["matrices"]["projection"]["name"],
+        "P = Perspective(fovy, aspect, near, far)"
+    );
+    assert_eq!(
+        json["matrices"]["projection"]["factors"]
+            .as_array()
+            .map(Vec::len),
+        Some(3)
+    );
+    let fates: Vec<&str> = json["primitives"]
+        .as_array()
+        .expect("primitives")
+        .iter()
+        .filter_map(|p| p["fate"].as_str())
+        .collect();
+    assert!(
+        fates.contains(&"drawn") && fates.contains(&"clipped") && fates.contains(&"culled"),
+        "{fates:?}"
+    );
+    assert!(
+        json["vertices"][0]["clip"]
+            .as_array()
+            .is_some_and(|a| a.len() == 4)
+    );
+}
+
+#[test]
+fn no_subcommand_exports_the_default_scene_and_says_where() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let o = pipelens(dir.path(), &[]);
+    assert!(o.status.success(), "{}", text(&o));
+    assert!(text(&o).contains("pipelens-export"), "{}", text(&o));
+    assert!(dir.path().join("pipelens-export/color.png").is_file());
+}
+
+#[test]
+fn a_broken_scene_is_one_clear_message_and_a_failure() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let scene = dir.path().join("bad.toml");
+    std::fs::write(&scene, "[scene.projection]\nfov = 45\n").expect("write");
+    let out = dir.path().join("never");
+    let o = pipelens(
+        dir.path(),
+        &["export", "bad.toml", "--out", out.to_str().expect("utf-8")],
+    );
+    assert!(!o.status.success());
+    let t = text(&o);
+    assert!(
+        t.contains("bad.toml:2:1: error: unknown field `fov`"),
+        "{t}"
+    );
+    assert!(t.contains("did you mean `fovy`?"), "{t}");
+    assert!(!out.exists(), "nothing is written for a broken scene");
+}
+
+#[test]
+fn an_unwritable_output_is_a_clear_error() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let file = dir.path().join("a-file");
+    std::fs::write(&file, "not a folder").expect("write");
+    let o = pipelens(
+        dir.path(),
+        &["export", "--out", file.to_str().expect("utf-8")],
+    );
+    assert!(!o.status.success());
+    assert!(
+        text(&o).contains("cannot create the folder"),
+        "{}",
+        text(&o)
+    );
+}
+
+#[test]
+fn bad_sizes_and_samples_are_refused_before_rendering() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    for (args, expect) in [
+        (
+            vec!["export", "--out", "x", "--size", "0x10"],
+            "from 1 to 16384",
+        ),
+        (
+            vec!["export", "--out", "x", "--size", "100000x100000"],
+            "from 1 to 16384",
+        ),
+        (
+            vec!["export", "--out", "x", "--samples", "3"],
+            "1, 4, 8 or 16",
+        ),
+        (
+            vec![
+                "export",
+                "--out",
+                "x",
+                "--size",
+                "16384x16384",
+                "--samples",
+                "16",
+            ],
+            "more than one capture may hold",
+        ),
+    ] {
+        let o = pipelens(dir.path(), &args);
+        assert!(!o.status.success(), "{args:?}");
+        assert!(text(&o).contains(expect), "{args:?}: {}", text(&o));
+    }
+}
+
+#[test]
+fn check_validates_the_shipped_scenes_and_reports_broken_ones() {
+    let scenes = repo().join("assets/scenes");
+    let mut paths: Vec<String> = std::fs::read_dir(&scenes)
+        .expect("assets/scenes")
+        .map(|e| e.expect("entry").path().to_string_lossy().into_owned())
+        .filter(|p| p.ends_with(".toml"))
+        .collect();
+    paths.sort();
+    assert!(paths.len() >= 2);
+    let mut args = vec!["check"];
+    args.extend(paths.iter().map(String::as_str));
+    let o = pipelens(&repo(), &args);
+    assert!(o.status.success(), "{}", text(&o));
+
+    let dir = tempfile::tempdir().expect("temp dir");
+    std::fs::write(dir.path().join("a.toml"), "[scene.render]\nsamples = 3\n").expect("write");
+    let o = pipelens(dir.path(), &["check", "a.toml"]);
+    assert!(!o.status.success());
+    assert!(
+        text(&o).contains("a.toml:2:11: error: `samples` must be 1, 4, 8 or 16, got 3"),
+        "{}",
+        text(&o)
+    );
+}
+
+#[test]
+fn bench_runs_and_prints_every_stage() {
+    let o = pipelens(&repo(), &["bench", "--quick"]);
+    assert!(o.status.success(), "{}", text(&o));
+    let t = text(&o);
+    for col in [
+        "vertex",
+        "clip+setup",
+        "raster",
+        "resolve",
+        "frame",
+        "1280×720",
+    ] {
+        assert!(t.contains(col), "{col} missing from\n{t}");
+    }
+}

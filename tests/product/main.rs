@@ -1,0 +1,6 @@
+//! Tests of the whole product: the command line, scene files, exports, reference images.
+
+mod cli;
+mod reference;
+mod scene_file;
+mod support;

@@ -1,0 +1,221 @@
+//! Scene files: the shipped ones parse; each kind of mistake is reported at its exact place.
+
+use std::path::Path;
+
+use pipelens::lesson::{self, Diagnostic};
+
+fn errors(text: &str) -> Vec<Diagnostic> {
+    match lesson::parse_scene(text, "t.toml", Path::new(".")) {
+        Ok(_) => panic!("expected errors for:\n{text}"),
+        Err(d) => d.0,
+    }
+}
+
+/// Asserts that one error is at `line:column` and its message contains `needle`.
+fn assert_error(text: &str, line: usize, column: usize, needle: &str) {
+    let found = errors(text);
+    assert!(
+        found
+            .iter()
+            .any(|d| d.line == line && d.column == column && d.message.contains(needle)),
+        "expected {line}:{column} `{needle}` in:\n{}",
+        found
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
+}
+
+const OBJECT: &str = "[[scene.objects]]\nmesh = \"cube\"\n";
+
+#[test]
+fn the_default_scene_parses() {
+    let spec = lesson::default_scene().expect("the built-in scene is valid");
+    assert_eq!(spec.scene.objects.len(), 3);
+}
+
+#[test]
+fn syntax_errors_unknown_keys_and_wrong_types() {
+    assert_error("[scene\n", 1, 7, "");
+    assert_error(
+        &format!("{OBJECT}[scene.camera]\neye = [0, 0, 3\n"),
+        4,
+        15,
+        "unclosed array",
+    );
+    assert_error(
+        &format!("{OBJECT}[scene.projection]\nfov = 45\n"),
+        4,
+        1,
+        "did you mean `fovy`?",
+    );
+    assert_error(
+        &format!("{OBJECT}[scene.camera]\neye = \"far away\"\n"),
+        4,
+        7,
+        "",
+    );
+    assert_error(&format!("{OBJECT}[scene.render]\nwidth = 64.5\n"), 4, 9, "");
+    assert_error("[scenery]\n", 1, 2, "did you mean `scene`?");
+}
+
+#[test]
+fn out_of_range_values() {
+    let p = |body: &str| format!("{OBJECT}[scene.projection]\n{body}\n");
+    assert_error(&p("near = -1.0"), 4, 8, "near must be positive");
+    assert_error(
+        &p("near = 5.0\nfar = 2.0"),
+        5,
+        7,
+        "far must be greater than near",
+    );
+    assert_error(&p("fovy = 0"), 4, 8, "between 0° and 180°");
+    assert_error(&p("fovy = 180"), 4, 8, "between 0° and 180°");
+    assert_error(&p("fovy = nan"), 4, 8, "must be a finite number");
+    assert_error(&p("far = inf"), 4, 7, "must be a finite number");
+    assert_error(
+        &p("kind = \"fish-eye\""),
+        4,
+        8,
+        "\"perspective\", \"frustum\" or \"ortho\"",
+    );
+    assert_error(
+        &p("kind = \"ortho\"\nleft = 1\nright = 1\nbottom = -1\ntop = 1"),
+        5,
+        8,
+        "left must be less than right",
+    );
+    assert_error(
+        &p("kind = \"frustum\"\nleft = -1"),
+        3,
+        1,
+        "missing: right, bottom, top",
+    );
+    let r = |body: &str| format!("{OBJECT}[scene.render]\n{body}\n");
+    assert_error(&r("width = 0"), 4, 9, "from 1 to 16384");
+    assert_error(
+        &r("width = 100000\nheight = 100000"),
+        4,
+        9,
+        "from 1 to 16384",
+    );
+    assert_error(&r("samples = 3"), 4, 11, "1, 4, 8 or 16");
+    assert_error(
+        &r("cull = \"sideways\""),
+        4,
+        8,
+        "\"none\", \"back\", \"front\"",
+    );
+    assert_error(
+        &r("width = 16384\nheight = 16384\nsamples = 16"),
+        3,
+        1,
+        "more than one capture may hold",
+    );
+}
+
+#[test]
+fn cameras_meshes_and_objects() {
+    assert_error(
+        &format!("{OBJECT}[scene.camera]\neye = [0, 5, 0]\nat = [0, 0, 0]\nup = [0, 1, 0]\n"),
+        3,
+        1,
+        "parallel to the view direction",
+    );
+    assert_error(
+        "[[scene.objects]]\nmesh = \"cub\"\n",
+        2,
+        8,
+        "did you mean \"cube\"?",
+    );
+    assert_error(
+        "[[scene.objects]]\nmesh = \"missing.obj\"\n",
+        2,
+        8,
+        "missing.obj: cannot load the OBJ file",
+    );
+    assert_error(
+        "[[scene.objects]]\nmesh = { builtin = \"uv_sphere\", segments = 2 }\n",
+        2,
+        8,
+        "from 3 to 4096",
+    );
+    assert_error(
+        "[[scene.objects]]\nmesh = \"cube\"\nscale = 0\n",
+        3,
+        9,
+        "must not be zero",
+    );
+    assert_error(
+        "[[scene.objects]]\nmesh = \"cube\"\ncolor = [2, 0, 0]\n",
+        3,
+        9,
+        "between 0 and 1",
+    );
+    assert_error(
+        "[scene.render]\nwidth = 64\n",
+        1,
+        2,
+        "the scene has no objects",
+    );
+}
+
+#[test]
+fn every_problem_is_reported_not_just_the_first() {
+    let found = errors(&format!(
+        "{OBJECT}[scene.render]\nwidth = 0\nheight = 0\nsamples = 5\n"
+    ));
+    assert_eq!(found.len(), 3, "{found:?}");
+}
+
+#[test]
+fn files_that_are_not_scene_text() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let empty = dir.path().join("empty.toml");
+    std::fs::write(&empty, "").expect("write");
+    let e = lesson::load_scene_file(&empty).expect_err("empty file");
+    assert!(e.to_string().contains("the file is empty"), "{e}");
+    let binary = dir.path().join("binary.toml");
+    std::fs::write(&binary, [0x89, b'P', b'N', b'G', 0xff, 0xfe, 0]).expect("write");
+    let e = lesson::load_scene_file(&binary).expect_err("binary file");
+    assert!(e.to_string().contains("not UTF-8 text"), "{e}");
+    let e = lesson::load_scene_file(&dir.path().join("nope.toml")).expect_err("missing file");
+    assert!(e.to_string().contains("cannot read the file"), "{e}");
+}
+
+#[test]
+fn obj_files_load_with_normals_computed_and_bad_ones_are_named() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let good = dir.path().join("quad.obj");
+    std::fs::write(&good, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n").expect("write");
+    let scene = format!("[[scene.objects]]\nmesh = \"{}\"\n", good.display());
+    let spec = lesson::parse_scene(&scene, "t.toml", Path::new(".")).expect("valid");
+    let mesh = &spec.scene.objects[0].mesh;
+    assert_eq!(mesh.indices.len(), 2, "the quad is triangulated");
+    assert!(
+        mesh.normals
+            .iter()
+            .all(|n| (*n - glam::Vec3::Z).length() < 1e-6),
+        "normals computed as +z"
+    );
+    for (name, body, needle) in [
+        (
+            "out.obj",
+            "v 0 0 0\nv 1 0 0\nf 1 2 7\n",
+            "cannot load the OBJ file",
+        ),
+        ("none.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n", "has no faces"),
+        ("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", ""),
+        ("two.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", ""),
+    ] {
+        let p = dir.path().join(name);
+        std::fs::write(&p, body).expect("write");
+        let scene = format!("[[scene.objects]]\nmesh = \"{}\"\n", p.display());
+        let e = lesson::parse_scene(&scene, "t.toml", Path::new(".")).expect_err(name);
+        assert!(
+            e.0[0].message.contains(name) && e.0[0].message.contains(needle),
+            "{name}: {e}"
+        );
+    }
+}

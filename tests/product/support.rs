@@ -1,0 +1,33 @@
+//! Running the real binary.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// Runs `pipelens` with `args` in `dir`.
+pub fn pipelens(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_pipelens"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the pipelens binary runs")
+}
+
+/// The repository root (where `assets/` is).
+pub fn repo() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// `../shared/data`, when this checkout has it beside it.
+pub fn shared_data() -> Option<PathBuf> {
+    let p = repo().join("../shared/data");
+    p.is_dir().then_some(p)
+}
+
+/// Text of stdout and stderr together.
+pub fn text(o: &Output) -> String {
+    format!(
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    )
+}
