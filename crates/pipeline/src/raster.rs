@@ -316,25 +316,43 @@ impl SampleBuffers {
 
     /// Rasterizes `tri` (whose index in the capture's triangle list is `index`): every covered
     /// sample that passes the depth test takes the triangle's depth and index.
+    ///
+    /// The edge functions are evaluated once per row at the first pixel's samples and then
+    /// stepped by `a·ONE` per pixel (they are linear in x); depth is the plane
+    /// `z = z_0 + (z_1 − z_0)·E_1/area + (z_2 − z_0)·E_2/area`.
     pub fn rasterize(&mut self, tri: &RasterTriangle, index: u32, test: DepthTest) -> RasterCounts {
         let mut counts = RasterCounts::default();
         let [x0, y0, x1, y1] = tri.bbox;
+        let n = self.offsets.len();
+        let inv_area = 1.0 / tri.area2 as f64;
+        let z0 = f64::from(tri.window[0].z);
+        let k1 = (f64::from(tri.window[1].z) - z0) * inv_area;
+        let k2 = (f64::from(tri.window[2].z) - z0) * inv_area;
+        let step = tri.edges.map(|e| e.a * ONE);
+        let mut e = [[0i64; 3]; 16];
         for y in y0..=y1 {
+            let corner = I64Vec2::new(i64::from(x0) * ONE, i64::from(y) * ONE);
+            for (s, off) in self.offsets.iter().enumerate() {
+                e[s] = tri.edges.map(|edge| edge.at(corner + *off) + edge.bias);
+            }
             for x in x0..=x1 {
-                let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
-                for s in 0..self.offsets.len() {
-                    let p = corner + self.offsets[s];
-                    if !tri.covers(p) {
-                        continue;
+                for (s, es) in e.iter_mut().enumerate().take(n) {
+                    if (es[0] | es[1] | es[2]) >= 0 {
+                        counts.covered += 1;
+                        // The bias (0 or −1) is removed again for the depth plane.
+                        let e1 = (es[1] - tri.edges[1].bias) as f64;
+                        let e2 = (es[2] - tri.edges[2].bias) as f64;
+                        let z = (z0 + k1 * e1 + k2 * e2) as f32;
+                        let i = self.index(x, y, s);
+                        if test.passes(z, self.depth[i]) {
+                            self.depth[i] = z;
+                            self.triangle[i] = index;
+                            counts.written += 1;
+                        }
                     }
-                    counts.covered += 1;
-                    let z = tri.depth(tri.lambda(p));
-                    let i = self.index(x, y, s);
-                    if test.passes(z, self.depth[i]) {
-                        self.depth[i] = z;
-                        self.triangle[i] = index;
-                        counts.written += 1;
-                    }
+                    es[0] += step[0];
+                    es[1] += step[1];
+                    es[2] += step[2];
                 }
             }
         }

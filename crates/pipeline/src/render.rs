@@ -6,6 +6,7 @@
 use std::time::{Duration, Instant};
 
 use glam::{Vec3, Vec4};
+use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::capture::{Fate, FrameCapture, Matrices, ObjectSummary, PixelBuffers, PrimitiveRecord};
@@ -165,10 +166,11 @@ fn assemble_and_clip(
                 bary: corners[k],
             });
             let start = triangles.len() as u32;
-            let (polygon, clipped) = match clip::clip_triangle(input) {
-                ClipOutcome::Inside => (input.to_vec(), false),
-                ClipOutcome::Clipped(poly) => (poly, true),
-                ClipOutcome::Outside(plane) => {
+            let outcome = clip::clip_triangle(input);
+            let polygon: &[ClipVertex] = match &outcome {
+                ClipOutcome::Inside => &input,
+                ClipOutcome::Clipped(poly) => poly,
+                &ClipOutcome::Outside(plane) => {
                     primitives.push(PrimitiveRecord {
                         id,
                         object: object_index as u32,
@@ -181,15 +183,13 @@ fn assemble_and_clip(
                     continue;
                 }
             };
-            // Perspective division and viewport for each polygon vertex.
-            let window: Vec<(Vec3, f32)> = polygon
-                .iter()
-                .map(|v| {
-                    let inv_w = 1.0 / v.clip.w;
-                    let ndc: Vec4 = (v.clip.truncate() * inv_w).extend(1.0);
-                    ((viewport * ndc).truncate(), inv_w)
-                })
-                .collect();
+            // Perspective division and viewport for each polygon vertex (at most 10).
+            let mut window = [(Vec3::ZERO, 0.0f32); 10];
+            for (slot, v) in window.iter_mut().zip(polygon) {
+                let inv_w = 1.0 / v.clip.w;
+                let ndc: Vec4 = (v.clip.truncate() * inv_w).extend(1.0);
+                *slot = ((viewport * ndc).truncate(), inv_w);
+            }
             let mut rejection = None;
             for k in 1..polygon.len() - 1 {
                 let idx = [0, k, k + 1];
@@ -211,6 +211,7 @@ fn assemble_and_clip(
                 }
             }
             let end = triangles.len() as u32;
+            let clipped = matches!(outcome, ClipOutcome::Clipped(_));
             let fate = match (end > start, clipped, rejection) {
                 (true, false, _) => Fate::Drawn,
                 (true, true, _) => Fate::Clipped,
@@ -223,7 +224,10 @@ fn assemble_and_clip(
                 object: object_index as u32,
                 vertices: rows,
                 fate,
-                clipped_polygon: clipped.then_some(polygon),
+                clipped_polygon: match outcome {
+                    ClipOutcome::Clipped(poly) => Some(poly),
+                    _ => None,
+                },
                 triangles: [start, end],
                 counts: RasterCounts::default(),
             });
@@ -233,8 +237,19 @@ fn assemble_and_clip(
     (primitives, triangles)
 }
 
+/// Everything the resolve computes for one pixel.
+struct ResolvedPixel {
+    coverage: u8,
+    depth: f32,
+    primitive: u32,
+    bary_perspective: [f32; 3],
+    bary_affine: [f32; 3],
+    color: [f32; 3],
+}
+
 /// Resolves samples to pixels: coverage, mean depth, the owning primitive, barycentrics and
 /// colour at the pixel centre (once per pixel and triangle, as multisampling shades).
+/// Rows are independent, so they are resolved in parallel.
 fn resolve(
     settings: &RenderSettings,
     samples: &SampleBuffers,
@@ -242,67 +257,112 @@ fn resolve(
     primitives: &[PrimitiveRecord],
     vertices: &[VertexRecord],
 ) -> PixelBuffers {
-    let (w, h) = (settings.width, settings.height);
-    let n = w as usize * h as usize;
-    let s = settings.samples.count();
+    let (w, h) = (settings.width as usize, settings.height as usize);
+    let n = w * h;
     let mut px = PixelBuffers {
         coverage: vec![0; n],
         depth: vec![0.0; n],
         primitive: vec![NONE; n],
         bary_perspective: vec![[0.0; 3]; n],
         bary_affine: vec![[0.0; 3]; n],
-        color: vec![settings.background.to_array(); n],
+        color: vec![[0.0; 3]; n],
     };
-    let color_of = |t: &RasterTriangle, b: Vec3| -> Vec3 {
-        let rows = primitives[t.primitive as usize].vertices;
-        let c = rows.map(|r| vertices[r as usize].color);
+    let ctx = ResolveContext {
+        settings,
+        samples,
+        triangles,
+        primitives,
+        vertices,
+    };
+    px.coverage
+        .par_chunks_mut(w)
+        .zip(px.depth.par_chunks_mut(w))
+        .zip(px.primitive.par_chunks_mut(w))
+        .zip(px.bary_perspective.par_chunks_mut(w))
+        .zip(px.bary_affine.par_chunks_mut(w))
+        .zip(px.color.par_chunks_mut(w))
+        .enumerate()
+        .for_each(|(row, (((((cov, depth), prim), bp), ba), color))| {
+            let y = (h - 1 - row) as u32;
+            for x in 0..w {
+                let r = ctx.pixel(x as u32, y, row * w + x);
+                cov[x] = r.coverage;
+                depth[x] = r.depth;
+                prim[x] = r.primitive;
+                bp[x] = r.bary_perspective;
+                ba[x] = r.bary_affine;
+                color[x] = r.color;
+            }
+        });
+    px
+}
+
+/// What the resolve of one pixel reads.
+struct ResolveContext<'a> {
+    settings: &'a RenderSettings,
+    samples: &'a SampleBuffers,
+    triangles: &'a [RasterTriangle],
+    primitives: &'a [PrimitiveRecord],
+    vertices: &'a [VertexRecord],
+}
+
+impl ResolveContext<'_> {
+    /// The colour of triangle `t` at original-triangle weights `b`: `Σ b_k·c_k`.
+    fn color_of(&self, t: &RasterTriangle, b: Vec3) -> Vec3 {
+        let rows = self.primitives[t.primitive as usize].vertices;
+        let c = rows.map(|r| self.vertices[r as usize].color);
         c[0] * b.x + c[1] * b.y + c[2] * b.z
-    };
-    for row in 0..h {
-        let y = h - 1 - row;
-        for x in 0..w {
-            let i = (row * w + x) as usize;
-            let tris = &samples.triangle[i * s..(i + 1) * s];
-            let depths = &samples.depth[i * s..(i + 1) * s];
-            px.depth[i] = depths.iter().sum::<f32>() / s as f32;
-            let covered = tris.iter().filter(|&&t| t != NONE).count();
-            px.coverage[i] = covered as u8;
-            if covered == 0 {
+    }
+
+    /// Resolves window pixel `(x, y)`, whose image index is `i`.
+    fn pixel(&self, x: u32, y: u32, i: usize) -> ResolvedPixel {
+        let s = self.settings.samples.count();
+        let tris = &self.samples.triangle[i * s..(i + 1) * s];
+        let depths = &self.samples.depth[i * s..(i + 1) * s];
+        let background = self.settings.background;
+        let mut out = ResolvedPixel {
+            coverage: 0,
+            depth: depths.iter().sum::<f32>() / s as f32,
+            primitive: NONE,
+            bary_perspective: [0.0; 3],
+            bary_affine: [0.0; 3],
+            color: background.to_array(),
+        };
+        let covered = tris.iter().filter(|&&t| t != NONE).count();
+        if covered == 0 {
+            return out;
+        }
+        out.coverage = covered as u8;
+        let centre = FrameCapture::pixel_centre_fixed(x, y);
+        // The owning primitive: most samples, ties to the earliest sample.
+        let mut best = (0usize, NONE);
+        for &t in tris.iter().filter(|&&t| t != NONE) {
+            let prim = self.triangles[t as usize].primitive;
+            let count = tris
+                .iter()
+                .filter(|&&u| u != NONE && self.triangles[u as usize].primitive == prim)
+                .count();
+            if count > best.0 {
+                best = (count, t);
+            }
+        }
+        let owner = &self.triangles[best.1 as usize];
+        let l = owner.lambda(centre);
+        out.primitive = owner.primitive;
+        out.bary_perspective = owner.original_bary(l, true).to_array();
+        out.bary_affine = owner.original_bary(l, false).to_array();
+        // Colour: each distinct triangle once, at the centre, weighted by its samples.
+        let mut sum = background * (s - covered) as f32;
+        for (k, &t) in tris.iter().enumerate() {
+            if t == NONE || tris[..k].contains(&t) {
                 continue;
             }
-            let centre = FrameCapture::pixel_centre_fixed(x, y);
-            // The owning primitive: most samples, ties to the earliest sample.
-            let mut best = (0usize, NONE);
-            for &t in tris.iter().filter(|&&t| t != NONE) {
-                let prim = triangles[t as usize].primitive;
-                let count = tris
-                    .iter()
-                    .filter(|&&u| u != NONE && triangles[u as usize].primitive == prim)
-                    .count();
-                if count > best.0 {
-                    best = (count, t);
-                }
-            }
-            let owner = &triangles[best.1 as usize];
-            let l = owner.lambda(centre);
-            px.primitive[i] = owner.primitive;
-            px.bary_perspective[i] = owner.original_bary(l, true).to_array();
-            px.bary_affine[i] = owner.original_bary(l, false).to_array();
-            // Colour: each distinct triangle once, at the centre, weighted by its samples.
-            let mut sum = settings.background * (s - covered) as f32;
-            let mut done: [u32; 16] = [NONE; 16];
-            for (k, &t) in tris.iter().enumerate() {
-                if t == NONE || done[..k].contains(&t) {
-                    continue;
-                }
-                done[k] = t;
-                let count = tris.iter().filter(|&&u| u == t).count() as f32;
-                let tri = &triangles[t as usize];
-                let b = tri.original_bary(tri.lambda(centre), settings.perspective_correct);
-                sum += color_of(tri, b) * count;
-            }
-            px.color[i] = (sum / s as f32).to_array();
+            let count = tris.iter().filter(|&&u| u == t).count() as f32;
+            let tri = &self.triangles[t as usize];
+            let b = tri.original_bary(tri.lambda(centre), self.settings.perspective_correct);
+            sum += self.color_of(tri, b) * count;
         }
+        out.color = (sum / s as f32).to_array();
+        out
     }
-    px
 }
