@@ -33,6 +33,7 @@ pub fn sphere_scene(triangles: u32) -> BenchScene {
                 up: Vec3::Y,
             },
             projection: Projection::default(),
+            lights: Vec::new(),
         },
     }
 }

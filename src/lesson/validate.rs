@@ -140,6 +140,7 @@ pub fn scene(
                 objects,
                 camera,
                 projection,
+                lights: Vec::new(),
             },
             settings,
         })

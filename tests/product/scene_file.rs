@@ -222,7 +222,8 @@ fn obj_files_load_with_normals_computed_and_bad_ones_are_named() {
 
 #[test]
 fn the_complete_example_in_lessons_readme_is_valid() {
-    let readme = std::fs::read_to_string(crate::support::repo().join("lessons/README.md")).expect("README");
+    let readme =
+        std::fs::read_to_string(crate::support::repo().join("lessons/README.md")).expect("README");
     let block = readme
         .split("```toml\n")
         .nth(1)
@@ -230,7 +231,8 @@ fn the_complete_example_in_lessons_readme_is_valid() {
         .expect("a ```toml block");
     // The example names an OBJ the reader would have; stand a built-in mesh in for it.
     let block = block.replace("\"models/bunny.obj\"", "\"cube\"");
-    let spec = lesson::parse_scene(&block, "README example", Path::new(".")).expect("the example is valid");
+    let spec = lesson::parse_scene(&block, "README example", Path::new("."))
+        .expect("the example is valid");
     assert_eq!(spec.scene.objects.len(), 2);
     assert_eq!(spec.settings.samples.count(), 4);
 }
