@@ -157,6 +157,29 @@ impl BufferKind {
     }
 }
 
+/// One fragment that reached a pixel: a raster triangle covering at least one of its samples,
+/// replayed in drawing order against the pixel's depth values.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct FragmentRecord {
+    /// The primitive (input triangle).
+    pub primitive: u32,
+    /// The raster triangle (index into [`FrameCapture::triangles`]).
+    pub triangle: u32,
+    /// Per sample of the pixel: `None` not covered; `Some(true)` covered and passed the depth
+    /// test against what was stored then; `Some(false)` covered and failed it.
+    pub samples: Vec<Option<bool>>,
+    /// Per sample: the fragment's window depth there (`None` where not covered).
+    pub sample_depths: Vec<Option<f32>>,
+    /// Window depth at the pixel centre.
+    pub depth: f32,
+    /// Affine (screen-space) barycentrics at the pixel centre.
+    pub bary_affine: [f32; 3],
+    /// Perspective-correct barycentrics at the pixel centre.
+    pub bary_perspective: [f32; 3],
+    /// Whether the fragment owns the pixel in the final image (most of its samples).
+    pub visible: bool,
+}
+
 /// A summary of one object, for the capture's JSON.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ObjectSummary {
@@ -346,6 +369,57 @@ impl FrameCapture {
                 Rgba([c.red(), c.green(), c.blue(), c.alpha()])
             })
         })
+    }
+
+    /// Every fragment that reached window pixel `(x, y)` (y up), in drawing order, with the
+    /// outcome of the depth test at each sample: the raster triangles are replayed against the
+    /// pixel's depth values exactly as the rasterizer ran them.
+    #[must_use]
+    pub fn fragments_at(&self, x: u32, y: u32) -> Vec<FragmentRecord> {
+        if x >= self.width() || y >= self.height() {
+            return Vec::new();
+        }
+        let offsets = crate::raster::sample_offsets_fixed(self.settings.samples);
+        let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
+        let centre = Self::pixel_centre_fixed(x, y);
+        let mut stored = vec![self.settings.depth_test.clear_value(); offsets.len()];
+        let owner = self.pixels.primitive[((self.height() - 1 - y) * self.width() + x) as usize];
+        let mut out = Vec::new();
+        for (t, tri) in self.triangles.iter().enumerate() {
+            let [x0, y0, x1, y1] = tri.bbox;
+            if x < x0 || x > x1 || y < y0 || y > y1 {
+                continue;
+            }
+            let mut samples = vec![None; offsets.len()];
+            let mut sample_depths = vec![None; offsets.len()];
+            for (s, off) in offsets.iter().enumerate() {
+                let p = corner + *off;
+                if tri.covers(p) {
+                    let z = tri.depth(tri.lambda(p));
+                    let pass = self.settings.depth_test.passes(z, stored[s]);
+                    if pass {
+                        stored[s] = z;
+                    }
+                    samples[s] = Some(pass);
+                    sample_depths[s] = Some(z);
+                }
+            }
+            if samples.iter().all(Option::is_none) {
+                continue;
+            }
+            let l = tri.lambda(centre);
+            out.push(FragmentRecord {
+                primitive: tri.primitive,
+                triangle: t as u32,
+                samples,
+                sample_depths,
+                depth: tri.depth(l),
+                bary_affine: tri.original_bary(l, false).to_array(),
+                bary_perspective: tri.original_bary(l, true).to_array(),
+                visible: tri.primitive == owner,
+            });
+        }
+        out
     }
 
     /// The centre of window pixel `(x, y)` in fixed point.

@@ -528,3 +528,40 @@ fn multisampling_counts_samples_and_resolves_colour() {
         assert_eq!(c.pixels.coverage[i(9)], 0);
     }
 }
+
+#[test]
+fn the_fragment_replay_agrees_with_the_buffers() {
+    // Overlapping triangles at different depths, in a random order, with 4 samples.
+    let mut rng = fastrand::Rng::with_seed(21);
+    let mut positions = Vec::new();
+    for _ in 0..12 {
+        let c = Vec3::new(
+            rng.f32() * 2.0 - 1.0,
+            rng.f32() * 2.0 - 1.0,
+            -2.0 - rng.f32() * 6.0,
+        );
+        for _ in 0..3 {
+            positions.push(c + Vec3::new(rng.f32() - 0.5, rng.f32() - 0.5, rng.f32() - 0.5) * 2.0);
+        }
+    }
+    let indices = (0..12u32).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect();
+    let colors = vec![Vec3::ONE; positions.len()];
+    let (scene, mut settings) = camera_scene(mesh_of(positions, colors, indices), 24);
+    settings.samples = Samples::X4;
+    let c = render(&scene, &settings);
+    for y in 0..24 {
+        for x in 0..24 {
+            let fragments = c.fragments_at(x, y);
+            for s in 0..4 {
+                // The last fragment that passed at a sample is the one the buffer holds.
+                let last = fragments
+                    .iter()
+                    .rev()
+                    .find(|f| f.samples[s] == Some(true))
+                    .map(|f| f.triangle);
+                let held = c.samples.triangle[c.samples.index(x, y, s)];
+                assert_eq!(last.unwrap_or(NONE), held, "pixel ({x}, {y}) sample {s}");
+            }
+        }
+    }
+}
