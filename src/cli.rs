@@ -16,9 +16,15 @@ use crate::lesson::{self, SceneSpec};
 #[derive(Debug, Parser)]
 #[command(name = "pipelens", version, about, long_about = None)]
 pub struct Cli {
-    /// What to do; with none, pipelens exports the built-in scene into ./pipelens-export.
+    /// What to do; with none, pipelens opens the app.
     #[command(subcommand)]
     pub command: Option<Command>,
+    /// The app: the scene file to open (the built-in scene when omitted).
+    #[arg(long, global = false)]
+    pub scene: Option<PathBuf>,
+    /// The app: the interface language, `en` or `zh`.
+    #[arg(long, value_parser = ["en", "zh"])]
+    pub lang: Option<String>,
 }
 
 /// The subcommands.
@@ -111,13 +117,14 @@ pub fn main() -> ExitCode {
 pub fn run(cli: Cli) -> Result<ExitCode> {
     match cli.command {
         None => {
-            let out = PathBuf::from("pipelens-export");
-            export(None, &out, None, None, 0, 200_000)?;
-            println!(
-                "The desktop app is not built yet: pipelens exported the built-in scene instead.\n\
-                 Open {}/overlays.png and color.png, or read capture.json.",
-                out.display()
-            );
+            let spec = load(cli.scene.as_deref())?;
+            let source = crate::app::session::source_name(cli.scene.as_ref());
+            let lang = match cli.lang.as_deref() {
+                Some("zh") => crate::app::i18n::Lang::Zh,
+                Some(_) => crate::app::i18n::Lang::En,
+                None => crate::app::initial_lang(),
+            };
+            crate::app::run(spec, source, lang)?;
             Ok(ExitCode::SUCCESS)
         }
         Some(Command::Export {

@@ -1,5 +1,6 @@
 //! Tests of the whole product: the command line, scene files, exports, reference images.
 
+mod app;
 mod cli;
 mod reference;
 mod scene_file;

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Takes the README's screenshots from the real app under Xvfb: every stage in English, a few in
+# Chinese. Needs the packages .ci/run installs. Usage: scripts/screenshots.sh [OUT_DIR]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:-docs/screenshots}
+mkdir -p "$out"
+display=:96
+cargo build --quiet --release --bin pipelens
+Xvfb "$display" -screen 0 1366x768x24 -nolisten tcp >/dev/null 2>&1 &
+xvfb=$!
+app=
+cleanup() { [ -n "$app" ] && kill "$app" 2>/dev/null; kill "$xvfb" 2>/dev/null; wait 2>/dev/null || true; }
+trap cleanup EXIT
+sleep 1
+shoot() { DISPLAY=$display import -window root "$out/$1.png"; echo "wrote $out/$1.png"; }
+key() { DISPLAY=$display xdotool key --window "$win" "$@"; sleep "${2:-2}"; }
+start() {
+  DISPLAY=$display target/release/pipelens "$@" >/dev/null 2>&1 &
+  app=$!
+  for _ in $(seq 1 60); do
+    win=$(DISPLAY=$display xdotool search --name '^pipelens$' 2>/dev/null | head -1) && [ -n "$win" ] && break
+    sleep 1
+  done
+  DISPLAY=$display xdotool windowsize "$win" 1366 768 windowmove "$win" 0 0 windowfocus "$win"
+  sleep 4
+}
+start --lang en
+# The app opens on World; walk back to Model, then through every stage.
+DISPLAY=$display xdotool key --window "$win" Left; sleep 3
+for stage in model world view clip ndc viewport rasterization depth output; do
+  shoot "en-$stage"
+  DISPLAY=$display xdotool key --window "$win" Right; sleep 3
+done
+kill "$app"; wait "$app" 2>/dev/null || true
+start --lang zh
+shoot "zh-world"
+for _ in 1 2 3 4 5; do DISPLAY=$display xdotool key --window "$win" Right; sleep 1.5; done
+sleep 2
+shoot "zh-rasterization"

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Starts the real pipelens app under Xvfb (Mesa's software OpenGL), waits for its window, takes a
+# screenshot and fails if the window did not appear or the screenshot is blank.
+# Needs: xvfb xauth libxcursor1 libxi6 libxkbcommon-x11-0 libegl1 libegl-mesa0 libgl1-mesa-dri
+#        imagemagick xdotool (.ci/run installs them).
+# Usage: scripts/smoke-app.sh [OUT.png] [extra pipelens arguments…]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:-target/smoke-app.png}
+shift || true
+display=:97
+cargo build --quiet --bin pipelens
+Xvfb "$display" -screen 0 1366x768x24 -nolisten tcp >/dev/null 2>&1 &
+xvfb=$!
+app=
+cleanup() { [ -n "$app" ] && kill "$app" 2>/dev/null; kill "$xvfb" 2>/dev/null; wait 2>/dev/null || true; }
+trap cleanup EXIT
+sleep 1
+DISPLAY=$display target/debug/pipelens "$@" >target/smoke-app.log 2>&1 &
+app=$!
+for _ in $(seq 1 60); do
+  if DISPLAY=$display xdotool search --name '^pipelens$' >/dev/null 2>&1; then break; fi
+  if ! kill -0 "$app" 2>/dev/null; then
+    echo "smoke: the app exited before its window appeared:"; cat target/smoke-app.log; exit 1
+  fi
+  sleep 1
+done
+if ! DISPLAY=$display xdotool search --name '^pipelens$' >/dev/null 2>&1; then
+  echo "smoke: no window named pipelens after 60 s"; cat target/smoke-app.log; exit 1
+fi
+sleep "${SMOKE_SETTLE:-4}"
+DISPLAY=$display import -window root "$out"
+# A blank screenshot has (nearly) one colour: require some variety.
+colours=$(convert "$out" -format '%k' info:)
+deviation=$(convert "$out" -colorspace Gray -format '%[fx:standard_deviation]' info:)
+echo "smoke: window up; screenshot $out has $colours colours, grey deviation $deviation"
+if [ "$colours" -lt 50 ]; then
+  echo "smoke: the screenshot is blank"; exit 1
+fi
+if ! kill -0 "$app" 2>/dev/null; then
+  echo "smoke: the app died after showing its window:"; cat target/smoke-app.log; exit 1
+fi
+echo "smoke: ok"

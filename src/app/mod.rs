@@ -1,0 +1,433 @@
+//! The desktop app (eframe + egui): a stage navigator, the selected stage in the main view, the
+//! observer view, the parameters and the inspector. It reads `FrameCapture`s and never computes
+//! pipeline results itself.
+
+pub mod i18n;
+pub mod session;
+pub mod views;
+pub mod worker;
+
+use std::path::PathBuf;
+use std::sync::mpsc::{Receiver, channel};
+
+use egui::epaint::text::{FontInsert, FontPriority, InsertFontFamily};
+use egui::{FontData, FontFamily, RichText};
+
+use self::i18n::Lang;
+use self::session::{Command, Session, Stage};
+use self::views::{
+    geometry::GeometryView, inspector, navigator, observer::ObserverView, params, pixels::PixelView,
+};
+use self::worker::RenderWorker;
+use crate::lesson::SceneSpec;
+
+/// The Chinese font, embedded so that Chinese renders on any machine.
+pub const CJK_FONT: &[u8] = include_bytes!("../../assets/fonts/NotoSansSC-subset.otf");
+
+/// Adds the Chinese font after egui's own fonts (which have no CJK glyphs).
+pub fn install_fonts(ctx: &egui::Context) {
+    ctx.add_font(FontInsert::new(
+        "noto-sans-sc",
+        FontData::from_static(CJK_FONT),
+        vec![
+            InsertFontFamily {
+                family: FontFamily::Proportional,
+                priority: FontPriority::Lowest,
+            },
+            InsertFontFamily {
+                family: FontFamily::Monospace,
+                priority: FontPriority::Lowest,
+            },
+        ],
+    ));
+}
+
+/// Prepares an egui context for the app: the Chinese font and the normal style.
+pub fn setup_context(ctx: &egui::Context) {
+    install_fonts(ctx);
+    apply_style(ctx, false);
+}
+
+/// Text sizes and contrast: normal, or classroom (large type, high contrast, for a projector).
+pub fn apply_style(ctx: &egui::Context, classroom: bool) {
+    use egui::{FontId, TextStyle};
+    let scale = if classroom { 1.35 } else { 1.0 };
+    ctx.set_theme(egui::Theme::Dark);
+    ctx.global_style_mut(|style| {
+        style.text_styles = [
+            (TextStyle::Heading, FontId::proportional(22.0 * scale)),
+            (TextStyle::Body, FontId::proportional(15.0 * scale)),
+            (TextStyle::Button, FontId::proportional(15.0 * scale)),
+            (TextStyle::Small, FontId::proportional(12.0 * scale)),
+            (TextStyle::Monospace, FontId::monospace(13.5 * scale)),
+        ]
+        .into();
+        style.visuals = egui::Visuals::dark();
+        if classroom {
+            style.visuals.override_text_color = Some(egui::Color32::WHITE);
+            style.visuals.panel_fill = egui::Color32::BLACK;
+            style.visuals.window_fill = egui::Color32::BLACK;
+            style.visuals.widgets.noninteractive.bg_stroke.width = 1.5;
+            style.visuals.selection.bg_fill = egui::Color32::from_rgb(0, 90, 200);
+        }
+    });
+}
+
+/// The app.
+pub struct PipelensApp {
+    /// State with no egui in it.
+    pub session: Session,
+    pixel_view: PixelView,
+    geometry_view: GeometryView,
+    observer_view: ObserverView,
+    inspector_tab: inspector::Tab,
+    classroom: bool,
+    export_dir: String,
+    export_result: Option<Receiver<Result<Vec<PathBuf>, String>>>,
+    export_message: Option<(bool, String)>,
+    commands: Vec<Command>,
+}
+
+impl PipelensApp {
+    /// An app on `session` (call [`setup_context`] once on its egui context).
+    #[must_use]
+    pub fn new(session: Session) -> Self {
+        Self {
+            session,
+            pixel_view: PixelView::default(),
+            geometry_view: GeometryView::default(),
+            observer_view: ObserverView::default(),
+            inspector_tab: inspector::Tab::default(),
+            classroom: false,
+            export_dir: "pipelens-export".to_owned(),
+            export_result: None,
+            export_message: None,
+            commands: Vec::new(),
+        }
+    }
+
+    /// Draws one frame and applies the commands it produced.
+    pub fn frame(&mut self, ui: &mut egui::Ui) {
+        self.session.poll();
+        self.keyboard(ui.ctx());
+        self.top_bar(ui);
+        self.status_bar(ui);
+        let lang = self.session.lang;
+        egui::Panel::left("parameters")
+            .default_size(270.0)
+            .resizable(true)
+            .show(ui, |ui| {
+                ui.heading(lang.tr("Parameters", "参数"));
+                self.commands.extend(params::ui(ui, &self.session));
+            });
+        if let Some(capture) = self.session.capture.clone() {
+            egui::Panel::right("inspector")
+                .default_size(380.0)
+                .resizable(true)
+                .show(ui, |ui| {
+                    self.commands.extend(inspector::ui(
+                        ui,
+                        &mut self.inspector_tab,
+                        &self.session,
+                        &capture,
+                    ));
+                });
+            egui::CentralPanel::default().show(ui, |ui| self.main_view(ui, &capture));
+        } else {
+            egui::CentralPanel::default().show(ui, |ui| {
+                ui.centered_and_justified(|ui| {
+                    ui.label(
+                        self.session
+                            .error
+                            .clone()
+                            .unwrap_or_else(|| lang.tr("Rendering…", "渲染中…").to_owned()),
+                    );
+                });
+            });
+        }
+        self.animate(ui.ctx());
+        for cmd in std::mem::take(&mut self.commands) {
+            self.session.apply(cmd);
+        }
+    }
+
+    fn main_view(
+        &mut self,
+        ui: &mut egui::Ui,
+        capture: &std::sync::Arc<pipeline::capture::FrameCapture>,
+    ) {
+        let sel = self.session.selection.clone();
+        let lang = self.session.lang;
+        ui.horizontal_wrapped(|ui| {
+            ui.heading(sel.stage.name(lang));
+            ui.label(RichText::new(sel.stage.explanation(lang)).weak());
+        });
+        if let Some(space) = sel.stage.space() {
+            ui.horizontal(|ui| {
+                let mut obs = sel.show_observer;
+                if ui
+                    .checkbox(&mut obs, lang.tr("Observer view", "观察者视图"))
+                    .changed()
+                {
+                    self.commands.push(Command::ToggleObserver);
+                }
+            });
+            let from = sel
+                .stage
+                .previous()
+                .space()
+                .filter(|_| sel.transition < 1.0 && sel.stage != Stage::Model);
+            if sel.show_observer {
+                // Two fixed halves, each clipped to itself.
+                let area = ui.available_rect_before_wrap();
+                let gap = 8.0;
+                let half = (area.width() - gap) / 2.0;
+                let left = egui::Rect::from_min_size(area.min, egui::vec2(half, area.height()));
+                let right = egui::Rect::from_min_size(
+                    area.min + egui::vec2(half + gap, 0.0),
+                    egui::vec2(half, area.height()),
+                );
+                ui.scope_builder(egui::UiBuilder::new().max_rect(left), |ui| {
+                    ui.set_clip_rect(left);
+                    let c = self.geometry_view.ui(
+                        ui,
+                        &self.session,
+                        capture,
+                        space,
+                        from,
+                        sel.transition,
+                    );
+                    self.commands.extend(c);
+                });
+                ui.scope_builder(egui::UiBuilder::new().max_rect(right), |ui| {
+                    ui.set_clip_rect(right);
+                    let c = self.observer_view.ui(ui, &self.session, capture);
+                    self.commands.extend(c);
+                });
+                ui.advance_cursor_after_rect(area);
+            } else {
+                let c =
+                    self.geometry_view
+                        .ui(ui, &self.session, capture, space, from, sel.transition);
+                self.commands.extend(c);
+            }
+        } else {
+            let c = self.pixel_view.toolbar(ui, &sel, lang);
+            self.commands.extend(c);
+            let c = self.pixel_view.ui(ui, &self.session, capture);
+            self.commands.extend(c);
+        }
+    }
+
+    fn top_bar(&mut self, ui: &mut egui::Ui) {
+        let lang = self.session.lang;
+        egui::Panel::top("top").show(ui, |ui| {
+            ui.horizontal_wrapped(|ui| {
+                ui.label(RichText::new("pipelens").strong().size(20.0));
+                ui.label(RichText::new(&self.session.source).weak());
+                ui.separator();
+                if ui
+                    .button(lang.other().name())
+                    .on_hover_text(lang.tr("Switch the language", "切换语言"))
+                    .clicked()
+                {
+                    self.commands.push(Command::SetLang(lang.other()));
+                }
+                if ui
+                    .selectable_label(self.classroom, lang.tr("Classroom mode", "课堂模式"))
+                    .on_hover_text(lang.tr("Large type and high contrast for a projector. F11: full screen, Ctrl +/−: text size, ←/→: stages, Space: replay.", "投影用的大字号与高对比度。F11：全屏，Ctrl +/−：字号，←/→：切换阶段，空格：重播。"))
+                    .clicked()
+                {
+                    self.classroom = !self.classroom;
+                    apply_style(ui.ctx(), self.classroom);
+                }
+                ui.separator();
+                let label = ui.label(lang.tr("Export to", "导出到"));
+                ui.add(egui::TextEdit::singleline(&mut self.export_dir).desired_width(160.0))
+                    .labelled_by(label.id)
+                    .on_hover_text(lang.tr("The folder the snapshot is written to (created if missing).", "快照写入的文件夹（不存在时创建）。"));
+                let busy = self.export_result.is_some();
+                if ui
+                    .add_enabled(!busy, egui::Button::new(lang.tr("Export snapshot", "导出快照")))
+                    .on_hover_text(lang.tr("Every buffer as PNG and capture.json, as `pipelens export` writes them.", "每个缓冲的 PNG 与 capture.json，与 `pipelens export` 相同。"))
+                    .clicked()
+                {
+                    self.start_export();
+                }
+            });
+            if let Some((ok, msg)) = &self.export_message {
+                ui.label(RichText::new(msg).color(if *ok { egui::Color32::LIGHT_GREEN } else { egui::Color32::LIGHT_RED }));
+            }
+            ui.separator();
+            if let Some(c) = navigator::ui(ui, &self.session) {
+                self.commands.push(c);
+            }
+        });
+    }
+
+    fn status_bar(&mut self, ui: &mut egui::Ui) {
+        let lang = self.session.lang;
+        egui::Panel::bottom("status").show(ui, |ui| {
+            ui.horizontal_wrapped(|ui| {
+                if let Some(e) = &self.session.error {
+                    ui.label(
+                        RichText::new(format!("{}: {e}", lang.tr("Error", "错误")))
+                            .color(egui::Color32::LIGHT_RED),
+                    );
+                    ui.label(
+                        RichText::new(
+                            lang.tr("(showing the last good frame)", "（显示上一个正确的帧）"),
+                        )
+                        .weak(),
+                    );
+                }
+                if let (Some(c), Some(t)) = (&self.session.capture, &self.session.times) {
+                    let ms = |d: std::time::Duration| format!("{:.1}", d.as_secs_f64() * 1e3);
+                    ui.label(format!(
+                        "{}×{} · {}× · {} {} · {} {} ms ({} {} · {} {} · {} {} · {} {})",
+                        c.width(),
+                        c.height(),
+                        c.settings.samples.count(),
+                        c.primitives.len(),
+                        lang.tr("triangles", "个三角形"),
+                        lang.tr("frame", "帧"),
+                        ms(t.total()),
+                        lang.tr("vertex", "顶点"),
+                        ms(t.vertex),
+                        lang.tr("clip", "裁剪"),
+                        ms(t.clip_setup),
+                        lang.tr("raster", "光栅化"),
+                        ms(t.raster),
+                        lang.tr("resolve", "解析"),
+                        ms(t.resolve),
+                    ));
+                }
+                if self.session.rendering() {
+                    ui.spinner();
+                }
+            });
+        });
+    }
+
+    fn keyboard(&mut self, ctx: &egui::Context) {
+        if ctx.egui_wants_keyboard_input() {
+            return;
+        }
+        let (left, right, space, f11) = ctx.input(|i| {
+            (
+                i.key_pressed(egui::Key::ArrowLeft),
+                i.key_pressed(egui::Key::ArrowRight),
+                i.key_pressed(egui::Key::Space),
+                i.key_pressed(egui::Key::F11),
+            )
+        });
+        if left {
+            self.commands.push(Command::PreviousStage);
+        }
+        if right {
+            self.commands.push(Command::NextStage);
+        }
+        if space {
+            self.commands.push(Command::PlayTransition);
+        }
+        if f11 {
+            let full = ctx.input(|i| i.viewport().fullscreen.unwrap_or(false));
+            ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(!full));
+        }
+    }
+
+    fn animate(&mut self, ctx: &egui::Context) {
+        let t = self.session.selection.transition;
+        if t < 1.0 {
+            let dt = ctx.input(|i| i.stable_dt).min(0.1);
+            self.session.selection.transition = (t + dt / 1.5).min(1.0);
+            ctx.request_repaint();
+        }
+        if let Some(rx) = &self.export_result
+            && let Ok(result) = rx.try_recv()
+        {
+            let lang = self.session.lang;
+            self.export_message = Some(match result {
+                Ok(files) => (
+                    true,
+                    format!(
+                        "{} {}: {}",
+                        lang.tr("Exported to", "已导出到"),
+                        self.export_dir,
+                        files
+                            .iter()
+                            .filter_map(|p| p.file_name())
+                            .map(|n| n.to_string_lossy())
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    ),
+                ),
+                Err(e) => (false, e),
+            });
+            self.export_result = None;
+        }
+        if self.export_result.is_some() || self.session.rendering() {
+            ctx.request_repaint_after(std::time::Duration::from_millis(50));
+        }
+    }
+
+    fn start_export(&mut self) {
+        let Some(capture) = self.session.capture.clone() else {
+            return;
+        };
+        let opts = crate::export::ExportOptions {
+            out: PathBuf::from(self.export_dir.trim()),
+            overlay_zoom: 0,
+            max_records: 200_000,
+        };
+        let (tx, rx) = channel();
+        self.export_result = Some(rx);
+        std::thread::spawn(move || {
+            let r = crate::export::export_capture(&capture, &opts, &mut |_, _, _| {})
+                .map_err(|e| format!("{e:#}"));
+            let _ = tx.send(r);
+        });
+    }
+}
+
+impl eframe::App for PipelensApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        self.frame(ui);
+    }
+}
+
+/// Opens the window on `spec` and runs until it is closed.
+///
+/// # Errors
+/// When no window can be opened (no display, no OpenGL).
+pub fn run(spec: SceneSpec, source: String, lang: Lang) -> anyhow::Result<()> {
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_title("pipelens")
+            .with_inner_size([1366.0, 768.0])
+            .with_min_inner_size([800.0, 500.0]),
+        ..Default::default()
+    };
+    eframe::run_native(
+        "pipelens",
+        options,
+        Box::new(move |cc| {
+            let ctx = cc.egui_ctx.clone();
+            let worker = RenderWorker::start(move || ctx.request_repaint()).ok();
+            let mut session = Session::new(spec, &source, worker);
+            session.lang = lang;
+            setup_context(&cc.egui_ctx);
+            Ok(Box::new(PipelensApp::new(session)))
+        }),
+    )
+    .map_err(|e| anyhow::anyhow!("cannot open the window: {e}"))
+}
+
+/// The language a fresh session starts in, from `PIPELENS_LANG` (`zh` or `en`).
+#[must_use]
+pub fn initial_lang() -> Lang {
+    match std::env::var("PIPELENS_LANG").as_deref() {
+        Ok("zh") => Lang::Zh,
+        _ => Lang::En,
+    }
+}

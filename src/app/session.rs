@@ -1,0 +1,457 @@
+//! The app's state with no egui in it: the scene being taught, the latest capture, what is
+//! selected. Panels read it and return [`Command`]s; the app applies them once per frame.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use glam::Vec3;
+use pipeline::StageTimes;
+use pipeline::capture::{BufferKind, FrameCapture};
+use pipeline::overlay::OverlayKind;
+use pipeline::scene::Camera;
+
+use super::i18n::Lang;
+use super::worker::{Job, RenderWorker, Rendered};
+use crate::lesson::SceneSpec;
+
+/// The stages of the pipeline, in the order data flows through them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Stage {
+    /// Object (model) coordinates.
+    Model,
+    /// World coordinates, after the model matrix.
+    World,
+    /// Eye (camera) coordinates, after the view matrix.
+    View,
+    /// Clip coordinates, after the projection.
+    Clip,
+    /// Normalized device coordinates, after the perspective division.
+    Ndc,
+    /// Window coordinates, after the viewport transform.
+    Screen,
+    /// Rasterization: coverage, primitive ids, barycentrics.
+    Raster,
+    /// The depth buffer.
+    Depth,
+    /// The final image.
+    Output,
+}
+
+impl Stage {
+    /// Every stage, in order.
+    pub const ALL: [Stage; 9] = [
+        Self::Model,
+        Self::World,
+        Self::View,
+        Self::Clip,
+        Self::Ndc,
+        Self::Screen,
+        Self::Raster,
+        Self::Depth,
+        Self::Output,
+    ];
+
+    /// Its name.
+    #[must_use]
+    pub fn name(self, l: Lang) -> &'static str {
+        match self {
+            Self::Model => l.tr("Model", "模型"),
+            Self::World => l.tr("World", "世界"),
+            Self::View => l.tr("View", "观察"),
+            Self::Clip => l.tr("Clip", "裁剪"),
+            Self::Ndc => l.tr("NDC", "规范化设备"),
+            Self::Screen => l.tr("Viewport", "视口"),
+            Self::Raster => l.tr("Rasterization", "光栅化"),
+            Self::Depth => l.tr("Depth", "深度"),
+            Self::Output => l.tr("Output", "输出"),
+        }
+    }
+
+    /// What happens to reach this stage, with its formula (the navigator's tooltip).
+    #[must_use]
+    pub fn explanation(self, l: Lang) -> &'static str {
+        match self {
+            Self::Model => l.tr(
+                "Object coordinates: the mesh as it was modelled, p = (x, y, z, 1).",
+                "模型坐标系：物体建模时的坐标，p = (x, y, z, 1)。",
+            ),
+            Self::World => l.tr(
+                "World coordinates: M·p, with M = T·Rz·Ry·Rx·S placing each object.",
+                "世界坐标系：M·p，M = T·Rz·Ry·Rx·S 把每个物体放入场景。",
+            ),
+            Self::View => l.tr(
+                "Eye coordinates: V·M·p, V = LookAt(eye, at, up); the camera at the origin looking down −z.",
+                "相机坐标系：V·M·p，V = LookAt(eye, at, up)；相机位于原点，朝向 −z。",
+            ),
+            Self::Clip => l.tr(
+                "Clip coordinates: P·V·M·p (homogeneous). Inside the view volume: −w ≤ x, y, z ≤ w.",
+                "裁剪坐标系：P·V·M·p（齐次坐标）。视见体内：−w ≤ x, y, z ≤ w。",
+            ),
+            Self::Ndc => l.tr(
+                "Normalized device coordinates: (x, y, z)/w, the canonical cube [−1, 1]³.",
+                "规范化设备坐标：(x, y, z)/w，规范立方体 [−1, 1]³。",
+            ),
+            Self::Screen => l.tr(
+                "Window coordinates: x_w = (x+1)·W/2, y_w = (y+1)·H/2, z_w = (z+1)/2.",
+                "屏幕坐标：x_w = (x+1)·W/2，y_w = (y+1)·H/2，z_w = (z+1)/2。",
+            ),
+            Self::Raster => l.tr(
+                "Which samples each triangle covers: edge functions, the top-left rule, barycentric weights.",
+                "每个三角形覆盖哪些采样点：边函数、左上规则、重心坐标。",
+            ),
+            Self::Depth => l.tr(
+                "The z-buffer: a fragment is kept if it is nearer than what the buffer holds.",
+                "深度缓冲（z-buffer）：片元比缓冲中的值更近时保留。",
+            ),
+            Self::Output => l.tr(
+                "The final colour: each pixel the mean of its samples.",
+                "最终颜色：每个像素为其采样点的平均。",
+            ),
+        }
+    }
+
+    /// The coordinate space a geometry stage shows; `None` for the pixel stages.
+    #[must_use]
+    pub fn space(self) -> Option<Space> {
+        match self {
+            Self::Model => Some(Space::Model),
+            Self::World => Some(Space::World),
+            Self::View => Some(Space::Eye),
+            Self::Clip => Some(Space::Clip),
+            Self::Ndc => Some(Space::Ndc),
+            Self::Screen => Some(Space::Window),
+            Self::Raster | Self::Depth | Self::Output => None,
+        }
+    }
+
+    /// The buffer a pixel stage opens on.
+    #[must_use]
+    pub fn default_buffer(self) -> BufferKind {
+        match self {
+            Self::Raster => BufferKind::BaryPerspective,
+            Self::Depth => BufferKind::Depth,
+            _ => BufferKind::Color,
+        }
+    }
+
+    fn index(self) -> usize {
+        Self::ALL.iter().position(|s| *s == self).unwrap_or(0)
+    }
+
+    /// The next stage (the last stays).
+    #[must_use]
+    pub fn next(self) -> Self {
+        Self::ALL[(self.index() + 1).min(Self::ALL.len() - 1)]
+    }
+
+    /// The previous stage (the first stays).
+    #[must_use]
+    pub fn previous(self) -> Self {
+        Self::ALL[self.index().saturating_sub(1)]
+    }
+}
+
+/// A coordinate space of the vertex table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Space {
+    /// Object coordinates.
+    Model,
+    /// World coordinates.
+    World,
+    /// Eye coordinates.
+    Eye,
+    /// Clip coordinates (x, y, z of the homogeneous point).
+    Clip,
+    /// Normalized device coordinates.
+    Ndc,
+    /// Window coordinates.
+    Window,
+}
+
+/// Where the observer's camera is: an orbit around the scene's centre.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Orbit {
+    /// Angle around the vertical axis, degrees.
+    pub yaw: f32,
+    /// Angle above the horizon, degrees.
+    pub pitch: f32,
+    /// Distance from the centre.
+    pub distance: f32,
+    /// The point orbited.
+    pub centre: Vec3,
+}
+
+impl Orbit {
+    /// The camera on this orbit, looking at the centre.
+    #[must_use]
+    pub fn camera(&self) -> Camera {
+        let (yaw, pitch) = (self.yaw.to_radians(), self.pitch.to_radians());
+        let dir = Vec3::new(
+            pitch.cos() * yaw.sin(),
+            pitch.sin(),
+            pitch.cos() * yaw.cos(),
+        );
+        Camera {
+            eye: self.centre + dir * self.distance,
+            at: self.centre,
+            up: Vec3::Y,
+        }
+    }
+}
+
+/// What the user has selected.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Selection {
+    /// The stage in the main view.
+    pub stage: Stage,
+    /// The buffer a pixel stage shows.
+    pub buffer: BufferKind,
+    /// Overlays drawn over pixel views.
+    pub overlays: Vec<OverlayKind>,
+    /// Draw sample positions when zoomed in.
+    pub show_samples: bool,
+    /// Show the observer view beside the stage.
+    pub show_observer: bool,
+    /// The selected row of the vertex table.
+    pub vertex: Option<u32>,
+    /// The pixel being inspected (window coordinates, y up).
+    pub pixel: Option<(u32, u32)>,
+    /// Progress of the animated transition from the previous space (0 → 1).
+    pub transition: f32,
+}
+
+impl Default for Selection {
+    fn default() -> Self {
+        Self {
+            stage: Stage::World,
+            buffer: BufferKind::Color,
+            overlays: vec![OverlayKind::TriangleEdges],
+            show_samples: true,
+            show_observer: true,
+            vertex: None,
+            pixel: None,
+            transition: 1.0,
+        }
+    }
+}
+
+/// Everything a panel can ask for.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Command {
+    /// Show a stage.
+    SelectStage(Stage),
+    /// One stage on (→).
+    NextStage,
+    /// One stage back (←).
+    PreviousStage,
+    /// Show a buffer in the pixel view.
+    SelectBuffer(BufferKind),
+    /// Turn an overlay on or off.
+    ToggleOverlay(OverlayKind),
+    /// Turn sample points on or off.
+    ToggleSamples,
+    /// Show or hide the observer view.
+    ToggleObserver,
+    /// Select a vertex-table row (or none).
+    SelectVertex(Option<u32>),
+    /// Inspect a pixel (or none).
+    SelectPixel(Option<(u32, u32)>),
+    /// Replace the scene and settings (a parameter changed) and render again.
+    SetSpec(Box<SceneSpec>),
+    /// Move the observer's camera.
+    SetOrbit(Orbit),
+    /// Replay the transition into the current stage.
+    PlayTransition,
+    /// Switch the language.
+    SetLang(Lang),
+}
+
+/// The state of the app.
+pub struct Session {
+    /// The scene and settings being shown.
+    pub spec: SceneSpec,
+    /// Where the scene came from, for messages.
+    pub source: String,
+    /// The latest capture of the viewing camera.
+    pub capture: Option<Arc<FrameCapture>>,
+    /// The latest capture of the observer's camera.
+    pub observer: Option<Arc<FrameCapture>>,
+    /// Stage times of the latest capture.
+    pub times: Option<StageTimes>,
+    /// Why the latest render failed, if it did (the last good capture stays on screen).
+    pub error: Option<String>,
+    /// The observer's orbit.
+    pub orbit: Orbit,
+    /// What is selected.
+    pub selection: Selection,
+    /// The interface language.
+    pub lang: Lang,
+    /// Bumped by every change that needs a new capture; stale results are dropped.
+    pub generation: u64,
+    /// The generation of the capture on screen.
+    pub shown_generation: u64,
+    /// Where the results come from: a worker thread, or (tests) this thread.
+    worker: Option<RenderWorker>,
+}
+
+impl Session {
+    /// A session on `spec`. With a worker, renders run off the UI thread; without, they run
+    /// at once (deterministic, for tests).
+    #[must_use]
+    pub fn new(spec: SceneSpec, source: &str, worker: Option<RenderWorker>) -> Self {
+        let orbit = default_orbit(&spec);
+        let mut s = Self {
+            spec,
+            source: source.to_owned(),
+            capture: None,
+            observer: None,
+            times: None,
+            error: None,
+            orbit,
+            selection: Selection::default(),
+            lang: Lang::default(),
+            generation: 0,
+            shown_generation: 0,
+            worker,
+        };
+        s.request_render();
+        s
+    }
+
+    /// Whether a render is under way.
+    #[must_use]
+    pub fn rendering(&self) -> bool {
+        self.shown_generation != self.generation
+    }
+
+    /// Asks for a new capture of the current scene.
+    pub fn request_render(&mut self) {
+        self.generation += 1;
+        let job = Job {
+            generation: self.generation,
+            spec: self.spec.clone(),
+            observer: self.orbit.camera(),
+        };
+        match &self.worker {
+            Some(w) => w.submit(job),
+            None => {
+                let done = job.run();
+                self.receive(done.generation, done.result);
+            }
+        }
+    }
+
+    /// Takes any finished render from the worker; returns whether something new arrived.
+    pub fn poll(&mut self) -> bool {
+        let mut got = false;
+        if let Some(w) = &self.worker {
+            let results: Vec<_> = w.finished().collect();
+            for done in results {
+                got |= self.receive(done.generation, done.result);
+            }
+        }
+        got
+    }
+
+    fn receive(&mut self, generation: u64, result: Result<Rendered, String>) -> bool {
+        if generation < self.shown_generation {
+            return false;
+        }
+        self.shown_generation = generation;
+        match result {
+            Ok(r) => {
+                self.capture = Some(r.capture);
+                self.observer = r.observer;
+                self.times = Some(r.times);
+                self.error = None;
+                if let (Some((x, y)), Some(c)) = (self.selection.pixel, &self.capture)
+                    && (x >= c.width() || y >= c.height())
+                {
+                    self.selection.pixel = None;
+                }
+            }
+            Err(e) => self.error = Some(e),
+        }
+        true
+    }
+
+    /// Applies one command.
+    pub fn apply(&mut self, cmd: Command) {
+        let stage = self.selection.stage;
+        match cmd {
+            Command::SelectStage(s) => self.go_to(s),
+            Command::NextStage => self.go_to(stage.next()),
+            Command::PreviousStage => self.go_to(stage.previous()),
+            _ => self.apply_selection(cmd),
+        }
+    }
+
+    fn apply_selection(&mut self, cmd: Command) {
+        let sel = &mut self.selection;
+        match cmd {
+            Command::SelectStage(_) | Command::NextStage | Command::PreviousStage => {}
+            Command::SelectBuffer(b) => sel.buffer = b,
+            Command::ToggleOverlay(o) => {
+                if let Some(i) = sel.overlays.iter().position(|x| *x == o) {
+                    sel.overlays.remove(i);
+                } else {
+                    sel.overlays.push(o);
+                }
+            }
+            Command::ToggleSamples => sel.show_samples = !sel.show_samples,
+            Command::ToggleObserver => sel.show_observer = !sel.show_observer,
+            Command::SelectVertex(v) => sel.vertex = v,
+            Command::SelectPixel(p) => sel.pixel = p,
+            Command::SetSpec(spec) => {
+                if *spec != self.spec {
+                    self.spec = *spec;
+                    self.request_render();
+                }
+            }
+            Command::SetOrbit(o) => {
+                if o != self.orbit {
+                    self.orbit = o;
+                    self.request_render();
+                }
+            }
+            Command::PlayTransition => sel.transition = 0.0,
+            Command::SetLang(l) => self.lang = l,
+        }
+    }
+
+    fn go_to(&mut self, stage: Stage) {
+        let sel = &mut self.selection;
+        if stage != sel.stage {
+            let animate =
+                stage.space().is_some() && sel.stage.space().is_some() && stage == sel.stage.next();
+            sel.stage = stage;
+            sel.transition = if animate { 0.0 } else { 1.0 };
+            if stage.space().is_none() {
+                sel.buffer = stage.default_buffer();
+            }
+        }
+    }
+}
+
+/// An orbit that frames the scene: centred on the mean of the objects' positions, far enough
+/// back to see the viewing camera too.
+fn default_orbit(spec: &SceneSpec) -> Orbit {
+    let n = spec.scene.objects.len().max(1) as f32;
+    let centre = spec.scene.objects.iter().map(|o| o.translate).sum::<Vec3>() / n;
+    let reach = (spec.scene.camera.eye - centre).length().max(1.0);
+    Orbit {
+        yaw: 60.0,
+        pitch: 30.0,
+        distance: reach * 2.2,
+        centre,
+    }
+}
+
+/// Where a scene file was loaded from, for the title.
+#[must_use]
+pub fn source_name(path: Option<&PathBuf>) -> String {
+    path.map_or_else(
+        || crate::lesson::DEFAULT_SCENE_NAME.to_owned(),
+        |p| p.display().to_string(),
+    )
+}

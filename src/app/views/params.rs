@@ -1,0 +1,241 @@
+//! Parameters: camera, projection, render settings and each object's transform, as sliders and
+//! fields with their formulas in the tooltips. Every change asks for a new capture.
+
+use egui::{DragValue, RichText, Slider, Ui};
+use glam::Vec3;
+use pipeline::scene::{CullMode, DepthTest, Projection, Samples};
+
+use crate::app::i18n::Lang;
+use crate::app::session::{Command, Session};
+
+fn vec3_edit(ui: &mut Ui, label: &str, v: &mut Vec3, speed: f32, tip: &str) {
+    ui.horizontal(|ui| {
+        ui.label(label).on_hover_text(tip);
+        ui.add(
+            DragValue::new(&mut v.x)
+                .speed(speed)
+                .prefix("x ")
+                .max_decimals(3),
+        );
+        ui.add(
+            DragValue::new(&mut v.y)
+                .speed(speed)
+                .prefix("y ")
+                .max_decimals(3),
+        );
+        ui.add(
+            DragValue::new(&mut v.z)
+                .speed(speed)
+                .prefix("z ")
+                .max_decimals(3),
+        );
+    });
+}
+
+/// Draws the parameters; returns the new scene when something changed.
+pub fn ui(ui: &mut Ui, session: &Session) -> Option<Command> {
+    let lang = session.lang;
+    let mut spec = session.spec.clone();
+    egui::ScrollArea::vertical().id_salt("params").show(ui, |ui| {
+        egui::CollapsingHeader::new(RichText::new(lang.tr("Camera", "相机")).strong()).default_open(true).show(ui, |ui| {
+            let c = &mut spec.scene.camera;
+            let tip = lang.tr("LookAt(eye, at, up): n = (eye − at)/|eye − at|, u = up × n/|up × n|, v = n × u", "LookAt(eye, at, up)：n = (eye − at)/|eye − at|，u = up × n/|up × n|，v = n × u");
+            vec3_edit(ui, lang.tr("eye", "视点"), &mut c.eye, 0.05, tip);
+            vec3_edit(ui, lang.tr("at", "参考点"), &mut c.at, 0.05, tip);
+            vec3_edit(ui, lang.tr("up", "上方向"), &mut c.up, 0.02, tip);
+        });
+        egui::CollapsingHeader::new(RichText::new(lang.tr("Projection", "投影")).strong()).default_open(true).show(ui, |ui| {
+            projection(ui, &mut spec.scene.projection, lang);
+        });
+        egui::CollapsingHeader::new(RichText::new(lang.tr("Rasterizer settings", "光栅化设置")).strong()).default_open(true).show(ui, |ui| {
+            render(ui, &mut spec.settings, lang);
+        });
+        egui::CollapsingHeader::new(RichText::new(lang.tr("Objects", "物体")).strong()).default_open(false).show(ui, |ui| {
+            for (i, o) in spec.scene.objects.iter_mut().enumerate() {
+                egui::CollapsingHeader::new(&o.name).id_salt(("object", i)).show(ui, |ui| {
+                    let tip = lang.tr("M = T·Rz·Ry·Rx·S", "M = T·Rz·Ry·Rx·S");
+                    vec3_edit(ui, lang.tr("translate", "平移"), &mut o.translate, 0.05, tip);
+                    vec3_edit(ui, lang.tr("rotate °", "旋转 °"), &mut o.rotate_deg, 1.0, tip);
+                    vec3_edit(ui, lang.tr("scale", "缩放"), &mut o.scale, 0.02, tip);
+                });
+            }
+        });
+    });
+    (spec != session.spec).then(|| Command::SetSpec(Box::new(spec)))
+}
+
+/// The projection's kind; switching keeps the view volume's near rectangle and depth range.
+fn projection_kind(ui: &mut Ui, p: &mut Projection, lang: Lang) {
+    let kind = match p {
+        Projection::Perspective { .. } => 0,
+        Projection::Frustum { .. } => 1,
+        Projection::Ortho { .. } => 2,
+    };
+    let names = [
+        lang.tr("Perspective", "透视 Perspective"),
+        lang.tr("Frustum", "视见体 Frustum"),
+        lang.tr("Ortho", "正交 Ortho"),
+    ];
+    let mut choice = kind;
+    egui::ComboBox::new("projection-kind", lang.tr("projection", "投影"))
+        .selected_text(names[kind])
+        .show_ui(ui, |ui| {
+            for (i, n) in names.iter().enumerate() {
+                ui.selectable_value(&mut choice, i, *n);
+            }
+        });
+    if choice != kind {
+        let [l, r, b, t, near, far] = p.bounds(1.0);
+        *p = match choice {
+            0 => Projection::Perspective {
+                fovy_deg: 45.0,
+                aspect: None,
+                near,
+                far,
+            },
+            1 => Projection::Frustum {
+                left: l,
+                right: r,
+                bottom: b,
+                top: t,
+                near,
+                far,
+            },
+            _ => Projection::Ortho {
+                left: l * 4.0,
+                right: r * 4.0,
+                bottom: b * 4.0,
+                top: t * 4.0,
+                near,
+                far,
+            },
+        };
+    }
+}
+
+fn projection(ui: &mut Ui, p: &mut Projection, lang: Lang) {
+    projection_kind(ui, p, lang);
+    match p {
+        Projection::Perspective {
+            fovy_deg,
+            aspect,
+            near,
+            far,
+        } => {
+            ui.add(Slider::new(fovy_deg, 1.0..=179.0).text("fovy °")).on_hover_text(lang.tr(
+                "Vertical field of view. top = near·tan(fovy/2), right = top·aspect (the review slides' near·tan(fovy) is an erratum).",
+                "垂直视场角。top = near·tan(fovy/2)，right = top·aspect（复习课件中的 near·tan(fovy) 是笔误）。",
+            ));
+            let mut auto = aspect.is_none();
+            if ui
+                .checkbox(
+                    &mut auto,
+                    lang.tr("aspect from the viewport", "宽高比取视口的"),
+                )
+                .changed()
+            {
+                *aspect = if auto { None } else { Some(1.0) };
+            }
+            if let Some(a) = aspect {
+                ui.add(Slider::new(a, 0.1..=5.0).text("aspect"));
+            }
+            near_far(ui, near, far, lang);
+        }
+        Projection::Frustum {
+            left,
+            right,
+            bottom,
+            top,
+            near,
+            far,
+        }
+        | Projection::Ortho {
+            left,
+            right,
+            bottom,
+            top,
+            near,
+            far,
+        } => {
+            ui.label(
+                RichText::new(lang.tr(
+                    "the near rectangle [l, r] × [b, t]",
+                    "近平面矩形 [l, r] × [b, t]",
+                ))
+                .weak(),
+            );
+            ui.horizontal(|ui| {
+                ui.add(DragValue::new(left).speed(0.01).prefix("l "));
+                ui.add(DragValue::new(right).speed(0.01).prefix("r "));
+                ui.add(DragValue::new(bottom).speed(0.01).prefix("b "));
+                ui.add(DragValue::new(top).speed(0.01).prefix("t "));
+            });
+            near_far(ui, near, far, lang);
+        }
+    }
+}
+
+fn near_far(ui: &mut Ui, near: &mut f32, far: &mut f32, lang: Lang) {
+    ui.horizontal(|ui| {
+        ui.add(DragValue::new(near).speed(0.01).range(0.001..=1e4).prefix("near ")).on_hover_text(lang.tr(
+            "Distance to the near plane z = −near. Small near values waste depth precision: z_ndc = (f+n)/(f−n) − 2fn/((f−n)·d).",
+            "到近平面 z = −near 的距离。near 过小会浪费深度精度：z_ndc = (f+n)/(f−n) − 2fn/((f−n)·d)。",
+        ));
+        ui.add(DragValue::new(far).speed(0.1).range(0.002..=1e5).prefix("far ")).on_hover_text(lang.tr("Distance to the far plane z = −far.", "到远平面 z = −far 的距离。"));
+    });
+    if *far <= *near {
+        *far = *near * 2.0;
+    }
+}
+
+fn render(ui: &mut Ui, s: &mut pipeline::scene::RenderSettings, lang: Lang) {
+    ui.horizontal(|ui| {
+        ui.label(lang.tr("viewport", "视口"));
+        ui.add(DragValue::new(&mut s.width).range(1..=4096).suffix(" px"));
+        ui.label("×");
+        ui.add(DragValue::new(&mut s.height).range(1..=4096).suffix(" px"));
+    });
+    ui.horizontal(|ui| {
+        ui.label(lang.tr("samples per pixel", "每像素采样数"));
+        for n in [Samples::X1, Samples::X4, Samples::X8, Samples::X16] {
+            ui.selectable_value(&mut s.samples, n, n.count().to_string()).on_hover_text(lang.tr(
+                "MSAA: coverage and depth per sample, colour once per pixel and triangle; 4 uses the rotated grid.",
+                "MSAA：每个采样点单独计算覆盖与深度，每个像素每个三角形只着色一次；4× 使用旋转网格。",
+            ));
+        }
+    });
+    ui.horizontal(|ui| {
+        ui.label(lang.tr("culling", "面剔除"));
+        for (m, n) in [
+            (CullMode::None, lang.tr("none", "无")),
+            (CullMode::Back, lang.tr("back", "背面")),
+            (CullMode::Front, lang.tr("front", "正面")),
+        ] {
+            ui.selectable_value(&mut s.cull, m, n)
+                .on_hover_text(lang.tr(
+                    "Front faces are counter-clockwise on screen.",
+                    "屏幕上逆时针的面为正面。",
+                ));
+        }
+    });
+    ui.horizontal(|ui| {
+        egui::ComboBox::new("depth-test", lang.tr("depth test", "深度测试"))
+            .selected_text(format!("{:?}", s.depth_test))
+            .show_ui(ui, |ui| {
+                for t in [
+                    DepthTest::Less,
+                    DepthTest::LessEqual,
+                    DepthTest::Greater,
+                    DepthTest::GreaterEqual,
+                    DepthTest::Always,
+                ] {
+                    ui.selectable_value(&mut s.depth_test, t, format!("{t:?}"));
+                }
+            });
+    });
+    ui.checkbox(
+        &mut s.perspective_correct,
+        lang.tr("perspective-correct interpolation", "透视校正插值"),
+    )
+    .on_hover_text("b_i = (λ_i / w_i) / Σ_k (λ_k / w_k)");
+}

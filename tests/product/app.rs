@@ -1,0 +1,138 @@
+//! The app, driven headless through its accessibility tree (egui_kittest): no display, no GPU.
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use pipelens::app::i18n::Lang;
+use pipelens::app::session::{Session, Stage};
+use pipelens::app::{PipelensApp, setup_context};
+
+/// The app on the built-in scene, rendering synchronously so that tests are deterministic.
+fn harness() -> Harness<'static, PipelensApp> {
+    let spec = pipelens::lesson::default_scene().expect("the built-in scene is valid");
+    let session = Session::new(spec, "test", None);
+    Harness::builder()
+        .with_size([1366.0, 768.0])
+        .with_context_setup(setup_context)
+        // Moving to the next stage animates for 1.5 s of frames.
+        .with_max_steps(200)
+        .build_ui_state(
+            |ui, app: &mut PipelensApp| app.frame(ui),
+            PipelensApp::new(session),
+        )
+}
+
+#[test]
+fn clicking_every_stage_shows_it() {
+    let mut h = harness();
+    h.run();
+    for stage in Stage::ALL {
+        h.get_by_label(stage.name(Lang::En)).click();
+        h.run();
+        assert_eq!(h.state().session.selection.stage, stage);
+    }
+}
+
+#[test]
+fn arrow_keys_step_through_the_stages() {
+    let mut h = harness();
+    h.run();
+    assert_eq!(h.state().session.selection.stage, Stage::World);
+    h.key_press(egui::Key::ArrowRight);
+    h.run();
+    assert_eq!(h.state().session.selection.stage, Stage::View);
+    h.key_press(egui::Key::ArrowLeft);
+    h.key_press(egui::Key::ArrowLeft);
+    h.run();
+    assert_eq!(h.state().session.selection.stage, Stage::Model);
+}
+
+#[test]
+fn switching_the_language_shows_chinese_labels() {
+    let mut h = harness();
+    h.run();
+    h.get_by_label("中文").click();
+    h.run();
+    assert_eq!(h.state().session.lang, Lang::Zh);
+    // Rendering these labels panics if no installed font has the glyphs: the embedded font works.
+    h.get_by_label("光栅化").click();
+    h.run();
+    assert_eq!(h.state().session.selection.stage, Stage::Raster);
+    assert!(h.query_by_label("参数").is_some());
+    h.get_by_label("English").click();
+    h.run();
+    assert!(h.query_by_label("Parameters").is_some());
+}
+
+#[test]
+fn clicking_a_pixel_lists_its_fragments() {
+    let mut h = harness();
+    h.run();
+    h.get_by_label("Output").click();
+    h.run();
+    h.get_by_label("Pixel").click();
+    h.run();
+    // The middle of the central panel is on the image (the floor covers the lower half).
+    let r = h.get_by_label("pixel view").rect();
+    let p = egui::pos2(r.center().x, r.min.y + r.height() * 0.8);
+    h.hover_at(p);
+    h.event(egui::Event::PointerButton {
+        pos: p,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.event(egui::Event::PointerButton {
+        pos: p,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.run();
+    let (x, y) = h
+        .state()
+        .session
+        .selection
+        .pixel
+        .expect("a pixel is selected");
+    let capture = h.state().session.capture.clone().expect("a capture");
+    let fragments = capture.fragments_at(x, y);
+    assert!(!fragments.is_empty(), "the floor reaches pixel ({x}, {y})");
+    let first = format!("fragment 1 · triangle {}", fragments[0].primitive);
+    assert!(
+        h.query_by_label_contains(&first).is_some(),
+        "the inspector lists {first}"
+    );
+}
+
+#[test]
+fn selecting_a_vertex_row_highlights_it() {
+    let mut h = harness();
+    h.run();
+    h.get_by_label("Vertices").click();
+    h.run();
+    h.get_by_label("v3").click();
+    h.run();
+    assert_eq!(h.state().session.selection.vertex, Some(3));
+    h.get_by_label("v3").click();
+    h.run();
+    assert_eq!(
+        h.state().session.selection.vertex,
+        None,
+        "a second click clears it"
+    );
+}
+
+#[test]
+fn changing_a_parameter_renders_again() {
+    let mut h = harness();
+    h.run();
+    let before = h.state().session.shown_generation;
+    h.get_by_label("16").click();
+    h.run();
+    let s = &h.state().session;
+    assert!(s.shown_generation > before);
+    assert_eq!(
+        s.capture.as_ref().map(|c| c.settings.samples.count()),
+        Some(16)
+    );
+}
