@@ -420,7 +420,11 @@ pub fn run(spec: SceneSpec, source: String, lang: Lang) -> anyhow::Result<()> {
             Ok(Box::new(PipelensApp::new(session)))
         }),
     )
-    .map_err(|e| anyhow::anyhow!("cannot open the window: {e}"))
+    .map_err(|e| {
+        anyhow::anyhow!(
+            "cannot open the window: {e}\n(with no display, `pipelens export --out DIR` renders and writes every stage headless)"
+        )
+    })
 }
 
 /// The language a fresh session starts in, from `PIPELENS_LANG` (`zh` or `en`).

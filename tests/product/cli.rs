@@ -82,12 +82,22 @@ fn export_writes_every_buffer_and_the_numbers() {
 }
 
 #[test]
-fn no_subcommand_exports_the_default_scene_and_says_where() {
+fn without_a_display_the_app_says_so_and_points_to_export() {
     let dir = tempfile::tempdir().expect("temp dir");
-    let o = pipelens(dir.path(), &[]);
-    assert!(o.status.success(), "{}", text(&o));
-    assert!(text(&o).contains("pipelens-export"), "{}", text(&o));
-    assert!(dir.path().join("pipelens-export/color.png").is_file());
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_pipelens"))
+        .current_dir(dir.path())
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .env_remove("WAYLAND_SOCKET")
+        .output()
+        .expect("runs");
+    assert!(!o.status.success());
+    let t = text(&o);
+    assert!(
+        t.contains("cannot open the window") && t.contains("pipelens export"),
+        "{t}"
+    );
+    assert!(!t.contains("panicked"), "{t}");
 }
 
 #[test]
