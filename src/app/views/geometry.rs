@@ -125,15 +125,21 @@ fn volume(capture: &FrameCapture, space: Space) -> Option<[Vec3; 8]> {
     }
 }
 
-/// The bounding box of every finite position of the vertices in the given spaces.
+/// The box to frame for the given spaces: the view volume in NDC and window coordinates (a
+/// vertex just in front of the eye has enormous NDC coordinates, and would shrink the cube to a
+/// dot), every finite vertex position elsewhere.
 fn bounds(capture: &FrameCapture, spaces: [Space; 2]) -> Option<(Vec3, Vec3)> {
     let (mut lo, mut hi) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
-    for v in &capture.vertices {
-        for p in spaces.iter().filter_map(|s| position(v, *s)) {
-            if p.is_finite() {
-                lo = lo.min(p);
-                hi = hi.max(p);
-            }
+    let mut add = |p: Vec3| {
+        if p.is_finite() {
+            lo = lo.min(p);
+            hi = hi.max(p);
+        }
+    };
+    for space in spaces {
+        match (space, volume(capture, space)) {
+            (Space::Ndc | Space::Window, Some(corners)) => corners.into_iter().for_each(&mut add),
+            _ => capture.vertices.iter().filter_map(|v| position(v, space)).for_each(&mut add),
         }
     }
     lo.is_finite().then_some((lo, hi))
@@ -296,7 +302,9 @@ impl GeometryView {
             pitch.sin(),
             pitch.cos() * yaw.cos(),
         );
-        let distance = radius * 2.8 / self.zoom;
+        // Far enough back that the sphere around the box fits the narrower side of the view.
+        let aspect = (rect.width() / rect.height()).min(1.0);
+        let distance = radius * 1.1 / (20f32.to_radians().tan() * aspect) / self.zoom;
         let up = if pitch.cos().abs() < 1e-3 {
             Vec3::Z
         } else {
