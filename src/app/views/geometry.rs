@@ -139,7 +139,11 @@ fn bounds(capture: &FrameCapture, spaces: [Space; 2]) -> Option<(Vec3, Vec3)> {
     for space in spaces {
         match (space, volume(capture, space)) {
             (Space::Ndc | Space::Window, Some(corners)) => corners.into_iter().for_each(&mut add),
-            _ => capture.vertices.iter().filter_map(|v| position(v, space)).for_each(&mut add),
+            _ => capture
+                .vertices
+                .iter()
+                .filter_map(|v| position(v, space))
+                .for_each(&mut add),
         }
     }
     lo.is_finite().then_some((lo, hi))
