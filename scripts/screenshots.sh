@@ -7,12 +7,8 @@ out=${1:-docs/screenshots}
 mkdir -p "$out"
 display=:96
 cargo build --quiet --release --bin pipelens
-Xvfb "$display" -screen 0 1366x768x24 -nolisten tcp >/dev/null 2>&1 &
-xvfb=$!
-app=
-cleanup() { [ -n "$app" ] && kill "$app" 2>/dev/null; kill "$xvfb" 2>/dev/null; wait 2>/dev/null || true; }
-trap cleanup EXIT
-sleep 1
+. scripts/xvfb-lib.sh
+start_xvfb
 shoot() { DISPLAY=$display import -window root "$out/$1.png"; echo "wrote $out/$1.png"; }
 key() { DISPLAY=$display xdotool key --window "$win" "$@"; sleep "${2:-2}"; }
 start() {

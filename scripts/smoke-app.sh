@@ -10,12 +10,8 @@ out=${1:-target/smoke-app.png}
 shift || true
 display=:97
 cargo build --quiet --bin pipelens
-Xvfb "$display" -screen 0 1366x768x24 -nolisten tcp >/dev/null 2>&1 &
-xvfb=$!
-app=
-cleanup() { [ -n "$app" ] && kill "$app" 2>/dev/null; kill "$xvfb" 2>/dev/null; wait 2>/dev/null || true; }
-trap cleanup EXIT
-sleep 1
+. scripts/xvfb-lib.sh
+start_xvfb
 DISPLAY=$display target/debug/pipelens "$@" >target/smoke-app.log 2>&1 &
 app=$!
 for _ in $(seq 1 60); do

@@ -194,6 +194,25 @@ impl Projection {
         }
     }
 
+    /// The eight corners of the view volume in eye coordinates: the near rectangle at
+    /// `z = −near`, then the far rectangle at `z = −far` (scaled by `far/near` for a perspective
+    /// projection), each bottom-left, bottom-right, top-right, top-left.
+    #[must_use]
+    pub fn corners_eye(&self, viewport_aspect: f32) -> [Vec3; 8] {
+        let [l, r, b, t, n, f] = self.bounds(viewport_aspect);
+        let k = if self.is_perspective() { f / n } else { 1.0 };
+        let near = [
+            Vec3::new(l, b, -n),
+            Vec3::new(r, b, -n),
+            Vec3::new(r, t, -n),
+            Vec3::new(l, t, -n),
+        ];
+        let far = near.map(|p| Vec3::new(p.x * k, p.y * k, -f));
+        [
+            near[0], near[1], near[2], near[3], far[0], far[1], far[2], far[3],
+        ]
+    }
+
     /// Whether this is a perspective (rather than parallel) projection.
     #[must_use]
     pub fn is_perspective(&self) -> bool {

@@ -80,30 +80,9 @@ fn space_name(space: Space, l: Lang) -> &'static str {
     }
 }
 
-/// The corners of the view volume in eye coordinates: near rectangle, then far rectangle
-/// (each bottom-left, bottom-right, top-right, top-left).
-fn volume_eye(capture: &FrameCapture) -> [Vec3; 8] {
-    let [l, r, b, t, n, f] = capture.projection.bounds(capture.settings.aspect());
-    let k = if capture.projection.is_perspective() {
-        f / n
-    } else {
-        1.0
-    };
-    let near = [
-        Vec3::new(l, b, -n),
-        Vec3::new(r, b, -n),
-        Vec3::new(r, t, -n),
-        Vec3::new(l, t, -n),
-    ];
-    let far = near.map(|p| Vec3::new(p.x * k, p.y * k, -f));
-    [
-        near[0], near[1], near[2], near[3], far[0], far[1], far[2], far[3],
-    ]
-}
-
 /// The view volume in a space (world, eye, clip, NDC, window); `None` in model space.
 fn volume(capture: &FrameCapture, space: Space) -> Option<[Vec3; 8]> {
-    let eye = volume_eye(capture);
+    let eye = capture.projection.corners_eye(capture.settings.aspect());
     let m = &capture.matrices;
     let through = |mat: glam::Mat4, divide: bool| {
         eye.map(|p| {

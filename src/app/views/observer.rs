@@ -96,7 +96,7 @@ fn draw_viewing_camera(painter: &egui::Painter, cam: &Projector, main: &FrameCap
     let Ok(frame) = transform::camera_frame(c.eye, c.at, c.up) else {
         return;
     };
-    let [l, r, b, t, n, f] = main.projection.bounds(main.settings.aspect());
+    let [.., n, _] = main.projection.bounds(main.settings.aspect());
     let scale = (c.at - c.eye).length().max(n) * 0.25;
     for (axis, color, label) in [
         (frame.u, palette::X, "u"),
@@ -131,18 +131,8 @@ fn draw_viewing_camera(painter: &egui::Painter, cam: &Projector, main: &FrameCap
     }
     // Eye-space corners to world: the inverse of the view matrix the capture used.
     let to_world = main.matrices.view.matrix.inverse();
-    let k = if main.projection.is_perspective() {
-        f / n
-    } else {
-        1.0
-    };
-    let near = [
-        Vec3::new(l, b, -n),
-        Vec3::new(r, b, -n),
-        Vec3::new(r, t, -n),
-        Vec3::new(l, t, -n),
-    ];
-    let far = near.map(|p| Vec3::new(p.x * k, p.y * k, -f));
+    let corners = main.projection.corners_eye(main.settings.aspect());
+    let (near, far) = (&corners[..4], &corners[4..]);
     let w = |p: Vec3| to_world.transform_point3(p);
     for i in 0..4 {
         let j = (i + 1) % 4;
