@@ -10,7 +10,6 @@ cargo build --quiet --release --bin pipelens
 . scripts/xvfb-lib.sh
 start_xvfb
 shoot() { DISPLAY=$display import -window root "$out/$1.png"; echo "wrote $out/$1.png"; }
-key() { DISPLAY=$display xdotool key --window "$win" "$@"; sleep "${2:-2}"; }
 start() {
   DISPLAY=$display target/release/pipelens "$@" >/dev/null 2>&1 &
   app=$!
