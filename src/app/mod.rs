@@ -212,7 +212,7 @@ impl PipelensApp {
                 self.commands.extend(c);
             }
         } else {
-            let c = self.pixel_view.toolbar(ui, &sel, lang);
+            let c = self.pixel_view.toolbar(ui, &sel, &capture.buffers(), lang);
             self.commands.extend(c);
             let c = self.pixel_view.ui(ui, &self.session, capture);
             self.commands.extend(c);

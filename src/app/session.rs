@@ -33,13 +33,15 @@ pub enum Stage {
     Raster,
     /// The depth buffer.
     Depth,
+    /// Lighting: ambient, diffuse and specular terms, normals.
+    Shading,
     /// The final image.
     Output,
 }
 
 impl Stage {
     /// Every stage, in order.
-    pub const ALL: [Stage; 9] = [
+    pub const ALL: [Stage; 10] = [
         Self::Model,
         Self::World,
         Self::View,
@@ -48,6 +50,7 @@ impl Stage {
         Self::Screen,
         Self::Raster,
         Self::Depth,
+        Self::Shading,
         Self::Output,
     ];
 
@@ -63,6 +66,7 @@ impl Stage {
             Self::Screen => l.tr("Viewport", "视口"),
             Self::Raster => l.tr("Rasterization", "光栅化"),
             Self::Depth => l.tr("Depth", "深度"),
+            Self::Shading => l.tr("Shading", "着色"),
             Self::Output => l.tr("Output", "输出"),
         }
     }
@@ -103,6 +107,10 @@ impl Stage {
                 "The z-buffer: a fragment is kept if it is nearer than what the buffer holds.",
                 "深度缓冲（z-buffer）：片元比缓冲中的值更近时保留。",
             ),
+            Self::Shading => l.tr(
+                "Lighting: I = k_a·I_a + f_att·(k_d·I_d·max(l·n, 0) + k_s·I_s·max(n·h, 0)^β), evaluated per face, per vertex or per pixel.",
+                "光照：I = k_a·I_a + f_att·(k_d·I_d·max(l·n, 0) + k_s·I_s·max(n·h, 0)^β)，按面、按顶点或按像素计算。",
+            ),
             Self::Output => l.tr(
                 "The final colour: each pixel the mean of its samples.",
                 "最终颜色：每个像素为其采样点的平均。",
@@ -120,7 +128,7 @@ impl Stage {
             Self::Clip => Some(Space::Clip),
             Self::Ndc => Some(Space::Ndc),
             Self::Screen => Some(Space::Window),
-            Self::Raster | Self::Depth | Self::Output => None,
+            Self::Raster | Self::Depth | Self::Shading | Self::Output => None,
         }
     }
 
@@ -130,6 +138,7 @@ impl Stage {
         match self {
             Self::Raster => BufferKind::BaryPerspective,
             Self::Depth => BufferKind::Depth,
+            Self::Shading => BufferKind::Diffuse,
             _ => BufferKind::Color,
         }
     }

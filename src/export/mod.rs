@@ -43,7 +43,7 @@ pub struct ExportFile {
 /// When an image cannot be encoded.
 pub fn encode_capture(capture: &FrameCapture, opts: &ExportOptions) -> Result<Vec<ExportFile>> {
     let mut files = Vec::new();
-    for kind in BufferKind::ALL {
+    for kind in capture.buffers() {
         let img = capture.image(kind);
         files.push(ExportFile {
             name: format!("{}.png", kind.name()),

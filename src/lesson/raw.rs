@@ -29,6 +29,32 @@ pub struct RawScene {
     /// `[[scene.objects]]`.
     #[serde(default)]
     pub objects: Vec<Spanned<RawObject>>,
+    /// `[[scene.lights]]`.
+    #[serde(default)]
+    pub lights: Vec<Spanned<RawLight>>,
+}
+
+/// One `[[scene.lights]]` entry.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawLight {
+    pub kind: Spanned<String>,
+    pub intensity: Option<Spanned<RawScale>>,
+    pub position: Option<RawVec3>,
+    pub direction: Option<RawVec3>,
+    pub attenuation: Option<RawVec3>,
+    pub cutoff: Option<Spanned<f64>>,
+    pub exponent: Option<Spanned<f64>>,
+}
+
+/// `material = { ka = …, kd = …, ks = …, shininess = … }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawMaterial {
+    pub ka: Option<Spanned<RawScale>>,
+    pub kd: Option<Spanned<RawScale>>,
+    pub ks: Option<Spanned<RawScale>>,
+    pub shininess: Option<Spanned<f64>>,
 }
 
 /// A 3-vector as written: `[x, y, z]`.
@@ -68,6 +94,8 @@ pub struct RawRender {
     pub cull: Option<Spanned<String>>,
     pub depth_test: Option<Spanned<String>>,
     pub perspective_correct: Option<bool>,
+    pub shading: Option<Spanned<String>>,
+    pub reflection: Option<Spanned<String>>,
     pub background: Option<RawVec3>,
 }
 
@@ -85,6 +113,7 @@ pub struct RawObject {
     pub scale: Option<Spanned<RawScale>>,
     /// `"vertex"`, `"normal"` or `[r, g, b]`.
     pub color: Option<Spanned<RawColor>>,
+    pub material: Option<Spanned<RawMaterial>>,
 }
 
 /// A mesh as written.

@@ -7,14 +7,15 @@ use std::path::Path;
 use glam::Vec3;
 use pipeline::mesh::{BuiltinMesh, Mesh};
 use pipeline::scene::{
-    Camera, ColorSource, CullMode, DepthTest, MAX_CAPTURE_SAMPLES, MAX_VIEWPORT_SIDE, Object,
-    Projection, RenderSettings, Samples, Scene,
+    Camera, ColorSource, CullMode, DepthTest, Light, MAX_CAPTURE_SAMPLES, MAX_VIEWPORT_SIDE,
+    Material, Object, Projection, RenderSettings, Samples, Scene,
 };
+use pipeline::shade::{Frequency, Reflection};
 use toml::Spanned;
 
 use super::raw::{
-    RawColor, RawMesh, RawMeshTable, RawObject, RawProjection, RawRender, RawScale, RawScene,
-    RawVec3,
+    RawColor, RawLight, RawMaterial, RawMesh, RawMeshTable, RawObject, RawProjection, RawRender,
+    RawScale, RawScene, RawVec3,
 };
 use super::{Diagnostic, Diagnostics, SceneSpec};
 
@@ -134,13 +135,14 @@ pub fn scene(
         .enumerate()
         .filter_map(|(i, o)| object(&mut c, o, i, base))
         .collect();
+    let lights = s.lights.iter().filter_map(|l| light(&mut c, l)).collect();
     if c.found.is_empty() {
         Ok(SceneSpec {
             scene: Scene {
                 objects,
                 camera,
                 projection,
-                lights: Vec::new(),
+                lights,
             },
             settings,
         })
@@ -190,6 +192,20 @@ fn render(c: &mut Checker<'_>, r: &Spanned<RawRender>) -> RenderSettings {
             ),
         );
     }
+    render_modes(c, raw, &mut s);
+    if let Some(v) = &raw.background
+        && let Some(bg) = c.vec3("background", v)
+    {
+        if bg.min_element() < 0.0 || bg.max_element() > 1.0 {
+            c.error(v.span(), "`background` components must be between 0 and 1");
+        }
+        s.background = bg;
+    }
+    s
+}
+
+/// The named choices of `[scene.render]`: culling, depth test, interpolation, lighting.
+fn render_modes(c: &mut Checker<'_>, raw: &RawRender, s: &mut RenderSettings) {
     if let Some(v) = &raw.cull {
         s.cull = c
             .choice(
@@ -221,15 +237,32 @@ fn render(c: &mut Checker<'_>, r: &Spanned<RawRender>) -> RenderSettings {
     if let Some(b) = raw.perspective_correct {
         s.perspective_correct = b;
     }
-    if let Some(v) = &raw.background
-        && let Some(bg) = c.vec3("background", v)
-    {
-        if bg.min_element() < 0.0 || bg.max_element() > 1.0 {
-            c.error(v.span(), "`background` components must be between 0 and 1");
-        }
-        s.background = bg;
+    if let Some(v) = &raw.shading {
+        s.shading = c
+            .choice(
+                "shading",
+                v,
+                &[
+                    ("unlit", Frequency::Unlit),
+                    ("flat", Frequency::Flat),
+                    ("gouraud", Frequency::Gouraud),
+                    ("phong", Frequency::Phong),
+                ],
+            )
+            .unwrap_or_default();
     }
-    s
+    if let Some(v) = &raw.reflection {
+        s.reflection = c
+            .choice(
+                "reflection",
+                v,
+                &[
+                    ("phong", Reflection::Phong),
+                    ("blinn_phong", Reflection::BlinnPhong),
+                ],
+            )
+            .unwrap_or_default();
+    }
 }
 
 fn projection(c: &mut Checker<'_>, p: &Spanned<RawProjection>) -> Projection {
@@ -379,6 +412,9 @@ fn object(
             object.scale = v;
         }
     }
+    if let Some(m) = &raw.material {
+        object.material = material(c, m);
+    }
     if let Some(col) = &raw.color {
         object.color = match col.get_ref() {
             RawColor::Named(n) if n == "vertex" => ColorSource::Vertex,
@@ -511,4 +547,118 @@ fn builtin(
         }
     };
     Some(mesh)
+}
+
+/// One number or three, each finite and not negative, as a colour-like triple.
+fn triple(c: &mut Checker<'_>, key: &str, v: &Spanned<RawScale>) -> Option<Vec3> {
+    let a = match *v.get_ref() {
+        RawScale::Uniform(k) => [k; 3],
+        RawScale::Axes(a) => a,
+    };
+    let t = c.vec3(key, &Spanned::new(v.span(), a))?;
+    if t.min_element() < 0.0 {
+        c.error(v.span(), format!("`{key}` must not be negative"));
+        return None;
+    }
+    Some(t)
+}
+
+fn material(c: &mut Checker<'_>, m: &Spanned<RawMaterial>) -> Material {
+    let raw = m.get_ref();
+    let mut out = Material::default();
+    for (key, v, slot) in [
+        ("ka", &raw.ka, &mut out.ka),
+        ("kd", &raw.kd, &mut out.kd),
+        ("ks", &raw.ks, &mut out.ks),
+    ] {
+        if let Some(t) = v.as_ref().and_then(|v| triple(c, key, v)) {
+            *slot = t;
+        }
+    }
+    if let Some(v) = &raw.shininess
+        && let Some(x) = c.finite("shininess", v)
+    {
+        if x < 0.0 {
+            c.error(
+                v.span(),
+                format!("`shininess` must not be negative, got {x}"),
+            );
+        }
+        out.shininess = x;
+    }
+    out
+}
+
+fn light(c: &mut Checker<'_>, l: &Spanned<RawLight>) -> Option<Light> {
+    let raw = l.get_ref();
+    let intensity = raw
+        .intensity
+        .as_ref()
+        .and_then(|v| triple(c, "intensity", v))
+        .unwrap_or(Vec3::ONE);
+    let attenuation = raw
+        .attenuation
+        .as_ref()
+        .and_then(|v| c.vec3("attenuation", v))
+        .unwrap_or(Vec3::X);
+    let needs = |c: &mut Checker<'_>, key: &str, v: &Option<RawVec3>| -> Option<Vec3> {
+        match v {
+            Some(v) => c.vec3(key, v),
+            None => {
+                c.error(
+                    l.span(),
+                    format!("a {} light needs `{key}`", raw.kind.get_ref()),
+                );
+                None
+            }
+        }
+    };
+    match raw.kind.get_ref().as_str() {
+        "ambient" => Some(Light::Ambient { intensity }),
+        "point" => Some(Light::Point {
+            position: needs(c, "position", &raw.position)?,
+            intensity,
+            attenuation,
+        }),
+        "directional" => Some(Light::Directional {
+            direction: needs(c, "direction", &raw.direction)?,
+            intensity,
+        }),
+        "spot" => {
+            let position = needs(c, "position", &raw.position)?;
+            let direction = needs(c, "direction", &raw.direction)?;
+            let cutoff = raw
+                .cutoff
+                .as_ref()
+                .and_then(|v| c.finite("cutoff", v))
+                .unwrap_or(30.0);
+            if !(cutoff > 0.0 && cutoff <= 90.0) {
+                let span = raw.cutoff.as_ref().map_or(l.span(), Spanned::span);
+                c.error(
+                    span,
+                    format!("`cutoff` is the cone's half-angle: between 0° and 90°, got {cutoff}"),
+                );
+            }
+            let exponent = raw
+                .exponent
+                .as_ref()
+                .and_then(|v| c.finite("exponent", v))
+                .unwrap_or(1.0);
+            Some(Light::Spot {
+                position,
+                direction,
+                cutoff_deg: cutoff,
+                exponent,
+                intensity,
+                attenuation,
+            })
+        }
+        other => {
+            c.error(
+                raw.kind.span(),
+                format!("`kind` of a light must be \"ambient\", \"point\", \"directional\" or \"spot\", got \"{other}\""),
+            );
+            None
+        }
+    }
 }

@@ -2,7 +2,7 @@
 
 use crate::support::{pipelens, repo, text};
 
-const EXPECTED_FILES: [&str; 9] = [
+const EXPECTED_FILES: [&str; 15] = [
     "color.png",
     "depth.png",
     "depth16.png",
@@ -10,6 +10,12 @@ const EXPECTED_FILES: [&str; 9] = [
     "primitive_id.png",
     "bary_perspective.png",
     "bary_affine.png",
+    "normal.png",
+    "n_dot_l.png",
+    "n_dot_h.png",
+    "ambient.png",
+    "diffuse.png",
+    "specular.png",
     "overlays.png",
     "capture.json",
 ];

@@ -70,6 +70,8 @@ pub struct PrimitiveRecord {
     pub triangles: [u32; 2],
     /// Samples covered and written (after the depth test), over all its raster triangles.
     pub counts: RasterCounts,
+    /// Its lighting, with flat shading (one evaluation per face).
+    pub flat: Option<crate::shade::ShadeTerms>,
 }
 
 /// Per-pixel buffers, top image row first (`index = row·width + column`).
@@ -91,6 +93,25 @@ pub struct PixelBuffers {
     /// pixel centre (multisampling shades once per pixel), uncovered samples the background;
     /// the pixel is their mean.
     pub color: Vec<[f32; 3]>,
+    /// The lighting terms of the owning fragment at the pixel centre, when lighting is on.
+    pub shading: Option<ShadingBuffers>,
+}
+
+/// Per-pixel lighting terms of the owning fragment (see `shade`), top image row first.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct ShadingBuffers {
+    /// `Σ k_a·I_a`.
+    pub ambient: Vec<[f32; 3]>,
+    /// `Σ f_att·k_d·I_d·max(l·n, 0)`.
+    pub diffuse: Vec<[f32; 3]>,
+    /// `Σ f_att·k_s·I_s·max(r·v, 0)^α` or `max(n·h, 0)^β`.
+    pub specular: Vec<[f32; 3]>,
+    /// The unit normal used, world coordinates.
+    pub normal: Vec<[f32; 3]>,
+    /// `n·l` of the key light.
+    pub n_dot_l: Vec<f32>,
+    /// `n·h` (Blinn-Phong) or `r·v` (Phong) of the key light.
+    pub n_dot_h: Vec<f32>,
 }
 
 /// Which image of a capture.
@@ -110,18 +131,50 @@ pub enum BufferKind {
     BaryPerspective,
     /// Affine barycentrics `(λ0, λ1, λ2)` as `(R, G, B)`; background black.
     BaryAffine,
+    /// The ambient term, 8 bits per channel; background black.
+    Ambient,
+    /// The diffuse term.
+    Diffuse,
+    /// The specular term.
+    Specular,
+    /// The normal used for lighting, `(n + 1)/2` as RGB.
+    Normal,
+    /// `max(n·l, 0)` of the key light as grey.
+    NDotL,
+    /// `max(n·h, 0)` (or `r·v`) of the key light as grey.
+    NDotH,
 }
 
 impl BufferKind {
     /// Every 8-bit image kind, in the order of the stages.
-    pub const ALL: [BufferKind; 6] = [
+    pub const ALL: [BufferKind; 12] = [
         Self::Coverage,
         Self::PrimitiveId,
         Self::Depth,
         Self::BaryPerspective,
         Self::BaryAffine,
+        Self::Normal,
+        Self::NDotL,
+        Self::NDotH,
+        Self::Ambient,
+        Self::Diffuse,
+        Self::Specular,
         Self::Color,
     ];
+
+    /// Whether the buffer holds a lighting term (present only when lighting is on).
+    #[must_use]
+    pub fn is_lighting(self) -> bool {
+        matches!(
+            self,
+            Self::Ambient
+                | Self::Diffuse
+                | Self::Specular
+                | Self::Normal
+                | Self::NDotL
+                | Self::NDotH
+        )
+    }
 
     /// A file-name friendly name.
     #[must_use]
@@ -133,6 +186,12 @@ impl BufferKind {
             Self::PrimitiveId => "primitive_id",
             Self::BaryPerspective => "bary_perspective",
             Self::BaryAffine => "bary_affine",
+            Self::Ambient => "ambient",
+            Self::Diffuse => "diffuse",
+            Self::Specular => "specular",
+            Self::Normal => "normal",
+            Self::NDotL => "n_dot_l",
+            Self::NDotH => "n_dot_h",
         }
     }
 
@@ -153,6 +212,18 @@ impl BufferKind {
                 "RGB = 255·(b0, b1, b2), perspective-correct; background black"
             }
             Self::BaryAffine => "RGB = 255·(λ0, λ1, λ2), screen-space; background black",
+            Self::Ambient => "RGB = round(255·Σ k_a·I_a), clamped; background black",
+            Self::Diffuse => {
+                "RGB = round(255·Σ f_att·k_d·I_d·max(l·n, 0)), clamped; background black"
+            }
+            Self::Specular => {
+                "RGB = round(255·Σ f_att·k_s·I_s·max(n·h, 0)^β) (or (r·v)^α), clamped; background black"
+            }
+            Self::Normal => "RGB = 255·(n + 1)/2 of the unit world-space normal; background black",
+            Self::NDotL => "grey = 255·max(n·l, 0) of the key light; background black",
+            Self::NDotH => {
+                "grey = 255·max(n·h, 0) (Blinn-Phong) or max(r·v, 0) (Phong); background black"
+            }
         }
     }
 }
@@ -236,7 +307,29 @@ fn hue_color(id: u32) -> [u8; 3] {
     [to_u8(r), to_u8(g), to_u8(b)]
 }
 
+/// The colour of a lighting buffer at pixel `i`.
+fn lighting_rgb(sh: &ShadingBuffers, kind: BufferKind, i: usize) -> [u8; 3] {
+    match kind {
+        BufferKind::Ambient => sh.ambient[i].map(to_u8),
+        BufferKind::Diffuse => sh.diffuse[i].map(to_u8),
+        BufferKind::Specular => sh.specular[i].map(to_u8),
+        BufferKind::Normal => sh.normal[i].map(|v| to_u8((v + 1.0) / 2.0)),
+        BufferKind::NDotL => [to_u8(sh.n_dot_l[i]); 3],
+        BufferKind::NDotH => [to_u8(sh.n_dot_h[i]); 3],
+        _ => [0; 3],
+    }
+}
+
 impl FrameCapture {
+    /// The buffers this capture holds (lighting buffers only when lighting was on).
+    #[must_use]
+    pub fn buffers(&self) -> Vec<BufferKind> {
+        BufferKind::ALL
+            .into_iter()
+            .filter(|k| !k.is_lighting() || self.pixels.shading.is_some())
+            .collect()
+    }
+
     /// Width in pixels.
     #[must_use]
     pub fn width(&self) -> u32 {
@@ -285,6 +378,10 @@ impl FrameCapture {
                 BufferKind::PrimitiveId | BufferKind::BaryPerspective | BufferKind::BaryAffine => {
                     [0; 3]
                 }
+                k => match (&px.shading, covered) {
+                    (Some(sh), true) => lighting_rgb(sh, k, i),
+                    _ => [0; 3],
+                },
             };
             Rgba([rgb[0], rgb[1], rgb[2], 255])
         })

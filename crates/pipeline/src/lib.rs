@@ -12,6 +12,7 @@
 //! | [`vertex`] | model → world → eye → clip → NDC → window, per vertex |
 //! | [`clip`] | clipping in homogeneous clip space |
 //! | [`raster`] | edge functions, top-left rule, multisampling, depth test, barycentrics |
+//! | [`shade`] | Phong / Blinn-Phong terms, lights, attenuation, shading frequencies |
 //! | [`capture`] | the record of a frame and its images |
 //! | [`overlay`] | 2-D shapes over the images |
 
@@ -22,6 +23,7 @@ pub mod overlay;
 pub mod raster;
 mod render;
 pub mod scene;
+pub mod shade;
 pub mod transform;
 pub mod vertex;
 

@@ -9,10 +9,13 @@ use glam::{Vec3, Vec4};
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::capture::{Fate, FrameCapture, Matrices, ObjectSummary, PixelBuffers, PrimitiveRecord};
+use crate::capture::{
+    Fate, FrameCapture, Matrices, ObjectSummary, PixelBuffers, PrimitiveRecord, ShadingBuffers,
+};
 use crate::clip::{self, ClipOutcome, ClipVertex};
 use crate::raster::{NONE, RasterCounts, RasterTriangle, SampleBuffers, SetupRejection};
 use crate::scene::{RenderSettings, Scene};
+use crate::shade::{self, Frequency, ShadeTerms};
 use crate::transform::{self, NamedMatrix};
 use crate::vertex::{self, VertexMatrices, VertexRecord};
 
@@ -91,16 +94,24 @@ pub fn render_timed(
             projection: matrices.projection.matrix,
             viewport: matrices.viewport.matrix,
         };
-        vertex::transform_object(object, i as u32, &m, &mut vertices);
+        let lighting = vertex::VertexLighting {
+            frequency: settings.shading,
+            reflection: settings.reflection,
+            lights: &scene.lights,
+            eye: scene.camera.eye,
+        };
+        vertex::transform_object(object, i as u32, &m, &lighting, &mut vertices);
     }
     times.vertex = t.elapsed();
 
     let t = Instant::now();
-    let (primitives, triangles) = assemble_and_clip(scene, settings, &matrices, &vertices);
+    let (mut primitives, triangles) = assemble_and_clip(scene, settings, &matrices, &vertices);
+    if settings.shading == Frequency::Flat {
+        light_faces(scene, settings, &vertices, &mut primitives);
+    }
     times.clip_setup = t.elapsed();
 
     let t = Instant::now();
-    let mut primitives = primitives;
     let mut samples = SampleBuffers::new(
         settings.width,
         settings.height,
@@ -116,7 +127,14 @@ pub fn render_timed(
     times.raster = t.elapsed();
 
     let t = Instant::now();
-    let pixels = resolve(settings, &samples, &triangles, &primitives, &vertices);
+    let pixels = resolve(
+        scene,
+        settings,
+        &samples,
+        &triangles,
+        &primitives,
+        &vertices,
+    );
     times.resolve = t.elapsed();
 
     let capture = FrameCapture {
@@ -179,6 +197,7 @@ fn assemble_and_clip(
                         clipped_polygon: None,
                         triangles: [start, start],
                         counts: RasterCounts::default(),
+                        flat: None,
                     });
                     continue;
                 }
@@ -230,6 +249,7 @@ fn assemble_and_clip(
                 },
                 triangles: [start, end],
                 counts: RasterCounts::default(),
+                flat: None,
             });
         }
         row_base += object.mesh.positions.len() as u32;
@@ -237,8 +257,39 @@ fn assemble_and_clip(
     (primitives, triangles)
 }
 
+/// Flat shading: each face lit once, with its own normal `(p1 − p0) × (p2 − p0)` (world
+/// coordinates), at its centroid, with the mean of its vertices' colours.
+fn light_faces(
+    scene: &Scene,
+    settings: &RenderSettings,
+    vertices: &[VertexRecord],
+    primitives: &mut [PrimitiveRecord],
+) {
+    for prim in primitives
+        .iter_mut()
+        .filter(|p| p.triangles[1] > p.triangles[0])
+    {
+        let v = prim.vertices.map(|r| &vertices[r as usize]);
+        let p = v.map(|v| v.world.truncate());
+        let normal = (p[1] - p[0]).cross(p[2] - p[0]);
+        let centroid = (p[0] + p[1] + p[2]) / 3.0;
+        let color = (v[0].color + v[1].color + v[2].color) / 3.0;
+        let material = &scene.objects[prim.object as usize].material;
+        prim.flat = Some(shade::shade(
+            centroid,
+            normal,
+            scene.camera.eye,
+            color,
+            &scene.lights,
+            material,
+            settings.reflection,
+        ));
+    }
+}
+
 /// Everything the resolve computes for one pixel.
 struct ResolvedPixel {
+    terms: Option<ShadeTerms>,
     coverage: u8,
     depth: f32,
     primitive: u32,
@@ -247,10 +298,51 @@ struct ResolvedPixel {
     color: [f32; 3],
 }
 
+/// One image row of every per-pixel buffer, written by one resolve task.
+struct RowOut<'a> {
+    coverage: &'a mut [u8],
+    depth: &'a mut [f32],
+    primitive: &'a mut [u32],
+    bary_perspective: &'a mut [[f32; 3]],
+    bary_affine: &'a mut [[f32; 3]],
+    color: &'a mut [[f32; 3]],
+    shading: Option<ShadingRow<'a>>,
+}
+
+/// One image row of the lighting buffers.
+struct ShadingRow<'a> {
+    ambient: &'a mut [[f32; 3]],
+    diffuse: &'a mut [[f32; 3]],
+    specular: &'a mut [[f32; 3]],
+    normal: &'a mut [[f32; 3]],
+    n_dot_l: &'a mut [f32],
+    n_dot_h: &'a mut [f32],
+}
+
+impl RowOut<'_> {
+    fn write(&mut self, x: usize, r: &ResolvedPixel) {
+        self.coverage[x] = r.coverage;
+        self.depth[x] = r.depth;
+        self.primitive[x] = r.primitive;
+        self.bary_perspective[x] = r.bary_perspective;
+        self.bary_affine[x] = r.bary_affine;
+        self.color[x] = r.color;
+        if let (Some(s), Some(t)) = (&mut self.shading, &r.terms) {
+            s.ambient[x] = t.ambient.to_array();
+            s.diffuse[x] = t.diffuse.to_array();
+            s.specular[x] = t.specular.to_array();
+            s.normal[x] = t.normal.to_array();
+            s.n_dot_l[x] = t.n_dot_l;
+            s.n_dot_h[x] = t.n_dot_h;
+        }
+    }
+}
+
 /// Resolves samples to pixels: coverage, mean depth, the owning primitive, barycentrics and
-/// colour at the pixel centre (once per pixel and triangle, as multisampling shades).
-/// Rows are independent, so they are resolved in parallel.
+/// colour at the pixel centre (once per pixel and triangle, as multisampling shades), and the
+/// lighting terms of the owning fragment. Rows are independent, so they are resolved in parallel.
 fn resolve(
+    scene: &Scene,
     settings: &RenderSettings,
     samples: &SampleBuffers,
     triangles: &[RasterTriangle],
@@ -259,6 +351,7 @@ fn resolve(
 ) -> PixelBuffers {
     let (w, h) = (settings.width as usize, settings.height as usize);
     let n = w * h;
+    let lit = settings.shading != Frequency::Unlit;
     let mut px = PixelBuffers {
         coverage: vec![0; n],
         depth: vec![0.0; n],
@@ -266,39 +359,83 @@ fn resolve(
         bary_perspective: vec![[0.0; 3]; n],
         bary_affine: vec![[0.0; 3]; n],
         color: vec![[0.0; 3]; n],
+        shading: lit.then(|| ShadingBuffers {
+            ambient: vec![[0.0; 3]; n],
+            diffuse: vec![[0.0; 3]; n],
+            specular: vec![[0.0; 3]; n],
+            normal: vec![[0.0; 3]; n],
+            n_dot_l: vec![0.0; n],
+            n_dot_h: vec![0.0; n],
+        }),
     };
     let ctx = ResolveContext {
+        scene,
         settings,
         samples,
         triangles,
         primitives,
         vertices,
     };
-    px.coverage
-        .par_chunks_mut(w)
-        .zip(px.depth.par_chunks_mut(w))
-        .zip(px.primitive.par_chunks_mut(w))
-        .zip(px.bary_perspective.par_chunks_mut(w))
-        .zip(px.bary_affine.par_chunks_mut(w))
-        .zip(px.color.par_chunks_mut(w))
-        .enumerate()
-        .for_each(|(row, (((((cov, depth), prim), bp), ba), color))| {
-            let y = (h - 1 - row) as u32;
-            for x in 0..w {
-                let r = ctx.pixel(x as u32, y, row * w + x);
-                cov[x] = r.coverage;
-                depth[x] = r.depth;
-                prim[x] = r.primitive;
-                bp[x] = r.bary_perspective;
-                ba[x] = r.bary_affine;
-                color[x] = r.color;
-            }
-        });
+    let mut shading_rows: Vec<Option<ShadingRow<'_>>> = match &mut px.shading {
+        Some(sb) => sb
+            .ambient
+            .chunks_mut(w)
+            .zip(sb.diffuse.chunks_mut(w))
+            .zip(sb.specular.chunks_mut(w))
+            .zip(sb.normal.chunks_mut(w))
+            .zip(sb.n_dot_l.chunks_mut(w))
+            .zip(sb.n_dot_h.chunks_mut(w))
+            .map(
+                |(((((ambient, diffuse), specular), normal), n_dot_l), n_dot_h)| {
+                    Some(ShadingRow {
+                        ambient,
+                        diffuse,
+                        specular,
+                        normal,
+                        n_dot_l,
+                        n_dot_h,
+                    })
+                },
+            )
+            .collect(),
+        None => (0..h).map(|_| None).collect(),
+    };
+    let rows: Vec<RowOut<'_>> = px
+        .coverage
+        .chunks_mut(w)
+        .zip(px.depth.chunks_mut(w))
+        .zip(px.primitive.chunks_mut(w))
+        .zip(px.bary_perspective.chunks_mut(w))
+        .zip(px.bary_affine.chunks_mut(w))
+        .zip(px.color.chunks_mut(w))
+        .zip(shading_rows.drain(..))
+        .map(
+            |(
+                (((((coverage, depth), primitive), bary_perspective), bary_affine), color),
+                shading,
+            )| RowOut {
+                coverage,
+                depth,
+                primitive,
+                bary_perspective,
+                bary_affine,
+                color,
+                shading,
+            },
+        )
+        .collect();
+    rows.into_par_iter().enumerate().for_each(|(row, mut out)| {
+        let y = (h - 1 - row) as u32;
+        for x in 0..w {
+            out.write(x, &ctx.pixel(x as u32, y, row * w + x));
+        }
+    });
     px
 }
 
 /// What the resolve of one pixel reads.
 struct ResolveContext<'a> {
+    scene: &'a Scene,
     settings: &'a RenderSettings,
     samples: &'a SampleBuffers,
     triangles: &'a [RasterTriangle],
@@ -307,11 +444,43 @@ struct ResolveContext<'a> {
 }
 
 impl ResolveContext<'_> {
-    /// The colour of triangle `t` at original-triangle weights `b`: `Σ b_k·c_k`.
+    /// The surface colour of triangle `t` at original-triangle weights `b`: `Σ b_k·c_k`.
     fn color_of(&self, t: &RasterTriangle, b: Vec3) -> Vec3 {
         let rows = self.primitives[t.primitive as usize].vertices;
         let c = rows.map(|r| self.vertices[r as usize].color);
         c[0] * b.x + c[1] * b.y + c[2] * b.z
+    }
+
+    /// The lighting of triangle `t` at weights `b`, by the shading frequency: the face's own
+    /// terms (flat), the vertices' terms interpolated (Gouraud), or lighting evaluated here with
+    /// the interpolated position and normal (Phong). `None` when unlit.
+    fn terms_of(&self, t: &RasterTriangle, b: Vec3) -> Option<ShadeTerms> {
+        let prim = &self.primitives[t.primitive as usize];
+        let v = prim.vertices.map(|r| &self.vertices[r as usize]);
+        match self.settings.shading {
+            Frequency::Unlit => None,
+            Frequency::Flat => prim.flat,
+            Frequency::Gouraud => {
+                let s = v.map(|v| v.shade.unwrap_or_default());
+                Some(ShadeTerms::blend([&s[0], &s[1], &s[2]], b))
+            }
+            Frequency::Phong => {
+                let p = v[0].world.truncate() * b.x
+                    + v[1].world.truncate() * b.y
+                    + v[2].world.truncate() * b.z;
+                let n = v[0].normal_world * b.x + v[1].normal_world * b.y + v[2].normal_world * b.z;
+                let object = &self.scene.objects[prim.object as usize];
+                Some(shade::shade(
+                    p,
+                    n,
+                    self.scene.camera.eye,
+                    self.color_of(t, b),
+                    &self.scene.lights,
+                    &object.material,
+                    self.settings.reflection,
+                ))
+            }
+        }
     }
 
     /// Resolves window pixel `(x, y)`, whose image index is `i`.
@@ -321,6 +490,7 @@ impl ResolveContext<'_> {
         let depths = &self.samples.depth[i * s..(i + 1) * s];
         let background = self.settings.background;
         let mut out = ResolvedPixel {
+            terms: None,
             coverage: 0,
             depth: depths.iter().sum::<f32>() / s as f32,
             primitive: NONE,
@@ -360,7 +530,11 @@ impl ResolveContext<'_> {
             let count = tris.iter().filter(|&&u| u == t).count() as f32;
             let tri = &self.triangles[t as usize];
             let b = tri.original_bary(tri.lambda(centre), self.settings.perspective_correct);
-            sum += self.color_of(tri, b) * count;
+            let terms = self.terms_of(tri, b);
+            sum += terms.map_or_else(|| self.color_of(tri, b), |t| t.color()) * count;
+            if tri.primitive == owner.primitive && out.terms.is_none() {
+                out.terms = terms;
+            }
         }
         out.color = (sum / s as f32).to_array();
         out

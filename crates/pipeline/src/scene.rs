@@ -474,6 +474,10 @@ pub struct RenderSettings {
     pub depth_test: DepthTest,
     /// Interpolate attributes perspective-correctly (`false`: affine in screen space, for comparison).
     pub perspective_correct: bool,
+    /// Where lighting is evaluated (unlit: the surface colour as it is).
+    pub shading: crate::shade::Frequency,
+    /// The specular term: Phong or Blinn-Phong.
+    pub reflection: crate::shade::Reflection,
     /// The clear colour, linear RGB in `[0, 1]`.
     pub background: Vec3,
 }
@@ -487,6 +491,8 @@ impl Default for RenderSettings {
             cull: CullMode::None,
             depth_test: DepthTest::Less,
             perspective_correct: true,
+            shading: crate::shade::Frequency::Unlit,
+            reflection: crate::shade::Reflection::BlinnPhong,
             background: Vec3::new(0.08, 0.09, 0.11),
         }
     }

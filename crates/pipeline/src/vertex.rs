@@ -6,10 +6,11 @@
 //!   has `w_c ≤ 0`: its division means nothing, the clipper deals with it);
 //! - window `= viewport·(NDC, 1)`.
 
-use glam::{Mat4, Vec2, Vec3, Vec4};
+use glam::{Mat3, Mat4, Vec2, Vec3, Vec4};
 use serde::Serialize;
 
-use crate::scene::{ColorSource, Object};
+use crate::scene::{ColorSource, Light, Object};
+use crate::shade::{self, Frequency, Reflection, ShadeTerms};
 
 /// One vertex through every space, a row of the vertex table.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -34,6 +35,10 @@ pub struct VertexRecord {
     pub color: Vec3,
     /// Texture coordinates, when the mesh has them.
     pub uv: Option<Vec2>,
+    /// The unit normal in world coordinates, `N·n` with the normal matrix `N = (M⁻¹)ᵀ`.
+    pub normal_world: Vec3,
+    /// The lighting at this vertex (Gouraud shading only).
+    pub shade: Option<ShadeTerms>,
 }
 
 /// The matrices the vertex stage applies to one object.
@@ -49,15 +54,37 @@ pub struct VertexMatrices {
     pub viewport: Mat4,
 }
 
+/// What per-vertex (Gouraud) lighting needs.
+#[derive(Clone, Copy, Debug)]
+pub struct VertexLighting<'a> {
+    /// Where lighting is evaluated; only `Gouraud` lights vertices.
+    pub frequency: Frequency,
+    /// The specular term.
+    pub reflection: Reflection,
+    /// The lights.
+    pub lights: &'a [Light],
+    /// The eye position in world coordinates.
+    pub eye: Vec3,
+}
+
+/// The normal matrix `N = (M⁻¹)ᵀ` (upper 3×3): normals stay perpendicular to surfaces under
+/// non-uniform scaling.
+#[must_use]
+pub fn normal_matrix(model: &Mat4) -> Mat3 {
+    Mat3::from_mat4(*model).inverse().transpose()
+}
+
 /// Runs the vertex stage on every vertex of `object` (index `object_index` in the scene),
 /// appending one row per vertex to `out`.
 pub fn transform_object(
     object: &Object,
     object_index: u32,
     m: &VertexMatrices,
+    lighting: &VertexLighting<'_>,
     out: &mut Vec<VertexRecord>,
 ) {
     let mesh = &object.mesh;
+    let n_matrix = normal_matrix(&m.model);
     out.reserve(mesh.positions.len());
     for (i, &p) in mesh.positions.iter().enumerate() {
         let object_pos = p.extend(1.0);
@@ -71,6 +98,18 @@ pub fn transform_object(
             ColorSource::Vertex if !mesh.colors.is_empty() => mesh.colors[i],
             ColorSource::Vertex | ColorSource::Normal => (mesh.normals[i] + 1.0) / 2.0,
         };
+        let normal_world = (n_matrix * mesh.normals[i]).normalize_or_zero();
+        let shade = (lighting.frequency == Frequency::Gouraud).then(|| {
+            shade::shade(
+                world.truncate(),
+                normal_world,
+                lighting.eye,
+                color,
+                lighting.lights,
+                &object.material,
+                lighting.reflection,
+            )
+        });
         out.push(VertexRecord {
             object: object_index,
             index: i as u32,
@@ -82,6 +121,8 @@ pub fn transform_object(
             window,
             color,
             uv: mesh.uvs.get(i).copied(),
+            normal_world,
+            shade,
         });
     }
 }

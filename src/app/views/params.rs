@@ -4,6 +4,7 @@
 use egui::{DragValue, RichText, Slider, Ui};
 use glam::Vec3;
 use pipeline::scene::{CullMode, DepthTest, Projection, Samples};
+use pipeline::shade::{Frequency, Reflection};
 
 use crate::app::i18n::Lang;
 use crate::app::session::{Command, Session};
@@ -233,9 +234,36 @@ fn render(ui: &mut Ui, s: &mut pipeline::scene::RenderSettings, lang: Lang) {
                 }
             });
     });
+    shading(ui, s, lang);
     ui.checkbox(
         &mut s.perspective_correct,
         lang.tr("perspective-correct interpolation", "透视校正插值"),
     )
     .on_hover_text("b_i = (λ_i / w_i) / Σ_k (λ_k / w_k)");
+}
+
+fn shading(ui: &mut Ui, s: &mut pipeline::scene::RenderSettings, lang: Lang) {
+    ui.horizontal_wrapped(|ui| {
+        ui.label(lang.tr("shading", "着色频率"));
+        for (f, n) in [
+            (Frequency::Unlit, lang.tr("unlit", "无光照")),
+            (Frequency::Flat, lang.tr("flat", "平面")),
+            (Frequency::Gouraud, "Gouraud"),
+            (Frequency::Phong, "Phong"),
+        ] {
+            ui.selectable_value(&mut s.shading, f, n).on_hover_text(lang.tr(
+                "Flat: once per face. Gouraud: per vertex, colours interpolated. Phong: normals interpolated, lighting per pixel.",
+                "平面：每个面一次。Gouraud：按顶点计算，颜色插值。Phong：法向插值，按像素计算光照。",
+            ));
+        }
+    });
+    ui.horizontal_wrapped(|ui| {
+        ui.label(lang.tr("specular", "镜面项"));
+        ui.selectable_value(&mut s.reflection, Reflection::Phong, "Phong (r·v)^α");
+        ui.selectable_value(
+            &mut s.reflection,
+            Reflection::BlinnPhong,
+            "Blinn-Phong (n·h)^β",
+        );
+    });
 }

@@ -32,6 +32,12 @@ pub fn buffer_name(kind: BufferKind, l: Lang) -> &'static str {
             l.tr("Barycentrics (perspective-correct)", "重心坐标（透视校正）")
         }
         BufferKind::BaryAffine => l.tr("Barycentrics (affine)", "重心坐标（仿射）"),
+        BufferKind::Ambient => l.tr("Ambient term", "环境光项"),
+        BufferKind::Diffuse => l.tr("Diffuse term", "漫反射项"),
+        BufferKind::Specular => l.tr("Specular term", "镜面反射项"),
+        BufferKind::Normal => l.tr("Normal", "法向量"),
+        BufferKind::NDotL => "n·l",
+        BufferKind::NDotH => "n·h",
     }
 }
 
@@ -47,13 +53,19 @@ const MAX_SHAPES: usize = 20_000;
 
 impl PixelView {
     /// The toolbar: buffer, overlays, samples, zoom reset.
-    pub fn toolbar(&mut self, ui: &mut Ui, sel: &Selection, lang: Lang) -> Vec<Command> {
+    pub fn toolbar(
+        &mut self,
+        ui: &mut Ui,
+        sel: &Selection,
+        available: &[BufferKind],
+        lang: Lang,
+    ) -> Vec<Command> {
         let mut cmds = Vec::new();
         ui.horizontal_wrapped(|ui| {
             egui::ComboBox::new("buffer", lang.tr("buffer", "缓冲"))
                 .selected_text(buffer_name(sel.buffer, lang))
                 .show_ui(ui, |ui| {
-                    for kind in BufferKind::ALL {
+                    for kind in available.iter().copied() {
                         if ui
                             .selectable_label(sel.buffer == kind, buffer_name(kind, lang))
                             .on_hover_text(kind.mapping())

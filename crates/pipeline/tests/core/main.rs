@@ -3,5 +3,6 @@
 
 mod clip;
 mod raster;
+mod shade;
 mod support;
 mod transform;

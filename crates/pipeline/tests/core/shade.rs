@@ -1,0 +1,259 @@
+//! Lighting against the notes' formulas, computed by hand here.
+
+use glam::Vec3;
+use pipeline::mesh::BuiltinMesh;
+use pipeline::scene::{Camera, Light, Material, Object, Projection, RenderSettings, Scene};
+use pipeline::shade::{self, Frequency, Reflection, attenuation, spot_factor};
+
+use crate::support::render;
+
+fn material() -> Material {
+    Material {
+        ka: Vec3::splat(0.1),
+        kd: Vec3::splat(0.7),
+        ks: Vec3::splat(0.5),
+        shininess: 32.0,
+    }
+}
+
+fn close(a: f32, b: f32, tol: f32, what: &str) {
+    assert!((a - b).abs() <= tol, "{what}: {a} vs {b}");
+}
+
+#[test]
+fn one_point_each_term_by_hand() {
+    // p at the origin facing +z, eye at (0, 0, 5), a white point light at (0, 3, 4) (distance 5).
+    let lights = [
+        Light::Ambient {
+            intensity: Vec3::splat(0.2),
+        },
+        Light::Point {
+            position: Vec3::new(0.0, 3.0, 4.0),
+            intensity: Vec3::ONE,
+            attenuation: Vec3::X,
+        },
+    ];
+    let eye = Vec3::new(0.0, 0.0, 5.0);
+    let blinn = shade::shade(
+        Vec3::ZERO,
+        Vec3::Z,
+        eye,
+        Vec3::ONE,
+        &lights,
+        &material(),
+        Reflection::BlinnPhong,
+    );
+    // l = (0, 0.6, 0.8), n·l = 0.8; v = (0, 0, 1); h = (l + v)/|l + v| = (0, 0.6, 1.8)/√3.6.
+    close(blinn.ambient.x, 0.1 * 0.2, 1e-6, "k_a·I_a");
+    close(blinn.diffuse.x, 0.7 * 0.8, 1e-6, "k_d·I_d·(n·l)");
+    let n_dot_h = 1.8 / 3.6f32.sqrt();
+    close(blinn.n_dot_h, n_dot_h, 1e-6, "n·h");
+    close(
+        blinn.specular.x,
+        0.5 * n_dot_h.powf(32.0),
+        1e-6,
+        "k_s·(n·h)^β",
+    );
+    close(
+        blinn.color().y,
+        0.02 + 0.56 + 0.5 * n_dot_h.powf(32.0),
+        1e-5,
+        "sum",
+    );
+    // Phong: r = 2(n·l)n − l = (0, −0.6, 0.8), r·v = 0.8.
+    let phong = shade::shade(
+        Vec3::ZERO,
+        Vec3::Z,
+        eye,
+        Vec3::ONE,
+        &lights,
+        &material(),
+        Reflection::Phong,
+    );
+    close(phong.n_dot_h, 0.8, 1e-6, "r·v");
+    close(
+        phong.specular.x,
+        0.5 * 0.8f32.powf(32.0),
+        1e-7,
+        "k_s·(r·v)^α",
+    );
+    close(
+        phong.diffuse.x,
+        blinn.diffuse.x,
+        0.0,
+        "the diffuse term does not depend on the model",
+    );
+    // The surface colour multiplies k_a and k_d, not k_s.
+    let red = shade::shade(
+        Vec3::ZERO,
+        Vec3::Z,
+        eye,
+        Vec3::X,
+        &lights,
+        &material(),
+        Reflection::BlinnPhong,
+    );
+    assert_eq!(red.diffuse.y, 0.0);
+    close(
+        red.specular.y,
+        blinn.specular.y,
+        0.0,
+        "highlight keeps the light's colour",
+    );
+}
+
+#[test]
+fn a_light_behind_the_surface_gives_no_diffuse_and_no_highlight() {
+    let lights = [Light::Point {
+        position: Vec3::new(0.0, 0.0, -3.0),
+        intensity: Vec3::ONE,
+        attenuation: Vec3::X,
+    }];
+    let t = shade::shade(
+        Vec3::ZERO,
+        Vec3::Z,
+        Vec3::new(0.0, 0.0, 5.0),
+        Vec3::ONE,
+        &lights,
+        &material(),
+        Reflection::Phong,
+    );
+    assert_eq!(t.diffuse, Vec3::ZERO);
+    assert_eq!(t.specular, Vec3::ZERO);
+}
+
+#[test]
+fn attenuation_and_the_spot_cone_by_hand() {
+    // 1/(a + b·d + c·d²) with (1, 0.5, 0.25) at d = 2: 1/(1 + 1 + 1).
+    close(
+        attenuation(Vec3::new(1.0, 0.5, 0.25), 2.0),
+        1.0 / 3.0,
+        1e-7,
+        "1/(a+bd+cd²)",
+    );
+    // GAMES101's I/r²: (0, 0, 1) at r = 4 → 1/16.
+    close(attenuation(Vec3::Z, 4.0), 1.0 / 16.0, 1e-7, "I/r²");
+    // A spot pointing down −y with a 30° cone; l points from the surface to the light.
+    let axis = Vec3::NEG_Y;
+    let at = |deg: f32| {
+        let a = deg.to_radians();
+        // Direction from the light to the point, at `deg` from the axis; l is its opposite.
+        let to_point = Vec3::new(a.sin(), -a.cos(), 0.0);
+        spot_factor(-to_point, axis, 30.0, 4.0)
+    };
+    close(at(0.0), 1.0, 1e-6, "on the axis");
+    close(
+        at(20.0),
+        20f32.to_radians().cos().powf(4.0),
+        1e-6,
+        "inside: cos^e φ",
+    );
+    assert_eq!(at(40.0), 0.0, "outside the cone");
+    // Through shade(): a point light with the same geometry, distance 2, attenuation I/r².
+    let light = Light::Spot {
+        position: Vec3::new(0.0, 2.0, 0.0),
+        direction: axis,
+        cutoff_deg: 30.0,
+        exponent: 4.0,
+        intensity: Vec3::ONE,
+        attenuation: Vec3::Z,
+    };
+    let t = shade::shade(
+        Vec3::ZERO,
+        Vec3::Y,
+        Vec3::new(0.0, 5.0, 0.0),
+        Vec3::ONE,
+        &[light],
+        &material(),
+        Reflection::BlinnPhong,
+    );
+    close(
+        t.diffuse.x,
+        0.7 * 1.0 / 4.0,
+        1e-6,
+        "k_d·I/r²·(n·l) on the axis",
+    );
+}
+
+/// A sphere seen head-on, lit by a distant light from the upper right front.
+fn lit_sphere(frequency: Frequency) -> pipeline::capture::FrameCapture {
+    let mut sphere = Object::new(
+        "sphere",
+        BuiltinMesh::UvSphere {
+            segments: 96,
+            rings: 48,
+        }
+        .build(),
+    );
+    sphere.color = pipeline::scene::ColorSource::Uniform(Vec3::ONE);
+    sphere.material = material();
+    let scene = Scene {
+        objects: vec![sphere],
+        camera: Camera {
+            eye: Vec3::new(0.0, 0.0, 4.0),
+            at: Vec3::ZERO,
+            up: Vec3::Y,
+        },
+        projection: Projection::Perspective {
+            fovy_deg: 40.0,
+            aspect: None,
+            near: 0.5,
+            far: 20.0,
+        },
+        lights: vec![
+            Light::Ambient {
+                intensity: Vec3::splat(0.3),
+            },
+            Light::Directional {
+                direction: -Vec3::new(1.0, 1.0, 1.0),
+                intensity: Vec3::ONE,
+            },
+        ],
+    };
+    let settings = RenderSettings {
+        width: 101,
+        height: 101,
+        shading: frequency,
+        ..RenderSettings::default()
+    };
+    render(&scene, &settings)
+}
+
+#[test]
+fn the_centre_pixel_of_a_lit_sphere_by_hand() {
+    // The centre pixel sees the point (0, 0, 1) of the unit sphere, normal (0, 0, 1), v = (0, 0, 1).
+    // l = (1, 1, 1)/√3: n·l = 1/√3; h = (l + v)/|l + v|.
+    let l = Vec3::ONE.normalize();
+    let h = (l + Vec3::Z).normalize();
+    let expect_diffuse = 0.7 * l.z;
+    let expect_specular = 0.5 * h.z.powf(32.0);
+    for (frequency, tol) in [(Frequency::Phong, 0.01), (Frequency::Gouraud, 0.03)] {
+        let c = lit_sphere(frequency);
+        let i = 50 * 101 + 50;
+        let sh = c.pixels.shading.as_ref().expect("lighting buffers");
+        close(sh.ambient[i][0], 0.1 * 0.3, 1e-5, "ambient");
+        close(sh.diffuse[i][0], expect_diffuse, tol, "diffuse");
+        close(sh.specular[i][0], expect_specular, tol, "specular");
+        close(sh.n_dot_l[i], l.z, tol, "n·l");
+        close(
+            c.pixels.color[i][1],
+            0.03 + expect_diffuse + expect_specular,
+            2.0 * tol,
+            "colour",
+        );
+    }
+    // Flat shading: every pixel of one face has one colour.
+    let c = lit_sphere(Frequency::Flat);
+    let i = 50 * 101 + 50;
+    let prim = c.pixels.primitive[i];
+    let same: Vec<usize> = (0..c.pixels.primitive.len())
+        .filter(|&j| c.pixels.primitive[j] == prim)
+        .collect();
+    assert!(same.len() > 1);
+    for j in same {
+        assert_eq!(
+            c.pixels.color[j], c.pixels.color[i],
+            "flat: one colour per face"
+        );
+    }
+}
