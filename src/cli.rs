@@ -7,9 +7,11 @@ use std::str::FromStr;
 
 use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
-use pipeline::scene::{MAX_VIEWPORT_SIDE, Samples};
+use pipeline::capture::FrameCapture;
+use pipeline::scene::{MAX_VIEWPORT_SIDE, RenderSettings, Samples};
+use pipeline::shade::Frequency;
 
-use crate::export::{ExportOptions, export_capture};
+use crate::export::ExportOptions;
 use crate::lesson::{self, SceneSpec};
 
 /// pipelens — the graphics pipeline as a glass box.
@@ -49,6 +51,10 @@ pub enum Command {
         /// At most this many vertex rows and primitive records in capture.json.
         #[arg(long, default_value_t = 200_000)]
         max_records: usize,
+        /// Also write profile.csv, the intensity along the line X0,Y0,X1,Y1 (image pixels, y
+        /// down); with lighting on, for flat, Gouraud and Phong shading side by side.
+        #[arg(long, value_name = "X0,Y0,X1,Y1", value_parser = parse_line)]
+        profile: Option<[f32; 4]>,
     },
     /// Validate scene files and print every problem with file:line:column.
     Check {
@@ -65,6 +71,21 @@ pub enum Command {
         #[arg(long)]
         frames: Option<usize>,
     },
+}
+
+fn parse_line(s: &str) -> Result<[f32; 4], String> {
+    let v: Vec<f32> = s
+        .split(',')
+        .map(|p| {
+            p.trim()
+                .parse::<f32>()
+                .map_err(|_| format!("\"{p}\" is not a number"))
+        })
+        .collect::<Result<_, _>>()?;
+    match v.as_slice() {
+        [a, b, c, d] if v.iter().all(|x| x.is_finite()) => Ok([*a, *b, *c, *d]),
+        _ => Err(format!("expected four numbers X0,Y0,X1,Y1, got \"{s}\"")),
+    }
 }
 
 /// A viewport size `WIDTHxHEIGHT`.
@@ -134,8 +155,14 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             samples,
             zoom,
             max_records,
+            profile,
         }) => {
-            export(scene.as_deref(), &out, size, samples, zoom, max_records)?;
+            let opts = ExportOptions {
+                out,
+                overlay_zoom: zoom,
+                max_records,
+            };
+            export(scene.as_deref(), &opts, size, samples, profile)?;
             Ok(ExitCode::SUCCESS)
         }
         Some(Command::Check { paths }) => Ok(check(&paths)),
@@ -160,11 +187,10 @@ pub fn load(scene: Option<&Path>) -> Result<SceneSpec> {
 
 fn export(
     scene: Option<&Path>,
-    out: &Path,
+    opts: &ExportOptions,
     size: Option<Size>,
     samples: Option<u32>,
-    zoom: u32,
-    max_records: usize,
+    profile: Option<[f32; 4]>,
 ) -> Result<()> {
     let mut spec = load(scene)?;
     if let Some(s) = size {
@@ -176,13 +202,12 @@ fn export(
             .with_context(|| format!("--samples must be 1, 4, 8 or 16, got {n}"))?;
     }
     let capture = pipeline::render(&spec.scene, &spec.settings)?;
-    let opts = ExportOptions {
-        out: out.to_path_buf(),
-        overlay_zoom: zoom,
-        max_records,
-    };
+    let mut files = crate::export::encode_capture(&capture, opts)?;
+    if let Some(line) = profile {
+        files.push(profile_file(&spec, &capture, line)?);
+    }
     let mut stderr = std::io::stderr().lock();
-    let written = export_capture(&capture, &opts, &mut |done, all, name| {
+    let written = crate::export::write_files(&opts.out, &files, &mut |done, all, name| {
         let _ = write!(stderr, "\rwriting {done}/{all}: {name:<24}");
     })?;
     let _ = writeln!(stderr);
@@ -193,12 +218,42 @@ fn export(
         spec.settings.height,
         spec.settings.samples.count(),
         capture.primitives.len(),
-        out.display()
+        opts.out.display()
     );
     for p in &written {
         println!("  {}", p.display());
     }
     Ok(())
+}
+
+/// The profile along `line`: of the capture itself when unlit; of the flat, Gouraud and Phong
+/// renderings of the same scene when lit (the Mach band comparison).
+fn profile_file(
+    spec: &SceneSpec,
+    capture: &FrameCapture,
+    line: [f32; 4],
+) -> Result<crate::export::ExportFile> {
+    if spec.settings.shading == Frequency::Unlit {
+        return Ok(crate::export::profile_csv(line, &[("color", capture)]));
+    }
+    let modes = [
+        ("flat", Frequency::Flat),
+        ("gouraud", Frequency::Gouraud),
+        ("phong", Frequency::Phong),
+    ];
+    let captures = modes
+        .iter()
+        .map(|(_, f)| {
+            let settings = RenderSettings {
+                shading: *f,
+                ..spec.settings
+            };
+            pipeline::render(&spec.scene, &settings)
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let named: Vec<(&str, &FrameCapture)> =
+        modes.iter().map(|(n, _)| *n).zip(captures.iter()).collect();
+    Ok(crate::export::profile_csv(line, &named))
 }
 
 fn check(paths: &[PathBuf]) -> ExitCode {

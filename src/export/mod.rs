@@ -96,6 +96,48 @@ pub fn encode_capture(capture: &FrameCapture, opts: &ExportOptions) -> Result<Ve
     Ok(files)
 }
 
+/// `profile.csv`: the intensity profile along `line` (`[x0, y0, x1, y1]`, image pixels, y down)
+/// of each capture given, one column per capture (e.g. flat, Gouraud and Phong shading of the
+/// same scene, for the Mach band comparison).
+#[must_use]
+pub fn profile_csv(line: [f32; 4], captures: &[(&str, &FrameCapture)]) -> ExportFile {
+    let profiles: Vec<_> = captures
+        .iter()
+        .map(|(_, c)| c.profile([line[0], line[1]], [line[2], line[3]]))
+        .collect();
+    let mut text = String::from("t,x,y");
+    for (name, _) in captures {
+        text.push_str(&format!(",{name}_r,{name}_g,{name}_b,{name}_intensity"));
+    }
+    text.push('\n');
+    let rows = profiles.first().map_or(0, Vec::len);
+    for i in 0..rows {
+        let first = &profiles[0][i];
+        text.push_str(&format!("{:.5},{},{}", first.t, first.x, first.y));
+        for p in &profiles {
+            let s = &p[i];
+            text.push_str(&format!(
+                ",{:.6},{:.6},{:.6},{:.6}",
+                s.rgb[0], s.rgb[1], s.rgb[2], s.intensity
+            ));
+        }
+        text.push('\n');
+    }
+    let names: Vec<&str> = captures.iter().map(|(n, _)| *n).collect();
+    ExportFile {
+        name: "profile.csv".into(),
+        description: format!(
+            "intensity profile from ({}, {}) to ({}, {}): colour and Rec. 709 luminance for {}",
+            line[0],
+            line[1],
+            line[2],
+            line[3],
+            names.join(", ")
+        ),
+        bytes: text.into_bytes(),
+    }
+}
+
 fn png_rgba(img: &image::RgbaImage) -> Result<Vec<u8>> {
     let mut bytes = Vec::new();
     PngEncoder::new(&mut bytes)

@@ -220,3 +220,34 @@ fn bench_runs_and_prints_every_stage() {
         assert!(t.contains(col), "{col} missing from\n{t}");
     }
 }
+
+#[test]
+fn a_profile_compares_the_three_shading_frequencies() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("p");
+    let o = pipelens(
+        dir.path(),
+        &[
+            "export",
+            "--out",
+            out.to_str().expect("utf-8"),
+            "--size",
+            "160x100",
+            "--profile",
+            "0,60,159,60",
+        ],
+    );
+    assert!(o.status.success(), "{}", text(&o));
+    let csv = std::fs::read_to_string(out.join("profile.csv")).expect("profile.csv");
+    let mut lines = csv.lines();
+    let header = lines.next().expect("header");
+    assert!(
+        header.starts_with("t,x,y,flat_r")
+            && header.contains("gouraud_intensity")
+            && header.ends_with("phong_intensity")
+    );
+    assert_eq!(lines.count(), 160, "one row per pixel step");
+    let o = pipelens(dir.path(), &["export", "--out", "q", "--profile", "1,2,3"]);
+    assert!(!o.status.success());
+    assert!(text(&o).contains("expected four numbers"), "{}", text(&o));
+}

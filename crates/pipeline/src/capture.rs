@@ -251,6 +251,21 @@ pub struct FragmentRecord {
     pub visible: bool,
 }
 
+/// One sample of an intensity profile along a line of pixels.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct ProfileSample {
+    /// Position along the line, 0 at its start, 1 at its end.
+    pub t: f32,
+    /// Image column.
+    pub x: u32,
+    /// Image row (0 at the top).
+    pub y: u32,
+    /// The final colour there.
+    pub rgb: [f32; 3],
+    /// Luminance `0.2126·R + 0.7152·G + 0.0722·B` (Rec. 709 weights).
+    pub intensity: f32,
+}
+
 /// A summary of one object, for the capture's JSON.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ObjectSummary {
@@ -517,6 +532,38 @@ impl FrameCapture {
             });
         }
         out
+    }
+
+    /// The intensity profile along the segment `from → to` (image pixel coordinates, y down):
+    /// one sample per pixel step, each the pixel the point falls in (points off the image are
+    /// skipped). This is what the Mach band comparison plots.
+    #[must_use]
+    pub fn profile(&self, from: [f32; 2], to: [f32; 2]) -> Vec<ProfileSample> {
+        let (dx, dy) = (to[0] - from[0], to[1] - from[1]);
+        let steps = dx.abs().max(dy.abs()).ceil().max(1.0) as u32;
+        (0..=steps)
+            .filter_map(|k| {
+                let t = k as f32 / steps as f32;
+                let (px, py) = (from[0] + dx * t, from[1] + dy * t);
+                if !(px >= 0.0
+                    && py >= 0.0
+                    && px < self.width() as f32
+                    && py < self.height() as f32)
+                {
+                    return None;
+                }
+                let (x, y) = (px as u32, py as u32);
+                let rgb = self.pixels.color[(y * self.width() + x) as usize];
+                let intensity = 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+                Some(ProfileSample {
+                    t,
+                    x,
+                    y,
+                    rgb,
+                    intensity,
+                })
+            })
+            .collect()
     }
 
     /// The centre of window pixel `(x, y)` in fixed point.

@@ -257,3 +257,47 @@ fn the_centre_pixel_of_a_lit_sphere_by_hand() {
         );
     }
 }
+
+#[test]
+fn profiles_show_the_mach_band_difference_between_frequencies() {
+    // Across the sphere's equator: flat shading is piecewise constant (steps between faces),
+    // Gouraud and Phong are continuous; Phong has the sharpest highlight.
+    let row = [0.0, 50.5];
+    let end = [100.0, 50.5];
+    let flat = lit_sphere(Frequency::Flat).profile(row, end);
+    let gouraud = lit_sphere(Frequency::Gouraud).profile(row, end);
+    let phong = lit_sphere(Frequency::Phong).profile(row, end);
+    assert_eq!(flat.len(), 101);
+    assert!(
+        flat.iter()
+            .zip(&phong)
+            .all(|(a, b)| a.x == b.x && a.y == b.y && a.y == 50)
+    );
+    let on_sphere = |p: &[pipeline::capture::ProfileSample]| -> Vec<f32> {
+        p.iter()
+            .filter(|s| s.intensity > 0.1)
+            .map(|s| s.intensity)
+            .collect()
+    };
+    let (f, g, ph) = (on_sphere(&flat), on_sphere(&gouraud), on_sphere(&phong));
+    let jumps = |v: &[f32]| v.windows(2).filter(|w| (w[1] - w[0]).abs() < 1e-6).count();
+    assert!(
+        jumps(&f) > f.len() / 3,
+        "flat: runs of equal intensity (one per face)"
+    );
+    assert!(
+        jumps(&g) < g.len() / 10,
+        "Gouraud: intensity changes from pixel to pixel"
+    );
+    let max = |v: &[f32]| v.iter().copied().fold(0.0f32, f32::max);
+    assert!(
+        max(&ph) >= max(&g) - 1e-3,
+        "Phong's highlight is at least Gouraud's"
+    );
+    // The profile reads the colour buffer: the middle sample is the centre pixel.
+    let mid = &phong[50];
+    let c = lit_sphere(Frequency::Phong);
+    assert_eq!(mid.rgb, c.pixels.color[50 * 101 + 50]);
+    let luma = 0.2126 * mid.rgb[0] + 0.7152 * mid.rgb[1] + 0.0722 * mid.rgb[2];
+    assert!((mid.intensity - luma).abs() < 1e-6);
+}
