@@ -117,10 +117,11 @@ fn with_suggestion(message: &str) -> String {
         return message.to_owned();
     };
     let candidates = expected.split('`').skip(1).step_by(2);
+    // Jaro-Winkler favours a shared beginning: `fov` → `fovy`, `shine` → `shininess`.
     let best = candidates
-        .map(|c| (strsim::damerau_levenshtein(unknown, c), c))
-        .filter(|(d, c)| *d <= 2.max(c.len() / 3))
-        .min_by_key(|(d, _)| *d);
+        .map(|c| (strsim::jaro_winkler(unknown, c), c))
+        .filter(|(sim, _)| *sim >= 0.8)
+        .max_by(|a, b| a.0.total_cmp(&b.0));
     match best {
         Some((_, c)) => format!("{message}; did you mean `{c}`?"),
         None => message.to_owned(),

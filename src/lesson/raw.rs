@@ -141,11 +141,11 @@ pub struct RawMeshTable {
     pub minor: Option<f64>,
 }
 
-/// A scale as written.
+/// One number for all three components, or three, as written (scales, intensities, coefficients).
 #[derive(Debug, Deserialize)]
 #[serde(
     untagged,
-    expecting = "a number or an array of three numbers [sx, sy, sz]"
+    expecting = "one number, or an array of three numbers such as [1.0, 0.5, 0.25]"
 )]
 pub enum RawScale {
     Uniform(f64),

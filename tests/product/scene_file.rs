@@ -235,4 +235,54 @@ fn the_complete_example_in_lessons_readme_is_valid() {
         .expect("the example is valid");
     assert_eq!(spec.scene.objects.len(), 2);
     assert_eq!(spec.settings.samples.count(), 4);
+    assert_eq!(spec.scene.lights.len(), 3);
+    assert_eq!(spec.settings.shading, pipeline::shade::Frequency::Phong);
+}
+
+#[test]
+fn lights_and_materials_are_checked() {
+    assert_error(
+        &format!("{OBJECT}[[scene.lights]]\nkind = \"laser\"\n"),
+        4,
+        8,
+        "\"ambient\", \"point\"",
+    );
+    assert_error(
+        &format!("{OBJECT}[[scene.lights]]\nkind = \"point\"\n"),
+        3,
+        1,
+        "needs `position`",
+    );
+    assert_error(
+        &format!(
+            "{OBJECT}[[scene.lights]]\nkind = \"spot\"\nposition = [0, 1, 0]\ndirection = [0, -1, 0]\ncutoff = 120\n"
+        ),
+        7,
+        10,
+        "between 0° and 90°",
+    );
+    assert_error(
+        &format!("{OBJECT}[[scene.lights]]\nkind = \"ambient\"\nintensity = -1\n"),
+        5,
+        13,
+        "must not be negative",
+    );
+    assert_error(
+        "[[scene.objects]]\nmesh = \"cube\"\nmaterial = { kd = [1, 2] }\n",
+        3,
+        19,
+        "one number, or an array of three numbers",
+    );
+    assert_error(
+        "[[scene.objects]]\nmesh = \"cube\"\nmaterial = { shine = 3 }\n",
+        3,
+        14,
+        "did you mean `shininess`?",
+    );
+    assert_error(
+        &format!("{OBJECT}[scene.render]\nshading = \"smooth\"\n"),
+        4,
+        11,
+        "\"unlit\", \"flat\", \"gouraud\", \"phong\"",
+    );
 }
