@@ -27,6 +27,20 @@ pub struct Cli {
     /// The app: the interface language, `en` or `zh`.
     #[arg(long, value_parser = ["en", "zh"])]
     pub lang: Option<String>,
+    /// The app: the stage to open on (model, world, view, clip, ndc, viewport, rasterization,
+    /// depth, shading, output).
+    #[arg(long, value_parser = parse_stage)]
+    pub stage: Option<crate::app::session::Stage>,
+    /// The app: settings to compare side by side in the pixel stages.
+    #[arg(long, value_parser = ["shading", "interpolation", "samples"])]
+    pub compare: Option<String>,
+}
+
+fn parse_stage(s: &str) -> Result<crate::app::session::Stage, String> {
+    crate::app::session::Stage::from_name(s).ok_or_else(|| {
+        "expected one of model, world, view, clip, ndc, viewport, rasterization, depth, shading, output"
+            .to_owned()
+    })
 }
 
 /// The subcommands.
@@ -145,7 +159,15 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                 Some(_) => crate::app::i18n::Lang::En,
                 None => crate::app::initial_lang(),
             };
-            crate::app::run(spec, source, lang)?;
+            let start = crate::app::Start {
+                lang,
+                stage: cli.stage,
+                compare: cli
+                    .compare
+                    .as_deref()
+                    .and_then(crate::app::session::Comparison::from_name),
+            };
+            crate::app::run(spec, source, start)?;
             Ok(ExitCode::SUCCESS)
         }
         Some(Command::Export {

@@ -16,7 +16,8 @@ use egui::{FontData, FontFamily, RichText};
 use self::i18n::Lang;
 use self::session::{Command, Session, Stage};
 use self::views::{
-    geometry::GeometryView, inspector, navigator, observer::ObserverView, params, pixels::PixelView,
+    compare::CompareView, geometry::GeometryView, inspector, navigator, observer::ObserverView,
+    params, pixels::PixelView,
 };
 use self::worker::RenderWorker;
 use crate::lesson::SceneSpec;
@@ -80,6 +81,7 @@ pub struct PipelensApp {
     pixel_view: PixelView,
     geometry_view: GeometryView,
     observer_view: ObserverView,
+    compare_view: CompareView,
     inspector_tab: inspector::Tab,
     classroom: bool,
     export_dir: String,
@@ -97,6 +99,7 @@ impl PipelensApp {
             pixel_view: PixelView::default(),
             geometry_view: GeometryView::default(),
             observer_view: ObserverView::default(),
+            compare_view: CompareView::default(),
             inspector_tab: inspector::Tab::default(),
             classroom: false,
             export_dir: "pipelens-export".to_owned(),
@@ -214,8 +217,38 @@ impl PipelensApp {
         } else {
             let c = self.pixel_view.toolbar(ui, &sel, &capture.buffers(), lang);
             self.commands.extend(c);
-            let c = self.pixel_view.ui(ui, &self.session, capture);
+            self.comparison_choice(ui);
+            let c = if sel.comparison.is_some() {
+                self.compare_view.ui(ui, &self.session)
+            } else {
+                self.pixel_view.ui(ui, &self.session, capture)
+            };
             self.commands.extend(c);
+        }
+    }
+
+    /// Side by side: none, or one of the comparisons.
+    fn comparison_choice(&mut self, ui: &mut egui::Ui) {
+        let lang = self.session.lang;
+        let current = self.session.selection.comparison;
+        let mut choice = current;
+        ui.horizontal(|ui| {
+            egui::ComboBox::new("comparison", lang.tr("side by side", "并排对比"))
+                .selected_text(current.map_or(lang.tr("off", "关"), |c| c.name(lang)))
+                .show_ui(ui, |ui| {
+                    ui.selectable_value(&mut choice, None, lang.tr("off", "关"));
+                    for c in session::Comparison::ALL {
+                        ui.selectable_value(&mut choice, Some(c), c.name(lang));
+                    }
+                })
+                .response
+                .on_hover_text(lang.tr(
+                    "Render the scene with different settings and show them side by side, with an intensity profile.",
+                    "用不同设置渲染场景并并排显示，附亮度剖面曲线。",
+                ));
+        });
+        if choice != current {
+            self.commands.push(Command::SetComparison(choice));
         }
     }
 
@@ -396,11 +429,22 @@ impl eframe::App for PipelensApp {
     }
 }
 
+/// How the app starts: language, stage, comparison.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Start {
+    /// The interface language.
+    pub lang: Lang,
+    /// The stage shown first (World when `None`).
+    pub stage: Option<Stage>,
+    /// Settings compared side by side from the start.
+    pub compare: Option<session::Comparison>,
+}
+
 /// Opens the window on `spec` and runs until it is closed.
 ///
 /// # Errors
 /// When no window can be opened (no display, no OpenGL).
-pub fn run(spec: SceneSpec, source: String, lang: Lang) -> anyhow::Result<()> {
+pub fn run(spec: SceneSpec, source: String, start: Start) -> anyhow::Result<()> {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("pipelens")
@@ -415,7 +459,13 @@ pub fn run(spec: SceneSpec, source: String, lang: Lang) -> anyhow::Result<()> {
             let ctx = cc.egui_ctx.clone();
             let worker = RenderWorker::start(move || ctx.request_repaint()).ok();
             let mut session = Session::new(spec, &source, worker);
-            session.lang = lang;
+            session.lang = start.lang;
+            if let Some(stage) = start.stage {
+                session.apply(Command::SelectStage(stage));
+            }
+            if start.compare.is_some() {
+                session.apply(Command::SetComparison(start.compare));
+            }
             setup_context(&cc.egui_ctx);
             Ok(Box::new(PipelensApp::new(session)))
         }),

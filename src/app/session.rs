@@ -8,7 +8,8 @@ use glam::Vec3;
 use pipeline::StageTimes;
 use pipeline::capture::{BufferKind, FrameCapture};
 use pipeline::overlay::OverlayKind;
-use pipeline::scene::Camera;
+use pipeline::scene::{Camera, RenderSettings, Samples};
+use pipeline::shade::Frequency;
 
 use super::i18n::Lang;
 use super::worker::{Job, RenderWorker, Rendered};
@@ -40,6 +41,14 @@ pub enum Stage {
 }
 
 impl Stage {
+    /// The stage named (in English, any case), for the command line.
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|s| s.name(Lang::En).eq_ignore_ascii_case(name))
+    }
+
     /// Every stage, in order.
     pub const ALL: [Stage; 10] = [
         Self::Model,
@@ -177,6 +186,68 @@ pub enum Space {
     Window,
 }
 
+/// A comparison of settings side by side.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Comparison {
+    /// Flat | Gouraud | Phong shading: the Mach band comparison.
+    Shading,
+    /// Affine | perspective-correct interpolation.
+    Interpolation,
+    /// 1 | 4 samples per pixel.
+    Samples,
+}
+
+impl Comparison {
+    /// The comparison named `shading`, `interpolation` or `samples`, for the command line.
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "shading" => Some(Self::Shading),
+            "interpolation" => Some(Self::Interpolation),
+            "samples" => Some(Self::Samples),
+            _ => None,
+        }
+    }
+
+    /// Every comparison.
+    pub const ALL: [Comparison; 3] = [Self::Shading, Self::Interpolation, Self::Samples];
+
+    /// Its name.
+    #[must_use]
+    pub fn name(self, l: Lang) -> &'static str {
+        match self {
+            Self::Shading => l.tr("flat | Gouraud | Phong", "平面 | Gouraud | Phong"),
+            Self::Interpolation => l.tr("affine | perspective-correct", "仿射 | 透视校正"),
+            Self::Samples => l.tr("1× | 4× MSAA", "1× | 4× MSAA"),
+        }
+    }
+
+    /// The settings compared, each with its label, derived from `base`.
+    #[must_use]
+    pub fn variants(self, base: &RenderSettings) -> Vec<(String, RenderSettings)> {
+        let with = |label: &str, f: &dyn Fn(&mut RenderSettings)| {
+            let mut s = *base;
+            f(&mut s);
+            (label.to_owned(), s)
+        };
+        match self {
+            Self::Shading => vec![
+                with("flat", &|s| s.shading = Frequency::Flat),
+                with("Gouraud", &|s| s.shading = Frequency::Gouraud),
+                with("Phong", &|s| s.shading = Frequency::Phong),
+            ],
+            Self::Interpolation => vec![
+                with("affine", &|s| s.perspective_correct = false),
+                with("perspective-correct", &|s| s.perspective_correct = true),
+            ],
+            Self::Samples => vec![
+                with("1×", &|s| s.samples = Samples::X1),
+                with("4×", &|s| s.samples = Samples::X4),
+            ],
+        }
+    }
+}
+
 /// Where the observer's camera is: an orbit around the scene's centre.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Orbit {
@@ -227,6 +298,10 @@ pub struct Selection {
     pub pixel: Option<(u32, u32)>,
     /// Progress of the animated transition from the previous space (0 → 1).
     pub transition: f32,
+    /// Settings compared side by side in the pixel stages, if any.
+    pub comparison: Option<Comparison>,
+    /// The profile line `[x0, y0, x1, y1]` in image pixels (y down), if one is drawn.
+    pub profile: Option<[f32; 4]>,
 }
 
 impl Default for Selection {
@@ -240,6 +315,8 @@ impl Default for Selection {
             vertex: None,
             pixel: None,
             transition: 1.0,
+            comparison: None,
+            profile: None,
         }
     }
 }
@@ -273,6 +350,10 @@ pub enum Command {
     PlayTransition,
     /// Switch the language.
     SetLang(Lang),
+    /// Compare settings side by side (or stop).
+    SetComparison(Option<Comparison>),
+    /// Draw (or clear) the profile line.
+    SetProfile(Option<[f32; 4]>),
 }
 
 /// The state of the app.
@@ -285,6 +366,8 @@ pub struct Session {
     pub capture: Option<Arc<FrameCapture>>,
     /// The latest capture of the observer's camera.
     pub observer: Option<Arc<FrameCapture>>,
+    /// The captures of the compared settings, with their labels.
+    pub variants: Vec<(String, Arc<FrameCapture>)>,
     /// Stage times of the latest capture.
     pub times: Option<StageTimes>,
     /// Why the latest render failed, if it did (the last good capture stays on screen).
@@ -314,6 +397,7 @@ impl Session {
             source: source.to_owned(),
             capture: None,
             observer: None,
+            variants: Vec::new(),
             times: None,
             error: None,
             orbit,
@@ -340,6 +424,11 @@ impl Session {
             generation: self.generation,
             spec: self.spec.clone(),
             observer: self.orbit.camera(),
+            variants: self
+                .selection
+                .comparison
+                .map(|c| c.variants(&self.spec.settings))
+                .unwrap_or_default(),
         };
         match &self.worker {
             Some(w) => w.submit(job),
@@ -371,6 +460,7 @@ impl Session {
             Ok(r) => {
                 self.capture = Some(r.capture);
                 self.observer = r.observer;
+                self.variants = r.variants;
                 self.times = Some(r.times);
                 self.error = None;
                 if let (Some((x, y)), Some(c)) = (self.selection.pixel, &self.capture)
@@ -425,6 +515,21 @@ impl Session {
             }
             Command::PlayTransition => sel.transition = 0.0,
             Command::SetLang(l) => self.lang = l,
+            Command::SetComparison(c) => {
+                if sel.comparison != c {
+                    sel.comparison = c;
+                    if sel.profile.is_none() {
+                        // A first line to look at: across the middle row of the image.
+                        let (w, h) = (
+                            self.spec.settings.width as f32,
+                            self.spec.settings.height as f32,
+                        );
+                        sel.profile = Some([0.0, h / 2.0, w - 1.0, h / 2.0]);
+                    }
+                    self.request_render();
+                }
+            }
+            Command::SetProfile(p) => sel.profile = p,
         }
     }
 

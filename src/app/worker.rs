@@ -19,6 +19,8 @@ pub struct Job {
     pub spec: SceneSpec,
     /// The observer's camera (the same scene seen from outside).
     pub observer: Camera,
+    /// Settings to render as well, for a side-by-side comparison, with their labels.
+    pub variants: Vec<(String, RenderSettings)>,
 }
 
 /// What a job produced.
@@ -30,6 +32,8 @@ pub struct Rendered {
     pub times: StageTimes,
     /// The capture of the observer's camera, when it could be rendered.
     pub observer: Option<Arc<FrameCapture>>,
+    /// The compared captures, with their labels (those that could be rendered).
+    pub variants: Vec<(String, Arc<FrameCapture>)>,
 }
 
 /// A finished job.
@@ -49,10 +53,19 @@ impl Job {
             .map_err(|e| e.to_string())
             .map(|(capture, times)| {
                 let observer = render_observer(&self.spec, self.observer).map(Arc::new);
+                let variants = self
+                    .variants
+                    .iter()
+                    .filter_map(|(label, settings)| {
+                        let c = pipeline::render(&self.spec.scene, settings).ok()?;
+                        Some((label.clone(), Arc::new(c)))
+                    })
+                    .collect();
                 Rendered {
                     capture: Arc::new(capture),
                     times,
                     observer,
+                    variants,
                 }
             });
         Done {

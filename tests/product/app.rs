@@ -136,3 +136,45 @@ fn changing_a_parameter_renders_again() {
         Some(16)
     );
 }
+
+#[test]
+fn comparing_shading_frequencies_side_by_side_with_a_profile() {
+    let mut h = harness();
+    h.run();
+    h.get_by_label("Shading").click();
+    h.run();
+    h.get_by_label("side by side").click();
+    h.run();
+    h.get_by_label("flat | Gouraud | Phong").click();
+    h.run();
+    let labels: Vec<String> = h
+        .state()
+        .session
+        .variants
+        .iter()
+        .map(|(l, _)| l.clone())
+        .collect();
+    assert_eq!(labels, ["flat", "Gouraud", "Phong"]);
+    // Drag across the first image: a profile line appears and each variant has a curve.
+    let first = h.get_by_label("compared image: flat").rect();
+    let (a, b) = (
+        first.left_center() + egui::vec2(5.0, 10.0),
+        first.right_center() + egui::vec2(-5.0, 10.0),
+    );
+    h.drag_at(a);
+    h.run();
+    h.hover_at(b);
+    h.run();
+    h.drop_at(b);
+    h.run();
+    let line = h.state().session.selection.profile.expect("a profile line");
+    assert!(line[2] > line[0], "{line:?}");
+    let profiles: Vec<usize> = h
+        .state()
+        .session
+        .variants
+        .iter()
+        .map(|(_, c)| c.profile([line[0], line[1]], [line[2], line[3]]).len())
+        .collect();
+    assert!(profiles.iter().all(|&n| n > 10), "{profiles:?}");
+}
