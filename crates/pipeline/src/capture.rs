@@ -95,6 +95,21 @@ pub struct PixelBuffers {
     pub color: Vec<[f32; 3]>,
     /// The lighting terms of the owning fragment at the pixel centre, when lighting is on.
     pub shading: Option<ShadingBuffers>,
+    /// The texture lookup of the owning fragment, when an object is textured.
+    pub texturing: Option<TextureBuffers>,
+}
+
+/// Per-pixel texture lookups of the owning fragment, top image row first.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct TextureBuffers {
+    /// The texture coordinates at the pixel centre.
+    pub uv: Vec<[f32; 2]>,
+    /// The level of detail `λ = log₂ L + bias` (fractional, not clamped).
+    pub lod: Vec<f32>,
+    /// The level read: `k + blend` (trilinear blends levels k and k+1).
+    pub level: Vec<f32>,
+    /// The filtered texel colour.
+    pub texel: Vec<[f32; 3]>,
 }
 
 /// Per-pixel lighting terms of the owning fragment (see `shade`), top image row first.
@@ -143,11 +158,17 @@ pub enum BufferKind {
     NDotL,
     /// `max(n·h, 0)` (or `r·v`) of the key light as grey.
     NDotH,
+    /// Texture coordinates `(fract u, fract v)` as red and green.
+    Uv,
+    /// The mip level read, each level in its own colour (blended for trilinear).
+    MipLevel,
+    /// The filtered texel colour.
+    Texel,
 }
 
 impl BufferKind {
     /// Every 8-bit image kind, in the order of the stages.
-    pub const ALL: [BufferKind; 12] = [
+    pub const ALL: [BufferKind; 15] = [
         Self::Coverage,
         Self::PrimitiveId,
         Self::Depth,
@@ -156,6 +177,9 @@ impl BufferKind {
         Self::Normal,
         Self::NDotL,
         Self::NDotH,
+        Self::Uv,
+        Self::MipLevel,
+        Self::Texel,
         Self::Ambient,
         Self::Diffuse,
         Self::Specular,
@@ -176,6 +200,12 @@ impl BufferKind {
         )
     }
 
+    /// Whether the buffer holds a texture lookup (present only when an object is textured).
+    #[must_use]
+    pub fn is_texturing(self) -> bool {
+        matches!(self, Self::Uv | Self::MipLevel | Self::Texel)
+    }
+
     /// A file-name friendly name.
     #[must_use]
     pub fn name(self) -> &'static str {
@@ -192,6 +222,9 @@ impl BufferKind {
             Self::Normal => "normal",
             Self::NDotL => "n_dot_l",
             Self::NDotH => "n_dot_h",
+            Self::Uv => "uv",
+            Self::MipLevel => "mip_level",
+            Self::Texel => "texel",
         }
     }
 
@@ -224,6 +257,12 @@ impl BufferKind {
             Self::NDotH => {
                 "grey = 255·max(n·h, 0) (Blinn-Phong) or max(r·v, 0) (Phong); background black"
             }
+            Self::Uv => "RGB = 255·(fract u, fract v, 0); background black",
+            Self::MipLevel => {
+                "level k in colour k (0 white, 1 red, 2 orange, 3 yellow, 4 green, 5 cyan, 6 blue, \
+                 7+ violet), trilinear blends the two; background black"
+            }
+            Self::Texel => "RGB = round(255·filtered texel); background black",
         }
     }
 }
@@ -335,6 +374,26 @@ fn lighting_rgb(sh: &ShadingBuffers, kind: BufferKind, i: usize) -> [u8; 3] {
     }
 }
 
+/// The colour of a texturing buffer at pixel `i`.
+fn texturing_rgb(tb: &TextureBuffers, kind: BufferKind, i: usize) -> [u8; 3] {
+    match kind {
+        BufferKind::Uv => {
+            let [u, v] = tb.uv[i];
+            [to_u8(u.rem_euclid(1.0)), to_u8(v.rem_euclid(1.0)), 0]
+        }
+        BufferKind::MipLevel => {
+            let l = tb.level[i];
+            let k = l.floor().max(0.0) as u32;
+            crate::texture::level_color(k)
+                .lerp(crate::texture::level_color(k + 1), l.fract())
+                .to_array()
+                .map(to_u8)
+        }
+        BufferKind::Texel => tb.texel[i].map(to_u8),
+        _ => [0; 3],
+    }
+}
+
 impl FrameCapture {
     /// The buffers this capture holds (lighting buffers only when lighting was on).
     #[must_use]
@@ -342,6 +401,7 @@ impl FrameCapture {
         BufferKind::ALL
             .into_iter()
             .filter(|k| !k.is_lighting() || self.pixels.shading.is_some())
+            .filter(|k| !k.is_texturing() || self.pixels.texturing.is_some())
             .collect()
     }
 
@@ -393,6 +453,10 @@ impl FrameCapture {
                 BufferKind::PrimitiveId | BufferKind::BaryPerspective | BufferKind::BaryAffine => {
                     [0; 3]
                 }
+                k if k.is_texturing() => match (&px.texturing, covered) {
+                    (Some(tb), true) => texturing_rgb(tb, k, i),
+                    _ => [0; 3],
+                },
                 k => match (&px.shading, covered) {
                     (Some(sh), true) => lighting_rgb(sh, k, i),
                     _ => [0; 3],

@@ -13,6 +13,7 @@
 //! | [`clip`] | clipping in homogeneous clip space |
 //! | [`raster`] | edge functions, top-left rule, multisampling, depth test, barycentrics |
 //! | [`shade`] | Phong / Blinn-Phong terms, lights, attenuation, shading frequencies |
+//! | [`texture`] | samplers, mipmaps, level of detail, trilinear and anisotropic filtering |
 //! | [`capture`] | the record of a frame and its images |
 //! | [`overlay`] | 2-D shapes over the images |
 
@@ -24,6 +25,7 @@ pub mod raster;
 mod render;
 pub mod scene;
 pub mod shade;
+pub mod texture;
 pub mod transform;
 pub mod vertex;
 

@@ -5,17 +5,19 @@
 
 use std::time::{Duration, Instant};
 
-use glam::{Vec3, Vec4};
+use glam::{I64Vec2, Vec2, Vec3, Vec4};
 use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::capture::{
     Fate, FrameCapture, Matrices, ObjectSummary, PixelBuffers, PrimitiveRecord, ShadingBuffers,
+    TextureBuffers,
 };
 use crate::clip::{self, ClipOutcome, ClipVertex};
-use crate::raster::{NONE, RasterCounts, RasterTriangle, SampleBuffers, SetupRejection};
+use crate::raster::{NONE, ONE, RasterCounts, RasterTriangle, SampleBuffers, SetupRejection};
 use crate::scene::{RenderSettings, Scene};
 use crate::shade::{self, Frequency, ShadeTerms};
+use crate::texture::Lookup;
 use crate::transform::{self, NamedMatrix};
 use crate::vertex::{self, VertexMatrices, VertexRecord};
 
@@ -290,6 +292,7 @@ fn light_faces(
 /// Everything the resolve computes for one pixel.
 struct ResolvedPixel {
     terms: Option<ShadeTerms>,
+    texture: Option<(Vec2, Lookup)>,
     coverage: u8,
     depth: f32,
     primitive: u32,
@@ -307,6 +310,15 @@ struct RowOut<'a> {
     bary_affine: &'a mut [[f32; 3]],
     color: &'a mut [[f32; 3]],
     shading: Option<ShadingRow<'a>>,
+    texturing: Option<TextureRow<'a>>,
+}
+
+/// One image row of the texturing buffers.
+struct TextureRow<'a> {
+    uv: &'a mut [[f32; 2]],
+    lod: &'a mut [f32],
+    level: &'a mut [f32],
+    texel: &'a mut [[f32; 3]],
 }
 
 /// One image row of the lighting buffers.
@@ -327,6 +339,12 @@ impl RowOut<'_> {
         self.bary_perspective[x] = r.bary_perspective;
         self.bary_affine[x] = r.bary_affine;
         self.color[x] = r.color;
+        if let (Some(tr), Some((uv, l))) = (&mut self.texturing, &r.texture) {
+            tr.uv[x] = uv.to_array();
+            tr.lod[x] = l.lod;
+            tr.level[x] = l.level as f32 + l.level_blend;
+            tr.texel[x] = l.color.to_array();
+        }
         if let (Some(s), Some(t)) = (&mut self.shading, &r.terms) {
             s.ambient[x] = t.ambient.to_array();
             s.diffuse[x] = t.diffuse.to_array();
@@ -352,6 +370,10 @@ fn resolve(
     let (w, h) = (settings.width as usize, settings.height as usize);
     let n = w * h;
     let lit = settings.shading != Frequency::Unlit;
+    let textured = scene
+        .objects
+        .iter()
+        .any(|o| o.texture.is_some() && !o.mesh.uvs.is_empty());
     let mut px = PixelBuffers {
         coverage: vec![0; n],
         depth: vec![0.0; n],
@@ -367,6 +389,30 @@ fn resolve(
             n_dot_l: vec![0.0; n],
             n_dot_h: vec![0.0; n],
         }),
+        texturing: textured.then(|| TextureBuffers {
+            uv: vec![[0.0; 2]; n],
+            lod: vec![0.0; n],
+            level: vec![0.0; n],
+            texel: vec![[0.0; 3]; n],
+        }),
+    };
+    let mut texture_rows: Vec<Option<TextureRow<'_>>> = match &mut px.texturing {
+        Some(tb) => tb
+            .uv
+            .chunks_mut(w)
+            .zip(tb.lod.chunks_mut(w))
+            .zip(tb.level.chunks_mut(w))
+            .zip(tb.texel.chunks_mut(w))
+            .map(|(((uv, lod), level), texel)| {
+                Some(TextureRow {
+                    uv,
+                    lod,
+                    level,
+                    texel,
+                })
+            })
+            .collect(),
+        None => (0..h).map(|_| None).collect(),
     };
     let ctx = ResolveContext {
         scene,
@@ -408,11 +454,11 @@ fn resolve(
         .zip(px.bary_perspective.chunks_mut(w))
         .zip(px.bary_affine.chunks_mut(w))
         .zip(px.color.chunks_mut(w))
-        .zip(shading_rows.drain(..))
+        .zip(shading_rows.drain(..).zip(texture_rows.drain(..)))
         .map(
             |(
                 (((((coverage, depth), primitive), bary_perspective), bary_affine), color),
-                shading,
+                (shading, texturing),
             )| RowOut {
                 coverage,
                 depth,
@@ -421,6 +467,7 @@ fn resolve(
                 bary_affine,
                 color,
                 shading,
+                texturing,
             },
         )
         .collect();
@@ -451,10 +498,39 @@ impl ResolveContext<'_> {
         c[0] * b.x + c[1] * b.y + c[2] * b.z
     }
 
-    /// The lighting of triangle `t` at weights `b`, by the shading frequency: the face's own
-    /// terms (flat), the vertices' terms interpolated (Gouraud), or lighting evaluated here with
-    /// the interpolated position and normal (Phong). `None` when unlit.
-    fn terms_of(&self, t: &RasterTriangle, b: Vec3) -> Option<ShadeTerms> {
+    /// The texture lookup of triangle `t` at the pixel centre `centre`, when its object has a
+    /// texture and its mesh has uvs: `uv` interpolated like every attribute, and its screen
+    /// derivatives as the differences to the next pixel in x and in y (analytic: the same
+    /// triangle's interpolation evaluated there).
+    fn texture_lookup(&self, t: &RasterTriangle, centre: I64Vec2) -> Option<(Vec2, Lookup)> {
+        let prim = &self.primitives[t.primitive as usize];
+        let texture = self.scene.objects[prim.object as usize].texture.as_ref()?;
+        let uvs = prim.vertices.map(|r| self.vertices[r as usize].uv);
+        let [Some(a), Some(b), Some(c)] = uvs else {
+            return None;
+        };
+        let pc = self.settings.perspective_correct;
+        let uv_at = |p: I64Vec2| {
+            let w = t.original_bary(t.lambda(p), pc);
+            a * w.x + b * w.y + c * w.z
+        };
+        let uv = uv_at(centre);
+        let dx = uv_at(centre + I64Vec2::new(ONE, 0)) - uv;
+        let dy = uv_at(centre + I64Vec2::new(0, ONE)) - uv;
+        Some((uv, texture.sample(uv, dx, dy, &self.settings.sampler)))
+    }
+
+    /// The lighting of triangle `t` at weights `b` with surface colour `surface`, by the shading
+    /// frequency: the face's own terms (flat), the vertices' terms interpolated (Gouraud; a
+    /// texture then modulates the ambient and diffuse terms, as OpenGL's `GL_MODULATE` does), or
+    /// lighting evaluated here with the interpolated position and normal (Phong). `None` when unlit.
+    fn terms_of(
+        &self,
+        t: &RasterTriangle,
+        b: Vec3,
+        surface: Vec3,
+        textured: bool,
+    ) -> Option<ShadeTerms> {
         let prim = &self.primitives[t.primitive as usize];
         let v = prim.vertices.map(|r| &self.vertices[r as usize]);
         match self.settings.shading {
@@ -462,7 +538,12 @@ impl ResolveContext<'_> {
             Frequency::Flat => prim.flat,
             Frequency::Gouraud => {
                 let s = v.map(|v| v.shade.unwrap_or_default());
-                Some(ShadeTerms::blend([&s[0], &s[1], &s[2]], b))
+                let mut terms = ShadeTerms::blend([&s[0], &s[1], &s[2]], b);
+                if textured {
+                    terms.ambient *= surface;
+                    terms.diffuse *= surface;
+                }
+                Some(terms)
             }
             Frequency::Phong => {
                 let p = v[0].world.truncate() * b.x
@@ -474,7 +555,7 @@ impl ResolveContext<'_> {
                     p,
                     n,
                     self.scene.camera.eye,
-                    self.color_of(t, b),
+                    surface,
                     &self.scene.lights,
                     &object.material,
                     self.settings.reflection,
@@ -491,6 +572,7 @@ impl ResolveContext<'_> {
         let background = self.settings.background;
         let mut out = ResolvedPixel {
             terms: None,
+            texture: None,
             coverage: 0,
             depth: depths.iter().sum::<f32>() / s as f32,
             primitive: NONE,
@@ -530,10 +612,13 @@ impl ResolveContext<'_> {
             let count = tris.iter().filter(|&&u| u == t).count() as f32;
             let tri = &self.triangles[t as usize];
             let b = tri.original_bary(tri.lambda(centre), self.settings.perspective_correct);
-            let terms = self.terms_of(tri, b);
-            sum += terms.map_or_else(|| self.color_of(tri, b), |t| t.color()) * count;
-            if tri.primitive == owner.primitive && out.terms.is_none() {
+            let texel = self.texture_lookup(tri, centre);
+            let surface = texel.map_or_else(|| self.color_of(tri, b), |(_, l)| l.color);
+            let terms = self.terms_of(tri, b, surface, texel.is_some());
+            sum += terms.map_or(surface, |t| t.color()) * count;
+            if tri.primitive == owner.primitive && out.terms.is_none() && out.texture.is_none() {
                 out.terms = terms;
+                out.texture = texel;
             }
         }
         out.color = (sum / s as f32).to_array();

@@ -38,6 +38,8 @@ pub struct Object {
     pub color: ColorSource,
     /// Its reflection coefficients (used by lighting).
     pub material: Material,
+    /// Its texture: the surface colour where the mesh has texture coordinates.
+    pub texture: Option<Arc<crate::texture::Texture>>,
 }
 
 impl Object {
@@ -52,6 +54,7 @@ impl Object {
             scale: Vec3::ONE,
             color: ColorSource::Vertex,
             material: Material::default(),
+            texture: None,
         }
     }
 
@@ -478,6 +481,8 @@ pub struct RenderSettings {
     pub shading: crate::shade::Frequency,
     /// The specular term: Phong or Blinn-Phong.
     pub reflection: crate::shade::Reflection,
+    /// How textures are read.
+    pub sampler: crate::texture::Sampler,
     /// The clear colour, linear RGB in `[0, 1]`.
     pub background: Vec3,
 }
@@ -493,6 +498,7 @@ impl Default for RenderSettings {
             perspective_correct: true,
             shading: crate::shade::Frequency::Unlit,
             reflection: crate::shade::Reflection::BlinnPhong,
+            sampler: crate::texture::Sampler::default(),
             background: Vec3::new(0.08, 0.09, 0.11),
         }
     }

@@ -99,12 +99,18 @@ pub fn transform_object(
             ColorSource::Vertex | ColorSource::Normal => (mesh.normals[i] + 1.0) / 2.0,
         };
         let normal_world = (n_matrix * mesh.normals[i]).normalize_or_zero();
+        // A textured surface is lit white here; the texel modulates the result per pixel.
+        let lit_color = if object.texture.is_some() && !mesh.uvs.is_empty() {
+            Vec3::ONE
+        } else {
+            color
+        };
         let shade = (lighting.frequency == Frequency::Gouraud).then(|| {
             shade::shade(
                 world.truncate(),
                 normal_world,
                 lighting.eye,
-                color,
+                lit_color,
                 lighting.lights,
                 &object.material,
                 lighting.reflection,

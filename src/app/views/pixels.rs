@@ -38,6 +38,9 @@ pub fn buffer_name(kind: BufferKind, l: Lang) -> &'static str {
         BufferKind::Normal => l.tr("Normal", "法向量"),
         BufferKind::NDotL => "n·l",
         BufferKind::NDotH => "n·h",
+        BufferKind::Uv => l.tr("Texture coordinates (u, v)", "纹理坐标 (u, v)"),
+        BufferKind::MipLevel => l.tr("Mip level", "Mipmap 层级"),
+        BufferKind::Texel => l.tr("Texel colour", "纹素颜色"),
     }
 }
 

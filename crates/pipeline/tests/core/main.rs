@@ -5,4 +5,5 @@ mod clip;
 mod raster;
 mod shade;
 mod support;
+mod texture;
 mod transform;

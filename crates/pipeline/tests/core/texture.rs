@@ -1,0 +1,227 @@
+//! Texture sampling against values computed by hand.
+
+use glam::{Vec2, Vec3};
+use pipeline::mesh::Mesh;
+use pipeline::scene::{Camera, Object, Projection, RenderSettings, Scene};
+use pipeline::texture::{Filter, Level, Mipmap, Sampler, Texture, Wrap};
+
+use crate::support::render;
+
+fn grey(v: f32) -> Vec3 {
+    Vec3::splat(v)
+}
+
+#[test]
+fn bilinear_on_a_two_by_two_texture() {
+    // Texels (row 0 at the bottom): (0,0) = 0, (1,0) = 1, (0,1) = 2, (1,1) = 3.
+    let level = Level {
+        width: 2,
+        height: 2,
+        texels: vec![grey(0.0), grey(1.0), grey(2.0), grey(3.0)],
+    };
+    let at = |u: f32, v: f32| level.bilinear(Vec2::new(u, v), Wrap::Clamp).x;
+    // Texel centres are at (i + ½)/2: (0.25, 0.25) is exactly texel (0, 0).
+    assert_eq!(at(0.25, 0.25), 0.0);
+    assert_eq!(at(0.75, 0.75), 3.0);
+    // Half-way between texels: x = u·w − ½ = 0.5 → ½(0 + 1).
+    assert!((at(0.5, 0.25) - 0.5).abs() < 1e-6);
+    // The middle: the mean of all four.
+    assert!((at(0.5, 0.5) - 1.5).abs() < 1e-6);
+    // s = 0.3, t = 0.6 from texel (0, 0): (1−t)((1−s)·0 + s·1) + t((1−s)·2 + s·3).
+    let (s, t) = (0.3f32, 0.6f32);
+    let expect = (1.0 - t) * s + t * ((1.0 - s) * 2.0 + s * 3.0);
+    assert!((at((s + 0.5) / 2.0, (t + 0.5) / 2.0) - expect).abs() < 1e-5);
+    // Clamp keeps the edge texel; repeat wraps to the other side.
+    assert_eq!(at(0.0, 0.25), 0.0);
+    let wrapped = level.bilinear(Vec2::new(0.0, 0.25), Wrap::Repeat).x;
+    assert!(
+        (wrapped - 0.5).abs() < 1e-6,
+        "half of texel (1,0) and half of (0,0) across the seam"
+    );
+    // Nearest: the texel containing the point.
+    assert_eq!(level.nearest(Vec2::new(0.49, 0.51), Wrap::Clamp).x, 2.0);
+}
+
+#[test]
+fn each_mip_level_is_the_box_filter_of_the_one_before() {
+    let t = Texture::checkerboard(16, 4);
+    assert_eq!(t.levels.len(), 5, "16, 8, 4, 2, 1");
+    for k in 1..t.levels.len() {
+        let (fine, coarse) = (&t.levels[k - 1], &t.levels[k]);
+        assert_eq!(coarse.width, fine.width / 2);
+        for j in 0..coarse.height {
+            for i in 0..coarse.width {
+                let mut sum = Vec3::ZERO;
+                for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                    sum += fine.texels[((2 * j + dy) * fine.width + 2 * i + dx) as usize];
+                }
+                let got = coarse.texels[(j * coarse.width + i) as usize];
+                assert!(
+                    (got - sum / 4.0).length() < 1e-6,
+                    "level {k} texel ({i}, {j})"
+                );
+            }
+        }
+    }
+    // Level 2 is 4×4: one texel per square, the squares' own values.
+    assert_eq!(t.levels[2].texels[0], t.levels[0].texels[0]);
+    // The 1×1 level is the mean of everything: half light, half dark.
+    assert!((t.levels[4].texels[0].x - (0.95 + 0.1) / 2.0).abs() < 1e-6);
+    // Odd sizes: a 5×3 level goes to 2×1 with the last column in the last box.
+    let odd = Level {
+        width: 5,
+        height: 3,
+        texels: (0..15).map(|v| grey(v as f32)).collect(),
+    };
+    let next = odd.box_filtered();
+    assert_eq!((next.width, next.height), (2, 1));
+    // Box 0: columns 0–1, rows 0–2 (the odd row joins): values 0,1,5,6,10,11.
+    assert!((next.texels[0].x - (0.0 + 1.0 + 5.0 + 6.0 + 10.0 + 11.0) / 6.0).abs() < 1e-6);
+}
+
+/// A square [−1, 1]² facing the camera at distance `d`, tilted by `tilt` degrees about x,
+/// uv from (0, 0) to (1, 1), with a 256×256 texture; fovy 90°, a 65×65 window (odd, so that
+/// the centre pixel's centre is on the view axis).
+fn textured_quad(d: f32, tilt: f32, sampler: Sampler) -> pipeline::capture::FrameCapture {
+    let mesh = Mesh {
+        name: "quad".into(),
+        positions: vec![
+            Vec3::new(-1.0, -1.0, 0.0),
+            Vec3::new(1.0, -1.0, 0.0),
+            Vec3::new(1.0, 1.0, 0.0),
+            Vec3::new(-1.0, 1.0, 0.0),
+        ],
+        normals: vec![Vec3::Z; 4],
+        uvs: vec![
+            Vec2::new(0.0, 0.0),
+            Vec2::new(1.0, 0.0),
+            Vec2::new(1.0, 1.0),
+            Vec2::new(0.0, 1.0),
+        ],
+        colors: Vec::new(),
+        indices: vec![[0, 1, 2], [0, 2, 3]],
+    };
+    let mut quad = Object::new("quad", mesh);
+    quad.rotate_deg = Vec3::new(-tilt, 0.0, 0.0);
+    quad.texture = Some(std::sync::Arc::new(Texture::checkerboard(256, 16)));
+    let scene = Scene {
+        objects: vec![quad],
+        camera: Camera {
+            eye: Vec3::new(0.0, 0.0, d),
+            at: Vec3::ZERO,
+            up: Vec3::Y,
+        },
+        projection: Projection::Perspective {
+            fovy_deg: 90.0,
+            aspect: None,
+            near: 0.1,
+            far: 100.0,
+        },
+        lights: Vec::new(),
+    };
+    let settings = RenderSettings {
+        width: 65,
+        height: 65,
+        sampler,
+        ..RenderSettings::default()
+    };
+    render(&scene, &settings)
+}
+
+#[test]
+fn level_of_detail_is_log2_of_texels_per_pixel() {
+    // Facing the camera at distance d with fovy 90°, the view is 2d units high over 65 pixels;
+    // the texture has 256 texels over 2 units: L = 128 · 2d/65 texels a pixel, λ = log₂ L.
+    let texels_per_pixel = |d: f32| 128.0 * 2.0 * d / 65.0;
+    let centre = 32 * 65 + 32;
+    for d in [4.0, 1.0, 9.0] {
+        let c = textured_quad(d, 0.0, Sampler::default());
+        let tb = c.pixels.texturing.as_ref().expect("texturing buffers");
+        let expect = texels_per_pixel(d).log2();
+        assert!(
+            (tb.lod[centre] - expect).abs() < 0.01,
+            "d = {d}: λ = {} vs {expect}",
+            tb.lod[centre]
+        );
+        // Trilinear reads levels ⌊λ⌋ and ⌊λ⌋ + 1 with weight fract(λ).
+        assert!((tb.level[centre] - expect).abs() < 0.01);
+    }
+    // Tilted by θ about x (top away from the camera), the derivative is the difference to the
+    // next pixel up, as GPUs take it: the ray through screen height s (tan of its angle) hits
+    // the plane at t = s·d/(cos θ − s·sin θ) along it, so one pixel (s = 2/65) spans
+    // 128·t texels in v, while along x the centre row still spans texels_per_pixel(d).
+    let (theta, d, s1) = (70f32.to_radians(), 4.0f32, 2.0f32 / 65.0);
+    let along_y = 128.0 * s1 * d / (theta.cos() - s1 * theta.sin());
+    let along_x = texels_per_pixel(d);
+    let c = textured_quad(d, 70.0, Sampler::default());
+    let tb = c.pixels.texturing.as_ref().expect("texturing buffers");
+    assert!(
+        (tb.lod[centre] - along_y.log2()).abs() < 0.01,
+        "λ = {} vs {}",
+        tb.lod[centre],
+        along_y.log2()
+    );
+    // Anisotropic filtering: N = min(⌈major/minor⌉, max) taps along the major axis and
+    // λ = log₂(major/N).
+    let taps = (along_y / along_x).ceil();
+    assert_eq!(taps, 4.0);
+    let aniso = Sampler {
+        anisotropy: 16,
+        ..Sampler::default()
+    };
+    let c = textured_quad(d, 70.0, aniso);
+    let tb = c.pixels.texturing.as_ref().expect("texturing buffers");
+    let expect = (along_y / taps).log2();
+    assert!(
+        (tb.lod[centre] - expect).abs() < 0.01,
+        "λ = {} vs {expect}",
+        tb.lod[centre]
+    );
+    // At most `anisotropy` taps.
+    let two = Sampler {
+        anisotropy: 2,
+        ..Sampler::default()
+    };
+    let c = textured_quad(d, 70.0, two);
+    let tb = c.pixels.texturing.as_ref().expect("texturing buffers");
+    assert!((tb.lod[centre] - (along_y / 2.0).log2()).abs() < 0.01);
+    // A bias moves λ; without mipmaps level 0 is read whatever λ is.
+    let biased = Sampler {
+        lod_bias: 1.0,
+        mipmap: Mipmap::Nearest,
+        filter: Filter::Nearest,
+        ..Sampler::default()
+    };
+    let c = textured_quad(4.0, 0.0, biased);
+    let tb = c.pixels.texturing.as_ref().expect("texturing buffers");
+    let expect = texels_per_pixel(4.0).log2() + 1.0;
+    assert!((tb.lod[centre] - expect).abs() < 0.01 && tb.level[centre] == expect.round());
+    let none = Sampler {
+        mipmap: Mipmap::None,
+        ..Sampler::default()
+    };
+    let c = textured_quad(4.0, 0.0, none);
+    assert_eq!(
+        c.pixels.texturing.as_ref().map(|t| t.level[centre]),
+        Some(0.0)
+    );
+}
+
+#[test]
+fn the_texel_colour_is_the_surface_colour() {
+    // Magnified (d = 0.3: about 0.6 texels a pixel), nearest filtering: every pixel shows one of
+    // the checkerboard's two values.
+    let s = Sampler {
+        filter: Filter::Nearest,
+        mipmap: Mipmap::None,
+        ..Sampler::default()
+    };
+    let c = textured_quad(0.3, 0.0, s);
+    let tb = c.pixels.texturing.as_ref().expect("texturing buffers");
+    for (i, col) in c.pixels.color.iter().enumerate() {
+        if c.pixels.coverage[i] > 0 {
+            assert_eq!(*col, tb.texel[i], "unlit: the colour is the texel");
+            assert!(col[0] == 0.95 || col[0] == 0.1, "{col:?}");
+        }
+    }
+}
