@@ -356,46 +356,9 @@ impl RowOut<'_> {
     }
 }
 
-/// Resolves samples to pixels: coverage, mean depth, the owning primitive, barycentrics and
-/// colour at the pixel centre (once per pixel and triangle, as multisampling shades), and the
-/// lighting terms of the owning fragment. Rows are independent, so they are resolved in parallel.
-fn resolve(
-    scene: &Scene,
-    settings: &RenderSettings,
-    samples: &SampleBuffers,
-    triangles: &[RasterTriangle],
-    primitives: &[PrimitiveRecord],
-    vertices: &[VertexRecord],
-) -> PixelBuffers {
-    let (w, h) = (settings.width as usize, settings.height as usize);
-    let n = w * h;
-    let lit = settings.shading != Frequency::Unlit;
-    let textured = scene
-        .objects
-        .iter()
-        .any(|o| o.texture.is_some() && !o.mesh.uvs.is_empty());
-    let mut px = PixelBuffers {
-        coverage: vec![0; n],
-        depth: vec![0.0; n],
-        primitive: vec![NONE; n],
-        bary_perspective: vec![[0.0; 3]; n],
-        bary_affine: vec![[0.0; 3]; n],
-        color: vec![[0.0; 3]; n],
-        shading: lit.then(|| ShadingBuffers {
-            ambient: vec![[0.0; 3]; n],
-            diffuse: vec![[0.0; 3]; n],
-            specular: vec![[0.0; 3]; n],
-            normal: vec![[0.0; 3]; n],
-            n_dot_l: vec![0.0; n],
-            n_dot_h: vec![0.0; n],
-        }),
-        texturing: textured.then(|| TextureBuffers {
-            uv: vec![[0.0; 2]; n],
-            lod: vec![0.0; n],
-            level: vec![0.0; n],
-            texel: vec![[0.0; 3]; n],
-        }),
-    };
+/// Every per-pixel buffer cut into image rows, one [`RowOut`] a row, so that rows can be
+/// resolved in parallel.
+fn split_rows(px: &mut PixelBuffers, w: usize, h: usize) -> Vec<RowOut<'_>> {
     let mut texture_rows: Vec<Option<TextureRow<'_>>> = match &mut px.texturing {
         Some(tb) => tb
             .uv
@@ -413,14 +376,6 @@ fn resolve(
             })
             .collect(),
         None => (0..h).map(|_| None).collect(),
-    };
-    let ctx = ResolveContext {
-        scene,
-        settings,
-        samples,
-        triangles,
-        primitives,
-        vertices,
     };
     let mut shading_rows: Vec<Option<ShadingRow<'_>>> = match &mut px.shading {
         Some(sb) => sb
@@ -471,6 +426,58 @@ fn resolve(
             },
         )
         .collect();
+    rows
+}
+
+/// Resolves samples to pixels: coverage, mean depth, the owning primitive, barycentrics and
+/// colour at the pixel centre (once per pixel and triangle, as multisampling shades), and the
+/// lighting terms of the owning fragment. Rows are independent, so they are resolved in parallel.
+fn resolve(
+    scene: &Scene,
+    settings: &RenderSettings,
+    samples: &SampleBuffers,
+    triangles: &[RasterTriangle],
+    primitives: &[PrimitiveRecord],
+    vertices: &[VertexRecord],
+) -> PixelBuffers {
+    let (w, h) = (settings.width as usize, settings.height as usize);
+    let n = w * h;
+    let lit = settings.shading != Frequency::Unlit;
+    let textured = scene
+        .objects
+        .iter()
+        .any(|o| o.texture.is_some() && !o.mesh.uvs.is_empty());
+    let mut px = PixelBuffers {
+        coverage: vec![0; n],
+        depth: vec![0.0; n],
+        primitive: vec![NONE; n],
+        bary_perspective: vec![[0.0; 3]; n],
+        bary_affine: vec![[0.0; 3]; n],
+        color: vec![[0.0; 3]; n],
+        shading: lit.then(|| ShadingBuffers {
+            ambient: vec![[0.0; 3]; n],
+            diffuse: vec![[0.0; 3]; n],
+            specular: vec![[0.0; 3]; n],
+            normal: vec![[0.0; 3]; n],
+            n_dot_l: vec![0.0; n],
+            n_dot_h: vec![0.0; n],
+        }),
+        texturing: textured.then(|| TextureBuffers {
+            uv: vec![[0.0; 2]; n],
+            lod: vec![0.0; n],
+            level: vec![0.0; n],
+            texel: vec![[0.0; 3]; n],
+        }),
+    };
+    let ctx = ResolveContext {
+        scene,
+        settings,
+        samples,
+        triangles,
+        primitives,
+        vertices,
+    };
+    let rows = split_rows(&mut px, w, h);
     rows.into_par_iter().enumerate().for_each(|(row, mut out)| {
         let y = (h - 1 - row) as u32;
         for x in 0..w {

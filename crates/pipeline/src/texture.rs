@@ -274,7 +274,7 @@ impl Texture {
     pub fn checkerboard(size: u32, squares: u32) -> Self {
         let cell = (size / squares.max(1)).max(1);
         Self::from_fn("checkerboard", size, |i, j| {
-            if ((i / cell) + (j / cell)) % 2 == 0 {
+            if ((i / cell) + (j / cell)).is_multiple_of(2) {
                 Vec3::splat(0.95)
             } else {
                 Vec3::splat(0.1)
@@ -292,9 +292,9 @@ impl Texture {
                 (i as f32 + 0.5) / size as f32,
                 (j as f32 + 0.5) / size as f32,
             );
-            if i % line == 0 || j % line == 0 {
+            if i.is_multiple_of(line) || j.is_multiple_of(line) {
                 Vec3::ONE
-            } else if ((i / line) + (j / line)) % 2 == 0 {
+            } else if ((i / line) + (j / line)).is_multiple_of(2) {
                 Vec3::new(u, v, 0.35)
             } else {
                 Vec3::new(u, v, 0.35) * 0.7
