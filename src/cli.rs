@@ -28,17 +28,17 @@ pub struct Cli {
     #[arg(long, value_parser = ["en", "zh"])]
     pub lang: Option<String>,
     /// The app: the stage to open on (model, world, view, clip, ndc, viewport, rasterization,
-    /// depth, shading, output).
+    /// depth, shading, texturing, output).
     #[arg(long, value_parser = parse_stage)]
     pub stage: Option<crate::app::session::Stage>,
     /// The app: settings to compare side by side in the pixel stages.
-    #[arg(long, value_parser = ["shading", "interpolation", "samples"])]
+    #[arg(long, value_parser = ["shading", "interpolation", "samples", "filtering"])]
     pub compare: Option<String>,
 }
 
 fn parse_stage(s: &str) -> Result<crate::app::session::Stage, String> {
     crate::app::session::Stage::from_name(s).ok_or_else(|| {
-        "expected one of model, world, view, clip, ndc, viewport, rasterization, depth, shading, output"
+        "expected one of model, world, view, clip, ndc, viewport, rasterization, depth, shading, texturing, output"
             .to_owned()
     })
 }

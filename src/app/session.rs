@@ -10,6 +10,7 @@ use pipeline::capture::{BufferKind, FrameCapture};
 use pipeline::overlay::OverlayKind;
 use pipeline::scene::{Camera, RenderSettings, Samples};
 use pipeline::shade::Frequency;
+use pipeline::texture::{Filter, Mipmap, Sampler};
 
 use super::i18n::Lang;
 use super::worker::{Job, RenderWorker, Rendered};
@@ -36,6 +37,8 @@ pub enum Stage {
     Depth,
     /// Lighting: ambient, diffuse and specular terms, normals.
     Shading,
+    /// Texture lookups: uv, level of detail, texel colour.
+    Texturing,
     /// The final image.
     Output,
 }
@@ -50,7 +53,7 @@ impl Stage {
     }
 
     /// Every stage, in order.
-    pub const ALL: [Stage; 10] = [
+    pub const ALL: [Stage; 11] = [
         Self::Model,
         Self::World,
         Self::View,
@@ -60,6 +63,7 @@ impl Stage {
         Self::Raster,
         Self::Depth,
         Self::Shading,
+        Self::Texturing,
         Self::Output,
     ];
 
@@ -76,6 +80,7 @@ impl Stage {
             Self::Raster => l.tr("Rasterization", "光栅化"),
             Self::Depth => l.tr("Depth", "深度"),
             Self::Shading => l.tr("Shading", "着色"),
+            Self::Texturing => l.tr("Texturing", "纹理"),
             Self::Output => l.tr("Output", "输出"),
         }
     }
@@ -120,6 +125,10 @@ impl Stage {
                 "Lighting: I = k_a·I_a + f_att·(k_d·I_d·max(l·n, 0) + k_s·I_s·max(n·h, 0)^β), evaluated per face, per vertex or per pixel.",
                 "光照：I = k_a·I_a + f_att·(k_d·I_d·max(l·n, 0) + k_s·I_s·max(n·h, 0)^β)，按面、按顶点或按像素计算。",
             ),
+            Self::Texturing => l.tr(
+                "Texture lookups: uv interpolated, λ = log₂(texels per pixel) picks the mip level; nearest, bilinear, trilinear, anisotropic.",
+                "纹理查询：插值得到 uv，λ = log₂(每像素纹素数) 选择 mipmap 层级；最近邻、双线性、三线性、各向异性。",
+            ),
             Self::Output => l.tr(
                 "The final colour: each pixel the mean of its samples.",
                 "最终颜色：每个像素为其采样点的平均。",
@@ -137,7 +146,7 @@ impl Stage {
             Self::Clip => Some(Space::Clip),
             Self::Ndc => Some(Space::Ndc),
             Self::Screen => Some(Space::Window),
-            Self::Raster | Self::Depth | Self::Shading | Self::Output => None,
+            Self::Raster | Self::Depth | Self::Shading | Self::Texturing | Self::Output => None,
         }
     }
 
@@ -148,6 +157,7 @@ impl Stage {
             Self::Raster => BufferKind::BaryPerspective,
             Self::Depth => BufferKind::Depth,
             Self::Shading => BufferKind::Diffuse,
+            Self::Texturing => BufferKind::MipLevel,
             _ => BufferKind::Color,
         }
     }
@@ -195,6 +205,8 @@ pub enum Comparison {
     Interpolation,
     /// 1 | 4 samples per pixel.
     Samples,
+    /// Nearest | bilinear | trilinear | anisotropic texture filtering.
+    Filtering,
 }
 
 impl Comparison {
@@ -205,12 +217,18 @@ impl Comparison {
             "shading" => Some(Self::Shading),
             "interpolation" => Some(Self::Interpolation),
             "samples" => Some(Self::Samples),
+            "filtering" => Some(Self::Filtering),
             _ => None,
         }
     }
 
     /// Every comparison.
-    pub const ALL: [Comparison; 3] = [Self::Shading, Self::Interpolation, Self::Samples];
+    pub const ALL: [Comparison; 4] = [
+        Self::Shading,
+        Self::Interpolation,
+        Self::Samples,
+        Self::Filtering,
+    ];
 
     /// Its name.
     #[must_use]
@@ -219,6 +237,10 @@ impl Comparison {
             Self::Shading => l.tr("flat | Gouraud | Phong", "平面 | Gouraud | Phong"),
             Self::Interpolation => l.tr("affine | perspective-correct", "仿射 | 透视校正"),
             Self::Samples => l.tr("1× | 4× MSAA", "1× | 4× MSAA"),
+            Self::Filtering => l.tr(
+                "nearest | bilinear | trilinear | anisotropic",
+                "最近邻 | 双线性 | 三线性 | 各向异性",
+            ),
         }
     }
 
@@ -244,6 +266,27 @@ impl Comparison {
                 with("1×", &|s| s.samples = Samples::X1),
                 with("4×", &|s| s.samples = Samples::X4),
             ],
+            Self::Filtering => {
+                let sampler = |filter, mipmap, anisotropy| {
+                    move |s: &mut RenderSettings| {
+                        s.sampler = Sampler {
+                            filter,
+                            mipmap,
+                            anisotropy,
+                            ..s.sampler
+                        };
+                    }
+                };
+                vec![
+                    with("nearest", &sampler(Filter::Nearest, Mipmap::None, 1)),
+                    with("bilinear", &sampler(Filter::Bilinear, Mipmap::None, 1)),
+                    with("trilinear", &sampler(Filter::Bilinear, Mipmap::Linear, 1)),
+                    with(
+                        "anisotropic 16×",
+                        &sampler(Filter::Bilinear, Mipmap::Linear, 16),
+                    ),
+                ]
+            }
         }
     }
 }

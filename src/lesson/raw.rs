@@ -96,6 +96,11 @@ pub struct RawRender {
     pub perspective_correct: Option<bool>,
     pub shading: Option<Spanned<String>>,
     pub reflection: Option<Spanned<String>>,
+    pub filter: Option<Spanned<String>>,
+    pub mipmap: Option<Spanned<String>>,
+    pub wrap: Option<Spanned<String>>,
+    pub anisotropy: Option<Spanned<i64>>,
+    pub lod_bias: Option<Spanned<f64>>,
     pub background: Option<RawVec3>,
 }
 
@@ -114,6 +119,8 @@ pub struct RawObject {
     /// `"vertex"`, `"normal"` or `[r, g, b]`.
     pub color: Option<Spanned<RawColor>>,
     pub material: Option<Spanned<RawMaterial>>,
+    /// `"checkerboard"`, `"uv_grid"`, `"mip_levels"` or a path to a PNG or JPEG file.
+    pub texture: Option<Spanned<String>>,
 }
 
 /// A mesh as written.
@@ -139,6 +146,7 @@ pub struct RawMeshTable {
     pub divisions: Option<i64>,
     pub sides: Option<i64>,
     pub minor: Option<f64>,
+    pub repeat: Option<f64>,
 }
 
 /// One number for all three components, or three, as written (scales, intensities, coefficients).

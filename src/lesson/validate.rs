@@ -11,6 +11,7 @@ use pipeline::scene::{
     Material, Object, Projection, RenderSettings, Samples, Scene,
 };
 use pipeline::shade::{Frequency, Reflection};
+use pipeline::texture::{Filter, Mipmap, Texture, Wrap};
 use toml::Spanned;
 
 use super::raw::{
@@ -193,6 +194,7 @@ fn render(c: &mut Checker<'_>, r: &Spanned<RawRender>) -> RenderSettings {
         );
     }
     render_modes(c, raw, &mut s);
+    sampler(c, raw, &mut s);
     if let Some(v) = &raw.background
         && let Some(bg) = c.vec3("background", v)
     {
@@ -415,6 +417,18 @@ fn object(
     if let Some(m) = &raw.material {
         object.material = material(c, m);
     }
+    if let Some(t) = &raw.texture {
+        object.texture = texture(c, t, base).map(std::sync::Arc::new);
+        if object.texture.is_some() && object.mesh.uvs.is_empty() {
+            c.error(
+                t.span(),
+                format!(
+                    "the mesh `{}` has no texture coordinates to map a texture with",
+                    object.mesh.name
+                ),
+            );
+        }
+    }
     if let Some(col) = &raw.color {
         object.color = match col.get_ref() {
             RawColor::Named(n) if n == "vertex" => ColorSource::Vertex,
@@ -454,6 +468,7 @@ fn mesh(c: &mut Checker<'_>, m: &Spanned<RawMesh>, base: &Path) -> Option<Mesh> 
             divisions: None,
             sides: None,
             minor: None,
+            repeat: None,
         },
         RawMesh::Table(t) => t,
     };
@@ -497,6 +512,17 @@ fn builtin(
             0.35
         }
     };
+    let repeat = match t.repeat {
+        None => 1.0,
+        Some(v) if v > 0.0 && v <= 1e4 => v as f32,
+        Some(v) => {
+            c.error(
+                span.clone(),
+                format!("`repeat` of a plane must be between 0 (exclusive) and 10000, got {v}"),
+            );
+            1.0
+        }
+    };
     let mut count = |key: &str, v: Option<i64>, default: u32, min: u32, max: u32| -> u32 {
         match v {
             None => default,
@@ -520,6 +546,7 @@ fn builtin(
         },
         "plane" => BuiltinMesh::Plane {
             divisions: count("divisions", t.divisions, 1, 1, 4096),
+            repeat,
         },
         "cylinder" => BuiltinMesh::Cylinder {
             segments: count("segments", t.segments, 32, 3, 4096),
@@ -660,5 +687,77 @@ fn light(c: &mut Checker<'_>, l: &Spanned<RawLight>) -> Option<Light> {
             );
             None
         }
+    }
+}
+
+/// A built-in texture by name, or an image file relative to the scene file.
+fn texture(c: &mut Checker<'_>, t: &Spanned<String>, base: &Path) -> Option<Texture> {
+    match t.get_ref().as_str() {
+        "checkerboard" => Some(Texture::checkerboard(512, 16)),
+        "uv_grid" => Some(Texture::uv_grid(512)),
+        "mip_levels" => Some(Texture::mip_levels(512)),
+        path => match Texture::load(&base.join(path)) {
+            Ok(t) => Some(t),
+            Err(e) => {
+                c.error(
+                    t.span(),
+                    format!("{e} (a texture is \"checkerboard\", \"uv_grid\", \"mip_levels\" or a PNG/JPEG path)"),
+                );
+                None
+            }
+        },
+    }
+}
+
+/// `filter`, `mipmap`, `wrap`, `anisotropy` and `lod_bias` of `[scene.render]`.
+fn sampler(c: &mut Checker<'_>, raw: &RawRender, s: &mut RenderSettings) {
+    let smp = &mut s.sampler;
+    if let Some(v) = &raw.filter {
+        smp.filter = c
+            .choice(
+                "filter",
+                v,
+                &[("nearest", Filter::Nearest), ("bilinear", Filter::Bilinear)],
+            )
+            .unwrap_or_default();
+    }
+    if let Some(v) = &raw.mipmap {
+        smp.mipmap = c
+            .choice(
+                "mipmap",
+                v,
+                &[
+                    ("none", Mipmap::None),
+                    ("nearest", Mipmap::Nearest),
+                    ("linear", Mipmap::Linear),
+                ],
+            )
+            .unwrap_or_default();
+    }
+    if let Some(v) = &raw.wrap {
+        smp.wrap = c
+            .choice(
+                "wrap",
+                v,
+                &[("repeat", Wrap::Repeat), ("clamp", Wrap::Clamp)],
+            )
+            .unwrap_or_default();
+    }
+    if let Some(v) = &raw.anisotropy {
+        match u32::try_from(*v.get_ref()) {
+            Ok(n) if (1..=16).contains(&n) => smp.anisotropy = n,
+            _ => c.error(
+                v.span(),
+                format!(
+                    "`anisotropy` must be from 1 (off) to 16, got {}",
+                    v.get_ref()
+                ),
+            ),
+        }
+    }
+    if let Some(v) = &raw.lod_bias
+        && let Some(b) = c.finite("lod_bias", v)
+    {
+        smp.lod_bias = b;
     }
 }

@@ -248,10 +248,13 @@ pub enum BuiltinMesh {
         /// Divisions from the south to the north pole (≥ 2).
         rings: u32,
     },
-    /// A square `[−1, 1]²` in the plane y = 0, facing +y, `divisions` quads a side.
+    /// A square `[−1, 1]²` in the plane y = 0, facing +y, `divisions` quads a side, its
+    /// texture coordinates running from 0 to `repeat` (so a texture tiles `repeat` times).
     Plane {
         /// Quads along each side (≥ 1).
         divisions: u32,
+        /// How many times a texture repeats across it (> 0).
+        repeat: f32,
     },
     /// A closed cylinder of radius 1 along y from −1 to 1.
     Cylinder {
@@ -289,7 +292,7 @@ impl BuiltinMesh {
             Self::TwoTriangles => two_triangles(),
             Self::Cube => cube(),
             Self::UvSphere { segments, rings } => uv_sphere(segments.max(3), rings.max(2)),
-            Self::Plane { divisions } => plane(divisions.max(1)),
+            Self::Plane { divisions, repeat } => plane(divisions.max(1), repeat),
             Self::Cylinder { segments } => cylinder(segments.max(3)),
             Self::Torus {
                 minor,
@@ -429,7 +432,7 @@ fn uv_sphere(segments: u32, rings: u32) -> Mesh {
     mesh
 }
 
-fn plane(divisions: u32) -> Mesh {
+fn plane(divisions: u32, repeat: f32) -> Mesh {
     let mut mesh = grid_mesh(
         format!("plane({divisions})"),
         divisions,
@@ -438,6 +441,9 @@ fn plane(divisions: u32) -> Mesh {
         |u, v| (Vec3::new(2.0 * u - 1.0, 0.0, 1.0 - 2.0 * v), Vec3::Y),
     );
     mesh.colors = mesh.uvs.iter().map(|t| Vec3::new(t.x, t.y, 0.5)).collect();
+    if repeat > 0.0 && repeat.is_finite() {
+        mesh.uvs.iter_mut().for_each(|t| *t *= repeat);
+    }
     mesh
 }
 

@@ -18,10 +18,11 @@ pub struct CompareView {
 }
 
 /// Colours of the compared settings' curves.
-const CURVES: [Color32; 3] = [
+const CURVES: [Color32; 4] = [
     Color32::from_rgb(255, 170, 60),
     Color32::from_rgb(90, 200, 255),
     Color32::from_rgb(150, 255, 120),
+    Color32::from_rgb(230, 120, 255),
 ];
 
 fn label(l: Lang, key: &str) -> String {
@@ -29,6 +30,10 @@ fn label(l: Lang, key: &str) -> String {
         "flat" => l.tr("flat", "平面").to_owned(),
         "affine" => l.tr("affine", "仿射").to_owned(),
         "perspective-correct" => l.tr("perspective-correct", "透视校正").to_owned(),
+        "nearest" => l.tr("nearest", "最近邻").to_owned(),
+        "bilinear" => l.tr("bilinear", "双线性").to_owned(),
+        "trilinear" => l.tr("trilinear", "三线性").to_owned(),
+        "anisotropic 16×" => l.tr("anisotropic 16×", "各向异性 16×").to_owned(),
         other => other.to_owned(),
     }
 }
@@ -85,7 +90,7 @@ impl CompareView {
                 egui::Align2::LEFT_TOP,
                 label(lang, name),
                 egui::FontId::proportional(16.0),
-                CURVES[i % 3],
+                CURVES[i % CURVES.len()],
             );
             painter.image(
                 texture.id(),
@@ -141,7 +146,7 @@ impl CompareView {
                         .collect();
                     plot.line(
                         Line::new(label(lang, name), points)
-                            .color(CURVES[i % 3])
+                            .color(CURVES[i % CURVES.len()])
                             .width(2.0),
                     );
                 }

@@ -235,6 +235,7 @@ fn render(ui: &mut Ui, s: &mut pipeline::scene::RenderSettings, lang: Lang) {
             });
     });
     shading(ui, s, lang);
+    texture_sampling(ui, s, lang);
     ui.checkbox(
         &mut s.perspective_correct,
         lang.tr("perspective-correct interpolation", "透视校正插值"),
@@ -266,4 +267,42 @@ fn shading(ui: &mut Ui, s: &mut pipeline::scene::RenderSettings, lang: Lang) {
             "Blinn-Phong (n·h)^β",
         );
     });
+}
+
+fn texture_sampling(ui: &mut Ui, s: &mut pipeline::scene::RenderSettings, lang: Lang) {
+    use pipeline::texture::{Filter, Mipmap};
+    let smp = &mut s.sampler;
+    ui.horizontal_wrapped(|ui| {
+        ui.label(lang.tr("texture filter", "纹理过滤"));
+        ui.selectable_value(
+            &mut smp.filter,
+            Filter::Nearest,
+            lang.tr("nearest", "最近邻"),
+        );
+        ui.selectable_value(
+            &mut smp.filter,
+            Filter::Bilinear,
+            lang.tr("bilinear", "双线性"),
+        );
+    });
+    ui.horizontal_wrapped(|ui| {
+        ui.label("mipmap");
+        for (m, n) in [
+            (Mipmap::None, lang.tr("none", "无")),
+            (Mipmap::Nearest, lang.tr("nearest level", "最近层")),
+            (Mipmap::Linear, lang.tr("trilinear", "三线性")),
+        ] {
+            ui.selectable_value(&mut smp.mipmap, m, n).on_hover_text(lang.tr(
+                "λ = log₂ max(|∂(uw, vh)/∂x|, |∂(uw, vh)/∂y|): the level whose texels are the size of a pixel.",
+                "λ = log₂ max(|∂(uw, vh)/∂x|, |∂(uw, vh)/∂y|)：纹素大小与像素相当的层级。",
+            ));
+        }
+    });
+    ui.add(Slider::new(&mut smp.anisotropy, 1..=16).text(lang.tr("anisotropy", "各向异性")))
+        .on_hover_text(lang.tr(
+            "Up to N samples along the footprint's major axis; λ = log₂(major/N).",
+            "沿足迹长轴最多取 N 个样本；λ = log₂(长轴/N)。",
+        ));
+    ui.add(Slider::new(&mut smp.lod_bias, -4.0..=4.0).text(lang.tr("mip bias", "mip 偏移")))
+        .on_hover_text("λ + bias");
 }
