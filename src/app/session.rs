@@ -203,7 +203,7 @@ pub enum Comparison {
     Shading,
     /// Affine | perspective-correct interpolation.
     Interpolation,
-    /// 1 | 4 samples per pixel.
+    /// 1 sample | 4 samples shaded once per pixel (MSAA) | 4 samples each shaded (SSAA).
     Samples,
     /// Nearest | bilinear | trilinear | anisotropic texture filtering.
     Filtering,
@@ -236,7 +236,7 @@ impl Comparison {
         match self {
             Self::Shading => l.tr("flat | Gouraud | Phong", "平面 | Gouraud | Phong"),
             Self::Interpolation => l.tr("affine | perspective-correct", "仿射 | 透视校正"),
-            Self::Samples => l.tr("1× | 4× MSAA", "1× | 4× MSAA"),
+            Self::Samples => l.tr("1× | 4× MSAA | 4× SSAA", "1× | 4× MSAA | 4× SSAA"),
             Self::Filtering => l.tr(
                 "nearest | bilinear | trilinear | anisotropic",
                 "最近邻 | 双线性 | 三线性 | 各向异性",
@@ -264,7 +264,14 @@ impl Comparison {
             ],
             Self::Samples => vec![
                 with("1×", &|s| s.samples = Samples::X1),
-                with("4×", &|s| s.samples = Samples::X4),
+                with("4× MSAA", &|s| {
+                    s.samples = Samples::X4;
+                    s.per_sample_shading = false;
+                }),
+                with("4× SSAA", &|s| {
+                    s.samples = Samples::X4;
+                    s.per_sample_shading = true;
+                }),
             ],
             Self::Filtering => {
                 let sampler = |filter, mipmap, anisotropy| {

@@ -101,6 +101,7 @@ pub struct RawRender {
     pub wrap: Option<Spanned<String>>,
     pub anisotropy: Option<Spanned<i64>>,
     pub lod_bias: Option<Spanned<f64>>,
+    pub per_sample_shading: Option<bool>,
     pub background: Option<RawVec3>,
 }
 

@@ -239,6 +239,9 @@ fn render_modes(c: &mut Checker<'_>, raw: &RawRender, s: &mut RenderSettings) {
     if let Some(b) = raw.perspective_correct {
         s.perspective_correct = b;
     }
+    if let Some(b) = raw.per_sample_shading {
+        s.per_sample_shading = b;
+    }
     if let Some(v) = &raw.shading {
         s.shading = c
             .choice(

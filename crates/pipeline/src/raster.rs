@@ -306,6 +306,12 @@ impl SampleBuffers {
         }
     }
 
+    /// The position of sample `s` within a pixel, from its bottom-left corner, in fixed point.
+    #[must_use]
+    pub fn offset(&self, s: usize) -> I64Vec2 {
+        self.offsets[s]
+    }
+
     /// The index of sample `s` of window pixel `(x, y)` (y up).
     #[must_use]
     #[inline]

@@ -571,6 +571,21 @@ impl ResolveContext<'_> {
         }
     }
 
+    /// The colour of triangle `t` at the fixed-point position `at`, with its lighting terms and
+    /// texture lookup: the surface colour is the texel (textured) or the interpolated vertex
+    /// colour, then lit by the shading frequency.
+    fn shade_at(
+        &self,
+        t: &RasterTriangle,
+        at: I64Vec2,
+    ) -> (Vec3, Option<ShadeTerms>, Option<(Vec2, Lookup)>) {
+        let b = t.original_bary(t.lambda(at), self.settings.perspective_correct);
+        let texel = self.texture_lookup(t, at);
+        let surface = texel.map_or_else(|| self.color_of(t, b), |(_, l)| l.color);
+        let terms = self.terms_of(t, b, surface, texel.is_some());
+        (terms.map_or(surface, |t| t.color()), terms, texel)
+    }
+
     /// Resolves window pixel `(x, y)`, whose image index is `i`.
     fn pixel(&self, x: u32, y: u32, i: usize) -> ResolvedPixel {
         let s = self.settings.samples.count();
@@ -610,19 +625,23 @@ impl ResolveContext<'_> {
         out.primitive = owner.primitive;
         out.bary_perspective = owner.original_bary(l, true).to_array();
         out.bary_affine = owner.original_bary(l, false).to_array();
-        // Colour: each distinct triangle once, at the centre, weighted by its samples.
+        // Colour. Multisampling: each distinct triangle once, at the centre, weighted by its
+        // samples. Supersampling: every covered sample shaded at its own position.
         let mut sum = background * (s - covered) as f32;
+        let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
         for (k, &t) in tris.iter().enumerate() {
-            if t == NONE || tris[..k].contains(&t) {
+            let per_sample = self.settings.per_sample_shading;
+            if t == NONE || (!per_sample && tris[..k].contains(&t)) {
                 continue;
             }
-            let count = tris.iter().filter(|&&u| u == t).count() as f32;
             let tri = &self.triangles[t as usize];
-            let b = tri.original_bary(tri.lambda(centre), self.settings.perspective_correct);
-            let texel = self.texture_lookup(tri, centre);
-            let surface = texel.map_or_else(|| self.color_of(tri, b), |(_, l)| l.color);
-            let terms = self.terms_of(tri, b, surface, texel.is_some());
-            sum += terms.map_or(surface, |t| t.color()) * count;
+            let (at, weight) = if per_sample {
+                (corner + self.samples.offset(k), 1.0)
+            } else {
+                (centre, tris.iter().filter(|&&u| u == t).count() as f32)
+            };
+            let (color, terms, texel) = self.shade_at(tri, at);
+            sum += color * weight;
             if tri.primitive == owner.primitive && out.terms.is_none() && out.texture.is_none() {
                 out.terms = terms;
                 out.texture = texel;

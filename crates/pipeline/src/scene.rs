@@ -483,6 +483,9 @@ pub struct RenderSettings {
     pub reflection: crate::shade::Reflection,
     /// How textures are read.
     pub sampler: crate::texture::Sampler,
+    /// Shade every sample at its own position (supersampling) instead of once per pixel and
+    /// triangle at the pixel centre (multisampling).
+    pub per_sample_shading: bool,
     /// The clear colour, linear RGB in `[0, 1]`.
     pub background: Vec3,
 }
@@ -499,6 +502,7 @@ impl Default for RenderSettings {
             shading: crate::shade::Frequency::Unlit,
             reflection: crate::shade::Reflection::BlinnPhong,
             sampler: crate::texture::Sampler::default(),
+            per_sample_shading: false,
             background: Vec3::new(0.08, 0.09, 0.11),
         }
     }

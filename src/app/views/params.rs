@@ -234,6 +234,10 @@ fn render(ui: &mut Ui, s: &mut pipeline::scene::RenderSettings, lang: Lang) {
                 }
             });
     });
+    ui.checkbox(&mut s.per_sample_shading, lang.tr("shade every sample (SSAA)", "每个采样点着色（SSAA）")).on_hover_text(lang.tr(
+        "Off: multisampling shades once per pixel and triangle at the pixel centre. On: supersampling shades each sample at its own position.",
+        "关：多重采样每个像素每个三角形在像素中心着色一次。开：超采样在每个采样点各自着色。",
+    ));
     shading(ui, s, lang);
     texture_sampling(ui, s, lang);
     ui.checkbox(

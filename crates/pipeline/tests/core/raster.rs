@@ -565,3 +565,53 @@ fn the_fragment_replay_agrees_with_the_buffers() {
         }
     }
 }
+
+#[test]
+fn supersampling_shades_each_sample_where_multisampling_shades_the_centre() {
+    // A half-plane x ≤ 8.5 whose red channel is x/16 (colours are affine in x under this
+    // orthographic camera), 4 samples. Column 8 keeps the two rotated-grid samples left of 8.5.
+    // Multisampling: both take the colour at the centre (8.5/16); supersampling: their own.
+    let corners = [
+        Vec2::new(-16.0, -16.0),
+        Vec2::new(8.5, -16.0),
+        Vec2::new(8.5, 48.0),
+        Vec2::new(-16.0, 48.0),
+    ];
+    let positions: Vec<Vec3> = corners.iter().map(|p| p.extend(0.0)).collect();
+    let colors = corners
+        .iter()
+        .map(|p| Vec3::new(p.x / 16.0, 0.0, 0.0))
+        .collect();
+    let mesh = mesh_of(positions, colors, vec![[0, 1, 2], [0, 2, 3]]);
+    let (mut scene, mut settings) = pixel_scene(16, 16, &[]);
+    scene.objects = vec![Object::new("half-plane", mesh)];
+    settings.samples = Samples::X4;
+    settings.background = Vec3::ZERO;
+    settings.depth_test = DepthTest::Less;
+    let i = (8 * 16 + 8) as usize;
+    let msaa = render(&scene, &settings);
+    settings.per_sample_shading = true;
+    let ssaa = render(&scene, &settings);
+    let covered: Vec<f32> = (0..4)
+        .map(|s| crate::support::sample_position(Samples::X4, 8, 7, s))
+        .filter(|p| p.x < 8.5)
+        .map(|p| p.x)
+        .collect();
+    assert_eq!(covered.len(), 2);
+    let expect_msaa = 2.0 * (8.5 / 16.0) / 4.0;
+    let expect_ssaa = covered.iter().map(|x| x / 16.0).sum::<f32>() / 4.0;
+    assert!(
+        (msaa.pixels.color[i][0] - expect_msaa).abs() < 1e-4,
+        "{} vs {expect_msaa}",
+        msaa.pixels.color[i][0]
+    );
+    assert!(
+        (ssaa.pixels.color[i][0] - expect_ssaa).abs() < 1e-4,
+        "{} vs {expect_ssaa}",
+        ssaa.pixels.color[i][0]
+    );
+    assert!(
+        (expect_msaa - expect_ssaa).abs() > 0.005,
+        "the two differ here"
+    );
+}
