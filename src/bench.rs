@@ -5,6 +5,7 @@ use std::time::Duration;
 use glam::Vec3;
 use pipeline::mesh::BuiltinMesh;
 use pipeline::scene::{Camera, Object, Projection, RenderSettings, Samples, Scene};
+use pipeline::shade::Frequency;
 use pipeline::{StageTimes, render_timed};
 
 /// One benchmark scene.
@@ -34,6 +35,50 @@ pub fn sphere_scene(triangles: u32) -> BenchScene {
             },
             projection: Projection::default(),
             lights: Vec::new(),
+        },
+    }
+}
+
+/// The uv sphere over a floor with a checkerboard texture, lit per pixel (Blinn-Phong, a point
+/// and an ambient light), trilinear filtering: the textured, lit scene of the benchmark.
+#[must_use]
+pub fn lit_textured_scene() -> BenchScene {
+    use pipeline::scene::{ColorSource, Light};
+    let mut floor = Object::new(
+        "floor",
+        BuiltinMesh::Plane {
+            divisions: 16,
+            repeat: 12.0,
+        }
+        .build(),
+    );
+    floor.scale = Vec3::splat(8.0);
+    floor.translate = Vec3::new(0.0, -1.0, 0.0);
+    floor.texture = Some(std::sync::Arc::new(
+        pipeline::texture::Texture::checkerboard(512, 16),
+    ));
+    let mut ball = sphere_scene(10_000).scene.objects.remove(0);
+    ball.color = ColorSource::Uniform(Vec3::new(0.85, 0.3, 0.25));
+    BenchScene {
+        name: "lit textured floor+sphere".to_owned(),
+        scene: Scene {
+            objects: vec![floor, ball],
+            camera: Camera {
+                eye: Vec3::new(0.0, 1.0, 4.0),
+                at: Vec3::ZERO,
+                up: Vec3::Y,
+            },
+            projection: Projection::default(),
+            lights: vec![
+                Light::Ambient {
+                    intensity: Vec3::splat(0.2),
+                },
+                Light::Point {
+                    position: Vec3::new(2.0, 4.0, 3.0),
+                    intensity: Vec3::ONE,
+                    attenuation: Vec3::new(1.0, 0.0, 0.01),
+                },
+            ],
         },
     }
 }
@@ -81,13 +126,18 @@ pub fn run(quick: bool, frames: Option<usize>, out: &mut dyn std::io::Write) -> 
         "{:<26} {:>10} {:>7} {:>8} {:>11} {:>8} {:>8} {:>8}",
         "scene", "size", "samples", "vertex", "clip+setup", "raster", "resolve", "frame"
     )?;
-    for (triangles, default_frames) in [(10_000, 9), (1_000_000, 3)] {
-        let bench = sphere_scene(triangles);
+    let cases = [
+        (sphere_scene(10_000), 9, Frequency::Unlit),
+        (sphere_scene(1_000_000), 3, Frequency::Unlit),
+        (lit_textured_scene(), 5, Frequency::Phong),
+    ];
+    for (bench, default_frames, shading) in cases {
         for samples in [Samples::X1, Samples::X4] {
             let settings = RenderSettings {
                 width: 1280,
                 height: 720,
                 samples,
+                shading,
                 ..RenderSettings::default()
             };
             let n = frames.unwrap_or(if quick { 1 } else { default_frames });

@@ -70,8 +70,6 @@ pub struct PrimitiveRecord {
     pub triangles: [u32; 2],
     /// Samples covered and written (after the depth test), over all its raster triangles.
     pub counts: RasterCounts,
-    /// Its lighting, with flat shading (one evaluation per face).
-    pub flat: Option<crate::shade::ShadeTerms>,
 }
 
 /// Per-pixel buffers, top image row first (`index = row·width + column`).
@@ -333,6 +331,12 @@ pub struct FrameCapture {
     pub matrices: Matrices,
     /// The vertex table: every vertex of every object through every space.
     pub vertices: Vec<VertexRecord>,
+    /// The lighting at each vertex (a row per vertex-table row), with Gouraud shading; empty
+    /// otherwise.
+    pub vertex_shading: Vec<crate::shade::ShadeTerms>,
+    /// The lighting of each face (a row per primitive, evaluated once at its centroid), with
+    /// flat shading; empty otherwise.
+    pub face_shading: Vec<crate::shade::ShadeTerms>,
     /// One record per input triangle.
     pub primitives: Vec<PrimitiveRecord>,
     /// The triangles that were rasterized, in order (clipping may split a primitive into several).

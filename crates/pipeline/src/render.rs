@@ -70,25 +70,12 @@ pub fn render_timed(
     if !problems.is_empty() {
         return Err(RenderError::Invalid(problems));
     }
-    let view = scene
-        .view_matrix()
-        .map_err(|e| RenderError::Invalid(vec![e.to_string()]))?;
-    let aspect = settings.aspect();
-    let matrices = Matrices {
-        models: scene.objects.iter().map(|o| o.model_matrix()).collect(),
-        projection: scene.projection.matrix(aspect),
-        projection_games101: scene.projection.matrix_games101(aspect),
-        viewport: NamedMatrix::new(
-            "M_viewport",
-            "x_w = (x+1)·width/2, y_w = (y+1)·height/2, z_w = (z+1)/2",
-            transform::viewport(settings.width as f32, settings.height as f32),
-        ),
-        view,
-    };
+    let matrices = frame_matrices(scene, settings)?;
     let mut times = StageTimes::default();
 
     let t = Instant::now();
     let mut vertices = Vec::new();
+    let mut vertex_shading = Vec::new();
     for (i, object) in scene.objects.iter().enumerate() {
         let m = VertexMatrices {
             model: matrices.models[i].matrix,
@@ -102,15 +89,24 @@ pub fn render_timed(
             lights: &scene.lights,
             eye: scene.camera.eye,
         };
-        vertex::transform_object(object, i as u32, &m, &lighting, &mut vertices);
+        vertex::transform_object(
+            object,
+            i as u32,
+            &m,
+            &lighting,
+            &mut vertices,
+            &mut vertex_shading,
+        );
     }
     times.vertex = t.elapsed();
 
     let t = Instant::now();
     let (mut primitives, triangles) = assemble_and_clip(scene, settings, &matrices, &vertices);
-    if settings.shading == Frequency::Flat {
-        light_faces(scene, settings, &vertices, &mut primitives);
-    }
+    let face_shading = if settings.shading == Frequency::Flat {
+        light_faces(scene, settings, &vertices, &primitives)
+    } else {
+        Vec::new()
+    };
     times.clip_setup = t.elapsed();
 
     let t = Instant::now();
@@ -129,14 +125,17 @@ pub fn render_timed(
     times.raster = t.elapsed();
 
     let t = Instant::now();
-    let pixels = resolve(
+    let ctx = ResolveContext {
         scene,
         settings,
-        &samples,
-        &triangles,
-        &primitives,
-        &vertices,
-    );
+        samples: &samples,
+        triangles: &triangles,
+        primitives: &primitives,
+        vertices: &vertices,
+        vertex_shading: &vertex_shading,
+        face_shading: &face_shading,
+    };
+    let pixels = resolve(&ctx);
     times.resolve = t.elapsed();
 
     let capture = FrameCapture {
@@ -155,12 +154,33 @@ pub fn render_timed(
             .collect(),
         matrices,
         vertices,
+        vertex_shading,
+        face_shading,
         primitives,
         triangles,
         samples,
         pixels,
     };
     Ok((capture, times))
+}
+
+/// The frame's matrices: models, view, both courses' projections, viewport.
+fn frame_matrices(scene: &Scene, settings: &RenderSettings) -> Result<Matrices, RenderError> {
+    let view = scene
+        .view_matrix()
+        .map_err(|e| RenderError::Invalid(vec![e.to_string()]))?;
+    let aspect = settings.aspect();
+    Ok(Matrices {
+        models: scene.objects.iter().map(|o| o.model_matrix()).collect(),
+        projection: scene.projection.matrix(aspect),
+        projection_games101: scene.projection.matrix_games101(aspect),
+        viewport: NamedMatrix::new(
+            "M_viewport",
+            "x_w = (x+1)·width/2, y_w = (y+1)·height/2, z_w = (z+1)/2",
+            transform::viewport(settings.width as f32, settings.height as f32),
+        ),
+        view,
+    })
 }
 
 /// Primitive assembly, clipping, perspective division, viewport and triangle setup.
@@ -199,7 +219,6 @@ fn assemble_and_clip(
                         clipped_polygon: None,
                         triangles: [start, start],
                         counts: RasterCounts::default(),
-                        flat: None,
                     });
                     continue;
                 }
@@ -251,7 +270,6 @@ fn assemble_and_clip(
                 },
                 triangles: [start, end],
                 counts: RasterCounts::default(),
-                flat: None,
             });
         }
         row_base += object.mesh.positions.len() as u32;
@@ -260,33 +278,42 @@ fn assemble_and_clip(
 }
 
 /// Flat shading: each face lit once, with its own normal `(p1 − p0) × (p2 − p0)` (world
-/// coordinates), at its centroid, with the mean of its vertices' colours.
+/// coordinates), at its centroid, with the mean of its vertices' colours (white for a textured
+/// surface, whose texel then modulates the result per pixel). One entry per primitive; faces
+/// that are not drawn get zero terms.
 fn light_faces(
     scene: &Scene,
     settings: &RenderSettings,
     vertices: &[VertexRecord],
-    primitives: &mut [PrimitiveRecord],
-) {
-    for prim in primitives
-        .iter_mut()
-        .filter(|p| p.triangles[1] > p.triangles[0])
-    {
-        let v = prim.vertices.map(|r| &vertices[r as usize]);
-        let p = v.map(|v| v.world.truncate());
-        let normal = (p[1] - p[0]).cross(p[2] - p[0]);
-        let centroid = (p[0] + p[1] + p[2]) / 3.0;
-        let color = (v[0].color + v[1].color + v[2].color) / 3.0;
-        let material = &scene.objects[prim.object as usize].material;
-        prim.flat = Some(shade::shade(
-            centroid,
-            normal,
-            scene.camera.eye,
-            color,
-            &scene.lights,
-            material,
-            settings.reflection,
-        ));
-    }
+    primitives: &[PrimitiveRecord],
+) -> Vec<ShadeTerms> {
+    primitives
+        .iter()
+        .map(|prim| {
+            if prim.triangles[1] == prim.triangles[0] {
+                return ShadeTerms::default();
+            }
+            let v = prim.vertices.map(|r| &vertices[r as usize]);
+            let p = v.map(|v| v.world.truncate());
+            let normal = (p[1] - p[0]).cross(p[2] - p[0]);
+            let centroid = (p[0] + p[1] + p[2]) / 3.0;
+            let object = &scene.objects[prim.object as usize];
+            let color = if object.texture.is_some() && !object.mesh.uvs.is_empty() {
+                Vec3::ONE
+            } else {
+                (v[0].color + v[1].color + v[2].color) / 3.0
+            };
+            shade::shade(
+                centroid,
+                normal,
+                scene.camera.eye,
+                color,
+                &scene.lights,
+                &object.material,
+                settings.reflection,
+            )
+        })
+        .collect()
 }
 
 /// Everything the resolve computes for one pixel.
@@ -432,14 +459,9 @@ fn split_rows(px: &mut PixelBuffers, w: usize, h: usize) -> Vec<RowOut<'_>> {
 /// Resolves samples to pixels: coverage, mean depth, the owning primitive, barycentrics and
 /// colour at the pixel centre (once per pixel and triangle, as multisampling shades), and the
 /// lighting terms of the owning fragment. Rows are independent, so they are resolved in parallel.
-fn resolve(
-    scene: &Scene,
-    settings: &RenderSettings,
-    samples: &SampleBuffers,
-    triangles: &[RasterTriangle],
-    primitives: &[PrimitiveRecord],
-    vertices: &[VertexRecord],
-) -> PixelBuffers {
+fn resolve(ctx: &ResolveContext<'_>) -> PixelBuffers {
+    let settings = ctx.settings;
+    let scene = ctx.scene;
     let (w, h) = (settings.width as usize, settings.height as usize);
     let n = w * h;
     let lit = settings.shading != Frequency::Unlit;
@@ -469,14 +491,6 @@ fn resolve(
             texel: vec![[0.0; 3]; n],
         }),
     };
-    let ctx = ResolveContext {
-        scene,
-        settings,
-        samples,
-        triangles,
-        primitives,
-        vertices,
-    };
     let rows = split_rows(&mut px, w, h);
     rows.into_par_iter().enumerate().for_each(|(row, mut out)| {
         let y = (h - 1 - row) as u32;
@@ -489,6 +503,8 @@ fn resolve(
 
 /// What the resolve of one pixel reads.
 struct ResolveContext<'a> {
+    vertex_shading: &'a [ShadeTerms],
+    face_shading: &'a [ShadeTerms],
     scene: &'a Scene,
     settings: &'a RenderSettings,
     samples: &'a SampleBuffers,
@@ -528,8 +544,8 @@ impl ResolveContext<'_> {
     }
 
     /// The lighting of triangle `t` at weights `b` with surface colour `surface`, by the shading
-    /// frequency: the face's own terms (flat), the vertices' terms interpolated (Gouraud; a
-    /// texture then modulates the ambient and diffuse terms, as OpenGL's `GL_MODULATE` does), or
+    /// frequency: the face's own terms (flat) or the vertices' terms interpolated (Gouraud) — a
+    /// texture then modulates their ambient and diffuse terms, as OpenGL's `GL_MODULATE` does — or
     /// lighting evaluated here with the interpolated position and normal (Phong). `None` when unlit.
     fn terms_of(
         &self,
@@ -542,10 +558,13 @@ impl ResolveContext<'_> {
         let v = prim.vertices.map(|r| &self.vertices[r as usize]);
         match self.settings.shading {
             Frequency::Unlit => None,
-            Frequency::Flat => prim.flat,
-            Frequency::Gouraud => {
-                let s = v.map(|v| v.shade.unwrap_or_default());
-                let mut terms = ShadeTerms::blend([&s[0], &s[1], &s[2]], b);
+            Frequency::Flat | Frequency::Gouraud => {
+                let mut terms = if self.settings.shading == Frequency::Flat {
+                    self.face_shading[t.primitive as usize]
+                } else {
+                    let s = prim.vertices.map(|r| &self.vertex_shading[r as usize]);
+                    ShadeTerms::blend(s, b)
+                };
                 if textured {
                     terms.ambient *= surface;
                     terms.diffuse *= surface;

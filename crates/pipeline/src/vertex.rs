@@ -37,8 +37,6 @@ pub struct VertexRecord {
     pub uv: Option<Vec2>,
     /// The unit normal in world coordinates, `N·n` with the normal matrix `N = (M⁻¹)ᵀ`.
     pub normal_world: Vec3,
-    /// The lighting at this vertex (Gouraud shading only).
-    pub shade: Option<ShadeTerms>,
 }
 
 /// The matrices the vertex stage applies to one object.
@@ -75,13 +73,14 @@ pub fn normal_matrix(model: &Mat4) -> Mat3 {
 }
 
 /// Runs the vertex stage on every vertex of `object` (index `object_index` in the scene),
-/// appending one row per vertex to `out`.
+/// appending one row per vertex to `out` and, with Gouraud shading, its lighting to `lit`.
 pub fn transform_object(
     object: &Object,
     object_index: u32,
     m: &VertexMatrices,
     lighting: &VertexLighting<'_>,
     out: &mut Vec<VertexRecord>,
+    lit: &mut Vec<ShadeTerms>,
 ) {
     let mesh = &object.mesh;
     let n_matrix = normal_matrix(&m.model);
@@ -105,8 +104,8 @@ pub fn transform_object(
         } else {
             color
         };
-        let shade = (lighting.frequency == Frequency::Gouraud).then(|| {
-            shade::shade(
+        if lighting.frequency == Frequency::Gouraud {
+            lit.push(shade::shade(
                 world.truncate(),
                 normal_world,
                 lighting.eye,
@@ -114,8 +113,8 @@ pub fn transform_object(
                 lighting.lights,
                 &object.material,
                 lighting.reflection,
-            )
-        });
+            ));
+        }
         out.push(VertexRecord {
             object: object_index,
             index: i as u32,
@@ -128,7 +127,6 @@ pub fn transform_object(
             color,
             uv: mesh.uvs.get(i).copied(),
             normal_world,
-            shade,
         });
     }
 }
