@@ -2,9 +2,8 @@
 //! perspective-correct, 1× | 4× — with an intensity profile along a line the user drags across
 //! any of the images, plotted for all of them.
 
-use egui::{Color32, Pos2, Rect, RichText, Sense, Stroke, TextureHandle, TextureOptions, Ui, Vec2};
+use egui::{Color32, Pos2, Rect, RichText, Sense, Stroke, TextureOptions, Ui, Vec2};
 use egui_plot::{Legend, Line, Plot};
-use pipeline::capture::{BufferKind, FrameCapture};
 
 use super::fit_rect;
 use crate::app::i18n::Lang;
@@ -13,7 +12,7 @@ use crate::app::session::{Command, Session};
 /// Textures of the compared images and the line being dragged.
 #[derive(Default)]
 pub struct CompareView {
-    textures: Vec<(u64, BufferKind, TextureHandle)>,
+    textures: Vec<super::BufferTexture>,
     drag_start: Option<[f32; 2]>,
 }
 
@@ -64,12 +63,16 @@ impl CompareView {
                 area.min + Vec2::new(i as f32 * (w + gap), 0.0),
                 Vec2::new(w, images_h),
             );
-            let texture = self.texture(
+            if self.textures.len() <= i {
+                self.textures.resize_with(i + 1, Default::default);
+            }
+            let texture = self.textures[i].get(
                 ui.ctx(),
-                i,
+                &format!("compare-{i}"),
                 session.shown_generation,
                 session.selection.buffer,
                 capture,
+                TextureOptions::NEAREST,
             );
             let title_h = 22.0;
             let image = fit_rect(
@@ -151,33 +154,5 @@ impl CompareView {
                     );
                 }
             });
-    }
-
-    fn texture(
-        &mut self,
-        ctx: &egui::Context,
-        i: usize,
-        generation: u64,
-        kind: BufferKind,
-        capture: &FrameCapture,
-    ) -> TextureHandle {
-        if let Some((g, k, t)) = self.textures.get(i)
-            && *g == generation
-            && *k == kind
-        {
-            return t.clone();
-        }
-        let img = capture.image(kind);
-        let color = egui::ColorImage::from_rgba_unmultiplied(
-            [img.width() as usize, img.height() as usize],
-            img.as_raw(),
-        );
-        let t = ctx.load_texture(format!("compare-{i}"), color, TextureOptions::NEAREST);
-        if i < self.textures.len() {
-            self.textures[i] = (generation, kind, t.clone());
-        } else {
-            self.textures.push((generation, kind, t.clone()));
-        }
-        t
     }
 }

@@ -144,3 +144,34 @@ pub fn fate_color(f: &pipeline::capture::Fate) -> Color32 {
         Fate::Degenerate => Color32::RED,
     }
 }
+
+/// A capture's buffer uploaded as an egui texture, uploaded again only when the capture (its
+/// generation) or the buffer changes.
+#[derive(Default)]
+pub struct BufferTexture(Option<(u64, pipeline::capture::BufferKind, egui::TextureHandle)>);
+
+impl BufferTexture {
+    /// The texture of `kind` from `capture` (generation `generation`).
+    pub fn get(
+        &mut self,
+        ctx: &egui::Context,
+        name: &str,
+        generation: u64,
+        kind: pipeline::capture::BufferKind,
+        capture: &pipeline::capture::FrameCapture,
+        options: egui::TextureOptions,
+    ) -> egui::TextureHandle {
+        if let Some((g, k, t)) = &self.0
+            && *g == generation
+            && *k == kind
+        {
+            return t.clone();
+        }
+        let img = capture.image(kind);
+        let size = [img.width() as usize, img.height() as usize];
+        let color = egui::ColorImage::from_rgba_unmultiplied(size, img.as_raw());
+        let t = ctx.load_texture(name, color, options);
+        self.0 = Some((generation, kind, t.clone()));
+        t
+    }
+}

@@ -2,7 +2,7 @@
 //! camera, with the viewing camera's frame (u, v, n), its frustum and the clipped geometry drawn
 //! over it.
 
-use egui::{Align2, Color32, FontId, Rect, Sense, Stroke, TextureHandle, TextureOptions, Ui, Vec2};
+use egui::{Align2, Color32, FontId, Rect, Sense, Stroke, TextureOptions, Ui, Vec2};
 use glam::{Mat4, Vec3, Vec4};
 use pipeline::capture::{BufferKind, FrameCapture};
 use pipeline::transform;
@@ -14,7 +14,7 @@ use crate::app::session::{Command, Orbit, Session};
 /// The texture of the observer image.
 #[derive(Default)]
 pub struct ObserverView {
-    texture: Option<(u64, TextureHandle)>,
+    texture: super::BufferTexture,
 }
 
 impl ObserverView {
@@ -37,7 +37,14 @@ impl ObserverView {
             ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
         let rect = fit_rect(outer, obs.width() as f32 / obs.height() as f32);
         let painter = ui.painter_at(outer);
-        let texture = self.texture(ui.ctx(), session.shown_generation, obs);
+        let texture = self.texture.get(
+            ui.ctx(),
+            "observer",
+            session.shown_generation,
+            BufferKind::Color,
+            obs,
+            TextureOptions::LINEAR,
+        );
         painter.image(
             texture.id(),
             rect,
@@ -65,27 +72,6 @@ impl ObserverView {
         };
         draw_viewing_camera(&painter, &cam, main, lang);
         cmds
-    }
-
-    fn texture(
-        &mut self,
-        ctx: &egui::Context,
-        generation: u64,
-        obs: &FrameCapture,
-    ) -> TextureHandle {
-        if let Some((g, t)) = &self.texture
-            && *g == generation
-        {
-            return t.clone();
-        }
-        let img = obs.image(BufferKind::Color);
-        let color = egui::ColorImage::from_rgba_unmultiplied(
-            [img.width() as usize, img.height() as usize],
-            img.as_raw(),
-        );
-        let t = ctx.load_texture("observer", color, TextureOptions::LINEAR);
-        self.texture = Some((generation, t.clone()));
-        t
     }
 }
 

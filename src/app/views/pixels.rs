@@ -1,7 +1,7 @@
 //! A pixel buffer as an image: zoom and pan, crisp pixels, the pixel grid, sample points and
 //! overlays when zoomed in, values under the cursor, a click to inspect a pixel.
 
-use egui::{Color32, Pos2, Rect, RichText, Sense, Stroke, TextureHandle, TextureOptions, Ui, Vec2};
+use egui::{Color32, Pos2, Rect, RichText, Sense, Stroke, TextureOptions, Ui, Vec2};
 use pipeline::capture::{BufferKind, FrameCapture};
 use pipeline::overlay::{OverlayKind, Shape};
 use pipeline::raster::{NONE, sample_offsets_image};
@@ -18,7 +18,7 @@ pub struct PixelView {
     /// The image point at the centre of the view.
     centre: Option<Vec2>,
     /// The texture of the buffer shown, with the generation and kind it was made from.
-    texture: Option<(u64, BufferKind, TextureHandle)>,
+    texture: super::BufferTexture,
 }
 
 /// The buffers a user can choose, with their names.
@@ -115,7 +115,14 @@ impl PixelView {
         let sel = &session.selection;
         let lang = session.lang;
         let mut cmds = Vec::new();
-        let texture = self.texture(ui.ctx(), session.shown_generation, sel.buffer, capture);
+        let texture = self.texture.get(
+            ui.ctx(),
+            "pixel-view",
+            session.shown_generation,
+            sel.buffer,
+            capture,
+            TextureOptions::NEAREST,
+        );
         let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
         response.widget_info(|| {
             egui::WidgetInfo::labeled(egui::Role::Image, true, lang.tr("pixel view", "像素视图"))
@@ -192,33 +199,6 @@ impl PixelView {
             zoom,
             size,
         }
-    }
-
-    fn texture(
-        &mut self,
-        ctx: &egui::Context,
-        generation: u64,
-        kind: BufferKind,
-        capture: &FrameCapture,
-    ) -> TextureHandle {
-        if let Some((g, k, t)) = &self.texture
-            && *g == generation
-            && *k == kind
-        {
-            return t.clone();
-        }
-        let img = capture.image(kind);
-        let color = egui::ColorImage::from_rgba_unmultiplied(
-            [img.width() as usize, img.height() as usize],
-            img.as_raw(),
-        );
-        let t = ctx.load_texture(
-            format!("buffer-{}", kind.name()),
-            color,
-            TextureOptions::NEAREST,
-        );
-        self.texture = Some((generation, kind, t.clone()));
-        t
     }
 }
 
