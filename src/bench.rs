@@ -34,6 +34,7 @@ pub fn sphere_scene(triangles: u32) -> BenchScene {
                 up: Vec3::Y,
             },
             projection: Projection::default(),
+            shadow: None,
             lights: Vec::new(),
         },
     }
@@ -69,6 +70,7 @@ pub fn lit_textured_scene() -> BenchScene {
                 up: Vec3::Y,
             },
             projection: Projection::default(),
+            shadow: None,
             lights: vec![
                 Light::Ambient {
                     intensity: Vec3::splat(0.2),

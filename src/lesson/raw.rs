@@ -32,6 +32,17 @@ pub struct RawScene {
     /// `[[scene.lights]]`.
     #[serde(default)]
     pub lights: Vec<Spanned<RawLight>>,
+    /// `[scene.shadow]`.
+    pub shadow: Option<Spanned<RawShadow>>,
+}
+
+/// `[scene.shadow]`: a planar projected shadow.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawShadow {
+    pub light: RawVec3,
+    pub plane_y: Option<Spanned<f64>>,
+    pub color: Option<RawVec3>,
 }
 
 /// One `[[scene.lights]]` entry.
@@ -122,6 +133,7 @@ pub struct RawObject {
     pub material: Option<Spanned<RawMaterial>>,
     /// `"checkerboard"`, `"uv_grid"`, `"mip_levels"` or a path to a PNG or JPEG file.
     pub texture: Option<Spanned<String>>,
+    pub casts_shadow: Option<bool>,
 }
 
 /// A mesh as written.

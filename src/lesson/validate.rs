@@ -8,7 +8,7 @@ use glam::Vec3;
 use pipeline::mesh::{BuiltinMesh, Mesh};
 use pipeline::scene::{
     Camera, ColorSource, CullMode, DepthTest, Light, MAX_CAPTURE_SAMPLES, MAX_VIEWPORT_SIDE,
-    Material, Object, Projection, RenderSettings, Samples, Scene,
+    Material, Object, PlanarShadow, Projection, RenderSettings, Samples, Scene,
 };
 use pipeline::shade::{Frequency, Reflection};
 use pipeline::texture::{Filter, Mipmap, Texture, Wrap};
@@ -16,7 +16,7 @@ use toml::Spanned;
 
 use super::raw::{
     RawColor, RawLight, RawMaterial, RawMesh, RawMeshTable, RawObject, RawProjection, RawRender,
-    RawScale, RawScene, RawVec3,
+    RawScale, RawScene, RawShadow, RawVec3,
 };
 use super::{Diagnostic, Diagnostics, SceneSpec};
 
@@ -137,6 +137,7 @@ pub fn scene(
         .filter_map(|(i, o)| object(&mut c, o, i, base))
         .collect();
     let lights = s.lights.iter().filter_map(|l| light(&mut c, l)).collect();
+    let shadow = s.shadow.as_ref().and_then(|sh| shadow(&mut c, sh));
     if c.found.is_empty() {
         Ok(SceneSpec {
             scene: Scene {
@@ -144,6 +145,7 @@ pub fn scene(
                 camera,
                 projection,
                 lights,
+                shadow,
             },
             settings,
         })
@@ -419,6 +421,9 @@ fn object(
     }
     if let Some(m) = &raw.material {
         object.material = material(c, m);
+    }
+    if let Some(b) = raw.casts_shadow {
+        object.casts_shadow = b;
     }
     if let Some(t) = &raw.texture {
         object.texture = texture(c, t, base).map(std::sync::Arc::new);
@@ -763,4 +768,34 @@ fn sampler(c: &mut Checker<'_>, raw: &RawRender, s: &mut RenderSettings) {
     {
         smp.lod_bias = b;
     }
+}
+
+fn shadow(c: &mut Checker<'_>, sh: &Spanned<RawShadow>) -> Option<PlanarShadow> {
+    let raw = sh.get_ref();
+    let light = c.vec3("light", &raw.light)?;
+    let plane_y = raw
+        .plane_y
+        .as_ref()
+        .and_then(|v| c.finite("plane_y", v))
+        .unwrap_or(0.0);
+    if light.y <= plane_y {
+        c.error(
+            raw.light.span(),
+            format!(
+                "the shadow's light must be above its plane y = {plane_y}, got y = {}",
+                light.y
+            ),
+        );
+        return None;
+    }
+    let color = raw
+        .color
+        .as_ref()
+        .and_then(|v| c.vec3("color", v))
+        .unwrap_or(Vec3::splat(0.05));
+    Some(PlanarShadow {
+        light,
+        plane_y,
+        color,
+    })
 }

@@ -70,6 +70,15 @@ pub fn render_timed(
     if !problems.is_empty() {
         return Err(RenderError::Invalid(problems));
     }
+    if scene.shadow.is_some() {
+        // The shadow pass: the same pipeline over the scene's objects and their shadows.
+        let expanded = Scene {
+            objects: scene.drawn_objects(),
+            shadow: None,
+            ..scene.clone()
+        };
+        return render_timed(&expanded, settings);
+    }
     let matrices = frame_matrices(scene, settings)?;
     let mut times = StageTimes::default();
 
@@ -298,6 +307,9 @@ fn light_faces(
             let normal = (p[1] - p[0]).cross(p[2] - p[0]);
             let centroid = (p[0] + p[1] + p[2]) / 3.0;
             let object = &scene.objects[prim.object as usize];
+            if !object.lit {
+                return ShadeTerms::default();
+            }
             let color = if object.texture.is_some() && !object.mesh.uvs.is_empty() {
                 Vec3::ONE
             } else {
@@ -556,6 +568,9 @@ impl ResolveContext<'_> {
     ) -> Option<ShadeTerms> {
         let prim = &self.primitives[t.primitive as usize];
         let v = prim.vertices.map(|r| &self.vertices[r as usize]);
+        if !self.scene.objects[prim.object as usize].lit {
+            return None;
+        }
         match self.settings.shading {
             Frequency::Unlit => None,
             Frequency::Flat | Frequency::Gouraud => {

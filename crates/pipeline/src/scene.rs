@@ -40,6 +40,13 @@ pub struct Object {
     pub material: Material,
     /// Its texture: the surface colour where the mesh has texture coordinates.
     pub texture: Option<Arc<crate::texture::Texture>>,
+    /// A matrix applied after the object's own transform, `M = parent·T·Rz·Ry·Rx·S` (a shadow
+    /// projection, a parent node's composite).
+    pub parent: Option<NamedMatrix>,
+    /// Whether lighting applies (shadow geometry is drawn in its flat colour).
+    pub lit: bool,
+    /// Whether it casts a planar shadow (when the scene has one).
+    pub casts_shadow: bool,
 }
 
 impl Object {
@@ -55,6 +62,9 @@ impl Object {
             color: ColorSource::Vertex,
             material: Material::default(),
             texture: None,
+            parent: None,
+            lit: true,
+            casts_shadow: true,
         }
     }
 
@@ -62,20 +72,21 @@ impl Object {
     #[must_use]
     pub fn model_matrix(&self) -> NamedMatrix {
         let r = self.rotate_deg * (std::f32::consts::PI / 180.0);
-        let factors = vec![
+        let mut factors: Vec<NamedMatrix> = self.parent.iter().cloned().collect();
+        factors.extend([
             NamedMatrix::new("T", "T(tx, ty, tz)", transform::translate(self.translate)),
             NamedMatrix::new("Rz", "Rz(θz)", transform::rotate_z(r.z)),
             NamedMatrix::new("Ry", "Ry(θy)", transform::rotate_y(r.y)),
             NamedMatrix::new("Rx", "Rx(θx)", transform::rotate_x(r.x)),
             NamedMatrix::new("S", "S(sx, sy, sz)", transform::scale(self.scale)),
-        ];
+        ]);
         let m = factors.iter().fold(Mat4::IDENTITY, |m, f| m * f.matrix);
-        NamedMatrix::new(
-            &format!("M_model({})", self.name),
-            "M = T·Rz·Ry·Rx·S: scale, rotate about x, y, z, then translate",
-            m,
-        )
-        .with_factors(factors)
+        let formula = if self.parent.is_some() {
+            "M = parent·T·Rz·Ry·Rx·S: the object's own transform, then its parent's"
+        } else {
+            "M = T·Rz·Ry·Rx·S: scale, rotate about x, y, z, then translate"
+        };
+        NamedMatrix::new(&format!("M_model({})", self.name), formula, m).with_factors(factors)
     }
 }
 
@@ -549,6 +560,44 @@ impl RenderSettings {
     }
 }
 
+/// A planar projected shadow (Angel's shadow matrix): every object that casts one is drawn a
+/// second time, projected from the point light `light` onto the plane `y = plane_y`, in `color`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct PlanarShadow {
+    /// The light the shadow is cast from.
+    pub light: Vec3,
+    /// The height of the receiving plane.
+    pub plane_y: f32,
+    /// The shadow's colour.
+    pub color: Vec3,
+}
+
+/// How far above its plane shadow geometry is lifted so that it wins the depth test against
+/// the plane itself (the polygon offset of fixed-function OpenGL).
+pub const SHADOW_LIFT: f32 = 2e-3;
+
+impl PlanarShadow {
+    /// `T(0, h + ε, 0)·M_shadow(l − (0, h, 0))·T(0, −h, 0)`: the notes' matrix for the plane
+    /// `y = 0`, moved to `y = h` and lifted by [`SHADOW_LIFT`].
+    #[must_use]
+    pub fn matrix(&self) -> NamedMatrix {
+        let h = Vec3::new(0.0, self.plane_y, 0.0);
+        let m = transform::planar_shadow(self.light - h);
+        let up = transform::translate(h + Vec3::new(0.0, SHADOW_LIFT, 0.0));
+        let down = transform::translate(-h);
+        NamedMatrix::new(
+            "M_shadow",
+            "T(0, h+ε, 0)·[T(l)·M_p·T(−l)]·T(0, −h, 0): project from the light onto y = h",
+            up * m.matrix * down,
+        )
+        .with_factors(vec![
+            NamedMatrix::new("T(0, h+ε, 0)", "back up to the plane, lifted by ε", up),
+            m,
+            NamedMatrix::new("T(0, −h, 0)", "the plane to y = 0", down),
+        ])
+    }
+}
+
 /// Everything that is drawn: objects, camera and projection.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct Scene {
@@ -560,9 +609,35 @@ pub struct Scene {
     pub projection: Projection,
     /// The lights (used by lighting).
     pub lights: Vec<Light>,
+    /// A planar projected shadow, drawn as a second pass.
+    pub shadow: Option<PlanarShadow>,
 }
 
 impl Scene {
+    /// The objects drawn: the scene's own, then (with a planar shadow) the shadow pass, one
+    /// unlit object `shadow of …` per object that casts one.
+    #[must_use]
+    pub fn drawn_objects(&self) -> Vec<Object> {
+        let mut out = self.objects.clone();
+        if let Some(shadow) = &self.shadow {
+            let m = shadow.matrix();
+            for o in self.objects.iter().filter(|o| o.casts_shadow) {
+                let mut s = o.clone();
+                s.name = format!("shadow of {}", o.name);
+                s.parent = Some(match &o.parent {
+                    Some(p) => NamedMatrix::new("M_shadow·parent", &m.formula, m.matrix * p.matrix),
+                    None => m.clone(),
+                });
+                s.color = ColorSource::Uniform(shadow.color);
+                s.texture = None;
+                s.lit = false;
+                s.casts_shadow = false;
+                out.push(s);
+            }
+        }
+        out
+    }
+
     /// The view matrix `LookAt(eye, at, up)`.
     ///
     /// # Errors

@@ -104,7 +104,9 @@ pub fn transform_object(
         } else {
             color
         };
-        if lighting.frequency == Frequency::Gouraud {
+        if lighting.frequency == Frequency::Gouraud && !object.lit {
+            lit.push(ShadeTerms::default());
+        } else if lighting.frequency == Frequency::Gouraud {
             lit.push(shade::shade(
                 world.truncate(),
                 normal_world,

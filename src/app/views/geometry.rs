@@ -36,8 +36,9 @@ const MAX_TRIANGLES: usize = 30_000;
 fn position(v: &pipeline::vertex::VertexRecord, space: Space) -> Option<Vec3> {
     match space {
         Space::Model => Some(v.object_pos.truncate()),
-        Space::World => Some(v.world.truncate()),
-        Space::Eye => Some(v.eye.truncate()),
+        // A projective model matrix (the shadow matrix) leaves w ≠ 1: show the point it means.
+        Space::World => (v.world.w > 0.0).then(|| v.world.truncate() / v.world.w),
+        Space::Eye => (v.eye.w > 0.0).then(|| v.eye.truncate() / v.eye.w),
         Space::Clip => Some(v.clip.truncate()),
         Space::Ndc => v.ndc,
         Space::Window => v.window,

@@ -200,6 +200,7 @@ fn lit_sphere(frequency: Frequency) -> pipeline::capture::FrameCapture {
             near: 0.5,
             far: 20.0,
         },
+        shadow: None,
         lights: vec![
             Light::Ambient {
                 intensity: Vec3::splat(0.3),
@@ -300,4 +301,60 @@ fn profiles_show_the_mach_band_difference_between_frequencies() {
     assert_eq!(mid.rgb, c.pixels.color[50 * 101 + 50]);
     let luma = 0.2126 * mid.rgb[0] + 0.7152 * mid.rgb[1] + 0.0722 * mid.rgb[2];
     assert!((mid.intensity - luma).abs() < 1e-6);
+}
+
+#[test]
+fn the_shadow_pass_projects_every_vertex_by_the_closed_form() {
+    use pipeline::scene::{PlanarShadow, SHADOW_LIFT};
+    let light = Vec3::new(1.0, 6.0, 2.0);
+    let mut cube = Object::new("cube", BuiltinMesh::Cube.build());
+    cube.translate = Vec3::new(0.5, 2.0, -0.5);
+    let scene = Scene {
+        objects: vec![cube],
+        camera: Camera {
+            eye: Vec3::new(0.0, 8.0, 10.0),
+            at: Vec3::ZERO,
+            up: Vec3::Y,
+        },
+        projection: Projection::default(),
+        lights: Vec::new(),
+        shadow: Some(PlanarShadow {
+            light,
+            plane_y: 0.0,
+            color: Vec3::splat(0.1),
+        }),
+    };
+    let c = render(&scene, &RenderSettings::default());
+    assert_eq!(c.objects.len(), 2);
+    assert_eq!(c.objects[1].name, "shadow of cube");
+    let n = c.objects[0].vertices;
+    for (v, s) in c.vertices[..n].iter().zip(&c.vertices[n..]) {
+        let p = v.world.truncate();
+        let q = s.world.truncate() / s.world.w;
+        let k = light.y / (p.y - light.y);
+        // x_p = x_l − (x − x_l)·y_l/(y − y_l), y_p = 0 (+ the lift), z_p likewise.
+        let expect = Vec3::new(
+            light.x - (p.x - light.x) * k,
+            SHADOW_LIFT,
+            light.z - (p.z - light.z) * k,
+        );
+        assert!((q - expect).abs().max_element() < 1e-4, "{q} vs {expect}");
+    }
+    // Shadow fragments are unlit: exactly their colour.
+    let shadow_pixels: Vec<usize> = (0..c.pixels.primitive.len())
+        .filter(|&i| {
+            c.pixels.primitive[i] != pipeline::raster::NONE
+                && c.primitives[c.pixels.primitive[i] as usize].object == 1
+        })
+        .collect();
+    assert!(
+        shadow_pixels.len() > 100,
+        "the shadow is visible ({} pixels)",
+        shadow_pixels.len()
+    );
+    assert!(
+        shadow_pixels
+            .iter()
+            .all(|&i| c.pixels.color[i].iter().all(|v| (v - 0.1).abs() < 1e-5))
+    );
 }

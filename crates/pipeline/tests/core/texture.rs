@@ -117,6 +117,7 @@ fn textured_quad(d: f32, tilt: f32, sampler: Sampler) -> pipeline::capture::Fram
             near: 0.1,
             far: 100.0,
         },
+        shadow: None,
         lights: Vec::new(),
     };
     let settings = RenderSettings {
