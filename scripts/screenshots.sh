@@ -23,7 +23,7 @@ start() {
 start --lang en
 # The app opens on World; walk back to Model, then through every stage.
 DISPLAY=$display xdotool key --window "$win" Left; sleep 3
-for stage in model world view clip ndc viewport rasterization depth output; do
+for stage in model world view clip ndc viewport rasterization depth shading texturing output; do
   shoot "en-$stage"
   DISPLAY=$display xdotool key --window "$win" Right; sleep 3
 done
