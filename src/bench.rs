@@ -34,6 +34,7 @@ pub fn sphere_scene(triangles: u32) -> BenchScene {
                 up: Vec3::Y,
             },
             projection: Projection::default(),
+            figures: Vec::new(),
             shadow: None,
             lights: Vec::new(),
         },
@@ -70,6 +71,7 @@ pub fn lit_textured_scene() -> BenchScene {
                 up: Vec3::Y,
             },
             projection: Projection::default(),
+            figures: Vec::new(),
             shadow: None,
             lights: vec![
                 Light::Ambient {

@@ -88,6 +88,7 @@ fn render_observer(spec: &SceneSpec, camera: Camera) -> Option<FrameCapture> {
             near: (distance * 0.02).max(1e-3),
             far: distance * 20.0,
         },
+        figures: spec.scene.figures.clone(),
         shadow: spec.scene.shadow,
         lights: spec.scene.lights.clone(),
     };

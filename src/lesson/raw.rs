@@ -34,6 +34,31 @@ pub struct RawScene {
     pub lights: Vec<Spanned<RawLight>>,
     /// `[scene.shadow]`.
     pub shadow: Option<Spanned<RawShadow>>,
+    /// `[[scene.figures]]`.
+    #[serde(default)]
+    pub figures: Vec<Spanned<RawFigure>>,
+}
+
+/// One `[[scene.figures]]` entry: an articulated model and its joint angles in degrees.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawFigure {
+    pub kind: Spanned<String>,
+    pub name: Option<String>,
+    pub translate: Option<RawVec3>,
+    pub base: Option<Spanned<f64>>,
+    pub lower: Option<Spanned<f64>>,
+    pub upper: Option<Spanned<f64>>,
+    pub torso: Option<Spanned<f64>>,
+    pub head: Option<Spanned<f64>>,
+    pub left_upper_arm: Option<Spanned<f64>>,
+    pub left_lower_arm: Option<Spanned<f64>>,
+    pub right_upper_arm: Option<Spanned<f64>>,
+    pub right_lower_arm: Option<Spanned<f64>>,
+    pub left_upper_leg: Option<Spanned<f64>>,
+    pub left_lower_leg: Option<Spanned<f64>>,
+    pub right_upper_leg: Option<Spanned<f64>>,
+    pub right_lower_leg: Option<Spanned<f64>>,
 }
 
 /// `[scene.shadow]`: a planar projected shadow.

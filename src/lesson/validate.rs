@@ -5,6 +5,7 @@ use std::ops::Range;
 use std::path::Path;
 
 use glam::Vec3;
+use pipeline::hierarchy::{Figure, Humanoid, Pose, RobotArm};
 use pipeline::mesh::{BuiltinMesh, Mesh};
 use pipeline::scene::{
     Camera, ColorSource, CullMode, DepthTest, Light, MAX_CAPTURE_SAMPLES, MAX_VIEWPORT_SIDE,
@@ -15,8 +16,8 @@ use pipeline::texture::{Filter, Mipmap, Texture, Wrap};
 use toml::Spanned;
 
 use super::raw::{
-    RawColor, RawLight, RawMaterial, RawMesh, RawMeshTable, RawObject, RawProjection, RawRender,
-    RawScale, RawScene, RawShadow, RawVec3,
+    RawColor, RawFigure, RawLight, RawMaterial, RawMesh, RawMeshTable, RawObject, RawProjection,
+    RawRender, RawScale, RawScene, RawShadow, RawVec3,
 };
 use super::{Diagnostic, Diagnostics, SceneSpec};
 
@@ -138,6 +139,7 @@ pub fn scene(
         .collect();
     let lights = s.lights.iter().filter_map(|l| light(&mut c, l)).collect();
     let shadow = s.shadow.as_ref().and_then(|sh| shadow(&mut c, sh));
+    let figures = s.figures.iter().filter_map(|f| figure(&mut c, f)).collect();
     if c.found.is_empty() {
         Ok(SceneSpec {
             scene: Scene {
@@ -146,6 +148,7 @@ pub fn scene(
                 projection,
                 lights,
                 shadow,
+                figures,
             },
             settings,
         })
@@ -797,5 +800,71 @@ fn shadow(c: &mut Checker<'_>, sh: &Spanned<RawShadow>) -> Option<PlanarShadow> 
         light,
         plane_y,
         color,
+    })
+}
+
+fn figure(c: &mut Checker<'_>, f: &Spanned<RawFigure>) -> Option<Figure> {
+    let raw = f.get_ref();
+    let mut angle = |key: &str, v: &Option<Spanned<f64>>| {
+        v.as_ref().and_then(|v| c.finite(key, v)).unwrap_or(0.0)
+    };
+    let (pose, misplaced): (_, Vec<(&str, bool)>) = match raw.kind.get_ref().as_str() {
+        "robot_arm" => (
+            Pose::RobotArm(RobotArm {
+                base: angle("base", &raw.base),
+                lower: angle("lower", &raw.lower),
+                upper: angle("upper", &raw.upper),
+            }),
+            vec![("torso", raw.torso.is_some()), ("head", raw.head.is_some())],
+        ),
+        "humanoid" => (
+            Pose::Humanoid(Humanoid {
+                torso: angle("torso", &raw.torso),
+                head: angle("head", &raw.head),
+                left_upper_arm: angle("left_upper_arm", &raw.left_upper_arm),
+                left_lower_arm: angle("left_lower_arm", &raw.left_lower_arm),
+                right_upper_arm: angle("right_upper_arm", &raw.right_upper_arm),
+                right_lower_arm: angle("right_lower_arm", &raw.right_lower_arm),
+                left_upper_leg: angle("left_upper_leg", &raw.left_upper_leg),
+                left_lower_leg: angle("left_lower_leg", &raw.left_lower_leg),
+                right_upper_leg: angle("right_upper_leg", &raw.right_upper_leg),
+                right_lower_leg: angle("right_lower_leg", &raw.right_lower_leg),
+            }),
+            vec![
+                ("base", raw.base.is_some()),
+                ("lower", raw.lower.is_some()),
+                ("upper", raw.upper.is_some()),
+            ],
+        ),
+        other => {
+            c.error(
+                raw.kind.span(),
+                format!(
+                    "`kind` of a figure must be \"robot_arm\" or \"humanoid\", got \"{other}\""
+                ),
+            );
+            return None;
+        }
+    };
+    for (key, present) in misplaced {
+        if present {
+            c.error(
+                f.span(),
+                format!("`{key}` is not a joint of a {}", raw.kind.get_ref()),
+            );
+        }
+    }
+    let translate = raw
+        .translate
+        .as_ref()
+        .and_then(|v| c.vec3("translate", v))
+        .unwrap_or(Vec3::ZERO);
+    Some(Figure {
+        name: raw
+            .name
+            .clone()
+            .unwrap_or_else(|| raw.kind.get_ref().replace('_', " ")),
+        pose,
+        translate,
     })
 }

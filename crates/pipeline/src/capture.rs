@@ -337,6 +337,8 @@ pub struct FrameCapture {
     /// The lighting of each face (a row per primitive, evaluated once at its centroid), with
     /// flat shading; empty otherwise.
     pub face_shading: Vec<crate::shade::ShadeTerms>,
+    /// The figures' traversal with the matrix stack (push, visit with the composite, pop).
+    pub hierarchy: Vec<crate::hierarchy::Step>,
     /// One record per input triangle.
     pub primitives: Vec<PrimitiveRecord>,
     /// The triangles that were rasterized, in order (clipping may split a primitive into several).

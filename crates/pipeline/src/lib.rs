@@ -8,7 +8,7 @@
 //! | module | stage |
 //! |---|---|
 //! | [`transform`] | every matrix of the course, with its formula |
-//! | [`mesh`], [`scene`] | what is drawn: meshes, objects, camera, projection, settings |
+//! | [`mesh`], [`scene`], [`hierarchy`] | what is drawn: meshes, objects, figures, camera, projection, settings |
 //! | [`vertex`] | model → world → eye → clip → NDC → window, per vertex |
 //! | [`clip`] | clipping in homogeneous clip space |
 //! | [`raster`] | edge functions, top-left rule, multisampling, depth test, barycentrics |
@@ -19,6 +19,7 @@
 
 pub mod capture;
 pub mod clip;
+pub mod hierarchy;
 pub mod mesh;
 pub mod overlay;
 pub mod raster;

@@ -70,15 +70,28 @@ pub fn render_timed(
     if !problems.is_empty() {
         return Err(RenderError::Invalid(problems));
     }
-    if scene.shadow.is_some() {
-        // The shadow pass: the same pipeline over the scene's objects and their shadows.
+    if scene.shadow.is_some() || !scene.figures.is_empty() {
+        // Figures and the shadow pass become plain objects; the same pipeline draws them all.
+        let (objects, steps) = scene.drawn_objects();
         let expanded = Scene {
-            objects: scene.drawn_objects(),
+            objects,
             shadow: None,
+            figures: Vec::new(),
             ..scene.clone()
         };
-        return render_timed(&expanded, settings);
+        return render_stages(&expanded, settings).map(|(mut c, t)| {
+            c.hierarchy = steps;
+            (c, t)
+        });
     }
+    render_stages(scene, settings)
+}
+
+/// The stages, in order, over a scene whose figures and shadows are already plain objects.
+fn render_stages(
+    scene: &Scene,
+    settings: &RenderSettings,
+) -> Result<(FrameCapture, StageTimes), RenderError> {
     let matrices = frame_matrices(scene, settings)?;
     let mut times = StageTimes::default();
 
@@ -165,6 +178,7 @@ pub fn render_timed(
         vertices,
         vertex_shading,
         face_shading,
+        hierarchy: Vec::new(),
         primitives,
         triangles,
         samples,

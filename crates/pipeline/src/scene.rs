@@ -611,21 +611,30 @@ pub struct Scene {
     pub lights: Vec<Light>,
     /// A planar projected shadow, drawn as a second pass.
     pub shadow: Option<PlanarShadow>,
+    /// Articulated figures (robot arm, humanoid), drawn part by part by a matrix-stack traversal.
+    pub figures: Vec<crate::hierarchy::Figure>,
 }
 
 impl Scene {
-    /// The objects drawn: the scene's own, then (with a planar shadow) the shadow pass, one
-    /// unlit object `shadow of …` per object that casts one.
+    /// The objects drawn and the figures' traversal: the scene's own objects, then every part
+    /// of every figure (depth-first, with a matrix stack), then (with a planar shadow) the shadow
+    /// pass, one unlit object `shadow of …` per object that casts one.
     #[must_use]
-    pub fn drawn_objects(&self) -> Vec<Object> {
+    pub fn drawn_objects(&self) -> (Vec<Object>, Vec<crate::hierarchy::Step>) {
         let mut out = self.objects.clone();
+        let mut steps = Vec::new();
+        for figure in &self.figures {
+            steps.extend(crate::hierarchy::traverse(figure, &mut out));
+        }
         if let Some(shadow) = &self.shadow {
             let m = shadow.matrix();
-            for o in self.objects.iter().filter(|o| o.casts_shadow) {
+            let casting: Vec<Object> = out.iter().filter(|o| o.casts_shadow).cloned().collect();
+            for o in casting {
                 let mut s = o.clone();
                 s.name = format!("shadow of {}", o.name);
                 s.parent = Some(match &o.parent {
-                    Some(p) => NamedMatrix::new("M_shadow·parent", &m.formula, m.matrix * p.matrix),
+                    Some(p) => NamedMatrix::new("M_shadow·parent", &m.formula, m.matrix * p.matrix)
+                        .with_factors(vec![m.clone(), p.clone()]),
                     None => m.clone(),
                 });
                 s.color = ColorSource::Uniform(shadow.color);
@@ -635,7 +644,7 @@ impl Scene {
                 out.push(s);
             }
         }
-        out
+        (out, steps)
     }
 
     /// The view matrix `LookAt(eye, at, up)`.

@@ -81,6 +81,45 @@ fn matrices(ui: &mut Ui, capture: &FrameCapture, lang: Lang) {
     );
     ui.add_space(6.0);
     matrix(ui, &m.viewport, lang, "viewport");
+    if !capture.hierarchy.is_empty() {
+        ui.add_space(6.0);
+        hierarchy(ui, capture, lang);
+    }
+}
+
+/// The figures' traversal as the matrix stack sees it.
+fn hierarchy(ui: &mut Ui, capture: &FrameCapture, lang: Lang) {
+    use pipeline::hierarchy::Step;
+    ui.label(
+        RichText::new(lang.tr("Matrix stack, depth-first", "矩阵栈（深度优先遍历）")).strong(),
+    );
+    for (i, step) in capture.hierarchy.iter().enumerate() {
+        match step {
+            Step::Push { depth } => {
+                ui.label(
+                    RichText::new(format!("{}push(M)  → {depth}", "  ".repeat(depth - 1)))
+                        .monospace()
+                        .weak(),
+                );
+            }
+            Step::Pop { depth } => {
+                ui.label(
+                    RichText::new(format!("{}M = pop() → {depth}", "  ".repeat(*depth)))
+                        .monospace()
+                        .weak(),
+                );
+            }
+            Step::Visit {
+                node, composite, ..
+            } => {
+                egui::CollapsingHeader::new(
+                    RichText::new(format!("M({node}) = M·local")).monospace(),
+                )
+                .id_salt(("stack", i))
+                .show(ui, |ui| matrix(ui, composite, lang, &format!("stack{i}")));
+            }
+        }
+    }
 }
 
 fn vertices(ui: &mut Ui, session: &Session, capture: &FrameCapture) -> Vec<Command> {

@@ -51,6 +51,11 @@ pub fn ui(ui: &mut Ui, session: &Session) -> Option<Command> {
         egui::CollapsingHeader::new(RichText::new(lang.tr("Rasterizer settings", "光栅化设置")).strong()).default_open(true).show(ui, |ui| {
             render(ui, &mut spec.settings, lang);
         });
+        if !spec.scene.figures.is_empty() {
+            egui::CollapsingHeader::new(RichText::new(lang.tr("Joint angles", "关节角")).strong())
+                .default_open(true)
+                .show(ui, |ui| figures(ui, &mut spec.scene.figures, lang));
+        }
         egui::CollapsingHeader::new(RichText::new(lang.tr("Objects", "物体")).strong()).default_open(false).show(ui, |ui| {
             for (i, o) in spec.scene.objects.iter_mut().enumerate() {
                 egui::CollapsingHeader::new(&o.name).id_salt(("object", i)).show(ui, |ui| {
@@ -309,4 +314,37 @@ fn texture_sampling(ui: &mut Ui, s: &mut pipeline::scene::RenderSettings, lang: 
         ));
     ui.add(Slider::new(&mut smp.lod_bias, -4.0..=4.0).text(lang.tr("mip bias", "mip 偏移")))
         .on_hover_text("λ + bias");
+}
+
+fn figures(ui: &mut Ui, figures: &mut [pipeline::hierarchy::Figure], lang: Lang) {
+    use pipeline::hierarchy::Pose;
+    for f in figures {
+        ui.label(RichText::new(&f.name).strong());
+        let joints: Vec<(&str, &mut f32)> = match &mut f.pose {
+            Pose::RobotArm(a) => vec![
+                (lang.tr("base θ_b (y)", "支架 θ_b (y)"), &mut a.base),
+                (lang.tr("lower arm θ_la (z)", "下臂 θ_la (z)"), &mut a.lower),
+                (lang.tr("upper arm θ_ua (z)", "上臂 θ_ua (z)"), &mut a.upper),
+            ],
+            Pose::Humanoid(h) => vec![
+                (lang.tr("torso (y)", "躯干 (y)"), &mut h.torso),
+                (lang.tr("head (y)", "头 (y)"), &mut h.head),
+                (lang.tr("left upper arm", "左上臂"), &mut h.left_upper_arm),
+                (lang.tr("left lower arm", "左下臂"), &mut h.left_lower_arm),
+                (lang.tr("right upper arm", "右上臂"), &mut h.right_upper_arm),
+                (lang.tr("right lower arm", "右下臂"), &mut h.right_lower_arm),
+                (lang.tr("left upper leg", "左大腿"), &mut h.left_upper_leg),
+                (lang.tr("left lower leg", "左小腿"), &mut h.left_lower_leg),
+                (lang.tr("right upper leg", "右大腿"), &mut h.right_upper_leg),
+                (lang.tr("right lower leg", "右小腿"), &mut h.right_lower_leg),
+            ],
+        };
+        for (name, angle) in joints {
+            ui.add(Slider::new(angle, -180.0..=180.0).text(name).suffix("°"))
+                .on_hover_text(lang.tr(
+                    "The joint's rotation: every part below it in the tree follows (M ← M·local).",
+                    "关节旋转：树中其下的所有部件随之运动（M ← M·local）。",
+                ));
+        }
+    }
 }

@@ -2,6 +2,7 @@
 //! the course notes' formulas and values computed by hand.
 
 mod clip;
+mod hierarchy;
 mod raster;
 mod shade;
 mod support;

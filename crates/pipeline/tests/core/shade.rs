@@ -200,6 +200,7 @@ fn lit_sphere(frequency: Frequency) -> pipeline::capture::FrameCapture {
             near: 0.5,
             far: 20.0,
         },
+        figures: Vec::new(),
         shadow: None,
         lights: vec![
             Light::Ambient {
@@ -318,6 +319,7 @@ fn the_shadow_pass_projects_every_vertex_by_the_closed_form() {
         },
         projection: Projection::default(),
         lights: Vec::new(),
+        figures: Vec::new(),
         shadow: Some(PlanarShadow {
             light,
             plane_y: 0.0,

@@ -42,6 +42,7 @@ pub fn pixel_scene(w: u32, h: u32, triangles: &[[Vec2; 3]]) -> (Scene, RenderSet
             near: 0.0,
             far: 2.0,
         },
+        figures: Vec::new(),
         shadow: None,
         lights: Vec::new(),
     };
