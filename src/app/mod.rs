@@ -217,6 +217,11 @@ impl PipelensApp {
         } else {
             let c = self.pixel_view.toolbar(ui, &sel, &capture.buffers(), lang);
             self.commands.extend(c);
+            if sel.buffer == pipeline::capture::BufferKind::Depth
+                && let Some(c) = PixelView::depth_controls(ui, &sel, capture, lang)
+            {
+                self.commands.push(c);
+            }
             self.comparison_choice(ui);
             let c = if sel.comparison.is_some() {
                 self.compare_view.ui(ui, &self.session)

@@ -352,6 +352,17 @@ pub struct Selection {
     pub comparison: Option<Comparison>,
     /// The profile line `[x0, y0, x1, y1]` in image pixels (y down), if one is drawn.
     pub profile: Option<[f32; 4]>,
+    /// How the depth buffer is drawn.
+    pub depth_view: DepthView,
+}
+
+/// How the depth buffer is drawn: window depth or eye distance, over a range.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct DepthView {
+    /// Show the eye distance (linear) instead of the window depth z_w.
+    pub linear: bool,
+    /// Black at the first value, white at the second; `None`: the nearest and farthest present.
+    pub range: Option<[f32; 2]>,
 }
 
 impl Default for Selection {
@@ -367,6 +378,7 @@ impl Default for Selection {
             transition: 1.0,
             comparison: None,
             profile: None,
+            depth_view: DepthView::default(),
         }
     }
 }
@@ -404,6 +416,8 @@ pub enum Command {
     SetComparison(Option<Comparison>),
     /// Draw (or clear) the profile line.
     SetProfile(Option<[f32; 4]>),
+    /// Change how the depth buffer is drawn.
+    SetDepthView(DepthView),
 }
 
 /// The state of the app.
@@ -580,6 +594,7 @@ impl Session {
                 }
             }
             Command::SetProfile(p) => sel.profile = p,
+            Command::SetDepthView(d) => sel.depth_view = d,
         }
     }
 

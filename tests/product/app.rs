@@ -178,3 +178,22 @@ fn comparing_shading_frequencies_side_by_side_with_a_profile() {
         .collect();
     assert!(profiles.iter().all(|&n| n > 10), "{profiles:?}");
 }
+
+#[test]
+fn the_depth_buffer_can_be_linearized_and_its_range_set() {
+    let mut h = harness();
+    h.run();
+    h.get_by_label("Depth").click();
+    h.run();
+    h.get_by_label("linear: eye distance").click();
+    h.run();
+    assert!(h.state().session.selection.depth_view.linear);
+    assert_eq!(
+        h.state().session.selection.depth_view.range,
+        None,
+        "auto range after switching"
+    );
+    h.get_by_label("auto range").click();
+    h.run();
+    assert_eq!(h.state().session.selection.depth_view.range, None);
+}

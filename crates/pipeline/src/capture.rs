@@ -440,18 +440,18 @@ impl FrameCapture {
     /// The image of one buffer (see [`BufferKind`] for each colour mapping).
     #[must_use]
     pub fn image(&self, kind: BufferKind) -> RgbaImage {
+        if kind == BufferKind::Depth {
+            return self.depth_image(false, None);
+        }
         let (w, h) = (self.width(), self.height());
         let px = &self.pixels;
         let samples = self.settings.samples.count() as f32;
-        let depth_range = self.depth_range().unwrap_or([0.0, 1.0]);
-        let span = (depth_range[1] - depth_range[0]).max(f32::EPSILON);
         ImageBuffer::from_fn(w, h, |x, y| {
             let i = (y * w + x) as usize;
             let covered = px.primitive[i] != NONE;
             let rgb = match kind {
                 BufferKind::Color => px.color[i].map(to_u8),
-                BufferKind::Depth if covered => [to_u8((px.depth[i] - depth_range[0]) / span); 3],
-                BufferKind::Depth => [255; 3],
+                BufferKind::Depth => [255; 3], // drawn by depth_image
                 BufferKind::Coverage => [to_u8(f32::from(px.coverage[i]) / samples); 3],
                 BufferKind::PrimitiveId if covered => hue_color(px.primitive[i]),
                 BufferKind::BaryPerspective if covered => px.bary_perspective[i].map(to_u8),
@@ -469,6 +469,43 @@ impl FrameCapture {
                 },
             };
             Rgba([rgb[0], rgb[1], rgb[2], 255])
+        })
+    }
+
+    /// The eye-space distance along −z of window depth `z_w` (undoing the projection's depth
+    /// mapping): perspective `d = 2·f·n / ((f + n) − z_ndc·(f − n))` with `z_ndc = 2·z_w − 1`;
+    /// parallel `d = n + z_w·(f − n)`.
+    #[must_use]
+    pub fn eye_depth(&self, z_w: f32) -> f32 {
+        let [.., n, f] = self.projection.bounds(self.settings.aspect());
+        if self.projection.is_perspective() {
+            let z_ndc = 2.0 * z_w - 1.0;
+            2.0 * f * n / ((f + n) - z_ndc * (f - n))
+        } else {
+            n + z_w * (f - n)
+        }
+    }
+
+    /// The depth buffer as grey over `range` (black at its start, white at its end), of window
+    /// depth `z_w`, or of eye distance ([`Self::eye_depth`]) when `linear`. Without a range, the
+    /// nearest and farthest covered values. Background white.
+    #[must_use]
+    pub fn depth_image(&self, linear: bool, range: Option<[f32; 2]>) -> RgbaImage {
+        let value = |z: f32| if linear { self.eye_depth(z) } else { z };
+        let [lo, hi] = range.unwrap_or_else(|| {
+            self.depth_range()
+                .map_or([0.0, 1.0], |[a, b]| [value(a), value(b)])
+        });
+        let span = (hi - lo).abs().max(f32::EPSILON);
+        let w = self.width();
+        ImageBuffer::from_fn(w, self.height(), |x, y| {
+            let i = (y * w + x) as usize;
+            let g = if self.pixels.primitive[i] == NONE {
+                255
+            } else {
+                to_u8((value(self.pixels.depth[i]) - lo) / span)
+            };
+            Rgba([g, g, g, 255])
         })
     }
 

@@ -146,12 +146,17 @@ pub fn fate_color(f: &pipeline::capture::Fate) -> Color32 {
 }
 
 /// A capture's buffer uploaded as an egui texture, uploaded again only when the capture (its
-/// generation) or the buffer changes.
+/// generation), the buffer or the way it is drawn (`variant`) changes.
 #[derive(Default)]
-pub struct BufferTexture(Option<(u64, pipeline::capture::BufferKind, egui::TextureHandle)>);
+pub struct BufferTexture(
+    Option<(
+        (u64, pipeline::capture::BufferKind, u64),
+        egui::TextureHandle,
+    )>,
+);
 
 impl BufferTexture {
-    /// The texture of `kind` from `capture` (generation `generation`).
+    /// The texture of `kind` from `capture` (generation `generation`), drawn by `capture.image`.
     pub fn get(
         &mut self,
         ctx: &egui::Context,
@@ -161,17 +166,30 @@ impl BufferTexture {
         capture: &pipeline::capture::FrameCapture,
         options: egui::TextureOptions,
     ) -> egui::TextureHandle {
-        if let Some((g, k, t)) = &self.0
-            && *g == generation
-            && *k == kind
+        self.get_with(ctx, name, (generation, kind, 0), options, || {
+            capture.image(kind)
+        })
+    }
+
+    /// The texture for `key`, made by `make` when the key changed.
+    pub fn get_with(
+        &mut self,
+        ctx: &egui::Context,
+        name: &str,
+        key: (u64, pipeline::capture::BufferKind, u64),
+        options: egui::TextureOptions,
+        make: impl FnOnce() -> image::RgbaImage,
+    ) -> egui::TextureHandle {
+        if let Some((k, t)) = &self.0
+            && *k == key
         {
             return t.clone();
         }
-        let img = capture.image(kind);
+        let img = make();
         let size = [img.width() as usize, img.height() as usize];
         let color = egui::ColorImage::from_rgba_unmultiplied(size, img.as_raw());
         let t = ctx.load_texture(name, color, options);
-        self.0 = Some((generation, kind, t.clone()));
+        self.0 = Some((key, t.clone()));
         t
     }
 }

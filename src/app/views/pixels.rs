@@ -110,18 +110,60 @@ impl PixelView {
         cmds
     }
 
+    /// The depth buffer's drawing: linear or not, and its range.
+    pub fn depth_controls(
+        ui: &mut Ui,
+        sel: &Selection,
+        capture: &FrameCapture,
+        lang: Lang,
+    ) -> Option<Command> {
+        let mut view = sel.depth_view;
+        ui.horizontal_wrapped(|ui| {
+            ui.checkbox(&mut view.linear, lang.tr("linear: eye distance", "线性：相机距离"))
+                .on_hover_text(lang.tr(
+                    "z_w is not linear in distance: d = 2fn/((f+n) − z_ndc·(f−n)). Most of [0, 1] goes to the near part of the frustum.",
+                    "z_w 与距离不成线性：d = 2fn/((f+n) − z_ndc·(f−n))。[0, 1] 的大部分分给了视锥体的近处。",
+                ));
+            let value = |z: f32| if view.linear { capture.eye_depth(z) } else { z };
+            let auto = capture.depth_range().map_or([0.0, 1.0], |[a, b]| [value(a), value(b)]);
+            let mut range = view.range.unwrap_or(auto);
+            let speed = ((range[1] - range[0]).abs() / 200.0).max(1e-5);
+            let a = ui.add(egui::DragValue::new(&mut range[0]).speed(speed).max_decimals(5).prefix(lang.tr("black at ", "黑：")));
+            let b = ui.add(egui::DragValue::new(&mut range[1]).speed(speed).max_decimals(5).prefix(lang.tr("white at ", "白：")));
+            if a.changed() || b.changed() {
+                view.range = Some(range);
+            }
+            if ui.button(lang.tr("auto range", "自动范围")).clicked() {
+                view.range = None;
+            }
+            if view.linear != sel.depth_view.linear {
+                view.range = None;
+            }
+        });
+        (view != sel.depth_view).then_some(Command::SetDepthView(view))
+    }
+
     /// The image view itself.
     pub fn ui(&mut self, ui: &mut Ui, session: &Session, capture: &FrameCapture) -> Vec<Command> {
         let sel = &session.selection;
         let lang = session.lang;
         let mut cmds = Vec::new();
-        let texture = self.texture.get(
+        let depth = sel.depth_view;
+        let variant = if sel.buffer == BufferKind::Depth {
+            let [a, b] = depth.range.unwrap_or([f32::NAN; 2]);
+            (u64::from(a.to_bits()) << 32 | u64::from(b.to_bits())) ^ u64::from(depth.linear)
+        } else {
+            0
+        };
+        let texture = self.texture.get_with(
             ui.ctx(),
             "pixel-view",
-            session.shown_generation,
-            sel.buffer,
-            capture,
+            (session.shown_generation, sel.buffer, variant),
             TextureOptions::NEAREST,
+            || match sel.buffer {
+                BufferKind::Depth => capture.depth_image(depth.linear, depth.range),
+                kind => capture.image(kind),
+            },
         );
         let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
         response.widget_info(|| {
@@ -257,9 +299,11 @@ fn pixel_tooltip(ui: &mut Ui, capture: &FrameCapture, x: u32, y: u32, lang: Lang
         capture.settings.samples.count()
     ));
     ui.label(format!(
-        "{} z_w: {}",
+        "{} z_w: {} ({} {})",
         lang.tr("depth", "深度"),
-        num(px.depth[i])
+        num(px.depth[i]),
+        lang.tr("eye distance", "相机距离"),
+        num(capture.eye_depth(px.depth[i]))
     ));
     if px.primitive[i] != NONE {
         let b = px.bary_perspective[i];

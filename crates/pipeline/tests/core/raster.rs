@@ -617,3 +617,41 @@ fn supersampling_shades_each_sample_where_multisampling_shades_the_centre() {
         "the two differ here"
     );
 }
+
+#[test]
+fn linearized_depth_is_the_eye_distance() {
+    // Two parallel planes at eye distances 2 and 4 (near 0.5, far 200): the window depth is
+    // non-linear, the eye distance recovered from it is exact.
+    let quad = |z: f32, x0: f32| {
+        [
+            Vec3::new(x0, -1.0, z),
+            Vec3::new(x0 + 0.5, -1.0, z),
+            Vec3::new(x0 + 0.5, 1.0, z),
+            Vec3::new(x0, 1.0, z),
+        ]
+    };
+    let positions: Vec<Vec3> = quad(-2.0, -0.6)
+        .into_iter()
+        .chain(quad(-4.0, 0.4))
+        .collect();
+    let mesh = mesh_of(
+        positions,
+        vec![Vec3::ONE; 8],
+        vec![[0, 1, 2], [0, 2, 3], [4, 5, 6], [4, 6, 7]],
+    );
+    let (scene, settings) = camera_scene(mesh, 64);
+    let c = render(&scene, &settings);
+    for (x, d) in [(26u32, 2.0f32), (37, 4.0)] {
+        let i = (32 * 64 + x) as usize;
+        assert!(c.pixels.coverage[i] > 0, "pixel {x} covered");
+        assert!(
+            (c.eye_depth(c.pixels.depth[i]) - d).abs() < 1e-3,
+            "{} vs {d}",
+            c.eye_depth(c.pixels.depth[i])
+        );
+    }
+    // Over the range [2, 4], linear depth maps the near plane to black, the far one to white.
+    let img = c.depth_image(true, Some([2.0, 4.0]));
+    assert_eq!(img.get_pixel(26, 32).0[0], 0);
+    assert_eq!(img.get_pixel(37, 32).0[0], 255);
+}

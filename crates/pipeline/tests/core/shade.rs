@@ -365,5 +365,8 @@ fn the_shadow_pass_projects_every_vertex_by_the_closed_form() {
 fn render_is_a_pure_function_same_inputs_same_capture() {
     let a = lit_sphere(Frequency::Phong);
     let b = lit_sphere(Frequency::Phong);
-    assert!(a == b, "two renders of the same scene must be identical, buffer for buffer");
+    assert!(
+        a == b,
+        "two renders of the same scene must be identical, buffer for buffer"
+    );
 }
