@@ -203,6 +203,23 @@ impl PixelView {
                 .on_hover_ui_at_pointer(|ui| pixel_tooltip(ui, capture, c, y, lang));
             if response.clicked() {
                 cmds.push(Command::SelectPixel(Some((c, y))));
+                // Clicking a triangle selects its vertex nearest the click (its vertex-table row).
+                let i = ((capture.height() - 1 - y) * capture.width() + c) as usize;
+                if let Some(prim) = capture.primitives.get(capture.pixels.primitive[i] as usize) {
+                    let click = view.to_image(pos);
+                    let nearest = prim.vertices.iter().copied().min_by(|a, b| {
+                        let d = |r: u32| {
+                            capture.vertices[r as usize]
+                                .window
+                                .map_or(f32::INFINITY, |w| {
+                                    let p = capture.window_to_image(w);
+                                    (Vec2::new(p[0], p[1]) - click).length()
+                                })
+                        };
+                        d(*a).total_cmp(&d(*b))
+                    });
+                    cmds.push(Command::SelectVertex(nearest));
+                }
             }
         }
         cmds
