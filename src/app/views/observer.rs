@@ -15,6 +15,40 @@ use crate::app::session::{Command, Orbit, Session};
 #[derive(Default)]
 pub struct ObserverView {
     texture: super::BufferTexture,
+    parts: Parts,
+}
+
+/// Which parts of the viewing camera the observer view draws, and in which colours.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Parts {
+    /// The camera frame u, v, n at the eye.
+    pub axes: bool,
+    /// The near plane's rectangle.
+    pub near: bool,
+    /// The far plane's rectangle.
+    pub far: bool,
+    /// The frustum's side edges (and the rays from the eye to the near corners).
+    pub sides: bool,
+    /// The polygons that clipping produced.
+    pub clipped: bool,
+    /// The near plane's colour.
+    pub near_color: Color32,
+    /// The far plane's and the sides' colour.
+    pub far_color: Color32,
+}
+
+impl Default for Parts {
+    fn default() -> Self {
+        Self {
+            axes: true,
+            near: true,
+            far: true,
+            sides: true,
+            clipped: true,
+            near_color: palette::NEAR,
+            far_color: palette::FAR,
+        }
+    }
 }
 
 impl ObserverView {
@@ -29,6 +63,26 @@ impl ObserverView {
             ))
             .strong(),
         );
+        ui.menu_button(lang.tr("Show…", "显示…"), |ui| {
+            let p = &mut self.parts;
+            ui.checkbox(
+                &mut p.axes,
+                lang.tr("camera frame u, v, n", "相机标架 u, v, n"),
+            );
+            ui.checkbox(
+                &mut p.clipped,
+                lang.tr("clipped polygons", "裁剪后的多边形"),
+            );
+            ui.checkbox(&mut p.sides, lang.tr("frustum sides", "视锥侧棱"));
+            ui.horizontal(|ui| {
+                ui.checkbox(&mut p.near, lang.tr("near plane", "近平面"));
+                ui.color_edit_button_srgba(&mut p.near_color);
+            });
+            ui.horizontal(|ui| {
+                ui.checkbox(&mut p.far, lang.tr("far plane", "远平面"));
+                ui.color_edit_button_srgba(&mut p.far_color);
+            });
+        });
         let Some(obs) = &session.observer else {
             ui.label(lang.tr("(no observer image)", "（无观察者图像）"));
             return cmds;
@@ -70,39 +124,47 @@ impl ObserverView {
             m: obs.matrices.projection.matrix * obs.matrices.view.matrix,
             rect,
         };
-        draw_viewing_camera(&painter, &cam, main, lang);
+        draw_viewing_camera(&painter, &cam, main, &self.parts, lang);
         cmds
     }
 }
 
 /// The viewing camera in world coordinates: its u, v, n axes at the eye, its frustum (near
 /// plane, far plane, edges), and the polygons clipping produced.
-fn draw_viewing_camera(painter: &egui::Painter, cam: &Projector, main: &FrameCapture, lang: Lang) {
+fn draw_viewing_camera(
+    painter: &egui::Painter,
+    cam: &Projector,
+    main: &FrameCapture,
+    parts: &Parts,
+    lang: Lang,
+) {
     let c = main.camera;
     let Ok(frame) = transform::camera_frame(c.eye, c.at, c.up) else {
         return;
     };
     let [.., n, _] = main.projection.bounds(main.settings.aspect());
     let scale = (c.at - c.eye).length().max(n) * 0.25;
-    for (axis, color, label) in [
-        (frame.u, palette::X, "u"),
-        (frame.v, palette::Y, "v"),
-        (frame.n, palette::Z, "n"),
-    ] {
-        cam.line(
-            painter,
-            c.eye,
-            c.eye + axis * scale,
-            Stroke::new(2.5, color),
-        );
-        if let Some(p) = cam.project(c.eye + axis * scale * 1.15) {
-            painter.text(
-                p,
-                Align2::CENTER_CENTER,
-                label,
-                FontId::proportional(16.0),
-                color,
+    if parts.axes {
+        for (axis, color, label) in [
+            (frame.u, palette::X, "u"),
+            (frame.v, palette::Y, "v"),
+            (frame.n, palette::Z, "n"),
+        ] {
+            cam.line(
+                painter,
+                c.eye,
+                c.eye + axis * scale,
+                Stroke::new(2.5, color),
             );
+            if let Some(p) = cam.project(c.eye + axis * scale * 1.15) {
+                painter.text(
+                    p,
+                    Align2::CENTER_CENTER,
+                    label,
+                    FontId::proportional(16.0),
+                    color,
+                );
+            }
         }
     }
     if let Some(p) = cam.project(c.eye) {
@@ -122,34 +184,42 @@ fn draw_viewing_camera(painter: &egui::Painter, cam: &Projector, main: &FrameCap
     let w = |p: Vec3| to_world.transform_point3(p);
     for i in 0..4 {
         let j = (i + 1) % 4;
-        cam.line(
-            painter,
-            w(near[i]),
-            w(near[j]),
-            Stroke::new(2.0, palette::NEAR),
-        );
-        cam.line(
-            painter,
-            w(far[i]),
-            w(far[j]),
-            Stroke::new(1.5, palette::FAR),
-        );
-        cam.line(
-            painter,
-            w(near[i]),
-            w(far[i]),
-            Stroke::new(1.0, palette::FAR),
-        );
-        if main.projection.is_perspective() {
+        if parts.near {
             cam.line(
                 painter,
-                c.eye,
                 w(near[i]),
-                Stroke::new(1.0, palette::NEAR.gamma_multiply(0.5)),
+                w(near[j]),
+                Stroke::new(2.0, parts.near_color),
             );
         }
+        if parts.far {
+            cam.line(
+                painter,
+                w(far[i]),
+                w(far[j]),
+                Stroke::new(1.5, parts.far_color),
+            );
+        }
+        if parts.sides {
+            cam.line(
+                painter,
+                w(near[i]),
+                w(far[i]),
+                Stroke::new(1.0, parts.far_color),
+            );
+            if main.projection.is_perspective() {
+                cam.line(
+                    painter,
+                    c.eye,
+                    w(near[i]),
+                    Stroke::new(1.0, parts.near_color.gamma_multiply(0.5)),
+                );
+            }
+        }
     }
-    draw_clipped(painter, cam, main);
+    if parts.clipped {
+        draw_clipped(painter, cam, main);
+    }
 }
 
 /// Clipped polygons, from clip space back to world: (P·V)⁻¹ applied to their clip coordinates.
