@@ -159,6 +159,18 @@ pub struct RawObject {
     /// `"checkerboard"`, `"uv_grid"`, `"mip_levels"` or a path to a PNG or JPEG file.
     pub texture: Option<Spanned<String>>,
     pub casts_shadow: Option<bool>,
+    /// `{ texture = "bumps" | path, strength = … }`.
+    pub bump: Option<Spanned<RawBump>>,
+    /// A tangent-space normal map: a PNG/JPEG path.
+    pub normal_map: Option<Spanned<String>>,
+}
+
+/// `bump = { texture = …, strength = … }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawBump {
+    pub texture: Spanned<String>,
+    pub strength: Option<Spanned<f64>>,
 }
 
 /// A mesh as written.

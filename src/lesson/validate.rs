@@ -12,7 +12,7 @@ use pipeline::scene::{
     Material, Object, PlanarShadow, Projection, RenderSettings, Samples, Scene,
 };
 use pipeline::shade::{Frequency, Reflection};
-use pipeline::texture::{Filter, Mipmap, Texture, Wrap};
+use pipeline::texture::{Filter, Mipmap, SurfaceDetail, Texture, Wrap};
 use toml::Spanned;
 
 use super::raw::{
@@ -428,6 +428,37 @@ fn object(
     if let Some(b) = raw.casts_shadow {
         object.casts_shadow = b;
     }
+    if let Some(bump) = &raw.bump {
+        let b = bump.get_ref();
+        let strength = b
+            .strength
+            .as_ref()
+            .and_then(|v| c.finite("strength", v))
+            .unwrap_or(1.0);
+        object.detail = texture(c, &b.texture, base).map(|t| SurfaceDetail::Bump {
+            height: std::sync::Arc::new(t),
+            strength,
+        });
+    }
+    if let Some(map) = &raw.normal_map {
+        if raw.bump.is_some() {
+            c.error(
+                map.span(),
+                "an object takes `bump` or `normal_map`, not both",
+            );
+        }
+        object.detail =
+            texture(c, map, base).map(|t| SurfaceDetail::Normal(std::sync::Arc::new(t)));
+    }
+    if object.detail.is_some() && object.mesh.uvs.is_empty() {
+        c.error(
+            o.span(),
+            format!(
+                "the mesh `{}` has no texture coordinates for bump or normal mapping",
+                object.mesh.name
+            ),
+        );
+    }
     if let Some(t) = &raw.texture {
         object.texture = texture(c, t, base).map(std::sync::Arc::new);
         if object.texture.is_some() && object.mesh.uvs.is_empty() {
@@ -707,12 +738,13 @@ fn texture(c: &mut Checker<'_>, t: &Spanned<String>, base: &Path) -> Option<Text
         "checkerboard" => Some(Texture::checkerboard(512, 16)),
         "uv_grid" => Some(Texture::uv_grid(512)),
         "mip_levels" => Some(Texture::mip_levels(512)),
+        "bumps" => Some(Texture::bumps(512, 8)),
         path => match Texture::load(&base.join(path)) {
             Ok(t) => Some(t),
             Err(e) => {
                 c.error(
                     t.span(),
-                    format!("{e} (a texture is \"checkerboard\", \"uv_grid\", \"mip_levels\" or a PNG/JPEG path)"),
+                    format!("{e} (a texture is \"checkerboard\", \"uv_grid\", \"mip_levels\", \"bumps\" or a PNG/JPEG path)"),
                 );
                 None
             }

@@ -604,8 +604,20 @@ impl ResolveContext<'_> {
                 let p = v[0].world.truncate() * b.x
                     + v[1].world.truncate() * b.y
                     + v[2].world.truncate() * b.z;
-                let n = v[0].normal_world * b.x + v[1].normal_world * b.y + v[2].normal_world * b.z;
+                let mut n =
+                    v[0].normal_world * b.x + v[1].normal_world * b.y + v[2].normal_world * b.z;
                 let object = &self.scene.objects[prim.object as usize];
+                if let (Some(detail), [Some(a), Some(bb), Some(c)]) =
+                    (&object.detail, v.map(|v| v.uv))
+                {
+                    let world = v.map(|v| v.world.truncate());
+                    if let Some((tangent, bitangent)) =
+                        crate::texture::tangent_frame(world, [a, bb, c])
+                    {
+                        let uv = a * b.x + bb * b.y + c * b.z;
+                        n = detail.perturb(n, tangent, bitangent, uv);
+                    }
+                }
                 Some(shade::shade(
                     p,
                     n,

@@ -40,6 +40,8 @@ pub struct Object {
     pub material: Material,
     /// Its texture: the surface colour where the mesh has texture coordinates.
     pub texture: Option<Arc<crate::texture::Texture>>,
+    /// Bump or normal mapping (per-pixel lighting only).
+    pub detail: Option<crate::texture::SurfaceDetail>,
     /// A matrix applied after the object's own transform, `M = parent·T·Rz·Ry·Rx·S` (a shadow
     /// projection, a parent node's composite).
     pub parent: Option<NamedMatrix>,
@@ -62,6 +64,7 @@ impl Object {
             color: ColorSource::Vertex,
             material: Material::default(),
             texture: None,
+            detail: None,
             parent: None,
             lit: true,
             casts_shadow: true,
@@ -639,6 +642,7 @@ impl Scene {
                 });
                 s.color = ColorSource::Uniform(shadow.color);
                 s.texture = None;
+                s.detail = None;
                 s.lit = false;
                 s.casts_shadow = false;
                 out.push(s);

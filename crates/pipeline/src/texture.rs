@@ -439,3 +439,84 @@ pub fn level_color(k: u32) -> Vec3 {
     ];
     Vec3::from(COLORS[(k as usize).min(COLORS.len() - 1)])
 }
+
+/// Detail a texture adds to a surface's normal (used where lighting is per pixel).
+#[derive(Clone, Debug, PartialEq)]
+pub enum SurfaceDetail {
+    /// Bump mapping from a height map `h(u, v)` (its texels' luminance), GAMES101's way: in the
+    /// tangent frame, `dU = k_h·k_n·(h(u + 1/w, v) − h(u, v))`, `dV = k_h·k_n·(h(u, v + 1/h) −
+    /// h(u, v))` (the notes write the first as dp/dv: it is dp/du), the perturbed normal is
+    /// `normalize(TBN·(−dU, −dV, 1))`.
+    Bump {
+        /// The height map.
+        height: std::sync::Arc<Texture>,
+        /// `k_h·k_n`: how strongly height changes tilt the normal.
+        strength: f32,
+    },
+    /// Normal mapping: the texel is a tangent-space normal, `n_t = 2·c − 1`, and the normal is
+    /// `normalize(TBN·n_t)`.
+    Normal(std::sync::Arc<Texture>),
+}
+
+/// The tangent and bitangent of a triangle from its positions and texture coordinates, the
+/// directions in which `u` and `v` grow:
+/// `T = (Δp₁·Δv₂ − Δp₂·Δv₁)/det`, `B = (Δp₂·Δu₁ − Δp₁·Δu₂)/det`, `det = Δu₁·Δv₂ − Δu₂·Δv₁`.
+/// `None` when the uvs are degenerate.
+#[must_use]
+pub fn tangent_frame(p: [Vec3; 3], uv: [Vec2; 3]) -> Option<(Vec3, Vec3)> {
+    let (dp1, dp2) = (p[1] - p[0], p[2] - p[0]);
+    let (d1, d2) = (uv[1] - uv[0], uv[2] - uv[0]);
+    let det = d1.x * d2.y - d2.x * d1.y;
+    if det.abs() < 1e-12 {
+        return None;
+    }
+    Some((
+        (dp1 * d2.y - dp2 * d1.y) / det,
+        (dp2 * d1.x - dp1 * d2.x) / det,
+    ))
+}
+
+impl SurfaceDetail {
+    /// The normal at `uv` perturbed from the unit normal `n` in the tangent frame `(t, b)`
+    /// (made orthonormal to `n` first: `T' = normalize(t − n(n·t))`, `B' = ±n × T'`).
+    #[must_use]
+    pub fn perturb(&self, n: Vec3, t: Vec3, b: Vec3, uv: Vec2) -> Vec3 {
+        let n = n.normalize_or_zero();
+        let t1 = (t - n * n.dot(t)).normalize_or_zero();
+        let handed = if n.cross(t1).dot(b) < 0.0 { -1.0 } else { 1.0 };
+        let b1 = n.cross(t1) * handed;
+        let local = match self {
+            Self::Bump { height, strength } => {
+                let l = &height.levels[0];
+                let h = |uv: Vec2| {
+                    let c = l.bilinear(uv, Wrap::Repeat);
+                    0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z
+                };
+                let here = h(uv);
+                let du = strength * (h(uv + Vec2::new(1.0 / l.width as f32, 0.0)) - here);
+                let dv = strength * (h(uv + Vec2::new(0.0, 1.0 / l.height as f32)) - here);
+                Vec3::new(-du, -dv, 1.0)
+            }
+            Self::Normal(map) => map.levels[0].bilinear(uv, Wrap::Repeat) * 2.0 - Vec3::ONE,
+        };
+        (t1 * local.x + b1 * local.y + n * local.z).normalize_or_zero()
+    }
+}
+
+impl Texture {
+    /// A height map of round bumps on a grid (`count × count` of them), for bump mapping.
+    #[must_use]
+    pub fn bumps(size: u32, count: u32) -> Self {
+        let mut t = Self::from_fn("bumps", size, |i, j| {
+            let cell = size as f32 / count.max(1) as f32;
+            let (x, y) = (
+                (i as f32 + 0.5) % cell / cell - 0.5,
+                (j as f32 + 0.5) % cell / cell - 0.5,
+            );
+            let r2 = (x * x + y * y) * 4.0;
+            Vec3::splat((1.0 - r2).max(0.0).sqrt())
+        });
+        t.name = "bumps".to_owned();
+        t
+    }
+}

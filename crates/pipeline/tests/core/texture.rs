@@ -227,3 +227,96 @@ fn the_texel_colour_is_the_surface_colour() {
         }
     }
 }
+
+/// The quad of [`textured_quad`] lit per pixel with a surface detail, facing the camera.
+fn detailed_quad(detail: pipeline::texture::SurfaceDetail) -> pipeline::capture::FrameCapture {
+    use pipeline::scene::Light;
+    use pipeline::shade::Frequency;
+    let mesh = Mesh {
+        name: "quad".into(),
+        positions: vec![
+            Vec3::new(-1.0, -1.0, 0.0),
+            Vec3::new(1.0, -1.0, 0.0),
+            Vec3::new(1.0, 1.0, 0.0),
+            Vec3::new(-1.0, 1.0, 0.0),
+        ],
+        normals: vec![Vec3::Z; 4],
+        uvs: vec![
+            Vec2::new(0.0, 0.0),
+            Vec2::new(1.0, 0.0),
+            Vec2::new(1.0, 1.0),
+            Vec2::new(0.0, 1.0),
+        ],
+        colors: Vec::new(),
+        indices: vec![[0, 1, 2], [0, 2, 3]],
+    };
+    let mut quad = Object::new("quad", mesh);
+    quad.detail = Some(detail);
+    let scene = Scene {
+        objects: vec![quad],
+        camera: Camera {
+            eye: Vec3::new(0.0, 0.0, 3.0),
+            at: Vec3::ZERO,
+            up: Vec3::Y,
+        },
+        projection: Projection::Perspective {
+            fovy_deg: 60.0,
+            aspect: None,
+            near: 0.1,
+            far: 100.0,
+        },
+        lights: vec![Light::Directional {
+            direction: Vec3::NEG_Z,
+            intensity: Vec3::ONE,
+        }],
+        shadow: None,
+        figures: Vec::new(),
+    };
+    let settings = RenderSettings {
+        width: 65,
+        height: 65,
+        shading: Frequency::Phong,
+        ..RenderSettings::default()
+    };
+    render(&scene, &settings)
+}
+
+#[test]
+fn bump_and_normal_maps_tilt_the_normal_in_the_tangent_frame() {
+    use pipeline::texture::SurfaceDetail;
+    let centre = 32 * 65 + 32;
+    // A height ramp h = 0.01·i along u: dU = k·(h(u + 1/w) − h(u)) = k·0.01, dV = 0, so
+    // n = normalize(−dU, 0, 1) (T = +x, B = +y for this quad).
+    let ramp = Texture::from_level(
+        "ramp",
+        Level {
+            width: 64,
+            height: 64,
+            texels: (0..64 * 64).map(|k| grey((k % 64) as f32 * 0.01)).collect(),
+        },
+    );
+    let k = 5.0;
+    let c = detailed_quad(SurfaceDetail::Bump {
+        height: std::sync::Arc::new(ramp),
+        strength: k,
+    });
+    let n = Vec3::from(c.pixels.shading.as_ref().expect("lit").normal[centre]);
+    let expect = Vec3::new(-k * 0.01, 0.0, 1.0).normalize();
+    assert!((n - expect).length() < 1e-4, "{n} vs {expect}");
+    // A normal map storing the tangent-space normal (0.6, 0, 0.8) as (n + 1)/2.
+    let stored = (Vec3::new(0.6, 0.0, 0.8) + Vec3::ONE) / 2.0;
+    let map = Texture::from_level(
+        "normal",
+        Level {
+            width: 4,
+            height: 4,
+            texels: vec![stored; 16],
+        },
+    );
+    let c = detailed_quad(SurfaceDetail::Normal(std::sync::Arc::new(map)));
+    let n = Vec3::from(c.pixels.shading.as_ref().expect("lit").normal[centre]);
+    assert!((n - Vec3::new(0.6, 0.0, 0.8)).length() < 1e-5, "{n}");
+    // The diffuse term follows: light along −z, n·l = 0.8.
+    let d = c.pixels.shading.as_ref().expect("lit").n_dot_l[centre];
+    assert!((d - 0.8).abs() < 1e-5);
+}
