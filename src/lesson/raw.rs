@@ -163,6 +163,16 @@ pub struct RawObject {
     pub bump: Option<Spanned<RawBump>>,
     /// A tangent-space normal map: a PNG/JPEG path.
     pub normal_map: Option<Spanned<String>>,
+    /// `{ texture = "bumps" | path, scale = … }`.
+    pub displacement: Option<Spanned<RawDisplacement>>,
+}
+
+/// `displacement = { texture = …, scale = … }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawDisplacement {
+    pub texture: Spanned<String>,
+    pub scale: Option<Spanned<f64>>,
 }
 
 /// `bump = { texture = …, strength = … }`.

@@ -12,7 +12,7 @@ use pipeline::scene::{
     Material, Object, PlanarShadow, Projection, RenderSettings, Samples, Scene,
 };
 use pipeline::shade::{Frequency, Reflection};
-use pipeline::texture::{Filter, Mipmap, SurfaceDetail, Texture, Wrap};
+use pipeline::texture::{Displacement, Filter, Mipmap, SurfaceDetail, Texture, Wrap};
 use toml::Spanned;
 
 use super::raw::{
@@ -450,7 +450,19 @@ fn object(
         object.detail =
             texture(c, map, base).map(|t| SurfaceDetail::Normal(std::sync::Arc::new(t)));
     }
-    if object.detail.is_some() && object.mesh.uvs.is_empty() {
+    if let Some(d) = &raw.displacement {
+        let d = d.get_ref();
+        let scale = d
+            .scale
+            .as_ref()
+            .and_then(|v| c.finite("scale", v))
+            .unwrap_or(0.1);
+        object.displacement = texture(c, &d.texture, base).map(|t| Displacement {
+            height: std::sync::Arc::new(t),
+            scale,
+        });
+    }
+    if (object.detail.is_some() || object.displacement.is_some()) && object.mesh.uvs.is_empty() {
         c.error(
             o.span(),
             format!(

@@ -42,6 +42,8 @@ pub struct Object {
     pub texture: Option<Arc<crate::texture::Texture>>,
     /// Bump or normal mapping (per-pixel lighting only).
     pub detail: Option<crate::texture::SurfaceDetail>,
+    /// Displacement mapping: vertices moved along their normals.
+    pub displacement: Option<crate::texture::Displacement>,
     /// A matrix applied after the object's own transform, `M = parent·T·Rz·Ry·Rx·S` (a shadow
     /// projection, a parent node's composite).
     pub parent: Option<NamedMatrix>,
@@ -65,6 +67,7 @@ impl Object {
             material: Material::default(),
             texture: None,
             detail: None,
+            displacement: None,
             parent: None,
             lit: true,
             casts_shadow: true,

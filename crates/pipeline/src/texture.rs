@@ -520,3 +520,24 @@ impl Texture {
         t
     }
 }
+
+/// Displacement mapping: every vertex moves along its normal by `scale·h(u, v)`, `h` the
+/// height map's luminance (bilinear, level 0). It changes geometry, so it needs a finely
+/// subdivided mesh; the normals are left as they were (add bump mapping with the same map to
+/// light the new relief).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Displacement {
+    /// The height map.
+    pub height: std::sync::Arc<Texture>,
+    /// The largest displacement, in object units.
+    pub scale: f32,
+}
+
+impl Displacement {
+    /// `scale·h(u, v)`.
+    #[must_use]
+    pub fn offset(&self, uv: Vec2) -> f32 {
+        let c = self.height.levels[0].bilinear(uv, Wrap::Repeat);
+        self.scale * (0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z)
+    }
+}

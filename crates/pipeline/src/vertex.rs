@@ -19,7 +19,7 @@ pub struct VertexRecord {
     pub object: u32,
     /// Index of the vertex in its mesh.
     pub index: u32,
-    /// Object (model) coordinates, `w = 1`.
+    /// Object (model) coordinates, `w = 1` (after displacement mapping, if any).
     pub object_pos: Vec4,
     /// World coordinates `M·p`.
     pub world: Vec4,
@@ -86,6 +86,11 @@ pub fn transform_object(
     let n_matrix = normal_matrix(&m.model);
     out.reserve(mesh.positions.len());
     for (i, &p) in mesh.positions.iter().enumerate() {
+        // Displacement mapping: the vertex moves along its normal, p' = p + k·h(u, v)·n.
+        let p = match (&object.displacement, mesh.uvs.get(i)) {
+            (Some(d), Some(&uv)) => p + mesh.normals[i] * d.offset(uv),
+            _ => p,
+        };
         let object_pos = p.extend(1.0);
         let world = m.model * object_pos;
         let eye = m.view * world;

@@ -320,3 +320,64 @@ fn bump_and_normal_maps_tilt_the_normal_in_the_tangent_frame() {
     let d = c.pixels.shading.as_ref().expect("lit").n_dot_l[centre];
     assert!((d - 0.8).abs() < 1e-5);
 }
+
+#[test]
+fn displacement_moves_each_vertex_along_its_normal_by_the_height() {
+    use pipeline::mesh::BuiltinMesh;
+    use pipeline::texture::Displacement;
+    // Vertex p moves to p + n·k·h(u, v): a constant white map (h = 1) inflates the unit sphere
+    // to radius 1 + k.
+    let white = Texture::from_level(
+        "white",
+        Level {
+            width: 2,
+            height: 2,
+            texels: vec![Vec3::ONE; 4],
+        },
+    );
+    let mut sphere = Object::new(
+        "s",
+        BuiltinMesh::UvSphere {
+            segments: 16,
+            rings: 8,
+        }
+        .build(),
+    );
+    sphere.displacement = Some(Displacement {
+        height: std::sync::Arc::new(white),
+        scale: 0.5,
+    });
+    let scene = Scene {
+        objects: vec![sphere],
+        camera: Camera {
+            eye: Vec3::new(0.0, 0.0, 6.0),
+            at: Vec3::ZERO,
+            up: Vec3::Y,
+        },
+        projection: Projection::default(),
+        lights: Vec::new(),
+        shadow: None,
+        figures: Vec::new(),
+    };
+    let c = render(&scene, &RenderSettings::default());
+    for v in &c.vertices {
+        assert!((v.object_pos.truncate().length() - 1.5).abs() < 1e-5);
+    }
+    // A grey level of 0.25 everywhere moves by k·0.25 along the normal.
+    let grey4 = Texture::from_level(
+        "g",
+        Level {
+            width: 2,
+            height: 2,
+            texels: vec![grey(0.25); 4],
+        },
+    );
+    let d = Displacement {
+        height: std::sync::Arc::new(grey4),
+        scale: 2.0,
+    };
+    assert!(
+        (d.offset(Vec2::new(0.3, 0.7)) - 0.5).abs() < 1e-6,
+        "luminance of grey 0.25 is 0.25"
+    );
+}
