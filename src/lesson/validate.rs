@@ -428,6 +428,35 @@ fn object(
     if let Some(b) = raw.casts_shadow {
         object.casts_shadow = b;
     }
+    surface_maps(c, o, &mut object, base);
+    if let Some(col) = &raw.color {
+        object.color = match col.get_ref() {
+            RawColor::Named(n) if n == "vertex" => ColorSource::Vertex,
+            RawColor::Named(n) if n == "normal" => ColorSource::Normal,
+            RawColor::Named(n) => {
+                c.error(
+                    col.span(),
+                    format!("`color` must be \"vertex\", \"normal\" or [r, g, b], got \"{n}\""),
+                );
+                ColorSource::Vertex
+            }
+            RawColor::Rgb(rgb) => {
+                let v = c
+                    .vec3("color", &Spanned::new(col.span(), *rgb))
+                    .unwrap_or(Vec3::ONE);
+                if v.min_element() < 0.0 || v.max_element() > 1.0 {
+                    c.error(col.span(), "`color` components must be between 0 and 1");
+                }
+                ColorSource::Uniform(v)
+            }
+        };
+    }
+    Some(object)
+}
+
+/// Bump, normal and displacement maps of an object.
+fn surface_maps(c: &mut Checker<'_>, o: &Spanned<RawObject>, object: &mut Object, base: &Path) {
+    let raw = o.get_ref();
     if let Some(bump) = &raw.bump {
         let b = bump.get_ref();
         let strength = b
@@ -483,29 +512,6 @@ fn object(
             );
         }
     }
-    if let Some(col) = &raw.color {
-        object.color = match col.get_ref() {
-            RawColor::Named(n) if n == "vertex" => ColorSource::Vertex,
-            RawColor::Named(n) if n == "normal" => ColorSource::Normal,
-            RawColor::Named(n) => {
-                c.error(
-                    col.span(),
-                    format!("`color` must be \"vertex\", \"normal\" or [r, g, b], got \"{n}\""),
-                );
-                ColorSource::Vertex
-            }
-            RawColor::Rgb(rgb) => {
-                let v = c
-                    .vec3("color", &Spanned::new(col.span(), *rgb))
-                    .unwrap_or(Vec3::ONE);
-                if v.min_element() < 0.0 || v.max_element() > 1.0 {
-                    c.error(col.span(), "`color` components must be between 0 and 1");
-                }
-                ColorSource::Uniform(v)
-            }
-        };
-    }
-    Some(object)
 }
 
 fn mesh(c: &mut Checker<'_>, m: &Spanned<RawMesh>, base: &Path) -> Option<Mesh> {
