@@ -51,6 +51,19 @@ pub fn encode_capture(capture: &FrameCapture, opts: &ExportOptions) -> Result<Ve
             bytes: png_rgba(&img)?,
         });
     }
+    for (k, (object, texture)) in capture.textures.iter().enumerate() {
+        for level in 0..texture.levels.len() {
+            let l = &texture.levels[level];
+            files.push(ExportFile {
+                name: format!("texture{k}_level{level}.png"),
+                description: format!(
+                    "mip level {level} ({}×{}) of the texture of `{object}` ({}), each level the 2×2 box filter of the one before",
+                    l.width, l.height, texture.name
+                ),
+                bytes: png_rgba(&texture.level_image(level))?,
+            });
+        }
+    }
     let d16 = capture.depth16();
     let mut bytes = Vec::new();
     PngEncoder::new(&mut bytes)

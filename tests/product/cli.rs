@@ -251,3 +251,30 @@ fn a_profile_compares_the_three_shading_frequencies() {
     assert!(!o.status.success());
     assert!(text(&o).contains("expected four numbers"), "{}", text(&o));
 }
+
+#[test]
+fn a_textured_scene_exports_every_mip_level() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("t");
+    let scene = repo().join("assets/scenes/texture.toml");
+    let o = pipelens(
+        dir.path(),
+        &[
+            "export",
+            scene.to_str().expect("utf-8"),
+            "--out",
+            out.to_str().expect("utf-8"),
+            "--size",
+            "96x64",
+        ],
+    );
+    assert!(o.status.success(), "{}", text(&o));
+    for f in ["uv.png", "mip_level.png", "texel.png"] {
+        assert!(out.join(f).is_file(), "{f}");
+    }
+    // The floor's 512×512 checkerboard: levels 0 (512) to 9 (1×1).
+    let top = image::open(out.join("texture0_level0.png")).expect("level 0");
+    assert_eq!(top.width(), 512);
+    let last = image::open(out.join("texture0_level9.png")).expect("level 9");
+    assert_eq!((last.width(), last.height()), (1, 1));
+}

@@ -337,6 +337,8 @@ pub struct FrameCapture {
     /// The lighting of each face (a row per primitive, evaluated once at its centroid), with
     /// flat shading; empty otherwise.
     pub face_shading: Vec<crate::shade::ShadeTerms>,
+    /// The textures the frame read, by object name (their mip pyramids can be shown and exported).
+    pub textures: Vec<(String, std::sync::Arc<crate::texture::Texture>)>,
     /// The figures' traversal with the matrix stack (push, visit with the composite, pop).
     pub hierarchy: Vec<crate::hierarchy::Step>,
     /// One record per input triangle.

@@ -179,6 +179,15 @@ fn render_stages(
         vertex_shading,
         face_shading,
         hierarchy: Vec::new(),
+        textures: scene
+            .objects
+            .iter()
+            .filter_map(|o| {
+                o.texture
+                    .as_ref()
+                    .map(|t| (o.name.clone(), std::sync::Arc::clone(t)))
+            })
+            .collect(),
         primitives,
         triangles,
         samples,
