@@ -79,11 +79,9 @@ fn each_mip_level_is_the_box_filter_of_the_one_before() {
     assert!((next.texels[0].x - (0.0 + 1.0 + 5.0 + 6.0 + 10.0 + 11.0) / 6.0).abs() < 1e-6);
 }
 
-/// A square [−1, 1]² facing the camera at distance `d`, tilted by `tilt` degrees about x,
-/// uv from (0, 0) to (1, 1), with a 256×256 texture; fovy 90°, a 65×65 window (odd, so that
-/// the centre pixel's centre is on the view axis).
-fn textured_quad(d: f32, tilt: f32, sampler: Sampler) -> pipeline::capture::FrameCapture {
-    let mesh = Mesh {
+/// The square [−1, 1]² in the plane z = 0 facing +z, uv from (0, 0) to (1, 1) along x and y.
+fn quad_mesh() -> Mesh {
+    Mesh {
         name: "quad".into(),
         positions: vec![
             Vec3::new(-1.0, -1.0, 0.0),
@@ -100,7 +98,14 @@ fn textured_quad(d: f32, tilt: f32, sampler: Sampler) -> pipeline::capture::Fram
         ],
         colors: Vec::new(),
         indices: vec![[0, 1, 2], [0, 2, 3]],
-    };
+    }
+}
+
+/// A square [−1, 1]² facing the camera at distance `d`, tilted by `tilt` degrees about x,
+/// uv from (0, 0) to (1, 1), with a 256×256 texture; fovy 90°, a 65×65 window (odd, so that
+/// the centre pixel's centre is on the view axis).
+fn textured_quad(d: f32, tilt: f32, sampler: Sampler) -> pipeline::capture::FrameCapture {
+    let mesh = quad_mesh();
     let mut quad = Object::new("quad", mesh);
     quad.rotate_deg = Vec3::new(-tilt, 0.0, 0.0);
     quad.texture = Some(std::sync::Arc::new(Texture::checkerboard(256, 16)));
@@ -232,24 +237,7 @@ fn the_texel_colour_is_the_surface_colour() {
 fn detailed_quad(detail: pipeline::texture::SurfaceDetail) -> pipeline::capture::FrameCapture {
     use pipeline::scene::Light;
     use pipeline::shade::Frequency;
-    let mesh = Mesh {
-        name: "quad".into(),
-        positions: vec![
-            Vec3::new(-1.0, -1.0, 0.0),
-            Vec3::new(1.0, -1.0, 0.0),
-            Vec3::new(1.0, 1.0, 0.0),
-            Vec3::new(-1.0, 1.0, 0.0),
-        ],
-        normals: vec![Vec3::Z; 4],
-        uvs: vec![
-            Vec2::new(0.0, 0.0),
-            Vec2::new(1.0, 0.0),
-            Vec2::new(1.0, 1.0),
-            Vec2::new(0.0, 1.0),
-        ],
-        colors: Vec::new(),
-        indices: vec![[0, 1, 2], [0, 2, 3]],
-    };
+    let mesh = quad_mesh();
     let mut quad = Object::new("quad", mesh);
     quad.detail = Some(detail);
     let scene = Scene {
