@@ -165,6 +165,16 @@ pub struct RawObject {
     pub normal_map: Option<Spanned<String>>,
     /// `{ texture = "bumps" | path, scale = … }`.
     pub displacement: Option<Spanned<RawDisplacement>>,
+    /// `{ cube = "room", reflectivity = … }`.
+    pub environment: Option<Spanned<RawEnvironment>>,
+}
+
+/// `environment = { cube = "room", reflectivity = … }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawEnvironment {
+    pub cube: Spanned<String>,
+    pub reflectivity: Option<Spanned<f64>>,
 }
 
 /// `displacement = { texture = …, scale = … }`.

@@ -12,7 +12,9 @@ use pipeline::scene::{
     Material, Object, PlanarShadow, Projection, RenderSettings, Samples, Scene,
 };
 use pipeline::shade::{Frequency, Reflection};
-use pipeline::texture::{Displacement, Filter, Mipmap, SurfaceDetail, Texture, Wrap};
+use pipeline::texture::{
+    CubeMap, Displacement, Environment, Filter, Mipmap, SurfaceDetail, Texture, Wrap,
+};
 use toml::Spanned;
 
 use super::raw::{
@@ -489,6 +491,34 @@ fn surface_maps(c: &mut Checker<'_>, o: &Spanned<RawObject>, object: &mut Object
         object.displacement = texture(c, &d.texture, base).map(|t| Displacement {
             height: std::sync::Arc::new(t),
             scale,
+        });
+    }
+    if let Some(e) = &raw.environment {
+        let e = e.get_ref();
+        if e.cube.get_ref() != "room" {
+            c.error(
+                e.cube.span(),
+                format!(
+                    "`cube` must be \"room\" (the built-in cube map), got \"{}\"",
+                    e.cube.get_ref()
+                ),
+            );
+        }
+        let k = e
+            .reflectivity
+            .as_ref()
+            .and_then(|v| c.finite("reflectivity", v))
+            .unwrap_or(0.5);
+        if !(0.0..=1.0).contains(&k) {
+            let span = e.reflectivity.as_ref().map_or(o.span(), Spanned::span);
+            c.error(
+                span,
+                format!("`reflectivity` must be between 0 and 1, got {k}"),
+            );
+        }
+        object.environment = Some(Environment {
+            cube: std::sync::Arc::new(CubeMap::room(256)),
+            reflectivity: k,
         });
     }
     if (object.detail.is_some() || object.displacement.is_some()) && object.mesh.uvs.is_empty() {

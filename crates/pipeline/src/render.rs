@@ -627,7 +627,7 @@ impl ResolveContext<'_> {
                         n = detail.perturb(n, tangent, bitangent, uv);
                     }
                 }
-                Some(shade::shade(
+                let mut terms = shade::shade(
                     p,
                     n,
                     self.scene.camera.eye,
@@ -635,7 +635,21 @@ impl ResolveContext<'_> {
                     &self.scene.lights,
                     &object.material,
                     self.settings.reflection,
-                ))
+                );
+                if let Some(env) = &object.environment {
+                    // r = 2(n·v)n − v, the mirror direction of the view vector: a mirror of
+                    // reflectivity k shows k of what it reflects and keeps 1 − k of its own
+                    // ambient and diffuse light.
+                    let (n, v) = (
+                        terms.normal,
+                        (self.scene.camera.eye - p).normalize_or_zero(),
+                    );
+                    let k = env.reflectivity.clamp(0.0, 1.0);
+                    terms.reflected = env.cube.sample(2.0 * n.dot(v) * n - v) * k;
+                    terms.ambient *= 1.0 - k;
+                    terms.diffuse *= 1.0 - k;
+                }
+                Some(terms)
             }
         }
     }

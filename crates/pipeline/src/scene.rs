@@ -44,6 +44,8 @@ pub struct Object {
     pub detail: Option<crate::texture::SurfaceDetail>,
     /// Displacement mapping: vertices moved along their normals.
     pub displacement: Option<crate::texture::Displacement>,
+    /// Environment mapping: the surface mirrors a cube map.
+    pub environment: Option<crate::texture::Environment>,
     /// A matrix applied after the object's own transform, `M = parent·T·Rz·Ry·Rx·S` (a shadow
     /// projection, a parent node's composite).
     pub parent: Option<NamedMatrix>,
@@ -68,6 +70,7 @@ impl Object {
             texture: None,
             detail: None,
             displacement: None,
+            environment: None,
             parent: None,
             lit: true,
             casts_shadow: true,
@@ -646,6 +649,7 @@ impl Scene {
                 s.color = ColorSource::Uniform(shadow.color);
                 s.texture = None;
                 s.detail = None;
+                s.environment = None;
                 s.lit = false;
                 s.casts_shadow = false;
                 out.push(s);

@@ -61,6 +61,8 @@ pub struct ShadeTerms {
     pub diffuse: Vec3,
     /// `Σ f_att·f_spot·k_s·I_s·max(r·v, 0)^α` (or `max(n·h, 0)^β`).
     pub specular: Vec3,
+    /// The environment seen in the mirror direction (environment mapping), zero otherwise.
+    pub reflected: Vec3,
     /// The unit normal used.
     pub normal: Vec3,
     /// `l` of the key light (the first light that is not ambient); zero if there is none.
@@ -74,10 +76,10 @@ pub struct ShadeTerms {
 }
 
 impl ShadeTerms {
-    /// `ambient + diffuse + specular`.
+    /// `ambient + diffuse + specular + reflected`.
     #[must_use]
     pub fn color(&self) -> Vec3 {
-        self.ambient + self.diffuse + self.specular
+        self.ambient + self.diffuse + self.specular + self.reflected
     }
 
     /// The weighted sum of terms (for interpolating Gouraud colours, whose terms are linear).
@@ -89,6 +91,7 @@ impl ShadeTerms {
             ambient: mix(|s| s.ambient),
             diffuse: mix(|s| s.diffuse),
             specular: mix(|s| s.specular),
+            reflected: mix(|s| s.reflected),
             normal: mix(|s| s.normal).normalize_or_zero(),
             light: mix(|s| s.light).normalize_or_zero(),
             half: mix(|s| s.half).normalize_or_zero(),

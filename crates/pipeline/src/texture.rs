@@ -541,3 +541,111 @@ impl Displacement {
         self.scale * (0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z)
     }
 }
+
+/// A cube map: six square faces around the origin, looked up by direction (environment mapping).
+/// Faces in the order +x, −x, +y, −y, +z, −z; on each, `(s, t)` run as in OpenGL's cube map table
+/// (major axis `m`, `s = (sc/|m| + 1)/2`, `t = (tc/|m| + 1)/2`):
+/// +x: `sc = −z, tc = y`; −x: `sc = z, tc = y`; +y: `sc = x, tc = −z`; −y: `sc = x, tc = z`;
+/// +z: `sc = x, tc = y`; −z: `sc = −x, tc = y` — with `t` growing upwards (our texel rows count
+/// from the bottom), so each face reads as seen from the centre with +y up.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CubeMap {
+    /// The faces +x, −x, +y, −y, +z, −z.
+    pub faces: [Level; 6],
+}
+
+impl CubeMap {
+    /// The face and `(s, t)` a direction falls on.
+    #[must_use]
+    pub fn face_coords(d: Vec3) -> (usize, Vec2) {
+        let a = d.abs();
+        let (face, sc, tc, m) = if a.x >= a.y && a.x >= a.z {
+            if d.x > 0.0 {
+                (0, -d.z, d.y, a.x)
+            } else {
+                (1, d.z, d.y, a.x)
+            }
+        } else if a.y >= a.z {
+            if d.y > 0.0 {
+                (2, d.x, -d.z, a.y)
+            } else {
+                (3, d.x, d.z, a.y)
+            }
+        } else if d.z > 0.0 {
+            (4, d.x, d.y, a.z)
+        } else {
+            (5, -d.x, d.y, a.z)
+        };
+        let m = m.max(1e-12);
+        (face, Vec2::new((sc / m + 1.0) / 2.0, (tc / m + 1.0) / 2.0))
+    }
+
+    /// The colour seen in direction `d` (bilinear within the face, edges clamped).
+    #[must_use]
+    pub fn sample(&self, d: Vec3) -> Vec3 {
+        let (face, st) = Self::face_coords(d);
+        self.faces[face].bilinear(st, Wrap::Clamp)
+    }
+
+    /// A procedural room: a sky gradient above, a checkered floor below, four walls each in its
+    /// own colour with a grid, so a reflection shows which way it looks.
+    #[must_use]
+    pub fn room(size: u32) -> Self {
+        let size = size.max(2);
+        let face = |f: &dyn Fn(f32, f32) -> Vec3| {
+            let texels = (0..size)
+                .flat_map(|j| (0..size).map(move |i| (i, j)))
+                .map(|(i, j)| {
+                    f(
+                        (i as f32 + 0.5) / size as f32,
+                        (j as f32 + 0.5) / size as f32,
+                    )
+                })
+                .collect();
+            Level {
+                width: size,
+                height: size,
+                texels,
+            }
+        };
+        let wall = |c: Vec3| {
+            move |s: f32, t: f32| {
+                let grid = ((s * 8.0).fract() < 0.06) || ((t * 8.0).fract() < 0.06);
+                let shade = 0.55 + 0.45 * t;
+                if grid { Vec3::splat(0.95) } else { c * shade }
+            }
+        };
+        let sky = |s: f32, t: f32| {
+            let r = ((s - 0.5).powi(2) + (t - 0.5).powi(2)).sqrt();
+            Vec3::new(0.45, 0.65, 0.95)
+                .lerp(Vec3::new(1.0, 0.97, 0.85), (1.0 - r * 3.0).clamp(0.0, 1.0))
+        };
+        let floor = |s: f32, t: f32| {
+            if ((s * 8.0) as u32 + (t * 8.0) as u32).is_multiple_of(2) {
+                Vec3::splat(0.8)
+            } else {
+                Vec3::splat(0.25)
+            }
+        };
+        Self {
+            faces: [
+                face(&wall(Vec3::new(0.9, 0.3, 0.3))),
+                face(&wall(Vec3::new(0.3, 0.8, 0.4))),
+                face(&sky),
+                face(&floor),
+                face(&wall(Vec3::new(0.3, 0.45, 0.9))),
+                face(&wall(Vec3::new(0.9, 0.8, 0.3))),
+            ],
+        }
+    }
+}
+
+/// Environment mapping: the surface mirrors the cube map in direction `r = 2(n·v)n − v`,
+/// mixed into its lit colour by `reflectivity` (per-pixel lighting only).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Environment {
+    /// What the surface reflects.
+    pub cube: std::sync::Arc<CubeMap>,
+    /// 0: no reflection, 1: a perfect mirror.
+    pub reflectivity: f32,
+}

@@ -369,3 +369,78 @@ fn displacement_moves_each_vertex_along_its_normal_by_the_height() {
         "luminance of grey 0.25 is 0.25"
     );
 }
+
+#[test]
+fn cube_map_faces_and_a_mirror_sphere() {
+    use pipeline::mesh::BuiltinMesh;
+    use pipeline::scene::Light;
+    use pipeline::shade::Frequency;
+    use pipeline::texture::{CubeMap, Environment};
+    // Direction → face and (s, t), by the table in the docs.
+    assert_eq!(CubeMap::face_coords(Vec3::Z), (4, Vec2::new(0.5, 0.5)));
+    let (f, st) = CubeMap::face_coords(Vec3::new(0.5, 0.2, 1.0));
+    assert_eq!(f, 4);
+    assert!((st - Vec2::new(0.75, 0.6)).length() < 1e-6);
+    assert_eq!(CubeMap::face_coords(Vec3::new(-2.0, 1.0, 0.5)).0, 1);
+    assert_eq!(CubeMap::face_coords(Vec3::new(0.1, -3.0, 0.5)).0, 3);
+    // Six constant faces; a perfect mirror sphere seen head-on reflects the face behind the eye.
+    let colors = [
+        Vec3::X,
+        Vec3::Y,
+        Vec3::Z,
+        Vec3::ONE,
+        Vec3::new(1.0, 1.0, 0.0),
+        Vec3::new(0.0, 1.0, 1.0),
+    ];
+    let cube = CubeMap {
+        faces: colors.map(|c| Level {
+            width: 2,
+            height: 2,
+            texels: vec![c; 4],
+        }),
+    };
+    let mut sphere = Object::new(
+        "mirror",
+        BuiltinMesh::UvSphere {
+            segments: 64,
+            rings: 32,
+        }
+        .build(),
+    );
+    sphere.environment = Some(Environment {
+        cube: std::sync::Arc::new(cube),
+        reflectivity: 1.0,
+    });
+    sphere.material.ks = Vec3::ZERO;
+    let scene = Scene {
+        objects: vec![sphere],
+        camera: Camera {
+            eye: Vec3::new(0.0, 0.0, 4.0),
+            at: Vec3::ZERO,
+            up: Vec3::Y,
+        },
+        projection: Projection::Perspective {
+            fovy_deg: 40.0,
+            aspect: None,
+            near: 0.5,
+            far: 20.0,
+        },
+        lights: vec![Light::Ambient {
+            intensity: Vec3::ONE,
+        }],
+        shadow: None,
+        figures: Vec::new(),
+    };
+    let settings = RenderSettings {
+        width: 65,
+        height: 65,
+        shading: Frequency::Phong,
+        ..RenderSettings::default()
+    };
+    let c = render(&scene, &settings);
+    let centre = Vec3::from(c.pixels.color[32 * 65 + 32]);
+    assert!(
+        (centre - colors[4]).length() < 1e-4,
+        "the +z face: {centre}"
+    );
+}
