@@ -108,7 +108,7 @@ fn volume(capture: &FrameCapture, space: Space) -> Option<[Vec3; 8]> {
 /// The box to frame for the given spaces: the view volume in NDC and window coordinates (a
 /// vertex just in front of the eye has enormous NDC coordinates, and would shrink the cube to a
 /// dot), every finite vertex position elsewhere.
-fn bounds(capture: &FrameCapture, spaces: [Space; 2]) -> Option<(Vec3, Vec3)> {
+fn bounds(capture: &FrameCapture, spaces: [Space; 2], only: Option<u32>) -> Option<(Vec3, Vec3)> {
     let (mut lo, mut hi) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
     let mut add = |p: Vec3| {
         if p.is_finite() {
@@ -122,6 +122,7 @@ fn bounds(capture: &FrameCapture, spaces: [Space; 2]) -> Option<(Vec3, Vec3)> {
             _ => capture
                 .vertices
                 .iter()
+                .filter(|v| only.is_none_or(|o| v.object == o))
                 .filter_map(|v| position(v, space))
                 .for_each(&mut add),
         }
@@ -196,6 +197,21 @@ impl GeometryView {
     ) -> Vec<Command> {
         let lang = session.lang;
         let mut cmds = self.header(ui, space, from.is_some(), lang);
+        // Object coordinates overlap (every object has its own origin): show one object, the
+        // one of the selected vertex.
+        let only = (space == Space::Model).then(|| {
+            session
+                .selection
+                .vertex
+                .and_then(|i| capture.vertices.get(i as usize))
+                .map_or(0, |v| v.object)
+        });
+        if let Some(o) = only.and_then(|o| capture.objects.get(o as usize)) {
+            ui.label(format!("{}: {}", lang.tr("object", "物体"), o.name)).on_hover_text(lang.tr(
+                "Each object has its own origin; select a vertex of another object (vertex table) to show it.",
+                "每个物体有自己的原点；在顶点表中选择另一物体的顶点即可切换。",
+            ));
+        }
         let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 0.0, Color32::from_gray(18));
@@ -205,9 +221,16 @@ impl GeometryView {
         let points: Vec<Option<Vec3>> = capture
             .vertices
             .iter()
-            .map(|v| between(v, from, space, eased))
+            .map(|v| {
+                if only.is_some_and(|o| v.object != o) {
+                    None
+                } else {
+                    between(v, from, space, eased)
+                }
+            })
             .collect();
-        let Some(cam) = bounds(capture, [space, from]).and_then(|b| self.camera(rect, b)) else {
+        let Some(cam) = bounds(capture, [space, from], only).and_then(|b| self.camera(rect, b))
+        else {
             painter.text(
                 rect.center(),
                 Align2::CENTER_CENTER,
