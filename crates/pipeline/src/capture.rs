@@ -530,33 +530,33 @@ impl FrameCapture {
     /// The shapes of one overlay, in image pixel coordinates.
     #[must_use]
     pub fn overlay(&self, kind: OverlayKind) -> Overlay {
+        Overlay {
+            kind,
+            shapes: self.overlay_shapes(kind).collect(),
+        }
+    }
+
+    /// The shapes of one overlay, made one raster triangle at a time (a view that draws only
+    /// some of a million need not build them all).
+    pub fn overlay_shapes(&self, kind: OverlayKind) -> impl Iterator<Item = Shape> + '_ {
         let h = self.height() as f32;
-        let shapes = match kind {
-            OverlayKind::TriangleEdges => self
-                .triangles
-                .iter()
-                .map(|t| Shape::Polyline {
-                    points: t.window.iter().map(|p| self.window_to_image(*p)).collect(),
-                    closed: true,
-                    color: [255, 255, 255, 220],
+        self.triangles.iter().map(move |t| match kind {
+            OverlayKind::TriangleEdges => Shape::Polyline {
+                points: t.window.iter().map(|p| self.window_to_image(*p)).collect(),
+                closed: true,
+                color: [255, 255, 255, 220],
+                width: 1.0,
+            },
+            OverlayKind::BoundingBoxes => {
+                let [x0, y0, x1, y1] = t.bbox.map(|v| v as f32);
+                Shape::Rect {
+                    min: [x0, h - (y1 + 1.0)],
+                    max: [x1 + 1.0, h - y0],
+                    color: [255, 200, 40, 200],
                     width: 1.0,
-                })
-                .collect(),
-            OverlayKind::BoundingBoxes => self
-                .triangles
-                .iter()
-                .map(|t| {
-                    let [x0, y0, x1, y1] = t.bbox.map(|v| v as f32);
-                    Shape::Rect {
-                        min: [x0, h - (y1 + 1.0)],
-                        max: [x1 + 1.0, h - y0],
-                        color: [255, 200, 40, 200],
-                        width: 1.0,
-                    }
-                })
-                .collect(),
-        };
-        Overlay { kind, shapes }
+                }
+            }
+        })
     }
 
     /// `kind`'s image magnified `zoom` times (nearest neighbour, so pixels stay crisp) with the

@@ -451,9 +451,9 @@ fn draw_overlays(
 ) {
     let mut drawn = 0;
     for &kind in overlays {
-        for shape in capture.overlay(kind).shapes.iter().take(MAX_SHAPES - drawn) {
+        for shape in capture.overlay_shapes(kind).take(MAX_SHAPES - drawn) {
             drawn += 1;
-            draw_shape(painter, shape, &|p| view.to_screen(p));
+            draw_shape(painter, &shape, &|p| view.to_screen(p));
         }
     }
     if drawn >= MAX_SHAPES {
