@@ -108,6 +108,8 @@ pub struct TextureBuffers {
     pub level: Vec<f32>,
     /// The filtered texel colour.
     pub texel: Vec<[f32; 3]>,
+    /// The footprint's axes in texels, `(∂s/∂x, ∂t/∂x, ∂s/∂y, ∂t/∂y)` with `(s, t) = (u·w, v·h)`.
+    pub footprint: Vec<[f32; 4]>,
 }
 
 /// Per-pixel lighting terms of the owning fragment (see `shade`), top image row first.
@@ -125,6 +127,8 @@ pub struct ShadingBuffers {
     pub n_dot_l: Vec<f32>,
     /// `n·h` (Blinn-Phong) or `r·v` (Phong) of the key light.
     pub n_dot_h: Vec<f32>,
+    /// `k·C_env(r)`, what a mirror surface reflects from its environment (zero elsewhere).
+    pub reflected: Vec<[f32; 3]>,
 }
 
 /// Which image of a capture.
@@ -162,11 +166,16 @@ pub enum BufferKind {
     MipLevel,
     /// The filtered texel colour.
     Texel,
+    /// The footprint of the pixel in the texture: hue the direction of its long axis,
+    /// saturation its anisotropy.
+    Footprint,
+    /// The environment map's reflected term.
+    Reflected,
 }
 
 impl BufferKind {
     /// Every 8-bit image kind, in the order of the stages.
-    pub const ALL: [BufferKind; 15] = [
+    pub const ALL: [BufferKind; 17] = [
         Self::Coverage,
         Self::PrimitiveId,
         Self::Depth,
@@ -177,10 +186,12 @@ impl BufferKind {
         Self::NDotH,
         Self::Uv,
         Self::MipLevel,
+        Self::Footprint,
         Self::Texel,
         Self::Ambient,
         Self::Diffuse,
         Self::Specular,
+        Self::Reflected,
         Self::Color,
     ];
 
@@ -195,13 +206,17 @@ impl BufferKind {
                 | Self::Normal
                 | Self::NDotL
                 | Self::NDotH
+                | Self::Reflected
         )
     }
 
     /// Whether the buffer holds a texture lookup (present only when an object is textured).
     #[must_use]
     pub fn is_texturing(self) -> bool {
-        matches!(self, Self::Uv | Self::MipLevel | Self::Texel)
+        matches!(
+            self,
+            Self::Uv | Self::MipLevel | Self::Texel | Self::Footprint
+        )
     }
 
     /// A file-name friendly name.
@@ -223,6 +238,8 @@ impl BufferKind {
             Self::Uv => "uv",
             Self::MipLevel => "mip_level",
             Self::Texel => "texel",
+            Self::Footprint => "footprint",
+            Self::Reflected => "reflected",
         }
     }
 
@@ -261,6 +278,14 @@ impl BufferKind {
                  7+ violet), trilinear blends the two; background black"
             }
             Self::Texel => "RGB = round(255·filtered texel); background black",
+            Self::Footprint => {
+                "hue = direction of the footprint's long axis in the texture (0°–180°: red along s, \
+                 cyan along t), saturation = min(log₂(major/minor)/3, 1): white isotropic, \
+                 saturated ≥ 8:1; background black"
+            }
+            Self::Reflected => {
+                "RGB = round(255·k·C_env(r)), r = 2(n·v)n − v, for mirror objects; black elsewhere"
+            }
         }
     }
 }
@@ -356,17 +381,21 @@ fn to_u8(v: f32) -> u8 {
 }
 
 fn hue_color(id: u32) -> [u8; 3] {
-    let h = (id as f32 * 0.618_034).fract() * 6.0;
+    hue((id as f32 * 0.618_034).fract()).map(to_u8)
+}
+
+/// The fully saturated colour of hue `h ∈ [0, 1)` (red, yellow, green, cyan, blue, magenta).
+fn hue(h: f32) -> [f32; 3] {
+    let h = h.rem_euclid(1.0) * 6.0;
     let x = 1.0 - ((h % 2.0) - 1.0).abs();
-    let (r, g, b) = match h as u32 {
-        0 => (1.0, x, 0.0),
-        1 => (x, 1.0, 0.0),
-        2 => (0.0, 1.0, x),
-        3 => (0.0, x, 1.0),
-        4 => (x, 0.0, 1.0),
-        _ => (1.0, 0.0, x),
-    };
-    [to_u8(r), to_u8(g), to_u8(b)]
+    match h as u32 {
+        0 => [1.0, x, 0.0],
+        1 => [x, 1.0, 0.0],
+        2 => [0.0, 1.0, x],
+        3 => [0.0, x, 1.0],
+        4 => [x, 0.0, 1.0],
+        _ => [1.0, 0.0, x],
+    }
 }
 
 /// The colour of a lighting buffer at pixel `i`.
@@ -378,8 +407,26 @@ fn lighting_rgb(sh: &ShadingBuffers, kind: BufferKind, i: usize) -> [u8; 3] {
         BufferKind::Normal => sh.normal[i].map(|v| to_u8((v + 1.0) / 2.0)),
         BufferKind::NDotL => [to_u8(sh.n_dot_l[i]); 3],
         BufferKind::NDotH => [to_u8(sh.n_dot_h[i]); 3],
+        BufferKind::Reflected => sh.reflected[i].map(to_u8),
         _ => [0; 3],
     }
+}
+
+/// The footprint colour: the long axis' angle `θ ∈ [0°, 180°)` as hue (a line has no sign, so
+/// hue = 2θ), the anisotropy `a = major/minor` as saturation `min(log₂ a / 3, 1)`.
+fn footprint_rgb([sx, tx, sy, ty]: [f32; 4]) -> [u8; 3] {
+    let (lx, ly) = (sx.hypot(tx), sy.hypot(ty));
+    if lx == 0.0 && ly == 0.0 {
+        return [0; 3];
+    }
+    let (major, minor, (s, t)) = if lx >= ly {
+        (lx, ly, (sx, tx))
+    } else {
+        (ly, lx, (sy, ty))
+    };
+    let angle = t.atan2(s).rem_euclid(std::f32::consts::PI);
+    let saturation = ((major / minor.max(1e-6)).log2() / 3.0).clamp(0.0, 1.0);
+    hue(angle / std::f32::consts::PI).map(|c| to_u8(1.0 - saturation * (1.0 - c)))
 }
 
 /// The colour of a texturing buffer at pixel `i`.
@@ -398,6 +445,7 @@ fn texturing_rgb(tb: &TextureBuffers, kind: BufferKind, i: usize) -> [u8; 3] {
                 .map(to_u8)
         }
         BufferKind::Texel => tb.texel[i].map(to_u8),
+        BufferKind::Footprint => footprint_rgb(tb.footprint[i]),
         _ => [0; 3],
     }
 }

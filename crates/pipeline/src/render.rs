@@ -381,6 +381,7 @@ struct TextureRow<'a> {
     lod: &'a mut [f32],
     level: &'a mut [f32],
     texel: &'a mut [[f32; 3]],
+    footprint: &'a mut [[f32; 4]],
 }
 
 /// One image row of the lighting buffers.
@@ -391,6 +392,7 @@ struct ShadingRow<'a> {
     normal: &'a mut [[f32; 3]],
     n_dot_l: &'a mut [f32],
     n_dot_h: &'a mut [f32],
+    reflected: &'a mut [[f32; 3]],
 }
 
 impl RowOut<'_> {
@@ -406,6 +408,8 @@ impl RowOut<'_> {
             tr.lod[x] = l.lod;
             tr.level[x] = l.level as f32 + l.level_blend;
             tr.texel[x] = l.color.to_array();
+            let [dx, dy] = l.footprint;
+            tr.footprint[x] = [dx.x, dx.y, dy.x, dy.y];
         }
         if let (Some(s), Some(t)) = (&mut self.shading, &r.terms) {
             s.ambient[x] = t.ambient.to_array();
@@ -414,6 +418,7 @@ impl RowOut<'_> {
             s.normal[x] = t.normal.to_array();
             s.n_dot_l[x] = t.n_dot_l;
             s.n_dot_h[x] = t.n_dot_h;
+            s.reflected[x] = t.reflected.to_array();
         }
     }
 }
@@ -428,12 +433,14 @@ fn split_rows(px: &mut PixelBuffers, w: usize, h: usize) -> Vec<RowOut<'_>> {
             .zip(tb.lod.chunks_mut(w))
             .zip(tb.level.chunks_mut(w))
             .zip(tb.texel.chunks_mut(w))
-            .map(|(((uv, lod), level), texel)| {
+            .zip(tb.footprint.chunks_mut(w))
+            .map(|((((uv, lod), level), texel), footprint)| {
                 Some(TextureRow {
                     uv,
                     lod,
                     level,
                     texel,
+                    footprint,
                 })
             })
             .collect(),
@@ -448,8 +455,9 @@ fn split_rows(px: &mut PixelBuffers, w: usize, h: usize) -> Vec<RowOut<'_>> {
             .zip(sb.normal.chunks_mut(w))
             .zip(sb.n_dot_l.chunks_mut(w))
             .zip(sb.n_dot_h.chunks_mut(w))
+            .zip(sb.reflected.chunks_mut(w))
             .map(
-                |(((((ambient, diffuse), specular), normal), n_dot_l), n_dot_h)| {
+                |((((((ambient, diffuse), specular), normal), n_dot_l), n_dot_h), reflected)| {
                     Some(ShadingRow {
                         ambient,
                         diffuse,
@@ -457,6 +465,7 @@ fn split_rows(px: &mut PixelBuffers, w: usize, h: usize) -> Vec<RowOut<'_>> {
                         normal,
                         n_dot_l,
                         n_dot_h,
+                        reflected,
                     })
                 },
             )
@@ -518,12 +527,14 @@ fn resolve(ctx: &ResolveContext<'_>) -> PixelBuffers {
             normal: vec![[0.0; 3]; n],
             n_dot_l: vec![0.0; n],
             n_dot_h: vec![0.0; n],
+            reflected: vec![[0.0; 3]; n],
         }),
         texturing: textured.then(|| TextureBuffers {
             uv: vec![[0.0; 2]; n],
             lod: vec![0.0; n],
             level: vec![0.0; n],
             texel: vec![[0.0; 3]; n],
+            footprint: vec![[0.0; 4]; n],
         }),
     };
     let rows = split_rows(&mut px, w, h);

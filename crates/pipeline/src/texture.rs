@@ -96,6 +96,12 @@ pub struct Level {
 }
 
 impl Level {
+    /// `(width, height)` as a vector, to turn uv into texels.
+    #[must_use]
+    pub fn size(&self) -> Vec2 {
+        Vec2::new(self.width as f32, self.height as f32)
+    }
+
     /// Texel `(i, j)` with wrapping.
     #[must_use]
     pub fn texel(&self, i: i64, j: i64, wrap: Wrap) -> Vec3 {
@@ -204,6 +210,9 @@ pub struct Lookup {
     pub level_blend: f32,
     /// Samples taken along the major axis (anisotropic filtering).
     pub taps: u32,
+    /// The pixel's footprint in texels: `(∂(u·w, v·h)/∂x, ∂(u·w, v·h)/∂y)`, the two axes of the
+    /// parallelogram one pixel covers in the texture (level 0).
+    pub footprint: [Vec2; 2],
 }
 
 impl Texture {
@@ -348,7 +357,7 @@ impl Texture {
     /// `(|∂/∂x|, |∂/∂y|)` of `(u·w, v·h)`, and the axis (in uv) of the longer one.
     #[must_use]
     pub fn footprint(&self, duv_dx: Vec2, duv_dy: Vec2) -> (f32, f32, Vec2) {
-        let size = Vec2::new(self.levels[0].width as f32, self.levels[0].height as f32);
+        let size = self.levels[0].size();
         let (lx, ly) = ((duv_dx * size).length(), (duv_dy * size).length());
         if lx >= ly {
             (lx, ly, duv_dx)
@@ -375,9 +384,11 @@ impl Texture {
             1
         };
         let lod = (major / taps as f32).max(1e-12).log2() + s.lod_bias;
+        let size = self.levels[0].size();
         let mut out = Lookup {
             lod,
             taps,
+            footprint: [duv_dx * size, duv_dy * size],
             ..Lookup::default()
         };
         let mut sum = Vec3::ZERO;

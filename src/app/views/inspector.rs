@@ -235,6 +235,9 @@ fn pixel(ui: &mut Ui, session: &Session, capture: &FrameCapture) {
         let (r, _) = ui.allocate_exact_size(egui::vec2(18.0, 18.0), egui::Sense::hover());
         ui.painter().rect_filled(r, 2.0, swatch);
     });
+    if px.primitive[i] != NONE {
+        owner_terms(ui, capture, i, lang);
+    }
     ui.separator();
     let fragments = capture.fragments_at(x, y);
     if fragments.is_empty() {
@@ -251,6 +254,84 @@ fn pixel(ui: &mut Ui, session: &Session, capture: &FrameCapture) {
             "Every fragment failed the depth test.",
             "所有片元都未通过深度测试。",
         ));
+    }
+}
+
+/// What the owning fragment computed at the pixel centre: the lighting terms that sum to its
+/// colour and its texture lookup (uv, footprint, level of detail, level read, texel).
+fn owner_terms(ui: &mut Ui, capture: &FrameCapture, i: usize, lang: Lang) {
+    let px = &capture.pixels;
+    let v3 = |a: [f32; 3]| vec3(glam::Vec3::from_array(a));
+    let row = |ui: &mut Ui, name: &str, value: String, formula: &str| {
+        ui.label(RichText::new(format!("{name:<10} {value}")).monospace())
+            .on_hover_text(formula);
+    };
+    if let Some(sh) = &px.shading {
+        ui.separator();
+        ui.strong(lang.tr("Lighting (owning fragment)", "光照（所属片元）"));
+        row(ui, "ambient", v3(sh.ambient[i]), "Σ k_a·I_a");
+        row(
+            ui,
+            "diffuse",
+            v3(sh.diffuse[i]),
+            "Σ f_att·k_d·I_d·max(n·l, 0)",
+        );
+        row(
+            ui,
+            "specular",
+            v3(sh.specular[i]),
+            "Σ f_att·k_s·I_s·max(n·h, 0)^p",
+        );
+        if sh.reflected[i] != [0.0; 3] {
+            row(ui, "reflected", v3(sh.reflected[i]), "k·C_env(2(n·v)n − v)");
+        }
+        row(ui, "n", v3(sh.normal[i]), "unit normal, world space");
+        row(
+            ui,
+            "n·l, n·h",
+            format!("{}, {}", num(sh.n_dot_l[i]), num(sh.n_dot_h[i])),
+            "of the key light",
+        );
+    }
+    if let Some(tb) = &px.texturing {
+        let [s_x, t_x, s_y, t_y] = tb.footprint[i];
+        if [s_x, t_x, s_y, t_y] == [0.0; 4] {
+            return;
+        }
+        ui.separator();
+        ui.strong(lang.tr("Texture lookup", "纹理查询"));
+        let [u, v] = tb.uv[i];
+        row(
+            ui,
+            "(u, v)",
+            format!("({}, {})", num(u), num(v)),
+            "interpolated",
+        );
+        row(
+            ui,
+            "∂/∂x",
+            format!("({}, {}) texels", num(s_x), num(t_x)),
+            "∂(u·w, v·h)/∂x: the footprint's first axis",
+        );
+        row(
+            ui,
+            "∂/∂y",
+            format!("({}, {}) texels", num(s_y), num(t_y)),
+            "∂(u·w, v·h)/∂y: the footprint's second axis",
+        );
+        row(
+            ui,
+            "λ",
+            num(tb.lod[i]),
+            "λ = log₂ max(|∂/∂x|, |∂/∂y|) + bias",
+        );
+        row(
+            ui,
+            "level",
+            num(tb.level[i]),
+            "k + blend (trilinear mixes k and k+1)",
+        );
+        row(ui, "texel", v3(tb.texel[i]), "the filtered colour");
     }
 }
 

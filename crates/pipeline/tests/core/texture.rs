@@ -162,6 +162,26 @@ fn level_of_detail_is_log2_of_texels_per_pixel() {
     let along_x = texels_per_pixel(d);
     let c = textured_quad(d, 70.0, Sampler::default());
     let tb = c.pixels.texturing.as_ref().expect("texturing buffers");
+    // The footprint's axes, in texels: one pixel right moves along s only, one pixel up along
+    // t only.
+    let [s_x, t_x, s_y, t_y] = tb.footprint[centre];
+    assert!(
+        (s_x.abs() - along_x).abs() < 0.01 * along_x && t_x.abs() < 0.02,
+        "∂/∂x = ({s_x}, {t_x}) vs ({along_x}, 0)"
+    );
+    assert!(
+        s_y.abs() < 0.02 && (t_y.abs() - along_y).abs() < 0.01 * along_y,
+        "∂/∂y = ({s_y}, {t_y}) vs (0, {along_y})"
+    );
+    // Its image: the long axis along t is cyan (hue 180°), saturation log₂(major/minor)/3.
+    let img = c.image(pipeline::capture::BufferKind::Footprint);
+    let [r, g, b, _] = img.get_pixel(32, 32).0;
+    let sat = ((along_y / along_x).log2() / 3.0).min(1.0);
+    let red = (255.0 * (1.0 - sat)).round() as u8;
+    assert!(
+        r.abs_diff(red) <= 2 && g == 255 && b == 255,
+        "({r}, {g}, {b}) vs ({red}, 255, 255)"
+    );
     assert!(
         (tb.lod[centre] - along_y.log2()).abs() < 0.01,
         "λ = {} vs {}",
@@ -442,5 +462,12 @@ fn cube_map_faces_and_a_mirror_sphere() {
     assert!(
         (centre - colors[4]).length() < 1e-4,
         "the +z face: {centre}"
+    );
+    // The reflected term is its own buffer: all of the colour here (no ambient is left).
+    let sh = c.pixels.shading.as_ref().expect("lighting buffers");
+    assert_eq!(Vec3::from(sh.reflected[32 * 65 + 32]), centre);
+    assert!(
+        c.buffers()
+            .contains(&pipeline::capture::BufferKind::Reflected)
     );
 }
