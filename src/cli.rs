@@ -69,6 +69,11 @@ pub enum Command {
         /// down); with lighting on, for flat, Gouraud and Phong shading side by side.
         #[arg(long, value_name = "X0,Y0,X1,Y1", value_parser = parse_line)]
         profile: Option<[f32; 4]>,
+        /// Also write into capture.json everything about window pixel X,Y (y up, as the app's
+        /// pixel inspector shows it): every fragment, its depth test, each lighting term, the
+        /// texture lookup.
+        #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
+        pixel: Option<(u32, u32)>,
     },
     /// Validate scene files and print every problem with file:line:column.
     Check {
@@ -85,6 +90,18 @@ pub enum Command {
         #[arg(long)]
         frames: Option<usize>,
     },
+}
+
+fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
+    let (x, y) = s
+        .split_once(',')
+        .ok_or_else(|| format!("expected X,Y such as 120,80, got \"{s}\""))?;
+    let n = |p: &str| {
+        p.trim()
+            .parse::<u32>()
+            .map_err(|_| format!("\"{p}\" is not a whole pixel coordinate"))
+    };
+    Ok((n(x)?, n(y)?))
 }
 
 fn parse_line(s: &str) -> Result<[f32; 4], String> {
@@ -178,11 +195,13 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             zoom,
             max_records,
             profile,
+            pixel,
         }) => {
             let opts = ExportOptions {
                 out,
                 overlay_zoom: zoom,
                 max_records,
+                pixel,
             };
             export(scene.as_deref(), &opts, size, samples, profile)?;
             Ok(ExitCode::SUCCESS)

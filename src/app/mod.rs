@@ -417,6 +417,7 @@ impl PipelensApp {
             out: PathBuf::from(self.export_dir.trim()),
             overlay_zoom: 0,
             max_records: 200_000,
+            pixel: self.session.selection.pixel,
         };
         let (tx, rx) = channel();
         self.export_result = Some(rx);

@@ -24,6 +24,8 @@ pub struct ExportOptions {
     pub overlay_zoom: u32,
     /// The most vertex and primitive records written to `capture.json` (the rest is counted).
     pub max_records: usize,
+    /// A window pixel `(x, y)` (y up) whose full record goes into `capture.json`.
+    pub pixel: Option<(u32, u32)>,
 }
 
 /// One file of an export.
@@ -100,7 +102,17 @@ pub fn encode_capture(capture: &FrameCapture, opts: &ExportOptions) -> Result<Ve
         .iter()
         .map(|f| (f.name.clone(), f.description.clone()))
         .collect();
-    let json = capture_json(capture, &listing, opts.max_records);
+    let mut json = capture_json(capture, &listing, opts.max_records);
+    if let Some((x, y)) = opts.pixel {
+        let record = capture.pixel_record(x, y).with_context(|| {
+            format!(
+                "--pixel {x},{y} is outside the {}×{} viewport",
+                capture.width(),
+                capture.height()
+            )
+        })?;
+        json["pixel"] = serde_json::to_value(record).context("encoding the pixel record")?;
+    }
     files.push(ExportFile {
         name: "capture.json".into(),
         description: "matrices, vertex table, primitive records, raster triangles".into(),

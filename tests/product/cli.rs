@@ -278,3 +278,68 @@ fn a_textured_scene_exports_every_mip_level() {
     let last = image::open(out.join("texture0_level9.png")).expect("level 9");
     assert_eq!((last.width(), last.height()), (1, 1));
 }
+
+#[test]
+fn a_pixel_record_tells_why_the_pixel_has_its_colour() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("px");
+    let scene = repo().join("assets/scenes/texture.toml");
+    let args = |pixel: &'static str| {
+        vec![
+            "export".to_owned(),
+            scene.to_string_lossy().into_owned(),
+            "--out".to_owned(),
+            out.to_string_lossy().into_owned(),
+            "--size".to_owned(),
+            "160x100".to_owned(),
+            "--pixel".to_owned(),
+            pixel.to_owned(),
+        ]
+    };
+    let run = |pixel| {
+        let a = args(pixel);
+        pipelens(
+            dir.path(),
+            &a.iter().map(String::as_str).collect::<Vec<_>>(),
+        )
+    };
+    // Outside the viewport: one clear message, nothing written.
+    let o = run("160,10");
+    assert!(!o.status.success());
+    assert!(
+        text(&o).contains("outside the 160×100 viewport"),
+        "{}",
+        text(&o)
+    );
+    assert!(!out.exists(), "nothing is written");
+    // On the floor (bottom centre): lit and textured, and the terms sum to the colour.
+    let o = run("80,5");
+    assert!(o.status.success(), "{}", text(&o));
+    let json: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("capture.json")).expect("read"))
+            .expect("valid JSON");
+    let p = &json["pixel"];
+    assert_eq!((p["x"].as_u64(), p["y"].as_u64()), (Some(80), Some(5)));
+    assert!(p["primitive"].is_u64(), "{p}");
+    let fragments = p["fragments"].as_array().expect("fragments");
+    assert!(fragments.iter().any(|f| f["visible"] == true));
+    let t = &p["texture"];
+    assert!(
+        t["footprint"].as_array().is_some_and(|a| a.len() == 4),
+        "{t}"
+    );
+    assert!(t["lod"].is_f64());
+    let l = &p["lighting"];
+    let f = |v: &serde_json::Value, k: usize| v[k].as_f64().expect("number");
+    for k in 0..3 {
+        let sum = f(&l["ambient"], k)
+            + f(&l["diffuse"], k)
+            + f(&l["specular"], k)
+            + f(&l["reflected"], k);
+        let shown = f(&p["color"], k);
+        assert!(
+            (sum.min(1.0) - shown).abs() < 0.02,
+            "channel {k}: {sum} vs {shown}"
+        );
+    }
+}

@@ -313,6 +313,63 @@ pub struct FragmentRecord {
     pub visible: bool,
 }
 
+/// Everything the capture knows about one pixel: what reached it and what it computed.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PixelRecord {
+    /// Window column.
+    pub x: u32,
+    /// Window row (0 at the bottom).
+    pub y: u32,
+    /// Covered samples.
+    pub coverage: u8,
+    /// Mean window depth of the samples.
+    pub depth: f32,
+    /// The final colour.
+    pub color: [f32; 3],
+    /// The owning primitive, if any.
+    pub primitive: Option<u32>,
+    /// The owning fragment's lighting terms (when lit).
+    pub lighting: Option<PixelLighting>,
+    /// The owning fragment's texture lookup (when textured).
+    pub texture: Option<PixelTexture>,
+    /// Every fragment that reached the pixel, in drawing order.
+    pub fragments: Vec<FragmentRecord>,
+}
+
+/// The lighting terms at one pixel (see [`ShadingBuffers`]).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PixelLighting {
+    /// `Σ k_a·I_a`.
+    pub ambient: [f32; 3],
+    /// `Σ f_att·k_d·I_d·max(n·l, 0)`.
+    pub diffuse: [f32; 3],
+    /// `Σ f_att·k_s·I_s·max(n·h, 0)^p`.
+    pub specular: [f32; 3],
+    /// `k·C_env(r)`.
+    pub reflected: [f32; 3],
+    /// The unit normal.
+    pub normal: [f32; 3],
+    /// `n·l` of the key light.
+    pub n_dot_l: f32,
+    /// `n·h` (or `r·v`) of the key light.
+    pub n_dot_h: f32,
+}
+
+/// The texture lookup at one pixel (see [`TextureBuffers`]).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PixelTexture {
+    /// `(u, v)`.
+    pub uv: [f32; 2],
+    /// The footprint's axes in texels, `[∂s/∂x, ∂t/∂x, ∂s/∂y, ∂t/∂y]`.
+    pub footprint: [f32; 4],
+    /// `λ` with the bias.
+    pub lod: f32,
+    /// The level read (`k + blend`).
+    pub level: f32,
+    /// The filtered texel.
+    pub texel: [f32; 3],
+}
+
 /// One sample of an intensity profile along a line of pixels.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct ProfileSample {
@@ -451,14 +508,24 @@ fn texturing_rgb(tb: &TextureBuffers, kind: BufferKind, i: usize) -> [u8; 3] {
 }
 
 impl FrameCapture {
-    /// The buffers this capture holds (lighting buffers only when lighting was on).
+    /// The buffers this capture holds (lighting buffers only when lighting was on, texturing
+    /// buffers only when an object is textured, the reflected term only when a mirror shows).
     #[must_use]
     pub fn buffers(&self) -> Vec<BufferKind> {
         BufferKind::ALL
             .into_iter()
             .filter(|k| !k.is_lighting() || self.pixels.shading.is_some())
             .filter(|k| !k.is_texturing() || self.pixels.texturing.is_some())
+            .filter(|&k| k != BufferKind::Reflected || self.reflects())
             .collect()
+    }
+
+    /// Whether some pixel shows a mirror's reflected term (only then is its buffer listed).
+    fn reflects(&self) -> bool {
+        self.pixels
+            .shading
+            .as_ref()
+            .is_some_and(|s| s.reflected.iter().any(|c| *c != [0.0; 3]))
     }
 
     /// Width in pixels.
@@ -637,6 +704,52 @@ impl FrameCapture {
             c.map_or(Rgba([0, 0, 0, 255]), |c| {
                 Rgba([c.red(), c.green(), c.blue(), c.alpha()])
             })
+        })
+    }
+
+    /// Everything about window pixel `(x, y)` (y up): its buffers' values, the owning
+    /// fragment's lighting terms and texture lookup, and every fragment that reached it (see
+    /// [`Self::fragments_at`]); `None` outside the viewport.
+    #[must_use]
+    pub fn pixel_record(&self, x: u32, y: u32) -> Option<PixelRecord> {
+        if x >= self.width() || y >= self.height() {
+            return None;
+        }
+        let i = ((self.height() - 1 - y) * self.width() + x) as usize;
+        let px = &self.pixels;
+        let owned = px.primitive[i] != NONE;
+        Some(PixelRecord {
+            x,
+            y,
+            coverage: px.coverage[i],
+            depth: px.depth[i],
+            color: px.color[i],
+            primitive: owned.then_some(px.primitive[i]),
+            lighting: px
+                .shading
+                .as_ref()
+                .filter(|_| owned)
+                .map(|s| PixelLighting {
+                    ambient: s.ambient[i],
+                    diffuse: s.diffuse[i],
+                    specular: s.specular[i],
+                    reflected: s.reflected[i],
+                    normal: s.normal[i],
+                    n_dot_l: s.n_dot_l[i],
+                    n_dot_h: s.n_dot_h[i],
+                }),
+            texture: px
+                .texturing
+                .as_ref()
+                .filter(|t| owned && t.footprint[i] != [0.0; 4])
+                .map(|t| PixelTexture {
+                    uv: t.uv[i],
+                    footprint: t.footprint[i],
+                    lod: t.lod[i],
+                    level: t.level[i],
+                    texel: t.texel[i],
+                }),
+            fragments: self.fragments_at(x, y),
         })
     }
 

@@ -3,7 +3,6 @@
 
 use egui::{Color32, RichText, Ui};
 use pipeline::capture::{Fate, FrameCapture};
-use pipeline::raster::NONE;
 
 use super::{matrix, num, palette, vec3, vec4};
 use crate::app::i18n::Lang;
@@ -192,12 +191,15 @@ fn vertices(ui: &mut Ui, session: &Session, capture: &FrameCapture) -> Vec<Comma
 
 fn pixel(ui: &mut Ui, session: &Session, capture: &FrameCapture) {
     let lang = session.lang;
-    let Some((x, y)) = session.selection.pixel else {
+    let Some(record) = session
+        .selection
+        .pixel
+        .and_then(|(x, y)| capture.pixel_record(x, y))
+    else {
         ui.label(lang.tr("Click a pixel in a pixel view (Rasterization, Depth, Output) to see every fragment that reached it.", "在像素视图（光栅化、深度、输出）中单击一个像素，查看到达它的每个片元。"));
         return;
     };
-    let i = ((capture.height() - 1 - y) * capture.width() + x) as usize;
-    let px = &capture.pixels;
+    let (x, y) = (record.x, record.y);
     let s = capture.settings.samples.count();
     ui.heading(format!("{} ({x}, {y})", lang.tr("Pixel", "像素")));
     ui.label(format!(
@@ -211,14 +213,14 @@ fn pixel(ui: &mut Ui, session: &Session, capture: &FrameCapture) {
     ui.label(format!(
         "{}: {}/{s}",
         lang.tr("coverage", "覆盖"),
-        px.coverage[i]
+        record.coverage
     ));
     ui.label(format!(
         "{}: {}",
         lang.tr("depth z_w (mean of samples)", "深度 z_w（采样平均）"),
-        num(px.depth[i])
+        num(record.depth)
     ));
-    let c = px.color[i];
+    let c = record.color;
     ui.horizontal(|ui| {
         ui.label(format!(
             "{}: ({}, {}, {})",
@@ -235,21 +237,18 @@ fn pixel(ui: &mut Ui, session: &Session, capture: &FrameCapture) {
         let (r, _) = ui.allocate_exact_size(egui::vec2(18.0, 18.0), egui::Sense::hover());
         ui.painter().rect_filled(r, 2.0, swatch);
     });
-    if px.primitive[i] != NONE {
-        owner_terms(ui, capture, i, lang);
-    }
+    owner_terms(ui, &record, lang);
     ui.separator();
-    let fragments = capture.fragments_at(x, y);
-    if fragments.is_empty() {
+    if record.fragments.is_empty() {
         ui.label(lang.tr(
             "No fragment reached this pixel: it keeps the background.",
             "没有片元到达此像素：保持背景色。",
         ));
     }
-    for (k, f) in fragments.iter().enumerate() {
+    for (k, f) in record.fragments.iter().enumerate() {
         fragment(ui, k, f, capture, lang);
     }
-    if px.primitive[i] == NONE && !fragments.is_empty() {
+    if record.primitive.is_none() && !record.fragments.is_empty() {
         ui.label(lang.tr(
             "Every fragment failed the depth test.",
             "所有片元都未通过深度测试。",
@@ -259,48 +258,39 @@ fn pixel(ui: &mut Ui, session: &Session, capture: &FrameCapture) {
 
 /// What the owning fragment computed at the pixel centre: the lighting terms that sum to its
 /// colour and its texture lookup (uv, footprint, level of detail, level read, texel).
-fn owner_terms(ui: &mut Ui, capture: &FrameCapture, i: usize, lang: Lang) {
-    let px = &capture.pixels;
+fn owner_terms(ui: &mut Ui, record: &pipeline::capture::PixelRecord, lang: Lang) {
     let v3 = |a: [f32; 3]| vec3(glam::Vec3::from_array(a));
     let row = |ui: &mut Ui, name: &str, value: String, formula: &str| {
         ui.label(RichText::new(format!("{name:<10} {value}")).monospace())
             .on_hover_text(formula);
     };
-    if let Some(sh) = &px.shading {
+    if let Some(sh) = &record.lighting {
         ui.separator();
         ui.strong(lang.tr("Lighting (owning fragment)", "光照（所属片元）"));
-        row(ui, "ambient", v3(sh.ambient[i]), "Σ k_a·I_a");
-        row(
-            ui,
-            "diffuse",
-            v3(sh.diffuse[i]),
-            "Σ f_att·k_d·I_d·max(n·l, 0)",
-        );
+        row(ui, "ambient", v3(sh.ambient), "Σ k_a·I_a");
+        row(ui, "diffuse", v3(sh.diffuse), "Σ f_att·k_d·I_d·max(n·l, 0)");
         row(
             ui,
             "specular",
-            v3(sh.specular[i]),
+            v3(sh.specular),
             "Σ f_att·k_s·I_s·max(n·h, 0)^p",
         );
-        if sh.reflected[i] != [0.0; 3] {
-            row(ui, "reflected", v3(sh.reflected[i]), "k·C_env(2(n·v)n − v)");
+        if sh.reflected != [0.0; 3] {
+            row(ui, "reflected", v3(sh.reflected), "k·C_env(2(n·v)n − v)");
         }
-        row(ui, "n", v3(sh.normal[i]), "unit normal, world space");
+        row(ui, "n", v3(sh.normal), "unit normal, world space");
         row(
             ui,
             "n·l, n·h",
-            format!("{}, {}", num(sh.n_dot_l[i]), num(sh.n_dot_h[i])),
+            format!("{}, {}", num(sh.n_dot_l), num(sh.n_dot_h)),
             "of the key light",
         );
     }
-    if let Some(tb) = &px.texturing {
-        let [s_x, t_x, s_y, t_y] = tb.footprint[i];
-        if [s_x, t_x, s_y, t_y] == [0.0; 4] {
-            return;
-        }
+    if let Some(t) = &record.texture {
+        let [s_x, t_x, s_y, t_y] = t.footprint;
         ui.separator();
         ui.strong(lang.tr("Texture lookup", "纹理查询"));
-        let [u, v] = tb.uv[i];
+        let [u, v] = t.uv;
         row(
             ui,
             "(u, v)",
@@ -319,19 +309,14 @@ fn owner_terms(ui: &mut Ui, capture: &FrameCapture, i: usize, lang: Lang) {
             format!("({}, {}) texels", num(s_y), num(t_y)),
             "∂(u·w, v·h)/∂y: the footprint's second axis",
         );
-        row(
-            ui,
-            "λ",
-            num(tb.lod[i]),
-            "λ = log₂ max(|∂/∂x|, |∂/∂y|) + bias",
-        );
+        row(ui, "λ", num(t.lod), "λ = log₂ max(|∂/∂x|, |∂/∂y|) + bias");
         row(
             ui,
             "level",
-            num(tb.level[i]),
+            num(t.level),
             "k + blend (trilinear mixes k and k+1)",
         );
-        row(ui, "texel", v3(tb.texel[i]), "the filtered colour");
+        row(ui, "texel", v3(t.texel), "the filtered colour");
     }
 }
 
