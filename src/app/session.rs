@@ -213,12 +213,17 @@ impl Comparison {
     /// The comparison named `shading`, `interpolation` or `samples`, for the command line.
     #[must_use]
     pub fn from_name(name: &str) -> Option<Self> {
-        match name {
-            "shading" => Some(Self::Shading),
-            "interpolation" => Some(Self::Interpolation),
-            "samples" => Some(Self::Samples),
-            "filtering" => Some(Self::Filtering),
-            _ => None,
+        Self::ALL.into_iter().find(|c| c.key() == name)
+    }
+
+    /// Its name in files and on the command line.
+    #[must_use]
+    pub fn key(self) -> &'static str {
+        match self {
+            Self::Shading => "shading",
+            Self::Interpolation => "interpolation",
+            Self::Samples => "samples",
+            Self::Filtering => "filtering",
         }
     }
 

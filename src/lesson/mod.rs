@@ -1,14 +1,19 @@
-//! Scene files (and, later, lessons): plain TOML that a teacher can write, parsed in two tiers.
+//! Scene files and lessons: plain TOML that a teacher can write, parsed in two tiers.
 //!
 //! 1. [`raw`] mirrors the file (serde, unknown keys rejected, every value with its position);
 //! 2. [`validate`] resolves it into a `pipeline::scene::Scene` and `RenderSettings`, collecting
 //!    every problem as a [`Diagnostic`] with file:line:column and what was expected.
 //!
-//! The grammar of a scene file is documented in `lessons/README.md`.
+//! A lesson ([`script`]) is a scene with `[lesson]` metadata and `[[steps]]`; its parameters are
+//! named in [`param`]. The grammar of both is documented in `lessons/README.md`.
 
 mod diagnostic;
+pub mod param;
 pub mod raw;
+pub mod script;
 pub mod validate;
+
+pub use script::{Lesson, Step, Text};
 
 use std::path::{Path, PathBuf};
 
@@ -76,6 +81,62 @@ pub fn read_text(path: &Path) -> Result<String, Diagnostics> {
 pub fn parse_scene(text: &str, file: &str, base: &Path) -> Result<SceneSpec, Diagnostics> {
     let raw: raw::RawSceneFile = parse_toml(text, file)?;
     validate::scene(&raw.scene, text, file, base)
+}
+
+/// What a file holds: a bare scene, or a lesson.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Document {
+    /// A scene file (`[scene]` only).
+    Scene(SceneSpec),
+    /// A lesson (`[lesson]`, `[scene]`, `[[steps]]`).
+    Lesson(Box<Lesson>),
+}
+
+impl Document {
+    /// The scene to show first.
+    #[must_use]
+    pub fn first_spec(&self) -> SceneSpec {
+        match self {
+            Self::Scene(s) => s.clone(),
+            Self::Lesson(l) => l.spec_at(0),
+        }
+    }
+}
+
+/// The lesson built into pipelens, opened when no file is given: a tour of the pipeline.
+pub const DEFAULT_LESSON: &str = include_str!("../../lessons/00-tour.toml");
+/// The name under which the built-in lesson appears in messages.
+pub const DEFAULT_LESSON_NAME: &str = "lessons/00-tour.toml (built in)";
+
+/// Reads and validates a scene file or a lesson, whichever it is.
+///
+/// # Errors
+/// Every problem found, each with its position.
+pub fn load_file(path: &Path) -> Result<Document, Diagnostics> {
+    let shown = path.display().to_string();
+    let text = read_text(path)?;
+    let base = path.parent().map_or_else(PathBuf::new, Path::to_path_buf);
+    parse_document(&text, &shown, &base)
+}
+
+/// Parses scene or lesson text.
+///
+/// # Errors
+/// Every problem found, each with its position.
+pub fn parse_document(text: &str, file: &str, base: &Path) -> Result<Document, Diagnostics> {
+    if script::is_lesson(text) {
+        script::parse_lesson(text, file, base).map(|l| Document::Lesson(Box::new(l)))
+    } else {
+        parse_scene(text, file, base).map(Document::Scene)
+    }
+}
+
+/// The built-in default lesson.
+///
+/// # Errors
+/// Never for the shipped lesson (a test checks it).
+pub fn default_lesson() -> Result<Lesson, Diagnostics> {
+    script::parse_lesson(DEFAULT_LESSON, DEFAULT_LESSON_NAME, Path::new("."))
 }
 
 /// The built-in default scene.

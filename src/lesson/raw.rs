@@ -240,3 +240,80 @@ pub enum RawColor {
     Named(String),
     Rgb([f64; 3]),
 }
+
+/// A lesson file: `[lesson]`, `[scene]` and `[[steps]]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawLessonFile {
+    pub lesson: Spanned<RawMeta>,
+    pub scene: Spanned<RawScene>,
+    #[serde(default)]
+    pub steps: Vec<Spanned<RawStep>>,
+}
+
+/// `[lesson]`: what the lesson is called and what it needs first.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawMeta {
+    pub id: Spanned<String>,
+    pub title: Spanned<RawText>,
+    pub summary: Spanned<RawText>,
+    #[serde(default)]
+    pub prerequisites: Vec<Spanned<String>>,
+}
+
+/// Text in both languages: `{ en = "…", zh = "…" }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawText {
+    pub en: String,
+    pub zh: String,
+}
+
+/// One `[[steps]]` entry.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawStep {
+    pub title: Spanned<RawText>,
+    pub narration: Spanned<RawText>,
+    pub stage: Option<Spanned<String>>,
+    pub layout: Option<Spanned<String>>,
+    pub compare: Option<Spanned<String>>,
+    pub buffer: Option<Spanned<String>>,
+    pub overlays: Option<Vec<Spanned<String>>>,
+    #[serde(default)]
+    pub set: std::collections::BTreeMap<Spanned<String>, Spanned<RawValue>>,
+    #[serde(default)]
+    pub animate: Vec<Spanned<RawAnimate>>,
+    pub pixel: Option<Spanned<[i64; 2]>>,
+    pub vertex: Option<Spanned<i64>>,
+    pub profile: Option<Spanned<[f64; 4]>>,
+    pub question: Option<Spanned<RawText>>,
+    pub answer: Option<Spanned<RawText>>,
+}
+
+/// `{ param = "…", from = …, to = …, seconds = …, easing = "…", repeat = "…" }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawAnimate {
+    pub param: Spanned<String>,
+    pub from: Spanned<RawValue>,
+    pub to: Spanned<RawValue>,
+    pub seconds: Spanned<f64>,
+    pub easing: Option<Spanned<String>>,
+    pub repeat: Option<Spanned<String>>,
+}
+
+/// A parameter value as written.
+#[derive(Debug, Deserialize)]
+#[serde(
+    untagged,
+    expecting = "a number, [x, y, z], true or false, or a name such as \"phong\" (write the \
+    parameter's name in quotes: \"projection.fovy\" = 60)"
+)]
+pub enum RawValue {
+    Bool(bool),
+    Number(f64),
+    Vec3([f64; 3]),
+    Name(String),
+}

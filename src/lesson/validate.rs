@@ -23,6 +23,50 @@ use super::raw::{
 };
 use super::{Diagnostic, Diagnostics, SceneSpec};
 
+/// The names of `cull` in files.
+pub(super) const CULL: &[(&str, CullMode)] = &[
+    ("none", CullMode::None),
+    ("back", CullMode::Back),
+    ("front", CullMode::Front),
+];
+
+/// The names of `depth_test` in files.
+pub(super) const DEPTH_TEST: &[(&str, DepthTest)] = &[
+    ("less", DepthTest::Less),
+    ("less_equal", DepthTest::LessEqual),
+    ("greater", DepthTest::Greater),
+    ("greater_equal", DepthTest::GreaterEqual),
+    ("always", DepthTest::Always),
+];
+
+/// The names of `shading` in files.
+pub(super) const SHADING: &[(&str, Frequency)] = &[
+    ("unlit", Frequency::Unlit),
+    ("flat", Frequency::Flat),
+    ("gouraud", Frequency::Gouraud),
+    ("phong", Frequency::Phong),
+];
+
+/// The names of `reflection` in files.
+pub(super) const REFLECTION: &[(&str, Reflection)] = &[
+    ("phong", Reflection::Phong),
+    ("blinn_phong", Reflection::BlinnPhong),
+];
+
+/// The names of `mipmap` in files.
+pub(super) const MIPMAP: &[(&str, Mipmap)] = &[
+    ("none", Mipmap::None),
+    ("nearest", Mipmap::Nearest),
+    ("linear", Mipmap::Linear),
+];
+
+/// The names of `filter` in files.
+pub(super) const FILTER: &[(&str, Filter)] =
+    &[("nearest", Filter::Nearest), ("bilinear", Filter::Bilinear)];
+
+/// The names of `wrap` in files.
+pub(super) const WRAP: &[(&str, Wrap)] = &[("repeat", Wrap::Repeat), ("clamp", Wrap::Clamp)];
+
 /// Collects diagnostics against one source text.
 struct Checker<'a> {
     text: &'a str,
@@ -216,32 +260,10 @@ fn render(c: &mut Checker<'_>, r: &Spanned<RawRender>) -> RenderSettings {
 /// The named choices of `[scene.render]`: culling, depth test, interpolation, lighting.
 fn render_modes(c: &mut Checker<'_>, raw: &RawRender, s: &mut RenderSettings) {
     if let Some(v) = &raw.cull {
-        s.cull = c
-            .choice(
-                "cull",
-                v,
-                &[
-                    ("none", CullMode::None),
-                    ("back", CullMode::Back),
-                    ("front", CullMode::Front),
-                ],
-            )
-            .unwrap_or_default();
+        s.cull = c.choice("cull", v, CULL).unwrap_or_default();
     }
     if let Some(v) = &raw.depth_test {
-        s.depth_test = c
-            .choice(
-                "depth_test",
-                v,
-                &[
-                    ("less", DepthTest::Less),
-                    ("less_equal", DepthTest::LessEqual),
-                    ("greater", DepthTest::Greater),
-                    ("greater_equal", DepthTest::GreaterEqual),
-                    ("always", DepthTest::Always),
-                ],
-            )
-            .unwrap_or_default();
+        s.depth_test = c.choice("depth_test", v, DEPTH_TEST).unwrap_or_default();
     }
     if let Some(b) = raw.perspective_correct {
         s.perspective_correct = b;
@@ -250,30 +272,10 @@ fn render_modes(c: &mut Checker<'_>, raw: &RawRender, s: &mut RenderSettings) {
         s.per_sample_shading = b;
     }
     if let Some(v) = &raw.shading {
-        s.shading = c
-            .choice(
-                "shading",
-                v,
-                &[
-                    ("unlit", Frequency::Unlit),
-                    ("flat", Frequency::Flat),
-                    ("gouraud", Frequency::Gouraud),
-                    ("phong", Frequency::Phong),
-                ],
-            )
-            .unwrap_or_default();
+        s.shading = c.choice("shading", v, SHADING).unwrap_or_default();
     }
     if let Some(v) = &raw.reflection {
-        s.reflection = c
-            .choice(
-                "reflection",
-                v,
-                &[
-                    ("phong", Reflection::Phong),
-                    ("blinn_phong", Reflection::BlinnPhong),
-                ],
-            )
-            .unwrap_or_default();
+        s.reflection = c.choice("reflection", v, REFLECTION).unwrap_or_default();
     }
 }
 
@@ -804,35 +806,13 @@ fn texture(c: &mut Checker<'_>, t: &Spanned<String>, base: &Path) -> Option<Text
 fn sampler(c: &mut Checker<'_>, raw: &RawRender, s: &mut RenderSettings) {
     let smp = &mut s.sampler;
     if let Some(v) = &raw.filter {
-        smp.filter = c
-            .choice(
-                "filter",
-                v,
-                &[("nearest", Filter::Nearest), ("bilinear", Filter::Bilinear)],
-            )
-            .unwrap_or_default();
+        smp.filter = c.choice("filter", v, FILTER).unwrap_or_default();
     }
     if let Some(v) = &raw.mipmap {
-        smp.mipmap = c
-            .choice(
-                "mipmap",
-                v,
-                &[
-                    ("none", Mipmap::None),
-                    ("nearest", Mipmap::Nearest),
-                    ("linear", Mipmap::Linear),
-                ],
-            )
-            .unwrap_or_default();
+        smp.mipmap = c.choice("mipmap", v, MIPMAP).unwrap_or_default();
     }
     if let Some(v) = &raw.wrap {
-        smp.wrap = c
-            .choice(
-                "wrap",
-                v,
-                &[("repeat", Wrap::Repeat), ("clamp", Wrap::Clamp)],
-            )
-            .unwrap_or_default();
+        smp.wrap = c.choice("wrap", v, WRAP).unwrap_or_default();
     }
     if let Some(v) = &raw.anisotropy {
         match u32::try_from(*v.get_ref()) {

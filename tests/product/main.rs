@@ -2,6 +2,7 @@
 
 mod app;
 mod cli;
+mod lessons;
 mod reference;
 mod scene_file;
 mod support;

@@ -73,6 +73,29 @@ pub enum Pose {
 }
 
 impl Pose {
+    /// Every joint angle (degrees) by the name scene files use for it.
+    pub fn joints_mut(&mut self) -> Vec<(&'static str, &mut f32)> {
+        match self {
+            Self::RobotArm(a) => vec![
+                ("base", &mut a.base),
+                ("lower", &mut a.lower),
+                ("upper", &mut a.upper),
+            ],
+            Self::Humanoid(h) => vec![
+                ("torso", &mut h.torso),
+                ("head", &mut h.head),
+                ("left_upper_arm", &mut h.left_upper_arm),
+                ("left_lower_arm", &mut h.left_lower_arm),
+                ("right_upper_arm", &mut h.right_upper_arm),
+                ("right_lower_arm", &mut h.right_lower_arm),
+                ("left_upper_leg", &mut h.left_upper_leg),
+                ("left_lower_leg", &mut h.left_lower_leg),
+                ("right_upper_leg", &mut h.right_upper_leg),
+                ("right_lower_leg", &mut h.right_lower_leg),
+            ],
+        }
+    }
+
     /// The tree of parts in this pose.
     #[must_use]
     pub fn tree(&self) -> Node {

@@ -1,0 +1,531 @@
+//! Lessons: a scene and the steps a teacher walks through, each with its narration in Chinese
+//! and English, the stage and layout to show, parameter changes and animations, overlays, a
+//! highlighted pixel or vertex, and a question for self-study.
+
+use std::ops::Range;
+use std::path::Path;
+
+use pipeline::capture::BufferKind;
+use toml::Spanned;
+
+use super::param::{self, Animation, Easing, Repeat, Value};
+use super::raw::{RawAnimate, RawLessonFile, RawStep, RawText, RawValue};
+use super::{Diagnostic, Diagnostics, SceneSpec};
+use crate::app::i18n::Lang;
+use crate::app::session::{Comparison, Stage};
+
+/// Text in both languages.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Text {
+    /// English.
+    pub en: String,
+    /// Chinese.
+    pub zh: String,
+}
+
+impl Text {
+    /// The text in `lang`.
+    #[must_use]
+    pub fn get(&self, lang: Lang) -> &str {
+        match lang {
+            Lang::En => &self.en,
+            Lang::Zh => &self.zh,
+        }
+    }
+}
+
+/// How a step arranges its views.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Layout {
+    /// The stage alone.
+    Single,
+    /// The stage beside the observer view (the camera, its frustum and the canonical cube).
+    Observer,
+    /// Settings side by side (`compare`).
+    Compare,
+}
+
+/// What a step draws over the pixel views.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Overlay {
+    /// Each triangle's edges.
+    Edges,
+    /// Each triangle's bounding box.
+    BoundingBoxes,
+    /// Sample positions (zoomed in).
+    Samples,
+}
+
+/// One step of a lesson.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Step {
+    /// Its title.
+    pub title: Text,
+    /// What the teacher says (simple markdown: paragraphs, `**bold**`, `- ` lists).
+    pub narration: Text,
+    /// The stage shown.
+    pub stage: Option<Stage>,
+    /// The arrangement.
+    pub layout: Layout,
+    /// The settings compared, with `layout = "compare"`.
+    pub compare: Option<Comparison>,
+    /// The buffer a pixel stage shows.
+    pub buffer: Option<BufferKind>,
+    /// The overlays (`None`: leave them as they are).
+    pub overlays: Option<Vec<Overlay>>,
+    /// Parameter changes, kept by the steps after this one.
+    pub set: Vec<(String, Value)>,
+    /// Parameters moving while the step plays.
+    pub animate: Vec<Animation>,
+    /// The pixel to inspect (window coordinates, y up).
+    pub pixel: Option<(u32, u32)>,
+    /// The vertex-table row to highlight.
+    pub vertex: Option<u32>,
+    /// The profile line `[x0, y0, x1, y1]` (image pixels, y down).
+    pub profile: Option<[f32; 4]>,
+    /// A question for self-study.
+    pub question: Option<Text>,
+    /// Its answer.
+    pub answer: Option<Text>,
+}
+
+/// A lesson, validated.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Lesson {
+    /// Its id, such as `05-perspective`.
+    pub id: String,
+    /// Its title.
+    pub title: Text,
+    /// One or two sentences on what it teaches.
+    pub summary: Text,
+    /// Ids of the lessons to take first.
+    pub prerequisites: Vec<String>,
+    /// The scene before the first step.
+    pub scene: SceneSpec,
+    /// The steps, at least one.
+    pub steps: Vec<Step>,
+}
+
+impl Lesson {
+    /// The scene at step `k`: the lesson's scene with the `set`s of steps 0…k applied in order
+    /// (each was checked when the lesson was loaded).
+    #[must_use]
+    pub fn spec_at(&self, k: usize) -> SceneSpec {
+        let mut spec = self.scene.clone();
+        for step in self.steps.iter().take(k + 1) {
+            for (name, value) in &step.set {
+                // Checked at load time; a failure here leaves the value as it was.
+                let _ = param::apply(&mut spec, name, value);
+            }
+        }
+        spec
+    }
+
+    /// The scene `t` seconds into step `k`: [`Self::spec_at`] with its animations applied.
+    #[must_use]
+    pub fn spec_playing(&self, k: usize, t: f32) -> SceneSpec {
+        let mut spec = self.spec_at(k);
+        if let Some(step) = self.steps.get(k) {
+            for a in &step.animate {
+                let _ = param::apply(&mut spec, &a.param, &a.value_at(t));
+            }
+        }
+        spec
+    }
+}
+
+/// Whether TOML text is a lesson (it has a `[lesson]` table) rather than a bare scene.
+#[must_use]
+pub fn is_lesson(text: &str) -> bool {
+    text.parse::<toml::Table>()
+        .is_ok_and(|t| t.contains_key("lesson"))
+}
+
+/// Parses and validates lesson text. `file` names it in messages; `base` resolves paths.
+///
+/// # Errors
+/// Every problem found, each with its position.
+pub fn parse_lesson(text: &str, file: &str, base: &Path) -> Result<Lesson, Diagnostics> {
+    let raw: RawLessonFile = super::parse_toml(text, file)?;
+    let scene = super::validate::scene(&raw.scene, text, file, base);
+    let mut found = Vec::new();
+    let error = |found: &mut Vec<Diagnostic>, span: Range<usize>, m: String| {
+        found.push(Diagnostic::at(file, text, span, m));
+    };
+    let meta = raw.lesson.get_ref();
+    let id = meta.id.get_ref().trim().to_owned();
+    if id.is_empty() {
+        error(
+            &mut found,
+            meta.id.span(),
+            "`id` must not be empty".to_owned(),
+        );
+    }
+    let mut text_of = |found: &mut Vec<Diagnostic>, key: &str, t: &Spanned<RawText>| {
+        let r = t.get_ref();
+        if r.en.trim().is_empty() || r.zh.trim().is_empty() {
+            error(
+                found,
+                t.span(),
+                format!("`{key}` needs both `en` and `zh` text, neither empty"),
+            );
+        }
+        Text {
+            en: r.en.trim().to_owned(),
+            zh: r.zh.trim().to_owned(),
+        }
+    };
+    let title = text_of(&mut found, "title", &meta.title);
+    let summary = text_of(&mut found, "summary", &meta.summary);
+    let prerequisites = meta
+        .prerequisites
+        .iter()
+        .map(|p| p.get_ref().clone())
+        .collect();
+    if raw.steps.is_empty() {
+        error(
+            &mut found,
+            raw.lesson.span(),
+            "the lesson has no steps: add at least one [[steps]] with a `title` and `narration`"
+                .to_owned(),
+        );
+    }
+    let mut steps = Vec::new();
+    if let Ok(base_spec) = &scene {
+        let mut spec = base_spec.clone();
+        for s in &raw.steps {
+            let mut c = StepChecker {
+                file,
+                text,
+                found: &mut found,
+            };
+            steps.push(c.step(s, &mut spec, &mut text_of));
+        }
+    }
+    let scene = match scene {
+        Ok(s) => s,
+        Err(Diagnostics(mut d)) => {
+            d.extend(found);
+            return Err(Diagnostics(d));
+        }
+    };
+    if !found.is_empty() {
+        found.sort_by_key(|d| (d.line, d.column));
+        return Err(Diagnostics(found));
+    }
+    Ok(Lesson {
+        id,
+        title,
+        summary,
+        prerequisites,
+        scene,
+        steps,
+    })
+}
+
+/// Checks steps against the scene as the steps before them left it.
+struct StepChecker<'a> {
+    file: &'a str,
+    text: &'a str,
+    found: &'a mut Vec<Diagnostic>,
+}
+
+type Views = (
+    Option<Stage>,
+    Layout,
+    Option<Comparison>,
+    Option<BufferKind>,
+    Option<Vec<Overlay>>,
+);
+type Targets = (Option<(u32, u32)>, Option<u32>, Option<[f32; 4]>);
+type TextOf<'f> = dyn FnMut(&mut Vec<Diagnostic>, &str, &Spanned<RawText>) -> Text + 'f;
+
+impl StepChecker<'_> {
+    fn error(&mut self, span: Range<usize>, m: impl Into<String>) {
+        self.found
+            .push(Diagnostic::at(self.file, self.text, span, m.into()));
+    }
+
+    fn choice<T: Copy>(
+        &mut self,
+        key: &str,
+        v: &Spanned<String>,
+        options: &[(&str, T)],
+    ) -> Option<T> {
+        let found = options.iter().find(|(n, _)| *n == v.get_ref().as_str());
+        if found.is_none() {
+            let names: Vec<String> = options.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+            self.error(
+                v.span(),
+                format!(
+                    "`{key}` must be one of {}, got \"{}\"",
+                    names.join(", "),
+                    v.get_ref()
+                ),
+            );
+        }
+        found.map(|(_, t)| *t)
+    }
+
+    fn value(&mut self, v: &Spanned<RawValue>) -> Option<Value> {
+        Some(match v.get_ref() {
+            RawValue::Bool(b) => Value::Bool(*b),
+            RawValue::Number(x) if x.is_finite() && x.abs() <= 1e15 => Value::Number(*x as f32),
+            RawValue::Vec3(a) if a.iter().all(|x| x.is_finite() && x.abs() <= 1e15) => {
+                Value::Vec3(glam::Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32))
+            }
+            RawValue::Name(n) => Value::Name(n.clone()),
+            _ => {
+                self.error(
+                    v.span(),
+                    "expected finite numbers of magnitude at most 1e15",
+                );
+                return None;
+            }
+        })
+    }
+
+    fn step(
+        &mut self,
+        s: &Spanned<RawStep>,
+        spec: &mut SceneSpec,
+        text_of: &mut TextOf<'_>,
+    ) -> Step {
+        let r = s.get_ref();
+        let title = text_of(self.found, "title", &r.title);
+        let narration = text_of(self.found, "narration", &r.narration);
+        let question = r
+            .question
+            .as_ref()
+            .map(|q| text_of(self.found, "question", q));
+        let answer = r.answer.as_ref().map(|a| text_of(self.found, "answer", a));
+        let (stage, layout, compare, buffer, overlays) = self.views(s);
+        let mut set = Vec::new();
+        for (name, v) in &r.set {
+            let Some(value) = self.value(v) else { continue };
+            match param::apply(spec, name.get_ref(), &value) {
+                Ok(()) => set.push((name.get_ref().clone(), value)),
+                Err(e) => self.error(name.span(), e),
+            }
+        }
+        let animate = r
+            .animate
+            .iter()
+            .filter_map(|a| self.animation(a, spec))
+            .collect();
+        let (pixel, vertex, profile) = self.targets(r, spec);
+        Step {
+            title,
+            narration,
+            stage,
+            layout,
+            compare,
+            buffer,
+            overlays,
+            set,
+            animate,
+            pixel,
+            vertex,
+            profile,
+            question,
+            answer,
+        }
+    }
+
+    /// What a step shows: stage, layout, compared settings, buffer, overlays.
+    fn views(&mut self, s: &Spanned<RawStep>) -> Views {
+        let r = s.get_ref();
+        let stages: Vec<(String, Stage)> = Stage::ALL
+            .into_iter()
+            .map(|st| (st.name(Lang::En).to_lowercase(), st))
+            .collect();
+        let stage_options: Vec<(&str, Stage)> =
+            stages.iter().map(|(n, st)| (n.as_str(), *st)).collect();
+        let stage = r
+            .stage
+            .as_ref()
+            .and_then(|v| self.choice("stage", v, &stage_options));
+        let compare_options: Vec<(&str, Comparison)> =
+            Comparison::ALL.into_iter().map(|c| (c.key(), c)).collect();
+        let compare = r
+            .compare
+            .as_ref()
+            .and_then(|v| self.choice("compare", v, &compare_options));
+        let layout = match &r.layout {
+            Some(v) => self
+                .choice(
+                    "layout",
+                    v,
+                    &[
+                        ("single", Layout::Single),
+                        ("observer", Layout::Observer),
+                        ("compare", Layout::Compare),
+                    ],
+                )
+                .unwrap_or(Layout::Single),
+            None if compare.is_some() => Layout::Compare,
+            None => Layout::Single,
+        };
+        if layout == Layout::Compare && compare.is_none() {
+            let span = r.layout.as_ref().map_or(s.span(), Spanned::span);
+            self.error(
+                span,
+                "`layout = \"compare\"` needs `compare = \"shading\" | \"interpolation\" | \"samples\" | \"filtering\"`",
+            );
+        }
+        let buffer_options: Vec<(&str, BufferKind)> =
+            BufferKind::ALL.into_iter().map(|b| (b.name(), b)).collect();
+        let buffer = r
+            .buffer
+            .as_ref()
+            .and_then(|v| self.choice("buffer", v, &buffer_options));
+        let overlays = r.overlays.as_ref().map(|list| {
+            list.iter()
+                .filter_map(|o| {
+                    self.choice(
+                        "overlays",
+                        o,
+                        &[
+                            ("edges", Overlay::Edges),
+                            ("bounding_boxes", Overlay::BoundingBoxes),
+                            ("samples", Overlay::Samples),
+                        ],
+                    )
+                })
+                .collect()
+        });
+        (stage, layout, compare, buffer, overlays)
+    }
+
+    /// What a step points at: a pixel, a vertex-table row, a profile line, each inside the
+    /// scene as the step leaves it.
+    fn targets(&mut self, r: &RawStep, spec: &SceneSpec) -> Targets {
+        let pixel = r.pixel.as_ref().and_then(|p| {
+            let [x, y] = *p.get_ref();
+            let (w, h) = (spec.settings.width, spec.settings.height);
+            match (u32::try_from(x), u32::try_from(y)) {
+                (Ok(x), Ok(y)) if x < w && y < h => Some((x, y)),
+                _ => {
+                    self.error(
+                        p.span(),
+                        format!("`pixel` must be inside the {w}×{h} viewport: 0 ≤ x < {w}, 0 ≤ y < {h} (y up), got [{x}, {y}]"),
+                    );
+                    None
+                }
+            }
+        });
+        let vertex = r.vertex.as_ref().and_then(|v| {
+            let rows: usize = spec
+                .scene
+                .drawn_objects()
+                .0
+                .iter()
+                .map(|o| o.mesh.positions.len())
+                .sum();
+            match usize::try_from(*v.get_ref()) {
+                Ok(n) if n < rows => Some(n as u32),
+                _ => {
+                    self.error(
+                        v.span(),
+                        format!(
+                            "`vertex` must be a row of the vertex table, 0 to {}, got {}",
+                            rows.saturating_sub(1),
+                            v.get_ref()
+                        ),
+                    );
+                    None
+                }
+            }
+        });
+        let profile = r.profile.as_ref().and_then(|p| {
+            let [a, b, c, d] = *p.get_ref();
+            let (w, h) = (
+                f64::from(spec.settings.width),
+                f64::from(spec.settings.height),
+            );
+            if [a, c].iter().all(|x| (0.0..w).contains(x))
+                && [b, d].iter().all(|y| (0.0..h).contains(y))
+            {
+                Some([a as f32, b as f32, c as f32, d as f32])
+            } else {
+                self.error(
+                    p.span(),
+                    format!(
+                        "`profile` = [x0, y0, x1, y1] must lie inside the {w}×{h} image (y down)"
+                    ),
+                );
+                None
+            }
+        });
+        (pixel, vertex, profile)
+    }
+
+    fn animation(&mut self, a: &Spanned<RawAnimate>, spec: &SceneSpec) -> Option<Animation> {
+        let r = a.get_ref();
+        let from = self.value(&r.from)?;
+        let to = self.value(&r.to)?;
+        let same_kind = matches!(
+            (&from, &to),
+            (Value::Number(_), Value::Number(_)) | (Value::Vec3(_), Value::Vec3(_))
+        );
+        if !same_kind {
+            self.error(
+                r.to.span(),
+                "`from` and `to` must both be numbers or both [x, y, z]: only those can move",
+            );
+            return None;
+        }
+        let seconds = *r.seconds.get_ref();
+        if !(seconds > 0.0 && seconds <= 600.0) {
+            self.error(
+                r.seconds.span(),
+                format!("`seconds` must be more than 0 and at most 600, got {seconds}"),
+            );
+            return None;
+        }
+        let name = r.param.get_ref();
+        for (end, span) in [(&from, r.from.span()), (&to, r.to.span())] {
+            let mut probe = spec.clone();
+            if let Err(e) = param::apply(&mut probe, name, end) {
+                let span = if e.starts_with("unknown parameter") {
+                    r.param.span()
+                } else {
+                    span
+                };
+                self.error(span, e);
+                return None;
+            }
+        }
+        let easing = match &r.easing {
+            Some(v) => self.choice(
+                "easing",
+                v,
+                &[
+                    ("linear", Easing::Linear),
+                    ("ease_in_out", Easing::EaseInOut),
+                ],
+            )?,
+            None => Easing::EaseInOut,
+        };
+        let repeat = match &r.repeat {
+            Some(v) => self.choice(
+                "repeat",
+                v,
+                &[
+                    ("once", Repeat::Once),
+                    ("loop", Repeat::Loop),
+                    ("ping_pong", Repeat::PingPong),
+                ],
+            )?,
+            None => Repeat::PingPong,
+        };
+        Some(Animation {
+            param: name.clone(),
+            from,
+            to,
+            seconds: seconds as f32,
+            easing,
+            repeat,
+        })
+    }
+}

@@ -1,0 +1,285 @@
+//! Lessons: every file in `lessons/` loads, each step's scene renders, animations move as
+//! specified, and broken lessons are reported at the right place.
+
+use std::path::Path;
+
+use glam::Vec3;
+use pipelens::lesson::param::{Animation, Easing, Repeat, Value};
+use pipelens::lesson::script::parse_lesson;
+use pipelens::lesson::{Diagnostic, Document, load_file};
+
+use crate::support::repo;
+
+/// Every `.toml` file in `lessons/`, sorted.
+fn lesson_files() -> Vec<std::path::PathBuf> {
+    let mut files: Vec<_> = std::fs::read_dir(repo().join("lessons"))
+        .expect("lessons/ exists")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    files
+}
+
+#[test]
+fn every_lesson_loads_and_every_step_renders() {
+    let files = lesson_files();
+    assert!(!files.is_empty());
+    for path in files {
+        let doc = load_file(&path).unwrap_or_else(|e| panic!("{e}"));
+        let Document::Lesson(lesson) = doc else {
+            panic!("{} is not a lesson", path.display());
+        };
+        let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("");
+        assert_eq!(lesson.id, name, "the id is the file name");
+        assert!(
+            (4..=10).contains(&lesson.steps.len()),
+            "{name}: {} steps",
+            lesson.steps.len()
+        );
+        for k in 0..lesson.steps.len() {
+            for t in [0.0, 1.7] {
+                let mut spec = lesson.spec_playing(k, t);
+                // Small, so that the whole set renders quickly.
+                spec.settings.width = spec.settings.width.min(160);
+                spec.settings.height = spec.settings.height.min(100);
+                let c = pipeline::render(&spec.scene, &spec.settings)
+                    .unwrap_or_else(|e| panic!("{name} step {k}: {e}"));
+                assert!(
+                    c.pixels.color.iter().flatten().all(|v| v.is_finite()),
+                    "{name} step {k}: NaN in the image"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_built_in_lesson_is_the_tour() {
+    let lesson = pipelens::lesson::default_lesson().unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(lesson.id, "00-tour");
+}
+
+#[test]
+fn animations_reach_their_values_at_the_right_times() {
+    let a = Animation {
+        param: "projection.fovy".into(),
+        from: Value::Number(30.0),
+        to: Value::Number(90.0),
+        seconds: 4.0,
+        easing: Easing::Linear,
+        repeat: Repeat::PingPong,
+    };
+    let at = |a: &Animation, t: f32| match a.value_at(t) {
+        Value::Number(x) => x,
+        v => panic!("{v}"),
+    };
+    assert_eq!(at(&a, 0.0), 30.0);
+    assert_eq!(at(&a, 1.0), 45.0);
+    assert_eq!(at(&a, 4.0), 90.0);
+    assert_eq!(at(&a, 6.0), 60.0, "on the way back");
+    assert_eq!(at(&a, 8.0), 30.0);
+    let once = Animation {
+        repeat: Repeat::Once,
+        ..a.clone()
+    };
+    assert_eq!(at(&once, 9.0), 90.0);
+    assert!(once.finished(4.0) && !once.finished(3.9));
+    let looped = Animation {
+        repeat: Repeat::Loop,
+        ..a.clone()
+    };
+    assert_eq!(at(&looped, 5.0), 45.0);
+    // Smoothstep: 3t² − 2t³ is ½ halfway and 0.15625 at a quarter.
+    let eased = Animation {
+        easing: Easing::EaseInOut,
+        repeat: Repeat::Once,
+        ..a.clone()
+    };
+    assert_eq!(at(&eased, 2.0), 60.0);
+    assert!((at(&eased, 1.0) - (30.0 + 60.0 * 0.156_25)).abs() < 1e-4);
+    let v = Animation {
+        param: "camera.eye".into(),
+        from: Value::Vec3(Vec3::ZERO),
+        to: Value::Vec3(Vec3::new(2.0, 4.0, -8.0)),
+        seconds: 2.0,
+        easing: Easing::Linear,
+        repeat: Repeat::Once,
+    };
+    assert_eq!(v.value_at(0.5), Value::Vec3(Vec3::new(0.5, 1.0, -2.0)));
+}
+
+/// A minimal lesson around `steps`.
+fn lesson_with(steps: &str) -> String {
+    format!(
+        "[lesson]\nid = \"t\"\ntitle = {{ en = \"T\", zh = \"题\" }}\nsummary = {{ en = \"S\", zh = \"概\" }}\n\n\
+         [[scene.objects]]\nname = \"cube\"\nmesh = \"cube\"\n\n{steps}"
+    )
+}
+
+const STEP: &str =
+    "[[steps]]\ntitle = { en = \"a\", zh = \"甲\" }\nnarration = { en = \"b\", zh = \"乙\" }\n";
+
+fn errors(text: &str) -> Vec<Diagnostic> {
+    match parse_lesson(text, "t.toml", Path::new(".")) {
+        Ok(_) => panic!("expected errors in:\n{text}"),
+        Err(d) => d.0,
+    }
+}
+
+/// Asserts an error at `line:column` whose message contains `needle`.
+fn assert_error(text: &str, line: usize, column: usize, needle: &str) {
+    let found = errors(text);
+    assert!(
+        found
+            .iter()
+            .any(|d| d.line == line && d.column == column && d.message.contains(needle)),
+        "expected {line}:{column} \"{needle}\", got:\n{}",
+        found
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
+}
+
+/// One mistake a line: the line, the text the error must point at, words of the message.
+const MISTAKES: &[(&str, &str, &str)] = &[
+    (
+        "stage = \"rasterisation\"",
+        "\"rasterisation\"",
+        "`stage` must be one of",
+    ),
+    ("layout = \"compare\"", "\"compare\"", "needs `compare"),
+    (
+        "buffer = \"colour\"",
+        "\"colour\"",
+        "`buffer` must be one of",
+    ),
+    (
+        "overlays = [\"edges\", \"grid\"]",
+        "\"grid\"",
+        "`overlays` must be one of",
+    ),
+    (
+        "set = { \"projection.fov\" = 60 }",
+        "\"projection.fov\"",
+        "did you mean \"projection.fovy\"",
+    ),
+    (
+        "set = { \"objects.sphere.rotate\" = [0, 1, 0] }",
+        "\"objects",
+        "unknown parameter",
+    ),
+    (
+        "set = { \"projection.fovy\" = 180 }",
+        "\"projection",
+        "fovy must be between",
+    ),
+    ("set = { \"projection.near\" = -1 }", "\"projection", "near"),
+    (
+        "set = { \"camera.eye\" = [0, 0, 0] }",
+        "\"camera",
+        "degenerate",
+    ),
+    (
+        "set = { \"render.samples\" = 3 }",
+        "\"render",
+        "1, 4, 8 or 16",
+    ),
+    (
+        "set = { \"render.shading\" = \"phog\" }",
+        "\"render",
+        "\"phong\"",
+    ),
+    (
+        "set = { projection = { fovy = 60 } }",
+        "{ fovy",
+        "write the parameter's name in quotes",
+    ),
+    ("pixel = [800, 10]", "[800", "inside the 640×480 viewport"),
+    ("vertex = 24", "24", "0 to 23"),
+    (
+        "animate = [{ param = \"projection.fovy\", from = 30, to = [1, 2, 3], seconds = 2 }]",
+        "[1, 2, 3]",
+        "must both be numbers",
+    ),
+    (
+        "animate = [{ param = \"projection.fovy\", from = 30, to = 90, seconds = 0 }]",
+        "0 }",
+        "`seconds` must be",
+    ),
+    (
+        "animate = [{ param = \"projection.fovy\", from = 30, to = 190, seconds = 2 }]",
+        "190",
+        "fovy must be between",
+    ),
+    (
+        "animate = [{ param = \"camera.eyes\", from = [1, 1, 1], to = [2, 2, 2], seconds = 2 }]",
+        "\"camera.eyes\"",
+        "did you mean \"camera.eye\"",
+    ),
+    (
+        "animate = [{ param = \"projection.fovy\", from = 30, to = 90, seconds = 2, easing = \"smooth\" }]",
+        "\"smooth\"",
+        "`easing` must be one of",
+    ),
+    (
+        "answr = { en = \"x\", zh = \"y\" }",
+        "answr",
+        "did you mean `answer`",
+    ),
+    ("question = { en = \"x\" }", "{ en", "missing field `zh`"),
+    (
+        "question = { en = \"x\", zh = \" \" }",
+        "{ en",
+        "both `en` and `zh`",
+    ),
+];
+
+#[test]
+fn broken_lessons_are_reported_where_the_mistake_is() {
+    // The step's keys start on line 12 (after the 10 lines of the header and scene).
+    let base = lesson_with(STEP);
+    assert!(
+        parse_lesson(&base, "t.toml", Path::new(".")).is_ok(),
+        "the base is valid"
+    );
+    // Each mistake on line 13, with the column of the text the error must point at.
+    let check = |extra: &str, at: &str, needle: &str| {
+        let column = extra.find(at).expect("`at` is in the line") + 1;
+        assert_error(&format!("{base}{extra}\n"), 13, column, needle);
+    };
+    for (extra, at, needle) in MISTAKES {
+        check(extra, at, needle);
+    }
+    // No steps; no [lesson] id.
+    assert_error(&lesson_with(""), 1, 1, "no steps");
+    assert_error(
+        &base.replace("id = \"t\"\n", ""),
+        1,
+        1,
+        "missing field `id`",
+    );
+}
+
+#[test]
+fn later_steps_keep_earlier_settings() {
+    let text = lesson_with(&format!(
+        "{STEP}set = {{ \"projection.fovy\" = 60 }}\n{STEP}set = {{ \"render.shading\" = \"flat\" }}\n{STEP}"
+    ));
+    let lesson = parse_lesson(&text, "t.toml", Path::new(".")).unwrap_or_else(|e| panic!("{e}"));
+    let fovy = |k: usize| match lesson.spec_at(k).scene.projection {
+        pipeline::scene::Projection::Perspective { fovy_deg, .. } => fovy_deg,
+        _ => f32::NAN,
+    };
+    assert_eq!((fovy(0), fovy(1), fovy(2)), (60.0, 60.0, 60.0));
+    assert_eq!(
+        lesson.spec_at(0).settings.shading,
+        lesson.scene.settings.shading
+    );
+    assert_eq!(
+        lesson.spec_at(2).settings.shading,
+        pipeline::shade::Frequency::Flat
+    );
+}
