@@ -21,8 +21,9 @@ pub struct Cli {
     /// What to do; with none, pipelens opens the app.
     #[command(subcommand)]
     pub command: Option<Command>,
-    /// The app: the scene file to open (the built-in scene when omitted).
-    #[arg(long, global = false)]
+    /// The app: the lesson or scene file to open (the built-in tour, lessons/00-tour.toml, when
+    /// omitted). The file is watched: edits are reloaded on save.
+    #[arg(long, alias = "lesson", global = false)]
     pub scene: Option<PathBuf>,
     /// The app: the interface language, `en` or `zh`.
     #[arg(long, value_parser = ["en", "zh"])]
@@ -169,7 +170,11 @@ pub fn main() -> ExitCode {
 pub fn run(cli: Cli) -> Result<ExitCode> {
     match cli.command {
         None => {
-            let spec = load(cli.scene.as_deref())?;
+            let doc = match cli.scene.as_deref() {
+                Some(p) => lesson::load_file(p),
+                None => lesson::default_lesson().map(|l| lesson::Document::Lesson(Box::new(l))),
+            }
+            .map_err(|d| anyhow::anyhow!("{d}"))?;
             let source = crate::app::session::source_name(cli.scene.as_ref());
             let lang = match cli.lang.as_deref() {
                 Some("zh") => crate::app::i18n::Lang::Zh,
@@ -184,7 +189,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                     .as_deref()
                     .and_then(crate::app::session::Comparison::from_name),
             };
-            crate::app::run(spec, source, start)?;
+            crate::app::run(doc, source, cli.scene.clone(), start)?;
             Ok(ExitCode::SUCCESS)
         }
         Some(Command::Export {

@@ -20,7 +20,6 @@ use self::views::{
     params, pixels::PixelView,
 };
 use self::worker::RenderWorker;
-use crate::lesson::SceneSpec;
 
 /// The Chinese font, embedded so that Chinese renders on any machine.
 pub const CJK_FONT: &[u8] = include_bytes!("../../assets/fonts/NotoSansSC-subset.otf");
@@ -88,6 +87,21 @@ pub struct PipelensApp {
     export_result: Option<Receiver<Result<Vec<PathBuf>, String>>>,
     export_message: Option<(bool, String)>,
     commands: Vec<Command>,
+    /// The file shown, watched for changes (live reload): its path and last modification.
+    watched: Option<Watched>,
+}
+
+/// A file watched for changes.
+struct Watched {
+    path: PathBuf,
+    modified: Option<std::time::SystemTime>,
+    checked: std::time::Instant,
+}
+
+impl Watched {
+    fn modified(path: &std::path::Path) -> Option<std::time::SystemTime> {
+        std::fs::metadata(path).and_then(|m| m.modified()).ok()
+    }
 }
 
 impl PipelensApp {
@@ -106,22 +120,77 @@ impl PipelensApp {
             export_result: None,
             export_message: None,
             commands: Vec::new(),
+            watched: None,
         }
+    }
+
+    /// Watches `path` (the file the session was loaded from): when it changes on disk, it is
+    /// loaded again; a broken edit shows its error and the last good version keeps running.
+    #[must_use]
+    pub fn watching(mut self, path: PathBuf) -> Self {
+        self.watched = Some(Watched {
+            modified: Watched::modified(&path),
+            path,
+            checked: std::time::Instant::now(),
+        });
+        self
+    }
+
+    /// Checks the watched file about twice a second and reloads it when it changed.
+    fn reload_if_changed(&mut self, ctx: &egui::Context) {
+        let Some(w) = &mut self.watched else {
+            return;
+        };
+        ctx.request_repaint_after(std::time::Duration::from_millis(500));
+        if w.checked.elapsed() < std::time::Duration::from_millis(400) {
+            return;
+        }
+        w.checked = std::time::Instant::now();
+        let now = Watched::modified(&w.path);
+        if now == w.modified {
+            return;
+        }
+        w.modified = now;
+        let loaded = crate::lesson::load_file(&w.path);
+        self.commands.extend(match loaded {
+            Ok(crate::lesson::Document::Lesson(l)) => vec![Command::ReloadLesson(l)],
+            Ok(crate::lesson::Document::Scene(s)) => {
+                vec![Command::SetReloadError(None), Command::SetSpec(Box::new(s))]
+            }
+            Err(e) => vec![Command::SetReloadError(Some(e.to_string()))],
+        });
     }
 
     /// Draws one frame and applies the commands it produced.
     pub fn frame(&mut self, ui: &mut egui::Ui) {
         self.session.poll();
+        self.reload_if_changed(ui.ctx());
         self.keyboard(ui.ctx());
         self.top_bar(ui);
         self.status_bar(ui);
         let lang = self.session.lang;
         egui::Panel::left("parameters")
-            .default_size(270.0)
+            .default_size(if self.session.lesson.is_some() {
+                340.0
+            } else {
+                270.0
+            })
             .resizable(true)
             .show(ui, |ui| {
-                ui.heading(lang.tr("Parameters", "参数"));
-                self.commands.extend(params::ui(ui, &self.session));
+                if let Some(player) = &self.session.lesson {
+                    self.commands.extend(views::lesson::ui(ui, player, lang));
+                    ui.separator();
+                    egui::CollapsingHeader::new(
+                        RichText::new(lang.tr("Parameters", "参数")).strong(),
+                    )
+                    .id_salt("params-section")
+                    .show(ui, |ui| {
+                        self.commands.extend(params::ui(ui, &self.session));
+                    });
+                } else {
+                    ui.heading(lang.tr("Parameters", "参数"));
+                    self.commands.extend(params::ui(ui, &self.session));
+                }
             });
         if let Some(capture) = self.session.capture.clone() {
             egui::Panel::right("inspector")
@@ -181,15 +250,7 @@ impl PipelensApp {
                 .space()
                 .filter(|_| sel.transition < 1.0 && sel.stage != Stage::Model);
             if sel.show_observer {
-                // Two fixed halves, each clipped to itself.
-                let area = ui.available_rect_before_wrap();
-                let gap = 8.0;
-                let half = (area.width() - gap) / 2.0;
-                let left = egui::Rect::from_min_size(area.min, egui::vec2(half, area.height()));
-                let right = egui::Rect::from_min_size(
-                    area.min + egui::vec2(half + gap, 0.0),
-                    egui::vec2(half, area.height()),
-                );
+                let (area, left, right) = halves(ui);
                 ui.scope_builder(egui::UiBuilder::new().max_rect(left), |ui| {
                     ui.set_clip_rect(left);
                     let c = self.geometry_view.ui(
@@ -223,12 +284,27 @@ impl PipelensApp {
                 self.commands.push(c);
             }
             self.comparison_choice(ui);
-            let c = if sel.comparison.is_some() {
-                self.compare_view.ui(ui, &self.session)
+            if sel.comparison.is_some() {
+                let c = self.compare_view.ui(ui, &self.session);
+                self.commands.extend(c);
+            } else if sel.show_observer {
+                // The image beside the scene seen from outside (a lesson's "observer" layout).
+                let (area, left, right) = halves(ui);
+                ui.scope_builder(egui::UiBuilder::new().max_rect(left), |ui| {
+                    ui.set_clip_rect(left);
+                    let c = self.pixel_view.ui(ui, &self.session, capture);
+                    self.commands.extend(c);
+                });
+                ui.scope_builder(egui::UiBuilder::new().max_rect(right), |ui| {
+                    ui.set_clip_rect(right);
+                    let c = self.observer_view.ui(ui, &self.session, capture);
+                    self.commands.extend(c);
+                });
+                ui.advance_cursor_after_rect(area);
             } else {
-                self.pixel_view.ui(ui, &self.session, capture)
-            };
-            self.commands.extend(c);
+                let c = self.pixel_view.ui(ui, &self.session, capture);
+                self.commands.extend(c);
+            }
         }
     }
 
@@ -251,6 +327,15 @@ impl PipelensApp {
                     "Render the scene with different settings and show them side by side, with an intensity profile.",
                     "用不同设置渲染场景并并排显示，附亮度剖面曲线。",
                 ));
+            if current.is_none() {
+                let mut obs = self.session.selection.show_observer;
+                if ui
+                    .checkbox(&mut obs, lang.tr("Observer view", "观察者视图"))
+                    .changed()
+                {
+                    self.commands.push(Command::ToggleObserver);
+                }
+            }
         });
         if choice != current {
             self.commands.push(Command::SetComparison(choice));
@@ -293,6 +378,19 @@ impl PipelensApp {
                     self.start_export();
                 }
             });
+            if let Some(e) = &self.session.reload_error {
+                ui.label(
+                    RichText::new(format!(
+                        "{}\n{e}",
+                        lang.tr(
+                            "The file changed on disk and no longer loads; the last good version keeps running:",
+                            "文件在磁盘上被修改后无法加载；继续运行上一个正确的版本："
+                        )
+                    ))
+                    .monospace()
+                    .color(egui::Color32::LIGHT_RED),
+                );
+            }
             if let Some((ok, msg)) = &self.export_message {
                 ui.label(RichText::new(msg).color(if *ok { egui::Color32::LIGHT_GREEN } else { egui::Color32::LIGHT_RED }));
             }
@@ -353,20 +451,35 @@ impl PipelensApp {
         }
         let (left, right, space, f11) = ctx.input(|i| {
             (
-                i.key_pressed(egui::Key::ArrowLeft),
-                i.key_pressed(egui::Key::ArrowRight),
+                i.key_pressed(egui::Key::ArrowLeft) || i.key_pressed(egui::Key::PageUp),
+                i.key_pressed(egui::Key::ArrowRight) || i.key_pressed(egui::Key::PageDown),
                 i.key_pressed(egui::Key::Space),
                 i.key_pressed(egui::Key::F11),
             )
         });
+        // With a lesson the arrows (and a presenter's Page Up/Down) step it and Space plays its
+        // animations; without one they move through the stages and replay the transition.
+        let lesson = self.session.lesson.is_some();
         if left {
-            self.commands.push(Command::PreviousStage);
+            self.commands.push(if lesson {
+                Command::PreviousStep
+            } else {
+                Command::PreviousStage
+            });
         }
         if right {
-            self.commands.push(Command::NextStage);
+            self.commands.push(if lesson {
+                Command::NextStep
+            } else {
+                Command::NextStage
+            });
         }
         if space {
-            self.commands.push(Command::PlayTransition);
+            self.commands.push(if lesson {
+                Command::TogglePlay
+            } else {
+                Command::PlayTransition
+            });
         }
         if f11 {
             let full = ctx.input(|i| i.viewport().fullscreen.unwrap_or(false));
@@ -375,6 +488,11 @@ impl PipelensApp {
     }
 
     fn animate(&mut self, ctx: &egui::Context) {
+        if self.session.lesson.as_ref().is_some_and(|p| p.playing) {
+            let dt = ctx.input(|i| i.stable_dt).min(0.1);
+            self.commands.push(Command::Tick(dt));
+            ctx.request_repaint();
+        }
         let t = self.session.selection.transition;
         if t < 1.0 {
             let dt = ctx.input(|i| i.stable_dt).min(0.1);
@@ -429,6 +547,19 @@ impl PipelensApp {
     }
 }
 
+/// The space left in `ui` cut into two fixed halves with a gap: `(all, left, right)`.
+fn halves(ui: &egui::Ui) -> (egui::Rect, egui::Rect, egui::Rect) {
+    let area = ui.available_rect_before_wrap();
+    let gap = 8.0;
+    let half = (area.width() - gap) / 2.0;
+    let left = egui::Rect::from_min_size(area.min, egui::vec2(half, area.height()));
+    let right = egui::Rect::from_min_size(
+        area.min + egui::vec2(half + gap, 0.0),
+        egui::vec2(half, area.height()),
+    );
+    (area, left, right)
+}
+
 impl eframe::App for PipelensApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.frame(ui);
@@ -450,7 +581,12 @@ pub struct Start {
 ///
 /// # Errors
 /// When no window can be opened (no display, no OpenGL).
-pub fn run(spec: SceneSpec, source: String, start: Start) -> anyhow::Result<()> {
+pub fn run(
+    doc: crate::lesson::Document,
+    source: String,
+    path: Option<PathBuf>,
+    start: Start,
+) -> anyhow::Result<()> {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("pipelens")
@@ -464,7 +600,7 @@ pub fn run(spec: SceneSpec, source: String, start: Start) -> anyhow::Result<()> 
         Box::new(move |cc| {
             let ctx = cc.egui_ctx.clone();
             let worker = RenderWorker::start(move || ctx.request_repaint()).ok();
-            let mut session = Session::new(spec, &source, worker);
+            let mut session = Session::with_document(doc, &source, worker);
             session.lang = start.lang;
             if let Some(stage) = start.stage {
                 session.apply(Command::SelectStage(stage));
@@ -473,7 +609,11 @@ pub fn run(spec: SceneSpec, source: String, start: Start) -> anyhow::Result<()> 
                 session.apply(Command::SetComparison(start.compare));
             }
             setup_context(&cc.egui_ctx);
-            Ok(Box::new(PipelensApp::new(session)))
+            let app = PipelensApp::new(session);
+            Ok(Box::new(match path {
+                Some(p) => app.watching(p),
+                None => app,
+            }))
         }),
     )
     .map_err(|e| {

@@ -14,7 +14,8 @@ use pipeline::texture::{Filter, Mipmap, Sampler};
 
 use super::i18n::Lang;
 use super::worker::{Job, RenderWorker, Rendered};
-use crate::lesson::SceneSpec;
+use crate::lesson::script::{Layout, Overlay};
+use crate::lesson::{Document, Lesson, SceneSpec};
 
 /// The stages of the pipeline, in the order data flows through them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -423,6 +424,45 @@ pub enum Command {
     SetProfile(Option<[f32; 4]>),
     /// Change how the depth buffer is drawn.
     SetDepthView(DepthView),
+    /// Go to step `k` of the lesson.
+    GoToStep(usize),
+    /// The lesson's next step (→, Page Down).
+    NextStep,
+    /// The lesson's previous step (←, Page Up).
+    PreviousStep,
+    /// Play or pause the step's animations (Space).
+    TogglePlay,
+    /// Time passes (seconds): animations move.
+    Tick(f32),
+    /// Show or hide the answer to the step's question.
+    ShowAnswer(bool),
+    /// The lesson file changed on disk and loaded: replace it, staying on the same step.
+    ReloadLesson(Box<Lesson>),
+    /// The file changed on disk and is broken (the message), or is fine again (`None`).
+    SetReloadError(Option<String>),
+}
+
+/// A lesson being played: which step, and how far into its animations.
+#[derive(Clone, Debug)]
+pub struct LessonPlayer {
+    /// The lesson.
+    pub lesson: Arc<Lesson>,
+    /// The current step.
+    pub step: usize,
+    /// Seconds into the step's animations.
+    pub time: f32,
+    /// Whether the animations are moving.
+    pub playing: bool,
+    /// Whether the answer to the step's question is shown.
+    pub show_answer: bool,
+}
+
+impl LessonPlayer {
+    /// The current step.
+    #[must_use]
+    pub fn current(&self) -> &crate::lesson::Step {
+        &self.lesson.steps[self.step]
+    }
 }
 
 /// The state of the app.
@@ -451,6 +491,10 @@ pub struct Session {
     pub generation: u64,
     /// The generation of the capture on screen.
     pub shown_generation: u64,
+    /// The lesson being played, if a lesson was opened.
+    pub lesson: Option<LessonPlayer>,
+    /// Why the file on disk no longer loads (the last good version keeps running).
+    pub reload_error: Option<String>,
     /// Where the results come from: a worker thread, or (tests) this thread.
     worker: Option<RenderWorker>,
 }
@@ -474,10 +518,105 @@ impl Session {
             lang: Lang::default(),
             generation: 0,
             shown_generation: 0,
+            lesson: None,
+            reload_error: None,
             worker,
         };
         s.request_render();
         s
+    }
+
+    /// A session on a scene file or a lesson (then on its first step).
+    #[must_use]
+    pub fn with_document(doc: Document, source: &str, worker: Option<RenderWorker>) -> Self {
+        let mut s = Self::new(doc.first_spec(), source, worker);
+        if let Document::Lesson(lesson) = doc {
+            s.lesson = Some(LessonPlayer {
+                lesson: Arc::from(lesson),
+                step: 0,
+                time: 0.0,
+                playing: false,
+                show_answer: false,
+            });
+            s.enter_step(0);
+        }
+        s
+    }
+
+    /// Goes to step `k` (clamped): its scene, stage, layout, buffer, overlays and highlights.
+    fn enter_step(&mut self, k: usize) {
+        let Some(player) = &mut self.lesson else {
+            return;
+        };
+        let k = k.min(player.lesson.steps.len().saturating_sub(1));
+        player.step = k;
+        player.time = 0.0;
+        player.show_answer = false;
+        let step = player.current().clone();
+        player.playing = !step.animate.is_empty();
+        let spec = player.lesson.spec_playing(k, 0.0);
+        if let Some(stage) = step.stage {
+            self.go_to(stage);
+        }
+        let sel = &mut self.selection;
+        match step.layout {
+            Layout::Single => {
+                sel.show_observer = false;
+                sel.comparison = None;
+            }
+            Layout::Observer => {
+                sel.show_observer = true;
+                sel.comparison = None;
+            }
+            Layout::Compare => sel.comparison = step.compare,
+        }
+        if let Some(b) = step.buffer {
+            sel.buffer = b;
+        }
+        if let Some(overlays) = &step.overlays {
+            sel.overlays = overlays
+                .iter()
+                .filter_map(|o| match o {
+                    Overlay::Edges => Some(OverlayKind::TriangleEdges),
+                    Overlay::BoundingBoxes => Some(OverlayKind::BoundingBoxes),
+                    Overlay::Samples => None,
+                })
+                .collect();
+            sel.show_samples = overlays.contains(&Overlay::Samples);
+        }
+        if step.pixel.is_some() {
+            sel.pixel = step.pixel;
+        }
+        if step.vertex.is_some() {
+            sel.vertex = step.vertex;
+        }
+        if step.profile.is_some() {
+            sel.profile = step.profile;
+        } else if sel.comparison.is_some() && sel.profile.is_none() {
+            sel.profile = Some(middle_row(&spec));
+        }
+        self.spec = spec;
+        self.request_render();
+    }
+
+    /// Moves the step's animations on by `dt` seconds.
+    fn tick(&mut self, dt: f32) {
+        let Some(player) = &mut self.lesson else {
+            return;
+        };
+        if !player.playing {
+            return;
+        }
+        player.time += dt;
+        let (k, t) = (player.step, player.time);
+        if player.current().animate.iter().all(|a| a.finished(t)) {
+            player.playing = false;
+        }
+        let spec = player.lesson.spec_playing(k, t);
+        if spec != self.spec {
+            self.spec = spec;
+            self.request_render();
+        }
     }
 
     /// Whether a render is under way.
@@ -550,6 +689,42 @@ impl Session {
             Command::SelectStage(s) => self.go_to(s),
             Command::NextStage => self.go_to(stage.next()),
             Command::PreviousStage => self.go_to(stage.previous()),
+            Command::GoToStep(k) => self.enter_step(k),
+            Command::NextStep => {
+                let k = self.lesson.as_ref().map_or(0, |p| p.step + 1);
+                self.enter_step(k);
+            }
+            Command::PreviousStep => {
+                let k = self.lesson.as_ref().map_or(0, |p| p.step.saturating_sub(1));
+                self.enter_step(k);
+            }
+            Command::TogglePlay => {
+                if let Some(p) = &mut self.lesson {
+                    if !p.playing && p.current().animate.iter().all(|a| a.finished(p.time)) {
+                        p.time = 0.0;
+                    }
+                    p.playing = !p.playing && !p.current().animate.is_empty();
+                }
+            }
+            Command::Tick(dt) => self.tick(dt),
+            Command::ShowAnswer(b) => {
+                if let Some(p) = &mut self.lesson {
+                    p.show_answer = b;
+                }
+            }
+            Command::ReloadLesson(lesson) => {
+                let step = self.lesson.as_ref().map_or(0, |p| p.step);
+                self.reload_error = None;
+                self.lesson = Some(LessonPlayer {
+                    lesson: Arc::from(lesson),
+                    step,
+                    time: 0.0,
+                    playing: false,
+                    show_answer: false,
+                });
+                self.enter_step(step);
+            }
+            Command::SetReloadError(e) => self.reload_error = e,
             _ => self.apply_selection(cmd),
         }
     }
@@ -557,7 +732,17 @@ impl Session {
     fn apply_selection(&mut self, cmd: Command) {
         let sel = &mut self.selection;
         match cmd {
-            Command::SelectStage(_) | Command::NextStage | Command::PreviousStage => {}
+            Command::SelectStage(_)
+            | Command::NextStage
+            | Command::PreviousStage
+            | Command::GoToStep(_)
+            | Command::NextStep
+            | Command::PreviousStep
+            | Command::TogglePlay
+            | Command::Tick(_)
+            | Command::ShowAnswer(_)
+            | Command::ReloadLesson(_)
+            | Command::SetReloadError(_) => {}
             Command::SelectBuffer(b) => sel.buffer = b,
             Command::ToggleOverlay(o) => {
                 if let Some(i) = sel.overlays.iter().position(|x| *x == o) {
@@ -588,12 +773,7 @@ impl Session {
                 if sel.comparison != c {
                     sel.comparison = c;
                     if sel.profile.is_none() {
-                        // A first line to look at: across the middle row of the image.
-                        let (w, h) = (
-                            self.spec.settings.width as f32,
-                            self.spec.settings.height as f32,
-                        );
-                        sel.profile = Some([0.0, h / 2.0, w - 1.0, h / 2.0]);
+                        sel.profile = Some(middle_row(&self.spec));
                     }
                     self.request_render();
                 }
@@ -617,6 +797,12 @@ impl Session {
     }
 }
 
+/// A first profile line to look at: across the middle row of the image.
+fn middle_row(spec: &SceneSpec) -> [f32; 4] {
+    let (w, h) = (spec.settings.width as f32, spec.settings.height as f32);
+    [0.0, h / 2.0, w - 1.0, h / 2.0]
+}
+
 /// An orbit that frames the scene: centred on the mean of the objects' positions, far enough
 /// back to see the viewing camera too.
 fn default_orbit(spec: &SceneSpec) -> Orbit {
@@ -635,7 +821,7 @@ fn default_orbit(spec: &SceneSpec) -> Orbit {
 #[must_use]
 pub fn source_name(path: Option<&PathBuf>) -> String {
     path.map_or_else(
-        || crate::lesson::DEFAULT_SCENE_NAME.to_owned(),
+        || crate::lesson::DEFAULT_LESSON_NAME.to_owned(),
         |p| p.display().to_string(),
     )
 }

@@ -71,9 +71,10 @@ fn clicking_a_pixel_lists_its_fragments() {
     h.run();
     h.get_by_label("Pixel").click();
     h.run();
-    // The middle of the central panel is on the image (the floor covers the lower half).
+    // Just below the middle of the pixel view is on the image (fitted and centred in it), where
+    // the floor covers the lower half.
     let r = h.get_by_label("pixel view").rect();
-    let p = egui::pos2(r.center().x, r.min.y + r.height() * 0.8);
+    let p = egui::pos2(r.center().x, r.center().y + 30.0);
     h.hover_at(p);
     h.event(egui::Event::PointerButton {
         pos: p,
@@ -196,4 +197,202 @@ fn the_depth_buffer_can_be_linearized_and_its_range_set() {
     h.get_by_label("auto range").click();
     h.run();
     assert_eq!(h.state().session.selection.depth_view.range, None);
+}
+
+/// The app on the built-in lesson (the tour), rendering synchronously.
+fn lesson_harness(path: Option<std::path::PathBuf>) -> Harness<'static, PipelensApp> {
+    let doc = match &path {
+        Some(p) => pipelens::lesson::load_file(p).expect("the lesson loads"),
+        None => pipelens::lesson::Document::Lesson(Box::new(
+            pipelens::lesson::default_lesson().expect("the built-in lesson is valid"),
+        )),
+    };
+    let session = Session::with_document(doc, "test", None);
+    let app = PipelensApp::new(session);
+    let app = match path {
+        Some(p) => app.watching(p),
+        None => app,
+    };
+    Harness::builder()
+        .with_size([1366.0, 768.0])
+        .with_context_setup(setup_context)
+        .with_max_steps(200)
+        .build_ui_state(|ui, app: &mut PipelensApp| app.frame(ui), app)
+}
+
+fn step_of(h: &Harness<'_, PipelensApp>) -> usize {
+    h.state()
+        .session
+        .lesson
+        .as_ref()
+        .map_or(usize::MAX, |p| p.step)
+}
+
+#[test]
+fn a_lesson_steps_with_the_arrow_keys_and_plays_its_animations() {
+    let mut h = lesson_harness(None);
+    h.run_steps(4);
+    assert_eq!(step_of(&h), 0);
+    assert_eq!(h.state().session.selection.stage, Stage::Output);
+    assert!(
+        h.query_by_label_contains("This is what the pipeline produces")
+            .is_some()
+    );
+    // The step's pixel is selected for the inspector.
+    assert_eq!(h.state().session.selection.pixel, Some((320, 200)));
+    h.key_press(egui::Key::ArrowRight);
+    h.run_steps(4);
+    assert_eq!(step_of(&h), 1);
+    assert_eq!(h.state().session.selection.stage, Stage::Model);
+    // Step 3 turns the cube: it plays by itself, and the cube's rotation moves.
+    h.key_press(egui::Key::ArrowRight);
+    h.run_steps(4);
+    assert_eq!(step_of(&h), 2);
+    let rotation = |h: &Harness<'_, PipelensApp>| {
+        h.state()
+            .session
+            .spec
+            .scene
+            .objects
+            .iter()
+            .find(|o| o.name == "cube")
+            .map(|o| o.rotate_deg.y)
+    };
+    assert!(h.state().session.lesson.as_ref().is_some_and(|p| p.playing));
+    let before = rotation(&h);
+    h.run_steps(10);
+    assert_ne!(rotation(&h), before, "the animation moves the cube");
+    // Space pauses it; the rotation then stays.
+    h.key_press(egui::Key::Space);
+    h.run_steps(2);
+    let paused = rotation(&h);
+    h.run_steps(10);
+    assert_eq!(rotation(&h), paused);
+    // Back, and in Chinese.
+    h.key_press(egui::Key::ArrowLeft);
+    h.run_steps(4);
+    assert_eq!(step_of(&h), 1);
+    h.get_by_label("中文").click();
+    h.run_steps(4);
+    assert!(
+        h.query_by_label_contains("网格是围绕自己的原点建模的")
+            .is_some()
+    );
+    // The last step's question: the answer appears on request.
+    let last = h
+        .state()
+        .session
+        .lesson
+        .as_ref()
+        .map_or(0, |p| p.lesson.steps.len() - 1);
+    h.state_mut()
+        .session
+        .apply(pipelens::app::session::Command::GoToStep(last));
+    h.run_steps(4);
+    assert!(
+        h.query_by_label_contains("相邻的面得到不同的常数颜色")
+            .is_none()
+    );
+    h.get_by_label("显示答案").click();
+    h.run_steps(4);
+    assert!(
+        h.query_by_label_contains("相邻的面得到不同的常数颜色")
+            .is_some()
+    );
+}
+
+#[test]
+fn an_edited_lesson_reloads_on_the_same_step_and_a_broken_edit_keeps_the_last_good_one() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let path = dir.path().join("lesson.toml");
+    let good = pipelens::lesson::DEFAULT_LESSON;
+    std::fs::write(&path, good).expect("write");
+    let mut h = lesson_harness(Some(path.clone()));
+    h.run_steps(2);
+    h.key_press(egui::Key::ArrowRight);
+    h.run_steps(2);
+    assert_eq!(step_of(&h), 1);
+    let wait_and_run = |h: &mut Harness<'_, PipelensApp>| {
+        std::thread::sleep(std::time::Duration::from_millis(600));
+        h.run_steps(3);
+    };
+    // A broken edit: the error is shown, the lesson keeps running on its step.
+    std::fs::write(&path, good.replace("fovy = 45", "fovy = 450")).expect("write");
+    // Some file systems keep whole-second times: make sure the time moved.
+    let later = std::time::SystemTime::now() + std::time::Duration::from_secs(2);
+    std::fs::File::options()
+        .write(true)
+        .open(&path)
+        .and_then(|f| f.set_modified(later))
+        .expect("touch");
+    wait_and_run(&mut h);
+    let err = h
+        .state()
+        .session
+        .reload_error
+        .clone()
+        .expect("the error is shown");
+    assert!(
+        err.contains("lesson.toml:") && err.contains("fovy"),
+        "{err}"
+    );
+    assert_eq!(step_of(&h), 1);
+    assert!(h.query_by_label_contains("fovy must be between").is_some());
+    // Fixed, with a new title for step 2: reloaded, still on step 2, the error gone.
+    std::fs::write(
+        &path,
+        good.replace(
+            "Model space: each object in its own frame",
+            "Model space, edited",
+        ),
+    )
+    .expect("write");
+    let later = later + std::time::Duration::from_secs(2);
+    std::fs::File::options()
+        .write(true)
+        .open(&path)
+        .and_then(|f| f.set_modified(later))
+        .expect("touch");
+    wait_and_run(&mut h);
+    assert!(h.state().session.reload_error.is_none());
+    assert_eq!(step_of(&h), 1);
+    assert!(h.query_by_label("Model space, edited").is_some());
+}
+
+/// Every step of every lesson in `lessons/`, drawn by the app in both languages: a character
+/// the embedded font lacks would panic here (the test harness forbids tofu).
+#[test]
+fn every_lesson_step_draws_in_both_languages() {
+    let mut files: Vec<_> = std::fs::read_dir(crate::support::repo().join("lessons"))
+        .expect("lessons/")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    for path in files {
+        let mut h = lesson_harness(Some(path.clone()));
+        let n = h
+            .state()
+            .session
+            .lesson
+            .as_ref()
+            .map_or(0, |p| p.lesson.steps.len());
+        for lang in [Lang::En, Lang::Zh] {
+            h.state_mut()
+                .session
+                .apply(pipelens::app::session::Command::SetLang(lang));
+            for k in 0..n {
+                let s = &mut h.state_mut().session;
+                s.apply(pipelens::app::session::Command::GoToStep(k));
+                s.apply(pipelens::app::session::Command::ShowAnswer(true));
+                h.run_steps(2);
+                assert!(
+                    h.state().session.error.is_none(),
+                    "{} step {k}: {:?}",
+                    path.display(),
+                    h.state().session.error
+                );
+            }
+        }
+    }
 }

@@ -4,6 +4,7 @@
 pub mod compare;
 pub mod geometry;
 pub mod inspector;
+pub mod lesson;
 pub mod navigator;
 pub mod observer;
 pub mod params;
