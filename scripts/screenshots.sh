@@ -20,16 +20,29 @@ start() {
   DISPLAY=$display xdotool windowsize "$win" 1366 768 windowmove "$win" 0 0 windowfocus "$win"
   sleep 4
 }
-start --lang en
-# The app opens on World; walk back to Model, then through every stage.
+start --lang en --scene assets/scenes/default.toml
+# A scene file opens on World; walk back to Model, then through every stage.
 DISPLAY=$display xdotool key --window "$win" Left; sleep 3
 for stage in model world view clip ndc viewport rasterization depth shading texturing output; do
   shoot "en-$stage"
   DISPLAY=$display xdotool key --window "$win" Right; sleep 3
 done
 kill "$app"; wait "$app" 2>/dev/null || true
-start --lang zh
+start --lang zh --scene assets/scenes/default.toml
 shoot "zh-world"
 for _ in 1 2 3 4 5; do DISPLAY=$display xdotool key --window "$win" Right; sleep 1.5; done
 sleep 2
 shoot "zh-rasterization"
+kill "$app"; wait "$app" 2>/dev/null || true
+# The built-in lesson (the tour): its first step, the projection step, the shading comparison.
+for lang in en zh; do
+  start --lang "$lang"
+  shoot "lesson-$lang-1"
+  for _ in 1 2 3 4; do DISPLAY=$display xdotool key --window "$win" Right; sleep 1.5; done
+  sleep 2
+  shoot "lesson-$lang-5"
+  for _ in 1 2 3 4 5; do DISPLAY=$display xdotool key --window "$win" Right; sleep 1.5; done
+  sleep 4
+  shoot "lesson-$lang-10"
+  kill "$app"; wait "$app" 2>/dev/null || true
+done

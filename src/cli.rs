@@ -49,8 +49,15 @@ fn parse_stage(s: &str) -> Result<crate::app::session::Stage, String> {
 pub enum Command {
     /// Render a scene with no window and write every stage's buffers as PNG, plus capture.json.
     Export {
-        /// The scene file (TOML); the built-in scene when omitted.
+        /// The scene or lesson file (TOML); the built-in scene when omitted. A lesson exports
+        /// every step (or `--step N`) into step-NN/ folders with an index.html handout.
         scene: Option<PathBuf>,
+        /// A lesson: export only step N (1-based).
+        #[arg(long)]
+        step: Option<usize>,
+        /// A lesson: the handout's language, `en` or `zh`.
+        #[arg(long, value_parser = ["en", "zh"], default_value = "en")]
+        lang: String,
         /// The folder to write into (created if missing).
         #[arg(long, short)]
         out: PathBuf,
@@ -76,7 +83,7 @@ pub enum Command {
         #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
         pixel: Option<(u32, u32)>,
     },
-    /// Validate scene files and print every problem with file:line:column.
+    /// Validate scene and lesson files and print every problem with file:line:column.
     Check {
         /// The files to check.
         #[arg(required = true)]
@@ -201,7 +208,32 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             max_records,
             profile,
             pixel,
+            step,
+            lang,
         }) => {
+            if let Some(path) = scene.as_deref()
+                && let lesson::Document::Lesson(l) =
+                    lesson::load_file(path).map_err(|d| anyhow::anyhow!("{d}"))?
+            {
+                let opts = crate::export::lesson::LessonExport {
+                    out,
+                    step: match step {
+                        Some(0) => anyhow::bail!("--step counts from 1"),
+                        s => s.map(|s| s - 1),
+                    },
+                    size: size.map(|s| (s.width, s.height)),
+                    lang: if lang == "zh" {
+                        crate::app::i18n::Lang::Zh
+                    } else {
+                        crate::app::i18n::Lang::En
+                    },
+                    max_records,
+                };
+                return export_lesson(&l, &opts);
+            }
+            if step.is_some() {
+                anyhow::bail!("--step applies to lessons; this is a scene file");
+            }
             let opts = ExportOptions {
                 out,
                 overlay_zoom: zoom,
@@ -217,6 +249,24 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
     }
+}
+
+fn export_lesson(
+    lesson: &lesson::Lesson,
+    opts: &crate::export::lesson::LessonExport,
+) -> Result<ExitCode> {
+    let mut stderr = std::io::stderr().lock();
+    let written = crate::export::lesson::export_lesson(lesson, opts, &mut |what| {
+        let _ = writeln!(stderr, "exporting {what}");
+    })?;
+    println!(
+        "Exported {} files of lesson {} to {}; open {}",
+        written.len(),
+        lesson.id,
+        opts.out.display(),
+        opts.out.join("index.html").display()
+    );
+    Ok(ExitCode::SUCCESS)
 }
 
 /// Loads a scene file, or the built-in scene for `None`.
@@ -305,8 +355,16 @@ fn profile_file(
 fn check(paths: &[PathBuf]) -> ExitCode {
     let mut failed = 0;
     for p in paths {
-        match lesson::load_scene_file(p) {
-            Ok(_) => println!("{}: ok", p.display()),
+        match lesson::load_file(p) {
+            Ok(lesson::Document::Scene(_)) => println!("{}: ok (scene)", p.display()),
+            Ok(lesson::Document::Lesson(l)) => {
+                println!(
+                    "{}: ok (lesson {}, {} steps)",
+                    p.display(),
+                    l.id,
+                    l.steps.len()
+                );
+            }
             Err(d) => {
                 failed += 1;
                 eprintln!("{d}");

@@ -283,3 +283,104 @@ fn later_steps_keep_earlier_settings() {
         pipeline::shade::Frequency::Flat
     );
 }
+
+#[test]
+fn every_lesson_exports_a_handout_in_both_languages() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    for path in lesson_files() {
+        let Ok(Document::Lesson(lesson)) = load_file(&path) else {
+            panic!("{} loads", path.display());
+        };
+        for lang in ["en", "zh"] {
+            let out = dir.path().join(format!("{}-{lang}", lesson.id));
+            let o = crate::support::pipelens(
+                dir.path(),
+                &[
+                    "export",
+                    path.to_str().expect("utf-8"),
+                    "--out",
+                    out.to_str().expect("utf-8"),
+                    "--size",
+                    "160x100",
+                    "--lang",
+                    lang,
+                ],
+            );
+            assert!(o.status.success(), "{}", crate::support::text(&o));
+            let html = std::fs::read_to_string(out.join("index.html")).expect("index.html");
+            for (k, step) in lesson.steps.iter().enumerate() {
+                let title = if lang == "zh" {
+                    &step.title.zh
+                } else {
+                    &step.title.en
+                };
+                assert!(
+                    html.contains(&title.replace('&', "&amp;").replace('<', "&lt;")),
+                    "{}: step {k}'s title in the handout",
+                    lesson.id
+                );
+                let step_dir = out.join(format!("step-{:02}", k + 1));
+                assert!(step_dir.join("color.png").is_file());
+                assert!(step_dir.join("capture.json").is_file());
+                if step.compare.is_some() {
+                    assert!(
+                        std::fs::read_dir(&step_dir).expect("step folder").any(|e| e
+                            .expect("entry")
+                            .file_name()
+                            .to_string_lossy()
+                            .starts_with("compare_")),
+                        "{}: step {k}'s compared images",
+                        lesson.id
+                    );
+                }
+            }
+            // Every image the handout shows was written.
+            for src in html
+                .split("src=\"")
+                .skip(1)
+                .filter_map(|s| s.split('"').next())
+            {
+                assert!(out.join(src).is_file(), "{}: {src} is missing", lesson.id);
+            }
+        }
+    }
+}
+
+#[test]
+fn one_step_of_a_lesson_exports_alone_and_a_wrong_step_is_refused() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let tour = repo().join("lessons/00-tour.toml");
+    let out = dir.path().join("one");
+    let run = |step: &str| {
+        crate::support::pipelens(
+            dir.path(),
+            &[
+                "export",
+                tour.to_str().expect("utf-8"),
+                "--out",
+                out.to_str().expect("utf-8"),
+                "--size",
+                "160x100",
+                "--step",
+                step,
+            ],
+        )
+    };
+    let o = run("99");
+    assert!(!o.status.success());
+    assert!(
+        crate::support::text(&o).contains("out of range: the lesson has steps 1 to 10"),
+        "{}",
+        crate::support::text(&o)
+    );
+    assert!(!out.exists(), "nothing written");
+    let o = run("3");
+    assert!(o.status.success(), "{}", crate::support::text(&o));
+    let entries: Vec<String> = std::fs::read_dir(&out)
+        .expect("out")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    let mut entries = entries;
+    entries.sort();
+    assert_eq!(entries, ["index.html", "step-03"]);
+}
