@@ -133,7 +133,14 @@ pub fn names(spec: &SceneSpec) -> Vec<String> {
     .map(str::to_owned)
     .to_vec();
     for o in &spec.scene.objects {
-        for p in ["translate", "rotate", "scale", "color"] {
+        for p in [
+            "translate",
+            "rotate",
+            "scale",
+            "color",
+            "axis",
+            "axis_angle",
+        ] {
             out.push(format!("objects.{}.{p}", o.name));
         }
     }
@@ -275,6 +282,18 @@ fn set(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Problem> {
                     };
                 }
                 "color" => o.color = pipeline::scene::ColorSource::Uniform(vec3(v)?),
+                "axis" => {
+                    let axis = vec3(v)?;
+                    if axis.length() < 1e-6 {
+                        return Err("the axis must not be the zero vector".to_owned().into());
+                    }
+                    let angle = o.axis_rotation.map_or(0.0, |(_, a)| a);
+                    o.axis_rotation = Some((axis, angle));
+                }
+                "axis_angle" => {
+                    let axis = o.axis_rotation.map_or(Vec3::Y, |(a, _)| a);
+                    o.axis_rotation = Some((axis, number(v)?));
+                }
                 _ => return Err(Problem::Unknown),
             }
         }

@@ -151,6 +151,8 @@ pub struct RawObject {
     pub mesh: Spanned<RawMesh>,
     pub translate: Option<RawVec3>,
     pub rotate: Option<RawVec3>,
+    /// `{ axis = [x, y, z], angle = degrees }`: a rotation about an arbitrary axis.
+    pub rotate_axis: Option<Spanned<RawAxisRotation>>,
     /// `[sx, sy, sz]` or one number for a uniform scale.
     pub scale: Option<Spanned<RawScale>>,
     /// `"vertex"`, `"normal"` or `[r, g, b]`.
@@ -167,6 +169,14 @@ pub struct RawObject {
     pub displacement: Option<Spanned<RawDisplacement>>,
     /// `{ cube = "room", reflectivity = … }`.
     pub environment: Option<Spanned<RawEnvironment>>,
+}
+
+/// `rotate_axis = { axis = [x, y, z], angle = θ }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawAxisRotation {
+    pub axis: RawVec3,
+    pub angle: Spanned<f64>,
 }
 
 /// `environment = { cube = "room", reflectivity = … }`.

@@ -414,6 +414,18 @@ fn object(
     if let Some(v) = raw.rotate.as_ref().and_then(|v| c.vec3("rotate", v)) {
         object.rotate_deg = v;
     }
+    if let Some(r) = &raw.rotate_axis {
+        let r = r.get_ref();
+        if let (Some(axis), Some(angle)) = (c.vec3("axis", &r.axis), c.finite("angle", &r.angle)) {
+            if axis.length() < 1e-6 {
+                c.error(
+                    r.axis.span(),
+                    "`axis` must not be the zero vector: it gives the direction to rotate about",
+                );
+            }
+            object.axis_rotation = Some((axis, angle));
+        }
+    }
     if let Some(s) = &raw.scale {
         let v = match *s.get_ref() {
             RawScale::Uniform(k) => [k; 3],

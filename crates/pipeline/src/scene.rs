@@ -53,6 +53,10 @@ pub struct Object {
     pub lit: bool,
     /// Whether it casts a planar shadow (when the scene has one).
     pub casts_shadow: bool,
+    /// A rotation by an angle (degrees) about an arbitrary axis through the object's origin,
+    /// applied after its Euler rotations: `M = T·R(n, θ)·Rz·Ry·Rx·S`, with `R(n, θ)` built as the
+    /// notes do (`Rx(−θx)·Ry(−θy)·Rz(θ)·Ry(θy)·Rx(θx)`).
+    pub axis_rotation: Option<(Vec3, f32)>,
 }
 
 impl Object {
@@ -74,6 +78,7 @@ impl Object {
             parent: None,
             lit: true,
             casts_shadow: true,
+            axis_rotation: None,
         }
     }
 
@@ -82,18 +87,28 @@ impl Object {
     pub fn model_matrix(&self) -> NamedMatrix {
         let r = self.rotate_deg * (std::f32::consts::PI / 180.0);
         let mut factors: Vec<NamedMatrix> = self.parent.iter().cloned().collect();
+        factors.push(NamedMatrix::new(
+            "T",
+            "T(tx, ty, tz)",
+            transform::translate(self.translate),
+        ));
+        let about_axis = self
+            .axis_rotation
+            .and_then(|(axis, deg)| transform::rotate_axis_aligned(axis, deg.to_radians()).ok());
+        factors.extend(about_axis);
         factors.extend([
-            NamedMatrix::new("T", "T(tx, ty, tz)", transform::translate(self.translate)),
             NamedMatrix::new("Rz", "Rz(θz)", transform::rotate_z(r.z)),
             NamedMatrix::new("Ry", "Ry(θy)", transform::rotate_y(r.y)),
             NamedMatrix::new("Rx", "Rx(θx)", transform::rotate_x(r.x)),
             NamedMatrix::new("S", "S(sx, sy, sz)", transform::scale(self.scale)),
         ]);
         let m = factors.iter().fold(Mat4::IDENTITY, |m, f| m * f.matrix);
-        let formula = if self.parent.is_some() {
-            "M = parent·T·Rz·Ry·Rx·S: the object's own transform, then its parent's"
-        } else {
-            "M = T·Rz·Ry·Rx·S: scale, rotate about x, y, z, then translate"
+        let formula = match (self.parent.is_some(), self.axis_rotation.is_some()) {
+            (true, _) => "M = parent·T·Rz·Ry·Rx·S: the object's own transform, then its parent's",
+            (false, false) => "M = T·Rz·Ry·Rx·S: scale, rotate about x, y, z, then translate",
+            (false, true) => {
+                "M = T·R(n, θ)·Rz·Ry·Rx·S: scale, rotate about x, y, z, then about the axis n, then translate"
+            }
         };
         NamedMatrix::new(&format!("M_model({})", self.name), formula, m).with_factors(factors)
     }

@@ -67,10 +67,11 @@ impl Projector {
     }
 }
 
-/// Formats a number for tables: 3 decimals, or scientific when huge or tiny.
+/// Formats a number for tables: 3 decimals, or scientific when huge or tiny; below 1e-6 in
+/// magnitude it is shown as 0 (round-off such as 2.4e-7 in a rotation matrix says nothing).
 #[must_use]
 pub fn num(v: f32) -> String {
-    if v == 0.0 {
+    if v.abs() < 1e-6 {
         "0".to_owned()
     } else if v.abs() >= 1e5 || v.abs() < 1e-3 {
         format!("{v:.2e}")
