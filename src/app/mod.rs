@@ -10,7 +10,6 @@ pub mod worker;
 use std::path::PathBuf;
 use std::sync::mpsc::{Receiver, channel};
 
-use egui::epaint::text::{FontInsert, FontPriority, InsertFontFamily};
 use egui::{FontData, FontFamily, RichText};
 
 use self::i18n::Lang;
@@ -24,22 +23,22 @@ use self::worker::RenderWorker;
 /// The Chinese font, embedded so that Chinese renders on any machine.
 pub const CJK_FONT: &[u8] = include_bytes!("../../assets/fonts/NotoSansSC-subset.otf");
 
-/// Adds the Chinese font after egui's own fonts (which have no CJK glyphs).
+/// Adds the Chinese font after egui's own fonts (which have no CJK glyphs), and egui's Hack as
+/// the last fallback of the proportional family: it has symbols the others lack (⁻ ⌊ ⌋).
 pub fn install_fonts(ctx: &egui::Context) {
-    ctx.add_font(FontInsert::new(
-        "noto-sans-sc",
-        FontData::from_static(CJK_FONT),
-        vec![
-            InsertFontFamily {
-                family: FontFamily::Proportional,
-                priority: FontPriority::Lowest,
-            },
-            InsertFontFamily {
-                family: FontFamily::Monospace,
-                priority: FontPriority::Lowest,
-            },
-        ],
-    ));
+    let mut fonts = egui::FontDefinitions::default();
+    fonts.font_data.insert(
+        "noto-sans-sc".to_owned(),
+        std::sync::Arc::new(FontData::from_static(CJK_FONT)),
+    );
+    for (family, extra) in [
+        (FontFamily::Proportional, &["noto-sans-sc", "Hack"][..]),
+        (FontFamily::Monospace, &["noto-sans-sc"][..]),
+    ] {
+        let list = fonts.families.entry(family).or_default();
+        list.extend(extra.iter().map(|s| (*s).to_owned()));
+    }
+    ctx.set_fonts(fonts);
 }
 
 /// Prepares an egui context for the app: the Chinese font and the normal style.

@@ -290,6 +290,30 @@ fn set(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Problem> {
                     let angle = o.axis_rotation.map_or(0.0, |(_, a)| a);
                     o.axis_rotation = Some((axis, angle));
                 }
+                "ka" | "kd" | "ks" => {
+                    let k = match v {
+                        Value::Number(_) => Vec3::splat(number(v)?),
+                        _ => vec3(v)?,
+                    };
+                    if k.min_element() < 0.0 {
+                        return Err("reflection coefficients must not be negative"
+                            .to_owned()
+                            .into());
+                    }
+                    let m = &mut o.material;
+                    *match *p {
+                        "ka" => &mut m.ka,
+                        "kd" => &mut m.kd,
+                        _ => &mut m.ks,
+                    } = k;
+                }
+                "shininess" => {
+                    let x = number(v)?;
+                    if !(x >= 0.0) {
+                        return Err(format!("shininess must not be negative, got {x}").into());
+                    }
+                    o.material.shininess = x;
+                }
                 "axis_angle" => {
                     let axis = o.axis_rotation.map_or(Vec3::Y, |(a, _)| a);
                     o.axis_rotation = Some((axis, number(v)?));

@@ -801,12 +801,13 @@ fn texture(c: &mut Checker<'_>, t: &Spanned<String>, base: &Path) -> Option<Text
         "uv_grid" => Some(Texture::uv_grid(512)),
         "mip_levels" => Some(Texture::mip_levels(512)),
         "bumps" => Some(Texture::bumps(512, 8)),
+        "bump_normals" => Some(Texture::bump_normals(512, 8, 6.0)),
         path => match Texture::load(&base.join(path)) {
             Ok(t) => Some(t),
             Err(e) => {
                 c.error(
                     t.span(),
-                    format!("{e} (a texture is \"checkerboard\", \"uv_grid\", \"mip_levels\", \"bumps\" or a PNG/JPEG path)"),
+                    format!("{e} (a texture is \"checkerboard\", \"uv_grid\", \"mip_levels\", \"bumps\", \"bump_normals\" or a PNG/JPEG path)"),
                 );
                 None
             }

@@ -530,6 +530,24 @@ impl Texture {
         t.name = "bumps".to_owned();
         t
     }
+
+    /// The tangent-space normal map of the same bumps: from the height's central differences
+    /// `∂h/∂u, ∂h/∂v` (per texel, times `strength`), `n = normalize(−∂h/∂u, −∂h/∂v, 1)` stored
+    /// as `(n + 1)/2` — what a normal map holds, so that normal mapping reproduces bump mapping.
+    #[must_use]
+    pub fn bump_normals(size: u32, count: u32, strength: f32) -> Self {
+        let height = Self::bumps(size, count);
+        let l = &height.levels[0];
+        let h = |i: i64, j: i64| l.texel(i, j, Wrap::Repeat).x;
+        let mut t = Self::from_fn("bump_normals", size, |i, j| {
+            let (i, j) = (i64::from(i), i64::from(j));
+            let du = (h(i + 1, j) - h(i - 1, j)) / 2.0 * strength;
+            let dv = (h(i, j + 1) - h(i, j - 1)) / 2.0 * strength;
+            (Vec3::new(-du, -dv, 1.0).normalize() + Vec3::ONE) / 2.0
+        });
+        t.name = "bump_normals".to_owned();
+        t
+    }
 }
 
 /// Displacement mapping: every vertex moves along its normal by `scale·h(u, v)`, `h` the

@@ -471,3 +471,42 @@ fn cube_map_faces_and_a_mirror_sphere() {
             .contains(&pipeline::capture::BufferKind::Reflected)
     );
 }
+
+#[test]
+fn the_bumps_normal_map_matches_bump_mapping_the_bumps() {
+    use pipeline::texture::SurfaceDetail;
+    // The built-in normal map is the bumps' slope stored as (n + 1)/2: normal mapping with it
+    // tilts the normals as bump mapping with the height does (up to the difference between
+    // central and forward differences, which part only at the bumps' rims, where the slope of
+    // √(1 − r²) is unbounded).
+    let k = 6.0;
+    let bump = detailed_quad(SurfaceDetail::Bump {
+        height: std::sync::Arc::new(Texture::bumps(512, 8)),
+        strength: k,
+    });
+    let mapped = detailed_quad(SurfaceDetail::Normal(std::sync::Arc::new(
+        Texture::bump_normals(512, 8, k),
+    )));
+    let (a, b) = (
+        &bump.pixels.shading.as_ref().expect("lit").normal,
+        &mapped.pixels.shading.as_ref().expect("lit").normal,
+    );
+    let (mut tilted, mut apart, mut covered) = (0, 0, 0);
+    for (i, (p, q)) in a.iter().zip(b).enumerate() {
+        if bump.pixels.coverage[i] == 0 {
+            continue;
+        }
+        let (p, q) = (Vec3::from(*p), Vec3::from(*q));
+        covered += 1;
+        apart += usize::from(p.angle_between(q) > 0.15);
+        tilted += usize::from(p.z < 0.99 && q.z < 0.99);
+    }
+    assert!(
+        tilted > covered / 4,
+        "the bumps tilt the normals ({tilted} of {covered})"
+    );
+    assert!(
+        apart * 10 < covered,
+        "{apart} of {covered} pixels differ by more than 0.15 rad"
+    );
+}
