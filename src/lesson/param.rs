@@ -314,6 +314,24 @@ fn set(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Problem> {
                     }
                     o.material.shininess = x;
                 }
+                "t" | "p0" | "p1" | "p2" | "p3" => {
+                    let Some(pipeline::mesh::BuiltinMesh::Bezier { mut points, mut t }) = o.builtin
+                    else {
+                        return Err(Problem::Unknown);
+                    };
+                    if *p == "t" {
+                        t = number(v)?;
+                        if !(0.0..=1.0).contains(&t) {
+                            return Err(format!("t must be from 0 to 1, got {t}").into());
+                        }
+                    } else {
+                        let k = usize::from(p.as_bytes()[1] - b'0');
+                        points[k] = vec3(v)?.truncate();
+                    }
+                    let shape = pipeline::mesh::BuiltinMesh::Bezier { points, t };
+                    o.builtin = Some(shape);
+                    o.mesh = std::sync::Arc::new(shape.build());
+                }
                 "axis_angle" => {
                     let axis = o.axis_rotation.map_or(Vec3::Y, |(a, _)| a);
                     o.axis_rotation = Some((axis, number(v)?));

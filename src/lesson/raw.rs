@@ -227,6 +227,10 @@ pub struct RawMeshTable {
     pub sides: Option<i64>,
     pub minor: Option<f64>,
     pub repeat: Option<f64>,
+    /// A Bézier curve's four control points `[[x, y], …]`.
+    pub points: Option<Vec<[f64; 2]>>,
+    /// A Bézier curve's parameter, 0…1.
+    pub t: Option<f64>,
 }
 
 /// One number for all three components, or three, as written (scales, intensities, coefficients).

@@ -402,12 +402,13 @@ fn object(
     base: &Path,
 ) -> Option<Object> {
     let raw = o.get_ref();
-    let mesh = mesh(c, &raw.mesh, base)?;
+    let (mesh, source) = mesh(c, &raw.mesh, base)?;
     let name = raw
         .name
         .as_ref()
         .map_or_else(|| format!("{}#{index}", mesh.name), |n| n.get_ref().clone());
     let mut object = Object::new(&name, mesh);
+    object.builtin = source;
     if let Some(v) = raw.translate.as_ref().and_then(|v| c.vec3("translate", v)) {
         object.translate = v;
     }
@@ -558,11 +559,16 @@ fn surface_maps(c: &mut Checker<'_>, o: &Spanned<RawObject>, object: &mut Object
     }
 }
 
-fn mesh(c: &mut Checker<'_>, m: &Spanned<RawMesh>, base: &Path) -> Option<Mesh> {
+/// The mesh, and how it was generated when built in.
+fn mesh(
+    c: &mut Checker<'_>,
+    m: &Spanned<RawMesh>,
+    base: &Path,
+) -> Option<(Mesh, Option<BuiltinMesh>)> {
     let span = m.span();
     let table = match m.get_ref() {
         RawMesh::Name(n) if n.to_ascii_lowercase().ends_with(".obj") => {
-            return load_obj(c, span, &base.join(n));
+            return load_obj(c, span, &base.join(n)).map(|m| (m, None));
         }
         RawMesh::Name(n) => &RawMeshTable {
             builtin: Some(n.clone()),
@@ -573,6 +579,8 @@ fn mesh(c: &mut Checker<'_>, m: &Spanned<RawMesh>, base: &Path) -> Option<Mesh> 
             sides: None,
             minor: None,
             repeat: None,
+            points: None,
+            t: None,
         },
         RawMesh::Table(t) => t,
     };
@@ -584,9 +592,48 @@ fn mesh(c: &mut Checker<'_>, m: &Spanned<RawMesh>, base: &Path) -> Option<Mesh> 
             );
             None
         }
-        (None, Some(path)) => load_obj(c, span, &base.join(path)),
-        (Some(name), None) => builtin(c, span, name, table).map(BuiltinMesh::build),
+        (None, Some(path)) => load_obj(c, span, &base.join(path)).map(|m| (m, None)),
+        (Some(name), None) => builtin(c, span, name, table).map(|b| (b.build(), Some(b))),
     }
+}
+
+/// `{ builtin = "bezier", points = [[x, y] × 4], t = … }`.
+fn bezier(c: &mut Checker<'_>, span: Range<usize>, t: &RawMeshTable) -> Option<BuiltinMesh> {
+    let points = t.points.as_deref().unwrap_or(&[]);
+    let finite = points
+        .iter()
+        .flatten()
+        .all(|v| v.is_finite() && v.abs() <= 1e6);
+    let [a, b, d, e] = points else {
+        c.error(
+            span,
+            format!(
+                "a bezier mesh needs `points` = four control points [[x, y], …], got {}",
+                points.len()
+            ),
+        );
+        return None;
+    };
+    if !finite {
+        c.error(
+            span,
+            "the control points must be finite numbers of magnitude at most 1e6",
+        );
+        return None;
+    }
+    let param = t.t.unwrap_or(1.0);
+    if !(0.0..=1.0).contains(&param) {
+        c.error(
+            span,
+            format!("`t` of a bezier mesh must be from 0 to 1, got {param}"),
+        );
+        return None;
+    }
+    let v = |p: &[f64; 2]| glam::Vec2::new(p[0] as f32, p[1] as f32);
+    Some(BuiltinMesh::Bezier {
+        points: [v(a), v(b), v(d), v(e)],
+        t: param as f32,
+    })
 }
 
 fn load_obj(c: &mut Checker<'_>, span: Range<usize>, path: &Path) -> Option<Mesh> {
@@ -660,6 +707,7 @@ fn builtin(
             segments: count("segments", t.segments, 48, 3, 4096),
             sides: count("sides", t.sides, 24, 3, 4096),
         },
+        "bezier" => bezier(c, span, t)?,
         other => {
             let suggestion = BuiltinMesh::NAMES
                 .iter()

@@ -17,6 +17,7 @@
 //! | [`capture`] | the record of a frame and its images |
 //! | [`overlay`] | 2-D shapes over the images |
 
+pub mod bezier;
 pub mod capture;
 pub mod clip;
 pub mod hierarchy;

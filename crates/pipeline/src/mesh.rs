@@ -270,11 +270,19 @@ pub enum BuiltinMesh {
         /// Divisions around the tube (≥ 3).
         sides: u32,
     },
+    /// The construction of a cubic Bézier curve at parameter `t` in the plane z = 0 (see
+    /// [`crate::bezier::construction_mesh`]).
+    Bezier {
+        /// The control points `P0…P3`.
+        points: [glam::Vec2; 4],
+        /// The curve parameter, 0…1.
+        t: f32,
+    },
 }
 
 impl BuiltinMesh {
     /// The names a scene file may use, with their meaning.
-    pub const NAMES: [&'static str; 7] = [
+    pub const NAMES: [&'static str; 8] = [
         "triangle",
         "two_triangles",
         "cube",
@@ -282,6 +290,7 @@ impl BuiltinMesh {
         "plane",
         "cylinder",
         "torus",
+        "bezier",
     ];
 
     /// Generates the mesh. Parameters below their minimum are raised to it.
@@ -299,6 +308,7 @@ impl BuiltinMesh {
                 segments,
                 sides,
             } => torus(minor.clamp(0.01, 0.99), segments.max(3), sides.max(3)),
+            Self::Bezier { points, t } => crate::bezier::construction_mesh(points, t),
         }
     }
 }

@@ -57,6 +57,9 @@ pub struct Object {
     /// applied after its Euler rotations: `M = T·R(n, θ)·Rz·Ry·Rx·S`, with `R(n, θ)` built as the
     /// notes do (`Rx(−θx)·Ry(−θy)·Rz(θ)·Ry(θy)·Rx(θx)`).
     pub axis_rotation: Option<(Vec3, f32)>,
+    /// How the mesh was generated, when it is built in: lets a lesson change a parameter of the
+    /// shape itself (a Bézier curve's `t`) and build it again.
+    pub builtin: Option<crate::mesh::BuiltinMesh>,
 }
 
 impl Object {
@@ -79,6 +82,7 @@ impl Object {
             lit: true,
             casts_shadow: true,
             axis_rotation: None,
+            builtin: None,
         }
     }
 

@@ -1,0 +1,67 @@
+//! Bézier curves: de Casteljau against the Bernstein form and hand values.
+
+use glam::Vec2;
+use pipeline::bezier::{bernstein, de_casteljau, point};
+
+#[test]
+fn de_casteljau_equals_the_bernstein_form() {
+    let p = [
+        Vec2::new(0.0, 0.0),
+        Vec2::new(0.0, 1.0),
+        Vec2::new(1.0, 1.0),
+        Vec2::new(1.0, 0.0),
+    ];
+    // By hand at t = ½: level 1 (0, ½), (½, 1), (1, ½); level 2 (¼, ¾), (¾, ¾); b = (½, ¾).
+    let levels = de_casteljau(&p, 0.5);
+    assert_eq!(levels.len(), 4);
+    assert_eq!(
+        levels[1],
+        [
+            Vec2::new(0.0, 0.5),
+            Vec2::new(0.5, 1.0),
+            Vec2::new(1.0, 0.5)
+        ]
+    );
+    assert_eq!(levels[2], [Vec2::new(0.25, 0.75), Vec2::new(0.75, 0.75)]);
+    assert_eq!(levels[3], [Vec2::new(0.5, 0.75)]);
+    // The Bernstein form gives the same point everywhere; the ends are interpolated.
+    for k in 0..=100 {
+        let t = k as f32 / 100.0;
+        let a = de_casteljau(&p, t)[3][0];
+        let b = point(&p, t);
+        assert!((a - b).length() < 1e-5, "t = {t}: {a} vs {b}");
+    }
+    assert_eq!(point(&p, 0.0), p[0]);
+    assert!((point(&p, 1.0) - p[3]).length() < 1e-6);
+    // The Bernstein basis is a partition of unity; B_1^3(t) = 3t(1 − t)².
+    for k in 0..=10 {
+        let t = k as f32 / 10.0;
+        let sum: f32 = (0..=3).map(|i| bernstein(3, i, t)).sum();
+        assert!((sum - 1.0).abs() < 1e-6);
+        assert!((bernstein(3, 1, t) - 3.0 * t * (1.0 - t).powi(2)).abs() < 1e-6);
+    }
+}
+
+#[test]
+fn the_construction_mesh_draws_each_part() {
+    use pipeline::mesh::BuiltinMesh;
+    let points = [
+        Vec2::new(-1.0, -0.5),
+        Vec2::new(-0.5, 0.8),
+        Vec2::new(0.6, 0.9),
+        Vec2::new(1.0, -0.4),
+    ];
+    let at = |t: f32| BuiltinMesh::Bezier { points, t }.build();
+    // More of the curve is drawn as t grows; every vertex lies in z ∈ [0, 0.005] and the
+    // point b(t) is at the centre of one of the squares.
+    assert!(at(0.9).indices.len() > at(0.1).indices.len());
+    let m = at(0.5);
+    assert!(m.positions.iter().all(|p| (0.0..=0.005).contains(&p.z)));
+    let b = point(&points, 0.5);
+    assert!(
+        m.positions
+            .chunks(4)
+            .any(|q| (q.iter().map(|p| p.truncate()).sum::<Vec2>() / 4.0 - b).length() < 1e-5),
+        "a square at b(t)"
+    );
+}
