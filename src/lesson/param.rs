@@ -272,72 +272,7 @@ fn set(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Problem> {
                 .iter_mut()
                 .find(|o| o.name == *object)
                 .ok_or(Problem::Unknown)?;
-            match *p {
-                "translate" => o.translate = vec3(v)?,
-                "rotate" => o.rotate_deg = vec3(v)?,
-                "scale" => {
-                    o.scale = match v {
-                        Value::Number(_) => Vec3::splat(number(v)?),
-                        _ => vec3(v)?,
-                    };
-                }
-                "color" => o.color = pipeline::scene::ColorSource::Uniform(vec3(v)?),
-                "axis" => {
-                    let axis = vec3(v)?;
-                    if axis.length() < 1e-6 {
-                        return Err("the axis must not be the zero vector".to_owned().into());
-                    }
-                    let angle = o.axis_rotation.map_or(0.0, |(_, a)| a);
-                    o.axis_rotation = Some((axis, angle));
-                }
-                "ka" | "kd" | "ks" => {
-                    let k = match v {
-                        Value::Number(_) => Vec3::splat(number(v)?),
-                        _ => vec3(v)?,
-                    };
-                    if k.min_element() < 0.0 {
-                        return Err("reflection coefficients must not be negative"
-                            .to_owned()
-                            .into());
-                    }
-                    let m = &mut o.material;
-                    *match *p {
-                        "ka" => &mut m.ka,
-                        "kd" => &mut m.kd,
-                        _ => &mut m.ks,
-                    } = k;
-                }
-                "shininess" => {
-                    let x = number(v)?;
-                    if !(x >= 0.0) {
-                        return Err(format!("shininess must not be negative, got {x}").into());
-                    }
-                    o.material.shininess = x;
-                }
-                "t" | "p0" | "p1" | "p2" | "p3" => {
-                    let Some(pipeline::mesh::BuiltinMesh::Bezier { mut points, mut t }) = o.builtin
-                    else {
-                        return Err(Problem::Unknown);
-                    };
-                    if *p == "t" {
-                        t = number(v)?;
-                        if !(0.0..=1.0).contains(&t) {
-                            return Err(format!("t must be from 0 to 1, got {t}").into());
-                        }
-                    } else {
-                        let k = usize::from(p.as_bytes()[1] - b'0');
-                        points[k] = vec3(v)?.truncate();
-                    }
-                    let shape = pipeline::mesh::BuiltinMesh::Bezier { points, t };
-                    o.builtin = Some(shape);
-                    o.mesh = std::sync::Arc::new(shape.build());
-                }
-                "axis_angle" => {
-                    let axis = o.axis_rotation.map_or(Vec3::Y, |(a, _)| a);
-                    o.axis_rotation = Some((axis, number(v)?));
-                }
-                _ => return Err(Problem::Unknown),
-            }
+            object_param(o, p, v)?;
         }
         ["lights", k, p] => {
             let light = k
@@ -360,6 +295,76 @@ fn set(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Problem> {
                 .find(|(j, _)| j == joint)
                 .ok_or(Problem::Unknown)?;
             *slot.1 = number(v)?;
+        }
+        _ => return Err(Problem::Unknown),
+    }
+    Ok(())
+}
+
+/// `objects.NAME.p`: the object's transform, colour, material, or its built-in shape.
+fn object_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(), Problem> {
+    match p {
+        "translate" => o.translate = vec3(v)?,
+        "rotate" => o.rotate_deg = vec3(v)?,
+        "scale" => {
+            o.scale = match v {
+                Value::Number(_) => Vec3::splat(number(v)?),
+                _ => vec3(v)?,
+            };
+        }
+        "color" => o.color = pipeline::scene::ColorSource::Uniform(vec3(v)?),
+        "axis" => {
+            let axis = vec3(v)?;
+            if axis.length() < 1e-6 {
+                return Err("the axis must not be the zero vector".to_owned().into());
+            }
+            let angle = o.axis_rotation.map_or(0.0, |(_, a)| a);
+            o.axis_rotation = Some((axis, angle));
+        }
+        "ka" | "kd" | "ks" => {
+            let k = match v {
+                Value::Number(_) => Vec3::splat(number(v)?),
+                _ => vec3(v)?,
+            };
+            if k.min_element() < 0.0 {
+                return Err("reflection coefficients must not be negative"
+                    .to_owned()
+                    .into());
+            }
+            let m = &mut o.material;
+            *match p {
+                "ka" => &mut m.ka,
+                "kd" => &mut m.kd,
+                _ => &mut m.ks,
+            } = k;
+        }
+        "shininess" => {
+            let x = number(v)?;
+            if !(x >= 0.0) {
+                return Err(format!("shininess must not be negative, got {x}").into());
+            }
+            o.material.shininess = x;
+        }
+        "t" | "p0" | "p1" | "p2" | "p3" => {
+            let Some(pipeline::mesh::BuiltinMesh::Bezier { mut points, mut t }) = o.builtin else {
+                return Err(Problem::Unknown);
+            };
+            if p == "t" {
+                t = number(v)?;
+                if !(0.0..=1.0).contains(&t) {
+                    return Err(format!("t must be from 0 to 1, got {t}").into());
+                }
+            } else {
+                let k = usize::from(p.as_bytes()[1] - b'0');
+                points[k] = vec3(v)?.truncate();
+            }
+            let shape = pipeline::mesh::BuiltinMesh::Bezier { points, t };
+            o.builtin = Some(shape);
+            o.mesh = std::sync::Arc::new(shape.build());
+        }
+        "axis_angle" => {
+            let axis = o.axis_rotation.map_or(Vec3::Y, |(a, _)| a);
+            o.axis_rotation = Some((axis, number(v)?));
         }
         _ => return Err(Problem::Unknown),
     }
