@@ -805,7 +805,7 @@ fn middle_row(spec: &SceneSpec) -> [f32; 4] {
 
 /// An orbit that frames the scene: centred on the mean of the objects' positions, far enough
 /// back to see the viewing camera too.
-fn default_orbit(spec: &SceneSpec) -> Orbit {
+pub fn default_orbit(spec: &SceneSpec) -> Orbit {
     let n = spec.scene.objects.len().max(1) as f32;
     let centre = spec.scene.objects.iter().map(|o| o.translate).sum::<Vec3>() / n;
     let reach = (spec.scene.camera.eye - centre).length().max(1.0);

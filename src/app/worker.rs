@@ -77,7 +77,7 @@ impl Job {
 
 /// The scene from the observer's camera: the same pipeline, one sample, no culling (so the
 /// outside of everything is seen), a perspective lens wide enough for the viewing frustum.
-fn render_observer(spec: &SceneSpec, camera: Camera) -> Option<FrameCapture> {
+pub fn render_observer(spec: &SceneSpec, camera: Camera) -> Option<FrameCapture> {
     let distance = (camera.eye - camera.at).length();
     let scene = Scene {
         objects: spec.scene.objects.clone(),

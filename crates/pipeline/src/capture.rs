@@ -683,6 +683,54 @@ impl FrameCapture {
         overlays: &[OverlayKind],
         zoom: u32,
     ) -> RgbaImage {
+        let shapes: Vec<Shape> = overlays
+            .iter()
+            .flat_map(|&k| self.overlay(k).shapes)
+            .collect();
+        self.image_with_shapes(kind, &shapes, zoom)
+    }
+
+    /// Where world point `p` lands in the image (pixels, y down): `P·V·p`, divided by `w`, through
+    /// the viewport; `None` behind the camera (`w ≤ 1e-5`).
+    #[must_use]
+    pub fn world_to_image(&self, p: Vec3) -> Option<[f32; 2]> {
+        let clip = self.matrices.projection.matrix * self.matrices.view.matrix * p.extend(1.0);
+        self.clip_to_image(clip)
+    }
+
+    fn clip_to_image(&self, clip: glam::Vec4) -> Option<[f32; 2]> {
+        (clip.w > 1e-5).then(|| {
+            let (w, h) = (self.width() as f32, self.height() as f32);
+            let ndc = clip.truncate() / clip.w;
+            [(ndc.x + 1.0) * w / 2.0, h - (ndc.y + 1.0) * h / 2.0]
+        })
+    }
+
+    /// The world segment `a`–`b` in image pixels, the part behind the camera cut away (at
+    /// `w = 1e-5` in clip space, as clipping does); `None` when all of it is behind.
+    #[must_use]
+    pub fn world_segment_to_image(&self, a: Vec3, b: Vec3) -> Option<[[f32; 2]; 2]> {
+        let pv = self.matrices.projection.matrix * self.matrices.view.matrix;
+        let (mut ca, mut cb) = (pv * a.extend(1.0), pv * b.extend(1.0));
+        let eps = 1e-5;
+        if ca.w <= eps && cb.w <= eps {
+            return None;
+        }
+        if ca.w <= eps || cb.w <= eps {
+            let t = (eps * 1.001 - ca.w) / (cb.w - ca.w);
+            let cut = ca.lerp(cb, t);
+            if ca.w <= eps {
+                ca = cut;
+            } else {
+                cb = cut;
+            }
+        }
+        Some([self.clip_to_image(ca)?, self.clip_to_image(cb)?])
+    }
+
+    /// An image of buffer `kind`, magnified `zoom`× (nearest), with `shapes` drawn over it.
+    #[must_use]
+    pub fn image_with_shapes(&self, kind: BufferKind, shapes: &[Shape], zoom: u32) -> RgbaImage {
         let zoom = zoom.max(1);
         let base = self.image(kind);
         let (w, h) = (base.width() * zoom, base.height() * zoom);
@@ -696,9 +744,7 @@ impl FrameCapture {
                 *px = p;
             }
         }
-        for &k in overlays {
-            overlay::draw(&mut pixmap, &self.overlay(k).shapes, zoom as f32);
-        }
+        overlay::draw(&mut pixmap, shapes, zoom as f32);
         ImageBuffer::from_fn(w, h, |x, y| {
             let c = pixmap.pixel(x, y).map(|p| p.demultiply());
             c.map_or(Rgba([0, 0, 0, 255]), |c| {
