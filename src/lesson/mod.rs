@@ -169,8 +169,26 @@ pub fn parse_toml<T: serde::de::DeserializeOwned>(
     })
 }
 
-/// Adds "did you mean `x`?" to serde's "unknown field `y`, expected one of `a`, `b`" messages.
+/// Serde's names for the kinds of value, in the words of the file's reader.
+const KINDS: [(&str, &str); 6] = [
+    ("expected f64", "expected a number"),
+    ("expected i64", "expected a whole number"),
+    ("expected a boolean", "expected true or false"),
+    ("expected a sequence", "expected an array [ … ]"),
+    (
+        "expected an array of length 3",
+        "expected an array of three numbers [x, y, z]",
+    ),
+    ("expected a map", "expected a table { … }"),
+];
+
+/// Adds "did you mean `x`?" to serde's "unknown field `y`, expected one of `a`, `b`" messages,
+/// and names kinds of value in plain words ("expected a number", not "expected f64").
 fn with_suggestion(message: &str) -> String {
+    let message = KINDS
+        .iter()
+        .fold(message.to_owned(), |m, (from, to)| m.replace(from, to));
+    let message = message.as_str();
     let Some(rest) = message.strip_prefix("unknown field `") else {
         return message.to_owned();
     };

@@ -2,6 +2,7 @@
 
 mod app;
 mod cli;
+mod corpus;
 mod lessons;
 mod reference;
 mod scene_file;

@@ -121,20 +121,49 @@ impl Mesh {
     /// A [`MeshError`] naming the file and what is wrong with it.
     pub fn load_obj(path: &Path) -> Result<Mesh, MeshError> {
         let shown = path.display().to_string();
+        let file = std::fs::File::open(path).map_err(|e| MeshError::Obj {
+            path: shown.clone(),
+            reason: format!("cannot open it: {e}"),
+        })?;
+        let name = path
+            .file_name()
+            .map_or_else(|| shown.clone(), |n| n.to_string_lossy().into_owned());
+        Self::parse_obj(&mut std::io::BufReader::new(file), &shown, &name)
+    }
+
+    /// Reads OBJ text from `reader` as [`Self::load_obj`] does; `shown` names it in errors.
+    ///
+    /// # Errors
+    /// A [`MeshError`] naming `shown` and what is wrong.
+    pub fn parse_obj(
+        reader: &mut impl std::io::Read,
+        shown: &str,
+        name: &str,
+    ) -> Result<Mesh, MeshError> {
         let options = tobj::LoadOptions {
             triangulate: true,
             single_index: true,
             ignore_points: true,
             ignore_lines: true,
         };
-        let (models, _materials) = tobj::load_obj(path, &options).map_err(|e| MeshError::Obj {
-            path: shown.clone(),
+        let mut text = String::new();
+        reader
+            .read_to_string(&mut text)
+            .map_err(|e| MeshError::Obj {
+                path: shown.to_owned(),
+                reason: format!("cannot read it as text: {e}"),
+            })?;
+        check_face_sizes(&text, shown)?;
+        // Materials are not used: a missing .mtl file is no error.
+        let (models, _materials) = tobj::load_obj_buf(&mut text.as_bytes(), &options, |_| {
+            Ok((Vec::new(), Default::default()))
+        })
+        .map_err(|e| MeshError::Obj {
+            path: shown.to_owned(),
             reason: e.to_string(),
         })?;
         let mut mesh = Mesh {
-            name: path
-                .file_name()
-                .map_or_else(|| shown.clone(), |n| n.to_string_lossy().into_owned()),
+            name: name.to_owned(),
             ..Mesh::default()
         };
         let mut has_normals = true;
@@ -176,32 +205,7 @@ impl Mesh {
                     .map(|f| [base + f[0], base + f[1], base + f[2]]),
             );
         }
-        if mesh.indices.is_empty() {
-            return Err(MeshError::NoFaces { path: shown });
-        }
-        let count = mesh.positions.len();
-        for (face, tri) in mesh.indices.iter().enumerate() {
-            if let Some(&index) = tri.iter().find(|&&i| i as usize >= count) {
-                return Err(MeshError::IndexOutOfRange {
-                    path: shown,
-                    face,
-                    index,
-                    count,
-                });
-            }
-        }
-        if let Some((vertex, &value)) = mesh
-            .positions
-            .iter()
-            .enumerate()
-            .find(|(_, p)| !p.is_finite())
-        {
-            return Err(MeshError::NotFinite {
-                path: shown,
-                vertex,
-                value,
-            });
-        }
+        check_loaded(&mesh, shown)?;
         if !has_uvs {
             mesh.uvs.clear();
         }
@@ -229,6 +233,59 @@ impl Mesh {
         }
         self.indices.push([base, base + 1, base + 2]);
     }
+}
+
+/// A loaded mesh has faces, indices in range and finite positions.
+fn check_loaded(mesh: &Mesh, shown: &str) -> Result<(), MeshError> {
+    if mesh.indices.is_empty() {
+        return Err(MeshError::NoFaces {
+            path: shown.to_owned(),
+        });
+    }
+    let count = mesh.positions.len();
+    for (face, tri) in mesh.indices.iter().enumerate() {
+        if let Some(&index) = tri.iter().find(|&&i| i as usize >= count) {
+            return Err(MeshError::IndexOutOfRange {
+                path: shown.to_owned(),
+                face,
+                index,
+                count,
+            });
+        }
+    }
+    if let Some((vertex, &value)) = mesh
+        .positions
+        .iter()
+        .enumerate()
+        .find(|(_, p)| !p.is_finite())
+    {
+        return Err(MeshError::NotFinite {
+            path: shown.to_owned(),
+            vertex,
+            value,
+        });
+    }
+    Ok(())
+}
+
+/// tobj drops a face of fewer than three vertices without a word: name it, with its line.
+fn check_face_sizes(text: &str, shown: &str) -> Result<(), MeshError> {
+    for (n, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        if words.next() == Some("f") {
+            let count = words.count();
+            if count < 3 {
+                return Err(MeshError::Obj {
+                    path: shown.to_owned(),
+                    reason: format!(
+                        "line {}: a face needs at least three vertices, got {count}",
+                        n + 1
+                    ),
+                });
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The built-in meshes, generated in code so that the product needs no files.

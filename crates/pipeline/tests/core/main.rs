@@ -4,6 +4,7 @@
 mod bezier;
 mod clip;
 mod hierarchy;
+mod properties;
 mod raster;
 mod shade;
 mod support;

@@ -8,24 +8,7 @@ use pipeline::scene::{
     Camera, ColorSource, DepthTest, Object, Projection, RenderSettings, Samples, Scene,
 };
 
-use crate::support::{pixel_scene, render, sample_position};
-
-/// Counts how often each sample is covered over all primitives (depth test `Always` keeps every
-/// write visible in the counts) and returns (sum of per-primitive covered counts, distinct samples).
-fn cover_counts(capture: &pipeline::capture::FrameCapture) -> (u64, u64) {
-    let sum = capture
-        .primitives
-        .iter()
-        .map(|p| u64::from(p.counts.covered))
-        .sum();
-    let distinct = capture
-        .samples
-        .triangle
-        .iter()
-        .filter(|&&t| t != NONE)
-        .count() as u64;
-    (sum, distinct)
-}
+use crate::support::{cover_counts, pixel_scene, render, sample_position};
 
 /// Point-in-convex-polygon with a margin: `Some(true)` clearly inside, `Some(false)` clearly
 /// outside, `None` within `margin` of the boundary (where the fill rule decides).

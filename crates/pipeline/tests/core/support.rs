@@ -4,6 +4,7 @@
 use glam::{Vec2, Vec3};
 use pipeline::capture::FrameCapture;
 use pipeline::mesh::Mesh;
+use pipeline::raster::NONE;
 use pipeline::scene::{
     Camera, ColorSource, DepthTest, Object, Projection, RenderSettings, Samples, Scene,
 };
@@ -74,4 +75,21 @@ pub fn sample_position(samples: Samples, x: u32, y: u32, s: usize) -> Vec2 {
     };
     let (dx, dy) = pattern[s];
     Vec2::new(x as f32 + 0.5 + dx / 16.0, y as f32 + 0.5 - dy / 16.0)
+}
+
+/// Counts how often each sample is covered over all primitives (depth test `Always` keeps every
+/// write visible in the counts) and returns (sum of per-primitive covered counts, distinct samples).
+pub fn cover_counts(capture: &pipeline::capture::FrameCapture) -> (u64, u64) {
+    let sum = capture
+        .primitives
+        .iter()
+        .map(|p| u64::from(p.counts.covered))
+        .sum();
+    let distinct = capture
+        .samples
+        .triangle
+        .iter()
+        .filter(|&&t| t != NONE)
+        .count() as u64;
+    (sum, distinct)
 }

@@ -1,0 +1,129 @@
+//! Property tests (proptest) of the rasterization and clipping invariants, on random inputs:
+//! watertight fans, coverage additive over a split, the depth test independent of drawing order
+//! for opaque geometry, and clipping that never leaves the view volume.
+
+use glam::{Vec2, Vec3, Vec4};
+use pipeline::clip::{ClipOutcome, ClipVertex, clip_triangle};
+use pipeline::mesh::Mesh;
+use pipeline::scene::{ColorSource, DepthTest, Object, Samples};
+use proptest::prelude::*;
+
+use crate::support::{cover_counts, pixel_scene, render};
+
+/// A point on the 1/16-pixel grid inside a 48×32 window.
+fn grid_point() -> impl Strategy<Value = Vec2> {
+    (0u32..48 * 16, 0u32..32 * 16).prop_map(|(x, y)| Vec2::new(x as f32, y as f32) / 16.0)
+}
+
+fn samples() -> impl Strategy<Value = Samples> {
+    prop_oneof![Just(Samples::X1), Just(Samples::X4), Just(Samples::X16)]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    /// A triangle split at a point of one edge covers exactly the samples of the whole, each
+    /// once. The split point is on the 1/256-pixel snapping grid, so the halves' shared edge is
+    /// exactly the whole's cut.
+    #[test]
+    fn coverage_is_additive_over_a_split(a in grid_point(), b in grid_point(), c in grid_point(), k in 1u32..16, s in samples()) {
+        let m = b + (c - b) * (k as f32 / 16.0);
+        let (whole, mut settings) = pixel_scene(48, 32, &[[a, b, c]]);
+        settings.samples = s;
+        let (split, _) = pixel_scene(48, 32, &[[a, b, m], [a, m, c]]);
+        let (sum_w, distinct_w) = cover_counts(&render(&whole, &settings));
+        let (sum_s, distinct_s) = cover_counts(&render(&split, &settings));
+        prop_assert_eq!(sum_w, distinct_w);
+        prop_assert_eq!(sum_s, distinct_s, "the halves overlap");
+        prop_assert_eq!(sum_w, sum_s, "the halves cover what the whole covers");
+    }
+
+    /// A convex polygon cut into a fan of triangles around an inner point: no sample is covered
+    /// twice, and the fan covers exactly what the polygon's own fan from a vertex covers.
+    #[test]
+    fn fans_are_watertight(
+        centre in (20.0f32..28.0, 12.0f32..20.0),
+        jitter in proptest::collection::vec(0.0f32..0.8, 5..12),
+        radius in 4.0f32..14.0,
+        s in samples(),
+    ) {
+        let n = jitter.len();
+        let centre = Vec2::new(centre.0, centre.1);
+        let ring: Vec<Vec2> = (0..n)
+            .map(|i| {
+                let angle = (i as f32 + jitter[i]) / n as f32 * std::f32::consts::TAU;
+                centre + Vec2::new(angle.cos(), angle.sin()) * radius
+            })
+            .collect();
+        let around: Vec<[Vec2; 3]> = (0..n).map(|i| [centre, ring[i], ring[(i + 1) % n]]).collect();
+        let from_vertex: Vec<[Vec2; 3]> = (1..n - 1).map(|i| [ring[0], ring[i], ring[i + 1]]).collect();
+        let (a, mut settings) = pixel_scene(48, 32, &around);
+        settings.samples = s;
+        let (b, _) = pixel_scene(48, 32, &from_vertex);
+        let (sum_a, distinct_a) = cover_counts(&render(&a, &settings));
+        let (sum_b, distinct_b) = cover_counts(&render(&b, &settings));
+        prop_assert_eq!(sum_a, distinct_a, "a sample covered twice");
+        prop_assert_eq!(sum_b, distinct_b, "a sample covered twice");
+        // The inner point is not on the snapping grid: the two fans' outlines are the same
+        // polygon, so they cover the same samples.
+        prop_assert_eq!(distinct_a, distinct_b);
+    }
+
+    /// Opaque triangles at distinct depths give the same image whatever order they are drawn in.
+    #[test]
+    fn the_depth_test_does_not_depend_on_the_order(
+        tris in proptest::collection::vec((grid_point(), grid_point(), grid_point()), 2..8),
+        order_seed in any::<u64>(),
+    ) {
+        let build = |order: &[usize]| {
+            let mut mesh = Mesh { name: "depth".into(), ..Mesh::default() };
+            for &k in order {
+                let (a, b, c) = tris[k];
+                // Each triangle flat at its own depth z = −0.1 − 0.2·k, its own colour.
+                let z = -0.1 - 0.2 * k as f32;
+                let base = mesh.positions.len() as u32;
+                mesh.positions.extend([a, b, c].map(|p| p.extend(z)));
+                mesh.colors.extend([Vec3::new(k as f32 / 8.0, 1.0 - k as f32 / 8.0, 0.5); 3]);
+                mesh.normals.extend([Vec3::Z; 3]);
+                mesh.indices.push([base, base + 1, base + 2]);
+            }
+            let (mut scene, mut settings) = pixel_scene(48, 32, &[]);
+            let mut object = Object::new("depth", mesh);
+            object.color = ColorSource::Vertex;
+            scene.objects = vec![object];
+            settings.depth_test = DepthTest::Less;
+            settings.cull = pipeline::scene::CullMode::None;
+            render(&scene, &settings)
+        };
+        let forward: Vec<usize> = (0..tris.len()).collect();
+        let mut shuffled = forward.clone();
+        fastrand::Rng::with_seed(order_seed).shuffle(&mut shuffled);
+        let (x, y) = (build(&forward), build(&shuffled));
+        prop_assert_eq!(&x.pixels.color, &y.pixels.color);
+        prop_assert_eq!(&x.pixels.depth, &y.pixels.depth);
+    }
+
+    /// Every vertex clipping produces lies in the view volume −w ≤ x, y, z ≤ w with w > 0, and
+    /// its barycentrics (relative to the input triangle) sum to 1 within [0, 1].
+    #[test]
+    fn clipping_stays_in_the_view_volume(
+        p in proptest::collection::vec((-4.0f32..4.0, -4.0f32..4.0, -4.0f32..4.0, -2.0f32..4.0), 3),
+    ) {
+        let v = |k: usize| Vec4::new(p[k].0, p[k].1, p[k].2, p[k].3);
+        let corners = [Vec3::X, Vec3::Y, Vec3::Z];
+        let tri = [0, 1, 2].map(|k| ClipVertex { clip: v(k), bary: corners[k] });
+        if let ClipOutcome::Clipped(poly) = clip_triangle(tri) {
+            prop_assert!(poly.len() >= 3);
+            for q in poly {
+                let c = q.clip;
+                let slack = 1e-4 * c.w.abs().max(1.0);
+                prop_assert!(c.w >= 1e-5 - slack, "w = {}", c.w);
+                for x in [c.x, c.y, c.z] {
+                    prop_assert!(x.abs() <= c.w + slack, "{c} outside");
+                }
+                prop_assert!((q.bary.x + q.bary.y + q.bary.z - 1.0).abs() < 1e-4);
+                prop_assert!(q.bary.min_element() >= -1e-4 && q.bary.max_element() <= 1.0 + 1e-4);
+            }
+        }
+    }
+}
