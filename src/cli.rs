@@ -228,6 +228,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                         crate::app::i18n::Lang::En
                     },
                     max_records,
+                    cancel: cancel_on_interrupt(),
                 };
                 return export_lesson(&l, &opts);
             }
@@ -239,6 +240,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                 overlay_zoom: zoom,
                 max_records,
                 pixel,
+                cancel: cancel_on_interrupt(),
             };
             export(scene.as_deref(), &opts, size, samples, profile)?;
             Ok(ExitCode::SUCCESS)
@@ -249,6 +251,16 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
     }
+}
+
+/// A cancel flag that Ctrl+C sets: the export then stops between two files, leaving whole
+/// files and no temporary ones, and says so.
+fn cancel_on_interrupt() -> crate::export::Cancel {
+    let cancel = crate::export::Cancel::default();
+    let flag = cancel.clone();
+    // Fails only if a handler is already set (never, in one command): then Ctrl+C just exits.
+    let _ = ctrlc::set_handler(move || flag.cancel());
+    cancel
 }
 
 fn export_lesson(
@@ -303,9 +315,14 @@ fn export(
         files.push(profile_file(&spec, &capture, line)?);
     }
     let mut stderr = std::io::stderr().lock();
-    let written = crate::export::write_files(&opts.out, &files, &mut |done, all, name| {
-        let _ = write!(stderr, "\rwriting {done}/{all}: {name:<24}");
-    })?;
+    let written = crate::export::write_files(
+        &opts.out,
+        &files,
+        &mut |done, all, name| {
+            let _ = write!(stderr, "\rwriting {done}/{all}: {name:<24}");
+        },
+        &opts.cancel,
+    )?;
     let _ = writeln!(stderr);
     println!(
         "Exported {} files ({}×{}, {} sample(s), {} primitives) to {}:",

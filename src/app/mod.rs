@@ -85,6 +85,8 @@ pub struct PipelensApp {
     export_dir: String,
     export_result: Option<Receiver<Result<Vec<PathBuf>, String>>>,
     export_message: Option<(bool, String)>,
+    /// Stops the export under way.
+    export_cancel: Option<crate::export::Cancel>,
     commands: Vec<Command>,
     /// The file shown, watched for changes (live reload): its path and last modification.
     watched: Option<Watched>,
@@ -118,6 +120,7 @@ impl PipelensApp {
             export_dir: "pipelens-export".to_owned(),
             export_result: None,
             export_message: None,
+            export_cancel: None,
             commands: Vec::new(),
             watched: None,
         }
@@ -376,6 +379,14 @@ impl PipelensApp {
                 {
                     self.start_export();
                 }
+                if let Some(cancel) = self.export_cancel.as_ref().filter(|_| busy)
+                    && ui
+                        .button(lang.tr("Cancel export", "取消导出"))
+                        .on_hover_text(lang.tr("Stops between two files: those written stay whole.", "在两个文件之间停止：已写入的文件保持完整。"))
+                        .clicked()
+                {
+                    cancel.cancel();
+                }
             });
             if let Some(e) = &self.session.reload_error {
                 ui.label(
@@ -535,7 +546,9 @@ impl PipelensApp {
             overlay_zoom: 0,
             max_records: 200_000,
             pixel: self.session.selection.pixel,
+            cancel: crate::export::Cancel::default(),
         };
+        self.export_cancel = Some(opts.cancel.clone());
         let (tx, rx) = channel();
         self.export_result = Some(rx);
         std::thread::spawn(move || {

@@ -29,6 +29,8 @@ pub struct LessonExport {
     pub lang: Lang,
     /// At most this many records per table in each `capture.json`.
     pub max_records: usize,
+    /// Stops the export between two files.
+    pub cancel: super::Cancel,
 }
 
 /// What one step exported, for the handout.
@@ -66,6 +68,7 @@ pub fn export_lesson(
     let mut written = Vec::new();
     let mut done = Vec::new();
     for &k in &steps {
+        opts.cancel.check()?;
         progress(&format!(
             "step {}/{n}: {}",
             k + 1,
@@ -76,6 +79,7 @@ pub fn export_lesson(
             &opts.out.join(&step_files.dir),
             &files,
             &mut |_, _, _| {},
+            &opts.cancel,
         )?);
         done.push(step_files);
     }
@@ -117,6 +121,7 @@ fn step_files(
         pixel: step
             .pixel
             .filter(|&(x, y)| x < capture.width() && y < capture.height()),
+        cancel: opts.cancel.clone(),
     };
     let mut files = encode_capture(&capture, &export)?;
     let mut main_image = main_image(step, &capture);

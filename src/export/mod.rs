@@ -15,6 +15,37 @@ use pipeline::overlay::OverlayKind;
 
 pub use json::capture_json;
 
+/// A flag that stops an export between two files (the app's Cancel button, Ctrl+C on the
+/// command line): what was written stays whole, nothing half-written is left.
+#[derive(Clone, Debug, Default)]
+pub struct Cancel(std::sync::Arc<std::sync::atomic::AtomicBool>);
+
+impl Cancel {
+    /// Asks the export to stop.
+    pub fn cancel(&self) {
+        self.0.store(true, std::sync::atomic::Ordering::Relaxed);
+    }
+
+    /// Whether it was asked to stop.
+    #[must_use]
+    pub fn is_cancelled(&self) -> bool {
+        self.0.load(std::sync::atomic::Ordering::Relaxed)
+    }
+
+    /// An error once cancelled.
+    ///
+    /// # Errors
+    /// "cancelled", when it was.
+    pub fn check(&self) -> Result<()> {
+        if self.is_cancelled() {
+            anyhow::bail!(
+                "export cancelled: every file written before is whole, none is half-written"
+            );
+        }
+        Ok(())
+    }
+}
+
 /// Options of an export.
 #[derive(Clone, Debug)]
 pub struct ExportOptions {
@@ -27,6 +58,8 @@ pub struct ExportOptions {
     pub max_records: usize,
     /// A window pixel `(x, y)` (y up) whose full record goes into `capture.json`.
     pub pixel: Option<(u32, u32)>,
+    /// Stops the export between two files.
+    pub cancel: Cancel,
 }
 
 /// One file of an export.
@@ -189,22 +222,24 @@ pub fn export_capture(
     progress: &mut dyn FnMut(usize, usize, &str),
 ) -> Result<Vec<PathBuf>> {
     let files = encode_capture(capture, opts)?;
-    write_files(&opts.out, &files, progress)
+    write_files(&opts.out, &files, progress, &opts.cancel)
 }
 
 /// Writes files into a folder, each through a temporary file and a rename.
 ///
 /// # Errors
-/// When the folder cannot be created or a file cannot be written.
+/// When the folder cannot be created, a file cannot be written, or `cancel` was set.
 pub fn write_files(
     dir: &Path,
     files: &[ExportFile],
     progress: &mut dyn FnMut(usize, usize, &str),
+    cancel: &Cancel,
 ) -> Result<Vec<PathBuf>> {
     std::fs::create_dir_all(dir)
         .with_context(|| format!("cannot create the folder {}", dir.display()))?;
     let mut written = Vec::with_capacity(files.len());
     for (i, f) in files.iter().enumerate() {
+        cancel.check()?;
         let target = dir.join(&f.name);
         write_atomically(&target, &f.bytes)?;
         written.push(target);

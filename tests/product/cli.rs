@@ -343,3 +343,49 @@ fn a_pixel_record_tells_why_the_pixel_has_its_colour() {
         );
     }
 }
+
+#[test]
+fn a_cancelled_export_stops_between_files_and_leaves_only_whole_ones() {
+    use pipelens::export::{Cancel, ExportFile, write_files};
+    let dir = tempfile::tempdir().expect("temp dir");
+    let files: Vec<ExportFile> = (0..5)
+        .map(|k| ExportFile {
+            name: format!("f{k}.txt"),
+            description: String::new(),
+            bytes: vec![b'x'; 1000],
+        })
+        .collect();
+    let cancel = Cancel::default();
+    let flag = cancel.clone();
+    // Cancelled while the second file is being reported: the third is never started.
+    let e = write_files(
+        dir.path(),
+        &files,
+        &mut |done, _, _| {
+            if done == 2 {
+                flag.cancel();
+            }
+        },
+        &cancel,
+    )
+    .expect_err("cancelled");
+    assert!(
+        e.to_string().contains("export cancelled: every file written before is whole"),
+        "{e}"
+    );
+    let mut names: Vec<String> = std::fs::read_dir(dir.path())
+        .expect("listing")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(
+        names,
+        ["f0.txt", "f1.txt"],
+        "whole files only, no temporaries"
+    );
+    assert!(
+        names
+            .iter()
+            .all(|n| std::fs::metadata(dir.path().join(n)).map(|m| m.len()).ok() == Some(1000))
+    );
+}
