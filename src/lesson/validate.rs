@@ -8,8 +8,8 @@ use glam::Vec3;
 use pipeline::hierarchy::{Figure, Humanoid, Pose, RobotArm};
 use pipeline::mesh::{BuiltinMesh, Mesh};
 use pipeline::scene::{
-    Camera, ColorSource, CullMode, DepthTest, Light, MAX_CAPTURE_SAMPLES, MAX_VIEWPORT_SIDE,
-    Material, Object, PlanarShadow, Projection, RenderSettings, Samples, Scene,
+    Camera, ColorSource, CullMode, DepthTest, Light, MAX_VIEWPORT_SIDE, Material, Object,
+    PlanarShadow, Projection, RenderSettings, Samples, Scene,
 };
 use pipeline::shade::{Frequency, Reflection};
 use pipeline::texture::{
@@ -232,17 +232,8 @@ fn render(c: &mut Checker<'_>, r: &Spanned<RawRender>) -> RenderSettings {
             ),
         }
     }
-    let total = u64::from(s.width) * u64::from(s.height) * s.samples.count() as u64;
-    if total > MAX_CAPTURE_SAMPLES {
-        c.error(
-            r.span(),
-            format!(
-                "{}×{} pixels × {} samples is more than one capture may hold ({MAX_CAPTURE_SAMPLES} samples)",
-                s.width,
-                s.height,
-                s.samples.count()
-            ),
-        );
+    if let Some(p) = s.capture_problem() {
+        c.error(r.span(), p);
     }
     render_modes(c, raw, &mut s);
     sampler(c, raw, &mut s);

@@ -169,7 +169,7 @@ fn bad_sizes_and_samples_are_refused_before_rendering() {
                 "--samples",
                 "16",
             ],
-            "more than one capture may hold",
+            "needs about 72960 MB for a capture, more than the 2048 MB allowed",
         ),
     ] {
         let o = pipelens(dir.path(), &args);
@@ -370,7 +370,8 @@ fn a_cancelled_export_stops_between_files_and_leaves_only_whole_ones() {
     )
     .expect_err("cancelled");
     assert!(
-        e.to_string().contains("export cancelled: every file written before is whole"),
+        e.to_string()
+            .contains("export cancelled: every file written before is whole"),
         "{e}"
     );
     let mut names: Vec<String> = std::fs::read_dir(dir.path())

@@ -111,7 +111,7 @@ fn out_of_range_values() {
         &r("width = 16384\nheight = 16384\nsamples = 16"),
         3,
         1,
-        "more than one capture may hold",
+        "needs about 72960 MB for a capture, more than the 2048 MB allowed",
     );
 }
 

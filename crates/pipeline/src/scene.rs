@@ -549,15 +549,49 @@ impl Default for RenderSettings {
 
 /// The largest width or height of a viewport.
 pub const MAX_VIEWPORT_SIDE: u32 = 16_384;
-/// The largest number of samples in one capture (width × height × samples): about 64 M, so a
-/// capture stays within a few gigabytes even at its largest.
-pub const MAX_CAPTURE_SAMPLES: u64 = 1 << 26;
+/// The most memory one capture may take, by [`RenderSettings::capture_bytes`]: 2 GiB, so that
+/// a mistaken size is refused with a message instead of exhausting the machine.
+pub const MAX_CAPTURE_BYTES: u64 = 2 << 30;
+
+/// Bytes per pixel of a full capture: the core buffers (coverage 1, depth 4, primitive 4, two
+/// sets of barycentrics and the colour 3·12 = 45), the lighting buffers (ambient, diffuse,
+/// specular, normal, reflected 5·12, n·l and n·h 2·4 = 68) and the texturing buffers (uv 8, λ 4,
+/// level 4, texel 12, footprint 16 = 44): 157 in all.
+pub const CAPTURE_BYTES_PER_PIXEL: u64 = 157;
+/// Bytes per sample: its depth and its triangle (4 + 4).
+pub const CAPTURE_BYTES_PER_SAMPLE: u64 = 8;
 
 impl RenderSettings {
     /// Width / height.
     #[must_use]
     pub fn aspect(&self) -> f32 {
         self.width as f32 / self.height as f32
+    }
+
+    /// The memory a full capture at these settings takes, at most (every buffer kept):
+    /// `W·H·157 + W·H·S·8` bytes (see [`CAPTURE_BYTES_PER_PIXEL`]).
+    #[must_use]
+    pub fn capture_bytes(&self) -> u64 {
+        let pixels = u64::from(self.width) * u64::from(self.height);
+        pixels * CAPTURE_BYTES_PER_PIXEL
+            + pixels * self.samples.count() as u64 * CAPTURE_BYTES_PER_SAMPLE
+    }
+
+    /// Why a capture at these settings would take too much memory, if it would.
+    #[must_use]
+    pub fn capture_problem(&self) -> Option<String> {
+        let bytes = self.capture_bytes();
+        (bytes > MAX_CAPTURE_BYTES).then(|| {
+            format!(
+                "{}×{} pixels × {} samples needs about {} MB for a capture, more than the {} MB \
+                 allowed; lower the size or the sample count",
+                self.width,
+                self.height,
+                self.samples.count(),
+                bytes >> 20,
+                MAX_CAPTURE_BYTES >> 20
+            )
+        })
     }
 
     /// What is wrong with these settings, if anything.
@@ -571,16 +605,7 @@ impl RenderSettings {
                 ));
             }
         }
-        let total = u64::from(self.width) * u64::from(self.height) * self.samples.count() as u64;
-        if total > MAX_CAPTURE_SAMPLES {
-            out.push(format!(
-                "{}×{} pixels × {} samples = {total} samples is more than one capture may hold \
-                 ({MAX_CAPTURE_SAMPLES}); lower the size or the sample count",
-                self.width,
-                self.height,
-                self.samples.count()
-            ));
-        }
+        out.extend(self.capture_problem());
         if !self.background.is_finite() {
             out.push("the background colour must be finite".to_owned());
         }

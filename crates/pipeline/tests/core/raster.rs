@@ -638,3 +638,35 @@ fn linearized_depth_is_the_eye_distance() {
     assert_eq!(img.get_pixel(26, 32).0[0], 0);
     assert_eq!(img.get_pixel(37, 32).0[0], 255);
 }
+
+#[test]
+fn the_capture_size_is_bounded_by_its_memory() {
+    // 157 bytes a pixel and 8 a sample, by the buffers' element sizes.
+    let s = RenderSettings {
+        width: 1920,
+        height: 1080,
+        samples: Samples::X4,
+        ..RenderSettings::default()
+    };
+    let pixels = 1920u64 * 1080;
+    assert_eq!(s.capture_bytes(), pixels * 157 + pixels * 4 * 8);
+    assert!(s.capture_problem().is_none());
+    let uhd = RenderSettings {
+        width: 3840,
+        height: 2160,
+        samples: Samples::X8,
+        ..RenderSettings::default()
+    };
+    assert!(uhd.capture_problem().is_none(), "4K with 8 samples fits");
+    let too_big = RenderSettings {
+        samples: Samples::X16,
+        ..uhd
+    };
+    let p = too_big
+        .capture_problem()
+        .expect("4K with 16 samples does not");
+    assert!(
+        p.contains("3840×2160 pixels × 16 samples needs about"),
+        "{p}"
+    );
+}
