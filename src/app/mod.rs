@@ -80,7 +80,7 @@ pub struct PipelensApp {
     geometry_view: GeometryView,
     observer_view: ObserverView,
     compare_view: CompareView,
-    inspector_tab: inspector::Tab,
+    inspector: inspector::Inspector,
     classroom: bool,
     export_dir: String,
     export_result: Option<Receiver<Result<Vec<PathBuf>, String>>>,
@@ -115,7 +115,7 @@ impl PipelensApp {
             geometry_view: GeometryView::default(),
             observer_view: ObserverView::default(),
             compare_view: CompareView::default(),
-            inspector_tab: inspector::Tab::default(),
+            inspector: inspector::Inspector::default(),
             classroom: false,
             export_dir: "pipelens-export".to_owned(),
             export_result: None,
@@ -201,7 +201,7 @@ impl PipelensApp {
                 .show(ui, |ui| {
                     self.commands.extend(inspector::ui(
                         ui,
-                        &mut self.inspector_tab,
+                        &mut self.inspector,
                         &self.session,
                         &capture,
                     ));

@@ -332,6 +332,8 @@ pub struct PixelRecord {
     pub lighting: Option<PixelLighting>,
     /// The owning fragment's texture lookup (when textured).
     pub texture: Option<PixelTexture>,
+    /// The lighting vectors there (when lit).
+    pub vectors: Option<PixelVectors>,
     /// Every fragment that reached the pixel, in drawing order.
     pub fragments: Vec<FragmentRecord>,
 }
@@ -368,6 +370,22 @@ pub struct PixelTexture {
     pub level: f32,
     /// The filtered texel.
     pub texel: [f32; 3],
+}
+
+/// The vectors of the lighting at a pixel, in world coordinates: where the surface is, its unit
+/// normal, and the unit vectors to the key light, to the eye and halfway between them.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct PixelVectors {
+    /// The surface point `p = Σ b_i·p_i` of the owning fragment.
+    pub position: Vec3,
+    /// `n`, as lit.
+    pub normal: Vec3,
+    /// `l`, towards the key light (the first light that is not ambient).
+    pub light: Vec3,
+    /// `v = normalize(eye − p)`.
+    pub view: Vec3,
+    /// `h = normalize(l + v)`.
+    pub half: Vec3,
 }
 
 /// One sample of an intensity profile along a line of pixels.
@@ -407,6 +425,8 @@ pub struct FrameCapture {
     pub camera: Camera,
     /// The projection.
     pub projection: Projection,
+    /// The lights.
+    pub lights: Vec<crate::scene::Light>,
     /// The objects drawn.
     pub objects: Vec<ObjectSummary>,
     /// The matrices with their factors.
@@ -753,6 +773,37 @@ impl FrameCapture {
         })
     }
 
+    /// The lighting vectors at window pixel `(x, y)`: `None` where nothing is drawn, lighting
+    /// is off, or no light has a direction.
+    #[must_use]
+    pub fn pixel_vectors(&self, x: u32, y: u32) -> Option<PixelVectors> {
+        if x >= self.width() || y >= self.height() {
+            return None;
+        }
+        let i = ((self.height() - 1 - y) * self.width() + x) as usize;
+        let prim = self.primitives.get(self.pixels.primitive[i] as usize)?;
+        let normal = Vec3::from(self.pixels.shading.as_ref()?.normal[i]);
+        let b = self.pixels.bary_perspective[i];
+        let position = prim
+            .vertices
+            .iter()
+            .zip(b)
+            .map(|(&r, w)| self.vertices[r as usize].world.truncate() * w)
+            .sum::<Vec3>();
+        let light = self
+            .lights
+            .iter()
+            .find_map(|l| crate::shade::light_vector(l, position))?;
+        let view = (self.camera.eye - position).normalize_or_zero();
+        Some(PixelVectors {
+            position,
+            normal,
+            light,
+            view,
+            half: (light + view).normalize_or_zero(),
+        })
+    }
+
     /// Everything about window pixel `(x, y)` (y up): its buffers' values, the owning
     /// fragment's lighting terms and texture lookup, and every fragment that reached it (see
     /// [`Self::fragments_at`]); `None` outside the viewport.
@@ -795,6 +846,7 @@ impl FrameCapture {
                     level: t.level[i],
                     texel: t.texel[i],
                 }),
+            vectors: self.pixel_vectors(x, y),
             fragments: self.fragments_at(x, y),
         })
     }

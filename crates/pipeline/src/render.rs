@@ -164,6 +164,7 @@ fn render_stages(
         settings: *settings,
         camera: scene.camera,
         projection: scene.projection,
+        lights: scene.lights.clone(),
         objects: scene
             .objects
             .iter()

@@ -120,6 +120,19 @@ pub fn spot_factor(l: Vec3, axis: Vec3, cutoff_deg: f32, exponent: f32) -> f32 {
     }
 }
 
+/// The unit vector `l` from point `p` towards `light`: `normalize(position − p)` for point and
+/// spot lights, `−direction` for a directional one; `None` for ambient light, which has none.
+#[must_use]
+pub fn light_vector(light: &Light, p: Vec3) -> Option<Vec3> {
+    match *light {
+        Light::Ambient { .. } => None,
+        Light::Point { position, .. } | Light::Spot { position, .. } => {
+            Some((position - p).normalize_or_zero())
+        }
+        Light::Directional { direction, .. } => Some(-direction.normalize_or_zero()),
+    }
+}
+
 /// Lights the point `p` (world coordinates) with unit normal `n`, seen from `eye`, of surface
 /// colour `c`. A normal facing away from the eye is used as it is (no two-sided lighting).
 #[must_use]
@@ -140,27 +153,20 @@ pub fn shade(
     };
     let mut key = true;
     for light in lights {
-        let (l, intensity, factor) = match *light {
-            Light::Ambient { intensity } => {
+        let Some(l) = light_vector(light, p) else {
+            if let Light::Ambient { intensity } = *light {
                 out.ambient += m.ka * c * intensity;
-                continue;
             }
+            continue;
+        };
+        let (intensity, factor) = match *light {
+            Light::Ambient { .. } => continue,
             Light::Point {
                 position,
                 intensity,
                 attenuation: abc,
-            } => {
-                let to = position - p;
-                (
-                    to.normalize_or_zero(),
-                    intensity,
-                    attenuation(abc, to.length()),
-                )
-            }
-            Light::Directional {
-                direction,
-                intensity,
-            } => (-direction.normalize_or_zero(), intensity, 1.0),
+            } => (intensity, attenuation(abc, (position - p).length())),
+            Light::Directional { intensity, .. } => (intensity, 1.0),
             Light::Spot {
                 position,
                 direction,
@@ -168,13 +174,11 @@ pub fn shade(
                 exponent,
                 intensity,
                 attenuation: abc,
-            } => {
-                let to = position - p;
-                let l = to.normalize_or_zero();
-                let f =
-                    attenuation(abc, to.length()) * spot_factor(l, direction, cutoff_deg, exponent);
-                (l, intensity, f)
-            }
+            } => (
+                intensity,
+                attenuation(abc, (position - p).length())
+                    * spot_factor(l, direction, cutoff_deg, exponent),
+            ),
         };
         let n_dot_l = n.dot(l);
         let h = (l + v).normalize_or_zero();

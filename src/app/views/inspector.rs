@@ -20,8 +20,39 @@ pub enum Tab {
     Pixel,
 }
 
+/// The inspector's state: the tab shown, and the inspected pixel's record, kept while the
+/// capture and the pixel stay the same (replaying the fragments walks every triangle).
+#[derive(Default)]
+pub struct Inspector {
+    /// The tab shown.
+    pub tab: Tab,
+    record: Option<(u64, (u32, u32), pipeline::capture::PixelRecord)>,
+}
+
+impl Inspector {
+    /// The record of the inspected pixel, computed once per capture and pixel.
+    fn record(
+        &mut self,
+        session: &Session,
+        capture: &FrameCapture,
+    ) -> Option<&pipeline::capture::PixelRecord> {
+        let (x, y) = session.selection.pixel?;
+        let key = (session.shown_generation, (x, y));
+        if self.record.as_ref().is_none_or(|(g, p, _)| (*g, *p) != key) {
+            self.record = capture.pixel_record(x, y).map(|r| (key.0, key.1, r));
+        }
+        self.record.as_ref().map(|(_, _, r)| r)
+    }
+}
+
 /// Draws the inspector.
-pub fn ui(ui: &mut Ui, tab: &mut Tab, session: &Session, capture: &FrameCapture) -> Vec<Command> {
+pub fn ui(
+    ui: &mut Ui,
+    inspector: &mut Inspector,
+    session: &Session,
+    capture: &FrameCapture,
+) -> Vec<Command> {
+    let tab = &mut inspector.tab;
     let lang = session.lang;
     let mut cmds = Vec::new();
     ui.horizontal(|ui| {
@@ -38,9 +69,10 @@ pub fn ui(ui: &mut Ui, tab: &mut Tab, session: &Session, capture: &FrameCapture)
         }
         Tab::Vertices => cmds.extend(vertices(ui, session, capture)),
         Tab::Pixel => {
+            let record = inspector.record(session, capture);
             egui::ScrollArea::vertical()
                 .id_salt("pixel")
-                .show(ui, |ui| pixel(ui, session, capture));
+                .show(ui, |ui| pixel(ui, session, capture, record));
         }
     }
     cmds
@@ -189,13 +221,14 @@ fn vertices(ui: &mut Ui, session: &Session, capture: &FrameCapture) -> Vec<Comma
     cmds
 }
 
-fn pixel(ui: &mut Ui, session: &Session, capture: &FrameCapture) {
+fn pixel(
+    ui: &mut Ui,
+    session: &Session,
+    capture: &FrameCapture,
+    record: Option<&pipeline::capture::PixelRecord>,
+) {
     let lang = session.lang;
-    let Some(record) = session
-        .selection
-        .pixel
-        .and_then(|(x, y)| capture.pixel_record(x, y))
-    else {
+    let Some(record) = record else {
         ui.label(lang.tr("Click a pixel in a pixel view (Rasterization, Depth, Output) to see every fragment that reached it.", "在像素视图（光栅化、深度、输出）中单击一个像素，查看到达它的每个片元。"));
         return;
     };
@@ -237,7 +270,7 @@ fn pixel(ui: &mut Ui, session: &Session, capture: &FrameCapture) {
         let (r, _) = ui.allocate_exact_size(egui::vec2(18.0, 18.0), egui::Sense::hover());
         ui.painter().rect_filled(r, 2.0, swatch);
     });
-    owner_terms(ui, &record, lang);
+    owner_terms(ui, record, lang);
     ui.separator();
     if record.fragments.is_empty() {
         ui.label(lang.tr(

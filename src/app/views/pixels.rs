@@ -196,6 +196,12 @@ impl PixelView {
         }
         draw_overlays(&painter, &view, capture, &sel.overlays, lang);
         draw_selection(&painter, &view, capture, sel);
+        if sel.buffer.is_lighting() || sel.buffer == BufferKind::Color {
+            draw_light_vectors(&painter, &view, capture, sel, lang);
+        }
+        if sel.buffer == BufferKind::MipLevel {
+            draw_mip_legend(&painter, rect, lang);
+        }
         // Hover: the values of the pixel under the cursor; click: inspect it.
         if let Some(pos) = response.hover_pos()
             && let Some((c, y)) = view.window_pixel(pos, capture)
@@ -468,6 +474,96 @@ fn draw_overlays(
             ),
             egui::FontId::proportional(13.0),
             Color32::YELLOW,
+        );
+    }
+}
+
+/// At the inspected pixel of a lit image, the vectors of the lighting drawn from the surface
+/// point: the normal n, the light vector l, the view vector v and the half vector h (the capture
+/// computes them; here they are only projected and drawn).
+fn draw_light_vectors(
+    painter: &egui::Painter,
+    view: &ImageViewport,
+    capture: &FrameCapture,
+    sel: &Selection,
+    lang: Lang,
+) {
+    let Some(v) = sel.pixel.and_then(|(x, y)| capture.pixel_vectors(x, y)) else {
+        return;
+    };
+    let length = 0.15 * (capture.camera.eye - v.position).length();
+    for (vector, name, color) in [
+        (v.normal, "n", Color32::WHITE),
+        (v.light, "l", Color32::from_rgb(255, 210, 60)),
+        (v.view, "v", Color32::from_gray(150)),
+        (v.half, "h", Color32::from_rgb(90, 220, 255)),
+    ] {
+        let Some([a, b]) = capture.world_segment_to_image(v.position, v.position + vector * length)
+        else {
+            continue;
+        };
+        let (a, b) = (view.to_screen(a), view.to_screen(b));
+        painter.arrow(a, b - a, Stroke::new(2.5, color));
+        painter.text(
+            b + (b - a).normalized() * 10.0,
+            egui::Align2::CENTER_CENTER,
+            name,
+            egui::FontId::proportional(18.0),
+            color,
+        );
+    }
+    painter.text(
+        view.rect.left_top() + Vec2::new(8.0, 8.0),
+        egui::Align2::LEFT_TOP,
+        lang.tr(
+            "at the inspected pixel: n normal, l to the light, v to the eye, h = (l + v)/|l + v|",
+            "在所检查的像素处：n 法线，l 指向光源，v 指向视点，h = (l + v)/|l + v|",
+        ),
+        egui::FontId::proportional(14.0),
+        Color32::WHITE,
+    );
+}
+
+/// The colours of the mip levels, with their numbers.
+fn draw_mip_legend(painter: &egui::Painter, rect: Rect, lang: Lang) {
+    let origin = rect.right_top() + Vec2::new(-230.0, 10.0);
+    painter.rect_filled(
+        Rect::from_min_size(origin, Vec2::new(220.0, 54.0)),
+        4.0,
+        Color32::from_black_alpha(190),
+    );
+    painter.text(
+        origin + Vec2::new(8.0, 6.0),
+        egui::Align2::LEFT_TOP,
+        lang.tr("mip level", "mipmap 层级"),
+        egui::FontId::proportional(13.0),
+        Color32::WHITE,
+    );
+    for k in 0..8u32 {
+        let c = pipeline::texture::level_color(k)
+            .to_array()
+            .map(|v| (v.clamp(0.0, 1.0) * 255.0) as u8);
+        let at = origin + Vec2::new(8.0 + k as f32 * 26.0, 26.0);
+        painter.rect_filled(
+            Rect::from_min_size(at, Vec2::new(22.0, 22.0)),
+            2.0,
+            Color32::from_rgb(c[0], c[1], c[2]),
+        );
+        let label = if k == 7 {
+            "7+".to_owned()
+        } else {
+            k.to_string()
+        };
+        painter.text(
+            at + Vec2::new(11.0, 11.0),
+            egui::Align2::CENTER_CENTER,
+            label,
+            egui::FontId::proportional(12.0),
+            if k == 0 || k == 3 {
+                Color32::BLACK
+            } else {
+                Color32::WHITE
+            },
         );
     }
 }

@@ -370,3 +370,37 @@ fn render_is_a_pure_function_same_inputs_same_capture() {
         "two renders of the same scene must be identical, buffer for buffer"
     );
 }
+
+#[test]
+fn the_lighting_vectors_at_a_pixel_agree_with_its_terms() {
+    let c = lit_sphere(Frequency::Phong);
+    let sh = c.pixels.shading.as_ref().expect("lit");
+    let mut checked = 0;
+    for y in (0..c.height()).step_by(7) {
+        for x in (0..c.width()).step_by(7) {
+            let Some(v) = c.pixel_vectors(x, y) else {
+                continue;
+            };
+            let i = ((c.height() - 1 - y) * c.width() + x) as usize;
+            // On the unit sphere the point is its own normal (up to the facets), the light is
+            // the distant one, and h bisects l and v.
+            assert!((v.position.length() - 1.0).abs() < 0.01, "{}", v.position);
+            assert!((v.light - Vec3::ONE.normalize()).length() < 1e-5);
+            close(
+                v.normal.dot(v.light),
+                sh.n_dot_l[i],
+                1e-4,
+                "n·l from the buffer",
+            );
+            close(
+                v.normal.dot(v.half),
+                sh.n_dot_h[i],
+                1e-4,
+                "n·h from the buffer",
+            );
+            close(v.half.dot(v.light), v.half.dot(v.view), 1e-5, "h halfway");
+            checked += 1;
+        }
+    }
+    assert!(checked > 50, "{checked} pixels");
+}
