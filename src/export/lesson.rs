@@ -297,12 +297,12 @@ fn markdown(text: &str) -> String {
     out
 }
 
-fn matrix_html(m: &NamedMatrix) -> String {
+fn matrix_html(m: &NamedMatrix, lang: Lang) -> String {
     let rows = m.matrix.transpose().to_cols_array_2d();
     let mut s = format!(
         "<figure class=\"m\"><figcaption><b>{}</b><br><i>{}</i></figcaption><table>",
         esc(&m.name),
-        esc(&m.formula)
+        esc(&lang.formula(&m.formula))
     );
     for r in rows {
         s.push_str("<tr>");
@@ -379,10 +379,10 @@ fn handout(lesson: &Lesson, steps: &[StepFiles], lang: Lang) -> String {
         let m = &s.capture.matrices;
         h.push_str("<div>");
         if let Some(first) = m.models.first() {
-            h.push_str(&matrix_html(first));
+            h.push_str(&matrix_html(first, lang));
         }
         for x in [&m.view, &m.projection, &m.viewport] {
-            h.push_str(&matrix_html(x));
+            h.push_str(&matrix_html(x, lang));
         }
         h.push_str("</div>\n");
         if let Some(q) = &step.question {

@@ -401,3 +401,45 @@ fn the_complete_lesson_in_lessons_readme_is_valid() {
     assert_eq!(lesson.steps[0].animate.len(), 1);
     assert_eq!(lesson.steps[1].pixel, Some((320, 200)));
 }
+
+#[test]
+fn every_matrix_formula_a_lesson_shows_reads_in_chinese() {
+    use pipelens::app::i18n::Lang;
+    fn walk(m: &pipeline::transform::NamedMatrix, out: &mut std::collections::BTreeSet<String>) {
+        out.insert(m.formula.clone());
+        for f in &m.factors {
+            walk(f, out);
+        }
+    }
+    let mut formulas = std::collections::BTreeSet::new();
+    for path in lesson_files() {
+        let Ok(Document::Lesson(lesson)) = load_file(&path) else {
+            panic!("{} loads", path.display());
+        };
+        for k in 0..lesson.steps.len() {
+            let mut spec = lesson.spec_at(k);
+            spec.settings.width = 32;
+            spec.settings.height = 20;
+            let c = pipeline::render(&spec.scene, &spec.settings).expect("renders");
+            let m = &c.matrices;
+            for x in
+                m.models
+                    .iter()
+                    .chain([&m.view, &m.projection, &m.projection_games101, &m.viewport])
+            {
+                walk(x, &mut formulas);
+            }
+            for step in &c.hierarchy {
+                if let pipeline::hierarchy::Step::Visit { composite, .. } = step {
+                    walk(composite, &mut formulas);
+                }
+            }
+        }
+    }
+    let untranslated: Vec<&String> = formulas
+        .iter()
+        .filter(|f| Lang::is_prose(f) && Lang::Zh.formula(f) == **f)
+        .collect();
+    assert!(untranslated.is_empty(), "no Chinese for: {untranslated:#?}");
+    assert!(formulas.len() > 20);
+}

@@ -95,7 +95,7 @@ pub fn vec4(v: Vec4) -> String {
 /// A matrix with its name, formula and numbers, and its factors folded below it.
 pub fn matrix(ui: &mut Ui, m: &NamedMatrix, lang: Lang, id: &str) {
     ui.label(RichText::new(&m.name).strong());
-    ui.label(RichText::new(&m.formula).italics().weak());
+    ui.label(RichText::new(lang.formula(&m.formula)).italics().weak());
     matrix_grid(ui, &m.matrix, id);
     if !m.factors.is_empty() {
         egui::CollapsingHeader::new(lang.tr("Factors", "分解"))
