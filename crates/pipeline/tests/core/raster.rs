@@ -670,3 +670,37 @@ fn the_capture_size_is_bounded_by_its_memory() {
         "{p}"
     );
 }
+
+#[test]
+fn huge_and_coincident_coordinates_give_no_nan() {
+    // Vertices at 1e30 (far outside every plane), one at 1e30 with two in view (clipped against
+    // planes whose distances overflow nothing), and three coincident vertices.
+    for positions in [
+        vec![
+            Vec3::new(1e30, 0.0, -5.0),
+            Vec3::new(1e30, 1e30, -5.0),
+            Vec3::new(0.0, 1e30, -1e30),
+        ],
+        vec![
+            Vec3::new(1e30, 0.0, -5.0),
+            Vec3::new(0.0, 0.5, -3.0),
+            Vec3::new(-0.5, -0.5, -3.0),
+        ],
+        vec![Vec3::new(0.1, 0.1, -3.0); 3],
+    ] {
+        let (scene, settings) = camera_scene(
+            mesh_of(positions.clone(), vec![Vec3::ONE; 3], vec![[0, 1, 2]]),
+            32,
+        );
+        let c = render(&scene, &settings);
+        let finite = c.pixels.color.iter().flatten().all(|v| v.is_finite())
+            && c.pixels.depth.iter().all(|v| v.is_finite())
+            && c.pixels
+                .bary_perspective
+                .iter()
+                .flatten()
+                .all(|v| v.is_finite());
+        assert!(finite, "{positions:?}: a NaN or infinity in the buffers");
+        assert!(c.pixel_record(16, 16).is_some());
+    }
+}
