@@ -698,7 +698,7 @@ fn builtin(
             segments: count("segments", t.segments, 48, 3, 4096),
             sides: count("sides", t.sides, 24, 3, 4096),
         },
-        "bezier" => bezier(c, span, t)?,
+        "bezier" => bezier(c, span.clone(), t)?,
         other => {
             let suggestion = BuiltinMesh::NAMES
                 .iter()
@@ -716,8 +716,31 @@ fn builtin(
             return None;
         }
     };
+    // Refuse a shape too large to build before building it (4096 × 4096 rings and segments
+    // would be 33 million triangles).
+    let triangles: u64 = match mesh {
+        BuiltinMesh::UvSphere { segments, rings } => 2 * u64::from(segments) * u64::from(rings),
+        BuiltinMesh::Plane { divisions, .. } => 2 * u64::from(divisions).pow(2),
+        BuiltinMesh::Torus {
+            segments, sides, ..
+        } => 2 * u64::from(segments) * u64::from(sides),
+        BuiltinMesh::Cylinder { segments } => 4 * u64::from(segments),
+        _ => 0,
+    };
+    if triangles > MAX_BUILTIN_TRIANGLES {
+        c.error(
+            span,
+            format!(
+                "this {name} would have {triangles} triangles; a built-in mesh may have at most {MAX_BUILTIN_TRIANGLES}"
+            ),
+        );
+        return None;
+    }
     Some(mesh)
 }
+
+/// The most triangles a built-in mesh may be made of.
+const MAX_BUILTIN_TRIANGLES: u64 = 4_000_000;
 
 /// One number or three, each finite and not negative, as a colour-like triple.
 fn triple(c: &mut Checker<'_>, key: &str, v: &Spanned<RawScale>) -> Option<Vec3> {
