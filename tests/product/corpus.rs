@@ -72,6 +72,12 @@ const LESSONS: &[(&str, usize, usize, &str)] = &[
         8,
         "unknown built-in mesh \"sphear\"",
     ),
+    (
+        "too-many-triangles",
+        2,
+        8,
+        "would have 33554432 triangles; a built-in mesh may have at most 4000000",
+    ),
     ("no-objects", 1, 2, "the scene has no objects"),
     (
         "lesson-undefined-object",
