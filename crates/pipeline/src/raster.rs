@@ -243,6 +243,20 @@ impl RasterTriangle {
         Vec3::new((1.0 - l1 - l2) as f32, l1 as f32, l2 as f32)
     }
 
+    /// The depth plane in edge-function terms, `(z_0, k_1, k_2)` with
+    /// `z = z_0 + k_1·E_1 + k_2·E_2`, `k_i = (z_i − z_0)/area` (`E_i` without the fill-rule bias).
+    #[must_use]
+    #[inline]
+    fn depth_plane(&self) -> (f64, f64, f64) {
+        let inv_area = 1.0 / self.area2 as f64;
+        let z0 = f64::from(self.window[0].z);
+        (
+            z0,
+            (f64::from(self.window[1].z) - z0) * inv_area,
+            (f64::from(self.window[2].z) - z0) * inv_area,
+        )
+    }
+
     /// Window depth at screen-space weights `λ`.
     #[must_use]
     #[inline]
@@ -322,26 +336,140 @@ impl SampleBuffers {
 
     /// Rasterizes `tri` (whose index in the capture's triangle list is `index`): every covered
     /// sample that passes the depth test takes the triangle's depth and index.
-    ///
-    /// The edge functions are evaluated once per row at the first pixel's samples and then
-    /// stepped by `a·ONE` per pixel (they are linear in x); depth is the plane
-    /// `z = z_0 + (z_1 − z_0)·E_1/area + (z_2 − z_0)·E_2/area`.
     pub fn rasterize(&mut self, tri: &RasterTriangle, index: u32, test: DepthTest) -> RasterCounts {
+        let rows = self.height as usize;
+        let mut band = Band {
+            depth: &mut self.depth,
+            owner: &mut self.triangle,
+            width: self.width as usize,
+            height: self.height,
+            first_row: 0,
+            rows,
+            offsets: &self.offsets,
+        };
+        band.rasterize(tri, index, test)
+    }
+
+    /// Rasterizes every triangle, in order, and returns what each did. The image rows are cut
+    /// into bands that are rasterized in parallel, each band drawing every triangle in order over
+    /// its own rows: a sample belongs to one band, so the result is the same as drawing the
+    /// triangles one after another over the whole image ([`Self::rasterize_reference`] checks
+    /// it in the tests).
+    pub fn rasterize_all(&mut self, tris: &[RasterTriangle], test: DepthTest) -> Vec<RasterCounts> {
+        use rayon::prelude::*;
+        let (w, n) = (self.width as usize, self.offsets.len());
+        let h = self.height as usize;
+        let bands = (rayon::current_num_threads() * 4).clamp(1, h.max(1));
+        let rows_per = h.div_ceil(bands).max(1);
+        let chunk = rows_per * w * n;
+        let (height, offsets) = (self.height, &self.offsets);
+        let per_band: Vec<Vec<RasterCounts>> = self
+            .depth
+            .par_chunks_mut(chunk)
+            .zip(self.triangle.par_chunks_mut(chunk))
+            .enumerate()
+            .map(|(b, (depth, owner))| {
+                let rows = depth.len() / (w * n);
+                let mut band = Band {
+                    depth,
+                    owner,
+                    width: w,
+                    height,
+                    first_row: b * rows_per,
+                    rows,
+                    offsets,
+                };
+                tris.iter()
+                    .enumerate()
+                    .map(|(i, t)| band.rasterize(t, i as u32, test))
+                    .collect()
+            })
+            .collect();
+        let mut total = vec![RasterCounts::default(); tris.len()];
+        for counts in per_band {
+            for (t, c) in total.iter_mut().zip(counts) {
+                t.covered += c.covered;
+                t.written += c.written;
+            }
+        }
+        total
+    }
+
+    /// The simple rasterizer the fast one is checked against: every sample of the bounding box
+    /// tested on its own with [`RasterTriangle::covers`] (no stepping, no bands), its depth
+    /// from the same plane.
+    pub fn rasterize_reference(
+        &mut self,
+        tri: &RasterTriangle,
+        index: u32,
+        test: DepthTest,
+    ) -> RasterCounts {
         let mut counts = RasterCounts::default();
         let [x0, y0, x1, y1] = tri.bbox;
+        let (z0, k1, k2) = tri.depth_plane();
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
+                for s in 0..self.offsets.len() {
+                    let p = corner + self.offsets[s];
+                    if !tri.covers(p) {
+                        continue;
+                    }
+                    counts.covered += 1;
+                    let e1 = tri.edges[1].at(p) as f64;
+                    let e2 = tri.edges[2].at(p) as f64;
+                    let z = (z0 + k1 * e1 + k2 * e2) as f32;
+                    let i = self.index(x, y, s);
+                    if test.passes(z, self.depth[i]) {
+                        self.depth[i] = z;
+                        self.triangle[i] = index;
+                        counts.written += 1;
+                    }
+                }
+            }
+        }
+        counts
+    }
+}
+
+/// A band of image rows `first_row .. first_row + rows` of the sample buffers.
+struct Band<'a> {
+    depth: &'a mut [f32],
+    owner: &'a mut [u32],
+    width: usize,
+    height: u32,
+    first_row: usize,
+    rows: usize,
+    offsets: &'a [I64Vec2],
+}
+
+impl Band<'_> {
+    /// Rasterizes `tri` over this band's rows. The edge functions are evaluated once per row at
+    /// the first pixel's samples and then stepped by `a·ONE` per pixel (they are linear in x);
+    /// depth is the plane `z = z_0 + k_1·E_1 + k_2·E_2`.
+    fn rasterize(&mut self, tri: &RasterTriangle, index: u32, test: DepthTest) -> RasterCounts {
+        let mut counts = RasterCounts::default();
+        let [x0, mut y0, x1, mut y1] = tri.bbox;
+        // Window rows y of this band: image rows r = height − 1 − y.
+        let top = self.height as usize - 1 - self.first_row;
+        let bottom = (top + 1).saturating_sub(self.rows);
+        y0 = y0.max(bottom as u32);
+        y1 = y1.min(top as u32);
+        if y0 > y1 {
+            return counts;
+        }
         let n = self.offsets.len();
-        let inv_area = 1.0 / tri.area2 as f64;
-        let z0 = f64::from(tri.window[0].z);
-        let k1 = (f64::from(tri.window[1].z) - z0) * inv_area;
-        let k2 = (f64::from(tri.window[2].z) - z0) * inv_area;
+        let (z0, k1, k2) = tri.depth_plane();
         let step = tri.edges.map(|e| e.a * ONE);
         let mut e = [[0i64; 3]; 16];
         for y in y0..=y1 {
+            let row = top - y as usize;
             let corner = I64Vec2::new(i64::from(x0) * ONE, i64::from(y) * ONE);
             for (s, off) in self.offsets.iter().enumerate() {
                 e[s] = tri.edges.map(|edge| edge.at(corner + *off) + edge.bias);
             }
             for x in x0..=x1 {
+                let base = (row * self.width + x as usize) * n;
                 for (s, es) in e.iter_mut().enumerate().take(n) {
                     if (es[0] | es[1] | es[2]) >= 0 {
                         counts.covered += 1;
@@ -349,10 +477,10 @@ impl SampleBuffers {
                         let e1 = (es[1] - tri.edges[1].bias) as f64;
                         let e2 = (es[2] - tri.edges[2].bias) as f64;
                         let z = (z0 + k1 * e1 + k2 * e2) as f32;
-                        let i = self.index(x, y, s);
+                        let i = base + s;
                         if test.passes(z, self.depth[i]) {
                             self.depth[i] = z;
-                            self.triangle[i] = index;
+                            self.owner[i] = index;
                             counts.written += 1;
                         }
                     }

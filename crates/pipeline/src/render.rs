@@ -138,8 +138,8 @@ fn render_stages(
         settings.samples,
         settings.depth_test.clear_value(),
     );
-    for (i, tri) in triangles.iter().enumerate() {
-        let c = samples.rasterize(tri, i as u32, settings.depth_test);
+    let counts = samples.rasterize_all(&triangles, settings.depth_test);
+    for (tri, c) in triangles.iter().zip(counts) {
         let rec = &mut primitives[tri.primitive as usize];
         rec.counts.covered += c.covered;
         rec.counts.written += c.written;

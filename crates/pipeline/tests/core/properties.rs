@@ -127,3 +127,48 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 96, ..ProptestConfig::default() })]
+
+    /// The fast rasterizer (bands in parallel, edge functions stepped) gives bit for bit the
+    /// coverage, owners, depths and counts of the simple one (every sample tested on its own,
+    /// one triangle after another), whatever the size, samples and depth test.
+    #[test]
+    fn the_fast_rasterizer_equals_the_reference(
+        size in (1u32..70, 1u32..70),
+        tris in proptest::collection::vec(
+            (-10.0f32..80.0, -10.0f32..80.0, -10.0f32..80.0, -10.0f32..80.0, -10.0f32..80.0, -10.0f32..80.0, 0.0f32..1.0, 0.0f32..1.0, 0.0f32..1.0),
+            1..24,
+        ),
+        s in prop_oneof![Just(Samples::X1), Just(Samples::X4), Just(Samples::X8), Just(Samples::X16)],
+        test in prop_oneof![Just(DepthTest::Less), Just(DepthTest::LessEqual), Just(DepthTest::Greater), Just(DepthTest::Always)],
+    ) {
+        use pipeline::raster::{RasterTriangle, SampleBuffers};
+        let raster: Vec<RasterTriangle> = tris
+            .iter()
+            .enumerate()
+            .filter_map(|(k, t)| {
+                RasterTriangle::setup(
+                    k as u32,
+                    [Vec3::new(t.0, t.1, t.6), Vec3::new(t.2, t.3, t.7), Vec3::new(t.4, t.5, t.8)],
+                    [1.0; 3],
+                    [Vec3::X, Vec3::Y, Vec3::Z],
+                    pipeline::scene::CullMode::None,
+                    size,
+                )
+                .ok()
+            })
+            .collect();
+        let clear = test.clear_value();
+        let mut fast = SampleBuffers::new(size.0, size.1, s, clear);
+        let counts = fast.rasterize_all(&raster, test);
+        let mut reference = SampleBuffers::new(size.0, size.1, s, clear);
+        for (i, t) in raster.iter().enumerate() {
+            let c = reference.rasterize_reference(t, i as u32, test);
+            prop_assert_eq!(c, counts[i], "the counts of triangle {}", i);
+        }
+        prop_assert_eq!(&fast.triangle, &reference.triangle);
+        prop_assert!(fast.depth.iter().zip(&reference.depth).all(|(a, b)| a.to_bits() == b.to_bits()));
+    }
+}
