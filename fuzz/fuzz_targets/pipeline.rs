@@ -6,7 +6,9 @@ use arbitrary::Arbitrary;
 use glam::{Vec2, Vec3};
 use libfuzzer_sys::fuzz_target;
 use pipeline::mesh::Mesh;
-use pipeline::scene::{Camera, CullMode, Light, Object, Projection, RenderSettings, Samples, Scene};
+use pipeline::scene::{
+    Camera, CullMode, Light, Object, Projection, RenderSettings, Samples, Scene,
+};
 use pipeline::shade::Frequency;
 
 #[derive(Debug, Arbitrary)]
@@ -95,18 +97,29 @@ fuzz_target!(|input: Input| {
     let settings = RenderSettings {
         width: u32::from(input.width % 48),
         height: u32::from(input.height % 48),
-        samples: [Samples::X1, Samples::X4, Samples::X8, Samples::X16][usize::from(input.samples % 4)],
+        samples: [Samples::X1, Samples::X4, Samples::X8, Samples::X16]
+            [usize::from(input.samples % 4)],
         cull: [CullMode::None, CullMode::Back, CullMode::Front][usize::from(input.mode % 3)],
-        shading: [Frequency::Unlit, Frequency::Flat, Frequency::Gouraud, Frequency::Phong]
-            [usize::from(input.mode / 3 % 4)],
+        shading: [
+            Frequency::Unlit,
+            Frequency::Flat,
+            Frequency::Gouraud,
+            Frequency::Phong,
+        ][usize::from(input.mode / 3 % 4)],
         perspective_correct: input.mode & 0x80 == 0,
         ..RenderSettings::default()
     };
     if let Ok(c) = pipeline::render(&scene, &settings) {
         let px = &c.pixels;
-        assert!(px.color.iter().flatten().all(|x| x.is_finite()), "NaN colour");
+        assert!(
+            px.color.iter().flatten().all(|x| x.is_finite()),
+            "NaN colour"
+        );
         assert!(px.depth.iter().all(|x| x.is_finite()), "NaN depth");
-        assert!(px.bary_perspective.iter().flatten().all(|x| x.is_finite()), "NaN barycentrics");
+        assert!(
+            px.bary_perspective.iter().flatten().all(|x| x.is_finite()),
+            "NaN barycentrics"
+        );
         // Every pixel's record can be built (the inspector's path).
         let _ = c.pixel_record(0, 0);
     }
