@@ -351,8 +351,9 @@ impl SampleBuffers {
     }
 
     /// Rasterizes every triangle, in order, and returns what each did. The image rows are cut
-    /// into bands that are rasterized in parallel, each band drawing every triangle in order over
-    /// its own rows: a sample belongs to one band, so the result is the same as drawing the
+    /// into bands (four per thread) rasterized in parallel; each triangle is first binned into
+    /// the bands its bounding box reaches, and each band draws its triangles in order over its
+    /// own rows. A sample belongs to one band, so the result is the same as drawing the
     /// triangles one after another over the whole image ([`Self::rasterize_reference`] checks
     /// it in the tests).
     pub fn rasterize_all(&mut self, tris: &[RasterTriangle], test: DepthTest) -> Vec<RasterCounts> {
@@ -361,14 +362,26 @@ impl SampleBuffers {
         let h = self.height as usize;
         let bands = (rayon::current_num_threads() * 4).clamp(1, h.max(1));
         let rows_per = h.div_ceil(bands).max(1);
+        let bands = h.div_ceil(rows_per);
+        // Binning: each band gets the triangles whose bounding box reaches its rows, in order.
+        let mut bins: Vec<Vec<u32>> = vec![Vec::new(); bands];
+        for (i, t) in tris.iter().enumerate() {
+            let [_, y0, _, y1] = t.bbox;
+            // Image rows of the box: h − 1 − y1 (top) to h − 1 − y0 (bottom).
+            let (r0, r1) = (h - 1 - y1 as usize, h - 1 - y0 as usize);
+            for bin in &mut bins[r0 / rows_per..=r1 / rows_per] {
+                bin.push(i as u32);
+            }
+        }
         let chunk = rows_per * w * n;
         let (height, offsets) = (self.height, &self.offsets);
-        let per_band: Vec<Vec<RasterCounts>> = self
+        let per_band: Vec<Vec<(u32, RasterCounts)>> = self
             .depth
             .par_chunks_mut(chunk)
             .zip(self.triangle.par_chunks_mut(chunk))
+            .zip(bins.par_iter())
             .enumerate()
-            .map(|(b, (depth, owner))| {
+            .map(|(b, ((depth, owner), bin))| {
                 let rows = depth.len() / (w * n);
                 let mut band = Band {
                     depth,
@@ -379,18 +392,16 @@ impl SampleBuffers {
                     rows,
                     offsets,
                 };
-                tris.iter()
-                    .enumerate()
-                    .map(|(i, t)| band.rasterize(t, i as u32, test))
+                bin.iter()
+                    .map(|&i| (i, band.rasterize(&tris[i as usize], i, test)))
                     .collect()
             })
             .collect();
         let mut total = vec![RasterCounts::default(); tris.len()];
-        for counts in per_band {
-            for (t, c) in total.iter_mut().zip(counts) {
-                t.covered += c.covered;
-                t.written += c.written;
-            }
+        for (i, c) in per_band.into_iter().flatten() {
+            let t = &mut total[i as usize];
+            t.covered += c.covered;
+            t.written += c.written;
         }
         total
     }
