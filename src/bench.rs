@@ -135,6 +135,7 @@ pub fn run(quick: bool, frames: Option<usize>, out: &mut dyn std::io::Write) -> 
         (sphere_scene(1_000_000), 3, Frequency::Unlit),
         (lit_textured_scene(), 5, Frequency::Phong),
     ];
+    let mut rows = Vec::new();
     for (bench, default_frames, shading) in cases {
         for samples in [Samples::X1, Samples::X4] {
             let settings = RenderSettings {
@@ -144,21 +145,43 @@ pub fn run(quick: bool, frames: Option<usize>, out: &mut dyn std::io::Write) -> 
                 shading,
                 ..RenderSettings::default()
             };
-            let n = frames.unwrap_or(if quick { 1 } else { default_frames });
-            let t = measure(&bench.scene, &settings, n)?;
-            writeln!(
-                out,
-                "{:<26} {:>10} {:>7} {:>8.2} {:>11.2} {:>8.2} {:>8.2} {:>8.2}",
-                bench.name,
-                "1280×720",
-                samples.count(),
-                ms(t.vertex),
-                ms(t.clip_setup),
-                ms(t.raster),
-                ms(t.resolve),
-                ms(t.total())
-            )?;
+            rows.push((
+                bench.name.clone(),
+                bench.scene.clone(),
+                settings,
+                default_frames,
+            ));
         }
+    }
+    // What a slider drag waits for in the app: the built-in lesson's first scene at 960×540
+    // with its own settings (4 samples, Phong, shadows).
+    let tour = crate::lesson::default_lesson().map_err(|d| anyhow::anyhow!("{d}"))?;
+    let spec = tour.spec_at(0);
+    rows.push((
+        "tour lesson (slider drag)".to_owned(),
+        spec.scene,
+        RenderSettings {
+            width: 960,
+            height: 540,
+            ..spec.settings
+        },
+        9,
+    ));
+    for (name, scene, settings, default_frames) in rows {
+        let n = frames.unwrap_or(if quick { 1 } else { default_frames });
+        let t = measure(&scene, &settings, n)?;
+        writeln!(
+            out,
+            "{:<26} {:>10} {:>7} {:>8.2} {:>11.2} {:>8.2} {:>8.2} {:>8.2}",
+            name,
+            format!("{}×{}", settings.width, settings.height),
+            settings.samples.count(),
+            ms(t.vertex),
+            ms(t.clip_setup),
+            ms(t.raster),
+            ms(t.resolve),
+            ms(t.total())
+        )?;
     }
     Ok(())
 }
