@@ -512,14 +512,20 @@ fn draw_light_vectors(
             color,
         );
     }
-    painter.text(
-        view.rect.left_top() + Vec2::new(8.0, 8.0),
-        egui::Align2::LEFT_TOP,
+    // The legend, wrapped to the view's width (it may be half the panel beside the observer).
+    let galley = painter.layout(
         lang.tr(
             "at the inspected pixel: n normal, l to the light, v to the eye, h = (l + v)/|l + v|",
             "在所检查的像素处：n 法线，l 指向光源，v 指向视点，h = (l + v)/|l + v|",
-        ),
+        )
+        .to_owned(),
         egui::FontId::proportional(14.0),
+        Color32::WHITE,
+        view.rect.width() - 16.0,
+    );
+    painter.galley(
+        view.rect.left_top() + Vec2::new(8.0, 8.0),
+        galley,
         Color32::WHITE,
     );
 }
