@@ -97,6 +97,20 @@ pub enum Command {
         /// Frames per case (the median is shown).
         #[arg(long)]
         frames: Option<usize>,
+        /// Also run the llvmpipe reference renderer alternately on the bunny and Spot: the
+        /// Python of its venv (see ../shared/peers/llvmpipe/README.md).
+        #[arg(long, value_name = "PYTHON")]
+        peer_python: Option<PathBuf>,
+        /// The peer's render.py.
+        #[arg(
+            long,
+            value_name = "SCRIPT",
+            default_value = "../shared/peers/llvmpipe/render.py"
+        )]
+        peer_script: PathBuf,
+        /// Where the bunny and Spot are.
+        #[arg(long, value_name = "DIR", default_value = "../shared/data")]
+        data: PathBuf,
     },
 }
 
@@ -246,8 +260,22 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
         Some(Command::Check { paths }) => Ok(check(&paths)),
-        Some(Command::Bench { quick, frames }) => {
-            crate::bench::run(quick, frames, &mut std::io::stdout().lock())?;
+        Some(Command::Bench {
+            quick,
+            frames,
+            peer_python,
+            peer_script,
+            data,
+        }) => {
+            let mut out = std::io::stdout().lock();
+            crate::bench::run(quick, frames, &mut out)?;
+            if let Some(python) = peer_python {
+                let peer = crate::bench::Peer {
+                    python,
+                    script: peer_script,
+                };
+                crate::bench::run_against_peer(&peer, &data, quick, &mut out)?;
+            }
             Ok(ExitCode::SUCCESS)
         }
     }
