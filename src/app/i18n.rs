@@ -145,36 +145,4 @@ impl Lang {
                 .map_or_else(|| en.to_owned(), |(_, zh)| (*zh).to_owned()),
         }
     }
-
-    /// Whether `formula` reads as English prose (and so needs a Chinese version).
-    #[must_use]
-    pub fn is_prose(formula: &str) -> bool {
-        let words: Vec<&str> = formula
-            .split(|c: char| !c.is_ascii_alphabetic())
-            .filter(|w| w.len() >= 3 && w.chars().all(|c| c.is_ascii_lowercase()))
-            .collect();
-        words.iter().any(|w| {
-            !matches!(
-                *w,
-                "near"
-                    | "far"
-                    | "fovy"
-                    | "aspect"
-                    | "tan"
-                    | "cot"
-                    | "cos"
-                    | "sin"
-                    | "right"
-                    | "top"
-                    | "width"
-                    | "height"
-                    | "eye"
-                    | "parent"
-                    | "local"
-                    | "torso"
-                    | "upper"
-                    | "lower"
-            )
-        })
-    }
 }

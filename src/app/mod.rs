@@ -278,7 +278,9 @@ impl PipelensApp {
                 self.commands.extend(c);
             }
         } else {
-            let c = self.pixel_view.toolbar(ui, &sel, &capture.buffers(), lang);
+            let c = self
+                .pixel_view
+                .toolbar(ui, &sel, &self.session.buffers, lang);
             self.commands.extend(c);
             if sel.buffer == pipeline::capture::BufferKind::Depth
                 && let Some(c) = PixelView::depth_controls(ui, &sel, capture, lang)

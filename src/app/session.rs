@@ -473,6 +473,8 @@ pub struct Session {
     pub source: String,
     /// The latest capture of the viewing camera.
     pub capture: Option<Arc<FrameCapture>>,
+    /// The buffers the latest capture holds.
+    pub buffers: Vec<BufferKind>,
     /// The latest capture of the observer's camera.
     pub observer: Option<Arc<FrameCapture>>,
     /// The captures of the compared settings, with their labels.
@@ -509,6 +511,7 @@ impl Session {
             spec,
             source: source.to_owned(),
             capture: None,
+            buffers: Vec::new(),
             observer: None,
             variants: Vec::new(),
             times: None,
@@ -667,6 +670,7 @@ impl Session {
         match result {
             Ok(r) => {
                 self.capture = Some(r.capture);
+                self.buffers = r.buffers;
                 self.observer = r.observer;
                 self.variants = r.variants;
                 self.times = Some(r.times);

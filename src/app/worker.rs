@@ -34,6 +34,9 @@ pub struct Rendered {
     pub observer: Option<Arc<FrameCapture>>,
     /// The compared captures, with their labels (those that could be rendered).
     pub variants: Vec<(String, Arc<FrameCapture>)>,
+    /// The buffers the capture holds (listed here, off the UI thread: finding whether a
+    /// mirror shows scans every pixel).
+    pub buffers: Vec<pipeline::capture::BufferKind>,
 }
 
 /// A finished job.
@@ -62,6 +65,7 @@ impl Job {
                     })
                     .collect();
                 Rendered {
+                    buffers: capture.buffers(),
                     capture: Arc::new(capture),
                     times,
                     observer,

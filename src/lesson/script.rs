@@ -2,7 +2,6 @@
 //! and English, the stage and layout to show, parameter changes and animations, overlays, a
 //! highlighted pixel or vertex, and a question for self-study.
 
-use std::ops::Range;
 use std::path::Path;
 
 use pipeline::capture::BufferKind;
@@ -10,7 +9,8 @@ use toml::Spanned;
 
 use super::param::{self, Animation, Easing, Repeat, Value};
 use super::raw::{RawAnimate, RawLessonFile, RawStep, RawText, RawValue};
-use super::{Diagnostic, Diagnostics, SceneSpec};
+use super::validate::Checker;
+use super::{Diagnostics, SceneSpec};
 use crate::app::i18n::Lang;
 use crate::app::session::{Comparison, Stage};
 
@@ -148,60 +148,33 @@ pub fn is_lesson(text: &str) -> bool {
 pub fn parse_lesson(text: &str, file: &str, base: &Path) -> Result<Lesson, Diagnostics> {
     let raw: RawLessonFile = super::parse_toml(text, file)?;
     let scene = super::validate::scene(&raw.scene, text, file, base);
-    let mut found = Vec::new();
-    let error = |found: &mut Vec<Diagnostic>, span: Range<usize>, m: String| {
-        found.push(Diagnostic::at(file, text, span, m));
-    };
+    let mut c = Checker::new(text, file);
     let meta = raw.lesson.get_ref();
     let id = meta.id.get_ref().trim().to_owned();
     if id.is_empty() {
-        error(
-            &mut found,
-            meta.id.span(),
-            "`id` must not be empty".to_owned(),
-        );
+        c.error(meta.id.span(), "`id` must not be empty");
     }
-    let mut text_of = |found: &mut Vec<Diagnostic>, key: &str, t: &Spanned<RawText>| {
-        let r = t.get_ref();
-        if r.en.trim().is_empty() || r.zh.trim().is_empty() {
-            error(
-                found,
-                t.span(),
-                format!("`{key}` needs both `en` and `zh` text, neither empty"),
-            );
-        }
-        Text {
-            en: r.en.trim().to_owned(),
-            zh: r.zh.trim().to_owned(),
-        }
-    };
-    let title = text_of(&mut found, "title", &meta.title);
-    let summary = text_of(&mut found, "summary", &meta.summary);
+    let title = c.text_of("title", &meta.title);
+    let summary = c.text_of("summary", &meta.summary);
     let prerequisites = meta
         .prerequisites
         .iter()
         .map(|p| p.get_ref().clone())
         .collect();
     if raw.steps.is_empty() {
-        error(
-            &mut found,
+        c.error(
             raw.lesson.span(),
-            "the lesson has no steps: add at least one [[steps]] with a `title` and `narration`"
-                .to_owned(),
+            "the lesson has no steps: add at least one [[steps]] with a `title` and `narration`",
         );
     }
     let mut steps = Vec::new();
     if let Ok(base_spec) = &scene {
         let mut spec = base_spec.clone();
         for s in &raw.steps {
-            let mut c = StepChecker {
-                file,
-                text,
-                found: &mut found,
-            };
-            steps.push(c.step(s, &mut spec, &mut text_of));
+            steps.push(c.step(s, &mut spec));
         }
     }
+    let mut found = c.found;
     let scene = match scene {
         Ok(s) => s,
         Err(Diagnostics(mut d)) => {
@@ -223,13 +196,6 @@ pub fn parse_lesson(text: &str, file: &str, base: &Path) -> Result<Lesson, Diagn
     })
 }
 
-/// Checks steps against the scene as the steps before them left it.
-struct StepChecker<'a> {
-    file: &'a str,
-    text: &'a str,
-    found: &'a mut Vec<Diagnostic>,
-}
-
 type Views = (
     Option<Stage>,
     Layout,
@@ -238,33 +204,23 @@ type Views = (
     Option<Vec<Overlay>>,
 );
 type Targets = (Option<(u32, u32)>, Option<u32>, Option<[f32; 4]>);
-type TextOf<'f> = dyn FnMut(&mut Vec<Diagnostic>, &str, &Spanned<RawText>) -> Text + 'f;
 
-impl StepChecker<'_> {
-    fn error(&mut self, span: Range<usize>, m: impl Into<String>) {
-        self.found
-            .push(Diagnostic::at(self.file, self.text, span, m.into()));
-    }
-
-    fn choice<T: Copy>(
-        &mut self,
-        key: &str,
-        v: &Spanned<String>,
-        options: &[(&str, T)],
-    ) -> Option<T> {
-        let found = options.iter().find(|(n, _)| *n == v.get_ref().as_str());
-        if found.is_none() {
-            let names: Vec<String> = options.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+/// The lesson's own checks, on the scene's checker: the steps are checked against the scene as
+/// the steps before them left it.
+impl Checker<'_> {
+    /// Text in both languages, neither empty.
+    fn text_of(&mut self, key: &str, t: &Spanned<RawText>) -> Text {
+        let r = t.get_ref();
+        if r.en.trim().is_empty() || r.zh.trim().is_empty() {
             self.error(
-                v.span(),
-                format!(
-                    "`{key}` must be one of {}, got \"{}\"",
-                    names.join(", "),
-                    v.get_ref()
-                ),
+                t.span(),
+                format!("`{key}` needs both `en` and `zh` text, neither empty"),
             );
         }
-        found.map(|(_, t)| *t)
+        Text {
+            en: r.en.trim().to_owned(),
+            zh: r.zh.trim().to_owned(),
+        }
     }
 
     fn value(&mut self, v: &Spanned<RawValue>) -> Option<Value> {
@@ -285,20 +241,12 @@ impl StepChecker<'_> {
         })
     }
 
-    fn step(
-        &mut self,
-        s: &Spanned<RawStep>,
-        spec: &mut SceneSpec,
-        text_of: &mut TextOf<'_>,
-    ) -> Step {
+    fn step(&mut self, s: &Spanned<RawStep>, spec: &mut SceneSpec) -> Step {
         let r = s.get_ref();
-        let title = text_of(self.found, "title", &r.title);
-        let narration = text_of(self.found, "narration", &r.narration);
-        let question = r
-            .question
-            .as_ref()
-            .map(|q| text_of(self.found, "question", q));
-        let answer = r.answer.as_ref().map(|a| text_of(self.found, "answer", a));
+        let title = self.text_of("title", &r.title);
+        let narration = self.text_of("narration", &r.narration);
+        let question = r.question.as_ref().map(|q| self.text_of("question", q));
+        let answer = r.answer.as_ref().map(|a| self.text_of("answer", a));
         let (stage, layout, compare, buffer, overlays) = self.views(s);
         let mut set = Vec::new();
         for (name, v) in &r.set {

@@ -67,15 +67,25 @@ pub(super) const FILTER: &[(&str, Filter)] =
 /// The names of `wrap` in files.
 pub(super) const WRAP: &[(&str, Wrap)] = &[("repeat", Wrap::Repeat), ("clamp", Wrap::Clamp)];
 
-/// Collects diagnostics against one source text.
-struct Checker<'a> {
-    text: &'a str,
-    file: &'a str,
-    found: Vec<Diagnostic>,
+/// Collects diagnostics against one source text (the scene's checks here, the lesson's in
+/// `script`).
+pub(super) struct Checker<'a> {
+    pub(super) text: &'a str,
+    pub(super) file: &'a str,
+    pub(super) found: Vec<Diagnostic>,
 }
 
-impl Checker<'_> {
-    fn error(&mut self, span: Range<usize>, message: impl Into<String>) {
+impl<'a> Checker<'a> {
+    /// A checker of `text`, named `file` in messages, with nothing found yet.
+    pub(super) fn new(text: &'a str, file: &'a str) -> Self {
+        Self {
+            text,
+            file,
+            found: Vec::new(),
+        }
+    }
+
+    pub(super) fn error(&mut self, span: Range<usize>, message: impl Into<String>) {
         self.found
             .push(Diagnostic::at(self.file, self.text, span, message));
     }
@@ -107,7 +117,8 @@ impl Checker<'_> {
         }
     }
 
-    fn choice<T: Copy>(
+    /// The option named by `v`, else a diagnostic listing the names.
+    pub(super) fn choice<T: Copy>(
         &mut self,
         key: &str,
         v: &Spanned<String>,
@@ -141,11 +152,7 @@ pub fn scene(
     file: &str,
     base: &Path,
 ) -> Result<SceneSpec, Diagnostics> {
-    let mut c = Checker {
-        text,
-        file,
-        found: Vec::new(),
-    };
+    let mut c = Checker::new(text, file);
     let s = raw.get_ref();
     let mut camera = Camera::default();
     if let Some(cam) = &s.camera {

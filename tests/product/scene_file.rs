@@ -13,18 +13,7 @@ fn errors(text: &str) -> Vec<Diagnostic> {
 
 /// Asserts that one error is at `line:column` and its message contains `needle`.
 fn assert_error(text: &str, line: usize, column: usize, needle: &str) {
-    let found = errors(text);
-    assert!(
-        found
-            .iter()
-            .any(|d| d.line == line && d.column == column && d.message.contains(needle)),
-        "expected {line}:{column} `{needle}` in:\n{}",
-        found
-            .iter()
-            .map(ToString::to_string)
-            .collect::<Vec<_>>()
-            .join("\n")
-    );
+    crate::support::assert_found(&errors(text), line, column, needle);
 }
 
 const OBJECT: &str = "[[scene.objects]]\nmesh = \"cube\"\n";

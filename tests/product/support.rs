@@ -31,3 +31,24 @@ pub fn text(o: &Output) -> String {
         String::from_utf8_lossy(&o.stderr)
     )
 }
+
+/// Asserts that one of `found` is at `line:column` and its message contains `needle`, showing
+/// them all otherwise.
+pub fn assert_found(
+    found: &[pipelens::lesson::Diagnostic],
+    line: usize,
+    column: usize,
+    needle: &str,
+) {
+    assert!(
+        found
+            .iter()
+            .any(|d| d.line == line && d.column == column && d.message.contains(needle)),
+        "expected {line}:{column} \"{needle}\", got:\n{}",
+        found
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
+}
