@@ -8,7 +8,10 @@ pub mod views;
 pub mod worker;
 
 use std::path::PathBuf;
+use std::sync::Arc;
 use std::sync::mpsc::{Receiver, channel};
+
+use pipeline::scene::{Capture, RenderSettings};
 
 use egui::{FontData, FontFamily, RichText};
 
@@ -157,7 +160,7 @@ impl PipelensApp {
         self.commands.extend(match loaded {
             Ok(crate::lesson::Document::Lesson(l)) => vec![Command::ReloadLesson(l)],
             Ok(crate::lesson::Document::Scene(s)) => {
-                vec![Command::SetReloadError(None), Command::SetSpec(Box::new(s))]
+                vec![Command::SetReloadError(None), Command::SetSpec(s)]
             }
             Err(e) => vec![Command::SetReloadError(Some(e.to_string()))],
         });
@@ -223,6 +226,8 @@ impl PipelensApp {
         for cmd in std::mem::take(&mut self.commands) {
             self.session.apply(cmd);
         }
+        // A buffer or a pixel chosen that the capture shown did not keep: render it.
+        self.session.ensure_captured();
     }
 
     fn main_view(
@@ -540,9 +545,11 @@ impl PipelensApp {
     }
 
     fn start_export(&mut self) {
-        let Some(capture) = self.session.capture.clone() else {
+        let Some(shown) = self.session.capture.clone() else {
             return;
         };
+        // The view's capture keeps what it shows; an export writes every buffer.
+        let spec = self.session.spec.clone();
         let opts = crate::export::ExportOptions {
             out: PathBuf::from(self.export_dir.trim()),
             overlay_zoom: 0,
@@ -554,8 +561,19 @@ impl PipelensApp {
         let (tx, rx) = channel();
         self.export_result = Some(rx);
         std::thread::spawn(move || {
-            let r = crate::export::export_capture(&capture, &opts, &mut |_, _, _| {})
-                .map_err(|e| format!("{e:#}"));
+            let full = RenderSettings {
+                capture: Capture::FULL,
+                ..shown.settings
+            };
+            let capture = if shown.settings.capture == Capture::FULL {
+                Ok(shown)
+            } else {
+                pipeline::render(&spec.scene, &full).map(Arc::new)
+            };
+            let r = capture.map_err(|e| e.to_string()).and_then(|c| {
+                crate::export::export_capture(&c, &opts, &mut |_, _, _| {})
+                    .map_err(|e| format!("{e:#}"))
+            });
             let _ = tx.send(r);
         });
     }

@@ -8,7 +8,7 @@ use glam::Vec3;
 use pipeline::StageTimes;
 use pipeline::capture::{BufferKind, FrameCapture};
 use pipeline::overlay::OverlayKind;
-use pipeline::scene::{Camera, RenderSettings, Samples};
+use pipeline::scene::{Camera, Capture, RenderSettings, Samples};
 use pipeline::shade::Frequency;
 use pipeline::texture::{Filter, Mipmap, Sampler};
 
@@ -628,12 +628,34 @@ impl Session {
         self.shown_generation != self.generation
     }
 
-    /// Asks for a new capture of the current scene.
+    /// What the current view needs a capture to keep: the buffer a pixel stage shows, and every
+    /// term while a pixel is inspected (the inspector lists them all and draws the lighting
+    /// vectors).
+    #[must_use]
+    pub fn capture_needed(&self) -> Capture {
+        if self.selection.pixel.is_some() {
+            Capture::FULL
+        } else {
+            Capture::showing([self.selection.buffer])
+        }
+    }
+
+    /// Asks for a new capture when the view needs a buffer the latest one did not keep.
+    pub fn ensure_captured(&mut self) {
+        let kept = self.capture.as_ref().map(|c| c.settings.capture);
+        if !self.rendering() && kept.is_some_and(|k| !k.covers(self.capture_needed())) {
+            self.request_render();
+        }
+    }
+
+    /// Asks for a new capture of the current scene, keeping what the view shows.
     pub fn request_render(&mut self) {
         self.generation += 1;
+        let mut spec = self.spec.clone();
+        spec.settings.capture = self.capture_needed();
         let job = Job {
             generation: self.generation,
-            spec: self.spec.clone(),
+            spec,
             observer: self.orbit.camera(),
             variants: self
                 .selection
@@ -644,7 +666,7 @@ impl Session {
         match &self.worker {
             Some(w) => w.submit(job),
             None => {
-                let done = job.run();
+                let done = job.run(&mut super::worker::Spares::default());
                 self.receive(done.generation, done.result);
             }
         }
@@ -669,9 +691,16 @@ impl Session {
         self.shown_generation = generation;
         match result {
             Ok(r) => {
-                self.capture = Some(r.capture);
+                let old = (
+                    self.capture.replace(r.capture),
+                    std::mem::replace(&mut self.observer, r.observer),
+                );
+                if let Some(w) = &self.worker {
+                    // Their storage serves the next renders, and is freed off this thread.
+                    old.0.into_iter().for_each(|c| w.recycle(c, false));
+                    old.1.into_iter().for_each(|c| w.recycle(c, true));
+                }
                 self.buffers = r.buffers;
-                self.observer = r.observer;
                 self.variants = r.variants;
                 self.times = Some(r.times);
                 self.error = None;

@@ -5,8 +5,9 @@ use std::sync::Arc;
 use std::sync::mpsc::{Receiver, Sender, TryRecvError, channel};
 
 use pipeline::StageTimes;
+use pipeline::capture::BufferKind;
 use pipeline::capture::FrameCapture;
-use pipeline::scene::{Camera, Projection, RenderSettings, Samples, Scene};
+use pipeline::scene::{Camera, Capture, Projection, RenderSettings, Samples, Scene};
 
 use crate::lesson::SceneSpec;
 
@@ -34,9 +35,9 @@ pub struct Rendered {
     pub observer: Option<Arc<FrameCapture>>,
     /// The compared captures, with their labels (those that could be rendered).
     pub variants: Vec<(String, Arc<FrameCapture>)>,
-    /// The buffers the capture holds (listed here, off the UI thread: finding whether a
-    /// mirror shows scans every pixel).
-    pub buffers: Vec<pipeline::capture::BufferKind>,
+    /// The buffers the scene offers (the capture keeps those the view shows; choosing another
+    /// renders again).
+    pub buffers: Vec<BufferKind>,
 }
 
 /// A finished job.
@@ -48,30 +49,60 @@ pub struct Done {
     pub result: Result<Rendered, String>,
 }
 
+/// Captures no longer shown, whose storage the next renders write into (a capture is tens of
+/// megabytes: reusing it spares the system's page faults and zeroing, and the UI thread the
+/// freeing).
+#[derive(Default)]
+pub struct Spares {
+    /// For the viewing camera's capture.
+    pub capture: Option<FrameCapture>,
+    /// For the observer's.
+    pub observer: Option<FrameCapture>,
+}
+
+impl Spares {
+    /// Keeps `old` for reuse when nothing else holds it (it is dropped here otherwise).
+    fn keep(&mut self, old: Arc<FrameCapture>, observer: bool) {
+        if let Ok(c) = Arc::try_unwrap(old) {
+            *if observer {
+                &mut self.observer
+            } else {
+                &mut self.capture
+            } = Some(c);
+        }
+    }
+}
+
 impl Job {
-    /// Renders the job on this thread.
+    /// Renders the job on this thread, into the storage of `spares` when it has some.
     #[must_use]
-    pub fn run(self) -> Done {
-        let result = pipeline::render_timed(&self.spec.scene, &self.spec.settings)
-            .map_err(|e| e.to_string())
-            .map(|(capture, times)| {
-                let observer = render_observer(&self.spec, self.observer).map(Arc::new);
-                let variants = self
-                    .variants
-                    .iter()
-                    .filter_map(|(label, settings)| {
-                        let c = pipeline::render(&self.spec.scene, settings).ok()?;
-                        Some((label.clone(), Arc::new(c)))
-                    })
-                    .collect();
-                Rendered {
-                    buffers: capture.buffers(),
-                    capture: Arc::new(capture),
-                    times,
-                    observer,
-                    variants,
-                }
-            });
+    pub fn run(self, spares: &mut Spares) -> Done {
+        let result =
+            pipeline::render_reusing(&self.spec.scene, &self.spec.settings, spares.capture.take())
+                .map_err(|e| e.to_string())
+                .map(|(capture, times)| {
+                    let observer =
+                        render_observer(&self.spec, self.observer, spares.observer.take())
+                            .map(Arc::new);
+                    let variants = self
+                        .variants
+                        .iter()
+                        .filter_map(|(label, settings)| {
+                            let c = pipeline::render(&self.spec.scene, settings).ok()?;
+                            Some((label.clone(), Arc::new(c)))
+                        })
+                        .collect();
+                    Rendered {
+                        buffers: BufferKind::ALL
+                            .into_iter()
+                            .filter(|&k| self.spec.scene.offers(&self.spec.settings, k))
+                            .collect(),
+                        capture: Arc::new(capture),
+                        times,
+                        observer,
+                        variants,
+                    }
+                });
         Done {
             generation: self.generation,
             result,
@@ -80,8 +111,13 @@ impl Job {
 }
 
 /// The scene from the observer's camera: the same pipeline, one sample, no culling (so the
-/// outside of everything is seen), a perspective lens wide enough for the viewing frustum.
-pub fn render_observer(spec: &SceneSpec, camera: Camera) -> Option<FrameCapture> {
+/// outside of everything is seen), a perspective lens wide enough for the viewing frustum;
+/// only its colour is kept (into `spare`'s storage, if given).
+pub fn render_observer(
+    spec: &SceneSpec,
+    camera: Camera,
+    spare: Option<FrameCapture>,
+) -> Option<FrameCapture> {
     let distance = (camera.eye - camera.at).length();
     let scene = Scene {
         objects: spec.scene.objects.clone(),
@@ -98,14 +134,25 @@ pub fn render_observer(spec: &SceneSpec, camera: Camera) -> Option<FrameCapture>
     };
     let settings = RenderSettings {
         samples: Samples::X1,
+        capture: Capture::COLOR,
         ..spec.settings
     };
-    pipeline::render(&scene, &settings).ok()
+    pipeline::render_reusing(&scene, &settings, spare)
+        .ok()
+        .map(|(c, _)| c)
+}
+
+/// What the UI thread sends the render thread.
+enum Message {
+    /// A render to do.
+    Job(Box<Job>),
+    /// A capture no longer shown (`true`: an observer's), to reuse or free off the UI thread.
+    Spare(Arc<FrameCapture>, bool),
 }
 
 /// The render thread and its two channels.
 pub struct RenderWorker {
-    jobs: Sender<Job>,
+    jobs: Sender<Message>,
     done: Receiver<Done>,
 }
 
@@ -115,21 +162,27 @@ impl RenderWorker {
     /// # Errors
     /// When the operating system refuses a thread (the app then renders on its own thread).
     pub fn start(wake: impl Fn() + Send + 'static) -> std::io::Result<Self> {
-        let (jobs, job_rx) = channel::<Job>();
+        let (jobs, job_rx) = channel::<Message>();
         let (done_tx, done) = channel::<Done>();
         std::thread::Builder::new()
             .name("pipelens-render".into())
             .spawn(move || {
-                while let Ok(mut job) = job_rx.recv() {
+                let mut spares = Spares::default();
+                while let Ok(first) = job_rx.recv() {
                     // Skip to the newest job: the ones behind it are stale.
+                    let mut job = None;
+                    let mut next = Ok(first);
                     loop {
-                        match job_rx.try_recv() {
-                            Ok(newer) => job = newer,
+                        match next {
+                            Ok(Message::Job(newer)) => job = Some(newer),
+                            Ok(Message::Spare(old, observer)) => spares.keep(old, observer),
                             Err(TryRecvError::Empty) => break,
                             Err(TryRecvError::Disconnected) => return,
                         }
+                        next = job_rx.try_recv();
                     }
-                    if done_tx.send(job.run()).is_err() {
+                    let Some(job) = job else { continue };
+                    if done_tx.send(job.run(&mut spares)).is_err() {
                         return;
                     }
                     wake();
@@ -140,7 +193,13 @@ impl RenderWorker {
 
     /// Submits a job (never blocks).
     pub fn submit(&self, job: Job) {
-        let _ = self.jobs.send(job);
+        let _ = self.jobs.send(Message::Job(Box::new(job)));
+    }
+
+    /// Hands back a capture no longer shown (`observer`: the observer's), so that the render
+    /// thread reuses its storage, or frees it there rather than on the UI thread.
+    pub fn recycle(&self, old: Arc<FrameCapture>, observer: bool) {
+        let _ = self.jobs.send(Message::Spare(old, observer));
     }
 
     /// The jobs finished since the last call.

@@ -185,7 +185,7 @@ fn step_files(
 fn observer_image(spec: &SceneSpec, main: &FrameCapture) -> Option<image::RgbaImage> {
     use pipeline::overlay::Shape;
     let orbit = crate::app::session::default_orbit(spec);
-    let outside = crate::app::worker::render_observer(spec, orbit.camera())?;
+    let outside = crate::app::worker::render_observer(spec, orbit.camera(), None)?;
     let to_world = main.matrices.view.matrix.inverse();
     let corners: Vec<glam::Vec3> = main
         .projection

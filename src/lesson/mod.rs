@@ -87,7 +87,7 @@ pub fn parse_scene(text: &str, file: &str, base: &Path) -> Result<SceneSpec, Dia
 #[derive(Clone, Debug, PartialEq)]
 pub enum Document {
     /// A scene file (`[scene]` only).
-    Scene(SceneSpec),
+    Scene(Box<SceneSpec>),
     /// A lesson (`[lesson]`, `[scene]`, `[[steps]]`).
     Lesson(Box<Lesson>),
 }
@@ -97,7 +97,7 @@ impl Document {
     #[must_use]
     pub fn first_spec(&self) -> SceneSpec {
         match self {
-            Self::Scene(s) => s.clone(),
+            Self::Scene(s) => (**s).clone(),
             Self::Lesson(l) => l.spec_at(0),
         }
     }
@@ -127,7 +127,7 @@ pub fn parse_document(text: &str, file: &str, base: &Path) -> Result<Document, D
     if script::is_lesson(text) {
         script::parse_lesson(text, file, base).map(|l| Document::Lesson(Box::new(l)))
     } else {
-        parse_scene(text, file, base).map(Document::Scene)
+        parse_scene(text, file, base).map(|s| Document::Scene(Box::new(s)))
     }
 }
 

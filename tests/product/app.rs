@@ -96,6 +96,11 @@ fn clicking_a_pixel_lists_its_fragments() {
         .pixel
         .expect("a pixel is selected");
     let capture = h.state().session.capture.clone().expect("a capture");
+    assert_eq!(
+        capture.settings.capture,
+        pipeline::scene::Capture::FULL,
+        "an inspected pixel shows every term"
+    );
     let fragments = capture.fragments_at(x, y);
     assert!(!fragments.is_empty(), "the floor reaches pixel ({x}, {y})");
     let first = format!("fragment 1 · triangle {}", fragments[0].primitive);
@@ -103,6 +108,29 @@ fn clicking_a_pixel_lists_its_fragments() {
         h.query_by_label_contains(&first).is_some(),
         "the inspector lists {first}"
     );
+}
+
+#[test]
+fn the_capture_keeps_what_the_view_shows() {
+    use pipeline::capture::BufferKind;
+    use pipeline::scene::Capture;
+    let mut h = harness();
+    h.run();
+    let kept = |h: &Harness<'static, PipelensApp>| {
+        let c = h.state().session.capture.clone().expect("a capture");
+        (c.settings.capture, c.pixels.shading.is_some())
+    };
+    // The final image: the colour only; the lighting buffers are still offered.
+    h.get_by_label("Output").click();
+    h.run();
+    assert_eq!(kept(&h), (Capture::COLOR, false));
+    assert!(h.state().session.buffers.contains(&BufferKind::NDotL));
+    // Showing a lighting term renders again, keeping the lighting buffers.
+    h.get_by_label("Shading").click();
+    h.run();
+    assert_eq!(h.state().session.selection.buffer, BufferKind::Diffuse);
+    let (capture, shaded) = kept(&h);
+    assert!(capture.lighting && shaded, "{capture:?}");
 }
 
 #[test]

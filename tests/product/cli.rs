@@ -169,7 +169,7 @@ fn bad_sizes_and_samples_are_refused_before_rendering() {
                 "--samples",
                 "16",
             ],
-            "needs about 72960 MB for a capture, more than the 2048 MB allowed",
+            "needs about 54528 MB for a capture, more than the 2048 MB allowed",
         ),
     ] {
         let o = pipelens(dir.path(), &args);

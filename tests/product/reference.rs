@@ -185,7 +185,7 @@ fn games101_assignment_3_spot_normal_and_blinn_phong() {
     let sh = c.pixels.shading.as_ref().expect("lighting buffers");
     let no_specular = |x: u32, y: u32| {
         let i = (y * 700 + x) as usize;
-        sh.specular[i].iter().all(|&s| s < 0.5 / 255.0)
+        sh.at(i).specular.iter().all(|&s| s < 0.5 / 255.0)
     };
     let diffuse = compare_a3_where(
         &c.image(BufferKind::Color),
@@ -212,7 +212,8 @@ fn a3_formula(c: &pipeline::capture::FrameCapture) -> image::RgbaImage {
         if c.pixels.coverage[i] == 0 {
             return image::Rgba([0, 0, 0, 255]);
         }
-        let ch = |k: usize| ((0.1 + sh.diffuse[i][k] + sh.specular[i][k]).min(1.0) * 255.0) as u8;
+        let t = sh.at(i);
+        let ch = |k: usize| ((0.1 + t.diffuse[k] + t.specular[k]).min(1.0) * 255.0) as u8;
         image::Rgba([ch(0), ch(1), ch(2), 255])
     })
 }
@@ -235,7 +236,8 @@ fn games101_assignment_3_spot_textured() {
         let c = pipeline::render(scene, settings).expect("renders");
         let sh = c.pixels.shading.as_ref().expect("lighting buffers");
         let r = compare_a3_where(&a3_formula(&c), &refs.join(file), 4, file, |x, y| {
-            sh.specular[(y * 700 + x) as usize]
+            sh.at((y * 700 + x) as usize)
+                .specular
                 .iter()
                 .all(|&s| s < 0.5 / 255.0)
         });

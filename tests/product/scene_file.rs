@@ -100,7 +100,7 @@ fn out_of_range_values() {
         &r("width = 16384\nheight = 16384\nsamples = 16"),
         3,
         1,
-        "needs about 72960 MB for a capture, more than the 2048 MB allowed",
+        "needs about 54528 MB for a capture, more than the 2048 MB allowed",
     );
 }
 

@@ -4,6 +4,7 @@
 //! the tests assert on it: a number comes from one place.
 
 use glam::{I64Vec2, Vec3};
+use half::f16;
 use image::{ImageBuffer, Luma, Rgba, RgbaImage};
 use serde::Serialize;
 
@@ -83,10 +84,10 @@ pub struct PixelBuffers {
     /// The primitive that owns most of the pixel's samples (ties: the earliest sample), or
     /// [`NONE`].
     pub primitive: Vec<u32>,
-    /// Perspective-correct barycentric weights of that primitive's vertices at the pixel centre.
-    pub bary_perspective: Vec<[f32; 3]>,
-    /// Affine (screen-space) barycentric weights at the pixel centre.
-    pub bary_affine: Vec<[f32; 3]>,
+    /// The raster triangle of that primitive seen at the pixel (an index into
+    /// [`FrameCapture::triangles`]), or [`NONE`]. The barycentric weights at the pixel centre
+    /// are a function of it ([`FrameCapture::barycentrics`]), so they are derived, not stored.
+    pub owner: Vec<u32>,
     /// The resolved colour: each sample takes the colour of its triangle evaluated once at the
     /// pixel centre (multisampling shades once per pixel), uncovered samples the background;
     /// the pixel is their mean.
@@ -97,38 +98,243 @@ pub struct PixelBuffers {
     pub texturing: Option<TextureBuffers>,
 }
 
-/// Per-pixel texture lookups of the owning fragment, top image row first.
+/// The barycentric weights of a pixel's owning fragment at the pixel centre.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Barycentrics {
+    /// Perspective-correct: `(λ_k/w_k) / Σ_j(λ_j/w_j)`, relative to the original triangle.
+    pub perspective: [f32; 3],
+    /// Affine (screen-space) `λ_k`, relative to the original triangle.
+    pub affine: [f32; 3],
+}
+
+/// Per-pixel texture lookups of the owning fragment, top image row first. The uvs are 32-bit
+/// floats (a texel address needs their bits); the rest are half floats, 11 significant bits
+/// (relative error ≤ 2⁻¹¹), as a GPU keeps a G-buffer: read them as `f32` with [`Self::at`].
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct TextureBuffers {
     /// The texture coordinates at the pixel centre.
     pub uv: Vec<[f32; 2]>,
     /// The level of detail `λ = log₂ L + bias` (fractional, not clamped).
-    pub lod: Vec<f32>,
+    pub lod: Vec<f16>,
     /// The level read: `k + blend` (trilinear blends levels k and k+1).
-    pub level: Vec<f32>,
+    pub level: Vec<f16>,
     /// The filtered texel colour.
-    pub texel: Vec<[f32; 3]>,
+    pub texel: Vec<[f16; 3]>,
     /// The footprint's axes in texels, `(∂s/∂x, ∂t/∂x, ∂s/∂y, ∂t/∂y)` with `(s, t) = (u·w, v·h)`.
-    pub footprint: Vec<[f32; 4]>,
+    pub footprint: Vec<[f16; 4]>,
 }
 
-/// Per-pixel lighting terms of the owning fragment (see `shade`), top image row first.
+impl TextureBuffers {
+    /// Buffers for `n` pixels, zero.
+    #[must_use]
+    pub fn zeroed(n: usize) -> Self {
+        Self {
+            uv: vec![[0.0; 2]; n],
+            lod: vec![f16::ZERO; n],
+            level: vec![f16::ZERO; n],
+            texel: vec![[f16::ZERO; 3]; n],
+            footprint: vec![[f16::ZERO; 4]; n],
+        }
+    }
+
+    /// The buffers cut into image rows of `width` pixels, to be written in parallel.
+    pub fn rows(&mut self, width: usize) -> Vec<TextureRow<'_>> {
+        self.uv
+            .chunks_mut(width)
+            .zip(self.lod.chunks_mut(width))
+            .zip(self.level.chunks_mut(width))
+            .zip(self.texel.chunks_mut(width))
+            .zip(self.footprint.chunks_mut(width))
+            .map(|((((uv, lod), level), texel), footprint)| TextureRow {
+                uv,
+                lod,
+                level,
+                texel,
+                footprint,
+            })
+            .collect()
+    }
+
+    /// The lookup at pixel `i`, as 32-bit floats.
+    #[must_use]
+    pub fn at(&self, i: usize) -> PixelTexture {
+        PixelTexture {
+            uv: self.uv[i],
+            footprint: self.footprint[i].map(f16::to_f32),
+            lod: self.lod[i].to_f32(),
+            level: self.level[i].to_f32(),
+            texel: self.texel[i].map(f16::to_f32),
+        }
+    }
+}
+
+/// Per-pixel lighting terms of the owning fragment (see `shade`), top image row first, as half
+/// floats (11 significant bits, relative error ≤ 2⁻¹¹, as a GPU's RGBA16F G-buffer): read them
+/// as `f32` with [`Self::at`].
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct ShadingBuffers {
     /// `Σ k_a·I_a`.
-    pub ambient: Vec<[f32; 3]>,
+    pub ambient: Vec<[f16; 3]>,
     /// `Σ f_att·k_d·I_d·max(l·n, 0)`.
-    pub diffuse: Vec<[f32; 3]>,
+    pub diffuse: Vec<[f16; 3]>,
     /// `Σ f_att·k_s·I_s·max(r·v, 0)^α` or `max(n·h, 0)^β`.
-    pub specular: Vec<[f32; 3]>,
+    pub specular: Vec<[f16; 3]>,
     /// The unit normal used, world coordinates.
-    pub normal: Vec<[f32; 3]>,
+    pub normal: Vec<[f16; 3]>,
     /// `n·l` of the key light.
-    pub n_dot_l: Vec<f32>,
+    pub n_dot_l: Vec<f16>,
     /// `n·h` (Blinn-Phong) or `r·v` (Phong) of the key light.
-    pub n_dot_h: Vec<f32>,
+    pub n_dot_h: Vec<f16>,
     /// `k·C_env(r)`, what a mirror surface reflects from its environment (zero elsewhere).
-    pub reflected: Vec<[f32; 3]>,
+    pub reflected: Vec<[f16; 3]>,
+}
+
+impl ShadingBuffers {
+    /// Buffers for `n` pixels, zero.
+    #[must_use]
+    pub fn zeroed(n: usize) -> Self {
+        let v3 = || vec![[f16::ZERO; 3]; n];
+        Self {
+            ambient: v3(),
+            diffuse: v3(),
+            specular: v3(),
+            normal: v3(),
+            n_dot_l: vec![f16::ZERO; n],
+            n_dot_h: vec![f16::ZERO; n],
+            reflected: v3(),
+        }
+    }
+
+    /// The buffers cut into image rows of `width` pixels, to be written in parallel.
+    pub fn rows(&mut self, width: usize) -> Vec<ShadingRow<'_>> {
+        self.ambient
+            .chunks_mut(width)
+            .zip(self.diffuse.chunks_mut(width))
+            .zip(self.specular.chunks_mut(width))
+            .zip(self.normal.chunks_mut(width))
+            .zip(self.n_dot_l.chunks_mut(width))
+            .zip(self.n_dot_h.chunks_mut(width))
+            .zip(self.reflected.chunks_mut(width))
+            .map(
+                |((((((ambient, diffuse), specular), normal), n_dot_l), n_dot_h), reflected)| {
+                    ShadingRow {
+                        ambient,
+                        diffuse,
+                        specular,
+                        normal,
+                        n_dot_l,
+                        n_dot_h,
+                        reflected,
+                    }
+                },
+            )
+            .collect()
+    }
+
+    /// The terms at pixel `i`, as 32-bit floats.
+    #[must_use]
+    pub fn at(&self, i: usize) -> PixelLighting {
+        let f = |v: [f16; 3]| v.map(f16::to_f32);
+        PixelLighting {
+            ambient: f(self.ambient[i]),
+            diffuse: f(self.diffuse[i]),
+            specular: f(self.specular[i]),
+            reflected: f(self.reflected[i]),
+            normal: f(self.normal[i]),
+            n_dot_l: self.n_dot_l[i].to_f32(),
+            n_dot_h: self.n_dot_h[i].to_f32(),
+        }
+    }
+}
+
+/// One image row of the texturing buffers (see [`TextureBuffers::rows`]).
+pub struct TextureRow<'a> {
+    uv: &'a mut [[f32; 2]],
+    lod: &'a mut [f16],
+    level: &'a mut [f16],
+    texel: &'a mut [[f16; 3]],
+    footprint: &'a mut [[f16; 4]],
+}
+
+impl TextureRow<'_> {
+    /// Stores a row of lookups (`None`: no lookup there, zero), converting each field to half
+    /// floats in one pass (vectorised where the processor converts in hardware); `scratch` is
+    /// reused storage.
+    pub fn set_row(&mut self, row: &[Option<PixelTexture>], scratch: &mut Vec<f32>) {
+        let none = PixelTexture {
+            uv: [0.0; 2],
+            footprint: [0.0; 4],
+            lod: 0.0,
+            level: 0.0,
+            texel: [0.0; 3],
+        };
+        let at = |t: &Option<PixelTexture>| t.as_ref().unwrap_or(&none).clone();
+        for (x, t) in row.iter().enumerate() {
+            self.uv[x] = at(t).uv;
+        }
+        to_half(self.lod, scratch, row.iter().map(|t| [at(t).lod]));
+        to_half(self.level, scratch, row.iter().map(|t| [at(t).level]));
+        to_half(
+            self.texel.as_flattened_mut(),
+            scratch,
+            row.iter().map(|t| at(t).texel),
+        );
+        to_half(
+            self.footprint.as_flattened_mut(),
+            scratch,
+            row.iter().map(|t| at(t).footprint),
+        );
+    }
+}
+
+/// Writes the values of `values` (`N` a pixel) into `out` as half floats, through `scratch`.
+fn to_half<const N: usize>(
+    out: &mut [f16],
+    scratch: &mut Vec<f32>,
+    values: impl Iterator<Item = [f32; N]>,
+) {
+    use half::slice::HalfFloatSliceExt;
+    scratch.clear();
+    scratch.extend(values.flatten());
+    out.convert_from_f32_slice(scratch);
+}
+
+/// One image row of the lighting buffers (see [`ShadingBuffers::rows`]).
+pub struct ShadingRow<'a> {
+    ambient: &'a mut [[f16; 3]],
+    diffuse: &'a mut [[f16; 3]],
+    specular: &'a mut [[f16; 3]],
+    normal: &'a mut [[f16; 3]],
+    n_dot_l: &'a mut [f16],
+    n_dot_h: &'a mut [f16],
+    reflected: &'a mut [[f16; 3]],
+}
+
+impl ShadingRow<'_> {
+    /// Stores a row of lighting terms (`None`: unlit there, zero), converting each field to
+    /// half floats in one pass; `scratch` is reused storage.
+    pub fn set_row(&mut self, row: &[Option<crate::shade::ShadeTerms>], scratch: &mut Vec<f32>) {
+        let none = crate::shade::ShadeTerms::default();
+        let at = |t: &Option<crate::shade::ShadeTerms>| *t.as_ref().unwrap_or(&none);
+        let v3 = |f: fn(&crate::shade::ShadeTerms) -> Vec3| {
+            row.iter().map(move |t| f(&at(t)).to_array())
+        };
+        to_half(self.ambient.as_flattened_mut(), scratch, v3(|t| t.ambient));
+        to_half(self.diffuse.as_flattened_mut(), scratch, v3(|t| t.diffuse));
+        to_half(
+            self.specular.as_flattened_mut(),
+            scratch,
+            v3(|t| t.specular),
+        );
+        to_half(self.normal.as_flattened_mut(), scratch, v3(|t| t.normal));
+        to_half(
+            self.reflected.as_flattened_mut(),
+            scratch,
+            v3(|t| t.reflected),
+        );
+        to_half(self.n_dot_l, scratch, row.iter().map(|t| [at(t).n_dot_l]));
+        to_half(self.n_dot_h, scratch, row.iter().map(|t| [at(t).n_dot_h]));
+    }
 }
 
 /// Which image of a capture.
@@ -372,6 +578,21 @@ pub struct PixelTexture {
     pub texel: [f32; 3],
 }
 
+impl PixelTexture {
+    /// The record of lookup `l` at texture coordinates `uv`.
+    #[must_use]
+    pub fn new(uv: glam::Vec2, l: &crate::texture::Lookup) -> Self {
+        let [dx, dy] = l.footprint;
+        Self {
+            uv: uv.to_array(),
+            footprint: [dx.x, dx.y, dy.x, dy.y],
+            lod: l.lod,
+            level: l.level as f32 + l.level_blend,
+            texel: l.color.to_array(),
+        }
+    }
+}
+
 /// The vectors of the lighting at a pixel, in world coordinates: where the surface is, its unit
 /// normal, and the unit vectors to the key light, to the eye and halfway between them.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -477,14 +698,15 @@ fn hue(h: f32) -> [f32; 3] {
 
 /// The colour of a lighting buffer at pixel `i`.
 fn lighting_rgb(sh: &ShadingBuffers, kind: BufferKind, i: usize) -> [u8; 3] {
+    let rgb = |v: [f16; 3]| v.map(|c| to_u8(c.to_f32()));
     match kind {
-        BufferKind::Ambient => sh.ambient[i].map(to_u8),
-        BufferKind::Diffuse => sh.diffuse[i].map(to_u8),
-        BufferKind::Specular => sh.specular[i].map(to_u8),
-        BufferKind::Normal => sh.normal[i].map(|v| to_u8((v + 1.0) / 2.0)),
-        BufferKind::NDotL => [to_u8(sh.n_dot_l[i]); 3],
-        BufferKind::NDotH => [to_u8(sh.n_dot_h[i]); 3],
-        BufferKind::Reflected => sh.reflected[i].map(to_u8),
+        BufferKind::Ambient => rgb(sh.ambient[i]),
+        BufferKind::Diffuse => rgb(sh.diffuse[i]),
+        BufferKind::Specular => rgb(sh.specular[i]),
+        BufferKind::Normal => sh.normal[i].map(|v| to_u8((v.to_f32() + 1.0) / 2.0)),
+        BufferKind::NDotL => [to_u8(sh.n_dot_l[i].to_f32()); 3],
+        BufferKind::NDotH => [to_u8(sh.n_dot_h[i].to_f32()); 3],
+        BufferKind::Reflected => rgb(sh.reflected[i]),
         _ => [0; 3],
     }
 }
@@ -514,15 +736,15 @@ fn texturing_rgb(tb: &TextureBuffers, kind: BufferKind, i: usize) -> [u8; 3] {
             [to_u8(u.rem_euclid(1.0)), to_u8(v.rem_euclid(1.0)), 0]
         }
         BufferKind::MipLevel => {
-            let l = tb.level[i];
+            let l = tb.level[i].to_f32();
             let k = l.floor().max(0.0) as u32;
             crate::texture::level_color(k)
                 .lerp(crate::texture::level_color(k + 1), l.fract())
                 .to_array()
                 .map(to_u8)
         }
-        BufferKind::Texel => tb.texel[i].map(to_u8),
-        BufferKind::Footprint => footprint_rgb(tb.footprint[i]),
+        BufferKind::Texel => tb.texel[i].map(|c| to_u8(c.to_f32())),
+        BufferKind::Footprint => footprint_rgb(tb.footprint[i].map(f16::to_f32)),
         _ => [0; 3],
     }
 }
@@ -545,7 +767,69 @@ impl FrameCapture {
         self.pixels
             .shading
             .as_ref()
-            .is_some_and(|s| s.reflected.iter().any(|c| *c != [0.0; 3]))
+            .is_some_and(|s| s.reflected.iter().any(|c| *c != [f16::ZERO; 3]))
+    }
+
+    /// The barycentric weights of pixel `i`'s owning fragment at the pixel centre, relative to
+    /// the original triangle's vertices: `λ` from the owner's edge functions at the centre, then
+    /// affine `Σ λ_k·b_k` and perspective-correct `Σ (λ_k/w_k)/Σ(λ_j/w_j)·b_k` (what the resolve
+    /// interpolated the pixel's attributes with). `None` where nothing is drawn.
+    #[must_use]
+    pub fn barycentrics(&self, i: usize) -> Option<Barycentrics> {
+        let tri = self.triangles.get(*self.pixels.owner.get(i)? as usize)?;
+        let (w, h) = (self.width() as usize, self.height() as usize);
+        let (x, y) = (i % w, h - 1 - i / w);
+        let l = tri.lambda(Self::pixel_centre_fixed(x as u32, y as u32));
+        Some(Barycentrics {
+            perspective: tri.original_bary(l, true).to_array(),
+            affine: tri.original_bary(l, false).to_array(),
+        })
+    }
+
+    /// The bytes the per-pixel and per-sample buffers hold: what
+    /// [`RenderSettings::capture_bytes`] bounds (equal to it when every kept buffer applies).
+    #[must_use]
+    pub fn buffer_bytes(&self) -> u64 {
+        fn b<T>(v: &[T]) -> u64 {
+            std::mem::size_of_val(v) as u64
+        }
+        let p = &self.pixels;
+        let core = b(&p.coverage) + b(&p.depth) + b(&p.primitive) + b(&p.owner) + b(&p.color);
+        let lighting = p.shading.as_ref().map_or(0, |s| {
+            b(&s.ambient)
+                + b(&s.diffuse)
+                + b(&s.specular)
+                + b(&s.normal)
+                + b(&s.n_dot_l)
+                + b(&s.n_dot_h)
+                + b(&s.reflected)
+        });
+        let texturing = p.texturing.as_ref().map_or(0, |t| {
+            b(&t.uv) + b(&t.lod) + b(&t.level) + b(&t.texel) + b(&t.footprint)
+        });
+        core + lighting + texturing + b(&self.samples.depth) + b(&self.samples.triangle)
+    }
+
+    /// The bytes the whole capture holds: its buffers ([`Self::buffer_bytes`]) and its records
+    /// (the vertex table, the primitives with their clipped polygons, the raster triangles).
+    #[must_use]
+    pub fn memory_bytes(&self) -> u64 {
+        fn b<T>(v: &[T]) -> u64 {
+            std::mem::size_of_val(v) as u64
+        }
+        let polygons: u64 = self
+            .primitives
+            .iter()
+            .filter_map(|p| p.clipped_polygon.as_deref())
+            .map(b)
+            .sum();
+        self.buffer_bytes()
+            + b(&self.vertices)
+            + b(&self.vertex_shading)
+            + b(&self.face_shading)
+            + b(&self.primitives)
+            + polygons
+            + b(&self.triangles)
     }
 
     /// Width in pixels.
@@ -591,8 +875,12 @@ impl FrameCapture {
                 BufferKind::Depth => [255; 3], // drawn by depth_image
                 BufferKind::Coverage => [to_u8(f32::from(px.coverage[i]) / samples); 3],
                 BufferKind::PrimitiveId if covered => hue_color(px.primitive[i]),
-                BufferKind::BaryPerspective if covered => px.bary_perspective[i].map(to_u8),
-                BufferKind::BaryAffine if covered => px.bary_affine[i].map(to_u8),
+                BufferKind::BaryPerspective if covered => self
+                    .barycentrics(i)
+                    .map_or([0; 3], |b| b.perspective.map(to_u8)),
+                BufferKind::BaryAffine if covered => {
+                    self.barycentrics(i).map_or([0; 3], |b| b.affine.map(to_u8))
+                }
                 BufferKind::PrimitiveId | BufferKind::BaryPerspective | BufferKind::BaryAffine => {
                     [0; 3]
                 }
@@ -782,8 +1070,8 @@ impl FrameCapture {
         }
         let i = ((self.height() - 1 - y) * self.width() + x) as usize;
         let prim = self.primitives.get(self.pixels.primitive[i] as usize)?;
-        let normal = Vec3::from(self.pixels.shading.as_ref()?.normal[i]);
-        let b = self.pixels.bary_perspective[i];
+        let normal = Vec3::from(self.pixels.shading.as_ref()?.at(i).normal);
+        let b = self.barycentrics(i)?.perspective;
         let position = prim
             .vertices
             .iter()
@@ -822,30 +1110,12 @@ impl FrameCapture {
             depth: px.depth[i],
             color: px.color[i],
             primitive: owned.then_some(px.primitive[i]),
-            lighting: px
-                .shading
-                .as_ref()
-                .filter(|_| owned)
-                .map(|s| PixelLighting {
-                    ambient: s.ambient[i],
-                    diffuse: s.diffuse[i],
-                    specular: s.specular[i],
-                    reflected: s.reflected[i],
-                    normal: s.normal[i],
-                    n_dot_l: s.n_dot_l[i],
-                    n_dot_h: s.n_dot_h[i],
-                }),
+            lighting: px.shading.as_ref().filter(|_| owned).map(|s| s.at(i)),
             texture: px
                 .texturing
                 .as_ref()
-                .filter(|t| owned && t.footprint[i] != [0.0; 4])
-                .map(|t| PixelTexture {
-                    uv: t.uv[i],
-                    footprint: t.footprint[i],
-                    lod: t.lod[i],
-                    level: t.level[i],
-                    texel: t.texel[i],
-                }),
+                .filter(|t| owned && t.footprint[i] != [f16::ZERO; 4])
+                .map(|t| t.at(i)),
             vectors: self.pixel_vectors(x, y),
             fragments: self.fragments_at(x, y),
         })

@@ -31,4 +31,4 @@ pub mod texture;
 pub mod transform;
 pub mod vertex;
 
-pub use render::{RenderError, StageTimes, render, render_timed};
+pub use render::{RenderError, StageTimes, render, render_reusing, render_timed};

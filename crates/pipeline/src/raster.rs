@@ -320,6 +320,23 @@ impl SampleBuffers {
         }
     }
 
+    /// These buffers' storage, resized and cleared as [`Self::new`] makes them.
+    #[must_use]
+    pub fn cleared(mut self, width: u32, height: u32, samples: Samples, clear_depth: f32) -> Self {
+        let n = width as usize * height as usize * samples.count();
+        self.depth.clear();
+        self.depth.resize(n, clear_depth);
+        self.triangle.clear();
+        self.triangle.resize(n, NONE);
+        Self {
+            width,
+            height,
+            samples,
+            offsets: sample_offsets_fixed(samples),
+            ..self
+        }
+    }
+
     /// The position of sample `s` within a pixel, from its bottom-left corner, in fixed point.
     #[must_use]
     pub fn offset(&self, s: usize) -> I64Vec2 {

@@ -6,12 +6,13 @@
 use std::time::{Duration, Instant};
 
 use glam::{I64Vec2, Vec2, Vec3, Vec4};
+use half::f16;
 use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::capture::{
-    Fate, FrameCapture, Matrices, ObjectSummary, PixelBuffers, PrimitiveRecord, ShadingBuffers,
-    TextureBuffers,
+    Fate, FrameCapture, Matrices, ObjectSummary, PixelBuffers, PixelTexture, PrimitiveRecord,
+    ShadingBuffers, ShadingRow, TextureBuffers, TextureRow,
 };
 use crate::clip::{self, ClipOutcome, ClipVertex};
 use crate::raster::{NONE, ONE, RasterCounts, RasterTriangle, SampleBuffers, SetupRejection};
@@ -66,6 +67,21 @@ pub fn render_timed(
     scene: &Scene,
     settings: &RenderSettings,
 ) -> Result<(FrameCapture, StageTimes), RenderError> {
+    render_reusing(scene, settings, None)
+}
+
+/// [`render_timed`], writing the per-pixel and per-sample buffers into the storage of `spare`,
+/// a capture no longer needed (the frame before). A full capture is tens to hundreds of
+/// megabytes; memory fresh from the system costs a page fault and a zeroing every 4 KiB before
+/// the pipeline writes a byte of it, which reusing storage avoids. The result is the same.
+///
+/// # Errors
+/// As [`render`].
+pub fn render_reusing(
+    scene: &Scene,
+    settings: &RenderSettings,
+    spare: Option<FrameCapture>,
+) -> Result<(FrameCapture, StageTimes), RenderError> {
     let problems = scene.problems(settings);
     if !problems.is_empty() {
         return Err(RenderError::Invalid(problems));
@@ -79,47 +95,28 @@ pub fn render_timed(
             figures: Vec::new(),
             ..scene.clone()
         };
-        return render_stages(&expanded, settings).map(|(mut c, t)| {
+        return render_stages(&expanded, settings, spare).map(|(mut c, t)| {
             c.hierarchy = steps;
             (c, t)
         });
     }
-    render_stages(scene, settings)
+    render_stages(scene, settings, spare)
 }
 
 /// The stages, in order, over a scene whose figures and shadows are already plain objects.
 fn render_stages(
     scene: &Scene,
     settings: &RenderSettings,
+    spare: Option<FrameCapture>,
 ) -> Result<(FrameCapture, StageTimes), RenderError> {
+    let (spare_pixels, spare_samples) = spare.map_or((PixelBuffers::default(), None), |c| {
+        (c.pixels, Some(c.samples))
+    });
     let matrices = frame_matrices(scene, settings)?;
     let mut times = StageTimes::default();
 
     let t = Instant::now();
-    let mut vertices = Vec::new();
-    let mut vertex_shading = Vec::new();
-    for (i, object) in scene.objects.iter().enumerate() {
-        let m = VertexMatrices {
-            model: matrices.models[i].matrix,
-            view: matrices.view.matrix,
-            projection: matrices.projection.matrix,
-            viewport: matrices.viewport.matrix,
-        };
-        let lighting = vertex::VertexLighting {
-            frequency: settings.shading,
-            reflection: settings.reflection,
-            lights: &scene.lights,
-            eye: scene.camera.eye,
-        };
-        vertex::transform_object(
-            object,
-            i as u32,
-            &m,
-            &lighting,
-            &mut vertices,
-            &mut vertex_shading,
-        );
-    }
+    let (vertices, vertex_shading) = vertex_stage(scene, settings, &matrices);
     times.vertex = t.elapsed();
 
     let t = Instant::now();
@@ -132,12 +129,12 @@ fn render_stages(
     times.clip_setup = t.elapsed();
 
     let t = Instant::now();
-    let mut samples = SampleBuffers::new(
-        settings.width,
-        settings.height,
-        settings.samples,
-        settings.depth_test.clear_value(),
-    );
+    let clear = settings.depth_test.clear_value();
+    let (width, height) = (settings.width, settings.height);
+    let mut samples = match spare_samples {
+        Some(s) => s.cleared(width, height, settings.samples, clear),
+        None => SampleBuffers::new(width, height, settings.samples, clear),
+    };
     let counts = samples.rasterize_all(&triangles, settings.depth_test);
     for (tri, c) in triangles.iter().zip(counts) {
         let rec = &mut primitives[tri.primitive as usize];
@@ -157,7 +154,7 @@ fn render_stages(
         vertex_shading: &vertex_shading,
         face_shading: &face_shading,
     };
-    let pixels = resolve(&ctx);
+    let pixels = resolve(&ctx, spare_pixels);
     times.resolve = t.elapsed();
 
     let capture = FrameCapture {
@@ -195,6 +192,40 @@ fn render_stages(
         pixels,
     };
     Ok((capture, times))
+}
+
+/// The vertex stage: every vertex of every object through every space, in order, with its
+/// lighting when shading is per vertex.
+fn vertex_stage(
+    scene: &Scene,
+    settings: &RenderSettings,
+    matrices: &Matrices,
+) -> (Vec<VertexRecord>, Vec<ShadeTerms>) {
+    let mut vertices = Vec::new();
+    let mut vertex_shading = Vec::new();
+    for (i, object) in scene.objects.iter().enumerate() {
+        let m = VertexMatrices {
+            model: matrices.models[i].matrix,
+            view: matrices.view.matrix,
+            projection: matrices.projection.matrix,
+            viewport: matrices.viewport.matrix,
+        };
+        let lighting = vertex::VertexLighting {
+            frequency: settings.shading,
+            reflection: settings.reflection,
+            lights: &scene.lights,
+            eye: scene.camera.eye,
+        };
+        vertex::transform_object(
+            object,
+            i as u32,
+            &m,
+            &lighting,
+            &mut vertices,
+            &mut vertex_shading,
+        );
+    }
+    (vertices, vertex_shading)
 }
 
 /// The frame's matrices: models, view, both courses' projections, viewport.
@@ -402,8 +433,7 @@ struct ResolvedPixel {
     coverage: u8,
     depth: f32,
     primitive: u32,
-    bary_perspective: [f32; 3],
-    bary_affine: [f32; 3],
+    owner: u32,
     color: [f32; 3],
 }
 
@@ -412,57 +442,48 @@ struct RowOut<'a> {
     coverage: &'a mut [u8],
     depth: &'a mut [f32],
     primitive: &'a mut [u32],
-    bary_perspective: &'a mut [[f32; 3]],
-    bary_affine: &'a mut [[f32; 3]],
+    owner: &'a mut [u32],
     color: &'a mut [[f32; 3]],
     shading: Option<ShadingRow<'a>>,
     texturing: Option<TextureRow<'a>>,
 }
 
-/// One image row of the texturing buffers.
-struct TextureRow<'a> {
-    uv: &'a mut [[f32; 2]],
-    lod: &'a mut [f32],
-    level: &'a mut [f32],
-    texel: &'a mut [[f32; 3]],
-    footprint: &'a mut [[f32; 4]],
-}
-
-/// One image row of the lighting buffers.
-struct ShadingRow<'a> {
-    ambient: &'a mut [[f32; 3]],
-    diffuse: &'a mut [[f32; 3]],
-    specular: &'a mut [[f32; 3]],
-    normal: &'a mut [[f32; 3]],
-    n_dot_l: &'a mut [f32],
-    n_dot_h: &'a mut [f32],
-    reflected: &'a mut [[f32; 3]],
+/// A resolve task's reused storage: a row's lighting terms and lookups before they are
+/// converted to half floats.
+#[derive(Default)]
+struct RowScratch {
+    terms: Vec<Option<ShadeTerms>>,
+    textures: Vec<Option<PixelTexture>>,
+    floats: Vec<f32>,
 }
 
 impl RowOut<'_> {
-    fn write(&mut self, x: usize, r: &ResolvedPixel) {
-        self.coverage[x] = r.coverage;
-        self.depth[x] = r.depth;
-        self.primitive[x] = r.primitive;
-        self.bary_perspective[x] = r.bary_perspective;
-        self.bary_affine[x] = r.bary_affine;
-        self.color[x] = r.color;
-        if let (Some(tr), Some((uv, l))) = (&mut self.texturing, &r.texture) {
-            tr.uv[x] = uv.to_array();
-            tr.lod[x] = l.lod;
-            tr.level[x] = l.level as f32 + l.level_blend;
-            tr.texel[x] = l.color.to_array();
-            let [dx, dy] = l.footprint;
-            tr.footprint[x] = [dx.x, dx.y, dy.x, dy.y];
+    /// Resolves image row `row` (window `y`) into every kept buffer, so that reused storage
+    /// holds nothing of the frame before.
+    fn resolve(&mut self, ctx: &ResolveContext<'_>, row: usize, y: u32, s: &mut RowScratch) {
+        let w = self.color.len();
+        s.terms.clear();
+        s.textures.clear();
+        for x in 0..w {
+            let r = ctx.pixel(x as u32, y, row * w + x);
+            self.coverage[x] = r.coverage;
+            self.depth[x] = r.depth;
+            self.primitive[x] = r.primitive;
+            self.owner[x] = r.owner;
+            self.color[x] = r.color;
+            if self.shading.is_some() {
+                s.terms.push(r.terms);
+            }
+            if self.texturing.is_some() {
+                s.textures
+                    .push(r.texture.map(|(uv, l)| PixelTexture::new(uv, &l)));
+            }
         }
-        if let (Some(s), Some(t)) = (&mut self.shading, &r.terms) {
-            s.ambient[x] = t.ambient.to_array();
-            s.diffuse[x] = t.diffuse.to_array();
-            s.specular[x] = t.specular.to_array();
-            s.normal[x] = t.normal.to_array();
-            s.n_dot_l[x] = t.n_dot_l;
-            s.n_dot_h[x] = t.n_dot_h;
-            s.reflected[x] = t.reflected.to_array();
+        if let Some(out) = &mut self.shading {
+            out.set_row(&s.terms, &mut s.floats);
+        }
+        if let Some(out) = &mut self.texturing {
+            out.set_row(&s.textures, &mut s.floats);
         }
     }
 }
@@ -471,123 +492,97 @@ impl RowOut<'_> {
 /// resolved in parallel.
 fn split_rows(px: &mut PixelBuffers, w: usize, h: usize) -> Vec<RowOut<'_>> {
     let mut texture_rows: Vec<Option<TextureRow<'_>>> = match &mut px.texturing {
-        Some(tb) => tb
-            .uv
-            .chunks_mut(w)
-            .zip(tb.lod.chunks_mut(w))
-            .zip(tb.level.chunks_mut(w))
-            .zip(tb.texel.chunks_mut(w))
-            .zip(tb.footprint.chunks_mut(w))
-            .map(|((((uv, lod), level), texel), footprint)| {
-                Some(TextureRow {
-                    uv,
-                    lod,
-                    level,
-                    texel,
-                    footprint,
-                })
-            })
-            .collect(),
+        Some(tb) => tb.rows(w).into_iter().map(Some).collect(),
         None => (0..h).map(|_| None).collect(),
     };
     let mut shading_rows: Vec<Option<ShadingRow<'_>>> = match &mut px.shading {
-        Some(sb) => sb
-            .ambient
-            .chunks_mut(w)
-            .zip(sb.diffuse.chunks_mut(w))
-            .zip(sb.specular.chunks_mut(w))
-            .zip(sb.normal.chunks_mut(w))
-            .zip(sb.n_dot_l.chunks_mut(w))
-            .zip(sb.n_dot_h.chunks_mut(w))
-            .zip(sb.reflected.chunks_mut(w))
-            .map(
-                |((((((ambient, diffuse), specular), normal), n_dot_l), n_dot_h), reflected)| {
-                    Some(ShadingRow {
-                        ambient,
-                        diffuse,
-                        specular,
-                        normal,
-                        n_dot_l,
-                        n_dot_h,
-                        reflected,
-                    })
-                },
-            )
-            .collect(),
+        Some(sb) => sb.rows(w).into_iter().map(Some).collect(),
         None => (0..h).map(|_| None).collect(),
     };
-    let rows: Vec<RowOut<'_>> = px
-        .coverage
+    px.coverage
         .chunks_mut(w)
         .zip(px.depth.chunks_mut(w))
         .zip(px.primitive.chunks_mut(w))
-        .zip(px.bary_perspective.chunks_mut(w))
-        .zip(px.bary_affine.chunks_mut(w))
+        .zip(px.owner.chunks_mut(w))
         .zip(px.color.chunks_mut(w))
         .zip(shading_rows.drain(..).zip(texture_rows.drain(..)))
         .map(
-            |(
-                (((((coverage, depth), primitive), bary_perspective), bary_affine), color),
-                (shading, texturing),
-            )| RowOut {
+            |(((((coverage, depth), primitive), owner), color), (shading, texturing))| RowOut {
                 coverage,
                 depth,
                 primitive,
-                bary_perspective,
-                bary_affine,
+                owner,
                 color,
                 shading,
                 texturing,
             },
         )
-        .collect();
-    rows
+        .collect()
 }
 
-/// Resolves samples to pixels: coverage, mean depth, the owning primitive, barycentrics and
-/// colour at the pixel centre (once per pixel and triangle, as multisampling shades), and the
-/// lighting terms of the owning fragment. Rows are independent, so they are resolved in parallel.
-fn resolve(ctx: &ResolveContext<'_>) -> PixelBuffers {
+/// `v` holding `n` elements, reusing its storage (the resolve overwrites every element).
+fn sized<T: Clone>(mut v: Vec<T>, n: usize, fill: T) -> Vec<T> {
+    v.resize(n, fill);
+    v
+}
+
+/// The per-pixel buffers for a frame of `n` pixels, in `spare`'s storage when it has some:
+/// the lighting buffers when lighting is on and kept, the texturing buffers when an object is
+/// textured and they are kept.
+fn pixel_storage(spare: PixelBuffers, n: usize, lighting: bool, texturing: bool) -> PixelBuffers {
+    PixelBuffers {
+        coverage: sized(spare.coverage, n, 0),
+        depth: sized(spare.depth, n, 0.0),
+        primitive: sized(spare.primitive, n, NONE),
+        owner: sized(spare.owner, n, NONE),
+        color: sized(spare.color, n, [0.0; 3]),
+        shading: lighting.then(|| match spare.shading {
+            Some(s) => ShadingBuffers {
+                ambient: sized(s.ambient, n, [f16::ZERO; 3]),
+                diffuse: sized(s.diffuse, n, [f16::ZERO; 3]),
+                specular: sized(s.specular, n, [f16::ZERO; 3]),
+                normal: sized(s.normal, n, [f16::ZERO; 3]),
+                n_dot_l: sized(s.n_dot_l, n, f16::ZERO),
+                n_dot_h: sized(s.n_dot_h, n, f16::ZERO),
+                reflected: sized(s.reflected, n, [f16::ZERO; 3]),
+            },
+            None => ShadingBuffers::zeroed(n),
+        }),
+        texturing: texturing.then(|| match spare.texturing {
+            Some(t) => TextureBuffers {
+                uv: sized(t.uv, n, [0.0; 2]),
+                lod: sized(t.lod, n, f16::ZERO),
+                level: sized(t.level, n, f16::ZERO),
+                texel: sized(t.texel, n, [f16::ZERO; 3]),
+                footprint: sized(t.footprint, n, [f16::ZERO; 4]),
+            },
+            None => TextureBuffers::zeroed(n),
+        }),
+    }
+}
+
+/// Resolves samples to pixels: coverage, mean depth, the owning primitive and raster
+/// triangle, and the colour at the pixel centre (once per pixel and triangle, as multisampling
+/// shades), with the lighting terms and texture lookup of the owning fragment when the settings
+/// keep them. Rows are independent, so they are resolved in parallel.
+fn resolve(ctx: &ResolveContext<'_>, spare: PixelBuffers) -> PixelBuffers {
     let settings = ctx.settings;
-    let scene = ctx.scene;
     let (w, h) = (settings.width as usize, settings.height as usize);
-    let n = w * h;
-    let lit = settings.shading != Frequency::Unlit;
-    let textured = scene
-        .objects
-        .iter()
-        .any(|o| o.texture.is_some() && !o.mesh.uvs.is_empty());
-    let mut px = PixelBuffers {
-        coverage: vec![0; n],
-        depth: vec![0.0; n],
-        primitive: vec![NONE; n],
-        bary_perspective: vec![[0.0; 3]; n],
-        bary_affine: vec![[0.0; 3]; n],
-        color: vec![[0.0; 3]; n],
-        shading: lit.then(|| ShadingBuffers {
-            ambient: vec![[0.0; 3]; n],
-            diffuse: vec![[0.0; 3]; n],
-            specular: vec![[0.0; 3]; n],
-            normal: vec![[0.0; 3]; n],
-            n_dot_l: vec![0.0; n],
-            n_dot_h: vec![0.0; n],
-            reflected: vec![[0.0; 3]; n],
-        }),
-        texturing: textured.then(|| TextureBuffers {
-            uv: vec![[0.0; 2]; n],
-            lod: vec![0.0; n],
-            level: vec![0.0; n],
-            texel: vec![[0.0; 3]; n],
-            footprint: vec![[0.0; 4]; n],
-        }),
-    };
+    let lit = settings.shading != Frequency::Unlit && settings.capture.lighting;
+    let textured = settings.capture.texturing
+        && ctx
+            .scene
+            .objects
+            .iter()
+            .any(|o| o.texture.is_some() && !o.mesh.uvs.is_empty());
+    let mut px = pixel_storage(spare, w * h, lit, textured);
     let rows = split_rows(&mut px, w, h);
-    rows.into_par_iter().enumerate().for_each(|(row, mut out)| {
-        let y = (h - 1 - row) as u32;
-        for x in 0..w {
-            out.write(x, &ctx.pixel(x as u32, y, row * w + x));
-        }
-    });
+    rows.into_par_iter().enumerate().for_each_init(
+        RowScratch::default,
+        |scratch, (row, mut out)| {
+            out.resolve(ctx, row, (h - 1 - row) as u32, scratch);
+        },
+    );
     px
 }
 
@@ -736,8 +731,7 @@ impl ResolveContext<'_> {
             coverage: 0,
             depth: depths.iter().sum::<f32>() / s as f32,
             primitive: NONE,
-            bary_perspective: [0.0; 3],
-            bary_affine: [0.0; 3],
+            owner: NONE,
             color: background.to_array(),
         };
         let covered = tris.iter().filter(|&&t| t != NONE).count();
@@ -759,10 +753,8 @@ impl ResolveContext<'_> {
             }
         }
         let owner = &self.triangles[best.1 as usize];
-        let l = owner.lambda(centre);
         out.primitive = owner.primitive;
-        out.bary_perspective = owner.original_bary(l, true).to_array();
-        out.bary_affine = owner.original_bary(l, false).to_array();
+        out.owner = best.1;
         // Colour. Multisampling: each distinct triangle once, at the centre, weighted by its
         // samples. Supersampling: every covered sample shaded at its own position.
         let mut sum = background * (s - covered) as f32;

@@ -527,6 +527,78 @@ pub struct RenderSettings {
     pub per_sample_shading: bool,
     /// The clear colour, linear RGB in `[0, 1]`.
     pub background: Vec3,
+    /// Which per-pixel buffers to keep ([`Capture::FULL`]: all of them).
+    pub capture: Capture,
+}
+
+/// Which per-pixel buffers a frame keeps. The colour, coverage, depth and owner of each pixel
+/// (and from the owner its barycentrics) are always kept; the lighting terms and the texture
+/// lookups are computed for the colour in any case but stored only when asked for, so a view
+/// that shows only the final image does not pay for writing them (about 60 of a full capture's
+/// 85 bytes a pixel).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Capture {
+    /// Keep the lighting terms (ambient, diffuse, specular, normal, n·l, n·h, reflected), when
+    /// lighting is on.
+    pub lighting: bool,
+    /// Keep the texture lookups (uv, λ, level, texel, footprint), when an object is textured.
+    pub texturing: bool,
+}
+
+impl Capture {
+    /// Every buffer: what exports write and the inspector reads.
+    pub const FULL: Self = Self {
+        lighting: true,
+        texturing: true,
+    };
+    /// The colour, coverage, depth and owner only.
+    pub const COLOR: Self = Self {
+        lighting: false,
+        texturing: false,
+    };
+
+    /// What showing `kinds` needs.
+    #[must_use]
+    pub fn showing(kinds: impl IntoIterator<Item = crate::capture::BufferKind>) -> Self {
+        kinds.into_iter().fold(Self::COLOR, |c, k| Self {
+            lighting: c.lighting || k.is_lighting(),
+            texturing: c.texturing || k.is_texturing(),
+        })
+    }
+
+    /// Whether this selection keeps everything `other` keeps.
+    #[must_use]
+    pub fn covers(self, other: Self) -> bool {
+        (self.lighting || !other.lighting) && (self.texturing || !other.texturing)
+    }
+
+    /// Whether `kind` is kept.
+    #[must_use]
+    pub fn keeps(self, kind: crate::capture::BufferKind) -> bool {
+        (self.lighting || !kind.is_lighting()) && (self.texturing || !kind.is_texturing())
+    }
+
+    /// The bytes a pixel takes with this selection, at most (see [`CAPTURE_BYTES_PER_PIXEL`]).
+    #[must_use]
+    pub fn bytes_per_pixel(self) -> u64 {
+        CORE_BYTES_PER_PIXEL
+            + if self.lighting {
+                LIGHTING_BYTES_PER_PIXEL
+            } else {
+                0
+            }
+            + if self.texturing {
+                TEXTURING_BYTES_PER_PIXEL
+            } else {
+                0
+            }
+    }
+}
+
+impl Default for Capture {
+    fn default() -> Self {
+        Self::FULL
+    }
 }
 
 impl Default for RenderSettings {
@@ -543,6 +615,7 @@ impl Default for RenderSettings {
             sampler: crate::texture::Sampler::default(),
             per_sample_shading: false,
             background: Vec3::new(0.08, 0.09, 0.11),
+            capture: Capture::FULL,
         }
     }
 }
@@ -553,11 +626,18 @@ pub const MAX_VIEWPORT_SIDE: u32 = 16_384;
 /// a mistaken size is refused with a message instead of exhausting the machine.
 pub const MAX_CAPTURE_BYTES: u64 = 2 << 30;
 
-/// Bytes per pixel of a full capture: the core buffers (coverage 1, depth 4, primitive 4, two
-/// sets of barycentrics and the colour 3·12 = 45), the lighting buffers (ambient, diffuse,
-/// specular, normal, reflected 5·12, n·l and n·h 2·4 = 68) and the texturing buffers (uv 8, λ 4,
-/// level 4, texel 12, footprint 16 = 44): 157 in all.
-pub const CAPTURE_BYTES_PER_PIXEL: u64 = 157;
+/// Bytes per pixel of the buffers always kept: coverage 1, depth 4, primitive 4, owner 4 and
+/// the colour 3·4 = 12 (32-bit floats); the barycentrics are derived from the owner.
+pub const CORE_BYTES_PER_PIXEL: u64 = 25;
+/// Bytes per pixel of the lighting buffers, kept as half floats (11 significant bits, as a
+/// GPU's RGBA16F G-buffer): ambient, diffuse, specular, normal, reflected 5·3·2, n·l and n·h 2·2.
+pub const LIGHTING_BYTES_PER_PIXEL: u64 = 34;
+/// Bytes per pixel of the texturing buffers: uv 2·4 (32-bit: texel addresses need the bits),
+/// λ 2, level 2, texel 3·2 and footprint 4·2 (half floats).
+pub const TEXTURING_BYTES_PER_PIXEL: u64 = 26;
+/// Bytes per pixel of a full capture: 25 + 34 + 26 = 85.
+pub const CAPTURE_BYTES_PER_PIXEL: u64 =
+    CORE_BYTES_PER_PIXEL + LIGHTING_BYTES_PER_PIXEL + TEXTURING_BYTES_PER_PIXEL;
 /// Bytes per sample: its depth and its triangle (4 + 4).
 pub const CAPTURE_BYTES_PER_SAMPLE: u64 = 8;
 
@@ -568,12 +648,13 @@ impl RenderSettings {
         self.width as f32 / self.height as f32
     }
 
-    /// The memory a full capture at these settings takes, at most (every buffer kept):
-    /// `W·H·157 + W·H·S·8` bytes (see [`CAPTURE_BYTES_PER_PIXEL`]).
+    /// The memory the per-pixel and per-sample buffers of a capture at these settings take, at
+    /// most: `W·H·B + W·H·S·8` bytes with `B` the selection's bytes a pixel (85 for a full
+    /// capture, see [`CAPTURE_BYTES_PER_PIXEL`]).
     #[must_use]
     pub fn capture_bytes(&self) -> u64 {
         let pixels = u64::from(self.width) * u64::from(self.height);
-        pixels * CAPTURE_BYTES_PER_PIXEL
+        pixels * self.capture.bytes_per_pixel()
             + pixels * self.samples.count() as u64 * CAPTURE_BYTES_PER_SAMPLE
     }
 
@@ -669,6 +750,30 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// Whether a full capture of this scene at `settings` has buffer `kind` to show: the
+    /// lighting buffers when lighting is on (the reflected term when an object mirrors its
+    /// environment), the texturing buffers when an object is textured. Known before rendering,
+    /// so that a view can offer a buffer that the capture it shows did not keep.
+    #[must_use]
+    pub fn offers(&self, settings: &RenderSettings, kind: crate::capture::BufferKind) -> bool {
+        use crate::capture::BufferKind;
+        let lit = settings.shading != crate::shade::Frequency::Unlit;
+        if kind == BufferKind::Reflected {
+            lit && self
+                .objects
+                .iter()
+                .any(|o| o.lit && o.environment.is_some())
+        } else if kind.is_lighting() {
+            lit
+        } else if kind.is_texturing() {
+            self.objects
+                .iter()
+                .any(|o| o.texture.is_some() && !o.mesh.uvs.is_empty())
+        } else {
+            true
+        }
+    }
+
     /// The objects drawn and the figures' traversal: the scene's own objects, then every part
     /// of every figure (depth-first, with a matrix stack), then (with a planar shadow) the shadow
     /// pass, one unlit object `shadow of …` per object that casts one.

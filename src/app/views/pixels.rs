@@ -330,9 +330,8 @@ fn pixel_tooltip(ui: &mut Ui, capture: &FrameCapture, x: u32, y: u32, lang: Lang
         lang.tr("eye distance", "相机距离"),
         num(capture.eye_depth(px.depth[i]))
     ));
-    if px.primitive[i] != NONE {
-        let b = px.bary_perspective[i];
-        let a = px.bary_affine[i];
+    if let Some(bary) = capture.barycentrics(i) {
+        let (b, a) = (bary.perspective, bary.affine);
         ui.label(format!(
             "{}: {}",
             lang.tr("primitive", "图元"),
