@@ -4,9 +4,10 @@ use std::time::Duration;
 
 use glam::Vec3;
 use pipeline::mesh::BuiltinMesh;
+use pipeline::scene::Capture;
 use pipeline::scene::{Camera, Object, Projection, RenderSettings, Samples, Scene};
 use pipeline::shade::Frequency;
-use pipeline::{StageTimes, render_timed};
+use pipeline::{StageTimes, render_reusing, render_timed};
 
 /// One benchmark scene.
 pub struct BenchScene {
@@ -87,7 +88,8 @@ pub fn lit_textured_scene() -> BenchScene {
     }
 }
 
-/// The median of each stage over `frames` renders (after one warm-up).
+/// The median of each stage over `frames` renders (after one warm-up), each written into the
+/// storage of the one before, as the app renders.
 ///
 /// # Errors
 /// When the scene cannot be rendered.
@@ -96,10 +98,12 @@ pub fn measure(
     settings: &RenderSettings,
     frames: usize,
 ) -> anyhow::Result<StageTimes> {
-    render_timed(scene, settings)?;
+    let mut spare = Some(render_timed(scene, settings)?.0);
     let mut runs = Vec::with_capacity(frames);
     for _ in 0..frames.max(1) {
-        runs.push(render_timed(scene, settings)?.1);
+        let (capture, times) = render_reusing(scene, settings, spare.take())?;
+        spare = Some(capture);
+        runs.push(times);
     }
     let median = |f: fn(&StageTimes) -> Duration| {
         let mut v: Vec<Duration> = runs.iter().map(f).collect();
@@ -122,20 +126,20 @@ pub fn run(quick: bool, frames: Option<usize>, out: &mut dyn std::io::Write) -> 
     let ms = |d: Duration| d.as_secs_f64() * 1e3;
     writeln!(
         out,
-        "pipelens bench — medians in ms, {} thread(s) available\n",
-        std::thread::available_parallelism().map_or(1, usize::from)
+        "pipelens bench — medians in ms, {} thread(s) available; stages with every buffer \
+         captured, then the frame keeping the colour only (what the Output view keeps)\n",
+        rayon::current_num_threads()
     )?;
     writeln!(
         out,
-        "{:<26} {:>10} {:>7} {:>8} {:>11} {:>8} {:>8} {:>8}",
-        "scene", "size", "samples", "vertex", "clip+setup", "raster", "resolve", "frame"
+        "{:<26} {:>10} {:>7} {:>8} {:>11} {:>8} {:>8} {:>8} {:>8}",
+        "scene", "size", "samples", "vertex", "clip+setup", "raster", "resolve", "frame", "colour"
     )?;
     let cases = [
         (sphere_scene(10_000), 9, Frequency::Unlit),
         (sphere_scene(1_000_000), 3, Frequency::Unlit),
         (lit_textured_scene(), 5, Frequency::Phong),
     ];
-    let mut rows = Vec::new();
     for (bench, default_frames, shading) in cases {
         for samples in [Samples::X1, Samples::X4] {
             let settings = RenderSettings {
@@ -145,42 +149,98 @@ pub fn run(quick: bool, frames: Option<usize>, out: &mut dyn std::io::Write) -> 
                 shading,
                 ..RenderSettings::default()
             };
-            rows.push((
-                bench.name.clone(),
-                bench.scene.clone(),
-                settings,
-                default_frames,
-            ));
+            let n = frames.unwrap_or(if quick { 1 } else { default_frames });
+            let t = measure(&bench.scene, &settings, n)?;
+            let colour = RenderSettings {
+                capture: Capture::COLOR,
+                ..settings
+            };
+            let c = measure(&bench.scene, &colour, n)?;
+            writeln!(
+                out,
+                "{:<26} {:>10} {:>7} {:>8.2} {:>11.2} {:>8.2} {:>8.2} {:>8.2} {:>8.2}",
+                bench.name,
+                format!("{}×{}", settings.width, settings.height),
+                settings.samples.count(),
+                ms(t.vertex),
+                ms(t.clip_setup),
+                ms(t.raster),
+                ms(t.resolve),
+                ms(t.total()),
+                ms(c.total())
+            )?;
         }
     }
-    // What a slider drag waits for in the app: the built-in lesson's first scene at 960×540
-    // with its own settings (4 samples, Phong, shadows).
+    slider_drag(frames.unwrap_or(if quick { 1 } else { 15 }), out)?;
+    memory(out)
+}
+
+/// The memory of a full capture of the lit, textured scene at 1920×1080 with 4 samples:
+/// measured from the capture's own buffers and records.
+fn memory(out: &mut dyn std::io::Write) -> anyhow::Result<()> {
+    let settings = RenderSettings {
+        width: 1920,
+        height: 1080,
+        samples: Samples::X4,
+        shading: Frequency::Phong,
+        ..RenderSettings::default()
+    };
+    let c = pipeline::render(&lit_textured_scene().scene, &settings)?;
+    let mb = |b: u64| b as f64 / 1e6;
+    writeln!(
+        out,
+        "\nmemory of a full capture, lit textured scene, 1920×1080, 4 samples: {:.1} MB \
+         (buffers {:.1} MB = {} bytes a pixel + {} a sample; records {:.1} MB)",
+        mb(c.memory_bytes()),
+        mb(c.buffer_bytes()),
+        settings.capture.bytes_per_pixel(),
+        pipeline::scene::CAPTURE_BYTES_PER_SAMPLE,
+        mb(c.memory_bytes() - c.buffer_bytes())
+    )?;
+    Ok(())
+}
+
+/// What a slider drag waits for in the app: the built-in lesson's first step at 960×540, the
+/// render the app's worker does for it (the view's capture keeping what it shows, and the
+/// observer), and what inspecting a pixel adds (every buffer kept).
+fn slider_drag(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
+    use crate::app::session::Session;
     let tour = crate::lesson::default_lesson().map_err(|d| anyhow::anyhow!("{d}"))?;
-    let spec = tour.spec_at(0);
-    rows.push((
-        "tour lesson (slider drag)".to_owned(),
-        spec.scene,
-        RenderSettings {
-            width: 960,
-            height: 540,
-            ..spec.settings
-        },
-        9,
-    ));
-    for (name, scene, settings, default_frames) in rows {
-        let n = frames.unwrap_or(if quick { 1 } else { default_frames });
-        let t = measure(&scene, &settings, n)?;
+    let doc = crate::lesson::Document::Lesson(Box::new(tour));
+    let mut session = Session::with_document(doc, "bench", None);
+    session.spec.settings.width = 960;
+    session.spec.settings.height = 540;
+    writeln!(
+        out,
+        "\nslider drag on the tour lesson at 960×540, {} samples, as the app renders it \
+         (view + observer; medians of {frames}):",
+        session.spec.settings.samples.count()
+    )?;
+    for (label, pixel) in [
+        ("nothing inspected", None),
+        ("a pixel inspected", Some((480, 270))),
+    ] {
+        session.selection.pixel = pixel;
+        let job = session.job();
+        let mut spares = crate::app::worker::Spares::default();
+        let _ = job.clone().run(&mut spares);
+        let mut times = Vec::with_capacity(frames);
+        for _ in 0..frames.max(1) {
+            let t = std::time::Instant::now();
+            let done = job.clone().run(&mut spares);
+            times.push(t.elapsed());
+            let r = done.result.map_err(|e| anyhow::anyhow!(e))?;
+            spares.capture = std::sync::Arc::try_unwrap(r.capture).ok();
+            spares.observer = r.observer.and_then(|o| std::sync::Arc::try_unwrap(o).ok());
+        }
+        times.sort();
         writeln!(
             out,
-            "{:<26} {:>10} {:>7} {:>8.2} {:>11.2} {:>8.2} {:>8.2} {:>8.2}",
-            name,
-            format!("{}×{}", settings.width, settings.height),
-            settings.samples.count(),
-            ms(t.vertex),
-            ms(t.clip_setup),
-            ms(t.raster),
-            ms(t.resolve),
-            ms(t.total())
+            "  {:<20} stage {:<10} keeps {:<40} {:>8.2} ms",
+            label,
+            session.selection.stage.name(crate::app::i18n::Lang::En),
+            format!("{:?}", job.spec.settings.capture),
+            times[times.len() / 2].as_secs_f64() * 1e3
         )?;
     }
     Ok(())
@@ -312,19 +372,18 @@ fn peer_frame_ms(
         .context("the peer printed no median")
 }
 
-/// Runs pipelens and the peer on the shared data's meshes (when present), alternately, `rounds`
-/// times each, and prints both medians and their ratio per scene, size, samples and threads.
-///
-/// # Errors
-/// When a scene cannot be loaded or rendered, or the peer fails.
-pub fn run_against_peer(
-    peer: &Peer,
+/// The middle value of `v`.
+fn median(v: &mut [f64]) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// The bunny and the textured Spot under `data`, those that are present.
+fn peer_meshes(
     data: &std::path::Path,
-    quick: bool,
-    out: &mut dyn std::io::Write,
-) -> anyhow::Result<()> {
+) -> anyhow::Result<Vec<(std::path::PathBuf, Option<std::path::PathBuf>)>> {
     let spot = data.join("models/spot");
-    let meshes: Vec<(std::path::PathBuf, Option<std::path::PathBuf>)> = [
+    let meshes: Vec<_> = [
         (data.join("models/stanford-bunny.obj"), None),
         (
             spot.join("spot_triangulated_good.obj"),
@@ -339,15 +398,39 @@ pub fn run_against_peer(
         "no bunny or Spot under {}",
         data.display()
     );
+    Ok(meshes)
+}
+
+/// Runs pipelens and the peer on the shared data's meshes (when present), alternately, `rounds`
+/// times each, and prints both medians and their ratio per scene, size, samples and threads.
+///
+/// # Errors
+/// When a scene cannot be loaded or rendered, or the peer fails.
+pub fn run_against_peer(
+    peer: &Peer,
+    data: &std::path::Path,
+    quick: bool,
+    out: &mut dyn std::io::Write,
+) -> anyhow::Result<()> {
+    let meshes = peer_meshes(data)?;
     let (frames, rounds) = if quick { (3, 1) } else { (15, 3) };
     writeln!(
         out,
-        "\npipelens against llvmpipe — medians of {rounds} alternating rounds of {frames} frames, every buffer captured\n"
+        "\npipelens against llvmpipe — medians of {rounds} alternating rounds of {frames} frames; \
+         pipelens with every buffer captured (all) and with the colour only (colour)\n"
     )?;
     writeln!(
         out,
-        "{:<30} {:>10} {:>7} {:>7} {:>12} {:>12} {:>7}",
-        "scene", "size", "samples", "threads", "pipelens ms", "llvmpipe ms", "ratio"
+        "{:<30} {:>10} {:>7} {:>7} {:>9} {:>9} {:>12} {:>9} {:>9}",
+        "scene",
+        "size",
+        "samples",
+        "threads",
+        "all ms",
+        "colour ms",
+        "llvmpipe ms",
+        "all ×",
+        "colour ×"
     )?;
     let sizes: &[(u32, u32)] = if quick {
         &[(1280, 720)]
@@ -373,10 +456,16 @@ pub fn run_against_peer(
                     let pool = rayon::ThreadPoolBuilder::new()
                         .num_threads(threads)
                         .build()?;
-                    let (mut ours, mut theirs) = (Vec::new(), Vec::new());
+                    let colour = RenderSettings {
+                        capture: Capture::COLOR,
+                        ..settings
+                    };
+                    let (mut ours, mut shown, mut theirs) = (Vec::new(), Vec::new(), Vec::new());
                     for _ in 0..rounds {
                         let t = pool.install(|| measure(&bench.scene, &settings, frames))?;
                         ours.push(t.total().as_secs_f64() * 1e3);
+                        let t = pool.install(|| measure(&bench.scene, &colour, frames))?;
+                        shown.push(t.total().as_secs_f64() * 1e3);
                         theirs.push(peer_frame_ms(
                             peer,
                             mesh,
@@ -387,21 +476,19 @@ pub fn run_against_peer(
                             frames,
                         )?);
                     }
-                    let median = |v: &mut Vec<f64>| {
-                        v.sort_by(f64::total_cmp);
-                        v[v.len() / 2]
-                    };
-                    let (a, b) = (median(&mut ours), median(&mut theirs));
+                    let (a, c, b) = (median(&mut ours), median(&mut shown), median(&mut theirs));
                     writeln!(
                         out,
-                        "{:<30} {:>10} {:>7} {:>7} {:>12.2} {:>12.2} {:>6.2}×",
+                        "{:<30} {:>10} {:>7} {:>7} {:>9.2} {:>9.2} {:>12.2} {:>8.2}× {:>8.2}×",
                         bench.name,
                         format!("{}×{}", size.0, size.1),
                         samples.count(),
                         threads,
                         a,
+                        c,
                         b,
-                        a / b
+                        a / b,
+                        c / b
                     )?;
                 }
             }

@@ -640,29 +640,49 @@ impl Session {
         }
     }
 
-    /// Asks for a new capture when the view needs a buffer the latest one did not keep.
+    /// Whether the view shows the observer: beside a space, or beside a pixel stage that
+    /// compares nothing.
+    #[must_use]
+    pub fn observer_shown(&self) -> bool {
+        let sel = &self.selection;
+        sel.show_observer && (sel.stage.space().is_some() || sel.comparison.is_none())
+    }
+
+    /// Asks for a new capture when the view needs a buffer the latest one did not keep, or the
+    /// observer it did not render.
     pub fn ensure_captured(&mut self) {
-        let kept = self.capture.as_ref().map(|c| c.settings.capture);
-        if !self.rendering() && kept.is_some_and(|k| !k.covers(self.capture_needed())) {
+        let Some(kept) = self.capture.as_ref().map(|c| c.settings.capture) else {
+            return;
+        };
+        let missing = !kept.covers(self.capture_needed())
+            || (self.observer_shown() && self.observer.is_none() && self.error.is_none());
+        if !self.rendering() && missing {
             self.request_render();
+        }
+    }
+
+    /// The render the current view needs: the scene keeping what the view shows, the observer,
+    /// the compared settings.
+    #[must_use]
+    pub fn job(&self) -> Job {
+        let mut spec = self.spec.clone();
+        spec.settings.capture = self.capture_needed();
+        Job {
+            generation: self.generation,
+            variants: self
+                .selection
+                .comparison
+                .map(|c| c.variants(&spec.settings))
+                .unwrap_or_default(),
+            spec,
+            observer: self.observer_shown().then(|| self.orbit.camera()),
         }
     }
 
     /// Asks for a new capture of the current scene, keeping what the view shows.
     pub fn request_render(&mut self) {
         self.generation += 1;
-        let mut spec = self.spec.clone();
-        spec.settings.capture = self.capture_needed();
-        let job = Job {
-            generation: self.generation,
-            spec,
-            observer: self.orbit.camera(),
-            variants: self
-                .selection
-                .comparison
-                .map(|c| c.variants(&self.spec.settings))
-                .unwrap_or_default(),
-        };
+        let job = self.job();
         match &self.worker {
             Some(w) => w.submit(job),
             None => {
