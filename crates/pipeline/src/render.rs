@@ -144,7 +144,11 @@ fn render_stages(
     times.raster = t.elapsed();
 
     let t = Instant::now();
+    let sampler = &settings.sampler;
     let ctx = ResolveContext {
+        derivatives: settings.capture.texturing
+            || sampler.mipmap != crate::texture::Mipmap::None
+            || sampler.anisotropy > 1,
         scene,
         settings,
         samples: &samples,
@@ -588,6 +592,9 @@ fn resolve(ctx: &ResolveContext<'_>, spare: PixelBuffers) -> PixelBuffers {
 
 /// What the resolve of one pixel reads.
 struct ResolveContext<'a> {
+    /// Whether texture lookups need their screen derivatives: to choose a mip level or the
+    /// anisotropic taps, or because the texturing buffers (λ, level, footprint) are kept.
+    derivatives: bool,
     vertex_shading: &'a [ShadeTerms],
     face_shading: &'a [ShadeTerms],
     scene: &'a Scene,
@@ -623,9 +630,14 @@ impl ResolveContext<'_> {
             a * w.x + b * w.y + c * w.z
         };
         let uv = uv_at(centre);
+        let sampler = &self.settings.sampler;
+        if !self.derivatives {
+            // Neither the colour (one level, one tap) nor a kept buffer needs the footprint.
+            return Some((uv, texture.sample(uv, Vec2::ZERO, Vec2::ZERO, sampler)));
+        }
         let dx = uv_at(centre + I64Vec2::new(ONE, 0)) - uv;
         let dy = uv_at(centre + I64Vec2::new(0, ONE)) - uv;
-        Some((uv, texture.sample(uv, dx, dy, &self.settings.sampler)))
+        Some((uv, texture.sample(uv, dx, dy, sampler)))
     }
 
     /// The lighting of triangle `t` at weights `b` with surface colour `surface`, by the shading
@@ -740,6 +752,21 @@ impl ResolveContext<'_> {
         }
         out.coverage = covered as u8;
         let centre = FrameCapture::pixel_centre_fixed(x, y);
+        if covered == s && !self.settings.per_sample_shading && tris.iter().all(|&t| t == tris[0]) {
+            // Inside a triangle (the usual case): it owns the pixel and is shaded once. The
+            // general path below gives the same, (0·background + c·s)/s = c exactly, s being a
+            // power of two.
+            let owner = &self.triangles[tris[0] as usize];
+            let (color, terms, texel) = self.shade_at(owner, centre);
+            return ResolvedPixel {
+                terms,
+                texture: texel,
+                primitive: owner.primitive,
+                owner: tris[0],
+                color: color.to_array(),
+                ..out
+            };
+        }
         // The owning primitive: most samples, ties to the earliest sample.
         let mut best = (0usize, NONE);
         for &t in tris.iter().filter(|&&t| t != NONE) {

@@ -33,6 +33,37 @@ pub enum Wrap {
     Clamp,
 }
 
+impl Wrap {
+    /// Texel column or row `i` of a level `n` texels wide, wrapped: `i mod n` (repeat) or
+    /// `clamp(i, 0, n − 1)` (clamp). Inside the level it is `i` itself, with no division.
+    #[must_use]
+    #[inline]
+    pub fn index(self, i: i64, n: u32) -> usize {
+        let n = i64::from(n);
+        if (0..n).contains(&i) {
+            return i as usize;
+        }
+        match self {
+            Self::Repeat => i.rem_euclid(n) as usize,
+            Self::Clamp => i.clamp(0, n - 1) as usize,
+        }
+    }
+
+    /// Texel columns (or rows) `i` and `i + 1`, wrapped: [`Self::index`] of both; repeating,
+    /// the second follows from the first, `(i + 1) mod n = (i mod n + 1) mod n`.
+    #[must_use]
+    #[inline]
+    pub fn pair(self, i: i64, n: u32) -> (usize, usize) {
+        let first = self.index(i, n);
+        let second = match self {
+            Self::Repeat if first + 1 == n as usize => 0,
+            Self::Repeat => first + 1,
+            Self::Clamp => self.index(i + 1, n),
+        };
+        (first, second)
+    }
+}
+
 /// Filtering within one level.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -105,12 +136,8 @@ impl Level {
     /// Texel `(i, j)` with wrapping.
     #[must_use]
     pub fn texel(&self, i: i64, j: i64, wrap: Wrap) -> Vec3 {
-        let (w, h) = (i64::from(self.width), i64::from(self.height));
-        let (i, j) = match wrap {
-            Wrap::Repeat => (i.rem_euclid(w), j.rem_euclid(h)),
-            Wrap::Clamp => (i.clamp(0, w - 1), j.clamp(0, h - 1)),
-        };
-        self.texels[(j * w + i) as usize]
+        let (i, j) = (wrap.index(i, self.width), wrap.index(j, self.height));
+        self.texels[j * self.width as usize + i]
     }
 
     /// Nearest filtering at `(u, v)`.
@@ -129,10 +156,13 @@ impl Level {
         let (i, j) = (x.floor(), y.floor());
         let (s, t) = ((x - i) as f32, (y - j) as f32);
         let (i, j) = (i as i64, j as i64);
-        let bottom = self.texel(i, j, wrap).lerp(self.texel(i + 1, j, wrap), s);
-        let top = self
-            .texel(i, j + 1, wrap)
-            .lerp(self.texel(i + 1, j + 1, wrap), s);
+        // The 2×2 texels' columns and rows, each wrapped once (as `texel` would wrap them).
+        let (i0, i1) = wrap.pair(i, self.width);
+        let (j0, j1) = wrap.pair(j, self.height);
+        let w = self.width as usize;
+        let at = |i: usize, j: usize| self.texels[j * w + i];
+        let bottom = at(i0, j0).lerp(at(i1, j0), s);
+        let top = at(i0, j1).lerp(at(i1, j1), s);
         bottom.lerp(top, t)
     }
 
