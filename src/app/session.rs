@@ -493,6 +493,9 @@ pub struct Session {
     pub generation: u64,
     /// The generation of the capture on screen.
     pub shown_generation: u64,
+    /// Whether the latest render asked for the observer (it is not asked again when it could
+    /// not be rendered).
+    observer_asked: bool,
     /// The lesson being played, if a lesson was opened.
     pub lesson: Option<LessonPlayer>,
     /// Why the file on disk no longer loads (the last good version keeps running).
@@ -521,6 +524,7 @@ impl Session {
             lang: Lang::default(),
             generation: 0,
             shown_generation: 0,
+            observer_asked: false,
             lesson: None,
             reload_error: None,
             worker,
@@ -654,8 +658,8 @@ impl Session {
         let Some(kept) = self.capture.as_ref().map(|c| c.settings.capture) else {
             return;
         };
-        let missing = !kept.covers(self.capture_needed())
-            || (self.observer_shown() && self.observer.is_none() && self.error.is_none());
+        let missing =
+            !kept.covers(self.capture_needed()) || (self.observer_shown() && !self.observer_asked);
         if !self.rendering() && missing {
             self.request_render();
         }
@@ -683,6 +687,7 @@ impl Session {
     pub fn request_render(&mut self) {
         self.generation += 1;
         let job = self.job();
+        self.observer_asked = job.observer.is_some();
         match &self.worker {
             Some(w) => w.submit(job),
             None => {

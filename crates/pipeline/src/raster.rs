@@ -323,11 +323,20 @@ impl SampleBuffers {
     /// These buffers' storage, resized and cleared as [`Self::new`] makes them.
     #[must_use]
     pub fn cleared(mut self, width: u32, height: u32, samples: Samples, clear_depth: f32) -> Self {
+        use rayon::prelude::*;
         let n = width as usize * height as usize * samples.count();
-        self.depth.clear();
+        // Grown or shrunk, then cleared in parallel chunks (a clear is a memory-bound pass over
+        // tens of megabytes).
         self.depth.resize(n, clear_depth);
-        self.triangle.clear();
         self.triangle.resize(n, NONE);
+        const CHUNK: usize = 1 << 16;
+        self.depth
+            .par_chunks_mut(CHUNK)
+            .zip(self.triangle.par_chunks_mut(CHUNK))
+            .for_each(|(d, t)| {
+                d.fill(clear_depth);
+                t.fill(NONE);
+            });
         Self {
             width,
             height,
@@ -471,6 +480,41 @@ struct Band<'a> {
     offsets: &'a [I64Vec2],
 }
 
+/// Boxes at least this many pixels wide are scanned only over each row's span.
+const SPAN_MIN_WIDTH: u32 = 8;
+
+/// The pixels `a..=b` (offsets from the box's first column, within `0..=last`) of a row where
+/// some sample can be inside all three edges: sample `s` is inside edge `k` at offset `x` when
+/// `e_sk + x·step_k ≥ 0`, so for `step_k > 0` from `⌈−e_sk/step_k⌉` on and for `step_k < 0` up
+/// to `⌊e_sk/(−step_k)⌋`. The union over the samples; `None` when no sample can be inside.
+fn row_span(e: &[[i64; 3]], step: [i64; 3], last: u32) -> Option<(u32, u32)> {
+    let last = i64::from(last);
+    let mut span: Option<(i64, i64)> = None;
+    for es in e {
+        let (mut lo, mut hi) = (0i64, last);
+        for k in 0..3 {
+            let (v, d) = (es[k], step[k]);
+            if d > 0 {
+                if v < 0 {
+                    lo = lo.max((-v + d - 1) / d);
+                }
+            } else if d < 0 {
+                if v < 0 {
+                    hi = -1;
+                } else {
+                    hi = hi.min(v / -d);
+                }
+            } else if v < 0 {
+                hi = -1;
+            }
+        }
+        if lo <= hi {
+            span = Some(span.map_or((lo, hi), |(a, b)| (a.min(lo), b.max(hi))));
+        }
+    }
+    span.map(|(a, b)| (a as u32, b as u32))
+}
+
 impl Band<'_> {
     /// Rasterizes `tri` over this band's rows. The edge functions are evaluated once per row at
     /// the first pixel's samples and then stepped by `a·ONE` per pixel (they are linear in x);
@@ -496,7 +540,23 @@ impl Band<'_> {
             for (s, off) in self.offsets.iter().enumerate() {
                 e[s] = tri.edges.map(|edge| edge.at(corner + *off) + edge.bias);
             }
-            for x in x0..=x1 {
+            // Wide boxes: only the pixels between the first and the last that can have a
+            // covered sample in this row (found exactly, in integers), so the empty corners of
+            // the box are not scanned.
+            let (xs, xe) = if x1 - x0 >= SPAN_MIN_WIDTH {
+                let Some((a, b)) = row_span(&e[..n], step, x1 - x0) else {
+                    continue;
+                };
+                for es in &mut e[..n] {
+                    for k in 0..3 {
+                        es[k] += step[k] * i64::from(a);
+                    }
+                }
+                (x0 + a, x0 + b)
+            } else {
+                (x0, x1)
+            };
+            for x in xs..=xe {
                 let base = (row * self.width + x as usize) * n;
                 for (s, es) in e.iter_mut().enumerate().take(n) {
                     if (es[0] | es[1] | es[2]) >= 0 {
