@@ -256,47 +256,46 @@ pub struct TextureRow<'a> {
     footprint: &'a mut [[f16; 4]],
 }
 
+/// Half-float values a pixel's texture lookup has: λ, level, texel 3, footprint 4.
+pub const TEXTURE_HALVES: usize = 9;
+/// Half-float values a pixel's lighting has: ambient, diffuse, specular, normal, reflected 3
+/// each, n·l, n·h.
+pub const LIGHTING_HALVES: usize = 17;
+
 impl TextureRow<'_> {
-    /// Stores a row of lookups (`None`: no lookup there, zero), converting each field to half
-    /// floats in one pass (vectorised where the processor converts in hardware); `scratch` is
-    /// reused storage.
-    pub fn set_row(&mut self, row: &[Option<PixelTexture>], scratch: &mut Vec<f32>) {
-        let none = PixelTexture {
-            uv: [0.0; 2],
-            footprint: [0.0; 4],
-            lod: 0.0,
-            level: 0.0,
-            texel: [0.0; 3],
-        };
-        let at = |t: &Option<PixelTexture>| t.as_ref().unwrap_or(&none).clone();
-        for (x, t) in row.iter().enumerate() {
-            self.uv[x] = at(t).uv;
+    /// A lookup as the row stores it: its uv (kept at 32 bits) and its [`TEXTURE_HALVES`]
+    /// values in storage order (zero: no lookup).
+    #[must_use]
+    pub fn flatten(t: Option<&PixelTexture>) -> ([f32; 2], [f32; TEXTURE_HALVES]) {
+        t.map_or(([0.0; 2], [0.0; TEXTURE_HALVES]), |t| {
+            let ([a, b, c], [d, e, f, g]) = (t.texel, t.footprint);
+            (t.uv, [t.lod, t.level, a, b, c, d, e, f, g])
+        })
+    }
+
+    /// Stores a row: `uvs` and `floats` ([`TEXTURE_HALVES`] a pixel, from [`Self::flatten`])
+    /// converted to half floats in one pass (vectorised where the processor converts in
+    /// hardware) through the reused `halves`.
+    pub fn store(&mut self, uvs: &[[f32; 2]], floats: &[f32], halves: &mut Vec<f16>) {
+        self.uv.copy_from_slice(uvs);
+        for (x, h) in convert(floats, halves)
+            .chunks_exact(TEXTURE_HALVES)
+            .enumerate()
+        {
+            self.lod[x] = h[0];
+            self.level[x] = h[1];
+            self.texel[x] = [h[2], h[3], h[4]];
+            self.footprint[x] = [h[5], h[6], h[7], h[8]];
         }
-        to_half(self.lod, scratch, row.iter().map(|t| [at(t).lod]));
-        to_half(self.level, scratch, row.iter().map(|t| [at(t).level]));
-        to_half(
-            self.texel.as_flattened_mut(),
-            scratch,
-            row.iter().map(|t| at(t).texel),
-        );
-        to_half(
-            self.footprint.as_flattened_mut(),
-            scratch,
-            row.iter().map(|t| at(t).footprint),
-        );
     }
 }
 
-/// Writes the values of `values` (`N` a pixel) into `out` as half floats, through `scratch`.
-fn to_half<const N: usize>(
-    out: &mut [f16],
-    scratch: &mut Vec<f32>,
-    values: impl Iterator<Item = [f32; N]>,
-) {
+/// `floats` as half floats, in `halves`' storage.
+fn convert<'a>(floats: &[f32], halves: &'a mut Vec<f16>) -> &'a [f16] {
     use half::slice::HalfFloatSliceExt;
-    scratch.clear();
-    scratch.extend(values.flatten());
-    out.convert_from_f32_slice(scratch);
+    halves.resize(floats.len(), f16::ZERO);
+    halves.convert_from_f32_slice(floats);
+    halves
 }
 
 /// One image row of the lighting buffers (see [`ShadingBuffers::rows`]).
@@ -311,29 +310,38 @@ pub struct ShadingRow<'a> {
 }
 
 impl ShadingRow<'_> {
-    /// Stores a row of lighting terms (`None`: unlit there, zero), converting each field to
-    /// half floats in one pass; `scratch` is reused storage.
-    pub fn set_row(&mut self, row: &[Option<crate::shade::ShadeTerms>], scratch: &mut Vec<f32>) {
-        let none = crate::shade::ShadeTerms::default();
-        let at = |t: &Option<crate::shade::ShadeTerms>| *t.as_ref().unwrap_or(&none);
-        let v3 = |f: fn(&crate::shade::ShadeTerms) -> Vec3| {
-            row.iter().map(move |t| f(&at(t)).to_array())
+    /// Lighting terms as the row stores them, in storage order (zero: unlit there).
+    #[must_use]
+    pub fn flatten(t: Option<&crate::shade::ShadeTerms>) -> [f32; LIGHTING_HALVES] {
+        let Some(t) = t else {
+            return [0.0; LIGHTING_HALVES];
         };
-        to_half(self.ambient.as_flattened_mut(), scratch, v3(|t| t.ambient));
-        to_half(self.diffuse.as_flattened_mut(), scratch, v3(|t| t.diffuse));
-        to_half(
-            self.specular.as_flattened_mut(),
-            scratch,
-            v3(|t| t.specular),
-        );
-        to_half(self.normal.as_flattened_mut(), scratch, v3(|t| t.normal));
-        to_half(
-            self.reflected.as_flattened_mut(),
-            scratch,
-            v3(|t| t.reflected),
-        );
-        to_half(self.n_dot_l, scratch, row.iter().map(|t| [at(t).n_dot_l]));
-        to_half(self.n_dot_h, scratch, row.iter().map(|t| [at(t).n_dot_h]));
+        let mut out = [0.0; LIGHTING_HALVES];
+        for (k, v) in [t.ambient, t.diffuse, t.specular, t.normal, t.reflected]
+            .into_iter()
+            .enumerate()
+        {
+            out[3 * k..3 * k + 3].copy_from_slice(&v.to_array());
+        }
+        (out[15], out[16]) = (t.n_dot_l, t.n_dot_h);
+        out
+    }
+
+    /// Stores a row: `floats` ([`LIGHTING_HALVES`] a pixel, from [`Self::flatten`]) converted to
+    /// half floats in one pass through the reused `halves`.
+    pub fn store(&mut self, floats: &[f32], halves: &mut Vec<f16>) {
+        for (x, h) in convert(floats, halves)
+            .chunks_exact(LIGHTING_HALVES)
+            .enumerate()
+        {
+            self.ambient[x] = [h[0], h[1], h[2]];
+            self.diffuse[x] = [h[3], h[4], h[5]];
+            self.specular[x] = [h[6], h[7], h[8]];
+            self.normal[x] = [h[9], h[10], h[11]];
+            self.reflected[x] = [h[12], h[13], h[14]];
+            self.n_dot_l[x] = h[15];
+            self.n_dot_h[x] = h[16];
+        }
     }
 }
 

@@ -452,13 +452,14 @@ struct RowOut<'a> {
     texturing: Option<TextureRow<'a>>,
 }
 
-/// A resolve task's reused storage: a row's lighting terms and lookups before they are
-/// converted to half floats.
+/// A resolve task's reused storage: a row's lighting terms and lookups as 32-bit floats, before
+/// they are converted to half floats.
 #[derive(Default)]
 struct RowScratch {
-    terms: Vec<Option<ShadeTerms>>,
-    textures: Vec<Option<PixelTexture>>,
-    floats: Vec<f32>,
+    lighting: Vec<f32>,
+    uvs: Vec<[f32; 2]>,
+    texturing: Vec<f32>,
+    halves: Vec<f16>,
 }
 
 impl RowOut<'_> {
@@ -466,8 +467,9 @@ impl RowOut<'_> {
     /// holds nothing of the frame before.
     fn resolve(&mut self, ctx: &ResolveContext<'_>, row: usize, y: u32, s: &mut RowScratch) {
         let w = self.color.len();
-        s.terms.clear();
-        s.textures.clear();
+        s.lighting.clear();
+        s.uvs.clear();
+        s.texturing.clear();
         for x in 0..w {
             let r = ctx.pixel(x as u32, y, row * w + x);
             self.coverage[x] = r.coverage;
@@ -476,18 +478,21 @@ impl RowOut<'_> {
             self.owner[x] = r.owner;
             self.color[x] = r.color;
             if self.shading.is_some() {
-                s.terms.push(r.terms);
+                s.lighting
+                    .extend_from_slice(&ShadingRow::flatten(r.terms.as_ref()));
             }
             if self.texturing.is_some() {
-                s.textures
-                    .push(r.texture.map(|(uv, l)| PixelTexture::new(uv, &l)));
+                let t = r.texture.map(|(uv, l)| PixelTexture::new(uv, &l));
+                let (uv, halves) = TextureRow::flatten(t.as_ref());
+                s.uvs.push(uv);
+                s.texturing.extend_from_slice(&halves);
             }
         }
         if let Some(out) = &mut self.shading {
-            out.set_row(&s.terms, &mut s.floats);
+            out.store(&s.lighting, &mut s.halves);
         }
         if let Some(out) = &mut self.texturing {
-            out.set_row(&s.textures, &mut s.floats);
+            out.store(&s.uvs, &s.texturing, &mut s.halves);
         }
     }
 }
