@@ -117,7 +117,9 @@ fuzz_target!(|input: Input| {
         );
         assert!(px.depth.iter().all(|x| x.is_finite()), "NaN depth");
         assert!(
-            px.bary_perspective.iter().flatten().all(|x| x.is_finite()),
+            (0..px.owner.len())
+                .filter_map(|i| c.barycentrics(i))
+                .all(|b| b.perspective.iter().chain(&b.affine).all(|x| x.is_finite())),
             "NaN barycentrics"
         );
         // Every pixel's record can be built (the inspector's path).

@@ -624,3 +624,28 @@ fn reusing_a_capture_s_storage_gives_the_same_frame() {
         .0;
     assert_eq!(reused, fresh);
 }
+
+#[test]
+fn wrapping_a_texel_index_is_the_modulo_or_the_clamp() {
+    // The fast paths (no division inside the level, the neighbour from the first index) agree
+    // with the definitions on every index around several levels' edges.
+    for n in [1u32, 2, 3, 7, 64] {
+        for i in -200i64..200 {
+            let m = i64::from(n);
+            let repeat = i.rem_euclid(m) as usize;
+            let clamp = i.clamp(0, m - 1) as usize;
+            assert_eq!(Wrap::Repeat.index(i, n), repeat, "repeat {i} mod {n}");
+            assert_eq!(Wrap::Clamp.index(i, n), clamp, "clamp {i} to {n}");
+            assert_eq!(
+                Wrap::Repeat.pair(i, n),
+                (repeat, (i + 1).rem_euclid(m) as usize),
+                "repeat pair at {i}, {n}"
+            );
+            assert_eq!(
+                Wrap::Clamp.pair(i, n),
+                (clamp, (i + 1).clamp(0, m - 1) as usize),
+                "clamp pair at {i}, {n}"
+            );
+        }
+    }
+}
