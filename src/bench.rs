@@ -236,10 +236,14 @@ fn slider_drag(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()
         times.sort();
         writeln!(
             out,
-            "  {:<20} stage {:<10} keeps {:<40} {:>8.2} ms",
+            "  {:<20} stage {:<10} keeps {:<16} {:>8.2} ms",
             label,
             session.selection.stage.name(crate::app::i18n::Lang::En),
-            format!("{:?}", job.spec.settings.capture),
+            match job.spec.settings.capture {
+                Capture::FULL => "every buffer",
+                Capture::COLOR => "the colour only",
+                _ => "some buffers",
+            },
             times[times.len() / 2].as_secs_f64() * 1e3
         )?;
     }
