@@ -202,6 +202,17 @@ impl PixelView {
         if sel.buffer == BufferKind::MipLevel {
             draw_mip_legend(&painter, rect, lang);
         }
+        if !capture.settings.capture.keeps(sel.buffer) {
+            // The capture shown kept only what the previous view needed; the render that keeps
+            // this buffer is under way.
+            painter.text(
+                rect.center(),
+                egui::Align2::CENTER_CENTER,
+                lang.tr("rendering this buffer…", "正在渲染此缓冲…"),
+                egui::FontId::proportional(18.0),
+                Color32::from_gray(220),
+            );
+        }
         // Hover: the values of the pixel under the cursor; click: inspect it.
         if let Some(pos) = response.hover_pos()
             && let Some((c, y)) = view.window_pixel(pos, capture)
