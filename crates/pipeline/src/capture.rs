@@ -125,16 +125,16 @@ pub struct TextureBuffers {
 }
 
 impl TextureBuffers {
-    /// Buffers for `n` pixels, zero.
+    /// These buffers' storage holding `n` pixels (the new ones zero; from `default()`: new
+    /// buffers).
     #[must_use]
-    pub fn zeroed(n: usize) -> Self {
-        Self {
-            uv: vec![[0.0; 2]; n],
-            lod: vec![f16::ZERO; n],
-            level: vec![f16::ZERO; n],
-            texel: vec![[f16::ZERO; 3]; n],
-            footprint: vec![[f16::ZERO; 4]; n],
-        }
+    pub fn resized(mut self, n: usize) -> Self {
+        self.uv.resize(n, [0.0; 2]);
+        self.lod.resize(n, f16::ZERO);
+        self.level.resize(n, f16::ZERO);
+        self.texel.resize(n, [f16::ZERO; 3]);
+        self.footprint.resize(n, [f16::ZERO; 4]);
+        self
     }
 
     /// The buffers cut into image rows of `width` pixels, to be written in parallel.
@@ -190,19 +190,22 @@ pub struct ShadingBuffers {
 }
 
 impl ShadingBuffers {
-    /// Buffers for `n` pixels, zero.
+    /// These buffers' storage holding `n` pixels (the new ones zero; from `default()`: new
+    /// buffers).
     #[must_use]
-    pub fn zeroed(n: usize) -> Self {
-        let v3 = || vec![[f16::ZERO; 3]; n];
-        Self {
-            ambient: v3(),
-            diffuse: v3(),
-            specular: v3(),
-            normal: v3(),
-            n_dot_l: vec![f16::ZERO; n],
-            n_dot_h: vec![f16::ZERO; n],
-            reflected: v3(),
+    pub fn resized(mut self, n: usize) -> Self {
+        for v in [
+            &mut self.ambient,
+            &mut self.diffuse,
+            &mut self.specular,
+            &mut self.normal,
+            &mut self.reflected,
+        ] {
+            v.resize(n, [f16::ZERO; 3]);
         }
+        self.n_dot_l.resize(n, f16::ZERO);
+        self.n_dot_h.resize(n, f16::ZERO);
+        self
     }
 
     /// The buffers cut into image rows of `width` pixels, to be written in parallel.

@@ -12,7 +12,7 @@ use serde::Serialize;
 
 use crate::capture::{
     Fate, FrameCapture, Matrices, ObjectSummary, PixelBuffers, PixelTexture, PrimitiveRecord,
-    ShadingBuffers, ShadingRow, TextureBuffers, TextureRow,
+    ShadingRow, TextureRow,
 };
 use crate::clip::{self, ClipOutcome, ClipVertex};
 use crate::raster::{NONE, ONE, RasterCounts, RasterTriangle, SampleBuffers, SetupRejection};
@@ -545,28 +545,8 @@ fn pixel_storage(spare: PixelBuffers, n: usize, lighting: bool, texturing: bool)
         primitive: sized(spare.primitive, n, NONE),
         owner: sized(spare.owner, n, NONE),
         color: sized(spare.color, n, [0.0; 3]),
-        shading: lighting.then(|| match spare.shading {
-            Some(s) => ShadingBuffers {
-                ambient: sized(s.ambient, n, [f16::ZERO; 3]),
-                diffuse: sized(s.diffuse, n, [f16::ZERO; 3]),
-                specular: sized(s.specular, n, [f16::ZERO; 3]),
-                normal: sized(s.normal, n, [f16::ZERO; 3]),
-                n_dot_l: sized(s.n_dot_l, n, f16::ZERO),
-                n_dot_h: sized(s.n_dot_h, n, f16::ZERO),
-                reflected: sized(s.reflected, n, [f16::ZERO; 3]),
-            },
-            None => ShadingBuffers::zeroed(n),
-        }),
-        texturing: texturing.then(|| match spare.texturing {
-            Some(t) => TextureBuffers {
-                uv: sized(t.uv, n, [0.0; 2]),
-                lod: sized(t.lod, n, f16::ZERO),
-                level: sized(t.level, n, f16::ZERO),
-                texel: sized(t.texel, n, [f16::ZERO; 3]),
-                footprint: sized(t.footprint, n, [f16::ZERO; 4]),
-            },
-            None => TextureBuffers::zeroed(n),
-        }),
+        shading: lighting.then(|| spare.shading.unwrap_or_default().resized(n)),
+        texturing: texturing.then(|| spare.texturing.unwrap_or_default().resized(n)),
     }
 }
 
