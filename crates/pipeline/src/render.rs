@@ -144,11 +144,8 @@ fn render_stages(
     times.raster = t.elapsed();
 
     let t = Instant::now();
-    let sampler = &settings.sampler;
     let ctx = ResolveContext {
-        derivatives: settings.capture.texturing
-            || sampler.mipmap != crate::texture::Mipmap::None
-            || sampler.anisotropy > 1,
+        derivatives: settings.capture.texturing || settings.sampler.uses_footprint(),
         scene,
         settings,
         samples: &samples,

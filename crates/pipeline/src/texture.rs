@@ -103,6 +103,16 @@ pub struct Sampler {
     pub lod_bias: f32,
 }
 
+impl Sampler {
+    /// Whether the colour a lookup returns depends on the screen derivatives of uv: to choose
+    /// a mip level, or to place anisotropic taps. Without either, [`Texture::sample`] reads
+    /// level 0 once whatever the footprint is.
+    #[must_use]
+    pub fn uses_footprint(&self) -> bool {
+        self.mipmap != Mipmap::None || self.anisotropy > 1
+    }
+}
+
 impl Default for Sampler {
     fn default() -> Self {
         Self {
