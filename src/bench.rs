@@ -3,9 +3,12 @@
 use std::time::Duration;
 
 use glam::Vec3;
+use pipeline::buffers::Capture;
+use pipeline::camera::{Camera, Projection};
 use pipeline::mesh::BuiltinMesh;
-use pipeline::scene::Capture;
-use pipeline::scene::{Camera, Object, Projection, RenderSettings, Samples, Scene};
+use pipeline::raster::Samples;
+use pipeline::scene::{Object, Scene};
+use pipeline::settings::RenderSettings;
 use pipeline::shade::Frequency;
 use pipeline::{StageTimes, render_reusing, render_timed};
 
@@ -46,7 +49,8 @@ pub fn sphere_scene(triangles: u32) -> BenchScene {
 /// and an ambient light), trilinear filtering: the textured, lit scene of the benchmark.
 #[must_use]
 pub fn lit_textured_scene() -> BenchScene {
-    use pipeline::scene::{ColorSource, Light};
+    use pipeline::light::Light;
+    use pipeline::scene::ColorSource;
     let mut floor = Object::new(
         "floor",
         BuiltinMesh::Plane {
@@ -194,7 +198,7 @@ fn memory(out: &mut dyn std::io::Write) -> anyhow::Result<()> {
         mb(c.memory_bytes()),
         mb(c.buffer_bytes()),
         settings.capture.bytes_per_pixel(),
-        pipeline::scene::CAPTURE_BYTES_PER_SAMPLE,
+        pipeline::buffers::CAPTURE_BYTES_PER_SAMPLE,
         mb(c.memory_bytes() - c.buffer_bytes())
     )?;
     Ok(())
@@ -271,7 +275,8 @@ pub fn obj_scene(
     mesh: &std::path::Path,
     texture: Option<&std::path::Path>,
 ) -> anyhow::Result<BenchScene> {
-    use pipeline::scene::{ColorSource, Light, Material};
+    use pipeline::light::{Light, Material};
+    use pipeline::scene::ColorSource;
     let m = pipeline::mesh::Mesh::load_obj(mesh)?;
     let (lo, hi) = m.positions.iter().fold(
         (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),

@@ -8,7 +8,8 @@ use std::str::FromStr;
 use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
 use pipeline::capture::FrameCapture;
-use pipeline::scene::{MAX_VIEWPORT_SIDE, RenderSettings, Samples};
+use pipeline::raster::Samples;
+use pipeline::settings::{MAX_VIEWPORT_SIDE, RenderSettings};
 use pipeline::shade::Frequency;
 
 use crate::export::ExportOptions;

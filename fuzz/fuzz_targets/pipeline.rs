@@ -6,9 +6,11 @@ use arbitrary::Arbitrary;
 use glam::{Vec2, Vec3};
 use libfuzzer_sys::fuzz_target;
 use pipeline::mesh::Mesh;
-use pipeline::scene::{
-    Camera, CullMode, Light, Object, Projection, RenderSettings, Samples, Scene,
-};
+use pipeline::camera::{Camera, Projection};
+use pipeline::light::Light;
+use pipeline::raster::{CullMode, Samples};
+use pipeline::scene::{Object, Scene};
+use pipeline::settings::RenderSettings;
 use pipeline::shade::Frequency;
 
 #[derive(Debug, Arbitrary)]

@@ -11,7 +11,8 @@ use std::path::PathBuf;
 use std::sync::Arc;
 use std::sync::mpsc::{Receiver, channel};
 
-use pipeline::scene::{Capture, RenderSettings};
+use pipeline::buffers::Capture;
+use pipeline::settings::RenderSettings;
 
 use egui::{FontData, FontFamily, RichText};
 
@@ -287,7 +288,7 @@ impl PipelensApp {
                 .pixel_view
                 .toolbar(ui, &sel, &self.session.buffers, lang);
             self.commands.extend(c);
-            if sel.buffer == pipeline::capture::BufferKind::Depth
+            if sel.buffer == pipeline::buffers::BufferKind::Depth
                 && let Some(c) = PixelView::depth_controls(ui, &sel, capture, lang)
             {
                 self.commands.push(c);

@@ -6,9 +6,13 @@ use std::sync::Arc;
 
 use glam::Vec3;
 use pipeline::StageTimes;
-use pipeline::capture::{BufferKind, FrameCapture};
+use pipeline::buffers::BufferKind;
+use pipeline::buffers::Capture;
+use pipeline::camera::Camera;
+use pipeline::capture::FrameCapture;
 use pipeline::overlay::OverlayKind;
-use pipeline::scene::{Camera, Capture, RenderSettings, Samples};
+use pipeline::raster::Samples;
+use pipeline::settings::RenderSettings;
 use pipeline::shade::Frequency;
 use pipeline::texture::{Filter, Mipmap, Sampler};
 

@@ -5,9 +5,13 @@ use std::sync::Arc;
 use std::sync::mpsc::{Receiver, Sender, TryRecvError, channel};
 
 use pipeline::StageTimes;
-use pipeline::capture::BufferKind;
+use pipeline::buffers::BufferKind;
+use pipeline::buffers::Capture;
+use pipeline::camera::{Camera, Projection};
 use pipeline::capture::FrameCapture;
-use pipeline::scene::{Camera, Capture, Projection, RenderSettings, Samples, Scene};
+use pipeline::raster::Samples;
+use pipeline::scene::Scene;
+use pipeline::settings::RenderSettings;
 
 use crate::lesson::SceneSpec;
 

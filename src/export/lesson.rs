@@ -7,7 +7,8 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use anyhow::{Context, Result};
-use pipeline::capture::{BufferKind, FrameCapture};
+use pipeline::buffers::BufferKind;
+use pipeline::capture::FrameCapture;
 use pipeline::transform::NamedMatrix;
 
 use super::{ExportFile, ExportOptions, encode_capture, png_rgba, profile_csv, write_files};

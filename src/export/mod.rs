@@ -10,7 +10,8 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
 use image::{ImageEncoder, codecs::png::PngEncoder};
-use pipeline::capture::{BufferKind, FrameCapture};
+use pipeline::buffers::BufferKind;
+use pipeline::capture::FrameCapture;
 use pipeline::overlay::OverlayKind;
 
 pub use json::capture_json;

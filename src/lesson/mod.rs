@@ -18,7 +18,8 @@ pub use script::{Lesson, Step, Text};
 use std::path::{Path, PathBuf};
 
 pub use diagnostic::{Diagnostic, Diagnostics};
-use pipeline::scene::{RenderSettings, Scene};
+use pipeline::scene::Scene;
+use pipeline::settings::RenderSettings;
 
 /// The scene built into pipelens, used when no file is given.
 pub const DEFAULT_SCENE: &str = include_str!("../../assets/scenes/default.toml");

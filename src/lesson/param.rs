@@ -3,7 +3,8 @@
 //! animations between two values over time.
 
 use glam::Vec3;
-use pipeline::scene::{Projection, Samples};
+use pipeline::camera::Projection;
+use pipeline::raster::Samples;
 
 use super::SceneSpec;
 use super::validate::{CULL, DEPTH_TEST, FILTER, MIPMAP, REFLECTION, SHADING, WRAP};
@@ -438,8 +439,8 @@ fn render(spec: &mut SceneSpec, key: &str, v: &Value) -> Result<(), Problem> {
     Ok(())
 }
 
-fn light_param(light: &mut pipeline::scene::Light, key: &str, v: &Value) -> Result<(), Problem> {
-    use pipeline::scene::Light;
+fn light_param(light: &mut pipeline::light::Light, key: &str, v: &Value) -> Result<(), Problem> {
+    use pipeline::light::Light;
     match (light, key) {
         (Light::Point { position, .. } | Light::Spot { position, .. }, "position") => {
             *position = vec3(v)?;

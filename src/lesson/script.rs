@@ -4,7 +4,7 @@
 
 use std::path::Path;
 
-use pipeline::capture::BufferKind;
+use pipeline::buffers::BufferKind;
 use toml::Spanned;
 
 use super::param::{self, Animation, Easing, Repeat, Value};

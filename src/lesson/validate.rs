@@ -5,12 +5,13 @@ use std::ops::Range;
 use std::path::Path;
 
 use glam::Vec3;
+use pipeline::camera::{Camera, Projection};
 use pipeline::hierarchy::{Figure, Humanoid, Pose, RobotArm};
+use pipeline::light::{Light, Material};
 use pipeline::mesh::{BuiltinMesh, Mesh};
-use pipeline::scene::{
-    Camera, ColorSource, CullMode, DepthTest, Light, MAX_VIEWPORT_SIDE, Material, Object,
-    PlanarShadow, Projection, RenderSettings, Samples, Scene,
-};
+use pipeline::raster::{CullMode, DepthTest, Samples};
+use pipeline::scene::{ColorSource, Object, PlanarShadow, Scene};
+use pipeline::settings::{MAX_VIEWPORT_SIDE, RenderSettings};
 use pipeline::shade::{Frequency, Reflection};
 use pipeline::texture::{
     CubeMap, Displacement, Environment, Filter, Mipmap, SurfaceDetail, Texture, Wrap,

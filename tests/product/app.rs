@@ -98,7 +98,7 @@ fn clicking_a_pixel_lists_its_fragments() {
     let capture = h.state().session.capture.clone().expect("a capture");
     assert_eq!(
         capture.settings.capture,
-        pipeline::scene::Capture::FULL,
+        pipeline::buffers::Capture::FULL,
         "an inspected pixel shows every term"
     );
     let fragments = capture.fragments_at(x, y);
@@ -112,8 +112,8 @@ fn clicking_a_pixel_lists_its_fragments() {
 
 #[test]
 fn the_capture_keeps_what_the_view_shows() {
-    use pipeline::capture::BufferKind;
-    use pipeline::scene::Capture;
+    use pipeline::buffers::BufferKind;
+    use pipeline::buffers::Capture;
     let mut h = harness();
     h.run();
     let kept = |h: &Harness<'static, PipelensApp>| {

@@ -236,7 +236,7 @@ fn a_million_faces_load_and_render() {
         objects: vec![pipeline::scene::Object::new("grid", mesh)],
         ..scene_looking_at_the_origin()
     };
-    let settings = pipeline::scene::RenderSettings {
+    let settings = pipeline::settings::RenderSettings {
         width: 64,
         height: 64,
         shading: pipeline::shade::Frequency::Unlit,
@@ -249,12 +249,12 @@ fn a_million_faces_load_and_render() {
 fn scene_looking_at_the_origin() -> pipeline::scene::Scene {
     pipeline::scene::Scene {
         objects: Vec::new(),
-        camera: pipeline::scene::Camera {
+        camera: pipeline::camera::Camera {
             eye: glam::Vec3::new(0.0, 0.0, 1.5),
             at: glam::Vec3::ZERO,
             up: glam::Vec3::Y,
         },
-        projection: pipeline::scene::Projection::default(),
+        projection: pipeline::camera::Projection::default(),
         lights: Vec::new(),
         shadow: None,
         figures: Vec::new(),

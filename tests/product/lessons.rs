@@ -259,7 +259,7 @@ fn later_steps_keep_earlier_settings() {
     ));
     let lesson = parse_lesson(&text, "t.toml", Path::new(".")).unwrap_or_else(|e| panic!("{e}"));
     let fovy = |k: usize| match lesson.spec_at(k).scene.projection {
-        pipeline::scene::Projection::Perspective { fovy_deg, .. } => fovy_deg,
+        pipeline::camera::Projection::Perspective { fovy_deg, .. } => fovy_deg,
         _ => f32::NAN,
     };
     assert_eq!((fovy(0), fovy(1), fovy(2)), (60.0, 60.0, 60.0));

@@ -15,7 +15,7 @@ fn games101_assignment_2_without_antialiasing_matches_pixel_for_pixel() {
     let spec = pipelens::lesson::load_scene_file(&repo().join("assets/scenes/games101_a2.toml"))
         .expect("scene");
     let capture = pipeline::render(&spec.scene, &spec.settings).expect("renders");
-    let ours = capture.image(pipeline::capture::BufferKind::Color);
+    let ours = capture.image(pipeline::buffers::BufferKind::Color);
     assert_eq!((ours.width(), ours.height()), reference.dimensions());
     let differing = ours
         .pixels()
@@ -36,9 +36,12 @@ fn games101_assignment_2_without_antialiasing_matches_pixel_for_pixel() {
 fn spot_scene(
     data: &std::path::Path,
     surface: glam::Vec3,
-) -> (pipeline::scene::Scene, pipeline::scene::RenderSettings) {
+) -> (pipeline::scene::Scene, pipeline::settings::RenderSettings) {
     use glam::Vec3;
-    use pipeline::scene::{Camera, Light, Object, Projection, RenderSettings};
+    use pipeline::camera::{Camera, Projection};
+    use pipeline::light::Light;
+    use pipeline::scene::Object;
+    use pipeline::settings::RenderSettings;
     let mesh = pipeline::mesh::Mesh::load_obj(&data.join("models/spot/spot_triangulated_good.obj"))
         .expect("Spot loads");
     let mut spot = Object::new("spot", mesh);
@@ -47,7 +50,7 @@ fn spot_scene(
     spot.color = pipeline::scene::ColorSource::Uniform(surface);
     // The assignment's ambient term is k_a·I_a, not modulated by the surface colour as ours is:
     // k_a = 0.005 ⊘ surface gives the same product.
-    spot.material = pipeline::scene::Material {
+    spot.material = pipeline::light::Material {
         ka: Vec3::splat(0.005) / surface,
         kd: Vec3::ONE,
         ks: Vec3::splat(0.7937),
@@ -86,7 +89,7 @@ fn spot_scene(
         height: 700,
         perspective_correct: false,
         shading: pipeline::shade::Frequency::Phong,
-        cull: pipeline::scene::CullMode::None,
+        cull: pipeline::raster::CullMode::None,
         background: Vec3::ZERO,
         ..RenderSettings::default()
     };
@@ -159,7 +162,7 @@ fn compare_a3_where(
 
 #[test]
 fn games101_assignment_3_spot_normal_and_blinn_phong() {
-    use pipeline::capture::BufferKind;
+    use pipeline::buffers::BufferKind;
     let Some(data) = shared_data() else {
         eprintln!("skipped: ../shared/data is not present");
         return;
@@ -231,7 +234,7 @@ fn games101_assignment_3_spot_textured() {
         Texture::load(&data.join("models/spot/spot_texture.png")).expect("texture loads"),
     ));
     let measure = |scene: &pipeline::scene::Scene,
-                   settings: &pipeline::scene::RenderSettings,
+                   settings: &pipeline::settings::RenderSettings,
                    file: &str| {
         let c = pipeline::render(scene, settings).expect("renders");
         let sh = c.pixels.shading.as_ref().expect("lighting buffers");

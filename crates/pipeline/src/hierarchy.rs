@@ -13,13 +13,9 @@
 //!
 //! The robot arm: `M_base = R_b`, `M_lower = R_b·T_la·R_la`, `M_upper = R_b·T_la·R_la·T_ua·R_ua`.
 
-use std::sync::Arc;
-
 use glam::{Mat4, Vec3};
 use serde::Serialize;
 
-use crate::mesh::{BuiltinMesh, Mesh};
-use crate::scene::{ColorSource, Object};
 use crate::transform::{self, NamedMatrix};
 
 /// A part of an articulated model.
@@ -324,66 +320,76 @@ impl Humanoid {
     }
 }
 
-/// Traverses a figure depth-first with a matrix stack: one drawable object per part (the unit
-/// cube with `parent = M·instance`), appended to `objects`, and the steps of the traversal.
-pub fn traverse(figure: &Figure, objects: &mut Vec<Object>) -> Vec<Step> {
-    let cube = Arc::new(BuiltinMesh::Cube.build());
-    let mut steps = Vec::new();
+/// A part to draw: the symbol (the unit cube `[−1, 1]³`) placed by `M·instance`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Part {
+    /// `figure: part`, e.g. `robot arm: base`.
+    pub name: String,
+    /// `M·instance`: the part's composite times its instance matrix, with both as factors.
+    pub placement: NamedMatrix,
+    /// Its colour.
+    pub color: Vec3,
+}
+
+/// Traverses a figure depth-first with a matrix stack: the parts to draw, in order, and the
+/// steps of the traversal. `first` is the index the first part will have among the scene's
+/// drawn objects (each [`Step::Visit`] names its part's index there).
+#[must_use]
+pub fn traverse(figure: &Figure, first: usize) -> (Vec<Part>, Vec<Step>) {
+    let mut walk = Walk {
+        figure: &figure.name,
+        first,
+        parts: Vec::new(),
+        steps: Vec::new(),
+    };
     let start = NamedMatrix::new(
         "T",
         "where the figure stands",
         transform::translate(figure.translate),
     );
-    visit(
-        &figure.pose.tree(),
-        &start,
-        &cube,
-        &figure.name,
-        objects,
-        &mut steps,
-        0,
-    );
-    steps
+    walk.visit(&figure.pose.tree(), &start, 0);
+    (walk.parts, walk.steps)
 }
 
-fn visit(
-    node: &Node,
-    parent: &NamedMatrix,
-    cube: &Arc<Mesh>,
-    figure: &str,
-    objects: &mut Vec<Object>,
-    steps: &mut Vec<Step>,
-    depth: usize,
-) {
-    let composite = NamedMatrix::new(
-        &format!("M({})", node.name),
-        "M ← M·local: the parent's composite times this part's placement",
-        parent.matrix * node.local.matrix,
-    )
-    .with_factors(vec![
-        NamedMatrix::new("M (parent)", &parent.formula, parent.matrix),
-        node.local.clone(),
-    ]);
-    let mut object = Object::new(&format!("{figure}: {}", node.name), Mesh::default());
-    object.mesh = Arc::clone(cube);
-    object.color = ColorSource::Uniform(node.color);
-    object.parent = Some(
-        NamedMatrix::new(
+/// The state of a traversal: what it has drawn and done so far.
+struct Walk<'a> {
+    figure: &'a str,
+    first: usize,
+    parts: Vec<Part>,
+    steps: Vec<Step>,
+}
+
+impl Walk<'_> {
+    fn visit(&mut self, node: &Node, parent: &NamedMatrix, depth: usize) {
+        let composite = NamedMatrix::new(
+            &format!("M({})", node.name),
+            "M ← M·local: the parent's composite times this part's placement",
+            parent.matrix * node.local.matrix,
+        )
+        .with_factors(vec![
+            NamedMatrix::new("M (parent)", &parent.formula, parent.matrix),
+            node.local.clone(),
+        ]);
+        let placement = NamedMatrix::new(
             "M·instance",
             "the part's composite times its instance matrix",
             composite.matrix * node.instance.matrix,
         )
-        .with_factors(vec![composite.clone(), node.instance.clone()]),
-    );
-    steps.push(Step::Visit {
-        node: node.name.clone(),
-        composite: composite.clone(),
-        object: objects.len(),
-    });
-    objects.push(object);
-    for child in &node.children {
-        steps.push(Step::Push { depth: depth + 1 });
-        visit(child, &composite, cube, figure, objects, steps, depth + 1);
-        steps.push(Step::Pop { depth });
+        .with_factors(vec![composite.clone(), node.instance.clone()]);
+        self.steps.push(Step::Visit {
+            node: node.name.clone(),
+            composite: composite.clone(),
+            object: self.first + self.parts.len(),
+        });
+        self.parts.push(Part {
+            name: format!("{}: {}", self.figure, node.name),
+            placement,
+            color: node.color,
+        });
+        for child in &node.children {
+            self.steps.push(Step::Push { depth: depth + 1 });
+            self.visit(child, &composite, depth + 1);
+            self.steps.push(Step::Pop { depth });
+        }
     }
 }

@@ -1,31 +1,38 @@
 //! The pipelens core: a software implementation of the real-time graphics pipeline that records
 //! what every stage does, so that it can be shown, exported and tested.
 //!
-//! Data flows one way: a [`Scene`](scene::Scene) and [`RenderSettings`](scene::RenderSettings)
-//! go into [`render`], which returns a [`FrameCapture`](capture::FrameCapture). The modules follow
-//! the stages in the order data flows through them:
+//! Data flows one way: a [`Scene`](scene::Scene) and [`RenderSettings`](settings::RenderSettings)
+//! go into [`render`], which returns a [`FrameCapture`](capture::FrameCapture). The modules are
+//! listed in the order data flows through them; each uses only those above it:
 //!
 //! | module | stage |
 //! |---|---|
 //! | [`transform`] | every matrix of the course, with its formula |
-//! | [`mesh`], [`scene`], [`hierarchy`] | what is drawn: meshes, objects, figures, camera, projection, settings |
-//! | [`vertex`] | model → world → eye → clip → NDC → window, per vertex |
-//! | [`clip`] | clipping in homogeneous clip space |
-//! | [`raster`] | edge functions, top-left rule, multisampling, depth test, barycentrics |
-//! | [`shade`] | Phong / Blinn-Phong terms, lights, attenuation, shading frequencies |
-//! | [`texture`] | samplers, mipmaps, level of detail, trilinear and anisotropic filtering |
-//! | [`capture`] | the record of a frame and its images |
+//! | [`bezier`], [`mesh`] | Bézier curves; meshes from OBJ files and built-in shapes |
+//! | [`texture`] | textures and their mip pyramids, samplers, surface detail |
+//! | [`camera`], [`light`] | the camera and projection; lights and materials |
+//! | [`raster`] | edge functions, top-left rule, sample patterns, the z-buffer and depth test |
+//! | [`shade`] | Phong / Blinn-Phong terms, attenuation, shading frequencies |
+//! | [`buffers`], [`settings`] | which per-pixel buffers there are and are kept; the render settings |
+//! | [`hierarchy`], [`scene`] | articulated figures; what is drawn |
+//! | [`vertex`], [`clip`] | model → world → eye → clip → NDC → window per vertex; clipping |
 //! | [`overlay`] | 2-D shapes over the images |
+//! | [`capture`] | the record of a frame and its images |
+//! | `render` | the stages in order ([`render`]) |
 
 pub mod bezier;
+pub mod buffers;
+pub mod camera;
 pub mod capture;
 pub mod clip;
 pub mod hierarchy;
+pub mod light;
 pub mod mesh;
 pub mod overlay;
 pub mod raster;
 mod render;
 pub mod scene;
+pub mod settings;
 pub mod shade;
 pub mod texture;
 pub mod transform;

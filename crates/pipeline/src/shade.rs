@@ -24,7 +24,7 @@
 use glam::Vec3;
 use serde::Serialize;
 
-use crate::scene::{Light, Material};
+use crate::light::{Light, Material};
 
 /// Which specular term.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]

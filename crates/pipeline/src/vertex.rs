@@ -9,7 +9,8 @@
 use glam::{Mat3, Mat4, Vec2, Vec3, Vec4};
 use serde::Serialize;
 
-use crate::scene::{ColorSource, Light, Object};
+use crate::light::Light;
+use crate::scene::{ColorSource, Object};
 use crate::shade::{self, Frequency, Reflection, ShadeTerms};
 
 /// One vertex through every space, a row of the vertex table.

@@ -152,7 +152,7 @@ pub fn fate_color(f: &pipeline::capture::Fate) -> Color32 {
 #[derive(Default)]
 pub struct BufferTexture(
     Option<(
-        (u64, pipeline::capture::BufferKind, u64),
+        (u64, pipeline::buffers::BufferKind, u64),
         egui::TextureHandle,
     )>,
 );
@@ -164,7 +164,7 @@ impl BufferTexture {
         ctx: &egui::Context,
         name: &str,
         generation: u64,
-        kind: pipeline::capture::BufferKind,
+        kind: pipeline::buffers::BufferKind,
         capture: &pipeline::capture::FrameCapture,
         options: egui::TextureOptions,
     ) -> egui::TextureHandle {
@@ -178,7 +178,7 @@ impl BufferTexture {
         &mut self,
         ctx: &egui::Context,
         name: &str,
-        key: (u64, pipeline::capture::BufferKind, u64),
+        key: (u64, pipeline::buffers::BufferKind, u64),
         options: egui::TextureOptions,
         make: impl FnOnce() -> image::RgbaImage,
     ) -> egui::TextureHandle {

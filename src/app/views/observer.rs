@@ -4,7 +4,8 @@
 
 use egui::{Align2, Color32, FontId, Rect, Sense, Stroke, TextureOptions, Ui, Vec2};
 use glam::{Mat4, Vec3, Vec4};
-use pipeline::capture::{BufferKind, FrameCapture};
+use pipeline::buffers::BufferKind;
+use pipeline::capture::FrameCapture;
 use pipeline::transform;
 
 use super::{Projector, fit_rect, palette};

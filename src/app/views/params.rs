@@ -3,7 +3,8 @@
 
 use egui::{DragValue, RichText, Slider, Ui};
 use glam::Vec3;
-use pipeline::scene::{CullMode, DepthTest, Projection, Samples};
+use pipeline::camera::Projection;
+use pipeline::raster::{CullMode, DepthTest, Samples};
 use pipeline::shade::{Frequency, Reflection};
 
 use crate::app::i18n::Lang;
@@ -194,7 +195,7 @@ fn near_far(ui: &mut Ui, near: &mut f32, far: &mut f32, lang: Lang) {
     }
 }
 
-fn render(ui: &mut Ui, s: &mut pipeline::scene::RenderSettings, lang: Lang) {
+fn render(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lang: Lang) {
     ui.horizontal(|ui| {
         ui.label(lang.tr("viewport", "视口"));
         ui.add(DragValue::new(&mut s.width).range(1..=4096).suffix(" px"));
@@ -252,7 +253,7 @@ fn render(ui: &mut Ui, s: &mut pipeline::scene::RenderSettings, lang: Lang) {
     .on_hover_text("b_i = (λ_i / w_i) / Σ_k (λ_k / w_k)");
 }
 
-fn shading(ui: &mut Ui, s: &mut pipeline::scene::RenderSettings, lang: Lang) {
+fn shading(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lang: Lang) {
     ui.horizontal_wrapped(|ui| {
         ui.label(lang.tr("shading", "着色频率"));
         for (f, n) in [
@@ -278,7 +279,7 @@ fn shading(ui: &mut Ui, s: &mut pipeline::scene::RenderSettings, lang: Lang) {
     });
 }
 
-fn texture_sampling(ui: &mut Ui, s: &mut pipeline::scene::RenderSettings, lang: Lang) {
+fn texture_sampling(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lang: Lang) {
     use pipeline::texture::{Filter, Mipmap};
     let smp = &mut s.sampler;
     ui.horizontal_wrapped(|ui| {

@@ -2,7 +2,8 @@
 //! overlays when zoomed in, values under the cursor, a click to inspect a pixel.
 
 use egui::{Color32, Pos2, Rect, RichText, Sense, Stroke, TextureOptions, Ui, Vec2};
-use pipeline::capture::{BufferKind, FrameCapture};
+use pipeline::buffers::BufferKind;
+use pipeline::capture::FrameCapture;
 use pipeline::overlay::{OverlayKind, Shape};
 use pipeline::raster::{NONE, sample_offsets_image};
 

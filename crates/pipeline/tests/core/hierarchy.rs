@@ -20,8 +20,7 @@ fn the_robot_arm_composites_are_the_notes_products() {
         pose: Pose::RobotArm(arm),
         translate: Vec3::ZERO,
     };
-    let mut objects = Vec::new();
-    let steps = traverse(&figure, &mut objects);
+    let (objects, steps) = traverse(&figure, 0);
     let composites: Vec<Mat4> = steps
         .iter()
         .filter_map(|s| match s {
@@ -70,8 +69,7 @@ fn the_humanoid_is_traversed_depth_first_with_the_torso_restored_between_limbs()
         pose: Pose::Humanoid(pose),
         translate: Vec3::new(1.0, 2.0, 0.0),
     };
-    let mut objects = Vec::new();
-    let steps = traverse(&figure, &mut objects);
+    let (_, steps) = traverse(&figure, 0);
     let visits: Vec<&str> = steps
         .iter()
         .filter_map(|s| match s {

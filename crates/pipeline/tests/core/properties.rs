@@ -5,7 +5,8 @@
 use glam::{Vec2, Vec3, Vec4};
 use pipeline::clip::{ClipOutcome, ClipVertex, clip_triangle};
 use pipeline::mesh::Mesh;
-use pipeline::scene::{ColorSource, DepthTest, Object, Samples};
+use pipeline::raster::{DepthTest, Samples};
+use pipeline::scene::{ColorSource, Object};
 use proptest::prelude::*;
 
 use crate::support::{cover_counts, pixel_scene, render};
@@ -92,7 +93,7 @@ proptest! {
             object.color = ColorSource::Vertex;
             scene.objects = vec![object];
             settings.depth_test = DepthTest::Less;
-            settings.cull = pipeline::scene::CullMode::None;
+            settings.cull = pipeline::raster::CullMode::None;
             render(&scene, &settings)
         };
         let forward: Vec<usize> = (0..tris.len()).collect();
@@ -154,7 +155,7 @@ proptest! {
                     [Vec3::new(t.0, t.1, t.6), Vec3::new(t.2, t.3, t.7), Vec3::new(t.4, t.5, t.8)],
                     [1.0; 3],
                     [Vec3::X, Vec3::Y, Vec3::Z],
-                    pipeline::scene::CullMode::None,
+                    pipeline::raster::CullMode::None,
                     size,
                 )
                 .ok()

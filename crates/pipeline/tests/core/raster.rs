@@ -1,12 +1,13 @@
 //! The rasterization rules, proved on the cases where they matter.
 
 use glam::{Vec2, Vec3};
+use pipeline::camera::{Camera, Projection};
 use pipeline::capture::Fate;
 use pipeline::mesh::Mesh;
 use pipeline::raster::NONE;
-use pipeline::scene::{
-    Camera, ColorSource, DepthTest, Object, Projection, RenderSettings, Samples, Scene,
-};
+use pipeline::raster::{DepthTest, Samples};
+use pipeline::scene::{ColorSource, Object, Scene};
+use pipeline::settings::RenderSettings;
 
 use crate::support::{cover_counts, pixel_scene, render, sample_position};
 
@@ -653,7 +654,7 @@ fn the_capture_size_is_bounded_by_its_memory() {
     assert!(s.capture_bytes() < 250_000_000, "the issue's budget");
     assert!(s.capture_problem().is_none());
     let colour_only = RenderSettings {
-        capture: pipeline::scene::Capture::COLOR,
+        capture: pipeline::buffers::Capture::COLOR,
         ..s
     };
     assert_eq!(colour_only.capture_bytes(), pixels * 25 + pixels * 4 * 8);

@@ -1,8 +1,11 @@
 //! Lighting against the notes' formulas, computed by hand here.
 
 use glam::Vec3;
+use pipeline::camera::{Camera, Projection};
+use pipeline::light::{Light, Material};
 use pipeline::mesh::BuiltinMesh;
-use pipeline::scene::{Camera, Light, Material, Object, Projection, RenderSettings, Scene};
+use pipeline::scene::{Object, Scene};
+use pipeline::settings::RenderSettings;
 use pipeline::shade::{self, Frequency, Reflection, attenuation, spot_factor};
 
 use crate::support::render;

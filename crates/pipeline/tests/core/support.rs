@@ -2,12 +2,13 @@
 //! deterministic random source.
 
 use glam::{Vec2, Vec3};
+use pipeline::camera::{Camera, Projection};
 use pipeline::capture::FrameCapture;
 use pipeline::mesh::Mesh;
 use pipeline::raster::NONE;
-use pipeline::scene::{
-    Camera, ColorSource, DepthTest, Object, Projection, RenderSettings, Samples, Scene,
-};
+use pipeline::raster::{DepthTest, Samples};
+use pipeline::scene::{ColorSource, Object, Scene};
+use pipeline::settings::RenderSettings;
 
 /// A scene in which world `(x, y)` is window `(x, y)` (an orthographic camera over
 /// `[0, w] × [0, h]`), holding one object made of `triangles` (each CCW or not, as given).

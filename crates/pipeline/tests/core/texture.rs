@@ -1,8 +1,11 @@
 //! Texture sampling against values computed by hand.
 
 use glam::{Vec2, Vec3};
+use pipeline::camera::{Camera, Projection};
 use pipeline::mesh::Mesh;
-use pipeline::scene::{Camera, Object, Projection, RenderSettings, Samples, Scene};
+use pipeline::raster::Samples;
+use pipeline::scene::{Object, Scene};
+use pipeline::settings::RenderSettings;
 use pipeline::texture::{Filter, Level, Mipmap, Sampler, Texture, Wrap};
 
 use crate::support::render;
@@ -174,7 +177,7 @@ fn level_of_detail_is_log2_of_texels_per_pixel() {
         "∂/∂y = ({s_y}, {t_y}) vs (0, {along_y})"
     );
     // Its image: the long axis along t is cyan (hue 180°), saturation log₂(major/minor)/3.
-    let img = c.image(pipeline::capture::BufferKind::Footprint);
+    let img = c.image(pipeline::buffers::BufferKind::Footprint);
     let [r, g, b, _] = img.get_pixel(32, 32).0;
     let sat = ((along_y / along_x).log2() / 3.0).min(1.0);
     let red = (255.0 * (1.0 - sat)).round() as u8;
@@ -262,7 +265,7 @@ fn the_texel_colour_is_the_surface_colour() {
 
 /// The quad of [`textured_quad`] lit per pixel with a surface detail, facing the camera.
 fn detailed_quad(detail: pipeline::texture::SurfaceDetail) -> pipeline::capture::FrameCapture {
-    use pipeline::scene::Light;
+    use pipeline::light::Light;
     use pipeline::shade::Frequency;
     let mesh = quad_mesh();
     let mut quad = Object::new("quad", mesh);
@@ -400,8 +403,8 @@ fn displacement_moves_each_vertex_along_its_normal_by_the_height() {
 
 #[test]
 fn cube_map_faces_and_a_mirror_sphere() {
+    use pipeline::light::Light;
     use pipeline::mesh::BuiltinMesh;
-    use pipeline::scene::Light;
     use pipeline::shade::Frequency;
     use pipeline::texture::{CubeMap, Environment};
     // Direction → face and (s, t), by the table in the docs.
@@ -480,7 +483,7 @@ fn cube_map_faces_and_a_mirror_sphere() {
     );
     assert!(
         c.buffers()
-            .contains(&pipeline::capture::BufferKind::Reflected)
+            .contains(&pipeline::buffers::BufferKind::Reflected)
     );
 }
 
@@ -538,7 +541,7 @@ fn lit_textured_quad(size: u32, samples: Samples) -> (Scene, RenderSettings) {
         projection: Projection::default(),
         figures: Vec::new(),
         shadow: None,
-        lights: vec![pipeline::scene::Light::Point {
+        lights: vec![pipeline::light::Light::Point {
             position: Vec3::new(1.0, 2.0, 3.0),
             intensity: Vec3::ONE,
             attenuation: Vec3::X,
@@ -556,7 +559,7 @@ fn lit_textured_quad(size: u32, samples: Samples) -> (Scene, RenderSettings) {
 
 #[test]
 fn a_colour_only_capture_has_the_same_picture_without_the_term_buffers() {
-    use pipeline::scene::Capture;
+    use pipeline::buffers::Capture;
     let (scene, full) = lit_textured_quad(48, Samples::X4);
     let a = render(&scene, &full);
     let colour = RenderSettings {
@@ -581,7 +584,7 @@ fn a_colour_only_capture_has_the_same_picture_without_the_term_buffers() {
         (0..48 * 48).map(|i| b.barycentrics(i)).collect::<Vec<_>>()
     );
     // What a view needs: the lighting buffers for n·l, nothing more for the colour.
-    use pipeline::capture::BufferKind;
+    use pipeline::buffers::BufferKind;
     assert_eq!(Capture::showing([BufferKind::Color]), Capture::COLOR);
     assert_eq!(
         Capture::showing([BufferKind::Color, BufferKind::NDotL]),
@@ -596,7 +599,7 @@ fn a_colour_only_capture_has_the_same_picture_without_the_term_buffers() {
 
 #[test]
 fn reusing_a_capture_s_storage_gives_the_same_frame() {
-    use pipeline::scene::Capture;
+    use pipeline::buffers::Capture;
     // The spare capture differs in everything: size, samples, scene, selection. Its stale
     // contents must not leak into the new frame.
     let (scene, settings) = lit_textured_quad(40, Samples::X4);

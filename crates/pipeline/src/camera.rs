@@ -1,0 +1,226 @@
+//! The camera and the projection: `LookAt(eye, at, up)` and the view volume of
+//! `Perspective(fovy, aspect, near, far)`, `Frustum(l, r, b, t, near, far)` or
+//! `Ortho(l, r, b, t, near, far)`, in Angel's / OpenGL's terms, with the same volume in
+//! GAMES101's terms beside it.
+
+use glam::Vec3;
+use serde::Serialize;
+
+use crate::transform::{self, NamedMatrix};
+
+/// The camera: `LookAt(eye, at, up)`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Camera {
+    /// The eye point (centre of projection).
+    pub eye: Vec3,
+    /// The point looked at.
+    pub at: Vec3,
+    /// The up vector `v_up` (need not be perpendicular to the view direction).
+    pub up: Vec3,
+}
+
+impl Default for Camera {
+    fn default() -> Self {
+        Self {
+            eye: Vec3::new(0.0, 0.0, 3.0),
+            at: Vec3::ZERO,
+            up: Vec3::Y,
+        }
+    }
+}
+
+/// The projection, in Angel's / OpenGL's terms (`near`, `far` positive distances).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "kind")]
+pub enum Projection {
+    /// `Perspective(fovy, aspect, near, far)`; `aspect` `None` takes the viewport's width/height.
+    Perspective {
+        /// Vertical field of view in degrees, in (0, 180).
+        fovy_deg: f32,
+        /// Width / height of the view volume; `None`: the viewport's.
+        aspect: Option<f32>,
+        /// Distance to the near plane (> 0).
+        near: f32,
+        /// Distance to the far plane (> near).
+        far: f32,
+    },
+    /// `Frustum(left, right, bottom, top, near, far)`, possibly asymmetric.
+    Frustum {
+        /// The near rectangle `[l, r] × [b, t]` at `z = −near`.
+        #[allow(missing_docs)]
+        left: f32,
+        #[allow(missing_docs)]
+        right: f32,
+        #[allow(missing_docs)]
+        bottom: f32,
+        #[allow(missing_docs)]
+        top: f32,
+        /// Distance to the near plane (> 0).
+        near: f32,
+        /// Distance to the far plane (> near).
+        far: f32,
+    },
+    /// `Ortho(left, right, bottom, top, near, far)`.
+    Ortho {
+        /// The box `[l, r] × [b, t] × [−far, −near]`.
+        #[allow(missing_docs)]
+        left: f32,
+        #[allow(missing_docs)]
+        right: f32,
+        #[allow(missing_docs)]
+        bottom: f32,
+        #[allow(missing_docs)]
+        top: f32,
+        /// `z = −near` is the near face (may be negative: behind the eye).
+        near: f32,
+        /// `z = −far` is the far face (> near).
+        far: f32,
+    },
+}
+
+impl Default for Projection {
+    fn default() -> Self {
+        Self::Perspective {
+            fovy_deg: 45.0,
+            aspect: None,
+            near: 0.1,
+            far: 50.0,
+        }
+    }
+}
+
+impl Projection {
+    /// The view volume `[l, r, b, t, near, far]` for a viewport of the given aspect ratio.
+    #[must_use]
+    pub fn bounds(&self, viewport_aspect: f32) -> [f32; 6] {
+        match *self {
+            Self::Perspective {
+                fovy_deg,
+                aspect,
+                near,
+                far,
+            } => {
+                let [l, r, b, t] = transform::perspective_bounds(
+                    fovy_deg,
+                    aspect.unwrap_or(viewport_aspect),
+                    near,
+                );
+                [l, r, b, t, near, far]
+            }
+            Self::Frustum {
+                left,
+                right,
+                bottom,
+                top,
+                near,
+                far,
+            }
+            | Self::Ortho {
+                left,
+                right,
+                bottom,
+                top,
+                near,
+                far,
+            } => [left, right, bottom, top, near, far],
+        }
+    }
+
+    /// The eight corners of the view volume in eye coordinates: the near rectangle at
+    /// `z = −near`, then the far rectangle at `z = −far` (scaled by `far/near` for a perspective
+    /// projection), each bottom-left, bottom-right, top-right, top-left.
+    #[must_use]
+    pub fn corners_eye(&self, viewport_aspect: f32) -> [Vec3; 8] {
+        let [l, r, b, t, n, f] = self.bounds(viewport_aspect);
+        let k = if self.is_perspective() { f / n } else { 1.0 };
+        let near = [
+            Vec3::new(l, b, -n),
+            Vec3::new(r, b, -n),
+            Vec3::new(r, t, -n),
+            Vec3::new(l, t, -n),
+        ];
+        let far = near.map(|p| Vec3::new(p.x * k, p.y * k, -f));
+        [
+            near[0], near[1], near[2], near[3], far[0], far[1], far[2], far[3],
+        ]
+    }
+
+    /// Whether this is a perspective (rather than parallel) projection.
+    #[must_use]
+    pub fn is_perspective(&self) -> bool {
+        !matches!(self, Self::Ortho { .. })
+    }
+
+    /// The OpenGL projection matrix with its factors (`N·S·H` for a frustum, `S·T` for ortho).
+    #[must_use]
+    pub fn matrix(&self, viewport_aspect: f32) -> NamedMatrix {
+        let [l, r, b, t, n, f] = self.bounds(viewport_aspect);
+        match *self {
+            Self::Perspective {
+                fovy_deg, aspect, ..
+            } => transform::perspective(fovy_deg, aspect.unwrap_or(viewport_aspect), n, f),
+            Self::Frustum { .. } => transform::frustum(l, r, b, t, n, f),
+            Self::Ortho { .. } => transform::ortho(l, r, b, t, n, f),
+        }
+    }
+
+    /// The same projection in GAMES101's terms (`n = −near`, `f = −far`):
+    /// `M_ortho·M_persp→ortho` for perspective, `M_ortho` for parallel projection.
+    #[must_use]
+    pub fn matrix_games101(&self, viewport_aspect: f32) -> NamedMatrix {
+        let [l, r, b, t, near, far] = self.bounds(viewport_aspect);
+        if self.is_perspective() {
+            transform::perspective_games101(l, r, b, t, -near, -far)
+        } else {
+            transform::ortho_games101(l, r, b, t, -far, -near)
+        }
+    }
+
+    /// What is wrong with these parameters, if anything (each as a sentence).
+    #[must_use]
+    pub fn problems(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        let [l, r, b, t, near, far] = self.bounds(1.0);
+        if let Self::Perspective {
+            fovy_deg, aspect, ..
+        } = *self
+        {
+            if !(fovy_deg > 0.0 && fovy_deg < 180.0) {
+                out.push(format!(
+                    "fovy must be between 0° and 180° (exclusive), got {fovy_deg}"
+                ));
+            }
+            if let Some(a) = aspect
+                && !(a > 0.0 && a.is_finite())
+            {
+                out.push(format!("aspect must be a positive number, got {a}"));
+            }
+        } else {
+            if !(l < r) {
+                out.push(format!(
+                    "left must be less than right, got left = {l}, right = {r}"
+                ));
+            }
+            if !(b < t) {
+                out.push(format!(
+                    "bottom must be less than top, got bottom = {b}, top = {t}"
+                ));
+            }
+        }
+        if self.is_perspective() && !(near > 0.0) {
+            out.push(format!(
+                "near must be positive for a perspective projection (it is a distance in front of \
+                 the eye), got {near}"
+            ));
+        }
+        if !(far > near) {
+            out.push(format!(
+                "far must be greater than near, got near = {near}, far = {far}"
+            ));
+        }
+        if [l, r, b, t, near, far].iter().any(|v| !v.is_finite()) {
+            out.push("every projection parameter must be a finite number".to_owned());
+        }
+        out
+    }
+}

@@ -1,0 +1,292 @@
+//! The images of a capture: each buffer's colour mapping (see `BufferKind::mapping`), the depth
+//! buffer over a chosen range or as eye distance, the 16-bit depth, overlays drawn by tiny-skia,
+//! and where a world point lands in the image.
+
+use glam::Vec3;
+use half::f16;
+use image::{ImageBuffer, Luma, Rgba, RgbaImage};
+
+use super::{FrameCapture, ShadingBuffers, TextureBuffers};
+use crate::buffers::BufferKind;
+use crate::overlay::{self, Overlay, OverlayKind, Shape};
+use crate::raster::NONE;
+
+fn to_u8(v: f32) -> u8 {
+    (v.clamp(0.0, 1.0) * 255.0).round() as u8
+}
+
+fn hue_color(id: u32) -> [u8; 3] {
+    hue((id as f32 * 0.618_034).fract()).map(to_u8)
+}
+
+/// The fully saturated colour of hue `h ∈ [0, 1)` (red, yellow, green, cyan, blue, magenta).
+fn hue(h: f32) -> [f32; 3] {
+    let h = h.rem_euclid(1.0) * 6.0;
+    let x = 1.0 - ((h % 2.0) - 1.0).abs();
+    match h as u32 {
+        0 => [1.0, x, 0.0],
+        1 => [x, 1.0, 0.0],
+        2 => [0.0, 1.0, x],
+        3 => [0.0, x, 1.0],
+        4 => [x, 0.0, 1.0],
+        _ => [1.0, 0.0, x],
+    }
+}
+
+/// The colour of a lighting buffer at pixel `i`.
+fn lighting_rgb(sh: &ShadingBuffers, kind: BufferKind, i: usize) -> [u8; 3] {
+    let rgb = |v: [f16; 3]| v.map(|c| to_u8(c.to_f32()));
+    match kind {
+        BufferKind::Ambient => rgb(sh.ambient[i]),
+        BufferKind::Diffuse => rgb(sh.diffuse[i]),
+        BufferKind::Specular => rgb(sh.specular[i]),
+        BufferKind::Normal => sh.normal[i].map(|v| to_u8((v.to_f32() + 1.0) / 2.0)),
+        BufferKind::NDotL => [to_u8(sh.n_dot_l[i].to_f32()); 3],
+        BufferKind::NDotH => [to_u8(sh.n_dot_h[i].to_f32()); 3],
+        BufferKind::Reflected => rgb(sh.reflected[i]),
+        _ => [0; 3],
+    }
+}
+
+/// The footprint colour: the long axis' angle `θ ∈ [0°, 180°)` as hue (a line has no sign, so
+/// hue = 2θ), the anisotropy `a = major/minor` as saturation `min(log₂ a / 3, 1)`.
+fn footprint_rgb([sx, tx, sy, ty]: [f32; 4]) -> [u8; 3] {
+    let (lx, ly) = (sx.hypot(tx), sy.hypot(ty));
+    if lx == 0.0 && ly == 0.0 {
+        return [0; 3];
+    }
+    let (major, minor, (s, t)) = if lx >= ly {
+        (lx, ly, (sx, tx))
+    } else {
+        (ly, lx, (sy, ty))
+    };
+    let angle = t.atan2(s).rem_euclid(std::f32::consts::PI);
+    let saturation = ((major / minor.max(1e-6)).log2() / 3.0).clamp(0.0, 1.0);
+    hue(angle / std::f32::consts::PI).map(|c| to_u8(1.0 - saturation * (1.0 - c)))
+}
+
+/// The colour of a texturing buffer at pixel `i`.
+fn texturing_rgb(tb: &TextureBuffers, kind: BufferKind, i: usize) -> [u8; 3] {
+    match kind {
+        BufferKind::Uv => {
+            let [u, v] = tb.uv[i];
+            [to_u8(u.rem_euclid(1.0)), to_u8(v.rem_euclid(1.0)), 0]
+        }
+        BufferKind::MipLevel => {
+            let l = tb.level[i].to_f32();
+            let k = l.floor().max(0.0) as u32;
+            crate::texture::level_color(k)
+                .lerp(crate::texture::level_color(k + 1), l.fract())
+                .to_array()
+                .map(to_u8)
+        }
+        BufferKind::Texel => tb.texel[i].map(|c| to_u8(c.to_f32())),
+        BufferKind::Footprint => footprint_rgb(tb.footprint[i].map(f16::to_f32)),
+        _ => [0; 3],
+    }
+}
+
+impl FrameCapture {
+    /// The image of one buffer (see [`BufferKind`] for each colour mapping).
+    #[must_use]
+    pub fn image(&self, kind: BufferKind) -> RgbaImage {
+        if kind == BufferKind::Depth {
+            return self.depth_image(false, None);
+        }
+        let (w, h) = (self.width(), self.height());
+        let px = &self.pixels;
+        let samples = self.settings.samples.count() as f32;
+        ImageBuffer::from_fn(w, h, |x, y| {
+            let i = (y * w + x) as usize;
+            let covered = px.primitive[i] != NONE;
+            let rgb = match kind {
+                BufferKind::Color => px.color[i].map(to_u8),
+                BufferKind::Depth => [255; 3], // drawn by depth_image
+                BufferKind::Coverage => [to_u8(f32::from(px.coverage[i]) / samples); 3],
+                BufferKind::PrimitiveId if covered => hue_color(px.primitive[i]),
+                BufferKind::BaryPerspective if covered => self
+                    .barycentrics(i)
+                    .map_or([0; 3], |b| b.perspective.map(to_u8)),
+                BufferKind::BaryAffine if covered => {
+                    self.barycentrics(i).map_or([0; 3], |b| b.affine.map(to_u8))
+                }
+                BufferKind::PrimitiveId | BufferKind::BaryPerspective | BufferKind::BaryAffine => {
+                    [0; 3]
+                }
+                k if k.is_texturing() => match (&px.texturing, covered) {
+                    (Some(tb), true) => texturing_rgb(tb, k, i),
+                    _ => [0; 3],
+                },
+                k => match (&px.shading, covered) {
+                    (Some(sh), true) => lighting_rgb(sh, k, i),
+                    _ => [0; 3],
+                },
+            };
+            Rgba([rgb[0], rgb[1], rgb[2], 255])
+        })
+    }
+
+    /// The eye-space distance along −z of window depth `z_w` (undoing the projection's depth
+    /// mapping): perspective `d = 2·f·n / ((f + n) − z_ndc·(f − n))` with `z_ndc = 2·z_w − 1`;
+    /// parallel `d = n + z_w·(f − n)`.
+    #[must_use]
+    pub fn eye_depth(&self, z_w: f32) -> f32 {
+        let [.., n, f] = self.projection.bounds(self.settings.aspect());
+        if self.projection.is_perspective() {
+            let z_ndc = 2.0 * z_w - 1.0;
+            2.0 * f * n / ((f + n) - z_ndc * (f - n))
+        } else {
+            n + z_w * (f - n)
+        }
+    }
+
+    /// The depth buffer as grey over `range` (black at its start, white at its end), of window
+    /// depth `z_w`, or of eye distance ([`Self::eye_depth`]) when `linear`. Without a range, the
+    /// nearest and farthest covered values. Background white.
+    #[must_use]
+    pub fn depth_image(&self, linear: bool, range: Option<[f32; 2]>) -> RgbaImage {
+        let value = |z: f32| if linear { self.eye_depth(z) } else { z };
+        let [lo, hi] = range.unwrap_or_else(|| {
+            self.depth_range()
+                .map_or([0.0, 1.0], |[a, b]| [value(a), value(b)])
+        });
+        let span = (hi - lo).abs().max(f32::EPSILON);
+        let w = self.width();
+        ImageBuffer::from_fn(w, self.height(), |x, y| {
+            let i = (y * w + x) as usize;
+            let g = if self.pixels.primitive[i] == NONE {
+                255
+            } else {
+                to_u8((value(self.pixels.depth[i]) - lo) / span)
+            };
+            Rgba([g, g, g, 255])
+        })
+    }
+
+    /// The depth buffer as 16-bit grey, `round(z_w·65535)`, with no stretching.
+    #[must_use]
+    pub fn depth16(&self) -> ImageBuffer<Luma<u16>, Vec<u16>> {
+        let w = self.width();
+        ImageBuffer::from_fn(w, self.height(), |x, y| {
+            let d = self.pixels.depth[(y * w + x) as usize];
+            Luma([(d.clamp(0.0, 1.0) * 65535.0).round() as u16])
+        })
+    }
+
+    /// Converts window coordinates (y up) to image pixel coordinates (y down).
+    #[must_use]
+    pub fn window_to_image(&self, p: Vec3) -> [f32; 2] {
+        [p.x, self.height() as f32 - p.y]
+    }
+
+    /// The shapes of one overlay, in image pixel coordinates.
+    #[must_use]
+    pub fn overlay(&self, kind: OverlayKind) -> Overlay {
+        Overlay {
+            kind,
+            shapes: self.overlay_shapes(kind).collect(),
+        }
+    }
+
+    /// The shapes of one overlay, made one raster triangle at a time (a view that draws only
+    /// some of a million need not build them all).
+    pub fn overlay_shapes(&self, kind: OverlayKind) -> impl Iterator<Item = Shape> + '_ {
+        let h = self.height() as f32;
+        self.triangles.iter().map(move |t| match kind {
+            OverlayKind::TriangleEdges => Shape::Polyline {
+                points: t.window.iter().map(|p| self.window_to_image(*p)).collect(),
+                closed: true,
+                color: [255, 255, 255, 220],
+                width: 1.0,
+            },
+            OverlayKind::BoundingBoxes => {
+                let [x0, y0, x1, y1] = t.bbox.map(|v| v as f32);
+                Shape::Rect {
+                    min: [x0, h - (y1 + 1.0)],
+                    max: [x1 + 1.0, h - y0],
+                    color: [255, 200, 40, 200],
+                    width: 1.0,
+                }
+            }
+        })
+    }
+
+    /// `kind`'s image magnified `zoom` times (nearest neighbour, so pixels stay crisp) with the
+    /// given overlays drawn over it by tiny-skia.
+    #[must_use]
+    pub fn image_with_overlays(
+        &self,
+        kind: BufferKind,
+        overlays: &[OverlayKind],
+        zoom: u32,
+    ) -> RgbaImage {
+        let shapes: Vec<Shape> = overlays
+            .iter()
+            .flat_map(|&k| self.overlay(k).shapes)
+            .collect();
+        self.image_with_shapes(kind, &shapes, zoom)
+    }
+
+    /// Where world point `p` lands in the image (pixels, y down): `P·V·p`, divided by `w`, through
+    /// the viewport; `None` behind the camera (`w ≤ 1e-5`).
+    #[must_use]
+    pub fn world_to_image(&self, p: Vec3) -> Option<[f32; 2]> {
+        let clip = self.matrices.projection.matrix * self.matrices.view.matrix * p.extend(1.0);
+        self.clip_to_image(clip)
+    }
+
+    fn clip_to_image(&self, clip: glam::Vec4) -> Option<[f32; 2]> {
+        (clip.w > 1e-5).then(|| {
+            let (w, h) = (self.width() as f32, self.height() as f32);
+            let ndc = clip.truncate() / clip.w;
+            [(ndc.x + 1.0) * w / 2.0, h - (ndc.y + 1.0) * h / 2.0]
+        })
+    }
+
+    /// The world segment `a`–`b` in image pixels, the part behind the camera cut away (at
+    /// `w = 1e-5` in clip space, as clipping does); `None` when all of it is behind.
+    #[must_use]
+    pub fn world_segment_to_image(&self, a: Vec3, b: Vec3) -> Option<[[f32; 2]; 2]> {
+        let pv = self.matrices.projection.matrix * self.matrices.view.matrix;
+        let (mut ca, mut cb) = (pv * a.extend(1.0), pv * b.extend(1.0));
+        let eps = 1e-5;
+        if ca.w <= eps && cb.w <= eps {
+            return None;
+        }
+        if ca.w <= eps || cb.w <= eps {
+            let t = (eps * 1.001 - ca.w) / (cb.w - ca.w);
+            let cut = ca.lerp(cb, t);
+            if ca.w <= eps {
+                ca = cut;
+            } else {
+                cb = cut;
+            }
+        }
+        Some([self.clip_to_image(ca)?, self.clip_to_image(cb)?])
+    }
+
+    /// An image of buffer `kind`, magnified `zoom`× (nearest), with `shapes` drawn over it.
+    #[must_use]
+    pub fn image_with_shapes(&self, kind: BufferKind, shapes: &[Shape], zoom: u32) -> RgbaImage {
+        let zoom = zoom.max(1);
+        let base = self.image(kind);
+        let (w, h) = (base.width() * zoom, base.height() * zoom);
+        let Some(mut pixmap) = tiny_skia::Pixmap::new(w, h) else {
+            return base;
+        };
+        for (i, px) in pixmap.pixels_mut().iter_mut().enumerate() {
+            let (x, y) = (i as u32 % w / zoom, i as u32 / w / zoom);
+            let c = base.get_pixel(x, y).0;
+            if let Some(p) = tiny_skia::PremultipliedColorU8::from_rgba(c[0], c[1], c[2], 255) {
+                *px = p;
+            }
+        }
+        overlay::draw(&mut pixmap, shapes, zoom as f32);
+        ImageBuffer::from_fn(w, h, |x, y| {
+            let c = pixmap.pixel(x, y).map(|p| p.demultiply());
+            c.map_or(Rgba([0, 0, 0, 255]), |c| {
+                Rgba([c.red(), c.green(), c.blue(), c.alpha()])
+            })
+        })
+    }
+}

@@ -1,0 +1,234 @@
+//! Everything about one pixel: every fragment that reached it with the outcome of its depth test
+//! at each sample (replayed from the raster triangles), the owning fragment's lighting terms,
+//! texture lookup and lighting vectors; and the intensity profile along a line of pixels.
+
+use glam::{I64Vec2, Vec3};
+use half::f16;
+use serde::Serialize;
+
+use super::{FrameCapture, PixelLighting, PixelTexture};
+use crate::raster::{NONE, ONE};
+
+/// One fragment that reached a pixel: a raster triangle covering at least one of its samples,
+/// replayed in drawing order against the pixel's depth values.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct FragmentRecord {
+    /// The primitive (input triangle).
+    pub primitive: u32,
+    /// The raster triangle (index into [`FrameCapture::triangles`]).
+    pub triangle: u32,
+    /// Per sample of the pixel: `None` not covered; `Some(true)` covered and passed the depth
+    /// test against what was stored then; `Some(false)` covered and failed it.
+    pub samples: Vec<Option<bool>>,
+    /// Per sample: the fragment's window depth there (`None` where not covered).
+    pub sample_depths: Vec<Option<f32>>,
+    /// Window depth at the pixel centre.
+    pub depth: f32,
+    /// Affine (screen-space) barycentrics at the pixel centre.
+    pub bary_affine: [f32; 3],
+    /// Perspective-correct barycentrics at the pixel centre.
+    pub bary_perspective: [f32; 3],
+    /// Whether the fragment owns the pixel in the final image (most of its samples).
+    pub visible: bool,
+}
+
+/// Everything the capture knows about one pixel: what reached it and what it computed.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PixelRecord {
+    /// Window column.
+    pub x: u32,
+    /// Window row (0 at the bottom).
+    pub y: u32,
+    /// Covered samples.
+    pub coverage: u8,
+    /// Mean window depth of the samples.
+    pub depth: f32,
+    /// The final colour.
+    pub color: [f32; 3],
+    /// The owning primitive, if any.
+    pub primitive: Option<u32>,
+    /// The owning fragment's lighting terms (when lit).
+    pub lighting: Option<PixelLighting>,
+    /// The owning fragment's texture lookup (when textured).
+    pub texture: Option<PixelTexture>,
+    /// The lighting vectors there (when lit).
+    pub vectors: Option<PixelVectors>,
+    /// Every fragment that reached the pixel, in drawing order.
+    pub fragments: Vec<FragmentRecord>,
+}
+
+/// The vectors of the lighting at a pixel, in world coordinates: where the surface is, its unit
+/// normal, and the unit vectors to the key light, to the eye and halfway between them.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct PixelVectors {
+    /// The surface point `p = Σ b_i·p_i` of the owning fragment.
+    pub position: Vec3,
+    /// `n`, as lit.
+    pub normal: Vec3,
+    /// `l`, towards the key light (the first light that is not ambient).
+    pub light: Vec3,
+    /// `v = normalize(eye − p)`.
+    pub view: Vec3,
+    /// `h = normalize(l + v)`.
+    pub half: Vec3,
+}
+
+/// One sample of an intensity profile along a line of pixels.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct ProfileSample {
+    /// Position along the line, 0 at its start, 1 at its end.
+    pub t: f32,
+    /// Image column.
+    pub x: u32,
+    /// Image row (0 at the top).
+    pub y: u32,
+    /// The final colour there.
+    pub rgb: [f32; 3],
+    /// Luminance `0.2126·R + 0.7152·G + 0.0722·B` (Rec. 709 weights).
+    pub intensity: f32,
+}
+
+impl FrameCapture {
+    /// The lighting vectors at window pixel `(x, y)`: `None` where nothing is drawn, lighting
+    /// is off, or no light has a direction.
+    #[must_use]
+    pub fn pixel_vectors(&self, x: u32, y: u32) -> Option<PixelVectors> {
+        if x >= self.width() || y >= self.height() {
+            return None;
+        }
+        let i = ((self.height() - 1 - y) * self.width() + x) as usize;
+        let prim = self.primitives.get(self.pixels.primitive[i] as usize)?;
+        let normal = Vec3::from(self.pixels.shading.as_ref()?.at(i).normal);
+        let b = self.barycentrics(i)?.perspective;
+        let position = prim
+            .vertices
+            .iter()
+            .zip(b)
+            .map(|(&r, w)| self.vertices[r as usize].world.truncate() * w)
+            .sum::<Vec3>();
+        let light = self
+            .lights
+            .iter()
+            .find_map(|l| crate::shade::light_vector(l, position))?;
+        let view = (self.camera.eye - position).normalize_or_zero();
+        Some(PixelVectors {
+            position,
+            normal,
+            light,
+            view,
+            half: (light + view).normalize_or_zero(),
+        })
+    }
+
+    /// Everything about window pixel `(x, y)` (y up): its buffers' values, the owning
+    /// fragment's lighting terms and texture lookup, and every fragment that reached it (see
+    /// [`Self::fragments_at`]); `None` outside the viewport.
+    #[must_use]
+    pub fn pixel_record(&self, x: u32, y: u32) -> Option<PixelRecord> {
+        if x >= self.width() || y >= self.height() {
+            return None;
+        }
+        let i = ((self.height() - 1 - y) * self.width() + x) as usize;
+        let px = &self.pixels;
+        let owned = px.primitive[i] != NONE;
+        Some(PixelRecord {
+            x,
+            y,
+            coverage: px.coverage[i],
+            depth: px.depth[i],
+            color: px.color[i],
+            primitive: owned.then_some(px.primitive[i]),
+            lighting: px.shading.as_ref().filter(|_| owned).map(|s| s.at(i)),
+            texture: px
+                .texturing
+                .as_ref()
+                .filter(|t| owned && t.footprint[i] != [f16::ZERO; 4])
+                .map(|t| t.at(i)),
+            vectors: self.pixel_vectors(x, y),
+            fragments: self.fragments_at(x, y),
+        })
+    }
+
+    /// Every fragment that reached window pixel `(x, y)` (y up), in drawing order, with the
+    /// outcome of the depth test at each sample: the raster triangles are replayed against the
+    /// pixel's depth values exactly as the rasterizer ran them.
+    #[must_use]
+    pub fn fragments_at(&self, x: u32, y: u32) -> Vec<FragmentRecord> {
+        if x >= self.width() || y >= self.height() {
+            return Vec::new();
+        }
+        let offsets = crate::raster::sample_offsets_fixed(self.settings.samples);
+        let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
+        let centre = Self::pixel_centre_fixed(x, y);
+        let mut stored = vec![self.settings.depth_test.clear_value(); offsets.len()];
+        let owner = self.pixels.primitive[((self.height() - 1 - y) * self.width() + x) as usize];
+        let mut out = Vec::new();
+        for (t, tri) in self.triangles.iter().enumerate() {
+            let [x0, y0, x1, y1] = tri.bbox;
+            if x < x0 || x > x1 || y < y0 || y > y1 {
+                continue;
+            }
+            let mut samples = vec![None; offsets.len()];
+            let mut sample_depths = vec![None; offsets.len()];
+            for (s, off) in offsets.iter().enumerate() {
+                let p = corner + *off;
+                if tri.covers(p) {
+                    let z = tri.depth(tri.lambda(p));
+                    let pass = self.settings.depth_test.passes(z, stored[s]);
+                    if pass {
+                        stored[s] = z;
+                    }
+                    samples[s] = Some(pass);
+                    sample_depths[s] = Some(z);
+                }
+            }
+            if samples.iter().all(Option::is_none) {
+                continue;
+            }
+            let l = tri.lambda(centre);
+            out.push(FragmentRecord {
+                primitive: tri.primitive,
+                triangle: t as u32,
+                samples,
+                sample_depths,
+                depth: tri.depth(l),
+                bary_affine: tri.original_bary(l, false).to_array(),
+                bary_perspective: tri.original_bary(l, true).to_array(),
+                visible: tri.primitive == owner,
+            });
+        }
+        out
+    }
+
+    /// The intensity profile along the segment `from → to` (image pixel coordinates, y down):
+    /// one sample per pixel step, each the pixel the point falls in (points off the image are
+    /// skipped). This is what the Mach band comparison plots.
+    #[must_use]
+    pub fn profile(&self, from: [f32; 2], to: [f32; 2]) -> Vec<ProfileSample> {
+        let (dx, dy) = (to[0] - from[0], to[1] - from[1]);
+        let steps = dx.abs().max(dy.abs()).ceil().max(1.0) as u32;
+        (0..=steps)
+            .filter_map(|k| {
+                let t = k as f32 / steps as f32;
+                let (px, py) = (from[0] + dx * t, from[1] + dy * t);
+                if !(px >= 0.0
+                    && py >= 0.0
+                    && px < self.width() as f32
+                    && py < self.height() as f32)
+                {
+                    return None;
+                }
+                let (x, y) = (px as u32, py as u32);
+                let rgb = self.pixels.color[(y * self.width() + x) as usize];
+                let intensity = 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+                Some(ProfileSample {
+                    t,
+                    x,
+                    y,
+                    rgb,
+                    intensity,
+                })
+            })
+            .collect()
+    }
+}

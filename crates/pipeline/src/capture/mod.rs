@@ -1,0 +1,252 @@
+//! `FrameCapture`: everything one frame did, stage by stage — the matrices with their factors,
+//! the vertex table, the fate of every primitive, the raster triangles, the per-sample and
+//! per-pixel buffers — and the images made from them. The app shows it, the exporter writes it,
+//! the tests assert on it: a number comes from one place.
+//!
+//! The records are here; the per-pixel buffers in [`pixels`]; the images made from them (each
+//! buffer's colour mapping, overlays, projecting world points into the image) in [`images`];
+//! everything about one pixel (its fragments, lighting vectors, a profile along a line) in
+//! [`inspect`].
+
+mod images;
+mod inspect;
+mod pixels;
+
+pub use inspect::*;
+pub use pixels::*;
+
+use glam::I64Vec2;
+use half::f16;
+use serde::Serialize;
+
+use crate::buffers::BufferKind;
+use crate::camera::{Camera, Projection};
+use crate::clip::{ClipPlane, ClipVertex};
+use crate::raster::{ONE, RasterCounts, RasterTriangle, SampleBuffers};
+use crate::settings::RenderSettings;
+use crate::transform::NamedMatrix;
+use crate::vertex::VertexRecord;
+
+/// The matrices of the frame.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Matrices {
+    /// One model matrix per object, with its factors `T·Rz·Ry·Rx·S`.
+    pub models: Vec<NamedMatrix>,
+    /// The view matrix `LookAt(eye, at, up)`, with GAMES101's factors `R_view·T_view`.
+    pub view: NamedMatrix,
+    /// The projection in Angel's / OpenGL's form, with its factors.
+    pub projection: NamedMatrix,
+    /// The same projection in GAMES101's form (`M_ortho·M_persp→ortho`); equals
+    /// `−Z·P` (perspective) or `Z·P` (parallel) with `Z = diag(1, 1, −1, 1)`.
+    pub projection_games101: NamedMatrix,
+    /// The viewport transform.
+    pub viewport: NamedMatrix,
+}
+
+/// What happened to a primitive (an input triangle).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "fate")]
+pub enum Fate {
+    /// Entirely inside the view volume, rasterized as it is.
+    Drawn,
+    /// Partly inside: clipped, and the remaining polygon rasterized as triangles.
+    Clipped,
+    /// Entirely outside one plane of the view volume: dropped by clipping.
+    Outside {
+        /// The plane all three vertices are outside of.
+        plane: ClipPlane,
+    },
+    /// Discarded by face culling.
+    Culled {
+        /// `true` for a back face (clockwise on screen), `false` for a front face.
+        back: bool,
+    },
+    /// No area on screen after snapping to the sub-pixel grid: nothing to rasterize.
+    Degenerate,
+}
+
+/// The record of one primitive.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PrimitiveRecord {
+    /// The primitive id (triangles counted across objects in drawing order).
+    pub id: u32,
+    /// The object it belongs to.
+    pub object: u32,
+    /// Rows of the vertex table of its three vertices.
+    pub vertices: [u32; 3],
+    /// What happened to it.
+    #[serde(flatten)]
+    pub fate: Fate,
+    /// The polygon left after clipping, when it was clipped.
+    pub clipped_polygon: Option<Vec<ClipVertex>>,
+    /// Its raster triangles: indices `start..end` into [`FrameCapture::triangles`].
+    pub triangles: [u32; 2],
+    /// Samples covered and written (after the depth test), over all its raster triangles.
+    pub counts: RasterCounts,
+}
+
+/// A summary of one object, for the capture's JSON.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ObjectSummary {
+    /// Its name.
+    pub name: String,
+    /// Its mesh's name.
+    pub mesh: String,
+    /// Vertices in the mesh.
+    pub vertices: usize,
+    /// Triangles in the mesh.
+    pub triangles: usize,
+}
+
+/// Everything one frame did.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FrameCapture {
+    /// The settings it was rendered with.
+    pub settings: RenderSettings,
+    /// The camera.
+    pub camera: Camera,
+    /// The projection.
+    pub projection: Projection,
+    /// The lights.
+    pub lights: Vec<crate::light::Light>,
+    /// The objects drawn.
+    pub objects: Vec<ObjectSummary>,
+    /// The matrices with their factors.
+    pub matrices: Matrices,
+    /// The vertex table: every vertex of every object through every space.
+    pub vertices: Vec<VertexRecord>,
+    /// The lighting at each vertex (a row per vertex-table row), with Gouraud shading; empty
+    /// otherwise.
+    pub vertex_shading: Vec<crate::shade::ShadeTerms>,
+    /// The lighting of each face (a row per primitive, evaluated once at its centroid), with
+    /// flat shading; empty otherwise.
+    pub face_shading: Vec<crate::shade::ShadeTerms>,
+    /// The textures the frame read, by object name (their mip pyramids can be shown and exported).
+    pub textures: Vec<(String, std::sync::Arc<crate::texture::Texture>)>,
+    /// The figures' traversal with the matrix stack (push, visit with the composite, pop).
+    pub hierarchy: Vec<crate::hierarchy::Step>,
+    /// One record per input triangle.
+    pub primitives: Vec<PrimitiveRecord>,
+    /// The triangles that were rasterized, in order (clipping may split a primitive into several).
+    pub triangles: Vec<RasterTriangle>,
+    /// Per-sample depth and owner.
+    pub samples: SampleBuffers,
+    /// Per-pixel buffers.
+    pub pixels: PixelBuffers,
+}
+
+impl FrameCapture {
+    /// The buffers this capture holds (lighting buffers only when lighting was on, texturing
+    /// buffers only when an object is textured, the reflected term only when a mirror shows).
+    #[must_use]
+    pub fn buffers(&self) -> Vec<BufferKind> {
+        BufferKind::ALL
+            .into_iter()
+            .filter(|k| !k.is_lighting() || self.pixels.shading.is_some())
+            .filter(|k| !k.is_texturing() || self.pixels.texturing.is_some())
+            .filter(|&k| k != BufferKind::Reflected || self.reflects())
+            .collect()
+    }
+
+    /// Whether some pixel shows a mirror's reflected term (only then is its buffer listed).
+    fn reflects(&self) -> bool {
+        self.pixels
+            .shading
+            .as_ref()
+            .is_some_and(|s| s.reflected.iter().any(|c| *c != [f16::ZERO; 3]))
+    }
+
+    /// The barycentric weights of pixel `i`'s owning fragment at the pixel centre, relative to
+    /// the original triangle's vertices: `λ` from the owner's edge functions at the centre, then
+    /// affine `Σ λ_k·b_k` and perspective-correct `Σ (λ_k/w_k)/Σ(λ_j/w_j)·b_k` (what the resolve
+    /// interpolated the pixel's attributes with). `None` where nothing is drawn.
+    #[must_use]
+    pub fn barycentrics(&self, i: usize) -> Option<Barycentrics> {
+        let tri = self.triangles.get(*self.pixels.owner.get(i)? as usize)?;
+        let (w, h) = (self.width() as usize, self.height() as usize);
+        let (x, y) = (i % w, h - 1 - i / w);
+        let l = tri.lambda(Self::pixel_centre_fixed(x as u32, y as u32));
+        Some(Barycentrics {
+            perspective: tri.original_bary(l, true).to_array(),
+            affine: tri.original_bary(l, false).to_array(),
+        })
+    }
+
+    /// The bytes the per-pixel and per-sample buffers hold: what
+    /// [`RenderSettings::capture_bytes`] bounds (equal to it when every kept buffer applies).
+    #[must_use]
+    pub fn buffer_bytes(&self) -> u64 {
+        fn b<T>(v: &[T]) -> u64 {
+            std::mem::size_of_val(v) as u64
+        }
+        let p = &self.pixels;
+        let core = b(&p.coverage) + b(&p.depth) + b(&p.primitive) + b(&p.owner) + b(&p.color);
+        let lighting = p.shading.as_ref().map_or(0, |s| {
+            b(&s.ambient)
+                + b(&s.diffuse)
+                + b(&s.specular)
+                + b(&s.normal)
+                + b(&s.n_dot_l)
+                + b(&s.n_dot_h)
+                + b(&s.reflected)
+        });
+        let texturing = p.texturing.as_ref().map_or(0, |t| {
+            b(&t.uv) + b(&t.lod) + b(&t.level) + b(&t.texel) + b(&t.footprint)
+        });
+        core + lighting + texturing + b(&self.samples.depth) + b(&self.samples.triangle)
+    }
+
+    /// The bytes the whole capture holds: its buffers ([`Self::buffer_bytes`]) and its records
+    /// (the vertex table, the primitives with their clipped polygons, the raster triangles).
+    #[must_use]
+    pub fn memory_bytes(&self) -> u64 {
+        fn b<T>(v: &[T]) -> u64 {
+            std::mem::size_of_val(v) as u64
+        }
+        let polygons: u64 = self
+            .primitives
+            .iter()
+            .filter_map(|p| p.clipped_polygon.as_deref())
+            .map(b)
+            .sum();
+        self.buffer_bytes()
+            + b(&self.vertices)
+            + b(&self.vertex_shading)
+            + b(&self.face_shading)
+            + b(&self.primitives)
+            + polygons
+            + b(&self.triangles)
+    }
+
+    /// Width in pixels.
+    #[must_use]
+    pub fn width(&self) -> u32 {
+        self.settings.width
+    }
+
+    /// Height in pixels.
+    #[must_use]
+    pub fn height(&self) -> u32 {
+        self.settings.height
+    }
+
+    /// The nearest and farthest window depth over covered pixels, if any pixel is covered.
+    #[must_use]
+    pub fn depth_range(&self) -> Option<[f32; 2]> {
+        let mut range: Option<[f32; 2]> = None;
+        for (d, &c) in self.pixels.depth.iter().zip(&self.pixels.coverage) {
+            if c > 0 {
+                let r = range.get_or_insert([*d, *d]);
+                r[0] = r[0].min(*d);
+                r[1] = r[1].max(*d);
+            }
+        }
+        range
+    }
+
+    /// The centre of window pixel `(x, y)` in fixed point.
+    #[must_use]
+    pub fn pixel_centre_fixed(x: u32, y: u32) -> I64Vec2 {
+        I64Vec2::new(i64::from(x) * ONE + ONE / 2, i64::from(y) * ONE + ONE / 2)
+    }
+}

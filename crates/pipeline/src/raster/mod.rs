@@ -1,0 +1,234 @@
+//! Rasterization: from a triangle in window coordinates to the samples it covers.
+//!
+//! **Window coordinates** have their origin at the bottom-left corner of the viewport, x to the
+//! right, y up (OpenGL's convention); pixel `(i, j)` is the square `[i, i+1] × [j, j+1]` and its
+//! centre is `(i + ½, j + ½)`. Images are stored top row first, so pixel row `j` is image row
+//! `height − 1 − j`.
+//!
+//! **Snapping.** Vertex positions are snapped to a grid of 1/256 pixel ([`SUBPIXEL_BITS`] = 8) and
+//! every inside test is done on integers, exactly: two triangles that share an edge see the same
+//! edge function with opposite signs, so each sample on the edge goes to exactly one of them.
+//!
+//! **Edge functions.** For the edge `a → b`, `E(p) = (b.x − a.x)·(p.y − a.y) − (b.y − a.y)·(p.x − a.x)`,
+//! twice the signed area of the triangle `a, b, p`. Triangles are made counter-clockwise first,
+//! so that `E ≥ 0` on the inside of all three edges; `E_i` is the edge opposite vertex `i`, and the
+//! screen-space barycentric weights are `λ_i = E_i / (E_0 + E_1 + E_2)`.
+//!
+//! **Fill rule (top-left).** A sample exactly on an edge (`E = 0`) belongs to the triangle only if
+//! that edge is a *top* edge (horizontal, the triangle below it) or a *left* edge (the triangle to
+//! its right), as seen on screen. For a counter-clockwise triangle with y up: a top edge has
+//! `Δy = 0, Δx < 0`; a left edge has `Δy < 0`.
+//!
+//! **Depth** is `z_w = λ_0·z_0 + λ_1·z_1 + λ_2·z_2`, linear in screen space (NDC z is an affine
+//! function of screen x, y across a triangle). **Attributes** are interpolated perspective-correctly,
+//! `b_i = (λ_i / w_i) / Σ_k (λ_k / w_k)`, or affinely (`b_i = λ_i`) for comparison.
+//!
+//! Triangle setup and the inside test are here; the sample patterns in [`samples`]; the sample
+//! buffers (the z-buffer), the depth test and rasterizing into them in [`zbuffer`].
+
+mod samples;
+mod zbuffer;
+
+pub use samples::*;
+pub use zbuffer::*;
+
+use glam::{I64Vec2, Vec3};
+use serde::Serialize;
+
+/// Bits of sub-pixel precision of snapped vertex positions.
+pub const SUBPIXEL_BITS: u32 = 8;
+/// One pixel in fixed-point units.
+pub const ONE: i64 = 1 << SUBPIXEL_BITS;
+/// The primitive / triangle id of a sample nothing covered.
+pub const NONE: u32 = u32::MAX;
+
+/// Snaps a window coordinate to the sub-pixel grid.
+#[must_use]
+#[inline]
+pub fn snap(v: f32) -> i64 {
+    (f64::from(v) * ONE as f64).round() as i64
+}
+
+/// A triangle ready to be rasterized: snapped, counter-clockwise, with its edge equations.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct RasterTriangle {
+    /// The primitive (input triangle) this piece belongs to.
+    pub primitive: u32,
+    /// Window coordinates `(x, y, z_w)` of the corners, counter-clockwise.
+    pub window: [Vec3; 3],
+    /// `1/w_clip` of the corners (for perspective-correct interpolation).
+    pub inv_w: [f32; 3],
+    /// Barycentric weights of the corners with respect to the original triangle.
+    pub bary: [Vec3; 3],
+    /// Pixel bounding box `[x_min, y_min, x_max, y_max]` (inclusive, window pixels, y up),
+    /// clamped to the viewport.
+    pub bbox: [u32; 4],
+    #[serde(skip)]
+    edges: [Edge; 3],
+    #[serde(skip)]
+    area2: i64,
+}
+
+/// One edge equation `E(p) = a·p.x + b·p.y + c`, plus the fill-rule bias (`0` for top-left edges,
+/// `−1` otherwise, so that `E + bias ≥ 0` is the inside test on integers).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Edge {
+    a: i64,
+    b: i64,
+    c: i64,
+    bias: i64,
+}
+
+impl Edge {
+    fn new(p: I64Vec2, q: I64Vec2) -> Self {
+        let d = q - p;
+        let (a, b) = (-d.y, d.x);
+        let top_left = (d.y == 0 && d.x < 0) || d.y < 0;
+        Self {
+            a,
+            b,
+            c: -(a * p.x + b * p.y),
+            bias: if top_left { 0 } else { -1 },
+        }
+    }
+
+    #[inline]
+    fn at(&self, p: I64Vec2) -> i64 {
+        self.a * p.x + self.b * p.y + self.c
+    }
+}
+
+/// Why a triangle produced no raster triangle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SetupRejection {
+    /// Zero area after snapping.
+    Degenerate,
+    /// Clockwise on screen (a back face) with back-face culling on.
+    BackFace,
+    /// Counter-clockwise (a front face) with front-face culling on.
+    FrontFace,
+}
+
+impl RasterTriangle {
+    /// Sets up a triangle from window coordinates. Returns the signed orientation test result
+    /// through `Err` when it is degenerate or culled.
+    ///
+    /// # Errors
+    /// [`SetupRejection`] when the triangle has no area or is culled.
+    pub fn setup(
+        primitive: u32,
+        window: [Vec3; 3],
+        inv_w: [f32; 3],
+        bary: [Vec3; 3],
+        cull: CullMode,
+        size: (u32, u32),
+    ) -> Result<Self, SetupRejection> {
+        let mut fixed = window.map(|p| I64Vec2::new(snap(p.x), snap(p.y)));
+        let area2 = (fixed[1] - fixed[0]).perp_dot(fixed[2] - fixed[0]);
+        if area2 == 0 {
+            return Err(SetupRejection::Degenerate);
+        }
+        let front = area2 > 0;
+        match cull {
+            CullMode::Back if !front => return Err(SetupRejection::BackFace),
+            CullMode::Front if front => return Err(SetupRejection::FrontFace),
+            _ => {}
+        }
+        let (mut window, mut inv_w, mut bary) = (window, inv_w, bary);
+        if !front {
+            fixed.swap(1, 2);
+            window.swap(1, 2);
+            inv_w.swap(1, 2);
+            bary.swap(1, 2);
+        }
+        let edges = [
+            Edge::new(fixed[1], fixed[2]),
+            Edge::new(fixed[2], fixed[0]),
+            Edge::new(fixed[0], fixed[1]),
+        ];
+        let lo = fixed[0].min(fixed[1]).min(fixed[2]);
+        let hi = fixed[0].max(fixed[1]).max(fixed[2]);
+        let clamp = |v: i64, max: u32| v.div_euclid(ONE).clamp(0, i64::from(max) - 1) as u32;
+        let bbox = [
+            clamp(lo.x, size.0),
+            clamp(lo.y, size.1),
+            clamp(hi.x, size.0),
+            clamp(hi.y, size.1),
+        ];
+        Ok(Self {
+            primitive,
+            window,
+            inv_w,
+            bary,
+            bbox,
+            edges,
+            area2: area2.abs(),
+        })
+    }
+
+    /// Whether the sample at fixed-point position `p` is covered (top-left rule).
+    #[must_use]
+    #[inline]
+    pub fn covers(&self, p: I64Vec2) -> bool {
+        self.edges.iter().all(|e| e.at(p) + e.bias >= 0)
+    }
+
+    /// Screen-space barycentric weights `λ` at a fixed-point position (extrapolated outside).
+    #[must_use]
+    #[inline]
+    pub fn lambda(&self, p: I64Vec2) -> Vec3 {
+        let inv = 1.0 / self.area2 as f64;
+        let l1 = self.edges[1].at(p) as f64 * inv;
+        let l2 = self.edges[2].at(p) as f64 * inv;
+        Vec3::new((1.0 - l1 - l2) as f32, l1 as f32, l2 as f32)
+    }
+
+    /// The depth plane in edge-function terms, `(z_0, k_1, k_2)` with
+    /// `z = z_0 + k_1·E_1 + k_2·E_2`, `k_i = (z_i − z_0)/area` (`E_i` without the fill-rule bias).
+    #[must_use]
+    #[inline]
+    fn depth_plane(&self) -> (f64, f64, f64) {
+        let inv_area = 1.0 / self.area2 as f64;
+        let z0 = f64::from(self.window[0].z);
+        (
+            z0,
+            (f64::from(self.window[1].z) - z0) * inv_area,
+            (f64::from(self.window[2].z) - z0) * inv_area,
+        )
+    }
+
+    /// Window depth at screen-space weights `λ`.
+    #[must_use]
+    #[inline]
+    pub fn depth(&self, l: Vec3) -> f32 {
+        l.x * self.window[0].z + l.y * self.window[1].z + l.z * self.window[2].z
+    }
+
+    /// Barycentric weights of the **original** triangle at screen-space weights `λ`:
+    /// perspective-correct, `b = Σ (λ_i/w_i)·bary_i / Σ (λ_i/w_i)`, or affine, `b = Σ λ_i·bary_i`.
+    #[must_use]
+    #[inline]
+    pub fn original_bary(&self, l: Vec3, perspective_correct: bool) -> Vec3 {
+        let k = if perspective_correct {
+            let k = l * Vec3::from(self.inv_w);
+            k / (k.x + k.y + k.z)
+        } else {
+            l
+        };
+        self.bary[0] * k.x + self.bary[1] * k.y + self.bary[2] * k.z
+    }
+}
+
+/// Which faces are discarded before rasterization. Front faces are counter-clockwise in window
+/// coordinates (OpenGL's default `glFrontFace(GL_CCW)`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CullMode {
+    /// Draw both sides (OpenGL's default: culling disabled).
+    #[default]
+    None,
+    /// Discard triangles seen from behind.
+    Back,
+    /// Discard triangles seen from the front.
+    Front,
+}

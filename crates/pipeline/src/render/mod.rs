@@ -1,0 +1,251 @@
+//! `render`: the stages in order, each recording into the [`FrameCapture`].
+//!
+//! vertex stage → primitive assembly → clipping → perspective division and viewport →
+//! triangle setup (culling) → rasterization with the depth test → resolve to pixels.
+//!
+//! The order and the vertex stage's call are here; primitive assembly, clipping, division,
+//! viewport, setup and flat shading's face lighting in [`assembly`]; the resolve of samples to
+//! pixels (colour, lighting terms, texture lookups) in [`resolve`].
+
+mod assembly;
+mod resolve;
+
+use std::time::{Duration, Instant};
+
+use serde::Serialize;
+
+use self::assembly::{assemble_and_clip, light_faces};
+use self::resolve::{ResolveContext, resolve};
+use crate::capture::{FrameCapture, Matrices, ObjectSummary, PixelBuffers};
+use crate::raster::SampleBuffers;
+use crate::scene::Scene;
+use crate::settings::RenderSettings;
+use crate::shade::{Frequency, ShadeTerms};
+use crate::transform::{self, NamedMatrix};
+use crate::vertex::{self, VertexMatrices, VertexRecord};
+
+/// Why a frame cannot be rendered.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RenderError {
+    /// The scene or the settings are invalid; each problem as a sentence.
+    #[error("the scene cannot be drawn: {}", .0.join("; "))]
+    Invalid(Vec<String>),
+}
+
+/// Wall-clock time spent in each stage of one frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct StageTimes {
+    /// Vertex stage (all transforms).
+    pub vertex: Duration,
+    /// Primitive assembly, clipping, division, viewport and triangle setup.
+    pub clip_setup: Duration,
+    /// Rasterization and the depth test.
+    pub raster: Duration,
+    /// Resolve of samples to pixels (barycentrics, colour).
+    pub resolve: Duration,
+}
+
+impl StageTimes {
+    /// The whole frame.
+    #[must_use]
+    pub fn total(&self) -> Duration {
+        self.vertex + self.clip_setup + self.raster + self.resolve
+    }
+}
+
+/// Renders one frame and records every stage. A pure function of its inputs.
+///
+/// # Errors
+/// [`RenderError::Invalid`] listing every problem with the scene or the settings.
+pub fn render(scene: &Scene, settings: &RenderSettings) -> Result<FrameCapture, RenderError> {
+    render_timed(scene, settings).map(|(c, _)| c)
+}
+
+/// [`render`], also returning how long each stage took.
+///
+/// # Errors
+/// As [`render`].
+pub fn render_timed(
+    scene: &Scene,
+    settings: &RenderSettings,
+) -> Result<(FrameCapture, StageTimes), RenderError> {
+    render_reusing(scene, settings, None)
+}
+
+/// [`render_timed`], writing the per-pixel and per-sample buffers into the storage of `spare`,
+/// a capture no longer needed (the frame before). A full capture is tens to hundreds of
+/// megabytes; memory fresh from the system costs a page fault and a zeroing every 4 KiB before
+/// the pipeline writes a byte of it, which reusing storage avoids. The result is the same.
+///
+/// # Errors
+/// As [`render`].
+pub fn render_reusing(
+    scene: &Scene,
+    settings: &RenderSettings,
+    spare: Option<FrameCapture>,
+) -> Result<(FrameCapture, StageTimes), RenderError> {
+    let problems = scene.problems(settings);
+    if !problems.is_empty() {
+        return Err(RenderError::Invalid(problems));
+    }
+    if scene.shadow.is_some() || !scene.figures.is_empty() {
+        // Figures and the shadow pass become plain objects; the same pipeline draws them all.
+        let (objects, steps) = scene.drawn_objects();
+        let expanded = Scene {
+            objects,
+            shadow: None,
+            figures: Vec::new(),
+            ..scene.clone()
+        };
+        return render_stages(&expanded, settings, spare).map(|(mut c, t)| {
+            c.hierarchy = steps;
+            (c, t)
+        });
+    }
+    render_stages(scene, settings, spare)
+}
+
+/// The stages, in order, over a scene whose figures and shadows are already plain objects.
+fn render_stages(
+    scene: &Scene,
+    settings: &RenderSettings,
+    spare: Option<FrameCapture>,
+) -> Result<(FrameCapture, StageTimes), RenderError> {
+    let (spare_pixels, spare_samples) = spare.map_or((PixelBuffers::default(), None), |c| {
+        (c.pixels, Some(c.samples))
+    });
+    let matrices = frame_matrices(scene, settings)?;
+    let mut times = StageTimes::default();
+
+    let t = Instant::now();
+    let (vertices, vertex_shading) = vertex_stage(scene, settings, &matrices);
+    times.vertex = t.elapsed();
+
+    let t = Instant::now();
+    let (mut primitives, triangles) = assemble_and_clip(scene, settings, &matrices, &vertices);
+    let face_shading = if settings.shading == Frequency::Flat {
+        light_faces(scene, settings, &vertices, &primitives)
+    } else {
+        Vec::new()
+    };
+    times.clip_setup = t.elapsed();
+
+    let t = Instant::now();
+    let clear = settings.depth_test.clear_value();
+    let (width, height) = (settings.width, settings.height);
+    let mut samples = match spare_samples {
+        Some(s) => s.cleared(width, height, settings.samples, clear),
+        None => SampleBuffers::new(width, height, settings.samples, clear),
+    };
+    let counts = samples.rasterize_all(&triangles, settings.depth_test);
+    for (tri, c) in triangles.iter().zip(counts) {
+        let rec = &mut primitives[tri.primitive as usize];
+        rec.counts.covered += c.covered;
+        rec.counts.written += c.written;
+    }
+    times.raster = t.elapsed();
+
+    let t = Instant::now();
+    let ctx = ResolveContext {
+        derivatives: settings.capture.texturing || settings.sampler.uses_footprint(),
+        scene,
+        settings,
+        samples: &samples,
+        triangles: &triangles,
+        primitives: &primitives,
+        vertices: &vertices,
+        vertex_shading: &vertex_shading,
+        face_shading: &face_shading,
+    };
+    let pixels = resolve(&ctx, spare_pixels);
+    times.resolve = t.elapsed();
+
+    let capture = FrameCapture {
+        settings: *settings,
+        camera: scene.camera,
+        projection: scene.projection,
+        lights: scene.lights.clone(),
+        objects: scene
+            .objects
+            .iter()
+            .map(|o| ObjectSummary {
+                name: o.name.clone(),
+                mesh: o.mesh.name.clone(),
+                vertices: o.mesh.positions.len(),
+                triangles: o.mesh.indices.len(),
+            })
+            .collect(),
+        matrices,
+        vertices,
+        vertex_shading,
+        face_shading,
+        hierarchy: Vec::new(),
+        textures: scene
+            .objects
+            .iter()
+            .filter_map(|o| {
+                o.texture
+                    .as_ref()
+                    .map(|t| (o.name.clone(), std::sync::Arc::clone(t)))
+            })
+            .collect(),
+        primitives,
+        triangles,
+        samples,
+        pixels,
+    };
+    Ok((capture, times))
+}
+
+/// The vertex stage: every vertex of every object through every space, in order, with its
+/// lighting when shading is per vertex.
+fn vertex_stage(
+    scene: &Scene,
+    settings: &RenderSettings,
+    matrices: &Matrices,
+) -> (Vec<VertexRecord>, Vec<ShadeTerms>) {
+    let mut vertices = Vec::new();
+    let mut vertex_shading = Vec::new();
+    for (i, object) in scene.objects.iter().enumerate() {
+        let m = VertexMatrices {
+            model: matrices.models[i].matrix,
+            view: matrices.view.matrix,
+            projection: matrices.projection.matrix,
+            viewport: matrices.viewport.matrix,
+        };
+        let lighting = vertex::VertexLighting {
+            frequency: settings.shading,
+            reflection: settings.reflection,
+            lights: &scene.lights,
+            eye: scene.camera.eye,
+        };
+        vertex::transform_object(
+            object,
+            i as u32,
+            &m,
+            &lighting,
+            &mut vertices,
+            &mut vertex_shading,
+        );
+    }
+    (vertices, vertex_shading)
+}
+
+/// The frame's matrices: models, view, both courses' projections, viewport.
+fn frame_matrices(scene: &Scene, settings: &RenderSettings) -> Result<Matrices, RenderError> {
+    let view = scene
+        .view_matrix()
+        .map_err(|e| RenderError::Invalid(vec![e.to_string()]))?;
+    let aspect = settings.aspect();
+    Ok(Matrices {
+        models: scene.objects.iter().map(|o| o.model_matrix()).collect(),
+        projection: scene.projection.matrix(aspect),
+        projection_games101: scene.projection.matrix_games101(aspect),
+        viewport: NamedMatrix::new(
+            "M_viewport",
+            "x_w = (x+1)·width/2, y_w = (y+1)·height/2, z_w = (z+1)/2",
+            transform::viewport(settings.width as f32, settings.height as f32),
+        ),
+        view,
+    })
+}

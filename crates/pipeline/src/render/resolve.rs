@@ -1,0 +1,382 @@
+//! The resolve: samples to pixels. Each pixel's coverage, mean depth and owning triangle; its
+//! colour, shaded once per pixel and triangle at the centre (multisampling) or at every sample
+//! (supersampling); and the owning fragment's lighting terms and texture lookup, written into
+//! the kept buffers a row at a time, rows in parallel.
+
+use glam::{I64Vec2, Vec2, Vec3};
+use half::f16;
+use rayon::prelude::*;
+
+use crate::capture::{
+    FrameCapture, PixelBuffers, PixelTexture, PrimitiveRecord, ShadingRow, TextureRow,
+};
+use crate::raster::{NONE, ONE, RasterTriangle, SampleBuffers};
+use crate::scene::Scene;
+use crate::settings::RenderSettings;
+use crate::shade::{self, Frequency, ShadeTerms};
+use crate::texture::Lookup;
+use crate::vertex::VertexRecord;
+
+/// Everything the resolve computes for one pixel.
+struct ResolvedPixel {
+    terms: Option<ShadeTerms>,
+    texture: Option<(Vec2, Lookup)>,
+    coverage: u8,
+    depth: f32,
+    primitive: u32,
+    owner: u32,
+    color: [f32; 3],
+}
+
+/// One image row of every per-pixel buffer, written by one resolve task.
+struct RowOut<'a> {
+    coverage: &'a mut [u8],
+    depth: &'a mut [f32],
+    primitive: &'a mut [u32],
+    owner: &'a mut [u32],
+    color: &'a mut [[f32; 3]],
+    shading: Option<ShadingRow<'a>>,
+    texturing: Option<TextureRow<'a>>,
+}
+
+/// A resolve task's reused storage: a row's lighting terms and lookups as 32-bit floats, before
+/// they are converted to half floats.
+#[derive(Default)]
+struct RowScratch {
+    lighting: Vec<f32>,
+    uvs: Vec<[f32; 2]>,
+    texturing: Vec<f32>,
+    halves: Vec<f16>,
+}
+
+impl RowOut<'_> {
+    /// Resolves image row `row` (window `y`) into every kept buffer, so that reused storage
+    /// holds nothing of the frame before.
+    fn resolve(&mut self, ctx: &ResolveContext<'_>, row: usize, y: u32, s: &mut RowScratch) {
+        let w = self.color.len();
+        s.lighting.clear();
+        s.uvs.clear();
+        s.texturing.clear();
+        for x in 0..w {
+            let r = ctx.pixel(x as u32, y, row * w + x);
+            self.coverage[x] = r.coverage;
+            self.depth[x] = r.depth;
+            self.primitive[x] = r.primitive;
+            self.owner[x] = r.owner;
+            self.color[x] = r.color;
+            if self.shading.is_some() {
+                s.lighting
+                    .extend_from_slice(&ShadingRow::flatten(r.terms.as_ref()));
+            }
+            if self.texturing.is_some() {
+                let t = r.texture.map(|(uv, l)| PixelTexture::new(uv, &l));
+                let (uv, halves) = TextureRow::flatten(t.as_ref());
+                s.uvs.push(uv);
+                s.texturing.extend_from_slice(&halves);
+            }
+        }
+        if let Some(out) = &mut self.shading {
+            out.store(&s.lighting, &mut s.halves);
+        }
+        if let Some(out) = &mut self.texturing {
+            out.store(&s.uvs, &s.texturing, &mut s.halves);
+        }
+    }
+}
+
+/// Every per-pixel buffer cut into image rows, one [`RowOut`] a row, so that rows can be
+/// resolved in parallel.
+fn split_rows(px: &mut PixelBuffers, w: usize, h: usize) -> Vec<RowOut<'_>> {
+    let mut texture_rows: Vec<Option<TextureRow<'_>>> = match &mut px.texturing {
+        Some(tb) => tb.rows(w).into_iter().map(Some).collect(),
+        None => (0..h).map(|_| None).collect(),
+    };
+    let mut shading_rows: Vec<Option<ShadingRow<'_>>> = match &mut px.shading {
+        Some(sb) => sb.rows(w).into_iter().map(Some).collect(),
+        None => (0..h).map(|_| None).collect(),
+    };
+    px.coverage
+        .chunks_mut(w)
+        .zip(px.depth.chunks_mut(w))
+        .zip(px.primitive.chunks_mut(w))
+        .zip(px.owner.chunks_mut(w))
+        .zip(px.color.chunks_mut(w))
+        .zip(shading_rows.drain(..).zip(texture_rows.drain(..)))
+        .map(
+            |(((((coverage, depth), primitive), owner), color), (shading, texturing))| RowOut {
+                coverage,
+                depth,
+                primitive,
+                owner,
+                color,
+                shading,
+                texturing,
+            },
+        )
+        .collect()
+}
+
+/// `v` holding `n` elements, reusing its storage (the resolve overwrites every element).
+fn sized<T: Clone>(mut v: Vec<T>, n: usize, fill: T) -> Vec<T> {
+    v.resize(n, fill);
+    v
+}
+
+/// The per-pixel buffers for a frame of `n` pixels, in `spare`'s storage when it has some:
+/// the lighting buffers when lighting is on and kept, the texturing buffers when an object is
+/// textured and they are kept.
+fn pixel_storage(spare: PixelBuffers, n: usize, lighting: bool, texturing: bool) -> PixelBuffers {
+    PixelBuffers {
+        coverage: sized(spare.coverage, n, 0),
+        depth: sized(spare.depth, n, 0.0),
+        primitive: sized(spare.primitive, n, NONE),
+        owner: sized(spare.owner, n, NONE),
+        color: sized(spare.color, n, [0.0; 3]),
+        shading: lighting.then(|| spare.shading.unwrap_or_default().resized(n)),
+        texturing: texturing.then(|| spare.texturing.unwrap_or_default().resized(n)),
+    }
+}
+
+/// Resolves samples to pixels: coverage, mean depth, the owning primitive and raster
+/// triangle, and the colour at the pixel centre (once per pixel and triangle, as multisampling
+/// shades), with the lighting terms and texture lookup of the owning fragment when the settings
+/// keep them. Rows are independent, so they are resolved in parallel.
+pub(super) fn resolve(ctx: &ResolveContext<'_>, spare: PixelBuffers) -> PixelBuffers {
+    let settings = ctx.settings;
+    let (w, h) = (settings.width as usize, settings.height as usize);
+    let lit = settings.shading != Frequency::Unlit && settings.capture.lighting;
+    let textured = settings.capture.texturing
+        && ctx
+            .scene
+            .objects
+            .iter()
+            .any(|o| o.texture.is_some() && !o.mesh.uvs.is_empty());
+    let mut px = pixel_storage(spare, w * h, lit, textured);
+    let rows = split_rows(&mut px, w, h);
+    rows.into_par_iter().enumerate().for_each_init(
+        RowScratch::default,
+        |scratch, (row, mut out)| {
+            out.resolve(ctx, row, (h - 1 - row) as u32, scratch);
+        },
+    );
+    px
+}
+
+/// What the resolve of one pixel reads.
+pub(super) struct ResolveContext<'a> {
+    /// Whether texture lookups need their screen derivatives: to choose a mip level or the
+    /// anisotropic taps, or because the texturing buffers (λ, level, footprint) are kept.
+    pub(super) derivatives: bool,
+    pub(super) vertex_shading: &'a [ShadeTerms],
+    pub(super) face_shading: &'a [ShadeTerms],
+    pub(super) scene: &'a Scene,
+    pub(super) settings: &'a RenderSettings,
+    pub(super) samples: &'a SampleBuffers,
+    pub(super) triangles: &'a [RasterTriangle],
+    pub(super) primitives: &'a [PrimitiveRecord],
+    pub(super) vertices: &'a [VertexRecord],
+}
+
+impl ResolveContext<'_> {
+    /// The surface colour of triangle `t` at original-triangle weights `b`: `Σ b_k·c_k`.
+    fn color_of(&self, t: &RasterTriangle, b: Vec3) -> Vec3 {
+        let rows = self.primitives[t.primitive as usize].vertices;
+        let c = rows.map(|r| self.vertices[r as usize].color);
+        c[0] * b.x + c[1] * b.y + c[2] * b.z
+    }
+
+    /// The texture lookup of triangle `t` at the pixel centre `centre`, when its object has a
+    /// texture and its mesh has uvs: `uv` interpolated like every attribute, and its screen
+    /// derivatives as the differences to the next pixel in x and in y (analytic: the same
+    /// triangle's interpolation evaluated there).
+    fn texture_lookup(&self, t: &RasterTriangle, centre: I64Vec2) -> Option<(Vec2, Lookup)> {
+        let prim = &self.primitives[t.primitive as usize];
+        let texture = self.scene.objects[prim.object as usize].texture.as_ref()?;
+        let uvs = prim.vertices.map(|r| self.vertices[r as usize].uv);
+        let [Some(a), Some(b), Some(c)] = uvs else {
+            return None;
+        };
+        let pc = self.settings.perspective_correct;
+        let uv_at = |p: I64Vec2| {
+            let w = t.original_bary(t.lambda(p), pc);
+            a * w.x + b * w.y + c * w.z
+        };
+        let uv = uv_at(centre);
+        let sampler = &self.settings.sampler;
+        if !self.derivatives {
+            // Neither the colour (one level, one tap) nor a kept buffer needs the footprint.
+            return Some((uv, texture.sample(uv, Vec2::ZERO, Vec2::ZERO, sampler)));
+        }
+        let dx = uv_at(centre + I64Vec2::new(ONE, 0)) - uv;
+        let dy = uv_at(centre + I64Vec2::new(0, ONE)) - uv;
+        Some((uv, texture.sample(uv, dx, dy, sampler)))
+    }
+
+    /// The lighting of triangle `t` at weights `b` with surface colour `surface`, by the shading
+    /// frequency: the face's own terms (flat) or the vertices' terms interpolated (Gouraud) — a
+    /// texture then modulates their ambient and diffuse terms, as OpenGL's `GL_MODULATE` does — or
+    /// lighting evaluated here with the interpolated position and normal (Phong). `None` when unlit.
+    fn terms_of(
+        &self,
+        t: &RasterTriangle,
+        b: Vec3,
+        surface: Vec3,
+        textured: bool,
+    ) -> Option<ShadeTerms> {
+        let prim = &self.primitives[t.primitive as usize];
+        let v = prim.vertices.map(|r| &self.vertices[r as usize]);
+        if !self.scene.objects[prim.object as usize].lit {
+            return None;
+        }
+        match self.settings.shading {
+            Frequency::Unlit => None,
+            Frequency::Flat | Frequency::Gouraud => {
+                let mut terms = if self.settings.shading == Frequency::Flat {
+                    self.face_shading[t.primitive as usize]
+                } else {
+                    let s = prim.vertices.map(|r| &self.vertex_shading[r as usize]);
+                    ShadeTerms::blend(s, b)
+                };
+                if textured {
+                    terms.ambient *= surface;
+                    terms.diffuse *= surface;
+                }
+                Some(terms)
+            }
+            Frequency::Phong => {
+                let p = v[0].world.truncate() * b.x
+                    + v[1].world.truncate() * b.y
+                    + v[2].world.truncate() * b.z;
+                let mut n =
+                    v[0].normal_world * b.x + v[1].normal_world * b.y + v[2].normal_world * b.z;
+                let object = &self.scene.objects[prim.object as usize];
+                if let (Some(detail), [Some(a), Some(bb), Some(c)]) =
+                    (&object.detail, v.map(|v| v.uv))
+                {
+                    let world = v.map(|v| v.world.truncate());
+                    if let Some((tangent, bitangent)) =
+                        crate::texture::tangent_frame(world, [a, bb, c])
+                    {
+                        let uv = a * b.x + bb * b.y + c * b.z;
+                        n = detail.perturb(n, tangent, bitangent, uv);
+                    }
+                }
+                let mut terms = shade::shade(
+                    p,
+                    n,
+                    self.scene.camera.eye,
+                    surface,
+                    &self.scene.lights,
+                    &object.material,
+                    self.settings.reflection,
+                );
+                if let Some(env) = &object.environment {
+                    // r = 2(n·v)n − v, the mirror direction of the view vector: a mirror of
+                    // reflectivity k shows k of what it reflects and keeps 1 − k of its own
+                    // ambient and diffuse light.
+                    let (n, v) = (
+                        terms.normal,
+                        (self.scene.camera.eye - p).normalize_or_zero(),
+                    );
+                    let k = env.reflectivity.clamp(0.0, 1.0);
+                    terms.reflected = env.cube.sample(2.0 * n.dot(v) * n - v) * k;
+                    terms.ambient *= 1.0 - k;
+                    terms.diffuse *= 1.0 - k;
+                }
+                Some(terms)
+            }
+        }
+    }
+
+    /// The colour of triangle `t` at the fixed-point position `at`, with its lighting terms and
+    /// texture lookup: the surface colour is the texel (textured) or the interpolated vertex
+    /// colour, then lit by the shading frequency.
+    fn shade_at(
+        &self,
+        t: &RasterTriangle,
+        at: I64Vec2,
+    ) -> (Vec3, Option<ShadeTerms>, Option<(Vec2, Lookup)>) {
+        let b = t.original_bary(t.lambda(at), self.settings.perspective_correct);
+        let texel = self.texture_lookup(t, at);
+        let surface = texel.map_or_else(|| self.color_of(t, b), |(_, l)| l.color);
+        let terms = self.terms_of(t, b, surface, texel.is_some());
+        (terms.map_or(surface, |t| t.color()), terms, texel)
+    }
+
+    /// Resolves window pixel `(x, y)`, whose image index is `i`.
+    fn pixel(&self, x: u32, y: u32, i: usize) -> ResolvedPixel {
+        let s = self.settings.samples.count();
+        let tris = &self.samples.triangle[i * s..(i + 1) * s];
+        let depths = &self.samples.depth[i * s..(i + 1) * s];
+        let background = self.settings.background;
+        let mut out = ResolvedPixel {
+            terms: None,
+            texture: None,
+            coverage: 0,
+            depth: depths.iter().sum::<f32>() / s as f32,
+            primitive: NONE,
+            owner: NONE,
+            color: background.to_array(),
+        };
+        let covered = tris.iter().filter(|&&t| t != NONE).count();
+        if covered == 0 {
+            return out;
+        }
+        out.coverage = covered as u8;
+        let centre = FrameCapture::pixel_centre_fixed(x, y);
+        if covered == s && !self.settings.per_sample_shading && tris.iter().all(|&t| t == tris[0]) {
+            // Inside a triangle (the usual case): it owns the pixel and is shaded once. The
+            // general path below gives the same, (0·background + c·s)/s = c exactly, s being a
+            // power of two.
+            let owner = &self.triangles[tris[0] as usize];
+            let (color, terms, texel) = self.shade_at(owner, centre);
+            return ResolvedPixel {
+                terms,
+                texture: texel,
+                primitive: owner.primitive,
+                owner: tris[0],
+                color: color.to_array(),
+                ..out
+            };
+        }
+        // The owning primitive: most samples, ties to the earliest sample.
+        let mut best = (0usize, NONE);
+        for &t in tris.iter().filter(|&&t| t != NONE) {
+            let prim = self.triangles[t as usize].primitive;
+            let count = tris
+                .iter()
+                .filter(|&&u| u != NONE && self.triangles[u as usize].primitive == prim)
+                .count();
+            if count > best.0 {
+                best = (count, t);
+            }
+        }
+        let owner = &self.triangles[best.1 as usize];
+        out.primitive = owner.primitive;
+        out.owner = best.1;
+        // Colour. Multisampling: each distinct triangle once, at the centre, weighted by its
+        // samples. Supersampling: every covered sample shaded at its own position.
+        let mut sum = background * (s - covered) as f32;
+        let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
+        for (k, &t) in tris.iter().enumerate() {
+            let per_sample = self.settings.per_sample_shading;
+            if t == NONE || (!per_sample && tris[..k].contains(&t)) {
+                continue;
+            }
+            let tri = &self.triangles[t as usize];
+            let (at, weight) = if per_sample {
+                (corner + self.samples.offset(k), 1.0)
+            } else {
+                (centre, tris.iter().filter(|&&u| u == t).count() as f32)
+            };
+            let (color, terms, texel) = self.shade_at(tri, at);
+            sum += color * weight;
+            if tri.primitive == owner.primitive && out.terms.is_none() && out.texture.is_none() {
+                out.terms = terms;
+                out.texture = texel;
+            }
+        }
+        out.color = (sum / s as f32).to_array();
+        out
+    }
+}

@@ -1,0 +1,119 @@
+//! How the image is produced: its size, the samples per pixel, culling, the depth test,
+//! interpolation, the shading frequency and reflection model, the texture sampler, and which
+//! buffers to keep; with the limits that keep a capture's memory bounded.
+
+use glam::Vec3;
+use serde::Serialize;
+
+use crate::buffers::{CAPTURE_BYTES_PER_SAMPLE, Capture};
+use crate::raster::{CullMode, DepthTest, Samples};
+use crate::shade::{Frequency, Reflection};
+use crate::texture::Sampler;
+
+/// How the image is produced: size, samples, culling, depth test, interpolation.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct RenderSettings {
+    /// Viewport width in pixels.
+    pub width: u32,
+    /// Viewport height in pixels.
+    pub height: u32,
+    /// Samples per pixel.
+    pub samples: Samples,
+    /// Face culling.
+    pub cull: CullMode,
+    /// Depth comparison.
+    pub depth_test: DepthTest,
+    /// Interpolate attributes perspective-correctly (`false`: affine in screen space, for comparison).
+    pub perspective_correct: bool,
+    /// Where lighting is evaluated (unlit: the surface colour as it is).
+    pub shading: Frequency,
+    /// The specular term: Phong or Blinn-Phong.
+    pub reflection: Reflection,
+    /// How textures are read.
+    pub sampler: Sampler,
+    /// Shade every sample at its own position (supersampling) instead of once per pixel and
+    /// triangle at the pixel centre (multisampling).
+    pub per_sample_shading: bool,
+    /// The clear colour, linear RGB in `[0, 1]`.
+    pub background: Vec3,
+    /// Which per-pixel buffers to keep ([`Capture::FULL`]: all of them).
+    pub capture: Capture,
+}
+
+impl Default for RenderSettings {
+    fn default() -> Self {
+        Self {
+            width: 640,
+            height: 480,
+            samples: Samples::X1,
+            cull: CullMode::None,
+            depth_test: DepthTest::Less,
+            perspective_correct: true,
+            shading: Frequency::Unlit,
+            reflection: Reflection::BlinnPhong,
+            sampler: Sampler::default(),
+            per_sample_shading: false,
+            background: Vec3::new(0.08, 0.09, 0.11),
+            capture: Capture::FULL,
+        }
+    }
+}
+
+/// The largest width or height of a viewport.
+pub const MAX_VIEWPORT_SIDE: u32 = 16_384;
+/// The most memory one capture may take, by [`RenderSettings::capture_bytes`]: 2 GiB, so that
+/// a mistaken size is refused with a message instead of exhausting the machine.
+pub const MAX_CAPTURE_BYTES: u64 = 2 << 30;
+
+impl RenderSettings {
+    /// Width / height.
+    #[must_use]
+    pub fn aspect(&self) -> f32 {
+        self.width as f32 / self.height as f32
+    }
+
+    /// The memory the per-pixel and per-sample buffers of a capture at these settings take, at
+    /// most: `W·H·B + W·H·S·8` bytes with `B` the selection's bytes a pixel (85 for a full
+    /// capture, see [`CAPTURE_BYTES_PER_PIXEL`]).
+    #[must_use]
+    pub fn capture_bytes(&self) -> u64 {
+        let pixels = u64::from(self.width) * u64::from(self.height);
+        pixels * self.capture.bytes_per_pixel()
+            + pixels * self.samples.count() as u64 * CAPTURE_BYTES_PER_SAMPLE
+    }
+
+    /// Why a capture at these settings would take too much memory, if it would.
+    #[must_use]
+    pub fn capture_problem(&self) -> Option<String> {
+        let bytes = self.capture_bytes();
+        (bytes > MAX_CAPTURE_BYTES).then(|| {
+            format!(
+                "{}×{} pixels × {} samples needs about {} MB for a capture, more than the {} MB \
+                 allowed; lower the size or the sample count",
+                self.width,
+                self.height,
+                self.samples.count(),
+                bytes >> 20,
+                MAX_CAPTURE_BYTES >> 20
+            )
+        })
+    }
+
+    /// What is wrong with these settings, if anything.
+    #[must_use]
+    pub fn problems(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        for (name, v) in [("width", self.width), ("height", self.height)] {
+            if v == 0 || v > MAX_VIEWPORT_SIDE {
+                out.push(format!(
+                    "the viewport {name} must be between 1 and {MAX_VIEWPORT_SIDE} pixels, got {v}"
+                ));
+            }
+        }
+        out.extend(self.capture_problem());
+        if !self.background.is_finite() {
+            out.push("the background colour must be finite".to_owned());
+        }
+        out
+    }
+}

@@ -1,0 +1,170 @@
+//! Samplers: nearest and bilinear filtering within a level, the level of detail
+//! `λ = log₂ L + bias` from the screen derivatives of uv, nearest-level and trilinear
+//! minification, and anisotropic filtering along the footprint's major axis.
+
+use glam::{Vec2, Vec3};
+use serde::Serialize;
+
+use super::{Texture, Wrap};
+
+/// Filtering within one level.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Filter {
+    /// The nearest texel.
+    Nearest,
+    /// The four nearest texels, weighted.
+    #[default]
+    Bilinear,
+}
+
+/// How minification uses the mipmap pyramid.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Mipmap {
+    /// Level 0 always (aliases when minified).
+    None,
+    /// The nearest level to `λ`.
+    Nearest,
+    /// Trilinear: the two levels around `λ`, blended by its fraction.
+    #[default]
+    Linear,
+}
+
+/// A sampler: how a texture is read.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Sampler {
+    /// Outside `[0, 1]`.
+    pub wrap: Wrap,
+    /// Within a level.
+    pub filter: Filter,
+    /// Across levels.
+    pub mipmap: Mipmap,
+    /// The most samples along the footprint's major axis (1: isotropic).
+    pub anisotropy: u32,
+    /// Added to `λ`.
+    pub lod_bias: f32,
+}
+
+impl Sampler {
+    /// Whether the colour a lookup returns depends on the screen derivatives of uv: to choose
+    /// a mip level, or to place anisotropic taps. Without either, [`Texture::sample`] reads
+    /// level 0 once whatever the footprint is.
+    #[must_use]
+    pub fn uses_footprint(&self) -> bool {
+        self.mipmap != Mipmap::None || self.anisotropy > 1
+    }
+}
+
+impl Default for Sampler {
+    fn default() -> Self {
+        Self {
+            wrap: Wrap::Repeat,
+            filter: Filter::Bilinear,
+            mipmap: Mipmap::Linear,
+            anisotropy: 1,
+            lod_bias: 0.0,
+        }
+    }
+}
+
+/// What one texture lookup did, for the capture.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct Lookup {
+    /// The colour read.
+    pub color: Vec3,
+    /// `λ` (with the bias), before clamping to the pyramid.
+    pub lod: f32,
+    /// The finer level read.
+    pub level: u32,
+    /// The weight of the next level (trilinear), 0 otherwise.
+    pub level_blend: f32,
+    /// Samples taken along the major axis (anisotropic filtering).
+    pub taps: u32,
+    /// The pixel's footprint in texels: `(∂(u·w, v·h)/∂x, ∂(u·w, v·h)/∂y)`, the two axes of the
+    /// parallelogram one pixel covers in the texture (level 0).
+    pub footprint: [Vec2; 2],
+}
+
+impl Texture {
+    /// The footprint of a pixel in texels from the screen derivatives of `(u, v)`:
+    /// `(|∂/∂x|, |∂/∂y|)` of `(u·w, v·h)`, and the axis (in uv) of the longer one.
+    #[must_use]
+    pub fn footprint(&self, duv_dx: Vec2, duv_dy: Vec2) -> (f32, f32, Vec2) {
+        let size = self.levels[0].size();
+        let (lx, ly) = ((duv_dx * size).length(), (duv_dy * size).length());
+        if lx >= ly {
+            (lx, ly, duv_dx)
+        } else {
+            (ly, lx, duv_dy)
+        }
+    }
+
+    /// `λ = log₂ max(|∂(uw, vh)/∂x|, |∂(uw, vh)/∂y|)`, without bias.
+    #[must_use]
+    pub fn lod(&self, duv_dx: Vec2, duv_dy: Vec2) -> f32 {
+        let (major, _, _) = self.footprint(duv_dx, duv_dy);
+        major.max(1e-12).log2()
+    }
+
+    /// Samples at `uv` with the given screen derivatives of `uv`.
+    #[must_use]
+    pub fn sample(&self, uv: Vec2, duv_dx: Vec2, duv_dy: Vec2, s: &Sampler) -> Lookup {
+        let (major, minor, axis) = self.footprint(duv_dx, duv_dy);
+        // Anisotropic: N taps along the major axis, each with the footprint major/N.
+        let taps = if s.anisotropy > 1 && minor > 0.0 {
+            ((major / minor).ceil() as u32).clamp(1, s.anisotropy)
+        } else {
+            1
+        };
+        let lod = (major / taps as f32).max(1e-12).log2() + s.lod_bias;
+        let size = self.levels[0].size();
+        let mut out = Lookup {
+            lod,
+            taps,
+            footprint: [duv_dx * size, duv_dy * size],
+            ..Lookup::default()
+        };
+        let mut sum = Vec3::ZERO;
+        for k in 0..taps {
+            let offset = if taps > 1 {
+                (k as f32 + 0.5) / taps as f32 - 0.5
+            } else {
+                0.0
+            };
+            let (c, level, blend) = self.sample_lod(uv + axis * offset, lod, s);
+            sum += c;
+            (out.level, out.level_blend) = (level, blend);
+        }
+        out.color = sum / taps as f32;
+        out
+    }
+
+    /// One isotropic lookup at level of detail `lod`: returns the colour, the finer level read
+    /// and the blend weight of the next one.
+    fn sample_lod(&self, uv: Vec2, lod: f32, s: &Sampler) -> (Vec3, u32, f32) {
+        let max = (self.levels.len() - 1) as f32;
+        let read = |k: usize| match s.filter {
+            Filter::Nearest => self.levels[k].nearest(uv, s.wrap),
+            Filter::Bilinear => self.levels[k].bilinear(uv, s.wrap),
+        };
+        match s.mipmap {
+            _ if lod <= 0.0 => (read(0), 0, 0.0),
+            Mipmap::None => (read(0), 0, 0.0),
+            Mipmap::Nearest => {
+                let k = (lod + 0.5).floor().clamp(0.0, max) as usize;
+                (read(k), k as u32, 0.0)
+            }
+            Mipmap::Linear => {
+                let l = lod.clamp(0.0, max);
+                let k = l.floor() as usize;
+                let f = l - k as f32;
+                if k + 1 < self.levels.len() && f > 0.0 {
+                    (read(k).lerp(read(k + 1), f), k as u32, f)
+                } else {
+                    (read(k), k as u32, 0.0)
+                }
+            }
+        }
+    }
+}
