@@ -242,7 +242,7 @@ fn slider_drag(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()
             out,
             "  {:<20} stage {:<10} keeps {:<16} {:>8.2} ms",
             label,
-            session.selection.stage.name(crate::app::i18n::Lang::En),
+            session.selection.stage.name(crate::vocabulary::Lang::En),
             match job.spec.settings.capture {
                 Capture::FULL => "every buffer",
                 Capture::COLOR => "the colour only",

@@ -32,14 +32,14 @@ pub struct Cli {
     /// The app: the stage to open on (model, world, view, clip, ndc, viewport, rasterization,
     /// depth, shading, texturing, output).
     #[arg(long, value_parser = parse_stage)]
-    pub stage: Option<crate::app::session::Stage>,
+    pub stage: Option<crate::vocabulary::Stage>,
     /// The app: settings to compare side by side in the pixel stages.
     #[arg(long, value_parser = ["shading", "interpolation", "samples", "filtering"])]
     pub compare: Option<String>,
 }
 
-fn parse_stage(s: &str) -> Result<crate::app::session::Stage, String> {
-    crate::app::session::Stage::from_name(s).ok_or_else(|| {
+fn parse_stage(s: &str) -> Result<crate::vocabulary::Stage, String> {
+    crate::vocabulary::Stage::from_name(s).ok_or_else(|| {
         "expected one of model, world, view, clip, ndc, viewport, rasterization, depth, shading, texturing, output"
             .to_owned()
     })
@@ -199,8 +199,8 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             .map_err(|d| anyhow::anyhow!("{d}"))?;
             let source = crate::app::session::source_name(cli.scene.as_ref());
             let lang = match cli.lang.as_deref() {
-                Some("zh") => crate::app::i18n::Lang::Zh,
-                Some(_) => crate::app::i18n::Lang::En,
+                Some("zh") => crate::vocabulary::Lang::Zh,
+                Some(_) => crate::vocabulary::Lang::En,
                 None => crate::app::initial_lang(),
             };
             let start = crate::app::Start {
@@ -209,7 +209,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                 compare: cli
                     .compare
                     .as_deref()
-                    .and_then(crate::app::session::Comparison::from_name),
+                    .and_then(crate::vocabulary::Comparison::from_name),
             };
             crate::app::run(doc, source, cli.scene.clone(), start)?;
             Ok(ExitCode::SUCCESS)
@@ -238,9 +238,9 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                     },
                     size: size.map(|s| (s.width, s.height)),
                     lang: if lang == "zh" {
-                        crate::app::i18n::Lang::Zh
+                        crate::vocabulary::Lang::Zh
                     } else {
-                        crate::app::i18n::Lang::En
+                        crate::vocabulary::Lang::En
                     },
                     max_records,
                     cancel: cancel_on_interrupt(),

@@ -1,9 +1,19 @@
 //! pipelens: a glass-box graphics pipeline. This library holds everything but `main`, so that
-//! tests can drive it: the desktop app ([`app`]), the command line ([`cli`]), scene files and lessons ([`lesson`]), the
-//! exporter ([`export`]) and the benchmark ([`bench`]). The pipeline itself is the `pipeline` crate.
+//! tests can drive it. The pipeline itself is the `pipeline` crate; above it, in the order data
+//! flows:
+//!
+//! - [`vocabulary`]: the words everything shares (stages, spaces, comparisons, two languages);
+//! - [`lesson`]: scene files and lessons, parsed and validated;
+//! - [`observer`]: the scene seen from outside;
+//! - [`export`]: snapshots and handouts written to disk;
+//! - [`app`]: the desktop app;
+//! - [`cli`]: the command line, which opens the app or exports, checks and benchmarks
+//!   ([`bench`]).
 
 pub mod app;
 pub mod bench;
 pub mod cli;
 pub mod export;
 pub mod lesson;
+pub mod observer;
+pub mod vocabulary;

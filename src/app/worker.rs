@@ -6,14 +6,12 @@ use std::sync::mpsc::{Receiver, Sender, TryRecvError, channel};
 
 use pipeline::StageTimes;
 use pipeline::buffers::BufferKind;
-use pipeline::buffers::Capture;
-use pipeline::camera::{Camera, Projection};
+use pipeline::camera::Camera;
 use pipeline::capture::FrameCapture;
-use pipeline::raster::Samples;
-use pipeline::scene::Scene;
 use pipeline::settings::RenderSettings;
 
 use crate::lesson::SceneSpec;
+use crate::observer::render_observer;
 
 /// A render to do.
 #[derive(Clone, Debug)]
@@ -112,38 +110,6 @@ impl Job {
             result,
         }
     }
-}
-
-/// The scene from the observer's camera: the same pipeline, one sample, no culling (so the
-/// outside of everything is seen), a perspective lens wide enough for the viewing frustum;
-/// only its colour is kept (into `spare`'s storage, if given).
-pub fn render_observer(
-    spec: &SceneSpec,
-    camera: Camera,
-    spare: Option<FrameCapture>,
-) -> Option<FrameCapture> {
-    let distance = (camera.eye - camera.at).length();
-    let scene = Scene {
-        objects: spec.scene.objects.clone(),
-        camera,
-        projection: Projection::Perspective {
-            fovy_deg: 50.0,
-            aspect: None,
-            near: (distance * 0.02).max(1e-3),
-            far: distance * 20.0,
-        },
-        figures: spec.scene.figures.clone(),
-        shadow: spec.scene.shadow,
-        lights: spec.scene.lights.clone(),
-    };
-    let settings = RenderSettings {
-        samples: Samples::X1,
-        capture: Capture::COLOR,
-        ..spec.settings
-    };
-    pipeline::render_reusing(&scene, &settings, spare)
-        .ok()
-        .map(|(c, _)| c)
 }
 
 /// What the UI thread sends the render thread.

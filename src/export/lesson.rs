@@ -12,10 +12,10 @@ use pipeline::capture::FrameCapture;
 use pipeline::transform::NamedMatrix;
 
 use super::{ExportFile, ExportOptions, encode_capture, png_rgba, profile_csv, write_files};
-use crate::app::i18n::Lang;
-use crate::app::session::Comparison;
 use crate::lesson::script::Layout;
 use crate::lesson::{Lesson, SceneSpec, Step};
+use crate::observer::observer_image;
+use crate::vocabulary::{Comparison, Lang, Stage, num};
 
 /// What to export of a lesson.
 #[derive(Clone, Debug)]
@@ -181,51 +181,6 @@ fn step_files(
     ))
 }
 
-/// The scene seen from outside (the app's observer view): rendered from the default orbit, with
-/// the viewing camera's frustum drawn over it and a dot at its eye.
-fn observer_image(spec: &SceneSpec, main: &FrameCapture) -> Option<image::RgbaImage> {
-    use pipeline::overlay::Shape;
-    let orbit = crate::app::session::default_orbit(spec);
-    let outside = crate::app::worker::render_observer(spec, orbit.camera(), None)?;
-    let to_world = main.matrices.view.matrix.inverse();
-    let corners: Vec<glam::Vec3> = main
-        .projection
-        .corners_eye(main.settings.aspect())
-        .iter()
-        .map(|p| to_world.transform_point3(*p))
-        .collect();
-    let (near, far) = (&corners[..4], &corners[4..]);
-    let mut shapes = Vec::new();
-    let mut line = |a: glam::Vec3, b: glam::Vec3, color: [u8; 4], width: f32| {
-        if let Some([p, q]) = outside.world_segment_to_image(a, b) {
-            shapes.push(Shape::Polyline {
-                points: vec![p, q],
-                closed: false,
-                color,
-                width,
-            });
-        }
-    };
-    let (yellow, orange) = ([255, 214, 90, 255], [255, 140, 40, 255]);
-    for i in 0..4 {
-        let j = (i + 1) % 4;
-        line(near[i], near[j], yellow, 2.5);
-        line(far[i], far[j], orange, 2.0);
-        line(near[i], far[i], orange, 1.2);
-        if main.projection.is_perspective() {
-            line(main.camera.eye, near[i], yellow, 1.0);
-        }
-    }
-    if let Some(center) = outside.world_to_image(main.camera.eye) {
-        shapes.push(Shape::Dot {
-            center,
-            radius: 4.0,
-            color: [255, 255, 255, 255],
-        });
-    }
-    Some(outside.image_with_shapes(BufferKind::Color, &shapes, 1))
-}
-
 /// The image that shows the step: its buffer, the stage's own buffer for pixel stages, the
 /// overlays for rasterization, the colour image otherwise.
 fn main_image(step: &Step, capture: &FrameCapture) -> String {
@@ -240,7 +195,7 @@ fn main_image(step: &Step, capture: &FrameCapture) -> String {
         .filter(|k| buffers.contains(k));
     match (kind, step.stage) {
         (Some(k), _) => format!("{}.png", k.name()),
-        (None, Some(crate::app::session::Stage::Raster)) => "overlays.png".to_owned(),
+        (None, Some(Stage::Raster)) => "overlays.png".to_owned(),
         _ => "color.png".to_owned(),
     }
 }
@@ -308,7 +263,7 @@ fn matrix_html(m: &NamedMatrix, lang: Lang) -> String {
     for r in rows {
         s.push_str("<tr>");
         for v in r {
-            let _ = write!(s, "<td>{}</td>", crate::app::views::num(v));
+            let _ = write!(s, "<td>{}</td>", num(v));
         }
         s.push_str("</tr>");
     }

@@ -13,7 +13,7 @@ pub mod raw;
 pub mod script;
 pub mod validate;
 
-pub use script::{Lesson, Step, Text};
+pub use script::{Lesson, Step};
 
 use std::path::{Path, PathBuf};
 

@@ -11,28 +11,7 @@ use super::param::{self, Animation, Easing, Repeat, Value};
 use super::raw::{RawAnimate, RawLessonFile, RawStep, RawText, RawValue};
 use super::validate::Checker;
 use super::{Diagnostics, SceneSpec};
-use crate::app::i18n::Lang;
-use crate::app::session::{Comparison, Stage};
-
-/// Text in both languages.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Text {
-    /// English.
-    pub en: String,
-    /// Chinese.
-    pub zh: String,
-}
-
-impl Text {
-    /// The text in `lang`.
-    #[must_use]
-    pub fn get(&self, lang: Lang) -> &str {
-        match lang {
-            Lang::En => &self.en,
-            Lang::Zh => &self.zh,
-        }
-    }
-}
+use crate::vocabulary::{Comparison, Lang, Stage, Text};
 
 /// How a step arranges its views.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

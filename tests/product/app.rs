@@ -2,9 +2,9 @@
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use pipelens::app::i18n::Lang;
-use pipelens::app::session::{Session, Stage};
+use pipelens::app::session::Session;
 use pipelens::app::{PipelensApp, setup_context};
+use pipelens::vocabulary::{Lang, Stage};
 
 /// The app on the built-in scene, rendering synchronously so that tests are deterministic.
 fn harness() -> Harness<'static, PipelensApp> {

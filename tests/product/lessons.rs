@@ -393,7 +393,7 @@ fn the_complete_lesson_in_lessons_readme_is_valid() {
 
 #[test]
 fn every_matrix_formula_a_lesson_shows_reads_in_chinese() {
-    use pipelens::app::i18n::Lang;
+    use pipelens::vocabulary::Lang;
     fn walk(m: &pipeline::transform::NamedMatrix, out: &mut std::collections::BTreeSet<String>) {
         out.insert(m.formula.clone());
         for f in &m.factors {

@@ -6,8 +6,8 @@ use egui::{Color32, Pos2, Rect, RichText, Sense, Stroke, TextureOptions, Ui, Vec
 use egui_plot::{Legend, Line, Plot};
 
 use super::fit_rect;
-use crate::app::i18n::Lang;
 use crate::app::session::{Command, Session};
+use crate::vocabulary::variant_label;
 
 /// Textures of the compared images and the line being dragged.
 #[derive(Default)]
@@ -23,19 +23,6 @@ const CURVES: [Color32; 4] = [
     Color32::from_rgb(150, 255, 120),
     Color32::from_rgb(230, 120, 255),
 ];
-
-fn label(l: Lang, key: &str) -> String {
-    match key {
-        "flat" => l.tr("flat", "平面").to_owned(),
-        "affine" => l.tr("affine", "仿射").to_owned(),
-        "perspective-correct" => l.tr("perspective-correct", "透视校正").to_owned(),
-        "nearest" => l.tr("nearest", "最近邻").to_owned(),
-        "bilinear" => l.tr("bilinear", "双线性").to_owned(),
-        "trilinear" => l.tr("trilinear", "三线性").to_owned(),
-        "anisotropic 16×" => l.tr("anisotropic 16×", "各向异性 16×").to_owned(),
-        other => other.to_owned(),
-    }
-}
 
 impl CompareView {
     /// Draws the images in a row and the profile plot below them.
@@ -83,7 +70,7 @@ impl CompareView {
             let accessible = format!(
                 "{}: {}",
                 lang.tr("compared image", "对比图像"),
-                label(lang, name)
+                variant_label(name, lang)
             );
             response
                 .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &accessible));
@@ -91,7 +78,7 @@ impl CompareView {
             painter.text(
                 cell.min,
                 egui::Align2::LEFT_TOP,
-                label(lang, name),
+                variant_label(name, lang),
                 egui::FontId::proportional(16.0),
                 CURVES[i % CURVES.len()],
             );
@@ -148,7 +135,7 @@ impl CompareView {
                         .map(|s| [f64::from(s.t * length), f64::from(s.intensity)])
                         .collect();
                     plot.line(
-                        Line::new(label(lang, name), points)
+                        Line::new(variant_label(name, lang), points)
                             .color(CURVES[i % CURVES.len()])
                             .width(2.0),
                     );

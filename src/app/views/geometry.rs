@@ -7,9 +7,9 @@ use glam::{Vec3, Vec4};
 use pipeline::capture::FrameCapture;
 use pipeline::transform;
 
-use super::{Projector, fate_color, palette, vec3, vec4};
-use crate::app::i18n::Lang;
-use crate::app::session::{Command, Session, Space};
+use super::{Projector, fate_color, palette};
+use crate::app::session::{Command, Session};
+use crate::vocabulary::{Lang, Space, vec3, vec4};
 
 /// The orbiting camera of the geometry views.
 pub struct GeometryView {

@@ -4,9 +4,9 @@
 use egui::{Color32, RichText, Ui};
 use pipeline::capture::{Fate, FrameCapture};
 
-use super::{matrix, num, palette, vec3, vec4};
-use crate::app::i18n::Lang;
+use super::{matrix, palette};
 use crate::app::session::{Command, Session};
+use crate::vocabulary::{Lang, num, vec3, vec4};
 
 /// The inspector's tabs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -4,8 +4,8 @@
 use egui::text::LayoutJob;
 use egui::{Color32, FontId, RichText, TextFormat, Ui};
 
-use crate::app::i18n::Lang;
 use crate::app::session::{Command, LessonPlayer};
+use crate::vocabulary::Lang;
 
 /// Draws the lesson panel; returns what the user asked for.
 pub fn ui(ui: &mut Ui, player: &LessonPlayer, lang: Lang) -> Vec<Command> {

@@ -2,7 +2,8 @@
 
 use egui::{RichText, Ui};
 
-use crate::app::session::{Command, Session, Stage};
+use crate::app::session::{Command, Session};
+use crate::vocabulary::Stage;
 
 /// Draws the strip; returns the stage clicked, if any.
 pub fn ui(ui: &mut Ui, session: &Session) -> Option<Command> {

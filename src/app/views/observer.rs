@@ -9,8 +9,9 @@ use pipeline::capture::FrameCapture;
 use pipeline::transform;
 
 use super::{Projector, fit_rect, palette};
-use crate::app::i18n::Lang;
-use crate::app::session::{Command, Orbit, Session};
+use crate::app::session::{Command, Session};
+use crate::observer::Orbit;
+use crate::vocabulary::Lang;
 
 /// The texture of the observer image.
 #[derive(Default)]

@@ -7,8 +7,8 @@ use pipeline::camera::Projection;
 use pipeline::raster::{CullMode, DepthTest, Samples};
 use pipeline::shade::{Frequency, Reflection};
 
-use crate::app::i18n::Lang;
 use crate::app::session::{Command, Session};
+use crate::vocabulary::Lang;
 
 fn vec3_edit(ui: &mut Ui, label: &str, v: &mut Vec3, speed: f32, tip: &str) {
     ui.horizontal(|ui| {

@@ -7,9 +7,9 @@ use pipeline::capture::FrameCapture;
 use pipeline::overlay::{OverlayKind, Shape};
 use pipeline::raster::{NONE, sample_offsets_image};
 
-use super::{num, palette};
-use crate::app::i18n::Lang;
+use super::palette;
 use crate::app::session::{Command, Selection, Session};
+use crate::vocabulary::{Lang, buffer_name, num};
 
 /// Zoom and pan of the pixel view, and its texture cache.
 #[derive(Default)]
@@ -20,31 +20,6 @@ pub struct PixelView {
     centre: Option<Vec2>,
     /// The texture of the buffer shown, with the generation and kind it was made from.
     texture: super::BufferTexture,
-}
-
-/// The buffers a user can choose, with their names.
-pub fn buffer_name(kind: BufferKind, l: Lang) -> &'static str {
-    match kind {
-        BufferKind::Color => l.tr("Colour", "颜色"),
-        BufferKind::Depth => l.tr("Depth", "深度"),
-        BufferKind::Coverage => l.tr("Coverage", "覆盖率"),
-        BufferKind::PrimitiveId => l.tr("Primitive id", "图元编号"),
-        BufferKind::BaryPerspective => {
-            l.tr("Barycentrics (perspective-correct)", "重心坐标（透视校正）")
-        }
-        BufferKind::BaryAffine => l.tr("Barycentrics (affine)", "重心坐标（仿射）"),
-        BufferKind::Ambient => l.tr("Ambient term", "环境光项"),
-        BufferKind::Diffuse => l.tr("Diffuse term", "漫反射项"),
-        BufferKind::Specular => l.tr("Specular term", "镜面反射项"),
-        BufferKind::Normal => l.tr("Normal", "法向量"),
-        BufferKind::NDotL => "n·l",
-        BufferKind::NDotH => "n·h",
-        BufferKind::Uv => l.tr("Texture coordinates (u, v)", "纹理坐标 (u, v)"),
-        BufferKind::MipLevel => l.tr("Mip level", "Mipmap 层级"),
-        BufferKind::Texel => l.tr("Texel colour", "纹素颜色"),
-        BufferKind::Footprint => l.tr("Texture footprint", "纹理足迹"),
-        BufferKind::Reflected => l.tr("Reflected (environment)", "反射项（环境贴图）"),
-    }
 }
 
 fn overlay_name(kind: OverlayKind, l: Lang) -> &'static str {

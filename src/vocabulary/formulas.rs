@@ -1,48 +1,9 @@
-//! Chinese and English. Every label is written at its call site in both languages,
-//! `lang.tr("Depth", "深度")`, so no label can miss a translation.
+//! The formulas of the matrices in Chinese. The core names each matrix with a formula in English
+//! words (the pipeline crate has no language); these are their Chinese versions, in the notes'
+//! terms. Formulas that are only mathematics read the same in both languages and are not listed.
 
-/// The language of the interface.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Lang {
-    /// English.
-    #[default]
-    En,
-    /// 简体中文.
-    Zh,
-}
+use super::Lang;
 
-impl Lang {
-    /// The text in this language.
-    #[must_use]
-    pub fn tr(self, en: &'static str, zh: &'static str) -> &'static str {
-        match self {
-            Self::En => en,
-            Self::Zh => zh,
-        }
-    }
-
-    /// The other language.
-    #[must_use]
-    pub fn other(self) -> Self {
-        match self {
-            Self::En => Self::Zh,
-            Self::Zh => Self::En,
-        }
-    }
-
-    /// The language's own name, for the switch.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::En => "English",
-            Self::Zh => "中文",
-        }
-    }
-}
-
-/// The core names each matrix with a formula in English words (the pipeline crate has no
-/// language); these are their Chinese versions, in the notes' terms. Formulas that are only
-/// mathematics read the same in both languages and are not listed.
 const FORMULAS_ZH: &[(&str, &str)] = &[
     (
         "Frustum(−right, right, −top, top, near, far) with top = near·tan(fovy/2), right = top·aspect",

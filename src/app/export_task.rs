@@ -1,0 +1,76 @@
+//! The app's snapshot export: the same files as `pipelens export`, written off the UI thread,
+//! with a message when it is done and a Cancel button while it runs.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::sync::mpsc::channel;
+
+use pipeline::buffers::Capture;
+use pipeline::settings::RenderSettings;
+
+use super::PipelensApp;
+
+impl PipelensApp {
+    pub(super) fn start_export(&mut self) {
+        let Some(shown) = self.session.capture.clone() else {
+            return;
+        };
+        // The view's capture keeps what it shows; an export writes every buffer.
+        let spec = self.session.spec.clone();
+        let opts = crate::export::ExportOptions {
+            out: PathBuf::from(self.export_dir.trim()),
+            overlay_zoom: 0,
+            max_records: 200_000,
+            pixel: self.session.selection.pixel,
+            cancel: crate::export::Cancel::default(),
+        };
+        self.export_cancel = Some(opts.cancel.clone());
+        let (tx, rx) = channel();
+        self.export_result = Some(rx);
+        std::thread::spawn(move || {
+            let full = RenderSettings {
+                capture: Capture::FULL,
+                ..shown.settings
+            };
+            let capture = if shown.settings.capture == Capture::FULL {
+                Ok(shown)
+            } else {
+                pipeline::render(&spec.scene, &full).map(Arc::new)
+            };
+            let r = capture.map_err(|e| e.to_string()).and_then(|c| {
+                crate::export::export_capture(&c, &opts, &mut |_, _, _| {})
+                    .map_err(|e| format!("{e:#}"))
+            });
+            let _ = tx.send(r);
+        });
+    }
+
+    /// Takes the export's result when it has finished, as a message in the top bar.
+    pub(super) fn poll_export(&mut self) {
+        let Some(rx) = &self.export_result else {
+            return;
+        };
+        let Ok(result) = rx.try_recv() else {
+            return;
+        };
+        let lang = self.session.lang;
+        self.export_message = Some(match result {
+            Ok(files) => (
+                true,
+                format!(
+                    "{} {}: {}",
+                    lang.tr("Exported to", "已导出到"),
+                    self.export_dir,
+                    files
+                        .iter()
+                        .filter_map(|p| p.file_name())
+                        .map(|n| n.to_string_lossy())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+            ),
+            Err(e) => (false, e),
+        });
+        self.export_result = None;
+    }
+}

@@ -1,0 +1,180 @@
+//! `[[scene.lights]]`, `[scene.shadow]` and `[[scene.figures]]`.
+
+use glam::Vec3;
+use pipeline::hierarchy::{Figure, Humanoid, Pose, RobotArm};
+use pipeline::light::Light;
+use pipeline::scene::PlanarShadow;
+use toml::Spanned;
+
+use super::{Checker, triple};
+use crate::lesson::raw::{RawFigure, RawLight, RawShadow, RawVec3};
+
+pub(super) fn light(c: &mut Checker<'_>, l: &Spanned<RawLight>) -> Option<Light> {
+    let raw = l.get_ref();
+    let intensity = raw
+        .intensity
+        .as_ref()
+        .and_then(|v| triple(c, "intensity", v))
+        .unwrap_or(Vec3::ONE);
+    let attenuation = raw
+        .attenuation
+        .as_ref()
+        .and_then(|v| c.vec3("attenuation", v))
+        .unwrap_or(Vec3::X);
+    let needs = |c: &mut Checker<'_>, key: &str, v: &Option<RawVec3>| -> Option<Vec3> {
+        match v {
+            Some(v) => c.vec3(key, v),
+            None => {
+                c.error(
+                    l.span(),
+                    format!("a {} light needs `{key}`", raw.kind.get_ref()),
+                );
+                None
+            }
+        }
+    };
+    match raw.kind.get_ref().as_str() {
+        "ambient" => Some(Light::Ambient { intensity }),
+        "point" => Some(Light::Point {
+            position: needs(c, "position", &raw.position)?,
+            intensity,
+            attenuation,
+        }),
+        "directional" => Some(Light::Directional {
+            direction: needs(c, "direction", &raw.direction)?,
+            intensity,
+        }),
+        "spot" => {
+            let position = needs(c, "position", &raw.position)?;
+            let direction = needs(c, "direction", &raw.direction)?;
+            let cutoff = raw
+                .cutoff
+                .as_ref()
+                .and_then(|v| c.finite("cutoff", v))
+                .unwrap_or(30.0);
+            if !(cutoff > 0.0 && cutoff <= 90.0) {
+                let span = raw.cutoff.as_ref().map_or(l.span(), Spanned::span);
+                c.error(
+                    span,
+                    format!("`cutoff` is the cone's half-angle: between 0° and 90°, got {cutoff}"),
+                );
+            }
+            let exponent = raw
+                .exponent
+                .as_ref()
+                .and_then(|v| c.finite("exponent", v))
+                .unwrap_or(1.0);
+            Some(Light::Spot {
+                position,
+                direction,
+                cutoff_deg: cutoff,
+                exponent,
+                intensity,
+                attenuation,
+            })
+        }
+        other => {
+            c.error(
+                raw.kind.span(),
+                format!("`kind` of a light must be \"ambient\", \"point\", \"directional\" or \"spot\", got \"{other}\""),
+            );
+            None
+        }
+    }
+}
+
+pub(super) fn shadow(c: &mut Checker<'_>, sh: &Spanned<RawShadow>) -> Option<PlanarShadow> {
+    let raw = sh.get_ref();
+    let light = c.vec3("light", &raw.light)?;
+    let plane_y = raw
+        .plane_y
+        .as_ref()
+        .and_then(|v| c.finite("plane_y", v))
+        .unwrap_or(0.0);
+    if light.y <= plane_y {
+        c.error(
+            raw.light.span(),
+            format!(
+                "the shadow's light must be above its plane y = {plane_y}, got y = {}",
+                light.y
+            ),
+        );
+        return None;
+    }
+    let color = raw
+        .color
+        .as_ref()
+        .and_then(|v| c.vec3("color", v))
+        .unwrap_or(Vec3::splat(0.05));
+    Some(PlanarShadow {
+        light,
+        plane_y,
+        color,
+    })
+}
+
+pub(super) fn figure(c: &mut Checker<'_>, f: &Spanned<RawFigure>) -> Option<Figure> {
+    let raw = f.get_ref();
+    let mut angle = |key: &str, v: &Option<Spanned<f64>>| {
+        v.as_ref().and_then(|v| c.finite(key, v)).unwrap_or(0.0)
+    };
+    let (pose, misplaced): (_, Vec<(&str, bool)>) = match raw.kind.get_ref().as_str() {
+        "robot_arm" => (
+            Pose::RobotArm(RobotArm {
+                base: angle("base", &raw.base),
+                lower: angle("lower", &raw.lower),
+                upper: angle("upper", &raw.upper),
+            }),
+            vec![("torso", raw.torso.is_some()), ("head", raw.head.is_some())],
+        ),
+        "humanoid" => (
+            Pose::Humanoid(Humanoid {
+                torso: angle("torso", &raw.torso),
+                head: angle("head", &raw.head),
+                left_upper_arm: angle("left_upper_arm", &raw.left_upper_arm),
+                left_lower_arm: angle("left_lower_arm", &raw.left_lower_arm),
+                right_upper_arm: angle("right_upper_arm", &raw.right_upper_arm),
+                right_lower_arm: angle("right_lower_arm", &raw.right_lower_arm),
+                left_upper_leg: angle("left_upper_leg", &raw.left_upper_leg),
+                left_lower_leg: angle("left_lower_leg", &raw.left_lower_leg),
+                right_upper_leg: angle("right_upper_leg", &raw.right_upper_leg),
+                right_lower_leg: angle("right_lower_leg", &raw.right_lower_leg),
+            }),
+            vec![
+                ("base", raw.base.is_some()),
+                ("lower", raw.lower.is_some()),
+                ("upper", raw.upper.is_some()),
+            ],
+        ),
+        other => {
+            c.error(
+                raw.kind.span(),
+                format!(
+                    "`kind` of a figure must be \"robot_arm\" or \"humanoid\", got \"{other}\""
+                ),
+            );
+            return None;
+        }
+    };
+    for (key, present) in misplaced {
+        if present {
+            c.error(
+                f.span(),
+                format!("`{key}` is not a joint of a {}", raw.kind.get_ref()),
+            );
+        }
+    }
+    let translate = raw
+        .translate
+        .as_ref()
+        .and_then(|v| c.vec3("translate", v))
+        .unwrap_or(Vec3::ZERO);
+    Some(Figure {
+        name: raw
+            .name
+            .clone()
+            .unwrap_or_else(|| raw.kind.get_ref().replace('_', " ")),
+        pose,
+        translate,
+    })
+}

@@ -1,0 +1,234 @@
+//! The second tier: resolves what the file says into a scene, checking every range and
+//! reference, and collecting every problem with its position (not just the first).
+//!
+//! The checker and the scene as a whole are here; `[scene.render]` and `[scene.projection]` in
+//! [`render`]; objects, meshes, materials and textures in [`objects`]; lights, the planar shadow
+//! and figures in [`lights`].
+
+mod lights;
+mod objects;
+mod render;
+
+use std::ops::Range;
+use std::path::Path;
+
+use glam::Vec3;
+use pipeline::camera::{Camera, Projection};
+use pipeline::raster::{CullMode, DepthTest};
+use pipeline::scene::Scene;
+use pipeline::settings::RenderSettings;
+use pipeline::shade::{Frequency, Reflection};
+use pipeline::texture::{Filter, Mipmap, Wrap};
+use toml::Spanned;
+
+use super::raw::{RawScale, RawScene, RawVec3};
+use super::{Diagnostic, Diagnostics, SceneSpec};
+
+/// The names of `cull` in files.
+pub(super) const CULL: &[(&str, CullMode)] = &[
+    ("none", CullMode::None),
+    ("back", CullMode::Back),
+    ("front", CullMode::Front),
+];
+
+/// The names of `depth_test` in files.
+pub(super) const DEPTH_TEST: &[(&str, DepthTest)] = &[
+    ("less", DepthTest::Less),
+    ("less_equal", DepthTest::LessEqual),
+    ("greater", DepthTest::Greater),
+    ("greater_equal", DepthTest::GreaterEqual),
+    ("always", DepthTest::Always),
+];
+
+/// The names of `shading` in files.
+pub(super) const SHADING: &[(&str, Frequency)] = &[
+    ("unlit", Frequency::Unlit),
+    ("flat", Frequency::Flat),
+    ("gouraud", Frequency::Gouraud),
+    ("phong", Frequency::Phong),
+];
+
+/// The names of `reflection` in files.
+pub(super) const REFLECTION: &[(&str, Reflection)] = &[
+    ("phong", Reflection::Phong),
+    ("blinn_phong", Reflection::BlinnPhong),
+];
+
+/// The names of `mipmap` in files.
+pub(super) const MIPMAP: &[(&str, Mipmap)] = &[
+    ("none", Mipmap::None),
+    ("nearest", Mipmap::Nearest),
+    ("linear", Mipmap::Linear),
+];
+
+/// The names of `filter` in files.
+pub(super) const FILTER: &[(&str, Filter)] =
+    &[("nearest", Filter::Nearest), ("bilinear", Filter::Bilinear)];
+
+/// The names of `wrap` in files.
+pub(super) const WRAP: &[(&str, Wrap)] = &[("repeat", Wrap::Repeat), ("clamp", Wrap::Clamp)];
+
+/// Collects diagnostics against one source text (the scene's checks here, the lesson's in
+/// `script`).
+pub(super) struct Checker<'a> {
+    pub(super) text: &'a str,
+    pub(super) file: &'a str,
+    pub(super) found: Vec<Diagnostic>,
+}
+
+impl<'a> Checker<'a> {
+    /// A checker of `text`, named `file` in messages, with nothing found yet.
+    pub(super) fn new(text: &'a str, file: &'a str) -> Self {
+        Self {
+            text,
+            file,
+            found: Vec::new(),
+        }
+    }
+
+    pub(super) fn error(&mut self, span: Range<usize>, message: impl Into<String>) {
+        self.found
+            .push(Diagnostic::at(self.file, self.text, span, message));
+    }
+
+    /// A finite number, else a diagnostic naming the key.
+    fn finite(&mut self, key: &str, v: &Spanned<f64>) -> Option<f32> {
+        let x = *v.get_ref();
+        if x.is_finite() && x.abs() <= f64::from(f32::MAX) {
+            Some(x as f32)
+        } else {
+            self.error(
+                v.span(),
+                format!("`{key}` must be a finite number, got {x}"),
+            );
+            None
+        }
+    }
+
+    fn vec3(&mut self, key: &str, v: &RawVec3) -> Option<Vec3> {
+        let [x, y, z] = *v.get_ref();
+        if [x, y, z].iter().all(|c| c.is_finite() && c.abs() <= 1e15) {
+            Some(Vec3::new(x as f32, y as f32, z as f32))
+        } else {
+            self.error(
+                v.span(),
+                format!("`{key}` must be three finite numbers of magnitude at most 1e15, got [{x}, {y}, {z}]"),
+            );
+            None
+        }
+    }
+
+    /// The option named by `v`, else a diagnostic listing the names.
+    pub(super) fn choice<T: Copy>(
+        &mut self,
+        key: &str,
+        v: &Spanned<String>,
+        options: &[(&str, T)],
+    ) -> Option<T> {
+        let found = options
+            .iter()
+            .find(|(name, _)| *name == v.get_ref().as_str());
+        if found.is_none() {
+            let names: Vec<String> = options.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+            self.error(
+                v.span(),
+                format!(
+                    "`{key}` must be one of {}, got \"{}\"",
+                    names.join(", "),
+                    v.get_ref()
+                ),
+            );
+        }
+        found.map(|(_, t)| *t)
+    }
+}
+
+/// Validates `[scene]` into a renderable scene.
+///
+/// # Errors
+/// Every problem found.
+pub fn scene(
+    raw: &Spanned<RawScene>,
+    text: &str,
+    file: &str,
+    base: &Path,
+) -> Result<SceneSpec, Diagnostics> {
+    let mut c = Checker::new(text, file);
+    let s = raw.get_ref();
+    let mut camera = Camera::default();
+    if let Some(cam) = &s.camera {
+        let cam_ref = cam.get_ref();
+        for (key, v, slot) in [
+            ("eye", &cam_ref.eye, &mut camera.eye),
+            ("at", &cam_ref.at, &mut camera.at),
+            ("up", &cam_ref.up, &mut camera.up),
+        ] {
+            if let Some(v) = v.as_ref().and_then(|v| c.vec3(key, v)) {
+                *slot = v;
+            }
+        }
+        if let Err(e) = pipeline::transform::camera_frame(camera.eye, camera.at, camera.up) {
+            c.error(cam.span(), format!("the camera is degenerate: {e}"));
+        }
+    }
+    let settings = s
+        .render
+        .as_ref()
+        .map_or_else(RenderSettings::default, |r| render::render(&mut c, r));
+    let projection = s
+        .projection
+        .as_ref()
+        .map_or_else(Projection::default, |p| render::projection(&mut c, p));
+    if s.objects.is_empty() {
+        c.error(
+            raw.span().start..raw.span().start,
+            "the scene has no objects: add at least one [[scene.objects]] with a `mesh`",
+        );
+    }
+    let objects = s
+        .objects
+        .iter()
+        .enumerate()
+        .filter_map(|(i, o)| objects::object(&mut c, o, i, base))
+        .collect();
+    let lights = s
+        .lights
+        .iter()
+        .filter_map(|l| lights::light(&mut c, l))
+        .collect();
+    let shadow = s.shadow.as_ref().and_then(|sh| lights::shadow(&mut c, sh));
+    let figures = s
+        .figures
+        .iter()
+        .filter_map(|f| lights::figure(&mut c, f))
+        .collect();
+    if c.found.is_empty() {
+        Ok(SceneSpec {
+            scene: Scene {
+                objects,
+                camera,
+                projection,
+                lights,
+                shadow,
+                figures,
+            },
+            settings,
+        })
+    } else {
+        Err(Diagnostics(c.found))
+    }
+}
+
+/// One number or three, each finite and not negative, as a colour-like triple.
+pub(super) fn triple(c: &mut Checker<'_>, key: &str, v: &Spanned<RawScale>) -> Option<Vec3> {
+    let a = match *v.get_ref() {
+        RawScale::Uniform(k) => [k; 3],
+        RawScale::Axes(a) => a,
+    };
+    let t = c.vec3(key, &Spanned::new(v.span(), a))?;
+    if t.min_element() < 0.0 {
+        c.error(v.span(), format!("`{key}` must not be negative"));
+        return None;
+    }
+    Some(t)
+}

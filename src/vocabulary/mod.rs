@@ -1,0 +1,17 @@
+//! The product's vocabulary: the words the app, the lessons and the exports share — the stages
+//! and spaces of the pipeline, the comparisons, the buffers' names, text in two languages, the
+//! matrices' formulas in Chinese, and how numbers are written. It sits below all three and uses
+//! only the core: `lesson`, `export` and `app` import it; it imports none of them.
+
+mod buffers;
+mod comparison;
+mod formulas;
+mod lang;
+mod numbers;
+mod stage;
+
+pub use buffers::buffer_name;
+pub use comparison::{Comparison, variant_label};
+pub use lang::{Lang, Text};
+pub use numbers::{num, vec3, vec4};
+pub use stage::{Space, Stage};
