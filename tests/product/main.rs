@@ -1,6 +1,7 @@
 //! Tests of the whole product: the command line, scene files, exports, reference images.
 
 mod app;
+mod architecture;
 mod cli;
 mod corpus;
 mod lessons;

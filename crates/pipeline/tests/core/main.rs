@@ -2,7 +2,10 @@
 //! the course notes' formulas and values computed by hand.
 
 mod bezier;
+mod capture;
 mod clip;
+mod detail;
+mod frame;
 mod hierarchy;
 mod properties;
 mod raster;

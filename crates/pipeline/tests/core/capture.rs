@@ -1,0 +1,114 @@
+//! What a capture keeps: a colour-only capture has the same picture, a capture written into
+//! the storage of another is the same frame.
+
+use glam::Vec3;
+use pipeline::camera::{Camera, Projection};
+use pipeline::raster::Samples;
+use pipeline::scene::{Object, Scene};
+use pipeline::settings::RenderSettings;
+use pipeline::texture::Texture;
+
+use crate::support::render;
+use crate::texture::quad_mesh;
+
+/// A lit, textured quad under a point light (Phong shading), `size`² pixels.
+fn lit_textured_quad(size: u32, samples: Samples) -> (Scene, RenderSettings) {
+    let mut quad = Object::new("quad", quad_mesh());
+    quad.rotate_deg = Vec3::new(-40.0, 10.0, 0.0);
+    quad.texture = Some(std::sync::Arc::new(Texture::checkerboard(64, 8)));
+    let scene = Scene {
+        objects: vec![quad],
+        camera: Camera {
+            eye: Vec3::new(0.0, 0.0, 3.0),
+            at: Vec3::ZERO,
+            up: Vec3::Y,
+        },
+        projection: Projection::default(),
+        figures: Vec::new(),
+        shadow: None,
+        lights: vec![pipeline::light::Light::Point {
+            position: Vec3::new(1.0, 2.0, 3.0),
+            intensity: Vec3::ONE,
+            attenuation: Vec3::X,
+        }],
+    };
+    let settings = RenderSettings {
+        width: size,
+        height: size,
+        samples,
+        shading: pipeline::shade::Frequency::Phong,
+        ..RenderSettings::default()
+    };
+    (scene, settings)
+}
+
+#[test]
+fn a_colour_only_capture_has_the_same_picture_without_the_term_buffers() {
+    use pipeline::buffers::Capture;
+    let (scene, full) = lit_textured_quad(48, Samples::X4);
+    let a = render(&scene, &full);
+    let colour = RenderSettings {
+        capture: Capture::COLOR,
+        ..full
+    };
+    let b = render(&scene, &colour);
+    assert_eq!(a.pixels.color, b.pixels.color);
+    assert_eq!(a.pixels.coverage, b.pixels.coverage);
+    assert_eq!(a.pixels.depth, b.pixels.depth);
+    assert_eq!(a.pixels.primitive, b.pixels.primitive);
+    assert_eq!(a.pixels.owner, b.pixels.owner);
+    assert!(a.pixels.shading.is_some() && a.pixels.texturing.is_some());
+    assert!(b.pixels.shading.is_none() && b.pixels.texturing.is_none());
+    // The buffers hold exactly what the settings budget, for both selections.
+    assert_eq!(a.buffer_bytes(), full.capture_bytes());
+    assert_eq!(b.buffer_bytes(), colour.capture_bytes());
+    // The barycentrics are derived from the owner, so both have them.
+    assert!((0..48 * 48).any(|i| b.barycentrics(i).is_some()));
+    assert_eq!(
+        (0..48 * 48).map(|i| a.barycentrics(i)).collect::<Vec<_>>(),
+        (0..48 * 48).map(|i| b.barycentrics(i)).collect::<Vec<_>>()
+    );
+    // What a view needs: the lighting buffers for n·l, nothing more for the colour.
+    use pipeline::buffers::BufferKind;
+    assert_eq!(Capture::showing([BufferKind::Color]), Capture::COLOR);
+    assert_eq!(
+        Capture::showing([BufferKind::Color, BufferKind::NDotL]),
+        Capture {
+            lighting: true,
+            texturing: false
+        }
+    );
+    assert!(b.buffers().contains(&BufferKind::BaryAffine));
+    assert!(!b.buffers().contains(&BufferKind::NDotL));
+}
+
+#[test]
+fn reusing_a_capture_s_storage_gives_the_same_frame() {
+    use pipeline::buffers::Capture;
+    // The spare capture differs in everything: size, samples, scene, selection. Its stale
+    // contents must not leak into the new frame.
+    let (scene, settings) = lit_textured_quad(40, Samples::X4);
+    let fresh = render(&scene, &settings);
+    let (other_scene, other) = lit_textured_quad(64, Samples::X8);
+    let mut moved = other_scene.clone();
+    moved.camera.eye = Vec3::new(0.5, 0.2, 2.0);
+    let spare = render(&moved, &other);
+    let reused = pipeline::render_reusing(&scene, &settings, Some(spare))
+        .expect("renders")
+        .0;
+    assert_eq!(reused, fresh);
+    // Smaller into larger storage, and a colour-only spare into a full frame.
+    let small = render(
+        &scene,
+        &RenderSettings {
+            width: 8,
+            height: 8,
+            capture: Capture::COLOR,
+            ..settings
+        },
+    );
+    let reused = pipeline::render_reusing(&scene, &settings, Some(small))
+        .expect("renders")
+        .0;
+    assert_eq!(reused, fresh);
+}
