@@ -133,8 +133,100 @@ pub fn light_vector(light: &Light, p: Vec3) -> Option<Vec3> {
     }
 }
 
+/// What one light contributes at a point, term by term (see the module's formula).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct LightTerm {
+    /// `l`, the unit vector towards the light.
+    pub l: Vec3,
+    /// `h = (l + v)/|l + v|`.
+    pub h: Vec3,
+    /// `r = 2(l·n)n − l`, the mirror direction of `l`.
+    pub r: Vec3,
+    /// The distance to the light (0 for a directional light).
+    pub distance: f32,
+    /// `f_att = 1/(a + b·d + c·d²)` (1 for a directional light).
+    pub attenuation: f32,
+    /// `f_spot = (cos φ)^e` inside a spotlight's cone, 0 outside, 1 for other lights.
+    pub spot: f32,
+    /// The light's intensity `I`.
+    pub intensity: Vec3,
+    /// `n·l`.
+    pub n_dot_l: f32,
+    /// `n·h` (Blinn-Phong) or `r·v` (Phong).
+    pub spec_dot: f32,
+    /// `f_att·f_spot·k_d·c·I·max(n·l, 0)`.
+    pub diffuse: Vec3,
+    /// `f_att·f_spot·k_s·I·max(spec_dot, 0)^shininess`, 0 where `n·l ≤ 0`.
+    pub specular: Vec3,
+}
+
+/// What light `light` (not ambient) contributes at point `p` with unit normal `n`, unit view
+/// vector `v` and surface colour `c`; `None` for an ambient light.
+#[must_use]
+pub fn light_term(
+    light: &Light,
+    p: Vec3,
+    n: Vec3,
+    v: Vec3,
+    c: Vec3,
+    m: &Material,
+    model: Reflection,
+) -> Option<LightTerm> {
+    let l = light_vector(light, p)?;
+    let (intensity, distance, attenuation_abc, spot) = match *light {
+        Light::Ambient { .. } => return None,
+        Light::Point {
+            position,
+            intensity,
+            attenuation: abc,
+        } => (intensity, (position - p).length(), Some(abc), 1.0),
+        Light::Directional { intensity, .. } => (intensity, 0.0, None, 1.0),
+        Light::Spot {
+            position,
+            direction,
+            cutoff_deg,
+            exponent,
+            intensity,
+            attenuation: abc,
+        } => (
+            intensity,
+            (position - p).length(),
+            Some(abc),
+            spot_factor(l, direction, cutoff_deg, exponent),
+        ),
+    };
+    let f_att = attenuation_abc.map_or(1.0, |abc| attenuation(abc, distance));
+    let factor = f_att * spot;
+    let n_dot_l = n.dot(l);
+    let h = (l + v).normalize_or_zero();
+    let r = 2.0 * n_dot_l * n - l;
+    let spec_dot = match model {
+        Reflection::Phong => r.dot(v),
+        Reflection::BlinnPhong => n.dot(h),
+    };
+    let specular = if n_dot_l > 0.0 {
+        factor * m.ks * intensity * spec_dot.max(0.0).powf(m.shininess)
+    } else {
+        Vec3::ZERO
+    };
+    Some(LightTerm {
+        l,
+        h,
+        r,
+        distance,
+        attenuation: f_att,
+        spot,
+        intensity,
+        n_dot_l,
+        spec_dot,
+        diffuse: factor * m.kd * c * intensity * n_dot_l.max(0.0),
+        specular,
+    })
+}
+
 /// Lights the point `p` (world coordinates) with unit normal `n`, seen from `eye`, of surface
-/// colour `c`. A normal facing away from the eye is used as it is (no two-sided lighting).
+/// colour `c`: `Σ k_a·c·I_a` over the ambient lights plus each other light's [`light_term`]. A
+/// normal facing away from the eye is used as it is (no two-sided lighting).
 #[must_use]
 pub fn shade(
     p: Vec3,
@@ -153,45 +245,17 @@ pub fn shade(
     };
     let mut key = true;
     for light in lights {
-        let Some(l) = light_vector(light, p) else {
-            if let Light::Ambient { intensity } = *light {
-                out.ambient += m.ka * c * intensity;
-            }
+        if let Light::Ambient { intensity } = *light {
+            out.ambient += m.ka * c * intensity;
+            continue;
+        }
+        let Some(t) = light_term(light, p, n, v, c, m, model) else {
             continue;
         };
-        let (intensity, factor) = match *light {
-            Light::Ambient { .. } => continue,
-            Light::Point {
-                position,
-                intensity,
-                attenuation: abc,
-            } => (intensity, attenuation(abc, (position - p).length())),
-            Light::Directional { intensity, .. } => (intensity, 1.0),
-            Light::Spot {
-                position,
-                direction,
-                cutoff_deg,
-                exponent,
-                intensity,
-                attenuation: abc,
-            } => (
-                intensity,
-                attenuation(abc, (position - p).length())
-                    * spot_factor(l, direction, cutoff_deg, exponent),
-            ),
-        };
-        let n_dot_l = n.dot(l);
-        let h = (l + v).normalize_or_zero();
-        let (spec_dot, exponent) = match model {
-            Reflection::Phong => ((2.0 * n_dot_l * n - l).dot(v), m.shininess),
-            Reflection::BlinnPhong => (n.dot(h), m.shininess),
-        };
-        out.diffuse += factor * m.kd * c * intensity * n_dot_l.max(0.0);
-        if n_dot_l > 0.0 {
-            out.specular += factor * m.ks * intensity * spec_dot.max(0.0).powf(exponent);
-        }
+        out.diffuse += t.diffuse;
+        out.specular += t.specular;
         if key {
-            (out.light, out.half, out.n_dot_l, out.n_dot_h) = (l, h, n_dot_l, spec_dot);
+            (out.light, out.half, out.n_dot_l, out.n_dot_h) = (t.l, t.h, t.n_dot_l, t.spec_dot);
             key = false;
         }
     }

@@ -6,8 +6,8 @@ use glam::{I64Vec2, Vec3};
 use half::f16;
 use serde::Serialize;
 
-use super::{FrameCapture, PixelLighting, PixelTexture};
-use crate::raster::{NONE, ONE};
+use super::{FrameCapture, PixelExplanation, PixelLighting, PixelTexture};
+use crate::raster::{NONE, ONE, RasterTriangle, snap};
 
 /// One fragment that reached a pixel: a raster triangle covering at least one of its samples,
 /// replayed in drawing order against the pixel's depth values.
@@ -30,6 +30,86 @@ pub struct FragmentRecord {
     pub bary_perspective: [f32; 3],
     /// Whether the fragment owns the pixel in the final image (most of its samples).
     pub visible: bool,
+    /// The inside test: the triangle's edge functions at the pixel centre and at each sample.
+    pub edges: EdgeTest,
+}
+
+/// The inside test of one raster triangle at one pixel. The triangle's corners are
+/// counter-clockwise in window coordinates (y up); `E_i` is the edge function of the edge
+/// opposite corner `i`, `E_i(p) = (b − a) × (p − a)` for that edge `a → b`: twice the area of the
+/// triangle the edge makes with `p`, positive inside. A sample is inside when every `E_i > 0`,
+/// or `E_i = 0` on a top or left edge (the top-left fill rule). Values are in square pixels,
+/// exact: they are computed on the 1/256-pixel grid the corners were snapped to.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct EdgeTest {
+    /// The snapped corners `(x, y)` in window coordinates, counter-clockwise.
+    pub corners: [[f64; 2]; 3],
+    /// Whether edge `i` (opposite corner `i`) is a top or a left edge.
+    pub top_left: [bool; 3],
+    /// `E_0 + E_1 + E_2`: twice the triangle's area, the same at every point.
+    pub area2: f64,
+    /// The pixel centre `(x + ½, y + ½)`.
+    pub centre_position: [f64; 2],
+    /// `(E_0, E_1, E_2)` at the pixel centre.
+    pub centre: [f64; 3],
+    /// `λ_i = E_i / (E_0 + E_1 + E_2)` at the pixel centre: the screen-space barycentrics.
+    pub lambda: [f64; 3],
+    /// Per sample: its position in window coordinates and `(E_0, E_1, E_2)` there.
+    pub samples: Vec<SampleTest>,
+}
+
+/// The inside test at one sample.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SampleTest {
+    /// The sample's position `(x, y)` in window coordinates.
+    pub position: [f64; 2],
+    /// `(E_0, E_1, E_2)` there, square pixels.
+    pub e: [f64; 3],
+    /// The edges the sample lies exactly on (`E_i = 0`), where the fill rule decides.
+    pub on_edges: Vec<usize>,
+    /// Whether it is covered.
+    pub inside: bool,
+}
+
+impl EdgeTest {
+    /// The test of `tri` at the pixel whose bottom-left corner is `corner` (fixed point), with
+    /// samples at `offsets` from it.
+    #[must_use]
+    pub fn of(tri: &RasterTriangle, corner: I64Vec2, offsets: &[I64Vec2]) -> Self {
+        let unit = (ONE * ONE) as f64;
+        let px = |e: [i64; 3]| e.map(|v| v as f64 / unit);
+        let centre_fixed = corner + I64Vec2::splat(ONE / 2);
+        let centre = px(tri.edge_values(centre_fixed));
+        let area2 = tri.area2() as f64 / unit;
+        let samples = offsets
+            .iter()
+            .map(|off| {
+                let p = corner + *off;
+                let e = tri.edge_values(p);
+                SampleTest {
+                    position: [p.x as f64 / ONE as f64, p.y as f64 / ONE as f64],
+                    e: px(e),
+                    on_edges: (0..3).filter(|&k| e[k] == 0).collect(),
+                    inside: tri.covers(p),
+                }
+            })
+            .collect();
+        Self {
+            corners: tri.window.map(|w| {
+                let s = |v: f32| snap(v) as f64 / ONE as f64;
+                [s(w.x), s(w.y)]
+            }),
+            top_left: tri.top_left(),
+            area2,
+            centre_position: [
+                centre_fixed.x as f64 / ONE as f64,
+                centre_fixed.y as f64 / ONE as f64,
+            ],
+            centre,
+            lambda: centre.map(|e| e / area2),
+            samples,
+        }
+    }
 }
 
 /// Everything the capture knows about one pixel: what reached it and what it computed.
@@ -55,6 +135,8 @@ pub struct PixelRecord {
     pub vectors: Option<PixelVectors>,
     /// Every fragment that reached the pixel, in drawing order.
     pub fragments: Vec<FragmentRecord>,
+    /// The pixel's colour derived step by step, when something was drawn there.
+    pub explanation: Option<PixelExplanation>,
 }
 
 /// The vectors of the lighting at a pixel, in world coordinates: where the surface is, its unit
@@ -146,6 +228,7 @@ impl FrameCapture {
                 .map(|t| t.at(i)),
             vectors: self.pixel_vectors(x, y),
             fragments: self.fragments_at(x, y),
+            explanation: self.explain(x, y),
         })
     }
 
@@ -195,6 +278,7 @@ impl FrameCapture {
                 bary_affine: tri.original_bary(l, false).to_array(),
                 bary_perspective: tri.original_bary(l, true).to_array(),
                 visible: tri.primitive == owner,
+                edges: EdgeTest::of(tri, corner, &offsets),
             });
         }
         out

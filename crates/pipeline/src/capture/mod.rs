@@ -8,10 +8,12 @@
 //! everything about one pixel (its fragments, lighting vectors, a profile along a line) in
 //! [`inspect`].
 
+mod explain;
 mod images;
 mod inspect;
 mod pixels;
 
+pub use explain::*;
 pub use inspect::*;
 pub use pixels::*;
 
@@ -22,6 +24,7 @@ use serde::Serialize;
 use crate::buffers::BufferKind;
 use crate::camera::{Camera, Projection};
 use crate::clip::{ClipPlane, ClipVertex};
+use crate::light::Material;
 use crate::raster::{ONE, RasterCounts, RasterTriangle, SampleBuffers};
 use crate::settings::RenderSettings;
 use crate::transform::NamedMatrix;
@@ -96,6 +99,16 @@ pub struct ObjectSummary {
     pub vertices: usize,
     /// Triangles in the mesh.
     pub triangles: usize,
+    /// Its reflection coefficients.
+    pub material: Material,
+    /// Whether lighting applies to it.
+    pub lit: bool,
+    /// The name of its texture, when it is textured (it has a texture and its mesh has uvs).
+    pub texture: Option<String>,
+    /// Whether bump or normal mapping changes its normal per pixel.
+    pub detail: bool,
+    /// How much of its environment it mirrors (environment mapping), when it does.
+    pub reflectivity: Option<f32>,
 }
 
 /// Everything one frame did.

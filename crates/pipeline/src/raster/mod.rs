@@ -32,7 +32,7 @@ mod zbuffer;
 pub use samples::*;
 pub use zbuffer::*;
 
-use glam::{I64Vec2, Vec3};
+use glam::{I64Vec2, Vec2, Vec3};
 use serde::Serialize;
 
 /// Bits of sub-pixel precision of snapped vertex positions.
@@ -166,6 +166,28 @@ impl RasterTriangle {
         })
     }
 
+    /// The edge functions `(E_0, E_1, E_2)` at fixed-point position `p`, in fixed-point units
+    /// (`1/ONE²` of a square pixel), without the fill-rule bias; `E_i` belongs to the edge
+    /// opposite corner `i` of [`Self::window`].
+    #[must_use]
+    pub fn edge_values(&self, p: I64Vec2) -> [i64; 3] {
+        self.edges.map(|e| e.at(p))
+    }
+
+    /// Which edges are top or left edges (`E = 0` on them counts as inside), edge `i` being the
+    /// one opposite corner `i`.
+    #[must_use]
+    pub fn top_left(&self) -> [bool; 3] {
+        self.edges.map(|e| e.bias == 0)
+    }
+
+    /// Twice the triangle's area after snapping, in fixed-point units: `E_0 + E_1 + E_2` at
+    /// any point.
+    #[must_use]
+    pub fn area2(&self) -> i64 {
+        self.area2
+    }
+
     /// Whether the sample at fixed-point position `p` is covered (top-left rule).
     #[must_use]
     #[inline]
@@ -216,6 +238,34 @@ impl RasterTriangle {
             l
         };
         self.bary[0] * k.x + self.bary[1] * k.y + self.bary[2] * k.z
+    }
+
+    /// The texture coordinates at fixed-point position `p`, `uv = Σ b_i·uv_i` over the original
+    /// triangle's `uvs` (perspective-correct or affine), and, when `derivatives`, their screen
+    /// derivatives as the differences to the next pixel in x and in y (the same interpolation
+    /// evaluated one pixel over: exact, since `uv` is a ratio of functions linear in screen
+    /// space); zero derivatives otherwise.
+    #[must_use]
+    pub fn uv_at(
+        &self,
+        uvs: [Vec2; 3],
+        p: I64Vec2,
+        perspective_correct: bool,
+        derivatives: bool,
+    ) -> (Vec2, Vec2, Vec2) {
+        let at = |q: I64Vec2| {
+            let w = self.original_bary(self.lambda(q), perspective_correct);
+            uvs[0] * w.x + uvs[1] * w.y + uvs[2] * w.z
+        };
+        let uv = at(p);
+        if !derivatives {
+            return (uv, Vec2::ZERO, Vec2::ZERO);
+        }
+        (
+            uv,
+            at(p + I64Vec2::new(ONE, 0)) - uv,
+            at(p + I64Vec2::new(0, ONE)) - uv,
+        )
     }
 }
 

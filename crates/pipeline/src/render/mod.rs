@@ -173,6 +173,15 @@ fn render_stages(
                 mesh: o.mesh.name.clone(),
                 vertices: o.mesh.positions.len(),
                 triangles: o.mesh.indices.len(),
+                material: o.material,
+                lit: o.lit,
+                texture: o
+                    .texture
+                    .as_ref()
+                    .filter(|_| !o.mesh.uvs.is_empty())
+                    .map(|t| t.name.clone()),
+                detail: o.detail.is_some(),
+                reflectivity: o.environment.as_ref().map(|e| e.reflectivity),
             })
             .collect(),
         matrices,

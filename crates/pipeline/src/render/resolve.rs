@@ -196,19 +196,14 @@ impl ResolveContext<'_> {
         let [Some(a), Some(b), Some(c)] = uvs else {
             return None;
         };
-        let pc = self.settings.perspective_correct;
-        let uv_at = |p: I64Vec2| {
-            let w = t.original_bary(t.lambda(p), pc);
-            a * w.x + b * w.y + c * w.z
-        };
-        let uv = uv_at(centre);
+        // Neither the colour (one level, one tap) nor a kept buffer may need the footprint.
+        let (uv, dx, dy) = t.uv_at(
+            [a, b, c],
+            centre,
+            self.settings.perspective_correct,
+            self.derivatives,
+        );
         let sampler = &self.settings.sampler;
-        if !self.derivatives {
-            // Neither the colour (one level, one tap) nor a kept buffer needs the footprint.
-            return Some((uv, texture.sample(uv, Vec2::ZERO, Vec2::ZERO, sampler)));
-        }
-        let dx = uv_at(centre + I64Vec2::new(ONE, 0)) - uv;
-        let dy = uv_at(centre + I64Vec2::new(0, ONE)) - uv;
         Some((uv, texture.sample(uv, dx, dy, sampler)))
     }
 

@@ -110,6 +110,21 @@ impl Level {
     /// Bilinear filtering at `(u, v)`.
     #[must_use]
     pub fn bilinear(&self, uv: Vec2, wrap: Wrap) -> Vec3 {
+        let b = self.bilinear_taps(uv, wrap);
+        let w = self.width as usize;
+        let at = |i: usize, j: usize| self.texels[j * w + i];
+        let ([i0, i1], [j0, j1]) = (b.columns, b.rows);
+        let bottom = at(i0, j0).lerp(at(i1, j0), b.s);
+        let top = at(i0, j1).lerp(at(i1, j1), b.s);
+        bottom.lerp(top, b.t)
+    }
+
+    /// The four texels bilinear filtering reads at `(u, v)` and their weights: with
+    /// `x = u·w − ½`, `y = v·h − ½`, columns `⌊x⌋, ⌊x⌋ + 1` and rows `⌊y⌋, ⌊y⌋ + 1` (wrapped),
+    /// `s = x − ⌊x⌋`, `t = y − ⌊y⌋`.
+    #[must_use]
+    #[inline]
+    pub fn bilinear_taps(&self, uv: Vec2, wrap: Wrap) -> BilinearTaps {
         let x = f64::from(uv.x) * f64::from(self.width) - 0.5;
         let y = f64::from(uv.y) * f64::from(self.height) - 0.5;
         let (i, j) = (x.floor(), y.floor());
@@ -118,11 +133,12 @@ impl Level {
         // The 2×2 texels' columns and rows, each wrapped once (as `texel` would wrap them).
         let (i0, i1) = wrap.pair(i, self.width);
         let (j0, j1) = wrap.pair(j, self.height);
-        let w = self.width as usize;
-        let at = |i: usize, j: usize| self.texels[j * w + i];
-        let bottom = at(i0, j0).lerp(at(i1, j0), s);
-        let top = at(i0, j1).lerp(at(i1, j1), s);
-        bottom.lerp(top, t)
+        BilinearTaps {
+            columns: [i0, i1],
+            rows: [j0, j1],
+            s,
+            t,
+        }
     }
 
     /// The 2×2 box filter of this level (the next mip level).
@@ -152,6 +168,21 @@ impl Level {
             texels,
         }
     }
+}
+
+/// The texels a bilinear lookup reads: columns `i0, i1`, rows `j0, j1` (from the bottom), and
+/// the weights `s` (towards `i1`) and `t` (towards `j1`): the result is
+/// `lerp(lerp(T(i0,j0), T(i1,j0), s), lerp(T(i0,j1), T(i1,j1), s), t)`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct BilinearTaps {
+    /// `[i0, i1]`.
+    pub columns: [usize; 2],
+    /// `[j0, j1]`.
+    pub rows: [usize; 2],
+    /// The weight of column `i1`.
+    pub s: f32,
+    /// The weight of row `j1`.
+    pub t: f32,
 }
 
 /// A texture with its mipmap pyramid.

@@ -12,7 +12,7 @@ use crate::support::render;
 use crate::texture::quad_mesh;
 
 /// A lit, textured quad under a point light (Phong shading), `size`² pixels.
-fn lit_textured_quad(size: u32, samples: Samples) -> (Scene, RenderSettings) {
+pub(crate) fn lit_textured_quad(size: u32, samples: Samples) -> (Scene, RenderSettings) {
     let mut quad = Object::new("quad", quad_mesh());
     quad.rotate_deg = Vec3::new(-40.0, 10.0, 0.0);
     quad.texture = Some(std::sync::Arc::new(Texture::checkerboard(64, 8)));

@@ -5,6 +5,7 @@ mod bezier;
 mod capture;
 mod clip;
 mod detail;
+mod explain;
 mod frame;
 mod hierarchy;
 mod properties;

@@ -1,0 +1,377 @@
+//! "Explain this pixel": the colour of one pixel derived as a worked example, each line a formula
+//! of the course with the capture's numbers substituted — the owning triangle's three vertices
+//! from clip space through NDC to window coordinates, the edge functions and the screen-space
+//! barycentrics, the interpolated attributes (perspective-correct), the texture lookup, the
+//! lighting light by light, and the final colour.
+//!
+//! Everything is computed here, in the core, from what the capture recorded and with the same
+//! functions the render used (`RasterTriangle::uv_at`, `Texture::sample`, `shade::light_term`):
+//! a view shows the lines, it computes nothing.
+
+mod geometry;
+mod lighting;
+mod texture;
+
+use glam::{I64Vec2, Vec2, Vec3, Vec4};
+use serde::Serialize;
+
+use super::{EdgeTest, FrameCapture, ObjectSummary, PrimitiveRecord};
+use crate::light::Light;
+use crate::raster::{ONE, RasterTriangle};
+use crate::shade::{Frequency, LightTerm, Reflection, ShadeTerms};
+use crate::texture::BilinearTaps;
+use crate::vertex::VertexRecord;
+
+/// A part of the derivation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Section {
+    /// The triangle's vertices through clip space, NDC and window coordinates.
+    Vertices,
+    /// The inside test: edge functions and screen-space barycentrics.
+    Rasterization,
+    /// Depth and the attributes at the pixel centre.
+    Interpolation,
+    /// The texture lookup.
+    Texture,
+    /// The lighting terms.
+    Lighting,
+    /// The colour of the pixel.
+    Colour,
+}
+
+/// One line of the derivation: a formula, the same with the numbers substituted, and its value.
+/// Formulas use `_` for subscripts, `^` for superscripts and `/` for fractions.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Line {
+    /// Which part of the derivation.
+    pub section: Section,
+    /// The formula, as the course writes it.
+    pub formula: String,
+    /// The formula with the numbers substituted (empty when it would only repeat the value).
+    pub numbers: String,
+    /// The value.
+    pub result: String,
+}
+
+/// The texture lookup at the pixel, step by step.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct TextureStep {
+    /// The texture's name.
+    pub texture: String,
+    /// Its level-0 size `(w, h)`.
+    pub size: [u32; 2],
+    /// `(u, v)` at the pixel centre.
+    pub uv: Vec2,
+    /// `∂(u, v)/∂x` and `∂(u, v)/∂y`: the differences to the next pixel.
+    pub duv: [Vec2; 2],
+    /// The footprint's axes in texels, `∂(u·w, v·h)/∂x` and `/∂y`.
+    pub footprint: [Vec2; 2],
+    /// Their lengths.
+    pub lengths: [f32; 2],
+    /// Taps along the major axis (anisotropic filtering).
+    pub taps: u32,
+    /// `λ` with the bias.
+    pub lod: f32,
+    /// The (finer) level read.
+    pub level: u32,
+    /// The weight of the next level (trilinear).
+    pub blend: f32,
+    /// The bilinear taps at the level read (one tap, bilinear filtering).
+    pub bilinear: Option<BilinearTaps>,
+    /// The colours of those four texels: `T(i0,j0), T(i1,j0), T(i0,j1), T(i1,j1)`.
+    pub texels: Vec<Vec3>,
+    /// The filtered colour.
+    pub color: Vec3,
+}
+
+/// One light's part of the lighting at the pixel.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct LightStep {
+    /// The light's index in the scene.
+    pub index: usize,
+    /// The light.
+    pub light: Light,
+    /// What it contributes (`None` for an ambient light: its term is `k_a·c·I_a`).
+    pub term: Option<LightTerm>,
+}
+
+/// The lighting at the pixel.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct LightingStep {
+    /// Where lighting was evaluated.
+    pub frequency: Frequency,
+    /// Phong or Blinn-Phong.
+    pub reflection: Reflection,
+    /// The normal used (world coordinates).
+    pub normal: Vec3,
+    /// `v = normalize(eye − p)`.
+    pub view: Vec3,
+    /// Each light (per-pixel lighting; for Gouraud and flat shading the vertices' or the face's
+    /// terms are what was interpolated or used).
+    pub lights: Vec<LightStep>,
+    /// Gouraud: the lit colour at each vertex; flat: the face's (once).
+    pub vertex_colors: Vec<Vec3>,
+    /// The terms that sum to the shaded colour.
+    pub terms: ShadeTerms,
+}
+
+/// The worked derivation of one pixel's colour.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PixelExplanation {
+    /// Window column.
+    pub x: u32,
+    /// Window row (0 at the bottom).
+    pub y: u32,
+    /// The owning object's name.
+    pub object: String,
+    /// The owning primitive.
+    pub primitive: u32,
+    /// Whether the primitive was clipped (the pixel lies in a piece of it).
+    pub clipped: bool,
+    /// The primitive's three vertices through every space.
+    pub vertices: [VertexRecord; 3],
+    /// The inside test of the owning raster triangle at the pixel.
+    pub edges: EdgeTest,
+    /// `1/w_clip` of the raster triangle's corners.
+    pub inv_w: [f32; 3],
+    /// Which vertex of the primitive each corner of the raster triangle is (`None` for a corner
+    /// that clipping made).
+    pub corner_vertex: [Option<usize>; 3],
+    /// Screen-space weights of the primitive's vertices (affine).
+    pub bary_affine: [f32; 3],
+    /// Perspective-correct weights of the primitive's vertices.
+    pub bary_perspective: [f32; 3],
+    /// Window depth at the centre.
+    pub depth: f32,
+    /// The surface point (world coordinates).
+    pub position: Vec3,
+    /// The interpolated unit normal (world coordinates).
+    pub normal: Vec3,
+    /// The interpolated vertex colour.
+    pub vertex_color: Vec3,
+    /// The texture lookup, when the object is textured.
+    pub texture: Option<TextureStep>,
+    /// The surface colour: the texel, or the interpolated vertex colour.
+    pub surface: Vec3,
+    /// The lighting, when it is on for the object.
+    pub lighting: Option<LightingStep>,
+    /// The owning triangle's colour at the centre.
+    pub shaded: Vec3,
+    /// Covered samples, and samples per pixel.
+    pub coverage: [usize; 2],
+    /// The pixel's final colour.
+    pub color: Vec3,
+    /// The derivation, line by line.
+    pub lines: Vec<Line>,
+}
+
+/// A number as the derivation writes it: up to three decimals, no trailing zeros, `−` for minus.
+pub(super) fn n(v: f32) -> String {
+    if !v.is_finite() {
+        return v.to_string();
+    }
+    let s = if v.abs() >= 1e5 || (v != 0.0 && v.abs() < 1e-3) {
+        format!("{v:.3e}")
+    } else {
+        let s = format!("{v:.3}");
+        let s = s.trim_end_matches('0').trim_end_matches('.').to_owned();
+        if s == "-0" { "0".to_owned() } else { s }
+    };
+    s.replace('-', "−")
+}
+
+pub(super) fn n64(v: f64) -> String {
+    n(v as f32)
+}
+
+pub(super) fn v2(v: Vec2) -> String {
+    format!("({}, {})", n(v.x), n(v.y))
+}
+
+pub(super) fn v3(v: Vec3) -> String {
+    format!("({}, {}, {})", n(v.x), n(v.y), n(v.z))
+}
+
+pub(super) fn v4(v: Vec4) -> String {
+    format!("({}, {}, {}, {})", n(v.x), n(v.y), n(v.z), n(v.w))
+}
+
+/// Collects the lines.
+pub(super) struct Lines(Vec<Line>);
+
+impl Lines {
+    pub(super) fn add(&mut self, section: Section, formula: &str, numbers: String, result: String) {
+        self.0.push(Line {
+            section,
+            formula: formula.to_owned(),
+            numbers,
+            result,
+        });
+    }
+}
+
+/// `(x, y)` of a window point.
+pub(super) fn pt(p: [f64; 2]) -> String {
+    format!("({}, {})", n64(p[0]), n64(p[1]))
+}
+
+/// The fragment that owns the pixel being explained, and what is interpolated at its centre.
+pub(super) struct Owner<'a> {
+    /// The pixel's index in the image buffers.
+    i: usize,
+    tri: &'a RasterTriangle,
+    prim: &'a PrimitiveRecord,
+    object: &'a ObjectSummary,
+    vertices: [VertexRecord; 3],
+    /// The pixel centre, fixed point.
+    centre: I64Vec2,
+    /// The weights attributes are interpolated with (perspective-correct or affine).
+    b: Vec3,
+    /// `Σ b_k·p_k`, world coordinates.
+    position: Vec3,
+    /// `normalize(Σ b_k·n_k)`.
+    normal: Vec3,
+}
+
+impl FrameCapture {
+    /// The worked derivation of window pixel `(x, y)`'s colour (y up); `None` outside the
+    /// viewport or where nothing was drawn.
+    #[must_use]
+    pub fn explain(&self, x: u32, y: u32) -> Option<PixelExplanation> {
+        if x >= self.width() || y >= self.height() {
+            return None;
+        }
+        let i = ((self.height() - 1 - y) * self.width() + x) as usize;
+        let tri = self.triangles.get(self.pixels.owner[i] as usize)?;
+        let prim = self.primitives.get(tri.primitive as usize)?;
+        let object = self.objects.get(prim.object as usize)?;
+        let vertices = prim.vertices.map(|r| self.vertices[r as usize]);
+        let mut lines = Lines(Vec::new());
+        self.explain_vertices(&vertices, prim.clipped_polygon.is_some(), &mut lines);
+
+        let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
+        let centre = Self::pixel_centre_fixed(x, y);
+        let offsets = crate::raster::sample_offsets_fixed(self.settings.samples);
+        let edges = EdgeTest::of(tri, corner, &offsets);
+        // A corner of the original triangle has unit weights; one that clipping made, not.
+        let corner_vertex = tri
+            .bary
+            .map(|b| (0..3).find(|&k| (b[k] - 1.0).abs() < 1e-6 && b.element_sum() < 1.0 + 1e-6));
+        geometry::explain_edges(&edges, &corner_vertex, &mut lines);
+
+        let lambda = tri.lambda(centre);
+        let pc = self.settings.perspective_correct;
+        let (affine, perspective) = (
+            tri.original_bary(lambda, false),
+            tri.original_bary(lambda, true),
+        );
+        let b = if pc { perspective } else { affine };
+        let depth = tri.depth(lambda);
+        geometry::explain_weights(tri, lambda, pc, b, depth, &mut lines);
+        let blend = |f: &dyn Fn(&VertexRecord) -> Vec3| {
+            f(&vertices[0]) * b.x + f(&vertices[1]) * b.y + f(&vertices[2]) * b.z
+        };
+        let owner = Owner {
+            i,
+            tri,
+            prim,
+            object,
+            vertices,
+            centre,
+            b,
+            position: blend(&|v| v.world.truncate()),
+            normal: blend(&|v| v.normal_world).normalize_or_zero(),
+        };
+        let vertex_color = blend(&|v| v.color);
+        geometry::explain_attributes(&owner, vertex_color, &mut lines);
+        let texture = self.explain_texture(&owner, &mut lines);
+        let surface = texture.as_ref().map_or(vertex_color, |t| t.color);
+        let lighting = self.explain_lighting(&owner, surface, texture.is_some(), &mut lines);
+        let shaded = lighting.as_ref().map_or(surface, |l| l.terms.color());
+        let coverage = [
+            usize::from(self.pixels.coverage[i]),
+            self.settings.samples.count(),
+        ];
+        let color = Vec3::from(self.pixels.color[i]);
+        self.explain_colour(lighting.as_ref(), shaded, coverage, color, &mut lines);
+        Some(PixelExplanation {
+            x,
+            y,
+            object: object.name.clone(),
+            primitive: prim.id,
+            clipped: prim.clipped_polygon.is_some(),
+            vertices,
+            edges,
+            inv_w: tri.inv_w,
+            corner_vertex,
+            bary_affine: affine.to_array(),
+            bary_perspective: perspective.to_array(),
+            depth,
+            position: owner.position,
+            normal: owner.normal,
+            vertex_color,
+            texture,
+            surface,
+            lighting,
+            shaded,
+            coverage,
+            color,
+            lines: lines.0,
+        })
+    }
+
+    /// The colour: the terms' sum, the samples' mean where the pixel is not wholly the owner's,
+    /// and the 8-bit value.
+    fn explain_colour(
+        &self,
+        lighting: Option<&LightingStep>,
+        shaded: Vec3,
+        [covered, samples]: [usize; 2],
+        color: Vec3,
+        lines: &mut Lines,
+    ) {
+        if let Some(l) = lighting {
+            let t = &l.terms;
+            let mirror = t.reflected != Vec3::ZERO;
+            lines.add(
+                Section::Colour,
+                if mirror {
+                    "c = ambient + diffuse + specular + reflected"
+                } else {
+                    "c = ambient + diffuse + specular"
+                },
+                format!(
+                    "{} + {} + {}{}",
+                    v3(t.ambient),
+                    v3(t.diffuse),
+                    v3(t.specular),
+                    if mirror {
+                        format!(" + {}", v3(t.reflected))
+                    } else {
+                        String::new()
+                    }
+                ),
+                v3(shaded),
+            );
+        }
+        if covered < samples || (color - shaded).abs().max_element() > 1e-4 {
+            lines.add(
+                Section::Colour,
+                "pixel = (Σ_s colour of sample s)/S",
+                format!(
+                    "{covered} of {samples} samples covered; other triangles' samples keep their colours, uncovered ones the background {}",
+                    v3(self.settings.background)
+                ),
+                v3(color),
+            );
+        }
+        let byte = |c: f32| (c.clamp(0.0, 1.0) * 255.0).round();
+        lines.add(
+            Section::Colour,
+            "RGB_8 = round(255·c)",
+            String::new(),
+            format!("({}, {}, {})", byte(color.x), byte(color.y), byte(color.z)),
+        );
+    }
+}

@@ -1,0 +1,172 @@
+//! The texture lookup of the derivation: uv and its screen derivatives, the footprint, λ, the
+//! level read and the texels filtered — with `RasterTriangle::uv_at` and `Texture::sample`, as
+//! the render did it.
+
+use glam::{Vec2, Vec3};
+
+use super::{Lines, Owner, Section, TextureStep, n, v2, v3};
+use crate::capture::FrameCapture;
+use crate::texture::{Filter, Lookup, Mipmap, Texture};
+
+impl FrameCapture {
+    /// The texture lookup at the owner's centre, when its object is textured.
+    pub(super) fn explain_texture(&self, o: &Owner<'_>, lines: &mut Lines) -> Option<TextureStep> {
+        let (_, texture) = self
+            .textures
+            .iter()
+            .find(|(name, _)| *name == o.object.name)?;
+        let [Some(a), Some(b), Some(c)] = o.vertices.map(|v| v.uv) else {
+            return None;
+        };
+        let sampler = &self.settings.sampler;
+        let (uv, dx, dy) =
+            o.tri
+                .uv_at([a, b, c], o.centre, self.settings.perspective_correct, true);
+        let lookup = texture.sample(uv, dx, dy, sampler);
+        let size = texture.levels[0].size();
+        let [fx, fy] = lookup.footprint;
+        let lengths = [fx.length(), fy.length()];
+        let s = Section::Texture;
+        lines.add(
+            s,
+            "uv = Σ_k b_k·uv_k",
+            format!("{}, {}, {} at the vertices", v2(a), v2(b), v2(c)),
+            v2(uv),
+        );
+        for (axis, d, f) in [("x", dx, fx), ("y", dy, fy)] {
+            lines.add(
+                s,
+                &format!("(∂s/∂{axis}, ∂t/∂{axis}) = (w·∂u/∂{axis}, h·∂v/∂{axis})"),
+                format!("({}·{}, {}·{})", n(size.x), n(d.x), n(size.y), n(d.y)),
+                v2(f),
+            );
+        }
+        let major = lengths[0].max(lengths[1]);
+        lines.add(
+            s,
+            "L = max(|∂/∂x|, |∂/∂y|)",
+            format!("max({}, {})", n(lengths[0]), n(lengths[1])),
+            n(major),
+        );
+        let bias = n(sampler.lod_bias);
+        if lookup.taps > 1 {
+            lines.add(
+                s,
+                "N = min(⌈L_major/L_minor⌉, anisotropy); λ = log_2(L/N) + bias",
+                format!(
+                    "N = {}; log_2({}/{}) + {bias}",
+                    lookup.taps,
+                    n(major),
+                    lookup.taps
+                ),
+                n(lookup.lod),
+            );
+        } else {
+            lines.add(
+                s,
+                "λ = log_2 L + bias",
+                format!("log_2 {} + {bias}", n(major)),
+                n(lookup.lod),
+            );
+        }
+        let (bilinear, texels) = self.explain_level_read(texture, &lookup, uv, lines);
+        Some(TextureStep {
+            texture: texture.name.clone(),
+            size: [texture.levels[0].width, texture.levels[0].height],
+            uv,
+            duv: [dx, dy],
+            footprint: lookup.footprint,
+            lengths,
+            taps: lookup.taps,
+            lod: lookup.lod,
+            level: lookup.level,
+            blend: lookup.level_blend,
+            bilinear,
+            texels,
+            color: lookup.color,
+        })
+    }
+
+    /// Which level `λ` chose, the texels read there and their filtering.
+    fn explain_level_read(
+        &self,
+        texture: &Texture,
+        lookup: &Lookup,
+        uv: Vec2,
+        lines: &mut Lines,
+    ) -> (Option<crate::texture::BilinearTaps>, Vec<Vec3>) {
+        let s = Section::Texture;
+        let sampler = &self.settings.sampler;
+        let max_level = texture.levels.len() - 1;
+        let (rule, result) = match sampler.mipmap {
+            _ if lookup.lod <= 0.0 => (
+                "λ ≤ 0: magnification, level 0".to_owned(),
+                "k = 0".to_owned(),
+            ),
+            Mipmap::None => ("no mipmap: level 0 always".to_owned(), "k = 0".to_owned()),
+            Mipmap::Nearest => (
+                format!("nearest level: k = ⌊λ + 1/2⌋, at most {max_level}"),
+                format!("k = {}", lookup.level),
+            ),
+            Mipmap::Linear => (
+                format!("trilinear: k = ⌊λ⌋, t = λ − k (λ at most {max_level})"),
+                format!("k = {}, t = {}", lookup.level, n(lookup.level_blend)),
+            ),
+        };
+        lines.add(s, &rule, String::new(), result);
+        let level = &texture.levels[lookup.level as usize];
+        let one_bilinear_tap = lookup.taps == 1 && sampler.filter == Filter::Bilinear;
+        if !one_bilinear_tap {
+            lines.add(
+                s,
+                if sampler.filter == Filter::Nearest && lookup.taps == 1 {
+                    "texel = T(⌊u·w_k⌋, ⌊v·h_k⌋)"
+                } else {
+                    "c = mean of the N taps along the footprint's major axis"
+                },
+                String::new(),
+                v3(lookup.color),
+            );
+            return (None, Vec::new());
+        }
+        let taps = level.bilinear_taps(uv, sampler.wrap);
+        let at = |i: usize, j: usize| level.texels[j * level.width as usize + i];
+        let ([i0, i1], [j0, j1]) = (taps.columns, taps.rows);
+        let texels = vec![at(i0, j0), at(i1, j0), at(i0, j1), at(i1, j1)];
+        lines.add(
+            s,
+            "x = u·w_k − 1/2, y = v·h_k − 1/2; s = x − ⌊x⌋, t = y − ⌊y⌋",
+            format!(
+                "texels ({i0}, {j0}), ({i1}, {j0}), ({i0}, {j1}), ({i1}, {j1}) of level {} ({}×{})",
+                lookup.level, level.width, level.height
+            ),
+            format!("s = {}, t = {}", n(taps.s), n(taps.t)),
+        );
+        lines.add(
+            s,
+            "texel = lerp(lerp(T_00, T_10, s), lerp(T_01, T_11, s), t)",
+            format!(
+                "T = {}, {}, {}, {}",
+                v3(texels[0]),
+                v3(texels[1]),
+                v3(texels[2]),
+                v3(texels[3])
+            ),
+            v3(level.bilinear(uv, sampler.wrap)),
+        );
+        if lookup.level_blend > 0.0 {
+            lines.add(
+                s,
+                "c = (1 − t)·c_k + t·c_(k+1)",
+                format!(
+                    "levels {} and {}, t = {}",
+                    lookup.level,
+                    lookup.level + 1,
+                    n(lookup.level_blend)
+                ),
+                v3(lookup.color),
+            );
+        }
+        (Some(taps), texels)
+    }
+}
