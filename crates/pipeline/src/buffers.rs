@@ -145,16 +145,20 @@ impl BufferKind {
             Self::NDotH => {
                 "grey = 255·max(n·h, 0) (Blinn-Phong) or max(r·v, 0) (Phong); background black"
             }
-            Self::Uv => "RGB = 255·(fract u, fract v, 0); background black",
+            Self::Uv => {
+                "RGB = 255·(fract u, fract v, 0); untextured surfaces dark grey (48, 48, 56); background black"
+            }
             Self::MipLevel => {
                 "level k in colour k (0 white, 1 red, 2 orange, 3 yellow, 4 green, 5 cyan, 6 blue, \
-                 7+ violet), trilinear blends the two; background black"
+                 7+ violet), trilinear blends the two; untextured surfaces dark grey; background black"
             }
-            Self::Texel => "RGB = round(255·filtered texel); background black",
+            Self::Texel => {
+                "RGB = round(255·filtered texel); untextured surfaces dark grey (48, 48, 56); background black"
+            }
             Self::Footprint => {
                 "hue = direction of the footprint's long axis in the texture (0°–180°: red along s, \
                  cyan along t), saturation = min(log₂(major/minor)/3, 1): white isotropic, \
-                 saturated ≥ 8:1; background black"
+                 saturated ≥ 8:1; untextured surfaces dark grey; background black"
             }
             Self::Reflected => {
                 "RGB = round(255·k·C_env(r)), r = 2(n·v)n − v, for mirror objects; black elsewhere"

@@ -176,6 +176,36 @@ impl Projection {
         }
     }
 
+    /// The window depth `z_w ∈ [0, 1]` of a point at eye distance `d` (along −z):
+    /// perspective `z_ndc = (f+n)/(f−n) − 2·f·n/((f−n)·d)`, parallel
+    /// `z_ndc = 2·(d − n)/(f − n) − 1`, then `z_w = (z_ndc + 1)/2` (`n`, `f` the near and far
+    /// distances). The perspective curve rises steeply near `n`: most of `[0, 1]` goes to the
+    /// near part of the frustum.
+    #[must_use]
+    pub fn window_depth(&self, d: f32) -> f32 {
+        let [.., n, f] = self.bounds(1.0);
+        let z_ndc = if self.is_perspective() {
+            (f + n) / (f - n) - 2.0 * f * n / ((f - n) * d)
+        } else {
+            2.0 * (d - n) / (f - n) - 1.0
+        };
+        (z_ndc + 1.0) / 2.0
+    }
+
+    /// The eye distance (along −z) of window depth `z_w`, undoing [`Self::window_depth`]:
+    /// perspective `d = 2·f·n / ((f + n) − z_ndc·(f − n))` with `z_ndc = 2·z_w − 1`; parallel
+    /// `d = n + z_w·(f − n)`.
+    #[must_use]
+    pub fn eye_distance(&self, z_w: f32) -> f32 {
+        let [.., n, f] = self.bounds(1.0);
+        if self.is_perspective() {
+            let z_ndc = 2.0 * z_w - 1.0;
+            2.0 * f * n / ((f + n) - z_ndc * (f - n))
+        } else {
+            n + z_w * (f - n)
+        }
+    }
+
     /// What is wrong with these parameters, if anything (each as a sentence).
     #[must_use]
     pub fn problems(&self) -> Vec<String> {

@@ -65,8 +65,14 @@ fn footprint_rgb([sx, tx, sy, ty]: [f32; 4]) -> [u8; 3] {
     hue(angle / std::f32::consts::PI).map(|c| to_u8(1.0 - saturation * (1.0 - c)))
 }
 
+/// Where a covered pixel's surface has no texture, in the texturing buffers' images.
+const UNTEXTURED: [u8; 3] = [48, 48, 56];
+
 /// The colour of a texturing buffer at pixel `i`.
 fn texturing_rgb(tb: &TextureBuffers, kind: BufferKind, i: usize) -> [u8; 3] {
+    if tb.level[i].to_f32() < 0.0 {
+        return UNTEXTURED;
+    }
     match kind {
         BufferKind::Uv => {
             let [u, v] = tb.uv[i];
@@ -126,18 +132,10 @@ impl FrameCapture {
         })
     }
 
-    /// The eye-space distance along −z of window depth `z_w` (undoing the projection's depth
-    /// mapping): perspective `d = 2·f·n / ((f + n) − z_ndc·(f − n))` with `z_ndc = 2·z_w − 1`;
-    /// parallel `d = n + z_w·(f − n)`.
+    /// The eye-space distance along −z of window depth `z_w` (see `Projection::eye_distance`).
     #[must_use]
     pub fn eye_depth(&self, z_w: f32) -> f32 {
-        let [.., n, f] = self.projection.bounds(self.settings.aspect());
-        if self.projection.is_perspective() {
-            let z_ndc = 2.0 * z_w - 1.0;
-            2.0 * f * n / ((f + n) - z_ndc * (f - n))
-        } else {
-            n + z_w * (f - n)
-        }
+        self.projection.eye_distance(z_w)
     }
 
     /// The depth buffer as grey over `range` (black at its start, white at its end), of window

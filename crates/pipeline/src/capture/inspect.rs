@@ -3,7 +3,6 @@
 //! texture lookup and lighting vectors; and the intensity profile along a line of pixels.
 
 use glam::{I64Vec2, Vec3};
-use half::f16;
 use serde::Serialize;
 
 use super::{FrameCapture, PixelExplanation, PixelLighting, PixelTexture};
@@ -224,7 +223,7 @@ impl FrameCapture {
             texture: px
                 .texturing
                 .as_ref()
-                .filter(|t| owned && t.footprint[i] != [f16::ZERO; 4])
+                .filter(|t| owned && t.level[i].to_f32() >= 0.0)
                 .map(|t| t.at(i)),
             vectors: self.pixel_vectors(x, y),
             fragments: self.fragments_at(x, y),

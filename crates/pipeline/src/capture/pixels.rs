@@ -48,7 +48,8 @@ pub struct TextureBuffers {
     pub uv: Vec<[f32; 2]>,
     /// The level of detail `λ = log₂ L + bias` (fractional, not clamped).
     pub lod: Vec<f16>,
-    /// The level read: `k + blend` (trilinear blends levels k and k+1).
+    /// The level read: `k + blend` (trilinear blends levels k and k+1); −1 where no texture
+    /// was read.
     pub level: Vec<f16>,
     /// The filtered texel colour.
     pub texel: Vec<[f16; 3]>,
@@ -193,16 +194,20 @@ pub struct TextureRow<'a> {
 
 /// Half-float values a pixel's texture lookup has: λ, level, texel 3, footprint 4.
 pub const TEXTURE_HALVES: usize = 9;
+/// What the texturing buffers hold where no texture was read: zeros, the level −1 (a level
+/// read is never negative).
+pub const NO_LOOKUP: [f32; TEXTURE_HALVES] = [0.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
 /// Half-float values a pixel's lighting has: ambient, diffuse, specular, normal, reflected 3
 /// each, n·l, n·h.
 pub const LIGHTING_HALVES: usize = 17;
 
 impl TextureRow<'_> {
     /// A lookup as the row stores it: its uv (kept at 32 bits) and its [`TEXTURE_HALVES`]
-    /// values in storage order (zero: no lookup).
+    /// values in storage order. No lookup (an untextured surface, the background) stores zeros
+    /// with the level −1, so that it is told apart from level 0 ([`NO_LOOKUP`]).
     #[must_use]
     pub fn flatten(t: Option<&PixelTexture>) -> ([f32; 2], [f32; TEXTURE_HALVES]) {
-        t.map_or(([0.0; 2], [0.0; TEXTURE_HALVES]), |t| {
+        t.map_or(([0.0; 2], NO_LOOKUP), |t| {
             let ([a, b, c], [d, e, f, g]) = (t.texel, t.footprint);
             (t.uv, [t.lod, t.level, a, b, c, d, e, f, g])
         })

@@ -409,3 +409,60 @@ fn the_lighting_vectors_at_a_pixel_agree_with_its_terms() {
     }
     assert!(checked > 50, "{checked} pixels");
 }
+
+#[test]
+fn a_light_is_drawn_where_it_is_and_a_spot_with_its_cutoff() {
+    let spot = Light::Spot {
+        position: Vec3::new(0.0, 3.0, 0.0),
+        direction: Vec3::new(0.0, -2.0, 0.0),
+        cutoff_deg: 25.0,
+        exponent: 2.0,
+        intensity: Vec3::ONE,
+        attenuation: Vec3::X,
+    };
+    let g = spot.gizmo(Vec3::ZERO, 4.0).expect("a spot is drawn");
+    // The rays from the apex make the cutoff angle with the axis (straight down).
+    let rays: Vec<_> = g
+        .segments
+        .iter()
+        .filter(|[a, b]| {
+            *a == Vec3::new(0.0, 3.0, 0.0) && (*b - *a).normalize().dot(Vec3::NEG_Y) < 0.999
+        })
+        .collect();
+    assert_eq!(rays.len(), 8);
+    for [a, b] in rays {
+        let angle = (*b - *a).normalize().dot(Vec3::NEG_Y).acos().to_degrees();
+        assert!((angle - 25.0).abs() < 1e-3, "{angle}");
+    }
+    // A directional light's arrows run along its direction.
+    let sun = Light::Directional {
+        direction: Vec3::new(1.0, -1.0, 0.0),
+        intensity: Vec3::ONE,
+    };
+    let g = sun.gizmo(Vec3::ZERO, 4.0).expect("drawn");
+    let shafts: Vec<_> = g.segments.iter().step_by(3).collect();
+    for [a, b] in shafts {
+        assert!(
+            (*b - *a)
+                .normalize()
+                .dot(Vec3::new(1.0, -1.0, 0.0).normalize())
+                > 0.9999
+        );
+    }
+    // A point light's star is centred on it; ambient light has no place.
+    let point = Light::Point {
+        position: Vec3::new(1.0, 2.0, 3.0),
+        intensity: Vec3::ONE,
+        attenuation: Vec3::X,
+    };
+    for [a, b] in point.gizmo(Vec3::ZERO, 4.0).expect("drawn").segments {
+        assert!(((a + b) / 2.0 - Vec3::new(1.0, 2.0, 3.0)).length() < 1e-6);
+    }
+    assert!(
+        Light::Ambient {
+            intensity: Vec3::ONE
+        }
+        .gizmo(Vec3::ZERO, 4.0)
+        .is_none()
+    );
+}

@@ -473,3 +473,37 @@ fn an_object_rotated_about_an_arbitrary_axis() {
         .fold(glam::Mat4::IDENTITY, |a, f| a * f.matrix);
     assert!(product.abs_diff_eq(m.matrix, 1e-6));
 }
+
+#[test]
+fn window_depth_against_eye_distance_is_the_projection_s_and_inverts() {
+    use pipeline::camera::Projection;
+    // By hand, near 1 and far 3: z_ndc = (3+1)/(3−1) − 2·3·1/((3−1)·d) = 2 − 3/d, so d = 1 gives
+    // z_w = 0, d = 1.5 gives z_ndc = 0 and z_w = ½, d = 3 gives z_w = 1.
+    let p = Projection::Perspective {
+        fovy_deg: 60.0,
+        aspect: Some(1.0),
+        near: 1.0,
+        far: 3.0,
+    };
+    for (d, z_w) in [(1.0, 0.0), (1.5, 0.5), (3.0, 1.0), (2.0, 0.75)] {
+        assert!((p.window_depth(d) - z_w).abs() < 1e-6, "d = {d}");
+        assert!((p.eye_distance(z_w) - d).abs() < 1e-5, "z_w = {z_w}");
+    }
+    // The same as the projection matrix and the viewport applied to (0, 0, −d).
+    let m = p.matrix(1.0).matrix;
+    for d in [1.2f32, 2.0, 2.9] {
+        let c = m * glam::Vec4::new(0.0, 0.0, -d, 1.0);
+        assert!((p.window_depth(d) - (c.z / c.w + 1.0) / 2.0).abs() < 1e-6);
+    }
+    // Parallel projection: linear in d.
+    let o = Projection::Ortho {
+        left: -1.0,
+        right: 1.0,
+        bottom: -1.0,
+        top: 1.0,
+        near: 1.0,
+        far: 5.0,
+    };
+    assert!((o.window_depth(2.0) - 0.25).abs() < 1e-6);
+    assert!((o.eye_distance(0.25) - 2.0).abs() < 1e-6);
+}
