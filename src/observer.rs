@@ -11,6 +11,7 @@ use pipeline::scene::Scene;
 use pipeline::settings::RenderSettings;
 
 use crate::lesson::SceneSpec;
+use crate::vocabulary::Lang;
 
 /// Where the observer's camera is: an orbit around the scene's centre.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -57,12 +58,14 @@ pub fn default_orbit(spec: &SceneSpec) -> Orbit {
     }
 }
 
-/// The scene from the observer's camera: the same pipeline, one sample, no culling (so the
-/// outside of everything is seen), a perspective lens wide enough for the viewing frustum;
-/// only its colour is kept (into `spare`'s storage, if given).
+/// The scene from the observer's camera: the same pipeline, one sample, a perspective lens
+/// wide enough for the viewing frustum, as many pixels as the viewing camera's image but shaped
+/// `aspect` (width/height; the observer fills the panel it is shown in); only its colour is kept
+/// (into `spare`'s storage, if given).
 pub fn render_observer(
     spec: &SceneSpec,
     camera: Camera,
+    aspect: Option<f32>,
     spare: Option<FrameCapture>,
 ) -> Option<FrameCapture> {
     let distance = (camera.eye - camera.at).length();
@@ -79,7 +82,15 @@ pub fn render_observer(
         shadow: spec.scene.shadow,
         lights: spec.scene.lights.clone(),
     };
+    let (mut width, mut height) = (spec.settings.width, spec.settings.height);
+    if let Some(a) = aspect.filter(|a| a.is_finite() && *a > 0.05 && *a < 20.0) {
+        let pixels = f64::from(width) * f64::from(height);
+        width = ((pixels * f64::from(a)).sqrt().round() as u32).clamp(16, 4096);
+        height = ((f64::from(width) / f64::from(a)).round() as u32).clamp(16, 4096);
+    }
     let settings = RenderSettings {
+        width,
+        height,
         samples: Samples::X1,
         capture: Capture::COLOR,
         ..spec.settings
@@ -89,41 +100,209 @@ pub fn render_observer(
         .map(|(c, _)| c)
 }
 
+/// Which parts of the viewing camera the observer draws, and in which colours.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Parts {
+    /// The camera frame u, v, n at the eye.
+    pub axes: bool,
+    /// The near plane's rectangle.
+    pub near: bool,
+    /// The far plane's rectangle.
+    pub far: bool,
+    /// The frustum's side edges (and the rays from the eye to the near corners).
+    pub sides: bool,
+    /// The polygons that clipping produced.
+    pub clipped: bool,
+    /// The lights.
+    pub lights: bool,
+    /// The near plane's colour.
+    pub near_color: [u8; 4],
+    /// The far plane's and the sides' colour.
+    pub far_color: [u8; 4],
+}
+
+impl Default for Parts {
+    fn default() -> Self {
+        Self {
+            axes: true,
+            near: true,
+            far: true,
+            sides: true,
+            clipped: true,
+            lights: true,
+            near_color: [255, 200, 60, 255],
+            far_color: [255, 140, 40, 255],
+        }
+    }
+}
+
+/// A segment in world coordinates, with its colour and width.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Mark {
+    /// One end.
+    pub a: Vec3,
+    /// The other.
+    pub b: Vec3,
+    /// Straight-alpha sRGB.
+    pub color: [u8; 4],
+    /// In screen points (pixels of an export).
+    pub width: f32,
+}
+
+/// A word written at a world point.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tag {
+    /// Where.
+    pub at: Vec3,
+    /// What.
+    pub text: String,
+    /// Straight-alpha sRGB.
+    pub color: [u8; 4],
+}
+
+/// What the observer draws over its picture, in world coordinates: the viewing camera's frame
+/// u, v, n at the eye, its frustum (near and far planes, edges, rays from the eye), the polygons
+/// clipping produced (from clip space back to the world: `(P·V)⁻¹` applied to their clip
+/// coordinates), and the lights where they are. One description, drawn by egui in the app and by
+/// tiny-skia in exported images.
+#[must_use]
+pub fn viewing_camera(
+    main: &FrameCapture,
+    parts: &Parts,
+    scene: (Vec3, f32),
+    lang: Lang,
+) -> (Vec<Mark>, Vec<Tag>) {
+    let (mut marks, mut tags) = (Vec::new(), Vec::new());
+    let c = main.camera;
+    let mut mark =
+        |a: Vec3, b: Vec3, color: [u8; 4], width: f32| marks.push(Mark { a, b, color, width });
+    if let Ok(frame) = pipeline::transform::camera_frame(c.eye, c.at, c.up) {
+        let [.., n, _] = main.projection.bounds(main.settings.aspect());
+        let scale = (c.at - c.eye).length().max(n) * 0.25;
+        if parts.axes {
+            for (axis, color, label) in [
+                (frame.u, [235, 80, 80, 255], "u"),
+                (frame.v, [90, 210, 90, 255], "v"),
+                (frame.n, [90, 140, 255, 255], "n"),
+            ] {
+                mark(c.eye, c.eye + axis * scale, color, 2.5);
+                tags.push(Tag {
+                    at: c.eye + axis * scale * 1.15,
+                    text: label.to_owned(),
+                    color,
+                });
+            }
+        }
+    }
+    tags.push(Tag {
+        at: c.eye,
+        text: lang.tr("eye", "视点").to_owned(),
+        color: [255, 255, 255, 255],
+    });
+    // Eye-space corners to world: the inverse of the view matrix the capture used.
+    let to_world = main.matrices.view.matrix.inverse();
+    let corners = main
+        .projection
+        .corners_eye(main.settings.aspect())
+        .map(|p| to_world.transform_point3(p));
+    let (near, far) = (&corners[..4], &corners[4..]);
+    let dim = |c: [u8; 4]| [c[0], c[1], c[2], c[3] / 2];
+    for i in 0..4 {
+        let j = (i + 1) % 4;
+        if parts.near {
+            mark(near[i], near[j], parts.near_color, 2.0);
+        }
+        if parts.far {
+            mark(far[i], far[j], parts.far_color, 1.5);
+        }
+        if parts.sides {
+            mark(near[i], far[i], parts.far_color, 1.0);
+            if main.projection.is_perspective() {
+                mark(c.eye, near[i], dim(parts.near_color), 1.0);
+            }
+        }
+    }
+    if parts.clipped {
+        let clip_to_world = (main.matrices.projection.matrix * main.matrices.view.matrix).inverse();
+        for poly in main
+            .primitives
+            .iter()
+            .filter_map(|p| p.clipped_polygon.as_ref())
+            .take(2000)
+        {
+            let pts: Vec<Vec3> = poly
+                .iter()
+                .map(|v| {
+                    let q = clip_to_world * v.clip;
+                    q.truncate() / q.w
+                })
+                .collect();
+            for k in 0..pts.len() {
+                mark(pts[k], pts[(k + 1) % pts.len()], [255, 120, 200, 255], 1.5);
+            }
+        }
+    }
+    if parts.lights {
+        for (k, light) in main.lights.iter().enumerate() {
+            let Some(g) = light.gizmo(scene.0, scene.1) else {
+                continue;
+            };
+            for [a, b] in g.segments {
+                mark(a, b, [255, 240, 120, 255], 2.0);
+            }
+            tags.push(Tag {
+                at: g.label_at,
+                text: light_name(light, k, lang),
+                color: [255, 240, 120, 255],
+            });
+        }
+    }
+    (marks, tags)
+}
+
+/// "point light 1", "聚光灯 2"…
+#[must_use]
+pub fn light_name(light: &pipeline::light::Light, k: usize, lang: Lang) -> String {
+    use pipeline::light::Light;
+    let kind = match light {
+        Light::Point { .. } => lang.tr("point light", "点光源"),
+        Light::Spot { .. } => lang.tr("spotlight", "聚光灯"),
+        Light::Directional { .. } => lang.tr("directional light", "平行光"),
+        Light::Ambient { .. } => lang.tr("ambient light", "环境光"),
+    };
+    format!("{kind} {k}")
+}
+
+/// The centre and size of what the scene draws, for placing the lights' marks: the orbit's
+/// centre and the distance from it to the viewing camera.
+#[must_use]
+pub fn scene_extent(spec: &SceneSpec) -> (Vec3, f32) {
+    let o = default_orbit(spec);
+    (
+        o.centre,
+        (spec.scene.camera.eye - o.centre).length().max(1.0),
+    )
+}
+
 /// The scene seen from outside (the app's observer view): rendered from the default orbit, with
-/// the viewing camera's frustum drawn over it and a dot at its eye.
+/// the viewing camera's frame, frustum, clipped polygons and lights drawn over it.
 pub fn observer_image(spec: &SceneSpec, main: &FrameCapture) -> Option<image::RgbaImage> {
     use pipeline::overlay::Shape;
     let orbit = default_orbit(spec);
-    let outside = render_observer(spec, orbit.camera(), None)?;
-    let to_world = main.matrices.view.matrix.inverse();
-    let corners: Vec<glam::Vec3> = main
-        .projection
-        .corners_eye(main.settings.aspect())
+    let outside = render_observer(spec, orbit.camera(), None, None)?;
+    let (marks, _) = viewing_camera(main, &Parts::default(), scene_extent(spec), Lang::En);
+    let mut shapes: Vec<Shape> = marks
         .iter()
-        .map(|p| to_world.transform_point3(*p))
-        .collect();
-    let (near, far) = (&corners[..4], &corners[4..]);
-    let mut shapes = Vec::new();
-    let mut line = |a: glam::Vec3, b: glam::Vec3, color: [u8; 4], width: f32| {
-        if let Some([p, q]) = outside.world_segment_to_image(a, b) {
-            shapes.push(Shape::Polyline {
+        .filter_map(|m| {
+            let [p, q] = outside.world_segment_to_image(m.a, m.b)?;
+            Some(Shape::Polyline {
                 points: vec![p, q],
                 closed: false,
-                color,
-                width,
-            });
-        }
-    };
-    let (yellow, orange) = ([255, 214, 90, 255], [255, 140, 40, 255]);
-    for i in 0..4 {
-        let j = (i + 1) % 4;
-        line(near[i], near[j], yellow, 2.5);
-        line(far[i], far[j], orange, 2.0);
-        line(near[i], far[i], orange, 1.2);
-        if main.projection.is_perspective() {
-            line(main.camera.eye, near[i], yellow, 1.0);
-        }
-    }
+                color: m.color,
+                width: m.width,
+            })
+        })
+        .collect();
     if let Some(center) = outside.world_to_image(main.camera.eye) {
         shapes.push(Shape::Dot {
             center,

@@ -1,19 +1,32 @@
-//! The window's chrome: the top bar (language, classroom mode, export, the stage navigator),
-//! the status line (frame and stage times, errors) and the keyboard.
+//! The window's chrome: one bar along the top (a lesson's step controls and list, the stage
+//! navigator, the panels to show, the language, classroom mode, the snapshot export in a menu),
+//! the status line (frame and stage times, errors; hidden in classroom mode) and the keyboard.
 
-use egui::RichText;
+use egui::{Color32, RichText};
 
+use super::PipelensApp;
 use super::session::Command;
 use super::views::navigator;
-use super::{PipelensApp, apply_style};
+use crate::vocabulary::Lang;
 
 impl PipelensApp {
     pub(super) fn top_bar(&mut self, ui: &mut egui::Ui) {
         let lang = self.session.lang;
         egui::Panel::top("top").show(ui, |ui| {
+            super::style::chrome_style(ui);
+            ui.spacing_mut().item_spacing.x = 6.0;
             ui.horizontal_wrapped(|ui| {
-                ui.label(RichText::new("pipelens").strong().size(20.0));
-                ui.label(RichText::new(&self.session.source).weak());
+                if self.session.lesson.is_none() {
+                    ui.label(RichText::new("pipelens").strong())
+                        .on_hover_text(&self.session.source);
+                }
+                self.step_controls(ui, lang);
+                ui.separator();
+                if let Some(c) = navigator::ui(ui, &self.session) {
+                    self.commands.push(c);
+                }
+                ui.separator();
+                self.panel_toggles(ui, lang);
                 ui.separator();
                 if ui
                     .button(lang.other().name())
@@ -23,34 +36,17 @@ impl PipelensApp {
                     self.commands.push(Command::SetLang(lang.other()));
                 }
                 if ui
-                    .selectable_label(self.classroom, lang.tr("Classroom mode", "课堂模式"))
-                    .on_hover_text(lang.tr("Large type and high contrast for a projector. F11: full screen, Ctrl +/−: text size, ←/→: stages, Space: replay.", "投影用的大字号与高对比度。F11：全屏，Ctrl +/−：字号，←/→：切换阶段，空格：重播。"))
+                    .selectable_label(self.classroom, lang.tr("Classroom", "课堂模式"))
+                    .on_hover_text(lang.tr(
+                        "Large type and high contrast for a projector; the picture first. F11: full screen, Ctrl +/−: text size, ←/→: steps or stages, Space: play.",
+                        "投影用的大字号与高对比度，画面优先。F11：全屏，Ctrl +/−：字号，←/→：步骤或阶段，空格：播放。",
+                    ))
                     .clicked()
                 {
-                    self.classroom = !self.classroom;
-                    apply_style(ui.ctx(), self.classroom);
+                    let on = !self.classroom;
+                    self.set_classroom(ui.ctx(), on);
                 }
-                ui.separator();
-                let label = ui.label(lang.tr("Export to", "导出到"));
-                ui.add(egui::TextEdit::singleline(&mut self.export_dir).desired_width(160.0))
-                    .labelled_by(label.id)
-                    .on_hover_text(lang.tr("The folder the snapshot is written to (created if missing).", "快照写入的文件夹（不存在时创建）。"));
-                let busy = self.export_result.is_some();
-                if ui
-                    .add_enabled(!busy, egui::Button::new(lang.tr("Export snapshot", "导出快照")))
-                    .on_hover_text(lang.tr("Every buffer as PNG and capture.json, as `pipelens export` writes them.", "每个缓冲的 PNG 与 capture.json，与 `pipelens export` 相同。"))
-                    .clicked()
-                {
-                    self.start_export();
-                }
-                if let Some(cancel) = self.export_cancel.as_ref().filter(|_| busy)
-                    && ui
-                        .button(lang.tr("Cancel export", "取消导出"))
-                        .on_hover_text(lang.tr("Stops between two files: those written stay whole.", "在两个文件之间停止：已写入的文件保持完整。"))
-                        .clicked()
-                {
-                    cancel.cancel();
-                }
+                self.export_menu(ui, lang);
             });
             if let Some(e) = &self.session.reload_error {
                 ui.label(
@@ -62,17 +58,164 @@ impl PipelensApp {
                         )
                     ))
                     .monospace()
-                    .color(egui::Color32::LIGHT_RED),
+                    .color(Color32::LIGHT_RED),
                 );
             }
             if let Some((ok, msg)) = &self.export_message {
-                ui.label(RichText::new(msg).color(if *ok { egui::Color32::LIGHT_GREEN } else { egui::Color32::LIGHT_RED }));
-            }
-            ui.separator();
-            if let Some(c) = navigator::ui(ui, &self.session) {
-                self.commands.push(c);
+                ui.label(RichText::new(msg).color(if *ok { Color32::LIGHT_GREEN } else { Color32::LIGHT_RED }));
             }
         });
+    }
+
+    /// ◀ Step k / n ▾ ▶ and Play/Pause, with the list of steps in the menu.
+    fn step_controls(&mut self, ui: &mut egui::Ui, lang: Lang) {
+        let Some(player) = &self.session.lesson else {
+            return;
+        };
+        let (k, n) = (player.step, player.lesson.steps.len());
+        if ui
+            .add_enabled(k > 0, egui::Button::new("◀"))
+            .on_hover_text(lang.tr("Previous step (← or Page Up)", "上一步（← 或 Page Up）"))
+            .clicked()
+        {
+            self.commands.push(Command::PreviousStep);
+        }
+        ui.menu_button(
+            format!("{} {} / {n}", lang.tr("Step", "步骤"), k + 1),
+            |ui| {
+                ui.label(RichText::new(player.lesson.title.get(lang)).strong());
+                for (i, s) in player.lesson.steps.iter().enumerate() {
+                    if ui
+                        .selectable_label(i == k, format!("{}. {}", i + 1, s.title.get(lang)))
+                        .clicked()
+                    {
+                        self.commands.push(Command::GoToStep(i));
+                        ui.close();
+                    }
+                }
+            },
+        )
+        .response
+        .on_hover_text(player.lesson.title.get(lang));
+        if ui
+            .add_enabled(k + 1 < n, egui::Button::new("▶"))
+            .on_hover_text(lang.tr("Next step (→ or Page Down)", "下一步（→ 或 Page Down）"))
+            .clicked()
+        {
+            self.commands.push(Command::NextStep);
+        }
+        if !player.current().animate.is_empty() {
+            let label = if player.playing {
+                lang.tr("‖ Pause", "‖ 暂停")
+            } else {
+                lang.tr("▶ Play", "▶ 播放")
+            };
+            if ui
+                .button(label)
+                .on_hover_text(lang.tr(
+                    "Play or pause the animation (Space)",
+                    "播放或暂停动画（空格）",
+                ))
+                .clicked()
+            {
+                self.commands.push(Command::TogglePlay);
+            }
+        }
+    }
+
+    /// Which panels are shown: narration (N), parameters (P), inspector (I), the matrix card (M);
+    /// as buttons where there is room, in a menu otherwise.
+    fn panel_toggles(&mut self, ui: &mut egui::Ui, lang: Lang) {
+        let lesson = self.session.lesson.is_some();
+        let p = &mut self.panels;
+        let toggles: [(&mut bool, &str, &str); 4] = [
+            (
+                &mut p.narration,
+                lang.tr("Narration", "讲解"),
+                lang.tr(
+                    "Show or fold the narration over the picture (N)",
+                    "显示或收起画面上的讲解（N）",
+                ),
+            ),
+            (
+                &mut p.parameters,
+                lang.tr("Parameters", "参数"),
+                lang.tr(
+                    "The camera, projection, rasterizer and objects (P)",
+                    "相机、投影、光栅化与物体（P）",
+                ),
+            ),
+            (
+                &mut p.inspector,
+                lang.tr("Inspector", "检查器"),
+                lang.tr(
+                    "Matrices, the vertex table, the pixel inspector (I)",
+                    "矩阵、顶点表、像素检查器（I）",
+                ),
+            ),
+            (
+                &mut p.matrix_card,
+                lang.tr("Matrix", "矩阵卡片"),
+                lang.tr(
+                    "The stage's matrix over the geometry (M)",
+                    "在几何视图上显示本阶段的矩阵（M）",
+                ),
+            ),
+        ];
+        let roomy = ui.ctx().content_rect().width() > 1500.0 || lang == Lang::Zh;
+        if roomy {
+            for (k, (on, name, tip)) in toggles.into_iter().enumerate() {
+                if k > 0 || lesson {
+                    ui.toggle_value(on, name).on_hover_text(tip);
+                }
+            }
+        } else {
+            ui.menu_button(lang.tr("Show ▾", "显示 ▾"), |ui| {
+                for (k, (on, name, tip)) in toggles.into_iter().enumerate() {
+                    if k > 0 || lesson {
+                        ui.checkbox(on, name).on_hover_text(tip);
+                    }
+                }
+            });
+        }
+    }
+
+    /// The snapshot export, in a menu: the folder, the button, Cancel while it runs.
+    fn export_menu(&mut self, ui: &mut egui::Ui, lang: Lang) {
+        let busy = self.export_result.is_some();
+        ui.menu_button(lang.tr("Export ▾", "导出 ▾"), |ui| {
+            let label = ui.label(lang.tr("Folder", "文件夹"));
+            ui.add(egui::TextEdit::singleline(&mut self.export_dir).desired_width(200.0))
+                .labelled_by(label.id)
+                .on_hover_text(lang.tr(
+                    "The folder the snapshot is written to (created if missing).",
+                    "快照写入的文件夹（不存在时创建）。",
+                ));
+            if ui
+                .add_enabled(
+                    !busy,
+                    egui::Button::new(lang.tr("Export snapshot", "导出快照")),
+                )
+                .on_hover_text(lang.tr(
+                    "Every buffer as PNG and capture.json, as `pipelens export` writes them.",
+                    "每个缓冲的 PNG 与 capture.json，与 `pipelens export` 相同。",
+                ))
+                .clicked()
+            {
+                self.start_export();
+            }
+        });
+        if let Some(cancel) = self.export_cancel.as_ref().filter(|_| busy)
+            && ui
+                .button(lang.tr("Cancel export", "取消导出"))
+                .on_hover_text(lang.tr(
+                    "Stops between two files: those written stay whole.",
+                    "在两个文件之间停止：已写入的文件保持完整。",
+                ))
+                .clicked()
+        {
+            cancel.cancel();
+        }
     }
 
     pub(super) fn status_bar(&mut self, ui: &mut egui::Ui) {
@@ -82,14 +225,9 @@ impl PipelensApp {
                 if let Some(e) = &self.session.error {
                     ui.label(
                         RichText::new(format!("{}: {e}", lang.tr("Error", "错误")))
-                            .color(egui::Color32::LIGHT_RED),
+                            .color(Color32::LIGHT_RED),
                     );
-                    ui.label(
-                        RichText::new(
-                            lang.tr("(showing the last good frame)", "（显示上一个正确的帧）"),
-                        )
-                        .weak(),
-                    );
+                    ui.label(lang.tr("(showing the last good frame)", "（显示上一个正确的帧）"));
                 }
                 if let (Some(c), Some(t)) = (&self.session.capture, &self.session.times) {
                     let ms = |d: std::time::Duration| format!("{:.1}", d.as_secs_f64() * 1e3);
@@ -123,14 +261,12 @@ impl PipelensApp {
         if ctx.egui_wants_keyboard_input() {
             return;
         }
-        let (left, right, space, f11) = ctx.input(|i| {
-            (
-                i.key_pressed(egui::Key::ArrowLeft) || i.key_pressed(egui::Key::PageUp),
-                i.key_pressed(egui::Key::ArrowRight) || i.key_pressed(egui::Key::PageDown),
-                i.key_pressed(egui::Key::Space),
-                i.key_pressed(egui::Key::F11),
-            )
-        });
+        let pressed =
+            |k: egui::Key| ctx.input(|i| i.key_pressed(k) && !i.modifiers.ctrl && !i.modifiers.alt);
+        let (left, right) = (
+            pressed(egui::Key::ArrowLeft) || pressed(egui::Key::PageUp),
+            pressed(egui::Key::ArrowRight) || pressed(egui::Key::PageDown),
+        );
         // With a lesson the arrows (and a presenter's Page Up/Down) step it and Space plays its
         // animations; without one they move through the stages and replay the transition.
         let lesson = self.session.lesson.is_some();
@@ -148,14 +284,27 @@ impl PipelensApp {
                 Command::NextStage
             });
         }
-        if space {
+        if pressed(egui::Key::Space) {
             self.commands.push(if lesson {
                 Command::TogglePlay
             } else {
                 Command::PlayTransition
             });
         }
-        if f11 {
+        let p = &mut self.panels;
+        if pressed(egui::Key::N) {
+            p.narration = !p.narration;
+        }
+        if pressed(egui::Key::P) {
+            p.parameters = !p.parameters;
+        }
+        if pressed(egui::Key::I) {
+            p.inspector = !p.inspector;
+        }
+        if pressed(egui::Key::M) {
+            p.matrix_card = !p.matrix_card;
+        }
+        if pressed(egui::Key::F11) {
             let full = ctx.input(|i| i.viewport().fullscreen.unwrap_or(false));
             ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(!full));
         }

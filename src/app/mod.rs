@@ -5,6 +5,7 @@
 mod chrome;
 mod export_task;
 mod reload;
+pub mod selection;
 pub mod session;
 mod style;
 pub mod views;
@@ -26,10 +27,43 @@ use self::worker::RenderWorker;
 use crate::vocabulary::Lang;
 use crate::vocabulary::Stage;
 
+/// What the window shows around the picture. In a lesson or classroom mode the picture comes
+/// first: the narration lies over it and can be folded (N), the parameters (P) and the
+/// inspector (I) are opened when wanted; otherwise both panels are open.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Panels {
+    /// The lesson's narration card over the picture.
+    pub narration: bool,
+    /// The parameters on the left.
+    pub parameters: bool,
+    /// The inspector on the right.
+    pub inspector: bool,
+    /// The card with the stage's matrix over the geometry views.
+    pub matrix_card: bool,
+}
+
+impl Panels {
+    /// For a lesson or a classroom (`presenting`), or for exploring.
+    #[must_use]
+    pub fn for_mode(presenting: bool) -> Self {
+        Self {
+            narration: true,
+            parameters: !presenting,
+            inspector: !presenting,
+            matrix_card: true,
+        }
+    }
+}
+
 /// The app.
 pub struct PipelensApp {
     /// State with no egui in it.
     pub session: Session,
+    /// What is shown around the picture.
+    pub panels: Panels,
+    /// Where this frame drew the picture of the stage (the buffer, the geometry, the observer,
+    /// the compared images and their plot): what a presentation is for, measured by the tests.
+    pub picture: Vec<egui::Rect>,
     pixel_view: PixelView,
     geometry_view: GeometryView,
     observer_view: ObserverView,
@@ -50,8 +84,11 @@ impl PipelensApp {
     /// An app on `session` (call [`setup_context`] once on its egui context).
     #[must_use]
     pub fn new(session: Session) -> Self {
+        let presenting = session.lesson.is_some();
         Self {
             session,
+            panels: Panels::for_mode(presenting),
+            picture: Vec::new(),
             pixel_view: PixelView::default(),
             geometry_view: GeometryView::default(),
             observer_view: ObserverView::default(),
@@ -67,61 +104,119 @@ impl PipelensApp {
         }
     }
 
+    /// Whether the app presents (a lesson is open, or classroom mode is on): the picture first.
+    #[must_use]
+    pub fn presenting(&self) -> bool {
+        self.classroom || self.session.lesson.is_some()
+    }
+
+    /// Whether classroom mode (large type, high contrast) is on.
+    #[must_use]
+    pub fn classroom(&self) -> bool {
+        self.classroom
+    }
+
+    /// Turns classroom mode on or off; turning it on folds the side panels away.
+    pub fn set_classroom(&mut self, ctx: &egui::Context, on: bool) {
+        if on == self.classroom {
+            return;
+        }
+        self.classroom = on;
+        apply_style(ctx, on);
+        let narration = self.panels.narration;
+        self.panels = Panels {
+            narration,
+            ..Panels::for_mode(self.presenting())
+        };
+    }
+
+    /// The share of `screen` the picture covers (the area of the union of [`Self::picture`],
+    /// exactly: the rectangles cut the screen into cells along their edges, and each cell is in
+    /// or out).
+    #[must_use]
+    pub fn picture_share(&self, screen: egui::Rect) -> f32 {
+        let rects: Vec<egui::Rect> = self
+            .picture
+            .iter()
+            .map(|r| r.intersect(screen))
+            .filter(|r| r.is_positive())
+            .collect();
+        let mut xs: Vec<f32> = rects.iter().flat_map(|r| [r.left(), r.right()]).collect();
+        let mut ys: Vec<f32> = rects.iter().flat_map(|r| [r.top(), r.bottom()]).collect();
+        xs.sort_by(f32::total_cmp);
+        ys.sort_by(f32::total_cmp);
+        let mut area = 0.0;
+        for x in xs.windows(2) {
+            for y in ys.windows(2) {
+                let centre = egui::pos2((x[0] + x[1]) / 2.0, (y[0] + y[1]) / 2.0);
+                if rects.iter().any(|r| r.contains(centre)) {
+                    area += (x[1] - x[0]) * (y[1] - y[0]);
+                }
+            }
+        }
+        area / screen.area().max(1.0)
+    }
+
     /// Draws one frame and applies the commands it produced.
     pub fn frame(&mut self, ui: &mut egui::Ui) {
         self.session.poll();
         self.reload_if_changed(ui.ctx());
         self.keyboard(ui.ctx());
+        self.picture.clear();
         self.top_bar(ui);
-        self.status_bar(ui);
+        if !self.presenting() {
+            self.status_bar(ui);
+        }
         let lang = self.session.lang;
-        egui::Panel::left("parameters")
-            .default_size(if self.session.lesson.is_some() {
-                340.0
-            } else {
-                270.0
-            })
-            .resizable(true)
-            .show(ui, |ui| {
-                if let Some(player) = &self.session.lesson {
-                    self.commands.extend(views::lesson::ui(ui, player, lang));
-                    ui.separator();
-                    egui::CollapsingHeader::new(
-                        RichText::new(lang.tr("Parameters", "参数")).strong(),
-                    )
-                    .id_salt("params-section")
-                    .show(ui, |ui| {
-                        self.commands.extend(params::ui(ui, &self.session));
-                    });
-                } else {
+        if self.panels.parameters {
+            egui::Panel::left("parameters")
+                .default_size(300.0)
+                .resizable(true)
+                .show(ui, |ui| {
                     ui.heading(lang.tr("Parameters", "参数"));
                     self.commands.extend(params::ui(ui, &self.session));
-                }
-            });
-        if let Some(capture) = self.session.capture.clone() {
+                });
+        }
+        let capture = self.session.capture.clone();
+        if self.panels.inspector
+            && let Some(capture) = &capture
+        {
             egui::Panel::right("inspector")
-                .default_size(380.0)
+                .default_size(400.0)
                 .resizable(true)
                 .show(ui, |ui| {
                     self.commands.extend(inspector::ui(
                         ui,
                         &mut self.inspector,
                         &self.session,
-                        &capture,
+                        capture,
                     ));
                 });
-            egui::CentralPanel::default().show(ui, |ui| self.main_view(ui, &capture));
-        } else {
-            egui::CentralPanel::default().show(ui, |ui| {
-                ui.centered_and_justified(|ui| {
-                    ui.label(
-                        self.session
-                            .error
-                            .clone()
-                            .unwrap_or_else(|| lang.tr("Rendering…", "渲染中…").to_owned()),
-                    );
-                });
-            });
+        }
+        let central = egui::CentralPanel::default()
+            .show(ui, |ui| match &capture {
+                Some(capture) => self.main_view(ui, capture),
+                None => {
+                    ui.centered_and_justified(|ui| {
+                        ui.label(
+                            self.session
+                                .error
+                                .clone()
+                                .unwrap_or_else(|| lang.tr("Rendering…", "渲染中…").to_owned()),
+                        );
+                    });
+                }
+            })
+            .response
+            .rect;
+        if self.panels.narration
+            && let Some(player) = &self.session.lesson
+        {
+            let out = views::lesson::card(ui.ctx(), central, player, &self.session.spec, lang);
+            self.commands.extend(out.commands);
+            if out.fold {
+                self.panels.narration = false;
+            }
         }
         self.animate(ui.ctx());
         for cmd in std::mem::take(&mut self.commands) {
@@ -131,6 +226,7 @@ impl PipelensApp {
         self.session.ensure_captured();
     }
 
+    /// The stage's toolbar (one row) and its picture below it.
     fn main_view(
         &mut self,
         ui: &mut egui::Ui,
@@ -138,84 +234,113 @@ impl PipelensApp {
     ) {
         let sel = self.session.selection.clone();
         let lang = self.session.lang;
-        ui.horizontal_wrapped(|ui| {
-            ui.heading(sel.stage.name(lang));
-            ui.label(RichText::new(sel.stage.explanation(lang)).weak());
+        if !self.presenting() {
+            views::typeset::paragraph(
+                ui,
+                sel.stage.explanation(lang),
+                &views::typeset::Style::body(ui),
+            );
+        }
+        let space = sel.stage.space();
+        self.stage_toolbar(ui, capture);
+        let observer = sel.show_observer && (space.is_some() || sel.comparison.is_none());
+        if sel.comparison.is_some() && space.is_none() {
+            let c = self.compare_view.ui(ui, &self.session);
+            self.commands.extend(c);
+            self.picture
+                .extend(self.compare_view.picture.iter().copied());
+            return;
+        }
+        let (area, main, side) = if observer {
+            let (area, left, right) = split(
+                ui,
+                space
+                    .is_none()
+                    .then(|| capture.width() as f32 / capture.height() as f32),
+            );
+            (area, left, Some(right))
+        } else {
+            let area = ui.available_rect_before_wrap();
+            (area, area, None)
+        };
+        ui.scope_builder(egui::UiBuilder::new().max_rect(main), |ui| {
+            ui.set_clip_rect(main.intersect(ui.clip_rect()));
+            if let Some(space) = space {
+                let from = sel
+                    .stage
+                    .previous()
+                    .space()
+                    .filter(|_| sel.transition < 1.0 && sel.stage != Stage::Model);
+                let c = self.geometry_view.ui(
+                    ui,
+                    &self.session,
+                    capture,
+                    space,
+                    from,
+                    sel.transition,
+                    self.panels.matrix_card,
+                );
+                self.commands.extend(c);
+                self.picture.extend(self.geometry_view.picture);
+            } else {
+                let c = self.pixel_view.ui(ui, &self.session, capture);
+                self.commands.extend(c);
+                self.picture.extend(self.pixel_view.picture.iter().copied());
+            }
         });
-        if let Some(space) = sel.stage.space() {
-            ui.horizontal(|ui| {
+        if let Some(side) = side {
+            ui.scope_builder(egui::UiBuilder::new().max_rect(side), |ui| {
+                ui.set_clip_rect(side.intersect(ui.clip_rect()));
+                let c = self.observer_view.ui(ui, &self.session, capture);
+                self.commands.extend(c);
+                self.picture.extend(self.observer_view.picture);
+            });
+        }
+        ui.advance_cursor_after_rect(area);
+    }
+
+    /// One row: the stage's name (its explanation on hover) and the view's controls.
+    fn stage_toolbar(&mut self, ui: &mut egui::Ui, capture: &pipeline::capture::FrameCapture) {
+        let sel = self.session.selection.clone();
+        let lang = self.session.lang;
+        let space = sel.stage.space();
+        ui.horizontal_wrapped(|ui| {
+            style::chrome_style(ui);
+            let size = ui.style().text_styles[&egui::TextStyle::Heading].size;
+            ui.label(RichText::new(sel.stage.name(lang)).strong().size(size))
+                .on_hover_ui(|ui| {
+                    views::typeset::paragraph(
+                        ui,
+                        sel.stage.explanation(lang),
+                        &views::typeset::Style::body(ui),
+                    );
+                });
+            if space.is_none() {
+                let c = self
+                    .pixel_view
+                    .toolbar(ui, &sel, &self.session.buffers, lang);
+                self.commands.extend(c);
+                if sel.buffer == pipeline::buffers::BufferKind::Depth
+                    && let Some(c) = PixelView::depth_controls(ui, &sel, capture, lang)
+                {
+                    self.commands.push(c);
+                }
+                self.comparison_choice(ui);
+            }
+            if space.is_some() || sel.comparison.is_none() {
                 let mut obs = sel.show_observer;
                 if ui
                     .checkbox(&mut obs, lang.tr("Observer view", "观察者视图"))
+                    .on_hover_text(lang.tr(
+                        "The scene seen from outside, with the camera's frustum and the lights.",
+                        "从外部看场景，并显示相机的视锥和光源。",
+                    ))
                     .changed()
                 {
                     self.commands.push(Command::ToggleObserver);
                 }
-            });
-            let from = sel
-                .stage
-                .previous()
-                .space()
-                .filter(|_| sel.transition < 1.0 && sel.stage != Stage::Model);
-            if sel.show_observer {
-                let (area, left, right) = halves(ui);
-                ui.scope_builder(egui::UiBuilder::new().max_rect(left), |ui| {
-                    ui.set_clip_rect(left);
-                    let c = self.geometry_view.ui(
-                        ui,
-                        &self.session,
-                        capture,
-                        space,
-                        from,
-                        sel.transition,
-                    );
-                    self.commands.extend(c);
-                });
-                ui.scope_builder(egui::UiBuilder::new().max_rect(right), |ui| {
-                    ui.set_clip_rect(right);
-                    let c = self.observer_view.ui(ui, &self.session, capture);
-                    self.commands.extend(c);
-                });
-                ui.advance_cursor_after_rect(area);
-            } else {
-                let c =
-                    self.geometry_view
-                        .ui(ui, &self.session, capture, space, from, sel.transition);
-                self.commands.extend(c);
             }
-        } else {
-            let c = self
-                .pixel_view
-                .toolbar(ui, &sel, &self.session.buffers, lang);
-            self.commands.extend(c);
-            if sel.buffer == pipeline::buffers::BufferKind::Depth
-                && let Some(c) = PixelView::depth_controls(ui, &sel, capture, lang)
-            {
-                self.commands.push(c);
-            }
-            self.comparison_choice(ui);
-            if sel.comparison.is_some() {
-                let c = self.compare_view.ui(ui, &self.session);
-                self.commands.extend(c);
-            } else if sel.show_observer {
-                // The image beside the scene seen from outside (a lesson's "observer" layout).
-                let (area, left, right) = halves(ui);
-                ui.scope_builder(egui::UiBuilder::new().max_rect(left), |ui| {
-                    ui.set_clip_rect(left);
-                    let c = self.pixel_view.ui(ui, &self.session, capture);
-                    self.commands.extend(c);
-                });
-                ui.scope_builder(egui::UiBuilder::new().max_rect(right), |ui| {
-                    ui.set_clip_rect(right);
-                    let c = self.observer_view.ui(ui, &self.session, capture);
-                    self.commands.extend(c);
-                });
-                ui.advance_cursor_after_rect(area);
-            } else {
-                let c = self.pixel_view.ui(ui, &self.session, capture);
-                self.commands.extend(c);
-            }
-        }
+        });
     }
 
     /// Side by side: none, or one of the comparisons.
@@ -223,30 +348,19 @@ impl PipelensApp {
         let lang = self.session.lang;
         let current = self.session.selection.comparison;
         let mut choice = current;
-        ui.horizontal(|ui| {
-            egui::ComboBox::new("comparison", lang.tr("side by side", "并排对比"))
-                .selected_text(current.map_or(lang.tr("off", "关"), |c| c.name(lang)))
-                .show_ui(ui, |ui| {
-                    ui.selectable_value(&mut choice, None, lang.tr("off", "关"));
-                    for c in crate::vocabulary::Comparison::ALL {
-                        ui.selectable_value(&mut choice, Some(c), c.name(lang));
-                    }
-                })
-                .response
-                .on_hover_text(lang.tr(
-                    "Render the scene with different settings and show them side by side, with an intensity profile.",
-                    "用不同设置渲染场景并并排显示，附亮度剖面曲线。",
-                ));
-            if current.is_none() {
-                let mut obs = self.session.selection.show_observer;
-                if ui
-                    .checkbox(&mut obs, lang.tr("Observer view", "观察者视图"))
-                    .changed()
-                {
-                    self.commands.push(Command::ToggleObserver);
+        egui::ComboBox::new("comparison", lang.tr("side by side", "并排对比"))
+            .selected_text(current.map_or(lang.tr("off", "关"), |c| c.name(lang)))
+            .show_ui(ui, |ui| {
+                ui.selectable_value(&mut choice, None, lang.tr("off", "关"));
+                for c in crate::vocabulary::Comparison::ALL {
+                    ui.selectable_value(&mut choice, Some(c), c.name(lang));
                 }
-            }
-        });
+            })
+            .response
+            .on_hover_text(lang.tr(
+                "Render the scene with different settings and show them side by side, with an intensity profile.",
+                "用不同设置渲染场景并并排显示，附亮度剖面曲线。",
+            ));
         if choice != current {
             self.commands.push(Command::SetComparison(choice));
         }
@@ -271,16 +385,19 @@ impl PipelensApp {
     }
 }
 
-/// The space left in `ui` cut into two fixed halves with a gap: `(all, left, right)`.
-fn halves(ui: &egui::Ui) -> (egui::Rect, egui::Rect, egui::Rect) {
+/// The space left in `ui` cut in two beside each other with a gap: `(all, left, right)`. With
+/// the `aspect` of an image on the left, the left part is as wide as the image needs to fill the
+/// height, but no more than two thirds; the right part (the observer, which renders at any
+/// aspect) takes the rest.
+fn split(ui: &egui::Ui, aspect: Option<f32>) -> (egui::Rect, egui::Rect, egui::Rect) {
     let area = ui.available_rect_before_wrap();
     let gap = 8.0;
-    let half = (area.width() - gap) / 2.0;
-    let left = egui::Rect::from_min_size(area.min, egui::vec2(half, area.height()));
-    let right = egui::Rect::from_min_size(
-        area.min + egui::vec2(half + gap, 0.0),
-        egui::vec2(half, area.height()),
-    );
+    let width = area.width() - gap;
+    let left_width = aspect.map_or(width / 2.0, |a| {
+        (area.height() * a).clamp(width * 0.4, width * 0.64)
+    });
+    let left = egui::Rect::from_min_size(area.min, egui::vec2(left_width, area.height()));
+    let right = egui::Rect::from_min_max(egui::pos2(left.right() + gap, area.top()), area.max);
     (area, left, right)
 }
 

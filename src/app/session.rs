@@ -10,118 +10,12 @@ use pipeline::buffers::Capture;
 use pipeline::capture::FrameCapture;
 use pipeline::overlay::OverlayKind;
 
+pub use super::selection::{Command, DepthView, Selection};
 use super::worker::{Job, RenderWorker, Rendered};
 use crate::lesson::script::{Layout, Overlay};
 use crate::lesson::{Document, Lesson, SceneSpec};
 use crate::observer::{Orbit, default_orbit};
 use crate::vocabulary::{Comparison, Lang, Stage};
-
-/// What the user has selected.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Selection {
-    /// The stage in the main view.
-    pub stage: Stage,
-    /// The buffer a pixel stage shows.
-    pub buffer: BufferKind,
-    /// Overlays drawn over pixel views.
-    pub overlays: Vec<OverlayKind>,
-    /// Draw sample positions when zoomed in.
-    pub show_samples: bool,
-    /// Show the observer view beside the stage.
-    pub show_observer: bool,
-    /// The selected row of the vertex table.
-    pub vertex: Option<u32>,
-    /// The pixel being inspected (window coordinates, y up).
-    pub pixel: Option<(u32, u32)>,
-    /// Progress of the animated transition from the previous space (0 → 1).
-    pub transition: f32,
-    /// Settings compared side by side in the pixel stages, if any.
-    pub comparison: Option<Comparison>,
-    /// The profile line `[x0, y0, x1, y1]` in image pixels (y down), if one is drawn.
-    pub profile: Option<[f32; 4]>,
-    /// How the depth buffer is drawn.
-    pub depth_view: DepthView,
-}
-
-/// How the depth buffer is drawn: window depth or eye distance, over a range.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct DepthView {
-    /// Show the eye distance (linear) instead of the window depth z_w.
-    pub linear: bool,
-    /// Black at the first value, white at the second; `None`: the nearest and farthest present.
-    pub range: Option<[f32; 2]>,
-}
-
-impl Default for Selection {
-    fn default() -> Self {
-        Self {
-            stage: Stage::World,
-            buffer: BufferKind::Color,
-            overlays: vec![OverlayKind::TriangleEdges],
-            show_samples: true,
-            show_observer: true,
-            vertex: None,
-            pixel: None,
-            transition: 1.0,
-            comparison: None,
-            profile: None,
-            depth_view: DepthView::default(),
-        }
-    }
-}
-
-/// Everything a panel can ask for.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Command {
-    /// Show a stage.
-    SelectStage(Stage),
-    /// One stage on (→).
-    NextStage,
-    /// One stage back (←).
-    PreviousStage,
-    /// Show a buffer in the pixel view.
-    SelectBuffer(BufferKind),
-    /// Turn an overlay on or off.
-    ToggleOverlay(OverlayKind),
-    /// Turn sample points on or off.
-    ToggleSamples,
-    /// Show or hide the observer view.
-    ToggleObserver,
-    /// Select a vertex-table row (or none).
-    SelectVertex(Option<u32>),
-    /// Inspect a pixel (or none).
-    SelectPixel(Option<(u32, u32)>),
-    /// Replace the scene and settings (a parameter changed) and render again.
-    SetSpec(Box<SceneSpec>),
-    /// Move the observer's camera.
-    SetOrbit(Orbit),
-    /// Replay the transition into the current stage.
-    PlayTransition,
-    /// Switch the language.
-    SetLang(Lang),
-    /// Compare settings side by side (or stop).
-    SetComparison(Option<Comparison>),
-    /// Draw (or clear) the profile line.
-    SetProfile(Option<[f32; 4]>),
-    /// Change how the depth buffer is drawn.
-    SetDepthView(DepthView),
-    /// Go to step `k` of the lesson.
-    GoToStep(usize),
-    /// The lesson's next step (→, Page Down).
-    NextStep,
-    /// The lesson's previous step (←, Page Up).
-    PreviousStep,
-    /// Play or pause the step's animations (Space).
-    TogglePlay,
-    /// Time passes (seconds): animations move.
-    Tick(f32),
-    /// Show or hide the answer to the step's question.
-    ShowAnswer(bool),
-    /// The lesson file changed on disk and loaded: replace it, staying on the same step.
-    ReloadLesson(Box<Lesson>),
-    /// The file changed on disk and is broken (the message), or is fine again (`None`).
-    SetReloadError(Option<String>),
-}
 
 /// A lesson being played: which step, and how far into its animations.
 #[derive(Clone, Debug)]
@@ -166,6 +60,8 @@ pub struct Session {
     pub error: Option<String>,
     /// The observer's orbit.
     pub orbit: Orbit,
+    /// The width/height the observer is rendered at (its panel's).
+    pub observer_aspect: Option<f32>,
     /// What is selected.
     pub selection: Selection,
     /// The interface language.
@@ -183,6 +79,9 @@ pub struct Session {
     pub reload_error: Option<String>,
     /// Where the results come from: a worker thread, or (tests) this thread.
     worker: Option<RenderWorker>,
+    /// Counts the steps entered: a view that frames or opens something per step resets when it
+    /// changes.
+    pub step_entered: u64,
 }
 
 impl Session {
@@ -201,6 +100,7 @@ impl Session {
             times: None,
             error: None,
             orbit,
+            observer_aspect: None,
             selection: Selection::default(),
             lang: Lang::default(),
             generation: 0,
@@ -209,6 +109,7 @@ impl Session {
             lesson: None,
             reload_error: None,
             worker,
+            step_entered: 0,
         };
         s.request_render();
         s
@@ -258,8 +159,12 @@ impl Session {
             }
             Layout::Compare => sel.comparison = step.compare,
         }
+        // What a step does not say is predictable: a pixel stage shows its own buffer, and the
+        // pixel, vertex, focus and profile are the step's (none when it names none).
         if let Some(b) = step.buffer {
             sel.buffer = b;
+        } else if let Some(stage) = step.stage.filter(|s| s.space().is_none()) {
+            sel.buffer = stage.default_buffer();
         }
         if let Some(overlays) = &step.overlays {
             sel.overlays = overlays
@@ -272,17 +177,17 @@ impl Session {
                 .collect();
             sel.show_samples = overlays.contains(&Overlay::Samples);
         }
-        if step.pixel.is_some() {
-            sel.pixel = step.pixel;
-        }
-        if step.vertex.is_some() {
-            sel.vertex = step.vertex;
-        }
-        if step.profile.is_some() {
-            sel.profile = step.profile;
-        } else if sel.comparison.is_some() && sel.profile.is_none() {
-            sel.profile = Some(middle_row(&spec));
-        }
+        sel.pixel = step.pixel;
+        sel.vertex = step.vertex;
+        sel.focus.clone_from(&step.focus);
+        sel.depth_view = DepthView {
+            linear: false,
+            range: step.depth_range,
+        };
+        sel.profile = step
+            .profile
+            .or_else(|| (sel.comparison == Some(Comparison::Shading)).then(|| middle_row(&spec)));
+        self.step_entered += 1;
         self.spec = spec;
         self.request_render();
     }
@@ -360,7 +265,9 @@ impl Session {
                 .map(|c| c.variants(&spec.settings))
                 .unwrap_or_default(),
             spec,
-            observer: self.observer_shown().then(|| self.orbit.camera()),
+            observer: self
+                .observer_shown()
+                .then(|| (self.orbit.camera(), self.observer_aspect)),
         }
     }
 
@@ -500,6 +407,17 @@ impl Session {
                     self.request_render();
                 }
             }
+            Command::SetObserverAspect(a) => {
+                let changed = self
+                    .observer_aspect
+                    .is_none_or(|old| (old / a - 1.0).abs() > 0.05);
+                if changed {
+                    self.observer_aspect = Some(a);
+                    if self.observer_shown() {
+                        self.request_render();
+                    }
+                }
+            }
             Command::SetOrbit(o) => {
                 if o != self.orbit {
                     self.orbit = o;
@@ -511,7 +429,8 @@ impl Session {
             Command::SetComparison(c) => {
                 if sel.comparison != c {
                     sel.comparison = c;
-                    if sel.profile.is_none() {
+                    // The Mach band comparison is read along a line; the others on request.
+                    if sel.profile.is_none() && c == Some(Comparison::Shading) {
                         sel.profile = Some(middle_row(&self.spec));
                     }
                     self.request_render();
@@ -549,4 +468,57 @@ pub fn source_name(path: Option<&PathBuf>) -> String {
         || crate::lesson::DEFAULT_LESSON_NAME.to_owned(),
         |p| p.display().to_string(),
     )
+}
+
+/// What the stage and the step teach, that the inspector opens on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Teaching {
+    /// The model matrix of object `k` (an index into the capture's objects).
+    Model(usize),
+    /// The matrix stack of the figures.
+    Stack,
+    /// The view matrix.
+    View,
+    /// The projection, in both courses' forms.
+    Projection,
+    /// The viewport transform.
+    Viewport,
+    /// The inspected pixel.
+    Pixel,
+}
+
+impl Session {
+    /// What the inspector should open on: the matrix the geometry stage applies (the model
+    /// matrix of the object in focus, or the figures' matrix stack; V; P; the viewport), and the
+    /// pixel on the pixel stages.
+    #[must_use]
+    pub fn teaching(&self) -> Teaching {
+        let sel = &self.selection;
+        let focus = sel.focus.as_deref().unwrap_or_default();
+        match sel.stage {
+            Stage::Model | Stage::World => {
+                let figures = &self.spec.scene.figures;
+                let focus_is_figure = focus.iter().any(|f| figures.iter().any(|g| &g.name == f));
+                if !figures.is_empty()
+                    && (focus.is_empty() || focus_is_figure)
+                    && sel.vertex.is_none()
+                {
+                    return Teaching::Stack;
+                }
+                let objects = self.capture.as_ref().map(|c| &c.objects);
+                let by_focus = focus
+                    .first()
+                    .and_then(|f| objects?.iter().position(|o| &o.name == f));
+                let by_vertex = sel.vertex.and_then(|v| {
+                    let c = self.capture.as_ref()?;
+                    Some(c.vertices.get(v as usize)?.object as usize)
+                });
+                Teaching::Model(by_focus.or(by_vertex).unwrap_or(0))
+            }
+            Stage::View => Teaching::View,
+            Stage::Clip | Stage::Ndc => Teaching::Projection,
+            Stage::Screen => Teaching::Viewport,
+            _ => Teaching::Pixel,
+        }
+    }
 }

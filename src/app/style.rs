@@ -29,26 +29,42 @@ pub fn setup_context(ctx: &egui::Context) {
     apply_style(ctx, false);
 }
 
-/// Text sizes and contrast: normal, or classroom (large type, high contrast, for a projector).
-pub fn apply_style(ctx: &egui::Context, classroom: bool) {
+/// The text sizes at `scale` (1: normal, 1.6: classroom).
+#[must_use]
+pub fn text_styles(scale: f32) -> std::collections::BTreeMap<egui::TextStyle, egui::FontId> {
     use egui::{FontId, TextStyle};
-    let scale = if classroom { 1.35 } else { 1.0 };
+    [
+        (TextStyle::Heading, FontId::proportional(21.0 * scale)),
+        (TextStyle::Body, FontId::proportional(15.0 * scale)),
+        (TextStyle::Button, FontId::proportional(15.0 * scale)),
+        (TextStyle::Small, FontId::proportional(12.5 * scale)),
+        (TextStyle::Monospace, FontId::monospace(14.0 * scale)),
+    ]
+    .into()
+}
+
+/// The window's chrome keeps its normal size in classroom mode: the type grows where students
+/// read (the picture, the narration, the inspector), and the picture never shrinks.
+pub fn chrome_style(ui: &mut egui::Ui) {
+    ui.style_mut().text_styles = text_styles(1.0);
+}
+
+/// Text sizes and contrast: normal, or classroom (large type and high contrast for a projector:
+/// body text 24 points, as slides use, white on black). Secondary text keeps a contrast of at
+/// least 7:1 against the panels (grey 190 on grey 27 in the dark theme).
+pub fn apply_style(ctx: &egui::Context, classroom: bool) {
+    let scale = if classroom { 1.6 } else { 1.0 };
     ctx.set_theme(egui::Theme::Dark);
     ctx.global_style_mut(|style| {
-        style.text_styles = [
-            (TextStyle::Heading, FontId::proportional(22.0 * scale)),
-            (TextStyle::Body, FontId::proportional(15.0 * scale)),
-            (TextStyle::Button, FontId::proportional(15.0 * scale)),
-            (TextStyle::Small, FontId::proportional(12.0 * scale)),
-            (TextStyle::Monospace, FontId::monospace(13.5 * scale)),
-        ]
-        .into();
+        style.text_styles = text_styles(scale);
         style.visuals = egui::Visuals::dark();
+        style.visuals.weak_text_color = Some(egui::Color32::from_gray(190));
+        style.spacing.slider_width = 220.0 * scale;
         if classroom {
             style.visuals.override_text_color = Some(egui::Color32::WHITE);
+            style.visuals.weak_text_color = Some(egui::Color32::from_gray(225));
             style.visuals.panel_fill = egui::Color32::BLACK;
             style.visuals.window_fill = egui::Color32::BLACK;
-            style.visuals.widgets.noninteractive.bg_stroke.width = 1.5;
             style.visuals.selection.bg_fill = egui::Color32::from_rgb(0, 90, 200);
         }
     });

@@ -20,8 +20,9 @@ pub struct Job {
     pub generation: u64,
     /// The scene and settings.
     pub spec: SceneSpec,
-    /// The observer's camera (the same scene seen from outside), when the view shows it.
-    pub observer: Option<Camera>,
+    /// The observer's camera (the same scene seen from outside) and the width/height of its
+    /// panel, when the view shows it.
+    pub observer: Option<(Camera, Option<f32>)>,
     /// Settings to render as well, for a side-by-side comparison, with their labels.
     pub variants: Vec<(String, RenderSettings)>,
 }
@@ -83,8 +84,9 @@ impl Job {
             pipeline::render_reusing(&self.spec.scene, &self.spec.settings, spares.capture.take())
                 .map_err(|e| e.to_string())
                 .map(|(capture, times)| {
-                    let observer = self.observer.and_then(|camera| {
-                        render_observer(&self.spec, camera, spares.observer.take()).map(Arc::new)
+                    let observer = self.observer.and_then(|(camera, aspect)| {
+                        render_observer(&self.spec, camera, aspect, spares.observer.take())
+                            .map(Arc::new)
                     });
                     let variants = self
                         .variants

@@ -21,6 +21,8 @@ pub use diagnostic::{Diagnostic, Diagnostics};
 use pipeline::scene::Scene;
 use pipeline::settings::RenderSettings;
 
+use crate::vocabulary::{Lang, Text};
+
 /// The scene built into pipelens, used when no file is given.
 pub const DEFAULT_SCENE: &str = include_str!("../../assets/scenes/default.toml");
 /// The name under which the built-in scene appears in messages.
@@ -33,6 +35,41 @@ pub struct SceneSpec {
     pub scene: Scene,
     /// How it is drawn.
     pub settings: RenderSettings,
+    /// The names objects and figures are shown under in each language (`label = { en, zh }`),
+    /// by their `name`.
+    pub labels: std::collections::BTreeMap<String, Text>,
+}
+
+impl SceneSpec {
+    /// A scene with its settings, no labels.
+    #[must_use]
+    pub fn new(scene: Scene, settings: RenderSettings) -> Self {
+        Self {
+            scene,
+            settings,
+            labels: std::collections::BTreeMap::new(),
+        }
+    }
+
+    /// How an object or figure (or one of a figure's parts, `figure: part`) is named in `lang`:
+    /// its label, else the built-in words for its name, else its name.
+    #[must_use]
+    pub fn label(&self, name: &str, lang: Lang) -> String {
+        if let Some(t) = self.labels.get(name) {
+            return t.get(lang).to_owned();
+        }
+        if let Some((figure, part)) = name.split_once(": ") {
+            return format!(
+                "{}: {}",
+                self.label(figure, lang),
+                crate::vocabulary::part_name(part, lang)
+            );
+        }
+        if let Some(rest) = name.strip_prefix("shadow of ") {
+            return crate::vocabulary::shadow_of(&self.label(rest, lang), lang);
+        }
+        crate::vocabulary::part_name(name, lang).to_owned()
+    }
 }
 
 /// The largest scene or lesson file read (a larger one is surely a mistake).

@@ -45,6 +45,8 @@ pub struct RawScene {
 pub struct RawFigure {
     pub kind: Spanned<String>,
     pub name: Option<String>,
+    /// The name shown in each language.
+    pub label: Option<Spanned<RawText>>,
     pub translate: Option<RawVec3>,
     pub base: Option<Spanned<f64>>,
     pub lower: Option<Spanned<f64>>,
@@ -146,6 +148,8 @@ pub struct RawRender {
 #[serde(deny_unknown_fields)]
 pub struct RawObject {
     pub name: Option<Spanned<String>>,
+    /// The name shown in each language, `{ en = "floor", zh = "地面" }`.
+    pub label: Option<Spanned<RawText>>,
     /// A built-in name (`"cube"`), an OBJ path (`"models/bunny.obj"`), or a table
     /// `{ builtin = "uv_sphere", segments = 64, rings = 32 }` / `{ obj = "path.obj" }`.
     pub mesh: Spanned<RawMesh>,
@@ -302,6 +306,10 @@ pub struct RawStep {
     pub pixel: Option<Spanned<[i64; 2]>>,
     pub vertex: Option<Spanned<i64>>,
     pub profile: Option<Spanned<[f64; 4]>>,
+    /// The objects or figures the geometry views frame.
+    pub focus: Option<Vec<Spanned<String>>>,
+    /// The depth buffer's grey ramp: black at the first window depth, white at the second.
+    pub depth_range: Option<Spanned<[f64; 2]>>,
     pub question: Option<Spanned<RawText>>,
     pub answer: Option<Spanned<RawText>>,
 }

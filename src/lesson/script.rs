@@ -8,7 +8,7 @@ use pipeline::buffers::BufferKind;
 use toml::Spanned;
 
 use super::param::{self, Animation, Easing, Repeat, Value};
-use super::raw::{RawAnimate, RawLessonFile, RawStep, RawText, RawValue};
+use super::raw::{RawAnimate, RawLessonFile, RawStep, RawValue};
 use super::validate::Checker;
 use super::{Diagnostics, SceneSpec};
 use crate::vocabulary::{Comparison, Lang, Stage, Text};
@@ -62,6 +62,11 @@ pub struct Step {
     pub vertex: Option<u32>,
     /// The profile line `[x0, y0, x1, y1]` (image pixels, y down).
     pub profile: Option<[f32; 4]>,
+    /// The objects and figures the geometry views frame (`None`: every object).
+    pub focus: Option<Vec<String>>,
+    /// The depth buffer's grey ramp `[black, white]` in window depth (`None`: the nearest and
+    /// farthest depth present).
+    pub depth_range: Option<[f32; 2]>,
     /// A question for self-study.
     pub question: Option<Text>,
     /// Its answer.
@@ -187,21 +192,6 @@ type Targets = (Option<(u32, u32)>, Option<u32>, Option<[f32; 4]>);
 /// The lesson's own checks, on the scene's checker: the steps are checked against the scene as
 /// the steps before them left it.
 impl Checker<'_> {
-    /// Text in both languages, neither empty.
-    fn text_of(&mut self, key: &str, t: &Spanned<RawText>) -> Text {
-        let r = t.get_ref();
-        if r.en.trim().is_empty() || r.zh.trim().is_empty() {
-            self.error(
-                t.span(),
-                format!("`{key}` needs both `en` and `zh` text, neither empty"),
-            );
-        }
-        Text {
-            en: r.en.trim().to_owned(),
-            zh: r.zh.trim().to_owned(),
-        }
-    }
-
     fn value(&mut self, v: &Spanned<RawValue>) -> Option<Value> {
         Some(match v.get_ref() {
             RawValue::Bool(b) => Value::Bool(*b),
@@ -241,6 +231,19 @@ impl Checker<'_> {
             .filter_map(|a| self.animation(a, spec))
             .collect();
         let (pixel, vertex, profile) = self.targets(r, spec);
+        let focus = r.focus.as_ref().map(|names| self.focus(names, spec));
+        let depth_range = r.depth_range.as_ref().and_then(|d| {
+            let [a, b] = *d.get_ref();
+            if (0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b) && a < b {
+                Some([a as f32, b as f32])
+            } else {
+                self.error(
+                    d.span(),
+                    format!("`depth_range` = [black, white] must be window depths with 0 ≤ black < white ≤ 1, got [{a}, {b}]"),
+                );
+                None
+            }
+        });
         Step {
             title,
             narration,
@@ -254,6 +257,8 @@ impl Checker<'_> {
             pixel,
             vertex,
             profile,
+            focus,
+            depth_range,
             question,
             answer,
         }
@@ -385,6 +390,45 @@ impl Checker<'_> {
             }
         });
         (pixel, vertex, profile)
+    }
+
+    /// The names a step frames: each an object or a figure of the scene as the step leaves it.
+    fn focus(&mut self, names: &[Spanned<String>], spec: &SceneSpec) -> Vec<String> {
+        let known: Vec<&str> = spec
+            .scene
+            .objects
+            .iter()
+            .map(|o| o.name.as_str())
+            .chain(spec.scene.figures.iter().map(|f| f.name.as_str()))
+            .collect();
+        names
+            .iter()
+            .filter_map(|n| {
+                let name = n.get_ref();
+                if known.contains(&name.as_str()) {
+                    return Some(name.clone());
+                }
+                let hint = known
+                    .iter()
+                    .map(|k| (strsim::jaro_winkler(name, k), *k))
+                    .filter(|(sim, _)| *sim >= 0.8)
+                    .max_by(|a, b| a.0.total_cmp(&b.0))
+                    .map(|(_, k)| format!("; did you mean \"{k}\"?"))
+                    .unwrap_or_default();
+                self.error(
+                    n.span(),
+                    format!(
+                        "`focus` names objects or figures of the scene ({}), got \"{name}\"{hint}",
+                        known
+                            .iter()
+                            .map(|k| format!("\"{k}\""))
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    ),
+                );
+                None
+            })
+            .collect()
     }
 
     fn animation(&mut self, a: &Spanned<RawAnimate>, spec: &SceneSpec) -> Option<Animation> {

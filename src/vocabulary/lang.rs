@@ -22,6 +22,15 @@ impl Lang {
         }
     }
 
+    /// The text in this language, owned.
+    #[must_use]
+    pub fn tr_owned(self, en: &str, zh: &str) -> String {
+        match self {
+            Self::En => en.to_owned(),
+            Self::Zh => zh.to_owned(),
+        }
+    }
+
     /// The other language.
     #[must_use]
     pub fn other(self) -> Self {

@@ -5,13 +5,18 @@
 
 mod buffers;
 mod comparison;
+mod explain;
 mod formulas;
 mod lang;
+mod names;
+pub mod notation;
 mod numbers;
 mod stage;
 
 pub use buffers::buffer_name;
 pub use comparison::{Comparison, variant_label};
+pub use explain::{remark, section_name};
 pub use lang::{Lang, Text};
+pub use names::{part_name, shadow_of};
 pub use numbers::{num, vec3, vec4};
 pub use stage::{Space, Stage};

@@ -1,54 +1,86 @@
 //! Settings side by side — flat | Gouraud | Phong (the Mach band comparison), affine |
-//! perspective-correct, 1× | 4× — with an intensity profile along a line the user drags across
-//! any of the images, plotted for all of them.
+//! perspective-correct, 1× | 4× MSAA | 4× SSAA, the four texture filters — using the whole width:
+//! the images in the grid that makes them largest, and under them the intensity profile along a
+//! line the user drags across any of them, plotted for all of them in the images' order.
 
-use egui::{Color32, Pos2, Rect, RichText, Sense, Stroke, TextureOptions, Ui, Vec2};
+use egui::{Color32, Pos2, Rect, Sense, Stroke, TextureOptions, Ui, Vec2};
 use egui_plot::{Legend, Line, Plot};
 
 use super::fit_rect;
 use crate::app::session::{Command, Session};
 use crate::vocabulary::variant_label;
 
-/// Textures of the compared images and the line being dragged.
+/// Textures of the compared images, the line being dragged, where the picture was drawn.
 #[derive(Default)]
 pub struct CompareView {
     textures: Vec<super::BufferTexture>,
     drag_start: Option<[f32; 2]>,
+    /// The images' and the plot's rects this frame.
+    pub picture: Vec<Rect>,
 }
 
-/// Colours of the compared settings' curves.
-const CURVES: [Color32; 4] = [
+/// Colours of the compared settings' curves (and their captions).
+pub const CURVES: [Color32; 4] = [
     Color32::from_rgb(255, 170, 60),
     Color32::from_rgb(90, 200, 255),
     Color32::from_rgb(150, 255, 120),
     Color32::from_rgb(230, 120, 255),
 ];
 
+/// The number of columns that makes `n` images of `aspect` largest in `area`.
+fn best_columns(n: usize, aspect: f32, area: Vec2) -> usize {
+    (1..=n)
+        .max_by(|&a, &b| {
+            let size = |cols: usize| {
+                let rows = n.div_ceil(cols) as f32;
+                let (w, h) = (area.x / cols as f32, area.y / rows);
+                let h = h.min(w / aspect);
+                h * h * aspect
+            };
+            size(a).total_cmp(&size(b))
+        })
+        .unwrap_or(1)
+}
+
 impl CompareView {
-    /// Draws the images in a row and the profile plot below them.
+    /// Draws the images and the profile plot below them.
     pub fn ui(&mut self, ui: &mut Ui, session: &Session) -> Vec<Command> {
         let lang = session.lang;
         let mut cmds = Vec::new();
+        self.picture.clear();
         let variants = &session.variants;
         if variants.is_empty() {
             ui.label(lang.tr("Rendering the comparison…", "正在渲染对比…"));
             return cmds;
         }
-        ui.label(
-            RichText::new(lang.tr(
-                "Drag across any image to draw a profile line; the plot shows the intensity along it for each.",
-                "在任一图像上拖动以画出剖面线；下方曲线显示每幅图像沿该线的亮度。",
-            ))
-            .weak(),
-        );
         let area = ui.available_rect_before_wrap();
-        let images_h = area.height() * 0.62;
+        let with_plot = session.selection.profile.is_some();
+        let aspect = variants[0].1.width() as f32 / variants[0].1.height() as f32;
+        let caption_size = ui.style().text_styles[&egui::TextStyle::Body].size * 1.1;
         let gap = 6.0;
-        let w = (area.width() - gap * (variants.len() as f32 - 1.0)) / variants.len() as f32;
+        // The images in the grid that makes them largest (in at most 70 % of the height when a
+        // profile is plotted); the plot takes all the height they leave.
+        let room = Vec2::new(
+            area.width(),
+            area.height() * if with_plot { 0.7 } else { 1.0 },
+        );
+        let cols = best_columns(variants.len(), aspect, room);
+        let rows = variants.len().div_ceil(cols);
+        let cell_w = (area.width() - gap * (cols as f32 - 1.0)) / cols as f32;
+        let cell_h = ((room.y - gap * (rows as f32 - 1.0)) / rows as f32).min(cell_w / aspect);
+        let cell = Vec2::new(cell_w, cell_h);
+        let images = Rect::from_min_size(
+            area.min,
+            Vec2::new(
+                area.width(),
+                cell_h * rows as f32 + gap * (rows as f32 - 1.0),
+            ),
+        );
         for (i, (name, capture)) in variants.iter().enumerate() {
+            let (c, r) = (i % cols, i / cols);
             let cell = Rect::from_min_size(
-                area.min + Vec2::new(i as f32 * (w + gap), 0.0),
-                Vec2::new(w, images_h),
+                images.min + Vec2::new(c as f32 * (cell.x + gap), r as f32 * (cell.y + gap)),
+                cell,
             );
             if self.textures.len() <= i {
                 self.textures.resize_with(i + 1, Default::default);
@@ -61,32 +93,28 @@ impl CompareView {
                 capture,
                 TextureOptions::NEAREST,
             );
-            let title_h = 22.0;
-            let image = fit_rect(
-                Rect::from_min_max(cell.min + Vec2::new(0.0, title_h), cell.max),
-                capture.width() as f32 / capture.height() as f32,
-            );
+            let image = fit_rect(cell, capture.width() as f32 / capture.height() as f32);
+            self.picture.push(image);
             let response = ui.interact(image, ui.scope_id().with(("compare", i)), Sense::drag());
-            let accessible = format!(
-                "{}: {}",
-                lang.tr("compared image", "对比图像"),
-                variant_label(name, lang)
-            );
+            let caption = variant_label(name, lang);
+            let accessible = format!("{}: {caption}", lang.tr("compared image", "对比图像"));
             response
                 .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &accessible));
             let painter = ui.painter_at(cell);
-            painter.text(
-                cell.min,
-                egui::Align2::LEFT_TOP,
-                variant_label(name, lang),
-                egui::FontId::proportional(16.0),
-                CURVES[i % CURVES.len()],
-            );
             painter.image(
                 texture.id(),
                 image,
                 Rect::from_min_max(Pos2::ZERO, Pos2::new(1.0, 1.0)),
                 Color32::WHITE,
+            );
+            // The caption over the image's top-left corner, in the colour of its curve.
+            super::label_with_background(
+                &painter,
+                image.left_top() + Vec2::splat(6.0),
+                egui::Align2::LEFT_TOP,
+                &caption,
+                &egui::FontId::proportional(caption_size),
+                CURVES[i % CURVES.len()],
             );
             let scale = capture.width() as f32 / image.width();
             let to_image = |p: Pos2| [(p.x - image.min.x) * scale, (p.y - image.min.y) * scale];
@@ -105,15 +133,18 @@ impl CompareView {
             if let Some(l) = session.selection.profile {
                 painter.line_segment(
                     [to_screen([l[0], l[1]]), to_screen([l[2], l[3]])],
-                    Stroke::new(2.0, Color32::YELLOW),
+                    Stroke::new(2.5, Color32::YELLOW),
                 );
             }
         }
-        ui.advance_cursor_after_rect(Rect::from_min_size(
-            area.min,
-            Vec2::new(area.width(), images_h + gap),
-        ));
-        self.plot(ui, session);
+        ui.advance_cursor_after_rect(images);
+        if with_plot {
+            let plot = Rect::from_min_max(Pos2::new(area.left(), images.bottom() + gap), area.max);
+            self.picture.push(plot);
+            ui.scope_builder(egui::UiBuilder::new().max_rect(plot), |ui| {
+                self.plot(ui, session)
+            });
+        }
         cmds
     }
 
@@ -123,9 +154,15 @@ impl CompareView {
             return;
         };
         Plot::new("profile")
-            .legend(Legend::default())
-            .x_axis_label(lang.tr("position along the line (pixels)", "沿线位置（像素）"))
-            .y_axis_label(lang.tr("intensity (Rec. 709 luminance)", "亮度（Rec. 709 亮度）"))
+            .legend(Legend::default().follow_insertion_order(true))
+            .x_axis_label(lang.tr(
+                "position along the yellow line (pixels)",
+                "沿黄线的位置（像素）",
+            ))
+            .y_axis_label(lang.tr("intensity (Rec. 709 luminance)", "亮度（Rec. 709）"))
+            .y_axis_min_width(40.0)
+            .include_y(0.0)
+            .allow_scroll(false)
             .show(ui, |plot| {
                 for (i, (name, capture)) in session.variants.iter().enumerate() {
                     let samples = capture.profile([line[0], line[1]], [line[2], line[3]]);

@@ -1,48 +1,106 @@
-//! The lesson panel: the step's title and narration in the chosen language, the step controls
-//! (←/→, Space), the list of steps, and the self-study question with its answer.
+//! The lesson's narration, in a card over the picture: the step's title, the narration with its
+//! formulas typeset, what is moving, and the self-study question with its answer. It can be
+//! folded away (N) and brought back.
 
-use egui::text::LayoutJob;
-use egui::{Color32, FontId, RichText, TextFormat, Ui};
+use egui::{Align2, Color32, Frame, RichText, Ui, Vec2};
 
+use super::typeset::{self, Style};
 use crate::app::session::{Command, LessonPlayer};
+use crate::lesson::{SceneSpec, param};
 use crate::vocabulary::Lang;
 
-/// Draws the lesson panel; returns what the user asked for.
-pub fn ui(ui: &mut Ui, player: &LessonPlayer, lang: Lang) -> Vec<Command> {
-    let mut out = Vec::new();
-    let lesson = &player.lesson;
+/// What the card asked for.
+pub struct CardOutput {
+    /// Commands (show the answer, …).
+    pub commands: Vec<Command>,
+    /// The card's fold button was pressed.
+    pub fold: bool,
+}
+
+/// Draws the narration card at the bottom-left of `over` (the picture's area).
+pub fn card(
+    ctx: &egui::Context,
+    over: egui::Rect,
+    player: &LessonPlayer,
+    spec: &SceneSpec,
+    lang: Lang,
+) -> CardOutput {
+    let mut out = CardOutput {
+        commands: Vec::new(),
+        fold: false,
+    };
+    let width = (over.width() * 0.42).clamp(320.0_f32.min(over.width() - 24.0), 760.0);
+    egui::Area::new(egui::Id::unique("narration-card"))
+        .order(egui::Order::Foreground)
+        .pivot(Align2::LEFT_BOTTOM)
+        .fixed_pos(over.left_bottom() + Vec2::new(12.0, -12.0))
+        .show(ctx, |ui| {
+            Frame::new()
+                .fill(Color32::from_black_alpha(215))
+                .corner_radius(8.0)
+                .inner_margin(12.0)
+                .stroke(egui::Stroke::new(1.0, Color32::from_gray(90)))
+                .show(ui, |ui| {
+                    ui.set_width(width);
+                    ui.set_max_height(over.height() * 0.55);
+                    contents(ui, player, spec, lang, &mut out);
+                });
+        });
+    out
+}
+
+fn contents(
+    ui: &mut Ui,
+    player: &LessonPlayer,
+    spec: &SceneSpec,
+    lang: Lang,
+    out: &mut CardOutput,
+) {
     let step = player.current();
-    ui.label(
-        RichText::new(lesson.title.get(lang))
-            .strong()
-            .size(ui.style().text_styles[&egui::TextStyle::Body].size * 1.1),
-    )
-    .on_hover_text(lesson.summary.get(lang));
-    controls(ui, player, lang, &mut out);
-    ui.separator();
+    let style = Style {
+        color: Color32::from_gray(245),
+        ..Style::body(ui)
+    };
+    ui.horizontal(|ui| {
+        ui.label(
+            RichText::new(format!("{}. {}", player.step + 1, step.title.get(lang)))
+                .strong()
+                .size(style.size * 1.25)
+                .color(Color32::WHITE),
+        );
+        ui.with_layout(egui::Layout::right_to_left(egui::Align::Min), |ui| {
+            if ui
+                .small_button("—")
+                .on_hover_text(lang.tr("Fold the narration away (N)", "收起讲解（N）"))
+                .clicked()
+            {
+                out.fold = true;
+            }
+        });
+    });
     egui::ScrollArea::vertical()
-        .id_salt("lesson")
-        .max_height(ui.available_height() * 0.62)
+        .id_salt("narration")
+        .auto_shrink([false, true])
         .show(ui, |ui| {
-            ui.heading(step.title.get(lang));
-            narration(ui, step.narration.get(lang));
+            narration(ui, step.narration.get(lang), &style);
             for a in &step.animate {
-                ui.label(
-                    RichText::new(format!(
-                        "{} {}: {} → {}",
-                        lang.tr("animating", "动画"),
-                        a.param,
-                        a.from,
-                        a.to
-                    ))
-                    .weak()
-                    .small(),
+                let line = format!(
+                    "{} {}: {} → {}",
+                    lang.tr("▶ moving", "▶ 动画"),
+                    param::describe(spec, &a.param, lang),
+                    a.from,
+                    a.to
                 );
+                typeset::paragraph(ui, &line, &style.sized(style.size * 0.85));
             }
             if let Some(q) = &step.question {
-                ui.separator();
-                ui.label(RichText::new(lang.tr("Question", "思考题")).strong());
-                narration(ui, q.get(lang));
+                ui.add_space(6.0);
+                ui.label(
+                    RichText::new(lang.tr("Question", "思考题"))
+                        .strong()
+                        .color(Color32::WHITE),
+                );
+                narration(ui, q.get(lang), &style);
                 if let Some(a) = &step.answer {
                     let shown = player.show_answer;
                     let label = if shown {
@@ -51,114 +109,50 @@ pub fn ui(ui: &mut Ui, player: &LessonPlayer, lang: Lang) -> Vec<Command> {
                         lang.tr("Show the answer", "显示答案")
                     };
                     if ui.button(label).clicked() {
-                        out.push(Command::ShowAnswer(!shown));
+                        out.commands.push(Command::ShowAnswer(!shown));
                     }
                     if shown {
-                        narration(ui, a.get(lang));
+                        narration(ui, a.get(lang), &style);
                     }
                 }
             }
         });
-    ui.separator();
-    egui::CollapsingHeader::new(lang.tr("All steps", "全部步骤"))
-        .id_salt("steps")
-        .show(ui, |ui| {
-            for (k, s) in lesson.steps.iter().enumerate() {
-                if ui
-                    .selectable_label(
-                        k == player.step,
-                        format!("{}. {}", k + 1, s.title.get(lang)),
-                    )
-                    .clicked()
-                {
-                    out.push(Command::GoToStep(k));
-                }
-            }
-        });
-    out
 }
 
-/// ◀ Step k / n ▶ and Play/Pause.
-fn controls(ui: &mut Ui, player: &LessonPlayer, lang: Lang, out: &mut Vec<Command>) {
-    let (step, n) = (player.current(), player.lesson.steps.len());
-    ui.horizontal(|ui| {
-        if ui
-            .add_enabled(player.step > 0, egui::Button::new("◀"))
-            .on_hover_text(lang.tr("Previous step (← or Page Up)", "上一步（← 或 Page Up）"))
-            .clicked()
-        {
-            out.push(Command::PreviousStep);
-        }
-        ui.label(format!(
-            "{} {} / {n}",
-            lang.tr("Step", "步骤"),
-            player.step + 1
-        ));
-        if ui
-            .add_enabled(player.step + 1 < n, egui::Button::new("▶"))
-            .on_hover_text(lang.tr("Next step (→ or Page Down)", "下一步（→ 或 Page Down）"))
-            .clicked()
-        {
-            out.push(Command::NextStep);
-        }
-        if !step.animate.is_empty() {
-            let label = if player.playing {
-                lang.tr("‖ Pause", "‖ 暂停")
-            } else {
-                lang.tr("▶ Play", "▶ 播放")
-            };
-            if ui
-                .button(label)
-                .on_hover_text(lang.tr(
-                    "Play or pause the animation (Space)",
-                    "播放或暂停动画（空格）",
-                ))
-                .clicked()
-            {
-                out.push(Command::TogglePlay);
-            }
-        }
-    });
-}
-
-/// Simple markdown: paragraphs split by blank lines, lines starting `- ` as bullets, and
-/// `**bold**` spans (the formulas) drawn strong and coloured.
-pub fn narration(ui: &mut Ui, text: &str) {
-    let body = ui.style().text_styles[&egui::TextStyle::Body].clone();
-    let plain = ui.visuals().text_color();
-    let accent = Color32::from_rgb(255, 214, 120);
+/// Simple markdown: paragraphs split by blank lines, lines starting `- ` as bullets, `**…**`
+/// formulas typeset and highlighted, `` `code` `` as written.
+pub fn narration(ui: &mut Ui, text: &str, style: &Style) {
     for paragraph in text.split("\n\n") {
         let paragraph = paragraph.trim();
         if paragraph.is_empty() {
             continue;
         }
-        let mut job = LayoutJob::default();
-        for (i, line) in paragraph.lines().enumerate() {
-            let line = line.trim();
-            let (line, sep) = match line.strip_prefix("- ") {
-                Some(rest) => (rest, if i == 0 { "• " } else { "\n• " }),
-                None => (line, if i == 0 { "" } else { " " }),
-            };
-            job.append(sep, 0.0, format(&body, plain));
-            for (k, part) in line.split("**").enumerate() {
-                let f = if k % 2 == 1 {
-                    format(&body, accent)
-                } else {
-                    format(&body, plain)
-                };
-                job.append(part, 0.0, f);
+        let lines: Vec<&str> = paragraph.lines().map(str::trim).collect();
+        if lines.iter().all(|l| l.starts_with("- ")) {
+            for l in lines {
+                ui.horizontal_top(|ui| {
+                    ui.label(RichText::new("•").size(style.size).color(style.color));
+                    typeset::paragraph(ui, &l[2..], style);
+                });
             }
+        } else {
+            // Lines of a paragraph join with a space (none between Chinese characters).
+            let mut joined = String::new();
+            for l in lines {
+                let cjk_join = joined
+                    .chars()
+                    .last()
+                    .is_some_and(crate::vocabulary::notation::is_cjk)
+                    && l.chars()
+                        .next()
+                        .is_some_and(crate::vocabulary::notation::is_cjk);
+                if !joined.is_empty() && !cjk_join {
+                    joined.push(' ');
+                }
+                joined.push_str(l);
+            }
+            typeset::paragraph(ui, &joined, style);
         }
-        job.wrap.max_width = ui.available_width();
-        ui.label(job);
-        ui.add_space(4.0);
-    }
-}
-
-fn format(font: &FontId, color: Color32) -> TextFormat {
-    TextFormat {
-        font_id: font.clone(),
-        color,
-        ..TextFormat::default()
+        ui.add_space(style.size * 0.35);
     }
 }

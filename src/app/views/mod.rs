@@ -9,6 +9,7 @@ pub mod navigator;
 pub mod observer;
 pub mod params;
 pub mod pixels;
+pub mod typeset;
 
 use egui::{Color32, Pos2, Rect, RichText, Ui};
 use glam::{Mat4, Vec3, Vec4};
@@ -33,6 +34,8 @@ pub mod palette {
     pub const FAR: Color32 = Color32::from_rgb(255, 140, 40);
     /// Clipped geometry.
     pub const CLIPPED: Color32 = Color32::from_rgb(255, 120, 200);
+    /// Lights.
+    pub const LIGHT: Color32 = Color32::from_rgb(255, 240, 120);
 }
 
 /// A camera for drawing 3-D lines with egui: points go through `m = P·V` and the viewport of
@@ -42,6 +45,11 @@ pub struct Projector {
     pub m: Mat4,
     /// Where on screen.
     pub rect: Rect,
+    /// Magnification about the rect's centre, then a shift (screen points): zooming and
+    /// panning the picture as a photograph.
+    pub zoom: f32,
+    /// The shift after the magnification.
+    pub pan: egui::Vec2,
 }
 
 impl Projector {
@@ -53,10 +61,11 @@ impl Projector {
             return None;
         }
         let n = c.truncate() / c.w;
-        Some(Pos2::new(
+        let q = Pos2::new(
             self.rect.left() + (n.x + 1.0) / 2.0 * self.rect.width(),
             self.rect.top() + (1.0 - n.y) / 2.0 * self.rect.height(),
-        ))
+        );
+        Some(self.rect.center() + (q - self.rect.center()) * self.zoom + self.pan)
     }
 
     /// Draws a 3-D segment.
@@ -67,33 +76,148 @@ impl Projector {
     }
 }
 
-/// A matrix with its name, formula and numbers, and its factors folded below it.
-pub fn matrix(ui: &mut Ui, m: &NamedMatrix, lang: Lang, id: &str) {
-    ui.label(RichText::new(&m.name).strong());
-    ui.label(RichText::new(lang.formula(&m.formula)).italics().weak());
+/// The lights of a capture drawn where they are (see `Light::gizmo`), through `to_view` (world
+/// coordinates into the space drawn), in a scene centred at `centre` of about `size`; each with its
+/// label.
+pub fn draw_lights(
+    painter: &egui::Painter,
+    cam: &Projector,
+    lights: &[pipeline::light::Light],
+    to_view: &dyn Fn(Vec3) -> Vec3,
+    (centre, size): (Vec3, f32),
+    lang: Lang,
+) {
+    use pipeline::light::Light;
+    let font = egui::FontId::proportional(14.0);
+    for (k, light) in lights.iter().enumerate() {
+        let Some(g) = light.gizmo(centre, size) else {
+            continue;
+        };
+        let stroke = egui::Stroke::new(2.0, palette::LIGHT);
+        for [a, b] in &g.segments {
+            cam.line(painter, to_view(*a), to_view(*b), stroke);
+        }
+        if let Some(p) = cam.project(to_view(g.label_at)) {
+            let name = match light {
+                Light::Point { .. } => lang.tr("point light", "点光源"),
+                Light::Spot { .. } => lang.tr("spotlight", "聚光灯"),
+                Light::Directional { .. } => lang.tr("directional light", "平行光"),
+                Light::Ambient { .. } => "",
+            };
+            label_with_background(
+                painter,
+                p,
+                egui::Align2::CENTER_BOTTOM,
+                &format!("{name} {k}"),
+                &font,
+                palette::LIGHT,
+            );
+        }
+    }
+}
+
+/// Text on a dark translucent box, legible over any picture; returns its rect.
+pub fn label_with_background(
+    painter: &egui::Painter,
+    at: Pos2,
+    align: egui::Align2,
+    text: &str,
+    font: &egui::FontId,
+    color: Color32,
+) -> Rect {
+    let galley = painter.layout_no_wrap(text.to_owned(), font.clone(), color);
+    let rect = align.anchor_size(at, galley.size()).expand(3.0);
+    painter.rect_filled(rect, 3.0, Color32::from_black_alpha(170));
+    painter.galley(rect.min + egui::vec2(3.0, 3.0), galley, color);
+    rect
+}
+
+/// Where to put a label of `size` pointing at `anchor` so that it does not cover `avoid` (the
+/// subject on screen) and stays inside `view`: the first place around the anchor, a little
+/// farther each round, that does neither; else the view's corner farthest from the subject.
+#[must_use]
+pub fn place_label(anchor: Pos2, size: egui::Vec2, avoid: Rect, view: Rect) -> Rect {
+    let fits = |r: &Rect| view.contains_rect(*r) && !r.intersects(avoid);
+    for step in 1..=8 {
+        let d = 12.0 * step as f32;
+        for dir in [
+            egui::vec2(1.0, -1.0),
+            egui::vec2(1.0, 1.0),
+            egui::vec2(-1.0, -1.0),
+            egui::vec2(-1.0, 1.0),
+            egui::vec2(0.0, -1.0),
+            egui::vec2(0.0, 1.0),
+        ] {
+            let r = Rect::from_center_size(anchor + dir * (d + size.length() / 2.0), size);
+            if fits(&r) {
+                return r;
+            }
+        }
+    }
+    let corners = [
+        view.left_top(),
+        view.right_top(),
+        view.left_bottom(),
+        view.right_bottom(),
+    ];
+    let far = corners
+        .into_iter()
+        .max_by(|a, b| {
+            a.distance(avoid.center())
+                .total_cmp(&b.distance(avoid.center()))
+        })
+        .unwrap_or(view.left_top());
+    let r = Rect::from_center_size(far, size);
+    r.translate(egui::vec2(
+        (view.left() - r.left()).max(0.0) - (r.right() - view.right()).max(0.0),
+        (view.top() - r.top()).max(0.0) - (r.bottom() - view.bottom()).max(0.0),
+    ))
+}
+
+/// A matrix with its name and formula typeset, its numbers, and its factors below it (open
+/// when `open`).
+pub fn matrix(ui: &mut Ui, m: &NamedMatrix, lang: Lang, id: &str, open: bool) {
+    let style = typeset::Style::body(ui);
+    typeset::formula(ui, &m.name, &style.sized(style.size * 1.1));
+    let formula = lang.formula(&m.formula);
+    if !formula.is_empty() {
+        let dim = typeset::Style {
+            color: ui.visuals().text_color().gamma_multiply(0.85),
+            ..style
+        };
+        typeset::paragraph(ui, &formula, &dim.sized(style.size * 0.9));
+    }
     matrix_grid(ui, &m.matrix, id);
     if !m.factors.is_empty() {
         egui::CollapsingHeader::new(lang.tr("Factors", "分解"))
             .id_salt(format!("{id}-factors"))
+            .default_open(open)
             .show(ui, |ui| {
                 for (i, f) in m.factors.iter().enumerate() {
-                    matrix(ui, f, lang, &format!("{id}-{i}"));
+                    matrix(ui, f, lang, &format!("{id}-{i}"), false);
                 }
             });
     }
 }
 
-/// The 4×4 numbers, in monospace, right-aligned.
+/// The 4×4 numbers, in monospace at the body size, right-aligned.
 pub fn matrix_grid(ui: &mut Ui, m: &Mat4, id: &str) {
+    let size = ui.style().text_styles[&egui::TextStyle::Body].size;
     egui::Frame::group(ui.style()).show(ui, |ui| {
-        egui::Grid::new(id).spacing([10.0, 2.0]).show(ui, |ui| {
-            for row in to_rows(m) {
-                for v in row {
-                    ui.label(RichText::new(format!("{:>9}", num(v))).monospace());
+        egui::Grid::new(id)
+            .spacing([size * 0.7, 2.0])
+            .show(ui, |ui| {
+                for row in to_rows(m) {
+                    for v in row {
+                        ui.label(
+                            RichText::new(format!("{:>9}", num(v)))
+                                .monospace()
+                                .size(size),
+                        );
+                    }
+                    ui.end_row();
                 }
-                ui.end_row();
-            }
-        });
+            });
     });
 }
 

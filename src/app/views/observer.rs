@@ -1,56 +1,27 @@
 //! The observer view: the scene from outside, rendered by the same pipeline from an orbiting
-//! camera, with the viewing camera's frame (u, v, n), its frustum and the clipped geometry drawn
-//! over it.
+//! camera at the panel's shape, with the viewing camera's frame (u, v, n), its frustum, the
+//! clipped geometry and the lights drawn over it (`observer::viewing_camera`, the description the
+//! exported image draws too).
 
 use egui::{Align2, Color32, FontId, Rect, Sense, Stroke, TextureOptions, Ui, Vec2};
-use glam::{Mat4, Vec3, Vec4};
 use pipeline::buffers::BufferKind;
 use pipeline::capture::FrameCapture;
-use pipeline::transform;
 
-use super::{Projector, fit_rect, palette};
+use super::{Projector, fit_rect, label_with_background};
 use crate::app::session::{Command, Session};
-use crate::observer::Orbit;
-use crate::vocabulary::Lang;
+use crate::observer::{Orbit, Parts, scene_extent, viewing_camera};
 
-/// The texture of the observer image.
+/// The texture of the observer image and what to draw over it.
 #[derive(Default)]
 pub struct ObserverView {
     texture: super::BufferTexture,
     parts: Parts,
+    /// Where the picture was drawn this frame.
+    pub picture: Option<Rect>,
 }
 
-/// Which parts of the viewing camera the observer view draws, and in which colours.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Parts {
-    /// The camera frame u, v, n at the eye.
-    pub axes: bool,
-    /// The near plane's rectangle.
-    pub near: bool,
-    /// The far plane's rectangle.
-    pub far: bool,
-    /// The frustum's side edges (and the rays from the eye to the near corners).
-    pub sides: bool,
-    /// The polygons that clipping produced.
-    pub clipped: bool,
-    /// The near plane's colour.
-    pub near_color: Color32,
-    /// The far plane's and the sides' colour.
-    pub far_color: Color32,
-}
-
-impl Default for Parts {
-    fn default() -> Self {
-        Self {
-            axes: true,
-            near: true,
-            far: true,
-            sides: true,
-            clipped: true,
-            near_color: palette::NEAR,
-            far_color: palette::FAR,
-        }
-    }
+fn color(c: [u8; 4]) -> Color32 {
+    Color32::from_rgba_unmultiplied(c[0], c[1], c[2], c[3])
 }
 
 impl ObserverView {
@@ -58,41 +29,26 @@ impl ObserverView {
     pub fn ui(&mut self, ui: &mut Ui, session: &Session, main: &FrameCapture) -> Vec<Command> {
         let lang = session.lang;
         let mut cmds = Vec::new();
-        ui.label(
-            egui::RichText::new(lang.tr(
-                "Observer: the scene from outside (drag to orbit, scroll to zoom)",
-                "观察者视图：从外部看场景（拖动旋转，滚轮缩放）",
-            ))
-            .strong(),
-        );
-        ui.menu_button(lang.tr("Show…", "显示…"), |ui| {
-            let p = &mut self.parts;
-            ui.checkbox(
-                &mut p.axes,
-                lang.tr("camera frame u, v, n", "相机标架 u, v, n"),
-            );
-            ui.checkbox(
-                &mut p.clipped,
-                lang.tr("clipped polygons", "裁剪后的多边形"),
-            );
-            ui.checkbox(&mut p.sides, lang.tr("frustum sides", "视锥侧棱"));
-            ui.horizontal(|ui| {
-                ui.checkbox(&mut p.near, lang.tr("near plane", "近平面"));
-                ui.color_edit_button_srgba(&mut p.near_color);
-            });
-            ui.horizontal(|ui| {
-                ui.checkbox(&mut p.far, lang.tr("far plane", "远平面"));
-                ui.color_edit_button_srgba(&mut p.far_color);
-            });
-        });
-        let Some(obs) = &session.observer else {
-            ui.label(lang.tr("(no observer image)", "（无观察者图像）"));
-            return cmds;
-        };
         let (outer, response) =
             ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
-        let rect = fit_rect(outer, obs.width() as f32 / obs.height() as f32);
+        if outer.height() > 0.0 {
+            cmds.push(Command::SetObserverAspect(outer.width() / outer.height()));
+        }
         let painter = ui.painter_at(outer);
+        painter.rect_filled(outer, 0.0, Color32::from_gray(18));
+        self.picture = None;
+        let Some(obs) = &session.observer else {
+            painter.text(
+                outer.center(),
+                Align2::CENTER_CENTER,
+                lang.tr("rendering the observer…", "正在渲染观察者视图…"),
+                FontId::proportional(16.0),
+                Color32::GRAY,
+            );
+            return cmds;
+        };
+        let rect = fit_rect(outer, obs.width() as f32 / obs.height() as f32);
+        self.picture = Some(rect);
         let texture = self.texture.get(
             ui.ctx(),
             "observer",
@@ -107,7 +63,6 @@ impl ObserverView {
             Rect::from_min_max(egui::Pos2::ZERO, egui::Pos2::new(1.0, 1.0)),
             Color32::WHITE,
         );
-
         let mut orbit: Orbit = session.orbit;
         if response.dragged() {
             let d = response.drag_delta();
@@ -125,127 +80,60 @@ impl ObserverView {
         let cam = Projector {
             m: obs.matrices.projection.matrix * obs.matrices.view.matrix,
             rect,
+            zoom: 1.0,
+            pan: Vec2::ZERO,
         };
-        draw_viewing_camera(&painter, &cam, main, &self.parts, lang);
+        let painter = ui.painter_at(rect);
+        let (marks, tags) = viewing_camera(main, &self.parts, scene_extent(&session.spec), lang);
+        for m in &marks {
+            cam.line(&painter, m.a, m.b, Stroke::new(m.width, color(m.color)));
+        }
+        let font = FontId::proportional(14.0);
+        for t in &tags {
+            if let Some(p) = cam.project(t.at) {
+                label_with_background(
+                    &painter,
+                    p + Vec2::new(6.0, 6.0),
+                    Align2::LEFT_TOP,
+                    &t.text,
+                    &font,
+                    color(t.color),
+                );
+            }
+        }
+        self.controls(ui, rect, lang);
         cmds
     }
-}
 
-/// The viewing camera in world coordinates: its u, v, n axes at the eye, its frustum (near
-/// plane, far plane, edges), and the polygons clipping produced.
-fn draw_viewing_camera(
-    painter: &egui::Painter,
-    cam: &Projector,
-    main: &FrameCapture,
-    parts: &Parts,
-    lang: Lang,
-) {
-    let c = main.camera;
-    let Ok(frame) = transform::camera_frame(c.eye, c.at, c.up) else {
-        return;
-    };
-    let [.., n, _] = main.projection.bounds(main.settings.aspect());
-    let scale = (c.at - c.eye).length().max(n) * 0.25;
-    if parts.axes {
-        for (axis, color, label) in [
-            (frame.u, palette::X, "u"),
-            (frame.v, palette::Y, "v"),
-            (frame.n, palette::Z, "n"),
-        ] {
-            cam.line(
-                painter,
-                c.eye,
-                c.eye + axis * scale,
-                Stroke::new(2.5, color),
-            );
-            if let Some(p) = cam.project(c.eye + axis * scale * 1.15) {
-                painter.text(
-                    p,
-                    Align2::CENTER_CENTER,
-                    label,
-                    FontId::proportional(16.0),
-                    color,
-                );
-            }
-        }
-    }
-    if let Some(p) = cam.project(c.eye) {
-        painter.circle_filled(p, 4.0, Color32::WHITE);
-        painter.text(
-            p + Vec2::new(6.0, 6.0),
-            Align2::LEFT_TOP,
-            lang.tr("eye", "视点"),
-            FontId::proportional(14.0),
-            Color32::WHITE,
+    /// The title and the choice of what to draw, over the top-left of the picture.
+    fn controls(&mut self, ui: &mut Ui, rect: Rect, lang: crate::vocabulary::Lang) {
+        let size = ui.style().text_styles[&egui::TextStyle::Body].size;
+        let bar = Rect::from_min_size(
+            rect.left_top() + Vec2::splat(6.0),
+            Vec2::new(rect.width() - 12.0, size * 1.8),
         );
-    }
-    // Eye-space corners to world: the inverse of the view matrix the capture used.
-    let to_world = main.matrices.view.matrix.inverse();
-    let corners = main.projection.corners_eye(main.settings.aspect());
-    let (near, far) = (&corners[..4], &corners[4..]);
-    let w = |p: Vec3| to_world.transform_point3(p);
-    for i in 0..4 {
-        let j = (i + 1) % 4;
-        if parts.near {
-            cam.line(
-                painter,
-                w(near[i]),
-                w(near[j]),
-                Stroke::new(2.0, parts.near_color),
-            );
-        }
-        if parts.far {
-            cam.line(
-                painter,
-                w(far[i]),
-                w(far[j]),
-                Stroke::new(1.5, parts.far_color),
-            );
-        }
-        if parts.sides {
-            cam.line(
-                painter,
-                w(near[i]),
-                w(far[i]),
-                Stroke::new(1.0, parts.far_color),
-            );
-            if main.projection.is_perspective() {
-                cam.line(
-                    painter,
-                    c.eye,
-                    w(near[i]),
-                    Stroke::new(1.0, parts.near_color.gamma_multiply(0.5)),
-                );
-            }
-        }
-    }
-    if parts.clipped {
-        draw_clipped(painter, cam, main);
-    }
-}
-
-/// Clipped polygons, from clip space back to world: (P·V)⁻¹ applied to their clip coordinates.
-fn draw_clipped(painter: &egui::Painter, cam: &Projector, main: &FrameCapture) {
-    let clip_to_world: Mat4 =
-        (main.matrices.projection.matrix * main.matrices.view.matrix).inverse();
-    for prim in main
-        .primitives
-        .iter()
-        .filter_map(|p| p.clipped_polygon.as_ref())
-        .take(2000)
-    {
-        let pts: Vec<egui::Pos2> = prim
-            .iter()
-            .filter_map(|v| {
-                let q: Vec4 = clip_to_world * v.clip;
-                cam.project(q.truncate() / q.w)
-            })
-            .collect();
-        for k in 0..pts.len() {
-            painter.line_segment(
-                [pts[k], pts[(k + 1) % pts.len()]],
-                Stroke::new(1.5, palette::CLIPPED),
-            );
-        }
+        ui.scope_builder(egui::UiBuilder::new().max_rect(bar), |ui| {
+            ui.horizontal(|ui| {
+                ui.menu_button(lang.tr("Observer ▾", "观察者 ▾"), |ui| {
+                    ui.label(lang.tr(
+                        "The scene from outside: drag to orbit, scroll to zoom.",
+                        "从外部看场景：拖动旋转，滚轮缩放。",
+                    ));
+                    let p = &mut self.parts;
+                    ui.checkbox(
+                        &mut p.axes,
+                        lang.tr("camera frame u, v, n", "相机标架 u, v, n"),
+                    );
+                    ui.checkbox(
+                        &mut p.clipped,
+                        lang.tr("clipped polygons", "裁剪后的多边形"),
+                    );
+                    ui.checkbox(&mut p.sides, lang.tr("frustum sides", "视锥侧棱"));
+                    ui.checkbox(&mut p.near, lang.tr("near plane", "近平面"));
+                    ui.checkbox(&mut p.far, lang.tr("far plane", "远平面"));
+                    ui.checkbox(&mut p.lights, lang.tr("lights", "光源"));
+                });
+            });
+        });
     }
 }

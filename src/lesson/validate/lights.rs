@@ -8,6 +8,7 @@ use toml::Spanned;
 
 use super::{Checker, triple};
 use crate::lesson::raw::{RawFigure, RawLight, RawShadow, RawVec3};
+use crate::vocabulary::Text;
 
 pub(super) fn light(c: &mut Checker<'_>, l: &Spanned<RawLight>) -> Option<Light> {
     let raw = l.get_ref();
@@ -113,7 +114,10 @@ pub(super) fn shadow(c: &mut Checker<'_>, sh: &Spanned<RawShadow>) -> Option<Pla
     })
 }
 
-pub(super) fn figure(c: &mut Checker<'_>, f: &Spanned<RawFigure>) -> Option<Figure> {
+pub(super) fn figure(
+    c: &mut Checker<'_>,
+    f: &Spanned<RawFigure>,
+) -> Option<(Figure, Option<Text>)> {
     let raw = f.get_ref();
     let mut angle = |key: &str, v: &Option<Spanned<f64>>| {
         v.as_ref().and_then(|v| c.finite(key, v)).unwrap_or(0.0)
@@ -169,12 +173,14 @@ pub(super) fn figure(c: &mut Checker<'_>, f: &Spanned<RawFigure>) -> Option<Figu
         .as_ref()
         .and_then(|v| c.vec3("translate", v))
         .unwrap_or(Vec3::ZERO);
-    Some(Figure {
+    let label = raw.label.as_ref().map(|l| c.text_of("label", l));
+    let figure = Figure {
         name: raw
             .name
             .clone()
             .unwrap_or_else(|| raw.kind.get_ref().replace('_', " ")),
         pose,
         translate,
-    })
+    };
+    Some((figure, label))
 }

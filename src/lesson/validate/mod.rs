@@ -21,8 +21,9 @@ use pipeline::shade::{Frequency, Reflection};
 use pipeline::texture::{Filter, Mipmap, Wrap};
 use toml::Spanned;
 
-use super::raw::{RawScale, RawScene, RawVec3};
+use super::raw::{RawScale, RawScene, RawText, RawVec3};
 use super::{Diagnostic, Diagnostics, SceneSpec};
+use crate::vocabulary::Text;
 
 /// The names of `cull` in files.
 pub(super) const CULL: &[(&str, CullMode)] = &[
@@ -77,6 +78,21 @@ pub(super) struct Checker<'a> {
 }
 
 impl<'a> Checker<'a> {
+    /// Text in both languages, neither empty.
+    pub(in crate::lesson) fn text_of(&mut self, key: &str, t: &Spanned<RawText>) -> Text {
+        let r = t.get_ref();
+        if r.en.trim().is_empty() || r.zh.trim().is_empty() {
+            self.error(
+                t.span(),
+                format!("`{key}` needs both `en` and `zh` text, neither empty"),
+            );
+        }
+        Text {
+            en: r.en.trim().to_owned(),
+            zh: r.zh.trim().to_owned(),
+        }
+    }
+
     /// A checker of `text`, named `file` in messages, with nothing found yet.
     pub(super) fn new(text: &'a str, file: &'a str) -> Self {
         Self {
@@ -185,11 +201,18 @@ pub fn scene(
             "the scene has no objects: add at least one [[scene.objects]] with a `mesh`",
         );
     }
+    let mut labels = std::collections::BTreeMap::new();
     let objects = s
         .objects
         .iter()
         .enumerate()
         .filter_map(|(i, o)| objects::object(&mut c, o, i, base))
+        .map(|(o, label)| {
+            if let Some(l) = label {
+                labels.insert(o.name.clone(), l);
+            }
+            o
+        })
         .collect();
     let lights = s
         .lights
@@ -201,6 +224,12 @@ pub fn scene(
         .figures
         .iter()
         .filter_map(|f| lights::figure(&mut c, f))
+        .map(|(f, label)| {
+            if let Some(l) = label {
+                labels.insert(f.name.clone(), l);
+            }
+            f
+        })
         .collect();
     if c.found.is_empty() {
         Ok(SceneSpec {
@@ -213,6 +242,7 @@ pub fn scene(
                 figures,
             },
             settings,
+            labels,
         })
     } else {
         Err(Diagnostics(c.found))

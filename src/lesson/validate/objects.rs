@@ -13,13 +13,14 @@ use toml::Spanned;
 
 use super::{Checker, triple};
 use crate::lesson::raw::{RawColor, RawMaterial, RawMesh, RawMeshTable, RawObject, RawScale};
+use crate::vocabulary::Text;
 
 pub(super) fn object(
     c: &mut Checker<'_>,
     o: &Spanned<RawObject>,
     index: usize,
     base: &Path,
-) -> Option<Object> {
+) -> Option<(Object, Option<Text>)> {
     let raw = o.get_ref();
     let (mesh, source) = mesh(c, &raw.mesh, base)?;
     let name = raw
@@ -87,7 +88,8 @@ pub(super) fn object(
             }
         };
     }
-    Some(object)
+    let label = raw.label.as_ref().map(|l| c.text_of("label", l));
+    Some((object, label))
 }
 
 /// Bump, normal and displacement maps of an object.

@@ -2,7 +2,7 @@
 //! values worked out by hand.
 
 use glam::{Vec2, Vec3};
-use pipeline::capture::Section;
+use pipeline::capture::{Remark, Section};
 use pipeline::scene::ColorSource;
 
 use crate::support::{pixel_scene, render};
@@ -100,10 +100,14 @@ fn the_fill_rule_decides_samples_on_an_edge() {
     assert_eq!(s.on_edges, vec![1]);
     assert!(s.inside);
     assert_eq!(left.edges.top_left, [false, true, false]);
-    assert!(left.lines.iter().any(|l| {
-        l.numbers
-            .contains("on edge 1, a top or left edge: counts as inside")
-    }));
+    assert!(
+        left.lines
+            .iter()
+            .any(|l| l.remarks.contains(&Remark::OnEdge {
+                edge: 1,
+                top_left: true
+            }))
+    );
     // Pixel (1, 0), centre (1.5, 0.5): E_2 = 0 on the bottom edge: not covered, nothing drawn.
     assert!(capture.explain(1, 0).is_none());
     let record = capture.pixel_record(1, 0).expect("inside the viewport");

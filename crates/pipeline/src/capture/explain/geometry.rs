@@ -3,7 +3,7 @@
 
 use glam::Vec3;
 
-use super::{Lines, Owner, Section, n, n64, pt, v3, v4};
+use super::{Lines, Owner, Remark, Section, n, n64, pt, v3, v4};
 use crate::capture::{EdgeTest, FrameCapture};
 use crate::raster::RasterTriangle;
 use crate::vertex::VertexRecord;
@@ -52,21 +52,25 @@ impl FrameCapture {
                         v3(win),
                     );
                 }
-                _ => lines.add(
-                    Section::Vertices,
-                    &format!("w_{k} ≤ 0"),
-                    format!("w = {}", n(v.clip.w)),
-                    "behind the eye: no NDC; clipping cut the triangle first".to_owned(),
-                ),
+                _ => {
+                    lines.add(
+                        Section::Vertices,
+                        &format!("w_{k} ≤ 0"),
+                        format!("w_{k} = {}", n(v.clip.w)),
+                        String::new(),
+                    );
+                    lines.note(Remark::BehindEye);
+                }
             }
         }
         if clipped {
             lines.add(
                 Section::Vertices,
-                "clipped",
+                "−w ≤ x, y, z ≤ w ?",
                 String::new(),
-                "the triangle crosses the view volume: the pixel lies in a piece of the clipped polygon, whose corners are its own".to_owned(),
+                String::new(),
             );
+            lines.note(Remark::Clipped);
         }
     }
 }
@@ -74,11 +78,15 @@ impl FrameCapture {
 /// The edge functions at the centre, the inside test with its ties, and λ.
 pub(super) fn explain_edges(e: &EdgeTest, corner_vertex: &[Option<usize>; 3], lines: &mut Lines) {
     let s = Section::Rasterization;
-    let names = corner_vertex
-        .map(|v| v.map_or_else(|| "a clipped corner".to_owned(), |k| format!("vertex {k}")));
+    // v_k: vertex k of the triangle; c_k: a corner clipping made.
+    let names: Vec<String> = corner_vertex
+        .iter()
+        .enumerate()
+        .map(|(k, v)| v.map_or_else(|| format!("c_{k}"), |j| format!("v_{j}")))
+        .collect();
     lines.add(
         s,
-        "corners (snapped to 1/256 pixel, counter-clockwise)",
+        "corners a_0, a_1, a_2",
         format!(
             "{} = {}, {} = {}, {} = {}",
             names[0],
@@ -90,18 +98,20 @@ pub(super) fn explain_edges(e: &EdgeTest, corner_vertex: &[Option<usize>; 3], li
         ),
         String::new(),
     );
+    lines.note(Remark::Corners);
     let centre = e.centre_position;
-    lines.add(
-        s,
-        "p = pixel centre (x + 1/2, y + 1/2)",
-        String::new(),
-        pt(centre),
-    );
+    lines.add(s, "p = (x + 1/2, y + 1/2)", String::new(), pt(centre));
+    lines.note(Remark::PixelCentre);
     for k in 0..3 {
         let (a, b) = (e.corners[(k + 1) % 3], e.corners[(k + 2) % 3]);
         lines.add(
             s,
-            &format!("E_{k} = (b − a) × (p − a), the edge opposite corner {k}"),
+            &format!(
+                "E_{k} = (a_{} − a_{}) × (p − a_{})",
+                (k + 2) % 3,
+                (k + 1) % 3,
+                (k + 1) % 3
+            ),
             format!(
                 "({} − {})·({} − {}) − ({} − {})·({} − {})",
                 n64(b[0]),
@@ -115,6 +125,7 @@ pub(super) fn explain_edges(e: &EdgeTest, corner_vertex: &[Option<usize>; 3], li
             ),
             n64(e.centre[k]),
         );
+        lines.note(Remark::EdgeOpposite { edge: k });
     }
     explain_samples(e, lines);
     lines.add(
@@ -149,7 +160,7 @@ pub(super) fn explain_weights(
     let z = tri.window.map(|w| w.z);
     lines.add(
         s,
-        "z_w = Σ_k λ_k·z_k (linear in screen space)",
+        "z_w = Σ_k λ_k·z_k",
         format!(
             "{}·{} + {}·{} + {}·{}",
             n(lambda.x),
@@ -161,21 +172,19 @@ pub(super) fn explain_weights(
         ),
         n(depth),
     );
+    lines.note(Remark::ScreenLinear);
     if pc {
         let w = tri.inv_w;
         lines.add(
             s,
-            "b_k = (λ_k/w_k)/Σ_j (λ_j/w_j) (perspective-correct)",
+            "b_k = (λ_k/w_k)/Σ_j (λ_j/w_j)",
             format!("1/w = ({}, {}, {})", n(w[0]), n(w[1]), n(w[2])),
             v3(b),
         );
+        lines.note(Remark::PerspectiveCorrect);
     } else {
-        lines.add(
-            s,
-            "b_k = λ_k (affine, for comparison)",
-            String::new(),
-            v3(b),
-        );
+        lines.add(s, "b_k = λ_k", String::new(), v3(b));
+        lines.note(Remark::Affine);
     }
 }
 
@@ -183,7 +192,18 @@ pub(super) fn explain_weights(
 pub(super) fn explain_attributes(o: &Owner<'_>, vertex_color: Vec3, lines: &mut Lines) {
     let s = Section::Interpolation;
     lines.add(s, "p = Σ_k b_k·p_k", String::new(), v3(o.position));
-    lines.add(s, "n = normalize(Σ_k b_k·n_k)", String::new(), v3(o.normal));
+    let normals = o.vertices.map(|v| v.normal_world);
+    lines.add(
+        s,
+        "n = normalize(Σ_k b_k·n_k)",
+        format!(
+            "n_k = {}, {}, {}",
+            v3(normals[0]),
+            v3(normals[1]),
+            v3(normals[2])
+        ),
+        v3(o.normal),
+    );
     if o.object.texture.is_none() {
         let c = o.vertices.map(|v| v.color);
         lines.add(
@@ -207,43 +227,21 @@ pub(super) fn explain_attributes(o: &Owner<'_>, vertex_color: Vec3, lines: &mut 
 fn explain_samples(e: &EdgeTest, lines: &mut Lines) {
     let s = Section::Rasterization;
     for (j, q) in e.samples.iter().enumerate() {
-        let ties: Vec<String> = q
-            .on_edges
-            .iter()
-            .map(|&k| {
-                format!(
-                    "on edge {k}, a {} edge: {}",
-                    if e.top_left[k] {
-                        "top or left"
-                    } else {
-                        "bottom or right"
-                    },
-                    if e.top_left[k] {
-                        "counts as inside"
-                    } else {
-                        "does not count"
-                    }
-                )
-            })
-            .collect();
         lines.add(
             s,
-            &format!(
-                "sample {j} at {}: inside ⇔ E_0, E_1, E_2 ≥ 0 (= 0 only on a top or left edge)",
-                pt(q.position)
-            ),
-            format!(
-                "E = ({}, {}, {}){}",
-                n64(q.e[0]),
-                n64(q.e[1]),
-                n64(q.e[2]),
-                if ties.is_empty() {
-                    String::new()
-                } else {
-                    format!("; {}", ties.join("; "))
-                }
-            ),
-            if q.inside { "covered" } else { "not covered" }.to_owned(),
+            &format!("s_{j} = {}: E_0, E_1, E_2 ≥ 0 ?", pt(q.position)),
+            format!("E = ({}, {}, {})", n64(q.e[0]), n64(q.e[1]), n64(q.e[2])),
+            if q.inside { "√" } else { "×" }.to_owned(),
         );
+        lines.note(Remark::Sample {
+            index: j,
+            inside: q.inside,
+        });
+        for &k in &q.on_edges {
+            lines.note(Remark::OnEdge {
+                edge: k,
+                top_left: e.top_left[k],
+            });
+        }
     }
 }

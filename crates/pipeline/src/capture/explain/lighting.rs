@@ -4,7 +4,7 @@
 
 use glam::Vec3;
 
-use super::{LightStep, LightingStep, Lines, Owner, Section, n, v3};
+use super::{LightStep, LightingStep, Lines, Owner, Remark, Section, n, v3};
 use crate::capture::FrameCapture;
 use crate::light::{Light, Material};
 use crate::shade::{self, Frequency, LightTerm, Reflection, ShadeTerms};
@@ -45,15 +45,16 @@ impl FrameCapture {
                 let terms = ShadeTerms::blend([&t[0], &t[1], &t[2]], o.b);
                 lines.add(
                     s,
-                    "Gouraud: c_k = I(p_k, n_k) lit at each vertex; c = Σ_k b_k·c_k",
+                    "c = Σ_k b_k·I(p_k, n_k)",
                     format!(
-                        "{}, {}, {}",
+                        "I(p_k, n_k) = {}, {}, {}",
                         v3(out.vertex_colors[0]),
                         v3(out.vertex_colors[1]),
                         v3(out.vertex_colors[2])
                     ),
                     v3(terms.color()),
                 );
+                lines.note(Remark::Gouraud);
                 terms
             }
             Frequency::Flat => {
@@ -66,10 +67,11 @@ impl FrameCapture {
                 out.normal = terms.normal;
                 lines.add(
                     s,
-                    "flat: I evaluated once at the face's centroid, n = (p_1 − p_0)×(p_2 − p_0)/|…|",
-                    format!("n = {}", v3(terms.normal)),
+                    "c = I(p_centroid, n_face), n_face = normalize((p_1 − p_0)×(p_2 − p_0))",
+                    format!("n_face = {}", v3(terms.normal)),
                     v3(terms.color()),
                 );
+                lines.note(Remark::Flat);
                 terms
             }
             Frequency::Phong => self.explain_phong(o, surface, &mut out, lines),
@@ -80,10 +82,11 @@ impl FrameCapture {
             terms.diffuse *= surface;
             lines.add(
                 s,
-                "textured: ambient and diffuse × texel",
-                v3(surface),
+                "c = T·L_a + T·L_d + L_s",
+                format!("T = {}", v3(surface)),
                 v3(terms.color()),
             );
+            lines.note(Remark::Textured);
         }
         out.terms = terms;
         Some(out)
@@ -104,12 +107,8 @@ impl FrameCapture {
         {
             // Bump and normal maps are not in the capture: the normal they made is.
             out.normal = Vec3::from(st.normal).normalize_or_zero();
-            lines.add(
-                s,
-                "n = normalize(TBN·n_t): bump or normal mapping tilts the normal",
-                String::new(),
-                v3(out.normal),
-            );
+            lines.add(s, "n = normalize(TBN·n_t)", String::new(), v3(out.normal));
+            lines.note(Remark::Bump);
         }
         lines.add(
             s,
@@ -118,6 +117,19 @@ impl FrameCapture {
             v3(out.view),
         );
         let m = &o.object.material;
+        lines.add(
+            s,
+            "k_a, k_d, k_s, p",
+            format!(
+                "{}, {}, {}, {}",
+                v3(m.ka),
+                v3(m.kd),
+                v3(m.ks),
+                n(m.shininess)
+            ),
+            String::new(),
+        );
+        lines.note(Remark::Material);
         let mut terms = ShadeTerms {
             normal: out.normal,
             ..ShadeTerms::default()
@@ -128,10 +140,11 @@ impl FrameCapture {
                 terms.ambient += a;
                 lines.add(
                     s,
-                    "ambient = k_a·c·I_a",
+                    "L_a = k_a·c·I_a",
                     format!("{}·{}·{}", v3(m.ka), v3(surface), v3(intensity)),
                     v3(a),
                 );
+                lines.note(Remark::Ambient);
                 out.lights.push(LightStep {
                     index,
                     light: *light,
@@ -173,10 +186,11 @@ impl FrameCapture {
             terms.diffuse *= 1.0 - k;
             lines.add(
                 s,
-                "mirror: reflected = k·C_env(r), r = 2(n·v)n − v; ambient and diffuse × (1 − k)",
+                "L_r = k·C_env(r), r = 2(n·v)n − v; L_a, L_d × (1 − k)",
                 format!("k = {}", n(k)),
                 v3(terms.reflected),
             );
+            lines.note(Remark::Mirror);
         }
         terms
     }
@@ -194,11 +208,16 @@ fn explain_light(
     lines: &mut Lines,
 ) {
     let s = Section::Lighting;
-    let l_formula = match light {
-        Light::Directional { .. } => format!("light {index}: l = −direction/|direction|"),
-        _ => format!("light {index}: l = normalize(p_light − p)"),
+    let (l_formula, kind) = match light {
+        Light::Directional { .. } => ("l = −d/|d|", "directional"),
+        Light::Spot { .. } => ("l = normalize(p_light − p)", "spot"),
+        _ => ("l = normalize(p_light − p)", "point"),
     };
-    lines.add(s, &l_formula, String::new(), v3(t.l));
+    lines.add(s, l_formula, String::new(), v3(t.l));
+    lines.note(Remark::Light {
+        index,
+        kind: kind.to_owned(),
+    });
     if let Light::Point {
         attenuation: abc, ..
     }
@@ -220,6 +239,7 @@ fn explain_light(
             ),
             n(t.attenuation),
         );
+        lines.note(Remark::Attenuation);
     }
     if let Light::Spot {
         cutoff_deg,
@@ -229,15 +249,16 @@ fn explain_light(
     {
         lines.add(
             s,
-            "f_spot = (cos φ)^e inside the cone (φ ≤ cutoff), 0 outside",
-            format!("cutoff {}°, e = {}", n(*cutoff_deg), n(*exponent)),
+            "f_spot = (cos φ)^e if φ ≤ θ, else 0",
+            format!("θ = {}°, e = {}", n(*cutoff_deg), n(*exponent)),
             n(t.spot),
         );
+        lines.note(Remark::SpotCone);
     }
     lines.add(s, "n·l", String::new(), n(t.n_dot_l));
     lines.add(
         s,
-        "diffuse = f_att·k_d·c·I·max(n·l, 0)",
+        "L_d = f_att·k_d·c·I·max(n·l, 0)",
         format!(
             "{}·{}·{}·{}·{}",
             n(t.attenuation * t.spot),
@@ -248,15 +269,20 @@ fn explain_light(
         ),
         v3(t.diffuse),
     );
+    lines.note(Remark::Diffuse);
     let (vector, dot) = match reflection {
         Reflection::BlinnPhong => (("h = (l + v)/|l + v|", t.h), "n·h"),
         Reflection::Phong => (("r = 2(n·l)n − l", t.r), "r·v"),
     };
     lines.add(s, vector.0, String::new(), v3(vector.1));
+    lines.note(match reflection {
+        Reflection::BlinnPhong => Remark::HalfVector,
+        Reflection::Phong => Remark::MirrorVector,
+    });
     lines.add(s, dot, String::new(), n(t.spec_dot));
     lines.add(
         s,
-        &format!("specular = f_att·k_s·I·max({dot}, 0)^p (0 where n·l ≤ 0)"),
+        &format!("L_s = f_att·k_s·I·max({dot}, 0)^p"),
         format!(
             "{}·{}·{}·{}^{}",
             n(t.attenuation * t.spot),
@@ -267,4 +293,5 @@ fn explain_light(
         ),
         v3(t.specular),
     );
+    lines.note(Remark::Specular);
 }

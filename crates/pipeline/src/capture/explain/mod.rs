@@ -52,6 +52,122 @@ pub struct Line {
     pub numbers: String,
     /// The value.
     pub result: String,
+    /// What the line means, in words (the words are the vocabulary's, in either language).
+    pub remarks: Vec<Remark>,
+}
+
+/// What a line of the derivation means: the words beside its formula, as data, so that they can
+/// be said in any language.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "remark")]
+pub enum Remark {
+    /// `w ≤ 0`: the vertex is behind the eye and has no NDC; clipping cut the triangle first.
+    BehindEye,
+    /// The triangle crosses the view volume: the pixel lies in a piece of the clipped polygon.
+    Clipped,
+    /// The corners, snapped to 1/256 pixel and counter-clockwise; `v_k` is vertex k of the
+    /// triangle, `c_k` a corner clipping made.
+    Corners,
+    /// The centre of the pixel.
+    PixelCentre,
+    /// The edge function of the edge opposite corner `edge`.
+    EdgeOpposite {
+        /// The corner the edge faces.
+        edge: usize,
+    },
+    /// Sample `index` of the pixel, covered or not.
+    Sample {
+        /// The sample.
+        index: usize,
+        /// Whether the triangle covers it.
+        inside: bool,
+    },
+    /// A sample exactly on an edge: the top-left rule decides.
+    OnEdge {
+        /// The edge.
+        edge: usize,
+        /// Whether it is a top or a left edge (then the sample is inside).
+        top_left: bool,
+    },
+    /// Depth is linear in screen space.
+    ScreenLinear,
+    /// Perspective-correct weights.
+    PerspectiveCorrect,
+    /// Affine (screen-space) weights, for comparison.
+    Affine,
+    /// Anisotropic filtering: taps along the footprint's major axis.
+    Anisotropic,
+    /// `λ ≤ 0`: magnification, level 0.
+    Magnification,
+    /// No mipmap: level 0 always.
+    NoMipmap,
+    /// Mipmapping picks the nearest level, at most `max`.
+    NearestLevel {
+        /// The coarsest level.
+        max: usize,
+    },
+    /// Trilinear: levels `k` and `k + 1` blended by `t`, λ at most `max`.
+    Trilinear {
+        /// The coarsest level.
+        max: usize,
+    },
+    /// The four texels bilinear filtering reads, in level `level` of `width × height`.
+    Texels {
+        /// The level.
+        level: u32,
+        /// Its width.
+        width: u32,
+        /// Its height.
+        height: u32,
+    },
+    /// Nearest filtering: the texel containing the point.
+    NearestTexel,
+    /// The mean of the anisotropic taps.
+    TapsMean,
+    /// Gouraud shading: lit at each vertex, the colours interpolated.
+    Gouraud,
+    /// Flat shading: lit once per face, at its centroid, with its own normal.
+    Flat,
+    /// A textured surface lit per vertex or face: the texel multiplies ambient and diffuse.
+    Textured,
+    /// Bump or normal mapping tilted the normal.
+    Bump,
+    /// A mirror: it reflects its environment along `r`, keeping `1 − k` of its own light.
+    Mirror,
+    /// The material's coefficients and shininess.
+    Material,
+    /// The ambient term `L_a`.
+    Ambient,
+    /// Light `index` of the scene (its kind: `point`, `directional`, `spot`).
+    Light {
+        /// Its index.
+        index: usize,
+        /// Its kind.
+        kind: String,
+    },
+    /// The distance attenuation.
+    Attenuation,
+    /// A spotlight's cone: its factor is 0 outside the half-angle `cutoff`.
+    SpotCone,
+    /// The diffuse term `L_d`.
+    Diffuse,
+    /// The half vector (Blinn-Phong).
+    HalfVector,
+    /// The mirror direction of `l` (Phong).
+    MirrorVector,
+    /// The specular term `L_s`, zero where `n·l ≤ 0`.
+    Specular,
+    /// The colour: the terms' sum.
+    Sum,
+    /// The pixel: the mean of its samples (`covered` of `samples` by the owner).
+    Samples {
+        /// Covered samples.
+        covered: usize,
+        /// Samples per pixel.
+        samples: usize,
+    },
+    /// The 8-bit colour written to the image.
+    Bytes,
 }
 
 /// The texture lookup at the pixel, step by step.
@@ -207,7 +323,15 @@ impl Lines {
             formula: formula.to_owned(),
             numbers,
             result,
+            remarks: Vec::new(),
         });
+    }
+
+    /// Says what the last line means.
+    pub(super) fn note(&mut self, remark: Remark) {
+        if let Some(l) = self.0.last_mut() {
+            l.remarks.push(remark);
+        }
     }
 }
 
@@ -337,9 +461,9 @@ impl FrameCapture {
             lines.add(
                 Section::Colour,
                 if mirror {
-                    "c = ambient + diffuse + specular + reflected"
+                    "c = L_a + L_d + L_s + L_r"
                 } else {
-                    "c = ambient + diffuse + specular"
+                    "c = L_a + L_d + L_s"
                 },
                 format!(
                     "{} + {} + {}{}",
@@ -354,17 +478,19 @@ impl FrameCapture {
                 ),
                 v3(shaded),
             );
+            lines.note(Remark::Sum);
         }
         if covered < samples || (color - shaded).abs().max_element() > 1e-4 {
             lines.add(
                 Section::Colour,
-                "pixel = (Σ_s colour of sample s)/S",
+                "c_pixel = Σ_s c_s/S",
                 format!(
-                    "{covered} of {samples} samples covered; other triangles' samples keep their colours, uncovered ones the background {}",
+                    "S = {samples}; c_background = {}",
                     v3(self.settings.background)
                 ),
                 v3(color),
             );
+            lines.note(Remark::Samples { covered, samples });
         }
         let byte = |c: f32| (c.clamp(0.0, 1.0) * 255.0).round();
         lines.add(
@@ -373,5 +499,6 @@ impl FrameCapture {
             String::new(),
             format!("({}, {}, {})", byte(color.x), byte(color.y), byte(color.z)),
         );
+        lines.note(Remark::Bytes);
     }
 }

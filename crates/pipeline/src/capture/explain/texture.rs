@@ -4,7 +4,7 @@
 
 use glam::{Vec2, Vec3};
 
-use super::{Lines, Owner, Section, TextureStep, n, v2, v3};
+use super::{Lines, Owner, Remark, Section, TextureStep, n, v2, v3};
 use crate::capture::FrameCapture;
 use crate::texture::{Filter, Lookup, Mipmap, Texture};
 
@@ -30,7 +30,7 @@ impl FrameCapture {
         lines.add(
             s,
             "uv = Σ_k b_k·uv_k",
-            format!("{}, {}, {} at the vertices", v2(a), v2(b), v2(c)),
+            format!("uv_k = {}, {}, {}", v2(a), v2(b), v2(c)),
             v2(uv),
         );
         for (axis, d, f) in [("x", dx, fx), ("y", dy, fy)] {
@@ -52,7 +52,7 @@ impl FrameCapture {
         if lookup.taps > 1 {
             lines.add(
                 s,
-                "N = min(⌈L_major/L_minor⌉, anisotropy); λ = log_2(L/N) + bias",
+                "N = min(⌈L_major/L_minor⌉, N_max); λ = log_2(L/N) + λ_bias",
                 format!(
                     "N = {}; log_2({}/{}) + {bias}",
                     lookup.taps,
@@ -61,10 +61,11 @@ impl FrameCapture {
                 ),
                 n(lookup.lod),
             );
+            lines.note(Remark::Anisotropic);
         } else {
             lines.add(
                 s,
-                "λ = log_2 L + bias",
+                "λ = log_2 L + λ_bias",
                 format!("log_2 {} + {bias}", n(major)),
                 n(lookup.lod),
             );
@@ -98,35 +99,41 @@ impl FrameCapture {
         let s = Section::Texture;
         let sampler = &self.settings.sampler;
         let max_level = texture.levels.len() - 1;
-        let (rule, result) = match sampler.mipmap {
-            _ if lookup.lod <= 0.0 => (
-                "λ ≤ 0: magnification, level 0".to_owned(),
-                "k = 0".to_owned(),
-            ),
-            Mipmap::None => ("no mipmap: level 0 always".to_owned(), "k = 0".to_owned()),
+        let (rule, result, remark) = match sampler.mipmap {
+            _ if lookup.lod <= 0.0 => ("k = 0", "k = 0".to_owned(), Remark::Magnification),
+            Mipmap::None => ("k = 0", "k = 0".to_owned(), Remark::NoMipmap),
             Mipmap::Nearest => (
-                format!("nearest level: k = ⌊λ + 1/2⌋, at most {max_level}"),
+                "k = ⌊λ + 1/2⌋",
                 format!("k = {}", lookup.level),
+                Remark::NearestLevel { max: max_level },
             ),
             Mipmap::Linear => (
-                format!("trilinear: k = ⌊λ⌋, t = λ − k (λ at most {max_level})"),
+                "k = ⌊λ⌋, t = λ − k",
                 format!("k = {}, t = {}", lookup.level, n(lookup.level_blend)),
+                Remark::Trilinear { max: max_level },
             ),
         };
-        lines.add(s, &rule, String::new(), result);
+        lines.add(s, rule, String::new(), result);
+        lines.note(remark);
         let level = &texture.levels[lookup.level as usize];
         let one_bilinear_tap = lookup.taps == 1 && sampler.filter == Filter::Bilinear;
         if !one_bilinear_tap {
+            let nearest = sampler.filter == Filter::Nearest && lookup.taps == 1;
             lines.add(
                 s,
-                if sampler.filter == Filter::Nearest && lookup.taps == 1 {
-                    "texel = T(⌊u·w_k⌋, ⌊v·h_k⌋)"
+                if nearest {
+                    "T = T(⌊u·w_k⌋, ⌊v·h_k⌋)"
                 } else {
-                    "c = mean of the N taps along the footprint's major axis"
+                    "T = Σ_j T_j/N"
                 },
                 String::new(),
                 v3(lookup.color),
             );
+            lines.note(if nearest {
+                Remark::NearestTexel
+            } else {
+                Remark::TapsMean
+            });
             return (None, Vec::new());
         }
         let taps = level.bilinear_taps(uv, sampler.wrap);
@@ -136,15 +143,17 @@ impl FrameCapture {
         lines.add(
             s,
             "x = u·w_k − 1/2, y = v·h_k − 1/2; s = x − ⌊x⌋, t = y − ⌊y⌋",
-            format!(
-                "texels ({i0}, {j0}), ({i1}, {j0}), ({i0}, {j1}), ({i1}, {j1}) of level {} ({}×{})",
-                lookup.level, level.width, level.height
-            ),
+            format!("({i0}, {j0}), ({i1}, {j0}), ({i0}, {j1}), ({i1}, {j1})"),
             format!("s = {}, t = {}", n(taps.s), n(taps.t)),
         );
+        lines.note(Remark::Texels {
+            level: lookup.level,
+            width: level.width,
+            height: level.height,
+        });
         lines.add(
             s,
-            "texel = lerp(lerp(T_00, T_10, s), lerp(T_01, T_11, s), t)",
+            "T = lerp(lerp(T_00, T_10, s), lerp(T_01, T_11, s), t)",
             format!(
                 "T = {}, {}, {}, {}",
                 v3(texels[0]),
@@ -157,13 +166,8 @@ impl FrameCapture {
         if lookup.level_blend > 0.0 {
             lines.add(
                 s,
-                "c = (1 − t)·c_k + t·c_(k+1)",
-                format!(
-                    "levels {} and {}, t = {}",
-                    lookup.level,
-                    lookup.level + 1,
-                    n(lookup.level_blend)
-                ),
+                "T = (1 − t)·T_k + t·T_{k+1}",
+                format!("k = {}, t = {}", lookup.level, n(lookup.level_blend)),
                 v3(lookup.color),
             );
         }

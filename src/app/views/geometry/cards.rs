@@ -1,0 +1,195 @@
+//! What the geometry view draws over the wireframe: the legend, the card with the stage's
+//! matrix, the selected vertex with its coordinates.
+
+use egui::{Align2, Color32, FontId, Pos2, Rect, Stroke, Vec2};
+use glam::Vec3;
+use pipeline::capture::FrameCapture;
+use pipeline::transform::{self, NamedMatrix};
+
+use super::position;
+use crate::app::session::{Session, Teaching};
+use crate::app::views::{Projector, label_with_background, palette, place_label, typeset};
+use crate::vocabulary::{Lang, Space, num, vec3, vec4};
+
+/// What each colour means, at the bottom-right.
+pub(super) fn legend(painter: &egui::Painter, rect: Rect, lang: Lang, stride: usize) {
+    let items = [
+        (Color32::from_gray(220), lang.tr("drawn", "绘制")),
+        (palette::CLIPPED, lang.tr("clipped", "被裁剪")),
+        (Color32::from_gray(90), lang.tr("outside", "在视见体外")),
+        (Color32::from_rgb(70, 90, 150), lang.tr("culled", "被剔除")),
+        (palette::NEAR, lang.tr("near plane", "近平面")),
+        (palette::FAR, lang.tr("far plane", "远平面")),
+        (palette::LIGHT, lang.tr("light", "光源")),
+    ];
+    let row = 18.0;
+    let w = 150.0;
+    let top = rect.bottom() - row * items.len() as f32 - 12.0;
+    let back = Rect::from_min_size(
+        Pos2::new(rect.right() - w - 10.0, top - 4.0),
+        Vec2::new(w + 4.0, row * items.len() as f32 + 8.0),
+    );
+    painter.rect_filled(back, 4.0, Color32::from_black_alpha(150));
+    for (k, (color, text)) in items.into_iter().enumerate() {
+        let p = Pos2::new(back.left() + 8.0, top + row * (k as f32 + 0.5));
+        painter.line_segment([p, p + Vec2::new(18.0, 0.0)], Stroke::new(3.0, color));
+        painter.text(
+            p + Vec2::new(24.0, 0.0),
+            Align2::LEFT_CENTER,
+            text,
+            FontId::proportional(14.0),
+            Color32::from_gray(230),
+        );
+    }
+    if stride > 1 {
+        label_with_background(
+            painter,
+            back.left_top() - Vec2::new(0.0, 4.0),
+            Align2::LEFT_BOTTOM,
+            &format!("{} 1/{stride}", lang.tr("showing triangles", "显示三角形")),
+            &FontId::proportional(13.0),
+            Color32::YELLOW,
+        );
+    }
+}
+
+/// The matrix the stage applies, big, in a card at the top-right: the object's model matrix, V,
+/// P, the division by w, the viewport.
+pub(super) fn matrix_card(
+    painter: &egui::Painter,
+    rect: Rect,
+    session: &Session,
+    capture: &FrameCapture,
+    space: Space,
+) {
+    let m = &capture.matrices;
+    let lang = session.lang;
+    let (title, matrix): (String, Option<&NamedMatrix>) = match (space, session.teaching()) {
+        (Space::World, Teaching::Model(k)) => match (m.models.get(k), capture.objects.get(k)) {
+            (Some(model), Some(o)) => (
+                format!("{} · {}", model.name, session.spec.label(&o.name, lang)),
+                Some(model),
+            ),
+            _ => return,
+        },
+        (Space::World, Teaching::Stack) => match capture.hierarchy.iter().find_map(|s| match s {
+            pipeline::hierarchy::Step::Visit { composite, .. } => Some(composite),
+            _ => None,
+        }) {
+            Some(c) => (c.name.clone(), Some(c)),
+            None => return,
+        },
+        (Space::Eye, _) => (m.view.name.clone(), Some(&m.view)),
+        (Space::Clip, _) => (m.projection.name.clone(), Some(&m.projection)),
+        (Space::Ndc, _) => (
+            "(x_ndc, y_ndc, z_ndc) = (x_c, y_c, z_c)/w_c".to_owned(),
+            None,
+        ),
+        (Space::Window, _) => (m.viewport.name.clone(), Some(&m.viewport)),
+        _ => return,
+    };
+    let size = (rect.width() / 42.0).clamp(13.0, 24.0);
+    let style = typeset::Style {
+        size,
+        color: Color32::WHITE,
+        accent: Color32::from_rgb(255, 214, 120),
+    };
+    let mono = FontId::monospace(size);
+    let rows = matrix.map(|mat| transform::to_rows(&mat.matrix));
+    let cells: Vec<Vec<std::sync::Arc<egui::Galley>>> = rows
+        .iter()
+        .flatten()
+        .map(|r| {
+            r.iter()
+                .map(|v| painter.layout_no_wrap(num(*v), mono.clone(), Color32::WHITE))
+                .collect()
+        })
+        .collect();
+    let col_w = cells
+        .iter()
+        .flatten()
+        .map(|g| g.size().x)
+        .fold(0.0f32, f32::max)
+        + size * 0.8;
+    let row_h = size * 1.3;
+    let title_galley_w = {
+        let probe =
+            painter.layout_no_wrap(title.clone(), FontId::proportional(size), Color32::WHITE);
+        probe.size().x
+    };
+    let width = (col_w * 4.0).max(title_galley_w) + size;
+    let height = size * 1.8 + if rows.is_some() { row_h * 4.0 } else { 0.0 } + size * 0.5;
+    let card = Rect::from_min_size(
+        Pos2::new(rect.right() - width - 10.0, rect.top() + 10.0),
+        Vec2::new(width, height),
+    );
+    painter.rect_filled(card, 6.0, Color32::from_black_alpha(190));
+    typeset::paint_formula(
+        painter,
+        card.left_top() + Vec2::new(size * 0.5, size * 0.4),
+        Align2::LEFT_TOP,
+        &title,
+        &style,
+    );
+    for (r, row) in cells.iter().enumerate() {
+        for (c, g) in row.iter().enumerate() {
+            let right = card.left() + size * 0.5 + col_w * (c as f32 + 1.0) - size * 0.4;
+            let y = card.top() + size * 1.8 + row_h * r as f32;
+            painter.galley(Pos2::new(right - g.size().x, y), g.clone(), Color32::WHITE);
+        }
+    }
+    // The bracket of the matrix.
+    if rows.is_some() {
+        let top = card.top() + size * 1.7;
+        let bottom = top + row_h * 4.0;
+        let stroke = Stroke::new(1.5, Color32::from_gray(200));
+        for x in [card.left() + size * 0.35, card.right() - size * 0.35] {
+            painter.line_segment([Pos2::new(x, top), Pos2::new(x, bottom)], stroke);
+        }
+    }
+}
+
+/// The selected vertex with its coordinates in this space, the label placed off the subject.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn draw_selected(
+    painter: &egui::Painter,
+    cam: &Projector,
+    session: &Session,
+    capture: &FrameCapture,
+    space: Space,
+    points: &[Option<Vec3>],
+    subject_on_screen: Rect,
+    view: Rect,
+) {
+    let Some(i) = session.selection.vertex else {
+        return;
+    };
+    let (Some(v), Some(Some(p))) = (
+        capture.vertices.get(i as usize),
+        points
+            .get(i as usize)
+            .map(|p| p.and_then(|p| cam.project(p))),
+    ) else {
+        return;
+    };
+    painter.circle_filled(p, 6.0, palette::SELECTED);
+    let text = if space == Space::Clip {
+        vec4(v.clip)
+    } else {
+        position(v, space).map_or_else(String::new, vec3)
+    };
+    let font = FontId::monospace(15.0);
+    let galley = painter.layout_no_wrap(format!("v{i} {text}"), font, palette::SELECTED);
+    let place = place_label(
+        p,
+        galley.size() + Vec2::splat(6.0),
+        subject_on_screen,
+        view.shrink(4.0),
+    );
+    painter.line_segment(
+        [p, place.center()],
+        Stroke::new(1.0, palette::SELECTED.gamma_multiply(0.7)),
+    );
+    painter.rect_filled(place, 3.0, Color32::from_black_alpha(180));
+    painter.galley(place.min + Vec2::splat(3.0), galley, palette::SELECTED);
+}

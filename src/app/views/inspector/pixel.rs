@@ -1,0 +1,253 @@
+//! The Pixel tab: the inspected pixel, its colour derived step by step (every line a formula of
+//! the course with the capture's numbers), and every fragment that reached it with its edge
+//! functions and depth test.
+
+use egui::{Color32, RichText, Ui};
+use pipeline::capture::{Fate, FragmentRecord, FrameCapture, PixelExplanation, PixelRecord};
+
+use crate::app::session::Session;
+use crate::app::views::typeset::{self, Style};
+use crate::vocabulary::{Lang, num, remark, section_name};
+
+/// Draws the tab.
+pub fn ui(ui: &mut Ui, session: &Session, capture: &FrameCapture, record: Option<&PixelRecord>) {
+    let lang = session.lang;
+    let style = Style::body(ui);
+    let Some(record) = record else {
+        typeset::paragraph(
+            ui,
+            lang.tr(
+                "Click a pixel in a pixel view (Rasterization, Depth, Shading, Texturing, Output) to see every fragment that reached it and how its colour was made.",
+                "在像素视图（光栅化、深度、着色、纹理、输出）中单击一个像素，查看到达它的每个片元以及它的颜色是如何得到的。",
+            ),
+            &style,
+        );
+        return;
+    };
+    let (x, y) = (record.x, record.y);
+    let s = capture.settings.samples.count();
+    ui.heading(format!("{} ({x}, {y})", lang.tr("Pixel", "像素")));
+    if let Some(e) = &record.explanation {
+        ui.label(
+            RichText::new(format!(
+                "{} · {} {}",
+                session.spec.label(&e.object, lang),
+                lang.tr("triangle", "三角形"),
+                e.primitive
+            ))
+            .strong(),
+        );
+    }
+    typeset::paragraph(
+        ui,
+        &format!(
+            "{}: {}/{s} · {}: z_w = {} · {}: ({}, {}, {})",
+            lang.tr("coverage", "覆盖"),
+            record.coverage,
+            lang.tr("depth (mean of samples)", "深度（采样平均）"),
+            num(record.depth),
+            lang.tr("colour", "颜色"),
+            num(record.color[0]),
+            num(record.color[1]),
+            num(record.color[2])
+        ),
+        &style,
+    );
+    swatch(ui, record.color);
+    match &record.explanation {
+        Some(e) => explanation(ui, e, lang),
+        None => {
+            ui.label(lang.tr(
+                "No fragment owns this pixel: it keeps the background.",
+                "没有片元拥有此像素：它保持背景色。",
+            ));
+        }
+    }
+    ui.separator();
+    ui.label(
+        RichText::new(lang.tr(
+            "Every fragment that reached the pixel",
+            "到达此像素的每个片元",
+        ))
+        .strong(),
+    );
+    if record.fragments.is_empty() {
+        ui.label(lang.tr("None.", "没有。"));
+    }
+    for (k, f) in record.fragments.iter().enumerate() {
+        fragment(ui, k, f, session, capture, lang);
+    }
+    if record.primitive.is_none() && !record.fragments.is_empty() {
+        ui.label(lang.tr(
+            "Every fragment failed the depth test.",
+            "所有片元都未通过深度测试。",
+        ));
+    }
+}
+
+fn swatch(ui: &mut Ui, c: [f32; 3]) {
+    let b = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as u8;
+    let (r, _) = ui.allocate_exact_size(egui::vec2(48.0, 16.0), egui::Sense::hover());
+    ui.painter()
+        .rect_filled(r, 2.0, Color32::from_rgb(b(c[0]), b(c[1]), b(c[2])));
+}
+
+/// "Explain this pixel": the derivation, part by part, each line a formula, the numbers put in,
+/// the value, and what it means.
+fn explanation(ui: &mut Ui, e: &PixelExplanation, lang: Lang) {
+    let style = Style::body(ui);
+    let formula_style = Style {
+        color: style.accent,
+        ..style
+    };
+    let numbers_style = style.sized(style.size * 0.92);
+    egui::CollapsingHeader::new(
+        RichText::new(lang.tr("Explain this pixel", "解释这个像素")).strong(),
+    )
+    .id_salt("explain")
+    .default_open(true)
+    .show(ui, |ui| {
+        let mut section = None;
+        for line in &e.lines {
+            if section != Some(line.section) {
+                section = Some(line.section);
+                ui.add_space(4.0);
+                ui.label(RichText::new(section_name(line.section, lang)).strong());
+            }
+            ui.indent(("line", line.formula.as_str()), |ui| {
+                typeset::paragraph(ui, &format!("**{}**", line.formula), &formula_style);
+                let mut rest = String::new();
+                if !line.numbers.is_empty() {
+                    rest.push_str(&format!("= {}", line.numbers));
+                }
+                if !line.result.is_empty() {
+                    rest.push_str(&format!(
+                        "{}= **{}**",
+                        if rest.is_empty() { "" } else { " " },
+                        line.result
+                    ));
+                }
+                if !rest.is_empty() {
+                    typeset::paragraph(ui, &rest, &numbers_style);
+                }
+                for r in &line.remarks {
+                    typeset::paragraph(
+                        ui,
+                        &remark(r, lang),
+                        &numbers_style.sized(style.size * 0.85),
+                    );
+                }
+            });
+        }
+    });
+}
+
+/// One fragment: its triangle, its edge functions at the centre, its samples' inside and depth
+/// tests, its depth and barycentrics.
+fn fragment(
+    ui: &mut Ui,
+    k: usize,
+    f: &FragmentRecord,
+    session: &Session,
+    capture: &FrameCapture,
+    lang: Lang,
+) {
+    let prim = &capture.primitives[f.primitive as usize];
+    let object = capture
+        .objects
+        .get(prim.object as usize)
+        .map(|o| session.spec.label(&o.name, lang))
+        .unwrap_or_default();
+    let title = format!(
+        "{} {} · {object} · {} {}{}",
+        lang.tr("fragment", "片元"),
+        k + 1,
+        lang.tr("triangle", "三角形"),
+        f.primitive,
+        if f.visible {
+            lang.tr("  √ visible", "  √ 可见")
+        } else {
+            ""
+        }
+    );
+    let style = Style::body(ui);
+    egui::CollapsingHeader::new(RichText::new(title).strong())
+        .id_salt(("frag", k))
+        .default_open(k < 3)
+        .show(ui, |ui| {
+            if prim.fate == Fate::Clipped {
+                ui.label(lang.tr(
+                    "(a piece of a clipped triangle)",
+                    "（被裁剪三角形的一部分）",
+                ));
+            }
+            let e = &f.edges;
+            typeset::paragraph(
+                ui,
+                &format!(
+                    "**E_0, E_1, E_2** = ({}, {}, {}) · **λ** = ({}, {}, {})",
+                    num(e.centre[0] as f32),
+                    num(e.centre[1] as f32),
+                    num(e.centre[2] as f32),
+                    num(e.lambda[0] as f32),
+                    num(e.lambda[1] as f32),
+                    num(e.lambda[2] as f32)
+                ),
+                &style,
+            );
+            ui.horizontal_wrapped(|ui| {
+                ui.label(lang.tr("samples:", "采样点："));
+                for (si, outcome) in f.samples.iter().enumerate() {
+                    let (text, color) = match outcome {
+                        None => ("·", Color32::GRAY),
+                        Some(true) => ("√", Color32::from_rgb(90, 210, 90)),
+                        Some(false) => ("×", Color32::from_rgb(235, 80, 80)),
+                    };
+                    let tie = e.samples.get(si).filter(|q| !q.on_edges.is_empty());
+                    ui.label(
+                        RichText::new(format!(
+                            "{si}{text}{}",
+                            if tie.is_some() { "*" } else { "" }
+                        ))
+                        .color(color)
+                        .monospace(),
+                    )
+                    .on_hover_text(match (outcome, f.sample_depths[si]) {
+                        (None, _) => lang.tr("not covered", "未覆盖").to_owned(),
+                        (Some(true), Some(z)) => format!(
+                            "{} z = {}",
+                            lang.tr("covered, passed the depth test:", "被覆盖，通过深度测试："),
+                            num(z)
+                        ),
+                        (Some(false), Some(z)) => format!(
+                            "{} z = {}",
+                            lang.tr(
+                                "covered, failed the depth test:",
+                                "被覆盖，未通过深度测试："
+                            ),
+                            num(z)
+                        ),
+                        _ => String::new(),
+                    });
+                }
+            });
+            if e.samples.iter().any(|q| !q.on_edges.is_empty()) {
+                ui.label(lang.tr(
+                    "* on an edge: the top-left rule decided",
+                    "* 在边上：由左上填充规则决定",
+                ));
+            }
+            let b = f.bary_perspective;
+            typeset::paragraph(
+                ui,
+                &format!(
+                    "z_w = {} · **b** = ({}, {}, {})",
+                    num(f.depth),
+                    num(b[0]),
+                    num(b[1]),
+                    num(b[2])
+                ),
+                &style,
+            );
+        });
+}

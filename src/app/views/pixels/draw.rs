@@ -1,0 +1,339 @@
+//! What the pixel view draws over the image: the pixel grid and sample points when zoomed in,
+//! the overlays (the capture's own shapes), the lighting vectors at the inspected pixel, the
+//! inspected pixel and the selected vertex, the inside test of the inspected pixel's triangle
+//! (its edge functions), and the mip-level legend.
+
+use egui::{Color32, Pos2, Rect, Stroke, Vec2};
+use pipeline::capture::FrameCapture;
+use pipeline::overlay::{OverlayKind, Shape};
+use pipeline::raster::{NONE, sample_offsets_image};
+
+use super::ImageViewport;
+use crate::app::session::Selection;
+use crate::app::views::palette;
+use crate::vocabulary::Lang;
+
+/// The most overlay shapes drawn at once (a million-triangle mesh would stall the UI).
+const MAX_SHAPES: usize = 20_000;
+
+/// Draws an overlay shape (image pixel coordinates) with egui.
+pub fn draw_shape(painter: &egui::Painter, shape: &Shape, to_screen: &dyn Fn([f32; 2]) -> Pos2) {
+    let color = |c: [u8; 4]| Color32::from_rgba_unmultiplied(c[0], c[1], c[2], c[3]);
+    match shape {
+        Shape::Polyline {
+            points,
+            closed,
+            color: c,
+            width,
+        } => {
+            // Separate segments: a joined outline of a sliver triangle gets miter spikes.
+            let pts: Vec<Pos2> = points.iter().map(|p| to_screen(*p)).collect();
+            let stroke = Stroke::new(*width, color(*c));
+            for pair in pts.windows(2) {
+                painter.line_segment([pair[0], pair[1]], stroke);
+            }
+            if *closed && let (Some(first), Some(last)) = (pts.first(), pts.last()) {
+                painter.line_segment([*last, *first], stroke);
+            }
+        }
+        Shape::Rect {
+            min,
+            max,
+            color: c,
+            width,
+        } => {
+            painter.rect_stroke(
+                Rect::from_min_max(to_screen(*min), to_screen(*max)),
+                0.0,
+                Stroke::new(*width, color(*c)),
+                egui::StrokeKind::Middle,
+            );
+        }
+        Shape::Dot {
+            center,
+            radius,
+            color: c,
+        } => {
+            painter.circle_filled(to_screen(*center), *radius, color(*c));
+        }
+    }
+}
+
+/// Pixel borders, when pixels are big enough to see them.
+pub(super) fn draw_grid(painter: &egui::Painter, view: &ImageViewport) {
+    let (c0, r0, c1, r1) = view.visible();
+    let stroke = Stroke::new(1.0, Color32::from_rgba_unmultiplied(128, 128, 128, 90));
+    for c in c0..=c1 {
+        let x = c as f32;
+        painter.line_segment(
+            [
+                view.to_screen([x, r0 as f32]),
+                view.to_screen([x, r1 as f32]),
+            ],
+            stroke,
+        );
+    }
+    for r in r0..=r1 {
+        let y = r as f32;
+        painter.line_segment(
+            [
+                view.to_screen([c0 as f32, y]),
+                view.to_screen([c1 as f32, y]),
+            ],
+            stroke,
+        );
+    }
+}
+
+/// Each visible pixel's sample positions (filled when covered) and, with several samples, its centre.
+pub(super) fn draw_samples(painter: &egui::Painter, view: &ImageViewport, capture: &FrameCapture) {
+    let (c0, r0, c1, r1) = view.visible();
+    let offsets = sample_offsets_image(capture.settings.samples);
+    let radius = (view.zoom / 14.0).clamp(1.5, 5.0);
+    for r in r0..r1 {
+        let y = capture.height() - 1 - r;
+        for c in c0..c1 {
+            for (k, o) in offsets.iter().enumerate() {
+                let p = view.to_screen([c as f32 + o[0], r as f32 + o[1]]);
+                if capture.samples.triangle[capture.samples.index(c, y, k)] != NONE {
+                    painter.circle_filled(p, radius, Color32::WHITE);
+                }
+                painter.circle_stroke(p, radius, Stroke::new(1.0, Color32::BLACK));
+            }
+            if offsets.len() > 1 {
+                let m = view.to_screen([c as f32 + 0.5, r as f32 + 0.5]);
+                let s = Stroke::new(1.0, Color32::GRAY);
+                painter.line_segment([m - Vec2::X * 3.0, m + Vec2::X * 3.0], s);
+                painter.line_segment([m - Vec2::Y * 3.0, m + Vec2::Y * 3.0], s);
+            }
+        }
+    }
+}
+
+/// The selected overlays, from the capture's own shape descriptions.
+pub(super) fn draw_overlays(
+    painter: &egui::Painter,
+    view: &ImageViewport,
+    capture: &FrameCapture,
+    overlays: &[OverlayKind],
+    lang: Lang,
+) {
+    let mut drawn = 0;
+    for &kind in overlays {
+        for shape in capture.overlay_shapes(kind).take(MAX_SHAPES - drawn) {
+            drawn += 1;
+            draw_shape(painter, &shape, &|p| view.to_screen(p));
+        }
+    }
+    if drawn >= MAX_SHAPES {
+        painter.text(
+            view.rect.left_bottom() + Vec2::new(8.0, -8.0),
+            egui::Align2::LEFT_BOTTOM,
+            lang.tr(
+                "overlays: first 20 000 shapes only",
+                "叠加层：只显示前 20000 个图形",
+            ),
+            egui::FontId::proportional(13.0),
+            Color32::YELLOW,
+        );
+    }
+}
+
+/// At the inspected pixel of a lit image, the vectors of the lighting drawn from the surface
+/// point: the normal n, the light vector l, the view vector v and the half vector h (the capture
+/// computes them; here they are only projected and drawn).
+pub(super) fn draw_light_vectors(
+    painter: &egui::Painter,
+    view: &ImageViewport,
+    capture: &FrameCapture,
+    sel: &Selection,
+    lang: Lang,
+) {
+    let Some(v) = sel.pixel.and_then(|(x, y)| capture.pixel_vectors(x, y)) else {
+        return;
+    };
+    let length = 0.15 * (capture.camera.eye - v.position).length();
+    for (vector, name, color) in [
+        (v.normal, "n", Color32::WHITE),
+        (v.light, "l", Color32::from_rgb(255, 210, 60)),
+        (v.view, "v", Color32::from_gray(150)),
+        (v.half, "h", Color32::from_rgb(90, 220, 255)),
+    ] {
+        let Some([a, b]) = capture.world_segment_to_image(v.position, v.position + vector * length)
+        else {
+            continue;
+        };
+        let (a, b) = (view.to_screen(a), view.to_screen(b));
+        painter.arrow(a, b - a, Stroke::new(2.5, color));
+        painter.text(
+            b + (b - a).normalized() * 10.0,
+            egui::Align2::CENTER_CENTER,
+            name,
+            egui::FontId::proportional(18.0),
+            color,
+        );
+    }
+    // The legend, wrapped to the view's width (it may be half the panel beside the observer).
+    let galley = painter.layout(
+        lang.tr(
+            "at the inspected pixel: n normal, l to the light, v to the eye, h = (l + v)/|l + v|",
+            "在所检查的像素处：n 法线，l 指向光源，v 指向视点，h = (l + v)/|l + v|",
+        )
+        .to_owned(),
+        egui::FontId::proportional(14.0),
+        Color32::WHITE,
+        view.rect.width() - 16.0,
+    );
+    painter.galley(
+        view.rect.left_top() + Vec2::new(8.0, 8.0),
+        galley,
+        Color32::WHITE,
+    );
+}
+
+/// The colours of the mip levels, with their numbers.
+pub(super) fn draw_mip_legend(painter: &egui::Painter, rect: Rect, lang: Lang) {
+    let origin = rect.right_top() + Vec2::new(-230.0, 10.0);
+    painter.rect_filled(
+        Rect::from_min_size(origin, Vec2::new(220.0, 54.0)),
+        4.0,
+        Color32::from_black_alpha(190),
+    );
+    painter.text(
+        origin + Vec2::new(8.0, 6.0),
+        egui::Align2::LEFT_TOP,
+        lang.tr("mip level", "mipmap 层级"),
+        egui::FontId::proportional(13.0),
+        Color32::WHITE,
+    );
+    for k in 0..8u32 {
+        let c = pipeline::texture::level_color(k)
+            .to_array()
+            .map(|v| (v.clamp(0.0, 1.0) * 255.0) as u8);
+        let at = origin + Vec2::new(8.0 + k as f32 * 26.0, 26.0);
+        painter.rect_filled(
+            Rect::from_min_size(at, Vec2::new(22.0, 22.0)),
+            2.0,
+            Color32::from_rgb(c[0], c[1], c[2]),
+        );
+        let label = if k == 7 {
+            "7+".to_owned()
+        } else {
+            k.to_string()
+        };
+        painter.text(
+            at + Vec2::new(11.0, 11.0),
+            egui::Align2::CENTER_CENTER,
+            label,
+            egui::FontId::proportional(12.0),
+            if k == 0 || k == 3 {
+                Color32::BLACK
+            } else {
+                Color32::WHITE
+            },
+        );
+    }
+}
+
+/// The selected vertex (a ring at its window position) and the inspected pixel (a frame).
+pub(super) fn draw_selection(
+    painter: &egui::Painter,
+    view: &ImageViewport,
+    capture: &FrameCapture,
+    sel: &Selection,
+) {
+    if let Some(v) = sel.vertex.and_then(|i| capture.vertices.get(i as usize))
+        && let Some(win) = v.window
+    {
+        let p = view.to_screen(capture.window_to_image(win));
+        painter.circle_stroke(p, 7.0, Stroke::new(2.5, palette::SELECTED));
+        if let Some(i) = sel.vertex {
+            crate::app::views::label_with_background(
+                painter,
+                p + Vec2::new(9.0, -9.0),
+                egui::Align2::LEFT_BOTTOM,
+                &format!("v{i}"),
+                &egui::FontId::monospace(14.0),
+                palette::SELECTED,
+            );
+        }
+    }
+    if let Some((x, y)) = sel.pixel {
+        let r = (capture.height() - 1 - y) as f32;
+        let a = view.to_screen([x as f32, r]);
+        let b = view.to_screen([x as f32 + 1.0, r + 1.0]);
+        painter.rect_stroke(
+            Rect::from_min_max(a, b).expand(1.0),
+            0.0,
+            Stroke::new(2.0, palette::SELECTED),
+            egui::StrokeKind::Outside,
+        );
+    }
+}
+
+/// The inside test of the inspected pixel's owning triangle, on the pixel grid: its three edges
+/// in the colours of `E_0`, `E_1`, `E_2` with their values at the pixel centre, each sample
+/// filled when covered, ringed where it lies exactly on an edge (the fill rule decided).
+pub(super) fn draw_edge_test(
+    painter: &egui::Painter,
+    view: &ImageViewport,
+    record: &pipeline::capture::PixelRecord,
+    lang: Lang,
+) {
+    let Some(f) = record
+        .fragments
+        .iter()
+        .find(|f| f.visible)
+        .or(record.fragments.last())
+    else {
+        return;
+    };
+    let e = &f.edges;
+    const EDGE: [Color32; 3] = [
+        Color32::from_rgb(255, 110, 110),
+        Color32::from_rgb(110, 235, 110),
+        Color32::from_rgb(120, 170, 255),
+    ];
+    let font = egui::FontId::proportional(15.0);
+    for (k, &edge_color) in EDGE.iter().enumerate() {
+        let (a, b) = (e.corners[(k + 1) % 3], e.corners[(k + 2) % 3]);
+        let (pa, pb) = (view.window_to_screen(a), view.window_to_screen(b));
+        painter.line_segment([pa, pb], Stroke::new(2.5, edge_color));
+        // The label sits on the inner side of the edge, near the pixel if the edge passes it.
+        let centre = view.window_to_screen(e.centre_position);
+        let along = (pb - pa).normalized();
+        let t = (centre - pa).dot(along).clamp(0.0, (pb - pa).length());
+        let foot = pa + along * t;
+        let inward = (centre - foot).normalized();
+        let at = foot
+            + if inward.is_finite() {
+                inward * 14.0
+            } else {
+                Vec2::ZERO
+            };
+        let tl = if e.top_left[k] {
+            lang.tr(" (top/left)", "（上/左边）")
+        } else {
+            ""
+        };
+        crate::app::views::label_with_background(
+            painter,
+            at,
+            egui::Align2::CENTER_CENTER,
+            &format!("E{k} = {}{tl}", crate::vocabulary::num(e.centre[k] as f32)),
+            &font,
+            edge_color,
+        );
+    }
+    let radius = (view.zoom / 10.0).clamp(3.0, 7.0);
+    for s in &e.samples {
+        let p = view.window_to_screen(s.position);
+        if s.inside {
+            painter.circle_filled(p, radius, Color32::WHITE);
+        }
+        painter.circle_stroke(p, radius, Stroke::new(1.5, Color32::BLACK));
+        for &k in &s.on_edges {
+            painter.circle_stroke(p, radius + 3.0, Stroke::new(2.0, EDGE[k]));
+        }
+    }
+}

@@ -1,0 +1,493 @@
+//! A pixel buffer as an image: zoom and pan, crisp pixels, the pixel grid, sample points and
+//! overlays when zoomed in (see [`draw`]), values under the cursor, a click to inspect a pixel;
+//! under the depth buffer the curve of window depth against distance, under a texturing buffer
+//! the mip pyramid (see [`extras`]).
+
+mod draw;
+mod extras;
+
+pub use draw::draw_shape;
+
+use egui::{Color32, Pos2, Rect, RichText, Sense, TextureOptions, Ui, Vec2};
+use pipeline::buffers::BufferKind;
+use pipeline::capture::FrameCapture;
+use pipeline::overlay::OverlayKind;
+
+use crate::app::session::{Command, Selection, Session};
+use crate::vocabulary::{Lang, buffer_name, num};
+
+/// Zoom and pan of the pixel view, its texture caches, and where it drew the picture.
+pub struct PixelView {
+    /// Screen points per image pixel; `None` fits the image to the panel.
+    zoom: Option<f32>,
+    /// The image point at the centre of the view.
+    centre: Option<Vec2>,
+    /// The texture of the buffer shown, with the generation and kind it was made from.
+    texture: super::BufferTexture,
+    /// The mip levels' textures.
+    pyramid: extras::Pyramid,
+    /// Show the mip pyramid under a texturing buffer.
+    show_pyramid: bool,
+    /// The inspected pixel's record, per capture and pixel.
+    record: Option<(u64, (u32, u32), pipeline::capture::PixelRecord)>,
+    /// Where the picture (the image, the depth curve, the pyramid) was drawn this frame.
+    pub picture: Vec<Rect>,
+}
+
+impl Default for PixelView {
+    fn default() -> Self {
+        Self {
+            zoom: None,
+            centre: None,
+            texture: super::BufferTexture::default(),
+            pyramid: extras::Pyramid::default(),
+            show_pyramid: true,
+            record: None,
+            picture: Vec::new(),
+        }
+    }
+}
+
+fn overlay_name(kind: OverlayKind, l: Lang) -> &'static str {
+    match kind {
+        OverlayKind::TriangleEdges => l.tr("Triangle edges", "三角形边"),
+        OverlayKind::BoundingBoxes => l.tr("Bounding boxes", "包围盒"),
+    }
+}
+
+impl PixelView {
+    /// The toolbar: buffer, overlays, samples, zoom reset.
+    pub fn toolbar(
+        &mut self,
+        ui: &mut Ui,
+        sel: &Selection,
+        available: &[BufferKind],
+        lang: Lang,
+    ) -> Vec<Command> {
+        let mut cmds = Vec::new();
+        ui.horizontal_wrapped(|ui| {
+            egui::ComboBox::new("buffer", lang.tr("buffer", "缓冲"))
+                .selected_text(buffer_name(sel.buffer, lang))
+                .show_ui(ui, |ui| {
+                    for kind in available.iter().copied() {
+                        if ui
+                            .selectable_label(sel.buffer == kind, buffer_name(kind, lang))
+                            .on_hover_text(kind.mapping())
+                            .clicked()
+                        {
+                            cmds.push(Command::SelectBuffer(kind));
+                        }
+                    }
+                });
+            for kind in OverlayKind::ALL {
+                let mut on = sel.overlays.contains(&kind);
+                if ui.checkbox(&mut on, overlay_name(kind, lang)).changed() {
+                    cmds.push(Command::ToggleOverlay(kind));
+                }
+            }
+            let mut samples = sel.show_samples;
+            if ui
+                .checkbox(&mut samples, lang.tr("Sample points", "采样点"))
+                .on_hover_text(lang.tr(
+                    "Zoom in to see each pixel's sample positions: filled when covered.",
+                    "放大后显示每个像素的采样位置：被覆盖时为实心。",
+                ))
+                .changed()
+            {
+                cmds.push(Command::ToggleSamples);
+            }
+            if sel.buffer.is_texturing() {
+                ui.checkbox(&mut self.show_pyramid, lang.tr("mip pyramid", "mipmap 金字塔"))
+                    .on_hover_text(lang.tr(
+                        "Every level of the texture at once: each the 2×2 box filter of the one before.",
+                        "同时显示纹理的所有层级：每一层是上一层的 2×2 盒式滤波。",
+                    ));
+            }
+            if ui
+                .button(lang.tr("Fit", "适应窗口"))
+                .on_hover_text(lang.tr(
+                    "Zoom to fit (double-click the image)",
+                    "缩放以适应（双击图像）",
+                ))
+                .clicked()
+            {
+                self.zoom = None;
+                self.centre = None;
+            }
+        });
+        cmds
+    }
+
+    /// The depth buffer's drawing: linear or not, and its range.
+    pub fn depth_controls(
+        ui: &mut Ui,
+        sel: &Selection,
+        capture: &FrameCapture,
+        lang: Lang,
+    ) -> Option<Command> {
+        let mut view = sel.depth_view;
+        ui.horizontal_wrapped(|ui| {
+            ui.checkbox(&mut view.linear, lang.tr("linear: eye distance", "线性：相机距离"))
+                .on_hover_text(lang.tr(
+                    "z_w is not linear in distance: d = 2fn/((f+n) − z_ndc·(f−n)). Most of [0, 1] goes to the near part of the frustum.",
+                    "z_w 与距离不成线性：d = 2fn/((f+n) − z_ndc·(f−n))。[0, 1] 的大部分分给了视锥体的近处。",
+                ));
+            let value = |z: f32| if view.linear { capture.eye_depth(z) } else { z };
+            let auto = capture.depth_range().map_or([0.0, 1.0], |[a, b]| [value(a), value(b)]);
+            let mut range = view.range.unwrap_or(auto);
+            let speed = ((range[1] - range[0]).abs() / 200.0).max(1e-5);
+            let a = ui.add(egui::DragValue::new(&mut range[0]).speed(speed).max_decimals(5).prefix(lang.tr("black at ", "黑：")));
+            let b = ui.add(egui::DragValue::new(&mut range[1]).speed(speed).max_decimals(5).prefix(lang.tr("white at ", "白：")));
+            if a.changed() || b.changed() {
+                view.range = Some(range);
+            }
+            if ui.button(lang.tr("auto range", "自动范围")).clicked() {
+                view.range = None;
+            }
+            if view.linear != sel.depth_view.linear {
+                view.range = None;
+            }
+        });
+        (view != sel.depth_view).then_some(Command::SetDepthView(view))
+    }
+
+    /// The image view itself.
+    pub fn ui(&mut self, ui: &mut Ui, session: &Session, capture: &FrameCapture) -> Vec<Command> {
+        let sel = &session.selection;
+        let lang = session.lang;
+        let mut cmds = Vec::new();
+        let depth = sel.depth_view;
+        let variant = if sel.buffer == BufferKind::Depth {
+            let [a, b] = depth.range.unwrap_or([f32::NAN; 2]);
+            (u64::from(a.to_bits()) << 32 | u64::from(b.to_bits())) ^ u64::from(depth.linear)
+        } else {
+            0
+        };
+        let texture = self.texture.get_with(
+            ui.ctx(),
+            "pixel-view",
+            (session.shown_generation, sel.buffer, variant),
+            TextureOptions::NEAREST,
+            || match sel.buffer {
+                BufferKind::Depth => capture.depth_image(depth.linear, depth.range),
+                kind => capture.image(kind),
+            },
+        );
+        let full = ui.available_rect_before_wrap();
+        let offered = session.buffers.contains(&sel.buffer) || !sel.buffer.is_texturing();
+        let wants_extra = sel.buffer == BufferKind::Depth
+            || (sel.buffer.is_texturing() && self.show_pyramid && !capture.textures.is_empty());
+        let (rect, extra) = layout(full, capture, wants_extra);
+        let response = ui.allocate_rect(rect, Sense::click_and_drag());
+        self.picture.clear();
+        response.widget_info(|| {
+            egui::WidgetInfo::labeled(egui::Role::Image, true, lang.tr("pixel view", "像素视图"))
+        });
+        let painter = ui.painter_at(rect);
+        painter.rect_filled(rect, 0.0, Color32::from_gray(24));
+        if response.double_clicked() {
+            self.zoom = None;
+            self.centre = None;
+            return cmds;
+        }
+        let view = self.navigate(ui, &response, rect, capture);
+        let image = Rect::from_min_max(
+            view.to_screen([0.0, 0.0]),
+            view.to_screen([view.size.x, view.size.y]),
+        );
+        self.picture.push(image.intersect(rect));
+        painter.image(
+            texture.id(),
+            Rect::from_min_max(
+                view.to_screen([0.0, 0.0]),
+                view.to_screen([view.size.x, view.size.y]),
+            ),
+            Rect::from_min_max(Pos2::ZERO, Pos2::new(1.0, 1.0)),
+            Color32::WHITE,
+        );
+        if view.zoom >= 6.0 {
+            draw::draw_grid(&painter, &view);
+        }
+        if view.zoom >= 14.0 && sel.show_samples {
+            draw::draw_samples(&painter, &view, capture);
+        }
+        draw::draw_overlays(&painter, &view, capture, &sel.overlays, lang);
+        draw::draw_selection(&painter, &view, capture, sel);
+        let record = self.record(session, capture);
+        if let Some(r) = &record
+            && matches!(
+                session.selection.stage,
+                crate::vocabulary::Stage::Raster | crate::vocabulary::Stage::Depth
+            )
+            && view.zoom >= 10.0
+        {
+            draw::draw_edge_test(&painter, &view, r, lang);
+        }
+        if sel.buffer.is_lighting() || sel.buffer == BufferKind::Color {
+            draw::draw_light_vectors(&painter, &view, capture, sel, lang);
+        }
+        if sel.buffer == BufferKind::MipLevel {
+            draw::draw_mip_legend(&painter, rect, lang);
+        }
+        status_message(&painter, rect, capture, sel.buffer, offered, lang);
+        if let Some(below) = extra {
+            self.picture.push(below);
+            if sel.buffer == BufferKind::Depth {
+                extras::depth_curve(
+                    ui,
+                    below,
+                    capture,
+                    sel.depth_view.range.filter(|_| !sel.depth_view.linear),
+                    lang,
+                );
+            } else {
+                self.pyramid.ui(ui, below, capture, record.as_ref(), lang);
+            }
+        }
+        cmds.extend(hover_and_click(&response, &view, capture, lang));
+        cmds
+    }
+
+    /// The inspected pixel's record, computed once per capture and pixel (replaying the fragments
+    /// walks every triangle).
+    fn record(
+        &mut self,
+        session: &Session,
+        capture: &FrameCapture,
+    ) -> Option<pipeline::capture::PixelRecord> {
+        let (x, y) = session.selection.pixel?;
+        let key = (session.shown_generation, (x, y));
+        if self.record.as_ref().is_none_or(|(g, p, _)| (*g, *p) != key) {
+            self.record = capture.pixel_record(x, y).map(|r| (key.0, key.1, r));
+        }
+        self.record.as_ref().map(|(_, _, r)| r.clone())
+    }
+
+    /// Applies wheel zoom (about the cursor) and drag pan; returns the mapping to use.
+    fn navigate(
+        &mut self,
+        ui: &Ui,
+        response: &egui::Response,
+        rect: Rect,
+        capture: &FrameCapture,
+    ) -> ImageViewport {
+        let size = Vec2::new(capture.width() as f32, capture.height() as f32);
+        let fit = (rect.width() / size.x).min(rect.height() / size.y);
+        let range = (fit.min(1.0) * 0.5, 256.0);
+        let mut zoom = self.zoom.unwrap_or(fit).clamp(range.0, range.1);
+        let mut centre = self.centre.unwrap_or(size / 2.0);
+        if let Some(pointer) = response.hover_pos() {
+            let scroll = ui.input(|i| i.smooth_scroll_delta.y + i.zoom_delta().ln() * 200.0);
+            if scroll != 0.0 {
+                let new_zoom = (zoom * (scroll / 200.0).exp()).clamp(range.0, range.1);
+                let under = centre + (pointer - rect.center()) / zoom;
+                centre = under - (pointer - rect.center()) / new_zoom;
+                zoom = new_zoom;
+                self.zoom = Some(zoom);
+            }
+        }
+        if response.dragged() {
+            centre -= response.drag_delta() / zoom;
+        }
+        self.centre = Some(centre);
+        ImageViewport {
+            rect,
+            centre,
+            zoom,
+            size,
+        }
+    }
+}
+
+/// The values of one pixel, for the hover tooltip.
+fn pixel_tooltip(ui: &mut Ui, capture: &FrameCapture, x: u32, y: u32, lang: Lang) {
+    let i = ((capture.height() - 1 - y) * capture.width() + x) as usize;
+    let px = &capture.pixels;
+    ui.label(RichText::new(format!("{} ({x}, {y})", lang.tr("pixel", "像素"))).strong());
+    ui.label(format!(
+        "{}: {}/{}",
+        lang.tr("coverage", "覆盖"),
+        px.coverage[i],
+        capture.settings.samples.count()
+    ));
+    ui.label(format!(
+        "{} z_w: {} ({} {})",
+        lang.tr("depth", "深度"),
+        num(px.depth[i]),
+        lang.tr("eye distance", "相机距离"),
+        num(capture.eye_depth(px.depth[i]))
+    ));
+    if let Some(bary) = capture.barycentrics(i) {
+        let (b, a) = (bary.perspective, bary.affine);
+        ui.label(format!(
+            "{}: {}",
+            lang.tr("primitive", "图元"),
+            px.primitive[i]
+        ));
+        ui.label(format!(
+            "b (persp.) = ({}, {}, {})",
+            num(b[0]),
+            num(b[1]),
+            num(b[2])
+        ));
+        ui.label(format!(
+            "λ (affine) = ({}, {}, {})",
+            num(a[0]),
+            num(a[1]),
+            num(a[2])
+        ));
+    }
+    let c = px.color[i];
+    ui.label(format!(
+        "RGB = ({}, {}, {})",
+        num(c[0]),
+        num(c[1]),
+        num(c[2])
+    ));
+    ui.label(RichText::new(lang.tr("click to inspect", "单击查看详情")).weak());
+}
+
+/// Where the image is on screen: `centre` (image pixels) at the middle of `rect`, `zoom` screen
+/// points per image pixel.
+struct ImageViewport {
+    rect: Rect,
+    centre: Vec2,
+    zoom: f32,
+    size: Vec2,
+}
+
+impl ImageViewport {
+    /// Window coordinates (y up) to the screen.
+    fn window_to_screen(&self, p: [f64; 2]) -> Pos2 {
+        self.to_screen([p[0] as f32, self.size.y - p[1] as f32])
+    }
+}
+
+impl ImageViewport {
+    fn to_screen(&self, p: [f32; 2]) -> Pos2 {
+        self.rect.center() + (Vec2::new(p[0], p[1]) - self.centre) * self.zoom
+    }
+
+    fn to_image(&self, s: Pos2) -> Vec2 {
+        self.centre + (s - self.rect.center()) / self.zoom
+    }
+
+    /// The visible image pixels: columns `c0..c1`, rows `r0..r1`.
+    fn visible(&self) -> (u32, u32, u32, u32) {
+        let (a, b) = (self.to_image(self.rect.min), self.to_image(self.rect.max));
+        (
+            a.x.floor().clamp(0.0, self.size.x) as u32,
+            a.y.floor().clamp(0.0, self.size.y) as u32,
+            b.x.ceil().clamp(0.0, self.size.x) as u32,
+            b.y.ceil().clamp(0.0, self.size.y) as u32,
+        )
+    }
+
+    /// The window pixel (x, y up) under a screen point, if it is on the image.
+    fn window_pixel(&self, pos: Pos2, capture: &FrameCapture) -> Option<(u32, u32)> {
+        let ip = self.to_image(pos);
+        (ip.x >= 0.0 && ip.y >= 0.0 && ip.x < self.size.x && ip.y < self.size.y)
+            .then(|| (ip.x as u32, capture.height() - 1 - ip.y as u32))
+    }
+}
+
+/// Where the image goes in `full`, and the depth curve or the mip pyramid when `extra`: beside
+/// the image when the view is wider than the image (the space would be empty otherwise), below it
+/// when it is taller.
+fn layout(full: Rect, capture: &FrameCapture, extra: bool) -> (Rect, Option<Rect>) {
+    let aspect = capture.width() as f32 / capture.height() as f32;
+    if !extra {
+        (full, None)
+    } else if full.width() > full.height() * aspect * 1.15 {
+        let w = (full.width() - full.height() * aspect).max(full.width() * 0.3);
+        let image = Rect::from_min_max(full.min, egui::pos2(full.right() - w - 6.0, full.bottom()));
+        (
+            image,
+            Some(Rect::from_min_max(
+                egui::pos2(full.right() - w, full.top()),
+                full.max,
+            )),
+        )
+    } else {
+        let h = full.height() * 0.32;
+        let image = Rect::from_min_max(full.min, egui::pos2(full.right(), full.bottom() - h - 6.0));
+        (
+            image,
+            Some(Rect::from_min_max(
+                egui::pos2(full.left(), full.bottom() - h),
+                full.max,
+            )),
+        )
+    }
+}
+
+/// Why the image shows nothing (no texture in the scene), or that the buffer is on its way.
+fn status_message(
+    painter: &egui::Painter,
+    rect: Rect,
+    capture: &FrameCapture,
+    buffer: BufferKind,
+    offered: bool,
+    lang: Lang,
+) {
+    let text = if !offered {
+        lang.tr(
+            "No object of this scene is textured: there is no texture lookup to show.",
+            "此场景中没有物体带纹理：没有可显示的纹理查询。",
+        )
+    } else if !capture.settings.capture.keeps(buffer) {
+        // The capture shown kept only what the previous view needed; the render that keeps
+        // this buffer is under way.
+        lang.tr("rendering this buffer…", "正在渲染此缓冲…")
+    } else {
+        return;
+    };
+    crate::app::views::label_with_background(
+        painter,
+        rect.center(),
+        egui::Align2::CENTER_CENTER,
+        text,
+        &egui::FontId::proportional(18.0),
+        Color32::from_gray(235),
+    );
+}
+
+/// Hover: the values of the pixel under the cursor; click: inspect it, and select the vertex of
+/// its triangle nearest the click (its vertex-table row).
+fn hover_and_click(
+    response: &egui::Response,
+    view: &ImageViewport,
+    capture: &FrameCapture,
+    lang: Lang,
+) -> Vec<Command> {
+    let mut cmds = Vec::new();
+    let Some(pos) = response.hover_pos() else {
+        return cmds;
+    };
+    let Some((c, y)) = view.window_pixel(pos, capture) else {
+        return cmds;
+    };
+    response
+        .clone()
+        .on_hover_ui_at_pointer(|ui| pixel_tooltip(ui, capture, c, y, lang));
+    if response.clicked() {
+        cmds.push(Command::SelectPixel(Some((c, y))));
+        let i = ((capture.height() - 1 - y) * capture.width() + c) as usize;
+        if let Some(prim) = capture.primitives.get(capture.pixels.primitive[i] as usize) {
+            let click = view.to_image(pos);
+            let nearest = prim.vertices.iter().copied().min_by(|a, b| {
+                let d = |r: u32| {
+                    capture.vertices[r as usize]
+                        .window
+                        .map_or(f32::INFINITY, |w| {
+                            let p = capture.window_to_image(w);
+                            (Vec2::new(p[0], p[1]) - click).length()
+                        })
+                };
+                d(*a).total_cmp(&d(*b))
+            });
+            cmds.push(Command::SelectVertex(nearest));
+        }
+    }
+    cmds
+}
