@@ -164,7 +164,8 @@ impl PipelensApp {
         self.keyboard(ui.ctx());
         self.picture.clear();
         self.top_bar(ui);
-        if !self.presenting() {
+        // Presenting, the status line shows only to say what went wrong.
+        if !self.presenting() || self.session.error.is_some() {
             self.status_bar(ui);
         }
         let lang = self.session.lang;

@@ -390,3 +390,89 @@ fn a_cancelled_export_stops_between_files_and_leaves_only_whole_ones() {
             .all(|n| std::fs::metadata(dir.path().join(n)).map(|m| m.len()).ok() == Some(1000))
     );
 }
+
+/// `export --pixel` writes the pixel's edge functions and the derivation of its colour, as the
+/// app's pixel inspector shows them: checked on a triangle worked out by hand.
+#[test]
+fn export_pixel_writes_the_edge_functions_and_the_derivation() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    // The triangle (0, 0), (4, 0), (0, 4) in an 8×8 window (an orthographic camera over
+    // [0, 8]², so world x, y are window x, y), its corners red, green, blue.
+    std::fs::write(
+        dir.path().join("tri.obj"),
+        "v 0 0 0 1 0 0\nv 4 0 0 0 1 0\nv 0 4 0 0 0 1\nf 1 2 3\n",
+    )
+    .expect("write the mesh");
+    std::fs::write(
+        dir.path().join("scene.toml"),
+        r#"[scene.camera]
+eye = [0, 0, 1]
+at = [0, 0, 0]
+
+[scene.projection]
+kind = "ortho"
+left = 0
+right = 8
+bottom = 0
+top = 8
+near = 0
+far = 2
+
+[scene.render]
+width = 8
+height = 8
+
+[[scene.objects]]
+name = "rgb"
+mesh = "tri.obj"
+"#,
+    )
+    .expect("write the scene");
+    let o = pipelens(
+        dir.path(),
+        &["export", "scene.toml", "--out", "out", "--pixel", "1,1"],
+    );
+    assert!(o.status.success(), "{}", text(&o));
+    let json: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(dir.path().join("out/capture.json")).expect("read"))
+            .expect("valid JSON");
+    let e = &json["pixel"]["explanation"];
+    let numbers = |v: &serde_json::Value| -> Vec<f64> {
+        v.as_array()
+            .expect("an array")
+            .iter()
+            .map(|x| x.as_f64().expect("a number"))
+            .collect()
+    };
+    // At the centre p = (1.5, 1.5): E_0 = (−4)(1.5 − 0) − (4)(1.5 − 4) = 4 (the edge opposite
+    // the first corner), E_1 = 0·(1.5 − 4) − (−4)(1.5 − 0) = 6, E_2 = 4·1.5 = 6; their sum is
+    // twice the area, 16; λ = (4, 6, 6)/16.
+    assert_eq!(numbers(&e["edges"]["centre"]), [4.0, 6.0, 6.0]);
+    assert_eq!(e["edges"]["area2"].as_f64(), Some(16.0));
+    assert_eq!(numbers(&e["edges"]["lambda"]), [0.25, 0.375, 0.375]);
+    assert_eq!(numbers(&e["edges"]["centre_position"]), [1.5, 1.5]);
+    // The colour is λ·(red, green, blue), and the derivation arrives at it in 8 bits.
+    let color = numbers(&e["color"]);
+    for (c, want) in color.iter().zip([0.25, 0.375, 0.375]) {
+        assert!((c - want).abs() < 1e-6, "{color:?}");
+    }
+    let lines = e["lines"].as_array().expect("lines");
+    let line = |start: &str| {
+        lines
+            .iter()
+            .find(|l| l["formula"].as_str().is_some_and(|f| f.starts_with(start)))
+            .unwrap_or_else(|| panic!("a line {start}: {lines:?}"))
+    };
+    assert_eq!(line("E_0")["result"], "4");
+    assert_eq!(
+        line("E_0")["numbers"],
+        "(0 − 4)·(1.5 − 0) − (4 − 0)·(1.5 − 4)"
+    );
+    assert_eq!(line("λ_k")["result"], "(0.25, 0.375, 0.375)");
+    assert_eq!(line("RGB_8")["result"], "(64, 96, 96)");
+    // Each fragment carries its own inside test.
+    assert_eq!(
+        numbers(&json["pixel"]["fragments"][0]["edges"]["centre"]),
+        [4.0, 6.0, 6.0]
+    );
+}

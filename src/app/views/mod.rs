@@ -78,7 +78,7 @@ impl Projector {
 
 /// The lights of a capture drawn where they are (see `Light::gizmo`), through `to_view` (world
 /// coordinates into the space drawn), in a scene centred at `centre` of about `size`; each with its
-/// label.
+/// label; returns whether it drew any.
 pub fn draw_lights(
     painter: &egui::Painter,
     cam: &Projector,
@@ -86,13 +86,15 @@ pub fn draw_lights(
     to_view: &dyn Fn(Vec3) -> Vec3,
     (centre, size): (Vec3, f32),
     lang: Lang,
-) {
+) -> bool {
     use pipeline::light::Light;
     let font = egui::FontId::proportional(14.0);
+    let mut drew = false;
     for (k, light) in lights.iter().enumerate() {
         let Some(g) = light.gizmo(centre, size) else {
             continue;
         };
+        drew = true;
         let stroke = egui::Stroke::new(2.0, palette::LIGHT);
         for [a, b] in &g.segments {
             cam.line(painter, to_view(*a), to_view(*b), stroke);
@@ -114,6 +116,7 @@ pub fn draw_lights(
             );
         }
     }
+    drew
 }
 
 /// Text on a dark translucent box, legible over any picture; returns its rect.
@@ -236,13 +239,28 @@ pub fn fit_rect(outer: Rect, aspect: f32) -> Rect {
 /// The colour of a primitive's fate, for wireframes.
 #[must_use]
 pub fn fate_color(f: &pipeline::capture::Fate) -> Color32 {
+    FATES[fate_index(f)].0
+}
+
+/// The fates a triangle can meet, in the legend's order: colour, English name, Chinese name.
+pub const FATES: [(Color32, &str, &str); 5] = [
+    (Color32::from_gray(220), "drawn", "绘制"),
+    (palette::CLIPPED, "clipped", "被裁剪"),
+    (Color32::from_gray(90), "outside", "在视见体外"),
+    (Color32::from_rgb(70, 90, 150), "culled", "被剔除"),
+    (Color32::RED, "degenerate", "退化"),
+];
+
+/// Where a fate stands in [`FATES`].
+#[must_use]
+pub fn fate_index(f: &pipeline::capture::Fate) -> usize {
     use pipeline::capture::Fate;
     match f {
-        Fate::Drawn => Color32::from_gray(220),
-        Fate::Clipped => palette::CLIPPED,
-        Fate::Outside { .. } => Color32::from_gray(90),
-        Fate::Culled { .. } => Color32::from_rgb(70, 90, 150),
-        Fate::Degenerate => Color32::RED,
+        Fate::Drawn => 0,
+        Fate::Clipped => 1,
+        Fate::Outside { .. } => 2,
+        Fate::Culled { .. } => 3,
+        Fate::Degenerate => 4,
     }
 }
 

@@ -5,6 +5,7 @@ use egui::{DragValue, RichText, Slider, Ui};
 use glam::Vec3;
 use pipeline::camera::Projection;
 use pipeline::raster::{CullMode, DepthTest, Samples};
+use pipeline::settings::MAX_VIEWPORT_SIDE;
 use pipeline::shade::{Frequency, Reflection};
 
 use crate::app::session::{Command, Session};
@@ -38,6 +39,7 @@ fn vec3_edit(ui: &mut Ui, label: &str, v: &mut Vec3, speed: f32, tip: &str) {
 pub fn ui(ui: &mut Ui, session: &Session) -> Option<Command> {
     let lang = session.lang;
     let mut spec = session.spec.clone();
+    let labels = &session.spec;
     egui::ScrollArea::vertical().id_salt("params").show(ui, |ui| {
         egui::CollapsingHeader::new(RichText::new(lang.tr("Camera", "相机")).strong()).default_open(true).show(ui, |ui| {
             let c = &mut spec.scene.camera;
@@ -59,7 +61,7 @@ pub fn ui(ui: &mut Ui, session: &Session) -> Option<Command> {
         }
         egui::CollapsingHeader::new(RichText::new(lang.tr("Objects", "物体")).strong()).default_open(false).show(ui, |ui| {
             for (i, o) in spec.scene.objects.iter_mut().enumerate() {
-                egui::CollapsingHeader::new(&o.name).id_salt(("object", i)).show(ui, |ui| {
+                egui::CollapsingHeader::new(labels.label(&o.name, lang)).id_salt(("object", i)).show(ui, |ui| {
                     let tip = lang.tr("M = T·Rz·Ry·Rx·S", "M = T·Rz·Ry·Rx·S");
                     vec3_edit(ui, lang.tr("translate", "平移"), &mut o.translate, 0.05, tip);
                     vec3_edit(ui, lang.tr("rotate °", "旋转 °"), &mut o.rotate_deg, 1.0, tip);
@@ -129,7 +131,14 @@ fn projection(ui: &mut Ui, p: &mut Projection, lang: Lang) {
             near,
             far,
         } => {
-            ui.add(Slider::new(fovy_deg, 1.0..=179.0).text("fovy °")).on_hover_text(lang.tr(
+            // The useful range spread over the panel's width; a typed value may go beyond it.
+            ui.add(
+                Slider::new(fovy_deg, 10.0..=150.0)
+                    .clamping(egui::SliderClamping::Never)
+                    .step_by(0.5)
+                    .text("fovy °"),
+            )
+            .on_hover_text(lang.tr(
                 "Vertical field of view. top = near·tan(fovy/2), right = top·aspect (the review slides' near·tan(fovy) is an erratum).",
                 "垂直视场角。top = near·tan(fovy/2)，right = top·aspect（复习课件中的 near·tan(fovy) 是笔误）。",
             ));
@@ -184,11 +193,11 @@ fn projection(ui: &mut Ui, p: &mut Projection, lang: Lang) {
 
 fn near_far(ui: &mut Ui, near: &mut f32, far: &mut f32, lang: Lang) {
     ui.horizontal(|ui| {
-        ui.add(DragValue::new(near).speed(0.01).range(0.001..=1e4).prefix("near ")).on_hover_text(lang.tr(
+        ui.add(DragValue::new(near).speed(0.01).range(0.001..=1e4).prefix(lang.tr("near ", "近 near "))).on_hover_text(lang.tr(
             "Distance to the near plane z = −near. Small near values waste depth precision: z_ndc = (f+n)/(f−n) − 2fn/((f−n)·d).",
             "到近平面 z = −near 的距离。near 过小会浪费深度精度：z_ndc = (f+n)/(f−n) − 2fn/((f−n)·d)。",
         ));
-        ui.add(DragValue::new(far).speed(0.1).range(0.002..=1e5).prefix("far ")).on_hover_text(lang.tr("Distance to the far plane z = −far.", "到远平面 z = −far 的距离。"));
+        ui.add(DragValue::new(far).speed(0.1).range(0.002..=1e5).prefix(lang.tr("far ", "远 far "))).on_hover_text(lang.tr("Distance to the far plane z = −far.", "到远平面 z = −far 的距离。"));
     });
     if *far <= *near {
         *far = *near * 2.0;
@@ -198,10 +207,21 @@ fn near_far(ui: &mut Ui, near: &mut f32, far: &mut f32, lang: Lang) {
 fn render(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lang: Lang) {
     ui.horizontal(|ui| {
         ui.label(lang.tr("viewport", "视口"));
-        ui.add(DragValue::new(&mut s.width).range(1..=4096).suffix(" px"));
+        ui.add(
+            DragValue::new(&mut s.width)
+                .range(1..=MAX_VIEWPORT_SIDE)
+                .suffix(" px"),
+        );
         ui.label("×");
-        ui.add(DragValue::new(&mut s.height).range(1..=4096).suffix(" px"));
+        ui.add(
+            DragValue::new(&mut s.height)
+                .range(1..=MAX_VIEWPORT_SIDE)
+                .suffix(" px"),
+        );
     });
+    if let Some(problem) = s.capture_problem() {
+        ui.colored_label(egui::Color32::LIGHT_RED, problem);
+    }
     ui.horizontal(|ui| {
         ui.label(lang.tr("samples per pixel", "每像素采样数"));
         for n in [Samples::X1, Samples::X4, Samples::X8, Samples::X16] {
@@ -227,7 +247,7 @@ fn render(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lang: Lang) {
     });
     ui.horizontal(|ui| {
         egui::ComboBox::new("depth-test", lang.tr("depth test", "深度测试"))
-            .selected_text(format!("{:?}", s.depth_test))
+            .selected_text(depth_test_name(s.depth_test, lang))
             .show_ui(ui, |ui| {
                 for t in [
                     DepthTest::Less,
@@ -236,7 +256,7 @@ fn render(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lang: Lang) {
                     DepthTest::GreaterEqual,
                     DepthTest::Always,
                 ] {
-                    ui.selectable_value(&mut s.depth_test, t, format!("{t:?}"));
+                    ui.selectable_value(&mut s.depth_test, t, depth_test_name(t, lang));
                 }
             });
     });
@@ -347,5 +367,16 @@ fn figures(ui: &mut Ui, figures: &mut [pipeline::hierarchy::Figure], lang: Lang)
                     "关节旋转：树中其下的所有部件随之运动（M ← M·local）。",
                 ));
         }
+    }
+}
+
+/// A depth test by its comparison, as OpenGL names it, and in words.
+fn depth_test_name(t: DepthTest, lang: Lang) -> &'static str {
+    match t {
+        DepthTest::Less => lang.tr("< less (GL_LESS)", "< 更近 (GL_LESS)"),
+        DepthTest::LessEqual => lang.tr("≤ less or equal", "≤ 更近或相等"),
+        DepthTest::Greater => lang.tr("> greater", "> 更远"),
+        DepthTest::GreaterEqual => lang.tr("≥ greater or equal", "≥ 更远或相等"),
+        DepthTest::Always => lang.tr("always (painter's order)", "总是通过（画家顺序）"),
     }
 }

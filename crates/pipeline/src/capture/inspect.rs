@@ -152,6 +152,9 @@ pub struct PixelVectors {
     pub view: Vec3,
     /// `h = normalize(l + v)`.
     pub half: Vec3,
+    /// `r = 2(n·l)n − l`, the mirror direction of `l` (Phong's specular term compares it with
+    /// `v`).
+    pub reflected: Vec3,
 }
 
 /// One sample of an intensity profile along a line of pixels.
@@ -198,6 +201,7 @@ impl FrameCapture {
             light,
             view,
             half: (light + view).normalize_or_zero(),
+            reflected: 2.0 * normal.dot(light) * normal - light,
         })
     }
 

@@ -8,20 +8,43 @@ use pipeline::transform::{self, NamedMatrix};
 
 use super::position;
 use crate::app::session::{Session, Teaching};
-use crate::app::views::{Projector, label_with_background, palette, place_label, typeset};
+use crate::app::views::{FATES, Projector, label_with_background, palette, place_label, typeset};
 use crate::vocabulary::{Lang, Space, num, vec3, vec4};
 
-/// What each colour means, at the bottom-right.
-pub(super) fn legend(painter: &egui::Painter, rect: Rect, lang: Lang, stride: usize) {
-    let items = [
-        (Color32::from_gray(220), lang.tr("drawn", "绘制")),
-        (palette::CLIPPED, lang.tr("clipped", "被裁剪")),
-        (Color32::from_gray(90), lang.tr("outside", "在视见体外")),
-        (Color32::from_rgb(70, 90, 150), lang.tr("culled", "被剔除")),
-        (palette::NEAR, lang.tr("near plane", "近平面")),
-        (palette::FAR, lang.tr("far plane", "远平面")),
-        (palette::LIGHT, lang.tr("light", "光源")),
-    ];
+/// What the picture shows, so that the legend names only that.
+pub(super) struct Shown {
+    /// Which fates (by `fate_index`) some drawn triangle met.
+    pub fates: [bool; FATES.len()],
+    /// Whether the view volume's edges are drawn.
+    pub volume: bool,
+    /// Whether a light is drawn.
+    pub lights: bool,
+}
+
+/// What each colour drawn means, at the bottom-right.
+pub(super) fn legend(
+    painter: &egui::Painter,
+    rect: Rect,
+    lang: Lang,
+    stride: usize,
+    shown: &Shown,
+) {
+    let mut items: Vec<(Color32, &str)> = FATES
+        .iter()
+        .zip(shown.fates)
+        .filter(|(_, drawn)| *drawn)
+        .map(|((color, en, zh), _)| (*color, lang.tr(en, zh)))
+        .collect();
+    if shown.volume {
+        items.push((palette::NEAR, lang.tr("near plane", "近平面")));
+        items.push((palette::FAR, lang.tr("far plane", "远平面")));
+    }
+    if shown.lights {
+        items.push((palette::LIGHT, lang.tr("light", "光源")));
+    }
+    if items.is_empty() {
+        return;
+    }
     let row = 18.0;
     let w = 150.0;
     let top = rect.bottom() - row * items.len() as f32 - 12.0;

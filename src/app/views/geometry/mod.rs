@@ -11,7 +11,9 @@ use glam::{Vec3, Vec4};
 use pipeline::capture::FrameCapture;
 use pipeline::transform::{self};
 
-use super::{Projector, draw_lights, fate_color, label_with_background, palette};
+use super::{
+    FATES, Projector, draw_lights, fate_color, fate_index, label_with_background, palette,
+};
 use crate::app::session::{Command, Session};
 use crate::vocabulary::{Lang, Space};
 
@@ -228,16 +230,17 @@ fn draw_volume(painter: &egui::Painter, cam: &Projector, v: &[Vec3; 8]) {
 }
 
 /// Every triangle as three segments, coloured by its fate (the subject brighter); returns the
-/// stride used and the screen box of the subject.
+/// stride used, the screen box of the subject and which fates (by [`fate_index`]) were drawn.
 fn draw_triangles(
     painter: &egui::Painter,
     cam: &Projector,
     capture: &FrameCapture,
     points: &[Option<Vec3>],
     subject: &[bool],
-) -> (usize, Rect) {
+) -> (usize, Rect, [bool; FATES.len()]) {
     let stride = capture.primitives.len().div_ceil(MAX_TRIANGLES).max(1);
     let mut seen = Rect::NOTHING;
+    let mut fates = [false; FATES.len()];
     for prim in capture.primitives.iter().step_by(stride) {
         let focused = subject.get(prim.object as usize).copied().unwrap_or(false);
         let color = fate_color(&prim.fate);
@@ -257,12 +260,13 @@ fn draw_triangles(
             painter.line_segment([a, b], stroke);
             painter.line_segment([b, c], stroke);
             painter.line_segment([c, a], stroke);
+            fates[fate_index(&prim.fate)] = true;
             if focused {
                 seen = seen.union(Rect::from_points(&[a, b, c]));
             }
         }
     }
-    (stride, seen)
+    (stride, seen, fates)
 }
 
 impl GeometryView {
@@ -318,14 +322,16 @@ impl GeometryView {
             return cmds;
         };
         draw_axes(&painter, &cam, radius * 0.6);
-        if let Some(v) = volume(capture, space).filter(|_| t >= 1.0) {
-            draw_volume(&painter, &cam, &v);
+        let view_volume = volume(capture, space).filter(|_| t >= 1.0);
+        if let Some(v) = &view_volume {
+            draw_volume(&painter, &cam, v);
         }
-        let (stride, seen) = draw_triangles(&painter, &cam, capture, &points, &subject);
+        let (stride, seen, fates) = draw_triangles(&painter, &cam, capture, &points, &subject);
+        let mut lights = false;
         if let Some(m) = world_into(capture, space) {
             let to_view = |p: Vec3| m.transform_point3(p);
             let world_centre = m.inverse().transform_point3(centre);
-            draw_lights(
+            lights = draw_lights(
                 &painter,
                 &cam,
                 &capture.lights,
@@ -349,7 +355,12 @@ impl GeometryView {
         if card {
             cards::matrix_card(&painter, rect, session, capture, space);
         }
-        cards::legend(&painter, rect, lang, stride);
+        let shown = cards::Shown {
+            fates,
+            volume: view_volume.is_some(),
+            lights,
+        };
+        cards::legend(&painter, rect, lang, stride, &shown);
         if response.clicked()
             && let Some(pos) = response.interact_pointer_pos()
         {

@@ -158,6 +158,7 @@ pub(super) fn draw_light_vectors(
         (v.light, "l", Color32::from_rgb(255, 210, 60)),
         (v.view, "v", Color32::from_gray(150)),
         (v.half, "h", Color32::from_rgb(90, 220, 255)),
+        (v.reflected, "r", Color32::from_rgb(255, 120, 200)),
     ] {
         let Some([a, b]) = capture.world_segment_to_image(v.position, v.position + vector * length)
         else {
@@ -173,21 +174,35 @@ pub(super) fn draw_light_vectors(
             color,
         );
     }
-    // The legend, wrapped to the view's width (it may be half the panel beside the observer).
-    let galley = painter.layout(
+    // The legend, typeset, on a dark box at the top-left.
+    let back = painter.add(egui::Shape::Noop);
+    let style = crate::app::views::typeset::Style {
+        size: 15.0,
+        color: Color32::WHITE,
+        accent: Color32::from_rgb(255, 214, 120),
+    };
+    let mut at = view.rect.left_top() + Vec2::new(10.0, 10.0);
+    let mut area = Rect::NOTHING;
+    for line in [
         lang.tr(
-            "at the inspected pixel: n normal, l to the light, v to the eye, h = (l + v)/|l + v|",
-            "在所检查的像素处：n 法线，l 指向光源，v 指向视点，h = (l + v)/|l + v|",
-        )
-        .to_owned(),
-        egui::FontId::proportional(14.0),
-        Color32::WHITE,
-        view.rect.width() - 16.0,
-    );
-    painter.galley(
-        view.rect.left_top() + Vec2::new(8.0, 8.0),
-        galley,
-        Color32::WHITE,
+            "n normal · l to the light · v to the eye",
+            "n 法线 · l 指向光源 · v 指向视点",
+        ),
+        "h = (l + v)/|l + v| · r = 2(n·l)n − l",
+    ] {
+        let r = crate::app::views::typeset::paint_formula(
+            painter,
+            at,
+            egui::Align2::LEFT_TOP,
+            line,
+            &style,
+        );
+        area = area.union(r);
+        at.y = r.bottom() + 4.0;
+    }
+    painter.set(
+        back,
+        egui::Shape::rect_filled(area.expand(5.0), 4.0, Color32::from_black_alpha(180)),
     );
 }
 

@@ -325,13 +325,15 @@ fn pixel_tooltip(ui: &mut Ui, capture: &FrameCapture, x: u32, y: u32, lang: Lang
             px.primitive[i]
         ));
         ui.label(format!(
-            "b (persp.) = ({}, {}, {})",
+            "b ({}) = ({}, {}, {})",
+            lang.tr("perspective-correct", "透视校正"),
             num(b[0]),
             num(b[1]),
             num(b[2])
         ));
         ui.label(format!(
-            "λ (affine) = ({}, {}, {})",
+            "λ ({}) = ({}, {}, {})",
+            lang.tr("affine", "仿射"),
             num(a[0]),
             num(a[1]),
             num(a[2])
