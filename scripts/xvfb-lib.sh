@@ -1,7 +1,7 @@
 # Shared by smoke-app.sh and screenshots.sh: start Xvfb on $display and clean up on exit.
 # Sourced, not run. Needs $display set by the caller.
 start_xvfb() {
-  Xvfb "$display" -screen 0 1366x768x24 -nolisten tcp >/dev/null 2>&1 &
+  Xvfb "$display" -screen 0 "${screen:-1366x768}x24" -nolisten tcp >/dev/null 2>&1 &
   xvfb=$!
   app=
   trap 'cleanup_xvfb' EXIT

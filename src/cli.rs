@@ -36,6 +36,12 @@ pub struct Cli {
     /// The app: settings to compare side by side in the pixel stages.
     #[arg(long, value_parser = ["shading", "interpolation", "samples", "filtering"])]
     pub compare: Option<String>,
+    /// The app: a lesson's step to open on (1-based).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]
+    pub step: Option<u32>,
+    /// The app: open in classroom mode (large type, high contrast, the picture first; key C).
+    #[arg(long)]
+    pub classroom: bool,
 }
 
 fn parse_stage(s: &str) -> Result<crate::vocabulary::Stage, String> {
@@ -210,6 +216,8 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                     .compare
                     .as_deref()
                     .and_then(crate::vocabulary::Comparison::from_name),
+                step: cli.step.map(|n| n as usize - 1),
+                classroom: cli.classroom,
             };
             crate::app::run(doc, source, cli.scene.clone(), start)?;
             Ok(ExitCode::SUCCESS)

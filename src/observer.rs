@@ -58,10 +58,26 @@ pub fn default_orbit(spec: &SceneSpec) -> Orbit {
     }
 }
 
+/// The observer's lens: 50° vertically for a picture at least 1.6 times as wide as high; a
+/// narrower picture gets a taller angle that keeps the same horizontal one,
+/// `fovy = 2·atan(tan(25°)·1.6/aspect)` (at most 120°), so that a tall panel still shows the
+/// scene and the viewing camera beside it.
+#[must_use]
+pub fn observer_fovy(aspect: f32) -> f32 {
+    const WIDE: f32 = 1.6;
+    let half = 25f32.to_radians();
+    if !(aspect.is_finite() && aspect > 0.0) || aspect >= WIDE {
+        return 50.0;
+    }
+    (2.0 * (half.tan() * WIDE / aspect).atan())
+        .to_degrees()
+        .min(120.0)
+}
+
 /// The scene from the observer's camera: the same pipeline, one sample, a perspective lens
-/// wide enough for the viewing frustum, as many pixels as the viewing camera's image but shaped
-/// `aspect` (width/height; the observer fills the panel it is shown in); only its colour is kept
-/// (into `spare`'s storage, if given).
+/// wide enough for the viewing frustum ([`observer_fovy`]), as many pixels as the viewing
+/// camera's image but shaped `aspect` (width/height; the observer fills the panel it is shown
+/// in); only its colour is kept (into `spare`'s storage, if given).
 pub fn render_observer(
     spec: &SceneSpec,
     camera: Camera,
@@ -73,7 +89,9 @@ pub fn render_observer(
         objects: spec.scene.objects.clone(),
         camera,
         projection: Projection::Perspective {
-            fovy_deg: 50.0,
+            fovy_deg: observer_fovy(
+                aspect.unwrap_or(spec.settings.width as f32 / spec.settings.height.max(1) as f32),
+            ),
             aspect: None,
             near: (distance * 0.02).max(1e-3),
             far: distance * 20.0,

@@ -38,8 +38,8 @@ impl PipelensApp {
                 if ui
                     .selectable_label(self.classroom, lang.tr("Classroom", "课堂模式"))
                     .on_hover_text(lang.tr(
-                        "Large type and high contrast for a projector; the picture first. F11: full screen, Ctrl +/−: text size, ←/→: steps or stages, Space: play.",
-                        "投影用的大字号与高对比度，画面优先。F11：全屏，Ctrl +/−：字号，←/→：步骤或阶段，空格：播放。",
+                        "Large type and high contrast for a projector; the picture first (C). F11: full screen, Ctrl +/−: text size, ←/→: steps or stages, Space: play.",
+                        "投影用的大字号与高对比度，画面优先（C）。F11：全屏，Ctrl +/−：字号，←/→：步骤或阶段，空格：播放。",
                     ))
                     .clicked()
                 {
@@ -47,6 +47,8 @@ impl PipelensApp {
                     self.set_classroom(ui.ctx(), on);
                 }
                 self.export_menu(ui, lang);
+                ui.toggle_value(&mut self.panels.keys, "?")
+                    .on_hover_text(lang.tr("Keyboard shortcuts (F1)", "键盘快捷键（F1）"));
             });
             if let Some(e) = &self.session.reload_error {
                 ui.label(
@@ -257,6 +259,77 @@ impl PipelensApp {
         });
     }
 
+    /// The keyboard shortcuts, in a window F1 (or ?) opens and closes.
+    pub(super) fn keys_help(&mut self, ctx: &egui::Context) {
+        let lang = self.session.lang;
+        let keys: [(&str, &str, &str); 13] = [
+            (
+                "→  Page Down",
+                "next step of a lesson (next stage without one)",
+                "课程的下一步（无课程时为下一阶段）",
+            ),
+            (
+                "←  Page Up",
+                "previous step (previous stage)",
+                "上一步（上一阶段）",
+            ),
+            (
+                "Space",
+                "play or pause the step's animation (replay the transition)",
+                "播放或暂停本步动画（重放过渡）",
+            ),
+            ("N", "the narration card", "讲解卡片"),
+            ("P", "the parameters panel", "参数面板"),
+            (
+                "I",
+                "the inspector: matrices, vertices, the pixel explained",
+                "检查器：矩阵、顶点、像素解释",
+            ),
+            (
+                "M",
+                "the matrix card over the geometry",
+                "几何视图上的矩阵卡片",
+            ),
+            (
+                "C",
+                "classroom mode: large type, the picture first",
+                "课堂模式：大字号，画面优先",
+            ),
+            ("F11", "full screen", "全屏"),
+            ("Ctrl +  Ctrl −", "text size", "字号"),
+            ("F1  ?", "this list", "本列表"),
+            (
+                lang.tr("wheel, drag", "滚轮、拖动"),
+                "zoom at the cursor, pan (geometry: orbit)",
+                "以光标为中心缩放、平移（几何视图：环绕）",
+            ),
+            (
+                lang.tr("click", "单击"),
+                "select a pixel or a vertex",
+                "选择像素或顶点",
+            ),
+        ];
+        let mut open = self.panels.keys;
+        egui::Window::new(lang.tr("Keyboard shortcuts", "键盘快捷键"))
+            .open(&mut open)
+            .collapsible(false)
+            .resizable(false)
+            .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
+            .show(ctx, |ui| {
+                egui::Grid::new("keys")
+                    .striped(true)
+                    .spacing([24.0, 6.0])
+                    .show(ui, |ui| {
+                        for (key, en, zh) in keys {
+                            ui.label(RichText::new(key).monospace().strong());
+                            ui.label(lang.tr(en, zh));
+                            ui.end_row();
+                        }
+                    });
+            });
+        self.panels.keys = open;
+    }
+
     pub(super) fn keyboard(&mut self, ctx: &egui::Context) {
         if ctx.egui_wants_keyboard_input() {
             return;
@@ -303,6 +376,13 @@ impl PipelensApp {
         }
         if pressed(egui::Key::M) {
             p.matrix_card = !p.matrix_card;
+        }
+        if pressed(egui::Key::F1) || pressed(egui::Key::Questionmark) {
+            p.keys = !p.keys;
+        }
+        if pressed(egui::Key::C) {
+            let on = !self.classroom;
+            self.set_classroom(ctx, on);
         }
         if pressed(egui::Key::F11) {
             let full = ctx.input(|i| i.viewport().fullscreen.unwrap_or(false));

@@ -40,6 +40,8 @@ pub struct Panels {
     pub inspector: bool,
     /// The card with the stage's matrix over the geometry views.
     pub matrix_card: bool,
+    /// The list of keyboard shortcuts (F1 or ?).
+    pub keys: bool,
 }
 
 impl Panels {
@@ -51,6 +53,7 @@ impl Panels {
             parameters: !presenting,
             inspector: !presenting,
             matrix_card: true,
+            keys: false,
         }
     }
 }
@@ -164,6 +167,7 @@ impl PipelensApp {
         self.keyboard(ui.ctx());
         self.picture.clear();
         self.top_bar(ui);
+        self.keys_help(ui.ctx());
         // Presenting, the status line shows only to say what went wrong.
         if !self.presenting() || self.session.error.is_some() {
             self.status_bar(ui);
@@ -417,6 +421,10 @@ pub struct Start {
     pub stage: Option<Stage>,
     /// Settings compared side by side from the start.
     pub compare: Option<crate::vocabulary::Comparison>,
+    /// A lesson's step to open on (0-based; past the last, the last; ignored for a scene).
+    pub step: Option<usize>,
+    /// Whether to open in classroom mode.
+    pub classroom: bool,
 }
 
 /// Opens the window on `spec` and runs until it is closed.
@@ -444,6 +452,9 @@ pub fn run(
             let worker = RenderWorker::start(move || ctx.request_repaint()).ok();
             let mut session = Session::with_document(doc, &source, worker);
             session.lang = start.lang;
+            if let Some(k) = start.step {
+                session.apply(Command::GoToStep(k));
+            }
             if let Some(stage) = start.stage {
                 session.apply(Command::SelectStage(stage));
             }
@@ -451,7 +462,10 @@ pub fn run(
                 session.apply(Command::SetComparison(start.compare));
             }
             setup_context(&cc.egui_ctx);
-            let app = PipelensApp::new(session);
+            let mut app = PipelensApp::new(session);
+            if start.classroom {
+                app.set_classroom(&cc.egui_ctx, true);
+            }
             Ok(Box::new(match path {
                 Some(p) => app.watching(p),
                 None => app,

@@ -508,3 +508,63 @@ fn the_picture_of_every_step_takes_most_of_the_window() {
     }
     eprintln!("smallest share: {:.1} % ({})", worst.0 * 100.0, worst.1);
 }
+
+#[test]
+fn the_keys_fold_panels_switch_classroom_mode_and_list_themselves() {
+    let mut h = lesson_harness(None);
+    h.run_steps(4);
+    assert!(h.state().panels.narration);
+    h.key_press(egui::Key::N);
+    h.run_steps(2);
+    assert!(!h.state().panels.narration, "N folds the narration");
+    assert!(
+        h.query_by_label_contains("This is what the pipeline produces")
+            .is_none()
+    );
+    assert!(!h.state().classroom());
+    h.key_press(egui::Key::C);
+    h.run_steps(2);
+    assert!(h.state().classroom(), "C turns classroom mode on");
+    h.key_press(egui::Key::C);
+    h.run_steps(2);
+    assert!(!h.state().classroom());
+    assert!(h.query_by_label("Keyboard shortcuts").is_none());
+    h.key_press(egui::Key::F1);
+    h.run_steps(2);
+    assert!(h.query_by_label("Keyboard shortcuts").is_some());
+    assert!(h.query_by_label_contains("classroom mode").is_some());
+    h.key_press(egui::Key::F1);
+    h.run_steps(2);
+    assert!(h.query_by_label("Keyboard shortcuts").is_none());
+}
+
+#[test]
+fn a_label_keeps_off_the_subject_and_the_cards() {
+    use egui::{Pos2, Rect, vec2};
+    use pipelens::app::views::place_label;
+    let view = Rect::from_min_size(Pos2::ZERO, vec2(800.0, 600.0));
+    let subject = Rect::from_min_max(Pos2::new(200.0, 150.0), Pos2::new(600.0, 450.0));
+    let card = Rect::from_min_max(Pos2::new(560.0, 0.0), Pos2::new(800.0, 200.0));
+    let size = vec2(160.0, 24.0);
+    // An anchor on the subject's edge: the label goes next to it, off both.
+    let r = place_label(Pos2::new(600.0, 300.0), size, &[subject, card], view);
+    assert!(view.contains_rect(r));
+    assert!(!r.intersects(subject) && !r.intersects(card), "{r:?}");
+    assert!(r.center().distance(Pos2::new(600.0, 300.0)) < 200.0);
+    // No room around the anchor: a corner, the farthest from the subject that the card leaves
+    // free (the top-right is farthest, and the card's; the bottom-right comes next).
+    let whole = Rect::from_min_max(Pos2::new(20.0, 100.0), Pos2::new(700.0, 580.0));
+    let r = place_label(Pos2::new(400.0, 300.0), size, &[whole, card], view);
+    assert!(view.contains_rect(r));
+    assert!(!r.intersects(card), "{r:?}");
+    assert!(
+        r.right() > 799.0 && r.bottom() > 599.0,
+        "the bottom-right corner: {r:?}"
+    );
+    // With no card, the farthest corner.
+    let r = place_label(Pos2::new(400.0, 300.0), size, &[whole], view);
+    assert!(
+        r.right() > 799.0 && r.top() < 1.0,
+        "the top-right corner: {r:?}"
+    );
+}

@@ -5,6 +5,7 @@ mod architecture;
 mod cli;
 mod corpus;
 mod lessons;
+mod observer;
 mod reference;
 mod scene_file;
 mod support;

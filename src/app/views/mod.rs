@@ -88,7 +88,7 @@ pub fn draw_lights(
     lang: Lang,
 ) -> bool {
     use pipeline::light::Light;
-    let font = egui::FontId::proportional(14.0);
+    let font = picture_font(painter.ctx(), 14.0);
     let mut drew = false;
     for (k, light) in lights.iter().enumerate() {
         let Some(g) = light.gizmo(centre, size) else {
@@ -119,6 +119,28 @@ pub fn draw_lights(
     drew
 }
 
+/// How much larger the words drawn over pictures (labels, legends, cards) are than normal: 1,
+/// or 1.6 in classroom mode — the body text's size over its normal 15 points.
+#[must_use]
+pub fn picture_scale(ctx: &egui::Context) -> f32 {
+    ctx.global_style()
+        .text_styles
+        .get(&egui::TextStyle::Body)
+        .map_or(1.0, |f| f.size / 15.0)
+}
+
+/// A proportional font of `size` normal points for words drawn over a picture.
+#[must_use]
+pub fn picture_font(ctx: &egui::Context, size: f32) -> egui::FontId {
+    egui::FontId::proportional(size * picture_scale(ctx))
+}
+
+/// A monospace font of `size` normal points for numbers drawn over a picture.
+#[must_use]
+pub fn picture_mono(ctx: &egui::Context, size: f32) -> egui::FontId {
+    egui::FontId::monospace(size * picture_scale(ctx))
+}
+
 /// Text on a dark translucent box, legible over any picture; returns its rect.
 pub fn label_with_background(
     painter: &egui::Painter,
@@ -128,19 +150,34 @@ pub fn label_with_background(
     font: &egui::FontId,
     color: Color32,
 ) -> Rect {
-    let galley = painter.layout_no_wrap(text.to_owned(), font.clone(), color);
+    wrapped_label(painter, at, align, text, font, color, f32::INFINITY)
+}
+
+/// [`label_with_background`] wrapped to lines at most `width` wide.
+pub fn wrapped_label(
+    painter: &egui::Painter,
+    at: Pos2,
+    align: egui::Align2,
+    text: &str,
+    font: &egui::FontId,
+    color: Color32,
+    width: f32,
+) -> Rect {
+    let galley = painter.layout(text.to_owned(), font.clone(), color, width);
     let rect = align.anchor_size(at, galley.size()).expand(3.0);
     painter.rect_filled(rect, 3.0, Color32::from_black_alpha(170));
     painter.galley(rect.min + egui::vec2(3.0, 3.0), galley, color);
     rect
 }
 
-/// Where to put a label of `size` pointing at `anchor` so that it does not cover `avoid` (the
-/// subject on screen) and stays inside `view`: the first place around the anchor, a little
-/// farther each round, that does neither; else the view's corner farthest from the subject.
+/// Where to put a label of `size` pointing at `anchor` so that it covers nothing in `avoid`
+/// (first the subject on screen, then the cards and legends over the picture) and stays inside
+/// `view`: the first place around the anchor, a little farther each round, that does neither;
+/// else the view's corner farthest from the subject that covers nothing else; else the corner
+/// farthest from the subject.
 #[must_use]
-pub fn place_label(anchor: Pos2, size: egui::Vec2, avoid: Rect, view: Rect) -> Rect {
-    let fits = |r: &Rect| view.contains_rect(*r) && !r.intersects(avoid);
+pub fn place_label(anchor: Pos2, size: egui::Vec2, avoid: &[Rect], view: Rect) -> Rect {
+    let clear = |r: &Rect| avoid.iter().all(|a| !r.intersects(*a));
     for step in 1..=8 {
         let d = 12.0 * step as f32;
         for dir in [
@@ -152,29 +189,38 @@ pub fn place_label(anchor: Pos2, size: egui::Vec2, avoid: Rect, view: Rect) -> R
             egui::vec2(0.0, 1.0),
         ] {
             let r = Rect::from_center_size(anchor + dir * (d + size.length() / 2.0), size);
-            if fits(&r) {
+            if view.contains_rect(r) && clear(&r) {
                 return r;
             }
         }
     }
-    let corners = [
+    let subject = avoid.first().map_or(view.center(), Rect::center);
+    let mut corners: Vec<Rect> = [
         view.left_top(),
         view.right_top(),
         view.left_bottom(),
         view.right_bottom(),
-    ];
-    let far = corners
-        .into_iter()
-        .max_by(|a, b| {
-            a.distance(avoid.center())
-                .total_cmp(&b.distance(avoid.center()))
-        })
-        .unwrap_or(view.left_top());
-    let r = Rect::from_center_size(far, size);
-    r.translate(egui::vec2(
-        (view.left() - r.left()).max(0.0) - (r.right() - view.right()).max(0.0),
-        (view.top() - r.top()).max(0.0) - (r.bottom() - view.bottom()).max(0.0),
-    ))
+    ]
+    .into_iter()
+    .map(|corner| {
+        let r = Rect::from_center_size(corner, size);
+        r.translate(egui::vec2(
+            (view.left() - r.left()).max(0.0) - (r.right() - view.right()).max(0.0),
+            (view.top() - r.top()).max(0.0) - (r.bottom() - view.bottom()).max(0.0),
+        ))
+    })
+    .collect();
+    corners.sort_by(|a, b| {
+        b.center()
+            .distance(subject)
+            .total_cmp(&a.center().distance(subject))
+    });
+    corners
+        .iter()
+        .find(|r| avoid.iter().skip(1).all(|a| !r.intersects(*a)))
+        .or(corners.first())
+        .copied()
+        .unwrap_or(view)
 }
 
 /// A matrix with its name and formula typeset, its numbers, and its factors below it (open

@@ -3,7 +3,8 @@
 //! clipped geometry and the lights drawn over it (`observer::viewing_camera`, the description the
 //! exported image draws too).
 
-use egui::{Align2, Color32, FontId, Rect, Sense, Stroke, TextureOptions, Ui, Vec2};
+use crate::app::views::picture_font;
+use egui::{Align2, Color32, Rect, Sense, Stroke, TextureOptions, Ui, Vec2};
 use pipeline::buffers::BufferKind;
 use pipeline::capture::FrameCapture;
 
@@ -42,7 +43,7 @@ impl ObserverView {
                 outer.center(),
                 Align2::CENTER_CENTER,
                 lang.tr("rendering the observer…", "正在渲染观察者视图…"),
-                FontId::proportional(16.0),
+                picture_font(painter.ctx(), 16.0),
                 Color32::GRAY,
             );
             return cmds;
@@ -88,7 +89,7 @@ impl ObserverView {
         for m in &marks {
             cam.line(&painter, m.a, m.b, Stroke::new(m.width, color(m.color)));
         }
-        let font = FontId::proportional(14.0);
+        let font = picture_font(painter.ctx(), 14.0);
         for t in &tags {
             if let Some(p) = cam.project(t.at) {
                 label_with_background(

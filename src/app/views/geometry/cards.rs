@@ -1,6 +1,7 @@
 //! What the geometry view draws over the wireframe: the legend, the card with the stage's
 //! matrix, the selected vertex with its coordinates.
 
+use crate::app::views::{picture_font, picture_mono, picture_scale};
 use egui::{Align2, Color32, FontId, Pos2, Rect, Stroke, Vec2};
 use glam::Vec3;
 use pipeline::capture::FrameCapture;
@@ -21,14 +22,16 @@ pub(super) struct Shown {
     pub lights: bool,
 }
 
-/// What each colour drawn means, at the bottom-right.
+/// What each colour drawn means, at the right from `top` down (below the matrix card: the
+/// bottom-left belongs to the narration); returns where it is.
 pub(super) fn legend(
     painter: &egui::Painter,
     rect: Rect,
+    top: f32,
     lang: Lang,
     stride: usize,
     shown: &Shown,
-) {
+) -> Rect {
     let mut items: Vec<(Color32, &str)> = FATES
         .iter()
         .zip(shown.fates)
@@ -43,11 +46,25 @@ pub(super) fn legend(
         items.push((palette::LIGHT, lang.tr("light", "光源")));
     }
     if items.is_empty() {
-        return;
+        return Rect::NOTHING;
     }
-    let row = 18.0;
-    let w = 150.0;
-    let top = rect.bottom() - row * items.len() as f32 - 12.0;
+    let scale = picture_scale(painter.ctx());
+    let row = 18.0 * scale;
+    let w = items
+        .iter()
+        .map(|(_, text)| {
+            painter
+                .layout_no_wrap(
+                    (*text).to_owned(),
+                    picture_font(painter.ctx(), 14.0),
+                    Color32::WHITE,
+                )
+                .size()
+                .x
+        })
+        .fold(0.0f32, f32::max)
+        + 40.0 * scale;
+    let top = top + 4.0;
     let back = Rect::from_min_size(
         Pos2::new(rect.right() - w - 10.0, top - 4.0),
         Vec2::new(w + 4.0, row * items.len() as f32 + 8.0),
@@ -55,36 +72,41 @@ pub(super) fn legend(
     painter.rect_filled(back, 4.0, Color32::from_black_alpha(150));
     for (k, (color, text)) in items.into_iter().enumerate() {
         let p = Pos2::new(back.left() + 8.0, top + row * (k as f32 + 0.5));
-        painter.line_segment([p, p + Vec2::new(18.0, 0.0)], Stroke::new(3.0, color));
+        painter.line_segment(
+            [p, p + Vec2::new(18.0 * scale, 0.0)],
+            Stroke::new(3.0, color),
+        );
         painter.text(
-            p + Vec2::new(24.0, 0.0),
+            p + Vec2::new(24.0 * scale, 0.0),
             Align2::LEFT_CENTER,
             text,
-            FontId::proportional(14.0),
+            picture_font(painter.ctx(), 14.0),
             Color32::from_gray(230),
         );
     }
     if stride > 1 {
-        label_with_background(
+        let note = label_with_background(
             painter,
-            back.left_top() - Vec2::new(0.0, 4.0),
-            Align2::LEFT_BOTTOM,
+            back.left_bottom() + Vec2::new(0.0, 6.0),
+            Align2::LEFT_TOP,
             &format!("{} 1/{stride}", lang.tr("showing triangles", "显示三角形")),
-            &FontId::proportional(13.0),
+            &picture_font(painter.ctx(), 13.0),
             Color32::YELLOW,
         );
+        return back.union(note);
     }
+    back
 }
 
 /// The matrix the stage applies, big, in a card at the top-right: the object's model matrix, V,
-/// P, the division by w, the viewport.
+/// P, the division by w, the viewport. Returns where the card is, if there is one.
 pub(super) fn matrix_card(
     painter: &egui::Painter,
     rect: Rect,
     session: &Session,
     capture: &FrameCapture,
     space: Space,
-) {
+) -> Option<Rect> {
     let m = &capture.matrices;
     let lang = session.lang;
     let (title, matrix): (String, Option<&NamedMatrix>) = match (space, session.teaching()) {
@@ -93,14 +115,14 @@ pub(super) fn matrix_card(
                 format!("{} · {}", model.name, session.spec.label(&o.name, lang)),
                 Some(model),
             ),
-            _ => return,
+            _ => return None,
         },
         (Space::World, Teaching::Stack) => match capture.hierarchy.iter().find_map(|s| match s {
             pipeline::hierarchy::Step::Visit { composite, .. } => Some(composite),
             _ => None,
         }) {
             Some(c) => (c.name.clone(), Some(c)),
-            None => return,
+            None => return None,
         },
         (Space::Eye, _) => (m.view.name.clone(), Some(&m.view)),
         (Space::Clip, _) => (m.projection.name.clone(), Some(&m.projection)),
@@ -109,7 +131,7 @@ pub(super) fn matrix_card(
             None,
         ),
         (Space::Window, _) => (m.viewport.name.clone(), Some(&m.viewport)),
-        _ => return,
+        _ => return None,
     };
     let size = (rect.width() / 42.0).clamp(13.0, 24.0);
     let style = typeset::Style {
@@ -170,9 +192,11 @@ pub(super) fn matrix_card(
             painter.line_segment([Pos2::new(x, top), Pos2::new(x, bottom)], stroke);
         }
     }
+    Some(card)
 }
 
-/// The selected vertex with its coordinates in this space, the label placed off the subject.
+/// The selected vertex with its coordinates in this space, the label placed off the subject
+/// and the cards (`avoid`, the subject first).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn draw_selected(
     painter: &egui::Painter,
@@ -181,7 +205,7 @@ pub(super) fn draw_selected(
     capture: &FrameCapture,
     space: Space,
     points: &[Option<Vec3>],
-    subject_on_screen: Rect,
+    avoid: &[Rect],
     view: Rect,
 ) {
     let Some(i) = session.selection.vertex else {
@@ -201,14 +225,9 @@ pub(super) fn draw_selected(
     } else {
         position(v, space).map_or_else(String::new, vec3)
     };
-    let font = FontId::monospace(15.0);
+    let font = picture_mono(painter.ctx(), 15.0);
     let galley = painter.layout_no_wrap(format!("v{i} {text}"), font, palette::SELECTED);
-    let place = place_label(
-        p,
-        galley.size() + Vec2::splat(6.0),
-        subject_on_screen,
-        view.shrink(4.0),
-    );
+    let place = place_label(p, galley.size() + Vec2::splat(6.0), avoid, view.shrink(4.0));
     painter.line_segment(
         [p, place.center()],
         Stroke::new(1.0, palette::SELECTED.gamma_multiply(0.7)),

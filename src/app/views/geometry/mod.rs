@@ -12,7 +12,7 @@ use pipeline::capture::FrameCapture;
 use pipeline::transform::{self};
 
 use super::{
-    FATES, Projector, draw_lights, fate_color, fate_index, label_with_background, palette,
+    FATES, Projector, draw_lights, fate_color, fate_index, palette, picture_font, wrapped_label,
 };
 use crate::app::session::{Command, Session};
 use crate::vocabulary::{Lang, Space};
@@ -211,7 +211,7 @@ fn draw_axes(painter: &egui::Painter, cam: &Projector, length: f32) {
                 p,
                 Align2::CENTER_CENTER,
                 label,
-                FontId::proportional(16.0),
+                picture_font(painter.ctx(), 16.0),
                 color,
             );
         }
@@ -269,6 +269,18 @@ fn draw_triangles(
     (stride, seen, fates)
 }
 
+/// What the header over the picture says and where it may reach.
+struct Header<'a> {
+    /// The picture's rect.
+    rect: Rect,
+    space: Space,
+    subject: &'a [bool],
+    /// Whether the vertices move from one space into this one (the replay button).
+    animated: bool,
+    /// The header stays left of this x (the matrix card's left side).
+    right: f32,
+}
+
 impl GeometryView {
     /// Draws the geometry of `space`, animated from `from` at progress `t`, with the stage's
     /// matrix in a card when `card`.
@@ -316,7 +328,7 @@ impl GeometryView {
                 rect.center(),
                 Align2::CENTER_CENTER,
                 lang.tr("nothing to show in this space", "此空间中没有可显示的顶点"),
-                FontId::proportional(18.0),
+                picture_font(painter.ctx(), 18.0),
                 Color32::GRAY,
             );
             return cmds;
@@ -340,27 +352,28 @@ impl GeometryView {
                 lang,
             );
         }
-        cards::draw_selected(&painter, &cam, session, capture, space, &points, seen, rect);
-        self.header(
-            ui,
-            &painter,
+        let card = card
+            .then(|| cards::matrix_card(&painter, rect, session, capture, space))
+            .flatten();
+        let header = Header {
             rect,
             space,
-            &subject,
-            session,
-            capture,
-            &mut cmds,
-            from != space,
-        );
-        if card {
-            cards::matrix_card(&painter, rect, session, capture, space);
-        }
+            subject: &subject,
+            animated: from != space,
+            right: card.map_or(rect.right(), |c| c.left()),
+        };
+        let title = self.header(ui, &painter, &header, session, capture, &mut cmds);
         let shown = cards::Shown {
             fates,
             volume: view_volume.is_some(),
             lights,
         };
-        cards::legend(&painter, rect, lang, stride, &shown);
+        let top = card.map_or(rect.top(), |c| c.bottom()) + 8.0;
+        let legend = cards::legend(&painter, rect, top, lang, stride, &shown);
+        let avoid = [seen, card.unwrap_or(Rect::NOTHING), legend, title];
+        cards::draw_selected(
+            &painter, &cam, session, capture, space, &points, &avoid, rect,
+        );
         if response.clicked()
             && let Some(pos) = response.interact_pointer_pos()
         {
@@ -369,21 +382,24 @@ impl GeometryView {
         cmds
     }
 
-    /// Space name and object at the top-left, the view buttons at the bottom-left, drawn over
-    /// the picture.
-    #[allow(clippy::too_many_arguments)]
+    /// Space name and object at the top-left, wrapped left of the matrix card, the view buttons
+    /// below it, drawn over the picture; returns where they are.
     fn header(
         &mut self,
         ui: &mut Ui,
         painter: &egui::Painter,
-        rect: Rect,
-        space: Space,
-        subject: &[bool],
+        header: &Header,
         session: &Session,
         capture: &FrameCapture,
         cmds: &mut Vec<Command>,
-        animated: bool,
-    ) {
+    ) -> Rect {
+        let Header {
+            rect,
+            space,
+            subject,
+            animated,
+            right,
+        } = *header;
         let lang = session.lang;
         let size = ui.style().text_styles[&egui::TextStyle::Body].size;
         let mut title = space_name(space, lang).to_owned();
@@ -395,19 +411,20 @@ impl GeometryView {
         {
             title = format!("{title} · {}", session.spec.label(&o.name, lang));
         }
-        label_with_background(
+        let label = wrapped_label(
             painter,
             rect.left_top() + Vec2::new(8.0, 8.0),
             Align2::LEFT_TOP,
             &title,
             &FontId::proportional(size),
             Color32::WHITE,
+            (right - rect.left() - 30.0).max(size * 6.0),
         );
         let buttons = Rect::from_min_size(
-            rect.left_top() + Vec2::new(8.0, size * 2.0),
+            Pos2::new(rect.left() + 8.0, label.bottom() + 6.0),
             Vec2::new(rect.width() * 0.5, size * 2.0),
         );
-        ui.scope_builder(egui::UiBuilder::new().max_rect(buttons), |ui| {
+        let row = ui.scope_builder(egui::UiBuilder::new().max_rect(buttons), |ui| {
             ui.horizontal(|ui| {
                 if ui.button(lang.tr("Front view", "正视图")).clicked() {
                     (self.yaw, self.pitch) = (0.0, 0.0);
@@ -430,8 +447,11 @@ impl GeometryView {
                 {
                     cmds.push(Command::PlayTransition);
                 }
-            });
+            })
+            .response
+            .rect
         });
+        label.union(row.inner)
     }
 
     /// Drag to orbit, scroll to zoom toward the cursor, drag with the right button (or

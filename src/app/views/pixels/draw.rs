@@ -3,6 +3,7 @@
 //! inspected pixel and the selected vertex, the inside test of the inspected pixel's triangle
 //! (its edge functions), and the mip-level legend.
 
+use crate::app::views::{picture_font, picture_mono};
 use egui::{Color32, Pos2, Rect, Stroke, Vec2};
 use pipeline::capture::FrameCapture;
 use pipeline::overlay::{OverlayKind, Shape};
@@ -133,7 +134,7 @@ pub(super) fn draw_overlays(
                 "overlays: first 20 000 shapes only",
                 "叠加层：只显示前 20000 个图形",
             ),
-            egui::FontId::proportional(13.0),
+            picture_font(painter.ctx(), 13.0),
             Color32::YELLOW,
         );
     }
@@ -170,7 +171,7 @@ pub(super) fn draw_light_vectors(
             b + (b - a).normalized() * 10.0,
             egui::Align2::CENTER_CENTER,
             name,
-            egui::FontId::proportional(18.0),
+            picture_font(painter.ctx(), 18.0),
             color,
         );
     }
@@ -218,7 +219,7 @@ pub(super) fn draw_mip_legend(painter: &egui::Painter, rect: Rect, lang: Lang) {
         origin + Vec2::new(8.0, 6.0),
         egui::Align2::LEFT_TOP,
         lang.tr("mip level", "mipmap 层级"),
-        egui::FontId::proportional(13.0),
+        picture_font(painter.ctx(), 13.0),
         Color32::WHITE,
     );
     for k in 0..8u32 {
@@ -240,7 +241,7 @@ pub(super) fn draw_mip_legend(painter: &egui::Painter, rect: Rect, lang: Lang) {
             at + Vec2::new(11.0, 11.0),
             egui::Align2::CENTER_CENTER,
             label,
-            egui::FontId::proportional(12.0),
+            picture_font(painter.ctx(), 12.0),
             if k == 0 || k == 3 {
                 Color32::BLACK
             } else {
@@ -268,7 +269,7 @@ pub(super) fn draw_selection(
                 p + Vec2::new(9.0, -9.0),
                 egui::Align2::LEFT_BOTTOM,
                 &format!("v{i}"),
-                &egui::FontId::monospace(14.0),
+                &picture_mono(painter.ctx(), 14.0),
                 palette::SELECTED,
             );
         }
@@ -309,7 +310,7 @@ pub(super) fn draw_edge_test(
         Color32::from_rgb(110, 235, 110),
         Color32::from_rgb(120, 170, 255),
     ];
-    let font = egui::FontId::proportional(15.0);
+    let font = picture_font(painter.ctx(), 15.0);
     for (k, &edge_color) in EDGE.iter().enumerate() {
         let (a, b) = (e.corners[(k + 1) % 3], e.corners[(k + 2) % 3]);
         let (pa, pb) = (view.window_to_screen(a), view.window_to_screen(b));

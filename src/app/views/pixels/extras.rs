@@ -3,9 +3,10 @@
 //! image marked; under a texturing buffer, the mip pyramid, every level at once, the level read at
 //! the inspected pixel framed and its footprint drawn there.
 
+use crate::app::views::picture_font;
 use std::collections::HashMap;
 
-use egui::{Align2, Color32, FontId, Pos2, Rect, Stroke, TextureOptions, Ui, Vec2};
+use egui::{Align2, Color32, Pos2, Rect, Stroke, TextureOptions, Ui, Vec2};
 use egui_plot::{Legend, Line, Plot, VLine};
 use pipeline::capture::{FrameCapture, PixelRecord};
 
@@ -142,7 +143,7 @@ impl Pyramid {
                 Pos2::new(r.left(), r.top() - LABEL_H),
                 Align2::LEFT_TOP,
                 format!("{k}: {}×{}", level.width, level.height),
-                FontId::proportional(13.0),
+                picture_font(painter.ctx(), 13.0),
                 if chosen {
                     Color32::YELLOW
                 } else {
@@ -167,7 +168,7 @@ impl Pyramid {
                     "框出：所检查像素读取的层级，青色为其覆盖区域"
                 )
             ),
-            &FontId::proportional(13.0),
+            &picture_font(painter.ctx(), 13.0),
             Color32::WHITE,
         );
     }

@@ -1,0 +1,65 @@
+//! The observer: its lens, and the viewing camera it draws, checked in world coordinates.
+
+use pipelens::observer::{Parts, observer_fovy, scene_extent, viewing_camera};
+use pipelens::vocabulary::Lang;
+
+#[test]
+fn a_narrow_observer_keeps_the_horizontal_angle_of_a_wide_one() {
+    assert_eq!(observer_fovy(1.6), 50.0);
+    assert_eq!(observer_fovy(2.5), 50.0);
+    let wide = (25f32.to_radians().tan()) * 1.6;
+    for aspect in [1.2f32, 0.8, 0.5] {
+        let fovy = observer_fovy(aspect);
+        assert!(fovy > 50.0);
+        // tan(fovx/2) = tan(fovy/2)·aspect stays that of the wide picture.
+        let horizontal = (fovy.to_radians() / 2.0).tan() * aspect;
+        assert!((horizontal - wide).abs() < 1e-4, "aspect {aspect}: {fovy}°");
+    }
+    assert_eq!(observer_fovy(0.05), 120.0, "capped");
+    assert_eq!(observer_fovy(f32::NAN), 50.0);
+}
+
+/// The tour's frustum and clipped polygons, as the observer draws them: the near corners lie on
+/// the near plane and map to the corners of the NDC cube's near face under the capture's own
+/// P·V; the polygons clipping made from the floor lie on the floor (y = −1).
+#[test]
+fn the_observer_draws_the_frustum_and_the_clipped_floor_where_they_are() {
+    let lesson = pipelens::lesson::default_lesson().expect("the tour loads");
+    let spec = lesson.spec_playing(5, 0.0);
+    let capture = pipeline::render(&spec.scene, &spec.settings).expect("renders");
+    let parts = Parts {
+        axes: false,
+        lights: false,
+        sides: false,
+        far: false,
+        clipped: false,
+        ..Parts::default()
+    };
+    let (near, _) = viewing_camera(&capture, &parts, scene_extent(&spec), Lang::En);
+    assert_eq!(near.len(), 4, "the near rectangle");
+    let pv = capture.matrices.projection.matrix * capture.matrices.view.matrix;
+    for m in &near {
+        let c = pv * m.a.extend(1.0);
+        let ndc = c.truncate() / c.w;
+        assert!((ndc.z + 1.0).abs() < 1e-3, "on the near plane: {ndc}");
+        assert!((ndc.x.abs() - 1.0).abs() < 1e-3 && (ndc.y.abs() - 1.0).abs() < 1e-3);
+    }
+    let clipped = Parts {
+        near: false,
+        clipped: true,
+        ..parts
+    };
+    let (marks, _) = viewing_camera(&capture, &clipped, scene_extent(&spec), Lang::En);
+    let floor = capture
+        .primitives
+        .iter()
+        .filter(|p| p.clipped_polygon.is_some())
+        .all(|p| capture.objects[p.object as usize].name == "floor");
+    assert!(floor, "in the tour only the floor crosses the frustum");
+    assert!(!marks.is_empty(), "the floor is clipped");
+    for m in &marks {
+        for p in [m.a, m.b] {
+            assert!((p.y + 1.0).abs() < 1e-3, "on the floor: {p}");
+        }
+    }
+}
