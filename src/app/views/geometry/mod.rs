@@ -249,7 +249,7 @@ fn draw_triangles(
             if focused {
                 color
             } else {
-                color.gamma_multiply(0.45)
+                color.gamma_multiply(0.3)
             },
         );
         let p = prim
