@@ -142,7 +142,7 @@ impl Session {
         player.time = 0.0;
         player.show_answer = false;
         let step = player.current().clone();
-        player.playing = !step.animate.is_empty();
+        player.playing = !step.animate.is_empty() && !step.predicts();
         let spec = player.lesson.spec_playing(k, 0.0);
         if let Some(stage) = step.stage {
             self.go_to(stage);

@@ -145,9 +145,13 @@ pub fn names(spec: &SceneSpec) -> Vec<String> {
             out.push(format!("objects.{}.{p}", o.name));
         }
     }
-    for (k, _) in spec.scene.lights.iter().enumerate() {
+    for (k, light) in spec.scene.lights.iter().enumerate() {
         for p in ["position", "direction", "intensity"] {
             out.push(format!("lights.{k}.{p}"));
+        }
+        if matches!(light, pipeline::light::Light::Spot { .. }) {
+            out.push(format!("lights.{k}.cutoff"));
+            out.push(format!("lights.{k}.exponent"));
         }
     }
     let mut figures = spec.scene.figures.clone();
@@ -460,8 +464,28 @@ fn light_param(light: &mut pipeline::light::Light, key: &str, v: &Value) -> Resu
                 _ => vec3(v)?,
             };
         }
+        (Light::Spot { cutoff_deg, .. }, "cutoff") => {
+            let c = number(v)?;
+            if !(c > 0.0 && c <= 90.0) {
+                return Err(format!(
+                    "expected the cone's half-angle in degrees, 0 < cutoff ≤ 90, found {c}"
+                )
+                .into());
+            }
+            *cutoff_deg = c;
+        }
+        (Light::Spot { exponent, .. }, "exponent") => {
+            let e = number(v)?;
+            if !(e.is_finite() && e >= 0.0) {
+                return Err(format!("expected a falloff exponent e ≥ 0, found {e}").into());
+            }
+            *exponent = e;
+        }
         (_, "position" | "direction") => {
             return Err(format!("this kind of light has no `{key}`").into());
+        }
+        (_, "cutoff" | "exponent") => {
+            return Err(format!("only a spot light has a `{key}`").into());
         }
         _ => return Err(Problem::Unknown),
     }
@@ -493,6 +517,8 @@ pub fn describe(spec: &SceneSpec, name: &str, lang: crate::vocabulary::Lang) -> 
             "position" => "位置",
             "direction" => "方向",
             "intensity" => "强度",
+            "cutoff" => "截止角",
+            "exponent" => "衰减指数",
             "light" => "光源",
             "shininess" => "高光指数",
             "lod_bias" => "mip 偏移",

@@ -73,6 +73,15 @@ pub struct Step {
     pub answer: Option<Text>,
 }
 
+impl Step {
+    /// Whether the step asks its question before its animation plays ("predict, then watch"):
+    /// a step with both a question and an animation starts paused, and Space plays it.
+    #[must_use]
+    pub fn predicts(&self) -> bool {
+        self.question.is_some() && !self.animate.is_empty()
+    }
+}
+
 /// A lesson, validated.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Lesson {

@@ -25,7 +25,7 @@ pub fn buffer_name(kind: BufferKind, l: Lang) -> &'static str {
         BufferKind::Uv => l.tr("Texture coordinates (u, v)", "纹理坐标 (u, v)"),
         BufferKind::MipLevel => l.tr("Mip level", "Mipmap 层级"),
         BufferKind::Texel => l.tr("Texel colour", "纹素颜色"),
-        BufferKind::Footprint => l.tr("Texture footprint", "纹理足迹"),
-        BufferKind::Reflected => l.tr("Reflected (environment)", "反射项（环境贴图）"),
+        BufferKind::Footprint => l.tr("Texture footprint", "纹理覆盖区域（足迹）"),
+        BufferKind::Reflected => l.tr("Reflected (environment)", "反射项（环境映射（反射映射））"),
     }
 }

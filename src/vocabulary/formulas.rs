@@ -6,6 +6,10 @@ use super::Lang;
 
 const FORMULAS_ZH: &[(&str, &str)] = &[
     (
+        "Frustum(l, r, b, t, near, far): shear, scale, then perspective normalization",
+        "Frustum(l, r, b, t, near, far)：先错切，再缩放，最后透视规范化",
+    ),
+    (
         "Frustum(−right, right, −top, top, near, far) with top = near·tan(fovy/2), right = top·aspect",
         "Frustum(−right, right, −top, top, near, far)，其中 top = near·tan(fovy/2)，right = top·aspect",
     ),

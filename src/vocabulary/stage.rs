@@ -62,7 +62,7 @@ impl Stage {
         match self {
             Self::Model => l.tr("Model", "模型"),
             Self::World => l.tr("World", "世界"),
-            Self::View => l.tr("View", "观察"),
+            Self::View => l.tr("View", "相机"),
             Self::Clip => l.tr("Clip", "裁剪"),
             Self::Ndc => l.tr("NDC", "规范化设备"),
             Self::Screen => l.tr("Viewport", "视口"),

@@ -568,3 +568,29 @@ fn a_label_keeps_off_the_subject_and_the_cards() {
         "the top-right corner: {r:?}"
     );
 }
+
+#[test]
+fn a_step_that_asks_before_it_animates_waits_for_space() {
+    let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
+    let mut h = lesson_harness(Some(path));
+    h.run_steps(2);
+    let spot = h
+        .state()
+        .session
+        .lesson
+        .as_ref()
+        .and_then(|p| p.lesson.steps.iter().position(|s| s.predicts()))
+        .expect("lesson 10 has a predict-then-watch step");
+    h.state_mut()
+        .session
+        .apply(pipelens::app::session::Command::GoToStep(spot));
+    h.run_steps(4);
+    let playing =
+        |h: &Harness<'_, PipelensApp>| h.state().session.lesson.as_ref().is_some_and(|p| p.playing);
+    assert!(!playing(&h), "it waits for the prediction");
+    assert!(h.query_by_label_contains("Predict first").is_some());
+    h.key_press(egui::Key::Space);
+    h.run_steps(4);
+    assert!(playing(&h), "Space plays it");
+    assert!(h.query_by_label_contains("Predict first").is_none());
+}

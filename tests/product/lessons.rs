@@ -405,8 +405,36 @@ fn every_matrix_formula_a_lesson_shows_reads_in_chinese() {
         let Ok(Document::Lesson(lesson)) = load_file(&path) else {
             panic!("{} loads", path.display());
         };
-        for k in 0..lesson.steps.len() {
-            let mut spec = lesson.spec_at(k);
+        // Every step, and the first step again with each other kind of projection (a lesson
+        // may switch to any of them).
+        let first = lesson.spec_at(0);
+        let kinds = [
+            pipeline::camera::Projection::Frustum {
+                left: -0.4,
+                right: 0.6,
+                bottom: -0.3,
+                top: 0.3,
+                near: 1.0,
+                far: 10.0,
+            },
+            pipeline::camera::Projection::Ortho {
+                left: -2.0,
+                right: 2.0,
+                bottom: -1.5,
+                top: 1.5,
+                near: 0.5,
+                far: 10.0,
+            },
+        ];
+        let specs =
+            (0..lesson.steps.len())
+                .map(|k| lesson.spec_at(k))
+                .chain(kinds.into_iter().map(|projection| {
+                    let mut spec = first.clone();
+                    spec.scene.projection = projection;
+                    spec
+                }));
+        for mut spec in specs {
             spec.settings.width = 32;
             spec.settings.height = 20;
             let c = pipeline::render(&spec.scene, &spec.settings).expect("renders");

@@ -83,6 +83,16 @@ fn contents(
         .auto_shrink([false, true])
         .show(ui, |ui| {
             narration(ui, step.narration.get(lang), &style);
+            if step.predicts() && !player.playing && player.time == 0.0 {
+                ui.label(
+                    RichText::new(lang.tr(
+                        "Predict first (the question below), then press Space to watch.",
+                        "先预测（见下方思考题），再按空格键观看。",
+                    ))
+                    .strong()
+                    .color(Color32::from_rgb(255, 214, 120)),
+                );
+            }
             for a in &step.animate {
                 let line = format!(
                     "{} {}: {} → {}",

@@ -331,7 +331,7 @@ fn texture_sampling(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lan
     ui.add(Slider::new(&mut smp.anisotropy, 1..=16).text(lang.tr("anisotropy", "各向异性")))
         .on_hover_text(lang.tr(
             "Up to N samples along the footprint's major axis; λ = log₂(major/N).",
-            "沿足迹长轴最多取 N 个样本；λ = log₂(长轴/N)。",
+            "沿覆盖区域（足迹）长轴最多取 N 个样本；λ = log₂(长轴/N)。",
         ));
     ui.add(Slider::new(&mut smp.lod_bias, -4.0..=4.0).text(lang.tr("mip bias", "mip 偏移")))
         .on_hover_text("λ + bias");
