@@ -61,13 +61,28 @@ pub struct Gizmo {
 }
 
 impl Light {
+    /// The light's intensity per RGB component.
+    #[must_use]
+    pub fn intensity(&self) -> Vec3 {
+        match *self {
+            Self::Ambient { intensity }
+            | Self::Point { intensity, .. }
+            | Self::Directional { intensity, .. }
+            | Self::Spot { intensity, .. } => intensity,
+        }
+    }
+
     /// How to draw the light in a picture of a scene centred at `centre` whose size is about
     /// `size`: a point light as a star of three crossed segments; a spotlight as its apex, its
     /// axis and its cone of half-angle `cutoff` (eight rays and the circle that ends them, a
     /// length `size` from the apex); a directional light as three parallel arrows along its
-    /// direction, ending beside `centre`. An ambient light is everywhere: `None`.
+    /// direction, ending beside `centre`. An ambient light is everywhere, and a light switched
+    /// off (intensity 0) sheds nothing: `None`.
     #[must_use]
     pub fn gizmo(&self, centre: Vec3, size: f32) -> Option<Gizmo> {
+        if self.intensity() == Vec3::ZERO {
+            return None;
+        }
         let star = |p: Vec3, r: f32| {
             [
                 Vec3::X,
