@@ -103,11 +103,12 @@ pub fn encode_capture(capture: &FrameCapture, opts: &ExportOptions) -> Result<Ve
     }
     let d16 = capture.depth16();
     let mut bytes = Vec::new();
+    // `write_image` takes the samples in native byte order and writes PNG's big-endian itself.
     PngEncoder::new(&mut bytes)
         .write_image(
             d16.as_raw()
                 .iter()
-                .flat_map(|v| v.to_be_bytes())
+                .flat_map(|v| v.to_ne_bytes())
                 .collect::<Vec<u8>>()
                 .as_slice(),
             d16.width(),

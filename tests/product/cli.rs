@@ -476,3 +476,38 @@ mesh = "tri.obj"
         [4.0, 6.0, 6.0]
     );
 }
+
+/// `depth16.png` holds round(65535·z_w) of every pixel, as the capture has it: read back, every
+/// pixel equals the capture's window depth (a byte-swapped file would hold 64 for z_w = 0.25).
+#[test]
+fn depth16_round_trips_every_pixel_of_the_capture() {
+    let spec = pipelens::lesson::default_scene().expect("the built-in scene");
+    let mut settings = spec.settings;
+    (settings.width, settings.height) = (96, 60);
+    let capture = pipeline::render(&spec.scene, &settings).expect("renders");
+    let dir = tempfile::tempdir().expect("temp dir");
+    let opts = pipelens::export::ExportOptions {
+        out: dir.path().to_path_buf(),
+        overlay_zoom: 1,
+        max_records: 10,
+        pixel: None,
+        cancel: pipelens::export::Cancel::default(),
+    };
+    pipelens::export::export_capture(&capture, &opts, &mut |_, _, _| {}).expect("exports");
+    let read = image::open(dir.path().join("depth16.png"))
+        .expect("decodes")
+        .into_luma16();
+    let expected = capture.depth16();
+    assert_eq!(read.dimensions(), expected.dimensions());
+    let mut varied = std::collections::BTreeSet::new();
+    for (x, y, p) in read.enumerate_pixels() {
+        let want = expected.get_pixel(x, y)[0];
+        assert_eq!(p[0], want, "pixel ({x}, {y})");
+        varied.insert(want);
+    }
+    assert!(varied.len() > 50, "a scene with many depths");
+    assert!(
+        varied.iter().any(|v| (v >> 8) != (v & 0xff)),
+        "values whose two bytes differ, which a swap would change"
+    );
+}
