@@ -92,7 +92,7 @@ pub enum Command {
     },
     /// Validate scene and lesson files and print every problem with file:line:column.
     Check {
-        /// The files to check.
+        /// The files to check; a folder stands for every `.toml` file under it.
         #[arg(required = true)]
         paths: Vec<PathBuf>,
     },
@@ -406,9 +406,52 @@ fn profile_file(
     Ok(crate::export::profile_csv(line, &named))
 }
 
-fn check(paths: &[PathBuf]) -> ExitCode {
-    let mut failed = 0;
+/// The files `check` reads: each file named, and every `.toml` file under each folder named
+/// (sorted, at any depth); a folder with none is a problem.
+fn files_to_check(paths: &[PathBuf]) -> (Vec<PathBuf>, Vec<String>) {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) -> std::io::Result<()> {
+        let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)?
+            .map(|e| e.map(|e| e.path()))
+            .collect::<std::io::Result<_>>()?;
+        entries.sort();
+        for p in entries {
+            if p.is_dir() {
+                walk(&p, out)?;
+            } else if p.extension().is_some_and(|e| e == "toml") {
+                out.push(p);
+            }
+        }
+        Ok(())
+    }
+    let (mut files, mut problems) = (Vec::new(), Vec::new());
     for p in paths {
+        if !p.is_dir() {
+            files.push(p.clone());
+            continue;
+        }
+        let before = files.len();
+        match walk(p, &mut files) {
+            Err(e) => problems.push(format!(
+                "{}: error: cannot read this folder: {e}",
+                p.display()
+            )),
+            Ok(()) if files.len() == before => problems.push(format!(
+                "{}: error: this folder has no .toml file to check",
+                p.display()
+            )),
+            Ok(()) => {}
+        }
+    }
+    (files, problems)
+}
+
+fn check(paths: &[PathBuf]) -> ExitCode {
+    let (paths, problems) = files_to_check(paths);
+    for p in &problems {
+        eprintln!("{p}");
+    }
+    let mut failed = problems.len();
+    for p in &paths {
         match lesson::load_file(p) {
             Ok(lesson::Document::Scene(_)) => println!("{}: ok (scene)", p.display()),
             Ok(lesson::Document::Lesson(l)) => {
@@ -426,7 +469,10 @@ fn check(paths: &[PathBuf]) -> ExitCode {
         }
     }
     if failed > 0 {
-        eprintln!("{failed} of {} file(s) have errors", paths.len());
+        eprintln!(
+            "{failed} of {} file(s) have errors",
+            paths.len() + problems.len()
+        );
         ExitCode::FAILURE
     } else {
         ExitCode::SUCCESS

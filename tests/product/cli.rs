@@ -511,3 +511,45 @@ fn depth16_round_trips_every_pixel_of_the_capture() {
         "values whose two bytes differ, which a swap would change"
     );
 }
+
+/// `check FOLDER` checks every `.toml` file under it, as linters do, and says which is broken;
+/// a folder with none is an error, not a silent success.
+#[test]
+fn check_reads_every_lesson_and_scene_in_a_folder() {
+    let o = pipelens(&repo(), &["check", "lessons", "assets/scenes"]);
+    let out = text(&o);
+    assert!(o.status.success(), "{out}");
+    let lessons = std::fs::read_dir(repo().join("lessons"))
+        .expect("lessons")
+        .filter(|e| {
+            e.as_ref()
+                .is_ok_and(|e| e.path().extension().is_some_and(|x| x == "toml"))
+        })
+        .count();
+    assert_eq!(out.matches(": ok (lesson").count(), lessons, "{out}");
+    assert!(
+        out.contains("assets/scenes/default.toml: ok (scene)"),
+        "{out}"
+    );
+
+    let dir = tempfile::tempdir().expect("temp dir");
+    std::fs::create_dir(dir.path().join("unit")).expect("mkdir");
+    let scene =
+        |eye: &str| format!("[scene.camera]\neye = {eye}\n\n[[scene.objects]]\nmesh = \"cube\"\n");
+    std::fs::write(dir.path().join("unit/good.toml"), scene("[0, 0, 3]")).expect("write");
+    std::fs::write(dir.path().join("unit/bad.toml"), scene("[0, 0]")).expect("write");
+    std::fs::write(dir.path().join("unit/notes.txt"), "not a lesson").expect("write");
+    let o = pipelens(dir.path(), &["check", "unit"]);
+    let out = text(&o);
+    assert!(!o.status.success());
+    assert!(out.contains("good.toml: ok (scene)"), "{out}");
+    assert!(
+        out.contains("bad.toml:2:"),
+        "the broken file with its line: {out}"
+    );
+    assert!(out.contains("1 of 2 file(s) have errors"), "{out}");
+    std::fs::create_dir(dir.path().join("empty")).expect("mkdir");
+    let o = pipelens(dir.path(), &["check", "empty"]);
+    assert!(!o.status.success());
+    assert!(text(&o).contains("this folder has no .toml file to check"));
+}
