@@ -97,9 +97,23 @@ impl Mesh {
     }
 
     /// Recomputes every vertex normal from the faces around it (see [`NormalAveraging`]).
-    /// A vertex that belongs to no face (or only to degenerate ones) gets `+z`.
+    /// "Around the vertex" means around its **position**: vertices split because they carry
+    /// different texture coordinates or colours (a uv seam) share the faces of all the copies,
+    /// so the surface has no crease along the seam. A vertex that belongs to no face (or only to
+    /// degenerate ones) gets `+z`.
     pub fn compute_vertex_normals(&mut self, averaging: NormalAveraging) {
-        let mut sums = vec![Vec3::ZERO; self.positions.len()];
+        // One group per distinct position (−0.0 and 0.0 the same).
+        let mut groups = std::collections::HashMap::new();
+        let group: Vec<usize> = self
+            .positions
+            .iter()
+            .map(|p| {
+                let key = (*p + Vec3::ZERO).to_array().map(f32::to_bits);
+                let next = groups.len();
+                *groups.entry(key).or_insert(next)
+            })
+            .collect();
+        let mut sums = vec![Vec3::ZERO; groups.len()];
         for t in 0..self.indices.len() {
             let scaled = self.face_normal_scaled(t);
             let face = match averaging {
@@ -107,12 +121,12 @@ impl Mesh {
                 NormalAveraging::AreaWeighted => scaled,
             };
             for &i in &self.indices[t] {
-                sums[i as usize] += face;
+                sums[group[i as usize]] += face;
             }
         }
-        self.normals = sums
-            .into_iter()
-            .map(|n| n.try_normalize().unwrap_or(Vec3::Z))
+        self.normals = group
+            .iter()
+            .map(|&g| sums[g].try_normalize().unwrap_or(Vec3::Z))
             .collect();
     }
 

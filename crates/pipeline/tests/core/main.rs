@@ -8,6 +8,7 @@ mod detail;
 mod explain;
 mod frame;
 mod hierarchy;
+mod normals;
 mod properties;
 mod raster;
 mod shade;
