@@ -24,7 +24,7 @@ pub struct Cli {
     pub command: Option<Command>,
     /// The app: the lesson or scene file to open (the built-in tour, lessons/00-tour.toml, when
     /// omitted). The file is watched: edits are reloaded on save.
-    #[arg(long, alias = "lesson", global = false)]
+    #[arg(long = "lesson", visible_alias = "scene", value_name = "FILE")]
     pub scene: Option<PathBuf>,
     /// The app: the interface language, `en` or `zh`.
     #[arg(long, value_parser = ["en", "zh"])]

@@ -307,6 +307,17 @@ impl Checker<'_> {
             None if compare.is_some() => Layout::Compare,
             None => Layout::Single,
         };
+        if let (Some(c), Some(l)) = (&r.compare, &r.layout)
+            && layout != Layout::Compare
+        {
+            self.error(
+                l.span(),
+                format!(
+                    "`compare = \"{}\"` shows settings side by side, which needs `layout = \"compare\"` (or no `layout`)",
+                    c.get_ref()
+                ),
+            );
+        }
         if layout == Layout::Compare && compare.is_none() {
             let span = r.layout.as_ref().map_or(s.span(), Spanned::span);
             self.error(

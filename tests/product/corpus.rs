@@ -14,6 +14,18 @@ fn corpus(dir: &str) -> PathBuf {
 /// and words its message must contain.
 const LESSONS: &[(&str, usize, usize, &str)] = &[
     ("binary", 1, 1, "not UTF-8 text"),
+    (
+        "ambient-with-position",
+        4,
+        12,
+        "an ambient light has no `position` (only point and spot lights do)",
+    ),
+    (
+        "lesson-compare-single",
+        15,
+        10,
+        "needs `layout = \"compare\"`",
+    ),
     ("empty", 1, 1, "the file is empty"),
     ("syntax-error", 1, 14, "unclosed table, expected `]`"),
     ("unknown-key", 2, 1, "did you mean `fovy`?"),

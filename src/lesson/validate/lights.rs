@@ -34,7 +34,53 @@ pub(super) fn light(c: &mut Checker<'_>, l: &Spanned<RawLight>) -> Option<Light>
             }
         }
     };
-    match raw.kind.get_ref().as_str() {
+    // A key this kind of light does not use is a mistake to point at, not to ignore.
+    let kind = raw.kind.get_ref().as_str();
+    let unused: &[(&str, Option<std::ops::Range<usize>>, &str)] = &[
+        (
+            "position",
+            raw.position.as_ref().map(Spanned::span),
+            "point and spot lights",
+        ),
+        (
+            "direction",
+            raw.direction.as_ref().map(Spanned::span),
+            "directional and spot lights",
+        ),
+        (
+            "attenuation",
+            raw.attenuation.as_ref().map(Spanned::span),
+            "point and spot lights",
+        ),
+        (
+            "cutoff",
+            raw.cutoff.as_ref().map(Spanned::span),
+            "spot lights",
+        ),
+        (
+            "exponent",
+            raw.exponent.as_ref().map(Spanned::span),
+            "spot lights",
+        ),
+    ];
+    for (key, span, who) in unused {
+        let used = match kind {
+            "ambient" => false,
+            "point" => matches!(*key, "position" | "attenuation"),
+            "directional" => *key == "direction",
+            _ => true,
+        };
+        if let (Some(span), false) = (span, used) {
+            c.error(
+                span.clone(),
+                format!(
+                    "{} {kind} light has no `{key}` (only {who} do): remove it",
+                    if kind.starts_with('a') { "an" } else { "a" }
+                ),
+            );
+        }
+    }
+    match kind {
         "ambient" => Some(Light::Ambient { intensity }),
         "point" => Some(Light::Point {
             position: needs(c, "position", &raw.position)?,
