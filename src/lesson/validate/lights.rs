@@ -34,52 +34,8 @@ pub(super) fn light(c: &mut Checker<'_>, l: &Spanned<RawLight>) -> Option<Light>
             }
         }
     };
-    // A key this kind of light does not use is a mistake to point at, not to ignore.
     let kind = raw.kind.get_ref().as_str();
-    let unused: &[(&str, Option<std::ops::Range<usize>>, &str)] = &[
-        (
-            "position",
-            raw.position.as_ref().map(Spanned::span),
-            "point and spot lights",
-        ),
-        (
-            "direction",
-            raw.direction.as_ref().map(Spanned::span),
-            "directional and spot lights",
-        ),
-        (
-            "attenuation",
-            raw.attenuation.as_ref().map(Spanned::span),
-            "point and spot lights",
-        ),
-        (
-            "cutoff",
-            raw.cutoff.as_ref().map(Spanned::span),
-            "spot lights",
-        ),
-        (
-            "exponent",
-            raw.exponent.as_ref().map(Spanned::span),
-            "spot lights",
-        ),
-    ];
-    for (key, span, who) in unused {
-        let used = match kind {
-            "ambient" => false,
-            "point" => matches!(*key, "position" | "attenuation"),
-            "directional" => *key == "direction",
-            _ => true,
-        };
-        if let (Some(span), false) = (span, used) {
-            c.error(
-                span.clone(),
-                format!(
-                    "{} {kind} light has no `{key}` (only {who} do): remove it",
-                    if kind.starts_with('a') { "an" } else { "a" }
-                ),
-            );
-        }
-    }
+    unused_keys(c, raw, kind);
     match kind {
         "ambient" => Some(Light::Ambient { intensity }),
         "point" => Some(Light::Point {
@@ -126,6 +82,55 @@ pub(super) fn light(c: &mut Checker<'_>, l: &Spanned<RawLight>) -> Option<Light>
                 format!("`kind` of a light must be \"ambient\", \"point\", \"directional\" or \"spot\", got \"{other}\""),
             );
             None
+        }
+    }
+}
+
+/// A key this kind of light does not use (`position` on an ambient light…) is a mistake to point
+/// at, not to ignore.
+fn unused_keys(c: &mut Checker<'_>, raw: &RawLight, kind: &str) {
+    let unused: &[(&str, Option<std::ops::Range<usize>>, &str)] = &[
+        (
+            "position",
+            raw.position.as_ref().map(Spanned::span),
+            "point and spot lights",
+        ),
+        (
+            "direction",
+            raw.direction.as_ref().map(Spanned::span),
+            "directional and spot lights",
+        ),
+        (
+            "attenuation",
+            raw.attenuation.as_ref().map(Spanned::span),
+            "point and spot lights",
+        ),
+        (
+            "cutoff",
+            raw.cutoff.as_ref().map(Spanned::span),
+            "spot lights",
+        ),
+        (
+            "exponent",
+            raw.exponent.as_ref().map(Spanned::span),
+            "spot lights",
+        ),
+    ];
+    for (key, span, who) in unused {
+        let used = match kind {
+            "ambient" => false,
+            "point" => matches!(*key, "position" | "attenuation"),
+            "directional" => *key == "direction",
+            _ => true,
+        };
+        if let (Some(span), false) = (span, used) {
+            c.error(
+                span.clone(),
+                format!(
+                    "{} {kind} light has no `{key}` (only {who} do): remove it",
+                    if kind.starts_with('a') { "an" } else { "a" }
+                ),
+            );
         }
     }
 }
