@@ -89,46 +89,42 @@ pub(super) fn light(c: &mut Checker<'_>, l: &Spanned<RawLight>) -> Option<Light>
 /// A key this kind of light does not use (`position` on an ambient light…) is a mistake to point
 /// at, not to ignore.
 fn unused_keys(c: &mut Checker<'_>, raw: &RawLight, kind: &str) {
-    let unused: &[(&str, Option<std::ops::Range<usize>>, &str)] = &[
+    const KINDS: [&str; 4] = ["ambient", "point", "directional", "spot"];
+    // Each key, where it is written, and the kinds of light that use it.
+    let keys: [(&str, _, &[&str]); 5] = [
         (
             "position",
             raw.position.as_ref().map(Spanned::span),
-            "point and spot lights",
+            &["point", "spot"],
         ),
         (
             "direction",
             raw.direction.as_ref().map(Spanned::span),
-            "directional and spot lights",
+            &["directional", "spot"],
         ),
         (
             "attenuation",
             raw.attenuation.as_ref().map(Spanned::span),
-            "point and spot lights",
+            &["point", "spot"],
         ),
-        (
-            "cutoff",
-            raw.cutoff.as_ref().map(Spanned::span),
-            "spot lights",
-        ),
+        ("cutoff", raw.cutoff.as_ref().map(Spanned::span), &["spot"]),
         (
             "exponent",
             raw.exponent.as_ref().map(Spanned::span),
-            "spot lights",
+            &["spot"],
         ),
     ];
-    for (key, span, who) in unused {
-        let used = match kind {
-            "ambient" => false,
-            "point" => matches!(*key, "position" | "attenuation"),
-            "directional" => *key == "direction",
-            _ => true,
-        };
-        if let (Some(span), false) = (span, used) {
+    if !KINDS.contains(&kind) {
+        return; // the unknown kind is the error, reported with the kind
+    }
+    for (key, span, users) in keys {
+        if let Some(span) = span.filter(|_| !users.contains(&kind)) {
             c.error(
-                span.clone(),
+                span,
                 format!(
-                    "{} {kind} light has no `{key}` (only {who} do): remove it",
-                    if kind.starts_with('a') { "an" } else { "a" }
+                    "{} {kind} light has no `{key}` (only {} lights do): remove it",
+                    if kind.starts_with('a') { "an" } else { "a" },
+                    users.join(" and ")
                 ),
             );
         }
