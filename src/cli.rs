@@ -445,6 +445,39 @@ fn files_to_check(paths: &[PathBuf]) -> (Vec<PathBuf>, Vec<String>) {
     (files, problems)
 }
 
+/// Each object's mesh: its triangles and where it sits (its bounding box in object
+/// coordinates, after `fit`), which a lesson's author needs to place the camera.
+fn print_meshes(spec: &lesson::SceneSpec) {
+    let v = |p: glam::Vec3| format!("[{}, {}, {}]", short(p.x), short(p.y), short(p.z));
+    for o in &spec.scene.objects {
+        let m = &o.mesh;
+        let bounds = m.bounds().map_or_else(
+            || "no vertices".to_owned(),
+            |(lo, hi)| {
+                let c = (lo + hi) / 2.0;
+                format!("box {} to {}, centre {}", v(lo), v(hi), v(c))
+            },
+        );
+        println!(
+            "  {}: {}, {} triangles, {bounds}",
+            o.name,
+            m.name,
+            m.triangle_count()
+        );
+    }
+}
+
+/// A number with at most 3 decimals and no trailing zeros.
+fn short(x: f32) -> String {
+    let s = format!("{x:.3}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".to_owned()
+    } else {
+        s.to_owned()
+    }
+}
+
 fn check(paths: &[PathBuf]) -> ExitCode {
     let (paths, problems) = files_to_check(paths);
     for p in &problems {
@@ -453,7 +486,10 @@ fn check(paths: &[PathBuf]) -> ExitCode {
     let mut failed = problems.len();
     for p in &paths {
         match lesson::load_file(p) {
-            Ok(lesson::Document::Scene(_)) => println!("{}: ok (scene)", p.display()),
+            Ok(lesson::Document::Scene(s)) => {
+                println!("{}: ok (scene)", p.display());
+                print_meshes(&s);
+            }
             Ok(lesson::Document::Lesson(l)) => {
                 println!(
                     "{}: ok (lesson {}, {} steps)",
@@ -461,6 +497,10 @@ fn check(paths: &[PathBuf]) -> ExitCode {
                     l.id,
                     l.steps.len()
                 );
+                print_meshes(&l.scene);
+                for w in &l.warnings {
+                    eprintln!("{w}");
+                }
             }
             Err(d) => {
                 failed += 1;

@@ -18,6 +18,17 @@ pub struct Diagnostic {
     pub source_line: String,
     /// How many characters to underline (at least 1).
     pub width: usize,
+    /// Whether it stops the file from loading.
+    pub severity: Severity,
+}
+
+/// Whether a diagnostic stops the file from loading.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Severity {
+    /// The file cannot be used until this is fixed.
+    Error,
+    /// The file loads, but this is probably a mistake.
+    Warning,
 }
 
 impl Diagnostic {
@@ -44,6 +55,16 @@ impl Diagnostic {
             message: message.into(),
             source_line,
             width,
+            severity: Severity::Error,
+        }
+    }
+
+    /// The same place and message, as a warning.
+    #[must_use]
+    pub fn warning(self) -> Self {
+        Self {
+            severity: Severity::Warning,
+            ..self
         }
     }
 
@@ -57,6 +78,7 @@ impl Diagnostic {
             message: message.into(),
             source_line: String::new(),
             width: 1,
+            severity: Severity::Error,
         }
     }
 }
@@ -73,8 +95,15 @@ impl fmt::Display for Diagnostic {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{}:{}:{}: error: {}",
-            self.file, self.line, self.column, self.message
+            "{}:{}:{}: {}: {}",
+            self.file,
+            self.line,
+            self.column,
+            match self.severity {
+                Severity::Error => "error",
+                Severity::Warning => "warning",
+            },
+            self.message
         )?;
         if !self.source_line.is_empty() {
             let gutter = self.line.to_string().len();

@@ -11,13 +11,14 @@ mod diagnostic;
 pub mod param;
 pub mod raw;
 pub mod script;
+mod syntax;
 pub mod validate;
 
 pub use script::{Lesson, Step};
 
 use std::path::{Path, PathBuf};
 
-pub use diagnostic::{Diagnostic, Diagnostics};
+pub use diagnostic::{Diagnostic, Diagnostics, Severity};
 use pipeline::scene::Scene;
 use pipeline::settings::RenderSettings;
 
@@ -38,6 +39,8 @@ pub struct SceneSpec {
     /// The names objects and figures are shown under in each language (`label = { en, zh }`),
     /// by their `name`.
     pub labels: std::collections::BTreeMap<String, Text>,
+    /// The name of each light of `scene.lights` that has one (`name = "key"`), in order.
+    pub light_names: Vec<Option<String>>,
 }
 
 impl SceneSpec {
@@ -48,7 +51,29 @@ impl SceneSpec {
             scene,
             settings,
             labels: std::collections::BTreeMap::new(),
+            light_names: Vec::new(),
         }
+    }
+
+    /// The index of the light that `key` names: its `name`, or its index written as a number.
+    #[must_use]
+    pub fn light_index(&self, key: &str) -> Option<usize> {
+        let k = key.parse::<usize>().ok().or_else(|| {
+            self.light_names
+                .iter()
+                .position(|n| n.as_deref() == Some(key))
+        })?;
+        (k < self.scene.lights.len()).then_some(k)
+    }
+
+    /// How parameters address light `k`: by its name if it has one, else by its index.
+    #[must_use]
+    pub fn light_key(&self, k: usize) -> String {
+        self.light_names
+            .get(k)
+            .cloned()
+            .flatten()
+            .unwrap_or_else(|| k.to_string())
     }
 
     /// How an object or figure (or one of a figure's parts, `figure: part`) is named in `lang`:
@@ -202,45 +227,6 @@ pub fn parse_toml<T: serde::de::DeserializeOwned>(
     }
     toml::from_str(text).map_err(|e| {
         let span = e.span().unwrap_or(0..0);
-        let message = with_suggestion(e.message().trim());
-        Diagnostics(vec![Diagnostic::at(file, text, span, message)])
+        Diagnostics(vec![syntax::explain(text, file, span, e.message().trim())])
     })
-}
-
-/// Serde's names for the kinds of value, in the words of the file's reader.
-const KINDS: [(&str, &str); 6] = [
-    ("expected f64", "expected a number"),
-    ("expected i64", "expected a whole number"),
-    ("expected a boolean", "expected true or false"),
-    ("expected a sequence", "expected an array [ … ]"),
-    (
-        "expected an array of length 3",
-        "expected an array of three numbers [x, y, z]",
-    ),
-    ("expected a map", "expected a table { … }"),
-];
-
-/// Adds "did you mean `x`?" to serde's "unknown field `y`, expected one of `a`, `b`" messages,
-/// and names kinds of value in plain words ("expected a number", not "expected f64").
-fn with_suggestion(message: &str) -> String {
-    let message = KINDS
-        .iter()
-        .fold(message.to_owned(), |m, (from, to)| m.replace(from, to));
-    let message = message.as_str();
-    let Some(rest) = message.strip_prefix("unknown field `") else {
-        return message.to_owned();
-    };
-    let Some((unknown, expected)) = rest.split_once('`') else {
-        return message.to_owned();
-    };
-    let candidates = expected.split('`').skip(1).step_by(2);
-    // Jaro-Winkler favours a shared beginning: `fov` → `fovy`, `shine` → `shininess`.
-    let best = candidates
-        .map(|c| (strsim::jaro_winkler(unknown, c), c))
-        .filter(|(sim, _)| *sim >= 0.8)
-        .max_by(|a, b| a.0.total_cmp(&b.0));
-    match best {
-        Some((_, c)) => format!("{message}; did you mean `{c}`?"),
-        None => message.to_owned(),
-    }
 }

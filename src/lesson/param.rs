@@ -134,24 +134,20 @@ pub fn names(spec: &SceneSpec) -> Vec<String> {
     .map(str::to_owned)
     .to_vec();
     for o in &spec.scene.objects {
-        for p in [
-            "translate",
-            "rotate",
-            "scale",
-            "color",
-            "axis",
-            "axis_angle",
-        ] {
+        let curve = matches!(o.builtin, Some(pipeline::mesh::BuiltinMesh::Bezier { .. }));
+        let own: &[&str] = if curve { &BEZIER_PARAMS } else { &[] };
+        for p in OBJECT_PARAMS.iter().chain(own) {
             out.push(format!("objects.{}.{p}", o.name));
         }
     }
     for (k, light) in spec.scene.lights.iter().enumerate() {
+        let key = spec.light_key(k);
         for p in ["position", "direction", "intensity"] {
-            out.push(format!("lights.{k}.{p}"));
+            out.push(format!("lights.{key}.{p}"));
         }
         if matches!(light, pipeline::light::Light::Spot { .. }) {
-            out.push(format!("lights.{k}.cutoff"));
-            out.push(format!("lights.{k}.exponent"));
+            out.push(format!("lights.{key}.cutoff"));
+            out.push(format!("lights.{key}.exponent"));
         }
     }
     let mut figures = spec.scene.figures.clone();
@@ -280,11 +276,8 @@ fn set(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Problem> {
             object_param(o, p, v)?;
         }
         ["lights", k, p] => {
-            let light = k
-                .parse::<usize>()
-                .ok()
-                .and_then(|k| spec.scene.lights.get_mut(k))
-                .ok_or(Problem::Unknown)?;
+            let k = spec.light_index(k).ok_or(Problem::Unknown)?;
+            let light = &mut spec.scene.lights[k];
             light_param(light, p, v)?;
         }
         ["figures", figure, joint] => {
@@ -305,6 +298,23 @@ fn set(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Problem> {
     }
     Ok(())
 }
+
+/// The parameters of every object (`objects.NAME.p`): transform, colour, material.
+const OBJECT_PARAMS: [&str; 10] = [
+    "translate",
+    "rotate",
+    "scale",
+    "color",
+    "axis",
+    "axis_angle",
+    "ka",
+    "kd",
+    "ks",
+    "shininess",
+];
+
+/// The parameters a built-in Bézier curve adds: its control points and the drawn `t`.
+const BEZIER_PARAMS: [&str; 5] = ["t", "p0", "p1", "p2", "p3"];
 
 /// `objects.NAME.p`: the object's transform, colour, material, or its built-in shape.
 fn object_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(), Problem> {

@@ -76,6 +76,8 @@ pub struct RawShadow {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawLight {
+    /// The name parameters address it by (`lights.key.position`); else its index.
+    pub name: Option<Spanned<String>>,
     pub kind: Spanned<String>,
     pub intensity: Option<Spanned<RawScale>>,
     pub position: Option<RawVec3>,
@@ -165,6 +167,8 @@ pub struct RawObject {
     /// `"checkerboard"`, `"uv_grid"`, `"mip_levels"` or a path to a PNG or JPEG file.
     pub texture: Option<Spanned<String>>,
     pub casts_shadow: Option<bool>,
+    /// Centre the mesh's bounding box at the origin and scale it into the unit sphere.
+    pub fit: Option<bool>,
     /// `{ texture = "bumps" | path, strength = … }`.
     pub bump: Option<Spanned<RawBump>>,
     /// A tangent-space normal map: a PNG/JPEG path.
@@ -282,7 +286,10 @@ pub struct RawMeta {
 
 /// Text in both languages: `{ en = "…", zh = "…" }`.
 #[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a text in both languages, { en = \"…\", zh = \"…\" }"
+)]
 pub struct RawText {
     pub en: String,
     pub zh: String,

@@ -97,6 +97,8 @@ pub struct Lesson {
     pub scene: SceneSpec,
     /// The steps, at least one.
     pub steps: Vec<Step>,
+    /// What loads but is probably a mistake (an `id` that differs from the file's name).
+    pub warnings: Vec<super::Diagnostic>,
 }
 
 impl Lesson {
@@ -147,6 +149,22 @@ pub fn parse_lesson(text: &str, file: &str, base: &Path) -> Result<Lesson, Diagn
     if id.is_empty() {
         c.error(meta.id.span(), "`id` must not be empty");
     }
+    let mut warnings = Vec::new();
+    let stem = Path::new(file).file_stem().and_then(|s| s.to_str());
+    if let Some(stem) = stem.filter(|s| !id.is_empty() && *s != id) {
+        warnings.push(
+            super::Diagnostic::at(
+                file,
+                text,
+                meta.id.span(),
+                format!(
+                    "the id \"{id}\" differs from the file's name \"{stem}\": prerequisites name \
+                     lessons by id and a reader looks for the file of that name, so keep the two the same"
+                ),
+            )
+            .warning(),
+        );
+    }
     let title = c.text_of("title", &meta.title);
     let summary = c.text_of("summary", &meta.summary);
     let prerequisites = meta
@@ -180,6 +198,7 @@ pub fn parse_lesson(text: &str, file: &str, base: &Path) -> Result<Lesson, Diagn
         return Err(Diagnostics(found));
     }
     Ok(Lesson {
+        warnings,
         id,
         title,
         summary,

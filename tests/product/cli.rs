@@ -553,3 +553,47 @@ fn check_reads_every_lesson_and_scene_in_a_folder() {
     assert!(!o.status.success());
     assert!(text(&o).contains("this folder has no .toml file to check"));
 }
+
+#[test]
+fn check_warns_of_an_id_unlike_the_file_name_and_describes_each_mesh() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    // A 2×4×6 box whose corner is at the origin: centre (1, 2, 3); fitted, its half-diagonal
+    // √(1 + 4 + 9) becomes 1.
+    let obj = "v 0 0 0\nv 2 0 0\nv 2 4 0\nv 0 4 6\nf 1 2 3\nf 1 3 4\n";
+    std::fs::write(dir.path().join("box.obj"), obj).expect("write");
+    let lesson = |fit: bool| {
+        format!(
+            "[lesson]\nid = \"other\"\ntitle = {{ en = \"A\", zh = \"甲\" }}\n\
+             summary = {{ en = \"A.\", zh = \"甲。\" }}\n\n[[scene.objects]]\nname = \"box\"\n\
+             mesh = \"box.obj\"\nfit = {fit}\n\n[[scene.lights]]\nname = \"key\"\nkind = \"point\"\n\
+             position = [1, 1, 1]\n\n[[steps]]\ntitle = {{ en = \"A\", zh = \"甲\" }}\n\
+             narration = {{ en = \"A.\", zh = \"甲。\" }}\nset = {{ \"lights.key.intensity\" = 0.5 }}\n"
+        )
+    };
+    std::fs::write(dir.path().join("mine.toml"), lesson(false)).expect("write");
+    let o = pipelens(dir.path(), &["check", "mine.toml"]);
+    let out = text(&o);
+    assert!(
+        o.status.success(),
+        "a warning does not fail the check: {out}"
+    );
+    assert!(
+        out.contains(
+            "mine.toml:2:6: warning: the id \"other\" differs from the file's name \"mine\""
+        ),
+        "{out}"
+    );
+    assert!(
+        out.contains("box: box.obj, 2 triangles, box [0, 0, 0] to [2, 4, 6], centre [1, 2, 3]"),
+        "{out}"
+    );
+    std::fs::write(dir.path().join("other.toml"), lesson(true)).expect("write");
+    let o = pipelens(dir.path(), &["check", "other.toml"]);
+    let out = text(&o);
+    assert!(!out.contains("warning"), "{out}");
+    // 1/√14 = 0.2673, 2/√14 = 0.5345, 3/√14 = 0.8018.
+    assert!(
+        out.contains("box [-0.267, -0.535, -0.802] to [0.267, 0.535, 0.802], centre [0, 0, 0]"),
+        "{out}"
+    );
+}

@@ -71,12 +71,17 @@ const LESSONS: &[(&str, usize, usize, &str)] = &[
         1,
         "is parallel to the view direction",
     ),
-    ("missing-mesh", 2, 8, "not-here.obj"),
+    (
+        "missing-mesh",
+        2,
+        8,
+        "there is no file {dir}/models/not-here.obj (paths are relative to the folder of the lesson or scene file, {dir})",
+    ),
     (
         "missing-texture",
         3,
         11,
-        "not-here.png: cannot load the texture",
+        "there is no file {dir}/not-here.png (paths are relative to the folder of the lesson or scene file, {dir})",
     ),
     (
         "unknown-builtin-mesh",
@@ -104,7 +109,48 @@ const LESSONS: &[(&str, usize, usize, &str)] = &[
         "did you mean \"figures.arm.lower\"?",
     ),
     ("lesson-unknown-stage", 13, 9, "`stage` must be one of"),
-    ("lesson-missing-chinese", 12, 13, "missing field `zh`"),
+    (
+        "lesson-missing-chinese",
+        12,
+        13,
+        "`narration` needs both languages, { en = \"…\", zh = \"…\" }: `zh` is missing",
+    ),
+    (
+        "unclosed-inline-table",
+        11,
+        9,
+        "this `{` is never closed: a table written inline, `{ … }`, ends with `}` (the reader went on to line 12 and stopped there: missing comma between key-value pairs, expected `,`)",
+    ),
+    (
+        "text-without-languages",
+        11,
+        9,
+        "invalid type: string \"Seeing the normals\", expected a text in both languages, { en = \"…\", zh = \"…\" }",
+    ),
+    (
+        "duplicate-key",
+        14,
+        1,
+        "`set` is given twice in the same table: it was first given on line 13, column 1; give each key once",
+    ),
+    (
+        "misspelt-material-parameter",
+        13,
+        9,
+        "unknown parameter \"objects.teapot.shinyness\"; did you mean \"objects.teapot.shininess\"?",
+    ),
+    (
+        "duplicate-light-name",
+        16,
+        8,
+        "two lights are named \"key\" (the first on line 11); names must differ",
+    ),
+    (
+        "misspelt-light-name",
+        18,
+        9,
+        "unknown parameter \"lights.kye.position\"; did you mean \"lights.key.position\"?",
+    ),
     ("lesson-no-steps", 1, 1, "the lesson has no steps"),
 ];
 
@@ -117,12 +163,14 @@ fn every_broken_lesson_is_one_clear_error_at_its_place() {
         LESSONS.len(),
         "every corpus file has its expectation"
     );
+    let shown = std::path::absolute(&dir).expect("absolute");
     for (name, line, column, needle) in LESSONS {
         let path = dir.join(format!("{name}.toml"));
         let e = pipelens::lesson::load_file(&path).expect_err(name);
         let first = &e.0[0];
+        let needle = needle.replace("{dir}", &shown.to_string_lossy());
         assert!(
-            first.line == *line && first.column == *column && first.message.contains(needle),
+            first.line == *line && first.column == *column && first.message.contains(&needle),
             "{name}: expected {line}:{column} \"{needle}\", got\n{e}"
         );
         assert!(

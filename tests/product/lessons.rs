@@ -218,7 +218,11 @@ const MISTAKES: &[(&str, &str, &str)] = &[
         "answr",
         "did you mean `answer`",
     ),
-    ("question = { en = \"x\" }", "{ en", "missing field `zh`"),
+    (
+        "question = { en = \"x\" }",
+        "{ en",
+        "`question` needs both languages",
+    ),
     (
         "question = { en = \"x\", zh = \" \" }",
         "{ en",

@@ -122,7 +122,7 @@ fn cameras_meshes_and_objects() {
         "[[scene.objects]]\nmesh = \"missing.obj\"\n",
         2,
         8,
-        "missing.obj: cannot load the OBJ file",
+        "/missing.obj (paths are relative to the folder of the lesson or scene file",
     );
     assert_error(
         "[[scene.objects]]\nmesh = { builtin = \"uv_sphere\", segments = 2 }\n",

@@ -10,6 +10,37 @@ use super::{Checker, triple};
 use crate::lesson::raw::{RawFigure, RawLight, RawShadow, RawVec3};
 use crate::vocabulary::Text;
 
+/// The lights' names, each checked: not empty, not a number (numbers are indices), not the
+/// name of an earlier light.
+pub(super) fn names(c: &mut Checker<'_>, lights: &[Spanned<RawLight>]) -> Vec<Option<String>> {
+    let mut seen: Vec<&Spanned<String>> = Vec::new();
+    for n in lights.iter().filter_map(|l| l.get_ref().name.as_ref()) {
+        let name = n.get_ref();
+        let ok_chars = name
+            .chars()
+            .all(|ch| ch.is_alphanumeric() || ch == '_' || ch == '-');
+        if name.is_empty() || !ok_chars || name.parse::<usize>().is_ok() {
+            c.error(
+                n.span(),
+                format!("a light's `name` is a word of letters, digits, `_` or `-`, not a number (numbers address lights by index), got \"{name}\""),
+            );
+        } else if let Some(first) = seen.iter().find(|s| s.get_ref() == name) {
+            let line = c.line_of(first.span().start);
+            c.error(
+                n.span(),
+                format!(
+                    "two lights are named \"{name}\" (the first on line {line}); names must differ"
+                ),
+            );
+        }
+        seen.push(n);
+    }
+    lights
+        .iter()
+        .map(|l| l.get_ref().name.as_ref().map(|n| n.get_ref().clone()))
+        .collect()
+}
+
 pub(super) fn light(c: &mut Checker<'_>, l: &Spanned<RawLight>) -> Option<Light> {
     let raw = l.get_ref();
     let intensity = raw

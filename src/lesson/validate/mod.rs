@@ -107,6 +107,59 @@ impl<'a> Checker<'a> {
             .push(Diagnostic::at(self.file, self.text, span, message));
     }
 
+    /// The 1-based line of byte `at`.
+    pub(super) fn line_of(&self, at: usize) -> usize {
+        Diagnostic::at(self.file, self.text, at..at, "").line
+    }
+
+    /// The file `written` names, resolved against `base` (the lesson's folder); if there is no
+    /// such file, a diagnostic with the resolved path, the rule, and a similar name in that
+    /// folder if there is one.
+    pub(super) fn file_beside(
+        &mut self,
+        span: Range<usize>,
+        base: &Path,
+        written: &str,
+    ) -> Option<std::path::PathBuf> {
+        let path = base.join(written);
+        if path.is_file() {
+            return Some(path);
+        }
+        let resolved = std::path::absolute(&path).unwrap_or_else(|_| path.clone());
+        let here = if base.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            base
+        };
+        let folder = std::path::absolute(here).unwrap_or_else(|_| here.to_path_buf());
+        let similar = path
+            .parent()
+            .and_then(|dir| std::fs::read_dir(dir).ok())
+            .into_iter()
+            .flatten()
+            .filter_map(|e| e.ok()?.file_name().into_string().ok())
+            .map(|n| {
+                let wanted = path.file_name().map(|f| f.to_string_lossy().into_owned());
+                (strsim::jaro_winkler(&wanted.unwrap_or_default(), &n), n)
+            })
+            .filter(|(sim, _)| *sim >= 0.85)
+            .max_by(|a, b| a.0.total_cmp(&b.0))
+            .map(|(_, n)| {
+                let beside = Path::new(written).with_file_name(n);
+                format!("; did you mean \"{}\"?", beside.display())
+            })
+            .unwrap_or_default();
+        self.error(
+            span,
+            format!(
+                "there is no file {} (paths are relative to the folder of the lesson or scene file, {}){similar}",
+                resolved.display(),
+                folder.display()
+            ),
+        );
+        None
+    }
+
     /// A finite number, else a diagnostic naming the key.
     fn finite(&mut self, key: &str, v: &Spanned<f64>) -> Option<f32> {
         let x = *v.get_ref();
@@ -219,6 +272,7 @@ pub fn scene(
         .iter()
         .filter_map(|l| lights::light(&mut c, l))
         .collect();
+    let light_names = lights::names(&mut c, &s.lights);
     let shadow = s.shadow.as_ref().and_then(|sh| lights::shadow(&mut c, sh));
     let figures = s
         .figures
@@ -243,6 +297,7 @@ pub fn scene(
             },
             settings,
             labels,
+            light_names,
         })
     } else {
         Err(Diagnostics(c.found))

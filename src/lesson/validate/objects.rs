@@ -22,7 +22,10 @@ pub(super) fn object(
     base: &Path,
 ) -> Option<(Object, Option<Text>)> {
     let raw = o.get_ref();
-    let (mesh, source) = mesh(c, &raw.mesh, base)?;
+    let (mut mesh, source) = mesh(c, &raw.mesh, base)?;
+    if raw.fit == Some(true) {
+        mesh.fit_unit_sphere();
+    }
     let name = raw
         .name
         .as_ref()
@@ -189,7 +192,7 @@ fn mesh(
     let span = m.span();
     let table = match m.get_ref() {
         RawMesh::Name(n) if n.to_ascii_lowercase().ends_with(".obj") => {
-            return load_obj(c, span, &base.join(n)).map(|m| (m, None));
+            return load_obj(c, span, base, n).map(|m| (m, None));
         }
         RawMesh::Name(n) => &RawMeshTable {
             builtin: Some(n.clone()),
@@ -213,7 +216,7 @@ fn mesh(
             );
             None
         }
-        (None, Some(path)) => load_obj(c, span, &base.join(path)).map(|m| (m, None)),
+        (None, Some(path)) => load_obj(c, span, base, path).map(|m| (m, None)),
         (Some(name), None) => builtin(c, span, name, table).map(|b| (b.build(), Some(b))),
     }
 }
@@ -257,8 +260,10 @@ fn bezier(c: &mut Checker<'_>, span: Range<usize>, t: &RawMeshTable) -> Option<B
     })
 }
 
-fn load_obj(c: &mut Checker<'_>, span: Range<usize>, path: &Path) -> Option<Mesh> {
-    match Mesh::load_obj(path) {
+/// The OBJ file `written`, relative to the lesson's folder `base`.
+fn load_obj(c: &mut Checker<'_>, span: Range<usize>, base: &Path, written: &str) -> Option<Mesh> {
+    let path = c.file_beside(span.clone(), base, written)?;
+    match Mesh::load_obj(&path) {
         Ok(m) => Some(m),
         Err(e) => {
             c.error(span, e.to_string());
@@ -406,7 +411,7 @@ fn texture(c: &mut Checker<'_>, t: &Spanned<String>, base: &Path) -> Option<Text
         "mip_levels" => Some(Texture::mip_levels(512)),
         "bumps" => Some(Texture::bumps(512, 8)),
         "bump_normals" => Some(Texture::bump_normals(512, 8, 6.0)),
-        path => match Texture::load(&base.join(path)) {
+        written => match Texture::load(&c.file_beside(t.span(), base, written)?) {
             Ok(t) => Some(t),
             Err(e) => {
                 c.error(

@@ -89,6 +89,36 @@ impl Mesh {
         self.indices.len()
     }
 
+    /// The axis-aligned bounding box `(min, max)` of the positions; `None` for no vertices.
+    #[must_use]
+    pub fn bounds(&self) -> Option<(Vec3, Vec3)> {
+        let first = *self.positions.first()?;
+        Some(
+            self.positions
+                .iter()
+                .fold((first, first), |(lo, hi), &p| (lo.min(p), hi.max(p))),
+        )
+    }
+
+    /// Moves and scales the mesh into the unit sphere, as a lesson's `fit = true` asks:
+    /// `p' = (p − c) / r` with `c = (min + max) / 2` the centre of the bounding box and
+    /// `r = max |p − c|`. The scale is uniform, so normals keep their directions.
+    pub fn fit_unit_sphere(&mut self) {
+        let Some((lo, hi)) = self.bounds() else {
+            return;
+        };
+        let c = (lo + hi) / 2.0;
+        let r = self
+            .positions
+            .iter()
+            .map(|&p| (p - c).length())
+            .fold(0.0f32, f32::max);
+        let s = if r > 0.0 { 1.0 / r } else { 1.0 };
+        for p in &mut self.positions {
+            *p = (*p - c) * s;
+        }
+    }
+
     /// The unnormalised normal of triangle `t`: `(p1 − p0) × (p2 − p0)`, whose length is twice its area.
     #[must_use]
     pub fn face_normal_scaled(&self, t: usize) -> Vec3 {
