@@ -159,13 +159,10 @@ impl Session {
             }
             Layout::Compare => sel.comparison = step.compare,
         }
-        // What a step does not say is predictable: a pixel stage shows its own buffer, and the
-        // pixel, vertex, focus and profile are the step's (none when it names none).
-        if let Some(b) = step.buffer {
-            sel.buffer = b;
-        } else if let Some(stage) = step.stage.filter(|s| s.space().is_none()) {
-            sel.buffer = stage.default_buffer();
-        }
+        // What a step does not say is predictable: without `buffer` it shows the default
+        // buffer of the stage on screen (whatever the viewer looked at before), and the pixel,
+        // vertex, focus and profile are the step's (none when it names none).
+        sel.buffer = step.buffer.unwrap_or_else(|| sel.stage.default_buffer());
         if let Some(overlays) = &step.overlays {
             sel.overlays = overlays
                 .iter()
