@@ -1,6 +1,5 @@
 //! The command line: `pipelens [COMMAND]`.
 
-use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::str::FromStr;
@@ -292,6 +291,35 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
 
 /// A cancel flag that Ctrl+C sets: the export then stops between two files, leaving whole
 /// files and no temporary ones, and says so.
+/// The progress of an export: a bar on stderr when it is a terminal, nothing in a log or a
+/// pipe (where the summary printed at the end says what was written).
+struct Progress(indicatif::ProgressBar);
+
+impl Progress {
+    fn new() -> Self {
+        let bar =
+            indicatif::ProgressBar::with_draw_target(None, indicatif::ProgressDrawTarget::stderr());
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "{elapsed_precise} [{bar:30}] {pos}/{len} {wide_msg}",
+        ) {
+            bar.set_style(style.progress_chars("=> "));
+        }
+        Self(bar)
+    }
+
+    fn show(&self, done: usize, all: usize, what: &str) {
+        self.0.set_length(all as u64);
+        self.0.set_position(done as u64);
+        self.0.set_message(what.to_owned());
+    }
+}
+
+impl Drop for Progress {
+    fn drop(&mut self) {
+        self.0.finish_and_clear();
+    }
+}
+
 fn cancel_on_interrupt() -> crate::export::Cancel {
     let cancel = crate::export::Cancel::default();
     let flag = cancel.clone();
@@ -304,10 +332,11 @@ fn export_lesson(
     lesson: &lesson::Lesson,
     opts: &crate::export::lesson::LessonExport,
 ) -> Result<ExitCode> {
-    let mut stderr = std::io::stderr().lock();
-    let written = crate::export::lesson::export_lesson(lesson, opts, &mut |what| {
-        let _ = writeln!(stderr, "exporting {what}");
+    let bar = Progress::new();
+    let written = crate::export::lesson::export_lesson(lesson, opts, &mut |done, all, what| {
+        bar.show(done, all, what);
     })?;
+    drop(bar);
     println!(
         "Exported {} files of lesson {} to {}; open {}",
         written.len(),
@@ -351,16 +380,14 @@ fn export(
     if let Some(line) = profile {
         files.push(profile_file(&spec, &capture, line)?);
     }
-    let mut stderr = std::io::stderr().lock();
+    let bar = Progress::new();
     let written = crate::export::write_files(
         &opts.out,
         &files,
-        &mut |done, all, name| {
-            let _ = write!(stderr, "\rwriting {done}/{all}: {name:<24}");
-        },
+        &mut |done, all, name| bar.show(done, all, name),
         &opts.cancel,
     )?;
-    let _ = writeln!(stderr);
+    drop(bar);
     println!(
         "Exported {} files ({}×{}, {} sample(s), {} primitives) to {}:",
         written.len(),

@@ -48,14 +48,15 @@ fn step_dir(k: usize) -> String {
     format!("step-{:02}", k + 1)
 }
 
-/// Exports `lesson`; returns every path written. `progress` is told what is being done.
+/// Exports `lesson`; returns every path written. `progress` is told how many parts of how
+/// many are done and what comes next.
 ///
 /// # Errors
 /// A step out of range, a render or an encoding that fails, a folder that cannot be written.
 pub fn export_lesson(
     lesson: &Lesson,
     opts: &LessonExport,
-    progress: &mut dyn FnMut(&str),
+    progress: &mut dyn FnMut(usize, usize, &str),
 ) -> Result<Vec<PathBuf>> {
     let n = lesson.steps.len();
     let steps: Vec<usize> = match opts.step {
@@ -68,13 +69,14 @@ pub fn export_lesson(
     };
     let mut written = Vec::new();
     let mut done = Vec::new();
-    for &k in &steps {
+    let parts = steps.len() + 1;
+    for (i, &k) in steps.iter().enumerate() {
         opts.cancel.check()?;
-        progress(&format!(
-            "step {}/{n}: {}",
-            k + 1,
-            lesson.steps[k].title.get(opts.lang)
-        ));
+        progress(
+            i,
+            parts,
+            &format!("step {}: {}", k + 1, lesson.steps[k].title.get(opts.lang)),
+        );
         let (files, step_files) = step_files(lesson, k, opts)?;
         written.extend(write_files(
             &opts.out.join(&step_files.dir),
@@ -84,7 +86,7 @@ pub fn export_lesson(
         )?);
         done.push(step_files);
     }
-    progress("index.html");
+    progress(steps.len(), parts, "index.html");
     let html = handout(lesson, &done, opts.lang);
     let target = opts.out.join("index.html");
     super::write_atomically(&target, html.as_bytes())?;

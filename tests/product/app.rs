@@ -628,11 +628,7 @@ fn a_step_without_buffer_shows_its_stages_default_even_after_a_reload() {
         "step 3 names none: the stage's default, not what step 2 showed"
     );
     // A reload that removes step 3 lands on step 2 and shows what step 2 says.
-    std::fs::write(
-        &path,
-        format!("{head}{first}{second}"),
-    )
-    .expect("write");
+    std::fs::write(&path, format!("{head}{first}{second}")).expect("write");
     let later = std::time::SystemTime::now() + std::time::Duration::from_secs(2);
     std::fs::File::options()
         .write(true)

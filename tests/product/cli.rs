@@ -37,6 +37,10 @@ fn export_writes_every_buffer_and_the_numbers() {
         ],
     );
     assert!(o.status.success(), "{}", text(&o));
+    assert!(
+        !text(&o).contains('\r'),
+        "no progress bar in a log (stderr is not a terminal here)"
+    );
     for f in EXPECTED_FILES {
         assert!(out.join(f).is_file(), "{f} missing");
     }
