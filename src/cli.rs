@@ -95,6 +95,12 @@ pub enum Command {
         #[arg(required = true)]
         paths: Vec<PathBuf>,
     },
+    /// Write a new lesson: a commented bilingual template that uses every key a step can take
+    /// and passes `check` as it is. An existing file is never overwritten.
+    NewLesson {
+        /// The lesson file to create, e.g. lessons/20-my-lesson.toml; its name becomes the id.
+        file: PathBuf,
+    },
     /// Time each stage of the pipeline on standard scenes.
     Bench {
         /// One frame per case (a smoke run).
@@ -268,6 +274,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
         Some(Command::Check { paths }) => Ok(check(&paths)),
+        Some(Command::NewLesson { file }) => new_lesson(&file),
         Some(Command::Bench {
             quick,
             frames,
@@ -289,8 +296,6 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
     }
 }
 
-/// A cancel flag that Ctrl+C sets: the export then stops between two files, leaving whole
-/// files and no temporary ones, and says so.
 /// The progress of an export: a bar on stderr when it is a terminal, nothing in a log or a
 /// pipe (where the summary printed at the end says what was written).
 struct Progress(indicatif::ProgressBar);
@@ -320,6 +325,8 @@ impl Drop for Progress {
     }
 }
 
+/// A cancel flag that Ctrl+C sets: the export then stops between two files, leaving whole
+/// files and no temporary ones, and says so.
 fn cancel_on_interrupt() -> crate::export::Cancel {
     let cancel = crate::export::Cancel::default();
     let flag = cancel.clone();
@@ -470,6 +477,54 @@ fn files_to_check(paths: &[PathBuf]) -> (Vec<PathBuf>, Vec<String>) {
         }
     }
     (files, problems)
+}
+
+/// The template `pipelens new-lesson` writes; `{id}` and `{file}` are filled in.
+const NEW_LESSON: &str = include_str!("../assets/templates/new-lesson.toml");
+
+fn new_lesson(file: &Path) -> Result<ExitCode> {
+    if file.extension().is_none_or(|e| e != "toml") {
+        anyhow::bail!(
+            "{}: a lesson file ends in .toml, e.g. lessons/20-my-lesson.toml",
+            file.display()
+        );
+    }
+    let id = file
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .filter(|s| !s.is_empty() && !s.contains('"') && !s.contains('\\'))
+        .with_context(|| {
+            format!(
+                "{}: the file's name becomes the lesson's id; use letters, digits and -",
+                file.display()
+            )
+        })?;
+    let text = NEW_LESSON
+        .replace("{id}", id)
+        .replace("{file}", &file.display().to_string());
+    if let Some(dir) = file.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir)
+            .with_context(|| format!("cannot create the folder {}", dir.display()))?;
+    }
+    // `create_new`: an existing lesson is never replaced.
+    let mut f = std::fs::File::options()
+        .write(true)
+        .create_new(true)
+        .open(file)
+        .with_context(|| {
+            if file.exists() {
+                format!("{} exists already; it was left as it is", file.display())
+            } else {
+                format!("cannot create {}", file.display())
+            }
+        })?;
+    std::io::Write::write_all(&mut f, text.as_bytes())
+        .with_context(|| format!("cannot write {}", file.display()))?;
+    println!(
+        "Wrote {}: a lesson of 3 steps. Play it with `pipelens --lesson {0}`; it reloads on save.",
+        file.display()
+    );
+    Ok(ExitCode::SUCCESS)
 }
 
 /// Each object's mesh: its triangles and where it sits (its bounding box in object

@@ -144,7 +144,9 @@ impl Session {
         let step = player.current().clone();
         player.playing = !step.animate.is_empty() && !step.predicts();
         let spec = player.lesson.spec_playing(k, 0.0);
-        if let Some(stage) = step.stage {
+        // A step without `stage` shows the stage of the last step before it that named one.
+        let stage = player.lesson.steps[..=k].iter().rev().find_map(|s| s.stage);
+        if let Some(stage) = stage {
             self.go_to(stage);
         }
         let sel = &mut self.selection;

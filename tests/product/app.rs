@@ -638,8 +638,21 @@ fn a_step_without_buffer_shows_its_stages_default_even_after_a_reload() {
     std::thread::sleep(std::time::Duration::from_millis(600));
     h.run_steps(3);
     assert_eq!((step_of(&h), buffer(&h)), (1, BufferKind::Normal));
-    // Back to step 1: the stage's default again.
+    // The viewer goes to another stage, then back to step 1 and on to step 2: each step's
+    // stage and buffer again, not what the viewer looked at.
+    h.get_by_label("Depth").click();
+    h.run_steps(2);
     h.key_press(egui::Key::ArrowLeft);
     h.run_steps(2);
     assert_eq!((step_of(&h), buffer(&h)), (0, BufferKind::Diffuse));
+    h.get_by_label("Depth").click();
+    h.run_steps(2);
+    h.key_press(egui::Key::ArrowRight);
+    h.run_steps(2);
+    let stage = h.state().session.selection.stage;
+    assert_eq!(
+        (step_of(&h), stage, buffer(&h)),
+        (1, pipelens::vocabulary::Stage::Shading, BufferKind::Normal),
+        "step 2 names no stage: step 1's"
+    );
 }

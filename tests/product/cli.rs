@@ -601,3 +601,38 @@ fn check_warns_of_an_id_unlike_the_file_name_and_describes_each_mesh() {
         "{out}"
     );
 }
+
+#[test]
+fn new_lesson_writes_a_template_with_every_step_key_that_check_accepts() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let o = pipelens(dir.path(), &["new-lesson", "lessons/20-mine.toml"]);
+    assert!(o.status.success(), "{}", text(&o));
+    let path = dir.path().join("lessons/20-mine.toml");
+    let o = pipelens(dir.path(), &["check", "lessons/20-mine.toml"]);
+    let out = text(&o);
+    assert!(o.status.success(), "{out}");
+    assert!(out.contains("ok (lesson 20-mine, 3 steps)"), "{out}");
+    assert!(!out.contains("warning"), "{out}");
+    // Every key a step can take, as the reader itself lists them, is used by some step.
+    let e = toml::from_str::<pipelens::lesson::raw::RawStep>("zzz = 1").expect_err("unknown");
+    let listed = e.message().split_once("expected one of").expect("a list").1;
+    let keys: Vec<&str> = listed.split('`').skip(1).step_by(2).collect();
+    assert!(keys.len() >= 16, "{keys:?}");
+    let written: toml::Table =
+        toml::from_str(&std::fs::read_to_string(&path).expect("read")).expect("TOML");
+    let steps = written["steps"].as_array().expect("steps");
+    for k in keys {
+        assert!(
+            steps
+                .iter()
+                .any(|s| s.as_table().is_some_and(|t| t.contains_key(k))),
+            "no step of the template uses `{k}`"
+        );
+    }
+    // An existing lesson is never replaced.
+    std::fs::write(&path, "mine").expect("write");
+    let o = pipelens(dir.path(), &["new-lesson", "lessons/20-mine.toml"]);
+    assert!(!o.status.success());
+    assert!(text(&o).contains("exists already; it was left as it is"));
+    assert_eq!(std::fs::read_to_string(&path).expect("read"), "mine");
+}
