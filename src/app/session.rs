@@ -165,17 +165,17 @@ impl Session {
         // buffer of the stage on screen (whatever the viewer looked at before), and the pixel,
         // vertex, focus and profile are the step's (none when it names none).
         sel.buffer = step.buffer.unwrap_or_else(|| sel.stage.default_buffer());
-        if let Some(overlays) = &step.overlays {
-            sel.overlays = overlays
-                .iter()
-                .filter_map(|o| match o {
-                    Overlay::Edges => Some(OverlayKind::TriangleEdges),
-                    Overlay::BoundingBoxes => Some(OverlayKind::BoundingBoxes),
-                    Overlay::Samples => None,
-                })
-                .collect();
-            sel.show_samples = overlays.contains(&Overlay::Samples);
-        }
+        // The overlays are the step's own too: none when it names none.
+        let overlays = step.overlays.as_deref().unwrap_or_default();
+        sel.overlays = overlays
+            .iter()
+            .filter_map(|o| match o {
+                Overlay::Edges => Some(OverlayKind::TriangleEdges),
+                Overlay::BoundingBoxes => Some(OverlayKind::BoundingBoxes),
+                Overlay::Samples => None,
+            })
+            .collect();
+        sel.show_samples = overlays.contains(&Overlay::Samples);
         sel.pixel = step.pixel;
         sel.vertex = step.vertex;
         sel.focus.clone_from(&step.focus);

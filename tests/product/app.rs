@@ -608,7 +608,7 @@ fn a_step_without_buffer_shows_its_stages_default_even_after_a_reload() {
             "\n[[steps]]\ntitle = {{ en = \"A\", zh = \"甲\" }}\nnarration = {{ en = \"A.\", zh = \"甲。\" }}\n{keys}"
         )
     };
-    let first = step("stage = \"shading\"\n");
+    let first = step("stage = \"shading\"\noverlays = [\"edges\"]\n");
     let second = step("buffer = \"normal\"\n");
     // The third names neither stage nor buffer: it stays on the shading stage.
     let three = format!("{head}{first}{second}{}", step(""));
@@ -620,6 +620,10 @@ fn a_step_without_buffer_shows_its_stages_default_even_after_a_reload() {
     h.key_press(egui::Key::ArrowRight);
     h.run_steps(2);
     assert_eq!(buffer(&h), BufferKind::Normal, "step 2 names it");
+    assert!(
+        h.state().session.selection.overlays.is_empty(),
+        "step 2 names no overlays: none, not step 1's edges"
+    );
     h.key_press(egui::Key::ArrowRight);
     h.run_steps(2);
     assert_eq!(
