@@ -64,6 +64,16 @@ pub enum Command {
         /// A lesson: the handout's language, `en` or `zh`.
         #[arg(long, value_parser = ["en", "zh"], default_value = "en")]
         lang: String,
+        /// A lesson: a teacher's key, every answer printed under its question.
+        #[arg(long)]
+        answers: bool,
+        /// A lesson: also one 1920×1080 PNG per step in `slides/`, for a slide deck.
+        #[arg(long)]
+        slides: bool,
+        /// A lesson: also each step's buffers as PNG and capture.json in `step-NN/`, and the
+        /// textures' mip levels in `textures/`.
+        #[arg(long)]
+        data: bool,
         /// The folder to write into (created if missing).
         #[arg(long, short)]
         out: PathBuf,
@@ -238,6 +248,9 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             pixel,
             step,
             lang,
+            answers,
+            slides,
+            data,
         }) => {
             if let Some(path) = scene.as_deref()
                 && let lesson::Document::Lesson(l) =
@@ -256,6 +269,9 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                         crate::vocabulary::Lang::En
                     },
                     max_records,
+                    answers,
+                    slides,
+                    data,
                     cancel: cancel_on_interrupt(),
                 };
                 return export_lesson(&l, &opts);
@@ -530,6 +546,7 @@ fn new_lesson(file: &Path) -> Result<ExitCode> {
 /// Each object's mesh: its triangles and where it sits (its bounding box in object
 /// coordinates, after `fit`), which a lesson's author needs to place the camera.
 fn print_meshes(spec: &lesson::SceneSpec) {
+    let short = |x: f32| crate::vocabulary::short(x, 3);
     let v = |p: glam::Vec3| format!("[{}, {}, {}]", short(p.x), short(p.y), short(p.z));
     for o in &spec.scene.objects {
         let m = &o.mesh;
@@ -546,17 +563,6 @@ fn print_meshes(spec: &lesson::SceneSpec) {
             m.name,
             m.triangle_count()
         );
-    }
-}
-
-/// A number with at most 3 decimals and no trailing zeros.
-fn short(x: f32) -> String {
-    let s = format!("{x:.3}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".to_owned()
-    } else {
-        s.to_owned()
     }
 }
 

@@ -49,7 +49,7 @@ pub struct DepthView {
 impl Default for Selection {
     fn default() -> Self {
         Self {
-            stage: Stage::World,
+            stage: Stage::default(),
             buffer: BufferKind::Color,
             overlays: vec![OverlayKind::TriangleEdges],
             show_samples: true,

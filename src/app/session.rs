@@ -144,11 +144,8 @@ impl Session {
         let step = player.current().clone();
         player.playing = !step.animate.is_empty() && !step.predicts();
         let spec = player.lesson.spec_playing(k, 0.0);
-        // A step without `stage` shows the stage of the last step before it that named one.
-        let stage = player.lesson.steps[..=k].iter().rev().find_map(|s| s.stage);
-        if let Some(stage) = stage {
-            self.go_to(stage);
-        }
+        let (stage, buffer) = (player.lesson.stage_at(k), player.lesson.buffer_at(k));
+        self.go_to(stage);
         let sel = &mut self.selection;
         match step.layout {
             Layout::Single => {
@@ -164,7 +161,7 @@ impl Session {
         // What a step does not say is predictable: without `buffer` it shows the default
         // buffer of the stage on screen (whatever the viewer looked at before), and the pixel,
         // vertex, focus and profile are the step's (none when it names none).
-        sel.buffer = step.buffer.unwrap_or_else(|| sel.stage.default_buffer());
+        sel.buffer = buffer;
         // The overlays are the step's own too: none when it names none.
         let overlays = step.overlays.as_deref().unwrap_or_default();
         sel.overlays = overlays
@@ -183,9 +180,7 @@ impl Session {
             linear: false,
             range: step.depth_range,
         };
-        sel.profile = step
-            .profile
-            .or_else(|| (sel.comparison == Some(Comparison::Shading)).then(|| middle_row(&spec)));
+        sel.profile = step.profile_line(spec.settings.width, spec.settings.height);
         self.step_entered += 1;
         self.spec = spec;
         self.request_render();
@@ -430,7 +425,8 @@ impl Session {
                     sel.comparison = c;
                     // The Mach band comparison is read along a line; the others on request.
                     if sel.profile.is_none() && c == Some(Comparison::Shading) {
-                        sel.profile = Some(middle_row(&self.spec));
+                        let (w, h) = (self.spec.settings.width, self.spec.settings.height);
+                        sel.profile = Some(crate::lesson::script::middle_row(w, h));
                     }
                     self.request_render();
                 }
@@ -455,11 +451,6 @@ impl Session {
 }
 
 /// A first profile line to look at: across the middle row of the image.
-fn middle_row(spec: &SceneSpec) -> [f32; 4] {
-    let (w, h) = (spec.settings.width as f32, spec.settings.height as f32);
-    [0.0, h / 2.0, w - 1.0, h / 2.0]
-}
-
 /// Where a scene file was loaded from, for the title.
 #[must_use]
 pub fn source_name(path: Option<&PathBuf>) -> String {

@@ -2,8 +2,7 @@
 
 use egui::{FontData, FontFamily};
 
-/// The Chinese font, embedded so that Chinese renders on any machine.
-pub const CJK_FONT: &[u8] = include_bytes!("../../assets/fonts/NotoSansSC-subset.otf");
+pub use crate::vocabulary::CJK_FONT;
 
 /// Adds the Chinese font after egui's own fonts (which have no CJK glyphs), and egui's Hack as
 /// the last fallback of the proportional family: it has symbols the others lack (⁻ ⌊ ⌋).

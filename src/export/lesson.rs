@@ -1,21 +1,21 @@
-//! Export of a lesson: for every step (or one), the capture's files in `step-NN/` — every
-//! buffer as PNG, the overlays, `capture.json` (with the step's highlighted pixel), the
-//! compared settings' images and the profile CSV where the step shows them — and `index.html`,
-//! a self-contained handout with the narration in one language, the images and the matrices.
+//! Export of a lesson: `index.html`, one self-contained handout (every image embedded) in one
+//! language, whose pictures are what the app shows for each step ([`super::picture`]); an
+//! animated step gets a filmstrip for print and an animated GIF for screens. On request:
+//! `--slides` (one 1920×1080 PNG per step, [`super::slides`]) and `--data` (each step's buffers
+//! as PNG and `capture.json` in `step-NN/`, each texture's mip levels once in `textures/`).
 
-use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use anyhow::{Context, Result};
-use pipeline::buffers::BufferKind;
+use image::RgbaImage;
 use pipeline::capture::FrameCapture;
-use pipeline::transform::NamedMatrix;
 
+use super::handout::{self, Animated, Frame, StepPage};
+use super::picture::{Rendered, step_picture};
 use super::{ExportFile, ExportOptions, encode_capture, png_rgba, profile_csv, write_files};
-use crate::lesson::script::Layout;
-use crate::lesson::{Lesson, SceneSpec, Step};
-use crate::observer::observer_image;
-use crate::vocabulary::{Comparison, Lang, Stage, num};
+use crate::lesson::param::Value;
+use crate::lesson::{Lesson, SceneSpec};
+use crate::vocabulary::Lang;
 
 /// What to export of a lesson.
 #[derive(Clone, Debug)]
@@ -28,20 +28,23 @@ pub struct LessonExport {
     pub size: Option<(u32, u32)>,
     /// The handout's language.
     pub lang: Lang,
-    /// At most this many records per table in each `capture.json`.
+    /// At most this many records per table in each `capture.json` (with `data`).
     pub max_records: usize,
+    /// A teacher's key: every answer printed under its question.
+    pub answers: bool,
+    /// One 1920×1080 PNG per step in `slides/`.
+    pub slides: bool,
+    /// Each step's buffers and `capture.json` in `step-NN/`, the textures in `textures/`.
+    pub data: bool,
     /// Stops the export between two files.
     pub cancel: super::Cancel,
 }
 
-/// What one step exported, for the handout.
-struct StepFiles {
-    index: usize,
-    dir: String,
-    main_image: String,
-    compared: Vec<(String, String)>,
-    capture: FrameCapture,
-}
+/// The moments of an animated step drawn for its GIF (screens), from its start to its end;
+/// every other one makes the filmstrip (paper), 5 frames.
+const GIF_FRAMES: usize = 9;
+/// The width of a filmstrip frame and a GIF frame.
+const FRAME_WIDTH: u32 = 360;
 
 /// The folder name of step `k` (0-based): `step-01`, `step-02`…
 fn step_dir(k: usize) -> String {
@@ -68,7 +71,8 @@ pub fn export_lesson(
         None => (0..n).collect(),
     };
     let mut written = Vec::new();
-    let mut done = Vec::new();
+    let mut pages = Vec::new();
+    let mut textures_written = false;
     let parts = steps.len() + 1;
     for (i, &k) in steps.iter().enumerate() {
         opts.cancel.check()?;
@@ -77,26 +81,84 @@ pub fn export_lesson(
             parts,
             &format!("step {}: {}", k + 1, lesson.steps[k].title.get(opts.lang)),
         );
-        let (files, step_files) = step_files(lesson, k, opts)?;
-        written.extend(write_files(
-            &opts.out.join(&step_files.dir),
-            &files,
-            &mut |_, _, _| {},
-            &opts.cancel,
-        )?);
-        done.push(step_files);
+        let spec = spec_of(lesson, k, opts, None)?;
+        let capture = pipeline::render(&spec.scene, &spec.settings)
+            .with_context(|| format!("rendering step {}", k + 1))?;
+        let variants = variants(lesson, k, &spec)?;
+        let rendered = Rendered {
+            spec: &spec,
+            capture: &capture,
+            variants: &variants,
+        };
+        let picture = step_picture(lesson, k, &rendered, opts.lang)?;
+        let animated = animation(lesson, k, opts)?;
+        if opts.slides {
+            let slide = super::slides::slide(lesson, k, &picture, opts.lang);
+            written.extend(write_files(
+                &opts.out.join("slides"),
+                &[ExportFile {
+                    name: format!("{}.png", step_dir(k)),
+                    description: format!("slide of step {}", k + 1),
+                    bytes: png_rgba(&slide)?,
+                }],
+                &mut |_, _, _| {},
+                &opts.cancel,
+            )?);
+        }
+        if opts.data {
+            let (files, textures) = data_files(lesson, k, opts, &capture, &variants)?;
+            written.extend(write_files(
+                &opts.out.join(step_dir(k)),
+                &files,
+                &mut |_, _, _| {},
+                &opts.cancel,
+            )?);
+            if !textures_written && !textures.is_empty() {
+                written.extend(write_files(
+                    &opts.out.join("textures"),
+                    &textures,
+                    &mut |_, _, _| {},
+                    &opts.cancel,
+                )?);
+                textures_written = true;
+            }
+        }
+        let mut matrices = capture.matrices.clone();
+        for m in &mut matrices.models {
+            // `M_model(floor)` in the handout's language: `M_model(地面)`.
+            if let Some(object) = m
+                .name
+                .strip_prefix("M_model(")
+                .and_then(|r| r.strip_suffix(')'))
+            {
+                m.name = format!("M_model({})", spec.label(object, opts.lang));
+            }
+        }
+        pages.push(StepPage {
+            index: k,
+            picture: compact_image(&picture)?,
+            animated,
+            matrices,
+            stage: lesson.stage_at(k),
+        });
     }
     progress(steps.len(), parts, "index.html");
-    let html = handout(lesson, &done, opts.lang);
+    let html = handout::html(lesson, &pages, opts.lang, opts.answers);
     let target = opts.out.join("index.html");
+    std::fs::create_dir_all(&opts.out)
+        .with_context(|| format!("cannot create the folder {}", opts.out.display()))?;
     super::write_atomically(&target, html.as_bytes())?;
     written.push(target);
     Ok(written)
 }
 
-/// The scene of step `k` at the export's size.
-fn spec_of(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<SceneSpec> {
-    let mut spec = lesson.spec_at(k);
+/// The scene of step `k` at the export's size, at moment `t` of its animation (`None`: as the
+/// step sets it, before its animation).
+fn spec_of(lesson: &Lesson, k: usize, opts: &LessonExport, t: Option<f32>) -> Result<SceneSpec> {
+    let mut spec = match t {
+        Some(t) => lesson.spec_playing(k, t),
+        None => lesson.spec_at(k),
+    };
     if let Some((w, h)) = opts.size {
         spec.settings.width = w;
         spec.settings.height = h;
@@ -107,18 +169,174 @@ fn spec_of(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<SceneSpec> 
     Ok(spec)
 }
 
-fn step_files(
+/// The compared settings' captures, when step `k` compares.
+fn variants(lesson: &Lesson, k: usize, spec: &SceneSpec) -> Result<Vec<(String, FrameCapture)>> {
+    let Some(c) = lesson.steps[k].compare else {
+        return Ok(Vec::new());
+    };
+    c.variants(&spec.settings)
+        .into_iter()
+        .map(|(label, settings)| {
+            pipeline::render(&spec.scene, &settings)
+                .map(|cap| (label, cap))
+                .with_context(|| format!("rendering step {}", k + 1))
+        })
+        .collect()
+}
+
+/// An animated step's filmstrip and GIF: the picture at evenly spaced moments of its first
+/// pass (from → to), each captioned with the animated parameters' values.
+fn animation(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<Option<Animated>> {
+    let step = &lesson.steps[k];
+    let Some(longest) = step.animate.iter().map(|a| a.seconds).reduce(f32::max) else {
+        return Ok(None);
+    };
+    let frame_at = |t: f32| -> Result<(RgbaImage, String)> {
+        opts.cancel.check()?;
+        let spec = spec_of(lesson, k, opts, Some(t))?;
+        let capture = pipeline::render(&spec.scene, &spec.settings)
+            .with_context(|| format!("rendering step {} at t = {t} s", k + 1))?;
+        let variants = variants(lesson, k, &spec)?;
+        let rendered = Rendered {
+            spec: &spec,
+            capture: &capture,
+            variants: &variants,
+        };
+        let picture = step_picture(lesson, k, &rendered, opts.lang)?;
+        let caption = step
+            .animate
+            .iter()
+            .map(|a| {
+                let name = crate::lesson::param::describe(&spec, &a.param, opts.lang);
+                format!("{name} = {}", shown(&a.value_at(t)))
+            })
+            .collect::<Vec<_>>()
+            .join(", ");
+        Ok((small(&picture), caption))
+    };
+    let mut filmstrip = Vec::new();
+    let mut gif_frames = Vec::new();
+    for i in 0..GIF_FRAMES {
+        let (mut image, caption) = frame_at(longest * i as f32 / (GIF_FRAMES - 1) as f32)?;
+        if i % 2 == 0 {
+            filmstrip.push(Frame {
+                image: compact_image(&image)?,
+                caption: caption.clone(),
+            });
+        }
+        caption_on(&mut image, &caption);
+        gif_frames.push(image);
+    }
+    // Forth and back, as the lesson plays by default.
+    let back: Vec<RgbaImage> = gif_frames[1..GIF_FRAMES - 1]
+        .iter()
+        .rev()
+        .cloned()
+        .collect();
+    gif_frames.extend(back);
+    let delay = (longest * 1000.0 / (GIF_FRAMES - 1) as f32).round() as u32;
+    Ok(Some(Animated {
+        filmstrip,
+        gif: gif(&gif_frames, delay)?,
+    }))
+}
+
+/// An image for the handout: PNG or JPEG (quality 90), whichever is smaller — JPEG for shaded
+/// renders, PNG for flat colours and thin lines, where it is both smaller and exact.
+fn compact_image(img: &RgbaImage) -> Result<super::handout::Image> {
+    let png = png_rgba(img)?;
+    let mut jpeg = Vec::new();
+    let rgb = image::DynamicImage::ImageRgba8(img.clone()).to_rgb8();
+    image::codecs::jpeg::JpegEncoder::new_with_quality(&mut jpeg, 90)
+        .encode_image(&rgb)
+        .context("encoding a JPEG")?;
+    Ok(if jpeg.len() * 10 < png.len() * 7 {
+        super::handout::Image {
+            mime: "image/jpeg",
+            bytes: jpeg,
+        }
+    } else {
+        super::handout::Image {
+            mime: "image/png",
+            bytes: png,
+        }
+    })
+}
+
+/// A value as a caption shows it.
+fn shown(v: &Value) -> String {
+    match v {
+        Value::Number(x) => crate::vocabulary::short(*x, 2),
+        Value::Vec3(v) => {
+            let c = |x: f32| crate::vocabulary::short(x, 2);
+            format!("({}, {}, {})", c(v.x), c(v.y), c(v.z))
+        }
+        other => other.to_string(),
+    }
+}
+
+/// A picture scaled to a filmstrip frame's width.
+fn small(img: &RgbaImage) -> RgbaImage {
+    if img.width() <= FRAME_WIDTH {
+        return img.clone();
+    }
+    let h = (img.height() as f32 * FRAME_WIDTH as f32 / img.width() as f32).round() as u32;
+    image::imageops::resize(
+        img,
+        FRAME_WIDTH,
+        h.max(1),
+        image::imageops::FilterType::Triangle,
+    )
+}
+
+/// The caption drawn on a dark band at the bottom of a GIF frame (a GIF has no caption of its
+/// own).
+fn caption_on(img: &mut RgbaImage, caption: &str) {
+    let band = 30.min(img.height());
+    let y = img.height() - band;
+    super::text::fill(img, 0, y, img.width(), band, [20, 20, 20]);
+    super::text::draw(
+        img,
+        8.0,
+        (img.height() - 9) as f32,
+        18.0,
+        [255, 220, 120],
+        caption,
+    );
+}
+
+/// An endlessly looping GIF of `frames`, `delay_ms` apart.
+fn gif(frames: &[RgbaImage], delay_ms: u32) -> Result<Vec<u8>> {
+    use image::codecs::gif::{GifEncoder, Repeat};
+    let mut bytes = Vec::new();
+    {
+        let mut enc = GifEncoder::new_with_speed(&mut bytes, 20);
+        enc.set_repeat(Repeat::Infinite).context("encoding a GIF")?;
+        for f in frames {
+            let frame = image::Frame::from_parts(
+                f.clone(),
+                0,
+                0,
+                image::Delay::from_numer_denom_ms(delay_ms, 1),
+            );
+            enc.encode_frame(frame).context("encoding a GIF")?;
+        }
+    }
+    Ok(bytes)
+}
+
+/// With `--data`: step `k`'s buffers, `capture.json` (with the step's pixel), the compared
+/// images and the profile; and the textures' mip levels (the same for every step).
+fn data_files(
     lesson: &Lesson,
     k: usize,
     opts: &LessonExport,
-) -> Result<(Vec<ExportFile>, StepFiles)> {
+    capture: &FrameCapture,
+    variants: &[(String, FrameCapture)],
+) -> Result<(Vec<ExportFile>, Vec<ExportFile>)> {
     let step = &lesson.steps[k];
-    let spec = spec_of(lesson, k, opts)?;
-    let capture = pipeline::render(&spec.scene, &spec.settings)
-        .with_context(|| format!("rendering step {}", k + 1))?;
-    let dir = step_dir(k);
     let export = ExportOptions {
-        out: opts.out.join(&dir),
+        out: opts.out.join(step_dir(k)),
         overlay_zoom: 0,
         max_records: opts.max_records,
         pixel: step
@@ -126,80 +344,25 @@ fn step_files(
             .filter(|&(x, y)| x < capture.width() && y < capture.height()),
         cancel: opts.cancel.clone(),
     };
-    let mut files = encode_capture(&capture, &export)?;
-    let mut main_image = main_image(step, &capture);
-    let geometry = step.stage.is_some_and(|s| s.space().is_some());
-    if (step.layout == Layout::Observer || geometry)
-        && let Some(img) = observer_image(&spec, &capture)
-    {
+    let (mut files, textures): (Vec<_>, Vec<_>) = encode_capture(capture, &export)?
+        .into_iter()
+        .partition(|f| !f.name.starts_with("texture"));
+    for (label, cap) in variants {
         files.push(ExportFile {
-                name: "observer.png".into(),
-                description: "the scene from outside, with the viewing camera's frustum (near plane yellow, far plane orange)".into(),
-                bytes: png_rgba(&img)?,
-            });
-        if geometry {
-            main_image = "observer.png".to_owned();
-        }
+            name: format!("compare_{}.png", slug(label)),
+            description: format!("the colour image with {label}"),
+            bytes: png_rgba(&cap.image(pipeline::buffers::BufferKind::Color))?,
+        });
     }
-    let mut compared = Vec::new();
-    if let Some(c) = step.compare {
-        let variants = c
-            .variants(&spec.settings)
-            .into_iter()
-            .map(|(label, settings)| {
-                pipeline::render(&spec.scene, &settings).map(|cap| (label, cap))
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        for (label, cap) in &variants {
-            let name = format!("compare_{}.png", slug(label));
-            files.push(ExportFile {
-                name: name.clone(),
-                description: format!("the colour image with {label}"),
-                bytes: png_rgba(&cap.image(BufferKind::Color))?,
-            });
-            compared.push((label.clone(), name));
-        }
-        if c == Comparison::Shading || step.profile.is_some() {
-            let line = step.profile.unwrap_or_else(|| {
-                let (w, h) = (capture.width() as f32, capture.height() as f32);
-                [0.0, h / 2.0, w - 1.0, h / 2.0]
-            });
-            let named: Vec<(&str, &FrameCapture)> =
-                variants.iter().map(|(l, c)| (l.as_str(), c)).collect();
-            files.push(profile_csv(line, &named));
-        }
-    } else if let Some(line) = step.profile {
-        files.push(profile_csv(line, &[("color", &capture)]));
+    if let Some(line) = step.profile_line(capture.width(), capture.height()) {
+        let named: Vec<(&str, &FrameCapture)> = if variants.is_empty() {
+            vec![("color", capture)]
+        } else {
+            variants.iter().map(|(l, c)| (l.as_str(), c)).collect()
+        };
+        files.push(profile_csv(line, &named));
     }
-    Ok((
-        files,
-        StepFiles {
-            index: k,
-            dir,
-            main_image,
-            compared,
-            capture,
-        },
-    ))
-}
-
-/// The image that shows the step: its buffer, the stage's own buffer for pixel stages, the
-/// overlays for rasterization, the colour image otherwise.
-fn main_image(step: &Step, capture: &FrameCapture) -> String {
-    let buffers = capture.buffers();
-    let kind = step
-        .buffer
-        .or_else(|| {
-            step.stage
-                .filter(|s| s.space().is_none())
-                .map(|s| s.default_buffer())
-        })
-        .filter(|k| buffers.contains(k));
-    match (kind, step.stage) {
-        (Some(k), _) => format!("{}.png", k.name()),
-        (None, Some(Stage::Raster)) => "overlays.png".to_owned(),
-        _ => "color.png".to_owned(),
-    }
+    Ok((files, textures))
 }
 
 fn slug(label: &str) -> String {
@@ -214,154 +377,4 @@ fn slug(label: &str) -> String {
         })
         .collect();
     s.trim_matches('_').replace("__", "_")
-}
-
-/// Escapes text for HTML.
-fn esc(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
-}
-
-/// The narration's simple markdown as HTML: paragraphs, `- ` bullets, `**bold**`.
-fn markdown(text: &str) -> String {
-    let mut out = String::new();
-    for paragraph in text.split("\n\n").map(str::trim).filter(|p| !p.is_empty()) {
-        let lines: Vec<&str> = paragraph.lines().map(str::trim).collect();
-        let inline = |l: &str| {
-            esc(l)
-                .split("**")
-                .enumerate()
-                .map(|(i, part)| {
-                    if i % 2 == 1 {
-                        format!("<strong>{part}</strong>")
-                    } else {
-                        part.to_owned()
-                    }
-                })
-                .collect::<String>()
-        };
-        if lines.iter().all(|l| l.starts_with("- ")) {
-            out.push_str("<ul>");
-            for l in lines {
-                let _ = write!(out, "<li>{}</li>", inline(&l[2..]));
-            }
-            out.push_str("</ul>\n");
-        } else {
-            let _ = writeln!(out, "<p>{}</p>", inline(&lines.join(" ")));
-        }
-    }
-    out
-}
-
-fn matrix_html(m: &NamedMatrix, lang: Lang) -> String {
-    let rows = m.matrix.transpose().to_cols_array_2d();
-    let mut s = format!(
-        "<figure class=\"m\"><figcaption><b>{}</b><br><i>{}</i></figcaption><table>",
-        esc(&m.name),
-        esc(&lang.formula(&m.formula))
-    );
-    for r in rows {
-        s.push_str("<tr>");
-        for v in r {
-            let _ = write!(s, "<td>{}</td>", num(v));
-        }
-        s.push_str("</tr>");
-    }
-    s.push_str("</table></figure>");
-    s
-}
-
-/// The handout: every exported step with its narration, images and matrices.
-fn handout(lesson: &Lesson, steps: &[StepFiles], lang: Lang) -> String {
-    let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
-    let mut h = String::new();
-    let _ = write!(
-        h,
-        "<!doctype html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\"><title>{}</title>\n<style>\n\
-         body{{font-family:'Noto Sans SC','Noto Sans CJK SC',sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;line-height:1.55;color:#222}}\n\
-         h1{{margin-bottom:.2em}} .summary{{color:#555}} section{{border-top:1px solid #ccc;margin-top:2em;padding-top:1em}}\n\
-         img{{max-width:100%;image-rendering:pixelated;border:1px solid #aaa}} .row{{display:flex;gap:1em;flex-wrap:wrap}} .row figure{{flex:1;min-width:240px;margin:0}}\n\
-         figure.m{{display:inline-block;margin:.4em 1em .4em 0;vertical-align:top}} figure.m table{{border-collapse:collapse;font-family:monospace}}\n\
-         figure.m td{{padding:.1em .5em;text-align:right;border-left:1px solid #ddd}} figcaption{{font-size:.9em}} strong{{color:#8a3b00}}\n\
-         details{{background:#f6f6f0;padding:.5em 1em;margin-top:1em}} .files{{font-size:.85em;color:#666}}\n\
-         </style></head><body>\n",
-        if lang == Lang::Zh { "zh-CN" } else { "en" },
-        esc(lesson.title.get(lang))
-    );
-    let _ = writeln!(
-        h,
-        "<h1>{}</h1><p class=\"summary\">{}</p>",
-        esc(lesson.title.get(lang)),
-        esc(lesson.summary.get(lang))
-    );
-    if !lesson.prerequisites.is_empty() {
-        let _ = writeln!(
-            h,
-            "<p class=\"summary\">{}: {}</p>",
-            t("Before this lesson", "先修课"),
-            esc(&lesson.prerequisites.join(", "))
-        );
-    }
-    for s in steps {
-        let step = &lesson.steps[s.index];
-        let _ = write!(
-            h,
-            "<section id=\"{dir}\"><h2>{n}. {title}</h2>\n{body}",
-            dir = s.dir,
-            n = s.index + 1,
-            title = esc(step.title.get(lang)),
-            body = markdown(step.narration.get(lang))
-        );
-        if s.compared.is_empty() {
-            let _ = writeln!(
-                h,
-                "<p><img src=\"{}/{}\" alt=\"{}\"></p>",
-                s.dir,
-                s.main_image,
-                esc(step.title.get(lang))
-            );
-        } else {
-            h.push_str("<div class=\"row\">");
-            for (label, file) in &s.compared {
-                let _ = write!(
-                    h,
-                    "<figure><img src=\"{}/{file}\" alt=\"{l}\"><figcaption>{l}</figcaption></figure>",
-                    s.dir,
-                    l = esc(label)
-                );
-            }
-            h.push_str("</div>\n");
-        }
-        let m = &s.capture.matrices;
-        h.push_str("<div>");
-        if let Some(first) = m.models.first() {
-            h.push_str(&matrix_html(first, lang));
-        }
-        for x in [&m.view, &m.projection, &m.viewport] {
-            h.push_str(&matrix_html(x, lang));
-        }
-        h.push_str("</div>\n");
-        if let Some(q) = &step.question {
-            let _ = writeln!(
-                h,
-                "<details><summary><b>{}</b> {}</summary>{}</details>",
-                t("Question:", "思考题："),
-                esc(q.get(lang)),
-                step.answer
-                    .as_ref()
-                    .map(|a| markdown(a.get(lang)))
-                    .unwrap_or_default()
-            );
-        }
-        let _ = writeln!(
-            h,
-            "<p class=\"files\">{}: <a href=\"{d}/capture.json\">capture.json</a>, <a href=\"{d}/\">{d}/</a></p></section>",
-            t("Every buffer and the numbers", "全部缓冲与数据"),
-            d = s.dir
-        );
-    }
-    h.push_str("</body></html>\n");
-    h
 }

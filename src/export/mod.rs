@@ -2,8 +2,13 @@
 //! `capture.json` with the numbers. Everything is encoded in memory first; then each file is
 //! written to a temporary name beside its target and renamed, so a file is either whole or absent.
 
+mod chart;
+mod handout;
 mod json;
 pub mod lesson;
+mod picture;
+mod slides;
+mod text;
 
 use std::io::Write;
 use std::path::{Path, PathBuf};

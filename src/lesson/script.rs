@@ -80,6 +80,23 @@ impl Step {
     pub fn predicts(&self) -> bool {
         self.question.is_some() && !self.animate.is_empty()
     }
+
+    /// The line whose intensity profile the step plots: its own `profile`, else, comparing
+    /// shading frequencies (the Mach bands), the middle row of an image of `width`×`height`.
+    #[must_use]
+    pub fn profile_line(&self, width: u32, height: u32) -> Option<[f32; 4]> {
+        self.profile.or_else(|| {
+            (self.compare == Some(Comparison::Shading)).then(|| middle_row(width, height))
+        })
+    }
+}
+
+/// The middle row of an image of `width`×`height`, `[x0, y0, x1, y1]` in image pixels: where
+/// the Mach band comparison reads its profile unless told otherwise.
+#[must_use]
+pub fn middle_row(width: u32, height: u32) -> [f32; 4] {
+    let (w, h) = (width as f32, height as f32);
+    [0.0, h / 2.0, w - 1.0, h / 2.0]
 }
 
 /// A lesson, validated.
@@ -102,6 +119,27 @@ pub struct Lesson {
 }
 
 impl Lesson {
+    /// The stage step `k` shows: its own `stage`, else that of the last step before it that
+    /// named one, else the default stage (the world).
+    #[must_use]
+    pub fn stage_at(&self, k: usize) -> Stage {
+        self.steps
+            .iter()
+            .take(k + 1)
+            .rev()
+            .find_map(|s| s.stage)
+            .unwrap_or_default()
+    }
+
+    /// The buffer step `k` shows on a pixel stage: its own `buffer`, else its stage's default.
+    #[must_use]
+    pub fn buffer_at(&self, k: usize) -> BufferKind {
+        self.steps
+            .get(k)
+            .and_then(|s| s.buffer)
+            .unwrap_or_else(|| self.stage_at(k).default_buffer())
+    }
+
     /// The scene at step `k`: the lesson's scene with the `set`s of steps 0…k applied in order
     /// (each was checked when the lesson was loaded).
     #[must_use]

@@ -160,3 +160,15 @@ pub fn remark(r: &Remark, l: Lang) -> String {
         Remark::Bytes => s("the 8-bit colour in the image", "图像中的 8 位颜色"),
     }
 }
+
+/// The legend of the lighting vectors drawn at an inspected pixel (app and exported pictures).
+#[must_use]
+pub fn lighting_legend(lang: Lang) -> [&'static str; 2] {
+    [
+        lang.tr(
+            "n normal · l to the light · v to the eye",
+            "n 法线 · l 指向光源 · v 指向视点",
+        ),
+        "h = (l + v)/|l + v| · r = 2(n·l)n − l",
+    ]
+}

@@ -11,12 +11,17 @@ mod lang;
 mod names;
 pub mod notation;
 mod numbers;
+pub mod profile;
 mod stage;
 
 pub use buffers::buffer_name;
 pub use comparison::{Comparison, variant_label};
-pub use explain::{remark, section_name};
+pub use explain::{lighting_legend, remark, section_name};
 pub use lang::{Lang, Text};
 pub use names::{part_name, shadow_of};
-pub use numbers::{num, vec3, vec4};
+pub use numbers::{num, short, vec3, vec4};
 pub use stage::{Space, Stage};
+
+/// The Chinese font (with Latin, Greek and the math symbols), embedded so that Chinese renders
+/// on any machine: in the app and in exported pictures and slides.
+pub const CJK_FONT: &[u8] = include_bytes!("../../assets/fonts/NotoSansSC-subset.otf");

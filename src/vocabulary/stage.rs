@@ -5,12 +5,14 @@ use pipeline::buffers::BufferKind;
 
 use super::Lang;
 
-/// The stages of the pipeline, in the order data flows through them.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+/// The stages of the pipeline, in the order data flows through them. The default, where the
+/// app opens and a lesson starts when no step names a stage, is the world.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Stage {
     /// Object (model) coordinates.
     Model,
     /// World coordinates, after the model matrix.
+    #[default]
     World,
     /// Eye (camera) coordinates, after the view matrix.
     View,

@@ -4,6 +4,7 @@ mod app;
 mod architecture;
 mod cli;
 mod corpus;
+mod handout;
 mod lessons;
 mod observer;
 mod reference;

@@ -34,6 +34,17 @@ pub enum Shape {
         /// Stroke width in output pixels.
         width: f32,
     },
+    /// An arrow from `from` to `to` (a lighting vector at the inspected pixel).
+    Arrow {
+        /// Tail.
+        from: [f32; 2],
+        /// Head.
+        to: [f32; 2],
+        /// Stroke colour.
+        color: Rgba,
+        /// Stroke width in output pixels.
+        width: f32,
+    },
     /// A filled dot (a sample point, a vertex).
     Dot {
         /// Centre.
@@ -85,6 +96,26 @@ fn paint(c: Rgba) -> Paint<'static> {
     p
 }
 
+/// The two ends of an arrow head of length `size` at `b`, for the arrow from `a`, 25° either
+/// side of the shaft.
+#[must_use]
+pub fn arrow_head(a: [f32; 2], b: [f32; 2], size: f32) -> [[f32; 2]; 2] {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let len = dx.hypot(dy).max(1e-6);
+    let (ux, uy) = (dx / len, dy / len);
+    let (s, c) = 25f32.to_radians().sin_cos();
+    [
+        [
+            b[0] - size * (ux * c - uy * s),
+            b[1] - size * (uy * c + ux * s),
+        ],
+        [
+            b[0] - size * (ux * c + uy * s),
+            b[1] - size * (uy * c - ux * s),
+        ],
+    ]
+}
+
 /// Draws `shapes` onto `pixmap`, whose pixels are `zoom` times the image's pixels.
 pub fn draw(pixmap: &mut Pixmap, shapes: &[Shape], zoom: f32) {
     let t = Transform::identity();
@@ -128,6 +159,32 @@ pub fn draw(pixmap: &mut Pixmap, shapes: &[Shape], zoom: f32) {
                     let path = PathBuilder::from_rect(r);
                     let stroke = Stroke {
                         width: *width,
+                        ..Stroke::default()
+                    };
+                    pixmap.stroke_path(&path, &paint(*color), &stroke, t, None);
+                }
+            }
+            Shape::Arrow {
+                from,
+                to,
+                color,
+                width,
+            } => {
+                let (a, b) = (
+                    [from[0] * zoom, from[1] * zoom],
+                    [to[0] * zoom, to[1] * zoom],
+                );
+                let mut pb = PathBuilder::new();
+                pb.move_to(a[0], a[1]);
+                pb.line_to(b[0], b[1]);
+                for [hx, hy] in arrow_head(a, b, 4.0 * width) {
+                    pb.move_to(b[0], b[1]);
+                    pb.line_to(hx, hy);
+                }
+                if let Some(path) = pb.finish() {
+                    let stroke = Stroke {
+                        width: *width,
+                        line_cap: LineCap::Round,
                         ..Stroke::default()
                     };
                     pixmap.stroke_path(&path, &paint(*color), &stroke, t, None);

@@ -8,7 +8,7 @@ use egui_plot::{Legend, Line, Plot};
 
 use super::fit_rect;
 use crate::app::session::{Command, Session};
-use crate::vocabulary::variant_label;
+use crate::vocabulary::{profile, variant_label};
 
 /// Textures of the compared images, the line being dragged, where the picture was drawn.
 #[derive(Default)]
@@ -20,12 +20,15 @@ pub struct CompareView {
 }
 
 /// Colours of the compared settings' curves (and their captions).
-pub const CURVES: [Color32; 4] = [
-    Color32::from_rgb(255, 170, 60),
-    Color32::from_rgb(90, 200, 255),
-    Color32::from_rgb(150, 255, 120),
-    Color32::from_rgb(230, 120, 255),
-];
+pub const CURVES: [Color32; 4] = {
+    let c = profile::CURVE_COLORS;
+    [
+        Color32::from_rgb(c[0][0], c[0][1], c[0][2]),
+        Color32::from_rgb(c[1][0], c[1][1], c[1][2]),
+        Color32::from_rgb(c[2][0], c[2][1], c[2][2]),
+        Color32::from_rgb(c[3][0], c[3][1], c[3][2]),
+    ]
+};
 
 /// The number of columns that makes `n` images of `aspect` largest in `area`.
 fn best_columns(n: usize, aspect: f32, area: Vec2) -> usize {
@@ -155,22 +158,14 @@ impl CompareView {
         };
         Plot::new("profile")
             .legend(Legend::default().follow_insertion_order(true))
-            .x_axis_label(lang.tr(
-                "position along the yellow line (pixels)",
-                "沿黄线的位置（像素）",
-            ))
-            .y_axis_label(lang.tr("intensity (Rec. 709 luminance)", "亮度（Rec. 709）"))
+            .x_axis_label(profile::x_label(lang))
+            .y_axis_label(profile::y_label(lang))
             .y_axis_min_width(40.0)
             .include_y(0.0)
             .allow_scroll(false)
             .show(ui, |plot| {
                 for (i, (name, capture)) in session.variants.iter().enumerate() {
-                    let samples = capture.profile([line[0], line[1]], [line[2], line[3]]);
-                    let length = (line[2] - line[0]).hypot(line[3] - line[1]);
-                    let points: Vec<[f64; 2]> = samples
-                        .iter()
-                        .map(|s| [f64::from(s.t * length), f64::from(s.intensity)])
-                        .collect();
+                    let points = profile::points(capture, line);
                     plot.line(
                         Line::new(variant_label(name, lang), points)
                             .color(CURVES[i % CURVES.len()])

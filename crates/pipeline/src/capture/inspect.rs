@@ -157,6 +157,52 @@ pub struct PixelVectors {
     pub reflected: Vec3,
 }
 
+/// A lighting vector drawn at the inspected pixel: its name, its arrow in image pixels (the
+/// world vector from the surface point, 0.15 of the distance to the eye long), and its colour.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LightingArrow {
+    /// `n`, `l`, `v`, `h` or `r`.
+    pub name: &'static str,
+    /// Tail and head in image pixels (x right, y down).
+    pub from: [f32; 2],
+    /// Head.
+    pub to: [f32; 2],
+    /// Colour.
+    pub color: [u8; 4],
+}
+
+impl FrameCapture {
+    /// The lighting vectors at window pixel `(x, y)` as arrows in the image: the normal (white),
+    /// to the light (amber), to the eye (grey), the half vector (cyan) and the mirror direction
+    /// (pink). The app and the exported pictures draw these.
+    #[must_use]
+    pub fn lighting_arrows(&self, x: u32, y: u32) -> Vec<LightingArrow> {
+        let Some(v) = self.pixel_vectors(x, y) else {
+            return Vec::new();
+        };
+        let length = 0.15 * (self.camera.eye - v.position).length();
+        [
+            (v.normal, "n", [255, 255, 255, 255]),
+            (v.light, "l", [255, 210, 60, 255]),
+            (v.view, "v", [150, 150, 150, 255]),
+            (v.half, "h", [90, 220, 255, 255]),
+            (v.reflected, "r", [255, 120, 200, 255]),
+        ]
+        .into_iter()
+        .filter_map(|(vector, name, color)| {
+            let [from, to] =
+                self.world_segment_to_image(v.position, v.position + vector * length)?;
+            Some(LightingArrow {
+                name,
+                from,
+                to,
+                color,
+            })
+        })
+        .collect()
+    }
+}
+
 /// One sample of an intensity profile along a line of pixels.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct ProfileSample {

@@ -50,6 +50,15 @@ pub fn draw_shape(painter: &egui::Painter, shape: &Shape, to_screen: &dyn Fn([f3
                 egui::StrokeKind::Middle,
             );
         }
+        Shape::Arrow {
+            from,
+            to,
+            color: c,
+            width,
+        } => {
+            let (a, b) = (to_screen(*from), to_screen(*to));
+            painter.arrow(a, b - a, Stroke::new(*width, color(*c)));
+        }
         Shape::Dot {
             center,
             radius,
@@ -150,27 +159,28 @@ pub(super) fn draw_light_vectors(
     sel: &Selection,
     lang: Lang,
 ) {
-    let Some(v) = sel.pixel.and_then(|(x, y)| capture.pixel_vectors(x, y)) else {
+    let arrows = sel
+        .pixel
+        .map(|(x, y)| capture.lighting_arrows(x, y))
+        .unwrap_or_default();
+    if arrows.is_empty() {
         return;
-    };
-    let length = 0.15 * (capture.camera.eye - v.position).length();
-    for (vector, name, color) in [
-        (v.normal, "n", Color32::WHITE),
-        (v.light, "l", Color32::from_rgb(255, 210, 60)),
-        (v.view, "v", Color32::from_gray(150)),
-        (v.half, "h", Color32::from_rgb(90, 220, 255)),
-        (v.reflected, "r", Color32::from_rgb(255, 120, 200)),
-    ] {
-        let Some([a, b]) = capture.world_segment_to_image(v.position, v.position + vector * length)
-        else {
-            continue;
+    }
+    for arrow in arrows {
+        let [r, g, b, _] = arrow.color;
+        let color = Color32::from_rgb(r, g, b);
+        let shape = Shape::Arrow {
+            from: arrow.from,
+            to: arrow.to,
+            color: arrow.color,
+            width: 2.5,
         };
-        let (a, b) = (view.to_screen(a), view.to_screen(b));
-        painter.arrow(a, b - a, Stroke::new(2.5, color));
+        draw_shape(painter, &shape, &|p| view.to_screen(p));
+        let (a, b) = (view.to_screen(arrow.from), view.to_screen(arrow.to));
         painter.text(
             b + (b - a).normalized() * 10.0,
             egui::Align2::CENTER_CENTER,
-            name,
+            arrow.name,
             picture_font(painter.ctx(), 18.0),
             color,
         );
@@ -184,13 +194,7 @@ pub(super) fn draw_light_vectors(
     };
     let mut at = view.rect.left_top() + Vec2::new(10.0, 10.0);
     let mut area = Rect::NOTHING;
-    for line in [
-        lang.tr(
-            "n normal · l to the light · v to the eye",
-            "n 法线 · l 指向光源 · v 指向视点",
-        ),
-        "h = (l + v)/|l + v| · r = 2(n·l)n − l",
-    ] {
+    for line in crate::vocabulary::lighting_legend(lang) {
         let r = crate::app::views::typeset::paint_formula(
             painter,
             at,

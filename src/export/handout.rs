@@ -1,0 +1,312 @@
+//! The handout: one HTML file with every image embedded (no file beside it is needed), in one
+//! language, that reads on a screen and prints on A4 — a step never split across pages where
+//! it fits, no interactive parts on paper, each step's matrices only where they changed or where
+//! the step's stage uses them, and, for a teacher's key, every answer printed.
+
+use std::fmt::Write as _;
+
+use base64::Engine as _;
+use pipeline::capture::Matrices;
+use pipeline::transform::NamedMatrix;
+
+use crate::lesson::Lesson;
+use crate::vocabulary::{Lang, Stage, num};
+
+/// An encoded image.
+pub struct Image {
+    /// `image/png` or `image/jpeg`.
+    pub mime: &'static str,
+    /// The file's bytes.
+    pub bytes: Vec<u8>,
+}
+
+impl Image {
+    fn url(&self) -> String {
+        data_url(self.mime, &self.bytes)
+    }
+}
+
+/// One frame of a filmstrip: the picture and the animated parameters' values.
+pub struct Frame {
+    /// The picture.
+    pub image: Image,
+    /// `name = value` of each animated parameter.
+    pub caption: String,
+}
+
+/// What an animated step shows: a filmstrip for paper, a looping GIF for screens.
+pub struct Animated {
+    /// Frames across the animation.
+    pub filmstrip: Vec<Frame>,
+    /// GIF bytes.
+    pub gif: Vec<u8>,
+}
+
+/// What the handout shows of one step.
+pub struct StepPage {
+    /// The step (0-based).
+    pub index: usize,
+    /// Its picture.
+    pub picture: Image,
+    /// Its animation, if it has one.
+    pub animated: Option<Animated>,
+    /// The matrices of its scene.
+    pub matrices: Matrices,
+    /// The stage it shows.
+    pub stage: Stage,
+}
+
+/// A data URL of `bytes` of MIME type `mime`.
+fn data_url(mime: &str, bytes: &[u8]) -> String {
+    format!(
+        "data:{mime};base64,{}",
+        base64::engine::general_purpose::STANDARD.encode(bytes)
+    )
+}
+
+/// Escapes text for HTML.
+fn esc(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+/// The narration's simple markdown as HTML: paragraphs, `- ` bullets, `**formulas**`.
+fn markdown(text: &str) -> String {
+    let mut out = String::new();
+    for paragraph in text.split("\n\n").map(str::trim).filter(|p| !p.is_empty()) {
+        let lines: Vec<&str> = paragraph.lines().map(str::trim).collect();
+        let inline = |l: &str| {
+            esc(l)
+                .split("**")
+                .enumerate()
+                .map(|(i, part)| {
+                    if i % 2 == 1 {
+                        format!("<strong>{part}</strong>")
+                    } else {
+                        part.to_owned()
+                    }
+                })
+                .collect::<String>()
+        };
+        if lines.iter().all(|l| l.starts_with("- ")) {
+            out.push_str("<ul>");
+            for l in lines {
+                let _ = write!(out, "<li>{}</li>", inline(&l[2..]));
+            }
+            out.push_str("</ul>\n");
+        } else {
+            let _ = writeln!(out, "<p>{}</p>", inline(&lines.join(" ")));
+        }
+    }
+    out
+}
+
+fn matrix_html(m: &NamedMatrix, lang: Lang) -> String {
+    let rows = m.matrix.transpose().to_cols_array_2d();
+    let mut s = format!(
+        "<figure class=\"m\"><figcaption><b>{}</b><br><i>{}</i></figcaption><table>",
+        esc(&m.name),
+        esc(&lang.formula(&m.formula))
+    );
+    for r in rows {
+        s.push_str("<tr>");
+        for v in r {
+            let _ = write!(s, "<td>{}</td>", num(v));
+        }
+        s.push_str("</tr>");
+    }
+    s.push_str("</table></figure>");
+    s
+}
+
+/// The matrices a step shows: those its stage applies (the model matrices on the model and
+/// world stages, the view matrix on the view stage, the projection on clip and NDC, the
+/// viewport on the viewport stage) and any that changed since the previous step shown.
+fn matrices_shown<'a>(
+    now: &'a Matrices,
+    before: Option<&Matrices>,
+    stage: Stage,
+) -> Vec<&'a NamedMatrix> {
+    let changed = |a: &NamedMatrix, b: Option<&NamedMatrix>| b.is_none_or(|b| a.matrix != b.matrix);
+    let mut out = Vec::new();
+    for (i, m) in now.models.iter().enumerate() {
+        let used = matches!(stage, Stage::Model | Stage::World);
+        if used || before.is_some_and(|b| changed(m, b.models.get(i))) {
+            out.push(m);
+        }
+    }
+    for (m, used, prev) in [
+        (&now.view, stage == Stage::View, before.map(|b| &b.view)),
+        (
+            &now.projection,
+            matches!(stage, Stage::Clip | Stage::Ndc),
+            before.map(|b| &b.projection),
+        ),
+        (
+            &now.viewport,
+            stage == Stage::Screen,
+            before.map(|b| &b.viewport),
+        ),
+    ] {
+        if used || (before.is_some() && changed(m, prev)) {
+            out.push(m);
+        }
+    }
+    out
+}
+
+const STYLE: &str = "\
+body{font-family:'Noto Sans SC','Noto Sans CJK SC',sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;line-height:1.55;color:#222}
+h1{margin-bottom:.2em} .summary{color:#555} section{border-top:1px solid #ccc;margin-top:2em;padding-top:1em}
+img{max-width:100%;border:1px solid #aaa} figure{margin:.6em 0} figcaption{font-size:.9em;color:#444}
+.film{display:grid;grid-template-columns:repeat(5,1fr);gap:.4em} .film figure{margin:0} .film img{width:100%}
+figure.m{display:inline-block;margin:.4em 1em .4em 0;vertical-align:top} figure.m table{border-collapse:collapse;font-family:monospace}
+figure.m td{padding:.1em .5em;text-align:right;border-left:1px solid #ddd} strong{color:#8a3b00}
+.question{background:#f6f6f0;padding:.5em 1em;margin-top:1em} .answer{border-left:4px solid #8a3b00;padding:.2em 1em;margin:.5em 0}
+details{margin-top:.4em} .key{display:inline-block;background:#8a3b00;color:#fff;padding:.1em .6em;border-radius:.3em}
+@media print{
+@page{size:A4;margin:14mm}
+body{max-width:none;margin:0;font-size:10.5pt}
+section{break-inside:avoid;page-break-inside:avoid;margin-top:1em}
+h2{break-after:avoid}
+.screen{display:none}
+img{max-height:125mm;width:auto}
+.film img{max-height:none;width:100%}
+}
+";
+
+/// The handout of the exported `pages`, in `lang`; with `answers`, every answer printed.
+#[must_use]
+pub fn html(lesson: &Lesson, pages: &[StepPage], lang: Lang, answers: bool) -> String {
+    let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
+    let mut h = String::new();
+    let _ = write!(
+        h,
+        "<!doctype html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\">\
+         <meta name=\"viewport\" content=\"width=device-width\"><title>{}</title>\n<style>\n{STYLE}</style></head><body>\n",
+        if lang == Lang::Zh { "zh-CN" } else { "en" },
+        esc(lesson.title.get(lang))
+    );
+    let _ = writeln!(
+        h,
+        "<h1>{}</h1><p class=\"summary\">{}</p>",
+        esc(lesson.title.get(lang)),
+        esc(lesson.summary.get(lang))
+    );
+    if answers {
+        let _ = writeln!(
+            h,
+            "<p><span class=\"key ui\">{}</span></p>",
+            t(
+                "Teacher's key: every answer printed",
+                "教师版：印出全部答案"
+            )
+        );
+    }
+    if !lesson.prerequisites.is_empty() {
+        let _ = writeln!(
+            h,
+            "<p class=\"summary\"><span class=\"ui\">{}</span>: {}</p>",
+            t("Before this lesson", "先修课"),
+            esc(&lesson.prerequisites.join(", "))
+        );
+    }
+    let mut before: Option<&Matrices> = None;
+    for page in pages {
+        step_html(&mut h, lesson, page, before, lang, answers);
+        before = Some(&page.matrices);
+    }
+    h.push_str("</body></html>\n");
+    h
+}
+
+fn step_html(
+    h: &mut String,
+    lesson: &Lesson,
+    page: &StepPage,
+    before: Option<&Matrices>,
+    lang: Lang,
+    answers: bool,
+) {
+    let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
+    let step = &lesson.steps[page.index];
+    let title = esc(step.title.get(lang));
+    let _ = write!(
+        h,
+        "<section id=\"step-{n}\"><h2>{n}. {title}</h2>\n{body}",
+        n = page.index + 1,
+        body = markdown(step.narration.get(lang))
+    );
+    let _ = writeln!(
+        h,
+        "<figure><img src=\"{}\" alt=\"{title}\"><figcaption class=\"ui\">{}: {}</figcaption></figure>",
+        page.picture.url(),
+        t("Stage", "阶段"),
+        page.stage.name(lang)
+    );
+    if let Some(a) = &page.animated {
+        let _ = writeln!(
+            h,
+            "<figure class=\"screen\"><img src=\"{}\" alt=\"{title}\"><figcaption class=\"ui\">{}</figcaption></figure>",
+            data_url("image/gif", &a.gif),
+            t(
+                "The animation, as the app plays it",
+                "动画，与应用中播放的相同"
+            )
+        );
+        let _ = write!(
+            h,
+            "<p class=\"ui\">{}</p><div class=\"film\">",
+            t(
+                "The animation in frames, from its start to its end:",
+                "动画的分帧，从开始到结束："
+            )
+        );
+        for f in &a.filmstrip {
+            let _ = write!(
+                h,
+                "<figure><img src=\"{}\" alt=\"{c}\"><figcaption>{c}</figcaption></figure>",
+                f.image.url(),
+                c = esc(&f.caption)
+            );
+        }
+        h.push_str("</div>\n");
+    }
+    let shown = matrices_shown(&page.matrices, before, page.stage);
+    if !shown.is_empty() {
+        h.push_str("<div>");
+        for m in shown {
+            h.push_str(&matrix_html(m, lang));
+        }
+        h.push_str("</div>\n");
+    }
+    if let Some(q) = &step.question {
+        let _ = write!(
+            h,
+            "<div class=\"question\"><b class=\"ui\">{}</b> {}",
+            t("Question:", "思考题："),
+            esc(q.get(lang))
+        );
+        if let Some(a) = &step.answer {
+            if answers {
+                let _ = write!(
+                    h,
+                    "<div class=\"answer\"><b class=\"ui\">{}</b>{}</div>",
+                    t("Answer:", "答案："),
+                    markdown(a.get(lang))
+                );
+            } else {
+                let _ = write!(
+                    h,
+                    "<details class=\"screen\"><summary class=\"ui\">{}</summary>{}</details>",
+                    t("Show the answer", "显示答案"),
+                    markdown(a.get(lang))
+                );
+            }
+        }
+        h.push_str("</div>\n");
+    }
+    h.push_str("</section>\n");
+}

@@ -1,0 +1,306 @@
+//! A step's picture as the app shows it, for handouts and slides: the stage's buffer with the
+//! step's overlays (edges, bounding boxes, sample points), the inspected pixel framed with its
+//! lighting vectors, the selected vertex, the profile line and its chart; settings compared side
+//! by side with their names; the observer view where the step's stage is a space or its layout
+//! shows it. The shapes are the core's (`overlay::Shape`, `FrameCapture::lighting_arrows`), the
+//! ones the app draws.
+
+use anyhow::Result;
+use image::{Rgba, RgbaImage, imageops};
+use pipeline::buffers::BufferKind;
+use pipeline::capture::FrameCapture;
+use pipeline::overlay::{OverlayKind, Shape};
+
+use super::text;
+use crate::lesson::script::{Layout, Overlay};
+use crate::lesson::{Lesson, SceneSpec};
+use crate::vocabulary::{Lang, lighting_legend, profile, variant_label};
+
+/// What one step rendered: its scene, its capture and the compared settings' captures.
+pub struct Rendered<'a> {
+    /// The scene as the step (at this moment of its animation) sets it.
+    pub spec: &'a SceneSpec,
+    /// The capture of the step's settings.
+    pub capture: &'a FrameCapture,
+    /// The compared settings, by name, when the step compares.
+    pub variants: &'a [(String, FrameCapture)],
+}
+
+/// The yellow of the selection (the app's `palette::SELECTED`).
+const SELECTED: [u8; 4] = [255, 215, 0, 255];
+/// The most overlay shapes drawn (as in the app).
+const MAX_SHAPES: usize = 20_000;
+/// The width a buffer is magnified towards (by a whole factor, so pixels stay square).
+const TARGET_WIDTH: u32 = 640;
+
+/// Step `k`'s picture.
+///
+/// # Errors
+/// When the chart cannot be drawn.
+pub fn step_picture(lesson: &Lesson, k: usize, r: &Rendered<'_>, lang: Lang) -> Result<RgbaImage> {
+    let step = &lesson.steps[k];
+    let stage = lesson.stage_at(k);
+    let buffer = lesson.buffer_at(k);
+    let observer = || crate::observer::observer_image(r.spec, r.capture);
+    if stage.space().is_some()
+        && let Some(img) = observer()
+    {
+        return Ok(img);
+    }
+    let line = step.profile_line(r.capture.width(), r.capture.height());
+    let picture = if step.compare.is_some() && !r.variants.is_empty() {
+        side_by_side(r.variants, buffer, line, lang)
+    } else {
+        let shapes = Shapes {
+            overlays: step.overlays.as_deref().unwrap_or_default(),
+            pixel: step.pixel,
+            vertex: step.vertex,
+            line,
+        };
+        let img = buffer_with_shapes(r.capture, buffer, &shapes, lang);
+        match (step.layout, observer()) {
+            (Layout::Observer, Some(o)) => beside(&img, &o),
+            _ => img,
+        }
+    };
+    let Some(line) = line else {
+        return Ok(picture);
+    };
+    let curves: Vec<(String, Vec<[f64; 2]>)> = if r.variants.is_empty() {
+        let name = crate::vocabulary::buffer_name(buffer, lang).to_owned();
+        vec![(name, profile::points(r.capture, line))]
+    } else {
+        r.variants
+            .iter()
+            .map(|(n, c)| (variant_label(n, lang), profile::points(c, line)))
+            .collect()
+    };
+    let chart_h = (picture.width() * 2 / 5).clamp(240, 760);
+    let chart = super::chart::profile_chart(&curves, lang, picture.width(), chart_h)?;
+    Ok(above(&picture, &chart))
+}
+
+/// What is drawn over a buffer.
+struct Shapes<'a> {
+    overlays: &'a [Overlay],
+    pixel: Option<(u32, u32)>,
+    vertex: Option<u32>,
+    line: Option<[f32; 4]>,
+}
+
+/// The whole factor that brings `width` nearest to the target width (at least 1, at most 32).
+fn zoom_for(width: u32) -> u32 {
+    (TARGET_WIDTH / width.max(1)).clamp(1, 32)
+}
+
+/// `kind` of `capture`, magnified, with the shapes drawn and the lighting vectors named.
+fn buffer_with_shapes(
+    capture: &FrameCapture,
+    kind: BufferKind,
+    s: &Shapes<'_>,
+    lang: Lang,
+) -> RgbaImage {
+    let zoom = zoom_for(capture.width());
+    let z = zoom as f32;
+    let mut shapes: Vec<Shape> = Vec::new();
+    for o in s.overlays {
+        let kind = match o {
+            Overlay::Edges => OverlayKind::TriangleEdges,
+            Overlay::BoundingBoxes => OverlayKind::BoundingBoxes,
+            Overlay::Samples => continue,
+        };
+        shapes.extend(capture.overlay_shapes(kind).take(MAX_SHAPES));
+    }
+    if s.overlays.contains(&Overlay::Samples) && zoom >= 6 {
+        shapes.extend(sample_dots(capture, z));
+    }
+    if let Some(line) = s.line {
+        shapes.push(Shape::Polyline {
+            points: vec![[line[0], line[1]], [line[2], line[3]]],
+            closed: false,
+            color: [255, 220, 0, 255],
+            width: 2.0,
+        });
+    }
+    if let Some(v) = s.vertex.and_then(|i| capture.vertices.get(i as usize))
+        && let Some(win) = v.window
+    {
+        let [x, y] = capture.window_to_image(win);
+        let r = 7.0 / z;
+        shapes.push(Shape::Rect {
+            min: [x - r, y - r],
+            max: [x + r, y + r],
+            color: SELECTED,
+            width: 2.5,
+        });
+    }
+    let arrows = s
+        .pixel
+        .map(|(x, y)| capture.lighting_arrows(x, y))
+        .unwrap_or_default();
+    if let Some((x, y)) = s.pixel {
+        let r = (capture.height() - 1 - y) as f32;
+        let pad = 1.5 / z;
+        shapes.push(Shape::Rect {
+            min: [x as f32 - pad, r - pad],
+            max: [x as f32 + 1.0 + pad, r + 1.0 + pad],
+            color: SELECTED,
+            width: 2.0,
+        });
+    }
+    shapes.extend(arrows.iter().map(|a| Shape::Arrow {
+        from: a.from,
+        to: a.to,
+        color: a.color,
+        width: 2.5,
+    }));
+    let mut img = capture.image_with_shapes(kind, &shapes, zoom);
+    for a in &arrows {
+        let (dx, dy) = (a.to[0] - a.from[0], a.to[1] - a.from[1]);
+        let len = dx.hypot(dy).max(1e-6);
+        let at = [a.to[0] * z + dx / len * 12.0, a.to[1] * z + dy / len * 12.0];
+        let [r, g, b, _] = a.color;
+        text::draw(&mut img, at[0] - 5.0, at[1] + 7.0, 20.0, [r, g, b], a.name);
+    }
+    if !arrows.is_empty() {
+        legend(&mut img, &lighting_legend(lang));
+    }
+    img
+}
+
+/// Each pixel's samples: white where covered, dark grey where not (as the app draws them).
+fn sample_dots(capture: &FrameCapture, zoom: f32) -> Vec<Shape> {
+    let offsets = pipeline::raster::sample_offsets_image(capture.settings.samples);
+    let radius = (zoom / 14.0).clamp(1.5, 5.0);
+    let mut dots = Vec::new();
+    for r in 0..capture.height() {
+        let y = capture.height() - 1 - r;
+        for c in 0..capture.width() {
+            for (k, o) in offsets.iter().enumerate() {
+                let covered = capture.samples.triangle[capture.samples.index(c, y, k)]
+                    != pipeline::raster::NONE;
+                dots.push(Shape::Dot {
+                    center: [c as f32 + o[0], r as f32 + o[1]],
+                    radius,
+                    color: if covered {
+                        [255, 255, 255, 255]
+                    } else {
+                        [70, 70, 70, 255]
+                    },
+                });
+            }
+        }
+    }
+    dots
+}
+
+/// Lines of text on a dark box at the top-left.
+fn legend(img: &mut RgbaImage, lines: &[&str]) {
+    let size = 17.0;
+    let w = lines
+        .iter()
+        .map(|l| text::width(l, size))
+        .fold(0.0, f32::max) as u32
+        + 16;
+    let h = lines.len() as u32 * 24 + 10;
+    darken(img, 8, 8, w, h);
+    for (i, l) in lines.iter().enumerate() {
+        text::draw(
+            img,
+            16.0,
+            8.0 + 24.0 * (i as f32 + 1.0),
+            size,
+            [255, 255, 255],
+            l,
+        );
+    }
+}
+
+/// Darkens a rectangle to 30 % (a box behind words over a picture).
+fn darken(img: &mut RgbaImage, x: u32, y: u32, w: u32, h: u32) {
+    for py in y..(y + h).min(img.height()) {
+        for px in x..(x + w).min(img.width()) {
+            let p = img.get_pixel_mut(px, py);
+            for c in 0..3 {
+                p.0[c] = (u16::from(p.0[c]) * 3 / 10) as u8;
+            }
+        }
+    }
+}
+
+/// The compared settings side by side (at most three in a row), each with its name in its
+/// curve's colour and the profile line drawn across it.
+fn side_by_side(
+    variants: &[(String, FrameCapture)],
+    kind: BufferKind,
+    line: Option<[f32; 4]>,
+    lang: Lang,
+) -> RgbaImage {
+    let columns = variants.len().min(3) as u32;
+    let rows = (variants.len() as u32).div_ceil(columns);
+    let tiles: Vec<RgbaImage> = variants
+        .iter()
+        .enumerate()
+        .map(|(i, (name, cap))| {
+            let shapes = Shapes {
+                overlays: &[],
+                pixel: None,
+                vertex: None,
+                line,
+            };
+            let mut tile = buffer_with_shapes(cap, kind, &shapes, lang);
+            let label = variant_label(name, lang);
+            let [r, g, b] = profile::CURVE_COLORS[i % profile::CURVE_COLORS.len()];
+            let size = (tile.width() as f32 / 16.0).clamp(20.0, 64.0);
+            darken(
+                &mut tile,
+                0,
+                0,
+                (text::width(&label, size) + size) as u32,
+                (size * 1.5) as u32,
+            );
+            text::draw(&mut tile, size / 2.0, size * 1.12, size, [r, g, b], &label);
+            tile
+        })
+        .collect();
+    let (tw, th) = (tiles[0].width(), tiles[0].height());
+    let gap = 8;
+    let mut out = RgbaImage::from_pixel(
+        columns * tw + (columns - 1) * gap,
+        rows * th + (rows - 1) * gap,
+        Rgba([30, 30, 30, 255]),
+    );
+    for (i, t) in tiles.iter().enumerate() {
+        let (c, r) = (i as u32 % columns, i as u32 / columns);
+        imageops::overlay(
+            &mut out,
+            t,
+            i64::from(c * (tw + gap)),
+            i64::from(r * (th + gap)),
+        );
+    }
+    out
+}
+
+/// `a` and `b` side by side, `b` scaled to `a`'s height.
+fn beside(a: &RgbaImage, b: &RgbaImage) -> RgbaImage {
+    let h = a.height();
+    let w = (b.width() as f32 * h as f32 / b.height() as f32).round() as u32;
+    let b = imageops::resize(b, w.max(1), h, imageops::FilterType::Triangle);
+    let mut out = RgbaImage::from_pixel(a.width() + 8 + b.width(), h, Rgba([30, 30, 30, 255]));
+    imageops::overlay(&mut out, a, 0, 0);
+    imageops::overlay(&mut out, &b, i64::from(a.width() + 8), 0);
+    out
+}
+
+/// `a` above `b`, `b` as wide as `a`.
+fn above(a: &RgbaImage, b: &RgbaImage) -> RgbaImage {
+    let mut out = RgbaImage::from_pixel(
+        a.width(),
+        a.height() + 8 + b.height(),
+        Rgba([30, 30, 30, 255]),
+    );
+    imageops::overlay(&mut out, a, 0, 0);
+    imageops::overlay(&mut out, b, 0, i64::from(a.height() + 8));
+    out
+}

@@ -1,0 +1,107 @@
+//! Slides: one 1920×1080 PNG per step — the title, the step's picture as large as it fits, and
+//! the narration in large type beside it (its formulas highlighted) — the files a teacher drags
+//! into a slide deck.
+
+use image::{Rgba, RgbaImage, imageops};
+
+use super::text::{self, Run};
+use crate::lesson::Lesson;
+use crate::vocabulary::Lang;
+
+/// The slide's size.
+pub const WIDTH: u32 = 1920;
+/// The slide's size.
+pub const HEIGHT: u32 = 1080;
+
+const BACKGROUND: [u8; 3] = [22, 24, 28];
+const INK: [u8; 3] = [235, 235, 235];
+const ACCENT: [u8; 3] = [255, 214, 120];
+const DIM: [u8; 3] = [150, 150, 150];
+
+/// The slide of step `k`, showing `picture`.
+#[must_use]
+pub fn slide(lesson: &Lesson, k: usize, picture: &RgbaImage, lang: Lang) -> RgbaImage {
+    let step = &lesson.steps[k];
+    let [r, g, b] = BACKGROUND;
+    let mut img = RgbaImage::from_pixel(WIDTH, HEIGHT, Rgba([r, g, b, 255]));
+    let margin = 48.0;
+    let title = format!("{}. {}", k + 1, step.title.get(lang));
+    text::draw(&mut img, margin, 92.0, 56.0, ACCENT, &title);
+    let footer = format!(
+        "{} · {} / {}",
+        lesson.title.get(lang),
+        k + 1,
+        lesson.steps.len()
+    );
+    text::draw(&mut img, margin, HEIGHT as f32 - 24.0, 22.0, DIM, &footer);
+    // The picture on the left, as large as fits in 1160×880; the words in what is left.
+    let (area_w, area_h) = (1160.0, 880.0);
+    let s = (area_w / picture.width() as f32).min(area_h / picture.height() as f32);
+    let (pw, ph) = (
+        (picture.width() as f32 * s).round() as u32,
+        (picture.height() as f32 * s).round() as u32,
+    );
+    let filter = if s >= 2.0 {
+        imageops::FilterType::Nearest
+    } else {
+        imageops::FilterType::Triangle
+    };
+    let scaled = imageops::resize(picture, pw.max(1), ph.max(1), filter);
+    imageops::overlay(&mut img, &scaled, margin as i64, 130);
+    let left = margin + pw as f32 + 48.0;
+    let width = WIDTH as f32 - left - margin;
+    narration(
+        &mut img,
+        step.narration.get(lang),
+        left,
+        width,
+        130.0,
+        900.0,
+    );
+    img
+}
+
+/// The narration in the largest type from 34 down to 20 pixels that fits `height`.
+fn narration(img: &mut RgbaImage, text: &str, x: f32, width: f32, top: f32, height: f32) {
+    let paragraphs: Vec<Vec<Run>> = text
+        .split("\n\n")
+        .map(str::trim)
+        .filter(|p| !p.is_empty())
+        .map(|p| {
+            let joined = p
+                .lines()
+                .map(|l| {
+                    l.trim()
+                        .strip_prefix("- ")
+                        .map_or_else(|| l.trim().to_owned(), |b| format!("• {b}"))
+                })
+                .collect::<Vec<_>>()
+                .join(" ");
+            text::marked_runs(&joined, INK, ACCENT)
+        })
+        .collect();
+    let mut size = 34.0;
+    let layout = loop {
+        let lines: Vec<Vec<Vec<Run>>> = paragraphs
+            .iter()
+            .map(|p| text::wrap(p, size, width))
+            .collect();
+        let count: usize = lines.iter().map(Vec::len).sum();
+        let needed = count as f32 * size * 1.45 + (lines.len() as f32 - 1.0) * size * 0.6;
+        if needed <= height || size <= 20.0 {
+            break lines;
+        }
+        size -= 2.0;
+    };
+    let mut y = top + size;
+    for paragraph in layout {
+        for line in paragraph {
+            if y > top + height {
+                return;
+            }
+            text::draw_runs(img, x, y, size, &line);
+            y += size * 1.45;
+        }
+        y += size * 0.6;
+    }
+}

@@ -1,0 +1,195 @@
+//! Text in exported pictures and slides: the embedded CJK font (Latin, Greek and the math
+//! symbols included), with egui's Hack for the few symbols it lacks (⁻ ⌊ ⌋), rasterized by
+//! `ab_glyph` straight onto an RGBA image. Lines wrap at spaces, and anywhere between two
+//! Chinese characters.
+
+use ab_glyph::{Font, FontRef, PxScale, ScaleFont};
+use image::{Rgba, RgbaImage};
+
+/// The fonts, first the one tried first.
+fn fonts() -> [FontRef<'static>; 2] {
+    // Both are fonts shipped in the binary; a test draws text with each.
+    let cjk = FontRef::try_from_slice(crate::vocabulary::CJK_FONT).expect("the embedded font");
+    let hack = FontRef::try_from_slice(epaint_default_fonts::HACK_REGULAR).expect("egui's Hack");
+    [cjk, hack]
+}
+
+/// A run of text of one colour.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Run {
+    /// The text.
+    pub text: String,
+    /// Its colour.
+    pub color: [u8; 3],
+}
+
+/// The font that has `c`, and its glyph.
+fn glyph_of(fonts: &[FontRef<'static>], c: char) -> (usize, ab_glyph::GlyphId) {
+    fonts
+        .iter()
+        .enumerate()
+        .map(|(i, f)| (i, f.glyph_id(c)))
+        .find(|(_, g)| g.0 != 0)
+        .unwrap_or((0, fonts[0].glyph_id(c)))
+}
+
+/// The width of `text` at `size` pixels.
+#[must_use]
+pub fn width(text: &str, size: f32) -> f32 {
+    let fonts = fonts();
+    text.chars()
+        .map(|c| {
+            let (f, g) = glyph_of(&fonts, c);
+            fonts[f].as_scaled(PxScale::from(size)).h_advance(g)
+        })
+        .sum()
+}
+
+/// Draws `text` with its baseline at `y`, starting at `x`; returns the x after it.
+pub fn draw(img: &mut RgbaImage, x: f32, y: f32, size: f32, color: [u8; 3], text: &str) -> f32 {
+    let fonts = fonts();
+    let scale = PxScale::from(size);
+    let mut pen = x;
+    for c in text.chars() {
+        let (f, id) = glyph_of(&fonts, c);
+        let font = &fonts[f];
+        let glyph = id.with_scale_and_position(scale, ab_glyph::point(pen, y));
+        pen += font.as_scaled(scale).h_advance(id);
+        let Some(outline) = font.outline_glyph(glyph) else {
+            continue;
+        };
+        let b = outline.px_bounds();
+        outline.draw(|gx, gy, coverage| {
+            let (px, py) = (
+                b.min.x as i64 + i64::from(gx),
+                b.min.y as i64 + i64::from(gy),
+            );
+            if px < 0 || py < 0 || px >= i64::from(img.width()) || py >= i64::from(img.height()) {
+                return;
+            }
+            let p = img.get_pixel_mut(px as u32, py as u32);
+            let a = coverage.clamp(0.0, 1.0);
+            for (channel, ink) in p.0.iter_mut().zip(color) {
+                *channel = (f32::from(*channel) * (1.0 - a) + f32::from(ink) * a).round() as u8;
+            }
+            p.0[3] = p.0[3].max((a * 255.0) as u8);
+        });
+    }
+    pen
+}
+
+/// Draws runs one after another on one line; returns the x after them.
+pub fn draw_runs(img: &mut RgbaImage, x: f32, y: f32, size: f32, runs: &[Run]) -> f32 {
+    runs.iter()
+        .fold(x, |pen, r| draw(img, pen, y, size, r.color, &r.text))
+}
+
+/// Whether a line may break before or after `c` without a space (Chinese and Japanese text).
+fn breaks_anywhere(c: char) -> bool {
+    matches!(c as u32, 0x2E80..=0x9FFF | 0xF900..=0xFAFF | 0xFF00..=0xFFEF)
+}
+
+/// The runs cut into lines no wider than `max` at `size` (a word wider than a line stays whole).
+#[must_use]
+pub fn wrap(runs: &[Run], size: f32, max: f32) -> Vec<Vec<Run>> {
+    // Pieces that do not break inside: a word with the spaces after it, or one CJK character.
+    let mut pieces: Vec<Run> = Vec::new();
+    for r in runs {
+        let mut cur = String::new();
+        let mut after_space = false;
+        for c in r.text.chars() {
+            let cut = breaks_anywhere(c) || (after_space && !c.is_whitespace());
+            if cut && !cur.is_empty() {
+                pieces.push(Run {
+                    text: std::mem::take(&mut cur),
+                    color: r.color,
+                });
+            }
+            cur.push(c);
+            after_space = c.is_whitespace() || breaks_anywhere(c);
+        }
+        if !cur.is_empty() {
+            pieces.push(Run {
+                text: cur,
+                color: r.color,
+            });
+        }
+    }
+    let mut lines: Vec<Vec<Run>> = vec![Vec::new()];
+    let mut used = 0.0;
+    for p in pieces {
+        let w = width(&p.text, size);
+        let trimmed = width(p.text.trim_end(), size);
+        let line = lines.last_mut().expect("a line");
+        if used + trimmed > max && !line.is_empty() {
+            lines.push(Vec::new());
+            used = 0.0;
+        }
+        let line = lines.last_mut().expect("a line");
+        match line.last_mut() {
+            Some(last) if last.color == p.color => last.text.push_str(&p.text),
+            _ => line.push(p),
+        }
+        used += w;
+    }
+    lines
+}
+
+/// `text` with its `**formulas**` in `accent`, the rest in `color` (the narration's markup).
+#[must_use]
+pub fn marked_runs(text: &str, color: [u8; 3], accent: [u8; 3]) -> Vec<Run> {
+    text.split("**")
+        .enumerate()
+        .filter(|(_, t)| !t.is_empty())
+        .map(|(i, t)| Run {
+            text: t.to_owned(),
+            color: if i % 2 == 1 { accent } else { color },
+        })
+        .collect()
+}
+
+/// Fills a rectangle.
+pub fn fill(img: &mut RgbaImage, x: u32, y: u32, w: u32, h: u32, color: [u8; 3]) {
+    for py in y..(y + h).min(img.height()) {
+        for px in x..(x + w).min(img.width()) {
+            img.put_pixel(px, py, Rgba([color[0], color[1], color[2], 255]));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn chinese_latin_and_the_symbols_the_cjk_font_lacks_draw_ink() {
+        for text in ["Phong", "透视投影", "⌊λ⌋", "M⁻¹"] {
+            let mut img = RgbaImage::from_pixel(200, 40, Rgba([0, 0, 0, 255]));
+            draw(&mut img, 2.0, 30.0, 24.0, [255, 255, 255], text);
+            let lit = img.pixels().filter(|p| p.0[0] > 128).count();
+            assert!(lit > 20, "{text}: {lit} lit pixels");
+        }
+    }
+
+    #[test]
+    fn lines_wrap_at_spaces_and_between_chinese_characters() {
+        let runs = marked_runs("one two three four five six", [0; 3], [0; 3]);
+        let lines = wrap(&runs, 20.0, width("one two three", 20.0) + 1.0);
+        let texts: Vec<String> = lines
+            .iter()
+            .map(|l| l.iter().map(|r| r.text.as_str()).collect::<String>())
+            .collect();
+        assert_eq!(texts[0].trim_end(), "one two three");
+        assert_eq!(texts.len(), 2);
+        let zh = marked_runs("透视投影把视锥变成立方体", [0; 3], [0; 3]);
+        let lines = wrap(&zh, 20.0, width("透视投影", 20.0) + 1.0);
+        assert_eq!(lines.len(), 3);
+    }
+
+    #[test]
+    fn formulas_are_runs_of_their_own() {
+        let r = marked_runs("a **x/w** b", [1; 3], [2; 3]);
+        assert_eq!(r.len(), 3);
+        assert_eq!((r[1].text.as_str(), r[1].color), ("x/w", [2; 3]));
+    }
+}

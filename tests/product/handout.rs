@@ -1,0 +1,237 @@
+//! The handout a lesson exports: one self-contained HTML file whose pictures are what the app
+//! shows (overlays, the inspected pixel with its vectors, the profile and its chart), printed
+//! answers on request, Chinese captions in Chinese; slides and data on request.
+
+use base64::Engine as _;
+use image::RgbaImage;
+
+use crate::support::{pipelens, text};
+
+/// Every image embedded in `html`, in order.
+pub fn images(html: &str) -> Vec<RgbaImage> {
+    html.split("src=\"data:image/")
+        .skip(1)
+        .map(|rest| {
+            let b64 = rest
+                .split_once(";base64,")
+                .and_then(|(_, r)| r.split('"').next())
+                .expect("a base64 image");
+            let bytes = base64::engine::general_purpose::STANDARD
+                .decode(b64)
+                .expect("base64");
+            image::load_from_memory(&bytes)
+                .expect("an image")
+                .to_rgba8()
+        })
+        .collect()
+}
+
+/// No attribute of `html` names anything outside it: every `src` and `href` is a data URL or
+/// a place in the page, and nothing is loaded by a `<link>`, a script or a CSS `url()`.
+pub fn assert_self_contained(html: &str, what: &str) {
+    for attr in ["src=\"", "href=\""] {
+        for value in html.split(attr).skip(1) {
+            assert!(
+                value.starts_with("data:") || value.starts_with('#'),
+                "{what}: {attr}{} points outside the file",
+                &value[..value.len().min(40)]
+            );
+        }
+    }
+    for word in ["<link", "<script", "url(", "@import"] {
+        assert!(!html.contains(word), "{what}: {word} in the handout");
+    }
+}
+
+/// Whether `s` has a Chinese character.
+fn has_chinese(s: &str) -> bool {
+    s.chars().any(|c| ('\u{4e00}'..='\u{9fff}').contains(&c))
+}
+
+/// Every caption the export writes itself (class `ui`, the figures' captions) is Chinese.
+pub fn assert_captions_chinese(html: &str, what: &str) {
+    let mut seen = 0;
+    // A caption ends where its element ends: `</figcaption>` for a figure's (whose matrix name
+    // is in bold inside it), the first closing tag for the rest.
+    for (marker, end) in [
+        ("class=\"ui\">", "</"),
+        ("<figcaption>", "</figcaption>"),
+        ("<figcaption class=\"ui\">", "</figcaption>"),
+    ] {
+        for rest in html.split(marker).skip(1) {
+            let inside = rest.split(end).next().unwrap_or_default();
+            // A matrix's caption is its symbol and formula (`M_viewport`, `x_w = (x+1)·width/2`),
+            // translated by the formula table, which
+            // `every_matrix_formula_a_lesson_shows_reads_in_chinese` checks.
+            if inside.starts_with("<b>") {
+                continue;
+            }
+            let caption: String = inside
+                .split('<')
+                .map(|part| part.split_once('>').map_or(part, |(_, t)| t))
+                .collect();
+            seen += 1;
+            assert!(
+                has_chinese(&caption),
+                "{what}: the caption \"{caption}\" is not in Chinese"
+            );
+        }
+    }
+    assert!(seen > 0, "{what}: no caption found");
+}
+
+const LESSON: &str = r#"
+[lesson]
+id = "picture"
+title = { en = "A picture", zh = "一幅图" }
+summary = { en = "What the handout draws.", zh = "讲义画什么。" }
+
+[scene.camera]
+eye = [0, 0, 3]
+
+[scene.render]
+width = 160
+height = 120
+shading = "phong"
+
+[[scene.lights]]
+kind = "point"
+position = [2, 2, 3]
+
+[[scene.objects]]
+name = "ball"
+mesh = { builtin = "uv_sphere", segments = 12, rings = 6 }
+color = [0.8, 0.3, 0.2]
+
+[[steps]]
+title = { en = "Everything drawn", zh = "全部画出" }
+narration = { en = "Edges, a pixel and a profile.", zh = "边、像素与剖面。" }
+stage = "shading"
+buffer = "color"
+overlays = ["edges"]
+pixel = [80, 70]
+profile = [0, 60, 159, 60]
+question = { en = "Why?", zh = "为什么？" }
+answer = { en = "Because of the normal.", zh = "因为法线。" }
+
+[[steps]]
+title = { en = "Nothing drawn", zh = "什么都不画" }
+narration = { en = "The same image alone.", zh = "只有同一幅图。" }
+buffer = "color"
+animate = [{ param = "projection.fovy", from = 40, to = 60, seconds = 2 }]
+question = { en = "And now?", zh = "现在呢？" }
+answer = { en = "The same, bigger.", zh = "一样，只是更大。" }
+"#;
+
+/// Pixels of `img` within `tol` of `rgb` in every channel.
+fn count(img: &RgbaImage, rows: std::ops::Range<u32>, rgb: [u8; 3], tol: i32) -> usize {
+    img.enumerate_pixels()
+        .filter(|(_, y, p)| {
+            rows.contains(y) && (0..3).all(|c| (i32::from(p.0[c]) - i32::from(rgb[c])).abs() <= tol)
+        })
+        .count()
+}
+
+fn export(dir: &std::path::Path, extra: &[&str]) -> String {
+    std::fs::write(dir.join("picture.toml"), LESSON).expect("write");
+    let mut args = vec!["export", "picture.toml", "--out", "out"];
+    args.extend(extra);
+    let o = pipelens(dir, &args);
+    assert!(o.status.success(), "{}", text(&o));
+    std::fs::read_to_string(dir.join("out/index.html")).expect("index.html")
+}
+
+#[test]
+fn the_handout_picture_has_the_overlays_the_pixel_and_the_chart() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let html = export(dir.path(), &[]);
+    assert_self_contained(&html, "picture");
+    let imgs = images(&html);
+    let (drawn, plain) = (&imgs[0], &imgs[1]);
+    // 160×120 magnified 4×, and under it the chart.
+    assert_eq!(drawn.width(), 640);
+    assert_eq!((plain.width(), plain.height()), (640, 480));
+    assert!(drawn.height() > 480 + 200, "a chart under the picture");
+    let picture = 0..480;
+    // The edges (white), the pixel's frame (yellow) and its half vector (cyan) over the image.
+    let white = count(drawn, picture.clone(), [255, 255, 255], 30);
+    assert!(
+        white > count(plain, picture.clone(), [255, 255, 255], 30) + 400,
+        "edges: {white} white pixels"
+    );
+    assert!(
+        count(drawn, picture.clone(), [255, 215, 0], 40) > 20,
+        "the pixel's frame"
+    );
+    assert!(count(plain, picture.clone(), [255, 215, 0], 40) < 5);
+    assert!(
+        count(drawn, picture.clone(), [90, 220, 255], 40) > 10,
+        "h drawn"
+    );
+    // The chart: the curve in the first curve colour, on the app's dark background.
+    let chart = 488..drawn.height();
+    assert!(
+        count(drawn, chart.clone(), [255, 170, 60], 40) > 100,
+        "the curve"
+    );
+    assert!(
+        count(drawn, chart, [14, 14, 14], 6) > 10_000,
+        "the chart's background"
+    );
+    // The animated step: a GIF and a filmstrip of five frames captioned with fovy's values.
+    assert!(html.contains("data:image/gif;base64,"));
+    // ease_in_out: 3t² − 2t³ at t = 0, ¼, ½, ¾, 1 gives 0, 0.156, 0.5, 0.844, 1 of the way.
+    for fovy in ["40", "43.12", "50", "56.88", "60"] {
+        assert!(
+            html.contains(&format!("projection · fovy = {fovy}</figcaption>")),
+            "frame at fovy = {fovy}"
+        );
+    }
+    // A student's handout: the answers folded away on screen, not printed.
+    assert!(html.contains("<details class=\"screen\">"));
+    assert!(html.contains(".screen{display:none}"));
+}
+
+#[test]
+fn the_answer_key_prints_every_answer_and_chinese_captions_are_chinese() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let html = export(dir.path(), &["--answers", "--lang", "zh"]);
+    assert!(!html.contains("<details"), "nothing folded in a key");
+    for answer in ["因为法线。", "一样，只是更大。"] {
+        assert!(
+            html.contains(&format!("<b class=\"ui\">答案：</b><p>{answer}</p>")),
+            "{answer}"
+        );
+    }
+    assert_captions_chinese(&html, "picture");
+    assert!(html.contains("投影 · fovy = 40</figcaption>"));
+}
+
+#[test]
+fn slides_and_data_only_on_request() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    export(dir.path(), &["--slides", "--data"]);
+    let out = dir.path().join("out");
+    for k in 1..=2 {
+        let slide = image::open(out.join(format!("slides/step-0{k}.png")))
+            .expect("a slide")
+            .to_rgba8();
+        assert_eq!((slide.width(), slide.height()), (1920, 1080));
+        // The title in the accent colour, the picture, the narration in light type.
+        assert!(count(&slide, 40..110, [255, 214, 120], 40) > 200, "title");
+        assert!(
+            count(&slide, 130..1040, [235, 235, 235], 30) > 200,
+            "narration"
+        );
+        let step = out.join(format!("step-0{k}"));
+        assert!(step.join("color.png").is_file() && step.join("capture.json").is_file());
+    }
+    assert!(out.join("step-01/profile.csv").is_file());
+    let dir = tempfile::tempdir().expect("temp dir");
+    export(dir.path(), &[]);
+    let names: Vec<String> = std::fs::read_dir(dir.path().join("out"))
+        .expect("out")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(names, ["index.html"]);
+}
