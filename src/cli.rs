@@ -116,6 +116,10 @@ pub enum Command {
         /// One frame per case (a smoke run).
         #[arg(long)]
         quick: bool,
+        /// Instead: each lesson's handout size and export time, in both languages (the lessons
+        /// of `lessons/`, and the six-step teapot lesson when the data has the teapot).
+        #[arg(long)]
+        handouts: bool,
         /// Frames per case (the median is shown).
         #[arg(long)]
         frames: Option<usize>,
@@ -292,11 +296,21 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
         Some(Command::Check { paths }) => Ok(check(&paths)),
         Some(Command::NewLesson { file }) => new_lesson(&file),
         Some(Command::Bench {
+            handouts: true,
+            data,
+            ..
+        }) => {
+            let mut out = std::io::stdout().lock();
+            crate::bench::handouts::run(Path::new("lessons"), &data, &mut out)?;
+            Ok(ExitCode::SUCCESS)
+        }
+        Some(Command::Bench {
             quick,
             frames,
             peer_python,
             peer_script,
             data,
+            handouts: false,
         }) => {
             let mut out = std::io::stdout().lock();
             crate::bench::run(quick, frames, &mut out)?;

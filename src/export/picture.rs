@@ -41,7 +41,15 @@ pub fn step_picture(lesson: &Lesson, k: usize, r: &Rendered<'_>, lang: Lang) -> 
     let step = &lesson.steps[k];
     let stage = lesson.stage_at(k);
     let buffer = lesson.buffer_at(k);
-    let observer = || crate::observer::observer_image(r.spec, r.capture);
+    // The scene from outside, at least as wide as a magnified buffer (a 24×16 lesson image
+    // would give a 24×16 observer view).
+    let observer = || {
+        let mut big = r.spec.clone();
+        let z = zoom_for(big.settings.width);
+        big.settings.width *= z;
+        big.settings.height *= z;
+        crate::observer::observer_image(&big, r.capture)
+    };
     if stage.space().is_some()
         && let Some(img) = observer()
     {

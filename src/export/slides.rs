@@ -61,7 +61,7 @@ pub fn slide(lesson: &Lesson, k: usize, picture: &RgbaImage, lang: Lang) -> Rgba
     img
 }
 
-/// The narration in the largest type from 34 down to 20 pixels that fits `height`.
+/// The narration in the largest type from 46 down to 20 pixels that fits `height`.
 fn narration(img: &mut RgbaImage, text: &str, x: f32, width: f32, top: f32, height: f32) {
     let paragraphs: Vec<Vec<Run>> = text
         .split("\n\n")
@@ -80,7 +80,7 @@ fn narration(img: &mut RgbaImage, text: &str, x: f32, width: f32, top: f32, heig
             text::marked_runs(&joined, INK, ACCENT)
         })
         .collect();
-    let mut size = 34.0;
+    let mut size = 46.0;
     let layout = loop {
         let lines: Vec<Vec<Vec<Run>>> = paragraphs
             .iter()

@@ -1,5 +1,7 @@
 //! `pipelens bench`: frame times per stage for standard scenes. It measures; it asserts nothing.
 
+pub mod handouts;
+
 use std::time::Duration;
 
 use glam::Vec3;
