@@ -216,31 +216,7 @@ pub fn main() -> ExitCode {
 /// Any failure, with its context, for `main` to print.
 pub fn run(cli: Cli) -> Result<ExitCode> {
     match cli.command {
-        None => {
-            let doc = match cli.scene.as_deref() {
-                Some(p) => lesson::load_file(p),
-                None => lesson::default_lesson().map(|l| lesson::Document::Lesson(Box::new(l))),
-            }
-            .map_err(|d| anyhow::anyhow!("{d}"))?;
-            let source = crate::app::session::source_name(cli.scene.as_ref());
-            let lang = match cli.lang.as_deref() {
-                Some("zh") => crate::vocabulary::Lang::Zh,
-                Some(_) => crate::vocabulary::Lang::En,
-                None => crate::app::initial_lang(),
-            };
-            let start = crate::app::Start {
-                lang,
-                stage: cli.stage,
-                compare: cli
-                    .compare
-                    .as_deref()
-                    .and_then(crate::vocabulary::Comparison::from_name),
-                step: cli.step.map(|n| n as usize - 1),
-                classroom: cli.classroom,
-            };
-            crate::app::run(doc, source, cli.scene.clone(), start)?;
-            Ok(ExitCode::SUCCESS)
-        }
+        None => open_app(&cli),
         Some(Command::Export {
             scene,
             out,
@@ -324,6 +300,33 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
     }
+}
+
+/// The app, on the lesson or scene the command line names (the tour by default).
+fn open_app(cli: &Cli) -> Result<ExitCode> {
+    let doc = match cli.scene.as_deref() {
+        Some(p) => lesson::load_file(p),
+        None => lesson::default_lesson().map(|l| lesson::Document::Lesson(Box::new(l))),
+    }
+    .map_err(|d| anyhow::anyhow!("{d}"))?;
+    let source = crate::app::session::source_name(cli.scene.as_ref());
+    let lang = match cli.lang.as_deref() {
+        Some("zh") => crate::vocabulary::Lang::Zh,
+        Some(_) => crate::vocabulary::Lang::En,
+        None => crate::app::initial_lang(),
+    };
+    let start = crate::app::Start {
+        lang,
+        stage: cli.stage,
+        compare: cli
+            .compare
+            .as_deref()
+            .and_then(crate::vocabulary::Comparison::from_name),
+        step: cli.step.map(|n| n as usize - 1),
+        classroom: cli.classroom,
+    };
+    crate::app::run(doc, source, cli.scene.clone(), start)?;
+    Ok(ExitCode::SUCCESS)
 }
 
 /// The progress of an export: a bar on stderr when it is a terminal, nothing in a log or a
