@@ -16,4 +16,5 @@ pub mod cli;
 pub mod export;
 pub mod lesson;
 pub mod observer;
+pub mod spaces;
 pub mod vocabulary;

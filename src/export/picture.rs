@@ -14,7 +14,9 @@ use pipeline::overlay::{OverlayKind, Shape};
 use super::text;
 use crate::lesson::script::{Layout, Overlay};
 use crate::lesson::{Lesson, SceneSpec};
-use crate::vocabulary::{Lang, lighting_legend, profile, variant_label};
+use crate::spaces;
+use crate::vocabulary::{Lang, Space, lighting_legend, profile, variant_label};
+use glam::Vec3;
 
 /// What one step rendered: its scene, its capture and the compared settings' captures.
 pub struct Rendered<'a> {
@@ -50,10 +52,15 @@ pub fn step_picture(lesson: &Lesson, k: usize, r: &Rendered<'_>, lang: Lang) -> 
         big.settings.height *= z;
         crate::observer::observer_image(&big, r.capture)
     };
-    if stage.space().is_some()
-        && let Some(img) = observer()
-    {
-        return Ok(img);
+    if let Some(space) = stage.space() {
+        let focus = step.focus.as_deref().unwrap_or_default();
+        let own = space_picture(r.capture, space, focus, step.vertex, lang);
+        return Ok(match (own, step.layout, observer()) {
+            (Some(a), Layout::Observer, Some(o)) => beside(&a, &o),
+            (Some(a), ..) => a,
+            (None, _, Some(o)) => o,
+            (None, _, None) => r.capture.image(BufferKind::Color),
+        });
     }
     let line = step.profile_line(r.capture.width(), r.capture.height());
     let picture = if step.compare.is_some() && !r.variants.is_empty() {
@@ -86,6 +93,101 @@ pub fn step_picture(lesson: &Lesson, k: usize, r: &Rendered<'_>, lang: Lang) -> 
     let chart_h = (picture.width() * 2 / 5).clamp(240, 760);
     let chart = super::chart::profile_chart(&curves, lang, picture.width(), chart_h)?;
     Ok(above(&picture, &chart))
+}
+
+/// The size of a geometry stage's picture.
+const SPACE_PICTURE: (u32, u32) = (960, 720);
+
+/// A geometry stage as the app draws it: the vertices in `space` as a wireframe coloured by
+/// each triangle's fate (the subject bright, the rest dim), the space's axes and its view
+/// volume, from the app's first orbit, framing the subject; the space named at the top.
+fn space_picture(
+    capture: &FrameCapture,
+    space: Space,
+    focus: &[String],
+    vertex: Option<u32>,
+    lang: Lang,
+) -> Option<RgbaImage> {
+    let subject = spaces::subject(capture, focus, vertex, space);
+    let (centre, radius) = spaces::bounds(capture, [space, space], &subject)?;
+    let (w, h) = SPACE_PICTURE;
+    let m = spaces::framing(
+        centre,
+        radius.max(1e-3),
+        spaces::YAW,
+        spaces::PITCH,
+        w as f32 / h as f32,
+    )?;
+    let project = |p: Vec3| -> Option<[f32; 2]> {
+        let c = m * p.extend(1.0);
+        (c.w > 1e-6 && c.is_finite()).then(|| {
+            let n = c.truncate() / c.w;
+            [(n.x + 1.0) / 2.0 * w as f32, (1.0 - n.y) / 2.0 * h as f32]
+        })
+    };
+    let mut shapes = Vec::new();
+    let mut segment = |a: Vec3, b: Vec3, color: [u8; 4], width: f32| {
+        if let (Some(a), Some(b)) = (project(a), project(b)) {
+            shapes.push(Shape::Polyline {
+                points: vec![a, b],
+                closed: false,
+                color,
+                width,
+            });
+        }
+    };
+    if let Some(v) = spaces::volume(capture, space) {
+        for i in 0..4 {
+            segment(v[i], v[(i + 1) % 4], [255, 200, 60, 255], 1.5);
+            segment(v[4 + i], v[4 + (i + 1) % 4], [255, 140, 40, 255], 1.2);
+            segment(v[i], v[4 + i], [255, 140, 40, 255], 1.2);
+        }
+    }
+    let points: Vec<Option<Vec3>> = capture
+        .vertices
+        .iter()
+        .map(|v| {
+            let shown = space != Space::Model || subject[v.object as usize];
+            shown.then(|| spaces::position(v, space)).flatten()
+        })
+        .collect();
+    let stride = capture.primitives.len().div_ceil(30_000).max(1);
+    for prim in capture.primitives.iter().step_by(stride) {
+        let focused = subject.get(prim.object as usize).copied().unwrap_or(false);
+        let [r, g, b] = spaces::FATES[spaces::fate_index(&prim.fate)].0;
+        let (color, width) = if focused {
+            ([r, g, b, 255], 1.3)
+        } else {
+            ([r, g, b, 80], 0.8)
+        };
+        if let [Some(a), Some(b), Some(c)] = prim.vertices.map(|i| points[i as usize]) {
+            segment(a, b, color, width);
+            segment(b, c, color, width);
+            segment(c, a, color, width);
+        }
+    }
+    let axes = [
+        (Vec3::X, [235, 80, 80], "x"),
+        (Vec3::Y, [90, 210, 90], "y"),
+        (Vec3::Z, [90, 140, 255], "z"),
+    ];
+    let length = radius * 0.6;
+    for (axis, [r, g, b], _) in axes {
+        segment(Vec3::ZERO, axis * length, [r, g, b, 255], 2.0);
+    }
+    let mut pixmap = tiny_skia::Pixmap::new(w, h)?;
+    pixmap.fill(tiny_skia::Color::from_rgba8(18, 18, 18, 255));
+    pipeline::overlay::draw(&mut pixmap, &shapes, 1.0);
+    let mut img = RgbaImage::from_raw(w, h, pixmap.take())?;
+    for (axis, color, name) in axes {
+        if let Some([x, y]) = project(axis * length * 1.08) {
+            text::draw(&mut img, x - 5.0, y + 7.0, 20.0, color, name);
+        }
+    }
+    let title = spaces::space_name(space, lang);
+    darken(&mut img, 8, 8, text::width(title, 22.0) as u32 + 20, 36);
+    text::draw(&mut img, 18.0, 34.0, 22.0, [235, 235, 235], title);
+    Some(img)
 }
 
 /// What is drawn over a buffer.

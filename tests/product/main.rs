@@ -2,6 +2,7 @@
 
 mod app;
 mod architecture;
+mod authoring;
 mod cli;
 mod corpus;
 mod handout;

@@ -288,27 +288,17 @@ pub fn fate_color(f: &pipeline::capture::Fate) -> Color32 {
     FATES[fate_index(f)].0
 }
 
-/// The fates a triangle can meet, in the legend's order: colour, English name, Chinese name.
-pub const FATES: [(Color32, &str, &str); 5] = [
-    (Color32::from_gray(220), "drawn", "绘制"),
-    (palette::CLIPPED, "clipped", "被裁剪"),
-    (Color32::from_gray(90), "outside", "在视见体外"),
-    (Color32::from_rgb(70, 90, 150), "culled", "被剔除"),
-    (Color32::RED, "degenerate", "退化"),
-];
-
-/// Where a fate stands in [`FATES`].
-#[must_use]
-pub fn fate_index(f: &pipeline::capture::Fate) -> usize {
-    use pipeline::capture::Fate;
-    match f {
-        Fate::Drawn => 0,
-        Fate::Clipped => 1,
-        Fate::Outside { .. } => 2,
-        Fate::Culled { .. } => 3,
-        Fate::Degenerate => 4,
+/// The fates a triangle can meet, in the legend's order: colour, English name, Chinese name
+/// (`spaces::FATES`, the colours as egui's).
+pub const FATES: [(Color32, &str, &str); 5] = {
+    const fn fate(k: usize) -> (Color32, &'static str, &'static str) {
+        let f = crate::spaces::FATES[k];
+        (Color32::from_rgb(f.0[0], f.0[1], f.0[2]), f.1, f.2)
     }
-}
+    [fate(0), fate(1), fate(2), fate(3), fate(4)]
+};
+
+pub use crate::spaces::fate_index;
 
 /// A capture's buffer uploaded as an egui texture, uploaded again only when the capture (its
 /// generation), the buffer or the way it is drawn (`variant`) changes.

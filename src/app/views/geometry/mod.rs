@@ -7,15 +7,15 @@
 mod cards;
 
 use egui::{Align2, Color32, FontId, Pos2, Rect, Sense, Stroke, Ui, Vec2};
-use glam::{Vec3, Vec4};
+use glam::Vec3;
 use pipeline::capture::FrameCapture;
-use pipeline::transform::{self};
 
 use super::{
     FATES, Projector, draw_lights, fate_color, fate_index, palette, picture_font, wrapped_label,
 };
 use crate::app::session::{Command, Session};
-use crate::vocabulary::{Lang, Space};
+use crate::spaces::{between, bounds, position, space_name, volume, world_into};
+use crate::vocabulary::Space;
 
 /// The orbiting camera of the geometry views, and the picture's zoom and pan.
 pub struct GeometryView {
@@ -34,8 +34,8 @@ pub struct GeometryView {
 impl Default for GeometryView {
     fn default() -> Self {
         Self {
-            yaw: 35.0,
-            pitch: 22.0,
+            yaw: crate::spaces::YAW,
+            pitch: crate::spaces::PITCH,
             zoom: 1.0,
             pan: Vec2::ZERO,
             reset_for: None,
@@ -47,155 +47,10 @@ impl Default for GeometryView {
 /// The most triangles drawn as wireframe (every k-th beyond that).
 const MAX_TRIANGLES: usize = 30_000;
 
-/// The position of vertex row `v` in a space; `None` where it has none (NDC and window
-/// coordinates of a vertex with `w ≤ 0`).
-fn position(v: &pipeline::vertex::VertexRecord, space: Space) -> Option<Vec3> {
-    match space {
-        Space::Model => Some(v.object_pos.truncate()),
-        // A projective model matrix (the shadow matrix) leaves w ≠ 1: show the point it means.
-        Space::World => (v.world.w > 0.0).then(|| v.world.truncate() / v.world.w),
-        Space::Eye => (v.eye.w > 0.0).then(|| v.eye.truncate() / v.eye.w),
-        Space::Clip => Some(v.clip.truncate()),
-        Space::Ndc => v.ndc,
-        Space::Window => v.window,
-    }
-}
-
-/// A point on its way from `from` to `to` at `t ∈ [0, 1]`. Clip → NDC divides gradually:
-/// `(x, y, z) / (1 + t·(w − 1))`, so the frustum is seen squeezing into the cube.
-fn between(v: &pipeline::vertex::VertexRecord, from: Space, to: Space, t: f32) -> Option<Vec3> {
-    if t >= 1.0 {
-        return position(v, to);
-    }
-    if from == Space::Clip && to == Space::Ndc {
-        let d = 1.0 + t * (v.clip.w - 1.0);
-        return (v.clip.w > 0.0 && d > 1e-6).then(|| v.clip.truncate() / d);
-    }
-    Some(position(v, from)?.lerp(position(v, to)?, t))
-}
-
-fn space_name(space: Space, l: Lang) -> &'static str {
-    match space {
-        Space::Model => l.tr("object coordinates", "模型坐标"),
-        Space::World => l.tr("world coordinates", "世界坐标"),
-        Space::Eye => l.tr(
-            "eye coordinates: camera at the origin, looking down −z",
-            "相机坐标：相机在原点，朝向 −z",
-        ),
-        Space::Clip => l.tr(
-            "clip coordinates (x, y, z of the homogeneous point)",
-            "裁剪坐标（齐次点的 x, y, z）",
-        ),
-        Space::Ndc => l.tr(
-            "normalized device coordinates: the canonical cube [−1, 1]³",
-            "规范化设备坐标：规范立方体 [−1, 1]³",
-        ),
-        Space::Window => l.tr(
-            "window coordinates: [0, W] × [0, H] × [0, 1]",
-            "屏幕坐标：[0, W] × [0, H] × [0, 1]",
-        ),
-    }
-}
-
-/// The view volume in a space (world, eye, clip, NDC, window); `None` in model space.
-fn volume(capture: &FrameCapture, space: Space) -> Option<[Vec3; 8]> {
-    let eye = capture.projection.corners_eye(capture.settings.aspect());
-    let m = &capture.matrices;
-    let through = |mat: glam::Mat4, divide: bool| {
-        eye.map(|p| {
-            let c: Vec4 = mat * p.extend(1.0);
-            if divide {
-                c.truncate() / c.w
-            } else {
-                c.truncate()
-            }
-        })
-    };
-    match space {
-        Space::Model => None,
-        Space::World => Some(through(m.view.matrix.inverse(), false)),
-        Space::Eye => Some(eye),
-        Space::Clip => Some(through(m.projection.matrix, false)),
-        Space::Ndc => Some(through(m.projection.matrix, true)),
-        Space::Window => Some(through(m.viewport.matrix * m.projection.matrix, true)),
-    }
-}
-
-/// World coordinates into a space, for what is drawn besides the vertices (the lights); `None`
-/// where it would mean nothing (model space, and past the projection).
-fn world_into(capture: &FrameCapture, space: Space) -> Option<glam::Mat4> {
-    match space {
-        Space::World => Some(glam::Mat4::IDENTITY),
-        Space::Eye => Some(capture.matrices.view.matrix),
-        _ => None,
-    }
-}
-
-/// Which vertex rows are the subject: the objects named by `focus` (a figure by its parts), every
-/// object without it; in model space, one object (its own origin): the focused one, the selected
-/// vertex's, or the first.
+/// Which vertex rows are the subject (see [`crate::spaces::subject`]).
 fn subject(capture: &FrameCapture, session: &Session, space: Space) -> Vec<bool> {
     let focus = session.selection.focus.as_deref().unwrap_or_default();
-    let named = |name: &str| {
-        focus.iter().any(|f| {
-            name == f
-                || name
-                    .strip_prefix(f.as_str())
-                    .is_some_and(|r| r.starts_with(": "))
-        })
-    };
-    let mut objects: Vec<bool> = capture
-        .objects
-        .iter()
-        .map(|o| focus.is_empty() || named(&o.name))
-        .collect();
-    if objects.iter().all(|o| !o) {
-        objects.iter_mut().for_each(|o| *o = true);
-    }
-    if space == Space::Model {
-        let by_vertex = session
-            .selection
-            .vertex
-            .and_then(|i| capture.vertices.get(i as usize))
-            .map(|v| v.object as usize);
-        let one = by_vertex
-            .or_else(|| objects.iter().position(|o| *o))
-            .unwrap_or(0);
-        objects = (0..capture.objects.len()).map(|k| k == one).collect();
-    }
-    objects
-}
-
-/// The sphere to frame, `(centre, radius)`: around the view volume in NDC and window
-/// coordinates (a vertex just in front of the eye has enormous NDC coordinates, and would shrink
-/// the cube to a dot), around the subject's vertices elsewhere; centred on their box, just
-/// reaching the farthest.
-fn bounds(capture: &FrameCapture, spaces: [Space; 2], subject: &[bool]) -> Option<(Vec3, f32)> {
-    let mut points = Vec::new();
-    let mut add = |p: Vec3| {
-        if p.is_finite() {
-            points.push(p);
-        }
-    };
-    for space in spaces {
-        match (space, volume(capture, space)) {
-            (Space::Ndc | Space::Window, Some(corners)) => corners.into_iter().for_each(&mut add),
-            _ => capture
-                .vertices
-                .iter()
-                .filter(|v| subject.get(v.object as usize).copied().unwrap_or(false))
-                .filter_map(|v| position(v, space))
-                .for_each(&mut add),
-        }
-    }
-    let lo = points.iter().copied().reduce(Vec3::min)?;
-    let hi = points.iter().copied().reduce(Vec3::max)?;
-    let centre = (lo + hi) / 2.0;
-    let radius = points
-        .iter()
-        .map(|p| (*p - centre).length())
-        .fold(0.0f32, f32::max);
-    Some((centre, radius))
+    crate::spaces::subject(capture, focus, session.selection.vertex, space)
 }
 
 /// The axes x, y, z of the space through its origin.
@@ -484,32 +339,10 @@ impl GeometryView {
     /// The orbiting camera framing the sphere `(centre, radius)`.
     fn camera(&self, rect: Rect, (centre, radius): (Vec3, f32)) -> Option<(Projector, f32, Vec3)> {
         let radius = radius.max(1e-3);
-        let (yaw, pitch) = (self.yaw.to_radians(), self.pitch.to_radians());
-        let dir = Vec3::new(
-            pitch.cos() * yaw.sin(),
-            pitch.sin(),
-            pitch.cos() * yaw.cos(),
-        );
-        // Far enough back that the sphere just fits the narrower side of a 40° lens: it subtends
-        // a half-angle asin(r/d), the half field of view atan(tan 20°·min(aspect, 1)).
-        let aspect = (rect.width() / rect.height()).min(1.0);
-        let half = (20f32.to_radians().tan() * aspect).atan();
-        let distance = radius * 1.06 / half.sin();
-        let up = if pitch.cos().abs() < 1e-3 {
-            Vec3::Z
-        } else {
-            Vec3::Y
-        };
-        let view = transform::look_at(centre + dir * distance, centre, up).ok()?;
-        let proj = transform::perspective(
-            40.0,
-            rect.width() / rect.height(),
-            distance * 0.01,
-            distance * 10.0 + radius * 4.0,
-        );
+        let m = crate::spaces::framing(centre, radius, self.yaw, self.pitch, rect.aspect_ratio())?;
         Some((
             Projector {
-                m: proj.matrix * view,
+                m,
                 rect,
                 zoom: self.zoom,
                 pan: self.pan,

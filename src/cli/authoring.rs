@@ -1,0 +1,161 @@
+//! The commands for writing lessons: `check` (every problem, each mesh's size, warnings) and
+//! `new-lesson` (the commented template).
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use anyhow::{Context, Result};
+
+use crate::lesson;
+
+/// The template `pipelens new-lesson` writes; `{id}` and `{file}` are filled in.
+const NEW_LESSON: &str = include_str!("../../assets/templates/new-lesson.toml");
+
+pub(super) fn new_lesson(file: &Path) -> Result<ExitCode> {
+    if file.extension().is_none_or(|e| e != "toml") {
+        anyhow::bail!(
+            "{}: a lesson file ends in .toml, e.g. lessons/20-my-lesson.toml",
+            file.display()
+        );
+    }
+    let id = file
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .filter(|s| !s.is_empty() && !s.contains('"') && !s.contains('\\'))
+        .with_context(|| {
+            format!(
+                "{}: the file's name becomes the lesson's id; use letters, digits and -",
+                file.display()
+            )
+        })?;
+    let text = NEW_LESSON
+        .replace("{id}", id)
+        .replace("{file}", &file.display().to_string());
+    if let Some(dir) = file.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir)
+            .with_context(|| format!("cannot create the folder {}", dir.display()))?;
+    }
+    // `create_new`: an existing lesson is never replaced.
+    let mut f = std::fs::File::options()
+        .write(true)
+        .create_new(true)
+        .open(file)
+        .with_context(|| {
+            if file.exists() {
+                format!("{} exists already; it was left as it is", file.display())
+            } else {
+                format!("cannot create {}", file.display())
+            }
+        })?;
+    std::io::Write::write_all(&mut f, text.as_bytes())
+        .with_context(|| format!("cannot write {}", file.display()))?;
+    println!(
+        "Wrote {}: a lesson of 3 steps. Play it with `pipelens --lesson {0}`; it reloads on save.",
+        file.display()
+    );
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Each object's mesh: its triangles and where it sits (its bounding box in object
+/// coordinates, after `fit`), which a lesson's author needs to place the camera.
+fn print_meshes(spec: &lesson::SceneSpec) {
+    let short = |x: f32| crate::vocabulary::short(x, 3);
+    let v = |p: glam::Vec3| format!("[{}, {}, {}]", short(p.x), short(p.y), short(p.z));
+    for o in &spec.scene.objects {
+        let m = &o.mesh;
+        let bounds = m.bounds().map_or_else(
+            || "no vertices".to_owned(),
+            |(lo, hi)| {
+                let c = (lo + hi) / 2.0;
+                format!("box {} to {}, centre {}", v(lo), v(hi), v(c))
+            },
+        );
+        println!(
+            "  {}: {}, {} triangles, {bounds}",
+            o.name,
+            m.name,
+            m.triangle_count()
+        );
+    }
+}
+
+/// Checks every file (a folder: every `.toml` under it); exit code 1 if any has an error.
+pub(super) fn check(paths: &[PathBuf]) -> ExitCode {
+    let (paths, problems) = files_to_check(paths);
+    for p in &problems {
+        eprintln!("{p}");
+    }
+    let mut failed = problems.len();
+    for p in &paths {
+        match lesson::load_file(p) {
+            Ok(lesson::Document::Scene(s)) => {
+                println!("{}: ok (scene)", p.display());
+                print_meshes(&s);
+            }
+            Ok(lesson::Document::Lesson(l)) => {
+                println!(
+                    "{}: ok (lesson {}, {} steps)",
+                    p.display(),
+                    l.id,
+                    l.steps.len()
+                );
+                print_meshes(&l.scene);
+                for w in &l.warnings {
+                    eprintln!("{w}");
+                }
+            }
+            Err(d) => {
+                failed += 1;
+                eprintln!("{d}");
+            }
+        }
+    }
+    if failed > 0 {
+        eprintln!(
+            "{failed} of {} file(s) have errors",
+            paths.len() + problems.len()
+        );
+        ExitCode::FAILURE
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+/// The files `check` reads: each file named, and every `.toml` file under each folder named
+/// (sorted, at any depth); a folder with none is a problem.
+fn files_to_check(paths: &[PathBuf]) -> (Vec<PathBuf>, Vec<String>) {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) -> std::io::Result<()> {
+        let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)?
+            .map(|e| e.map(|e| e.path()))
+            .collect::<std::io::Result<_>>()?;
+        entries.sort();
+        for p in entries {
+            if p.is_dir() {
+                walk(&p, out)?;
+            } else if p.extension().is_some_and(|e| e == "toml") {
+                out.push(p);
+            }
+        }
+        Ok(())
+    }
+    let (mut files, mut problems) = (Vec::new(), Vec::new());
+    for p in paths {
+        if !p.is_dir() {
+            files.push(p.clone());
+            continue;
+        }
+        let before = files.len();
+        match walk(p, &mut files) {
+            Err(e) => problems.push(format!(
+                "{}: error: cannot read this folder: {e}",
+                p.display()
+            )),
+            Ok(()) if files.len() == before => problems.push(format!(
+                "{}: error: this folder has no .toml file to check",
+                p.display()
+            )),
+            Ok(()) => {}
+        }
+    }
+    (files, problems)
+}

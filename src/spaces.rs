@@ -1,0 +1,221 @@
+//! The coordinate spaces a vertex passes through (model, world, eye, clip, NDC, window): where
+//! a vertex is in each, the view volume in each, how a space is named, and the sphere that frames
+//! what is shown. The app's geometry views and the exported pictures of geometry steps both draw
+//! from these.
+
+use glam::{Vec3, Vec4};
+use pipeline::capture::FrameCapture;
+
+use crate::vocabulary::{Lang, Space};
+
+/// The position of vertex row `v` in a space; `None` where it has none (NDC and window
+/// coordinates of a vertex with `w ≤ 0`).
+pub fn position(v: &pipeline::vertex::VertexRecord, space: Space) -> Option<Vec3> {
+    match space {
+        Space::Model => Some(v.object_pos.truncate()),
+        // A projective model matrix (the shadow matrix) leaves w ≠ 1: show the point it means.
+        Space::World => (v.world.w > 0.0).then(|| v.world.truncate() / v.world.w),
+        Space::Eye => (v.eye.w > 0.0).then(|| v.eye.truncate() / v.eye.w),
+        Space::Clip => Some(v.clip.truncate()),
+        Space::Ndc => v.ndc,
+        Space::Window => v.window,
+    }
+}
+
+/// A point on its way from `from` to `to` at `t ∈ [0, 1]`. Clip → NDC divides gradually:
+/// `(x, y, z) / (1 + t·(w − 1))`, so the frustum is seen squeezing into the cube.
+pub fn between(v: &pipeline::vertex::VertexRecord, from: Space, to: Space, t: f32) -> Option<Vec3> {
+    if t >= 1.0 {
+        return position(v, to);
+    }
+    if from == Space::Clip && to == Space::Ndc {
+        let d = 1.0 + t * (v.clip.w - 1.0);
+        return (v.clip.w > 0.0 && d > 1e-6).then(|| v.clip.truncate() / d);
+    }
+    Some(position(v, from)?.lerp(position(v, to)?, t))
+}
+
+/// What a space is called over its picture.
+#[must_use]
+pub fn space_name(space: Space, l: Lang) -> &'static str {
+    match space {
+        Space::Model => l.tr("object coordinates", "模型坐标"),
+        Space::World => l.tr("world coordinates", "世界坐标"),
+        Space::Eye => l.tr(
+            "eye coordinates: camera at the origin, looking down −z",
+            "相机坐标：相机在原点，朝向 −z",
+        ),
+        Space::Clip => l.tr(
+            "clip coordinates (x, y, z of the homogeneous point)",
+            "裁剪坐标（齐次点的 x, y, z）",
+        ),
+        Space::Ndc => l.tr(
+            "normalized device coordinates: the canonical cube [−1, 1]³",
+            "规范化设备坐标：规范立方体 [−1, 1]³",
+        ),
+        Space::Window => l.tr(
+            "window coordinates: [0, W] × [0, H] × [0, 1]",
+            "屏幕坐标：[0, W] × [0, H] × [0, 1]",
+        ),
+    }
+}
+
+/// The view volume in a space (world, eye, clip, NDC, window); `None` in model space.
+pub fn volume(capture: &FrameCapture, space: Space) -> Option<[Vec3; 8]> {
+    let eye = capture.projection.corners_eye(capture.settings.aspect());
+    let m = &capture.matrices;
+    let through = |mat: glam::Mat4, divide: bool| {
+        eye.map(|p| {
+            let c: Vec4 = mat * p.extend(1.0);
+            if divide {
+                c.truncate() / c.w
+            } else {
+                c.truncate()
+            }
+        })
+    };
+    match space {
+        Space::Model => None,
+        Space::World => Some(through(m.view.matrix.inverse(), false)),
+        Space::Eye => Some(eye),
+        Space::Clip => Some(through(m.projection.matrix, false)),
+        Space::Ndc => Some(through(m.projection.matrix, true)),
+        Space::Window => Some(through(m.viewport.matrix * m.projection.matrix, true)),
+    }
+}
+
+/// World coordinates into a space, for what is drawn besides the vertices (the lights); `None`
+/// where it would mean nothing (model space, and past the projection).
+pub fn world_into(capture: &FrameCapture, space: Space) -> Option<glam::Mat4> {
+    match space {
+        Space::World => Some(glam::Mat4::IDENTITY),
+        Space::Eye => Some(capture.matrices.view.matrix),
+        _ => None,
+    }
+}
+
+/// The sphere to frame, `(centre, radius)`: around the view volume in NDC and window
+/// coordinates (a vertex just in front of the eye has enormous NDC coordinates, and would shrink
+/// the cube to a dot), around the subject's vertices elsewhere; centred on their box, just
+/// reaching the farthest.
+pub fn bounds(capture: &FrameCapture, spaces: [Space; 2], subject: &[bool]) -> Option<(Vec3, f32)> {
+    let mut points = Vec::new();
+    let mut add = |p: Vec3| {
+        if p.is_finite() {
+            points.push(p);
+        }
+    };
+    for space in spaces {
+        match (space, volume(capture, space)) {
+            (Space::Ndc | Space::Window, Some(corners)) => corners.into_iter().for_each(&mut add),
+            _ => capture
+                .vertices
+                .iter()
+                .filter(|v| subject.get(v.object as usize).copied().unwrap_or(false))
+                .filter_map(|v| position(v, space))
+                .for_each(&mut add),
+        }
+    }
+    let lo = points.iter().copied().reduce(Vec3::min)?;
+    let hi = points.iter().copied().reduce(Vec3::max)?;
+    let centre = (lo + hi) / 2.0;
+    let radius = points
+        .iter()
+        .map(|p| (*p - centre).length())
+        .fold(0.0f32, f32::max);
+    Some((centre, radius))
+}
+
+/// The orbit a geometry picture is first seen from: degrees about y, and above the horizon.
+pub const YAW: f32 = 35.0;
+/// See [`YAW`].
+pub const PITCH: f32 = 22.0;
+
+/// The camera that frames the sphere (`centre`, `radius`) from direction (`yaw`, `pitch`) in
+/// degrees, through a 40° lens on a picture of `aspect` (width/height): projection times view.
+/// Far enough back that the sphere just fits the narrower side: it subtends a half-angle
+/// asin(r/d), the half field of view is atan(tan 20°·min(aspect, 1)).
+#[must_use]
+pub fn framing(centre: Vec3, radius: f32, yaw: f32, pitch: f32, aspect: f32) -> Option<glam::Mat4> {
+    let (yaw, pitch) = (yaw.to_radians(), pitch.to_radians());
+    let dir = Vec3::new(
+        pitch.cos() * yaw.sin(),
+        pitch.sin(),
+        pitch.cos() * yaw.cos(),
+    );
+    let half = (20f32.to_radians().tan() * aspect.min(1.0)).atan();
+    let distance = radius * 1.06 / half.sin();
+    let up = if pitch.cos().abs() < 1e-3 {
+        Vec3::Z
+    } else {
+        Vec3::Y
+    };
+    let view = pipeline::transform::look_at(centre + dir * distance, centre, up).ok()?;
+    let proj = pipeline::transform::perspective(
+        40.0,
+        aspect,
+        distance * 0.01,
+        distance * 10.0 + radius * 4.0,
+    );
+    Some(proj.matrix * view)
+}
+
+/// The fates a triangle can meet, in the legend's order: colour, English name, Chinese name.
+pub const FATES: [([u8; 3], &str, &str); 5] = [
+    ([220, 220, 220], "drawn", "绘制"),
+    ([255, 120, 200], "clipped", "被裁剪"),
+    ([90, 90, 90], "outside", "在视见体外"),
+    ([70, 90, 150], "culled", "被剔除"),
+    ([255, 0, 0], "degenerate", "退化"),
+];
+
+/// Where a fate stands in [`FATES`].
+#[must_use]
+pub fn fate_index(f: &pipeline::capture::Fate) -> usize {
+    use pipeline::capture::Fate;
+    match f {
+        Fate::Drawn => 0,
+        Fate::Clipped => 1,
+        Fate::Outside { .. } => 2,
+        Fate::Culled { .. } => 3,
+        Fate::Degenerate => 4,
+    }
+}
+
+/// Which vertex rows are the subject: the objects named by `focus` (a figure by its parts), every
+/// object without it; in model space, one object (its own origin): the focused one, the selected
+/// vertex's, or the first.
+#[must_use]
+pub fn subject(
+    capture: &FrameCapture,
+    focus: &[String],
+    vertex: Option<u32>,
+    space: Space,
+) -> Vec<bool> {
+    let named = |name: &str| {
+        focus.iter().any(|f| {
+            name == f
+                || name
+                    .strip_prefix(f.as_str())
+                    .is_some_and(|r| r.starts_with(": "))
+        })
+    };
+    let mut objects: Vec<bool> = capture
+        .objects
+        .iter()
+        .map(|o| focus.is_empty() || named(&o.name))
+        .collect();
+    if objects.iter().all(|o| !o) {
+        objects.iter_mut().for_each(|o| *o = true);
+    }
+    if space == Space::Model {
+        let by_vertex = vertex
+            .and_then(|i| capture.vertices.get(i as usize))
+            .map(|v| v.object as usize);
+        let one = by_vertex
+            .or_else(|| objects.iter().position(|o| *o))
+            .unwrap_or(0);
+        objects = (0..capture.objects.len()).map(|k| k == one).collect();
+    }
+    objects
+}

@@ -1,0 +1,73 @@
+//! What a lesson step shows when it does not say: the rules a lesson's author relies on.
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use pipelens::app::PipelensApp;
+
+use super::{lesson_harness, step_of};
+
+#[test]
+fn a_step_without_buffer_shows_its_stages_default_even_after_a_reload() {
+    use pipeline::buffers::BufferKind;
+    let dir = tempfile::tempdir().expect("temp dir");
+    let path = dir.path().join("lesson.toml");
+    let head = "[lesson]\nid = \"lesson\"\ntitle = { en = \"A\", zh = \"甲\" }\n\
+                summary = { en = \"A.\", zh = \"甲。\" }\n\n[[scene.objects]]\nmesh = \"sphere\"\n\n\
+                [[scene.lights]]\nkind = \"point\"\nposition = [2, 2, 2]\n";
+    let step = |keys: &str| {
+        format!(
+            "\n[[steps]]\ntitle = {{ en = \"A\", zh = \"甲\" }}\nnarration = {{ en = \"A.\", zh = \"甲。\" }}\n{keys}"
+        )
+    };
+    let first = step("stage = \"shading\"\noverlays = [\"edges\"]\n");
+    let second = step("buffer = \"normal\"\n");
+    // The third names neither stage nor buffer: it stays on the shading stage.
+    let three = format!("{head}{first}{second}{}", step(""));
+    std::fs::write(&path, &three).expect("write");
+    let mut h = lesson_harness(Some(path.clone()));
+    h.run_steps(2);
+    let buffer = |h: &Harness<'_, PipelensApp>| h.state().session.selection.buffer;
+    assert_eq!(buffer(&h), BufferKind::Diffuse, "step 1: the stage's own");
+    h.key_press(egui::Key::ArrowRight);
+    h.run_steps(2);
+    assert_eq!(buffer(&h), BufferKind::Normal, "step 2 names it");
+    assert!(
+        h.state().session.selection.overlays.is_empty(),
+        "step 2 names no overlays: none, not step 1's edges"
+    );
+    h.key_press(egui::Key::ArrowRight);
+    h.run_steps(2);
+    assert_eq!(
+        (step_of(&h), buffer(&h)),
+        (2, BufferKind::Diffuse),
+        "step 3 names none: the stage's default, not what step 2 showed"
+    );
+    // A reload that removes step 3 lands on step 2 and shows what step 2 says.
+    std::fs::write(&path, format!("{head}{first}{second}")).expect("write");
+    let later = std::time::SystemTime::now() + std::time::Duration::from_secs(2);
+    std::fs::File::options()
+        .write(true)
+        .open(&path)
+        .and_then(|f| f.set_modified(later))
+        .expect("touch");
+    std::thread::sleep(std::time::Duration::from_millis(600));
+    h.run_steps(3);
+    assert_eq!((step_of(&h), buffer(&h)), (1, BufferKind::Normal));
+    // The viewer goes to another stage, then back to step 1 and on to step 2: each step's
+    // stage and buffer again, not what the viewer looked at.
+    h.get_by_label("Depth").click();
+    h.run_steps(2);
+    h.key_press(egui::Key::ArrowLeft);
+    h.run_steps(2);
+    assert_eq!((step_of(&h), buffer(&h)), (0, BufferKind::Diffuse));
+    h.get_by_label("Depth").click();
+    h.run_steps(2);
+    h.key_press(egui::Key::ArrowRight);
+    h.run_steps(2);
+    let stage = h.state().session.selection.stage;
+    assert_eq!(
+        (step_of(&h), stage, buffer(&h)),
+        (1, pipelens::vocabulary::Stage::Shading, BufferKind::Normal),
+        "step 2 names no stage: step 1's"
+    );
+}
