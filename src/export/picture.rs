@@ -96,7 +96,7 @@ pub fn step_picture(lesson: &Lesson, k: usize, r: &Rendered<'_>, lang: Lang) -> 
 }
 
 /// The size of a geometry stage's picture.
-const SPACE_PICTURE: (u32, u32) = (960, 720);
+const SPACE_PICTURE: (u32, u32) = (800, 600);
 
 /// A geometry stage as the app draws it: the vertices in `space` as a wireframe coloured by
 /// each triangle's fate (the subject bright, the rest dim), the space's axes and its view
@@ -275,7 +275,38 @@ fn buffer_with_shapes(
     if !arrows.is_empty() {
         legend(&mut img, &lighting_legend(lang));
     }
+    if kind == BufferKind::MipLevel {
+        mip_legend(&mut img, lang);
+    }
     img
+}
+
+/// The colours of the mip levels with their numbers, at the top-right (as the app shows them).
+fn mip_legend(img: &mut RgbaImage, lang: Lang) {
+    let (w, h) = (8 * 26 + 14, 62);
+    let x0 = img.width().saturating_sub(w + 8);
+    darken(img, x0, 8, w, h);
+    let title = lang.tr("mip level", "mipmap 层级");
+    text::draw(img, (x0 + 8) as f32, 26.0, 15.0, [255, 255, 255], title);
+    for k in 0..8u32 {
+        let c = pipeline::texture::level_color(k)
+            .to_array()
+            .map(|v| (v.clamp(0.0, 1.0) * 255.0) as u8);
+        let x = x0 + 8 + k * 26;
+        text::fill(img, x, 36, 22, 22, c);
+        let label = if k == 7 {
+            "7+".to_owned()
+        } else {
+            k.to_string()
+        };
+        let ink = if k == 0 || k == 3 {
+            [0, 0, 0]
+        } else {
+            [255, 255, 255]
+        };
+        let lw = text::width(&label, 14.0);
+        text::draw(img, x as f32 + 11.0 - lw / 2.0, 52.0, 14.0, ink, &label);
+    }
 }
 
 /// Each pixel's samples: white where covered, dark grey where not (as the app draws them).
