@@ -9,6 +9,7 @@ use std::path::PathBuf;
 use anyhow::{Context, Result};
 use image::RgbaImage;
 use pipeline::capture::FrameCapture;
+use rayon::prelude::*;
 
 use super::handout::{self, Animated, Frame, StepPage};
 use super::picture::{Rendered, step_picture};
@@ -52,14 +53,14 @@ fn step_dir(k: usize) -> String {
 }
 
 /// Exports `lesson`; returns every path written. `progress` is told how many parts of how
-/// many are done and what comes next.
+/// many are done and which was done last.
 ///
 /// # Errors
 /// A step out of range, a render or an encoding that fails, a folder that cannot be written.
 pub fn export_lesson(
     lesson: &Lesson,
     opts: &LessonExport,
-    progress: &mut dyn FnMut(usize, usize, &str),
+    progress: &mut (dyn FnMut(usize, usize, &str) + Send),
 ) -> Result<Vec<PathBuf>> {
     let n = lesson.steps.len();
     let steps: Vec<usize> = match opts.step {
@@ -70,78 +71,45 @@ pub fn export_lesson(
         ),
         None => (0..n).collect(),
     };
+    let parts = steps.len() + 1;
+    // The steps are independent: each is rendered, drawn and encoded on its own thread; the
+    // files are written afterwards, in order.
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let progress = std::sync::Mutex::new(progress);
+    let built: Vec<Result<(StepPage, Vec<(String, Vec<ExportFile>)>)>> = steps
+        .par_iter()
+        .map(|&k| {
+            opts.cancel.check()?;
+            let out = build_step(lesson, k, opts)?;
+            let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+            if let Ok(mut p) = progress.lock() {
+                let title = lesson.steps[k].title.get(opts.lang);
+                p(n, parts, &format!("step {}: {title}", k + 1));
+            }
+            Ok(out)
+        })
+        .collect();
     let mut written = Vec::new();
     let mut pages = Vec::new();
     let mut textures_written = false;
-    let parts = steps.len() + 1;
-    for (i, &k) in steps.iter().enumerate() {
-        opts.cancel.check()?;
-        progress(
-            i,
-            parts,
-            &format!("step {}: {}", k + 1, lesson.steps[k].title.get(opts.lang)),
-        );
-        let spec = spec_of(lesson, k, opts, None)?;
-        let capture = pipeline::render(&spec.scene, &spec.settings)
-            .with_context(|| format!("rendering step {}", k + 1))?;
-        let variants = variants(lesson, k, &spec)?;
-        let rendered = Rendered {
-            spec: &spec,
-            capture: &capture,
-            variants: &variants,
-        };
-        let picture = step_picture(lesson, k, &rendered, opts.lang)?;
-        let animated = animation(lesson, k, opts)?;
-        if opts.slides {
-            let slide = super::slides::slide(lesson, k, &picture, opts.lang);
+    for b in built {
+        let (page, folders) = b?;
+        for (folder, files) in folders {
+            if folder == "textures" && std::mem::replace(&mut textures_written, true) {
+                continue;
+            }
             written.extend(write_files(
-                &opts.out.join("slides"),
-                &[ExportFile {
-                    name: format!("{}.png", step_dir(k)),
-                    description: format!("slide of step {}", k + 1),
-                    bytes: png_rgba(&slide)?,
-                }],
-                &mut |_, _, _| {},
-                &opts.cancel,
-            )?);
-        }
-        if opts.data {
-            let (files, textures) = data_files(lesson, k, opts, &capture, &variants)?;
-            written.extend(write_files(
-                &opts.out.join(step_dir(k)),
+                &opts.out.join(folder),
                 &files,
                 &mut |_, _, _| {},
                 &opts.cancel,
             )?);
-            if !textures_written && !textures.is_empty() {
-                written.extend(write_files(
-                    &opts.out.join("textures"),
-                    &textures,
-                    &mut |_, _, _| {},
-                    &opts.cancel,
-                )?);
-                textures_written = true;
-            }
         }
-        let mut matrices = capture.matrices.clone();
-        for m in &mut matrices.models {
-            // `M_model(floor)` in the handout's language: `M_model(地面)`.
-            if let Some(object) = m
-                .name
-                .strip_prefix("M_model(")
-                .and_then(|r| r.strip_suffix(')'))
-            {
-                m.name = format!("M_model({})", spec.label(object, opts.lang));
-            }
-        }
-        pages.push(StepPage {
-            index: k,
-            picture: compact_image(&picture)?,
-            animated,
-            matrices,
-            stage: lesson.stage_at(k),
-        });
+        pages.push(page);
     }
+    let progress = progress
+        .into_inner()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
     progress(steps.len(), parts, "index.html");
     let html = handout::html(lesson, &pages, opts.lang, opts.answers);
     let target = opts.out.join("index.html");
@@ -150,6 +118,61 @@ pub fn export_lesson(
     super::write_atomically(&target, html.as_bytes())?;
     written.push(target);
     Ok(written)
+}
+
+/// Step `k`'s page of the handout, and the files it adds (by folder): its slide, its data.
+fn build_step(
+    lesson: &Lesson,
+    k: usize,
+    opts: &LessonExport,
+) -> Result<(StepPage, Vec<(String, Vec<ExportFile>)>)> {
+    let spec = spec_of(lesson, k, opts, None)?;
+    let capture = pipeline::render(&spec.scene, &spec.settings)
+        .with_context(|| format!("rendering step {}", k + 1))?;
+    let variants = variants(lesson, k, &spec)?;
+    let rendered = Rendered {
+        spec: &spec,
+        capture: &capture,
+        variants: &variants,
+    };
+    let picture = step_picture(lesson, k, &rendered, opts.lang)?;
+    let animated = animation(lesson, k, opts)?;
+    let mut folders = Vec::new();
+    if opts.slides {
+        let slide = super::slides::slide(lesson, k, &picture, opts.lang);
+        let file = ExportFile {
+            name: format!("{}.png", step_dir(k)),
+            description: format!("slide of step {}", k + 1),
+            bytes: png_rgba(&slide)?,
+        };
+        folders.push(("slides".to_owned(), vec![file]));
+    }
+    if opts.data {
+        let (files, textures) = data_files(lesson, k, opts, &capture, &variants)?;
+        folders.push((step_dir(k), files));
+        if !textures.is_empty() {
+            folders.push(("textures".to_owned(), textures));
+        }
+    }
+    let mut matrices = capture.matrices.clone();
+    for m in &mut matrices.models {
+        // `M_model(floor)` in the handout's language: `M_model(地面)`.
+        if let Some(object) = m
+            .name
+            .strip_prefix("M_model(")
+            .and_then(|r| r.strip_suffix(')'))
+        {
+            m.name = format!("M_model({})", spec.label(object, opts.lang));
+        }
+    }
+    let page = StepPage {
+        index: k,
+        picture: compact_image(&picture)?,
+        animated,
+        matrices,
+        stage: lesson.stage_at(k),
+    };
+    Ok((page, folders))
 }
 
 /// The scene of step `k` at the export's size, at moment `t` of its animation (`None`: as the
