@@ -76,7 +76,7 @@ pub fn export_lesson(
     // files are written afterwards, in order.
     let done = std::sync::atomic::AtomicUsize::new(0);
     let progress = std::sync::Mutex::new(progress);
-    let built: Vec<Result<(StepPage, Vec<(String, Vec<ExportFile>)>)>> = steps
+    let built: Vec<Result<BuiltStep>> = steps
         .par_iter()
         .map(|&k| {
             opts.cancel.check()?;
@@ -120,12 +120,15 @@ pub fn export_lesson(
     Ok(written)
 }
 
+/// A step's page of the handout, and the files it adds by folder (its slide, its data).
+type BuiltStep = (StepPage, Vec<(String, Vec<ExportFile>)>);
+
 /// Step `k`'s page of the handout, and the files it adds (by folder): its slide, its data.
 fn build_step(
     lesson: &Lesson,
     k: usize,
     opts: &LessonExport,
-) -> Result<(StepPage, Vec<(String, Vec<ExportFile>)>)> {
+) -> Result<BuiltStep> {
     let spec = spec_of(lesson, k, opts, None)?;
     let capture = pipeline::render(&spec.scene, &spec.settings)
         .with_context(|| format!("rendering step {}", k + 1))?;
