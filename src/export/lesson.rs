@@ -124,11 +124,7 @@ pub fn export_lesson(
 type BuiltStep = (StepPage, Vec<(String, Vec<ExportFile>)>);
 
 /// Step `k`'s page of the handout, and the files it adds (by folder): its slide, its data.
-fn build_step(
-    lesson: &Lesson,
-    k: usize,
-    opts: &LessonExport,
-) -> Result<BuiltStep> {
+fn build_step(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<BuiltStep> {
     let spec = spec_of(lesson, k, opts, None)?;
     let capture = pipeline::render(&spec.scene, &spec.settings)
         .with_context(|| format!("rendering step {}", k + 1))?;

@@ -71,6 +71,7 @@ pub fn step_picture(lesson: &Lesson, k: usize, r: &Rendered<'_>, lang: Lang) -> 
             pixel: step.pixel,
             vertex: step.vertex,
             line,
+            depth_range: step.depth_range,
         };
         let img = buffer_with_shapes(r.capture, buffer, &shapes, lang);
         match (step.layout, observer()) {
@@ -196,6 +197,8 @@ struct Shapes<'a> {
     pixel: Option<(u32, u32)>,
     vertex: Option<u32>,
     line: Option<[f32; 4]>,
+    /// The depth buffer's grey ramp (`depth_range`); `None`: the image's own.
+    depth_range: Option<[f32; 2]>,
 }
 
 /// The whole factor that brings `width` nearest to the target width (at least 1, at most 32).
@@ -264,7 +267,11 @@ fn buffer_with_shapes(
         color: a.color,
         width: 2.5,
     }));
-    let mut img = capture.image_with_shapes(kind, &shapes, zoom);
+    let mut img = if kind == BufferKind::Depth {
+        capture.depth_image_with_shapes(s.depth_range, &shapes, zoom)
+    } else {
+        capture.image_with_shapes(kind, &shapes, zoom)
+    };
     for a in &arrows {
         let (dx, dy) = (a.to[0] - a.from[0], a.to[1] - a.from[1]);
         let len = dx.hypot(dy).max(1e-6);
@@ -388,6 +395,7 @@ fn side_by_side(
                 pixel: None,
                 vertex: None,
                 line,
+                depth_range: None,
             };
             let mut tile = buffer_with_shapes(cap, kind, &shapes, lang);
             let label = variant_label(name, lang);

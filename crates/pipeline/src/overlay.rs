@@ -2,6 +2,7 @@
 //! `[c, c+1] × [r, r+1]`), described once and drawn both by the app (egui) and, here, by
 //! tiny-skia into exported PNGs.
 
+use image::RgbaImage;
 use serde::Serialize;
 use tiny_skia::{Color, LineCap, Paint, PathBuilder, Pixmap, Rect, Stroke, Transform};
 
@@ -203,4 +204,29 @@ pub fn draw(pixmap: &mut Pixmap, shapes: &[Shape], zoom: f32) {
             }
         }
     }
+}
+
+/// `base` magnified `zoom`× (nearest, so pixels stay square) with `shapes` (in `base`'s pixel
+/// coordinates) drawn over it.
+#[must_use]
+pub fn magnified_with_shapes(base: &RgbaImage, shapes: &[Shape], zoom: u32) -> RgbaImage {
+    let zoom = zoom.max(1);
+    let (w, h) = (base.width() * zoom, base.height() * zoom);
+    let Some(mut pixmap) = Pixmap::new(w, h) else {
+        return base.clone();
+    };
+    for (i, px) in pixmap.pixels_mut().iter_mut().enumerate() {
+        let (x, y) = (i as u32 % w / zoom, i as u32 / w / zoom);
+        let c = base.get_pixel(x, y).0;
+        if let Some(p) = tiny_skia::PremultipliedColorU8::from_rgba(c[0], c[1], c[2], 255) {
+            *px = p;
+        }
+    }
+    draw(&mut pixmap, shapes, zoom as f32);
+    RgbaImage::from_fn(w, h, |x, y| {
+        let c = pixmap.pixel(x, y).map(|p| p.demultiply());
+        c.map_or(image::Rgba([0, 0, 0, 255]), |c| {
+            image::Rgba([c.red(), c.green(), c.blue(), c.alpha()])
+        })
+    })
 }

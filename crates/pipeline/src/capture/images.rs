@@ -266,25 +266,19 @@ impl FrameCapture {
     /// An image of buffer `kind`, magnified `zoom`× (nearest), with `shapes` drawn over it.
     #[must_use]
     pub fn image_with_shapes(&self, kind: BufferKind, shapes: &[Shape], zoom: u32) -> RgbaImage {
-        let zoom = zoom.max(1);
-        let base = self.image(kind);
-        let (w, h) = (base.width() * zoom, base.height() * zoom);
-        let Some(mut pixmap) = tiny_skia::Pixmap::new(w, h) else {
-            return base;
-        };
-        for (i, px) in pixmap.pixels_mut().iter_mut().enumerate() {
-            let (x, y) = (i as u32 % w / zoom, i as u32 / w / zoom);
-            let c = base.get_pixel(x, y).0;
-            if let Some(p) = tiny_skia::PremultipliedColorU8::from_rgba(c[0], c[1], c[2], 255) {
-                *px = p;
-            }
-        }
-        overlay::draw(&mut pixmap, shapes, zoom as f32);
-        ImageBuffer::from_fn(w, h, |x, y| {
-            let c = pixmap.pixel(x, y).map(|p| p.demultiply());
-            c.map_or(Rgba([0, 0, 0, 255]), |c| {
-                Rgba([c.red(), c.green(), c.blue(), c.alpha()])
-            })
-        })
+        overlay::magnified_with_shapes(&self.image(kind), shapes, zoom)
+    }
+
+    /// The depth buffer as grey over the window-depth range `range` (black at its first end,
+    /// white at its second; `None`: the image's own nearest and farthest), magnified `zoom`×
+    /// with `shapes` drawn over it — the image a lesson step with `depth_range` shows.
+    #[must_use]
+    pub fn depth_image_with_shapes(
+        &self,
+        range: Option<[f32; 2]>,
+        shapes: &[Shape],
+        zoom: u32,
+    ) -> RgbaImage {
+        overlay::magnified_with_shapes(&self.depth_image(false, range), shapes, zoom)
     }
 }
