@@ -52,6 +52,16 @@ pub enum MeshError {
         /// What `tobj` reported.
         reason: String,
     },
+    /// A line of the file is wrong: `file.obj:LINE: what is wrong`.
+    #[error("{path}:{line}: {reason}")]
+    Line {
+        /// The file.
+        path: String,
+        /// 1-based line.
+        line: usize,
+        /// What is wrong with it.
+        reason: String,
+    },
     /// The file has no triangles to draw.
     #[error("{path}: the file has no faces (an OBJ mesh needs `f` lines)")]
     NoFaces {

@@ -48,7 +48,7 @@ impl Mesh {
                 path: shown.to_owned(),
                 reason: format!("cannot read it as text: {e}"),
             })?;
-        check_face_sizes(&text, shown)?;
+        check_lines(&text, shown)?;
         // Materials are not used: a missing .mtl file is no error.
         let (models, _materials) = tobj::load_obj_buf(&mut text.as_bytes(), &options, |_| {
             Ok((Vec::new(), Default::default()))
@@ -151,21 +151,122 @@ fn check_loaded(mesh: &Mesh, shown: &str) -> Result<(), MeshError> {
     Ok(())
 }
 
-/// tobj drops a face of fewer than three vertices without a word: name it, with its line.
-fn check_face_sizes(text: &str, shown: &str) -> Result<(), MeshError> {
+/// Checks every line tobj will read, so that a mistake is reported with its line
+/// (`file.obj:LINE: what is wrong`) rather than as tobj's "face vertex index out of bounds":
+/// `v` needs three finite numbers (three more for a colour), `vt` one to three, `vn` three; a
+/// face at least three vertices, each `v`, `v/t`, `v//n` or `v/t/n` with indices that are not 0
+/// and name an existing `v`, `vt` or `vn` (negative ones count back from the last read, as the
+/// format allows).
+fn check_lines(text: &str, shown: &str) -> Result<(), MeshError> {
+    let fail = |line: usize, reason: String| MeshError::Line {
+        path: shown.to_owned(),
+        line,
+        reason,
+    };
+    // Positive indices may name any vertex of the file; negative ones count back from the
+    // vertices read so far.
+    let total = |k: &str| {
+        text.lines()
+            .filter(|l| l.split_whitespace().next() == Some(k))
+            .count()
+    };
+    let totals = [total("v"), total("vt"), total("vn")];
+    let (mut v, mut vt, mut vn) = (0usize, 0usize, 0usize);
     for (n, line) in text.lines().enumerate() {
-        let mut words = line.split_whitespace();
-        if words.next() == Some("f") {
-            let count = words.count();
-            if count < 3 {
-                return Err(MeshError::Obj {
-                    path: shown.to_owned(),
-                    reason: format!(
-                        "line {}: a face needs at least three vertices, got {count}",
-                        n + 1
-                    ),
-                });
+        let line_no = n + 1;
+        let mut words = line
+            .split('#')
+            .next()
+            .unwrap_or_default()
+            .split_whitespace();
+        let Some(keyword) = words.next() else {
+            continue;
+        };
+        let rest: Vec<&str> = words.collect();
+        let numbers = |what: &str, allowed: &[usize]| -> Result<(), MeshError> {
+            if !allowed.contains(&rest.len()) {
+                return Err(fail(
+                    line_no,
+                    format!("`{keyword}` needs {what}, got {} number(s)", rest.len()),
+                ));
             }
+            for w in &rest {
+                match w.parse::<f32>() {
+                    Ok(x) if x.is_finite() => {}
+                    Ok(_) => {
+                        return Err(fail(line_no, format!("`{w}` is not a finite number")));
+                    }
+                    Err(_) => return Err(fail(line_no, format!("`{w}` is not a number"))),
+                }
+            }
+            Ok(())
+        };
+        match keyword {
+            "v" => {
+                numbers(
+                    "three numbers x y z (then w, or r g b for a colour)",
+                    &[3, 4, 6, 7],
+                )?;
+                v += 1;
+            }
+            "vt" => {
+                numbers("one to three numbers u v w", &[1, 2, 3])?;
+                vt += 1;
+            }
+            "vn" => {
+                numbers("three numbers x y z", &[3])?;
+                vn += 1;
+            }
+            "f" => {
+                if rest.len() < 3 {
+                    return Err(fail(
+                        line_no,
+                        format!("a face needs at least three vertices, got {}", rest.len()),
+                    ));
+                }
+                for corner in &rest {
+                    let sofar = [v, vt, vn];
+                    for (k, (index, what)) in corner.split('/').zip(["v", "vt", "vn"]).enumerate() {
+                        if index.is_empty() && k > 0 {
+                            continue;
+                        }
+                        let Ok(i) = index.parse::<i64>() else {
+                            return Err(fail(
+                                line_no,
+                                format!(
+                                    "`{corner}`: `{index}` is not a whole number (a face lists v, v/t, v//n or v/t/n)"
+                                ),
+                            ));
+                        };
+                        let big = |c: usize| i64::try_from(c).unwrap_or(i64::MAX);
+                        if i == 0 {
+                            return Err(fail(
+                                line_no,
+                                format!("`{corner}`: index 0, but OBJ indices start at 1"),
+                            ));
+                        }
+                        if i > big(totals[k]) {
+                            return Err(fail(
+                                line_no,
+                                format!(
+                                    "`{corner}`: {what} index {i}, but the file has {} `{what}` line(s)",
+                                    totals[k]
+                                ),
+                            ));
+                        }
+                        if -i > big(sofar[k]) {
+                            return Err(fail(
+                                line_no,
+                                format!(
+                                    "`{corner}`: {what} index {i} counts back past the first: only {} `{what}` line(s) come before it",
+                                    sofar[k]
+                                ),
+                            ));
+                        }
+                    }
+                }
+            }
+            _ => {}
         }
     }
     Ok(())
