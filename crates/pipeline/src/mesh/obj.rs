@@ -217,56 +217,49 @@ fn check_lines(text: &str, shown: &str) -> Result<(), MeshError> {
                 numbers("three numbers x y z", &[3])?;
                 vn += 1;
             }
-            "f" => {
-                if rest.len() < 3 {
-                    return Err(fail(
-                        line_no,
-                        format!("a face needs at least three vertices, got {}", rest.len()),
-                    ));
-                }
-                for corner in &rest {
-                    let sofar = [v, vt, vn];
-                    for (k, (index, what)) in corner.split('/').zip(["v", "vt", "vn"]).enumerate() {
-                        if index.is_empty() && k > 0 {
-                            continue;
-                        }
-                        let Ok(i) = index.parse::<i64>() else {
-                            return Err(fail(
-                                line_no,
-                                format!(
-                                    "`{corner}`: `{index}` is not a whole number (a face lists v, v/t, v//n or v/t/n)"
-                                ),
-                            ));
-                        };
-                        let big = |c: usize| i64::try_from(c).unwrap_or(i64::MAX);
-                        if i == 0 {
-                            return Err(fail(
-                                line_no,
-                                format!("`{corner}`: index 0, but OBJ indices start at 1"),
-                            ));
-                        }
-                        if i > big(totals[k]) {
-                            return Err(fail(
-                                line_no,
-                                format!(
-                                    "`{corner}`: {what} index {i}, but the file has {} `{what}` line(s)",
-                                    totals[k]
-                                ),
-                            ));
-                        }
-                        if -i > big(sofar[k]) {
-                            return Err(fail(
-                                line_no,
-                                format!(
-                                    "`{corner}`: {what} index {i} counts back past the first: only {} `{what}` line(s) come before it",
-                                    sofar[k]
-                                ),
-                            ));
-                        }
-                    }
-                }
-            }
+            "f" => check_face(&rest, totals, [v, vt, vn]).map_err(|r| fail(line_no, r))?,
             _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// One face's corners: at least three, each index a whole number, not 0, naming a `v`, `vt`
+/// or `vn` that exists (`totals` in the file; `sofar`, read before this line, for negative
+/// ones, which count back).
+fn check_face(rest: &[&str], totals: [usize; 3], sofar: [usize; 3]) -> Result<(), String> {
+    if rest.len() < 3 {
+        return Err(format!(
+            "a face needs at least three vertices, got {}",
+            rest.len()
+        ));
+    }
+    let big = |c: usize| i64::try_from(c).unwrap_or(i64::MAX);
+    for corner in rest {
+        for (k, (index, what)) in corner.split('/').zip(["v", "vt", "vn"]).enumerate() {
+            if index.is_empty() && k > 0 {
+                continue;
+            }
+            let Ok(i) = index.parse::<i64>() else {
+                return Err(format!(
+                    "`{corner}`: `{index}` is not a whole number (a face lists v, v/t, v//n or v/t/n)"
+                ));
+            };
+            if i == 0 {
+                return Err(format!("`{corner}`: index 0, but OBJ indices start at 1"));
+            }
+            if i > big(totals[k]) {
+                return Err(format!(
+                    "`{corner}`: {what} index {i}, but the file has {} `{what}` line(s)",
+                    totals[k]
+                ));
+            }
+            if -i > big(sofar[k]) {
+                return Err(format!(
+                    "`{corner}`: {what} index {i} counts back past the first: only {} `{what}` line(s) come before it",
+                    sofar[k]
+                ));
+            }
         }
     }
     Ok(())
