@@ -300,7 +300,7 @@ fn set(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Problem> {
 }
 
 /// The parameters of every object (`objects.NAME.p`): transform, colour, material.
-const OBJECT_PARAMS: [&str; 10] = [
+const OBJECT_PARAMS: [&str; 11] = [
     "translate",
     "rotate",
     "scale",
@@ -311,6 +311,7 @@ const OBJECT_PARAMS: [&str; 10] = [
     "kd",
     "ks",
     "shininess",
+    "normals",
 ];
 
 /// The parameters a built-in Bézier curve adds: its control points and the drawn `t`.
@@ -352,6 +353,12 @@ fn object_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(
                 "kd" => &mut m.kd,
                 _ => &mut m.ks,
             } = k;
+        }
+        "normals" => {
+            let averaging = choice(v, crate::lesson::validate::NORMALS)?;
+            let mut mesh = (*o.mesh).clone();
+            mesh.compute_vertex_normals(averaging);
+            o.mesh = std::sync::Arc::new(mesh);
         }
         "shininess" => {
             let x = number(v)?;
@@ -531,6 +538,7 @@ pub fn describe(spec: &SceneSpec, name: &str, lang: crate::vocabulary::Lang) -> 
             "exponent" => "衰减指数",
             "light" => "光源",
             "shininess" => "高光指数",
+            "normals" => "法线",
             "lod_bias" => "mip 偏移",
             "samples" => "采样数",
             "anisotropy" => "各向异性",

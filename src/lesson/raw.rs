@@ -169,6 +169,8 @@ pub struct RawObject {
     pub casts_shadow: Option<bool>,
     /// Centre the mesh's bounding box at the origin and scale it into the unit sphere.
     pub fit: Option<bool>,
+    /// `"average"` or `"area_weighted"`: compute the vertex normals from the faces.
+    pub normals: Option<Spanned<String>>,
     /// `{ texture = "bumps" | path, strength = … }`.
     pub bump: Option<Spanned<RawBump>>,
     /// A tangent-space normal map: a PNG/JPEG path.

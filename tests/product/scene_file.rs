@@ -275,3 +275,38 @@ fn lights_and_materials_are_checked() {
         "\"unlit\", \"flat\", \"gouraud\", \"phong\"",
     );
 }
+
+/// `normals = "average" | "area_weighted"` computes an object's vertex normals from its faces
+/// (replacing a built-in's exact ones); the parameter `objects.NAME.normals` switches them.
+#[test]
+fn vertex_normals_can_be_averaged_plainly_or_by_area() {
+    use pipelens::lesson::{param, parse_scene};
+    let scene = |normals: &str| {
+        let text = format!(
+            "[[scene.objects]]\nname = \"c\"\nmesh = {{ builtin = \"cylinder\", segments = 8 }}\n{normals}"
+        );
+        parse_scene(&text, "t.toml", std::path::Path::new(".")).expect("valid")
+    };
+    let normals = |s: &pipelens::lesson::SceneSpec| s.scene.objects[0].mesh.normals.clone();
+    let exact = normals(&scene(""));
+    let plain = normals(&scene("normals = \"average\"\n"));
+    let weighted = normals(&scene("normals = \"area_weighted\"\n"));
+    // A rim vertex belongs to thin cap triangles and tall side triangles: the averages differ
+    // from the exact (split) normals and from each other.
+    assert_ne!(exact, plain);
+    assert_ne!(plain, weighted);
+    let mut spec = scene("");
+    param::apply(
+        &mut spec,
+        "objects.c.normals",
+        &param::Value::Name("area_weighted".into()),
+    )
+    .expect("a parameter");
+    assert_eq!(normals(&spec), weighted);
+    assert_error(
+        "[[scene.objects]]\nmesh = \"cube\"\nnormals = \"avg\"\n",
+        3,
+        11,
+        "`normals` must be one of \"average\", \"area_weighted\", got \"avg\"",
+    );
+}

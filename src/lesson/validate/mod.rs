@@ -14,6 +14,7 @@ use std::path::Path;
 
 use glam::Vec3;
 use pipeline::camera::{Camera, Projection};
+use pipeline::mesh::NormalAveraging;
 use pipeline::raster::{CullMode, DepthTest};
 use pipeline::scene::Scene;
 use pipeline::settings::RenderSettings;
@@ -65,6 +66,12 @@ pub(super) const MIPMAP: &[(&str, Mipmap)] = &[
 /// The names of `filter` in files.
 pub(super) const FILTER: &[(&str, Filter)] =
     &[("nearest", Filter::Nearest), ("bilinear", Filter::Bilinear)];
+
+/// The names of `normals` in files: how vertex normals are made from the faces around them.
+pub(crate) const NORMALS: &[(&str, NormalAveraging)] = &[
+    ("average", NormalAveraging::Plain),
+    ("area_weighted", NormalAveraging::AreaWeighted),
+];
 
 /// The names of `wrap` in files.
 pub(super) const WRAP: &[(&str, Wrap)] = &[("repeat", Wrap::Repeat), ("clamp", Wrap::Clamp)];

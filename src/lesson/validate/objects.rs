@@ -26,6 +26,11 @@ pub(super) fn object(
     if raw.fit == Some(true) {
         mesh.fit_unit_sphere();
     }
+    if let Some(n) = &raw.normals
+        && let Some(averaging) = c.choice("normals", n, super::NORMALS)
+    {
+        mesh.compute_vertex_normals(averaging);
+    }
     let name = raw
         .name
         .as_ref()
