@@ -192,11 +192,19 @@ fn obj_files_load_with_normals_computed_and_bad_ones_are_named() {
         (
             "out.obj",
             "v 0 0 0\nv 1 0 0\nf 1 2 7\n",
-            "cannot load the OBJ file",
+            "out.obj:3: `7`: v index 7, but the file has 2 `v` line(s)",
         ),
         ("none.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n", "has no faces"),
-        ("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", ""),
-        ("two.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", ""),
+        (
+            "nan.obj",
+            "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n",
+            "nan.obj:2: `nan` is not a finite number",
+        ),
+        (
+            "two.obj",
+            "v 0 0 0\nv 1 0 0\nf 1 2\n",
+            "two.obj:3: a face needs at least three vertices, got 2",
+        ),
     ] {
         let p = dir.path().join(name);
         std::fs::write(&p, body).expect("write");

@@ -200,6 +200,23 @@ fn grid_mesh(
     mesh
 }
 
+/// `(sin, cos)` of the angle `u·2π`, a whole turn at `u = 1` giving exactly what `u = 0`
+/// gives: the seam's two columns of vertices are at the very same positions, so averaged
+/// normals (welded by position) show no crease there.
+fn turn(u: f32) -> (f32, f32) {
+    (u.fract() * TAU).sin_cos()
+}
+
+/// `(sin, cos)` of the angle `v·π`, exactly `(0, −1)` at `v = 1`: the north pole's vertices
+/// coincide as the south pole's do.
+fn half_turn(v: f32) -> (f32, f32) {
+    if v >= 1.0 {
+        (0.0, -1.0)
+    } else {
+        (v * PI).sin_cos()
+    }
+}
+
 fn uv_sphere(segments: u32, rings: u32) -> Mesh {
     let mut mesh = grid_mesh(
         format!("uv_sphere({segments}×{rings})"),
@@ -208,12 +225,8 @@ fn uv_sphere(segments: u32, rings: u32) -> Mesh {
         true,
         |u, v| {
             // φ around y (from +z towards +x), θ from the south pole (v = 0) to the north pole.
-            let (phi, theta) = (u * TAU, v * PI);
-            let p = Vec3::new(
-                theta.sin() * phi.sin(),
-                -theta.cos(),
-                theta.sin() * phi.cos(),
-            );
+            let ((sp, cp), (st, ct)) = (turn(u), half_turn(v));
+            let p = Vec3::new(st * sp, -ct, st * cp);
             (p, p)
         },
     );
@@ -243,20 +256,23 @@ fn cylinder(segments: u32) -> Mesh {
         1,
         false,
         |u, v| {
-            let phi = u * TAU;
-            let n = Vec3::new(phi.sin(), 0.0, phi.cos());
+            let (sp, cp) = turn(u);
+            let n = Vec3::new(sp, 0.0, cp);
             (n + Vec3::new(0.0, 2.0 * v - 1.0, 0.0), n)
         },
     );
     // Caps: flat fans, with their own vertices so that their normals are the axis.
     for (y, normal) in [(1.0f32, Vec3::Y), (-1.0, Vec3::NEG_Y)] {
         for i in 0..segments {
-            let (a0, a1) = (
-                i as f32 / segments as f32 * TAU,
-                (i + 1) as f32 / segments as f32 * TAU,
-            );
-            let rim = |a: f32| Vec3::new(a.sin(), y, a.cos());
-            let disc = |a: f32| Vec2::new(0.5 + 0.5 * a.sin(), 0.5 + 0.5 * a.cos());
+            let (a0, a1) = (i as f32 / segments as f32, (i + 1) as f32 / segments as f32);
+            let rim = |a: f32| {
+                let (s, c) = turn(a);
+                Vec3::new(s, y, c)
+            };
+            let disc = |a: f32| {
+                let (s, c) = turn(a);
+                Vec2::new(0.5 + 0.5 * s, 0.5 + 0.5 * c)
+            };
             let centre = Vec3::new(0.0, y, 0.0);
             let (p, uv) = if normal.y > 0.0 {
                 (
@@ -283,9 +299,9 @@ fn torus(minor: f32, segments: u32, sides: u32) -> Mesh {
         sides,
         false,
         |u, v| {
-            let (phi, theta) = (u * TAU, v * TAU);
-            let ring = Vec3::new(phi.sin(), 0.0, phi.cos());
-            let n = ring * (-theta.cos()) + Vec3::Y * (-theta.sin());
+            let ((sp, cp), (st, ct)) = (turn(u), turn(v));
+            let ring = Vec3::new(sp, 0.0, cp);
+            let n = ring * (-ct) + Vec3::Y * (-st);
             (ring + n * minor, n)
         },
     );

@@ -81,3 +81,43 @@ fn plain_and_area_weighted_averages_differ_as_computed_by_hand() {
         mesh.normals[0]
     );
 }
+
+/// The built-in shapes close their seams exactly (the last column of a sphere, a cylinder or a
+/// torus at the very positions of the first, the sphere's poles one point each), so normals
+/// averaged from their faces agree wherever two vertices share a position.
+#[test]
+fn built_in_shapes_close_their_seams_so_averaged_normals_agree() {
+    use pipeline::mesh::{BuiltinMesh, NormalAveraging};
+    for shape in [
+        BuiltinMesh::UvSphere {
+            segments: 12,
+            rings: 6,
+        },
+        BuiltinMesh::Cylinder { segments: 9 },
+        BuiltinMesh::Torus {
+            minor: 0.35,
+            segments: 10,
+            sides: 7,
+        },
+    ] {
+        let mut mesh = shape.build();
+        for averaging in [NormalAveraging::Plain, NormalAveraging::AreaWeighted] {
+            mesh.compute_vertex_normals(averaging);
+            let mut seams = 0;
+            for i in 0..mesh.positions.len() {
+                for j in i + 1..mesh.positions.len() {
+                    if (mesh.positions[i] - mesh.positions[j]).length() < 1e-5 {
+                        assert_eq!(
+                            mesh.positions[i], mesh.positions[j],
+                            "{}: vertices {i} and {j} almost meet",
+                            mesh.name
+                        );
+                        assert_eq!(mesh.normals[i], mesh.normals[j], "{}", mesh.name);
+                        seams += 1;
+                    }
+                }
+            }
+            assert!(seams > 0, "{} has a seam", mesh.name);
+        }
+    }
+}
