@@ -46,6 +46,8 @@ impl Samples {
 
 /// Sample positions of the standard multisample patterns (those of Direct3D, which OpenGL
 /// implementations share), in 1/16 pixel from the pixel centre, **y down** as they are published.
+/// Mesa's llvmpipe takes the same numbers as y up, so its 4× pattern is the vertical mirror of
+/// this one; OpenGL leaves the positions to the implementation.
 const PATTERN_1: [(i8, i8); 1] = [(0, 0)];
 const PATTERN_4: [(i8, i8); 4] = [(-2, -6), (6, -2), (-6, 2), (2, 6)];
 const PATTERN_8: [(i8, i8); 8] = [
