@@ -206,6 +206,23 @@ impl PipelensApp {
             {
                 self.start_export();
             }
+            if self.session.lesson.is_some()
+                && ui
+                    .add_enabled(
+                        !busy,
+                        egui::Button::new(lang.tr(
+                            "Export handout and slides",
+                            "导出讲义与幻灯片",
+                        )),
+                    )
+                    .on_hover_text(lang.tr(
+                        "The lesson's handout in this language (index.html, every image in it, printable) and one 1920×1080 slide per step (slides/), as `pipelens export LESSON --slides` writes them.",
+                        "用当前语言导出本课的讲义（index.html，图片都在其中，可打印）和每步一张 1920×1080 的幻灯片（slides/），与 `pipelens export 课程 --slides` 相同。",
+                    ))
+                    .clicked()
+            {
+                self.start_handout_export();
+            }
         });
         if let Some(cancel) = self.export_cancel.as_ref().filter(|_| busy)
             && ui

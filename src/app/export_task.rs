@@ -11,6 +11,19 @@ use pipeline::settings::RenderSettings;
 use super::PipelensApp;
 
 impl PipelensApp {
+    /// Exports go to `dir` (the Export menu's folder; `pipelens-export` by default).
+    #[must_use]
+    pub fn exporting_to(mut self, dir: &std::path::Path) -> Self {
+        self.export_dir = dir.display().to_string();
+        self
+    }
+
+    /// Whether an export is running.
+    #[must_use]
+    pub fn exporting(&self) -> bool {
+        self.export_result.is_some()
+    }
+
     pub(super) fn start_export(&mut self) {
         let Some(shown) = self.session.capture.clone() else {
             return;
@@ -41,6 +54,33 @@ impl PipelensApp {
                 crate::export::export_capture(&c, &opts, &mut |_, _, _| {})
                     .map_err(|e| format!("{e:#}"))
             });
+            let _ = tx.send(r);
+        });
+    }
+
+    /// The lesson's handout and slides in the interface's language, off the UI thread.
+    pub(super) fn start_handout_export(&mut self) {
+        let Some(player) = &self.session.lesson else {
+            return;
+        };
+        let lesson = player.lesson.clone();
+        let opts = crate::export::lesson::LessonExport {
+            out: PathBuf::from(self.export_dir.trim()),
+            step: None,
+            size: None,
+            lang: self.session.lang,
+            max_records: 200_000,
+            answers: false,
+            slides: true,
+            data: false,
+            cancel: crate::export::Cancel::default(),
+        };
+        self.export_cancel = Some(opts.cancel.clone());
+        let (tx, rx) = channel();
+        self.export_result = Some(rx);
+        std::thread::spawn(move || {
+            let r = crate::export::lesson::export_lesson(&lesson, &opts, &mut |_, _, _| {})
+                .map_err(|e| format!("{e:#}"));
             let _ = tx.send(r);
         });
     }

@@ -6,6 +6,7 @@ use pipelens::app::session::Session;
 use pipelens::app::{PipelensApp, setup_context};
 use pipelens::vocabulary::{Lang, Stage};
 
+mod export;
 mod steps;
 
 /// The app on the built-in scene, rendering synchronously so that tests are deterministic.
