@@ -109,6 +109,7 @@ pub fn names(spec: &SceneSpec) -> Vec<String> {
         "camera.eye",
         "camera.at",
         "camera.up",
+        "projection.kind",
         "projection.fovy",
         "projection.aspect",
         "projection.near",
@@ -260,6 +261,11 @@ fn set(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Problem> {
             };
             *slot = vec3(v)?;
         }
+        ["projection", "kind"] => {
+            let kind = choice(v, &[("perspective", 0), ("frustum", 1), ("ortho", 2)])?;
+            spec.scene.projection =
+                projection_kind(&spec.scene.projection, kind, spec.settings.aspect());
+        }
         ["projection", p] => projection(&mut spec.scene.projection, p, v)?,
         ["render", p] => render(spec, p, v)?,
         ["shadow", "light"] => match &mut spec.scene.shadow {
@@ -391,6 +397,38 @@ fn object_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(
         _ => return Err(Problem::Unknown),
     }
     Ok(())
+}
+
+/// The same view volume as another kind of projection (0 perspective, 1 frustum, 2 ortho): its
+/// near rectangle `[l, r] × [b, t]` kept; a perspective is symmetric, so an off-centre frustum
+/// becomes the symmetric one of the same size, `fovy = 2·atan((t − b)/(2n))`,
+/// `aspect = (r − l)/(t − b)`.
+fn projection_kind(p: &Projection, kind: u8, viewport_aspect: f32) -> Projection {
+    let [left, right, bottom, top, near, far] = p.bounds(viewport_aspect);
+    match kind {
+        0 => Projection::Perspective {
+            fovy_deg: (2.0 * ((top - bottom) / (2.0 * near)).atan()).to_degrees(),
+            aspect: Some((right - left) / (top - bottom)),
+            near,
+            far,
+        },
+        1 => Projection::Frustum {
+            left,
+            right,
+            bottom,
+            top,
+            near,
+            far,
+        },
+        _ => Projection::Ortho {
+            left,
+            right,
+            bottom,
+            top,
+            near,
+            far,
+        },
+    }
 }
 
 fn projection(p: &mut Projection, key: &str, v: &Value) -> Result<(), Problem> {

@@ -284,7 +284,10 @@ impl Checker<'_> {
         let answer = r.answer.as_ref().map(|a| self.text_of("answer", a));
         let (stage, layout, compare, buffer, overlays) = self.views(s);
         let mut set = Vec::new();
-        for (name, v) in &r.set {
+        // In the order written (a `projection.kind` before the keys of that kind).
+        let mut written: Vec<_> = r.set.iter().collect();
+        written.sort_by_key(|(name, _)| name.span().start);
+        for (name, v) in written {
             let Some(value) = self.value(v) else { continue };
             match param::apply(spec, name.get_ref(), &value) {
                 Ok(()) => set.push((name.get_ref().clone(), value)),

@@ -479,3 +479,38 @@ fn is_prose(formula: &str) -> bool {
             )
         })
 }
+
+/// Lesson 05's off-centre step: `projection.kind = "frustum"` keeps the near rectangle, and
+/// with l = −0.3, r = 1.0, n = 1 the shear H of Frustum = N·S·H has (r + l)/(2n) = 0.35 in its
+/// first row, third column; the next step is the symmetric perspective again.
+#[test]
+fn the_off_centre_frustum_step_shows_a_shear() {
+    let Ok(Document::Lesson(lesson)) = load_file(&repo().join("lessons/05-perspective.toml"))
+    else {
+        panic!("lesson 05 loads");
+    };
+    let k = lesson
+        .steps
+        .iter()
+        .position(|s| s.title.en.starts_with("An off-centre frustum"))
+        .expect("the step");
+    let spec = lesson.spec_at(k);
+    let capture = pipeline::render(&spec.scene, &spec.settings).expect("renders");
+    let h = capture
+        .matrices
+        .projection
+        .factors
+        .iter()
+        .find(|f| f.name.starts_with('H'))
+        .expect("an H factor");
+    let rows = h.matrix.transpose().to_cols_array_2d();
+    assert!((rows[0][2] - 0.35).abs() < 1e-6, "{rows:?}");
+    assert!(rows[1][2].abs() < 1e-6, "symmetric in y: {rows:?}");
+    let before = lesson.spec_at(k - 1);
+    let after = lesson.spec_at(k + 1);
+    assert_eq!(
+        before.scene.projection.bounds(1.6),
+        after.scene.projection.bounds(1.6),
+        "the next step is the symmetric frustum again"
+    );
+}
