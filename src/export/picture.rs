@@ -66,9 +66,11 @@ pub fn step_picture(lesson: &Lesson, k: usize, r: &Rendered<'_>, lang: Lang) -> 
     let picture = if step.compare.is_some() && !r.variants.is_empty() {
         side_by_side(r.variants, buffer, line, lang)
     } else {
+        let (w, h) = (r.capture.width(), r.capture.height());
         let shapes = Shapes {
             overlays: step.overlays.as_deref().unwrap_or_default(),
-            pixel: step.pixel,
+            // A pixel outside an image exported at another size is not drawn.
+            pixel: step.pixel.filter(|&(x, y)| x < w && y < h),
             vertex: step.vertex,
             line,
             depth_range: step.depth_range,
@@ -384,7 +386,12 @@ fn side_by_side(
     line: Option<[f32; 4]>,
     lang: Lang,
 ) -> RgbaImage {
-    let columns = variants.len().min(3) as u32;
+    // Two, three in a row; four as 2×2.
+    let columns = if variants.len() == 4 {
+        2
+    } else {
+        variants.len().min(3) as u32
+    };
     let rows = (variants.len() as u32).div_ceil(columns);
     let tiles: Vec<RgbaImage> = variants
         .iter()
