@@ -125,16 +125,12 @@ type BuiltStep = (StepPage, Vec<(String, Vec<ExportFile>)>);
 
 /// Step `k`'s page of the handout, and the files it adds (by folder): its slide, its data.
 fn build_step(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<BuiltStep> {
-    let spec = spec_of(lesson, k, opts, None)?;
-    let capture = pipeline::render(&spec.scene, &spec.settings)
-        .with_context(|| format!("rendering step {}", k + 1))?;
-    let variants = variants(lesson, k, &spec)?;
-    let rendered = Rendered {
-        spec: &spec,
-        capture: &capture,
-        variants: &variants,
-    };
-    let picture = step_picture(lesson, k, &rendered, opts.lang)?;
+    let Drawn {
+        spec,
+        capture,
+        variants,
+        picture,
+    } = draw(lesson, k, opts, None)?;
     let animated = animation(lesson, k, opts)?;
     let mut folders = Vec::new();
     if opts.slides {
@@ -172,6 +168,35 @@ fn build_step(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<BuiltSte
         stage: lesson.stage_at(k),
     };
     Ok((page, folders))
+}
+
+/// A step rendered and drawn: its scene, its capture, the compared settings' captures and
+/// its picture.
+struct Drawn {
+    spec: SceneSpec,
+    capture: FrameCapture,
+    variants: Vec<(String, FrameCapture)>,
+    picture: RgbaImage,
+}
+
+/// Step `k` at moment `t` of its animation (`None`: before it), rendered and drawn.
+fn draw(lesson: &Lesson, k: usize, opts: &LessonExport, t: Option<f32>) -> Result<Drawn> {
+    let spec = spec_of(lesson, k, opts, t)?;
+    let capture = pipeline::render(&spec.scene, &spec.settings)
+        .with_context(|| format!("rendering step {}", k + 1))?;
+    let variants = variants(lesson, k, &spec)?;
+    let rendered = Rendered {
+        spec: &spec,
+        capture: &capture,
+        variants: &variants,
+    };
+    let picture = step_picture(lesson, k, &rendered, opts.lang)?;
+    Ok(Drawn {
+        spec,
+        capture,
+        variants,
+        picture,
+    })
 }
 
 /// The scene of step `k` at the export's size, at moment `t` of its animation (`None`: as the
@@ -215,16 +240,7 @@ fn animation(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<Option<An
     };
     let frame_at = |t: f32| -> Result<(RgbaImage, String)> {
         opts.cancel.check()?;
-        let spec = spec_of(lesson, k, opts, Some(t))?;
-        let capture = pipeline::render(&spec.scene, &spec.settings)
-            .with_context(|| format!("rendering step {} at t = {t} s", k + 1))?;
-        let variants = variants(lesson, k, &spec)?;
-        let rendered = Rendered {
-            spec: &spec,
-            capture: &capture,
-            variants: &variants,
-        };
-        let picture = step_picture(lesson, k, &rendered, opts.lang)?;
+        let Drawn { spec, picture, .. } = draw(lesson, k, opts, Some(t))?;
         let caption = step
             .animate
             .iter()
