@@ -279,24 +279,13 @@ pub fn obj_scene(
 ) -> anyhow::Result<BenchScene> {
     use pipeline::light::{Light, Material};
     use pipeline::scene::ColorSource;
-    let m = pipeline::mesh::Mesh::load_obj(mesh)?;
-    let (lo, hi) = m.positions.iter().fold(
-        (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
-        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
-    );
-    let c = (lo + hi) / 2.0;
-    let r = m
-        .positions
-        .iter()
-        .map(|p| (*p - c).length())
-        .fold(0.0f32, f32::max)
-        .max(1e-6);
+    let mut m = pipeline::mesh::Mesh::load_obj(mesh)?;
+    // As the peer's `--fit`: centred and scaled into the unit sphere.
+    m.fit_unit_sphere();
     let name = mesh
         .file_name()
         .map_or_else(|| "mesh".to_owned(), |n| n.to_string_lossy().into_owned());
     let mut object = Object::new(&name, m);
-    object.scale = Vec3::splat(1.0 / r);
-    object.translate = -c / r;
     object.color = ColorSource::Uniform(Vec3::ONE);
     object.material = Material {
         ka: Vec3::splat(0.05),

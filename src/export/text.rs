@@ -6,12 +6,16 @@
 use ab_glyph::{Font, FontRef, PxScale, ScaleFont};
 use image::{Rgba, RgbaImage};
 
-/// The fonts, first the one tried first.
-fn fonts() -> [FontRef<'static>; 2] {
-    // Both are fonts shipped in the binary; a test draws text with each.
-    let cjk = FontRef::try_from_slice(crate::vocabulary::CJK_FONT).expect("the embedded font");
-    let hack = FontRef::try_from_slice(epaint_default_fonts::HACK_REGULAR).expect("egui's Hack");
-    [cjk, hack]
+/// The fonts, first the one tried first; parsed once.
+fn fonts() -> &'static [FontRef<'static>; 2] {
+    static FONTS: std::sync::OnceLock<[FontRef<'static>; 2]> = std::sync::OnceLock::new();
+    FONTS.get_or_init(|| {
+        // Both are fonts shipped in the binary; a test draws text with each.
+        let cjk = FontRef::try_from_slice(crate::vocabulary::CJK_FONT).expect("the embedded font");
+        let hack =
+            FontRef::try_from_slice(epaint_default_fonts::HACK_REGULAR).expect("egui's Hack");
+        [cjk, hack]
+    })
 }
 
 /// A run of text of one colour.
@@ -39,7 +43,7 @@ pub fn width(text: &str, size: f32) -> f32 {
     let fonts = fonts();
     text.chars()
         .map(|c| {
-            let (f, g) = glyph_of(&fonts, c);
+            let (f, g) = glyph_of(fonts, c);
             fonts[f].as_scaled(PxScale::from(size)).h_advance(g)
         })
         .sum()
@@ -51,7 +55,7 @@ pub fn draw(img: &mut RgbaImage, x: f32, y: f32, size: f32, color: [u8; 3], text
     let scale = PxScale::from(size);
     let mut pen = x;
     for c in text.chars() {
-        let (f, id) = glyph_of(&fonts, c);
+        let (f, id) = glyph_of(fonts, c);
         let font = &fonts[f];
         let glyph = id.with_scale_and_position(scale, ab_glyph::point(pen, y));
         pen += font.as_scaled(scale).h_advance(id);

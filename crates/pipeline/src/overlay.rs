@@ -117,6 +117,18 @@ pub fn arrow_head(a: [f32; 2], b: [f32; 2], size: f32) -> [[f32; 2]; 2] {
     ]
 }
 
+/// Strokes the path built in `pb` with round caps.
+fn stroke_round(pixmap: &mut Pixmap, pb: PathBuilder, color: Rgba, width: f32) {
+    if let Some(path) = pb.finish() {
+        let stroke = Stroke {
+            width,
+            line_cap: LineCap::Round,
+            ..Stroke::default()
+        };
+        pixmap.stroke_path(&path, &paint(color), &stroke, Transform::identity(), None);
+    }
+}
+
 /// Draws `shapes` onto `pixmap`, whose pixels are `zoom` times the image's pixels.
 pub fn draw(pixmap: &mut Pixmap, shapes: &[Shape], zoom: f32) {
     let t = Transform::identity();
@@ -139,14 +151,7 @@ pub fn draw(pixmap: &mut Pixmap, shapes: &[Shape], zoom: f32) {
                 if *closed {
                     pb.close();
                 }
-                if let Some(path) = pb.finish() {
-                    let stroke = Stroke {
-                        width: *width,
-                        line_cap: LineCap::Round,
-                        ..Stroke::default()
-                    };
-                    pixmap.stroke_path(&path, &paint(*color), &stroke, t, None);
-                }
+                stroke_round(pixmap, pb, *color, *width);
             }
             Shape::Rect {
                 min,
@@ -182,14 +187,7 @@ pub fn draw(pixmap: &mut Pixmap, shapes: &[Shape], zoom: f32) {
                     pb.move_to(b[0], b[1]);
                     pb.line_to(hx, hy);
                 }
-                if let Some(path) = pb.finish() {
-                    let stroke = Stroke {
-                        width: *width,
-                        line_cap: LineCap::Round,
-                        ..Stroke::default()
-                    };
-                    pixmap.stroke_path(&path, &paint(*color), &stroke, t, None);
-                }
+                stroke_round(pixmap, pb, *color, *width);
             }
             Shape::Dot {
                 center,
