@@ -171,6 +171,21 @@ impl FrameCapture {
         })
     }
 
+    /// The window depth of every pixel as 32-bit floats, exactly as resolved (the mean of the
+    /// pixel's sample depths), in a Portable Float Map: the header `Pf\n{width} {height}\n-1.0\n`
+    /// (one channel; the negative scale says little-endian), then the rows from the **bottom**
+    /// up, which is window order (y up).
+    #[must_use]
+    pub fn depth_pfm(&self) -> Vec<u8> {
+        let (w, h) = (self.width() as usize, self.height() as usize);
+        let mut bytes = format!("Pf\n{w} {h}\n-1.0\n").into_bytes();
+        bytes.reserve(w * h * 4);
+        for row in self.pixels.depth.chunks(w.max(1)).rev() {
+            bytes.extend(row.iter().flat_map(|d| d.to_le_bytes()));
+        }
+        bytes
+    }
+
     /// Converts window coordinates (y up) to image pixel coordinates (y down).
     #[must_use]
     pub fn window_to_image(&self, p: Vec3) -> [f32; 2] {

@@ -305,7 +305,7 @@ impl FrameCapture {
             for (s, off) in offsets.iter().enumerate() {
                 let p = corner + *off;
                 if tri.covers(p) {
-                    let z = tri.depth(tri.lambda(p));
+                    let z = tri.depth_at(p);
                     let pass = self.settings.depth_test.passes(z, stored[s]);
                     if pass {
                         stored[s] = z;
@@ -323,7 +323,7 @@ impl FrameCapture {
                 triangle: t as u32,
                 samples,
                 sample_depths,
-                depth: tri.depth(l),
+                depth: tri.depth_at(centre),
                 bary_affine: tri.original_bary(l, false).to_array(),
                 bary_perspective: tri.original_bary(l, true).to_array(),
                 visible: tri.primitive == owner,

@@ -42,11 +42,14 @@ pub const ONE: i64 = 1 << SUBPIXEL_BITS;
 /// The primitive / triangle id of a sample nothing covered.
 pub const NONE: u32 = u32::MAX;
 
-/// Snaps a window coordinate to the sub-pixel grid.
+/// Snaps a window coordinate to the sub-pixel grid: the nearest multiple of 1/256 pixel, a tie
+/// going to the even one (the processor's default rounding, which Mesa's llvmpipe snaps with;
+/// rounding ties away from zero would move a vertex at exactly k + ½ of 1/256 pixel one step
+/// further and change a pixel's coverage against it).
 #[must_use]
 #[inline]
 pub fn snap(v: f32) -> i64 {
-    (f64::from(v) * ONE as f64).round() as i64
+    (f64::from(v) * ONE as f64).round_ties_even() as i64
 }
 
 /// A triangle ready to be rasterized: snapped, counter-clockwise, with its edge equations.
@@ -95,6 +98,25 @@ impl Edge {
     #[inline]
     fn at(&self, p: I64Vec2) -> i64 {
         self.a * p.x + self.b * p.y + self.c
+    }
+}
+
+/// A triangle's depth as a plane over fixed-point window positions: `z = c + a·X + b·Y`
+/// (see [`RasterTriangle::depth_plane`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DepthPlane {
+    a: f64,
+    b: f64,
+    c: f64,
+}
+
+impl DepthPlane {
+    /// The window depth at fixed-point position `p`, clamped to the depth range [0, 1] as
+    /// OpenGL clamps a fragment's depth.
+    #[must_use]
+    #[inline]
+    pub fn at(&self, p: I64Vec2) -> f32 {
+        (self.c + self.a * p.x as f64 + self.b * p.y as f64).clamp(0.0, 1.0) as f32
     }
 }
 
@@ -205,25 +227,50 @@ impl RasterTriangle {
         Vec3::new((1.0 - l1 - l2) as f32, l1 as f32, l2 as f32)
     }
 
-    /// The depth plane in edge-function terms, `(z_0, k_1, k_2)` with
-    /// `z = z_0 + k_1·E_1 + k_2·E_2`, `k_i = (z_i − z_0)/area` (`E_i` without the fill-rule bias).
+    /// The depth plane `z = c + a·X + b·Y` over fixed-point window positions `(X, Y)`, through
+    /// the three window positions **as computed** (not snapped): the triangle's own plane, as
+    /// OpenGL interpolates z from the vertices' window coordinates, and as Mesa's llvmpipe
+    /// does, so the two agree to float rounding even on steep and sliver triangles (snapping
+    /// moves a vertex up to 1/512 pixel, which on a plane rising 0.03 per pixel is 6e-5).
+    /// Snapping decides coverage only. A triangle whose unsnapped positions are collinear (or
+    /// turn the other way, so that snapping alone gave it its area) takes the plane through
+    /// its snapped corners instead.
     #[must_use]
-    #[inline]
-    fn depth_plane(&self) -> (f64, f64, f64) {
-        let inv_area = 1.0 / self.area2 as f64;
-        let z0 = f64::from(self.window[0].z);
-        (
-            z0,
-            (f64::from(self.window[1].z) - z0) * inv_area,
-            (f64::from(self.window[2].z) - z0) * inv_area,
-        )
+    pub fn depth_plane(&self) -> DepthPlane {
+        let plane = |p: [glam::DVec3; 3]| {
+            let (d1, d2) = (p[1] - p[0], p[2] - p[0]);
+            let det = d1.x * d2.y - d2.x * d1.y;
+            (det > 0.0).then(|| {
+                let a = (d1.z * d2.y - d2.z * d1.y) / det;
+                let b = (d1.x * d2.z - d2.x * d1.z) / det;
+                (a, b, p[0].z - a * p[0].x - b * p[0].y)
+            })
+        };
+        let exact = self
+            .window
+            .map(|w| glam::DVec3::new(w.x.into(), w.y.into(), w.z.into()));
+        let snapped = self.window.map(|w| {
+            let q = |v: f32| snap(v) as f64 / ONE as f64;
+            glam::DVec3::new(q(w.x), q(w.y), w.z.into())
+        });
+        let (a, b, c) = plane(exact).or_else(|| plane(snapped)).unwrap_or((
+            0.0,
+            0.0,
+            f64::from(self.window[0].z),
+        ));
+        let unit = 1.0 / ONE as f64;
+        DepthPlane {
+            a: a * unit,
+            b: b * unit,
+            c,
+        }
     }
 
-    /// Window depth at screen-space weights `λ`.
+    /// Window depth at a fixed-point position, on [`Self::depth_plane`] (clamped to the depth
+    /// range [0, 1]).
     #[must_use]
-    #[inline]
-    pub fn depth(&self, l: Vec3) -> f32 {
-        l.x * self.window[0].z + l.y * self.window[1].z + l.z * self.window[2].z
+    pub fn depth_at(&self, p: I64Vec2) -> f32 {
+        self.depth_plane().at(p)
     }
 
     /// Barycentric weights of the **original** triangle at screen-space weights `λ`:

@@ -44,10 +44,12 @@ impl Samples {
     }
 }
 
-/// Sample positions of the standard multisample patterns (those of Direct3D, which OpenGL
-/// implementations share), in 1/16 pixel from the pixel centre, **y down** as they are published.
-/// Mesa's llvmpipe takes the same numbers as y up, so its 4× pattern is the vertical mirror of
-/// this one; OpenGL leaves the positions to the implementation.
+/// Sample positions of the standard multisample patterns, in 1/16 pixel from the pixel centre:
+/// the numbers Direct3D publishes (y down there), taken **with y up** in window coordinates, as
+/// Mesa's llvmpipe takes them. OpenGL leaves the positions to the implementation; using the same
+/// ones as a conformant OpenGL makes the coverage at 4 samples identical to it, not only at 1
+/// (`scripts/reference-check.sh`). On screen (y down) the 4× pattern is therefore Direct3D's
+/// drawing mirrored vertically: (−2, −6) lies in the pixel's lower half.
 const PATTERN_1: [(i8, i8); 1] = [(0, 0)];
 const PATTERN_4: [(i8, i8); 4] = [(-2, -6), (6, -2), (-6, 2), (2, 6)];
 const PATTERN_8: [(i8, i8); 8] = [
@@ -97,7 +99,7 @@ pub fn sample_offsets_fixed(samples: Samples) -> Vec<I64Vec2> {
         .map(|&(dx, dy)| {
             I64Vec2::new(
                 (8 + i64::from(dx)) * ONE / 16,
-                (8 - i64::from(dy)) * ONE / 16,
+                (8 + i64::from(dy)) * ONE / 16,
             )
         })
         .collect()
@@ -109,6 +111,6 @@ pub fn sample_offsets_fixed(samples: Samples) -> Vec<I64Vec2> {
 pub fn sample_offsets_image(samples: Samples) -> Vec<[f32; 2]> {
     pattern(samples)
         .iter()
-        .map(|&(dx, dy)| [(8.0 + f32::from(dx)) / 16.0, (8.0 + f32::from(dy)) / 16.0])
+        .map(|&(dx, dy)| [(8.0 + f32::from(dx)) / 16.0, (8.0 - f32::from(dy)) / 16.0])
         .collect()
 }

@@ -212,7 +212,7 @@ impl SampleBuffers {
     ) -> RasterCounts {
         let mut counts = RasterCounts::default();
         let [x0, y0, x1, y1] = tri.bbox;
-        let (z0, k1, k2) = tri.depth_plane();
+        let plane = tri.depth_plane();
         for y in y0..=y1 {
             for x in x0..=x1 {
                 let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
@@ -222,9 +222,7 @@ impl SampleBuffers {
                         continue;
                     }
                     counts.covered += 1;
-                    let e1 = tri.edges[1].at(p) as f64;
-                    let e2 = tri.edges[2].at(p) as f64;
-                    let z = (z0 + k1 * e1 + k2 * e2) as f32;
+                    let z = plane.at(p);
                     let i = self.index(x, y, s);
                     if test.passes(z, self.depth[i]) {
                         self.depth[i] = z;
@@ -287,7 +285,7 @@ fn row_span(e: &[[i64; 3]], step: [i64; 3], last: u32) -> Option<(u32, u32)> {
 impl Band<'_> {
     /// Rasterizes `tri` over this band's rows. The edge functions are evaluated once per row at
     /// the first pixel's samples and then stepped by `a·ONE` per pixel (they are linear in x);
-    /// depth is the plane `z = z_0 + k_1·E_1 + k_2·E_2`.
+    /// depth is the triangle's plane ([`RasterTriangle::depth_plane`]).
     fn rasterize(&mut self, tri: &RasterTriangle, index: u32, test: DepthTest) -> RasterCounts {
         let mut counts = RasterCounts::default();
         let [x0, mut y0, x1, mut y1] = tri.bbox;
@@ -300,7 +298,7 @@ impl Band<'_> {
             return counts;
         }
         let n = self.offsets.len();
-        let (z0, k1, k2) = tri.depth_plane();
+        let plane = tri.depth_plane();
         let step = tri.edges.map(|e| e.a * ONE);
         let mut e = [[0i64; 3]; 16];
         for y in y0..=y1 {
@@ -330,10 +328,9 @@ impl Band<'_> {
                 for (s, es) in e.iter_mut().enumerate().take(n) {
                     if (es[0] | es[1] | es[2]) >= 0 {
                         counts.covered += 1;
-                        // The bias (0 or −1) is removed again for the depth plane.
-                        let e1 = (es[1] - tri.edges[1].bias) as f64;
-                        let e2 = (es[2] - tri.edges[2].bias) as f64;
-                        let z = (z0 + k1 * e1 + k2 * e2) as f32;
+                        let z = plane
+                            .at(I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE)
+                                + self.offsets[s]);
                         let i = base + s;
                         if test.passes(z, self.depth[i]) {
                             self.depth[i] = z;

@@ -245,3 +245,69 @@ fn coverage_of_a_triangle_is_the_sum_over_a_split() {
         }
     }
 }
+
+/// Snapping rounds to the nearest 1/256 pixel with ties to even, as the processor's default
+/// rounding and Mesa's llvmpipe do: a vertex at exactly k + ½ sub-pixel units goes to the even
+/// neighbour (864.142578125 = 221220.5/256 snaps to 221220, not 221221; the bunny at 1280×720
+/// has such a vertex, and rounding it away from zero changed a pixel's coverage against llvmpipe).
+#[test]
+fn snapping_rounds_ties_to_even() {
+    use pipeline::raster::snap;
+    assert_eq!(snap(221_220.5 / 256.0), 221_220);
+    assert_eq!(snap(221_221.5 / 256.0), 221_222);
+    assert_eq!(snap(-2.5 / 256.0), -2);
+    assert_eq!(snap(-3.5 / 256.0), -4);
+    assert_eq!(snap(10.0 + 0.6 / 256.0), 2561);
+}
+
+/// Depth is the plane through the window positions as computed, not through the snapped ones:
+/// on a steep triangle whose corners lie off the 1/256 grid, the plane through the snapped
+/// corners is off by about 1e-4 at the pixel centre, the triangle's own plane (computed here
+/// in f64 from the same three points) agrees to f32 rounding. Coverage still uses the snapped
+/// corners.
+#[test]
+fn depth_is_the_plane_of_the_unsnapped_triangle() {
+    use glam::{DVec3, I64Vec2, Vec3};
+    use pipeline::raster::{CullMode, ONE, RasterTriangle};
+    let third = 1.0 / 768.0; // a third of a sub-pixel step: as far off the grid as it gets
+    let window = [
+        Vec3::new(10.0 + third, 10.0 - third, 0.05),
+        Vec3::new(16.0 - third, 11.0 + third, 0.95),
+        Vec3::new(11.0 + third, 16.0 + third, 0.50),
+    ];
+    let tri = RasterTriangle::setup(
+        0,
+        window,
+        [1.0; 3],
+        [Vec3::X, Vec3::Y, Vec3::Z],
+        CullMode::None,
+        (40, 40),
+    )
+    .expect("a proper triangle");
+    let p = window.map(|w| DVec3::new(w.x.into(), w.y.into(), w.z.into()));
+    let exact = |x: f64, y: f64| {
+        let (d1, d2) = (p[1] - p[0], p[2] - p[0]);
+        let det = d1.x * d2.y - d2.x * d1.y;
+        let a = (d1.z * d2.y - d2.z * d1.y) / det;
+        let b = (d1.x * d2.z - d2.x * d1.z) / det;
+        p[0].z + a * (x - p[0].x) + b * (y - p[0].y)
+    };
+    for (x, y) in [(12u32, 12u32), (13, 12), (11, 13)] {
+        let centre = I64Vec2::new(i64::from(x) * ONE + ONE / 2, i64::from(y) * ONE + ONE / 2);
+        assert!(tri.covers(centre), "pixel ({x}, {y}) is inside");
+        let want = exact(f64::from(x) + 0.5, f64::from(y) + 0.5);
+        let got = f64::from(tri.depth_at(centre));
+        assert!(
+            (got - want).abs() < 1e-7,
+            "pixel ({x}, {y}): {got} against the triangle's own plane {want}"
+        );
+        // The screen-space weights of the snapped triangle give a visibly different depth:
+        // the test would not notice a plane through the snapped corners otherwise.
+        let l = tri.lambda(centre);
+        let snapped = f64::from(l.x * window[0].z + l.y * window[1].z + l.z * window[2].z);
+        assert!(
+            (snapped - want).abs() > 1e-5,
+            "pixel ({x}, {y}): the snapped plane differs ({snapped} vs {want})"
+        );
+    }
+}

@@ -67,7 +67,8 @@ pub fn render(scene: &Scene, settings: &RenderSettings) -> FrameCapture {
 }
 
 /// The window position of sample `s` of window pixel `(x, y)`, from the published pattern
-/// (1/16 pixel offsets from the centre, y down) written out here independently.
+/// (1/16 pixel offsets from the centre) written out here independently, the numbers taken with
+/// y up as Mesa's llvmpipe takes them.
 pub fn sample_position(samples: Samples, x: u32, y: u32, s: usize) -> Vec2 {
     let pattern: &[(f32, f32)] = match samples {
         Samples::X1 => &[(0.0, 0.0)],
@@ -75,7 +76,7 @@ pub fn sample_position(samples: Samples, x: u32, y: u32, s: usize) -> Vec2 {
         _ => unreachable!("tests use 1 or 4 samples"),
     };
     let (dx, dy) = pattern[s];
-    Vec2::new(x as f32 + 0.5 + dx / 16.0, y as f32 + 0.5 - dy / 16.0)
+    Vec2::new(x as f32 + 0.5 + dx / 16.0, y as f32 + 0.5 + dy / 16.0)
 }
 
 /// Counts how often each sample is covered over all primitives (depth test `Always` keeps every

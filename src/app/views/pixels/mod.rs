@@ -89,8 +89,8 @@ impl PixelView {
             if ui
                 .checkbox(&mut samples, lang.tr("Sample points", "采样点"))
                 .on_hover_text(lang.tr(
-                    "Zoom in to see each pixel's sample positions: filled when covered. The patterns are Direct3D's standard ones as published (y down); Mesa's llvmpipe uses the same numbers with y up, so its 4× pattern is the vertical mirror of this one (OpenGL leaves the positions to the implementation).",
-                    "放大后显示每个像素的采样位置：被覆盖时为实心。采样模式是 Direct3D 公布的标准模式（y 向下）；Mesa 的 llvmpipe 用同样的数值但 y 向上，所以它的 4× 模式是这里的上下镜像（OpenGL 不规定采样位置）。",
+                    "Zoom in to see each pixel's sample positions: filled when covered. The patterns are the standard ones: Direct3D's published numbers taken with y up, as Mesa's llvmpipe takes them (OpenGL leaves the positions to the implementation), so this 4× pattern is Direct3D's drawing mirrored vertically.",
+                    "放大后显示每个像素的采样位置：被覆盖时为实心。采样模式是标准模式：Direct3D 公布的数值按 y 向上使用，与 Mesa 的 llvmpipe 相同（OpenGL 不规定采样位置），所以这里的 4× 模式是 Direct3D 图示的上下镜像。",
                 ))
                 .changed()
             {

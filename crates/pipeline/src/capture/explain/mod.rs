@@ -391,7 +391,7 @@ impl FrameCapture {
             tri.original_bary(lambda, true),
         );
         let b = if pc { perspective } else { affine };
-        let depth = tri.depth(lambda);
+        let depth = tri.depth_at(centre);
         geometry::explain_weights(tri, lambda, pc, b, depth, &mut lines);
         let blend = |f: &dyn Fn(&VertexRecord) -> Vec3| {
             f(&vertices[0]) * b.x + f(&vertices[1]) * b.y + f(&vertices[2]) * b.z
