@@ -9,11 +9,11 @@ fn conventions() -> Value {
     json!({
         "matrices": "row-major: matrix[i][j] is row i, column j; column vectors, p' = M·p",
         "window": "origin at the bottom-left of the viewport, x right, y up; pixel (i, j) covers [i, i+1]×[j, j+1], centre (i+0.5, j+0.5); image row = height − 1 − j",
-        "depth": "window depth z_w = (z_ndc + 1)/2 in [0, 1] (glDepthRange(0, 1)); interpolated linearly in screen space",
+        "depth": "window depth z_w = (z_ndc + 1)/2 in [0, 1] (glDepthRange(0, 1)); interpolated linearly in screen space on the plane through the unsnapped window positions (snapping decides coverage only); exact floats in depth.pfm",
         "clipping": "Sutherland–Hodgman in clip space against all six planes −w ≤ x, y, z ≤ w (near first) and w ≥ 1e-5; no guard band",
         "rasterization": format!("vertices snapped to 1/{} pixel; edge functions on integers; top-left fill rule; counter-clockwise is front", 1 << SUBPIXEL_BITS),
         "barycentrics": "bary_affine = screen-space λ; bary_perspective = (λ_i/w_i)/Σ(λ_k/w_k); both relative to the original triangle's vertices",
-        "multisampling": "standard sample patterns (1, rotated-grid 4, 8, 16); colour evaluated once per pixel and triangle at the pixel centre; pixel = mean of its samples",
+        "multisampling": "standard sample patterns (1, rotated-grid 4, 8, 16), Direct3D's numbers taken with y up as Mesa's llvmpipe takes them; colour evaluated once per pixel and triangle at the pixel centre; pixel = mean of its samples",
     })
 }
 

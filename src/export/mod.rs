@@ -126,6 +126,11 @@ pub fn encode_capture(capture: &FrameCapture, opts: &ExportOptions) -> Result<Ve
         description: "16-bit grey = round(65535·z_w), window depth with no stretching".into(),
         bytes,
     });
+    files.push(ExportFile {
+        name: "depth.pfm".into(),
+        description: "window depth z_w as 32-bit floats, exactly (Portable Float Map, one channel, little-endian, rows bottom to top)".into(),
+        bytes: capture.depth_pfm(),
+    });
     let zoom = if opts.overlay_zoom == 0 {
         1280u32.div_ceil(capture.width()).clamp(1, 16)
     } else {

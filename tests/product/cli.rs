@@ -2,10 +2,11 @@
 
 use crate::support::{pipelens, repo, text};
 
-const EXPECTED_FILES: [&str; 15] = [
+const EXPECTED_FILES: [&str; 16] = [
     "color.png",
     "depth.png",
     "depth16.png",
+    "depth.pfm",
     "coverage.png",
     "primitive_id.png",
     "bary_perspective.png",
@@ -514,4 +515,42 @@ fn depth16_round_trips_every_pixel_of_the_capture() {
         varied.iter().any(|v| (v >> 8) != (v & 0xff)),
         "values whose two bytes differ, which a swap would change"
     );
+}
+
+/// `depth.pfm` holds every pixel's float window depth bit for bit: its header names the size and
+/// little-endian order, and its rows run from the bottom (window order), so window pixel (x, y)
+/// is image row height − 1 − y of the capture.
+#[test]
+fn depth_pfm_holds_the_captures_float_depth_exactly() {
+    let spec = pipelens::lesson::default_scene().expect("the built-in scene");
+    let mut settings = spec.settings;
+    (settings.width, settings.height) = (90, 50);
+    let capture = pipeline::render(&spec.scene, &settings).expect("renders");
+    let dir = tempfile::tempdir().expect("temp dir");
+    let opts = pipelens::export::ExportOptions {
+        out: dir.path().to_path_buf(),
+        overlay_zoom: 1,
+        max_records: 10,
+        pixel: None,
+        cancel: pipelens::export::Cancel::default(),
+    };
+    pipelens::export::export_capture(&capture, &opts, &mut |_, _, _| {}).expect("exports");
+    let bytes = std::fs::read(dir.path().join("depth.pfm")).expect("depth.pfm written");
+    let header = b"Pf\n90 50\n-1.0\n";
+    assert_eq!(&bytes[..header.len()], header);
+    let floats: Vec<f32> = bytes[header.len()..]
+        .chunks_exact(4)
+        .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+        .collect();
+    assert_eq!(floats.len(), 90 * 50);
+    let mut distinct = std::collections::BTreeSet::new();
+    for y in 0..50usize {
+        for x in 0..90usize {
+            let want = capture.pixels.depth[(49 - y) * 90 + x];
+            let got = floats[y * 90 + x];
+            assert_eq!(got.to_bits(), want.to_bits(), "window pixel ({x}, {y})");
+            distinct.insert(got.to_bits());
+        }
+    }
+    assert!(distinct.len() > 50, "a scene with many depths");
 }

@@ -1,0 +1,244 @@
+#!/usr/bin/env python3
+"""pipelens against Mesa's llvmpipe, pixel by pixel (run by scripts/reference-check.sh).
+
+For every case (mesh, texture, size, samples) it
+1. writes a scene file matching the peer's fixed scene (camera (0,0,3), fovy 45°, near 0.1,
+   far 50, white point light at (4,4,4) without attenuation, ka 0.05, kd 0.7, ks 0.5,
+   shininess 64, black background) and exports it with `pipelens export`;
+2. renders the same mesh on llvmpipe with the model, view and projection matrices of pipelens'
+   own capture.json, the peer's own OBJ reader and its own vertex normals (the plain average of
+   the unit face normals around each position), and its shaders (render.py's VS and FS);
+3. compares: coverage (samples covered per pixel), window depth (the mean of the pixel's sample
+   depths, as pipelens resolves it) and colour.
+
+A textured case differs from the peer's defaults in one uniform: the peer adds ka unmultiplied
+(ka + texel·(n·l) + …) while pipelens multiplies ka by the surface colour (ka·c·I_a), as the course
+notes write the ambient term; both renderers get ka = 0 there, so the two ambient terms agree.
+
+Exit status 1 when any figure misses its bound; a peer that cannot be set up is a failure too.
+"""
+import argparse, json, os, subprocess, sys, tempfile
+import numpy as np
+from PIL import Image
+
+COVERAGE_MAX = 0          # differing pixels allowed (1 and 4 samples: the same pattern)
+DEPTH_MAX = 1e-5          # |Δz_w|, float on both sides
+COLOR_TOL = 2 / 255       # per channel
+COLOR_SHARE = 0.999       # share of covered pixels within COLOR_TOL
+
+MEAN_DEPTH_FS = """#version 330
+uniform sampler2DMS depth_ms; uniform int samples;
+out vec2 result;
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  float sum = 0.0; float covered = 0.0;
+  for (int i = 0; i < samples; ++i) {
+    float d = texelFetch(depth_ms, p, i).r;
+    sum += d; covered += d < 1.0 ? 1.0 : 0.0;
+  }
+  result = vec2(sum / float(samples), covered);
+}"""
+QUAD_VS = """#version 330
+in vec2 in_pos;
+void main() { gl_Position = vec4(in_pos, 0.0, 1.0); }"""
+
+
+def scene_toml(mesh, texture, size, samples, ka):
+    w, h = size
+    obj = [f'name = "subject"', f'mesh = "{mesh}"', "fit = true", "color = [1.0, 1.0, 1.0]",
+           f"material = {{ ka = {ka}, kd = {1.0 if texture else 0.7}, ks = 0.5, shininess = 64 }}"]
+    if texture:
+        obj.append(f'texture = "{texture}"')
+    return f"""[scene.camera]
+eye = [0.0, 0.0, 3.0]
+at = [0.0, 0.0, 0.0]
+up = [0.0, 1.0, 0.0]
+[scene.projection]
+fovy = 45
+near = 0.1
+far = 50.0
+[scene.render]
+width = {w}
+height = {h}
+samples = {samples}
+background = [0.0, 0.0, 0.0]
+shading = "phong"
+filter = "bilinear"
+mipmap = "linear"
+[[scene.lights]]
+kind = "ambient"
+intensity = 1.0
+[[scene.lights]]
+kind = "point"
+position = [4.0, 4.0, 4.0]
+[[scene.objects]]
+""" + "\n".join(obj) + "\n"
+
+
+def fit_f32(p):
+    """pipelens' Mesh::fit_unit_sphere in f32: p' = (p − c)/r, c the bounding box's centre."""
+    p = p.astype(np.float32)
+    c = (p.min(0) + p.max(0)) / np.float32(2)
+    d = p - c
+    r = np.sqrt(d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1] + d[:, 2] * d[:, 2]).max()
+    return (d * (np.float32(1) / r)).astype(np.float32)
+
+
+class Peer:
+    def __init__(self, peer_dir):
+        sys.path.insert(0, peer_dir)
+        import moderngl, render  # the peer's own module: its OBJ reader and shaders
+        self.gl, self.render = moderngl, render
+        self.ctx = moderngl.create_standalone_context(backend="egl")
+        self.renderer = self.ctx.info["GL_RENDERER"]
+        self.prog = self.ctx.program(vertex_shader=render.VS, fragment_shader=render.FS)
+        self.mean = self.ctx.program(vertex_shader=QUAD_VS, fragment_shader=MEAN_DEPTH_FS)
+        quad = np.array([-1, -1, 1, -1, -1, 1, 1, 1], dtype="f4")
+        self.quad = self.ctx.vertex_array(self.mean, [(self.ctx.buffer(quad.tobytes()), "2f", "in_pos")])
+        self.meshes = {}
+
+    def mesh(self, obj):
+        if obj not in self.meshes:
+            verts, ntris = self.render.load_obj(obj)
+            verts = verts.copy()
+            verts[:, :3] = fit_f32(verts[:, :3])
+            self.meshes[obj] = (self.ctx.buffer(verts.tobytes()), ntris)
+        return self.meshes[obj]
+
+    def draw(self, obj, texture, size, samples, model, view, proj, ka):
+        """Colour (h×w×3 uint8, image rows), mean sample depth and covered samples (h×w)."""
+        gl, ctx, prog = self.gl, self.ctx, self.prog
+        w, h = size
+        vbo, _ = self.mesh(obj)
+        eye = np.linalg.inv(view)[:3, 3]
+        prog["mvp"].write((proj @ view @ model).T.astype("f4").tobytes())
+        prog["model"].write(model.T.astype("f4").tobytes())
+        prog["normal_matrix"].write(np.linalg.inv(model[:3, :3]).astype("f4").tobytes())
+        prog["eye"].value = tuple(eye); prog["light_pos"].value = (4.0, 4.0, 4.0); prog["light_color"].value = (1, 1, 1)
+        prog["ka"].value = (ka,) * 3; prog["kd"].value = (0.7,) * 3; prog["ks"].value = (0.5,) * 3
+        prog["shininess"].value = 64.0
+        prog["use_tex"].value = bool(texture)
+        if texture:
+            img = Image.open(texture).convert("RGBA").transpose(Image.FLIP_TOP_BOTTOM)
+            tex = ctx.texture(img.size, 4, img.tobytes())
+            tex.build_mipmaps(); tex.filter = (gl.LINEAR_MIPMAP_LINEAR, gl.LINEAR)
+            tex.use(0); prog["tex"].value = 0
+        vao = ctx.vertex_array(prog, [(vbo, "3f 3f 2f", "in_pos", "in_nrm", "in_uv")])
+        n = max(samples, 1)
+        color = ctx.texture((w, h), 4, samples=n if samples > 1 else 0)
+        depth = ctx.depth_texture((w, h), samples=n if samples > 1 else 0)
+        fbo = ctx.framebuffer(color_attachments=[color], depth_attachment=depth)
+        ctx.enable(gl.DEPTH_TEST)
+        fbo.use(); fbo.clear(0.0, 0.0, 0.0, 1.0, depth=1.0); vao.render(gl.TRIANGLES)
+        if samples > 1:
+            resolved = ctx.framebuffer(color_attachments=[ctx.texture((w, h), 4)])
+            ctx.copy_framebuffer(resolved, fbo)
+            rgb = np.frombuffer(resolved.read(components=3), np.uint8).reshape(h, w, 3)
+            out = ctx.framebuffer(color_attachments=[ctx.texture((w, h), 2, dtype="f4")])
+            out.use(); ctx.disable(gl.DEPTH_TEST)
+            depth.use(1); self.mean["depth_ms"].value = 1; self.mean["samples"].value = n
+            self.quad.render(gl.TRIANGLE_STRIP)
+            both = np.frombuffer(out.read(components=2, dtype="f4"), np.float32).reshape(h, w, 2)
+            z, covered = both[..., 0], both[..., 1].round().astype(np.int32)
+            for o in (resolved, out):
+                o.release()
+        else:
+            rgb = np.frombuffer(fbo.read(components=3), np.uint8).reshape(h, w, 3)
+            z = np.frombuffer(fbo.read(components=1, attachment=-1, dtype="f4"), np.float32).reshape(h, w)
+            covered = (z < 1.0).astype(np.int32)
+        ctx.finish()
+        for o in (fbo, color, depth, vao):
+            o.release()
+        return rgb[::-1], z[::-1], covered[::-1]
+
+
+def read_pfm(path):
+    """A one-channel Portable Float Map as image rows (top first)."""
+    data = open(path, "rb").read()
+    magic, size, scale, rest = data.split(b"\n", 3)
+    assert magic == b"Pf", f"{path}: not a one-channel PFM"
+    w, h = (int(v) for v in size.split())
+    order = "<f4" if float(scale) < 0 else ">f4"
+    return np.frombuffer(rest, dtype=order, count=w * h).reshape(h, w)[::-1]
+
+
+def matrix(capture, key):
+    m = capture["matrices"][key]
+    return np.array(m[0]["matrix"] if isinstance(m, list) else m["matrix"], dtype=np.float64)
+
+
+def run_case(pipelens, peer, work, case, size, samples):
+    name, mesh, texture = case
+    ka = 0.0 if texture else 0.05
+    tag = f"{name}-{size[0]}x{size[1]}-{samples}".replace(" ", "_").replace("+", "")
+    scene = os.path.join(work, tag + ".toml")
+    with open(scene, "w") as f:
+        f.write(scene_toml(mesh, texture, size, samples, ka))
+    out = os.path.join(work, tag)
+    subprocess.run([pipelens, "export", scene, "--out", out], check=True, stdout=subprocess.DEVNULL)
+    cap = json.load(open(os.path.join(out, "capture.json")))
+    model = matrix(cap, "models")
+    view, proj = matrix(cap, "view"), matrix(cap, "projection")
+    rgb_p, z_p, cov_p = peer.draw(mesh, texture, size, samples, model, view, proj, ka)
+    rgb_l = np.asarray(Image.open(os.path.join(out, "color.png")).convert("RGB"))
+    z_l = read_pfm(os.path.join(out, "depth.pfm"))
+    cov_l = np.rint(np.asarray(Image.open(os.path.join(out, "coverage.png")).convert("L"), dtype=np.float64)
+                    * max(samples, 1) / 255.0).astype(np.int32)
+    coverage_diff = int((cov_l != cov_p).sum())
+    both = (cov_l > 0) & (cov_p > 0)
+    full = (cov_l == max(samples, 1)) & (cov_p == max(samples, 1))
+    dz = np.abs(z_l[full].astype(np.float64) - z_p[full])
+    depth_max = float(dz.max()) if dz.size else 0.0
+    dc = np.abs(rgb_l.astype(np.int32) - rgb_p.astype(np.int32)).max(axis=2)[cov_l.astype(bool) | cov_p.astype(bool)]
+    share = float((dc <= 2).mean()) if dc.size else 1.0
+    ok = coverage_diff <= COVERAGE_MAX and depth_max <= DEPTH_MAX and share >= COLOR_SHARE
+    return dict(case=name, size=f"{size[0]}×{size[1]}", samples=samples, covered=int(both.sum()),
+                coverage_diff=coverage_diff, depth_max=depth_max, color_share=share,
+                color_max=int(dc.max()) if dc.size else 0, ok=ok)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--pipelens", required=True)
+    ap.add_argument("--peer", required=True, help="the folder of the peer's render.py")
+    ap.add_argument("--data", required=True, help="../shared/data")
+    ap.add_argument("--work", default=None, help="where the exports go (a temporary folder when omitted)")
+    a = ap.parse_args()
+    m = os.path.join(os.path.abspath(a.data), "models")
+    cases = [
+        ("bunny", f"{m}/stanford-bunny.obj", None),
+        ("Spot", f"{m}/spot/spot_triangulated.obj", None),
+        ("Spot + texture, trilinear", f"{m}/spot/spot_triangulated.obj", f"{m}/spot/spot_texture.png"),
+        ("cow", f"{m}/cow.obj", None),
+        ("A2 two triangles", os.path.join(os.path.abspath(a.data), "scenes/games101_a2_two_triangles.obj"), None),
+    ]
+    for _, mesh, tex in cases:
+        for f in (mesh, tex):
+            if f and not os.path.exists(f):
+                sys.exit(f"reference check: {f} is missing (the shared data folder)")
+    peer = Peer(a.peer)
+    work = a.work or tempfile.mkdtemp(prefix="pipelens-reference-")
+    os.makedirs(work, exist_ok=True)
+    rows = []
+    print(f"pipelens vs {peer.renderer}; bounds: coverage differing pixels ≤ {COVERAGE_MAX}, "
+          f"|Δz_w| ≤ {DEPTH_MAX:g} (pixels whose samples are all covered), "
+          f"colour within 2/255 on ≥ {COLOR_SHARE:.1%} of covered pixels")
+    head = f"| {'case':<26} | {'size':>9} | samples | covered px | coverage ≠ | max |Δz_w| | colour ≤ 2/255 | max Δ | |"
+    print(head); print("|" + "|".join("-" * (len(c)) for c in head.split("|")[1:-1]) + "|")
+    for case in cases:
+        for size in ((800, 600), (1280, 720)):
+            for samples in (1, 4):
+                r = run_case(a.pipelens, peer, work, case, size, samples)
+                rows.append(r)
+                print(f"| {r['case']:<26} | {r['size']:>9} | {r['samples']:>7} | {r['covered']:>10} | "
+                      f"{r['coverage_diff']:>10} | {r['depth_max']:>11.2e} | {r['color_share']:>14.4%} | "
+                      f"{r['color_max']:>5} | {'ok' if r['ok'] else 'FAIL'} |", flush=True)
+    failed = [r for r in rows if not r["ok"]]
+    if failed:
+        print(f"reference check FAILED: {len(failed)} of {len(rows)} cases miss a bound")
+        sys.exit(1)
+    print(f"reference check passed: {len(rows)} cases")
+
+
+if __name__ == "__main__":
+    main()
