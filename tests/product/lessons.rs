@@ -33,8 +33,8 @@ fn every_lesson_loads_and_every_step_renders() {
         let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("");
         assert_eq!(lesson.id, name, "the id is the file name");
         assert!(
-            (4..=10).contains(&lesson.steps.len()),
-            "{name}: {} steps",
+            (5..=12).contains(&lesson.steps.len()),
+            "{name}: {} steps (a lesson has 5 to 12)",
             lesson.steps.len()
         );
         for k in 0..lesson.steps.len() {
@@ -51,6 +51,59 @@ fn every_lesson_loads_and_every_step_renders() {
                 );
             }
         }
+    }
+}
+
+/// The course's pedagogy, lesson by lesson: at least two questions, each with an answer in both
+/// languages; one of them asked before an animation ("predict, then watch": on a step that
+/// animates, worded as a prediction in both languages); one of them a computation (its answer
+/// works numbers through an equation).
+#[test]
+fn every_lesson_asks_a_prediction_and_a_computation() {
+    for path in lesson_files() {
+        let Document::Lesson(lesson) = load_file(&path).unwrap_or_else(|e| panic!("{e}")) else {
+            panic!("{} is not a lesson", path.display());
+        };
+        let name = &lesson.id;
+        let asked: Vec<_> = lesson
+            .steps
+            .iter()
+            .filter_map(|s| Some((s, s.question.as_ref()?)))
+            .collect();
+        assert!(asked.len() >= 2, "{name}: {} question(s)", asked.len());
+        for (step, q) in &asked {
+            let a = step
+                .answer
+                .as_ref()
+                .unwrap_or_else(|| panic!("{name}: `{}` has no answer", q.en));
+            for text in [&q.en, &q.zh, &a.en, &a.zh] {
+                assert!(!text.trim().is_empty(), "{name}: an empty question or answer");
+            }
+        }
+        let predictions: Vec<_> = asked
+            .iter()
+            .filter(|(_, q)| q.en.starts_with("Predict") || q.zh.contains("预测"))
+            .collect();
+        assert!(!predictions.is_empty(), "{name}: no question asks for a prediction");
+        for (step, q) in &predictions {
+            assert!(
+                !step.animate.is_empty(),
+                "{name}: the prediction `{}` is not on a step that animates",
+                q.en
+            );
+            assert!(
+                q.en.starts_with("Predict") && q.zh.contains("预测"),
+                "{name}: `{}` is worded as a prediction in one language only",
+                q.en
+            );
+        }
+        let computed = asked.iter().any(|(s, _)| {
+            s.answer.as_ref().is_some_and(|a| {
+                let digits = a.en.chars().filter(char::is_ascii_digit).count();
+                a.en.contains('=') && digits >= 4 && a.zh.contains('=')
+            })
+        });
+        assert!(computed, "{name}: no question is worked out in numbers");
     }
 }
 
