@@ -284,6 +284,9 @@ fn buffer_with_shapes(
     if !arrows.is_empty() {
         legend(&mut img, &lighting_legend(lang));
     }
+    for l in &capture.labels {
+        centred_label(&mut img, l.image[0] * z, l.image[1] * z, &l.text);
+    }
     if kind == BufferKind::MipLevel {
         mip_legend(&mut img, lang);
     }
@@ -367,6 +370,15 @@ fn legend(img: &mut RgbaImage, lines: &[&str]) {
 }
 
 /// Darkens a rectangle to 30 % (a box behind words over a picture).
+/// White text on a darkened box centred at `(cx, cy)`, as the app writes a mesh's labels.
+fn centred_label(img: &mut RgbaImage, cx: f32, cy: f32, label: &str) {
+    const SIZE: f32 = 20.0;
+    let w = text::width(label, SIZE);
+    let (x, y) = ((cx - w / 2.0 - 4.0).max(0.0), (cy - 14.0).max(0.0));
+    darken(img, x as u32, y as u32, (w + 8.0) as u32, 28);
+    text::draw(img, x + 4.0, y + 21.0, SIZE, [255, 255, 255], label);
+}
+
 fn darken(img: &mut RgbaImage, x: u32, y: u32, w: u32, h: u32) {
     for py in y..(y + h).min(img.height()) {
         for px in x..(x + w).min(img.width()) {

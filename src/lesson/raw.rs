@@ -241,6 +241,8 @@ pub struct RawMeshTable {
     pub points: Option<Vec<[f64; 2]>>,
     /// A Bézier curve's parameter, 0…1.
     pub t: Option<f64>,
+    /// How many levels of a Bézier curve's de Casteljau construction are drawn, 0…3.
+    pub levels: Option<i64>,
 }
 
 /// One number for all three components, or three, as written (scales, intensities, coefficients).

@@ -77,14 +77,20 @@ fn every_lesson_asks_a_prediction_and_a_computation() {
                 .as_ref()
                 .unwrap_or_else(|| panic!("{name}: `{}` has no answer", q.en));
             for text in [&q.en, &q.zh, &a.en, &a.zh] {
-                assert!(!text.trim().is_empty(), "{name}: an empty question or answer");
+                assert!(
+                    !text.trim().is_empty(),
+                    "{name}: an empty question or answer"
+                );
             }
         }
         let predictions: Vec<_> = asked
             .iter()
             .filter(|(_, q)| q.en.starts_with("Predict") || q.zh.contains("预测"))
             .collect();
-        assert!(!predictions.is_empty(), "{name}: no question asks for a prediction");
+        assert!(
+            !predictions.is_empty(),
+            "{name}: no question asks for a prediction"
+        );
         for (step, q) in &predictions {
             assert!(
                 !step.animate.is_empty(),

@@ -324,8 +324,9 @@ const OBJECT_PARAMS: [&str; 11] = [
     "normals",
 ];
 
-/// The parameters a built-in Bézier curve adds: its control points and the drawn `t`.
-const BEZIER_PARAMS: [&str; 5] = ["t", "p0", "p1", "p2", "p3"];
+/// The parameters a built-in Bézier curve adds: its control points, the drawn `t` and how many
+/// levels of the construction are drawn.
+const BEZIER_PARAMS: [&str; 6] = ["t", "p0", "p1", "p2", "p3", "levels"];
 
 /// `objects.NAME.p`: the object's transform, colour, material, or its built-in shape.
 fn object_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(), Problem> {
@@ -377,8 +378,13 @@ fn object_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(
             }
             o.material.shininess = x;
         }
-        "t" | "p0" | "p1" | "p2" | "p3" => {
-            let Some(pipeline::mesh::BuiltinMesh::Bezier { mut points, mut t }) = o.builtin else {
+        "t" | "p0" | "p1" | "p2" | "p3" | "levels" => {
+            let Some(pipeline::mesh::BuiltinMesh::Bezier {
+                mut points,
+                mut t,
+                mut levels,
+            }) = o.builtin
+            else {
                 return Err(Problem::Unknown);
             };
             if p == "t" {
@@ -386,11 +392,17 @@ fn object_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(
                 if !(0.0..=1.0).contains(&t) {
                     return Err(format!("t must be from 0 to 1, got {t}").into());
                 }
+            } else if p == "levels" {
+                let n = number(v)?;
+                if !matches!(n, 0.0 | 1.0 | 2.0 | 3.0) {
+                    return Err(format!("levels is 0, 1, 2 or 3, got {n}").into());
+                }
+                levels = n as u8;
             } else {
                 let k = usize::from(p.as_bytes()[1] - b'0');
                 points[k] = vec3(v)?.truncate();
             }
-            let shape = pipeline::mesh::BuiltinMesh::Bezier { points, t };
+            let shape = pipeline::mesh::BuiltinMesh::Bezier { points, t, levels };
             o.builtin = Some(shape);
             o.mesh = std::sync::Arc::new(shape.build());
         }

@@ -210,6 +210,7 @@ fn mesh(
             repeat: None,
             points: None,
             t: None,
+            levels: None,
         },
         RawMesh::Table(t) => t,
     };
@@ -226,7 +227,7 @@ fn mesh(
     }
 }
 
-/// `{ builtin = "bezier", points = [[x, y] × 4], t = … }`.
+/// `{ builtin = "bezier", points = [[x, y] × 4], t = …, levels = … }`.
 fn bezier(c: &mut Checker<'_>, span: Range<usize>, t: &RawMeshTable) -> Option<BuiltinMesh> {
     let points = t.points.as_deref().unwrap_or(&[]);
     let finite = points
@@ -258,10 +259,21 @@ fn bezier(c: &mut Checker<'_>, span: Range<usize>, t: &RawMeshTable) -> Option<B
         );
         return None;
     }
+    let levels = t.levels.unwrap_or(3);
+    let Ok(levels @ 0..=3) = u8::try_from(levels) else {
+        c.error(
+            span,
+            format!(
+                "`levels` of a bezier mesh is how many de Casteljau levels are drawn, 0 to 3; got {levels}"
+            ),
+        );
+        return None;
+    };
     let v = |p: &[f64; 2]| glam::Vec2::new(p[0] as f32, p[1] as f32);
     Some(BuiltinMesh::Bezier {
         points: [v(a), v(b), v(d), v(e)],
         t: param as f32,
+        levels,
     })
 }
 

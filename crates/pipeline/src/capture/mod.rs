@@ -111,6 +111,52 @@ pub struct ObjectSummary {
     pub reflectivity: Option<f32>,
 }
 
+/// A mesh's label where its point lands in the image (see [`crate::mesh::MeshLabel`]).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ScreenLabel {
+    /// The point in image pixel coordinates (y down).
+    pub image: [f32; 2],
+    /// What is written.
+    pub text: String,
+}
+
+impl Matrices {
+    /// Where the labels of `objects` land in a `width`×`height` image: each label's point through
+    /// `M_viewport·P·V·M_model`, divided by w; labels behind the eye (w ≤ 0) or more than a
+    /// pixel outside the image are left out.
+    #[must_use]
+    pub fn screen_labels(
+        &self,
+        objects: &[crate::scene::Object],
+        width: u32,
+        height: u32,
+    ) -> Vec<ScreenLabel> {
+        let pv = self.projection.matrix * self.view.matrix;
+        let (w, h) = (width as f32, height as f32);
+        objects
+            .iter()
+            .zip(&self.models)
+            .flat_map(|(o, m)| {
+                let mvp = pv * m.matrix;
+                o.mesh.labels.iter().filter_map(move |l| {
+                    let clip = mvp * l.position.extend(1.0);
+                    if clip.w <= 1e-5 {
+                        return None;
+                    }
+                    let win = self.viewport.matrix * (clip / clip.w);
+                    let image = [win.x, h - win.y];
+                    let inside = (-1.0..=w + 1.0).contains(&image[0])
+                        && (-1.0..=h + 1.0).contains(&image[1]);
+                    inside.then(|| ScreenLabel {
+                        image,
+                        text: l.text.clone(),
+                    })
+                })
+            })
+            .collect()
+    }
+}
+
 /// Everything one frame did.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FrameCapture {
@@ -146,6 +192,8 @@ pub struct FrameCapture {
     pub samples: SampleBuffers,
     /// Per-pixel buffers.
     pub pixels: PixelBuffers,
+    /// The meshes' labels where they land in the image.
+    pub labels: Vec<ScreenLabel>,
 }
 
 impl FrameCapture {

@@ -7,7 +7,7 @@ use std::f32::consts::{PI, TAU};
 use glam::{Vec2, Vec3};
 use serde::Serialize;
 
-use super::{Mesh, NormalAveraging};
+use super::{Mesh, MeshLabel, NormalAveraging};
 use crate::bezier;
 
 /// The built-in meshes, generated in code so that the product needs no files.
@@ -56,6 +56,8 @@ pub enum BuiltinMesh {
         points: [glam::Vec2; 4],
         /// The curve parameter, 0…1.
         t: f32,
+        /// How many levels of de Casteljau's construction are drawn, 0…3 (3: down to b(t)).
+        levels: u8,
     },
 }
 
@@ -87,7 +89,7 @@ impl BuiltinMesh {
                 segments,
                 sides,
             } => torus(minor.clamp(0.01, 0.99), segments.max(3), sides.max(3)),
-            Self::Bezier { points, t } => construction_mesh(points, t),
+            Self::Bezier { points, t, levels } => construction_mesh(points, t, levels),
         }
     }
 }
@@ -108,6 +110,7 @@ fn triangle() -> Mesh {
         ],
         colors: vec![Vec3::X, Vec3::Y, Vec3::Z],
         indices: vec![[0, 1, 2]],
+        labels: Vec::new(),
     }
 }
 
@@ -128,6 +131,7 @@ fn two_triangles() -> Mesh {
         colors: vec![a, a, a, b, b, b],
         indices: vec![[0, 1, 2], [3, 4, 5]],
         normals: Vec::new(),
+        labels: Vec::new(),
     };
     mesh.compute_vertex_normals(NormalAveraging::Plain);
     mesh
@@ -321,11 +325,14 @@ const WHOLE_CURVE: Vec3 = Vec3::new(0.55, 0.32, 0.3);
 
 /// Builds the drawing of a cubic's construction at `t`, all in the plane z = 0 (each part a
 /// little in front of the one before, so the depth test layers them): the whole curve faintly,
-/// the control polygon, the lines of each de Casteljau level, the curve from 0 to `t`, and
-/// squares at the control points, the intermediate points and `b(t)`.
+/// the control polygon, the lines of the first `levels` de Casteljau levels (0…3), and squares
+/// at the control points and those levels' points. With all three levels drawn, the curve from
+/// 0 to `t` and `b(t)`. Labels name the control points `P0…P3` and give `t` beside the first
+/// interpolated point (one level) or beside `b(t)` (all three).
 #[must_use]
-pub fn construction_mesh(points: [Vec2; 4], t: f32) -> Mesh {
+pub fn construction_mesh(points: [Vec2; 4], t: f32, levels: u8) -> Mesh {
     let t = t.clamp(0.0, 1.0);
+    let drawn = usize::from(levels.min(3));
     let mut m = Mesh {
         name: "bezier".into(),
         ..Mesh::default()
@@ -339,18 +346,20 @@ pub fn construction_mesh(points: [Vec2; 4], t: f32) -> Mesh {
     polyline(&mut m, &samples(1.0), 0.01, 0.0, WHOLE_CURVE);
     polyline(&mut m, &points, 0.018, 0.001, POLYGON);
     let levels = bezier::de_casteljau(&points, t);
+    let levels = &levels[..=drawn.min(levels.len() - 1)];
     for (k, level) in levels.iter().enumerate().skip(1) {
         let color = LEVELS[(k - 1).min(2)];
         polyline(&mut m, level, 0.016, 0.002, color);
     }
-    if t > 0.0 {
+    if t > 0.0 && drawn == 3 {
         polyline(&mut m, &samples(t), 0.035, 0.003, CURVE);
     }
     for p in points {
         square(&mut m, p, 0.05, 0.004, Vec3::ONE);
     }
+    label_construction(&mut m, &points, levels, t);
     for (k, level) in levels.iter().enumerate().skip(1) {
-        let last = k == levels.len() - 1;
+        let last = level.len() == 1;
         for p in level {
             let (size, color) = if last {
                 (0.075, LEVELS[2])
@@ -362,6 +371,33 @@ pub fn construction_mesh(points: [Vec2; 4], t: f32) -> Mesh {
     }
     m.normals = vec![Vec3::Z; m.positions.len()];
     m
+}
+
+/// The labels of a construction: each control point's name beside it, on the side away from
+/// the polygon's centre, and the parameter beside the deepest point drawn (`b(t)` when the
+/// construction is complete).
+fn label_construction(m: &mut Mesh, points: &[Vec2; 4], levels: &[Vec<Vec2>], t: f32) {
+    let centre = points.iter().copied().sum::<Vec2>() / 4.0;
+    let away = |p: Vec2| Vec2::new(if p.x < centre.x { -0.13 } else { 0.13 }, 0.0);
+    for (i, p) in points.iter().enumerate() {
+        m.labels.push(MeshLabel {
+            position: (*p + away(*p)).extend(0.0),
+            text: format!("P{i}"),
+        });
+    }
+    let Some(last) = levels.last().filter(|_| levels.len() > 1) else {
+        return;
+    };
+    let text = if last.len() == 1 {
+        format!("b(t), t = {t:.2}")
+    } else {
+        format!("t = {t:.2}")
+    };
+    let p = last[0];
+    m.labels.push(MeshLabel {
+        position: (p + Vec2::new(0.06, -0.1)).extend(0.0),
+        text,
+    });
 }
 
 /// A strip of quads of width `w` along `pts`, at depth `z`.

@@ -39,6 +39,18 @@ pub struct Mesh {
     pub colors: Vec<Vec3>,
     /// Triangles as three vertex indices, counter-clockwise seen from the front.
     pub indices: Vec<[u32; 3]>,
+    /// Names written beside points of the mesh (a Bézier curve's P0…P3 and b(t)); the views
+    /// draw them where the points land in the image.
+    pub labels: Vec<MeshLabel>,
+}
+
+/// A text written beside a point of a mesh, in object coordinates.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshLabel {
+    /// The point, in object (model) coordinates.
+    pub position: Vec3,
+    /// What is written.
+    pub text: String,
 }
 
 /// Why a mesh could not be loaded.

@@ -160,6 +160,7 @@ fn render_stages(
     let pixels = resolve(&ctx, spare_pixels);
     times.resolve = t.elapsed();
 
+    let labels = matrices.screen_labels(&scene.objects, width, height);
     let capture = FrameCapture {
         settings: *settings,
         camera: scene.camera,
@@ -202,6 +203,7 @@ fn render_stages(
         triangles,
         samples,
         pixels,
+        labels,
     };
     Ok((capture, times))
 }

@@ -51,7 +51,14 @@ fn the_construction_mesh_draws_each_part() {
         Vec2::new(0.6, 0.9),
         Vec2::new(1.0, -0.4),
     ];
-    let at = |t: f32| BuiltinMesh::Bezier { points, t }.build();
+    let at = |t: f32| {
+        BuiltinMesh::Bezier {
+            points,
+            t,
+            levels: 3,
+        }
+        .build()
+    };
     // More of the curve is drawn as t grows; every vertex lies in z ∈ [0, 0.005] and the
     // point b(t) is at the centre of one of the squares.
     assert!(at(0.9).indices.len() > at(0.1).indices.len());
@@ -63,5 +70,77 @@ fn the_construction_mesh_draws_each_part() {
             .chunks(4)
             .any(|q| (q.iter().map(|p| p.truncate()).sum::<Vec2>() / 4.0 - b).length() < 1e-5),
         "a square at b(t)"
+    );
+}
+
+/// `levels` draws that many levels of the construction: none shows the control points and the
+/// polygon only (labelled P0…P3), one adds the three first-level points with `t` written beside
+/// the first, three ends at b(t) with its label; the labels land on the screen in the capture.
+#[test]
+fn the_construction_draws_the_levels_asked_for_and_labels_them() {
+    use pipeline::mesh::BuiltinMesh;
+    let points = [
+        Vec2::new(-1.0, -0.5),
+        Vec2::new(-0.5, 0.8),
+        Vec2::new(0.6, 0.9),
+        Vec2::new(1.0, -0.4),
+    ];
+    let build = |levels: u8| {
+        BuiltinMesh::Bezier {
+            points,
+            t: 0.3,
+            levels,
+        }
+        .build()
+    };
+    let texts =
+        |m: &pipeline::mesh::Mesh| m.labels.iter().map(|l| l.text.clone()).collect::<Vec<_>>();
+    let none = build(0);
+    assert_eq!(texts(&none), ["P0", "P1", "P2", "P3"]);
+    let one = build(1);
+    assert_eq!(texts(&one)[4], "t = 0.30");
+    let first = points[0].lerp(points[1], 0.3);
+    assert!(
+        (one.labels[4].position.truncate() - first).length() < 0.2,
+        "beside P_0¹"
+    );
+    let all = build(3);
+    assert_eq!(texts(&all)[4], "b(t), t = 0.30");
+    assert!(none.indices.len() < one.indices.len() && one.indices.len() < all.indices.len());
+    // Rendered: each label projected to the image, inside it.
+    let mut object = pipeline::scene::Object::new("curve", all);
+    object.color = pipeline::scene::ColorSource::Uniform(glam::Vec3::ONE);
+    let scene = pipeline::scene::Scene {
+        objects: vec![object],
+        camera: pipeline::camera::Camera {
+            eye: glam::Vec3::new(0.0, 0.0, 5.0),
+            at: glam::Vec3::ZERO,
+            up: glam::Vec3::Y,
+        },
+        projection: pipeline::camera::Projection::Ortho {
+            left: -1.5,
+            right: 1.5,
+            bottom: -1.0,
+            top: 1.0,
+            near: 1.0,
+            far: 10.0,
+        },
+        lights: Vec::new(),
+        shadow: None,
+        figures: Vec::new(),
+    };
+    let settings = pipeline::settings::RenderSettings {
+        width: 300,
+        height: 200,
+        ..Default::default()
+    };
+    let capture = pipeline::render(&scene, &settings).expect("renders");
+    assert_eq!(capture.labels.len(), 5);
+    // P0 = (−1, −0.5) is labelled 0.13 to its left: x_w = (−1.13 + 1.5)/3·300 = 37,
+    // y_w = (−0.5 + 1)·200/2 = 50, image row 200 − 50 = 150.
+    let p0 = &capture.labels[0];
+    assert!(
+        (p0.image[0] - 37.0).abs() < 0.01 && (p0.image[1] - 150.0).abs() < 0.01,
+        "{p0:?}"
     );
 }

@@ -61,6 +61,7 @@ fn mesh_of(positions: Vec<Vec3>, colors: Vec<Vec3>, indices: Vec<[u32; 3]>) -> M
         uvs: Vec::new(),
         colors,
         indices,
+        labels: Vec::new(),
     }
 }
 

@@ -100,6 +100,7 @@ pub(crate) fn quad_mesh() -> Mesh {
         ],
         colors: Vec::new(),
         indices: vec![[0, 1, 2], [0, 2, 3]],
+        labels: Vec::new(),
     }
 }
 

@@ -255,6 +255,22 @@ pub(super) fn draw_mip_legend(painter: &egui::Painter, rect: Rect, lang: Lang) {
     }
 }
 
+/// The meshes' labels (a Bézier curve's P0…P3 and t) centred on their points, in the picture's
+/// type, which grows in classroom mode.
+pub(super) fn draw_labels(painter: &egui::Painter, view: &ImageViewport, capture: &FrameCapture) {
+    let font = picture_font(painter.ctx(), 20.0);
+    for l in &capture.labels {
+        crate::app::views::label_with_background(
+            painter,
+            view.to_screen(l.image),
+            egui::Align2::CENTER_CENTER,
+            &l.text,
+            &font,
+            Color32::WHITE,
+        );
+    }
+}
+
 /// The selected vertex (a ring at its window position) and the inspected pixel (a frame).
 pub(super) fn draw_selection(
     painter: &egui::Painter,

@@ -213,6 +213,7 @@ impl PixelView {
         }
         draw::draw_overlays(&painter, &view, capture, &sel.overlays, lang);
         draw::draw_selection(&painter, &view, capture, sel);
+        draw::draw_labels(&painter, &view, capture);
         let record = self.record(session, capture);
         if let Some(r) = &record
             && matches!(
