@@ -222,7 +222,7 @@ pub struct RawBump {
 )]
 pub enum RawMesh {
     Name(String),
-    Table(RawMeshTable),
+    Table(Box<RawMeshTable>),
 }
 
 /// `{ builtin = …, … }` or `{ obj = … }`.
@@ -241,8 +241,14 @@ pub struct RawMeshTable {
     pub points: Option<Vec<[f64; 2]>>,
     /// A Bézier curve's parameter, 0…1.
     pub t: Option<f64>,
-    /// How many levels of a Bézier curve's de Casteljau construction are drawn, 0…3.
+    /// How many levels of a Bézier curve's (0…3) or patch's (0…2) construction are drawn.
     pub levels: Option<i64>,
+    /// A Bézier patch's control point heights, four rows of four.
+    pub heights: Option<Vec<[f64; 4]>>,
+    /// A Bézier patch's parameters, 0…1.
+    pub u: Option<f64>,
+    /// See `u`.
+    pub v: Option<f64>,
 }
 
 /// One number for all three components, or three, as written (scales, intensities, coefficients).

@@ -139,8 +139,11 @@ pub fn names(spec: &SceneSpec) -> Vec<String> {
     .map(str::to_owned)
     .to_vec();
     for o in &spec.scene.objects {
-        let curve = matches!(o.builtin, Some(pipeline::mesh::BuiltinMesh::Bezier { .. }));
-        let own: &[&str] = if curve { &BEZIER_PARAMS } else { &[] };
+        let own: &[&str] = match o.builtin {
+            Some(pipeline::mesh::BuiltinMesh::Bezier { .. }) => &BEZIER_PARAMS,
+            Some(pipeline::mesh::BuiltinMesh::BezierPatch { .. }) => &PATCH_PARAMS,
+            _ => &[],
+        };
         for p in OBJECT_PARAMS.iter().chain(own) {
             out.push(format!("objects.{}.{p}", o.name));
         }
@@ -328,8 +331,64 @@ const OBJECT_PARAMS: [&str; 11] = [
 /// levels of the construction are drawn.
 const BEZIER_PARAMS: [&str; 6] = ["t", "p0", "p1", "p2", "p3", "levels"];
 
+/// The parameters a built-in Bézier patch adds: the constructed point's `u`, `v`, how much of
+/// the construction is drawn, and each control point's height `hIJ` (row I, column J).
+const PATCH_PARAMS: [&str; 19] = [
+    "u", "v", "levels", "h00", "h01", "h02", "h03", "h10", "h11", "h12", "h13", "h20", "h21",
+    "h22", "h23", "h30", "h31", "h32", "h33",
+];
+
+/// `objects.NAME.p` of a Bézier patch: `u`, `v`, `levels` or a height `hIJ`.
+fn patch_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(), Problem> {
+    let Some(pipeline::mesh::BuiltinMesh::BezierPatch {
+        mut heights,
+        u: mut pu,
+        v: mut pv,
+        mut levels,
+    }) = o.builtin
+    else {
+        return Err(Problem::Unknown);
+    };
+    match p.as_bytes() {
+        b"u" | b"v" => {
+            let x = number(v)?;
+            if !(0.0..=1.0).contains(&x) {
+                return Err(format!("{p} must be from 0 to 1, got {x}").into());
+            }
+            *(if p == "u" { &mut pu } else { &mut pv }) = x;
+        }
+        b"levels" => {
+            let n = number(v)?;
+            if !matches!(n, 0.0 | 1.0 | 2.0) {
+                return Err(format!("levels is 0, 1 or 2, got {n}").into());
+            }
+            levels = n as u8;
+        }
+        [b'h', i @ b'0'..=b'3', j @ b'0'..=b'3'] => {
+            heights[usize::from(i - b'0')][usize::from(j - b'0')] = number(v)?;
+        }
+        _ => return Err(Problem::Unknown),
+    }
+    let shape = pipeline::mesh::BuiltinMesh::BezierPatch {
+        heights,
+        u: pu,
+        v: pv,
+        levels,
+    };
+    o.builtin = Some(shape);
+    o.mesh = std::sync::Arc::new(shape.build());
+    Ok(())
+}
+
 /// `objects.NAME.p`: the object's transform, colour, material, or its built-in shape.
 fn object_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(), Problem> {
+    if matches!(
+        o.builtin,
+        Some(pipeline::mesh::BuiltinMesh::BezierPatch { .. })
+    ) && PATCH_PARAMS.contains(&p)
+    {
+        return patch_param(o, p, v);
+    }
     match p {
         "translate" => o.translate = vec3(v)?,
         "rotate" => o.rotate_deg = vec3(v)?,

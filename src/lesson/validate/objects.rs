@@ -211,6 +211,9 @@ fn mesh(
             points: None,
             t: None,
             levels: None,
+            heights: None,
+            u: None,
+            v: None,
         },
         RawMesh::Table(t) => t,
     };
@@ -273,6 +276,65 @@ fn bezier(c: &mut Checker<'_>, span: Range<usize>, t: &RawMeshTable) -> Option<B
     Some(BuiltinMesh::Bezier {
         points: [v(a), v(b), v(d), v(e)],
         t: param as f32,
+        levels,
+    })
+}
+
+/// `{ builtin = "bezier_patch", heights = [[h × 4] × 4], u = …, v = …, levels = … }`.
+fn bezier_patch(c: &mut Checker<'_>, span: Range<usize>, t: &RawMeshTable) -> Option<BuiltinMesh> {
+    let default = [
+        [0.0; 4],
+        [0.0, 1.0, 1.0, 0.0],
+        [0.0, 1.0, 1.0, 0.0],
+        [0.0; 4],
+    ];
+    let rows = t.heights.clone().unwrap_or_else(|| default.to_vec());
+    let Ok(rows) = <[[f64; 4]; 4]>::try_from(rows.as_slice()) else {
+        c.error(
+            span,
+            format!(
+                "a bezier_patch needs `heights` = four rows of four numbers [[h, h, h, h], …], got {} rows",
+                rows.len()
+            ),
+        );
+        return None;
+    };
+    if !rows
+        .iter()
+        .flatten()
+        .all(|h| h.is_finite() && h.abs() <= 1e3)
+    {
+        c.error(
+            span,
+            "the heights must be finite numbers of magnitude at most 1000",
+        );
+        return None;
+    }
+    let mut param = |name: &str, value: Option<f64>| {
+        let x = value.unwrap_or(0.5);
+        if (0.0..=1.0).contains(&x) {
+            Some(x as f32)
+        } else {
+            c.error(
+                span.clone(),
+                format!("`{name}` of a bezier_patch must be from 0 to 1, got {x}"),
+            );
+            None
+        }
+    };
+    let (u, v) = (param("u", t.u)?, param("v", t.v)?);
+    let levels = t.levels.unwrap_or(2);
+    let Ok(levels @ 0..=2) = u8::try_from(levels) else {
+        c.error(
+            span,
+            format!("`levels` of a bezier_patch is 0 (the net), 1 (the rows' curves) or 2 (down to b(u, v)); got {levels}"),
+        );
+        return None;
+    };
+    Some(BuiltinMesh::BezierPatch {
+        heights: rows.map(|r| r.map(|h| h as f32)),
+        u,
+        v,
         levels,
     })
 }
@@ -351,6 +413,7 @@ fn builtin(
             sides: count("sides", t.sides, 24, 3, 4096),
         },
         "bezier" => bezier(c, span.clone(), t)?,
+        "bezier_patch" => bezier_patch(c, span.clone(), t)?,
         other => {
             let suggestion = BuiltinMesh::NAMES
                 .iter()

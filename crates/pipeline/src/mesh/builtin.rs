@@ -59,11 +59,25 @@ pub enum BuiltinMesh {
         /// How many levels of de Casteljau's construction are drawn, 0…3 (3: down to b(t)).
         levels: u8,
     },
+    /// A bicubic Bézier patch over the square [−1.2, 1.2]² of the xz plane, its control net and
+    /// the construction of `b(u, v)` (see [`super::patch::patch_mesh`]).
+    BezierPatch {
+        /// The control points' heights (y), row `i` at `z = −1.2 + 0.8·i`, column `j` at
+        /// `x = −1.2 + 0.8·j`.
+        heights: [[f32; 4]; 4],
+        /// The parameters of the constructed point, 0…1.
+        u: f32,
+        /// See `u`.
+        v: f32,
+        /// How much of the construction is drawn: 0 none, 1 the rows' curves in u, 2 also the
+        /// curve in v and `b(u, v)`.
+        levels: u8,
+    },
 }
 
 impl BuiltinMesh {
     /// The names a scene file may use, with their meaning.
-    pub const NAMES: [&'static str; 8] = [
+    pub const NAMES: [&'static str; 9] = [
         "triangle",
         "two_triangles",
         "cube",
@@ -72,6 +86,7 @@ impl BuiltinMesh {
         "cylinder",
         "torus",
         "bezier",
+        "bezier_patch",
     ];
 
     /// Generates the mesh. Parameters below their minimum are raised to it.
@@ -90,6 +105,12 @@ impl BuiltinMesh {
                 sides,
             } => torus(minor.clamp(0.01, 0.99), segments.max(3), sides.max(3)),
             Self::Bezier { points, t, levels } => construction_mesh(points, t, levels),
+            Self::BezierPatch {
+                heights,
+                u,
+                v,
+                levels,
+            } => super::patch::patch_mesh(&heights, u, v, levels),
         }
     }
 }

@@ -6,6 +6,7 @@
 
 mod builtin;
 mod obj;
+pub mod patch;
 
 pub use builtin::BuiltinMesh;
 

@@ -144,3 +144,45 @@ fn the_construction_draws_the_levels_asked_for_and_labels_them() {
         "{p0:?}"
     );
 }
+
+/// A patch by de Casteljau in u then v equals the tensor-product Bernstein form
+/// `Σ_i Σ_j B_i(v)·B_j(u)·P_ij`; its normal is perpendicular to the surface (checked against
+/// finite differences) and points up; lesson 19's worked example: a flat net with its four middle
+/// points at height 1 has b(½, ½) at height (3/4)² = 0.5625.
+#[test]
+fn a_patch_is_the_tensor_product_of_two_cubics() {
+    use glam::Vec3;
+    use pipeline::bezier::patch_point;
+    use pipeline::mesh::patch::control_points;
+    let heights = [
+        [0.0, 0.3, -0.2, 0.1],
+        [0.4, 1.2, 0.8, -0.3],
+        [0.1, 0.9, 1.1, 0.2],
+        [-0.2, 0.2, 0.5, 0.0],
+    ];
+    let rows = control_points(&heights);
+    let tensor = |u: f32, v: f32| -> Vec3 {
+        (0..4)
+            .flat_map(|i| (0..4).map(move |j| (i, j)))
+            .map(|(i, j)| rows[i][j] * bernstein(3, i as u32, v) * bernstein(3, j as u32, u))
+            .sum()
+    };
+    for (u, v) in [(0.0, 0.0), (0.35, 0.65), (0.5, 0.5), (0.9, 0.2), (1.0, 1.0)] {
+        let (_, b, n) = patch_point(&rows, u, v);
+        assert!((b - tensor(u, v)).length() < 1e-5, "b({u}, {v})");
+        assert!(n.y > 0.0, "the normal points up at ({u}, {v})");
+        let h = 1e-3;
+        let du = tensor((u + h).min(1.0), v) - tensor((u - h).max(0.0), v);
+        let dv = tensor(u, (v + h).min(1.0)) - tensor(u, (v - h).max(0.0));
+        assert!(n.dot(du.normalize()).abs() < 1e-2 && n.dot(dv.normalize()).abs() < 1e-2);
+    }
+    let raised = control_points(&[
+        [0.0; 4],
+        [0.0, 1.0, 1.0, 0.0],
+        [0.0, 1.0, 1.0, 0.0],
+        [0.0; 4],
+    ]);
+    let (q, b, _) = patch_point(&raised, 0.5, 0.5);
+    assert!((q[1].y - 0.75).abs() < 1e-6 && q[0].y.abs() < 1e-6);
+    assert!((b.y - 0.5625).abs() < 1e-6, "{}", b.y);
+}
