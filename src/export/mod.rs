@@ -8,7 +8,7 @@ mod json;
 pub mod lesson;
 mod picture;
 mod slides;
-mod text;
+pub mod text;
 
 use std::io::Write;
 use std::path::{Path, PathBuf};

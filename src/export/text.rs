@@ -6,15 +6,19 @@
 use ab_glyph::{Font, FontRef, PxScale, ScaleFont};
 use image::{Rgba, RgbaImage};
 
-/// The fonts, first the one tried first; parsed once.
-fn fonts() -> &'static [FontRef<'static>; 2] {
-    static FONTS: std::sync::OnceLock<[FontRef<'static>; 2]> = std::sync::OnceLock::new();
+/// The fonts, first the one tried first; parsed once. After the CJK font, the fallbacks the app's
+/// egui has too (Hack, Ubuntu Light), so a handout has every glyph the app shows.
+fn fonts() -> &'static [FontRef<'static>; 3] {
+    static FONTS: std::sync::OnceLock<[FontRef<'static>; 3]> = std::sync::OnceLock::new();
     FONTS.get_or_init(|| {
-        // Both are fonts shipped in the binary; a test draws text with each.
-        let cjk = FontRef::try_from_slice(crate::vocabulary::CJK_FONT).expect("the embedded font");
-        let hack =
-            FontRef::try_from_slice(epaint_default_fonts::HACK_REGULAR).expect("egui's Hack");
-        [cjk, hack]
+        // All are fonts shipped in the binary; a test draws text with each.
+        let parse =
+            |bytes: &'static [u8]| FontRef::try_from_slice(bytes).expect("an embedded font");
+        [
+            parse(crate::vocabulary::CJK_FONT),
+            parse(epaint_default_fonts::HACK_REGULAR),
+            parse(epaint_default_fonts::UBUNTU_LIGHT),
+        ]
     })
 }
 
@@ -35,6 +39,12 @@ fn glyph_of(fonts: &[FontRef<'static>], c: char) -> (usize, ab_glyph::GlyphId) {
         .map(|(i, f)| (i, f.glyph_id(c)))
         .find(|(_, g)| g.0 != 0)
         .unwrap_or((0, fonts[0].glyph_id(c)))
+}
+
+/// Whether the embedded fonts have a glyph for `c` (whitespace needs none).
+#[must_use]
+pub fn covers(c: char) -> bool {
+    c.is_whitespace() || glyph_of(fonts(), c).1.0 != 0
 }
 
 /// The width of `text` at `size` pixels.
@@ -164,6 +174,14 @@ pub fn fill(img: &mut RgbaImage, x: u32, y: u32, w: u32, h: u32, color: [u8; 3])
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `covers` answers from the fonts: log₂'s subscript is in Ubuntu Light, a superscript ᵀ in
+    /// none of them (lessons write M^T), so the lesson test that relies on it can fail.
+    #[test]
+    fn coverage_is_looked_up_in_the_fonts() {
+        assert!(covers('₂') && covers('透') && covers('⌊') && covers(' '));
+        assert!(!covers('ᵀ'));
+    }
 
     #[test]
     fn chinese_latin_and_the_symbols_the_cjk_font_lacks_draw_ink() {

@@ -113,6 +113,36 @@ fn every_lesson_asks_a_prediction_and_a_computation() {
     }
 }
 
+/// Every character a lesson writes (titles, narration, questions, answers, in both languages) is
+/// in the embedded fonts, so it prints in handouts and slides as it reads in the app, never as a
+/// box (a superscript ᵀ, for one, is not: write M^T).
+#[test]
+fn every_character_of_every_lesson_is_in_the_embedded_fonts() {
+    for path in lesson_files() {
+        let Document::Lesson(lesson) = load_file(&path).unwrap_or_else(|e| panic!("{e}")) else {
+            panic!("{} is not a lesson", path.display());
+        };
+        let mut texts = vec![&lesson.title, &lesson.summary];
+        for s in &lesson.steps {
+            texts.extend([&s.title, &s.narration]);
+            texts.extend(s.question.iter().chain(&s.answer));
+        }
+        for t in texts {
+            for text in [&t.en, &t.zh] {
+                let missing: String = text
+                    .chars()
+                    .filter(|&c| !pipelens::export::text::covers(c))
+                    .collect();
+                assert!(
+                    missing.is_empty(),
+                    "{}: no glyph for {missing:?} in {text:?}",
+                    lesson.id
+                );
+            }
+        }
+    }
+}
+
 #[test]
 fn the_built_in_lesson_is_the_tour() {
     let lesson = pipelens::lesson::default_lesson().unwrap_or_else(|e| panic!("{e}"));
