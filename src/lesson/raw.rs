@@ -249,6 +249,16 @@ pub struct RawMeshTable {
     pub u: Option<f64>,
     /// See `u`.
     pub v: Option<f64>,
+    /// An implicit surface's shape: sphere, torus, blend, union, intersection, difference.
+    pub shape: Option<String>,
+    /// The distance between an implicit surface's two primitives.
+    pub gap: Option<f64>,
+    /// An implicit blend's smoothing distance.
+    pub smooth: Option<f64>,
+    /// An implicit surface's grid cells per axis.
+    pub resolution: Option<i64>,
+    /// An implicit surface drawn as a cloud of this many points (0: polygonized).
+    pub cloud: Option<i64>,
 }
 
 /// One number for all three components, or three, as written (scales, intensities, coefficients).

@@ -400,13 +400,7 @@ fn an_edited_lesson_reloads_on_the_same_step_and_a_broken_edit_keeps_the_last_go
 /// the embedded font lacks would panic here (the test harness forbids tofu).
 #[test]
 fn every_lesson_step_draws_in_both_languages() {
-    let mut files: Vec<_> = std::fs::read_dir(crate::support::repo().join("lessons"))
-        .expect("lessons/")
-        .map(|e| e.expect("entry").path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-        .collect();
-    files.sort();
-    for path in files {
+    for path in crate::support::lesson_files() {
         let mut h = lesson_harness(Some(path.clone()));
         let n = h
             .state()

@@ -8,18 +8,7 @@ use pipelens::lesson::param::{Animation, Easing, Repeat, Value};
 use pipelens::lesson::script::parse_lesson;
 use pipelens::lesson::{Diagnostic, Document, load_file};
 
-use crate::support::repo;
-
-/// Every `.toml` file in `lessons/`, sorted.
-fn lesson_files() -> Vec<std::path::PathBuf> {
-    let mut files: Vec<_> = std::fs::read_dir(repo().join("lessons"))
-        .expect("lessons/ exists")
-        .map(|e| e.expect("entry").path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-        .collect();
-    files.sort();
-    files
-}
+use crate::support::{lesson_files, repo};
 
 #[test]
 fn every_lesson_loads_and_every_step_renders() {
@@ -48,95 +37,6 @@ fn every_lesson_loads_and_every_step_renders() {
                 assert!(
                     c.pixels.color.iter().flatten().all(|v| v.is_finite()),
                     "{name} step {k}: NaN in the image"
-                );
-            }
-        }
-    }
-}
-
-/// The course's pedagogy, lesson by lesson: at least two questions, each with an answer in both
-/// languages; one of them asked before an animation ("predict, then watch": on a step that
-/// animates, worded as a prediction in both languages); one of them a computation (its answer
-/// works numbers through an equation).
-#[test]
-fn every_lesson_asks_a_prediction_and_a_computation() {
-    for path in lesson_files() {
-        let Document::Lesson(lesson) = load_file(&path).unwrap_or_else(|e| panic!("{e}")) else {
-            panic!("{} is not a lesson", path.display());
-        };
-        let name = &lesson.id;
-        let asked: Vec<_> = lesson
-            .steps
-            .iter()
-            .filter_map(|s| Some((s, s.question.as_ref()?)))
-            .collect();
-        assert!(asked.len() >= 2, "{name}: {} question(s)", asked.len());
-        for (step, q) in &asked {
-            let a = step
-                .answer
-                .as_ref()
-                .unwrap_or_else(|| panic!("{name}: `{}` has no answer", q.en));
-            for text in [&q.en, &q.zh, &a.en, &a.zh] {
-                assert!(
-                    !text.trim().is_empty(),
-                    "{name}: an empty question or answer"
-                );
-            }
-        }
-        let predictions: Vec<_> = asked
-            .iter()
-            .filter(|(_, q)| q.en.starts_with("Predict") || q.zh.contains("预测"))
-            .collect();
-        assert!(
-            !predictions.is_empty(),
-            "{name}: no question asks for a prediction"
-        );
-        for (step, q) in &predictions {
-            assert!(
-                !step.animate.is_empty(),
-                "{name}: the prediction `{}` is not on a step that animates",
-                q.en
-            );
-            assert!(
-                q.en.starts_with("Predict") && q.zh.contains("预测"),
-                "{name}: `{}` is worded as a prediction in one language only",
-                q.en
-            );
-        }
-        let computed = asked.iter().any(|(s, _)| {
-            s.answer.as_ref().is_some_and(|a| {
-                let digits = a.en.chars().filter(char::is_ascii_digit).count();
-                a.en.contains('=') && digits >= 4 && a.zh.contains('=')
-            })
-        });
-        assert!(computed, "{name}: no question is worked out in numbers");
-    }
-}
-
-/// Every character a lesson writes (titles, narration, questions, answers, in both languages) is
-/// in the embedded fonts, so it prints in handouts and slides as it reads in the app, never as a
-/// box (a superscript ᵀ, for one, is not: write M^T).
-#[test]
-fn every_character_of_every_lesson_is_in_the_embedded_fonts() {
-    for path in lesson_files() {
-        let Document::Lesson(lesson) = load_file(&path).unwrap_or_else(|e| panic!("{e}")) else {
-            panic!("{} is not a lesson", path.display());
-        };
-        let mut texts = vec![&lesson.title, &lesson.summary];
-        for s in &lesson.steps {
-            texts.extend([&s.title, &s.narration]);
-            texts.extend(s.question.iter().chain(&s.answer));
-        }
-        for t in texts {
-            for text in [&t.en, &t.zh] {
-                let missing: String = text
-                    .chars()
-                    .filter(|&c| !pipelens::export::text::covers(c))
-                    .collect();
-                assert!(
-                    missing.is_empty(),
-                    "{}: no glyph for {missing:?} in {text:?}",
-                    lesson.id
                 );
             }
         }

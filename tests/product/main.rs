@@ -5,6 +5,7 @@ mod architecture;
 mod authoring;
 mod cli;
 mod corpus;
+mod course;
 mod handout;
 mod lessons;
 mod observer;

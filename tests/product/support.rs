@@ -52,3 +52,14 @@ pub fn assert_found(
             .join("\n")
     );
 }
+
+/// Every `.toml` file in `lessons/`, sorted.
+pub fn lesson_files() -> Vec<std::path::PathBuf> {
+    let mut files: Vec<_> = std::fs::read_dir(repo().join("lessons"))
+        .expect("lessons/ exists")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    files
+}

@@ -5,7 +5,7 @@
 mod describe;
 mod object;
 
-use object::{BEZIER_PARAMS, OBJECT_PARAMS, PATCH_PARAMS, object_param};
+use object::{BEZIER_PARAMS, IMPLICIT_PARAMS, OBJECT_PARAMS, PATCH_PARAMS, object_param};
 
 pub use describe::describe;
 
@@ -145,6 +145,7 @@ pub fn names(spec: &SceneSpec) -> Vec<String> {
         let own: &[&str] = match o.builtin {
             Some(pipeline::mesh::BuiltinMesh::Bezier { .. }) => &BEZIER_PARAMS,
             Some(pipeline::mesh::BuiltinMesh::BezierPatch { .. }) => &PATCH_PARAMS,
+            Some(pipeline::mesh::BuiltinMesh::Implicit(_)) => &IMPLICIT_PARAMS,
             _ => &[],
         };
         for p in OBJECT_PARAMS.iter().chain(own) {

@@ -31,6 +31,42 @@ pub(super) const PATCH_PARAMS: [&str; 19] = [
     "h22", "h23", "h30", "h31", "h32", "h33",
 ];
 
+/// The parameters an implicit surface adds: its shape, the gap between its two primitives, the
+/// blend's smoothing, the polygonizing grid's resolution, and the size of its point cloud.
+pub(super) const IMPLICIT_PARAMS: [&str; 5] = ["shape", "gap", "smooth", "resolution", "cloud"];
+
+/// `objects.NAME.p` of an implicit surface.
+fn implicit_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(), Problem> {
+    let Some(pipeline::mesh::BuiltinMesh::Implicit(mut s)) = o.builtin else {
+        return Err(Problem::Unknown);
+    };
+    let within = |x: f32, max: f32| {
+        if (0.0..=max).contains(&x) {
+            Ok(x)
+        } else {
+            Err(format!("{p} must be from 0 to {max}, got {x}"))
+        }
+    };
+    match p {
+        "shape" => s.shape = choice(v, &pipeline::mesh::implicit::ImplicitShape::NAMES)?,
+        "gap" => s.gap = within(number(v)?, 3.0)?,
+        "smooth" => s.smooth = within(number(v)?, 2.0)?,
+        "resolution" => {
+            let n = within(number(v)?, 96.0)?;
+            if n < 4.0 {
+                return Err(format!("resolution is at least 4 cells, got {n}").into());
+            }
+            s.resolution = n.round() as u32;
+        }
+        "cloud" => s.points = within(number(v)?, 20_000.0)?.round() as u32,
+        _ => return Err(Problem::Unknown),
+    }
+    let shape = pipeline::mesh::BuiltinMesh::Implicit(s);
+    o.builtin = Some(shape);
+    o.mesh = std::sync::Arc::new(shape.build());
+    Ok(())
+}
+
 /// `objects.NAME.p` of a Bézier patch: `u`, `v`, `levels` or a height `hIJ`.
 fn patch_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(), Problem> {
     let Some(pipeline::mesh::BuiltinMesh::BezierPatch {
@@ -85,6 +121,11 @@ pub(super) fn object_param(
     ) && PATCH_PARAMS.contains(&p)
     {
         return patch_param(o, p, v);
+    }
+    if matches!(o.builtin, Some(pipeline::mesh::BuiltinMesh::Implicit(_)))
+        && IMPLICIT_PARAMS.contains(&p)
+    {
+        return implicit_param(o, p, v);
     }
     match p {
         "translate" => o.translate = vec3(v)?,

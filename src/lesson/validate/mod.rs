@@ -8,6 +8,7 @@
 mod lights;
 mod objects;
 mod render;
+mod shapes;
 
 use std::ops::Range;
 use std::path::Path;

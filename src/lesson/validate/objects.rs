@@ -214,6 +214,11 @@ fn mesh(
             heights: None,
             u: None,
             v: None,
+            shape: None,
+            gap: None,
+            smooth: None,
+            resolution: None,
+            cloud: None,
         },
         RawMesh::Table(t) => t,
     };
@@ -228,115 +233,6 @@ fn mesh(
         (None, Some(path)) => load_obj(c, span, base, path).map(|m| (m, None)),
         (Some(name), None) => builtin(c, span, name, table).map(|b| (b.build(), Some(b))),
     }
-}
-
-/// `{ builtin = "bezier", points = [[x, y] × 4], t = …, levels = … }`.
-fn bezier(c: &mut Checker<'_>, span: Range<usize>, t: &RawMeshTable) -> Option<BuiltinMesh> {
-    let points = t.points.as_deref().unwrap_or(&[]);
-    let finite = points
-        .iter()
-        .flatten()
-        .all(|v| v.is_finite() && v.abs() <= 1e6);
-    let [a, b, d, e] = points else {
-        c.error(
-            span,
-            format!(
-                "a bezier mesh needs `points` = four control points [[x, y], …], got {}",
-                points.len()
-            ),
-        );
-        return None;
-    };
-    if !finite {
-        c.error(
-            span,
-            "the control points must be finite numbers of magnitude at most 1e6",
-        );
-        return None;
-    }
-    let param = t.t.unwrap_or(1.0);
-    if !(0.0..=1.0).contains(&param) {
-        c.error(
-            span,
-            format!("`t` of a bezier mesh must be from 0 to 1, got {param}"),
-        );
-        return None;
-    }
-    let levels = t.levels.unwrap_or(3);
-    let Ok(levels @ 0..=3) = u8::try_from(levels) else {
-        c.error(
-            span,
-            format!(
-                "`levels` of a bezier mesh is how many de Casteljau levels are drawn, 0 to 3; got {levels}"
-            ),
-        );
-        return None;
-    };
-    let v = |p: &[f64; 2]| glam::Vec2::new(p[0] as f32, p[1] as f32);
-    Some(BuiltinMesh::Bezier {
-        points: [v(a), v(b), v(d), v(e)],
-        t: param as f32,
-        levels,
-    })
-}
-
-/// `{ builtin = "bezier_patch", heights = [[h × 4] × 4], u = …, v = …, levels = … }`.
-fn bezier_patch(c: &mut Checker<'_>, span: Range<usize>, t: &RawMeshTable) -> Option<BuiltinMesh> {
-    let default = [
-        [0.0; 4],
-        [0.0, 1.0, 1.0, 0.0],
-        [0.0, 1.0, 1.0, 0.0],
-        [0.0; 4],
-    ];
-    let rows = t.heights.clone().unwrap_or_else(|| default.to_vec());
-    let Ok(rows) = <[[f64; 4]; 4]>::try_from(rows.as_slice()) else {
-        c.error(
-            span,
-            format!(
-                "a bezier_patch needs `heights` = four rows of four numbers [[h, h, h, h], …], got {} rows",
-                rows.len()
-            ),
-        );
-        return None;
-    };
-    if !rows
-        .iter()
-        .flatten()
-        .all(|h| h.is_finite() && h.abs() <= 1e3)
-    {
-        c.error(
-            span,
-            "the heights must be finite numbers of magnitude at most 1000",
-        );
-        return None;
-    }
-    let mut param = |name: &str, value: Option<f64>| {
-        let x = value.unwrap_or(0.5);
-        if (0.0..=1.0).contains(&x) {
-            Some(x as f32)
-        } else {
-            c.error(
-                span.clone(),
-                format!("`{name}` of a bezier_patch must be from 0 to 1, got {x}"),
-            );
-            None
-        }
-    };
-    let (u, v) = (param("u", t.u)?, param("v", t.v)?);
-    let levels = t.levels.unwrap_or(2);
-    let Ok(levels @ 0..=2) = u8::try_from(levels) else {
-        c.error(
-            span,
-            format!("`levels` of a bezier_patch is 0 (the net), 1 (the rows' curves) or 2 (down to b(u, v)); got {levels}"),
-        );
-        return None;
-    };
-    Some(BuiltinMesh::BezierPatch {
-        heights: rows.map(|r| r.map(|h| h as f32)),
-        u,
-        v,
-        levels,
-    })
 }
 
 /// The OBJ file `written`, relative to the lesson's folder `base`.
@@ -412,8 +308,9 @@ fn builtin(
             segments: count("segments", t.segments, 48, 3, 4096),
             sides: count("sides", t.sides, 24, 3, 4096),
         },
-        "bezier" => bezier(c, span.clone(), t)?,
-        "bezier_patch" => bezier_patch(c, span.clone(), t)?,
+        "bezier" => super::shapes::bezier(c, span.clone(), t)?,
+        "bezier_patch" => super::shapes::bezier_patch(c, span.clone(), t)?,
+        "implicit" => super::shapes::implicit(c, span.clone(), t)?,
         other => {
             let suggestion = BuiltinMesh::NAMES
                 .iter()

@@ -73,11 +73,14 @@ pub enum BuiltinMesh {
         /// curve in v and `b(u, v)`.
         levels: u8,
     },
+    /// An implicit surface f(p) = 0, polygonized or as a point cloud (see
+    /// [`super::implicit::Implicit`]).
+    Implicit(super::implicit::Implicit),
 }
 
 impl BuiltinMesh {
     /// The names a scene file may use, with their meaning.
-    pub const NAMES: [&'static str; 9] = [
+    pub const NAMES: [&'static str; 10] = [
         "triangle",
         "two_triangles",
         "cube",
@@ -87,6 +90,7 @@ impl BuiltinMesh {
         "torus",
         "bezier",
         "bezier_patch",
+        "implicit",
     ];
 
     /// Generates the mesh. Parameters below their minimum are raised to it.
@@ -111,6 +115,7 @@ impl BuiltinMesh {
                 v,
                 levels,
             } => super::patch::patch_mesh(&heights, u, v, levels),
+            Self::Implicit(surface) => surface.build(),
         }
     }
 }

@@ -8,6 +8,7 @@ mod detail;
 mod explain;
 mod frame;
 mod hierarchy;
+mod implicit;
 mod normals;
 mod properties;
 mod raster;

@@ -1,0 +1,180 @@
+//! The built-in shapes with parameters of their own beyond a count: a Bézier curve's
+//! construction, a Bézier patch, an implicit surface.
+
+use std::ops::Range;
+
+use pipeline::mesh::BuiltinMesh;
+use pipeline::mesh::implicit::{Implicit, ImplicitShape};
+
+use super::Checker;
+use crate::lesson::raw::RawMeshTable;
+
+/// `{ builtin = "bezier", points = [[x, y] × 4], t = …, levels = … }`.
+pub(super) fn bezier(
+    c: &mut Checker<'_>,
+    span: Range<usize>,
+    t: &RawMeshTable,
+) -> Option<BuiltinMesh> {
+    let points = t.points.as_deref().unwrap_or(&[]);
+    let finite = points
+        .iter()
+        .flatten()
+        .all(|v| v.is_finite() && v.abs() <= 1e6);
+    let [a, b, d, e] = points else {
+        c.error(
+            span,
+            format!(
+                "a bezier mesh needs `points` = four control points [[x, y], …], got {}",
+                points.len()
+            ),
+        );
+        return None;
+    };
+    if !finite {
+        c.error(
+            span,
+            "the control points must be finite numbers of magnitude at most 1e6",
+        );
+        return None;
+    }
+    let param = t.t.unwrap_or(1.0);
+    if !(0.0..=1.0).contains(&param) {
+        c.error(
+            span,
+            format!("`t` of a bezier mesh must be from 0 to 1, got {param}"),
+        );
+        return None;
+    }
+    let levels = t.levels.unwrap_or(3);
+    let Ok(levels @ 0..=3) = u8::try_from(levels) else {
+        c.error(
+            span,
+            format!(
+                "`levels` of a bezier mesh is how many de Casteljau levels are drawn, 0 to 3; got {levels}"
+            ),
+        );
+        return None;
+    };
+    let v = |p: &[f64; 2]| glam::Vec2::new(p[0] as f32, p[1] as f32);
+    Some(BuiltinMesh::Bezier {
+        points: [v(a), v(b), v(d), v(e)],
+        t: param as f32,
+        levels,
+    })
+}
+
+/// `{ builtin = "bezier_patch", heights = [[h × 4] × 4], u = …, v = …, levels = … }`.
+pub(super) fn bezier_patch(
+    c: &mut Checker<'_>,
+    span: Range<usize>,
+    t: &RawMeshTable,
+) -> Option<BuiltinMesh> {
+    let default = [
+        [0.0; 4],
+        [0.0, 1.0, 1.0, 0.0],
+        [0.0, 1.0, 1.0, 0.0],
+        [0.0; 4],
+    ];
+    let rows = t.heights.clone().unwrap_or_else(|| default.to_vec());
+    let Ok(rows) = <[[f64; 4]; 4]>::try_from(rows.as_slice()) else {
+        c.error(
+            span,
+            format!(
+                "a bezier_patch needs `heights` = four rows of four numbers [[h, h, h, h], …], got {} rows",
+                rows.len()
+            ),
+        );
+        return None;
+    };
+    if !rows
+        .iter()
+        .flatten()
+        .all(|h| h.is_finite() && h.abs() <= 1e3)
+    {
+        c.error(
+            span,
+            "the heights must be finite numbers of magnitude at most 1000",
+        );
+        return None;
+    }
+    let mut param = |name: &str, value: Option<f64>| {
+        let x = value.unwrap_or(0.5);
+        if (0.0..=1.0).contains(&x) {
+            Some(x as f32)
+        } else {
+            c.error(
+                span.clone(),
+                format!("`{name}` of a bezier_patch must be from 0 to 1, got {x}"),
+            );
+            None
+        }
+    };
+    let (u, v) = (param("u", t.u)?, param("v", t.v)?);
+    let levels = t.levels.unwrap_or(2);
+    let Ok(levels @ 0..=2) = u8::try_from(levels) else {
+        c.error(
+            span,
+            format!("`levels` of a bezier_patch is 0 (the net), 1 (the rows' curves) or 2 (down to b(u, v)); got {levels}"),
+        );
+        return None;
+    };
+    Some(BuiltinMesh::BezierPatch {
+        heights: rows.map(|r| r.map(|h| h as f32)),
+        u,
+        v,
+        levels,
+    })
+}
+
+/// `{ builtin = "implicit", shape = "blend", gap = 1.3, smooth = 0.4, resolution = 32, cloud = 0 }`.
+pub(super) fn implicit(
+    c: &mut Checker<'_>,
+    span: Range<usize>,
+    t: &RawMeshTable,
+) -> Option<BuiltinMesh> {
+    let written = t.shape.as_deref().unwrap_or("sphere");
+    let Some(shape) = ImplicitShape::NAMES
+        .iter()
+        .find(|(n, _)| *n == written)
+        .map(|(_, s)| *s)
+    else {
+        let names: Vec<&str> = ImplicitShape::NAMES.iter().map(|(n, _)| *n).collect();
+        c.error(
+            span,
+            format!(
+                "`shape` of an implicit surface is one of {}; got \"{written}\"",
+                names.join(", ")
+            ),
+        );
+        return None;
+    };
+    let mut number = |key: &str, v: Option<f64>, default: f32, max: f32| match v {
+        None => Some(default),
+        Some(x) if (0.0..=f64::from(max)).contains(&x) => Some(x as f32),
+        Some(x) => {
+            c.error(
+                span.clone(),
+                format!("`{key}` of an implicit surface must be from 0 to {max}, got {x}"),
+            );
+            None
+        }
+    };
+    let gap = number("gap", t.gap, 1.4, 3.0)?;
+    let smooth = number("smooth", t.smooth, 0.3, 2.0)?;
+    let resolution = number("resolution", t.resolution.map(|n| n as f64), 32.0, 96.0)?;
+    let points = number("cloud", t.cloud.map(|n| n as f64), 0.0, 20_000.0)?;
+    if resolution < 4.0 {
+        c.error(
+            span,
+            format!("`resolution` of an implicit surface is at least 4 cells, got {resolution}"),
+        );
+        return None;
+    }
+    Some(BuiltinMesh::Implicit(Implicit {
+        shape,
+        gap,
+        smooth,
+        resolution: resolution as u32,
+        points: points as u32,
+    }))
+}
