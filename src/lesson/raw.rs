@@ -259,6 +259,18 @@ pub struct RawMeshTable {
     pub resolution: Option<i64>,
     /// An implicit surface drawn as a cloud of this many points (0: polygonized).
     pub cloud: Option<i64>,
+    /// A signal's frequency, cycles per unit time.
+    pub frequency: Option<f64>,
+    /// A signal's sampling rate, samples per unit time.
+    pub rate: Option<f64>,
+    /// The box filter's width before sampling, in sample spacings.
+    pub blur: Option<f64>,
+    /// A wheel's spokes.
+    pub spokes: Option<i64>,
+    /// A wheel's rotation per frame, degrees.
+    pub step: Option<f64>,
+    /// How many frames of a wheel are drawn.
+    pub frames: Option<i64>,
 }
 
 /// One number for all three components, or three, as written (scales, intensities, coefficients).

@@ -5,7 +5,10 @@
 mod describe;
 mod object;
 
-use object::{BEZIER_PARAMS, IMPLICIT_PARAMS, OBJECT_PARAMS, PATCH_PARAMS, object_param};
+use object::{
+    BEZIER_PARAMS, IMPLICIT_PARAMS, OBJECT_PARAMS, PATCH_PARAMS, SIGNAL_PARAMS, WHEEL_PARAMS,
+    object_param,
+};
 
 pub use describe::describe;
 
@@ -146,6 +149,8 @@ pub fn names(spec: &SceneSpec) -> Vec<String> {
             Some(pipeline::mesh::BuiltinMesh::Bezier { .. }) => &BEZIER_PARAMS,
             Some(pipeline::mesh::BuiltinMesh::BezierPatch { .. }) => &PATCH_PARAMS,
             Some(pipeline::mesh::BuiltinMesh::Implicit(_)) => &IMPLICIT_PARAMS,
+            Some(pipeline::mesh::BuiltinMesh::Signal(_)) => &SIGNAL_PARAMS,
+            Some(pipeline::mesh::BuiltinMesh::Wheel(_)) => &WHEEL_PARAMS,
             _ => &[],
         };
         for p in OBJECT_PARAMS.iter().chain(own) {

@@ -67,6 +67,48 @@ fn implicit_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result
     Ok(())
 }
 
+/// The parameters a sampled signal and a filmed wheel add.
+pub(super) const SIGNAL_PARAMS: [&str; 3] = ["frequency", "rate", "blur"];
+/// See [`SIGNAL_PARAMS`].
+pub(super) const WHEEL_PARAMS: [&str; 3] = ["spokes", "step", "frames"];
+
+/// `objects.NAME.p` of a signal or a wheel.
+fn sampling_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(), Problem> {
+    use pipeline::mesh::BuiltinMesh;
+    let x = number(v)?;
+    let within = |min: f32, max: f32| {
+        if (min..=max).contains(&x) {
+            Ok(x)
+        } else {
+            Err(format!("{p} must be from {min} to {max}, got {x}"))
+        }
+    };
+    let shape = match (o.builtin, p) {
+        (Some(BuiltinMesh::Signal(mut s)), _) => {
+            match p {
+                "frequency" => s.frequency = within(0.0, 40.0)?,
+                "rate" => s.rate = within(1.0, 100.0)?,
+                "blur" => s.blur = within(0.0, 4.0)?,
+                _ => return Err(Problem::Unknown),
+            }
+            BuiltinMesh::Signal(s)
+        }
+        (Some(BuiltinMesh::Wheel(mut w)), _) => {
+            match p {
+                "spokes" => w.spokes = within(1.0, 36.0)?.round() as u32,
+                "step" => w.step = within(-360.0, 360.0)?,
+                "frames" => w.frames = within(1.0, 8.0)?.round() as u32,
+                _ => return Err(Problem::Unknown),
+            }
+            BuiltinMesh::Wheel(w)
+        }
+        _ => return Err(Problem::Unknown),
+    };
+    o.builtin = Some(shape);
+    o.mesh = std::sync::Arc::new(shape.build());
+    Ok(())
+}
+
 /// `objects.NAME.p` of a Bézier patch: `u`, `v`, `levels` or a height `hIJ`.
 fn patch_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(), Problem> {
     let Some(pipeline::mesh::BuiltinMesh::BezierPatch {
@@ -109,23 +151,27 @@ fn patch_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<()
     Ok(())
 }
 
+/// A parameter of the object's built-in shape that only some shapes have (a patch's, an implicit
+/// surface's, a signal's or a wheel's), or `None` when `p` is not one of its shape's.
+fn shape_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Option<Result<(), Problem>> {
+    use pipeline::mesh::BuiltinMesh;
+    match o.builtin? {
+        BuiltinMesh::BezierPatch { .. } if PATCH_PARAMS.contains(&p) => Some(patch_param(o, p, v)),
+        BuiltinMesh::Implicit(_) if IMPLICIT_PARAMS.contains(&p) => Some(implicit_param(o, p, v)),
+        BuiltinMesh::Signal(_) if SIGNAL_PARAMS.contains(&p) => Some(sampling_param(o, p, v)),
+        BuiltinMesh::Wheel(_) if WHEEL_PARAMS.contains(&p) => Some(sampling_param(o, p, v)),
+        _ => None,
+    }
+}
+
 /// `objects.NAME.p`: the object's transform, colour, material, or its built-in shape.
 pub(super) fn object_param(
     o: &mut pipeline::scene::Object,
     p: &str,
     v: &Value,
 ) -> Result<(), Problem> {
-    if matches!(
-        o.builtin,
-        Some(pipeline::mesh::BuiltinMesh::BezierPatch { .. })
-    ) && PATCH_PARAMS.contains(&p)
-    {
-        return patch_param(o, p, v);
-    }
-    if matches!(o.builtin, Some(pipeline::mesh::BuiltinMesh::Implicit(_)))
-        && IMPLICIT_PARAMS.contains(&p)
-    {
-        return implicit_param(o, p, v);
+    if let Some(done) = shape_param(o, p, v) {
+        return done;
     }
     match p {
         "translate" => o.translate = vec3(v)?,

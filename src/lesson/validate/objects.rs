@@ -219,6 +219,12 @@ fn mesh(
             smooth: None,
             resolution: None,
             cloud: None,
+            frequency: None,
+            rate: None,
+            blur: None,
+            spokes: None,
+            step: None,
+            frames: None,
         },
         RawMesh::Table(t) => t,
     };
@@ -311,6 +317,8 @@ fn builtin(
         "bezier" => super::shapes::bezier(c, span.clone(), t)?,
         "bezier_patch" => super::shapes::bezier_patch(c, span.clone(), t)?,
         "implicit" => super::shapes::implicit(c, span.clone(), t)?,
+        "signal" => super::shapes::signal(c, span.clone(), t)?,
+        "wheel" => super::shapes::wheel(c, span.clone(), t)?,
         other => {
             let suggestion = BuiltinMesh::NAMES
                 .iter()

@@ -5,6 +5,7 @@ use std::ops::Range;
 
 use pipeline::mesh::BuiltinMesh;
 use pipeline::mesh::implicit::{Implicit, ImplicitShape};
+use pipeline::mesh::signal::{Signal, Wheel};
 
 use super::Checker;
 use crate::lesson::raw::RawMeshTable;
@@ -148,33 +149,86 @@ pub(super) fn implicit(
         );
         return None;
     };
-    let mut number = |key: &str, v: Option<f64>, default: f32, max: f32| match v {
-        None => Some(default),
-        Some(x) if (0.0..=f64::from(max)).contains(&x) => Some(x as f32),
-        Some(x) => {
-            c.error(
-                span.clone(),
-                format!("`{key}` of an implicit surface must be from 0 to {max}, got {x}"),
-            );
-            None
-        }
-    };
-    let gap = number("gap", t.gap, 1.4, 3.0)?;
-    let smooth = number("smooth", t.smooth, 0.3, 2.0)?;
-    let resolution = number("resolution", t.resolution.map(|n| n as f64), 32.0, 96.0)?;
-    let points = number("cloud", t.cloud.map(|n| n as f64), 0.0, 20_000.0)?;
-    if resolution < 4.0 {
-        c.error(
-            span,
-            format!("`resolution` of an implicit surface is at least 4 cells, got {resolution}"),
-        );
-        return None;
-    }
+    let what = "implicit surface";
+    let int = |v: Option<i64>| v.map(|n| n as f64);
+    let gap = ranged(c, &span, what, "gap", t.gap, (1.4, 0.0, 3.0))?;
+    let smooth = ranged(c, &span, what, "smooth", t.smooth, (0.3, 0.0, 2.0))?;
+    let resolution = ranged(
+        c,
+        &span,
+        what,
+        "resolution",
+        int(t.resolution),
+        (32.0, 4.0, 96.0),
+    )?;
+    let points = ranged(c, &span, what, "cloud", int(t.cloud), (0.0, 0.0, 20_000.0))?;
     Some(BuiltinMesh::Implicit(Implicit {
         shape,
         gap,
         smooth,
         resolution: resolution as u32,
         points: points as u32,
+    }))
+}
+
+/// A number of a built-in shape's table within `[min, max]`, or its default; an error names it.
+fn ranged(
+    c: &mut Checker<'_>,
+    span: &Range<usize>,
+    what: &str,
+    key: &str,
+    v: Option<f64>,
+    (default, min, max): (f32, f32, f32),
+) -> Option<f32> {
+    match v {
+        None => Some(default),
+        Some(x) if (f64::from(min)..=f64::from(max)).contains(&x) => Some(x as f32),
+        Some(x) => {
+            c.error(
+                span.clone(),
+                format!("`{key}` of a {what} must be from {min} to {max}, got {x}"),
+            );
+            None
+        }
+    }
+}
+
+/// `{ builtin = "signal", frequency = 3, rate = 20, blur = 0 }`.
+pub(super) fn signal(
+    c: &mut Checker<'_>,
+    span: Range<usize>,
+    t: &RawMeshTable,
+) -> Option<BuiltinMesh> {
+    let frequency = ranged(
+        c,
+        &span,
+        "signal",
+        "frequency",
+        t.frequency,
+        (3.0, 0.0, 40.0),
+    )?;
+    let rate = ranged(c, &span, "signal", "rate", t.rate, (20.0, 1.0, 100.0))?;
+    let blur = ranged(c, &span, "signal", "blur", t.blur, (0.0, 0.0, 4.0))?;
+    Some(BuiltinMesh::Signal(Signal {
+        frequency,
+        rate,
+        blur,
+    }))
+}
+
+/// `{ builtin = "wheel", spokes = 8, step = 40, frames = 5 }`.
+pub(super) fn wheel(
+    c: &mut Checker<'_>,
+    span: Range<usize>,
+    t: &RawMeshTable,
+) -> Option<BuiltinMesh> {
+    let int = |v: Option<i64>| v.map(|n| n as f64);
+    let spokes = ranged(c, &span, "wheel", "spokes", int(t.spokes), (8.0, 1.0, 36.0))?;
+    let step = ranged(c, &span, "wheel", "step", t.step, (20.0, -360.0, 360.0))?;
+    let frames = ranged(c, &span, "wheel", "frames", int(t.frames), (5.0, 1.0, 8.0))?;
+    Some(BuiltinMesh::Wheel(Wheel {
+        spokes: spokes as u32,
+        step,
+        frames: frames as u32,
     }))
 }

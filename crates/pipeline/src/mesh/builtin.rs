@@ -76,11 +76,15 @@ pub enum BuiltinMesh {
     /// An implicit surface f(p) = 0, polygonized or as a point cloud (see
     /// [`super::implicit::Implicit`]).
     Implicit(super::implicit::Implicit),
+    /// A sampled 1-D signal over its spectrum (see [`super::signal::Signal`]).
+    Signal(super::signal::Signal),
+    /// A spoked wheel filmed frame by frame (see [`super::signal::Wheel`]).
+    Wheel(super::signal::Wheel),
 }
 
 impl BuiltinMesh {
     /// The names a scene file may use, with their meaning.
-    pub const NAMES: [&'static str; 10] = [
+    pub const NAMES: [&'static str; 12] = [
         "triangle",
         "two_triangles",
         "cube",
@@ -91,6 +95,8 @@ impl BuiltinMesh {
         "bezier",
         "bezier_patch",
         "implicit",
+        "signal",
+        "wheel",
     ];
 
     /// Generates the mesh. Parameters below their minimum are raised to it.
@@ -116,6 +122,8 @@ impl BuiltinMesh {
                 levels,
             } => super::patch::patch_mesh(&heights, u, v, levels),
             Self::Implicit(surface) => surface.build(),
+            Self::Signal(signal) => signal.build(),
+            Self::Wheel(wheel) => wheel.build(),
         }
     }
 }
@@ -427,7 +435,7 @@ fn label_construction(m: &mut Mesh, points: &[Vec2; 4], levels: &[Vec<Vec2>], t:
 }
 
 /// A strip of quads of width `w` along `pts`, at depth `z`.
-fn polyline(m: &mut Mesh, pts: &[Vec2], w: f32, z: f32, color: Vec3) {
+pub(super) fn polyline(m: &mut Mesh, pts: &[Vec2], w: f32, z: f32, color: Vec3) {
     for seg in pts.windows(2) {
         let (a, b) = (seg[0], seg[1]);
         let Some(dir) = (b - a).try_normalize() else {
@@ -441,7 +449,7 @@ fn polyline(m: &mut Mesh, pts: &[Vec2], w: f32, z: f32, color: Vec3) {
 }
 
 /// A square of side `s` centred at `p`.
-fn square(m: &mut Mesh, p: Vec2, s: f32, z: f32, color: Vec3) {
+pub(super) fn square(m: &mut Mesh, p: Vec2, s: f32, z: f32, color: Vec3) {
     let h = s / 2.0;
     quad(
         m,
@@ -457,7 +465,7 @@ fn square(m: &mut Mesh, p: Vec2, s: f32, z: f32, color: Vec3) {
 }
 
 /// A counter-clockwise quad as two triangles.
-fn quad(m: &mut Mesh, c: [Vec2; 4], z: f32, color: Vec3) {
+pub(super) fn quad(m: &mut Mesh, c: [Vec2; 4], z: f32, color: Vec3) {
     let base = m.positions.len() as u32;
     m.positions.extend(c.map(|p| p.extend(z)));
     m.colors.extend([color; 4]);

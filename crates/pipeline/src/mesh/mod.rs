@@ -8,6 +8,7 @@ mod builtin;
 pub mod implicit;
 mod obj;
 pub mod patch;
+pub mod signal;
 
 pub use builtin::BuiltinMesh;
 

@@ -12,6 +12,7 @@ mod implicit;
 mod normals;
 mod properties;
 mod raster;
+mod sampling;
 mod shade;
 mod support;
 mod texture;
