@@ -71,3 +71,36 @@ fn a_step_without_buffer_shows_its_stages_default_even_after_a_reload() {
         "step 2 names no stage: step 1's"
     );
 }
+
+/// Lesson 02's last step, inspector open: beside the five-factor model matrix the Matrices tab
+/// shows the same rotation by Rodrigues' formula and by the quaternion, with its numbers
+/// (n = (1, 1, 0)/√2, θ = 90°: q = (cos 45°, sin 45°·n) = (0.707, 0.5, 0.5, 0)) and the slerp.
+#[test]
+fn the_inspector_shows_an_axis_rotation_by_rodrigues_and_by_quaternion() {
+    let path = crate::support::repo().join("lessons/02-arbitrary-axis.toml");
+    let mut h = lesson_harness(Some(path));
+    h.run_steps(2);
+    let last = h
+        .state()
+        .session
+        .lesson
+        .as_ref()
+        .map_or(0, |p| p.lesson.steps.len() - 1);
+    h.state_mut()
+        .session
+        .apply(pipelens::app::session::Command::GoToStep(last));
+    h.run_steps(2);
+    assert_eq!(step_of(&h), last);
+    h.key_press(egui::Key::I);
+    h.run_steps(3);
+    assert!(
+        h.query_by_label_contains("q = (0.707, 0.500, 0.500, 0.000)")
+            .is_some(),
+        "the quaternion's numbers"
+    );
+    assert!(h.query_by_label_contains("slerp(1, q, ½)").is_some());
+    assert!(
+        h.query_by_label_contains("N the cross-product matrix of n")
+            .is_some()
+    );
+}

@@ -108,7 +108,8 @@ impl Signal {
 
     /// The drawing: above, the signal (grey), its samples (yellow) and the reconstruction from
     /// them (red) over t ∈ [0, 1]; below, the samples' spectrum with the band [−f_s/2, f_s/2]
-    /// that reconstruction keeps shaded, and labels for f, f_s and the alias.
+    /// that reconstruction keeps shaded, and labels for f, f_s and the alias f_a (in notation, so
+    /// that they read the same in either language).
     #[must_use]
     pub fn build(&self) -> Mesh {
         let mut m = Mesh {
@@ -175,7 +176,7 @@ impl Signal {
         label(
             &mut m,
             time(0.85, 1.5),
-            format!("seen: {:.1}", self.alias()),
+            format!("f_a = {:.1}", self.alias()),
         );
         label(&mut m, freq(NU_MAX, -0.22), "ν".into());
         label(&mut m, time(1.0, -0.22), "t".into());
@@ -242,7 +243,7 @@ impl Wheel {
         m.labels.push(MeshLabel {
             position: Vec3::new(0.0, 0.85, 0.0),
             text: format!(
-                "step {:.1}° per frame, seen {:.1}°",
+                "Δθ = {:.1}°, Δθ_a = {:.1}°",
                 self.step,
                 self.apparent_step()
             ),
