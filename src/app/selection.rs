@@ -19,6 +19,8 @@ pub struct Selection {
     pub overlays: Vec<OverlayKind>,
     /// Draw sample positions when zoomed in.
     pub show_samples: bool,
+    /// Vertex normals drawn as short lines in the world view.
+    pub show_normals: bool,
     /// Show the observer view beside the stage.
     pub show_observer: bool,
     /// The selected row of the vertex table.
@@ -53,6 +55,7 @@ impl Default for Selection {
             buffer: BufferKind::Color,
             overlays: vec![OverlayKind::TriangleEdges],
             show_samples: true,
+            show_normals: false,
             show_observer: true,
             vertex: None,
             pixel: None,
@@ -80,6 +83,8 @@ pub enum Command {
     ToggleOverlay(OverlayKind),
     /// Turn sample points on or off.
     ToggleSamples,
+    /// Turn the world view's vertex normals on or off.
+    ToggleNormals,
     /// Show or hide the observer view.
     ToggleObserver,
     /// Select a vertex-table row (or none).

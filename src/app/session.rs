@@ -169,10 +169,11 @@ impl Session {
             .filter_map(|o| match o {
                 Overlay::Edges => Some(OverlayKind::TriangleEdges),
                 Overlay::BoundingBoxes => Some(OverlayKind::BoundingBoxes),
-                Overlay::Samples => None,
+                Overlay::Samples | Overlay::Normals => None,
             })
             .collect();
         sel.show_samples = overlays.contains(&Overlay::Samples);
+        sel.show_normals = overlays.contains(&Overlay::Normals);
         sel.pixel = step.pixel;
         sel.vertex = step.vertex;
         sel.focus.clone_from(&step.focus);
@@ -392,6 +393,7 @@ impl Session {
                 }
             }
             Command::ToggleSamples => sel.show_samples = !sel.show_samples,
+            Command::ToggleNormals => sel.show_normals = !sel.show_normals,
             Command::ToggleObserver => sel.show_observer = !sel.show_observer,
             Command::SelectVertex(v) => sel.vertex = v,
             Command::SelectPixel(p) => sel.pixel = p,

@@ -54,7 +54,11 @@ pub fn step_picture(lesson: &Lesson, k: usize, r: &Rendered<'_>, lang: Lang) -> 
     };
     if let Some(space) = stage.space() {
         let focus = step.focus.as_deref().unwrap_or_default();
-        let own = space_picture(r.capture, space, focus, step.vertex, lang);
+        let normals = step
+            .overlays
+            .as_deref()
+            .is_some_and(|o| o.contains(&Overlay::Normals));
+        let own = space_picture(r.capture, space, focus, (step.vertex, normals), lang);
         return Ok(match (own, step.layout, observer()) {
             (Some(a), Layout::Observer, Some(o)) => beside(&a, &o),
             (Some(a), ..) => a,
@@ -104,11 +108,12 @@ const SPACE_PICTURE: (u32, u32) = (800, 600);
 /// A geometry stage as the app draws it: the vertices in `space` as a wireframe coloured by
 /// each triangle's fate (the subject bright, the rest dim), the space's axes and its view
 /// volume, from the app's first orbit, framing the subject; the space named at the top.
+/// `(vertex, normals)`: the selected vertex, and whether the world view draws the vertex normals.
 fn space_picture(
     capture: &FrameCapture,
     space: Space,
     focus: &[String],
-    vertex: Option<u32>,
+    (vertex, normals): (Option<u32>, bool),
     lang: Lang,
 ) -> Option<RgbaImage> {
     let subject = spaces::subject(capture, focus, vertex, space);
@@ -169,6 +174,14 @@ fn space_picture(
             segment(c, a, color, width);
         }
     }
+    if normals && space == Space::World {
+        for (v, p) in capture.vertices.iter().zip(&points) {
+            if let Some(p) = p {
+                let tip = *p + v.normal_world * (radius * 0.12);
+                segment(*p, tip, [90, 210, 230, 255], 1.5);
+            }
+        }
+    }
     let axes = [
         (Vec3::X, [235, 80, 80], "x"),
         (Vec3::Y, [90, 210, 90], "y"),
@@ -222,7 +235,7 @@ fn buffer_with_shapes(
         let kind = match o {
             Overlay::Edges => OverlayKind::TriangleEdges,
             Overlay::BoundingBoxes => OverlayKind::BoundingBoxes,
-            Overlay::Samples => continue,
+            Overlay::Samples | Overlay::Normals => continue,
         };
         shapes.extend(capture.overlay_shapes(kind).take(MAX_SHAPES));
     }

@@ -149,14 +149,15 @@ pub fn wrap(runs: &[Run], size: f32, max: f32) -> Vec<Vec<Run>> {
     lines
 }
 
-/// `text` with its `**formulas**` in `accent`, the rest in `color` (the narration's markup).
+/// `text` with its `**formulas**` in `accent`, the rest in `color` (the narration's markup); the
+/// backticks around `code` are markup too and are left out.
 #[must_use]
 pub fn marked_runs(text: &str, color: [u8; 3], accent: [u8; 3]) -> Vec<Run> {
     text.split("**")
         .enumerate()
         .filter(|(_, t)| !t.is_empty())
         .map(|(i, t)| Run {
-            text: t.to_owned(),
+            text: t.replace('`', ""),
             color: if i % 2 == 1 { accent } else { color },
         })
         .collect()
@@ -210,6 +211,8 @@ mod tests {
 
     #[test]
     fn formulas_are_runs_of_their_own() {
+        let code = marked_runs("set `normals = \"average\"` here", [1; 3], [2; 3]);
+        assert_eq!(code[0].text, "set normals = \"average\" here");
         let r = marked_runs("a **x/w** b", [1; 3], [2; 3]);
         assert_eq!(r.len(), 3);
         assert_eq!((r[1].text.as_str(), r[1].color), ("x/w", [2; 3]));

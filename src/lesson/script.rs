@@ -33,6 +33,8 @@ pub enum Overlay {
     BoundingBoxes,
     /// Sample positions (zoomed in).
     Samples,
+    /// Each vertex's normal as a short line (the world view).
+    Normals,
 }
 
 /// One step of a lesson.
@@ -401,6 +403,7 @@ impl Checker<'_> {
                             ("edges", Overlay::Edges),
                             ("bounding_boxes", Overlay::BoundingBoxes),
                             ("samples", Overlay::Samples),
+                            ("normals", Overlay::Normals),
                         ],
                     )
                 })

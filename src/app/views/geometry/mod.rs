@@ -54,6 +54,26 @@ fn subject(capture: &FrameCapture, session: &Session, space: Space) -> Vec<bool>
 }
 
 /// The axes x, y, z of the space through its origin.
+/// Each drawn vertex's world normal as a short line from the vertex, `length` long: the normals
+/// the lighting uses (an OBJ's, a built-in's exact ones, or the average of the faces' around
+/// each vertex position, as the scene says).
+fn draw_normals(
+    painter: &egui::Painter,
+    cam: &Projector,
+    capture: &FrameCapture,
+    points: &[Option<Vec3>],
+    length: f32,
+) {
+    let stroke = egui::Stroke::new(1.5, Color32::from_rgb(90, 210, 230));
+    for (v, p) in capture.vertices.iter().zip(points) {
+        let Some(p) = p else { continue };
+        let tip = *p + v.normal_world * length;
+        if let (Some(a), Some(b)) = (cam.project(*p), cam.project(tip)) {
+            painter.line_segment([a, b], stroke);
+        }
+    }
+}
+
 fn draw_axes(painter: &egui::Painter, cam: &Projector, length: f32) {
     for (axis, color, label) in [
         (Vec3::X, palette::X, "x"),
@@ -194,6 +214,9 @@ impl GeometryView {
             draw_volume(&painter, &cam, v);
         }
         let (stride, seen, fates) = draw_triangles(&painter, &cam, capture, &points, &subject);
+        if space == Space::World && from == space && session.selection.show_normals {
+            draw_normals(&painter, &cam, capture, &points, radius * 0.12);
+        }
         let mut lights = false;
         if let Some(m) = world_into(capture, space) {
             let to_view = |p: Vec3| m.transform_point3(p);
@@ -293,6 +316,19 @@ impl GeometryView {
                         reset_for: self.reset_for,
                         ..Self::default()
                     };
+                }
+                if space == Space::World {
+                    let mut on = session.selection.show_normals;
+                    if ui
+                        .checkbox(&mut on, lang.tr("Normals", "法线"))
+                        .on_hover_text(lang.tr(
+                            "Each vertex's normal n in world space, the one lighting uses (n_world = (M^(−1))^T·n).",
+                            "每个顶点在世界空间中的法线 n，即光照所用的法线（n_world = (M^(−1))^T·n）。",
+                        ))
+                        .changed()
+                    {
+                        cmds.push(Command::ToggleNormals);
+                    }
                 }
                 if animated
                     && ui
