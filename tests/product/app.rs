@@ -257,6 +257,21 @@ fn lesson_harness(path: Option<std::path::PathBuf>) -> Harness<'static, Pipelens
         .build_ui_state(|ui, app: &mut PipelensApp| app.frame(ui), app)
 }
 
+/// Goes to the open lesson's last step; returns its index.
+fn go_to_last_step(h: &mut Harness<'_, PipelensApp>) -> usize {
+    let last = h
+        .state()
+        .session
+        .lesson
+        .as_ref()
+        .map_or(0, |p| p.lesson.steps.len() - 1);
+    h.state_mut()
+        .session
+        .apply(pipelens::app::session::Command::GoToStep(last));
+    h.run_steps(2);
+    last
+}
+
 fn step_of(h: &Harness<'_, PipelensApp>) -> usize {
     h.state()
         .session
@@ -316,16 +331,8 @@ fn a_lesson_steps_with_the_arrow_keys_and_plays_its_animations() {
             .is_some()
     );
     // The last step's question: the answer appears on request.
-    let last = h
-        .state()
-        .session
-        .lesson
-        .as_ref()
-        .map_or(0, |p| p.lesson.steps.len() - 1);
-    h.state_mut()
-        .session
-        .apply(pipelens::app::session::Command::GoToStep(last));
-    h.run_steps(4);
+    go_to_last_step(&mut h);
+    h.run_steps(2);
     assert!(
         h.query_by_label_contains("相邻的面得到不同的常数颜色")
             .is_none()

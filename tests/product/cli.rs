@@ -482,13 +482,15 @@ mesh = "tri.obj"
     );
 }
 
-/// `depth16.png` holds round(65535·z_w) of every pixel, as the capture has it: read back, every
-/// pixel equals the capture's window depth (a byte-swapped file would hold 64 for z_w = 0.25).
-#[test]
-fn depth16_round_trips_every_pixel_of_the_capture() {
+/// The built-in scene rendered at `width`×`height` and exported (`export_capture`) into a
+/// temporary folder.
+fn exported_default_scene(
+    width: u32,
+    height: u32,
+) -> (pipeline::capture::FrameCapture, tempfile::TempDir) {
     let spec = pipelens::lesson::default_scene().expect("the built-in scene");
     let mut settings = spec.settings;
-    (settings.width, settings.height) = (96, 60);
+    (settings.width, settings.height) = (width, height);
     let capture = pipeline::render(&spec.scene, &settings).expect("renders");
     let dir = tempfile::tempdir().expect("temp dir");
     let opts = pipelens::export::ExportOptions {
@@ -499,6 +501,14 @@ fn depth16_round_trips_every_pixel_of_the_capture() {
         cancel: pipelens::export::Cancel::default(),
     };
     pipelens::export::export_capture(&capture, &opts, &mut |_, _, _| {}).expect("exports");
+    (capture, dir)
+}
+
+/// `depth16.png` holds round(65535·z_w) of every pixel, as the capture has it: read back, every
+/// pixel equals the capture's window depth (a byte-swapped file would hold 64 for z_w = 0.25).
+#[test]
+fn depth16_round_trips_every_pixel_of_the_capture() {
+    let (capture, dir) = exported_default_scene(96, 60);
     let read = image::open(dir.path().join("depth16.png"))
         .expect("decodes")
         .into_luma16();
@@ -522,19 +532,7 @@ fn depth16_round_trips_every_pixel_of_the_capture() {
 /// is image row height − 1 − y of the capture.
 #[test]
 fn depth_pfm_holds_the_captures_float_depth_exactly() {
-    let spec = pipelens::lesson::default_scene().expect("the built-in scene");
-    let mut settings = spec.settings;
-    (settings.width, settings.height) = (90, 50);
-    let capture = pipeline::render(&spec.scene, &settings).expect("renders");
-    let dir = tempfile::tempdir().expect("temp dir");
-    let opts = pipelens::export::ExportOptions {
-        out: dir.path().to_path_buf(),
-        overlay_zoom: 1,
-        max_records: 10,
-        pixel: None,
-        cancel: pipelens::export::Cancel::default(),
-    };
-    pipelens::export::export_capture(&capture, &opts, &mut |_, _, _| {}).expect("exports");
+    let (capture, dir) = exported_default_scene(90, 50);
     let bytes = std::fs::read(dir.path().join("depth.pfm")).expect("depth.pfm written");
     let header = b"Pf\n90 50\n-1.0\n";
     assert_eq!(&bytes[..header.len()], header);

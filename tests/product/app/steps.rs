@@ -4,7 +4,7 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use pipelens::app::PipelensApp;
 
-use super::{lesson_harness, step_of};
+use super::{go_to_last_step, lesson_harness, step_of};
 
 #[test]
 fn a_step_without_buffer_shows_its_stages_default_even_after_a_reload() {
@@ -80,16 +80,7 @@ fn the_inspector_shows_an_axis_rotation_by_rodrigues_and_by_quaternion() {
     let path = crate::support::repo().join("lessons/02-arbitrary-axis.toml");
     let mut h = lesson_harness(Some(path));
     h.run_steps(2);
-    let last = h
-        .state()
-        .session
-        .lesson
-        .as_ref()
-        .map_or(0, |p| p.lesson.steps.len() - 1);
-    h.state_mut()
-        .session
-        .apply(pipelens::app::session::Command::GoToStep(last));
-    h.run_steps(2);
+    let last = go_to_last_step(&mut h);
     assert_eq!(step_of(&h), last);
     h.key_press(egui::Key::I);
     h.run_steps(3);
