@@ -35,7 +35,7 @@ pub struct Cli {
     #[arg(long, value_parser = parse_stage)]
     pub stage: Option<crate::vocabulary::Stage>,
     /// The app: settings to compare side by side in the pixel stages.
-    #[arg(long, value_parser = ["shading", "interpolation", "samples", "filtering"])]
+    #[arg(long, value_parser = ["shading", "interpolation", "samples", "filtering", "minification"])]
     pub compare: Option<String>,
     /// The app: a lesson's step to open on (1-based).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..))]

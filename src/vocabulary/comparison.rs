@@ -19,6 +19,8 @@ pub enum Comparison {
     Samples,
     /// Nearest | bilinear | trilinear | anisotropic texture filtering.
     Filtering,
+    /// Trilinear | ripmap | summed-area table | EWA: minification beyond the mipmap.
+    Minification,
 }
 
 impl Comparison {
@@ -36,15 +38,17 @@ impl Comparison {
             Self::Interpolation => "interpolation",
             Self::Samples => "samples",
             Self::Filtering => "filtering",
+            Self::Minification => "minification",
         }
     }
 
     /// Every comparison.
-    pub const ALL: [Comparison; 4] = [
+    pub const ALL: [Comparison; 5] = [
         Self::Shading,
         Self::Interpolation,
         Self::Samples,
         Self::Filtering,
+        Self::Minification,
     ];
 
     /// Its name.
@@ -57,6 +61,10 @@ impl Comparison {
             Self::Filtering => l.tr(
                 "nearest | bilinear | trilinear | anisotropic",
                 "最近邻 | 双线性 | 三线性 | 各向异性",
+            ),
+            Self::Minification => l.tr(
+                "trilinear | ripmap | summed-area table | EWA",
+                "三线性 | ripmap | 求和面积表 | EWA",
             ),
         }
     }
@@ -90,7 +98,7 @@ impl Comparison {
                     s.per_sample_shading = true;
                 }),
             ],
-            Self::Filtering => {
+            Self::Filtering | Self::Minification => {
                 let sampler = |filter, mipmap, anisotropy| {
                     move |s: &mut RenderSettings| {
                         s.sampler = Sampler {
@@ -101,6 +109,17 @@ impl Comparison {
                         };
                     }
                 };
+                if self == Self::Minification {
+                    return vec![
+                        with("trilinear", &sampler(Filter::Bilinear, Mipmap::Linear, 1)),
+                        with("ripmap", &sampler(Filter::Bilinear, Mipmap::Ripmap, 1)),
+                        with(
+                            "summed-area table",
+                            &sampler(Filter::Bilinear, Mipmap::SummedArea, 1),
+                        ),
+                        with("EWA", &sampler(Filter::Bilinear, Mipmap::Ewa, 1)),
+                    ];
+                }
                 vec![
                     with("nearest", &sampler(Filter::Nearest, Mipmap::None, 1)),
                     with("bilinear", &sampler(Filter::Bilinear, Mipmap::None, 1)),
@@ -127,6 +146,7 @@ pub fn variant_label(key: &str, l: Lang) -> String {
         "bilinear" => l.tr("bilinear", "双线性").to_owned(),
         "trilinear" => l.tr("trilinear", "三线性").to_owned(),
         "anisotropic 16×" => l.tr("anisotropic 16×", "各向异性 16×").to_owned(),
+        "summed-area table" => l.tr("summed-area table", "求和面积表").to_owned(),
         other => other.to_owned(),
     }
 }

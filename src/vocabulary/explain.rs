@@ -85,6 +85,18 @@ pub fn remark(r: &Remark, l: Lang) -> String {
             Lang::En => format!("the nearest level, at most {max}"),
             Lang::Zh => format!("最近的层级，最多为 {max}"),
         },
+        Remark::Ripmap => s(
+            "ripmap: level i halves u, level j halves v, each chosen from a side of the footprint's bounding box; a diagonal footprint's box is too big",
+            "ripmap：第 i 层在 u 方向减半、第 j 层在 v 方向减半，各自由覆盖区域包围盒的一条边决定；斜向覆盖区域的包围盒偏大",
+        ),
+        Remark::SummedArea => s(
+            "summed-area table: the exact mean of the texels in the footprint's bounding box, four table reads whatever its size",
+            "求和面积表：覆盖区域包围盒内纹素的精确平均值，无论大小只需读表四次",
+        ),
+        Remark::Ewa => s(
+            "EWA: the texels inside the footprint's ellipse, weighted by a Gaussian, on the level where the ellipse's minor axis is about a texel",
+            "EWA：覆盖区域椭圆内的纹素按高斯权重平均，在椭圆短轴约为一个纹素的层级上进行",
+        ),
         Remark::Trilinear { max } => match l {
             Lang::En => format!("trilinear: levels k and k+1 blended by t (λ at most {max})"),
             Lang::Zh => format!("三线性：按 t 混合第 k 层与第 k+1 层（λ 最多为 {max}）"),

@@ -321,6 +321,9 @@ fn texture_sampling(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lan
             (Mipmap::None, lang.tr("none", "无")),
             (Mipmap::Nearest, lang.tr("nearest level", "最近层")),
             (Mipmap::Linear, lang.tr("trilinear", "三线性")),
+            (Mipmap::Ripmap, "ripmap"),
+            (Mipmap::SummedArea, lang.tr("summed-area table", "求和面积表")),
+            (Mipmap::Ewa, "EWA"),
         ] {
             ui.selectable_value(&mut smp.mipmap, m, n).on_hover_text(lang.tr(
                 "λ = log₂ max(|∂(uw, vh)/∂x|, |∂(uw, vh)/∂y|): the level whose texels are the size of a pixel.",

@@ -62,6 +62,9 @@ pub(super) const MIPMAP: &[(&str, Mipmap)] = &[
     ("none", Mipmap::None),
     ("nearest", Mipmap::Nearest),
     ("linear", Mipmap::Linear),
+    ("ripmap", Mipmap::Ripmap),
+    ("summed_area", Mipmap::SummedArea),
+    ("ewa", Mipmap::Ewa),
 ];
 
 /// The names of `filter` in files.

@@ -20,6 +20,7 @@
 //! samplers are in [`sampler`], what textures add to a surface (bump, normal, displacement and
 //! environment mapping) in [`detail`].
 
+pub mod beyond;
 mod detail;
 mod sampler;
 
@@ -144,13 +145,22 @@ impl Level {
     /// The 2×2 box filter of this level (the next mip level).
     #[must_use]
     pub fn box_filtered(&self) -> Level {
-        let (w, h) = ((self.width / 2).max(1), (self.height / 2).max(1));
+        self.halved(true, true)
+    }
+
+    /// This level halved along x, y or both by a box filter (a ripmap's neighbours halve one
+    /// axis only); an axis of one texel stays one texel.
+    #[must_use]
+    pub fn halved(&self, x: bool, y: bool) -> Level {
+        let fx = if x && self.width > 1 { 2 } else { 1 };
+        let fy = if y && self.height > 1 { 2 } else { 1 };
+        let (w, h) = (self.width / fx, self.height / fy);
         let mut texels = Vec::with_capacity((w * h) as usize);
         for j in 0..h {
             for i in 0..w {
                 // The source texels of this box; an odd last row/column joins the last box.
-                let xs = 2 * i..if i + 1 == w { self.width } else { 2 * i + 2 };
-                let ys = 2 * j..if j + 1 == h { self.height } else { 2 * j + 2 };
+                let xs = fx * i..if i + 1 == w { self.width } else { fx * i + fx };
+                let ys = fy * j..if j + 1 == h { self.height } else { fy * j + fy };
                 let mut sum = Vec3::ZERO;
                 let mut n = 0.0;
                 for y in ys {
@@ -192,6 +202,8 @@ pub struct Texture {
     pub name: String,
     /// Level 0 (full size) first, down to 1×1.
     pub levels: Vec<Level>,
+    /// The ripmap and the summed-area table, built on first use (see [`beyond`]).
+    prefiltered: std::sync::OnceLock<Box<beyond::Prefiltered>>,
 }
 
 /// Why a texture could not be loaded.
@@ -232,6 +244,7 @@ impl Texture {
         Self {
             name: name.to_owned(),
             levels,
+            prefiltered: std::sync::OnceLock::new(),
         }
     }
 

@@ -29,6 +29,21 @@ pub enum Mipmap {
     /// Trilinear: the two levels around `λ`, blended by its fraction.
     #[default]
     Linear,
+    /// A ripmap level chosen for each axis of the footprint's bounding box (see
+    /// [`super::beyond`]).
+    Ripmap,
+    /// The exact mean over the footprint's bounding box, from a summed-area table.
+    SummedArea,
+    /// Elliptical weighted average over the footprint's ellipse.
+    Ewa,
+}
+
+impl Mipmap {
+    /// Whether the lookup is one of GAMES101's range queries beyond the mipmap pyramid.
+    #[must_use]
+    pub fn beyond_the_pyramid(self) -> bool {
+        matches!(self, Self::Ripmap | Self::SummedArea | Self::Ewa)
+    }
 }
 
 /// A sampler: how a texture is read.
@@ -110,6 +125,9 @@ impl Texture {
     /// Samples at `uv` with the given screen derivatives of `uv`.
     #[must_use]
     pub fn sample(&self, uv: Vec2, duv_dx: Vec2, duv_dy: Vec2, s: &Sampler) -> Lookup {
+        if s.mipmap.beyond_the_pyramid() {
+            return self.sample_beyond(uv, duv_dx, duv_dy, s);
+        }
         let (major, minor, axis) = self.footprint(duv_dx, duv_dy);
         // Anisotropic: N taps along the major axis, each with the footprint major/N.
         let taps = if s.anisotropy > 1 && minor > 0.0 {
@@ -140,6 +158,31 @@ impl Texture {
         out
     }
 
+    /// A ripmap, summed-area or EWA lookup (the filter within a level and the anisotropic taps
+    /// do not apply); `level` is the level read (a ripmap's finer axis), `taps` the texels read
+    /// (EWA) or 1.
+    fn sample_beyond(&self, uv: Vec2, duv_dx: Vec2, duv_dy: Vec2, s: &Sampler) -> Lookup {
+        let size = self.levels[0].size();
+        let mut out = Lookup {
+            lod: self.lod(duv_dx, duv_dy) + s.lod_bias,
+            taps: 1,
+            footprint: [duv_dx * size, duv_dy * size],
+            ..Lookup::default()
+        };
+        match s.mipmap {
+            Mipmap::Ripmap => {
+                let (color, [i, j]) = self.sample_ripmap(uv, duv_dx, duv_dy, s.wrap);
+                (out.color, out.level) = (color, i.min(j));
+            }
+            Mipmap::SummedArea => out.color = self.sample_summed_area(uv, duv_dx, duv_dy, s.wrap),
+            _ => {
+                let (color, level, read) = self.sample_ewa(uv, duv_dx, duv_dy, s.wrap);
+                (out.color, out.level, out.taps) = (color, level, read.max(1));
+            }
+        }
+        out
+    }
+
     /// One isotropic lookup at level of detail `lod`: returns the colour, the finer level read
     /// and the blend weight of the next one.
     fn sample_lod(&self, uv: Vec2, lod: f32, s: &Sampler) -> (Vec3, u32, f32) {
@@ -155,7 +198,7 @@ impl Texture {
                 let k = (lod + 0.5).floor().clamp(0.0, max) as usize;
                 (read(k), k as u32, 0.0)
             }
-            Mipmap::Linear => {
+            Mipmap::Linear | Mipmap::Ripmap | Mipmap::SummedArea | Mipmap::Ewa => {
                 let l = lod.clamp(0.0, max);
                 let k = l.floor() as usize;
                 let f = l - k as f32;

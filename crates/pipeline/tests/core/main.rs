@@ -1,6 +1,7 @@
 //! Tests of the core pipeline against independent references: the OpenGL reference pages, glam,
 //! the course notes' formulas and values computed by hand.
 
+mod beyond;
 mod bezier;
 mod capture;
 mod clip;

@@ -106,6 +106,12 @@ pub enum Remark {
         /// The coarsest level.
         max: usize,
     },
+    /// A ripmap: one level per axis of the footprint's bounding box.
+    Ripmap,
+    /// A summed-area table: the exact mean over the footprint's bounding box.
+    SummedArea,
+    /// EWA: a Gaussian over the footprint's ellipse.
+    Ewa,
     /// Trilinear: levels `k` and `k + 1` blended by `t`, λ at most `max`.
     Trilinear {
         /// The coarsest level.

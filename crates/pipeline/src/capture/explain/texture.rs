@@ -112,9 +112,28 @@ impl FrameCapture {
                 format!("k = {}, t = {}", lookup.level, n(lookup.level_blend)),
                 Remark::Trilinear { max: max_level },
             ),
+            Mipmap::Ripmap => (
+                "(i, j) = (round log₂ Δu, round log₂ Δv)",
+                format!("min(i, j) = {}", lookup.level),
+                Remark::Ripmap,
+            ),
+            Mipmap::SummedArea => (
+                "T = (S(x₁, y₁) − S(x₀, y₁) − S(x₁, y₀) + S(x₀, y₀))/area",
+                v3(lookup.color),
+                Remark::SummedArea,
+            ),
+            Mipmap::Ewa => (
+                "T = Σ w·T/Σ w, w = exp(−2Q/F), Q < F",
+                format!("k = {}, {} texels", lookup.level, lookup.taps),
+                Remark::Ewa,
+            ),
         };
         lines.add(s, rule, String::new(), result);
         lines.note(remark);
+        if sampler.mipmap.beyond_the_pyramid() {
+            // No bilinear taps to list: the range query read its own texels.
+            return (None, Vec::new());
+        }
         let level = &texture.levels[lookup.level as usize];
         let one_bilinear_tap = lookup.taps == 1 && sampler.filter == Filter::Bilinear;
         if !one_bilinear_tap {
