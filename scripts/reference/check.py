@@ -223,7 +223,7 @@ def main():
     print(f"pipelens vs {peer.renderer}; bounds: coverage differing pixels ≤ {COVERAGE_MAX}, "
           f"|Δz_w| ≤ {DEPTH_MAX:g} (pixels whose samples are all covered), "
           f"colour within 2/255 on ≥ {COLOR_SHARE:.1%} of covered pixels")
-    head = f"| {'case':<26} | {'size':>9} | samples | covered px | coverage ≠ | max |Δz_w| | colour ≤ 2/255 | max Δ | |"
+    head = f"| {'case':<26} | {'size':>9} | samples | covered px | coverage ≠ | max Δz_w    | colour ≤ 2/255 | max Δ | |"
     print(head); print("|" + "|".join("-" * (len(c)) for c in head.split("|")[1:-1]) + "|")
     for case in cases:
         for size in ((800, 600), (1280, 720)):
