@@ -1,7 +1,9 @@
 //! `objects.NAME.p`: an object's transform, colour, material, and the parameters of its built-in
-//! shape (a Bézier curve's or patch's).
+//! shape (a Bézier curve's or patch's, an implicit surface's, a signal's or a wheel's).
 
 use glam::Vec3;
+use pipeline::mesh::BuiltinMesh;
+use pipeline::mesh::implicit::Implicit;
 
 use super::{Problem, Value, choice, number, vec3};
 
@@ -35,36 +37,23 @@ pub(super) const PATCH_PARAMS: [&str; 19] = [
 /// blend's smoothing, the polygonizing grid's resolution, and the size of its point cloud.
 pub(super) const IMPLICIT_PARAMS: [&str; 5] = ["shape", "gap", "smooth", "resolution", "cloud"];
 
-/// `objects.NAME.p` of an implicit surface.
-fn implicit_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(), Problem> {
-    let Some(pipeline::mesh::BuiltinMesh::Implicit(mut s)) = o.builtin else {
-        return Err(Problem::Unknown);
-    };
-    let within = |x: f32, max: f32| {
-        if (0.0..=max).contains(&x) {
-            Ok(x)
-        } else {
-            Err(format!("{p} must be from 0 to {max}, got {x}"))
-        }
-    };
+/// `p` of an implicit surface `s`: the surface with it changed.
+fn implicit_param(mut s: Implicit, p: &str, v: &Value) -> Result<BuiltinMesh, Problem> {
     match p {
         "shape" => s.shape = choice(v, &pipeline::mesh::implicit::ImplicitShape::NAMES)?,
-        "gap" => s.gap = within(number(v)?, 3.0)?,
-        "smooth" => s.smooth = within(number(v)?, 2.0)?,
+        "gap" => s.gap = in_range(p, number(v)?, 0.0, 3.0)?,
+        "smooth" => s.smooth = in_range(p, number(v)?, 0.0, 2.0)?,
         "resolution" => {
-            let n = within(number(v)?, 96.0)?;
+            let n = in_range(p, number(v)?, 0.0, 96.0)?;
             if n < 4.0 {
                 return Err(format!("resolution is at least 4 cells, got {n}").into());
             }
             s.resolution = n.round() as u32;
         }
-        "cloud" => s.points = within(number(v)?, 20_000.0)?.round() as u32,
+        "cloud" => s.points = in_range(p, number(v)?, 0.0, 20_000.0)?.round() as u32,
         _ => return Err(Problem::Unknown),
     }
-    let shape = pipeline::mesh::BuiltinMesh::Implicit(s);
-    o.builtin = Some(shape);
-    o.mesh = std::sync::Arc::new(shape.build());
-    Ok(())
+    Ok(BuiltinMesh::Implicit(s))
 }
 
 /// The parameters a sampled signal and a filmed wheel add.
@@ -72,62 +61,42 @@ pub(super) const SIGNAL_PARAMS: [&str; 3] = ["frequency", "rate", "blur"];
 /// See [`SIGNAL_PARAMS`].
 pub(super) const WHEEL_PARAMS: [&str; 3] = ["spokes", "step", "frames"];
 
-/// `objects.NAME.p` of a signal or a wheel.
-fn sampling_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(), Problem> {
-    use pipeline::mesh::BuiltinMesh;
+/// `p` of a signal or a wheel: the shape with it changed.
+fn sampling_param(shape: BuiltinMesh, p: &str, v: &Value) -> Result<BuiltinMesh, Problem> {
     let x = number(v)?;
-    let within = |min: f32, max: f32| {
-        if (min..=max).contains(&x) {
-            Ok(x)
-        } else {
-            Err(format!("{p} must be from {min} to {max}, got {x}"))
-        }
-    };
-    let shape = match (o.builtin, p) {
-        (Some(BuiltinMesh::Signal(mut s)), _) => {
+    let within = |min: f32, max: f32| in_range(p, x, min, max);
+    match (shape, p) {
+        (BuiltinMesh::Signal(mut s), "frequency" | "rate" | "blur") => {
             match p {
                 "frequency" => s.frequency = within(0.0, 40.0)?,
                 "rate" => s.rate = within(1.0, 100.0)?,
-                "blur" => s.blur = within(0.0, 4.0)?,
-                _ => return Err(Problem::Unknown),
+                _ => s.blur = within(0.0, 4.0)?,
             }
-            BuiltinMesh::Signal(s)
+            Ok(BuiltinMesh::Signal(s))
         }
-        (Some(BuiltinMesh::Wheel(mut w)), _) => {
+        (BuiltinMesh::Wheel(mut w), "spokes" | "step" | "frames") => {
             match p {
                 "spokes" => w.spokes = within(1.0, 36.0)?.round() as u32,
                 "step" => w.step = within(-360.0, 360.0)?,
-                "frames" => w.frames = within(1.0, 8.0)?.round() as u32,
-                _ => return Err(Problem::Unknown),
+                _ => w.frames = within(1.0, 8.0)?.round() as u32,
             }
-            BuiltinMesh::Wheel(w)
+            Ok(BuiltinMesh::Wheel(w))
         }
-        _ => return Err(Problem::Unknown),
-    };
-    o.builtin = Some(shape);
-    o.mesh = std::sync::Arc::new(shape.build());
-    Ok(())
+        _ => Err(Problem::Unknown),
+    }
 }
 
-/// `objects.NAME.p` of a Bézier patch: `u`, `v`, `levels` or a height `hIJ`.
-fn patch_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(), Problem> {
-    let Some(pipeline::mesh::BuiltinMesh::BezierPatch {
-        mut heights,
-        u: mut pu,
-        v: mut pv,
-        mut levels,
-    }) = o.builtin
-    else {
-        return Err(Problem::Unknown);
-    };
+/// `p` of a Bézier patch (`u`, `v`, `levels` or a height `hIJ`): the patch with it changed.
+fn patch_param(
+    mut heights: [[f32; 4]; 4],
+    [mut pu, mut pv]: [f32; 2],
+    mut levels: u8,
+    p: &str,
+    v: &Value,
+) -> Result<BuiltinMesh, Problem> {
     match p.as_bytes() {
-        b"u" | b"v" => {
-            let x = number(v)?;
-            if !(0.0..=1.0).contains(&x) {
-                return Err(format!("{p} must be from 0 to 1, got {x}").into());
-            }
-            *(if p == "u" { &mut pu } else { &mut pv }) = x;
-        }
+        b"u" => pu = in_range(p, number(v)?, 0.0, 1.0)?,
+        b"v" => pv = in_range(p, number(v)?, 0.0, 1.0)?,
         b"levels" => {
             let n = number(v)?;
             if !matches!(n, 0.0 | 1.0 | 2.0) {
@@ -140,28 +109,74 @@ fn patch_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<()
         }
         _ => return Err(Problem::Unknown),
     }
-    let shape = pipeline::mesh::BuiltinMesh::BezierPatch {
+    Ok(BuiltinMesh::BezierPatch {
         heights,
         u: pu,
         v: pv,
         levels,
-    };
-    o.builtin = Some(shape);
-    o.mesh = std::sync::Arc::new(shape.build());
-    Ok(())
+    })
 }
 
-/// A parameter of the object's built-in shape that only some shapes have (a patch's, an implicit
-/// surface's, a signal's or a wheel's), or `None` when `p` is not one of its shape's.
-fn shape_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Option<Result<(), Problem>> {
-    use pipeline::mesh::BuiltinMesh;
-    match o.builtin? {
-        BuiltinMesh::BezierPatch { .. } if PATCH_PARAMS.contains(&p) => Some(patch_param(o, p, v)),
-        BuiltinMesh::Implicit(_) if IMPLICIT_PARAMS.contains(&p) => Some(implicit_param(o, p, v)),
-        BuiltinMesh::Signal(_) if SIGNAL_PARAMS.contains(&p) => Some(sampling_param(o, p, v)),
-        BuiltinMesh::Wheel(_) if WHEEL_PARAMS.contains(&p) => Some(sampling_param(o, p, v)),
-        _ => None,
+/// `p` of a Bézier curve (`t`, `levels` or a control point `pK`): the curve with it changed.
+fn curve_param(
+    mut points: [glam::Vec2; 4],
+    mut t: f32,
+    mut levels: u8,
+    p: &str,
+    v: &Value,
+) -> Result<BuiltinMesh, Problem> {
+    match p {
+        "t" => t = in_range(p, number(v)?, 0.0, 1.0)?,
+        "levels" => {
+            let n = number(v)?;
+            if !matches!(n, 0.0 | 1.0 | 2.0 | 3.0) {
+                return Err(format!("levels is 0, 1, 2 or 3, got {n}").into());
+            }
+            levels = n as u8;
+        }
+        _ => {
+            let k = usize::from(p.as_bytes()[1] - b'0');
+            points[k] = vec3(v)?.truncate();
+        }
     }
+    Ok(BuiltinMesh::Bezier { points, t, levels })
+}
+
+/// `x` when it lies in `[min, max]`, else a message naming parameter `p`.
+fn in_range(p: &str, x: f32, min: f32, max: f32) -> Result<f32, String> {
+    if (min..=max).contains(&x) {
+        Ok(x)
+    } else {
+        Err(format!("{p} must be from {min} to {max}, got {x}"))
+    }
+}
+
+/// A parameter of the object's built-in shape that only some shapes have (a Bézier curve's or
+/// patch's, an implicit surface's, a signal's or a wheel's), or `None` when `p` is not one of its
+/// shape's. The shape changed, the object's mesh is built again from it.
+fn shape_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Option<Result<(), Problem>> {
+    let shape = match o.builtin? {
+        BuiltinMesh::Bezier { points, t, levels } if BEZIER_PARAMS.contains(&p) => {
+            curve_param(points, t, levels, p, v)
+        }
+        BuiltinMesh::BezierPatch {
+            heights,
+            u,
+            v: pv,
+            levels,
+        } if PATCH_PARAMS.contains(&p) => patch_param(heights, [u, pv], levels, p, v),
+        BuiltinMesh::Implicit(s) if IMPLICIT_PARAMS.contains(&p) => implicit_param(s, p, v),
+        s @ (BuiltinMesh::Signal(_) | BuiltinMesh::Wheel(_))
+            if SIGNAL_PARAMS.contains(&p) || WHEEL_PARAMS.contains(&p) =>
+        {
+            sampling_param(s, p, v)
+        }
+        _ => return None,
+    };
+    Some(shape.map(|shape| {
+        o.builtin = Some(shape);
+        o.mesh = std::sync::Arc::new(shape.build());
+    }))
 }
 
 /// `objects.NAME.p`: the object's transform, colour, material, or its built-in shape.
@@ -220,34 +235,6 @@ pub(super) fn object_param(
                 return Err(format!("shininess must not be negative, got {x}").into());
             }
             o.material.shininess = x;
-        }
-        "t" | "p0" | "p1" | "p2" | "p3" | "levels" => {
-            let Some(pipeline::mesh::BuiltinMesh::Bezier {
-                mut points,
-                mut t,
-                mut levels,
-            }) = o.builtin
-            else {
-                return Err(Problem::Unknown);
-            };
-            if p == "t" {
-                t = number(v)?;
-                if !(0.0..=1.0).contains(&t) {
-                    return Err(format!("t must be from 0 to 1, got {t}").into());
-                }
-            } else if p == "levels" {
-                let n = number(v)?;
-                if !matches!(n, 0.0 | 1.0 | 2.0 | 3.0) {
-                    return Err(format!("levels is 0, 1, 2 or 3, got {n}").into());
-                }
-                levels = n as u8;
-            } else {
-                let k = usize::from(p.as_bytes()[1] - b'0');
-                points[k] = vec3(v)?.truncate();
-            }
-            let shape = pipeline::mesh::BuiltinMesh::Bezier { points, t, levels };
-            o.builtin = Some(shape);
-            o.mesh = std::sync::Arc::new(shape.build());
         }
         "axis_angle" => {
             let axis = o.axis_rotation.map_or(Vec3::Y, |(a, _)| a);

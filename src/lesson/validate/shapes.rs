@@ -98,19 +98,9 @@ pub(super) fn bezier_patch(
         );
         return None;
     }
-    let mut param = |name: &str, value: Option<f64>| {
-        let x = value.unwrap_or(0.5);
-        if (0.0..=1.0).contains(&x) {
-            Some(x as f32)
-        } else {
-            c.error(
-                span.clone(),
-                format!("`{name}` of a bezier_patch must be from 0 to 1, got {x}"),
-            );
-            None
-        }
-    };
-    let (u, v) = (param("u", t.u)?, param("v", t.v)?);
+    let what = "bezier_patch";
+    let u = ranged(c, &span, what, "u", t.u, (0.5, 0.0, 1.0))?;
+    let v = ranged(c, &span, what, "v", t.v, (0.5, 0.0, 1.0))?;
     let levels = t.levels.unwrap_or(2);
     let Ok(levels @ 0..=2) = u8::try_from(levels) else {
         c.error(
