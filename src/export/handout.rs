@@ -171,8 +171,10 @@ details{margin-top:.4em} .key{display:inline-block;background:#8a3b00;color:#fff
 body{max-width:none;margin:0;font-size:10.5pt}
 section{break-inside:avoid;page-break-inside:avoid;margin-top:1em}
 h2{break-after:avoid}
+figure,.question,.film{break-inside:avoid}
+figure.m figcaption{max-width:80mm}
 .screen{display:none}
-img{max-height:125mm;width:auto}
+img{max-height:100mm;width:auto}
 .film img{max-height:none;width:100%}
 }
 ";

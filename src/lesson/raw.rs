@@ -159,6 +159,9 @@ pub struct RawObject {
     pub rotate: Option<RawVec3>,
     /// `{ axis = [x, y, z], angle = degrees }`: a rotation about an arbitrary axis.
     pub rotate_axis: Option<Spanned<RawAxisRotation>>,
+    /// `{ axis = [x, y, z], angle = θ, t = 0.5 }`: with `rotate_axis`, the orientation part way
+    /// (`t`) from that rotation to this one, by slerp.
+    pub slerp_to: Option<Spanned<RawSlerpTo>>,
     /// `[sx, sy, sz]` or one number for a uniform scale.
     pub scale: Option<Spanned<RawScale>>,
     /// `"vertex"`, `"normal"` or `[r, g, b]`.
@@ -187,6 +190,15 @@ pub struct RawObject {
 pub struct RawAxisRotation {
     pub axis: RawVec3,
     pub angle: Spanned<f64>,
+}
+
+/// `slerp_to = { axis = [x, y, z], angle = θ, t = 0.5 }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawSlerpTo {
+    pub axis: RawVec3,
+    pub angle: Spanned<f64>,
+    pub t: Option<Spanned<f64>>,
 }
 
 /// `environment = { cube = "room", reflectivity = … }`.

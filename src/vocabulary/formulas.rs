@@ -18,6 +18,14 @@ const FORMULAS_ZH: &[(&str, &str)] = &[
         "M = T·R(n, θ)·Rz·Ry·Rx·S：先缩放，再绕 x、y、z 旋转，然后绕轴 n 旋转，最后平移",
     ),
     (
+        "M = T·R(slerp(q₀, q₁, t))·Rz·Ry·Rx·S: scale, rotate about x, y, z, then part way between two orientations, then translate",
+        "M = T·R(slerp(q₀, q₁, t))·Rz·Ry·Rx·S：先缩放，再绕 x、y、z 旋转，然后转到两个朝向之间的某处，最后平移",
+    ),
+    (
+        "the rotation part way from the first orientation to the second, along the shorter arc",
+        "沿较短的大圆弧，从第一个朝向转到第二个朝向途中的旋转",
+    ),
+    (
         "M = T·Rz·Ry·Rx·S: scale, rotate about x, y, z, then translate",
         "M = T·Rz·Ry·Rx·S：先缩放，再绕 x、y、z 旋转，最后平移",
     ),

@@ -150,6 +150,36 @@ fn cameras_meshes_and_objects() {
     );
 }
 
+/// A slerp needs its first orientation (`rotate_axis`), a second axis with a length, and t in
+/// [0, 1].
+#[test]
+fn slerp_between_two_orientations() {
+    assert_error(
+        "[[scene.objects]]\nmesh = \"cube\"\nslerp_to = { axis = [0, 0, 1], angle = 90 }\n",
+        3,
+        12,
+        "`slerp_to` needs `rotate_axis` on the same object",
+    );
+    let first =
+        "[[scene.objects]]\nmesh = \"cube\"\nrotate_axis = { axis = [1, 1, 0], angle = 90 }\n";
+    assert_error(
+        &format!("{first}slerp_to = {{ axis = [0, 0, 0], angle = 90 }}\n"),
+        4,
+        21,
+        "`axis` must not be the zero vector",
+    );
+    assert_error(
+        &format!("{first}slerp_to = {{ axis = [0, 0, 1], angle = 90, t = 1.5 }}\n"),
+        4,
+        48,
+        "`t` runs from 0 (the first orientation) to 1 (the second), got 1.5",
+    );
+    let good = format!("{first}slerp_to = {{ axis = [0, 0, 1], angle = 90, t = 0.5 }}\n");
+    let spec = lesson::parse_scene(&good, "t.toml", Path::new(".")).expect("a good slerp");
+    let s = spec.scene.objects[0].slerp.expect("the slerp");
+    assert_eq!((s.axis, s.angle_deg, s.t), (glam::Vec3::Z, 90.0, 0.5));
+}
+
 #[test]
 fn every_problem_is_reported_not_just_the_first() {
     let found = errors(&format!(

@@ -65,6 +65,9 @@ pub struct Object {
     /// applied after its Euler rotations: `M = T·R(n, θ)·Rz·Ry·Rx·S`, with `R(n, θ)` built as the
     /// notes do (`Rx(−θx)·Ry(−θy)·Rz(θ)·Ry(θy)·Rx(θx)`).
     pub axis_rotation: Option<(Vec3, f32)>,
+    /// With an axis rotation: the orientation moves by slerp from it to a second one, and
+    /// `R(slerp(q₀, q₁, t))` takes the axis rotation's place in `M`.
+    pub slerp: Option<transform::SlerpTo>,
     /// How the mesh was generated, when it is built in: lets a lesson change a parameter of the
     /// shape itself (a Bézier curve's `t`) and build it again.
     pub builtin: Option<BuiltinMesh>,
@@ -90,6 +93,7 @@ impl Object {
             lit: true,
             casts_shadow: true,
             axis_rotation: None,
+            slerp: None,
             builtin: None,
         }
     }
@@ -104,9 +108,10 @@ impl Object {
             "T(tx, ty, tz)",
             transform::translate(self.translate),
         ));
-        let about_axis = self
-            .axis_rotation
-            .and_then(|(axis, deg)| transform::rotate_axis_aligned(axis, deg.to_radians()).ok());
+        let about_axis = self.axis_rotation.and_then(|(axis, deg)| match self.slerp {
+            Some(s) => s.matrix(axis, deg).ok(),
+            None => transform::rotate_axis_aligned(axis, deg.to_radians()).ok(),
+        });
         factors.extend(about_axis);
         factors.extend([
             NamedMatrix::new("Rz", "Rz(θz)", transform::rotate_z(r.z)),
@@ -118,6 +123,9 @@ impl Object {
         let formula = match (self.parent.is_some(), self.axis_rotation.is_some()) {
             (true, _) => "M = parent·T·Rz·Ry·Rx·S: the object's own transform, then its parent's",
             (false, false) => "M = T·Rz·Ry·Rx·S: scale, rotate about x, y, z, then translate",
+            (false, true) if self.slerp.is_some() => {
+                "M = T·R(slerp(q₀, q₁, t))·Rz·Ry·Rx·S: scale, rotate about x, y, z, then part way between two orientations, then translate"
+            }
             (false, true) => {
                 "M = T·R(n, θ)·Rz·Ry·Rx·S: scale, rotate about x, y, z, then about the axis n, then translate"
             }

@@ -59,18 +59,71 @@ pub fn ui(ui: &mut Ui, session: &Session) -> Option<Command> {
                 .default_open(true)
                 .show(ui, |ui| figures(ui, &mut spec.scene.figures, lang));
         }
-        egui::CollapsingHeader::new(RichText::new(lang.tr("Objects", "物体")).strong()).default_open(false).show(ui, |ui| {
+        // Open when an object moves between two orientations: its t is the thing to drag.
+        let turning = spec.scene.objects.iter().any(|o| o.slerp.is_some());
+        egui::CollapsingHeader::new(RichText::new(lang.tr("Objects", "物体")).strong()).default_open(turning).show(ui, |ui| {
             for (i, o) in spec.scene.objects.iter_mut().enumerate() {
-                egui::CollapsingHeader::new(labels.label(&o.name, lang)).id_salt(("object", i)).show(ui, |ui| {
+                egui::CollapsingHeader::new(labels.label(&o.name, lang)).id_salt(("object", i)).default_open(o.slerp.is_some()).show(ui, |ui| {
                     let tip = lang.tr("M = T·Rz·Ry·Rx·S", "M = T·Rz·Ry·Rx·S");
                     vec3_edit(ui, lang.tr("translate", "平移"), &mut o.translate, 0.05, tip);
                     vec3_edit(ui, lang.tr("rotate °", "旋转 °"), &mut o.rotate_deg, 1.0, tip);
                     vec3_edit(ui, lang.tr("scale", "缩放"), &mut o.scale, 0.02, tip);
+                    orientations(ui, o, lang);
                 });
             }
         });
     });
     (spec != session.spec).then(|| Command::SetSpec(Box::new(spec)))
+}
+
+/// An object's rotation about an axis (the first orientation) and, when it has one, the second
+/// orientation of its slerp with the slider for t.
+fn orientations(ui: &mut Ui, o: &mut pipeline::scene::Object, lang: Lang) {
+    let Some((axis, degrees)) = &mut o.axis_rotation else {
+        return;
+    };
+    let first = if o.slerp.is_some() {
+        lang.tr("q₀ axis", "q₀ 旋转轴")
+    } else {
+        lang.tr("axis n", "旋转轴 n")
+    };
+    let tip = lang.tr(
+        "R(n, θ) = cos θ·I + (1 − cos θ)·n·n^T + sin θ·N; q = (cos(θ/2), sin(θ/2)·n)",
+        "R(n, θ) = cos θ·I + (1 − cos θ)·n·n^T + sin θ·N；q = (cos(θ/2), sin(θ/2)·n)",
+    );
+    axis_angle(ui, first, axis, degrees, tip, lang);
+    if let Some(s) = &mut o.slerp {
+        axis_angle(
+            ui,
+            lang.tr("q₁ axis", "q₁ 旋转轴"),
+            &mut s.axis,
+            &mut s.angle_deg,
+            tip,
+            lang,
+        );
+        ui.add(Slider::new(&mut s.t, 0.0..=1.0).text("slerp t")).on_hover_text(lang.tr(
+            "slerp(q₀, q₁, t) = sin((1 − t)Ω)/sin Ω·q₀ + sin(tΩ)/sin Ω·q₁, cos Ω = q₀·q₁: t = 0 is q₀, t = 1 is q₁, at a constant angular speed between",
+            "slerp(q₀, q₁, t) = sin((1 − t)Ω)/sin Ω·q₀ + sin(tΩ)/sin Ω·q₁，cos Ω = q₀·q₁：t = 0 为 q₀，t = 1 为 q₁，其间匀角速度转动",
+        ));
+    }
+}
+
+/// An axis (kept non-zero: a zero axis is refused) and an angle in degrees.
+fn axis_angle(ui: &mut Ui, label: &str, axis: &mut Vec3, degrees: &mut f32, tip: &str, lang: Lang) {
+    let mut edited = *axis;
+    vec3_edit(ui, label, &mut edited, 0.02, tip);
+    if edited.length() > 1e-6 {
+        *axis = edited;
+    }
+    ui.horizontal(|ui| {
+        ui.label(lang.tr("angle θ", "转角 θ")).on_hover_text(tip);
+        ui.add(
+            DragValue::new(degrees)
+                .speed(1.0)
+                .suffix("°")
+                .max_decimals(1),
+        );
+    });
 }
 
 /// The projection's kind; switching keeps the view volume's near rectangle and depth range.

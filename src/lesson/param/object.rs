@@ -8,13 +8,16 @@ use pipeline::mesh::implicit::Implicit;
 use super::{Problem, Value, choice, number, vec3};
 
 /// The parameters of every object (`objects.NAME.p`): transform, colour, material.
-pub(super) const OBJECT_PARAMS: [&str; 11] = [
+pub(super) const OBJECT_PARAMS: [&str; 14] = [
     "translate",
     "rotate",
     "scale",
     "color",
     "axis",
     "axis_angle",
+    "slerp_axis",
+    "slerp_angle",
+    "slerp_t",
     "ka",
     "kd",
     "ks",
@@ -240,7 +243,38 @@ pub(super) fn object_param(
             let axis = o.axis_rotation.map_or(Vec3::Y, |(a, _)| a);
             o.axis_rotation = Some((axis, number(v)?));
         }
+        "slerp_axis" | "slerp_angle" | "slerp_t" => slerp_param(o, p, v)?,
         _ => return Err(Problem::Unknown),
+    }
+    Ok(())
+}
+
+/// `slerp_axis`, `slerp_angle`, `slerp_t`: the second orientation of a slerp and how far along
+/// the arc. The first one is the object's rotation about an axis; without a `slerp_to` yet, the
+/// second starts equal to it (and `t = 0`), so setting its parameters one by one builds it.
+fn slerp_param(o: &mut pipeline::scene::Object, p: &str, v: &Value) -> Result<(), Problem> {
+    let Some((axis, angle_deg)) = o.axis_rotation else {
+        return Err(
+            "slerp starts from the object's rotation about an axis: give it `rotate_axis` first"
+                .to_owned()
+                .into(),
+        );
+    };
+    let s = o.slerp.get_or_insert(pipeline::transform::SlerpTo {
+        axis,
+        angle_deg,
+        t: 0.0,
+    });
+    match p {
+        "slerp_axis" => {
+            let axis = vec3(v)?;
+            if axis.length() < 1e-6 {
+                return Err("the axis must not be the zero vector".to_owned().into());
+            }
+            s.axis = axis;
+        }
+        "slerp_angle" => s.angle_deg = number(v)?,
+        _ => s.t = in_range(p, number(v)?, 0.0, 1.0)?,
     }
     Ok(())
 }

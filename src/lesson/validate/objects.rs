@@ -55,6 +55,9 @@ pub(super) fn object(
             object.axis_rotation = Some((axis, angle));
         }
     }
+    if let Some(r) = &raw.slerp_to {
+        slerp_to(c, &mut object, raw.rotate_axis.is_some(), r);
+    }
     if let Some(s) = &raw.scale {
         let v = match *s.get_ref() {
             RawScale::Uniform(k) => [k; 3],
@@ -406,5 +409,45 @@ fn texture(c: &mut Checker<'_>, t: &Spanned<String>, base: &Path) -> Option<Text
                 None
             }
         },
+    }
+}
+
+/// `slerp_to`: the second orientation (its axis must have a length, `t` in [0, 1]); it needs
+/// `rotate_axis`, the first.
+fn slerp_to(
+    c: &mut Checker,
+    object: &mut Object,
+    has_first: bool,
+    r: &Spanned<crate::lesson::raw::RawSlerpTo>,
+) {
+    if !has_first {
+        c.error(
+            r.span(),
+            "`slerp_to` needs `rotate_axis` on the same object: that rotation is the first orientation, this table the second",
+        );
+    }
+    let raw = r.get_ref();
+    let t = raw.t.as_ref().map_or(Some(0.0), |t| c.finite("t", t));
+    if let (Some(axis), Some(angle), Some(t)) =
+        (c.vec3("axis", &raw.axis), c.finite("angle", &raw.angle), t)
+    {
+        if axis.length() < 1e-6 {
+            c.error(
+                raw.axis.span(),
+                "`axis` must not be the zero vector: it gives the direction to rotate about",
+            );
+        }
+        if !(0.0..=1.0).contains(&t) {
+            let span = raw.t.as_ref().map_or(r.span(), Spanned::span);
+            c.error(
+                span,
+                format!("`t` runs from 0 (the first orientation) to 1 (the second), got {t}"),
+            );
+        }
+        object.slerp = Some(pipeline::transform::SlerpTo {
+            axis,
+            angle_deg: angle,
+            t,
+        });
     }
 }

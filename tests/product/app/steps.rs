@@ -72,17 +72,33 @@ fn a_step_without_buffer_shows_its_stages_default_even_after_a_reload() {
     );
 }
 
-/// Lesson 02's last step, inspector open: beside the five-factor model matrix the Matrices tab
-/// shows the same rotation by Rodrigues' formula and by the quaternion, with its numbers
-/// (n = (1, 1, 0)/√2, θ = 90°: q = (cos 45°, sin 45°·n) = (0.707, 0.5, 0.5, 0)) and the slerp.
+/// Lesson 02, inspector open. Its last step stands halfway between two orientations: the
+/// Matrices tab works the slerp number by number (q₀ = 90° about (1, 1, 0)/√2, q₁ = 90° about z,
+/// cos Ω = 0.5, weights sin 30°/sin 60° = 0.577, slerp = (0.816, 0.289, 0.289, 0.408), 70.5° about
+/// (0.5, 0.5, 0.707), as its question works it by hand). Two steps back, beside the five-factor
+/// model matrix, the same rotation by Rodrigues' formula and by the quaternion
+/// (q = (cos 45°, sin 45°·n) = (0.707, 0.5, 0.5, 0)).
 #[test]
-fn the_inspector_shows_an_axis_rotation_by_rodrigues_and_by_quaternion() {
+fn the_inspector_shows_an_axis_rotation_by_rodrigues_by_quaternion_and_a_slerp() {
     let path = crate::support::repo().join("lessons/02-arbitrary-axis.toml");
     let mut h = lesson_harness(Some(path));
     h.run_steps(2);
     let last = go_to_last_step(&mut h);
     assert_eq!(step_of(&h), last);
     h.key_press(egui::Key::I);
+    h.run_steps(3);
+    for shown in [
+        "q₀·q₁ = 0.500; Ω = 60.0°",
+        "t = 0.50: weights 0.577, 0.577",
+        "slerp = (0.816, 0.289, 0.289, 0.408) = 70.5° about (0.500, 0.500, 0.707)",
+    ] {
+        assert!(h.query_by_label_contains(shown).is_some(), "{shown}");
+    }
+    for _ in 0..2 {
+        h.key_press(egui::Key::ArrowLeft);
+        h.run_steps(2);
+    }
+    assert_eq!(step_of(&h), last - 2);
     h.run_steps(3);
     assert!(
         h.query_by_label_contains("q = (0.707, 0.500, 0.500, 0.000)")

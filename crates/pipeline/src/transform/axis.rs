@@ -147,3 +147,136 @@ impl Quaternion {
         ])
     }
 }
+
+impl Quaternion {
+    /// The 4-D dot product `q·r = w_q·w_r + v_q·v_r`: the cosine of the angle `Ω` between the
+    /// two unit quaternions on the unit sphere in 4-D.
+    #[must_use]
+    pub fn dot(&self, other: &Self) -> f32 {
+        self.w * other.w + self.v.dot(other.v)
+    }
+
+    /// `(w, v) → (−w, −v)`: the same rotation, from the other side of the sphere.
+    #[must_use]
+    pub fn negated(&self) -> Self {
+        Self {
+            w: -self.w,
+            v: -self.v,
+        }
+    }
+
+    /// Spherical linear interpolation from `self` (`t = 0`) to `to` (`t = 1`) along the shorter
+    /// great arc:
+    ///
+    /// `slerp(q₀, q₁, t) = sin((1 − t)·Ω)/sin Ω · q₀ + sin(t·Ω)/sin Ω · q₁`, `cos Ω = q₀·q₁`,
+    ///
+    /// with `q₁` replaced by `−q₁` when `q₀·q₁ < 0` (the same rotation, the shorter way round).
+    /// The result turns at a constant angular speed, by `2Ω` in all. When the two nearly coincide
+    /// (`sin Ω → 0`) it falls back to the normalized linear blend, which is the same to first order.
+    #[must_use]
+    pub fn slerp(&self, to: &Self, t: f32) -> Self {
+        let arc = self.arc_to(to);
+        let (a, b) = arc.weights(t);
+        let (w, v) = (a * self.w + b * arc.end.w, a * self.v + b * arc.end.v);
+        let length = (w * w + v.length_squared()).sqrt();
+        Self {
+            w: w / length,
+            v: v / length,
+        }
+    }
+
+    /// The shorter great arc from `self` to `to` (see [`Self::slerp`]).
+    #[must_use]
+    pub fn arc_to(&self, to: &Self) -> GreatArc {
+        let d = self.dot(to);
+        let (end, flipped) = if d < 0.0 {
+            (to.negated(), true)
+        } else {
+            (*to, false)
+        };
+        GreatArc {
+            omega: d.abs().min(1.0).acos(),
+            end,
+            flipped,
+        }
+    }
+
+    /// The rotation as an axis (unit length; `+x` for no rotation) and an angle in `[0, 2π]`:
+    /// `θ = 2·acos w`, `n = v / sin(θ/2)`.
+    #[must_use]
+    pub fn axis_angle(&self) -> (Vec3, f32) {
+        let theta = 2.0 * self.w.clamp(-1.0, 1.0).acos();
+        (self.v.try_normalize().unwrap_or(Vec3::X), theta)
+    }
+}
+
+/// The shorter great arc between two unit quaternions, as slerp travels it.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct GreatArc {
+    /// `Ω = acos |q₀·q₁|`, radians: half the angle of the rotation from one orientation to the other.
+    pub omega: f32,
+    /// `q₁`, or `−q₁` when that is nearer `q₀`.
+    pub end: Quaternion,
+    /// Whether `q₁` was negated.
+    pub flipped: bool,
+}
+
+impl GreatArc {
+    /// slerp's weights of `q₀` and of the arc's end at `t`: `sin((1 − t)Ω)/sin Ω` and `sin(tΩ)/sin Ω`
+    /// (`1 − t` and `t` when `sin Ω` is too small to divide by).
+    #[must_use]
+    pub fn weights(&self, t: f32) -> (f32, f32) {
+        let s = self.omega.sin();
+        if s < 1e-4 {
+            (1.0 - t, t)
+        } else {
+            (
+                ((1.0 - t) * self.omega).sin() / s,
+                (t * self.omega).sin() / s,
+            )
+        }
+    }
+}
+
+/// An object's orientation moving by slerp from its rotation about an axis (`q₀`) to a second
+/// rotation about an axis (`q₁`): the rotation at `t` is `slerp(q₀, q₁, t)`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct SlerpTo {
+    /// The second orientation's axis (any length but zero).
+    pub axis: Vec3,
+    /// The second orientation's angle about it, degrees.
+    pub angle_deg: f32,
+    /// How far along the arc, `0` (the first orientation) to `1` (the second).
+    pub t: f32,
+}
+
+impl SlerpTo {
+    /// The quaternions of the two orientations, the first being the rotation by `from_deg` about
+    /// `from_axis`.
+    ///
+    /// # Errors
+    /// [`TransformError::ZeroAxis`] when either axis has no length.
+    pub fn ends(
+        &self,
+        from_axis: Vec3,
+        from_deg: f32,
+    ) -> Result<(Quaternion, Quaternion), TransformError> {
+        Ok((
+            Quaternion::from_axis_angle(from_axis, from_deg.to_radians())?,
+            Quaternion::from_axis_angle(self.axis, self.angle_deg.to_radians())?,
+        ))
+    }
+
+    /// The rotation `R(slerp(q₀, q₁, t))` as a named matrix.
+    ///
+    /// # Errors
+    /// [`TransformError::ZeroAxis`] when either axis has no length.
+    pub fn matrix(&self, from_axis: Vec3, from_deg: f32) -> Result<NamedMatrix, TransformError> {
+        let (q0, q1) = self.ends(from_axis, from_deg)?;
+        Ok(NamedMatrix::new(
+            "R(slerp(q₀, q₁, t))",
+            "the rotation part way from the first orientation to the second, along the shorter arc",
+            q0.slerp(&q1, self.t).to_matrix(),
+        ))
+    }
+}

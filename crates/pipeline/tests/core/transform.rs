@@ -158,6 +158,61 @@ fn translate_scale_shear_by_hand() {
     );
 }
 
+/// slerp against glam's `Quat::slerp` on random pairs (sign-insensitive: q and −q are one
+/// rotation), the constant angular speed (the angle from q₀ grows as t·2Ω), and the notes'
+/// halfway example worked by hand: q₀ = 90° about (1, 1, 0)/√2 = (0.707, 0.5, 0.5, 0),
+/// q₁ = 90° about z = (0.707, 0, 0, 0.707), cos Ω = 0.5, both weights sin 30°/sin 60° = 0.577,
+/// slerp = (0.816, 0.289, 0.289, 0.408): 70.5° about (0.5, 0.5, 0.707).
+#[test]
+fn slerp_follows_the_shorter_arc_at_constant_speed() {
+    let mut rng = fastrand::Rng::with_seed(11);
+    let same = |a: &Quaternion, b: glam::Quat| -> f32 {
+        let d = a.w * b.w + a.v.dot(glam::Vec3::new(b.x, b.y, b.z));
+        1.0 - d.abs()
+    };
+    for _ in 0..500 {
+        let (a0, a1) = (random_vec(&mut rng, 1.0), random_vec(&mut rng, 1.0));
+        if a0.length() < 1e-3 || a1.length() < 1e-3 {
+            continue;
+        }
+        let (t0, t1) = (rng.f32() * 6.0 - 3.0, rng.f32() * 6.0 - 3.0);
+        let q0 = Quaternion::from_axis_angle(a0, t0).expect("axis has a length");
+        let q1 = Quaternion::from_axis_angle(a1, t1).expect("axis has a length");
+        let g0 = glam::Quat::from_axis_angle(a0.normalize(), t0);
+        let g1 = glam::Quat::from_axis_angle(a1.normalize(), t1);
+        let arc = q0.arc_to(&q1);
+        for t in [0.0, 0.25, 0.5, 0.9, 1.0] {
+            let q = q0.slerp(&q1, t);
+            assert!(same(&q, g0.slerp(g1, t)) < 1e-4, "slerp vs glam at t = {t}");
+            // The angle between q₀ and q(t) on the 4-D sphere is t·Ω.
+            let travelled = q0.dot(&q).abs().min(1.0).acos();
+            assert!((travelled - t * arc.omega).abs() < 2e-3, "constant speed");
+        }
+    }
+    let q0 = Quaternion::from_axis_angle(Vec3::new(1.0, 1.0, 0.0), 90f32.to_radians())
+        .expect("axis has a length");
+    let q1 = Quaternion::from_axis_angle(Vec3::Z, 90f32.to_radians()).expect("axis has a length");
+    let arc = q0.arc_to(&q1);
+    assert!((arc.omega.to_degrees() - 60.0).abs() < 1e-3);
+    let (a, b) = arc.weights(0.5);
+    assert!((a - 0.577_35).abs() < 1e-4 && (b - 0.577_35).abs() < 1e-4);
+    let half = q0.slerp(&q1, 0.5);
+    assert!((half.w - 0.816_5).abs() < 1e-3);
+    assert_vec_eq(half.v, Vec3::new(0.288_7, 0.288_7, 0.408_2), 1e-3, "v");
+    let (axis, angle) = half.axis_angle();
+    assert!((angle.to_degrees() - 70.53).abs() < 0.01);
+    assert_vec_eq(
+        axis,
+        Vec3::new(0.5, 0.5, std::f32::consts::FRAC_1_SQRT_2),
+        1e-3,
+        "axis",
+    );
+    // Past a half turn apart the other sign is nearer: slerp takes −q₁.
+    let far = Quaternion::from_axis_angle(Vec3::Y, 3.0).expect("axis has a length");
+    let near = Quaternion::from_axis_angle(Vec3::Y, -3.0).expect("axis has a length");
+    assert!(far.arc_to(&near).flipped);
+}
+
 #[test]
 fn arbitrary_axis_rotation_four_ways_agree() {
     let mut rng = fastrand::Rng::with_seed(7);

@@ -23,7 +23,7 @@ pub fn ui(ui: &mut Ui, session: &Session, capture: &FrameCapture) {
         Teaching::Model(k) if !m.models.is_empty() => {
             let k = k.min(m.models.len() - 1);
             object_caption(ui, session, capture, k);
-            axis_rotation_forms(ui, session, k);
+            super::rotation::forms(ui, session, k);
             matrix(ui, &m.models[k], lang, "focused-model", true);
         }
         Teaching::Stack => hierarchy(ui, session, capture, lang),
@@ -69,94 +69,6 @@ pub fn ui(ui: &mut Ui, session: &Session, capture: &FrameCapture) {
         });
 }
 
-/// For an object turned about an arbitrary axis (shown first: the rotation is the subject), the
-/// rotation R(n, θ) of its model matrix's factors two more ways, computed
-/// independently: Rodrigues' formula, and the unit quaternion q (through glam's `Quat`), with the
-/// slerp halfway from no rotation to q.
-fn axis_rotation_forms(ui: &mut Ui, session: &Session, k: usize) {
-    let Some((axis, degrees)) = session
-        .spec
-        .scene
-        .objects
-        .get(k)
-        .and_then(|o| o.axis_rotation)
-    else {
-        return;
-    };
-    let Some(n) = axis.try_normalize() else {
-        return;
-    };
-    let lang = session.lang;
-    let theta = degrees.to_radians();
-    let style = crate::app::views::typeset::Style::body(ui);
-    ui.add_space(6.0);
-    egui::CollapsingHeader::new(
-        RichText::new(lang.tr(
-            "The same rotation R(n, θ), two more ways",
-            "同一个旋转 R(n, θ) 的另外两种算法",
-        ))
-        .strong(),
-    )
-    .id_salt("axis-rotation-forms")
-    .default_open(true)
-    .show(ui, |ui| {
-        typeset::formula(
-            ui,
-            "R(n, θ) = cos θ·I + (1 − cos θ)·n·n^T + sin θ·N",
-            &style,
-        );
-        note(
-            ui,
-            &format!(
-                "{} n = ({:.3}, {:.3}, {:.3}), θ = {degrees:.1}°",
-                lang.tr(
-                    "Rodrigues' formula, N the cross-product matrix of n:",
-                    "Rodrigues 公式，N 是 n 的叉乘矩阵："
-                ),
-                n.x,
-                n.y,
-                n.z
-            ),
-        );
-        if let Ok(r) = pipeline::transform::rotate_axis_rodrigues(n, theta) {
-            crate::app::views::matrix_grid(ui, &r, "rodrigues");
-        }
-        ui.add_space(4.0);
-        let q = glam::Quat::from_axis_angle(n, theta);
-        typeset::formula(ui, "q = (cos(θ/2), sin(θ/2)·n), v′ = q·v·q^(−1)", &style);
-        note(
-            ui,
-            &format!(
-                "q = ({:.3}, {:.3}, {:.3}, {:.3}) {}",
-                q.w,
-                q.x,
-                q.y,
-                q.z,
-                lang.tr(
-                    "(w, x, y, z); −q is the same rotation. Its matrix:",
-                    "（w, x, y, z）；−q 表示同一个旋转。它的矩阵：",
-                )
-            ),
-        );
-        crate::app::views::matrix_grid(ui, &glam::Mat4::from_quat(q), "quaternion");
-        let half = glam::Quat::IDENTITY.slerp(q, 0.5);
-        note(
-            ui,
-            &format!(
-                "slerp(1, q, ½) = ({:.3}, {:.3}, {:.3}, {:.3}): {}",
-                half.w,
-                half.x,
-                half.y,
-                half.z,
-                lang.tr(
-                    "halfway along the shortest arc, the rotation by θ/2 about the same axis.",
-                    "沿最短弧走到一半，即绕同一轴旋转 θ/2。",
-                )
-            ),
-        );
-    });
-}
-
 /// Which object a model matrix places, by its label.
 fn object_caption(ui: &mut Ui, session: &Session, capture: &FrameCapture, k: usize) {
     if let Some(o) = capture.objects.get(k) {
@@ -172,7 +84,7 @@ fn object_caption(ui: &mut Ui, session: &Session, capture: &FrameCapture, k: usi
 }
 
 /// A note in smaller type, legible (not greyed out).
-fn note(ui: &mut Ui, text: &str) {
+pub(super) fn note(ui: &mut Ui, text: &str) {
     let style = typeset::Style::body(ui);
     typeset::paragraph(ui, text, &style.sized(style.size * 0.9));
 }

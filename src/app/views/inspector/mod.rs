@@ -4,6 +4,7 @@
 
 mod matrices;
 mod pixel;
+mod rotation;
 mod vertices;
 
 use egui::Ui;

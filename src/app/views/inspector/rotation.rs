@@ -1,0 +1,206 @@
+//! An object's rotation about an arbitrary axis, beside its model matrix: R(n, θ) by Rodrigues'
+//! formula and by the unit quaternion; and, when the object moves between two orientations, the
+//! slerp between their quaternions, number by number.
+
+use egui::{RichText, Ui};
+
+use super::matrices::note;
+use crate::app::session::Session;
+use crate::app::views::typeset;
+
+/// The rotation forms of object `k`, if it has a rotation about an axis: the slerp when it moves
+/// between two orientations, Rodrigues and the quaternion otherwise.
+pub fn forms(ui: &mut Ui, session: &Session, k: usize) {
+    let Some(o) = session.spec.scene.objects.get(k) else {
+        return;
+    };
+    match (o.axis_rotation, o.slerp) {
+        (Some((axis, degrees)), Some(s)) => slerp_forms(ui, session, (axis, degrees), s),
+        (Some(_), None) => axis_forms(ui, session, k),
+        _ => {}
+    }
+}
+
+/// For an object turned about an arbitrary axis (shown first: the rotation is the subject), the
+/// rotation R(n, θ) of its model matrix's factors two more ways, computed
+/// independently: Rodrigues' formula, and the unit quaternion q (through glam's `Quat`), with the
+/// slerp halfway from no rotation to q.
+fn axis_forms(ui: &mut Ui, session: &Session, k: usize) {
+    let Some((axis, degrees)) = session
+        .spec
+        .scene
+        .objects
+        .get(k)
+        .and_then(|o| o.axis_rotation)
+    else {
+        return;
+    };
+    let Some(n) = axis.try_normalize() else {
+        return;
+    };
+    let lang = session.lang;
+    let theta = degrees.to_radians();
+    let style = crate::app::views::typeset::Style::body(ui);
+    ui.add_space(6.0);
+    egui::CollapsingHeader::new(
+        RichText::new(lang.tr(
+            "The same rotation R(n, θ), two more ways",
+            "同一个旋转 R(n, θ) 的另外两种算法",
+        ))
+        .strong(),
+    )
+    .id_salt("axis-rotation-forms")
+    .default_open(true)
+    .show(ui, |ui| {
+        typeset::formula(
+            ui,
+            "R(n, θ) = cos θ·I + (1 − cos θ)·n·n^T + sin θ·N",
+            &style,
+        );
+        note(
+            ui,
+            &format!(
+                "{} n = ({:.3}, {:.3}, {:.3}), θ = {degrees:.1}°",
+                lang.tr(
+                    "Rodrigues' formula, N the cross-product matrix of n:",
+                    "Rodrigues 公式，N 是 n 的叉乘矩阵："
+                ),
+                n.x,
+                n.y,
+                n.z
+            ),
+        );
+        if let Ok(r) = pipeline::transform::rotate_axis_rodrigues(n, theta) {
+            crate::app::views::matrix_grid(ui, &r, "rodrigues");
+        }
+        ui.add_space(4.0);
+        let q = glam::Quat::from_axis_angle(n, theta);
+        typeset::formula(ui, "q = (cos(θ/2), sin(θ/2)·n), v′ = q·v·q^(−1)", &style);
+        note(
+            ui,
+            &format!(
+                "q = ({:.3}, {:.3}, {:.3}, {:.3}) {}",
+                q.w,
+                q.x,
+                q.y,
+                q.z,
+                lang.tr(
+                    "(w, x, y, z); −q is the same rotation. Its matrix:",
+                    "（w, x, y, z）；−q 表示同一个旋转。它的矩阵：",
+                )
+            ),
+        );
+        crate::app::views::matrix_grid(ui, &glam::Mat4::from_quat(q), "quaternion");
+        let half = glam::Quat::IDENTITY.slerp(q, 0.5);
+        note(
+            ui,
+            &format!(
+                "slerp(1, q, ½) = ({:.3}, {:.3}, {:.3}, {:.3}): {}",
+                half.w,
+                half.x,
+                half.y,
+                half.z,
+                lang.tr(
+                    "halfway along the shortest arc, the rotation by θ/2 about the same axis.",
+                    "沿最短弧走到一半，即绕同一轴旋转 θ/2。",
+                )
+            ),
+        );
+    });
+}
+
+/// slerp from q₀ (the rotation about the object's axis) to q₁ (its `slerp_to`): the two
+/// quaternions, cos Ω = q₀·q₁ (and the sign flip to the shorter arc), the two weights at t, the
+/// result with its axis and angle, and its matrix.
+fn slerp_forms(
+    ui: &mut Ui,
+    session: &Session,
+    (axis, degrees): (glam::Vec3, f32),
+    s: pipeline::transform::SlerpTo,
+) {
+    let Ok((q0, q1)) = s.ends(axis, degrees) else {
+        return;
+    };
+    let lang = session.lang;
+    let style = typeset::Style::body(ui);
+    let quat = |q: &pipeline::transform::Quaternion| {
+        format!("({:.3}, {:.3}, {:.3}, {:.3})", q.w, q.v.x, q.v.y, q.v.z)
+    };
+    let arc = q0.arc_to(&q1);
+    let (a, b) = arc.weights(s.t);
+    let q = q0.slerp(&q1, s.t);
+    let (n, angle) = q.axis_angle();
+    ui.add_space(6.0);
+    egui::CollapsingHeader::new(
+        RichText::new(lang.tr(
+            "Between two orientations: slerp",
+            "两个朝向之间：球面线性插值 slerp",
+        ))
+        .strong(),
+    )
+    .id_salt("slerp-forms")
+    .default_open(true)
+    .show(ui, |ui| {
+        typeset::formula(
+            ui,
+            "slerp(q₀, q₁, t) = [sin((1 − t)Ω)·q₀ + sin(tΩ)·q₁]/(sin Ω), cos Ω = q₀·q₁",
+            &style,
+        );
+        note(
+            ui,
+            &format!(
+                "q₀ = {} ({degrees:.1}°, {})",
+                quat(&q0),
+                lang.tr("the first axis", "第一个轴"),
+            ),
+        );
+        note(
+            ui,
+            &format!(
+                "q₁ = {} ({:.1}°, {})",
+                quat(&q1),
+                s.angle_deg,
+                lang.tr("the second axis", "第二个轴"),
+            ),
+        );
+        let dot = q0.dot(&q1);
+        let flip = if arc.flipped {
+            lang.tr(
+                " < 0: slerp takes −q₁, the same rotation, the shorter way round",
+                " < 0：slerp 改用 −q₁，同一个旋转，走较短的一侧",
+            )
+        } else {
+            ""
+        };
+        note(
+            ui,
+            &format!(
+                "q₀·q₁ = {dot:.3}{flip}; Ω = {:.1}°, {} 2Ω = {:.1}°",
+                arc.omega.to_degrees(),
+                lang.tr("the turn from one to the other", "两个朝向之间相差的转角"),
+                2.0 * arc.omega.to_degrees()
+            ),
+        );
+        note(
+            ui,
+            &format!(
+                "t = {:.2}: {} {a:.3}, {b:.3}",
+                s.t,
+                lang.tr("weights", "权重"),
+            ),
+        );
+        note(
+            ui,
+            &format!(
+                "slerp = {} = {angle:.1}° {} ({:.3}, {:.3}, {:.3})",
+                quat(&q),
+                lang.tr("about", "绕轴"),
+                n.x,
+                n.y,
+                n.z,
+                angle = angle.to_degrees(),
+            ),
+        );
+        crate::app::views::matrix_grid(ui, &q.to_matrix(), "slerp");
+    });
+}
