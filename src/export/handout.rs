@@ -52,6 +52,9 @@ pub struct StepPage {
     pub animated: Option<Animated>,
     /// The matrices of its scene.
     pub matrices: Matrices,
+    /// Whether each object (each model matrix) is the step's subject (its `focus`; every
+    /// object when it names none).
+    pub subject: Vec<bool>,
     /// The stage it shows.
     pub stage: Stage,
 }
@@ -121,18 +124,20 @@ fn matrix_html(m: &NamedMatrix, lang: Lang) -> String {
     s
 }
 
-/// The matrices a step shows: those its stage applies (the model matrices on the model and
-/// world stages, the view matrix on the view stage, the projection on clip and NDC, the
-/// viewport on the viewport stage) and any that changed since the previous step shown.
+/// The matrices a step shows: those its stage applies (the model matrices of the step's subject
+/// on the model and world stages, the view matrix on the view stage, the projection on clip and
+/// NDC, the viewport on the viewport stage) and any that changed since the previous step shown.
 fn matrices_shown<'a>(
     now: &'a Matrices,
     before: Option<&Matrices>,
     stage: Stage,
+    subject: &[bool],
 ) -> Vec<&'a NamedMatrix> {
     let changed = |a: &NamedMatrix, b: Option<&NamedMatrix>| b.is_none_or(|b| a.matrix != b.matrix);
     let mut out = Vec::new();
     for (i, m) in now.models.iter().enumerate() {
-        let used = matches!(stage, Stage::Model | Stage::World);
+        let used =
+            matches!(stage, Stage::Model | Stage::World) && subject.get(i).copied().unwrap_or(true);
         if used || before.is_some_and(|b| changed(m, b.models.get(i))) {
             out.push(m);
         }
@@ -171,8 +176,8 @@ details{margin-top:.4em} .key{display:inline-block;background:#8a3b00;color:#fff
 body{max-width:none;margin:0;font-size:10.5pt}
 section{break-inside:avoid;page-break-inside:avoid;margin-top:1em}
 h2{break-after:avoid}
-figure,.question,.film{break-inside:avoid}
-figure.m figcaption{max-width:80mm}
+figure,.question,.film{break-inside:avoid} .question{break-before:avoid}
+figure.m{margin:.3em .5em .3em 0;font-size:8pt} figure.m figcaption{max-width:42mm}
 .screen{display:none}
 img{max-height:100mm;width:auto}
 .film img{max-height:none;width:100%}
@@ -276,7 +281,7 @@ fn step_html(
         }
         h.push_str("</div>\n");
     }
-    let shown = matrices_shown(&page.matrices, before, page.stage);
+    let shown = matrices_shown(&page.matrices, before, page.stage, &page.subject);
     if !shown.is_empty() {
         h.push_str("<div>");
         for m in shown {

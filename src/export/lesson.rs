@@ -164,6 +164,12 @@ fn build_step(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<BuiltSte
         index: k,
         picture: compact_image(&picture)?,
         animated,
+        subject: crate::spaces::subject(
+            &capture,
+            lesson.steps[k].focus.as_deref().unwrap_or_default(),
+            None,
+            crate::vocabulary::Space::World,
+        ),
         matrices,
         stage: lesson.stage_at(k),
     };
@@ -232,7 +238,7 @@ fn variants(lesson: &Lesson, k: usize, spec: &SceneSpec) -> Result<Vec<(String, 
 }
 
 /// An animated step's filmstrip and GIF: the picture at evenly spaced moments of its first
-/// pass (from → to), each captioned with the animated parameters' values.
+/// pass (from → to), each captioned with the animated parameters' values (the first two).
 fn animation(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<Option<Animated>> {
     let step = &lesson.steps[k];
     let Some(longest) = step.animate.iter().map(|a| a.seconds).reduce(f32::max) else {
@@ -241,15 +247,21 @@ fn animation(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<Option<An
     let frame_at = |t: f32| -> Result<(RgbaImage, String)> {
         opts.cancel.check()?;
         let Drawn { spec, picture, .. } = draw(lesson, k, opts, Some(t))?;
-        let caption = step
+        // Two values at most, so that a frame's caption stays under its frame (a walking figure
+        // animates four joints together; the narration names them).
+        let mut values: Vec<String> = step
             .animate
             .iter()
+            .take(2)
             .map(|a| {
                 let name = crate::lesson::param::describe(&spec, &a.param, opts.lang);
                 format!("{name} = {}", shown(&a.value_at(t)))
             })
-            .collect::<Vec<_>>()
-            .join(", ");
+            .collect();
+        if step.animate.len() > 2 {
+            values.push("…".to_owned());
+        }
+        let caption = values.join(", ");
         Ok((small(&picture), caption))
     };
     let mut filmstrip = Vec::new();
