@@ -193,7 +193,7 @@ fn projection(ui: &mut Ui, p: &mut Projection, lang: Lang) {
             )
             .on_hover_text(lang.tr(
                 "Vertical field of view. top = near·tan(fovy/2), right = top·aspect (the review slides' near·tan(fovy) is an erratum).",
-                "垂直视场角。top = near·tan(fovy/2)，right = top·aspect（复习课件中的 near·tan(fovy) 是笔误）。",
+                "垂直视场角。top = near·tan(fovy/2)，right = top·aspect（复习讲义中的 near·tan(fovy) 是笔误）。",
             ));
             let mut auto = aspect.is_none();
             if ui
