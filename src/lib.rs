@@ -11,7 +11,9 @@
 //!   ([`bench`]).
 
 pub mod app;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod bench;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod cli;
 pub mod export;
 pub mod lesson;

@@ -16,6 +16,7 @@ impl PipelensApp {
             super::style::chrome_style(ui);
             ui.spacing_mut().item_spacing.x = 6.0;
             ui.horizontal_wrapped(|ui| {
+                self.lessons_menu(ui, lang);
                 if self.session.lesson.is_none() {
                     ui.label(RichText::new("pipelens").strong())
                         .on_hover_text(&self.session.source);
@@ -184,6 +185,21 @@ impl PipelensApp {
 
     /// The snapshot export, in a menu: the folder, the button, Cancel while it runs.
     fn export_menu(&mut self, ui: &mut egui::Ui, lang: Lang) {
+        if !super::platform::WRITES_FILES {
+            // In the browser: no folders to write to, the handout downloads.
+            if self.session.lesson.is_some()
+                && ui
+                    .button(lang.tr("Download handout", "下载讲义"))
+                    .on_hover_text(lang.tr(
+                        "The lesson's handout in this language as one HTML file, every image in it, printable (it takes a few seconds to render every step). Snapshots of every buffer: the desktop app or `pipelens export`.",
+                        "以当前语言下载本课讲义：一个 HTML 文件，图片都在其中，可打印（渲染每一步需要几秒）。各缓冲的快照：请用桌面版或 `pipelens export`。",
+                    ))
+                    .clicked()
+            {
+                self.download_handout();
+            }
+            return;
+        }
         let busy = self.export_result.is_some();
         ui.menu_button(lang.tr("Export ▾", "导出 ▾"), |ui| {
             let label = ui.label(lang.tr("Folder", "文件夹"));

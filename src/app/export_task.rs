@@ -85,6 +85,49 @@ impl PipelensApp {
         });
     }
 
+    /// The browser's export: the lesson's handout in the interface's language as one HTML file
+    /// (every image in it, printable), built on this thread (a page has one; the window waits
+    /// the few seconds it takes) and handed over as a download.
+    pub(super) fn download_handout(&mut self) {
+        let Some(player) = &self.session.lesson else {
+            return;
+        };
+        let lesson = player.lesson.clone();
+        let lang = self.session.lang;
+        let opts = crate::export::lesson::LessonExport {
+            out: PathBuf::from(self.export_dir.trim()),
+            step: None,
+            size: None,
+            lang,
+            max_records: 200_000,
+            answers: false,
+            slides: false,
+            data: false,
+            cancel: crate::export::Cancel::default(),
+        };
+        let name = format!(
+            "{}-{}.html",
+            lesson.id,
+            if lang == crate::vocabulary::Lang::Zh {
+                "zh"
+            } else {
+                "en"
+            }
+        );
+        let result = crate::export::lesson::handout_html(&lesson, &opts)
+            .map_err(|e| format!("{e:#}"))
+            .and_then(|html| {
+                super::platform::download(&name, html.as_bytes(), "text/html", &opts.out)
+            });
+        self.export_message = Some(match result {
+            Ok(file) => (
+                true,
+                format!("{} {file}", lang.tr("Handout saved:", "讲义已保存：")),
+            ),
+            Err(e) => (false, e),
+        });
+    }
+
     /// Takes the export's result when it has finished, as a message in the top bar.
     pub(super) fn poll_export(&mut self) {
         let Some(rx) = &self.export_result else {

@@ -4,6 +4,8 @@
 
 mod chrome;
 mod export_task;
+mod library;
+pub mod platform;
 mod reload;
 pub mod selection;
 pub mod session;
@@ -81,6 +83,8 @@ pub struct PipelensApp {
     commands: Vec<Command>,
     /// The file shown, watched for changes (live reload): its path and last modification.
     watched: Option<reload::Watched>,
+    /// Dropped files read in the background (in the browser).
+    inbox: platform::Inbox,
 }
 
 impl PipelensApp {
@@ -104,6 +108,7 @@ impl PipelensApp {
             export_cancel: None,
             commands: Vec::new(),
             watched: None,
+            inbox: platform::Inbox::default(),
         }
     }
 
@@ -111,6 +116,21 @@ impl PipelensApp {
     #[must_use]
     pub fn presenting(&self) -> bool {
         self.classroom || self.session.lesson.is_some()
+    }
+
+    /// What the window (or the browser tab) is titled: `pipelens — lesson id — step k/n`, or
+    /// `pipelens — file` for a scene: a test in the browser reads where the app is from it.
+    #[must_use]
+    pub fn title(&self) -> String {
+        match &self.session.lesson {
+            Some(p) => format!(
+                "pipelens — {} — step {}/{}",
+                p.lesson.id,
+                p.step + 1,
+                p.lesson.steps.len()
+            ),
+            None => format!("pipelens — {}", self.session.source),
+        }
     }
 
     /// Whether classroom mode (large type, high contrast) is on.
@@ -164,6 +184,7 @@ impl PipelensApp {
     pub fn frame(&mut self, ui: &mut egui::Ui) {
         self.session.poll();
         self.reload_if_changed(ui.ctx());
+        self.open_dropped(ui.ctx());
         self.keyboard(ui.ctx());
         self.picture.clear();
         self.top_bar(ui);
@@ -409,6 +430,8 @@ fn split(ui: &egui::Ui, aspect: Option<f32>) -> (egui::Rect, egui::Rect, egui::R
 impl eframe::App for PipelensApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.frame(ui);
+        let ms = self.session.times.map(|t| t.total().as_secs_f64() * 1e3);
+        platform::report(ui.ctx(), &self.title(), ms);
     }
 }
 
@@ -427,56 +450,42 @@ pub struct Start {
     pub classroom: bool,
 }
 
-/// Opens the window on `spec` and runs until it is closed.
-///
-/// # Errors
-/// When no window can be opened (no display, no OpenGL).
-pub fn run(
+#[cfg(not(target_arch = "wasm32"))]
+pub use platform::run;
+
+/// The app eframe creates (on the desktop and in the browser alike): a session on `doc` (named
+/// `source`; `path`, when it came from a file, is watched for live reload) with its render
+/// worker (where threads exist; otherwise frames render on the UI thread), opened as `start`
+/// says.
+pub fn create(
+    cc: &eframe::CreationContext<'_>,
     doc: crate::lesson::Document,
-    source: String,
+    source: &str,
     path: Option<PathBuf>,
     start: Start,
-) -> anyhow::Result<()> {
-    let options = eframe::NativeOptions {
-        viewport: egui::ViewportBuilder::default()
-            .with_title("pipelens")
-            .with_inner_size([1366.0, 768.0])
-            .with_min_inner_size([800.0, 500.0]),
-        ..Default::default()
-    };
-    eframe::run_native(
-        "pipelens",
-        options,
-        Box::new(move |cc| {
-            let ctx = cc.egui_ctx.clone();
-            let worker = RenderWorker::start(move || ctx.request_repaint()).ok();
-            let mut session = Session::with_document(doc, &source, worker);
-            session.lang = start.lang;
-            if let Some(k) = start.step {
-                session.apply(Command::GoToStep(k));
-            }
-            if let Some(stage) = start.stage {
-                session.apply(Command::SelectStage(stage));
-            }
-            if start.compare.is_some() {
-                session.apply(Command::SetComparison(start.compare));
-            }
-            setup_context(&cc.egui_ctx);
-            let mut app = PipelensApp::new(session);
-            if start.classroom {
-                app.set_classroom(&cc.egui_ctx, true);
-            }
-            Ok(Box::new(match path {
-                Some(p) => app.watching(p),
-                None => app,
-            }))
-        }),
-    )
-    .map_err(|e| {
-        anyhow::anyhow!(
-            "cannot open the window: {e}\n(with no display, `pipelens export --out DIR` renders and writes every stage headless)"
-        )
-    })
+) -> PipelensApp {
+    let ctx = cc.egui_ctx.clone();
+    let worker = RenderWorker::start(move || ctx.request_repaint()).ok();
+    let mut session = Session::with_document(doc, source, worker);
+    session.lang = start.lang;
+    if let Some(k) = start.step {
+        session.apply(Command::GoToStep(k));
+    }
+    if let Some(stage) = start.stage {
+        session.apply(Command::SelectStage(stage));
+    }
+    if start.compare.is_some() {
+        session.apply(Command::SetComparison(start.compare));
+    }
+    setup_context(&cc.egui_ctx);
+    let mut app = PipelensApp::new(session);
+    if start.classroom {
+        app.set_classroom(&cc.egui_ctx, true);
+    }
+    match path {
+        Some(p) => app.watching(p),
+        None => app,
+    }
 }
 
 /// The language a fresh session starts in, from `PIPELENS_LANG` (`zh` or `en`).

@@ -3,6 +3,8 @@
 
 use std::path::PathBuf;
 
+use web_time::Instant;
+
 use super::PipelensApp;
 use super::session::Command;
 
@@ -10,7 +12,7 @@ use super::session::Command;
 pub(super) struct Watched {
     path: PathBuf,
     modified: Option<std::time::SystemTime>,
-    checked: std::time::Instant,
+    checked: Instant,
 }
 
 impl Watched {
@@ -24,12 +26,17 @@ impl PipelensApp {
     /// loaded again; a broken edit shows its error and the last good version keeps running.
     #[must_use]
     pub fn watching(mut self, path: PathBuf) -> Self {
+        self.watch(path);
+        self
+    }
+
+    /// Starts watching `path` in place of any file watched before.
+    pub(super) fn watch(&mut self, path: PathBuf) {
         self.watched = Some(Watched {
             modified: Watched::modified(&path),
             path,
-            checked: std::time::Instant::now(),
+            checked: Instant::now(),
         });
-        self
     }
 
     /// Checks the watched file about twice a second and reloads it when it changed.
@@ -41,7 +48,7 @@ impl PipelensApp {
         if w.checked.elapsed() < std::time::Duration::from_millis(400) {
             return;
         }
-        w.checked = std::time::Instant::now();
+        w.checked = Instant::now();
         let now = Watched::modified(&w.path);
         if now == w.modified {
             return;

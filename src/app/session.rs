@@ -89,6 +89,17 @@ impl Session {
     /// at once (deterministic, for tests).
     #[must_use]
     pub fn new(spec: SceneSpec, source: &str, worker: Option<RenderWorker>) -> Self {
+        Self::starting_at(spec, source, worker, 0)
+    }
+
+    /// [`Self::new`] with its generations counted from `generation` (a session that replaces
+    /// another on the same worker drops the old one's results still under way).
+    fn starting_at(
+        spec: SceneSpec,
+        source: &str,
+        worker: Option<RenderWorker>,
+        generation: u64,
+    ) -> Self {
         let orbit = default_orbit(&spec);
         let mut s = Self {
             spec,
@@ -103,8 +114,8 @@ impl Session {
             observer_aspect: None,
             selection: Selection::default(),
             lang: Lang::default(),
-            generation: 0,
-            shown_generation: 0,
+            generation,
+            shown_generation: generation,
             observer_asked: false,
             lesson: None,
             reload_error: None,
@@ -118,7 +129,25 @@ impl Session {
     /// A session on a scene file or a lesson (then on its first step).
     #[must_use]
     pub fn with_document(doc: Document, source: &str, worker: Option<RenderWorker>) -> Self {
-        let mut s = Self::new(doc.first_spec(), source, worker);
+        Self::document_at(doc, source, worker, 0)
+    }
+
+    /// Opens another lesson or scene (`source` names it) in place of this one, on the same
+    /// render worker and in the same language.
+    pub fn open(&mut self, doc: Document, source: &str) {
+        let worker = self.worker.take();
+        let lang = self.lang;
+        *self = Self::document_at(doc, source, worker, self.generation + 1);
+        self.lang = lang;
+    }
+
+    fn document_at(
+        doc: Document,
+        source: &str,
+        worker: Option<RenderWorker>,
+        generation: u64,
+    ) -> Self {
+        let mut s = Self::starting_at(doc.first_spec(), source, worker, generation);
         if let Document::Lesson(lesson) = doc {
             s.lesson = Some(LessonPlayer {
                 lesson: Arc::from(lesson),

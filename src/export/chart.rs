@@ -10,8 +10,12 @@ use crate::vocabulary::{Lang, profile};
 /// The family name the embedded font is registered under for plotters.
 const FAMILY: &str = "pipelens";
 
+/// Registers the embedded font with plotters (on the desktop; in the browser plotters draws text
+/// with the page's fonts and has no registry).
 fn register_font() {
+    #[cfg(not(target_arch = "wasm32"))]
     static DONE: std::sync::Once = std::sync::Once::new();
+    #[cfg(not(target_arch = "wasm32"))]
     DONE.call_once(|| {
         // The embedded font parses (the app and a test use it); a failure would only leave
         // plotters without text.

@@ -62,6 +62,61 @@ pub fn export_lesson(
     opts: &LessonExport,
     progress: &mut (dyn FnMut(usize, usize, &str) + Send),
 ) -> Result<Vec<PathBuf>> {
+    let (steps, built) = build_steps(lesson, opts, progress)?;
+    let mut written = Vec::new();
+    let mut pages = Vec::new();
+    let mut textures_written = false;
+    for b in built {
+        let (page, folders) = b?;
+        for (folder, files) in folders {
+            if folder == "textures" && std::mem::replace(&mut textures_written, true) {
+                continue;
+            }
+            written.extend(write_files(
+                &opts.out.join(folder),
+                &files,
+                &mut |_, _, _| {},
+                &opts.cancel,
+            )?);
+        }
+        pages.push(page);
+    }
+    progress(steps, steps + 1, "index.html");
+    let html = handout::html(lesson, &pages, opts.lang, opts.answers);
+    let target = opts.out.join("index.html");
+    std::fs::create_dir_all(&opts.out)
+        .with_context(|| format!("cannot create the folder {}", opts.out.display()))?;
+    super::write_atomically(&target, html.as_bytes())?;
+    written.push(target);
+    Ok(written)
+}
+
+/// The handout alone, as one self-contained HTML text (every image in it), written nowhere: what
+/// the browser build offers as a download. `opts.out`, `slides` and `data` are not used.
+///
+/// # Errors
+/// When a step cannot be rendered, or `opts.step` is out of range.
+pub fn handout_html(lesson: &Lesson, opts: &LessonExport) -> Result<String> {
+    let opts = LessonExport {
+        slides: false,
+        data: false,
+        ..opts.clone()
+    };
+    let (_, built) = build_steps(lesson, &opts, &mut |_, _, _| {})?;
+    let pages = built
+        .into_iter()
+        .map(|b| b.map(|(page, _)| page))
+        .collect::<Result<Vec<_>>>()?;
+    Ok(handout::html(lesson, &pages, opts.lang, opts.answers))
+}
+
+/// Every step asked for (`opts.step`, or all), built in parallel: how many, and each one's page
+/// and files, in order. `progress` hears of each step as it is done.
+fn build_steps(
+    lesson: &Lesson,
+    opts: &LessonExport,
+    progress: &mut (dyn FnMut(usize, usize, &str) + Send),
+) -> Result<(usize, Vec<Result<BuiltStep>>)> {
     let n = lesson.steps.len();
     let steps: Vec<usize> = match opts.step {
         Some(k) if k < n => vec![k],
@@ -89,35 +144,7 @@ pub fn export_lesson(
             Ok(out)
         })
         .collect();
-    let mut written = Vec::new();
-    let mut pages = Vec::new();
-    let mut textures_written = false;
-    for b in built {
-        let (page, folders) = b?;
-        for (folder, files) in folders {
-            if folder == "textures" && std::mem::replace(&mut textures_written, true) {
-                continue;
-            }
-            written.extend(write_files(
-                &opts.out.join(folder),
-                &files,
-                &mut |_, _, _| {},
-                &opts.cancel,
-            )?);
-        }
-        pages.push(page);
-    }
-    let progress = progress
-        .into_inner()
-        .unwrap_or_else(std::sync::PoisonError::into_inner);
-    progress(steps.len(), parts, "index.html");
-    let html = handout::html(lesson, &pages, opts.lang, opts.answers);
-    let target = opts.out.join("index.html");
-    std::fs::create_dir_all(&opts.out)
-        .with_context(|| format!("cannot create the folder {}", opts.out.display()))?;
-    super::write_atomically(&target, html.as_bytes())?;
-    written.push(target);
-    Ok(written)
+    Ok((steps.len(), built))
 }
 
 /// A step's page of the handout, and the files it adds by folder (its slide, its data).

@@ -8,6 +8,7 @@
 //! named in [`param`]. The grammar of both is documented in `lessons/README.md`.
 
 mod diagnostic;
+pub mod library;
 pub mod param;
 pub mod raw;
 pub mod script;
@@ -167,7 +168,7 @@ impl Document {
 }
 
 /// The lesson built into pipelens, opened when no file is given: a tour of the pipeline.
-pub const DEFAULT_LESSON: &str = include_str!("../../lessons/00-tour.toml");
+pub const DEFAULT_LESSON: &str = library::LESSONS[0].1;
 /// The name under which the built-in lesson appears in messages.
 pub const DEFAULT_LESSON_NAME: &str = "lessons/00-tour.toml (built in)";
 

@@ -503,3 +503,28 @@ fn the_off_centre_frustum_step_shows_a_shear() {
         "the next step is the symmetric frustum again"
     );
 }
+
+/// The app's built-in lessons (the Lessons menu, the browser build) are every file of
+/// `lessons/`, each with its title in both languages.
+#[test]
+fn the_built_in_lessons_are_the_lessons_folder() {
+    let on_disk: Vec<String> = lesson_files()
+        .iter()
+        .filter_map(|p| p.file_name().map(|n| n.to_string_lossy().into_owned()))
+        .collect();
+    let built_in: Vec<String> = pipelens::lesson::library::LESSONS
+        .iter()
+        .map(|(f, _)| (*f).to_owned())
+        .collect();
+    assert_eq!(built_in, on_disk);
+    for (file, text) in pipelens::lesson::library::LESSONS {
+        assert_eq!(
+            text,
+            std::fs::read_to_string(repo().join("lessons").join(file)).expect("the file")
+        );
+        let (en, zh) = pipelens::lesson::library::title(text, file);
+        assert!(en != file && zh != file && en != zh, "{file}: {en} / {zh}");
+    }
+    let e = pipelens::lesson::library::lesson("99-nope.toml").expect_err("no such lesson");
+    assert!(e.to_string().contains("there are 00-tour.toml"), "{e}");
+}

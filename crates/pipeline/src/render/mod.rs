@@ -10,7 +10,9 @@
 mod assembly;
 mod resolve;
 
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use web_time::Instant;
 
 use serde::Serialize;
 

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The browser test: builds dist/ (scripts/build-web.sh), serves it on localhost, and loads it in
+# Debian's Chromium (installed here if missing) through playwright-core (scripts/web-test/):
+# the tour draws, a key advances a step, Chinese renders; the tour's frame time is printed.
+# Screenshots land in target/web-test/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+missing=()
+command -v chromium >/dev/null 2>&1 || missing+=(chromium)
+command -v node >/dev/null 2>&1 || missing+=(nodejs)
+command -v npm >/dev/null 2>&1 || missing+=(npm)
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+scripts/build-web.sh target/web-dist
+(cd scripts/web-test && npm ci --no-audit --no-fund --silent)
+
+port=${PORT:-8765}
+python3 -m http.server "$port" --bind 127.0.0.1 --directory target/web-dist >target/web-serve.log 2>&1 &
+server=$!
+trap 'kill $server 2>/dev/null || true' EXIT
+for _ in $(seq 1 50); do
+  python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$port/index.html')" 2>/dev/null && break
+  sleep 0.2
+done
+node scripts/web-test/test.mjs "http://127.0.0.1:$port/index.html" target/web-test

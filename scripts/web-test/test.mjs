@@ -1,0 +1,123 @@
+// The browser test of pipelens' web build (run by scripts/web-test.sh, which builds dist/ and
+// serves it on localhost). In Debian's Chromium, WebGL2 on SwiftShader, at 1920×1080:
+//  1. the tour loads: the page's title reports lesson and step ("pipelens — 00-tour — step 1/10"),
+//     the screenshot is not blank and its top bar (the stage bar) has text on it;
+//  2. a key press advances a step: → and the title says step 2/10;
+//  3. the Chinese interface (?lang=zh) renders: its top bar differs from the English one, and a
+//     Chinese lesson step is reached the same way;
+//  4. the tour's frame time in the browser is read from <html data-frame-ms> and printed.
+// Screenshots are written to the output folder for a person to look at.
+import { chromium } from "playwright-core";
+import { PNG } from "pngjs";
+import { mkdirSync, writeFileSync } from "node:fs";
+
+const url = process.argv[2] ?? "http://127.0.0.1:8765/index.html";
+const out = process.argv[3] ?? "target/web-test";
+mkdirSync(out, { recursive: true });
+
+const failures = [];
+let passed = 0;
+function check(ok, what) {
+  if (ok) {
+    passed += 1;
+    console.log(`ok   ${what}`);
+  } else {
+    failures.push(what);
+    console.log(`FAIL ${what}`);
+  }
+}
+
+/** Distinct colours and the spread of grey in a region of a PNG screenshot. */
+function variety(png, x0, y0, x1, y1) {
+  const colours = new Set();
+  let sum = 0, sum2 = 0, n = 0;
+  for (let y = y0; y < y1; y++) {
+    for (let x = x0; x < x1; x++) {
+      const i = (y * png.width + x) * 4;
+      const [r, g, b] = [png.data[i], png.data[i + 1], png.data[i + 2]];
+      colours.add((r << 16) | (g << 8) | b);
+      const grey = (r + g + b) / 3;
+      sum += grey; sum2 += grey * grey; n += 1;
+    }
+  }
+  const mean = sum / n;
+  return { colours: colours.size, deviation: Math.sqrt(Math.max(0, sum2 / n - mean * mean)) };
+}
+
+async function waitForTitle(page, pattern, what) {
+  try {
+    await page.waitForFunction((p) => new RegExp(p).test(document.title), pattern.source, { timeout: 180_000 });
+    check(true, `${what}: title "${await page.title()}"`);
+    return true;
+  } catch {
+    check(false, `${what}: title should match ${pattern}, is "${await page.title()}"`);
+    return false;
+  }
+}
+
+const browser = await chromium.launch({
+  executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
+  args: [
+    "--no-sandbox", "--disable-gpu-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+    "--disable-quic", "--no-first-run", "--disable-background-networking",
+    "--disable-component-update", "--disable-sync",
+  ],
+});
+const context = await browser.newContext({ viewport: { width: 1920, height: 1080 } });
+const errors = [];
+
+async function open(query, name) {
+  const page = await context.newPage();
+  page.on("pageerror", (e) => errors.push(`${name}: ${e.message}`));
+  page.on("console", (m) => { if (m.type() === "error") errors.push(`${name}: ${m.text()}`); });
+  await page.goto(url + query);
+  return page;
+}
+
+// 1. English, the tour.
+let enShot;
+const en = await open("", "en");
+if (await waitForTitle(en, /^pipelens — 00-tour — step 1\/10$/, "the tour loads")) {
+  await en.waitForTimeout(3000);
+  const shot = PNG.sync.read(await en.screenshot({ path: `${out}/tour-en.png` }));
+  const whole = variety(shot, 0, 0, shot.width, shot.height);
+  check(whole.colours > 200 && whole.deviation > 8, `the page is not blank (${whole.colours} colours, grey deviation ${whole.deviation.toFixed(1)})`);
+  const bar = variety(shot, 0, 0, shot.width, 30);
+  check(bar.colours > 20 && bar.deviation > 5, `the top bar with the stages has text (${bar.colours} colours)`);
+  const ms = await en.evaluate(() => document.documentElement.dataset.frameMs);
+  check(ms !== undefined && Number(ms) > 0, `a frame was rendered: ${ms} ms (the tour, 640×400, 4 samples)`);
+  // 2. A key press advances a step.
+  await en.focus("#pipelens");
+  await en.keyboard.press("ArrowRight");
+  if (await waitForTitle(en, /step 2\/10$/, "→ advances a step")) {
+    await en.waitForTimeout(2000);
+    await en.screenshot({ path: `${out}/tour-en-step2.png` });
+  }
+  enShot = shot;
+}
+
+// 3. Chinese, the tour and a Chinese step of another lesson.
+const zh = await open("?lang=zh", "zh");
+if (await waitForTitle(zh, /^pipelens — 00-tour — step 1\/10$/, "the Chinese tour loads")) {
+  await zh.waitForTimeout(3000);
+  const shot = PNG.sync.read(await zh.screenshot({ path: `${out}/tour-zh.png` }));
+  if (enShot) {
+    let differ = 0;
+    for (let y = 0; y < 30; y++) for (let x = 0; x < shot.width; x++) {
+      const i = (y * shot.width + x) * 4;
+      if (Math.abs(shot.data[i] - enShot.data[i]) > 40) differ += 1;
+    }
+    check(differ > 500, `the Chinese top bar differs from the English one (${differ} pixels)`);
+  }
+}
+const zh2 = await open("?lang=zh&lesson=10-blinn-phong&step=5", "zh-10");
+if (await waitForTitle(zh2, /^pipelens — 10-blinn-phong — step 5\/7$/, "a Chinese lesson opens on a step")) {
+  await zh2.waitForTimeout(3000);
+  await zh2.screenshot({ path: `${out}/blinn-phong-zh-step5.png` });
+}
+
+check(errors.length === 0, `no errors in the pages${errors.length ? ": " + errors.join(" | ") : ""}`);
+await browser.close();
+writeFileSync(`${out}/result.txt`, `${passed} passed, ${failures.length} failed\n`);
+console.log(`${passed} passed, ${failures.length} failed`);
+process.exit(failures.length === 0 ? 0 : 1);

@@ -1,0 +1,115 @@
+//! Opening another lesson: the Lessons menu (every built-in lesson, by title in the interface's
+//! language) and a lesson or scene file dropped on the window (on the desktop its path is then
+//! watched for live reload; in the browser its bytes are read, and nothing is watched).
+
+use std::sync::OnceLock;
+
+use egui::RichText;
+
+use super::PipelensApp;
+use crate::lesson::{self, Document, library};
+use crate::vocabulary::Lang;
+
+/// The built-in lessons' titles `(en, zh)`, read once.
+fn titles() -> &'static [(String, String)] {
+    static TITLES: OnceLock<Vec<(String, String)>> = OnceLock::new();
+    TITLES.get_or_init(|| {
+        library::LESSONS
+            .iter()
+            .map(|(file, text)| library::title(text, file))
+            .collect()
+    })
+}
+
+impl PipelensApp {
+    /// The Lessons ▾ menu: every built-in lesson; the one open is marked.
+    pub(super) fn lessons_menu(&mut self, ui: &mut egui::Ui, lang: Lang) {
+        let open_id = self.session.lesson.as_ref().map(|p| p.lesson.id.clone());
+        let mut chosen = None;
+        ui.menu_button(lang.tr("Lessons", "课程"), |ui| {
+            for ((file, _), (en, zh)) in library::LESSONS.iter().zip(titles()) {
+                let id = file.trim_end_matches(".toml");
+                let title = if lang == Lang::Zh { zh } else { en };
+                let number = id.split('-').next().unwrap_or_default();
+                if ui
+                    .selectable_label(open_id.as_deref() == Some(id), format!("{number}  {title}"))
+                    .clicked()
+                {
+                    chosen = Some(*file);
+                    ui.close();
+                }
+            }
+            ui.separator();
+            ui.label(
+                RichText::new(lang.tr(
+                    "Your own lesson or scene: drop its .toml file on the window.",
+                    "自己的课程或场景：把它的 .toml 文件拖放到窗口上。",
+                ))
+                .small(),
+            );
+        })
+        .response
+        .on_hover_text(lang.tr("Open another built-in lesson", "打开另一个内置课程"));
+        if let Some(file) = chosen {
+            match library::lesson(file) {
+                Ok(l) => self.open(
+                    Document::Lesson(Box::new(l)),
+                    &format!("lessons/{file} (built in)"),
+                    None,
+                ),
+                Err(e) => self.session.error = Some(e.to_string()),
+            }
+        }
+    }
+
+    /// Opens a lesson or scene file dropped on the window: on the desktop from its path (and
+    /// watches it); in the browser from its bytes, read in the background and opened on a later
+    /// frame. A file that does not load keeps the current one running and says why.
+    pub(super) fn open_dropped(&mut self, ctx: &egui::Context) {
+        let dropped = ctx.input(|i| i.raw.dropped_files.clone());
+        if let Some(file) = dropped.into_iter().next() {
+            let path = file.path().to_path_buf();
+            if path.is_absolute() {
+                let loaded = lesson::load_file(&path);
+                self.opened(loaded, &path.display().to_string(), Some(path));
+            } else {
+                self.inbox.read(file, ctx);
+            }
+        }
+        for (name, bytes) in self.inbox.take() {
+            let loaded = bytes
+                .map_err(|e| format!("cannot read the file: {e}"))
+                .and_then(|b| {
+                    String::from_utf8(b).map_err(|_| {
+                        "the file is not UTF-8 text: drop a lesson or scene .toml file".to_owned()
+                    })
+                })
+                .map_err(|e| lesson::Diagnostics(vec![lesson::Diagnostic::whole_file(&name, e)]))
+                .and_then(|text| lesson::parse_document(&text, &name, std::path::Path::new(".")));
+            self.opened(loaded, &name, None);
+        }
+    }
+
+    /// Opens what was loaded, or shows why it was not.
+    fn opened(
+        &mut self,
+        loaded: Result<Document, lesson::Diagnostics>,
+        name: &str,
+        path: Option<std::path::PathBuf>,
+    ) {
+        match loaded {
+            Ok(doc) => self.open(doc, name, path),
+            Err(e) => self.session.reload_error = Some(e.to_string()),
+        }
+    }
+
+    /// Puts `doc` (named `source`) in place of what is open; a file on disk is watched.
+    fn open(&mut self, doc: Document, source: &str, path: Option<std::path::PathBuf>) {
+        self.session.open(doc, source);
+        self.panels = super::Panels::for_mode(self.presenting());
+        self.watched = None;
+        if let Some(path) = path {
+            self.watch(path);
+        }
+    }
+}

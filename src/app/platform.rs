@@ -1,0 +1,213 @@
+//! What differs between the desktop and the browser, and only that: how the app starts (a
+//! native window, or a canvas in a page), how a dropped file's bytes are read (at once, or in
+//! the background as browsers require), and where the title goes (the window's, or the tab's:
+//! `document.title`). Everything else runs the same: rayon runs on one thread in the browser,
+//! the render worker falls back to the UI thread where there are no threads, and clocks come
+//! from `web-time`. Live reload watches files on disk, so the browser has none (the Lessons menu
+//! says how to open a file there).
+
+use std::sync::{Arc, Mutex};
+
+/// A dropped file's name and its bytes (or why they could not be read).
+type Read = (String, Result<Vec<u8>, String>);
+
+/// Dropped files read in the background, collected for the next frame.
+#[derive(Clone, Default)]
+pub struct Inbox(Arc<Mutex<Vec<Read>>>);
+
+impl Inbox {
+    /// Reads `file`: at once on the desktop; in the browser in the background, waking `ctx`
+    /// when done.
+    pub fn read(&self, file: Arc<dyn egui::DroppedFile + Send + Sync>, ctx: &egui::Context) {
+        let name = file.path().display().to_string();
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            let _ = ctx;
+            self.push((name, file.bytes()));
+        }
+        #[cfg(target_arch = "wasm32")]
+        {
+            let inbox = self.clone();
+            let ctx = ctx.clone();
+            wasm_bindgen_futures::spawn_local(async move {
+                let bytes = file.bytes_async().await;
+                inbox.push((name, bytes));
+                ctx.request_repaint();
+            });
+        }
+    }
+
+    fn push(&self, read: Read) {
+        if let Ok(mut v) = self.0.lock() {
+            v.push(read);
+        }
+    }
+
+    /// The files read since the last call.
+    #[must_use]
+    pub fn take(&self) -> Vec<Read> {
+        self.0
+            .lock()
+            .map(|mut v| std::mem::take(&mut *v))
+            .unwrap_or_default()
+    }
+}
+
+/// Shows `title` as the window's title (the browser tab's in a page) when it changed; in a page
+/// also the latest frame's render time in milliseconds, as `<html data-frame-ms="…">`, for the
+/// browser test and the benchmark to read.
+pub fn report(ctx: &egui::Context, title: &str, frame_ms: Option<f64>) {
+    #[cfg(target_arch = "wasm32")]
+    if let (Some(ms), Some(root)) = (
+        frame_ms,
+        web_sys::window()
+            .and_then(|w| w.document())
+            .and_then(|d| d.document_element()),
+    ) {
+        let _ = root.set_attribute("data-frame-ms", &format!("{ms:.1}"));
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    let _ = frame_ms;
+    let id = egui::Id::unique("pipelens-title");
+    if ctx.data(|d| d.get_temp::<String>(id)).as_deref() == Some(title) {
+        return;
+    }
+    ctx.data_mut(|d| d.insert_temp(id, title.to_owned()));
+    #[cfg(not(target_arch = "wasm32"))]
+    ctx.send_viewport_cmd(egui::ViewportCommand::Title(title.to_owned()));
+    #[cfg(target_arch = "wasm32")]
+    if let Some(document) = web_sys::window().and_then(|w| w.document()) {
+        document.set_title(title);
+    }
+}
+
+/// Whether the app writes files (the desktop) rather than offering downloads (the browser).
+pub const WRITES_FILES: bool = cfg!(not(target_arch = "wasm32"));
+
+/// Hands `bytes` over as the file `name`: in the browser a download (a Blob behind a clicked
+/// link); on the desktop the file written into `dir`.
+///
+/// # Errors
+/// When the browser refuses the Blob, or the file cannot be written.
+pub fn download(
+    name: &str,
+    bytes: &[u8],
+    mime: &str,
+    dir: &std::path::Path,
+) -> Result<String, String> {
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        let _ = mime;
+        std::fs::create_dir_all(dir).map_err(|e| e.to_string())?;
+        let path = dir.join(name);
+        crate::export::write_atomically(&path, bytes).map_err(|e| format!("{e:#}"))?;
+        Ok(path.display().to_string())
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        use wasm_bindgen::JsCast as _;
+        let _ = dir;
+        let fail = |e: wasm_bindgen::JsValue| format!("the browser refused the download: {e:?}");
+        let parts = js_sys::Array::of1(&js_sys::Uint8Array::from(bytes));
+        let options = web_sys::BlobPropertyBag::new();
+        options.set_type(mime);
+        let blob = web_sys::Blob::new_with_u8_array_sequence_and_options(&parts, &options)
+            .map_err(fail)?;
+        let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(fail)?;
+        let document = web_sys::window()
+            .and_then(|w| w.document())
+            .ok_or_else(|| "no document".to_owned())?;
+        let a = document
+            .create_element("a")
+            .map_err(fail)?
+            .dyn_into::<web_sys::HtmlAnchorElement>()
+            .map_err(|_| "no link element".to_owned())?;
+        a.set_href(&url);
+        a.set_download(name);
+        a.click();
+        let _ = web_sys::Url::revoke_object_url(&url);
+        Ok(name.to_owned())
+    }
+}
+
+/// Opens the window on `doc` and runs until it is closed.
+///
+/// # Errors
+/// When no window can be opened (no display, no OpenGL).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn run(
+    doc: crate::lesson::Document,
+    source: String,
+    path: Option<std::path::PathBuf>,
+    start: super::Start,
+) -> anyhow::Result<()> {
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_title("pipelens")
+            .with_inner_size([1366.0, 768.0])
+            .with_min_inner_size([800.0, 500.0]),
+        ..Default::default()
+    };
+    eframe::run_native(
+        "pipelens",
+        options,
+        Box::new(move |cc| Ok(Box::new(super::create(cc, doc, &source, path, start)))),
+    )
+    .map_err(|e| {
+        anyhow::anyhow!(
+            "cannot open the window: {e}\n(with no display, `pipelens export --out DIR` renders and writes every stage headless)"
+        )
+    })
+}
+
+/// Starts the app in the page's `canvas` on the built-in tour, in the language the page asks for
+/// (`?lang=zh`), on a step if it names one (`&step=3`, counted from 1).
+///
+/// # Errors
+/// When the canvas has no WebGL2 or the app cannot start.
+#[cfg(target_arch = "wasm32")]
+pub async fn start(canvas: web_sys::HtmlCanvasElement) -> Result<(), wasm_bindgen::JsValue> {
+    let query = web_sys::window()
+        .and_then(|w| w.location().search().ok())
+        .unwrap_or_default();
+    let value = |key: &str| {
+        query
+            .trim_start_matches('?')
+            .split('&')
+            .find_map(|kv| kv.strip_prefix(key)?.strip_prefix('='))
+            .map(str::to_owned)
+    };
+    let lang = match value("lang").as_deref() {
+        Some("zh") => crate::vocabulary::Lang::Zh,
+        _ => crate::vocabulary::Lang::En,
+    };
+    let lesson_file = value("lesson");
+    let doc = lesson_file
+        .as_deref()
+        .and_then(|f| crate::lesson::library::lesson(&format!("{f}.toml")).ok())
+        .map_or_else(crate::lesson::default_lesson, Ok)
+        .map_err(|d| wasm_bindgen::JsValue::from_str(&d.to_string()))?;
+    let source = format!("lessons/{}.toml (built in)", doc.id);
+    let start = super::Start {
+        lang,
+        step: value("step")
+            .and_then(|s| s.parse::<usize>().ok())
+            .map(|k| k.saturating_sub(1)),
+        ..Default::default()
+    };
+    eframe::WebRunner::new()
+        .start(
+            canvas,
+            eframe::WebOptions::default(),
+            Box::new(move |cc| {
+                Ok(Box::new(super::create(
+                    cc,
+                    crate::lesson::Document::Lesson(Box::new(doc)),
+                    &source,
+                    None,
+                    start,
+                )))
+            }),
+        )
+        .await
+}

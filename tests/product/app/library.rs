@@ -1,0 +1,156 @@
+//! Opening another lesson in the app: the Lessons menu (every built-in lesson) and a lesson
+//! file dropped on the window — from its path (the desktop) or from its bytes alone (the
+//! browser, where a dropped file has no path); a broken one says where it is broken and the
+//! lesson open keeps running. And live reload: an edited lesson file loads again on the same step.
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use pipelens::app::PipelensApp;
+
+use super::{lesson_harness, step_of};
+
+/// A dropped file as a browser gives it: a name and bytes.
+#[derive(Debug)]
+struct Dropped {
+    path: PathBuf,
+    bytes: Vec<u8>,
+}
+
+impl egui::DroppedFile for Dropped {
+    fn path(&self) -> &Path {
+        &self.path
+    }
+
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        Ok(self.bytes.clone())
+    }
+}
+
+fn lesson_id(h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>) -> String {
+    h.state()
+        .session
+        .lesson
+        .as_ref()
+        .map_or_else(String::new, |p| p.lesson.id.clone())
+}
+
+#[test]
+fn the_lessons_menu_opens_a_built_in_lesson_on_its_first_step() {
+    let mut h = lesson_harness(None);
+    h.run_steps(3);
+    h.key_press(egui::Key::ArrowRight);
+    h.run_steps(3);
+    assert_eq!(step_of(&h), 1);
+    h.get_by_label("Lessons").click();
+    h.run_steps(2);
+    h.get_by_label_contains("Texture mapping and magnification")
+        .click();
+    h.run_steps(4);
+    assert_eq!(lesson_id(&h), "13-texture-mapping");
+    assert_eq!(step_of(&h), 0, "a lesson opens on its first step");
+    assert_eq!(
+        h.state().title(),
+        "pipelens — 13-texture-mapping — step 1/6"
+    );
+    assert!(
+        h.state().session.capture.is_some(),
+        "its first step is drawn"
+    );
+}
+
+#[test]
+fn a_dropped_lesson_opens_from_its_bytes_and_a_broken_one_says_where() {
+    let mut h = lesson_harness(None);
+    h.run_steps(3);
+    let text = std::fs::read(crate::support::repo().join("lessons/07-rasterization.toml"))
+        .expect("the lesson file");
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("07-rasterization.toml"),
+        bytes: text.clone(),
+    }));
+    h.run_steps(4);
+    assert_eq!(lesson_id(&h), "07-rasterization");
+    assert!(h.state().session.reload_error.is_none());
+    // A broken copy: the lesson open keeps running, the error names the line.
+    let broken = String::from_utf8(text).expect("UTF-8").replacen(
+        "stage = \"viewport\"",
+        "stage = \"viewprot\"",
+        1,
+    );
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("mine.toml"),
+        bytes: broken.into_bytes(),
+    }));
+    h.run_steps(4);
+    assert_eq!(
+        lesson_id(&h),
+        "07-rasterization",
+        "the open lesson keeps running"
+    );
+    let error = h.state().session.reload_error.clone().unwrap_or_default();
+    assert!(
+        error.contains("mine.toml:") && error.contains("viewport"),
+        "{error}"
+    );
+}
+
+#[test]
+fn an_edited_lesson_reloads_on_the_same_step_and_a_broken_edit_keeps_the_last_good_one() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let path = dir.path().join("lesson.toml");
+    let good = pipelens::lesson::DEFAULT_LESSON;
+    std::fs::write(&path, good).expect("write");
+    let mut h = lesson_harness(Some(path.clone()));
+    h.run_steps(2);
+    h.key_press(egui::Key::ArrowRight);
+    h.run_steps(2);
+    assert_eq!(step_of(&h), 1);
+    let wait_and_run = |h: &mut Harness<'_, PipelensApp>| {
+        std::thread::sleep(std::time::Duration::from_millis(600));
+        h.run_steps(3);
+    };
+    // A broken edit: the error is shown, the lesson keeps running on its step.
+    std::fs::write(&path, good.replace("fovy = 45", "fovy = 450")).expect("write");
+    // Some file systems keep whole-second times: make sure the time moved.
+    let later = std::time::SystemTime::now() + std::time::Duration::from_secs(2);
+    std::fs::File::options()
+        .write(true)
+        .open(&path)
+        .and_then(|f| f.set_modified(later))
+        .expect("touch");
+    wait_and_run(&mut h);
+    let err = h
+        .state()
+        .session
+        .reload_error
+        .clone()
+        .expect("the error is shown");
+    assert!(
+        err.contains("lesson.toml:") && err.contains("fovy"),
+        "{err}"
+    );
+    assert_eq!(step_of(&h), 1);
+    assert!(h.query_by_label_contains("fovy must be between").is_some());
+    // Fixed, with a new title for step 2: reloaded, still on step 2, the error gone.
+    std::fs::write(
+        &path,
+        good.replace(
+            "Model space: each object in its own frame",
+            "Model space, edited",
+        ),
+    )
+    .expect("write");
+    let later = later + std::time::Duration::from_secs(2);
+    std::fs::File::options()
+        .write(true)
+        .open(&path)
+        .and_then(|f| f.set_modified(later))
+        .expect("touch");
+    wait_and_run(&mut h);
+    assert!(h.state().session.reload_error.is_none());
+    assert_eq!(step_of(&h), 1);
+    assert!(h.query_by_label_contains("Model space, edited").is_some());
+}
