@@ -20,17 +20,21 @@ if [ "$have" != "$want" ]; then
 fi
 
 flags=""
+target_dir=target
 if [ "${PIPELENS_WEB_SIMD:-0}" = 1 ]; then
+  # Its own target folder: switching the flags back and forth would rebuild everything.
   flags="-C target-feature=+simd128"
+  target_dir=target/web-simd
 fi
 # No debug line tables in the browser: they would double the download.
 CARGO_PROFILE_RELEASE_DEBUG=false CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="$flags" \
-  cargo build --quiet -p pipelens-web --release --target wasm32-unknown-unknown
+  cargo build --quiet -p pipelens-web --release --target wasm32-unknown-unknown \
+  --target-dir "$target_dir"
 
 rm -rf "$out"
 mkdir -p "$out"
 wasm-bindgen --target web --no-typescript --out-dir "$out" \
-  target/wasm32-unknown-unknown/release/pipelens_web.wasm
+  "$target_dir/wasm32-unknown-unknown/release/pipelens_web.wasm"
 cp web/index.html "$out/"
 wasm="$out/pipelens_web_bg.wasm"
 raw=$(stat -c %s "$wasm")
