@@ -19,7 +19,7 @@ open() {
   app=$!
   win=
   for _ in $(seq 1 60); do
-    win=$(DISPLAY=$display xdotool search --name '^pipelens$' 2>/dev/null | head -1) && [ -n "$win" ] && break
+    win=$(DISPLAY=$display xdotool search --name '^pipelens' 2>/dev/null | head -1) && [ -n "$win" ] && break
     sleep 1
   done
   [ -n "$win" ] || { echo "screenshots: no window for pipelens $*"; exit 1; }

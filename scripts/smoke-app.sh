@@ -15,13 +15,13 @@ start_xvfb
 DISPLAY=$display target/debug/pipelens "$@" >target/smoke-app.log 2>&1 &
 app=$!
 for _ in $(seq 1 60); do
-  if DISPLAY=$display xdotool search --name '^pipelens( —|$)' >/dev/null 2>&1; then break; fi
+  if DISPLAY=$display xdotool search --name '^pipelens' >/dev/null 2>&1; then break; fi
   if ! kill -0 "$app" 2>/dev/null; then
     echo "smoke: the app exited before its window appeared:"; cat target/smoke-app.log; exit 1
   fi
   sleep 1
 done
-if ! DISPLAY=$display xdotool search --name '^pipelens( —|$)' >/dev/null 2>&1; then
+if ! DISPLAY=$display xdotool search --name '^pipelens' >/dev/null 2>&1; then
   echo "smoke: no window named pipelens after 60 s"; cat target/smoke-app.log; exit 1
 fi
 sleep "${SMOKE_SETTLE:-4}"
