@@ -5,11 +5,12 @@
 //  2. a key press advances a step: → and the title says step 2/10;
 //  3. the Chinese interface (?lang=zh) renders: its top bar differs from the English one, and a
 //     Chinese lesson step is reached the same way;
-//  4. the tour's frame time in the browser is read from <html data-frame-ms> and printed.
+//  4. the tour's frame time in the browser is read from <html data-frame-ms> and printed;
+//  5. a lesson file dropped on the page opens.
 // Screenshots are written to the output folder for a person to look at.
 import { chromium } from "playwright-core";
 import { PNG } from "pngjs";
-import { mkdirSync, writeFileSync } from "node:fs";
+import { mkdirSync, readFileSync, writeFileSync } from "node:fs";
 
 const url = process.argv[2] ?? "http://127.0.0.1:8765/index.html";
 const out = process.argv[3] ?? "target/web-test";
@@ -127,6 +128,20 @@ const zh2 = await open("?lang=zh&lesson=10-blinn-phong&step=5", "zh-10");
 if (await waitForTitle(zh2, /^pipelens — 10-blinn-phong — step 5\/7$/, "a Chinese lesson opens on a step")) {
   await zh2.waitForTimeout(3000);
   await zh2.screenshot({ path: `${out}/blinn-phong-zh-step5.png` });
+}
+
+// 5. A lesson file dropped on the page opens (read from its bytes in the background).
+const text = readFileSync(new URL("../../lessons/07-rasterization.toml", import.meta.url), "utf8");
+await zh2.evaluate((t) => {
+  const dt = new DataTransfer();
+  dt.items.add(new File([t], "my-lesson.toml", { type: "text/plain" }));
+  const canvas = document.getElementById("pipelens");
+  canvas.dispatchEvent(new DragEvent("dragover", { dataTransfer: dt, bubbles: true, cancelable: true }));
+  canvas.dispatchEvent(new DragEvent("drop", { dataTransfer: dt, bubbles: true, cancelable: true }));
+}, text);
+if (await waitForTitle(zh2, /^pipelens — 07-rasterization — step 1\/5$/, "a lesson dropped on the page opens")) {
+  await zh2.waitForTimeout(2000);
+  await zh2.screenshot({ path: `${out}/dropped-zh.png` });
 }
 
 check(errors.length === 0, `no errors in the pages${errors.length ? ": " + errors.join(" | ") : ""}`);

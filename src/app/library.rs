@@ -40,13 +40,18 @@ impl PipelensApp {
                 }
             }
             ui.separator();
-            ui.label(
-                RichText::new(lang.tr(
-                    "Your own lesson or scene: drop its .toml file on the window.",
-                    "自己的课程或场景：把它的 .toml 文件拖放到窗口上。",
-                ))
-                .small(),
-            );
+            let hint = if super::platform::WATCHES_FILES {
+                lang.tr(
+                    "Your own lesson or scene: drop its .toml file on the window; it reloads when you save it.",
+                    "自己的课程或场景：把它的 .toml 文件拖放到窗口上；保存后自动重新加载。",
+                )
+            } else {
+                lang.tr(
+                    "Your own lesson or scene: drop its .toml file on the page. A page cannot watch files: after an edit, drop it again.",
+                    "自己的课程或场景：把它的 .toml 文件拖放到页面上。网页无法监视文件：修改后请重新拖放。",
+                )
+            };
+            ui.label(RichText::new(hint).small());
         })
         .response
         .on_hover_text(lang.tr("Open another built-in lesson", "打开另一个内置课程"));

@@ -84,6 +84,9 @@ pub fn report(ctx: &egui::Context, title: &str, frame_ms: Option<f64>) {
 /// Whether the app writes files (the desktop) rather than offering downloads (the browser).
 pub const WRITES_FILES: bool = cfg!(not(target_arch = "wasm32"));
 
+/// Whether a file opened from disk is watched for live reload (the desktop; a page cannot).
+pub const WATCHES_FILES: bool = WRITES_FILES;
+
 /// Hands `bytes` over as the file `name`: in the browser a download (a Blob behind a clicked
 /// link); on the desktop the file written into `dir`.
 ///
