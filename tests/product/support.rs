@@ -63,3 +63,15 @@ pub fn lesson_files() -> Vec<std::path::PathBuf> {
     files.sort();
     files
 }
+
+/// Writes `text` to `path` as an editor saving it would, with the modification time `modified`
+/// (some file systems keep whole seconds: a test that saves twice in a second moves the time on
+/// itself so that live reload sees the change).
+pub fn save_edited(path: &std::path::Path, text: &str, modified: std::time::SystemTime) {
+    std::fs::write(path, text).expect("write");
+    std::fs::File::options()
+        .write(true)
+        .open(path)
+        .and_then(|f| f.set_modified(modified))
+        .expect("touch");
+}

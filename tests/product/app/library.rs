@@ -113,14 +113,8 @@ fn an_edited_lesson_reloads_on_the_same_step_and_a_broken_edit_keeps_the_last_go
         h.run_steps(3);
     };
     // A broken edit: the error is shown, the lesson keeps running on its step.
-    std::fs::write(&path, good.replace("fovy = 45", "fovy = 450")).expect("write");
-    // Some file systems keep whole-second times: make sure the time moved.
     let later = std::time::SystemTime::now() + std::time::Duration::from_secs(2);
-    std::fs::File::options()
-        .write(true)
-        .open(&path)
-        .and_then(|f| f.set_modified(later))
-        .expect("touch");
+    crate::support::save_edited(&path, &good.replace("fovy = 45", "fovy = 450"), later);
     wait_and_run(&mut h);
     let err = h
         .state()
@@ -135,20 +129,14 @@ fn an_edited_lesson_reloads_on_the_same_step_and_a_broken_edit_keeps_the_last_go
     assert_eq!(step_of(&h), 1);
     assert!(h.query_by_label_contains("fovy must be between").is_some());
     // Fixed, with a new title for step 2: reloaded, still on step 2, the error gone.
-    std::fs::write(
+    crate::support::save_edited(
         &path,
-        good.replace(
+        &good.replace(
             "Model space: each object in its own frame",
             "Model space, edited",
         ),
-    )
-    .expect("write");
-    let later = later + std::time::Duration::from_secs(2);
-    std::fs::File::options()
-        .write(true)
-        .open(&path)
-        .and_then(|f| f.set_modified(later))
-        .expect("touch");
+        later + std::time::Duration::from_secs(2),
+    );
     wait_and_run(&mut h);
     assert!(h.state().session.reload_error.is_none());
     assert_eq!(step_of(&h), 1);

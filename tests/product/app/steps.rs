@@ -43,13 +43,11 @@ fn a_step_without_buffer_shows_its_stages_default_even_after_a_reload() {
         "step 3 names none: the stage's default, not what step 2 showed"
     );
     // A reload that removes step 3 lands on step 2 and shows what step 2 says.
-    std::fs::write(&path, format!("{head}{first}{second}")).expect("write");
-    let later = std::time::SystemTime::now() + std::time::Duration::from_secs(2);
-    std::fs::File::options()
-        .write(true)
-        .open(&path)
-        .and_then(|f| f.set_modified(later))
-        .expect("touch");
+    crate::support::save_edited(
+        &path,
+        &format!("{head}{first}{second}"),
+        std::time::SystemTime::now() + std::time::Duration::from_secs(2),
+    );
     std::thread::sleep(std::time::Duration::from_millis(600));
     h.run_steps(3);
     assert_eq!((step_of(&h), buffer(&h)), (1, BufferKind::Normal));
