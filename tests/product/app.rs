@@ -194,8 +194,15 @@ fn comparing_shading_frequencies_side_by_side_with_a_profile() {
         .map(|(l, _)| l.clone())
         .collect();
     assert_eq!(labels, ["flat", "Gouraud", "Phong"]);
-    // Drag across the first image: a profile line appears and each variant has a curve.
+    // A click is no line: the profile stays (a zero-length one would plot an empty chart).
     let first = h.get_by_label("compared image: flat").rect();
+    let before = h.state().session.selection.profile;
+    h.drag_at(first.center());
+    h.run();
+    h.drop_at(first.center());
+    h.run();
+    assert_eq!(h.state().session.selection.profile, before);
+    // Drag across the first image: a profile line appears and each variant has a curve.
     let (a, b) = (
         first.left_center() + egui::vec2(5.0, 10.0),
         first.right_center() + egui::vec2(-5.0, 10.0),

@@ -131,7 +131,11 @@ impl CompareView {
                 && let (Some(a), Some(p)) = (self.drag_start, response.interact_pointer_pos())
             {
                 let b = to_image(p);
-                cmds.push(Command::SetProfile(Some([a[0], a[1], b[0], b[1]])));
+                // A click is not a line: a profile needs two image pixels' length (a shorter
+                // one would plot an empty chart over half the window).
+                if (b[0] - a[0]).hypot(b[1] - a[1]) >= 2.0 {
+                    cmds.push(Command::SetProfile(Some([a[0], a[1], b[0], b[1]])));
+                }
             }
             if let Some(l) = session.selection.profile {
                 painter.line_segment(
