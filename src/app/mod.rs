@@ -245,6 +245,17 @@ impl PipelensApp {
             }
         }
         self.animate(ui.ctx());
+        // A parameter dragged (a slider, a number): drafts until the pointer is let go, then the
+        // full frame.
+        if !ui.ctx().input(|i| i.pointer.any_down()) {
+            self.session.set_drafting(false);
+        } else if self
+            .commands
+            .iter()
+            .any(|c| matches!(c, Command::SetSpec(_)))
+        {
+            self.session.set_drafting(true);
+        }
         for cmd in std::mem::take(&mut self.commands) {
             self.session.apply(cmd);
         }

@@ -82,6 +82,12 @@ pub struct Session {
     /// Counts the steps entered: a view that frames or opens something per step resets when it
     /// changes.
     pub step_entered: u64,
+    /// A parameter is being dragged: each render is a draft (one sample per pixel, the
+    /// observer at a quarter of its pixels) so that the picture keeps up with the hand; letting
+    /// go renders the full frame.
+    pub drafting: bool,
+    /// Whether the capture on screen is a draft.
+    pub shown_draft: bool,
 }
 
 impl Session {
@@ -121,6 +127,8 @@ impl Session {
             reload_error: None,
             worker,
             step_entered: 0,
+            drafting: false,
+            shown_draft: false,
         };
         s.request_render();
         s
@@ -281,7 +289,11 @@ impl Session {
     pub fn job(&self) -> Job {
         let mut spec = self.spec.clone();
         spec.settings.capture = self.capture_needed();
+        if self.drafting {
+            spec.settings.samples = pipeline::raster::Samples::X1;
+        }
         Job {
+            draft: self.drafting,
             generation: self.generation,
             variants: self
                 .selection
@@ -292,6 +304,15 @@ impl Session {
             observer: self
                 .observer_shown()
                 .then(|| (self.orbit.camera(), self.observer_aspect)),
+        }
+    }
+
+    /// Starts or ends a drag of a parameter (see [`Self::drafting`]); ending it renders the
+    /// full frame in place of the draft on screen or under way.
+    pub fn set_drafting(&mut self, on: bool) {
+        let was = std::mem::replace(&mut self.drafting, on);
+        if was && !on && (self.shown_draft || self.shown_generation < self.generation) {
+            self.request_render();
         }
     }
 
@@ -337,6 +358,7 @@ impl Session {
                     old.0.into_iter().for_each(|c| w.recycle(c, false));
                     old.1.into_iter().for_each(|c| w.recycle(c, true));
                 }
+                self.shown_draft = r.draft;
                 self.buffers = r.buffers;
                 self.variants = r.variants;
                 self.times = Some(r.times);

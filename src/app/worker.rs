@@ -18,6 +18,8 @@ use crate::observer::render_observer;
 pub struct Job {
     /// Which request this is; results of older ones are dropped.
     pub generation: u64,
+    /// A draft while a parameter is dragged: the observer at a quarter of its pixels.
+    pub draft: bool,
     /// The scene and settings.
     pub spec: SceneSpec,
     /// The observer's camera (the same scene seen from outside) and the width/height of its
@@ -32,6 +34,8 @@ pub struct Job {
 pub struct Rendered {
     /// The capture of the viewing camera.
     pub capture: Arc<FrameCapture>,
+    /// Whether it is a draft (see [`Job::draft`]).
+    pub draft: bool,
     /// How long its stages took.
     pub times: StageTimes,
     /// The capture of the observer's camera, when it could be rendered.
@@ -85,8 +89,18 @@ impl Job {
                 .map_err(|e| e.to_string())
                 .map(|(capture, times)| {
                     let observer = self.observer.and_then(|(camera, aspect)| {
-                        render_observer(&self.spec, camera, aspect, spares.observer.take())
-                            .map(Arc::new)
+                        let draft;
+                        let spec = if self.draft {
+                            // A quarter of the pixels while dragging: the view shows it stretched.
+                            let mut small = self.spec.clone();
+                            small.settings.width = (small.settings.width / 2).max(16);
+                            small.settings.height = (small.settings.height / 2).max(16);
+                            draft = small;
+                            &draft
+                        } else {
+                            &self.spec
+                        };
+                        render_observer(spec, camera, aspect, spares.observer.take()).map(Arc::new)
                     });
                     let variants = self
                         .variants
@@ -97,6 +111,7 @@ impl Job {
                         })
                         .collect();
                     Rendered {
+                        draft: self.draft,
                         buffers: BufferKind::ALL
                             .into_iter()
                             .filter(|&k| self.spec.scene.offers(&self.spec.settings, k))

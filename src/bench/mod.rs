@@ -222,11 +222,14 @@ fn slider_drag(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()
          (view + observer; medians of {frames}):",
         session.spec.settings.samples.count()
     )?;
-    for (label, pixel) in [
-        ("nothing inspected", None),
-        ("a pixel inspected", Some((480, 270))),
+    for (label, pixel, drafting) in [
+        ("nothing inspected", None, false),
+        ("a pixel inspected", Some((480, 270)), false),
+        ("dragging: draft", None, true),
+        ("dragging: draft", Some((480, 270)), true),
     ] {
         session.selection.pixel = pixel;
+        session.drafting = drafting;
         let job = session.job();
         let mut spares = crate::app::worker::Spares::default();
         let _ = job.clone().run(&mut spares);

@@ -109,3 +109,62 @@ fn the_inspector_shows_an_axis_rotation_by_rodrigues_by_quaternion_and_a_slerp()
             .is_some()
     );
 }
+
+/// While a parameter is dragged the picture is a draft (one sample per pixel, the observer at a
+/// quarter of its pixels), so that it keeps up with the hand; letting go renders the full frame.
+/// Through the app: the Parameters panel's fovy slider dragged, then let go.
+#[test]
+fn a_dragged_parameter_renders_drafts_then_the_full_frame_on_release() {
+    use pipeline::raster::Samples;
+    let mut h = lesson_harness(None);
+    h.run_steps(3);
+    let full = |h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>| {
+        let s = &h.state().session;
+        let c = s.capture.as_ref().expect("a capture");
+        (s.shown_draft, c.settings.samples)
+    };
+    assert_eq!(full(&h), (false, Samples::X4));
+    let observer_pixels = |h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>| {
+        h.state()
+            .session
+            .observer
+            .as_ref()
+            .map(|o| o.width() * o.height())
+    };
+    // Drag the fovy slider of the Parameters panel (P opens it).
+    h.key_press(egui::Key::P);
+    h.run_steps(2);
+    let before = observer_pixels(&h).expect("the tour shows the observer");
+    let slider = h
+        .get_by_role_and_label(egui::accesskit::Role::Slider, "fovy °")
+        .rect();
+    let fovy = |h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>| match h
+        .state()
+        .session
+        .spec
+        .scene
+        .projection
+    {
+        pipeline::camera::Projection::Perspective { fovy_deg, .. } => fovy_deg,
+        _ => f32::NAN,
+    };
+    let start = fovy(&h);
+    h.drag_at(slider.center());
+    h.run();
+    h.hover_at(slider.center() + egui::vec2(30.0, 0.0));
+    h.run();
+    h.hover_at(slider.center() + egui::vec2(60.0, 0.0));
+    h.run();
+    assert!(
+        fovy(&h) > start,
+        "the slider moved fovy: {start} → {}",
+        fovy(&h)
+    );
+    assert_eq!(full(&h), (true, Samples::X1), "a draft while dragging");
+    let draft = observer_pixels(&h).expect("the observer is drawn while dragging");
+    assert!(draft * 3 < before, "{draft} of {before} pixels");
+    h.drop_at(slider.center() + egui::vec2(60.0, 0.0));
+    h.run_steps(3);
+    assert_eq!(full(&h), (false, Samples::X4), "the full frame once let go");
+    assert_eq!(observer_pixels(&h), Some(before));
+}
