@@ -60,20 +60,8 @@ impl PipelensApp {
 
     /// The lesson's handout and slides in the interface's language, off the UI thread.
     pub(super) fn start_handout_export(&mut self) {
-        let Some(player) = &self.session.lesson else {
+        let Some((lesson, opts)) = self.handout_export(true) else {
             return;
-        };
-        let lesson = player.lesson.clone();
-        let opts = crate::export::lesson::LessonExport {
-            out: PathBuf::from(self.export_dir.trim()),
-            step: None,
-            size: None,
-            lang: self.session.lang,
-            max_records: 200_000,
-            answers: false,
-            slides: true,
-            data: false,
-            cancel: crate::export::Cancel::default(),
         };
         self.export_cancel = Some(opts.cancel.clone());
         let (tx, rx) = channel();
@@ -89,22 +77,10 @@ impl PipelensApp {
     /// (every image in it, printable), built on this thread (a page has one; the window waits
     /// the few seconds it takes) and handed over as a download.
     pub(super) fn download_handout(&mut self) {
-        let Some(player) = &self.session.lesson else {
+        let Some((lesson, opts)) = self.handout_export(false) else {
             return;
         };
-        let lesson = player.lesson.clone();
-        let lang = self.session.lang;
-        let opts = crate::export::lesson::LessonExport {
-            out: PathBuf::from(self.export_dir.trim()),
-            step: None,
-            size: None,
-            lang,
-            max_records: 200_000,
-            answers: false,
-            slides: false,
-            data: false,
-            cancel: crate::export::Cancel::default(),
-        };
+        let lang = opts.lang;
         let name = format!(
             "{}-{}.html",
             lesson.id,
@@ -126,6 +102,30 @@ impl PipelensApp {
             ),
             Err(e) => (false, e),
         });
+    }
+
+    /// The open lesson and how the app exports its handout: in the interface's language, into
+    /// the Export menu's folder, no answers, no data, with `slides` or not.
+    fn handout_export(
+        &self,
+        slides: bool,
+    ) -> Option<(
+        std::sync::Arc<crate::lesson::Lesson>,
+        crate::export::lesson::LessonExport,
+    )> {
+        let lesson = self.session.lesson.as_ref()?.lesson.clone();
+        let opts = crate::export::lesson::LessonExport {
+            out: PathBuf::from(self.export_dir.trim()),
+            step: None,
+            size: None,
+            lang: self.session.lang,
+            max_records: 200_000,
+            answers: false,
+            slides,
+            data: false,
+            cancel: crate::export::Cancel::default(),
+        };
+        Some((lesson, opts))
     }
 
     /// Takes the export's result when it has finished, as a message in the top bar.
