@@ -75,6 +75,8 @@ pub fn normal_matrix(model: &Mat4) -> Mat3 {
 
 /// Runs the vertex stage on every vertex of `object` (index `object_index` in the scene),
 /// appending one row per vertex to `out` and, with Gouraud shading, its lighting to `lit`.
+/// The vertices are independent: they are transformed in parallel, written straight into
+/// `out`'s storage (which the frame before may have left with room enough).
 pub fn transform_object(
     object: &Object,
     object_index: u32,
@@ -83,58 +85,75 @@ pub fn transform_object(
     out: &mut Vec<VertexRecord>,
     lit: &mut Vec<ShadeTerms>,
 ) {
+    use rayon::prelude::*;
     let mesh = &object.mesh;
     let n_matrix = normal_matrix(&m.model);
-    out.reserve(mesh.positions.len());
-    for (i, &p) in mesh.positions.iter().enumerate() {
-        // Displacement mapping: the vertex moves along its normal, p' = p + k·h(u, v)·n.
-        let p = match (&object.displacement, mesh.uvs.get(i)) {
-            (Some(d), Some(&uv)) => p + mesh.normals[i] * d.offset(uv),
-            _ => p,
-        };
-        let object_pos = p.extend(1.0);
-        let world = m.model * object_pos;
-        let eye = m.view * world;
-        let clip = m.projection * eye;
-        let ndc = (clip.w > 0.0).then(|| clip.truncate() / clip.w);
-        let window = ndc.map(|n| (m.viewport * n.extend(1.0)).truncate());
-        let color = match object.color {
-            ColorSource::Uniform(c) => c,
-            ColorSource::Vertex if !mesh.colors.is_empty() => mesh.colors[i],
-            ColorSource::Vertex | ColorSource::Normal => (mesh.normals[i] + 1.0) / 2.0,
-        };
-        let normal_world = (n_matrix * mesh.normals[i]).normalize_or_zero();
-        // A textured surface is lit white here; the texel modulates the result per pixel.
-        let lit_color = if object.texture.is_some() && !mesh.uvs.is_empty() {
-            Vec3::ONE
-        } else {
-            color
-        };
-        if lighting.frequency == Frequency::Gouraud && !object.lit {
-            lit.push(ShadeTerms::default());
-        } else if lighting.frequency == Frequency::Gouraud {
-            lit.push(shade::shade(
-                world.truncate(),
-                normal_world,
-                lighting.eye,
-                lit_color,
-                lighting.lights,
-                &object.material,
-                lighting.reflection,
-            ));
+    let first = out.len();
+    out.par_extend(
+        (0..mesh.positions.len())
+            .into_par_iter()
+            .with_min_len(1024)
+            .map(|i| transform_vertex(object, object_index, i, m, &n_matrix)),
+    );
+    if lighting.frequency != Frequency::Gouraud {
+        return;
+    }
+    // A textured surface is lit white here; the texel modulates the result per pixel.
+    let textured = object.texture.is_some() && !mesh.uvs.is_empty();
+    lit.par_extend(out[first..].par_iter().with_min_len(1024).map(|v| {
+        if !object.lit {
+            return ShadeTerms::default();
         }
-        out.push(VertexRecord {
-            object: object_index,
-            index: i as u32,
-            object_pos,
-            world,
-            eye,
-            clip,
-            ndc,
-            window,
-            color,
-            uv: mesh.uvs.get(i).copied(),
-            normal_world,
-        });
+        shade::shade(
+            v.world.truncate(),
+            v.normal_world,
+            lighting.eye,
+            if textured { Vec3::ONE } else { v.color },
+            lighting.lights,
+            &object.material,
+            lighting.reflection,
+        )
+    }));
+}
+
+/// Vertex `i` of `object` through every space: its row of the vertex table. `n_matrix` is the
+/// object's normal matrix.
+fn transform_vertex(
+    object: &Object,
+    object_index: u32,
+    i: usize,
+    m: &VertexMatrices,
+    n_matrix: &Mat3,
+) -> VertexRecord {
+    let mesh = &object.mesh;
+    let p = mesh.positions[i];
+    // Displacement mapping: the vertex moves along its normal, p' = p + k·h(u, v)·n.
+    let p = match (&object.displacement, mesh.uvs.get(i)) {
+        (Some(d), Some(&uv)) => p + mesh.normals[i] * d.offset(uv),
+        _ => p,
+    };
+    let object_pos = p.extend(1.0);
+    let world = m.model * object_pos;
+    let eye = m.view * world;
+    let clip = m.projection * eye;
+    let ndc = (clip.w > 0.0).then(|| clip.truncate() / clip.w);
+    let window = ndc.map(|n| (m.viewport * n.extend(1.0)).truncate());
+    let color = match object.color {
+        ColorSource::Uniform(c) => c,
+        ColorSource::Vertex if !mesh.colors.is_empty() => mesh.colors[i],
+        ColorSource::Vertex | ColorSource::Normal => (mesh.normals[i] + 1.0) / 2.0,
+    };
+    VertexRecord {
+        object: object_index,
+        index: i as u32,
+        object_pos,
+        world,
+        eye,
+        clip,
+        ndc,
+        window,
+        color,
+        uv: mesh.uvs.get(i).copied(),
+        normal_world: (*n_matrix * mesh.normals[i]).normalize_or_zero(),
     }
 }

@@ -49,11 +49,20 @@ pub const NONE: u32 = u32::MAX;
 #[must_use]
 #[inline]
 pub fn snap(v: f32) -> i64 {
-    (f64::from(v) * ONE as f64).round_ties_even() as i64
+    // 1.5·2⁵²: adding it leaves no bits below the units, so the sum is rounded to an integer
+    // by the processor's rounding (to nearest, ties to even), and subtracting it is exact —
+    // `round_ties_even` without a call to libm's `rint` (x86-64's baseline has no `roundsd`).
+    const ROUNDER: f64 = 6_755_399_441_055_744.0;
+    let x = f64::from(v) * ONE as f64;
+    if x.abs() < ROUNDER / 3.0 {
+        (x + ROUNDER - ROUNDER) as i64
+    } else {
+        x.round_ties_even() as i64
+    }
 }
 
 /// A triangle ready to be rasterized: snapped, counter-clockwise, with its edge equations.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct RasterTriangle {
     /// The primitive (input triangle) this piece belongs to.
     pub primitive: u32,
@@ -194,6 +203,19 @@ impl RasterTriangle {
     #[must_use]
     pub fn edge_values(&self, p: I64Vec2) -> [i64; 3] {
         self.edges.map(|e| e.at(p))
+    }
+
+    /// The edge functions at `p` with the fill rule's bias added: `E_i + bias_i ≥ 0` for all
+    /// three is the inside test (written out rather than mapped: it runs per row and sample).
+    #[must_use]
+    #[inline]
+    pub(crate) fn biased_edge_values(&self, p: I64Vec2) -> [i64; 3] {
+        let e = &self.edges;
+        [
+            e[0].at(p) + e[0].bias,
+            e[1].at(p) + e[1].bias,
+            e[2].at(p) + e[2].bias,
+        ]
     }
 
     /// Which edges are top or left edges (`E = 0` on them counts as inside), edge `i` being the

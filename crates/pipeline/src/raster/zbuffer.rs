@@ -298,14 +298,16 @@ impl Band<'_> {
             return counts;
         }
         let n = self.offsets.len();
-        let plane = tri.depth_plane();
+        // The plane is worked out at the first covered sample: of a million triangles most
+        // are smaller than a pixel and cover none.
+        let mut plane = None;
         let step = tri.edges.map(|e| e.a * ONE);
         let mut e = [[0i64; 3]; 16];
         for y in y0..=y1 {
             let row = top - y as usize;
             let corner = I64Vec2::new(i64::from(x0) * ONE, i64::from(y) * ONE);
             for (s, off) in self.offsets.iter().enumerate() {
-                e[s] = tri.edges.map(|edge| edge.at(corner + *off) + edge.bias);
+                e[s] = tri.biased_edge_values(corner + *off);
             }
             // Wide boxes: only the pixels between the first and the last that can have a
             // covered sample in this row (found exactly, in integers), so the empty corners of
@@ -329,6 +331,7 @@ impl Band<'_> {
                     if (es[0] | es[1] | es[2]) >= 0 {
                         counts.covered += 1;
                         let z = plane
+                            .get_or_insert_with(|| tri.depth_plane())
                             .at(I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE)
                                 + self.offsets[s]);
                         let i = base + s;

@@ -14,58 +14,153 @@ use crate::shade::{self, ShadeTerms};
 use crate::vertex::VertexRecord;
 
 /// Primitive assembly, clipping, perspective division, viewport and triangle setup for every
-/// triangle of every object: a record per primitive and the raster triangles, in order. The
-/// primitives are independent, so they are processed in parallel chunks and joined in order.
+/// triangle of every object: a record per primitive and the raster triangles, in order, written
+/// over what `primitives` and `triangles` hold (their storage kept). The primitives are
+/// independent, so they are processed in parallel chunks and joined in order.
 pub(super) fn assemble_and_clip(
     scene: &Scene,
     settings: &RenderSettings,
     matrices: &Matrices,
     vertices: &[VertexRecord],
-) -> (Vec<PrimitiveRecord>, Vec<RasterTriangle>) {
-    // (object, its first vertex-table row, the triangle) for every primitive, in order.
-    let mut jobs = Vec::with_capacity(scene.objects.iter().map(|o| o.mesh.indices.len()).sum());
-    let mut row_base = 0u32;
-    for (object_index, object) in scene.objects.iter().enumerate() {
-        jobs.extend(
-            object
-                .mesh
-                .indices
-                .iter()
-                .map(|t| (object_index as u32, t.map(|i| row_base + i))),
-        );
-        row_base += object.mesh.positions.len() as u32;
+    primitives: &mut Vec<PrimitiveRecord>,
+    triangles: &mut Vec<RasterTriangle>,
+) {
+    // Where each object's primitives and vertex-table rows begin.
+    let mut firsts = Vec::with_capacity(scene.objects.len());
+    let (mut first_primitive, mut first_row) = (0usize, 0u32);
+    for object in &scene.objects {
+        firsts.push((first_primitive, first_row));
+        first_primitive += object.mesh.indices.len();
+        first_row += object.mesh.positions.len() as u32;
     }
-    const CHUNK: usize = 4096;
-    let parts: Vec<(Vec<PrimitiveRecord>, Vec<RasterTriangle>)> = jobs
-        .par_chunks(CHUNK)
+    let total = first_primitive;
+    // Primitive `id`: its object and the vertex-table rows of its corners.
+    let primitive = |id: usize| {
+        let object = firsts.partition_point(|&(first, _)| first <= id) - 1;
+        let (first, row) = firsts[object];
+        let corners = scene.objects[object].mesh.indices[id - first];
+        (object as u32, corners.map(|i| row + i))
+    };
+    const CHUNK: usize = 2048;
+    // A primitive gives one raster triangle, or none (outside, culled, degenerate), or a fan of
+    // up to eight (clipped). Each chunk of primitives writes its records in place and its
+    // triangles into its own slice of `triangles` — as many places as it has primitives, the
+    // rare excess into a vector of its own — and the chunks' triangles are then moved
+    // together, in order. No memory is taken from the system for a frame of the same scene.
+    resize_over(primitives, total, unwritten);
+    resize_over(triangles, total, RasterTriangle::default);
+    let fans: Vec<(usize, Vec<RasterTriangle>)> = primitives
+        .par_chunks_mut(CHUNK)
+        .zip(triangles.par_chunks_mut(CHUNK))
         .enumerate()
-        .map(|(c, chunk)| {
-            let mut prims = Vec::with_capacity(chunk.len());
-            let mut tris = Vec::with_capacity(chunk.len());
-            for (k, &(object, rows)) in chunk.iter().enumerate() {
-                let id = (c * CHUNK + k) as u32;
-                prims.push(assemble_one(
-                    id, object, rows, settings, matrices, vertices, &mut tris,
-                ));
+        .map(|(c, (records, places))| {
+            let mut fan = Fan {
+                places,
+                count: 0,
+                excess: Vec::new(),
+            };
+            for (k, record) in records.iter_mut().enumerate() {
+                let id = c * CHUNK + k;
+                let (object, rows) = primitive(id);
+                *record = assemble_one(
+                    id as u32, object, rows, settings, matrices, vertices, &mut fan,
+                );
             }
-            (prims, tris)
+            (fan.count, fan.excess)
         })
         .collect();
-    let mut primitives = Vec::with_capacity(jobs.len());
-    let mut triangles = Vec::with_capacity(jobs.len());
-    for (prims, tris) in parts {
-        let offset = triangles.len() as u32;
-        primitives.extend(prims.into_iter().map(|mut p| {
-            p.triangles = p.triangles.map(|t| t + offset);
-            p
-        }));
-        triangles.extend(tris);
+    let starts = gather(triangles, &fans, CHUNK);
+    primitives
+        .par_chunks_mut(CHUNK)
+        .zip(starts)
+        .for_each(|(records, start)| {
+            for r in records {
+                r.triangles = r.triangles.map(|t| t + start);
+            }
+        });
+}
+
+/// Where one chunk of primitives puts its raster triangles: its places in the frame's list,
+/// then, when it has more triangles than primitives, `excess`.
+struct Fan<'a> {
+    places: &'a mut [RasterTriangle],
+    count: usize,
+    excess: Vec<RasterTriangle>,
+}
+
+impl Fan<'_> {
+    fn push(&mut self, t: RasterTriangle) {
+        match self.places.get_mut(self.count) {
+            Some(place) => *place = t,
+            None => self.excess.push(t),
+        }
+        self.count += 1;
     }
-    (primitives, triangles)
+}
+
+/// Moves each chunk's triangles together, in order — chunk `c` wrote `count` of them from
+/// place `c·chunk` on, its `excess` aside — and returns where each chunk's now begin. The moves
+/// go towards the front, in order, so each reads places not yet written; when an excess would
+/// overtake a later chunk's places the list is rebuilt instead.
+fn gather(
+    triangles: &mut Vec<RasterTriangle>,
+    fans: &[(usize, Vec<RasterTriangle>)],
+    chunk: usize,
+) -> Vec<u32> {
+    let mut starts = Vec::with_capacity(fans.len());
+    let mut next = 0;
+    for (count, _) in fans {
+        starts.push(next);
+        next += count;
+    }
+    let overtakes =
+        next > triangles.len() || starts.iter().enumerate().any(|(c, &s)| s > c * chunk);
+    if overtakes {
+        let mut all = Vec::with_capacity(next);
+        for (c, (count, excess)) in fans.iter().enumerate() {
+            let placed = count - excess.len();
+            all.extend_from_slice(&triangles[c * chunk..c * chunk + placed]);
+            all.extend_from_slice(excess);
+        }
+        *triangles = all;
+    } else {
+        for ((c, (count, excess)), &start) in fans.iter().enumerate().zip(&starts) {
+            let placed = count - excess.len();
+            if start != c * chunk {
+                triangles.copy_within(c * chunk..c * chunk + placed, start);
+            }
+            triangles[start + placed..start + count].copy_from_slice(excess);
+        }
+        triangles.truncate(next);
+    }
+    starts.into_iter().map(|s| s as u32).collect()
+}
+
+/// `v` made `len` long without writing what it will be overwritten with: shortened, or (the
+/// first frame, a bigger scene) grown with `fill`.
+fn resize_over<T>(v: &mut Vec<T>, len: usize, fill: impl FnMut() -> T) {
+    if v.len() >= len {
+        v.truncate(len);
+    } else {
+        v.resize_with(len, fill);
+    }
+}
+
+/// A record about to be overwritten.
+fn unwritten() -> PrimitiveRecord {
+    PrimitiveRecord {
+        id: 0,
+        object: 0,
+        vertices: [0; 3],
+        fate: Fate::Degenerate,
+        clipped_polygon: None,
+        triangles: [0; 2],
+        counts: RasterCounts::default(),
+    }
 }
 
 /// One primitive through clipping, division, viewport and setup: its raster triangles are
-/// pushed onto `triangles` (their range, relative to it, is in the record).
+/// pushed onto `triangles` (their range, relative to the chunk's, is in the record).
 fn assemble_one(
     id: u32,
     object: u32,
@@ -73,7 +168,7 @@ fn assemble_one(
     settings: &RenderSettings,
     matrices: &Matrices,
     vertices: &[VertexRecord],
-    triangles: &mut Vec<RasterTriangle>,
+    triangles: &mut Fan,
 ) -> PrimitiveRecord {
     let size = (settings.width, settings.height);
     let viewport = matrices.viewport.matrix;
@@ -82,7 +177,7 @@ fn assemble_one(
         clip: vertices[rows[k] as usize].clip,
         bary: corners[k],
     });
-    let start = triangles.len() as u32;
+    let start = triangles.count as u32;
     let outcome = clip::clip_triangle(input);
     let polygon: &[ClipVertex] = match &outcome {
         ClipOutcome::Inside => &input,
@@ -126,7 +221,7 @@ fn assemble_one(
             }
         }
     }
-    let end = triangles.len() as u32;
+    let end = triangles.count as u32;
     let clipped = matches!(outcome, ClipOutcome::Clipped(_));
     let fate = match (end > start, clipped, rejection) {
         (true, false, _) => Fate::Drawn,
@@ -152,41 +247,40 @@ fn assemble_one(
 /// Flat shading: each face lit once, with its own normal `(p1 − p0) × (p2 − p0)` (world
 /// coordinates), at its centroid, with the mean of its vertices' colours (white for a textured
 /// surface, whose texel then modulates the result per pixel). One entry per primitive; faces
-/// that are not drawn get zero terms.
+/// that are not drawn get zero terms. Written into `faces` (emptied first).
 pub(super) fn light_faces(
     scene: &Scene,
     settings: &RenderSettings,
     vertices: &[VertexRecord],
     primitives: &[PrimitiveRecord],
-) -> Vec<ShadeTerms> {
-    primitives
-        .iter()
-        .map(|prim| {
-            if prim.triangles[1] == prim.triangles[0] {
-                return ShadeTerms::default();
-            }
-            let v = prim.vertices.map(|r| &vertices[r as usize]);
-            let p = v.map(|v| v.world.truncate());
-            let normal = (p[1] - p[0]).cross(p[2] - p[0]);
-            let centroid = (p[0] + p[1] + p[2]) / 3.0;
-            let object = &scene.objects[prim.object as usize];
-            if !object.lit {
-                return ShadeTerms::default();
-            }
-            let color = if object.texture.is_some() && !object.mesh.uvs.is_empty() {
-                Vec3::ONE
-            } else {
-                (v[0].color + v[1].color + v[2].color) / 3.0
-            };
-            shade::shade(
-                centroid,
-                normal,
-                scene.camera.eye,
-                color,
-                &scene.lights,
-                &object.material,
-                settings.reflection,
-            )
-        })
-        .collect()
+    faces: &mut Vec<ShadeTerms>,
+) {
+    faces.clear();
+    faces.par_extend(primitives.par_iter().with_min_len(1024).map(|prim| {
+        if prim.triangles[1] == prim.triangles[0] {
+            return ShadeTerms::default();
+        }
+        let v = prim.vertices.map(|r| &vertices[r as usize]);
+        let p = v.map(|v| v.world.truncate());
+        let normal = (p[1] - p[0]).cross(p[2] - p[0]);
+        let centroid = (p[0] + p[1] + p[2]) / 3.0;
+        let object = &scene.objects[prim.object as usize];
+        if !object.lit {
+            return ShadeTerms::default();
+        }
+        let color = if object.texture.is_some() && !object.mesh.uvs.is_empty() {
+            Vec3::ONE
+        } else {
+            (v[0].color + v[1].color + v[2].color) / 3.0
+        };
+        shade::shade(
+            centroid,
+            normal,
+            scene.camera.eye,
+            color,
+            &scene.lights,
+            &object.material,
+            settings.reflection,
+        )
+    }));
 }

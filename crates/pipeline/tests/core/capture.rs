@@ -112,3 +112,111 @@ fn reusing_a_capture_s_storage_gives_the_same_frame() {
         .0;
     assert_eq!(reused, fresh);
 }
+
+/// A scene of `layout` runs of triangles, `(count, straddles)`: triangles behind the camera
+/// (dropped whole by clipping) or big ones across the near and side planes (each clipped into a
+/// fan of several raster triangles).
+fn runs_of_triangles(layout: &[(usize, bool)]) -> Scene {
+    let mut positions = Vec::new();
+    for &(count, straddles) in layout {
+        for i in 0..count {
+            let dy = i as f32 * 1e-4;
+            positions.extend(if straddles {
+                [
+                    Vec3::new(-30.0, -1.0 - dy, 10.0),
+                    Vec3::new(30.0, -1.0 - dy, 10.0),
+                    Vec3::new(0.0, -1.0 - dy, -60.0),
+                ]
+            } else {
+                [
+                    Vec3::new(-1.0, dy, 5.0),
+                    Vec3::new(1.0, dy, 5.0),
+                    Vec3::new(0.0, 1.0 + dy, 5.0),
+                ]
+            });
+        }
+    }
+    let n = positions.len() as u32;
+    let mesh = pipeline::mesh::Mesh {
+        name: "runs".into(),
+        normals: vec![Vec3::Y; n as usize],
+        positions,
+        uvs: Vec::new(),
+        colors: Vec::new(),
+        indices: (0..n / 3).map(|t| [3 * t, 3 * t + 1, 3 * t + 2]).collect(),
+        labels: Vec::new(),
+    };
+    Scene {
+        objects: vec![Object::new("runs", mesh)],
+        camera: Camera {
+            eye: Vec3::ZERO,
+            at: Vec3::NEG_Z,
+            up: Vec3::Y,
+        },
+        projection: Projection::default(),
+        figures: Vec::new(),
+        shadow: None,
+        lights: Vec::new(),
+    }
+}
+
+#[test]
+fn primitives_assembled_in_chunks_keep_their_raster_triangles_in_order() {
+    // The assembly works on chunks of primitives in parallel, each writing its raster triangles
+    // where its primitives' would go and setting aside what does not fit. Both ways of joining
+    // them are exercised: a chunk with more triangles than primitives after chunks with fewer
+    // (moved forward in place), and every chunk with more (the list rebuilt).
+    let settings = RenderSettings {
+        width: 64,
+        height: 48,
+        ..RenderSettings::default()
+    };
+    for layout in [
+        vec![(3000, false), (600, true), (6000, false)],
+        vec![(3000, true)],
+    ] {
+        let scene = runs_of_triangles(&layout);
+        let frame = render(&scene, &settings);
+        assert!(
+            frame.triangles.len() > 2048,
+            "clipping made fans: {} triangles",
+            frame.triangles.len()
+        );
+        let mut next = 0;
+        for (id, p) in frame.primitives.iter().enumerate() {
+            assert_eq!(p.id as usize, id);
+            assert_eq!(
+                p.triangles[0],
+                next,
+                "primitive {id} begins where {} ended",
+                id.max(1) - 1
+            );
+            next = p.triangles[1];
+            assert!(
+                frame.triangles[p.triangles[0] as usize..next as usize]
+                    .iter()
+                    .all(|t| t.primitive == p.id)
+            );
+        }
+        assert_eq!(next as usize, frame.triangles.len());
+        // Each primitive's triangles are those it has drawn alone.
+        for id in (0..frame.primitives.len()).step_by(97) {
+            let mut alone = scene.clone();
+            let mesh = std::sync::Arc::make_mut(&mut alone.objects[0].mesh);
+            mesh.indices = vec![mesh.indices[id]];
+            let single = render(&alone, &settings);
+            let p = &frame.primitives[id];
+            assert_eq!(single.primitives[0].fate, p.fate, "primitive {id}");
+            assert_eq!(single.primitives[0].clipped_polygon, p.clipped_polygon);
+            let own: Vec<_> = frame.triangles[p.triangles[0] as usize..p.triangles[1] as usize]
+                .iter()
+                .map(|t| {
+                    let mut t = *t;
+                    t.primitive = 0;
+                    t
+                })
+                .collect();
+            assert_eq!(single.triangles, own, "primitive {id}");
+        }
+    }
+}

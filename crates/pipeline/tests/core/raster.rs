@@ -260,6 +260,40 @@ fn snapping_rounds_ties_to_even() {
     assert_eq!(snap(10.0 + 0.6 / 256.0), 2561);
 }
 
+/// `snap` rounds with an added constant rather than `round_ties_even`; on every kind of value
+/// (ties, near-ties, negative, huge, infinite, NaN) the two agree.
+#[test]
+fn snapping_agrees_with_round_ties_even_everywhere() {
+    use pipeline::raster::snap;
+    let reference = |v: f32| (f64::from(v) * 256.0).round_ties_even() as i64;
+    let mut values = vec![
+        0.0,
+        -0.0,
+        f32::MAX,
+        f32::MIN,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        f32::NAN,
+        8.0e12,
+        -8.0e12,
+        9.0e12,
+        -9.0e12,
+    ];
+    let mut bits = 0x2545_f491_u32;
+    for k in 0..200_000 {
+        // xorshift: spread over all magnitudes, and ties k + ½ sub-pixel units.
+        bits ^= bits << 13;
+        bits ^= bits >> 17;
+        bits ^= bits << 5;
+        values.push(f32::from_bits(bits));
+        values.push((k as f32 - 100_000.0 + 0.5) / 256.0);
+        values.push(((bits % 4_000_000) as f32 - 2_000_000.0) / 512.0);
+    }
+    for v in values {
+        assert_eq!(snap(v), reference(v), "snap({v:e})");
+    }
+}
+
 /// Depth is the plane through the window positions as computed, not through the snapped ones:
 /// on a steep triangle whose corners lie off the 1/256 grid, the plane through the snapped
 /// corners is off by about 1e-4 at the pixel centre, the triangle's own plane (computed here
