@@ -82,9 +82,9 @@ pub struct Session {
     /// Counts the steps entered: a view that frames or opens something per step resets when it
     /// changes.
     pub step_entered: u64,
-    /// A parameter is being dragged: each render is a draft (one sample per pixel, the
-    /// observer at a quarter of its pixels) so that the picture keeps up with the hand; letting
-    /// go renders the full frame.
+    /// A parameter is being dragged: each render is a draft (one sample per pixel, shaded once
+    /// per 2×2 block when no pixel is inspected, the observer at a quarter of its pixels) so
+    /// that the picture keeps up with the hand; letting go renders the full frame.
     pub drafting: bool,
     /// Whether the capture on screen is a draft.
     pub shown_draft: bool,
@@ -291,6 +291,9 @@ impl Session {
         spec.settings.capture = self.capture_needed();
         if self.drafting {
             spec.settings.samples = pipeline::raster::Samples::X1;
+            // Shaded once per 2×2 block, unless a pixel is inspected: its explanation derives
+            // the colour from its own records and must agree with it.
+            spec.settings.coarse_shading = self.selection.pixel.is_none();
         }
         Job {
             draft: self.drafting,

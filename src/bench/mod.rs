@@ -222,9 +222,11 @@ fn slider_drag(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()
          (view + observer; medians of {frames}):",
         session.spec.settings.samples.count()
     )?;
+    // Drafts are what is on screen during a drag (target ≤ 16 ms), the full frame what follows
+    // the release (target ≤ 100 ms).
     for (label, pixel, drafting) in [
-        ("nothing inspected", None, false),
-        ("a pixel inspected", Some((480, 270)), false),
+        ("released: full frame", None, false),
+        ("released: full frame", Some((480, 270)), false),
         ("dragging: draft", None, true),
         ("dragging: draft", Some((480, 270)), true),
     ] {
@@ -245,8 +247,21 @@ fn slider_drag(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()
         times.sort();
         writeln!(
             out,
-            "  {:<20} stage {:<10} keeps {:<16} {:>8.2} ms",
+            "  {:<20} {:<18} {:<19} stage {:<10} keeps {:<16} {:>8.2} ms",
             label,
+            match (
+                job.spec.settings.samples.count(),
+                job.spec.settings.coarse_shading
+            ) {
+                (1, true) => "1 sample, 2×2 rate".to_string(),
+                (1, false) => "1 sample".to_string(),
+                (n, _) => format!("{n} samples"),
+            },
+            if pixel.is_some() {
+                "a pixel inspected"
+            } else {
+                "nothing inspected"
+            },
             session.selection.stage.name(crate::vocabulary::Lang::En),
             match job.spec.settings.capture {
                 Capture::FULL => "every buffer",

@@ -34,6 +34,14 @@ pub struct RenderSettings {
     /// Shade every sample at its own position (supersampling) instead of once per pixel and
     /// triangle at the pixel centre (multisampling).
     pub per_sample_shading: bool,
+    /// Coarse shading, for drafts (what a GPU's variable-rate shading does at a 2×2 rate): in
+    /// each 2×2 block of pixels (image rows 2k, 2k + 1, columns 2j, 2j + 1, resolved top row
+    /// first, left to right) the first pixel wholly inside one triangle is shaded, and the
+    /// block's other pixels wholly inside that triangle take its colour, lighting terms and
+    /// texture lookup; every other pixel is shaded as usual. Coverage, depth and owners are
+    /// unchanged. About a quarter of the shading; the app's drafts use it while a slider is
+    /// dragged.
+    pub coarse_shading: bool,
     /// The clear colour, linear RGB in `[0, 1]`.
     pub background: Vec3,
     /// Which per-pixel buffers to keep ([`Capture::FULL`]: all of them).
@@ -53,6 +61,7 @@ impl Default for RenderSettings {
             reflection: Reflection::BlinnPhong,
             sampler: Sampler::default(),
             per_sample_shading: false,
+            coarse_shading: false,
             background: Vec3::new(0.08, 0.09, 0.11),
             capture: Capture::FULL,
         }

@@ -40,14 +40,26 @@ struct RowOut<'a> {
 }
 
 /// A resolve task's reused storage: a row's lighting terms and lookups as 32-bit floats, before
-/// they are converted to half floats.
+/// they are converted to half floats; with coarse shading, the shading of each 2×2 block of the
+/// row pair being resolved.
 #[derive(Default)]
 struct RowScratch {
     lighting: Vec<f32>,
     uvs: Vec<[f32; 2]>,
     texturing: Vec<f32>,
     halves: Vec<f16>,
+    blocks: Vec<Option<BlockShade>>,
 }
+
+/// What coarse shading reuses across a 2×2 block: the raster triangle shaded and the result.
+#[derive(Clone, Copy)]
+struct BlockShade {
+    triangle: u32,
+    shaded: Shaded,
+}
+
+/// The result of shading a point: colour, lighting terms, texture lookup.
+type Shaded = (Vec3, Option<ShadeTerms>, Option<(Vec2, Lookup)>);
 
 impl RowOut<'_> {
     /// Resolves image row `row` (window `y`) into every kept buffer, so that reused storage
@@ -57,8 +69,14 @@ impl RowOut<'_> {
         s.lighting.clear();
         s.uvs.clear();
         s.texturing.clear();
+        let coarse = ctx.settings.coarse_shading;
         for x in 0..w {
-            let r = ctx.pixel(x as u32, y, row * w + x);
+            let block = if coarse {
+                s.blocks.get_mut(x / 2)
+            } else {
+                None
+            };
+            let r = ctx.pixel(x as u32, y, row * w + x, block);
             self.coverage[x] = r.coverage;
             self.depth[x] = r.depth;
             self.primitive[x] = r.primitive;
@@ -152,11 +170,18 @@ pub(super) fn resolve(ctx: &ResolveContext<'_>, spare: PixelBuffers) -> PixelBuf
             .iter()
             .any(|o| o.texture.is_some() && !o.mesh.uvs.is_empty());
     let mut px = pixel_storage(spare, w * h, lit, textured);
-    let rows = split_rows(&mut px, w, h);
-    rows.into_par_iter().enumerate().for_each_init(
+    let mut rows = split_rows(&mut px, w, h);
+    // Coarse shading shares a 2×2 block's shading between two rows: they are resolved in pairs.
+    let pair = if settings.coarse_shading { 2 } else { 1 };
+    rows.par_chunks_mut(pair).enumerate().for_each_init(
         RowScratch::default,
-        |scratch, (row, mut out)| {
-            out.resolve(ctx, row, (h - 1 - row) as u32, scratch);
+        |scratch, (k, outs)| {
+            scratch.blocks.clear();
+            scratch.blocks.resize(w.div_ceil(2), None);
+            for (j, out) in outs.iter_mut().enumerate() {
+                let row = k * pair + j;
+                out.resolve(ctx, row, (h - 1 - row) as u32, scratch);
+            }
         },
     );
     px
@@ -286,11 +311,7 @@ impl ResolveContext<'_> {
     /// The colour of triangle `t` at the fixed-point position `at`, with its lighting terms and
     /// texture lookup: the surface colour is the texel (textured) or the interpolated vertex
     /// colour, then lit by the shading frequency.
-    fn shade_at(
-        &self,
-        t: &RasterTriangle,
-        at: I64Vec2,
-    ) -> (Vec3, Option<ShadeTerms>, Option<(Vec2, Lookup)>) {
+    fn shade_at(&self, t: &RasterTriangle, at: I64Vec2) -> Shaded {
         let b = t.original_bary(t.lambda(at), self.settings.perspective_correct);
         let texel = self.texture_lookup(t, at);
         let surface = texel.map_or_else(|| self.color_of(t, b), |(_, l)| l.color);
@@ -298,8 +319,15 @@ impl ResolveContext<'_> {
         (terms.map_or(surface, |t| t.color()), terms, texel)
     }
 
-    /// Resolves window pixel `(x, y)`, whose image index is `i`.
-    fn pixel(&self, x: u32, y: u32, i: usize) -> ResolvedPixel {
+    /// Resolves window pixel `(x, y)`, whose image index is `i`; with coarse shading, `block`
+    /// is the shading its 2×2 block has so far.
+    fn pixel(
+        &self,
+        x: u32,
+        y: u32,
+        i: usize,
+        block: Option<&mut Option<BlockShade>>,
+    ) -> ResolvedPixel {
         let s = self.settings.samples.count();
         let tris = &self.samples.triangle[i * s..(i + 1) * s];
         let depths = &self.samples.depth[i * s..(i + 1) * s];
@@ -324,7 +352,18 @@ impl ResolveContext<'_> {
             // general path below gives the same, (0·background + c·s)/s = c exactly, s being a
             // power of two.
             let owner = &self.triangles[tris[0] as usize];
-            let (color, terms, texel) = self.shade_at(owner, centre);
+            let (color, terms, texel) = match block {
+                Some(Some(b)) if b.triangle == tris[0] => b.shaded,
+                Some(b) => {
+                    let shaded = self.shade_at(owner, centre);
+                    b.get_or_insert(BlockShade {
+                        triangle: tris[0],
+                        shaded,
+                    });
+                    shaded
+                }
+                None => self.shade_at(owner, centre),
+            };
             return ResolvedPixel {
                 terms,
                 texture: texel,

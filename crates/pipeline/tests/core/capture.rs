@@ -220,3 +220,46 @@ fn primitives_assembled_in_chunks_keep_their_raster_triangles_in_order() {
         }
     }
 }
+
+#[test]
+fn coarse_shading_shades_a_2x2_block_once_per_triangle_and_edges_as_usual() {
+    use pipeline::raster::NONE;
+    let (scene, settings) = lit_textured_quad(48, Samples::X1);
+    let full = render(&scene, &settings);
+    let coarse = render(
+        &scene,
+        &RenderSettings {
+            coarse_shading: true,
+            ..settings
+        },
+    );
+    let px = (&full.pixels, &coarse.pixels);
+    assert_eq!(px.0.coverage, px.1.coverage);
+    assert_eq!(px.0.depth, px.1.depth);
+    assert_eq!(px.0.owner, px.1.owner);
+    let w = settings.width as usize;
+    let interior = |i: usize| px.0.coverage[i] == 1 && px.0.owner[i] != NONE;
+    let mut reused = 0;
+    for i in 0..px.0.color.len() {
+        let (row, col) = (i / w, i % w);
+        // The block's first pixel inside one triangle (top row first) is shaded; the block's
+        // other pixels inside that triangle take its shading.
+        let first = [(0, 0), (0, 1), (1, 0), (1, 1)]
+            .into_iter()
+            .map(|(r, c)| ((row & !1) + r, (col & !1) + c))
+            .filter(|&(r, c)| c < w && r * w < px.0.color.len())
+            .map(|(r, c)| r * w + c)
+            .find(|&j| interior(j));
+        let expected = match first {
+            Some(j) if interior(i) && px.0.owner[j] == px.0.owner[i] => j,
+            _ => i,
+        };
+        reused += usize::from(expected != i);
+        assert_eq!(px.1.color[i], px.0.color[expected], "pixel {col}, {row}");
+    }
+    // The quad fills most of the image: most pixels take another's shading.
+    assert!(
+        reused > px.0.color.len() / 3,
+        "{reused} pixels reused a shading"
+    );
+}
