@@ -83,7 +83,7 @@ pub struct Session {
     /// changes.
     pub step_entered: u64,
     /// A parameter is being dragged: each render is a draft (one sample per pixel, shaded once
-    /// per 2×2 block when no pixel is inspected, the observer at a quarter of its pixels) so
+    /// per 2×2 block but the inspected pixel, the observer at a quarter of its pixels) so
     /// that the picture keeps up with the hand; letting go renders the full frame.
     pub drafting: bool,
     /// Whether the capture on screen is a draft.
@@ -291,9 +291,10 @@ impl Session {
         spec.settings.capture = self.capture_needed();
         if self.drafting {
             spec.settings.samples = pipeline::raster::Samples::X1;
-            // Shaded once per 2×2 block, unless a pixel is inspected: its explanation derives
-            // the colour from its own records and must agree with it.
-            spec.settings.coarse_shading = self.selection.pixel.is_none();
+            // Shaded once per 2×2 block, but the inspected pixel by itself: its explanation
+            // derives its colour from its own records and must agree with it.
+            spec.settings.coarse_shading = true;
+            spec.settings.coarse_exact = self.selection.pixel;
         }
         Job {
             draft: self.drafting,

@@ -42,6 +42,10 @@ pub struct RenderSettings {
     /// unchanged. About a quarter of the shading; the app's drafts use it while a slider is
     /// dragged.
     pub coarse_shading: bool,
+    /// With coarse shading, a window pixel `(x, y)` (y up) shaded by itself all the same, and
+    /// whose shading no other pixel takes: the inspected pixel of a draft, whose explanation
+    /// derives its colour from its own records.
+    pub coarse_exact: Option<(u32, u32)>,
     /// The clear colour, linear RGB in `[0, 1]`.
     pub background: Vec3,
     /// Which per-pixel buffers to keep ([`Capture::FULL`]: all of them).
@@ -62,6 +66,7 @@ impl Default for RenderSettings {
             sampler: Sampler::default(),
             per_sample_shading: false,
             coarse_shading: false,
+            coarse_exact: None,
             background: Vec3::new(0.08, 0.09, 0.11),
             capture: Capture::FULL,
         }

@@ -111,7 +111,7 @@ fn the_inspector_shows_an_axis_rotation_by_rodrigues_by_quaternion_and_a_slerp()
 }
 
 /// While a parameter is dragged the picture is a draft (one sample per pixel, shaded once per
-/// 2×2 block unless a pixel is inspected, the observer at a quarter of its pixels), so that it
+/// 2×2 block but the inspected pixel, the observer at a quarter of its pixels), so that it
 /// keeps up with the hand; letting go renders the full frame.
 /// Through the app: the Parameters panel's fovy slider dragged, then let go.
 #[test]
@@ -123,6 +123,10 @@ fn a_dragged_parameter_renders_drafts_then_the_full_frame_on_release() {
         let s = &h.state().session;
         let c = s.capture.as_ref().expect("a capture");
         (s.shown_draft, c.settings.samples, c.settings.coarse_shading)
+    };
+    let exact = |h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>| {
+        let s = &h.state().session;
+        s.capture.as_ref().and_then(|c| c.settings.coarse_exact)
     };
     assert_eq!(full(&h), (false, Samples::X4, false));
     let observer_pixels = |h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>| {
@@ -162,13 +166,15 @@ fn a_dragged_parameter_renders_drafts_then_the_full_frame_on_release() {
         fovy(&h)
     );
     // The tour's first step inspects a pixel: its explanation must agree with its colour, so
-    // the draft shades every pixel.
-    assert!(h.state().session.selection.pixel.is_some());
+    // the draft shades it by itself.
+    let inspected = h.state().session.selection.pixel;
+    assert!(inspected.is_some());
     assert_eq!(
         full(&h),
-        (true, Samples::X1, false),
+        (true, Samples::X1, true),
         "a draft while dragging"
     );
+    assert_eq!(exact(&h), inspected);
     let draft = observer_pixels(&h).expect("the observer is drawn while dragging");
     assert!(draft * 3 < before, "{draft} of {before} pixels");
     h.drop_at(slider.center() + egui::vec2(60.0, 0.0));
@@ -179,7 +185,7 @@ fn a_dragged_parameter_renders_drafts_then_the_full_frame_on_release() {
         "the full frame once let go"
     );
     assert_eq!(observer_pixels(&h), Some(before));
-    // Nothing inspected: the draft is also shaded once per 2×2 block.
+    // Nothing inspected: no pixel shaded by itself.
     h.state_mut().session.selection.pixel = None;
     h.drag_at(slider.center() + egui::vec2(60.0, 0.0));
     h.run();
@@ -190,6 +196,7 @@ fn a_dragged_parameter_renders_drafts_then_the_full_frame_on_release() {
         (true, Samples::X1, true),
         "a coarse draft while dragging"
     );
+    assert_eq!(exact(&h), None);
     h.drop_at(slider.center() + egui::vec2(20.0, 0.0));
     h.run_steps(3);
     assert_eq!(

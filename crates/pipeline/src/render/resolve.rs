@@ -71,7 +71,8 @@ impl RowOut<'_> {
         s.texturing.clear();
         let coarse = ctx.settings.coarse_shading;
         for x in 0..w {
-            let block = if coarse {
+            let exact = ctx.settings.coarse_exact == Some((x as u32, y));
+            let block = if coarse && !exact {
                 s.blocks.get_mut(x / 2)
             } else {
                 None

@@ -226,40 +226,62 @@ fn coarse_shading_shades_a_2x2_block_once_per_triangle_and_edges_as_usual() {
     use pipeline::raster::NONE;
     let (scene, settings) = lit_textured_quad(48, Samples::X1);
     let full = render(&scene, &settings);
-    let coarse = render(
-        &scene,
-        &RenderSettings {
-            coarse_shading: true,
-            ..settings
-        },
-    );
-    let px = (&full.pixels, &coarse.pixels);
-    assert_eq!(px.0.coverage, px.1.coverage);
-    assert_eq!(px.0.depth, px.1.depth);
-    assert_eq!(px.0.owner, px.1.owner);
-    let w = settings.width as usize;
-    let interior = |i: usize| px.0.coverage[i] == 1 && px.0.owner[i] != NONE;
-    let mut reused = 0;
-    for i in 0..px.0.color.len() {
-        let (row, col) = (i / w, i % w);
-        // The block's first pixel inside one triangle (top row first) is shaded; the block's
-        // other pixels inside that triangle take its shading.
-        let first = [(0, 0), (0, 1), (1, 0), (1, 1)]
-            .into_iter()
-            .map(|(r, c)| ((row & !1) + r, (col & !1) + c))
-            .filter(|&(r, c)| c < w && r * w < px.0.color.len())
-            .map(|(r, c)| r * w + c)
-            .find(|&j| interior(j));
-        let expected = match first {
-            Some(j) if interior(i) && px.0.owner[j] == px.0.owner[i] => j,
-            _ => i,
-        };
-        reused += usize::from(expected != i);
-        assert_eq!(px.1.color[i], px.0.color[expected], "pixel {col}, {row}");
+    let (w, h) = (settings.width as usize, settings.height as usize);
+    // Also with an exact pixel (an inspected one, window coordinates): the second of its block,
+    // which would otherwise take the first's shading.
+    for exact in [None, Some((25, 29))] {
+        let coarse = render(
+            &scene,
+            &RenderSettings {
+                coarse_shading: true,
+                coarse_exact: exact,
+                ..settings
+            },
+        );
+        let px = (&full.pixels, &coarse.pixels);
+        assert_eq!(px.0.coverage, px.1.coverage);
+        assert_eq!(px.0.depth, px.1.depth);
+        assert_eq!(px.0.owner, px.1.owner);
+        let exact_index = exact.map(|(x, y)| (h - 1 - y as usize) * w + x as usize);
+        let interior = |i: usize| px.0.coverage[i] == 1 && px.0.owner[i] != NONE;
+        let mut reused = 0;
+        for i in 0..px.0.color.len() {
+            let (row, col) = (i / w, i % w);
+            // The block's first pixel inside one triangle (top row first; the exact pixel
+            // aside) is shaded; the block's other pixels inside that triangle take its shading.
+            let first = [(0, 0), (0, 1), (1, 0), (1, 1)]
+                .into_iter()
+                .map(|(r, c)| ((row & !1) + r, (col & !1) + c))
+                .filter(|&(r, c)| c < w && r < h)
+                .map(|(r, c)| r * w + c)
+                .find(|&j| interior(j) && Some(j) != exact_index);
+            let expected = match first {
+                Some(j) if interior(i) && px.0.owner[j] == px.0.owner[i] => j,
+                _ => i,
+            };
+            let expected = if Some(i) == exact_index { i } else { expected };
+            reused += usize::from(expected != i);
+            assert_eq!(px.1.color[i], px.0.color[expected], "pixel {col}, {row}");
+        }
+        // The quad fills most of the image: most pixels take another's shading.
+        assert!(
+            reused > px.0.color.len() / 3,
+            "{reused} pixels reused a shading"
+        );
+        if let (Some(i), Some((x, y))) = (exact_index, exact) {
+            assert!(
+                interior(i) && interior(i - 1),
+                "the exact pixel is inside the quad"
+            );
+            assert_ne!(
+                px.0.color[i],
+                px.0.color[i - 1],
+                "and differs from its neighbour"
+            );
+            assert_eq!(px.1.color[i], px.0.color[i]);
+            // Its explanation, derived from its own records, lands on its colour.
+            let e = coarse.explain(x, y).expect("explained");
+            assert!((e.shaded - e.color).abs().max_element() < 1e-4);
+        }
     }
-    // The quad fills most of the image: most pixels take another's shading.
-    assert!(
-        reused > px.0.color.len() / 3,
-        "{reused} pixels reused a shading"
-    );
 }
