@@ -177,8 +177,10 @@ pub(super) fn resolve(ctx: &ResolveContext<'_>, spare: PixelBuffers) -> PixelBuf
     rows.par_chunks_mut(pair).enumerate().for_each_init(
         RowScratch::default,
         |scratch, (k, outs)| {
-            scratch.blocks.clear();
-            scratch.blocks.resize(w.div_ceil(2), None);
+            if settings.coarse_shading {
+                scratch.blocks.clear();
+                scratch.blocks.resize(w.div_ceil(2), None);
+            }
             for (j, out) in outs.iter_mut().enumerate() {
                 let row = k * pair + j;
                 out.resolve(ctx, row, (h - 1 - row) as u32, scratch);
