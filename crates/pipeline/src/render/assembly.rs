@@ -247,7 +247,7 @@ fn assemble_one(
 /// Flat shading: each face lit once, with its own normal `(p1 − p0) × (p2 − p0)` (world
 /// coordinates), at its centroid, with the mean of its vertices' colours (white for a textured
 /// surface, whose texel then modulates the result per pixel). One entry per primitive; faces
-/// that are not drawn get zero terms. Written into `faces` (emptied first).
+/// that are not drawn get zero terms. Appended to `faces` (the frame's storage, empty).
 pub(super) fn light_faces(
     scene: &Scene,
     settings: &RenderSettings,
@@ -255,7 +255,6 @@ pub(super) fn light_faces(
     primitives: &[PrimitiveRecord],
     faces: &mut Vec<ShadeTerms>,
 ) {
-    faces.clear();
     faces.par_extend(primitives.par_iter().with_min_len(1024).map(|prim| {
         if prim.triangles[1] == prim.triangles[0] {
             return ShadeTerms::default();

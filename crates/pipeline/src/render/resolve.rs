@@ -71,8 +71,7 @@ impl RowOut<'_> {
         s.texturing.clear();
         let coarse = ctx.settings.coarse_shading;
         for x in 0..w {
-            let exact = ctx.settings.coarse_exact == Some((x as u32, y));
-            let block = if coarse && !exact {
+            let block = if coarse && ctx.settings.coarse_exact != Some((x as u32, y)) {
                 s.blocks.get_mut(x / 2)
             } else {
                 None
