@@ -252,13 +252,15 @@ impl Session {
 
     /// What the current view needs a capture to keep: the buffer a pixel stage shows, and every
     /// term while a pixel is inspected (the inspector lists them all and draws the lighting
-    /// vectors).
+    /// vectors, and another pixel clicked is explained at once). A draft keeps the inspected
+    /// pixel's terms only: writing every buffer would cost it a quarter of its time.
     #[must_use]
     pub fn capture_needed(&self) -> Capture {
-        if self.selection.pixel.is_some() {
-            Capture::FULL
-        } else {
-            Capture::showing([self.selection.buffer])
+        let shown = Capture::showing([self.selection.buffer]);
+        match self.selection.pixel {
+            Some(_) if self.drafting => shown.with_pixel(self.selection.pixel),
+            Some(_) => Capture::FULL,
+            None => shown,
         }
     }
 
@@ -292,9 +294,9 @@ impl Session {
         if self.drafting {
             spec.settings.samples = pipeline::raster::Samples::X1;
             // Shaded once per 2×2 block, but the inspected pixel by itself: its explanation
-            // derives its colour from its own records and must agree with it.
+            // derives its colour from its own records and must agree with it (the capture
+            // keeps that pixel, see `capture_needed`).
             spec.settings.coarse_shading = true;
-            spec.settings.coarse_exact = self.selection.pixel;
         }
         Job {
             draft: self.drafting,

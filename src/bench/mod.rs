@@ -208,7 +208,8 @@ fn memory(out: &mut dyn std::io::Write) -> anyhow::Result<()> {
 
 /// What a slider drag waits for in the app: the built-in lesson's first step at 960×540, the
 /// render the app's worker does for it (the view's capture keeping what it shows, and the
-/// observer), and what inspecting a pixel adds (every buffer kept).
+/// observer), and what inspecting a pixel adds (every buffer kept by a full frame, its own
+/// terms by a draft).
 fn slider_drag(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
     use crate::app::session::Session;
     let tour = crate::lesson::default_lesson().map_err(|d| anyhow::anyhow!("{d}"))?;
@@ -247,7 +248,7 @@ fn slider_drag(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()
         times.sort();
         writeln!(
             out,
-            "  {:<20} {:<18} {:<19} stage {:<10} keeps {:<16} {:>8.2} ms",
+            "  {:<20} {:<18} {:<19} stage {:<10} keeps {:<28} {:>8.2} ms",
             label,
             match (
                 job.spec.settings.samples.count(),
@@ -266,6 +267,7 @@ fn slider_drag(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()
             match job.spec.settings.capture {
                 Capture::FULL => "every buffer",
                 Capture::COLOR => "the colour only",
+                c if c.with_pixel(None) == Capture::COLOR => "the colour + 1 pixel's terms",
                 _ => "some buffers",
             },
             times[times.len() / 2].as_secs_f64() * 1e3

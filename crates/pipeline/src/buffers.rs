@@ -171,7 +171,8 @@ impl BufferKind {
 /// (and from the owner its barycentrics) are always kept; the lighting terms and the texture
 /// lookups are computed for the colour in any case but stored only when asked for, so a view
 /// that shows only the final image does not pay for writing them (about 60 of a full capture's
-/// 85 bytes a pixel).
+/// 85 bytes a pixel). One pixel's terms and lookup can be kept without their buffers: the
+/// inspected pixel of a draft.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct Capture {
     /// Keep the lighting terms (ambient, diffuse, specular, normal, n·l, n·h, reflected), when
@@ -179,6 +180,11 @@ pub struct Capture {
     pub lighting: bool,
     /// Keep the texture lookups (uv, λ, level, texel, footprint), when an object is textured.
     pub texturing: bool,
+    /// A window pixel `(x, y)` (y up) whose lighting terms and texture lookup are kept even
+    /// where their buffers are not, and which coarse shading shades by itself (its shading no
+    /// other pixel takes): the inspected pixel, whose explanation derives its colour from its
+    /// own records and must land on it.
+    pub pixel: Option<(u32, u32)>,
 }
 
 impl Capture {
@@ -186,11 +192,13 @@ impl Capture {
     pub const FULL: Self = Self {
         lighting: true,
         texturing: true,
+        pixel: None,
     };
     /// The colour, coverage, depth and owner only.
     pub const COLOR: Self = Self {
         lighting: false,
         texturing: false,
+        pixel: None,
     };
 
     /// What showing `kinds` needs.
@@ -199,13 +207,23 @@ impl Capture {
         kinds.into_iter().fold(Self::COLOR, |c, k| Self {
             lighting: c.lighting || k.is_lighting(),
             texturing: c.texturing || k.is_texturing(),
+            ..c
         })
     }
 
-    /// Whether this selection keeps everything `other` keeps.
+    /// This selection, keeping pixel `at`'s terms and lookup too.
+    #[must_use]
+    pub fn with_pixel(self, at: Option<(u32, u32)>) -> Self {
+        Self { pixel: at, ..self }
+    }
+
+    /// Whether this selection keeps everything `other` keeps: its buffers, and its pixel's
+    /// terms (kept by every buffer or by the same pixel).
     #[must_use]
     pub fn covers(self, other: Self) -> bool {
-        (self.lighting || !other.lighting) && (self.texturing || !other.texturing)
+        let pixel =
+            other.pixel.is_none() || self.pixel == other.pixel || (self.lighting && self.texturing);
+        (self.lighting || !other.lighting) && (self.texturing || !other.texturing) && pixel
     }
 
     /// Whether `kind` is kept.

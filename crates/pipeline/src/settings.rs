@@ -38,14 +38,10 @@ pub struct RenderSettings {
     /// each 2×2 block of pixels (image rows 2k, 2k + 1, columns 2j, 2j + 1, resolved top row
     /// first, left to right) the first pixel wholly inside one triangle is shaded, and the
     /// block's other pixels wholly inside that triangle take its colour, lighting terms and
-    /// texture lookup; every other pixel is shaded as usual. Coverage, depth and owners are
-    /// unchanged. About a quarter of the shading; the app's drafts use it while a slider is
-    /// dragged.
+    /// texture lookup; every other pixel is shaded as usual, and the capture's pixel
+    /// ([`Capture::pixel`]) by itself. Coverage, depth and owners are unchanged. About a
+    /// quarter of the shading; the app's drafts use it while a slider is dragged.
     pub coarse_shading: bool,
-    /// With coarse shading, a window pixel `(x, y)` (y up) shaded by itself all the same, and
-    /// whose shading no other pixel takes: the inspected pixel of a draft, whose explanation
-    /// derives its colour from its own records.
-    pub coarse_exact: Option<(u32, u32)>,
     /// The clear colour, linear RGB in `[0, 1]`.
     pub background: Vec3,
     /// Which per-pixel buffers to keep ([`Capture::FULL`]: all of them).
@@ -66,7 +62,6 @@ impl Default for RenderSettings {
             sampler: Sampler::default(),
             per_sample_shading: false,
             coarse_shading: false,
-            coarse_exact: None,
             background: Vec3::new(0.08, 0.09, 0.11),
             capture: Capture::FULL,
         }

@@ -126,7 +126,7 @@ fn a_dragged_parameter_renders_drafts_then_the_full_frame_on_release() {
     };
     let exact = |h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>| {
         let s = &h.state().session;
-        s.capture.as_ref().and_then(|c| c.settings.coarse_exact)
+        s.capture.as_ref().and_then(|c| c.settings.capture.pixel)
     };
     assert_eq!(full(&h), (false, Samples::X4, false));
     let observer_pixels = |h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>| {
@@ -175,6 +175,16 @@ fn a_dragged_parameter_renders_drafts_then_the_full_frame_on_release() {
         "a draft while dragging"
     );
     assert_eq!(exact(&h), inspected);
+    // The draft keeps the shown buffer and the inspected pixel's terms, not every buffer.
+    {
+        let c = h.state().session.capture.clone().expect("a draft");
+        let (x, y) = inspected.expect("inspected");
+        let lit = c.settings.shading != pipeline::shade::Frequency::Unlit;
+        assert!(!c.settings.capture.covers(pipeline::buffers::Capture::FULL));
+        assert!(c.pixels.shading.is_none() || c.settings.capture.lighting);
+        let record = c.pixel_record(x, y).expect("a record");
+        assert_eq!(record.lighting.is_some(), lit && record.primitive.is_some());
+    }
     let draft = observer_pixels(&h).expect("the observer is drawn while dragging");
     assert!(draft * 3 < before, "{draft} of {before} pixels");
     h.drop_at(slider.center() + egui::vec2(60.0, 0.0));

@@ -228,7 +228,7 @@ impl FrameCapture {
         }
         let i = ((self.height() - 1 - y) * self.width() + x) as usize;
         let prim = self.primitives.get(self.pixels.primitive[i] as usize)?;
-        let normal = Vec3::from(self.pixels.shading.as_ref()?.at(i).normal);
+        let normal = Vec3::from(self.pixels.lighting_at(i)?.normal);
         let b = self.barycentrics(i)?.perspective;
         let position = prim
             .vertices
@@ -269,12 +269,8 @@ impl FrameCapture {
             depth: px.depth[i],
             color: px.color[i],
             primitive: owned.then_some(px.primitive[i]),
-            lighting: px.shading.as_ref().filter(|_| owned).map(|s| s.at(i)),
-            texture: px
-                .texturing
-                .as_ref()
-                .filter(|t| owned && t.level[i].to_f32() >= 0.0)
-                .map(|t| t.at(i)),
+            lighting: px.lighting_at(i).filter(|_| owned),
+            texture: px.texture_at(i).filter(|_| owned),
             vectors: self.pixel_vectors(x, y),
             fragments: self.fragments_at(x, y),
             explanation: self.explain(x, y),

@@ -28,6 +28,76 @@ pub struct PixelBuffers {
     pub shading: Option<ShadingBuffers>,
     /// The texture lookup of the owning fragment, when an object is textured.
     pub texturing: Option<TextureBuffers>,
+    /// The terms and lookup of the capture's pixel ([`crate::buffers::Capture::pixel`]) when
+    /// their buffers are not kept.
+    pub inspected: Option<InspectedPixel>,
+}
+
+/// One pixel's lighting terms and texture lookup, kept without their buffers, at the precision
+/// the buffers would have (half floats).
+#[derive(Clone, Debug, PartialEq)]
+pub struct InspectedPixel {
+    /// The pixel's index, `row·width + column`.
+    pub index: usize,
+    /// Its lighting terms, when lighting is on (zeros where unlit, as in the buffers).
+    pub lighting: Option<PixelLighting>,
+    /// Its texture lookup, when a texture was read there.
+    pub texture: Option<PixelTexture>,
+}
+
+impl InspectedPixel {
+    /// The record of pixel `index` with terms `terms` (`lit`: lighting is on) and lookup
+    /// `texture`, stored and read back through one-pixel buffers so that it holds what the
+    /// full buffers would.
+    #[must_use]
+    pub fn new(
+        index: usize,
+        lit: bool,
+        terms: Option<&crate::shade::ShadeTerms>,
+        texture: Option<&PixelTexture>,
+    ) -> Self {
+        let mut halves = Vec::new();
+        let lighting = lit.then(|| {
+            let mut b = ShadingBuffers::default().resized(1);
+            b.rows(1)[0].store(&ShadingRow::flatten(terms), &mut halves);
+            b.at(0)
+        });
+        let texture = texture.map(|t| {
+            let mut b = TextureBuffers::default().resized(1);
+            let (uv, floats) = TextureRow::flatten(Some(t));
+            b.rows(1)[0].store(&[uv], &floats, &mut halves);
+            b.at(0)
+        });
+        Self {
+            index,
+            lighting,
+            texture,
+        }
+    }
+}
+
+impl PixelBuffers {
+    /// The lighting terms of the owning fragment at pixel `i`: from the lighting buffers, or
+    /// from the inspected pixel's record; `None` when neither is kept or lighting is off.
+    #[must_use]
+    pub fn lighting_at(&self, i: usize) -> Option<PixelLighting> {
+        match (&self.shading, &self.inspected) {
+            (Some(s), _) => Some(s.at(i)),
+            (None, Some(p)) if p.index == i => p.lighting.clone(),
+            _ => None,
+        }
+    }
+
+    /// The texture lookup of the owning fragment at pixel `i`: from the texturing buffers, or
+    /// from the inspected pixel's record; `None` when neither is kept or no texture was read.
+    #[must_use]
+    pub fn texture_at(&self, i: usize) -> Option<PixelTexture> {
+        match (&self.texturing, &self.inspected) {
+            (Some(t), _) => Some(t.at(i)).filter(|t| t.level >= 0.0),
+            (None, Some(p)) if p.index == i => p.texture.clone(),
+            _ => None,
+        }
+    }
 }
 
 /// The barycentric weights of a pixel's owning fragment at the pixel centre.

@@ -8,7 +8,8 @@ use half::f16;
 use rayon::prelude::*;
 
 use crate::capture::{
-    FrameCapture, PixelBuffers, PixelTexture, PrimitiveRecord, ShadingRow, TextureRow,
+    FrameCapture, InspectedPixel, PixelBuffers, PixelTexture, PrimitiveRecord, ShadingRow,
+    TextureRow,
 };
 use crate::raster::{NONE, ONE, RasterTriangle, SampleBuffers};
 use crate::scene::Scene;
@@ -71,7 +72,7 @@ impl RowOut<'_> {
         s.texturing.clear();
         let coarse = ctx.settings.coarse_shading;
         for x in 0..w {
-            let block = if coarse && ctx.settings.coarse_exact != Some((x as u32, y)) {
+            let block = if coarse && ctx.settings.capture.pixel != Some((x as u32, y)) {
                 s.blocks.get_mut(x / 2)
             } else {
                 None
@@ -152,6 +153,7 @@ fn pixel_storage(spare: PixelBuffers, n: usize, lighting: bool, texturing: bool)
         color: sized(spare.color, n, [0.0; 3]),
         shading: lighting.then(|| spare.shading.unwrap_or_default().resized(n)),
         texturing: texturing.then(|| spare.texturing.unwrap_or_default().resized(n)),
+        inspected: None,
     }
 }
 
@@ -186,6 +188,9 @@ pub(super) fn resolve(ctx: &ResolveContext<'_>, spare: PixelBuffers) -> PixelBuf
             }
         },
     );
+    if px.shading.is_none() || px.texturing.is_none() {
+        px.inspected = settings.capture.pixel.and_then(|at| ctx.inspected(at));
+    }
     px
 }
 
@@ -205,6 +210,30 @@ pub(super) struct ResolveContext<'a> {
 }
 
 impl ResolveContext<'_> {
+    /// The terms and lookup of window pixel `(x, y)`, resolved again by itself as the resolve
+    /// resolved it (coarse shading shares no block with it); `None` outside the viewport.
+    fn inspected(&self, (x, y): (u32, u32)) -> Option<InspectedPixel> {
+        let (w, h) = (self.settings.width, self.settings.height);
+        if x >= w || y >= h {
+            return None;
+        }
+        let i = ((h - 1 - y) * w + x) as usize;
+        // Its lookup keeps λ and the footprint, which the frame's colour may not need.
+        let with_derivatives = ResolveContext {
+            derivatives: true,
+            ..*self
+        };
+        let r = with_derivatives.pixel(x, y, i, None);
+        let lit = self.settings.shading != Frequency::Unlit;
+        let texture = r.texture.map(|(uv, l)| PixelTexture::new(uv, &l));
+        Some(InspectedPixel::new(
+            i,
+            lit,
+            r.terms.as_ref(),
+            texture.as_ref(),
+        ))
+    }
+
     /// The surface colour of triangle `t` at original-triangle weights `b`: `Σ b_k·c_k`.
     fn color_of(&self, t: &RasterTriangle, b: Vec3) -> Vec3 {
         let rows = self.primitives[t.primitive as usize].vertices;

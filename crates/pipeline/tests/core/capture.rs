@@ -75,7 +75,8 @@ fn a_colour_only_capture_has_the_same_picture_without_the_term_buffers() {
         Capture::showing([BufferKind::Color, BufferKind::NDotL]),
         Capture {
             lighting: true,
-            texturing: false
+            texturing: false,
+            pixel: None
         }
     );
     assert!(b.buffers().contains(&BufferKind::BaryAffine));
@@ -221,8 +222,53 @@ fn primitives_assembled_in_chunks_keep_their_raster_triangles_in_order() {
     }
 }
 
+/// A capture that keeps no term buffer but one pixel's terms (a draft's inspected pixel) has
+/// that pixel's terms and lookup as the full capture has them, λ and the footprint included
+/// when the sampler reads one level only (the colour then needs no derivatives).
+#[test]
+fn the_inspected_pixel_keeps_its_terms_without_the_term_buffers() {
+    use pipeline::buffers::Capture;
+    use pipeline::texture::{Mipmap, Sampler};
+    let (scene, settings) = lit_textured_quad(32, Samples::X4);
+    for mipmap in [Mipmap::None, Mipmap::Linear] {
+        let settings = RenderSettings {
+            sampler: Sampler {
+                mipmap,
+                ..settings.sampler
+            },
+            ..settings
+        };
+        let full = render(&scene, &settings);
+        let at = (13, 17);
+        let kept = render(
+            &scene,
+            &RenderSettings {
+                capture: Capture::COLOR.with_pixel(Some(at)),
+                ..settings
+            },
+        );
+        assert_eq!(full.pixels.color, kept.pixels.color);
+        assert!(kept.pixels.shading.is_none() && kept.pixels.texturing.is_none());
+        let (a, b) = (full.pixel_record(at.0, at.1), kept.pixel_record(at.0, at.1));
+        let (a, b) = (a.expect("a record"), b.expect("a record"));
+        let lookup = a.texture.clone().expect("a lookup");
+        assert!(lookup.lod.abs() > 0.0 && lookup.footprint != [0.0; 4]);
+        assert_eq!((a.lighting, a.texture), (b.lighting, b.texture));
+        // Outside the viewport: nothing kept, nothing panics.
+        let outside = render(
+            &scene,
+            &RenderSettings {
+                capture: Capture::COLOR.with_pixel(Some((32, 0))),
+                ..settings
+            },
+        );
+        assert!(outside.pixels.inspected.is_none());
+    }
+}
+
 #[test]
 fn coarse_shading_shades_a_2x2_block_once_per_triangle_and_edges_as_usual() {
+    use pipeline::buffers::Capture;
     use pipeline::raster::NONE;
     let (scene, settings) = lit_textured_quad(48, Samples::X1);
     let full = render(&scene, &settings);
@@ -234,7 +280,7 @@ fn coarse_shading_shades_a_2x2_block_once_per_triangle_and_edges_as_usual() {
             &scene,
             &RenderSettings {
                 coarse_shading: true,
-                coarse_exact: exact,
+                capture: Capture::COLOR.with_pixel(exact),
                 ..settings
             },
         );
@@ -282,6 +328,16 @@ fn coarse_shading_shades_a_2x2_block_once_per_triangle_and_edges_as_usual() {
             // Its explanation, derived from its own records, lands on its colour.
             let e = coarse.explain(x, y).expect("explained");
             assert!((e.shaded - e.color).abs().max_element() < 1e-4);
+            // No term buffer is kept, but its terms and lookup are, as the full frame's.
+            assert!(coarse.pixels.shading.is_none() && coarse.pixels.texturing.is_none());
+            let (a, b) = (full.pixel_record(x, y), coarse.pixel_record(x, y));
+            let (a, b) = (a.expect("a record"), b.expect("a record"));
+            assert!(a.lighting.is_some() && a.texture.is_some());
+            assert_eq!((a.lighting, a.texture), (b.lighting, b.texture));
+            assert_eq!(full.pixel_vectors(x, y), coarse.pixel_vectors(x, y));
+            // Its neighbour has none kept.
+            let n = coarse.pixel_record(x - 1, y).expect("a record");
+            assert!(n.lighting.is_none() && n.texture.is_none());
         }
     }
 }
