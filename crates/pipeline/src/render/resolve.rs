@@ -260,6 +260,9 @@ impl ResolveContext<'_> {
             self.derivatives,
         );
         let sampler = &self.settings.sampler;
+        if !self.derivatives {
+            return Some((uv, texture.sample_level0(uv, sampler)));
+        }
         Some((uv, texture.sample(uv, dx, dy, sampler)))
     }
 

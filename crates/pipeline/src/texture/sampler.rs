@@ -122,6 +122,20 @@ impl Texture {
         major.max(1e-12).log2()
     }
 
+    /// Samples at `uv` when the sampler needs no footprint ([`Sampler::uses_footprint`] is
+    /// false: one level, one tap): level 0 read by the filter, the colour [`Self::sample`]
+    /// gives, without the derivatives, λ (left −∞) or the footprint it would record.
+    #[must_use]
+    pub fn sample_level0(&self, uv: Vec2, s: &Sampler) -> Lookup {
+        debug_assert!(!s.uses_footprint());
+        Lookup {
+            color: self.sample_lod(uv, f32::NEG_INFINITY, s).0,
+            lod: f32::NEG_INFINITY,
+            taps: 1,
+            ..Lookup::default()
+        }
+    }
+
     /// Samples at `uv` with the given screen derivatives of `uv`.
     #[must_use]
     pub fn sample(&self, uv: Vec2, duv_dx: Vec2, duv_dy: Vec2, s: &Sampler) -> Lookup {

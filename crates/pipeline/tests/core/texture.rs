@@ -237,6 +237,40 @@ fn level_of_detail_is_log2_of_texels_per_pixel() {
     );
 }
 
+/// A sampler that reads one level with one tap needs no footprint: the lookup without
+/// derivatives (what a colour-only frame does) reads the colour the full lookup reads, at any
+/// uv, any derivatives, both filters and both wraps.
+#[test]
+fn a_lookup_without_a_footprint_reads_what_the_full_lookup_reads() {
+    let texture = Texture::checkerboard(64, 8);
+    let mut state = 0x9e37_79b9_u32;
+    let mut next = || {
+        state ^= state << 13;
+        state ^= state >> 17;
+        state ^= state << 5;
+        state as f32 / u32::MAX as f32
+    };
+    for filter in [Filter::Nearest, Filter::Bilinear] {
+        for wrap in [Wrap::Repeat, Wrap::Clamp] {
+            let sampler = Sampler {
+                filter,
+                wrap,
+                mipmap: Mipmap::None,
+                anisotropy: 1,
+                lod_bias: 1.5,
+            };
+            for _ in 0..500 {
+                let uv = Vec2::new(next() * 3.0 - 1.0, next() * 3.0 - 1.0);
+                let (dx, dy) = (Vec2::new(next(), next()), Vec2::new(next(), next()));
+                let full = texture.sample(uv, dx * 0.2, dy * 0.2, &sampler);
+                let base = texture.sample_level0(uv, &sampler);
+                assert_eq!(full.color, base.color, "{filter:?} {wrap:?} at {uv}");
+                assert_eq!((base.level, base.level_blend, base.taps), (0, 0.0, 1));
+            }
+        }
+    }
+}
+
 #[test]
 fn the_texel_colour_is_the_surface_colour() {
     // Magnified (d = 0.3: about 0.6 texels a pixel), nearest filtering: every pixel shows one of
