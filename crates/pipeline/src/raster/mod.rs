@@ -79,36 +79,46 @@ pub struct RasterTriangle {
     edges: [Edge; 3],
     #[serde(skip)]
     area2: i64,
+    /// Which edges are top or left edges (see [`Self::top_left`]).
+    #[serde(skip)]
+    top_left: [bool; 3],
 }
 
-/// One edge equation `E(p) = a·p.x + b·p.y + c`, plus the fill-rule bias (`0` for top-left edges,
-/// `−1` otherwise, so that `E + bias ≥ 0` is the inside test on integers).
+/// One edge equation `E(p) = a·p.x + b·p.y + c`. `a` and `b` are differences of two corners'
+/// fixed-point coordinates, which [`MAX_FIXED`] keeps within 32 bits: a million triangles are
+/// written, moved and read once each a frame, so their size is the rasterizer's memory traffic.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 struct Edge {
-    a: i64,
-    b: i64,
+    a: i32,
+    b: i32,
     c: i64,
-    bias: i64,
 }
 
 impl Edge {
-    fn new(p: I64Vec2, q: I64Vec2) -> Self {
+    /// The edge `p → q` (corners within [`MAX_FIXED`]), and whether it is a top or left edge:
+    /// `Δy = 0, Δx < 0`, or `Δy < 0`.
+    fn new(p: I64Vec2, q: I64Vec2) -> (Self, bool) {
         let d = q - p;
         let (a, b) = (-d.y, d.x);
         let top_left = (d.y == 0 && d.x < 0) || d.y < 0;
-        Self {
-            a,
-            b,
+        let edge = Self {
+            a: a as i32,
+            b: b as i32,
             c: -(a * p.x + b * p.y),
-            bias: if top_left { 0 } else { -1 },
-        }
+        };
+        (edge, top_left)
     }
 
     #[inline]
     fn at(&self, p: I64Vec2) -> i64 {
-        self.a * p.x + self.b * p.y + self.c
+        i64::from(self.a) * p.x + i64::from(self.b) * p.y + self.c
     }
 }
+
+/// The largest fixed-point coordinate a corner may have, `2³⁰ − 1` (4 194 304 pixels, far beyond
+/// the largest viewport; the pipeline clips every triangle to its viewport first): the difference
+/// of two such coordinates fits an `i32`.
+pub const MAX_FIXED: i64 = (1 << 30) - 1;
 
 /// A triangle's depth as a plane over fixed-point window positions: `z = c + a·X + b·Y`
 /// (see [`RasterTriangle::depth_plane`]).
@@ -138,6 +148,9 @@ pub enum SetupRejection {
     BackFace,
     /// Counter-clockwise (a front face) with front-face culling on.
     FrontFace,
+    /// A corner lies further than [`MAX_FIXED`] from the origin (never, for a triangle clipped
+    /// to a viewport).
+    OutOfRange,
 }
 
 impl RasterTriangle {
@@ -155,6 +168,9 @@ impl RasterTriangle {
         size: (u32, u32),
     ) -> Result<Self, SetupRejection> {
         let mut fixed = window.map(|p| I64Vec2::new(snap(p.x), snap(p.y)));
+        if fixed.iter().any(|f| f.abs().max_element() > MAX_FIXED) {
+            return Err(SetupRejection::OutOfRange);
+        }
         let area2 = (fixed[1] - fixed[0]).perp_dot(fixed[2] - fixed[0]);
         if area2 == 0 {
             return Err(SetupRejection::Degenerate);
@@ -172,7 +188,7 @@ impl RasterTriangle {
             inv_w.swap(1, 2);
             bary.swap(1, 2);
         }
-        let edges = [
+        let [(e0, t0), (e1, t1), (e2, t2)] = [
             Edge::new(fixed[1], fixed[2]),
             Edge::new(fixed[2], fixed[0]),
             Edge::new(fixed[0], fixed[1]),
@@ -192,8 +208,9 @@ impl RasterTriangle {
             inv_w,
             bary,
             bbox,
-            edges,
+            edges: [e0, e1, e2],
             area2: area2.abs(),
+            top_left: [t0, t1, t2],
         })
     }
 
@@ -210,11 +227,11 @@ impl RasterTriangle {
     #[must_use]
     #[inline]
     pub(crate) fn biased_edge_values(&self, p: I64Vec2) -> [i64; 3] {
-        let e = &self.edges;
+        let (e, t) = (&self.edges, &self.top_left);
         [
-            e[0].at(p) + e[0].bias,
-            e[1].at(p) + e[1].bias,
-            e[2].at(p) + e[2].bias,
+            e[0].at(p) + i64::from(t[0]) - 1,
+            e[1].at(p) + i64::from(t[1]) - 1,
+            e[2].at(p) + i64::from(t[2]) - 1,
         ]
     }
 
@@ -222,7 +239,7 @@ impl RasterTriangle {
     /// one opposite corner `i`.
     #[must_use]
     pub fn top_left(&self) -> [bool; 3] {
-        self.edges.map(|e| e.bias == 0)
+        self.top_left
     }
 
     /// Twice the triangle's area after snapping, in fixed-point units: `E_0 + E_1 + E_2` at
@@ -236,7 +253,7 @@ impl RasterTriangle {
     #[must_use]
     #[inline]
     pub fn covers(&self, p: I64Vec2) -> bool {
-        self.edges.iter().all(|e| e.at(p) + e.bias >= 0)
+        self.biased_edge_values(p).iter().all(|&e| e >= 0)
     }
 
     /// Screen-space barycentric weights `λ` at a fixed-point position (extrapolated outside).

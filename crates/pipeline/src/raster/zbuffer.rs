@@ -158,25 +158,33 @@ impl SampleBuffers {
         let bands = (rayon::current_num_threads() * 4).clamp(1, h.max(1));
         let rows_per = h.div_ceil(bands).max(1);
         let bands = h.div_ceil(rows_per);
-        // Binning: each band gets the triangles whose bounding box reaches its rows, in order.
-        let mut bins: Vec<Vec<u32>> = vec![Vec::new(); bands];
-        for (i, t) in tris.iter().enumerate() {
-            let [_, y0, _, y1] = t.bbox;
-            // Image rows of the box: h − 1 − y1 (top) to h − 1 − y0 (bottom).
-            let (r0, r1) = (h - 1 - y1 as usize, h - 1 - y0 as usize);
-            for bin in &mut bins[r0 / rows_per..=r1 / rows_per] {
-                bin.push(i as u32);
-            }
-        }
+        // Binning, in parallel over runs of triangles: each band gets the triangles whose
+        // bounding box reaches its rows, run after run, so in order.
+        const RUN: usize = 1 << 16;
+        let runs: Vec<Vec<Vec<u32>>> = tris
+            .par_chunks(RUN)
+            .enumerate()
+            .map(|(r, run)| {
+                let mut bins: Vec<Vec<u32>> = vec![Vec::new(); bands];
+                for (k, t) in run.iter().enumerate() {
+                    let [_, y0, _, y1] = t.bbox;
+                    // Image rows of the box: h − 1 − y1 (top) to h − 1 − y0 (bottom).
+                    let (r0, r1) = (h - 1 - y1 as usize, h - 1 - y0 as usize);
+                    for bin in &mut bins[r0 / rows_per..=r1 / rows_per] {
+                        bin.push((r * RUN + k) as u32);
+                    }
+                }
+                bins
+            })
+            .collect();
         let chunk = rows_per * w * n;
         let (height, offsets) = (self.height, &self.offsets);
         let per_band: Vec<Vec<(u32, RasterCounts)>> = self
             .depth
             .par_chunks_mut(chunk)
             .zip(self.triangle.par_chunks_mut(chunk))
-            .zip(bins.par_iter())
             .enumerate()
-            .map(|(b, ((depth, owner), bin))| {
+            .map(|(b, (depth, owner))| {
                 let rows = depth.len() / (w * n);
                 let mut band = Band {
                     depth,
@@ -187,7 +195,8 @@ impl SampleBuffers {
                     rows,
                     offsets,
                 };
-                bin.iter()
+                runs.iter()
+                    .flat_map(|bins| &bins[b])
                     .map(|&i| (i, band.rasterize(&tris[i as usize], i, test)))
                     .collect()
             })
@@ -301,7 +310,7 @@ impl Band<'_> {
         // The plane is worked out at the first covered sample: of a million triangles most
         // are smaller than a pixel and cover none.
         let mut plane = None;
-        let step = tri.edges.map(|e| e.a * ONE);
+        let step = tri.edges.map(|e| i64::from(e.a) * ONE);
         let mut e = [[0i64; 3]; 16];
         for y in y0..=y1 {
             let row = top - y as usize;

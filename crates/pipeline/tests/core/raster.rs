@@ -345,3 +345,89 @@ fn depth_is_the_plane_of_the_unsnapped_triangle() {
         );
     }
 }
+
+/// The edge coefficients are kept in 32 bits: a corner beyond the fixed-point range that keeps
+/// them exact is refused at setup (a clipped triangle never has one), and one at the edge of the
+/// range is rasterized exactly as the edge functions in 64 bits say.
+#[test]
+fn corners_beyond_the_fixed_point_range_are_refused_at_setup() {
+    use glam::{I64Vec2, Vec3};
+    use pipeline::raster::{CullMode, MAX_FIXED, ONE, RasterTriangle, SetupRejection};
+    let setup = |far: f32| {
+        RasterTriangle::setup(
+            0,
+            [
+                Vec3::new(0.5, 0.5, 0.5),
+                Vec3::new(far, 0.5, 0.5),
+                Vec3::new(0.5, far, 0.5),
+            ],
+            [1.0; 3],
+            [Vec3::X, Vec3::Y, Vec3::Z],
+            CullMode::None,
+            (8, 8),
+        )
+    };
+    let limit = (MAX_FIXED / ONE) as f32; // 4 194 303 pixels, exactly representable
+    assert_eq!(setup(limit * 2.0).err(), Some(SetupRejection::OutOfRange));
+    assert_eq!(setup(-limit * 2.0).err(), Some(SetupRejection::OutOfRange));
+    let tri = setup(limit).expect("within the range");
+    // The three edge values at a point add up to twice the area (in 64 bits), and the
+    // triangle covers the first pixels and not a point beyond its hypotenuse.
+    let p = I64Vec2::new(3 * ONE + ONE / 2, 5 * ONE + ONE / 2);
+    assert_eq!(tri.edge_values(p).iter().sum::<i64>(), tri.area2());
+    assert!(tri.covers(p));
+    let beyond = I64Vec2::new(MAX_FIXED, MAX_FIXED);
+    assert!(!tri.covers(beyond));
+    // What the rasterizer's records cost: a million of them are a frame's memory traffic.
+    assert!(std::mem::size_of::<RasterTriangle>() <= 168);
+}
+
+/// The fast rasterizer bins its triangles in parallel runs of 65 536: with more triangles than
+/// that, overlapping across the runs' boundaries, the result is still the reference's, drawing
+/// them one after another.
+#[test]
+fn binning_in_runs_keeps_the_drawing_order() {
+    use glam::Vec3;
+    use pipeline::raster::{CullMode, DepthTest, RasterTriangle, SampleBuffers, Samples};
+    let (w, h) = (48u32, 32u32);
+    let mut state = 0x2545_f491_u32;
+    let mut next = || {
+        state ^= state << 13;
+        state ^= state >> 17;
+        state ^= state << 5;
+        state as f32 / u32::MAX as f32
+    };
+    let tris: Vec<RasterTriangle> = (0..150_000u32)
+        .filter_map(|k| {
+            let (x, y) = (next() * w as f32, next() * h as f32);
+            let z = next();
+            let corner = |dx: f32, dy: f32| Vec3::new(x + dx, y + dy, z);
+            RasterTriangle::setup(
+                k,
+                [
+                    corner(0.0, 0.0),
+                    corner(3.0 * next(), 0.3),
+                    corner(0.2, 3.0 * next()),
+                ],
+                [1.0; 3],
+                [Vec3::X, Vec3::Y, Vec3::Z],
+                CullMode::None,
+                (w, h),
+            )
+            .ok()
+        })
+        .collect();
+    assert!(tris.len() > 2 * 65_536, "{} triangles", tris.len());
+    // Always: the last triangle drawn over a sample wins, so the order is all that decides.
+    for test in [DepthTest::Always, DepthTest::Less] {
+        let clear = test.clear_value();
+        let mut fast = SampleBuffers::new(w, h, Samples::X4, clear);
+        let counts = fast.rasterize_all(&tris, test);
+        let mut reference = SampleBuffers::new(w, h, Samples::X4, clear);
+        for (i, t) in tris.iter().enumerate() {
+            assert_eq!(reference.rasterize_reference(t, i as u32, test), counts[i]);
+        }
+        assert_eq!(fast.triangle, reference.triangle);
+        assert_eq!(fast.depth, reference.depth);
+    }
+}
