@@ -59,13 +59,15 @@ impl InspectedPixel {
         let mut halves = Vec::new();
         let lighting = lit.then(|| {
             let mut b = ShadingBuffers::default().resized(1);
-            b.rows(1)[0].store(&ShadingRow::flatten(terms), &mut halves);
+            let floats = terms.map(ShadingRow::flatten);
+            let floats = floats.as_ref().map_or(&[][..], |f| &f[..]);
+            b.rows(1)[0].store(&[terms.is_some()], floats, &mut halves);
             b.at(0)
         });
         let texture = texture.map(|t| {
             let mut b = TextureBuffers::default().resized(1);
-            let (uv, floats) = TextureRow::flatten(Some(t));
-            b.rows(1)[0].store(&[uv], &floats, &mut halves);
+            let (uv, floats) = TextureRow::flatten(t);
+            b.rows(1)[0].store(&[true], &[uv], &floats, &mut halves);
             b.at(0)
         });
         Self {
@@ -273,25 +275,40 @@ pub const LIGHTING_HALVES: usize = 17;
 
 impl TextureRow<'_> {
     /// A lookup as the row stores it: its uv (kept at 32 bits) and its [`TEXTURE_HALVES`]
-    /// values in storage order. No lookup (an untextured surface, the background) stores zeros
-    /// with the level −1, so that it is told apart from level 0 ([`NO_LOOKUP`]).
+    /// values in storage order.
     #[must_use]
-    pub fn flatten(t: Option<&PixelTexture>) -> ([f32; 2], [f32; TEXTURE_HALVES]) {
-        t.map_or(([0.0; 2], NO_LOOKUP), |t| {
-            let ([a, b, c], [d, e, f, g]) = (t.texel, t.footprint);
-            (t.uv, [t.lod, t.level, a, b, c, d, e, f, g])
-        })
+    pub fn flatten(t: &PixelTexture) -> ([f32; 2], [f32; TEXTURE_HALVES]) {
+        let ([a, b, c], [d, e, f, g]) = (t.texel, t.footprint);
+        (t.uv, [t.lod, t.level, a, b, c, d, e, f, g])
     }
 
-    /// Stores a row: `uvs` and `floats` ([`TEXTURE_HALVES`] a pixel, from [`Self::flatten`])
-    /// converted to half floats in one pass (vectorised where the processor converts in
-    /// hardware) through the reused `halves`.
-    pub fn store(&mut self, uvs: &[[f32; 2]], floats: &[f32], halves: &mut Vec<f16>) {
-        self.uv.copy_from_slice(uvs);
-        for (x, h) in convert(floats, halves)
-            .chunks_exact(TEXTURE_HALVES)
-            .enumerate()
-        {
+    /// Stores a row: pixel `x` has a lookup when `read[x]`, the lookups' `uvs` and `floats`
+    /// ([`TEXTURE_HALVES`] each, from [`Self::flatten`]) in order, converted to half floats in
+    /// one pass (vectorised where the processor converts in hardware) through the reused
+    /// `halves`. A pixel with no lookup (an untextured surface, the background: most of a
+    /// frame) stores zeros with the level −1, so that it is told apart from level 0
+    /// ([`NO_LOOKUP`]), without a conversion.
+    pub fn store(
+        &mut self,
+        read: &[bool],
+        uvs: &[[f32; 2]],
+        floats: &[f32],
+        halves: &mut Vec<f16>,
+    ) {
+        let mut lookups = uvs
+            .iter()
+            .zip(convert(floats, halves).chunks_exact(TEXTURE_HALVES));
+        let none = f16::from_f32(NO_LOOKUP[1]);
+        for (x, &read) in read.iter().enumerate() {
+            let lookup = if read { lookups.next() } else { None };
+            let Some((uv, h)) = lookup else {
+                self.uv[x] = [0.0; 2];
+                (self.lod[x], self.level[x]) = (f16::ZERO, none);
+                self.texel[x] = [f16::ZERO; 3];
+                self.footprint[x] = [f16::ZERO; 4];
+                continue;
+            };
+            self.uv[x] = *uv;
             self.lod[x] = h[0];
             self.level[x] = h[1];
             self.texel[x] = [h[2], h[3], h[4]];
@@ -320,12 +337,9 @@ pub struct ShadingRow<'a> {
 }
 
 impl ShadingRow<'_> {
-    /// Lighting terms as the row stores them, in storage order (zero: unlit there).
+    /// Lighting terms as the row stores them, in storage order.
     #[must_use]
-    pub fn flatten(t: Option<&crate::shade::ShadeTerms>) -> [f32; LIGHTING_HALVES] {
-        let Some(t) = t else {
-            return [0.0; LIGHTING_HALVES];
-        };
+    pub fn flatten(t: &crate::shade::ShadeTerms) -> [f32; LIGHTING_HALVES] {
         let mut out = [0.0; LIGHTING_HALVES];
         for (k, v) in [t.ambient, t.diffuse, t.specular, t.normal, t.reflected]
             .into_iter()
@@ -337,13 +351,26 @@ impl ShadingRow<'_> {
         out
     }
 
-    /// Stores a row: `floats` ([`LIGHTING_HALVES`] a pixel, from [`Self::flatten`]) converted to
-    /// half floats in one pass through the reused `halves`.
-    pub fn store(&mut self, floats: &[f32], halves: &mut Vec<f16>) {
-        for (x, h) in convert(floats, halves)
-            .chunks_exact(LIGHTING_HALVES)
-            .enumerate()
-        {
+    /// Stores a row: pixel `x` is lit when `lit[x]`, the lit pixels' terms in `floats`
+    /// ([`LIGHTING_HALVES`] each, from [`Self::flatten`]) in order, converted to half floats in
+    /// one pass through the reused `halves`. A pixel not lit (unlit there, the background: most
+    /// of a frame) stores zeros, without a conversion.
+    pub fn store(&mut self, lit: &[bool], floats: &[f32], halves: &mut Vec<f16>) {
+        let mut terms = convert(floats, halves).chunks_exact(LIGHTING_HALVES);
+        for (x, &lit) in lit.iter().enumerate() {
+            let Some(h) = (if lit { terms.next() } else { None }) else {
+                for v in [
+                    &mut self.ambient[x],
+                    &mut self.diffuse[x],
+                    &mut self.specular[x],
+                    &mut self.normal[x],
+                    &mut self.reflected[x],
+                ] {
+                    *v = [f16::ZERO; 3];
+                }
+                (self.n_dot_l[x], self.n_dot_h[x]) = (f16::ZERO, f16::ZERO);
+                continue;
+            };
             self.ambient[x] = [h[0], h[1], h[2]];
             self.diffuse[x] = [h[3], h[4], h[5]];
             self.specular[x] = [h[6], h[7], h[8]];

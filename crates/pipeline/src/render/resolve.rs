@@ -46,8 +46,10 @@ struct RowOut<'a> {
 #[derive(Default)]
 struct RowScratch {
     lighting: Vec<f32>,
+    lit: Vec<bool>,
     uvs: Vec<[f32; 2]>,
     texturing: Vec<f32>,
+    read: Vec<bool>,
     halves: Vec<f16>,
     blocks: Vec<Option<BlockShade>>,
 }
@@ -68,8 +70,10 @@ impl RowOut<'_> {
     fn resolve(&mut self, ctx: &ResolveContext<'_>, row: usize, y: u32, s: &mut RowScratch) {
         let w = self.color.len();
         s.lighting.clear();
+        s.lit.clear();
         s.uvs.clear();
         s.texturing.clear();
+        s.read.clear();
         let coarse = ctx.settings.coarse_shading;
         for x in 0..w {
             let block = if coarse && ctx.settings.capture.pixel != Some((x as u32, y)) {
@@ -84,21 +88,25 @@ impl RowOut<'_> {
             self.owner[x] = r.owner;
             self.color[x] = r.color;
             if self.shading.is_some() {
-                s.lighting
-                    .extend_from_slice(&ShadingRow::flatten(r.terms.as_ref()));
+                s.lit.push(r.terms.is_some());
+                if let Some(t) = &r.terms {
+                    s.lighting.extend_from_slice(&ShadingRow::flatten(t));
+                }
             }
             if self.texturing.is_some() {
-                let t = r.texture.map(|(uv, l)| PixelTexture::new(uv, &l));
-                let (uv, halves) = TextureRow::flatten(t.as_ref());
-                s.uvs.push(uv);
-                s.texturing.extend_from_slice(&halves);
+                s.read.push(r.texture.is_some());
+                if let Some((uv, l)) = &r.texture {
+                    let (uv, halves) = TextureRow::flatten(&PixelTexture::new(*uv, l));
+                    s.uvs.push(uv);
+                    s.texturing.extend_from_slice(&halves);
+                }
             }
         }
         if let Some(out) = &mut self.shading {
-            out.store(&s.lighting, &mut s.halves);
+            out.store(&s.lit, &s.lighting, &mut s.halves);
         }
         if let Some(out) = &mut self.texturing {
-            out.store(&s.uvs, &s.texturing, &mut s.halves);
+            out.store(&s.read, &s.uvs, &s.texturing, &mut s.halves);
         }
     }
 }
