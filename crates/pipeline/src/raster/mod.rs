@@ -288,11 +288,13 @@ impl RasterTriangle {
         let exact = self
             .window
             .map(|w| glam::DVec3::new(w.x.into(), w.y.into(), w.z.into()));
-        let snapped = self.window.map(|w| {
-            let q = |v: f32| snap(v) as f64 / ONE as f64;
-            glam::DVec3::new(q(w.x), q(w.y), w.z.into())
-        });
-        let (a, b, c) = plane(exact).or_else(|| plane(snapped)).unwrap_or((
+        let snapped = || {
+            self.window.map(|w| {
+                let q = |v: f32| snap(v) as f64 / ONE as f64;
+                glam::DVec3::new(q(w.x), q(w.y), w.z.into())
+            })
+        };
+        let (a, b, c) = plane(exact).or_else(|| plane(snapped())).unwrap_or((
             0.0,
             0.0,
             f64::from(self.window[0].z),

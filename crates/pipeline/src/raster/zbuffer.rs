@@ -296,6 +296,24 @@ impl Band<'_> {
     /// the first pixel's samples and then stepped by `a·ONE` per pixel (they are linear in x);
     /// depth is the triangle's plane ([`RasterTriangle::depth_plane`]).
     fn rasterize(&mut self, tri: &RasterTriangle, index: u32, test: DepthTest) -> RasterCounts {
+        // The loop over a pixel's samples unrolled for each pattern, so that their edge values
+        // stay in registers.
+        match self.offsets.len() {
+            1 => self.rasterize_n::<1>(tri, index, test),
+            4 => self.rasterize_n::<4>(tri, index, test),
+            8 => self.rasterize_n::<8>(tri, index, test),
+            _ => self.rasterize_n::<16>(tri, index, test),
+        }
+    }
+
+    /// [`Self::rasterize`] with `N` samples a pixel.
+    fn rasterize_n<const N: usize>(
+        &mut self,
+        tri: &RasterTriangle,
+        index: u32,
+        test: DepthTest,
+    ) -> RasterCounts {
+        debug_assert_eq!(self.offsets.len(), N);
         let mut counts = RasterCounts::default();
         let [x0, mut y0, x1, mut y1] = tri.bbox;
         // Window rows y of this band: image rows r = height − 1 − y.
@@ -306,26 +324,26 @@ impl Band<'_> {
         if y0 > y1 {
             return counts;
         }
-        let n = self.offsets.len();
+        let offsets = &self.offsets[..N];
         // The plane is worked out at the first covered sample: of a million triangles most
         // are smaller than a pixel and cover none.
         let mut plane = None;
         let step = tri.edges.map(|e| i64::from(e.a) * ONE);
-        let mut e = [[0i64; 3]; 16];
+        let mut e = [[0i64; 3]; N];
         for y in y0..=y1 {
             let row = top - y as usize;
             let corner = I64Vec2::new(i64::from(x0) * ONE, i64::from(y) * ONE);
-            for (s, off) in self.offsets.iter().enumerate() {
-                e[s] = tri.biased_edge_values(corner + *off);
+            for (es, off) in e.iter_mut().zip(offsets) {
+                *es = tri.biased_edge_values(corner + *off);
             }
             // Wide boxes: only the pixels between the first and the last that can have a
             // covered sample in this row (found exactly, in integers), so the empty corners of
             // the box are not scanned.
             let (xs, xe) = if x1 - x0 >= SPAN_MIN_WIDTH {
-                let Some((a, b)) = row_span(&e[..n], step, x1 - x0) else {
+                let Some((a, b)) = row_span(&e, step, x1 - x0) else {
                     continue;
                 };
-                for es in &mut e[..n] {
+                for es in &mut e {
                     for k in 0..3 {
                         es[k] += step[k] * i64::from(a);
                     }
@@ -335,14 +353,13 @@ impl Band<'_> {
                 (x0, x1)
             };
             for x in xs..=xe {
-                let base = (row * self.width + x as usize) * n;
-                for (s, es) in e.iter_mut().enumerate().take(n) {
+                let base = (row * self.width + x as usize) * N;
+                for (s, es) in e.iter_mut().enumerate() {
                     if (es[0] | es[1] | es[2]) >= 0 {
                         counts.covered += 1;
                         let z = plane
                             .get_or_insert_with(|| tri.depth_plane())
-                            .at(I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE)
-                                + self.offsets[s]);
+                            .at(I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE) + offsets[s]);
                         let i = base + s;
                         if test.passes(z, self.depth[i]) {
                             self.depth[i] = z;
