@@ -279,12 +279,10 @@ fn snapping_agrees_with_round_ties_even_everywhere() {
         9.0e12,
         -9.0e12,
     ];
-    let mut bits = 0x2545_f491_u32;
+    let mut next = crate::support::xorshift(0x2545_f491);
     for k in 0..200_000 {
-        // xorshift: spread over all magnitudes, and ties k + ½ sub-pixel units.
-        bits ^= bits << 13;
-        bits ^= bits >> 17;
-        bits ^= bits << 5;
+        // Random bits: spread over all magnitudes, and ties k + ½ sub-pixel units.
+        let bits = next();
         values.push(f32::from_bits(bits));
         values.push((k as f32 - 100_000.0 + 0.5) / 256.0);
         values.push(((bits % 4_000_000) as f32 - 2_000_000.0) / 512.0);
@@ -390,13 +388,7 @@ fn binning_in_runs_keeps_the_drawing_order() {
     use glam::Vec3;
     use pipeline::raster::{CullMode, DepthTest, RasterTriangle, SampleBuffers, Samples};
     let (w, h) = (48u32, 32u32);
-    let mut state = 0x2545_f491_u32;
-    let mut next = || {
-        state ^= state << 13;
-        state ^= state >> 17;
-        state ^= state << 5;
-        state as f32 / u32::MAX as f32
-    };
+    let mut next = crate::support::uniform(0x2545_f491_u32);
     let tris: Vec<RasterTriangle> = (0..150_000u32)
         .filter_map(|k| {
             let (x, y) = (next() * w as f32, next() * h as f32);

@@ -95,3 +95,21 @@ pub fn cover_counts(capture: &pipeline::capture::FrameCapture) -> (u64, u64) {
         .count() as u64;
     (sum, distinct)
 }
+
+/// A xorshift generator of 32-bit words from `seed` (not zero): reproducible random input
+/// without a dependency.
+pub fn xorshift(seed: u32) -> impl FnMut() -> u32 {
+    let mut state = seed;
+    move || {
+        state ^= state << 13;
+        state ^= state >> 17;
+        state ^= state << 5;
+        state
+    }
+}
+
+/// Uniform floats in `[0, 1]` from [`xorshift`].
+pub fn uniform(seed: u32) -> impl FnMut() -> f32 {
+    let mut bits = xorshift(seed);
+    move || bits() as f32 / u32::MAX as f32
+}

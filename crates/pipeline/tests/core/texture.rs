@@ -243,13 +243,7 @@ fn level_of_detail_is_log2_of_texels_per_pixel() {
 #[test]
 fn a_lookup_without_a_footprint_reads_what_the_full_lookup_reads() {
     let texture = Texture::checkerboard(64, 8);
-    let mut state = 0x9e37_79b9_u32;
-    let mut next = || {
-        state ^= state << 13;
-        state ^= state >> 17;
-        state ^= state << 5;
-        state as f32 / u32::MAX as f32
-    };
+    let mut next = crate::support::uniform(0x9e37_79b9_u32);
     for filter in [Filter::Nearest, Filter::Bilinear] {
         for wrap in [Wrap::Repeat, Wrap::Clamp] {
             let sampler = Sampler {
