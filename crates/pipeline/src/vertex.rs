@@ -66,6 +66,19 @@ pub struct VertexLighting<'a> {
     pub eye: Vec3,
 }
 
+/// The perspective division and the viewport transform of a clip-space position with `w > 0`:
+/// `NDC = (x_c, y_c, z_c)·(1/w_c)`, `window = viewport·(NDC, 1)`, and `1/w_c` (kept for
+/// perspective-correct interpolation). The one place both are computed: the vertex stage
+/// records them and the assembly reuses them, so a vertex has the same window position in the
+/// vertex table as in the triangles the rasterizer covers.
+#[must_use]
+#[inline]
+pub fn to_window(clip: Vec4, viewport: &Mat4) -> (Vec3, Vec3, f32) {
+    let inv_w = 1.0 / clip.w;
+    let ndc = clip.truncate() * inv_w;
+    (ndc, (*viewport * ndc.extend(1.0)).truncate(), inv_w)
+}
+
 /// The normal matrix `N = (M⁻¹)ᵀ` (upper 3×3): normals stay perpendicular to surfaces under
 /// non-uniform scaling.
 #[must_use]
@@ -136,8 +149,12 @@ fn transform_vertex(
     let world = m.model * object_pos;
     let eye = m.view * world;
     let clip = m.projection * eye;
-    let ndc = (clip.w > 0.0).then(|| clip.truncate() / clip.w);
-    let window = ndc.map(|n| (m.viewport * n.extend(1.0)).truncate());
+    let (ndc, window) = if clip.w > 0.0 {
+        let (ndc, window, _) = to_window(clip, &m.viewport);
+        (Some(ndc), Some(window))
+    } else {
+        (None, None)
+    };
     let color = match object.color {
         ColorSource::Uniform(c) => c,
         ColorSource::Vertex if !mesh.colors.is_empty() => mesh.colors[i],

@@ -2,7 +2,7 @@
 //! setup (with culling), one primitive at a time in parallel chunks; and flat shading's lighting
 //! of each face.
 
-use glam::{Vec3, Vec4};
+use glam::Vec3;
 use rayon::prelude::*;
 
 use crate::capture::{Fate, Matrices, PrimitiveRecord};
@@ -194,12 +194,23 @@ fn assemble_one(
             };
         }
     };
-    // Perspective division and viewport for each polygon vertex (at most 10).
+    // Perspective division and viewport for each polygon vertex (at most 10): a triangle wholly
+    // inside has its corners' window positions in the vertex table already (`w > 0` there).
     let mut window = [(Vec3::ZERO, 0.0f32); 10];
-    for (slot, v) in window.iter_mut().zip(polygon) {
-        let inv_w = 1.0 / v.clip.w;
-        let ndc: Vec4 = (v.clip.truncate() * inv_w).extend(1.0);
-        *slot = ((viewport * ndc).truncate(), inv_w);
+    let inside = matches!(outcome, ClipOutcome::Inside);
+    for (k, (slot, v)) in window.iter_mut().zip(polygon).enumerate() {
+        let recorded = if inside {
+            vertices[rows[k] as usize].window
+        } else {
+            None
+        };
+        *slot = match recorded {
+            Some(w) => (w, 1.0 / v.clip.w),
+            None => {
+                let (_, w, inv_w) = crate::vertex::to_window(v.clip, &viewport);
+                (w, inv_w)
+            }
+        };
     }
     let mut rejection = None;
     for k in 1..polygon.len() - 1 {
