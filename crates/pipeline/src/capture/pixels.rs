@@ -59,9 +59,8 @@ impl InspectedPixel {
         let mut halves = Vec::new();
         let lighting = lit.then(|| {
             let mut b = ShadingBuffers::default().resized(1);
-            let floats = terms.map(ShadingRow::flatten);
-            let floats = floats.as_ref().map_or(&[][..], |f| &f[..]);
-            b.rows(1)[0].store(&[terms.is_some()], floats, &mut halves);
+            let floats = terms.map_or([0.0; LIGHTING_HALVES], ShadingRow::flatten);
+            b.rows(1)[0].store(&[true], &floats, &mut halves);
             b.at(0)
         });
         let texture = texture.map(|t| {
