@@ -9,6 +9,7 @@
 
 mod assembly;
 mod resolve;
+mod runs;
 
 use std::time::Duration;
 

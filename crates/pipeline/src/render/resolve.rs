@@ -14,19 +14,21 @@ use crate::capture::{
 use crate::raster::{NONE, ONE, RasterTriangle, SampleBuffers};
 use crate::scene::Scene;
 use crate::settings::RenderSettings;
+use crate::shade::lanes::LANES;
 use crate::shade::{self, Frequency, ShadeTerms};
-use crate::texture::Lookup;
+use crate::texture::{Environment, Lookup};
 use crate::vertex::VertexRecord;
 
 /// Everything the resolve computes for one pixel.
-struct ResolvedPixel {
-    terms: Option<ShadeTerms>,
-    texture: Option<(Vec2, Lookup)>,
-    coverage: u8,
-    depth: f32,
-    primitive: u32,
-    owner: u32,
-    color: [f32; 3],
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(super) struct ResolvedPixel {
+    pub(super) terms: Option<ShadeTerms>,
+    pub(super) texture: Option<(Vec2, Lookup)>,
+    pub(super) coverage: u8,
+    pub(super) depth: f32,
+    pub(super) primitive: u32,
+    pub(super) owner: u32,
+    pub(super) color: [f32; 3],
 }
 
 /// One image row of every per-pixel buffer, written by one resolve task.
@@ -56,7 +58,7 @@ struct RowScratch {
 
 /// What coarse shading reuses across a 2×2 block: the raster triangle shaded and the result.
 #[derive(Clone, Copy)]
-struct BlockShade {
+pub(super) struct BlockShade {
     triangle: u32,
     shaded: Shaded,
 }
@@ -75,38 +77,65 @@ impl RowOut<'_> {
         s.texturing.clear();
         s.read.clear();
         let coarse = ctx.settings.coarse_shading;
-        for x in 0..w {
-            let block = if coarse && ctx.settings.capture.pixel != Some((x as u32, y)) {
-                s.blocks.get_mut(x / 2)
-            } else {
-                None
-            };
-            let r = ctx.pixel(x as u32, y, row * w + x, block);
-            self.coverage[x] = r.coverage;
-            self.depth[x] = r.depth;
-            self.primitive[x] = r.primitive;
-            self.owner[x] = r.owner;
-            self.color[x] = r.color;
-            if self.shading.is_some() {
-                s.lit.push(r.terms.is_some());
-                if let Some(t) = &r.terms {
-                    s.lighting.extend_from_slice(&ShadingRow::flatten(t));
+        // Runs of pixels inside one triangle are shaded together, unless coarse shading
+        // shares 2×2 blocks or every sample is shaded by itself.
+        let runs = !coarse && !ctx.settings.per_sample_shading;
+        let mut lanes = [ResolvedPixel::default(); LANES];
+        let mut x = 0;
+        while x < w {
+            let i = row * w + x;
+            let run = runs.then(|| ctx.run_at(i, w - x)).flatten();
+            // Shorter runs (the small triangles of a dense mesh) cost more in lanes than
+            // they save: their pixels take the per-pixel path, without looking again.
+            if let Some((owner, n @ 4..)) = run {
+                ctx.resolve_run(owner, (x as u32, y), i, &mut lanes[..n]);
+                for (k, r) in lanes[..n].iter().enumerate() {
+                    self.store(x + k, r, s);
                 }
+                x += n;
+                continue;
             }
-            if self.texturing.is_some() {
-                s.read.push(r.texture.is_some());
-                if let Some((uv, l)) = &r.texture {
-                    let (uv, halves) = TextureRow::flatten(&PixelTexture::new(*uv, l));
-                    s.uvs.push(uv);
-                    s.texturing.extend_from_slice(&halves);
-                }
+            for x in x..x + run.map_or(1, |(_, n)| n) {
+                let block = if coarse && ctx.settings.capture.pixel != Some((x as u32, y)) {
+                    s.blocks.get_mut(x / 2)
+                } else {
+                    None
+                };
+                let r = ctx.pixel(x as u32, y, row * w + x, block);
+                self.store(x, &r, s);
             }
+            x += run.map_or(1, |(_, n)| n);
         }
         if let Some(out) = &mut self.shading {
             out.store(&s.lit, &s.lighting, &mut s.halves);
         }
         if let Some(out) = &mut self.texturing {
             out.store(&s.read, &s.uvs, &s.texturing, &mut s.halves);
+        }
+    }
+
+    /// Writes pixel `x`'s resolve into the row's buffers, its terms and lookup into the
+    /// scratch rows when their buffers are kept.
+    #[inline]
+    fn store(&mut self, x: usize, r: &ResolvedPixel, s: &mut RowScratch) {
+        self.coverage[x] = r.coverage;
+        self.depth[x] = r.depth;
+        self.primitive[x] = r.primitive;
+        self.owner[x] = r.owner;
+        self.color[x] = r.color;
+        if self.shading.is_some() {
+            s.lit.push(r.terms.is_some());
+            if let Some(t) = &r.terms {
+                s.lighting.extend_from_slice(&ShadingRow::flatten(t));
+            }
+        }
+        if self.texturing.is_some() {
+            s.read.push(r.texture.is_some());
+            if let Some((uv, l)) = &r.texture {
+                let (uv, halves) = TextureRow::flatten(&PixelTexture::new(*uv, l));
+                s.uvs.push(uv);
+                s.texturing.extend_from_slice(&halves);
+            }
         }
     }
 }
@@ -243,7 +272,7 @@ impl ResolveContext<'_> {
     }
 
     /// The surface colour of triangle `t` at original-triangle weights `b`: `Σ b_k·c_k`.
-    fn color_of(&self, t: &RasterTriangle, b: Vec3) -> Vec3 {
+    pub(super) fn color_of(&self, t: &RasterTriangle, b: Vec3) -> Vec3 {
         let rows = self.primitives[t.primitive as usize].vertices;
         let c = rows.map(|r| self.vertices[r as usize].color);
         c[0] * b.x + c[1] * b.y + c[2] * b.z
@@ -278,7 +307,7 @@ impl ResolveContext<'_> {
     /// frequency: the face's own terms (flat) or the vertices' terms interpolated (Gouraud) — a
     /// texture then modulates their ambient and diffuse terms, as OpenGL's `GL_MODULATE` does — or
     /// lighting evaluated here with the interpolated position and normal (Phong). `None` when unlit.
-    fn terms_of(
+    pub(super) fn terms_of(
         &self,
         t: &RasterTriangle,
         b: Vec3,
@@ -333,21 +362,31 @@ impl ResolveContext<'_> {
                     self.settings.reflection,
                 );
                 if let Some(env) = &object.environment {
-                    // r = 2(n·v)n − v, the mirror direction of the view vector: a mirror of
-                    // reflectivity k shows k of what it reflects and keeps 1 − k of its own
-                    // ambient and diffuse light.
-                    let (n, v) = (
-                        terms.normal,
-                        (self.scene.camera.eye - p).normalize_or_zero(),
-                    );
-                    let k = env.reflectivity.clamp(0.0, 1.0);
-                    terms.reflected = env.cube.sample(2.0 * n.dot(v) * n - v) * k;
-                    terms.ambient *= 1.0 - k;
-                    terms.diffuse *= 1.0 - k;
+                    self.mirror(&mut terms, env, p);
                 }
                 Some(terms)
             }
         }
+    }
+
+    /// Environment mapping at world point `p`, lit with `terms`: `r = 2(n·v)n − v`, the mirror
+    /// direction of the view vector; a mirror of reflectivity k shows k of what it reflects and
+    /// keeps 1 − k of its own ambient and diffuse light.
+    pub(super) fn mirror(&self, terms: &mut ShadeTerms, env: &Environment, p: Vec3) {
+        let (n, v) = (
+            terms.normal,
+            (self.scene.camera.eye - p).normalize_or_zero(),
+        );
+        let k = env.reflectivity.clamp(0.0, 1.0);
+        terms.reflected = env.cube.sample(2.0 * n.dot(v) * n - v) * k;
+        terms.ambient *= 1.0 - k;
+        terms.diffuse *= 1.0 - k;
+    }
+
+    /// The mean of image pixel `i`'s sample depths.
+    pub(super) fn mean_depth(&self, i: usize) -> f32 {
+        let s = self.settings.samples.count();
+        self.samples.depth[i * s..(i + 1) * s].iter().sum::<f32>() / s as f32
     }
 
     /// The colour of triangle `t` at the fixed-point position `at`, with its lighting terms and
@@ -363,7 +402,7 @@ impl ResolveContext<'_> {
 
     /// Resolves window pixel `(x, y)`, whose image index is `i`; with coarse shading, `block`
     /// is the shading its 2×2 block has so far.
-    fn pixel(
+    pub(super) fn pixel(
         &self,
         x: u32,
         y: u32,
@@ -372,13 +411,12 @@ impl ResolveContext<'_> {
     ) -> ResolvedPixel {
         let s = self.settings.samples.count();
         let tris = &self.samples.triangle[i * s..(i + 1) * s];
-        let depths = &self.samples.depth[i * s..(i + 1) * s];
         let background = self.settings.background;
         let mut out = ResolvedPixel {
             terms: None,
             texture: None,
             coverage: 0,
-            depth: depths.iter().sum::<f32>() / s as f32,
+            depth: self.mean_depth(i),
             primitive: NONE,
             owner: NONE,
             color: background.to_array(),

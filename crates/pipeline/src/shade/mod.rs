@@ -26,6 +26,8 @@ use serde::Serialize;
 
 use crate::light::{Light, Material};
 
+pub mod lanes;
+
 /// Which specular term.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
