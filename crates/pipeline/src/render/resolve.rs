@@ -77,8 +77,8 @@ impl RowOut<'_> {
         s.texturing.clear();
         s.read.clear();
         let coarse = ctx.settings.coarse_shading;
-        // Runs of pixels inside one triangle are shaded together, unless coarse shading
-        // shares 2×2 blocks or every sample is shaded by itself.
+        // Runs of pixels inside one textured triangle are shaded together, unless coarse
+        // shading shares 2×2 blocks or every sample is shaded by itself.
         let runs = !coarse && !ctx.settings.per_sample_shading;
         let mut lanes = [ResolvedPixel::default(); LANES];
         let mut x = 0;
@@ -95,7 +95,8 @@ impl RowOut<'_> {
                 x += n;
                 continue;
             }
-            for x in x..x + run.map_or(1, |(_, n)| n) {
+            let len = run.map_or(1, |(_, n)| n);
+            for x in x..x + len {
                 let block = if coarse && ctx.settings.capture.pixel != Some((x as u32, y)) {
                     s.blocks.get_mut(x / 2)
                 } else {
@@ -104,7 +105,7 @@ impl RowOut<'_> {
                 let r = ctx.pixel(x as u32, y, row * w + x, block);
                 self.store(x, &r, s);
             }
-            x += run.map_or(1, |(_, n)| n);
+            x += len;
         }
         if let Some(out) = &mut self.shading {
             out.store(&s.lit, &s.lighting, &mut s.halves);
