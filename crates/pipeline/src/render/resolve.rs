@@ -84,6 +84,13 @@ impl RowOut<'_> {
         let mut x = 0;
         while x < w {
             let i = row * w + x;
+            // The background (most of a frame) is written without resolving pixel by pixel.
+            let empty = ctx.background_run(i, w - x);
+            if empty > 0 {
+                self.store_background(ctx, x, i, empty, s);
+                x += empty;
+                continue;
+            }
             let run = runs.then(|| ctx.run_at(i, w - x)).flatten();
             // Shorter runs (the small triangles of a dense mesh) cost more in lanes than
             // they save: their pixels take the per-pixel path, without looking again.
@@ -112,6 +119,33 @@ impl RowOut<'_> {
         }
         if let Some(out) = &mut self.texturing {
             out.store(&s.read, &s.uvs, &s.texturing, &mut s.halves);
+        }
+    }
+
+    /// Writes the `n` background pixels from `x` on (image index `i` on): no coverage, no
+    /// owner, the background colour, the mean of the cleared sample depths, no terms and no
+    /// lookup — what [`ResolveContext::pixel`] gives for each of them.
+    fn store_background(
+        &mut self,
+        ctx: &ResolveContext<'_>,
+        x: usize,
+        i: usize,
+        n: usize,
+        s: &mut RowScratch,
+    ) {
+        let span = x..x + n;
+        self.coverage[span.clone()].fill(0);
+        self.primitive[span.clone()].fill(NONE);
+        self.owner[span.clone()].fill(NONE);
+        self.color[span.clone()].fill(ctx.settings.background.to_array());
+        for (k, depth) in self.depth[span].iter_mut().enumerate() {
+            *depth = ctx.mean_depth(i + k);
+        }
+        if self.shading.is_some() {
+            s.lit.resize(s.lit.len() + n, false);
+        }
+        if self.texturing.is_some() {
+            s.read.resize(s.read.len() + n, false);
         }
     }
 
@@ -382,6 +416,14 @@ impl ResolveContext<'_> {
         terms.reflected = env.cube.sample(2.0 * n.dot(v) * n - v) * k;
         terms.ambient *= 1.0 - k;
         terms.diffuse *= 1.0 - k;
+    }
+
+    /// How many consecutive pixels from image index `i` on (at most `room`) have no sample
+    /// covered: the background.
+    pub(super) fn background_run(&self, i: usize, room: usize) -> usize {
+        let s = self.settings.samples.count();
+        let tris = &self.samples.triangle[i * s..(i + room) * s];
+        tris.iter().position(|&t| t != NONE).map_or(room, |k| k / s)
     }
 
     /// The mean of image pixel `i`'s sample depths.

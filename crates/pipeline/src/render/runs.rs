@@ -265,13 +265,13 @@ mod tests {
         }
     }
 
-    /// Every pixel of frames rendered with runs equals the per-pixel resolve of the same
-    /// pixel, bit for bit: colour, depth, owner, lighting terms and texture lookup; and every
-    /// run's resolve equals it too.
+    /// Every pixel of frames rendered with runs and background spans equals the per-pixel
+    /// resolve of the same pixel, bit for bit: colour, depth, owner, primitive, and the kept
+    /// lighting terms and texture lookup; and every run's resolve equals it too.
     #[test]
     fn runs_resolve_every_pixel_as_the_per_pixel_path_does() {
         let scene = scene();
-        let mut runs = 0;
+        let (mut runs, mut background) = (0, 0);
         for (k, (shading, reflection, mipmap, samples)) in [
             (
                 Frequency::Phong,
@@ -351,6 +351,16 @@ mod tests {
                         (want.color, want.depth, want.owner, want.coverage),
                         "setting {k}, pixel ({x}, {y})"
                     );
+                    assert_eq!(px.primitive[i], want.primitive);
+                    if settings.capture == Capture::FULL {
+                        let uv = want.texture.map(|(uv, _)| uv.to_array());
+                        assert_eq!(px.texture_at(i).map(|t| t.uv), uv);
+                        let normal = want.terms.map_or([0.0; 3], |t| t.normal.to_array());
+                        let kept = px.lighting_at(i).map(|l| l.normal);
+                        let half = |v: [f32; 3]| v.map(|c| half::f16::from_f32(c).to_f32());
+                        assert_eq!(kept, (shading != Frequency::Unlit).then(|| half(normal)));
+                    }
+                    background += usize::from(want.coverage == 0);
                     let Some((owner, n)) = ctx.run_at(i, w - x) else {
                         continue;
                     };
@@ -365,5 +375,6 @@ mod tests {
             }
         }
         assert!(runs > 10_000, "only {runs} runs of two pixels or more");
+        assert!(background > 5_000, "only {background} background pixels");
     }
 }
