@@ -265,6 +265,33 @@ mod tests {
         }
     }
 
+    /// Asserts that the frame's buffers hold `want` at pixel `i`: its colour, depth, owner,
+    /// coverage and primitive, and, when every buffer is kept, its texture coordinates and
+    /// (as half floats) its normal.
+    fn assert_kept(
+        px: &crate::capture::PixelBuffers,
+        i: usize,
+        want: &ResolvedPixel,
+        settings: &RenderSettings,
+        at: &str,
+    ) {
+        assert_eq!(
+            (px.color[i], px.depth[i], px.owner[i], px.coverage[i]),
+            (want.color, want.depth, want.owner, want.coverage),
+            "setting {at}"
+        );
+        assert_eq!(px.primitive[i], want.primitive, "setting {at}");
+        if settings.capture == Capture::FULL {
+            let uv = want.texture.map(|(uv, _)| uv.to_array());
+            assert_eq!(px.texture_at(i).map(|t| t.uv), uv, "setting {at}");
+            let normal = want.terms.map_or([0.0; 3], |t| t.normal.to_array());
+            let half = |v: [f32; 3]| v.map(|c| half::f16::from_f32(c).to_f32());
+            let lit = settings.shading != Frequency::Unlit;
+            let kept = px.lighting_at(i).map(|l| l.normal);
+            assert_eq!(kept, lit.then(|| half(normal)), "setting {at}");
+        }
+    }
+
     /// Every pixel of frames rendered with runs and background spans equals the per-pixel
     /// resolve of the same pixel, bit for bit: colour, depth, owner, primitive, and the kept
     /// lighting terms and texture lookup; and every run's resolve equals it too.
@@ -345,21 +372,13 @@ mod tests {
                 for x in 0..w {
                     let i = row * w + x;
                     let want = ctx.pixel(x as u32, y, i, None);
-                    let px = &frame.pixels;
-                    assert_eq!(
-                        (px.color[i], px.depth[i], px.owner[i], px.coverage[i]),
-                        (want.color, want.depth, want.owner, want.coverage),
-                        "setting {k}, pixel ({x}, {y})"
+                    assert_kept(
+                        &frame.pixels,
+                        i,
+                        &want,
+                        &settings,
+                        &format!("{k} ({x}, {y})"),
                     );
-                    assert_eq!(px.primitive[i], want.primitive);
-                    if settings.capture == Capture::FULL {
-                        let uv = want.texture.map(|(uv, _)| uv.to_array());
-                        assert_eq!(px.texture_at(i).map(|t| t.uv), uv);
-                        let normal = want.terms.map_or([0.0; 3], |t| t.normal.to_array());
-                        let kept = px.lighting_at(i).map(|l| l.normal);
-                        let half = |v: [f32; 3]| v.map(|c| half::f16::from_f32(c).to_f32());
-                        assert_eq!(kept, (shading != Frequency::Unlit).then(|| half(normal)));
-                    }
                     background += usize::from(want.coverage == 0);
                     let Some((owner, n)) = ctx.run_at(i, w - x) else {
                         continue;
