@@ -213,7 +213,7 @@ impl FrameCapture {
                 width: 1.0,
             },
             OverlayKind::BoundingBoxes => {
-                let [x0, y0, x1, y1] = t.bbox.map(|v| v as f32);
+                let [x0, y0, x1, y1] = t.bbox.map(f32::from);
                 Shape::Rect {
                     min: [x0, h - (y1 + 1.0)],
                     max: [x1 + 1.0, h - y0],

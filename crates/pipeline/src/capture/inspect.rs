@@ -292,7 +292,7 @@ impl FrameCapture {
         let owner = self.pixels.primitive[((self.height() - 1 - y) * self.width() + x) as usize];
         let mut out = Vec::new();
         for (t, tri) in self.triangles.iter().enumerate() {
-            let [x0, y0, x1, y1] = tri.bbox;
+            let [x0, y0, x1, y1] = tri.bbox.map(u32::from);
             if x < x0 || x > x1 || y < y0 || y > y1 {
                 continue;
             }

@@ -220,7 +220,7 @@ impl SampleBuffers {
         test: DepthTest,
     ) -> RasterCounts {
         let mut counts = RasterCounts::default();
-        let [x0, y0, x1, y1] = tri.bbox;
+        let [x0, y0, x1, y1] = tri.bbox.map(u32::from);
         let plane = tri.depth_plane();
         for y in y0..=y1 {
             for x in x0..=x1 {
@@ -315,7 +315,7 @@ impl Band<'_> {
     ) -> RasterCounts {
         debug_assert_eq!(self.offsets.len(), N);
         let mut counts = RasterCounts::default();
-        let [x0, mut y0, x1, mut y1] = tri.bbox;
+        let [x0, mut y0, x1, mut y1] = tri.bbox.map(u32::from);
         // Window rows y of this band: image rows r = height − 1 − y.
         let top = self.height as usize - 1 - self.first_row;
         let bottom = (top + 1).saturating_sub(self.rows);

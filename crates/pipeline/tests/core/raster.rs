@@ -377,7 +377,7 @@ fn corners_beyond_the_fixed_point_range_are_refused_at_setup() {
     let beyond = I64Vec2::new(MAX_FIXED, MAX_FIXED);
     assert!(!tri.covers(beyond));
     // What the rasterizer's records cost: a million of them are a frame's memory traffic.
-    assert!(std::mem::size_of::<RasterTriangle>() <= 168);
+    assert!(std::mem::size_of::<RasterTriangle>() <= 160);
 }
 
 /// The fast rasterizer bins its triangles in parallel runs of 65 536: with more triangles than
