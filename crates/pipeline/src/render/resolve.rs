@@ -138,8 +138,13 @@ impl RowOut<'_> {
         self.primitive[span.clone()].fill(NONE);
         self.owner[span.clone()].fill(NONE);
         self.color[span.clone()].fill(ctx.settings.background.to_array());
-        for (k, depth) in self.depth[span].iter_mut().enumerate() {
-            *depth = ctx.mean_depth(i + k);
+        if ctx.settings.samples.count() == 1 {
+            // The mean of one sample is that sample (x/1 = x exactly).
+            self.depth[span].copy_from_slice(&ctx.samples.depth[i..i + n]);
+        } else {
+            for (k, depth) in self.depth[span].iter_mut().enumerate() {
+                *depth = ctx.mean_depth(i + k);
+            }
         }
         if self.shading.is_some() {
             s.lit.resize(s.lit.len() + n, false);
@@ -496,14 +501,16 @@ impl ResolveContext<'_> {
                 ..out
             };
         }
-        // The owning primitive: most samples, ties to the earliest sample.
+        // The owning primitive: most samples, ties to the earliest sample. Each sample's
+        // primitive is looked up once (at most 16 samples a pixel).
+        let mut prims = [NONE; 16];
+        for (p, &t) in prims.iter_mut().zip(tris).filter(|(_, t)| **t != NONE) {
+            *p = self.triangles[t as usize].primitive;
+        }
+        let prims = &prims[..s];
         let mut best = (0usize, NONE);
-        for &t in tris.iter().filter(|&&t| t != NONE) {
-            let prim = self.triangles[t as usize].primitive;
-            let count = tris
-                .iter()
-                .filter(|&&u| u != NONE && self.triangles[u as usize].primitive == prim)
-                .count();
+        for (&t, &prim) in tris.iter().zip(prims).filter(|(t, _)| **t != NONE) {
+            let count = prims.iter().filter(|&&p| p == prim).count();
             if count > best.0 {
                 best = (count, t);
             }

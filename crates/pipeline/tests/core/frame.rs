@@ -1,7 +1,7 @@
 //! Whole frames at the edges of the rules: a triangle across the near plane and across w = 0,
 //! perspective-correct interpolation on a grazing plane, the depth test in any order,
-//! multisampling and supersampling, the fragment replay, linear depth, the capture's memory
-//! bound, and coordinates far out of range.
+//! multisampling and supersampling, the owner of a shared pixel, the fragment replay, linear
+//! depth, the capture's memory bound, and coordinates far out of range.
 
 use glam::{Vec2, Vec3};
 use pipeline::camera::{Camera, Projection};
@@ -474,5 +474,48 @@ fn huge_and_coincident_coordinates_give_no_nan() {
                 .all(|b| b.perspective.iter().chain(&b.affine).all(|v| v.is_finite()));
         assert!(finite, "{positions:?}: a NaN or infinity in the buffers");
         assert!(c.pixel_record(16, 16).is_some());
+    }
+}
+
+/// A pixel two primitives share belongs to the one that covers most of its samples, and on a
+/// tie to the one at its earliest sample (not to the lower id). The 4× pattern's samples lie
+/// at heights 1/8, 3/8, 5/8, 7/8 of the pixel (samples 0, 1, 2, 3): a horizontal edge at 1/4
+/// leaves sample 0 alone below it, one at 1/2 splits them two and two.
+#[test]
+fn a_shared_pixel_belongs_to_the_primitive_with_most_samples_ties_to_the_earliest() {
+    for (edge, above_first, above_owns) in [
+        (8.25, false, true),
+        (8.25, true, true),
+        (8.5, true, false),
+        (8.5, false, false),
+    ] {
+        let below = [
+            Vec2::new(50.0, -300.0),
+            Vec2::new(200.0, edge),
+            Vec2::new(-100.0, edge),
+        ];
+        let above = [
+            Vec2::new(-100.0, edge),
+            Vec2::new(200.0, edge),
+            Vec2::new(50.0, 300.0),
+        ];
+        let order = if above_first {
+            [above, below]
+        } else {
+            [below, above]
+        };
+        let (scene, mut settings) = pixel_scene(16, 16, &order);
+        settings.samples = Samples::X4;
+        let c = render(&scene, &settings);
+        let above_id = u32::from(!above_first);
+        let want = if above_owns { above_id } else { 1 - above_id };
+        for x in 0..16 {
+            let i = (7 * 16 + x) as usize;
+            assert_eq!(c.pixels.coverage[i], 4, "edge {edge}, pixel ({x}, 8)");
+            assert_eq!(
+                c.pixels.primitive[i], want,
+                "edge {edge}, above first: {above_first}, pixel ({x}, 8)"
+            );
+        }
     }
 }
