@@ -10,6 +10,7 @@ use pipeline::capture::Matrices;
 use pipeline::transform::NamedMatrix;
 
 use crate::lesson::Lesson;
+use crate::vocabulary::notation::{self, Node};
 use crate::vocabulary::{Lang, Stage, num};
 
 /// An encoded image.
@@ -75,24 +76,49 @@ fn esc(s: &str) -> String {
         .replace('"', "&quot;")
 }
 
-/// The narration's simple markdown as HTML: paragraphs, `- ` bullets, `**formulas**`.
+/// Typeset notation ([`notation`]) as HTML, as the app lays it out: scripts as `<sub>` and
+/// `<sup>`, a fraction's parts stacked over a bar, code in monospace, a narration's formula
+/// highlighted.
+fn typeset(nodes: &[Node]) -> String {
+    let mut s = String::new();
+    for n in nodes {
+        match n {
+            Node::Text(t) => s.push_str(&esc(t)),
+            Node::Code(t) => {
+                let _ = write!(s, "<code>{}</code>", esc(t));
+            }
+            Node::Script { base, sub, sup } => {
+                s.push_str(&typeset(base));
+                if let Some(x) = sub {
+                    let _ = write!(s, "<sub>{}</sub>", typeset(x));
+                }
+                if let Some(x) = sup {
+                    let _ = write!(s, "<sup>{}</sup>", typeset(x));
+                }
+            }
+            Node::Frac { num, den } => {
+                let _ = write!(
+                    s,
+                    "<span class=\"frac\"><span>{}</span><span>{}</span></span>",
+                    typeset(num),
+                    typeset(den)
+                );
+            }
+            Node::Formula(inner) => {
+                let _ = write!(s, "<strong>{}</strong>", typeset(inner));
+            }
+        }
+    }
+    s
+}
+
+/// The narration's simple markdown as HTML: paragraphs, `- ` bullets, `**formulas**`, each
+/// line typeset ([`notation::parse_paragraph`]).
 fn markdown(text: &str) -> String {
     let mut out = String::new();
     for paragraph in text.split("\n\n").map(str::trim).filter(|p| !p.is_empty()) {
         let lines: Vec<&str> = paragraph.lines().map(str::trim).collect();
-        let inline = |l: &str| {
-            esc(l)
-                .split("**")
-                .enumerate()
-                .map(|(i, part)| {
-                    if i % 2 == 1 {
-                        format!("<strong>{part}</strong>")
-                    } else {
-                        part.to_owned()
-                    }
-                })
-                .collect::<String>()
-        };
+        let inline = |l: &str| typeset(&notation::parse_paragraph(l));
         if lines.iter().all(|l| l.starts_with("- ")) {
             out.push_str("<ul>");
             for l in lines {
@@ -110,8 +136,8 @@ fn matrix_html(m: &NamedMatrix, lang: Lang) -> String {
     let rows = m.matrix.transpose().to_cols_array_2d();
     let mut s = format!(
         "<figure class=\"m\"><figcaption><b>{}</b><br><i>{}</i></figcaption><table>",
-        esc(&m.name),
-        esc(&lang.formula(&m.formula))
+        typeset(&notation::parse(&m.name, true)),
+        typeset(&notation::parse(&lang.formula(&m.formula), true))
     );
     for r in rows {
         s.push_str("<tr>");
@@ -169,6 +195,9 @@ img{max-width:100%;border:1px solid #aaa} figure{margin:.6em 0} figcaption{font-
 .film{display:grid;grid-template-columns:repeat(5,1fr);gap:.4em} .film figure{margin:0} .film img{width:100%}
 figure.m{display:inline-block;margin:.4em 1em .4em 0;vertical-align:top} figure.m table{border-collapse:collapse;font-family:monospace}
 figure.m td{padding:.1em .5em;text-align:right;border-left:1px solid #ddd} strong{color:#8a3b00}
+sub,sup{font-size:75%;line-height:0} code{font-size:92%;background:#f0f0ea;padding:0 .2em}
+.frac{display:inline-flex;flex-direction:column;vertical-align:middle;text-align:center;font-size:88%;margin:0 .15em;line-height:1.15}
+.frac>span:first-child{border-bottom:1px solid currentColor;padding:0 .2em}
 .question{background:#f6f6f0;padding:.5em 1em;margin-top:1em} .answer{border-left:4px solid #8a3b00;padding:.2em 1em;margin:.5em 0}
 details{margin-top:.4em} .key{display:inline-block;background:#8a3b00;color:#fff;padding:.1em .6em;border-radius:.3em}
 @media print{
@@ -200,7 +229,7 @@ pub fn html(lesson: &Lesson, pages: &[StepPage], lang: Lang, answers: bool) -> S
         h,
         "<h1>{}</h1><p class=\"summary\">{}</p>",
         esc(lesson.title.get(lang)),
-        esc(lesson.summary.get(lang))
+        typeset(&notation::parse_paragraph(lesson.summary.get(lang)))
     );
     if answers {
         let _ = writeln!(
@@ -294,7 +323,7 @@ fn step_html(
             h,
             "<div class=\"question\"><b class=\"ui\">{}</b> {}",
             t("Question:", "思考题："),
-            esc(q.get(lang))
+            typeset(&notation::parse_paragraph(q.get(lang)))
         );
         if let Some(a) = &step.answer {
             if answers {
@@ -316,4 +345,29 @@ fn step_html(
         h.push_str("</div>\n");
     }
     h.push_str("</section>\n");
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Narration, questions and the matrices' formulas are typeset as the app lays them out,
+    /// not printed with their marks.
+    #[test]
+    fn formulas_are_typeset_not_printed_with_their_marks() {
+        let html = markdown("Depth **z_ndc = (f+n)/(f−n)** feeds `depth_test`; x^2 < y.");
+        let frac = "<span class=\"frac\"><span>f+n</span><span>f−n</span></span>";
+        assert!(
+            html.contains(&format!("<strong>z<sub>ndc</sub> = {frac}</strong>")),
+            "{html}"
+        );
+        assert!(html.contains("<code>depth_test</code>"), "{html}");
+        assert!(html.contains("x<sup>2</sup> &lt; y."), "{html}");
+        for mark in ["**", "_ndc", "^2", "`"] {
+            assert!(!html.contains(mark), "{mark} in {html}");
+        }
+        let m = NamedMatrix::new("M_persp", "M_{persp→ortho}", glam::Mat4::IDENTITY);
+        let figure = matrix_html(&m, Lang::En);
+        assert!(figure.contains("M<sub>persp→ortho</sub>"), "{figure}");
+    }
 }
