@@ -2,6 +2,8 @@
 //! depth, owner, colour) and the lighting and texturing terms kept as half floats, with the
 //! rows the resolve writes in parallel and the values of one pixel read back as 32-bit floats.
 
+use std::ops::Range;
+
 use half::f16;
 use serde::Serialize;
 
@@ -297,23 +299,47 @@ impl TextureRow<'_> {
         let mut lookups = uvs
             .iter()
             .zip(convert(floats, halves).chunks_exact(TEXTURE_HALVES));
-        let none = f16::from_f32(NO_LOOKUP[1]);
-        for (x, &read) in read.iter().enumerate() {
-            let lookup = if read { lookups.next() } else { None };
-            let Some((uv, h)) = lookup else {
-                self.uv[x] = [0.0; 2];
-                (self.lod[x], self.level[x]) = (f16::ZERO, none);
-                self.texel[x] = [f16::ZERO; 3];
-                self.footprint[x] = [f16::ZERO; 4];
-                continue;
-            };
-            self.uv[x] = *uv;
-            self.lod[x] = h[0];
-            self.level[x] = h[1];
-            self.texel[x] = [h[2], h[3], h[4]];
-            self.footprint[x] = [h[5], h[6], h[7], h[8]];
+        for (read, span) in spans(read) {
+            for x in span.clone().filter(|_| read) {
+                let Some((uv, h)) = lookups.next() else {
+                    self.none(x..x + 1);
+                    continue;
+                };
+                self.uv[x] = *uv;
+                self.lod[x] = h[0];
+                self.level[x] = h[1];
+                self.texel[x] = [h[2], h[3], h[4]];
+                self.footprint[x] = [h[5], h[6], h[7], h[8]];
+            }
+            if !read {
+                self.none(span);
+            }
         }
     }
+
+    /// Pixels `span` read no texture: [`NO_LOOKUP`].
+    fn none(&mut self, span: Range<usize>) {
+        self.uv[span.clone()].fill([0.0; 2]);
+        self.lod[span.clone()].fill(f16::ZERO);
+        self.level[span.clone()].fill(f16::from_f32(NO_LOOKUP[1]));
+        self.texel[span.clone()].fill([f16::ZERO; 3]);
+        self.footprint[span].fill([f16::ZERO; 4]);
+    }
+}
+
+/// The maximal runs of equal flags, each with its flag: a row's pixels with and without terms
+/// (the background is one long run, written with fills).
+fn spans(flags: &[bool]) -> impl Iterator<Item = (bool, Range<usize>)> + '_ {
+    let mut x = 0;
+    std::iter::from_fn(move || {
+        let &first = flags.get(x)?;
+        let n = flags[x..]
+            .iter()
+            .position(|&f| f != first)
+            .unwrap_or(flags.len() - x);
+        x += n;
+        Some((first, x - n..x))
+    })
 }
 
 /// `floats` as half floats, in `halves`' storage.
@@ -356,28 +382,39 @@ impl ShadingRow<'_> {
     /// of a frame) stores zeros, without a conversion.
     pub fn store(&mut self, lit: &[bool], floats: &[f32], halves: &mut Vec<f16>) {
         let mut terms = convert(floats, halves).chunks_exact(LIGHTING_HALVES);
-        for (x, &lit) in lit.iter().enumerate() {
-            let Some(h) = (if lit { terms.next() } else { None }) else {
-                for v in [
-                    &mut self.ambient[x],
-                    &mut self.diffuse[x],
-                    &mut self.specular[x],
-                    &mut self.normal[x],
-                    &mut self.reflected[x],
-                ] {
-                    *v = [f16::ZERO; 3];
-                }
-                (self.n_dot_l[x], self.n_dot_h[x]) = (f16::ZERO, f16::ZERO);
-                continue;
-            };
-            self.ambient[x] = [h[0], h[1], h[2]];
-            self.diffuse[x] = [h[3], h[4], h[5]];
-            self.specular[x] = [h[6], h[7], h[8]];
-            self.normal[x] = [h[9], h[10], h[11]];
-            self.reflected[x] = [h[12], h[13], h[14]];
-            self.n_dot_l[x] = h[15];
-            self.n_dot_h[x] = h[16];
+        for (lit, span) in spans(lit) {
+            for x in span.clone().filter(|_| lit) {
+                let Some(h) = terms.next() else {
+                    self.unlit(x..x + 1);
+                    continue;
+                };
+                self.ambient[x] = [h[0], h[1], h[2]];
+                self.diffuse[x] = [h[3], h[4], h[5]];
+                self.specular[x] = [h[6], h[7], h[8]];
+                self.normal[x] = [h[9], h[10], h[11]];
+                self.reflected[x] = [h[12], h[13], h[14]];
+                self.n_dot_l[x] = h[15];
+                self.n_dot_h[x] = h[16];
+            }
+            if !lit {
+                self.unlit(span);
+            }
         }
+    }
+
+    /// Pixels `span` are not lit: zeros.
+    fn unlit(&mut self, span: Range<usize>) {
+        for v in [
+            &mut self.ambient,
+            &mut self.diffuse,
+            &mut self.specular,
+            &mut self.normal,
+            &mut self.reflected,
+        ] {
+            v[span.clone()].fill([f16::ZERO; 3]);
+        }
+        self.n_dot_l[span.clone()].fill(f16::ZERO);
+        self.n_dot_h[span].fill(f16::ZERO);
     }
 }
 
