@@ -228,7 +228,7 @@ pub fn html(lesson: &Lesson, pages: &[StepPage], lang: Lang, answers: bool) -> S
     let _ = writeln!(
         h,
         "<h1>{}</h1><p class=\"summary\">{}</p>",
-        esc(lesson.title.get(lang)),
+        typeset(&notation::parse_paragraph(lesson.title.get(lang))),
         typeset(&notation::parse_paragraph(lesson.summary.get(lang)))
     );
     if answers {
@@ -271,8 +271,9 @@ fn step_html(
     let title = esc(step.title.get(lang));
     let _ = write!(
         h,
-        "<section id=\"step-{n}\"><h2>{n}. {title}</h2>\n{body}",
+        "<section id=\"step-{n}\"><h2>{n}. {heading}</h2>\n{body}",
         n = page.index + 1,
+        heading = typeset(&notation::parse_paragraph(step.title.get(lang))),
         body = markdown(step.narration.get(lang))
     );
     let _ = writeln!(
