@@ -70,6 +70,10 @@ impl Default for RenderSettings {
 
 /// The largest width or height of a viewport.
 pub const MAX_VIEWPORT_SIDE: u32 = 16_384;
+
+// A raster triangle's bounding box (`RasterTriangle::bbox`) is 16 bits a coordinate.
+const _: () = assert!(MAX_VIEWPORT_SIDE <= 1 << 16);
+
 /// The most memory one capture may take, by [`RenderSettings::capture_bytes`]: 2 GiB, so that
 /// a mistaken size is refused with a message instead of exhausting the machine.
 pub const MAX_CAPTURE_BYTES: u64 = 2 << 30;

@@ -61,9 +61,6 @@ pub fn snap(v: f32) -> i64 {
     }
 }
 
-// The bounding box's 16 bits hold every pixel of the largest viewport.
-const _: () = assert!(crate::settings::MAX_VIEWPORT_SIDE <= 1 << 16);
-
 /// A triangle ready to be rasterized: snapped, counter-clockwise, with its edge equations.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct RasterTriangle {
@@ -76,7 +73,7 @@ pub struct RasterTriangle {
     /// Barycentric weights of the corners with respect to the original triangle.
     pub bary: [Vec3; 3],
     /// Pixel bounding box `[x_min, y_min, x_max, y_max]` (inclusive, window pixels, y up),
-    /// clamped to the viewport, whose sides ([`crate::settings::MAX_VIEWPORT_SIDE`]) fit 16 bits: 8 bytes less
+    /// clamped to the viewport, whose sides (at most 16 384 pixels) fit 16 bits: 8 bytes less
     /// of the memory a million triangles are written, moved and read through.
     pub bbox: [u16; 4],
     #[serde(skip)]
