@@ -26,7 +26,13 @@ pub fn slide(lesson: &Lesson, k: usize, picture: &RgbaImage, lang: Lang) -> Rgba
     let mut img = RgbaImage::from_pixel(WIDTH, HEIGHT, Rgba([r, g, b, 255]));
     let margin = 48.0;
     let title = format!("{}. {}", k + 1, step.title.get(lang));
-    text::draw(&mut img, margin, 92.0, 56.0, ACCENT, &title);
+    text::draw_runs(
+        &mut img,
+        margin,
+        92.0,
+        56.0,
+        &text::marked_runs(&title, ACCENT, ACCENT),
+    );
     let footer = format!(
         "{} · {} / {}",
         lesson.title.get(lang),

@@ -6,6 +6,8 @@
 use ab_glyph::{Font, FontRef, PxScale, ScaleFont};
 use image::{Rgba, RgbaImage};
 
+use crate::vocabulary::notation::{self, Node};
+
 /// The fonts, first the one tried first; parsed once. After the CJK font, the fallbacks the app's
 /// egui has too (Hack, Ubuntu Light), so a handout has every glyph the app shows.
 fn fonts() -> &'static [FontRef<'static>; 3] {
@@ -22,13 +24,41 @@ fn fonts() -> &'static [FontRef<'static>; 3] {
     })
 }
 
-/// A run of text of one colour.
+/// A run of text of one colour, on the line or as a script.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Run {
     /// The text.
     pub text: String,
     /// Its colour.
     pub color: [u8; 3],
+    /// On the baseline, or a subscript or superscript.
+    pub script: Script,
+}
+
+/// Where a run sits: scripts are [`SCRIPT_SCALE`] of the type size, lowered or raised.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Script {
+    /// On the baseline.
+    #[default]
+    Base,
+    /// Below it.
+    Sub,
+    /// Above it.
+    Sup,
+}
+
+/// A script's size relative to the text's.
+const SCRIPT_SCALE: f32 = 0.7;
+
+impl Script {
+    /// The size and the baseline's shift (down positive) of this script in text of `size`.
+    fn placed(self, size: f32) -> (f32, f32) {
+        match self {
+            Self::Base => (size, 0.0),
+            Self::Sub => (size * SCRIPT_SCALE, size * 0.22),
+            Self::Sup => (size * SCRIPT_SCALE, -size * 0.38),
+        }
+    }
 }
 
 /// The font that has `c`, and its glyph.
@@ -92,10 +122,18 @@ pub fn draw(img: &mut RgbaImage, x: f32, y: f32, size: f32, color: [u8; 3], text
     pen
 }
 
-/// Draws runs one after another on one line; returns the x after them.
+/// Draws runs one after another on one line (scripts smaller, lowered or raised); returns the x
+/// after them.
 pub fn draw_runs(img: &mut RgbaImage, x: f32, y: f32, size: f32, runs: &[Run]) -> f32 {
-    runs.iter()
-        .fold(x, |pen, r| draw(img, pen, y, size, r.color, &r.text))
+    runs.iter().fold(x, |pen, r| {
+        let (size, shift) = r.script.placed(size);
+        draw(img, pen, y + shift, size, r.color, &r.text)
+    })
+}
+
+/// The width of a run in text of `size`.
+fn run_width(text: &str, script: Script, size: f32) -> f32 {
+    width(text, script.placed(size).0)
 }
 
 /// Whether a line may break before or after `c` without a space (Chinese and Japanese text).
@@ -103,64 +141,132 @@ fn breaks_anywhere(c: char) -> bool {
     matches!(c as u32, 0x2E80..=0x9FFF | 0xF900..=0xFAFF | 0xFF00..=0xFFEF)
 }
 
+/// Whether `c` is Chinese punctuation that may not begin a line (it stays with what it follows).
+fn closes(c: char) -> bool {
+    matches!(
+        c,
+        '，' | '。' | '、' | '；' | '：' | '！' | '？' | '）' | '」' | '』' | '》' | '】'
+    )
+}
+
 /// The runs cut into lines no wider than `max` at `size` (a word wider than a line stays whole).
 #[must_use]
 pub fn wrap(runs: &[Run], size: f32, max: f32) -> Vec<Vec<Run>> {
-    // Pieces that do not break inside: a word with the spaces after it, or one CJK character.
-    let mut pieces: Vec<Run> = Vec::new();
+    // Pieces that do not break inside: a word with the spaces after it, or one CJK character; a
+    // piece may hold several runs (a symbol and its subscript, a formula and its full stop).
+    let mut pieces: Vec<Vec<Run>> = Vec::new();
+    let mut cur: Vec<Run> = Vec::new();
+    let mut after_space = false;
     for r in runs {
-        let mut cur = String::new();
-        let mut after_space = false;
         for c in r.text.chars() {
-            let cut = breaks_anywhere(c) || (after_space && !c.is_whitespace());
+            let cut = !closes(c) && (breaks_anywhere(c) || (after_space && !c.is_whitespace()));
             if cut && !cur.is_empty() {
-                pieces.push(Run {
-                    text: std::mem::take(&mut cur),
-                    color: r.color,
-                });
+                pieces.push(std::mem::take(&mut cur));
             }
-            cur.push(c);
+            push(&mut cur, c.encode_utf8(&mut [0; 4]), r.color, r.script);
             after_space = c.is_whitespace() || breaks_anywhere(c);
         }
-        if !cur.is_empty() {
-            pieces.push(Run {
-                text: cur,
-                color: r.color,
-            });
-        }
+    }
+    if !cur.is_empty() {
+        pieces.push(cur);
     }
     let mut lines: Vec<Vec<Run>> = vec![Vec::new()];
     let mut used = 0.0;
-    for p in pieces {
-        let w = width(&p.text, size);
-        let trimmed = width(p.text.trim_end(), size);
-        let line = lines.last_mut().expect("a line");
-        if used + trimmed > max && !line.is_empty() {
+    for piece in pieces {
+        let widths = |trim: bool| -> f32 {
+            piece
+                .iter()
+                .enumerate()
+                .map(|(k, r)| {
+                    let text = if trim && k + 1 == piece.len() {
+                        r.text.trim_end()
+                    } else {
+                        &r.text
+                    };
+                    run_width(text, r.script, size)
+                })
+                .sum()
+        };
+        let (w, trimmed) = (widths(false), widths(true));
+        if used + trimmed > max && !lines.last().is_some_and(Vec::is_empty) {
             lines.push(Vec::new());
             used = 0.0;
         }
         let line = lines.last_mut().expect("a line");
-        match line.last_mut() {
-            Some(last) if last.color == p.color => last.text.push_str(&p.text),
-            _ => line.push(p),
+        for r in &piece {
+            push(line, &r.text, r.color, r.script);
         }
         used += w;
     }
     lines
 }
 
-/// `text` with its `**formulas**` in `accent`, the rest in `color` (the narration's markup); the
-/// backticks around `code` are markup too and are left out.
+/// `text` typeset as runs ([`notation::parse_paragraph`]): its `**formulas**` in `accent`, the
+/// rest in `color`; subscripts and superscripts as script runs; a fraction on one line,
+/// `num/den`, each part bracketed when it is more than one symbol; `code` as written, without
+/// its backticks.
 #[must_use]
 pub fn marked_runs(text: &str, color: [u8; 3], accent: [u8; 3]) -> Vec<Run> {
-    text.split("**")
-        .enumerate()
-        .filter(|(_, t)| !t.is_empty())
-        .map(|(i, t)| Run {
-            text: t.replace('`', ""),
-            color: if i % 2 == 1 { accent } else { color },
-        })
-        .collect()
+    let mut out: Vec<Run> = Vec::new();
+    push_nodes(
+        &mut out,
+        &notation::parse_paragraph(text),
+        color,
+        accent,
+        Script::Base,
+    );
+    out
+}
+
+/// Appends `text` of `color` at `script`, continuing the last run when it is of the same colour
+/// and place.
+fn push(out: &mut Vec<Run>, text: &str, color: [u8; 3], script: Script) {
+    match out.last_mut() {
+        Some(last) if (last.color, last.script) == (color, script) => last.text.push_str(text),
+        _ if text.is_empty() => {}
+        _ => out.push(Run {
+            text: text.to_owned(),
+            color,
+            script,
+        }),
+    }
+}
+
+/// Appends `nodes` as runs of `color` at `script` (a formula's in `accent`), merging text that
+/// continues a run of the same colour and place.
+fn push_nodes(out: &mut Vec<Run>, nodes: &[Node], color: [u8; 3], accent: [u8; 3], script: Script) {
+    for n in nodes {
+        match n {
+            Node::Text(t) | Node::Code(t) => push(out, t, color, script),
+            // Scripts of scripts stay at the script's size.
+            Node::Script { base, sub, sup } => {
+                push_nodes(out, base, color, accent, script);
+                let inner = |s: Script| if script == Script::Base { s } else { script };
+                for (part, place) in [(sub, Script::Sub), (sup, Script::Sup)] {
+                    if let Some(part) = part {
+                        push_nodes(out, part, color, accent, inner(place));
+                    }
+                }
+            }
+            Node::Frac { num, den } => {
+                for (k, part) in [num, den].into_iter().enumerate() {
+                    if k == 1 {
+                        push(out, "/", color, script);
+                    }
+                    let plain = notation::plain_text(part);
+                    let bracket = !plain.chars().all(char::is_alphanumeric);
+                    if bracket {
+                        push(out, "(", color, script);
+                    }
+                    push_nodes(out, part, color, accent, script);
+                    if bracket {
+                        push(out, ")", color, script);
+                    }
+                }
+            }
+            Node::Formula(inner) => push_nodes(out, inner, accent, accent, script),
+        }
+    }
 }
 
 /// Fills a rectangle.
@@ -207,6 +313,55 @@ mod tests {
         let zh = marked_runs("透视投影把视锥变成立方体", [0; 3], [0; 3]);
         let lines = wrap(&zh, 20.0, width("透视投影", 20.0) + 1.0);
         assert_eq!(lines.len(), 3);
+        // Chinese punctuation never begins a line: it goes with the character before it.
+        let zh = marked_runs("透视投影。视锥", [0; 3], [0; 3]);
+        let lines = wrap(&zh, 20.0, width("透视投影", 20.0) + 1.0);
+        let first: String = lines[0].iter().map(|r| r.text.as_str()).collect();
+        assert_eq!(first, "透视投");
+    }
+
+    /// Slides typeset as the app and the handout do: scripts smaller and shifted, a fraction on
+    /// one line with its parts bracketed where they are more than one symbol.
+    #[test]
+    fn scripts_are_runs_of_their_own_and_fractions_keep_their_brackets() {
+        let (ink, accent) = ([1; 3], [2; 3]);
+        let r = marked_runs("so **z_ndc = (f+n)/(f−n)** and x^2", ink, accent);
+        let got: Vec<(&str, [u8; 3], Script)> = r
+            .iter()
+            .map(|r| (r.text.as_str(), r.color, r.script))
+            .collect();
+        assert_eq!(
+            got,
+            [
+                ("so ", ink, Script::Base),
+                ("z", accent, Script::Base),
+                ("ndc", accent, Script::Sub),
+                (" = (f+n)/(f−n)", accent, Script::Base),
+                (" and x", ink, Script::Base),
+                ("2", ink, Script::Sup),
+            ]
+        );
+        // A script is drawn smaller: narrower than the same text on the line.
+        assert!(run_width("ndc", Script::Sub, 40.0) < width("ndc", 40.0) * 0.8);
+        let mut img = RgbaImage::from_pixel(200, 80, Rgba([0, 0, 0, 255]));
+        draw_runs(&mut img, 2.0, 50.0, 40.0, &r[1..3]);
+        let lowest = img
+            .enumerate_pixels()
+            .filter(|(_, _, p)| p.0[0] > 0)
+            .map(|(_, y, _)| y)
+            .max();
+        assert!(
+            lowest.is_some_and(|y| y > 50),
+            "the subscript goes below the baseline"
+        );
+        // A line never breaks between a symbol, its subscript and the full stop after them.
+        let runs = marked_runs("then apply M_ortho.", ink, accent);
+        let lines = wrap(&runs, 20.0, width("then apply M", 20.0) + 1.0);
+        let texts: Vec<String> = lines
+            .iter()
+            .map(|l| l.iter().map(|r| r.text.as_str()).collect::<String>())
+            .collect();
+        assert_eq!(texts, ["then apply ", "Mortho."]);
     }
 
     #[test]

@@ -34,8 +34,8 @@ pub fn ui(ui: &mut Ui, session: &Session, capture: &FrameCapture) {
             note(
                 ui,
                 lang.tr(
-                    "GAMES101's M_viewport maps x and y the same way and leaves z unchanged; OpenGL (and pipelens) also maps z from [−1, 1] to z_w ∈ [0, 1]. (The notes label this matrix M_persp→ortho by mistake.)",
-                    "GAMES101 的 M_viewport 对 x、y 的变换相同而 z 保持不变；OpenGL（以及 pipelens）还把 z 从 [−1, 1] 映射到 z_w ∈ [0, 1]。（笔记中把该矩阵误标为 M_persp→ortho。）",
+                    "GAMES101's M_viewport maps x and y the same way and leaves z unchanged; OpenGL (and pipelens) also maps z from [−1, 1] to z_w ∈ [0, 1]. (The notes label this matrix M_{persp→ortho} by mistake.)",
+                    "GAMES101 的 M_viewport 对 x、y 的变换相同而 z 保持不变；OpenGL（以及 pipelens）还把 z 从 [−1, 1] 映射到 z_w ∈ [0, 1]。（笔记中把该矩阵误标为 M_{persp→ortho}。）",
                 ),
             );
         }
