@@ -300,7 +300,11 @@ impl TextureRow<'_> {
             .iter()
             .zip(convert(floats, halves).chunks_exact(TEXTURE_HALVES));
         for (read, span) in spans(read) {
-            for x in span.clone().filter(|_| read) {
+            if !read {
+                self.none(span);
+                continue;
+            }
+            for x in span {
                 let Some((uv, h)) = lookups.next() else {
                     self.none(x..x + 1);
                     continue;
@@ -310,9 +314,6 @@ impl TextureRow<'_> {
                 self.level[x] = h[1];
                 self.texel[x] = [h[2], h[3], h[4]];
                 self.footprint[x] = [h[5], h[6], h[7], h[8]];
-            }
-            if !read {
-                self.none(span);
             }
         }
     }
@@ -383,7 +384,11 @@ impl ShadingRow<'_> {
     pub fn store(&mut self, lit: &[bool], floats: &[f32], halves: &mut Vec<f16>) {
         let mut terms = convert(floats, halves).chunks_exact(LIGHTING_HALVES);
         for (lit, span) in spans(lit) {
-            for x in span.clone().filter(|_| lit) {
+            if !lit {
+                self.unlit(span);
+                continue;
+            }
+            for x in span {
                 let Some(h) = terms.next() else {
                     self.unlit(x..x + 1);
                     continue;
@@ -395,9 +400,6 @@ impl ShadingRow<'_> {
                 self.reflected[x] = [h[12], h[13], h[14]];
                 self.n_dot_l[x] = h[15];
                 self.n_dot_h[x] = h[16];
-            }
-            if !lit {
-                self.unlit(span);
             }
         }
     }
