@@ -96,24 +96,41 @@ impl Level {
     /// Texel `(i, j)` with wrapping.
     #[must_use]
     pub fn texel(&self, i: i64, j: i64, wrap: Wrap) -> Vec3 {
+        self.texels[self.texel_index(i, j, wrap)]
+    }
+
+    /// Where texel `(i, j)`, wrapped, is in [`Self::texels`].
+    fn texel_index(&self, i: i64, j: i64, wrap: Wrap) -> usize {
         let (i, j) = (wrap.index(i, self.width), wrap.index(j, self.height));
-        self.texels[j * self.width as usize + i]
+        j * self.width as usize + i
     }
 
     /// Nearest filtering at `(u, v)`.
     #[must_use]
     pub fn nearest(&self, uv: Vec2, wrap: Wrap) -> Vec3 {
+        self.texels[self.nearest_index(uv, wrap)]
+    }
+
+    /// Where the texel nearest filtering reads at `(u, v)` is: `(⌊u·w⌋, ⌊v·h⌋)`, wrapped.
+    fn nearest_index(&self, uv: Vec2, wrap: Wrap) -> usize {
         let x = (f64::from(uv.x) * f64::from(self.width)).floor() as i64;
         let y = (f64::from(uv.y) * f64::from(self.height)).floor() as i64;
-        self.texel(x, y, wrap)
+        self.texel_index(x, y, wrap)
     }
 
     /// Bilinear filtering at `(u, v)`.
     #[must_use]
     pub fn bilinear(&self, uv: Vec2, wrap: Wrap) -> Vec3 {
+        self.bilinear_of(uv, wrap, |k| self.texels[k])
+    }
+
+    /// Bilinear filtering at `(u, v)` of the texels `texel(k)` gives for index `k` of
+    /// [`Self::texels`] (the texels themselves, or their 8-bit copy).
+    #[inline]
+    fn bilinear_of(&self, uv: Vec2, wrap: Wrap, texel: impl Fn(usize) -> Vec3) -> Vec3 {
         let b = self.bilinear_taps(uv, wrap);
         let w = self.width as usize;
-        let at = |i: usize, j: usize| self.texels[j * w + i];
+        let at = |i: usize, j: usize| texel(j * w + i);
         let ([i0, i1], [j0, j1]) = (b.columns, b.rows);
         let bottom = at(i0, j0).lerp(at(i1, j0), b.s);
         let top = at(i0, j1).lerp(at(i1, j1), b.s);
@@ -180,6 +197,47 @@ impl Level {
     }
 }
 
+/// `k/255` for each 8-bit value `k`: the `f32` that `image` makes of an 8-bit component, so
+/// that an 8-bit texel read through this table is the `f32` texel, bit for bit.
+const UNIT_OF_BYTE: [f32; 256] = {
+    let mut table = [0.0; 256];
+    let mut k = 0;
+    while k < 256 {
+        table[k] = k as f32 / 255.0;
+        k += 1;
+    }
+    table
+};
+
+impl Level {
+    /// The texels as 8-bit RGB (and a byte of padding) when every component is exactly a
+    /// `k/255` (a level loaded from an 8-bit image): 4 bytes a texel instead of 12, so a
+    /// minified lookup, which strides across the level, misses the cache a third as often.
+    fn as_bytes(&self) -> Option<Box<[[u8; 4]]>> {
+        let byte = |c: f32| {
+            let k = (c * 255.0).round();
+            (0.0..=255.0)
+                .contains(&k)
+                .then_some(k as u8)
+                .filter(|&k| UNIT_OF_BYTE[usize::from(k)].to_bits() == c.to_bits())
+        };
+        self.texels
+            .iter()
+            .map(|t| Some([byte(t.x)?, byte(t.y)?, byte(t.z)?, 0]))
+            .collect()
+    }
+}
+
+/// An 8-bit texel as the `f32` texel it copies.
+#[inline]
+fn unpack(b: [u8; 4]) -> Vec3 {
+    Vec3::new(
+        UNIT_OF_BYTE[usize::from(b[0])],
+        UNIT_OF_BYTE[usize::from(b[1])],
+        UNIT_OF_BYTE[usize::from(b[2])],
+    )
+}
+
 /// The texels a bilinear lookup reads: columns `i0, i1`, rows `j0, j1` (from the bottom), and
 /// the weights `s` (towards `i1`) and `t` (towards `j1`): the result is
 /// `lerp(lerp(T(i0,j0), T(i1,j0), s), lerp(T(i0,j1), T(i1,j1), s), t)`.
@@ -204,6 +262,9 @@ pub struct Texture {
     pub levels: Vec<Level>,
     /// The ripmap and the summed-area table, built on first use (see [`beyond`]).
     prefiltered: std::sync::OnceLock<Box<beyond::Prefiltered>>,
+    /// Level 0's texels in 8 bits when they are exact (see [`Level::as_bytes`]); the lookups
+    /// of level 0 read them.
+    level0_bytes: Option<Box<[[u8; 4]]>>,
 }
 
 /// Why a texture could not be loaded.
@@ -230,9 +291,11 @@ pub enum TextureError {
 }
 
 impl Texture {
-    /// A texture from its level 0; the pyramid is built by repeated box filtering.
+    /// A texture from its level 0; the pyramid is built by repeated box filtering. Level 0
+    /// must not change afterwards: its 8-bit copy, made here, would no longer match it.
     #[must_use]
     pub fn from_level(name: &str, base: Level) -> Self {
+        let level0_bytes = base.as_bytes();
         let mut levels = vec![base];
         while let Some(last) = levels.last() {
             if last.width == 1 && last.height == 1 {
@@ -245,6 +308,31 @@ impl Texture {
             name: name.to_owned(),
             levels,
             prefiltered: std::sync::OnceLock::new(),
+            level0_bytes,
+        }
+    }
+
+    /// Whether level 0 is also kept in 8 bits (see [`Level::as_bytes`]).
+    #[must_use]
+    pub fn has_8_bit_level0(&self) -> bool {
+        self.level0_bytes.is_some()
+    }
+
+    /// Level `k` read at `(u, v)` by `filter`: level 0 from its 8-bit copy when there is one
+    /// (the same values).
+    #[must_use]
+    #[inline]
+    pub fn read_level(&self, k: usize, uv: Vec2, filter: Filter, wrap: Wrap) -> Vec3 {
+        let level = &self.levels[k];
+        match (&self.level0_bytes, filter) {
+            (Some(bytes), Filter::Bilinear) if k == 0 => {
+                level.bilinear_of(uv, wrap, |i| unpack(bytes[i]))
+            }
+            (Some(bytes), Filter::Nearest) if k == 0 => {
+                unpack(bytes[level.nearest_index(uv, wrap)])
+            }
+            (_, Filter::Nearest) => level.nearest(uv, wrap),
+            (_, Filter::Bilinear) => level.bilinear(uv, wrap),
         }
     }
 

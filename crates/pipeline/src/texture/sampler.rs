@@ -201,10 +201,7 @@ impl Texture {
     /// and the blend weight of the next one.
     fn sample_lod(&self, uv: Vec2, lod: f32, s: &Sampler) -> (Vec3, u32, f32) {
         let max = (self.levels.len() - 1) as f32;
-        let read = |k: usize| match s.filter {
-            Filter::Nearest => self.levels[k].nearest(uv, s.wrap),
-            Filter::Bilinear => self.levels[k].bilinear(uv, s.wrap),
-        };
+        let read = |k: usize| self.read_level(k, uv, s.filter, s.wrap);
         match s.mipmap {
             _ if lod <= 0.0 => (read(0), 0, 0.0),
             Mipmap::None => (read(0), 0, 0.0),

@@ -315,3 +315,43 @@ fn wrapping_a_texel_index_is_the_modulo_or_the_clamp() {
         }
     }
 }
+
+/// An 8-bit image's level 0 is also kept in 8 bits, and its lookups read the same values as
+/// the `f32` texels give, bit for bit; a level whose texels are not all `k/255` (a generated
+/// texture, a 16-bit image) is not.
+#[test]
+fn the_8_bit_copy_of_level_0_reads_what_the_texels_give() {
+    let img = image::RgbImage::from_fn(37, 23, |x, y| {
+        image::Rgb([(x * 7 + y) as u8, (y * 11) as u8, ((x * y) % 256) as u8])
+    });
+    let t = Texture::from_image("rgb8", &image::DynamicImage::ImageRgb8(img.clone()))
+        .expect("not empty");
+    assert!(t.has_8_bit_level0());
+    assert!(!Texture::checkerboard(16, 4).has_8_bit_level0());
+    let deep = image::DynamicImage::ImageRgb16(image::ImageBuffer::from_fn(4, 4, |x, _| {
+        image::Rgb([x as u16 * 1000 + 1, 0, 0])
+    }));
+    let deep = Texture::from_image("rgb16", &deep).expect("not empty");
+    assert!(!deep.has_8_bit_level0());
+    let level = &t.levels[0];
+    for k in 0..2000 {
+        // uv inside and outside [0, 1], on a grid that hits texel centres and edges too.
+        let uv = Vec2::new((k % 50) as f32 / 17.0 - 0.6, (k / 50) as f32 / 13.0 - 0.4);
+        for wrap in [Wrap::Repeat, Wrap::Clamp] {
+            let bilinear = t.read_level(0, uv, Filter::Bilinear, wrap);
+            assert_eq!(
+                bilinear,
+                level.bilinear(uv, wrap),
+                "bilinear at {uv} {wrap:?}"
+            );
+            let nearest = t.read_level(0, uv, Filter::Nearest, wrap);
+            assert_eq!(nearest, level.nearest(uv, wrap), "nearest at {uv} {wrap:?}");
+        }
+    }
+    // Level 1 (box-filtered, not 8-bit) is read from its own texels.
+    let uv = Vec2::new(0.3, 0.7);
+    assert_eq!(
+        t.read_level(1, uv, Filter::Bilinear, Wrap::Repeat),
+        t.levels[1].bilinear(uv, Wrap::Repeat)
+    );
+}
