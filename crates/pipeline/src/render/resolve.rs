@@ -77,8 +77,8 @@ impl RowOut<'_> {
         s.texturing.clear();
         s.read.clear();
         let coarse = ctx.settings.coarse_shading;
-        // Runs of pixels inside one textured triangle are shaded together, unless coarse
-        // shading shares 2×2 blocks or every sample is shaded by itself.
+        // Runs of pixels, each inside a triangle of one object, are shaded together, unless
+        // coarse shading shares 2×2 blocks or every sample is shaded by itself.
         let runs = !coarse && !ctx.settings.per_sample_shading;
         let mut lanes = [ResolvedPixel::default(); LANES];
         let mut x = 0;
@@ -92,17 +92,19 @@ impl RowOut<'_> {
                 continue;
             }
             let run = runs.then(|| ctx.run_at(i, w - x)).flatten();
-            // Shorter runs (the small triangles of a dense mesh) cost more in lanes than
-            // they save: their pixels take the per-pixel path, without looking again.
-            if let Some((owner, n @ 4..)) = run {
-                ctx.resolve_run(owner, (x as u32, y), i, &mut lanes[..n]);
+            // Shorter runs (between a silhouette and a pixel shared by two triangles) cost
+            // more in lanes than they save: their pixels take the per-pixel path, without
+            // looking again.
+            if let Some(run) = run.filter(|r| r.len >= 4) {
+                let n = run.pixels;
+                ctx.resolve_run(&run, (x as u32, y), i, &mut lanes[..n]);
                 for (k, r) in lanes[..n].iter().enumerate() {
                     self.store(x + k, r, s);
                 }
                 x += n;
                 continue;
             }
-            let len = run.map_or(1, |(_, n)| n);
+            let len = run.map_or(1, |r| r.pixels);
             for x in x..x + len {
                 let block = if coarse && ctx.settings.capture.pixel != Some((x as u32, y)) {
                     s.blocks.get_mut(x / 2)
@@ -428,7 +430,41 @@ impl ResolveContext<'_> {
     pub(super) fn background_run(&self, i: usize, room: usize) -> usize {
         let s = self.settings.samples.count();
         let tris = &self.samples.triangle[i * s..(i + room) * s];
-        tris.iter().position(|&t| t != NONE).map_or(room, |k| k / s)
+        if tris.first().is_some_and(|&t| t != NONE) {
+            return 0;
+        }
+        // Whole blocks first, each tested without a branch a sample (the compiler's lanes),
+        // then the sample that ends the span within its block.
+        const BLOCK: usize = 16;
+        let empty_blocks = tris
+            .chunks_exact(BLOCK)
+            .take_while(|b| b.iter().fold(0, |any, &t| any | (t ^ NONE)) == 0)
+            .count();
+        let from = empty_blocks * BLOCK;
+        tris[from..]
+            .iter()
+            .position(|&t| t != NONE)
+            .map_or(room, |k| (from + k) / s)
+    }
+
+    /// The raster triangle that owns a pixel whose samples lie on raster triangles `tris`
+    /// (at least one covered): of the primitive with the most samples, ties to the earliest
+    /// sample, the triangle of that primitive's first sample.
+    pub(super) fn owner_of(&self, tris: &[u32]) -> u32 {
+        // Each sample's primitive is looked up once (at most 16 samples a pixel).
+        let mut prims = [NONE; 16];
+        for (p, &t) in prims.iter_mut().zip(tris).filter(|(_, t)| **t != NONE) {
+            *p = self.triangles[t as usize].primitive;
+        }
+        let prims = &prims[..tris.len()];
+        let mut best = (0usize, NONE);
+        for (&t, &prim) in tris.iter().zip(prims).filter(|(t, _)| **t != NONE) {
+            let count = prims.iter().filter(|&&p| p == prim).count();
+            if count > best.0 {
+                best = (count, t);
+            }
+        }
+        best.1
     }
 
     /// The mean of image pixel `i`'s sample depths.
@@ -501,23 +537,9 @@ impl ResolveContext<'_> {
                 ..out
             };
         }
-        // The owning primitive: most samples, ties to the earliest sample. Each sample's
-        // primitive is looked up once (at most 16 samples a pixel).
-        let mut prims = [NONE; 16];
-        for (p, &t) in prims.iter_mut().zip(tris).filter(|(_, t)| **t != NONE) {
-            *p = self.triangles[t as usize].primitive;
-        }
-        let prims = &prims[..s];
-        let mut best = (0usize, NONE);
-        for (&t, &prim) in tris.iter().zip(prims).filter(|(t, _)| **t != NONE) {
-            let count = prims.iter().filter(|&&p| p == prim).count();
-            if count > best.0 {
-                best = (count, t);
-            }
-        }
-        let owner = &self.triangles[best.1 as usize];
+        out.owner = self.owner_of(tris);
+        let owner = &self.triangles[out.owner as usize];
         out.primitive = owner.primitive;
-        out.owner = best.1;
         // Colour. Multisampling: each distinct triangle once, at the centre, weighted by its
         // samples. Supersampling: every covered sample shaded at its own position.
         let mut sum = background * (s - covered) as f32;
