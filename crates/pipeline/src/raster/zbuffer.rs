@@ -4,6 +4,7 @@
 
 use glam::I64Vec2;
 use serde::Serialize;
+use wide::i64x4;
 
 use super::{NONE, ONE, RasterTriangle, Samples, sample_offsets_fixed};
 
@@ -245,6 +246,62 @@ impl SampleBuffers {
     }
 }
 
+/// The rows of a [`Band`] and where its samples lie: what scanning a triangle's rows needs.
+#[derive(Clone, Copy)]
+struct BandRows<'a> {
+    height: u32,
+    first_row: usize,
+    rows: usize,
+    offsets: &'a [I64Vec2],
+}
+
+impl BandRows<'_> {
+    /// Calls `row(r, y, (xs, xe), e)` for each window row `y` (image row `r`) of the band that
+    /// `tri` can cover a sample of, `xs..=xe` its pixels that can be covered and `e` the
+    /// biased edge values ([`RasterTriangle::biased_edge_values`]) of pixel `xs`'s `N` samples.
+    fn each<const N: usize>(
+        self,
+        tri: &RasterTriangle,
+        mut row: impl FnMut(usize, u32, (u32, u32), &[[i64; 3]; N]),
+    ) {
+        let [x0, mut y0, x1, mut y1] = tri.bbox.map(u32::from);
+        // Window rows y of this band: image rows r = height − 1 − y.
+        let top = self.height as usize - 1 - self.first_row;
+        let bottom = (top + 1).saturating_sub(self.rows);
+        y0 = y0.max(bottom as u32);
+        y1 = y1.min(top as u32);
+        if y0 > y1 {
+            return;
+        }
+        let offsets = &self.offsets[..N];
+        let step = tri.edges.map(|e| i64::from(e.a) * ONE);
+        let mut e = [[0i64; 3]; N];
+        for y in y0..=y1 {
+            let corner = I64Vec2::new(i64::from(x0) * ONE, i64::from(y) * ONE);
+            for (es, off) in e.iter_mut().zip(offsets) {
+                *es = tri.biased_edge_values(corner + *off);
+            }
+            // Wide boxes: only the pixels between the first and the last that can have a
+            // covered sample in this row (found exactly, in integers), so the empty corners of
+            // the box are not scanned.
+            let span = if x1 - x0 >= SPAN_MIN_WIDTH {
+                let Some((a, b)) = row_span(&e, step, x1 - x0) else {
+                    continue;
+                };
+                for es in &mut e {
+                    for k in 0..3 {
+                        es[k] += step[k] * i64::from(a);
+                    }
+                }
+                (x0 + a, x0 + b)
+            } else {
+                (x0, x1)
+            };
+            row(top - y as usize, y, span, &e);
+        }
+    }
+}
+
 /// A band of image rows `first_row .. first_row + rows` of the sample buffers.
 struct Band<'a> {
     depth: &'a mut [f32],
@@ -291,87 +348,111 @@ fn row_span(e: &[[i64; 3]], step: [i64; 3], last: u32) -> Option<(u32, u32)> {
     span.map(|(a, b)| (a as u32, b as u32))
 }
 
-impl Band<'_> {
+impl<'a> Band<'a> {
     /// Rasterizes `tri` over this band's rows. The edge functions are evaluated once per row at
     /// the first pixel's samples and then stepped by `a·ONE` per pixel (they are linear in x);
     /// depth is the triangle's plane ([`RasterTriangle::depth_plane`]).
     fn rasterize(&mut self, tri: &RasterTriangle, index: u32, test: DepthTest) -> RasterCounts {
-        // The loop over a pixel's samples unrolled for each pattern, so that their edge values
-        // stay in registers.
+        // One sample: its three edge values stay in registers. More: each group of four
+        // samples is tested at once, in integer lanes.
         match self.offsets.len() {
-            1 => self.rasterize_n::<1>(tri, index, test),
-            4 => self.rasterize_n::<4>(tri, index, test),
-            8 => self.rasterize_n::<8>(tri, index, test),
-            _ => self.rasterize_n::<16>(tri, index, test),
+            1 => self.rasterize_one(tri, index, test),
+            4 => self.rasterize_lanes::<1>(tri, index, test),
+            8 => self.rasterize_lanes::<2>(tri, index, test),
+            _ => self.rasterize_lanes::<4>(tri, index, test),
         }
     }
 
-    /// [`Self::rasterize`] with `N` samples a pixel.
-    fn rasterize_n<const N: usize>(
+    /// The band's rows and sample positions, apart from its buffers.
+    fn geometry(&self) -> BandRows<'a> {
+        BandRows {
+            height: self.height,
+            first_row: self.first_row,
+            rows: self.rows,
+            offsets: self.offsets,
+        }
+    }
+
+    /// [`Self::rasterize`] with one sample a pixel.
+    fn rasterize_one(&mut self, tri: &RasterTriangle, index: u32, test: DepthTest) -> RasterCounts {
+        let mut counts = RasterCounts::default();
+        // The plane is worked out at the first covered sample: of a million triangles most
+        // are smaller than a pixel and cover none.
+        let mut plane = None;
+        let step = tri.edges.map(|e| i64::from(e.a) * ONE);
+        let band = self.geometry();
+        let (depth, owner, width) = (&mut *self.depth, &mut *self.owner, self.width);
+        let centre = self.offsets[0];
+        band.each::<1>(tri, |row, y, (xs, xe), &[mut e]| {
+            for x in xs..=xe {
+                if (e[0] | e[1] | e[2]) >= 0 {
+                    counts.covered += 1;
+                    let z = plane
+                        .get_or_insert_with(|| tri.depth_plane())
+                        .at(I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE) + centre);
+                    let i = row * width + x as usize;
+                    if test.passes(z, depth[i]) {
+                        depth[i] = z;
+                        owner[i] = index;
+                        counts.written += 1;
+                    }
+                }
+                e[0] += step[0];
+                e[1] += step[1];
+                e[2] += step[2];
+            }
+        });
+        counts
+    }
+
+    /// [`Self::rasterize`] with `4·G` samples a pixel: the edge values of each group of four
+    /// samples in lanes, `E₀ | E₁ | E₂` giving in its four sign bits the samples outside, so
+    /// that a pixel whose samples are all outside costs a few instructions a group.
+    fn rasterize_lanes<const G: usize>(
         &mut self,
         tri: &RasterTriangle,
         index: u32,
         test: DepthTest,
     ) -> RasterCounts {
-        debug_assert_eq!(self.offsets.len(), N);
         let mut counts = RasterCounts::default();
-        let [x0, mut y0, x1, mut y1] = tri.bbox.map(u32::from);
-        // Window rows y of this band: image rows r = height − 1 − y.
-        let top = self.height as usize - 1 - self.first_row;
-        let bottom = (top + 1).saturating_sub(self.rows);
-        y0 = y0.max(bottom as u32);
-        y1 = y1.min(top as u32);
-        if y0 > y1 {
-            return counts;
-        }
-        let offsets = &self.offsets[..N];
-        // The plane is worked out at the first covered sample: of a million triangles most
-        // are smaller than a pixel and cover none.
         let mut plane = None;
-        let step = tri.edges.map(|e| i64::from(e.a) * ONE);
-        let mut e = [[0i64; 3]; N];
-        for y in y0..=y1 {
-            let row = top - y as usize;
-            let corner = I64Vec2::new(i64::from(x0) * ONE, i64::from(y) * ONE);
-            for (es, off) in e.iter_mut().zip(offsets) {
-                *es = tri.biased_edge_values(corner + *off);
-            }
-            // Wide boxes: only the pixels between the first and the last that can have a
-            // covered sample in this row (found exactly, in integers), so the empty corners of
-            // the box are not scanned.
-            let (xs, xe) = if x1 - x0 >= SPAN_MIN_WIDTH {
-                let Some((a, b)) = row_span(&e, step, x1 - x0) else {
-                    continue;
-                };
-                for es in &mut e {
-                    for k in 0..3 {
-                        es[k] += step[k] * i64::from(a);
-                    }
-                }
-                (x0 + a, x0 + b)
-            } else {
-                (x0, x1)
-            };
+        let step = tri.edges.map(|e| i64x4::splat(i64::from(e.a) * ONE));
+        let band = self.geometry();
+        let (depth, owner, width) = (&mut *self.depth, &mut *self.owner, self.width);
+        let offsets = self.offsets;
+        let mut scan = |row: usize, y: u32, (xs, xe): (u32, u32), e: &[[i64; 3]]| {
+            // Edge k of samples 4g..4g+4 in lanes.
+            let mut lanes: [[i64x4; 3]; G] = std::array::from_fn(|g| {
+                std::array::from_fn(|k| i64x4::new(std::array::from_fn(|l| e[4 * g + l][k])))
+            });
             for x in xs..=xe {
-                let base = (row * self.width + x as usize) * N;
-                for (s, es) in e.iter_mut().enumerate() {
-                    if (es[0] | es[1] | es[2]) >= 0 {
+                let base = (row * width + x as usize) * 4 * G;
+                for (g, l) in lanes.iter_mut().enumerate() {
+                    let mut inside = !(l[0] | l[1] | l[2]).to_bitmask() & 0b1111;
+                    while inside != 0 {
+                        let s = 4 * g + inside.trailing_zeros() as usize;
+                        inside &= inside - 1;
                         counts.covered += 1;
                         let z = plane
                             .get_or_insert_with(|| tri.depth_plane())
                             .at(I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE) + offsets[s]);
                         let i = base + s;
-                        if test.passes(z, self.depth[i]) {
-                            self.depth[i] = z;
-                            self.owner[i] = index;
+                        if test.passes(z, depth[i]) {
+                            depth[i] = z;
+                            owner[i] = index;
                             counts.written += 1;
                         }
                     }
-                    es[0] += step[0];
-                    es[1] += step[1];
-                    es[2] += step[2];
+                    for k in 0..3 {
+                        l[k] += step[k];
+                    }
                 }
             }
+        };
+        match G {
+            1 => band.each::<4>(tri, |r, y, span, e| scan(r, y, span, e)),
+            2 => band.each::<8>(tri, |r, y, span, e| scan(r, y, span, e)),
+            _ => band.each::<16>(tri, |r, y, span, e| scan(r, y, span, e)),
         }
         counts
     }
