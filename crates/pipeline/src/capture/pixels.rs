@@ -8,6 +8,11 @@ use half::f16;
 use serde::Serialize;
 
 /// Per-pixel buffers, top image row first (`index = row·width + column`).
+///
+/// Where `coverage` is 0 (the background) `primitive` and `owner` are [`NONE`], the lighting
+/// buffers hold zeros and the texturing buffers no lookup ([`NO_LOOKUP`]). The resolve relies on
+/// it when it renders into the storage of the frame before: a background pixel's primitive,
+/// owner and terms are written only where that frame covered the pixel ([`Stored::Kept`]).
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct PixelBuffers {
     /// Number of the pixel's samples that a primitive covers (after the depth test).
@@ -62,13 +67,13 @@ impl InspectedPixel {
         let lighting = lit.then(|| {
             let mut b = ShadingBuffers::default().resized(1);
             let floats = terms.map_or([0.0; LIGHTING_HALVES], ShadingRow::flatten);
-            b.rows(1)[0].store(&[true], &floats, &mut halves);
+            b.rows(1)[0].store(&[Stored::Terms], &floats, &mut halves);
             b.at(0)
         });
         let texture = texture.map(|t| {
             let mut b = TextureBuffers::default().resized(1);
             let (uv, floats) = TextureRow::flatten(t);
-            b.rows(1)[0].store(&[true], &[uv], &floats, &mut halves);
+            b.rows(1)[0].store(&[Stored::Terms], &[uv], &floats, &mut halves);
             b.at(0)
         });
         Self {
@@ -131,13 +136,13 @@ pub struct TextureBuffers {
 }
 
 impl TextureBuffers {
-    /// These buffers' storage holding `n` pixels (the new ones zero; from `default()`: new
-    /// buffers).
+    /// These buffers' storage holding `n` pixels (the new ones with no lookup, [`NO_LOOKUP`];
+    /// from `default()`: new buffers).
     #[must_use]
     pub fn resized(mut self, n: usize) -> Self {
         self.uv.resize(n, [0.0; 2]);
         self.lod.resize(n, f16::ZERO);
-        self.level.resize(n, f16::ZERO);
+        self.level.resize(n, f16::from_f32(NO_LOOKUP[1]));
         self.texel.resize(n, [f16::ZERO; 3]);
         self.footprint.resize(n, [f16::ZERO; 4]);
         self
@@ -283,15 +288,15 @@ impl TextureRow<'_> {
         (t.uv, [t.lod, t.level, a, b, c, d, e, f, g])
     }
 
-    /// Stores a row: pixel `x` has a lookup when `read[x]`, the lookups' `uvs` and `floats`
-    /// ([`TEXTURE_HALVES`] each, from [`Self::flatten`]) in order, converted to half floats in
-    /// one pass (vectorised where the processor converts in hardware) through the reused
-    /// `halves`. A pixel with no lookup (an untextured surface, the background: most of a
-    /// frame) stores zeros with the level −1, so that it is told apart from level 0
-    /// ([`NO_LOOKUP`]), without a conversion.
+    /// Stores a row: pixel `x` has a lookup when `read[x]` is [`Stored::Terms`], the lookups'
+    /// `uvs` and `floats` ([`TEXTURE_HALVES`] each, from [`Self::flatten`]) in order, converted
+    /// to half floats in one pass (vectorised where the processor converts in hardware) through
+    /// the reused `halves`. A pixel with no lookup (an untextured surface, the background: most
+    /// of a frame) stores zeros with the level −1, so that it is told apart from level 0
+    /// ([`NO_LOOKUP`]), without a conversion, unless it holds them already ([`Stored::Kept`]).
     pub fn store(
         &mut self,
-        read: &[bool],
+        read: &[Stored],
         uvs: &[[f32; 2]],
         floats: &[f32],
         halves: &mut Vec<f16>,
@@ -300,9 +305,13 @@ impl TextureRow<'_> {
             .iter()
             .zip(convert(floats, halves).chunks_exact(TEXTURE_HALVES));
         for (read, span) in spans(read) {
-            if !read {
-                self.none(span);
-                continue;
+            match read {
+                Stored::Kept => continue,
+                Stored::Nothing => {
+                    self.none(span);
+                    continue;
+                }
+                Stored::Terms => {}
             }
             for x in span {
                 let Some((uv, h)) = lookups.next() else {
@@ -328,9 +337,21 @@ impl TextureRow<'_> {
     }
 }
 
+/// What a row's store writes at a pixel of the term buffers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stored {
+    /// Its terms: the next of the row's values.
+    Terms,
+    /// No terms (zeros; for a lookup, the level −1), written.
+    Nothing,
+    /// No terms, which the reused storage holds already (the frame before had the background
+    /// there; see [`PixelBuffers`]): nothing is written.
+    Kept,
+}
+
 /// The maximal runs of equal flags, each with its flag: a row's pixels with and without terms
-/// (the background is one long run, written with fills).
-fn spans(flags: &[bool]) -> impl Iterator<Item = (bool, Range<usize>)> + '_ {
+/// (the background is one long run, written with fills or left as it is).
+fn spans<T: Copy + PartialEq>(flags: &[T]) -> impl Iterator<Item = (T, Range<usize>)> + '_ {
     let mut x = 0;
     std::iter::from_fn(move || {
         let &first = flags.get(x)?;
@@ -377,16 +398,21 @@ impl ShadingRow<'_> {
         out
     }
 
-    /// Stores a row: pixel `x` is lit when `lit[x]`, the lit pixels' terms in `floats`
-    /// ([`LIGHTING_HALVES`] each, from [`Self::flatten`]) in order, converted to half floats in
-    /// one pass through the reused `halves`. A pixel not lit (unlit there, the background: most
-    /// of a frame) stores zeros, without a conversion.
-    pub fn store(&mut self, lit: &[bool], floats: &[f32], halves: &mut Vec<f16>) {
+    /// Stores a row: pixel `x` is lit when `lit[x]` is [`Stored::Terms`], the lit pixels'
+    /// terms in `floats` ([`LIGHTING_HALVES`] each, from [`Self::flatten`]) in order, converted
+    /// to half floats in one pass through the reused `halves`. A pixel not lit (unlit there, the
+    /// background: most of a frame) stores zeros, without a conversion, unless it holds them
+    /// already ([`Stored::Kept`]).
+    pub fn store(&mut self, lit: &[Stored], floats: &[f32], halves: &mut Vec<f16>) {
         let mut terms = convert(floats, halves).chunks_exact(LIGHTING_HALVES);
         for (lit, span) in spans(lit) {
-            if !lit {
-                self.unlit(span);
-                continue;
+            match lit {
+                Stored::Kept => continue,
+                Stored::Nothing => {
+                    self.unlit(span);
+                    continue;
+                }
+                Stored::Terms => {}
             }
             for x in span {
                 let Some(h) = terms.next() else {

@@ -8,7 +8,7 @@ use half::f16;
 use rayon::prelude::*;
 
 use crate::capture::{
-    FrameCapture, InspectedPixel, PixelBuffers, PixelTexture, PrimitiveRecord, ShadingRow,
+    FrameCapture, InspectedPixel, PixelBuffers, PixelTexture, PrimitiveRecord, ShadingRow, Stored,
     TextureRow,
 };
 use crate::raster::{NONE, ONE, RasterTriangle, SampleBuffers};
@@ -48,10 +48,10 @@ struct RowOut<'a> {
 #[derive(Default)]
 struct RowScratch {
     lighting: Vec<f32>,
-    lit: Vec<bool>,
+    lit: Vec<Stored>,
     uvs: Vec<[f32; 2]>,
     texturing: Vec<f32>,
-    read: Vec<bool>,
+    read: Vec<Stored>,
     halves: Vec<f16>,
     blocks: Vec<Option<BlockShade>>,
 }
@@ -136,9 +136,28 @@ impl RowOut<'_> {
         s: &mut RowScratch,
     ) {
         let span = x..x + n;
-        self.coverage[span.clone()].fill(0);
-        self.primitive[span.clone()].fill(NONE);
-        self.owner[span.clone()].fill(NONE);
+        // Where the frame before (whose storage this is) had the background too, the term
+        // buffers hold no terms already (see `PixelBuffers`).
+        let stored = |&c: &u8| {
+            if c == 0 {
+                Stored::Kept
+            } else {
+                Stored::Nothing
+            }
+        };
+        if self.shading.is_some() {
+            s.lit.extend(self.coverage[span.clone()].iter().map(stored));
+        }
+        if self.texturing.is_some() {
+            s.read
+                .extend(self.coverage[span.clone()].iter().map(stored));
+        }
+        // So do its primitive and owner buffers, where it had the background all along.
+        if self.coverage[span.clone()].iter().any(|&c| c != 0) {
+            self.coverage[span.clone()].fill(0);
+            self.primitive[span.clone()].fill(NONE);
+            self.owner[span.clone()].fill(NONE);
+        }
         self.color[span.clone()].fill(ctx.settings.background.to_array());
         if ctx.settings.samples.count() == 1 {
             // The mean of one sample is that sample (x/1 = x exactly).
@@ -147,12 +166,6 @@ impl RowOut<'_> {
             for (k, depth) in self.depth[span].iter_mut().enumerate() {
                 *depth = ctx.mean_depth(i + k);
             }
-        }
-        if self.shading.is_some() {
-            s.lit.resize(s.lit.len() + n, false);
-        }
-        if self.texturing.is_some() {
-            s.read.resize(s.read.len() + n, false);
         }
     }
 
@@ -166,13 +179,21 @@ impl RowOut<'_> {
         self.owner[x] = r.owner;
         self.color[x] = r.color;
         if self.shading.is_some() {
-            s.lit.push(r.terms.is_some());
+            s.lit.push(if r.terms.is_some() {
+                Stored::Terms
+            } else {
+                Stored::Nothing
+            });
             if let Some(t) = &r.terms {
                 s.lighting.extend_from_slice(&ShadingRow::flatten(t));
             }
         }
         if self.texturing.is_some() {
-            s.read.push(r.texture.is_some());
+            s.read.push(if r.texture.is_some() {
+                Stored::Terms
+            } else {
+                Stored::Nothing
+            });
             if let Some((uv, l)) = &r.texture {
                 let (uv, halves) = TextureRow::flatten(&PixelTexture::new(*uv, l));
                 s.uvs.push(uv);

@@ -112,6 +112,25 @@ fn reusing_a_capture_s_storage_gives_the_same_frame() {
         .expect("renders")
         .0;
     assert_eq!(reused, fresh);
+    // The same size and buffers, the camera moved: pixels covered before are background now
+    // (their terms must be cleared) and the reverse; the background the frame before had too
+    // is left as it is.
+    let mut aside = scene.clone();
+    aside.camera.eye = Vec3::new(1.5, 0.4, 2.5);
+    let spare = render(&aside, &settings);
+    let differs = |a: &pipeline::capture::FrameCapture| {
+        a.pixels
+            .coverage
+            .iter()
+            .zip(&fresh.pixels.coverage)
+            .filter(|(a, b)| (**a == 0) != (**b == 0))
+            .count()
+    };
+    assert!(differs(&spare) > 100, "the moved frame covers other pixels");
+    let reused = pipeline::render_reusing(&scene, &settings, Some(spare))
+        .expect("renders")
+        .0;
+    assert_eq!(reused, fresh);
 }
 
 /// A scene of `layout` runs of triangles, `(count, straddles)`: triangles behind the camera
