@@ -14,7 +14,6 @@ use crate::capture::{
 use crate::raster::{NONE, ONE, RasterTriangle, SampleBuffers};
 use crate::scene::Scene;
 use crate::settings::RenderSettings;
-use crate::shade::lanes::LANES;
 use crate::shade::{self, Frequency, ShadeTerms};
 use crate::texture::{Environment, Lookup};
 use crate::vertex::VertexRecord;
@@ -80,7 +79,6 @@ impl RowOut<'_> {
         // Runs of pixels, each inside a triangle of one object, are shaded together, unless
         // coarse shading shares 2×2 blocks or every sample is shaded by itself.
         let runs = !coarse && !ctx.settings.per_sample_shading;
-        let mut lanes = [ResolvedPixel::default(); LANES];
         let mut x = 0;
         while x < w {
             let i = row * w + x;
@@ -96,12 +94,8 @@ impl RowOut<'_> {
             // more in lanes than they save: their pixels take the per-pixel path, without
             // looking again.
             if let Some(run) = run.filter(|r| r.len >= 4) {
-                let n = run.pixels;
-                ctx.resolve_run(&run, (x as u32, y), i, &mut lanes[..n]);
-                for (k, r) in lanes[..n].iter().enumerate() {
-                    self.store(x + k, r, s);
-                }
-                x += n;
+                ctx.resolve_run(&run, (x as u32, y), i, |k, r| self.store(x + k, r, s));
+                x += run.pixels;
                 continue;
             }
             let len = run.map_or(1, |r| r.pixels);

@@ -125,16 +125,16 @@ impl ResolveContext<'_> {
         self.primitives[self.triangles[t as usize].primitive as usize].object
     }
 
-    /// Resolves the pixels of `run`, from window `(x, y)` (image index `i`) on, one per
-    /// element of `out` (`run.pixels` of them): as [`Self::pixel`] resolves each.
+    /// Resolves the pixels of `run`, from window `(x, y)` (image index `i`) on, as
+    /// [`Self::pixel`] resolves each, and hands pixel `k` of the run to `out(k, pixel)` (built
+    /// in place, so that the terms a colour-only frame does not keep are not copied around).
     pub(super) fn resolve_run(
         &self,
         run: &Run,
         (x, y): (u32, u32),
         i: usize,
-        out: &mut [ResolvedPixel],
+        mut out: impl FnMut(usize, &ResolvedPixel),
     ) {
-        debug_assert_eq!(out.len(), run.pixels);
         let n = run.len;
         let tri = |f: usize| &self.triangles[run.triangle[f] as usize];
         let object = &self.scene.objects[self.object_of(run.triangle[0]) as usize];
@@ -192,7 +192,7 @@ impl ResolveContext<'_> {
         let color = |f: usize| terms[f].map_or(surface[f], |t| t.color());
         let s = self.settings.samples.count();
         let mut f = 0;
-        for (k, out) in out.iter_mut().enumerate() {
+        for k in 0..run.pixels {
             let first = f;
             while f < n && usize::from(run.pixel[f]) == k {
                 f += 1;
@@ -213,15 +213,18 @@ impl ResolveContext<'_> {
                     .unwrap_or(first);
                 (sum / s as f32, kept)
             };
-            *out = ResolvedPixel {
-                terms: terms[kept],
-                texture: texels[kept],
-                coverage: s as u8,
-                depth: self.mean_depth(i + k),
-                primitive,
-                owner,
-                color: color.to_array(),
-            };
+            out(
+                k,
+                &ResolvedPixel {
+                    terms: terms[kept],
+                    texture: texels[kept],
+                    coverage: s as u8,
+                    depth: self.mean_depth(i + k),
+                    primitive,
+                    owner,
+                    color: color.to_array(),
+                },
+            );
         }
     }
 
@@ -520,7 +523,7 @@ mod tests {
                     };
                     let n = run.pixels;
                     let mut got = [ResolvedPixel::default(); LANES];
-                    ctx.resolve_run(&run, (x as u32, y), i, &mut got[..n]);
+                    ctx.resolve_run(&run, (x as u32, y), i, |k, r| got[k] = *r);
                     for (j, got) in got[..n].iter().enumerate() {
                         let want = ctx.pixel((x + j) as u32, y, i + j, None);
                         assert_eq!(*got, want, "setting {k}, run at ({x}, {y}), pixel {j}");
