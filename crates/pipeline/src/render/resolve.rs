@@ -147,7 +147,12 @@ impl RowOut<'_> {
                 .extend(self.coverage[span.clone()].iter().map(stored));
         }
         // So do its primitive and owner buffers, where it had the background all along.
-        if self.coverage[span.clone()].iter().any(|&c| c != 0) {
+        // (An OR over the span, without a branch a pixel: the span is usually all zeros.)
+        if self.coverage[span.clone()]
+            .iter()
+            .fold(0, |any, &c| any | c)
+            != 0
+        {
             self.coverage[span.clone()].fill(0);
             self.primitive[span.clone()].fill(NONE);
             self.owner[span.clone()].fill(NONE);
