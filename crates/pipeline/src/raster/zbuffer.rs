@@ -231,18 +231,32 @@ impl SampleBuffers {
                     if !tri.covers(p) {
                         continue;
                     }
-                    counts.covered += 1;
-                    let z = plane.at(p);
                     let i = self.index(x, y, s);
-                    if test.passes(z, self.depth[i]) {
-                        self.depth[i] = z;
-                        self.triangle[i] = index;
-                        counts.written += 1;
-                    }
+                    let sample = (&mut self.depth[i], &mut self.triangle[i]);
+                    depth_test(sample, plane.at(p), index, test, &mut counts);
                 }
             }
         }
         counts
+    }
+}
+
+/// A covered sample's depth test: when depth `z` passes against the sample's stored depth, `z`
+/// and the triangle's `index` replace what the sample held. Counts the sample as covered, and
+/// as written when it passed.
+#[inline]
+fn depth_test(
+    (depth, owner): (&mut f32, &mut u32),
+    z: f32,
+    index: u32,
+    test: DepthTest,
+    counts: &mut RasterCounts,
+) {
+    counts.covered += 1;
+    if test.passes(z, *depth) {
+        *depth = z;
+        *owner = index;
+        counts.written += 1;
     }
 }
 
@@ -386,16 +400,11 @@ impl<'a> Band<'a> {
         band.each::<1>(tri, |row, y, (xs, xe), &[mut e]| {
             for x in xs..=xe {
                 if (e[0] | e[1] | e[2]) >= 0 {
-                    counts.covered += 1;
                     let z = plane
                         .get_or_insert_with(|| tri.depth_plane())
                         .at(I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE) + centre);
                     let i = row * width + x as usize;
-                    if test.passes(z, depth[i]) {
-                        depth[i] = z;
-                        owner[i] = index;
-                        counts.written += 1;
-                    }
+                    depth_test((&mut depth[i], &mut owner[i]), z, index, test, &mut counts);
                 }
                 e[0] += step[0];
                 e[1] += step[1];
@@ -432,16 +441,11 @@ impl<'a> Band<'a> {
                     while inside != 0 {
                         let s = 4 * g + inside.trailing_zeros() as usize;
                         inside &= inside - 1;
-                        counts.covered += 1;
                         let z = plane
                             .get_or_insert_with(|| tri.depth_plane())
                             .at(I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE) + offsets[s]);
                         let i = base + s;
-                        if test.passes(z, depth[i]) {
-                            depth[i] = z;
-                            owner[i] = index;
-                            counts.written += 1;
-                        }
+                        depth_test((&mut depth[i], &mut owner[i]), z, index, test, &mut counts);
                     }
                     for k in 0..3 {
                         l[k] += step[k];
