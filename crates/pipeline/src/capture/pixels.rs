@@ -349,6 +349,14 @@ pub enum Stored {
     Kept,
 }
 
+impl Stored {
+    /// [`Stored::Terms`] for a pixel that has terms, else [`Stored::Nothing`].
+    #[must_use]
+    pub fn given(terms: bool) -> Self {
+        if terms { Self::Terms } else { Self::Nothing }
+    }
+}
+
 /// The maximal runs of equal flags, each with its flag: a row's pixels with and without terms
 /// (the background is one long run, written with fills or left as it is).
 fn spans<T: Copy + PartialEq>(flags: &[T]) -> impl Iterator<Item = (T, Range<usize>)> + '_ {

@@ -90,9 +90,9 @@ impl RowOut<'_> {
                 continue;
             }
             let run = runs.then(|| ctx.run_at(i, w - x)).flatten();
-            // Shorter runs (between a silhouette and a pixel shared by two triangles) cost
-            // more in lanes than they save: their pixels take the per-pixel path, without
-            // looking again.
+            // Shorter runs (a few pixels between a silhouette and a pixel with an uncovered
+            // sample) cost more in lanes than they save: their pixels take the per-pixel path,
+            // without looking again.
             if let Some(run) = run.filter(|r| r.len >= 4) {
                 ctx.resolve_run(&run, (x as u32, y), i, |k, r| self.store(x + k, r, s));
                 x += run.pixels;
@@ -178,21 +178,13 @@ impl RowOut<'_> {
         self.owner[x] = r.owner;
         self.color[x] = r.color;
         if self.shading.is_some() {
-            s.lit.push(if r.terms.is_some() {
-                Stored::Terms
-            } else {
-                Stored::Nothing
-            });
+            s.lit.push(Stored::given(r.terms.is_some()));
             if let Some(t) = &r.terms {
                 s.lighting.extend_from_slice(&ShadingRow::flatten(t));
             }
         }
         if self.texturing.is_some() {
-            s.read.push(if r.texture.is_some() {
-                Stored::Terms
-            } else {
-                Stored::Nothing
-            });
+            s.read.push(Stored::given(r.texture.is_some()));
             if let Some((uv, l)) = &r.texture {
                 let (uv, halves) = TextureRow::flatten(&PixelTexture::new(*uv, l));
                 s.uvs.push(uv);
