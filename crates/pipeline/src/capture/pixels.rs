@@ -304,14 +304,10 @@ impl TextureRow<'_> {
         let mut lookups = uvs
             .iter()
             .zip(convert(floats, halves).chunks_exact(TEXTURE_HALVES));
-        for (read, span) in spans(read) {
-            match read {
-                Stored::Kept => continue,
-                Stored::Nothing => {
-                    self.none(span);
-                    continue;
-                }
-                Stored::Terms => {}
+        for (read, span) in written_spans(read) {
+            if !read {
+                self.none(span);
+                continue;
             }
             for x in span {
                 let Some((uv, h)) = lookups.next() else {
@@ -372,6 +368,14 @@ fn spans<T: Copy + PartialEq>(flags: &[T]) -> impl Iterator<Item = (T, Range<usi
     })
 }
 
+/// The spans of a row's pixels that the store writes, each with whether its pixels have terms:
+/// the [`Stored::Kept`] spans are left out.
+fn written_spans(flags: &[Stored]) -> impl Iterator<Item = (bool, Range<usize>)> + '_ {
+    spans(flags)
+        .filter(|(stored, _)| *stored != Stored::Kept)
+        .map(|(stored, span)| (stored == Stored::Terms, span))
+}
+
 /// `floats` as half floats, in `halves`' storage.
 fn convert<'a>(floats: &[f32], halves: &'a mut Vec<f16>) -> &'a [f16] {
     use half::slice::HalfFloatSliceExt;
@@ -413,14 +417,10 @@ impl ShadingRow<'_> {
     /// already ([`Stored::Kept`]).
     pub fn store(&mut self, lit: &[Stored], floats: &[f32], halves: &mut Vec<f16>) {
         let mut terms = convert(floats, halves).chunks_exact(LIGHTING_HALVES);
-        for (lit, span) in spans(lit) {
-            match lit {
-                Stored::Kept => continue,
-                Stored::Nothing => {
-                    self.unlit(span);
-                    continue;
-                }
-                Stored::Terms => {}
+        for (lit, span) in written_spans(lit) {
+            if !lit {
+                self.unlit(span);
+                continue;
             }
             for x in span {
                 let Some(h) = terms.next() else {
