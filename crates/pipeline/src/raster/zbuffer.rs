@@ -64,6 +64,39 @@ pub struct SampleBuffers {
     /// Index of the raster triangle that wrote each sample last, or [`NONE`].
     pub triangle: Vec<u32>,
     offsets: Vec<I64Vec2>,
+    bins: Bins,
+}
+
+/// The working lists of [`SampleBuffers::rasterize_all`], kept with the buffers so that a frame
+/// drawn into the storage of the one before takes no memory from the system for them (a million
+/// triangles fill some 20 MB of lists a frame). Scratch, not content: a clone starts empty and
+/// any two compare equal.
+#[derive(Default)]
+struct Bins {
+    /// `runs[r][b]`: the triangles of run `r` whose bounding box reaches band `b`, in order.
+    runs: Vec<Vec<Vec<u32>>>,
+    /// `counts[b]`: what each triangle band `b` drew did there, in the order of its lists.
+    counts: Vec<Vec<RasterCounts>>,
+    /// What each triangle did over all bands.
+    total: Vec<RasterCounts>,
+}
+
+impl Clone for Bins {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+impl PartialEq for Bins {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl std::fmt::Debug for Bins {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Bins")
+    }
 }
 
 /// What rasterizing one triangle did.
@@ -87,6 +120,7 @@ impl SampleBuffers {
             depth: vec![clear_depth; n],
             triangle: vec![NONE; n],
             offsets: sample_offsets_fixed(samples),
+            bins: Bins::default(),
         }
     }
 
@@ -152,7 +186,7 @@ impl SampleBuffers {
     /// own rows. A sample belongs to one band, so the result is the same as drawing the
     /// triangles one after another over the whole image ([`Self::rasterize_reference`] checks
     /// it in the tests).
-    pub fn rasterize_all(&mut self, tris: &[RasterTriangle], test: DepthTest) -> Vec<RasterCounts> {
+    pub fn rasterize_all(&mut self, tris: &[RasterTriangle], test: DepthTest) -> &[RasterCounts] {
         use rayon::prelude::*;
         let (w, n) = (self.width as usize, self.offsets.len());
         let h = self.height as usize;
@@ -162,11 +196,18 @@ impl SampleBuffers {
         // Binning, in parallel over runs of triangles: each band gets the triangles whose
         // bounding box reaches its rows, run after run, so in order.
         const RUN: usize = 1 << 16;
-        let runs: Vec<Vec<Vec<u32>>> = tris
-            .par_chunks(RUN)
+        let Bins {
+            runs,
+            counts,
+            total,
+        } = &mut self.bins;
+        runs.resize_with(tris.len().div_ceil(RUN), Vec::new);
+        runs.par_iter_mut()
+            .zip(tris.par_chunks(RUN))
             .enumerate()
-            .map(|(r, run)| {
-                let mut bins: Vec<Vec<u32>> = vec![Vec::new(); bands];
+            .for_each(|(r, (bins, run))| {
+                bins.resize_with(bands, Vec::new);
+                bins.iter_mut().for_each(Vec::clear);
                 for (k, t) in run.iter().enumerate() {
                     let [_, y0, _, y1] = t.bbox;
                     // Image rows of the box: h − 1 − y1 (top) to h − 1 − y0 (bottom).
@@ -175,17 +216,17 @@ impl SampleBuffers {
                         bin.push((r * RUN + k) as u32);
                     }
                 }
-                bins
-            })
-            .collect();
+            });
         let chunk = rows_per * w * n;
         let (height, offsets) = (self.height, &self.offsets);
-        let per_band: Vec<Vec<(u32, RasterCounts)>> = self
-            .depth
+        counts.resize_with(bands, Vec::new);
+        let runs = &*runs;
+        self.depth
             .par_chunks_mut(chunk)
             .zip(self.triangle.par_chunks_mut(chunk))
+            .zip(counts.par_iter_mut())
             .enumerate()
-            .map(|(b, (depth, owner))| {
+            .for_each(|(b, ((depth, owner), counts))| {
                 let rows = depth.len() / (w * n);
                 let mut band = Band {
                     depth,
@@ -196,18 +237,39 @@ impl SampleBuffers {
                     rows,
                     offsets,
                 };
-                runs.iter()
-                    .flat_map(|bins| &bins[b])
-                    .map(|&i| (i, band.rasterize(&tris[i as usize], i, test)))
-                    .collect()
-            })
-            .collect();
-        let mut total = vec![RasterCounts::default(); tris.len()];
-        for (i, c) in per_band.into_iter().flatten() {
-            let t = &mut total[i as usize];
-            t.covered += c.covered;
-            t.written += c.written;
+                counts.clear();
+                counts.extend(
+                    runs.iter()
+                        .flat_map(|bins| &bins[b])
+                        .map(|&i| band.rasterize(&tris[i as usize], i, test)),
+                );
+            });
+        // Each run's triangles summed over the bands, in parallel over runs: run `r`'s entries
+        // in band `b`'s counts follow those of the runs before it.
+        let counts = &*counts;
+        let mut firsts: Vec<Vec<usize>> = Vec::with_capacity(runs.len());
+        let mut at = vec![0usize; bands];
+        for bins in runs {
+            firsts.push(at.clone());
+            for (a, bin) in at.iter_mut().zip(bins) {
+                *a += bin.len();
+            }
         }
+        total.clear();
+        total.resize(tris.len(), RasterCounts::default());
+        total
+            .par_chunks_mut(RUN)
+            .zip(runs.par_iter().zip(firsts))
+            .enumerate()
+            .for_each(|(r, (total, (bins, firsts)))| {
+                for ((bin, first), counts) in bins.iter().zip(firsts).zip(counts) {
+                    for (&i, c) in bin.iter().zip(&counts[first..]) {
+                        let t = &mut total[i as usize - r * RUN];
+                        t.covered += c.covered;
+                        t.written += c.written;
+                    }
+                }
+            });
         total
     }
 
