@@ -194,13 +194,15 @@ impl SampleBuffers {
         let rows_per = h.div_ceil(bands).max(1);
         let bands = h.div_ceil(rows_per);
         // Binning, in parallel over runs of triangles: each band gets the triangles whose
-        // bounding box reaches its rows, run after run, so in order.
+        // bounding box reaches its rows, run after run, so in order. A triangle whose box holds
+        // no sample position covers none and is left out (its counts stay zero).
         const RUN: usize = 1 << 16;
         let Bins {
             runs,
             counts,
             total,
         } = &mut self.bins;
+        let offsets = &self.offsets;
         runs.resize_with(tris.len().div_ceil(RUN), Vec::new);
         runs.par_iter_mut()
             .zip(tris.par_chunks(RUN))
@@ -209,6 +211,9 @@ impl SampleBuffers {
                 bins.resize_with(bands, Vec::new);
                 bins.iter_mut().for_each(Vec::clear);
                 for (k, t) in run.iter().enumerate() {
+                    if !t.box_holds_a_sample(offsets) {
+                        continue;
+                    }
                     let [_, y0, _, y1] = t.bbox;
                     // Image rows of the box: h − 1 − y1 (top) to h − 1 − y0 (bottom).
                     let (r0, r1) = (h - 1 - y1 as usize, h - 1 - y0 as usize);
@@ -218,7 +223,7 @@ impl SampleBuffers {
                 }
             });
         let chunk = rows_per * w * n;
-        let (height, offsets) = (self.height, &self.offsets);
+        let height = self.height;
         counts.resize_with(bands, Vec::new);
         let runs = &*runs;
         self.depth
