@@ -8,6 +8,9 @@
 //! pixels (colour, lighting terms, texture lookups) in [`resolve`].
 
 mod assembly;
+mod coarse;
+#[cfg(test)]
+mod fixtures;
 mod resolve;
 mod runs;
 

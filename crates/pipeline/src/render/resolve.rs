@@ -58,12 +58,12 @@ struct RowScratch {
 /// What coarse shading reuses across a 2×2 block: the raster triangle shaded and the result.
 #[derive(Clone, Copy)]
 pub(super) struct BlockShade {
-    triangle: u32,
-    shaded: Shaded,
+    pub(super) triangle: u32,
+    pub(super) shaded: Shaded,
 }
 
 /// The result of shading a point: colour, lighting terms, texture lookup.
-type Shaded = (Vec3, Option<ShadeTerms>, Option<(Vec2, Lookup)>);
+pub(super) type Shaded = (Vec3, Option<ShadeTerms>, Option<(Vec2, Lookup)>);
 
 impl RowOut<'_> {
     /// Resolves image row `row` (window `y`) into every kept buffer, so that reused storage
@@ -77,8 +77,11 @@ impl RowOut<'_> {
         s.read.clear();
         let coarse = ctx.settings.coarse_shading;
         // Runs of pixels, each inside a triangle of one object, are shaded together, unless
-        // coarse shading shares 2×2 blocks or every sample is shaded by itself.
-        let runs = !coarse && !ctx.settings.per_sample_shading;
+        // every sample is shaded by itself. With coarse shading, at one sample, a run shades
+        // together only what its 2×2 blocks do not share (see `coarse`).
+        let one = ctx.settings.samples.count() == 1;
+        let runs = !ctx.settings.per_sample_shading && (!coarse || one);
+        let mut blocks = std::mem::take(&mut s.blocks);
         let mut x = 0;
         while x < w {
             let i = row * w + x;
@@ -94,14 +97,21 @@ impl RowOut<'_> {
             // sample) cost more in lanes than they save: their pixels take the per-pixel path,
             // without looking again.
             if let Some(run) = run.filter(|r| r.len >= 4) {
-                ctx.resolve_run(&run, (x as u32, y), i, |k, r| self.store(x + k, r, s));
+                let at = (x as u32, y);
+                if coarse {
+                    ctx.resolve_coarse_run(&run, at, i, &mut blocks, |k, r| {
+                        self.store(x + k, r, s);
+                    });
+                } else {
+                    ctx.resolve_run(&run, at, i, |k, r| self.store(x + k, r, s));
+                }
                 x += run.pixels;
                 continue;
             }
             let len = run.map_or(1, |r| r.pixels);
             for x in x..x + len {
                 let block = if coarse && ctx.settings.capture.pixel != Some((x as u32, y)) {
-                    s.blocks.get_mut(x / 2)
+                    blocks.get_mut(x / 2)
                 } else {
                     None
                 };
@@ -110,6 +120,7 @@ impl RowOut<'_> {
             }
             x += len;
         }
+        s.blocks = blocks;
         if let Some(out) = &mut self.shading {
             out.store(&s.lit, &s.lighting, &mut s.halves);
         }

@@ -26,7 +26,7 @@ use crate::texture::Lookup;
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Run {
     /// Each fragment's raster triangle; [`NONE`] past `len`.
-    triangle: [u32; LANES],
+    pub(super) triangle: [u32; LANES],
     /// Each fragment's pixel, counted from the run's first.
     pixel: [u8; LANES],
     /// How many of its pixel's samples each fragment covers.
@@ -39,7 +39,39 @@ pub(super) struct Run {
     pub(super) pixels: usize,
 }
 
+/// What [`ResolveContext::shade_run`] gives each fragment of a run.
+pub(super) struct RunShading {
+    pub(super) color: [Vec3; LANES],
+    pub(super) terms: [Option<ShadeTerms>; LANES],
+    pub(super) texels: [Option<(Vec2, Lookup)>; LANES],
+}
+
 impl Run {
+    /// No fragment yet.
+    pub(super) fn empty() -> Self {
+        Self {
+            triangle: [NONE; LANES],
+            pixel: [0; LANES],
+            weight: [0; LANES],
+            owner: [NONE; LANES],
+            len: 0,
+            pixels: 0,
+        }
+    }
+
+    /// Adds raster triangle `t` in pixel `k` of the run as its next fragment, covering the
+    /// pixel's one sample, and returns the fragment's index.
+    pub(super) fn push(&mut self, t: u32, k: usize) -> usize {
+        let f = self.len;
+        self.triangle[f] = t;
+        self.pixel[f] = k as u8;
+        self.weight[f] = 1;
+        self.owner[k] = t;
+        self.len += 1;
+        self.pixels = k + 1;
+        f
+    }
+
     /// Whether a pixel of the run lies on two triangles or more.
     #[cfg(test)]
     fn has_edges(&self) -> bool {
@@ -65,14 +97,10 @@ impl ResolveContext<'_> {
     /// threads, session 12); with fragments, the pixels on the edges at 4 samples join them.
     pub(super) fn run_at(&self, i: usize, room: usize) -> Option<Run> {
         let s = self.settings.samples.count();
-        let mut run = Run {
-            triangle: [NONE; LANES],
-            pixel: [0; LANES],
-            weight: [0; LANES],
-            owner: [NONE; LANES],
-            len: 0,
-            pixels: 0,
-        };
+        if s == 1 {
+            return self.run_at_one_sample(i, room);
+        }
+        let mut run = Run::empty();
         // The run's object, and the last triangle found on it.
         let mut on: Option<(u32, u32)> = None;
         while run.pixels < room.min(LANES) {
@@ -120,6 +148,29 @@ impl ResolveContext<'_> {
         (run.pixels > 0).then_some(run)
     }
 
+    /// [`Self::run_at`] at one sample a pixel: each pixel is one fragment, its triangle.
+    fn run_at_one_sample(&self, i: usize, room: usize) -> Option<Run> {
+        let mut run = Run::empty();
+        let (mut object, mut last) = (NONE, NONE);
+        for (k, &t) in self.samples.triangle[i..i + room.min(LANES)]
+            .iter()
+            .enumerate()
+        {
+            if t == NONE {
+                break;
+            }
+            if t != last {
+                let on = self.object_of(t);
+                if k > 0 && on != object {
+                    break;
+                }
+                (object, last) = (on, t);
+            }
+            run.push(t, k);
+        }
+        (run.pixels > 0).then_some(run)
+    }
+
     /// The object raster triangle `t` belongs to.
     fn object_of(&self, t: u32) -> u32 {
         self.primitives[self.triangles[t as usize].primitive as usize].object
@@ -135,6 +186,52 @@ impl ResolveContext<'_> {
         i: usize,
         mut out: impl FnMut(usize, &ResolvedPixel),
     ) {
+        let n = run.len;
+        let tri = |f: usize| &self.triangles[run.triangle[f] as usize];
+        let shaded = self.shade_run(run, (x, y));
+        let color = |f: usize| shaded.color[f];
+        let s = self.settings.samples.count();
+        let mut f = 0;
+        for k in 0..run.pixels {
+            let first = f;
+            while f < n && usize::from(run.pixel[f]) == k {
+                f += 1;
+            }
+            let owner = run.owner[k];
+            let primitive = self.triangles[owner as usize].primitive;
+            // One fragment: its colour. More: their colours weighted by their samples, as
+            // multisampling resolves them (every sample covered: no background in the sum).
+            let (color, kept) = if f - first == 1 {
+                (color(first), first)
+            } else {
+                let mut sum = self.settings.background * 0.0;
+                for g in first..f {
+                    sum += color(g) * f32::from(run.weight[g]);
+                }
+                let kept = (first..f)
+                    .find(|&g| tri(g).primitive == primitive)
+                    .unwrap_or(first);
+                (sum / s as f32, kept)
+            };
+            out(
+                k,
+                &ResolvedPixel {
+                    terms: shaded.terms[kept],
+                    texture: shaded.texels[kept],
+                    coverage: s as u8,
+                    depth: self.mean_depth(i + k),
+                    primitive,
+                    owner,
+                    color: color.to_array(),
+                },
+            );
+        }
+    }
+
+    /// The colours, lighting terms and texture lookups of `run`'s fragments (whose pixels
+    /// are counted from window `(x, y)`), each as [`Self::shade_at`] gives it at its pixel's
+    /// centre.
+    pub(super) fn shade_run(&self, run: &Run, (x, y): (u32, u32)) -> RunShading {
         let n = run.len;
         let tri = |f: usize| &self.triangles[run.triangle[f] as usize];
         let object = &self.scene.objects[self.object_of(run.triangle[0]) as usize];
@@ -189,42 +286,14 @@ impl ResolveContext<'_> {
                 terms[f] = self.terms_of(tri(f), b[f], surface[f], texels[f].is_some());
             }
         }
-        let color = |f: usize| terms[f].map_or(surface[f], |t| t.color());
-        let s = self.settings.samples.count();
-        let mut f = 0;
-        for k in 0..run.pixels {
-            let first = f;
-            while f < n && usize::from(run.pixel[f]) == k {
-                f += 1;
-            }
-            let owner = run.owner[k];
-            let primitive = self.triangles[owner as usize].primitive;
-            // One fragment: its colour. More: their colours weighted by their samples, as
-            // multisampling resolves them (every sample covered: no background in the sum).
-            let (color, kept) = if f - first == 1 {
-                (color(first), first)
-            } else {
-                let mut sum = self.settings.background * 0.0;
-                for g in first..f {
-                    sum += color(g) * f32::from(run.weight[g]);
-                }
-                let kept = (first..f)
-                    .find(|&g| tri(g).primitive == primitive)
-                    .unwrap_or(first);
-                (sum / s as f32, kept)
-            };
-            out(
-                k,
-                &ResolvedPixel {
-                    terms: terms[kept],
-                    texture: texels[kept],
-                    coverage: s as u8,
-                    depth: self.mean_depth(i + k),
-                    primitive,
-                    owner,
-                    color: color.to_array(),
-                },
-            );
+        let mut color = [Vec3::ZERO; LANES];
+        for f in 0..n {
+            color[f] = terms[f].map_or(surface[f], |t| t.color());
+        }
+        RunShading {
+            color,
+            terms,
+            texels,
         }
     }
 
@@ -292,136 +361,13 @@ impl ResolveContext<'_> {
 
 #[cfg(test)]
 mod tests {
-    use std::sync::Arc;
-
-    use glam::Vec3;
-
     use super::*;
     use crate::buffers::Capture;
-    use crate::camera::{Camera, Projection};
-    use crate::light::Light;
-    use crate::mesh::BuiltinMesh;
     use crate::raster::Samples;
-    use crate::scene::{Object, Scene};
+    use crate::render::fixtures::{assert_kept, scene};
     use crate::settings::RenderSettings;
     use crate::shade::Reflection;
-    use crate::texture::{CubeMap, Environment, Mipmap, SurfaceDetail, Texture};
-
-    /// A textured floor and sphere, a mirror torus and a bump-mapped cube, under every kind of
-    /// light, seen in perspective: runs with and without a texture, an environment, a detail map
-    /// (which the lanes leave to the per-pixel path), and an unlit object.
-    fn scene() -> Scene {
-        let checker = Arc::new(Texture::checkerboard(64, 8));
-        let mut floor = Object::new(
-            "floor",
-            BuiltinMesh::Plane {
-                divisions: 2,
-                repeat: 4.0,
-            }
-            .build(),
-        );
-        (floor.texture, floor.scale, floor.translate) = (
-            Some(checker.clone()),
-            Vec3::splat(4.0),
-            Vec3::new(0.0, -1.0, 0.0),
-        );
-        let mut ball = Object::new(
-            "ball",
-            BuiltinMesh::UvSphere {
-                segments: 24,
-                rings: 12,
-            }
-            .build(),
-        );
-        ball.texture = Some(checker);
-        let mut torus = Object::new(
-            "torus",
-            BuiltinMesh::Torus {
-                minor: 0.3,
-                segments: 24,
-                sides: 12,
-            }
-            .build(),
-        );
-        torus.translate = Vec3::new(2.0, 0.0, -1.0);
-        torus.environment = Some(Environment {
-            cube: Arc::new(CubeMap::room(16)),
-            reflectivity: 0.6,
-        });
-        let mut cube = Object::new("cube", BuiltinMesh::Cube.build());
-        (cube.translate, cube.scale) = (Vec3::new(-2.2, 0.0, -1.0), Vec3::splat(0.7));
-        cube.detail = Some(SurfaceDetail::Bump {
-            height: Arc::new(Texture::bumps(32, 4)),
-            strength: 0.5,
-        });
-        let mut unlit = Object::new("unlit", BuiltinMesh::Triangle.build());
-        (unlit.translate, unlit.lit) = (Vec3::new(0.0, 1.6, -2.0), false);
-        Scene {
-            objects: vec![floor, ball, torus, cube, unlit],
-            camera: Camera {
-                eye: Vec3::new(0.5, 1.5, 5.0),
-                at: Vec3::ZERO,
-                up: Vec3::Y,
-            },
-            projection: Projection::Perspective {
-                fovy_deg: 50.0,
-                aspect: None,
-                near: 0.5,
-                far: 30.0,
-            },
-            figures: Vec::new(),
-            shadow: None,
-            lights: vec![
-                Light::Ambient {
-                    intensity: Vec3::splat(0.2),
-                },
-                Light::Point {
-                    position: Vec3::new(3.0, 4.0, 3.0),
-                    intensity: Vec3::new(9.0, 8.0, 7.0),
-                    attenuation: Vec3::new(0.0, 0.0, 1.0),
-                },
-                Light::Directional {
-                    direction: Vec3::new(-1.0, -2.0, -0.5),
-                    intensity: Vec3::splat(0.3),
-                },
-                Light::Spot {
-                    position: Vec3::new(-2.0, 3.0, 2.0),
-                    direction: Vec3::new(0.6, -1.0, -0.6),
-                    cutoff_deg: 30.0,
-                    exponent: 2.0,
-                    intensity: Vec3::splat(0.8),
-                    attenuation: Vec3::new(1.0, 0.1, 0.0),
-                },
-            ],
-        }
-    }
-
-    /// Asserts that the frame's buffers hold `want` at pixel `i`: its colour, depth, owner,
-    /// coverage and primitive, and, when every buffer is kept, its texture coordinates and
-    /// (as half floats) its normal.
-    fn assert_kept(
-        px: &crate::capture::PixelBuffers,
-        i: usize,
-        want: &ResolvedPixel,
-        settings: &RenderSettings,
-        at: &str,
-    ) {
-        assert_eq!(
-            (px.color[i], px.depth[i], px.owner[i], px.coverage[i]),
-            (want.color, want.depth, want.owner, want.coverage),
-            "setting {at}"
-        );
-        assert_eq!(px.primitive[i], want.primitive, "setting {at}");
-        if settings.capture == Capture::FULL {
-            let uv = want.texture.map(|(uv, _)| uv.to_array());
-            assert_eq!(px.texture_at(i).map(|t| t.uv), uv, "setting {at}");
-            let normal = want.terms.map_or([0.0; 3], |t| t.normal.to_array());
-            let half = |v: [f32; 3]| v.map(|c| half::f16::from_f32(c).to_f32());
-            let lit = settings.shading != Frequency::Unlit;
-            let kept = px.lighting_at(i).map(|l| l.normal);
-            assert_eq!(kept, lit.then(|| half(normal)), "setting {at}");
-        }
-    }
+    use crate::texture::Mipmap;
 
     /// The settings the runs are checked with: every shading frequency, both reflection
     /// models, four minification filters, 1, 4 and 8 samples.
