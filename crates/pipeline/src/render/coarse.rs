@@ -79,7 +79,13 @@ impl ResolveContext<'_> {
         }
         // A colour-only frame keeps no terms: they are not copied for each pixel (two thirds
         // of a pixel's bytes here).
+        // The pixel is built once and its fields set for each: left empty, the terms cost
+        // nothing to hand over.
         let keeps = self.settings.capture.lighting || self.settings.capture.texturing;
+        let mut pixel = ResolvedPixel {
+            coverage: 1,
+            ..ResolvedPixel::default()
+        };
         for (k, from) in from.iter().enumerate().take(run.pixels) {
             let (color, terms, texture) = match (*from, &blocks[(x as usize + k) / 2], &shaded) {
                 (Source::Block, Some(b), _) if keeps => b.shaded,
@@ -89,18 +95,16 @@ impl ResolveContext<'_> {
                 _ => Shaded::default(),
             };
             let owner = run.triangle[k];
-            out(
-                k,
-                &ResolvedPixel {
-                    terms,
-                    texture,
-                    coverage: 1,
-                    depth: self.mean_depth(i + k),
-                    primitive: self.triangles[owner as usize].primitive,
-                    owner,
-                    color: color.to_array(),
-                },
-            );
+            if keeps {
+                (pixel.terms, pixel.texture) = (terms, texture);
+            }
+            if owner != pixel.owner || k == 0 {
+                pixel.primitive = self.triangles[owner as usize].primitive;
+            }
+            pixel.owner = owner;
+            pixel.depth = self.mean_depth(i + k);
+            pixel.color = color.to_array();
+            out(k, &pixel);
         }
     }
 }
