@@ -113,8 +113,7 @@ impl ResolveContext<'_> {
 mod tests {
     use crate::buffers::Capture;
     use crate::raster::Samples;
-    use crate::render::fixtures::{assert_kept, scene};
-    use crate::render::resolve::ResolveContext;
+    use crate::render::fixtures::{assert_kept, context, scene};
     use crate::settings::RenderSettings;
     use crate::shade::{Frequency, Reflection};
 
@@ -161,17 +160,7 @@ mod tests {
                 },
             )
             .expect("renders");
-            let ctx = ResolveContext {
-                derivatives: settings.capture.texturing || settings.sampler.uses_footprint(),
-                vertex_shading: &frame.vertex_shading,
-                face_shading: &frame.face_shading,
-                scene: &scene,
-                settings: &settings,
-                samples: &frame.samples,
-                triangles: &frame.triangles,
-                primitives: &frame.primitives,
-                vertices: &frame.vertices,
-            };
+            let ctx = context(&frame, &scene, &settings);
             for pair in (0..h).step_by(2) {
                 let mut blocks = vec![None; w.div_ceil(2)];
                 for row in pair..(pair + 2).min(h) {

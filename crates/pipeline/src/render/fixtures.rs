@@ -5,9 +5,10 @@ use std::sync::Arc;
 
 use glam::Vec3;
 
-use super::resolve::ResolvedPixel;
+use super::resolve::{ResolveContext, ResolvedPixel};
 use crate::buffers::Capture;
 use crate::camera::{Camera, Projection};
+use crate::capture::FrameCapture;
 use crate::light::Light;
 use crate::mesh::BuiltinMesh;
 use crate::scene::{Object, Scene};
@@ -128,5 +129,25 @@ pub(crate) fn assert_kept(
         let lit = settings.shading != Frequency::Unlit;
         let kept = px.lighting_at(i).map(|l| l.normal);
         assert_eq!(kept, lit.then(|| half(normal)), "setting {at}");
+    }
+}
+
+/// What the resolve of `frame` (rendered from `scene` with `settings`) read, for resolving its
+/// pixels again by the per-pixel path.
+pub(crate) fn context<'a>(
+    frame: &'a FrameCapture,
+    scene: &'a Scene,
+    settings: &'a RenderSettings,
+) -> ResolveContext<'a> {
+    ResolveContext {
+        derivatives: settings.capture.texturing || settings.sampler.uses_footprint(),
+        vertex_shading: &frame.vertex_shading,
+        face_shading: &frame.face_shading,
+        scene,
+        settings,
+        samples: &frame.samples,
+        triangles: &frame.triangles,
+        primitives: &frame.primitives,
+        vertices: &frame.vertices,
     }
 }

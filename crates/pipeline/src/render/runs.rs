@@ -364,7 +364,7 @@ mod tests {
     use super::*;
     use crate::buffers::Capture;
     use crate::raster::Samples;
-    use crate::render::fixtures::{assert_kept, scene};
+    use crate::render::fixtures::{assert_kept, context, scene};
     use crate::settings::RenderSettings;
     use crate::shade::Reflection;
     use crate::texture::Mipmap;
@@ -439,17 +439,7 @@ mod tests {
             };
             settings.sampler.mipmap = mipmap;
             let frame = crate::render::render(&scene, &settings).expect("renders");
-            let ctx = ResolveContext {
-                derivatives: settings.capture.texturing || settings.sampler.uses_footprint(),
-                vertex_shading: &frame.vertex_shading,
-                face_shading: &frame.face_shading,
-                scene: &scene,
-                settings: &settings,
-                samples: &frame.samples,
-                triangles: &frame.triangles,
-                primitives: &frame.primitives,
-                vertices: &frame.vertices,
-            };
+            let ctx = context(&frame, &scene, &settings);
             let (w, h) = (settings.width as usize, settings.height as usize);
             for row in 0..h {
                 let y = (h - 1 - row) as u32;

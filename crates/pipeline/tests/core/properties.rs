@@ -150,15 +150,11 @@ proptest! {
             .iter()
             .enumerate()
             .filter_map(|(k, t)| {
-                RasterTriangle::setup(
-                    k as u32,
+                plain_triangle(
+                    k,
                     [Vec3::new(t.0, t.1, t.6), Vec3::new(t.2, t.3, t.7), Vec3::new(t.4, t.5, t.8)],
-                    [1.0; 3],
-                    [Vec3::X, Vec3::Y, Vec3::Z],
-                    pipeline::raster::CullMode::None,
                     size,
                 )
-                .ok()
             })
             .collect();
         fast_equals_reference(&raster, size, s, test)?;
@@ -183,19 +179,29 @@ proptest! {
             .enumerate()
             .filter_map(|(k, &(x, y, dx1, dy1, dx2, dy2, z))| {
                 let at = |dx: i32, dy: i32| Vec3::new((x + dx) as f32 / 16.0, (y + dy) as f32 / 16.0, z);
-                RasterTriangle::setup(
-                    k as u32,
-                    [at(0, 0), at(dx1, dy1), at(dx2, dy2)],
-                    [1.0; 3],
-                    [Vec3::X, Vec3::Y, Vec3::Z],
-                    pipeline::raster::CullMode::None,
-                    size,
-                )
-                .ok()
+                plain_triangle(k, [at(0, 0), at(dx1, dy1), at(dx2, dy2)], size)
             })
             .collect();
         fast_equals_reference(&raster, size, s, test)?;
     }
+}
+
+/// Raster triangle `k` with these window corners (`w = 1`, no clipping, no culling), or `None`
+/// when it has no area.
+fn plain_triangle(
+    k: usize,
+    window: [Vec3; 3],
+    size: (u32, u32),
+) -> Option<pipeline::raster::RasterTriangle> {
+    pipeline::raster::RasterTriangle::setup(
+        k as u32,
+        window,
+        [1.0; 3],
+        [Vec3::X, Vec3::Y, Vec3::Z],
+        pipeline::raster::CullMode::None,
+        size,
+    )
+    .ok()
 }
 
 /// Draws `raster` with the fast rasterizer and with the reference one, and checks that the
