@@ -4,7 +4,8 @@
 //! [`ResolveContext::pixel`] does it pixel by pixel with the block's shading so far; a run of
 //! pixels at one sample has here the fragments it must shade lit together in lanes
 //! ([`ResolveContext::shade_run`]), with the same result bit for bit (the test compares the
-//! two).
+//! two). A run spans up to sixteen pixels: in a row pair's first row about every other pixel is
+//! shaded, so sixteen pixels fill the eight lanes.
 
 use super::resolve::{BlockShade, ResolveContext, ResolvedPixel, Shaded};
 use super::runs::Run;
@@ -20,27 +21,30 @@ enum Source {
 }
 
 impl ResolveContext<'_> {
-    /// Resolves the pixels of `run` (one sample a pixel) from window `(x, y)` (image index
-    /// `i`) on, with coarse shading, as [`Self::pixel`] resolves each with its block from
-    /// `blocks` (block `x / 2` of the row pair), and hands pixel `k` of the run to
-    /// `out(k, pixel)` (its terms and texture lookup only when the capture keeps them). The
-    /// blocks this run shades first are filled in.
+    /// Resolves consecutive pixels from window `(x, y)` (image index `i`) on, at one sample
+    /// a pixel, pixel `k` covered by raster triangle `span[k]` (all of one object, see
+    /// [`Self::span_at_one_sample`]), with coarse shading, as [`Self::pixel`] resolves each
+    /// with its block from `blocks` (block `x / 2` of the row pair); hands pixel `k` to
+    /// `out(k, pixel)` (its terms and texture lookup only when the capture keeps them) and
+    /// fills in the blocks it shades first. Returns how many pixels it resolved: all of
+    /// `span`, or fewer when they need more than [`LANES`] fragments shaded.
     pub(super) fn resolve_coarse_run(
         &self,
-        run: &Run,
+        span: &[u32],
         (x, y): (u32, u32),
         i: usize,
         blocks: &mut [Option<BlockShade>],
         mut out: impl FnMut(usize, &ResolvedPixel),
-    ) {
-        let mut from = [Source::Fragment(0); LANES];
+    ) -> usize {
+        let mut from = [Source::Fragment(0); 2 * LANES];
         let mut shade = Run::empty();
         // The blocks, empty before the run, whose shading is a fragment of it:
         // (block, triangle, fragment).
         let mut fills = [(usize::MAX, 0u32, 0usize); LANES];
         let mut filled = 0;
-        for (k, from) in from.iter_mut().enumerate().take(run.pixels) {
-            let (t, b) = (run.triangle[k], (x as usize + k) / 2);
+        let mut pixels = span.len().min(2 * LANES);
+        for (k, from) in from.iter_mut().enumerate().take(pixels) {
+            let (t, b) = (span[k], (x as usize + k) / 2);
             // The inspected pixel is shaded by itself (its explanation derives its colour
             // from its own records) and leaves its block alone.
             let inspected = self.settings.capture.pixel == Some((x + k as u32, y));
@@ -58,7 +62,11 @@ impl ResolveContext<'_> {
                     _ => {}
                 }
             }
-            let f = shade.push(t, k);
+            if shade.len == LANES {
+                pixels = k;
+                break;
+            }
+            let f = shade.push_fragment(t, k);
             *from = Source::Fragment(f);
             if !inspected && blocks[b].is_none() && fill.is_none() {
                 fills[filled] = (b, t, f);
@@ -77,16 +85,14 @@ impl ResolveContext<'_> {
                 shaded: fragment(f),
             });
         }
-        // A colour-only frame keeps no terms: they are not copied for each pixel (two thirds
-        // of a pixel's bytes here).
-        // The pixel is built once and its fields set for each: left empty, the terms cost
-        // nothing to hand over.
+        // The pixel is built once and its fields set for each. A colour-only frame keeps no
+        // terms: left empty, they cost nothing to hand over (two thirds of a pixel's bytes).
         let keeps = self.settings.capture.lighting || self.settings.capture.texturing;
         let mut pixel = ResolvedPixel {
             coverage: 1,
             ..ResolvedPixel::default()
         };
-        for (k, from) in from.iter().enumerate().take(run.pixels) {
+        for (k, from) in from.iter().enumerate().take(pixels) {
             let (color, terms, texture) = match (*from, &blocks[(x as usize + k) / 2], &shaded) {
                 (Source::Block, Some(b), _) if keeps => b.shaded,
                 (Source::Block, Some(b), _) => (b.shaded.0, None, None),
@@ -94,7 +100,7 @@ impl ResolveContext<'_> {
                 (Source::Fragment(f), _, Some(s)) => (s.color[f], None, None),
                 _ => Shaded::default(),
             };
-            let owner = run.triangle[k];
+            let owner = span[k];
             if keeps {
                 (pixel.terms, pixel.texture) = (terms, texture);
             }
@@ -106,6 +112,7 @@ impl ResolveContext<'_> {
             pixel.color = color.to_array();
             out(k, &pixel);
         }
+        pixels
     }
 }
 

@@ -14,6 +14,7 @@ use crate::capture::{
 use crate::raster::{NONE, ONE, RasterTriangle, SampleBuffers};
 use crate::scene::Scene;
 use crate::settings::RenderSettings;
+use crate::shade::lanes::LANES;
 use crate::shade::{self, Frequency, ShadeTerms};
 use crate::texture::{Environment, Lookup};
 use crate::vertex::VertexRecord;
@@ -75,12 +76,12 @@ impl RowOut<'_> {
         s.uvs.clear();
         s.texturing.clear();
         s.read.clear();
-        let coarse = ctx.settings.coarse_shading;
-        // Runs of pixels, each inside a triangle of one object, are shaded together, unless
-        // every sample is shaded by itself. With coarse shading, at one sample, a run shades
-        // together only what its 2×2 blocks do not share (see `coarse`).
-        let one = ctx.settings.samples.count() == 1;
-        let runs = !ctx.settings.per_sample_shading && (!coarse || one);
+        let (coarse, per_sample) = (ctx.settings.coarse_shading, ctx.settings.per_sample_shading);
+        // Runs of pixels, each covered by triangles of one object, are shaded together, unless
+        // every sample is shaded by itself. With coarse shading, at one sample, a run of up to
+        // sixteen pixels shades together what its 2×2 blocks do not share (see `coarse`).
+        let runs = !per_sample && !coarse;
+        let coarse_runs = !per_sample && coarse && ctx.settings.samples.count() == 1;
         let mut blocks = std::mem::take(&mut s.blocks);
         let mut x = 0;
         while x < w {
@@ -92,23 +93,29 @@ impl RowOut<'_> {
                 x += empty;
                 continue;
             }
-            let run = runs.then(|| ctx.run_at(i, w - x)).flatten();
             // Shorter runs (a few pixels between a silhouette and a pixel with an uncovered
             // sample) cost more in lanes than they save: their pixels take the per-pixel path,
             // without looking again.
-            if let Some(run) = run.filter(|r| r.len >= 4) {
-                let at = (x as u32, y);
-                if coarse {
-                    ctx.resolve_coarse_run(&run, at, i, &mut blocks, |k, r| {
-                        self.store(x + k, r, s);
+            let at = (x as u32, y);
+            let len = if coarse_runs {
+                let (span, n) = ctx.span_at_one_sample::<{ 2 * LANES }>(i, w - x);
+                if n >= 4 {
+                    let x0 = x;
+                    x += ctx.resolve_coarse_run(&span[..n], at, i, &mut blocks, |k, r| {
+                        self.store(x0 + k, r, s);
                     });
-                } else {
-                    ctx.resolve_run(&run, at, i, |k, r| self.store(x + k, r, s));
+                    continue;
                 }
-                x += run.pixels;
-                continue;
-            }
-            let len = run.map_or(1, |r| r.pixels);
+                n.max(1)
+            } else {
+                let run = runs.then(|| ctx.run_at(i, w - x)).flatten();
+                if let Some(run) = run.filter(|r| r.len >= 4) {
+                    ctx.resolve_run(&run, at, i, |k, r| self.store(x + k, r, s));
+                    x += run.pixels;
+                    continue;
+                }
+                run.map_or(1, |r| r.pixels)
+            };
             for x in x..x + len {
                 let block = if coarse && ctx.settings.capture.pixel != Some((x as u32, y)) {
                     blocks.get_mut(x / 2)

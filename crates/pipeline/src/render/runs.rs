@@ -59,16 +59,22 @@ impl Run {
         }
     }
 
-    /// Adds raster triangle `t` in pixel `k` of the run as its next fragment, covering the
-    /// pixel's one sample, and returns the fragment's index.
-    pub(super) fn push(&mut self, t: u32, k: usize) -> usize {
+    /// Adds raster triangle `t` in pixel `k` of the run (its one sample) as the run's pixel `k`
+    /// and its next fragment.
+    fn push(&mut self, t: u32, k: usize) {
+        self.owner[k] = t;
+        self.pixels = k + 1;
+        self.push_fragment(t, k);
+    }
+
+    /// Adds raster triangle `t` in pixel `k` (counted from the run's first, which may be past
+    /// [`LANES`]) as the next fragment to shade, covering one sample, and returns its index.
+    pub(super) fn push_fragment(&mut self, t: u32, k: usize) -> usize {
         let f = self.len;
         self.triangle[f] = t;
         self.pixel[f] = k as u8;
         self.weight[f] = 1;
-        self.owner[k] = t;
         self.len += 1;
-        self.pixels = k + 1;
         f
     }
 
@@ -150,25 +156,38 @@ impl ResolveContext<'_> {
 
     /// [`Self::run_at`] at one sample a pixel: each pixel is one fragment, its triangle.
     fn run_at_one_sample(&self, i: usize, room: usize) -> Option<Run> {
+        let (triangles, n) = self.span_at_one_sample::<LANES>(i, room);
         let mut run = Run::empty();
+        for (k, &t) in triangles[..n].iter().enumerate() {
+            run.push(t, k);
+        }
+        (n > 0).then_some(run)
+    }
+
+    /// At one sample a pixel, the triangles of up to `N` consecutive pixels from image index
+    /// `i` on (at most `room`), covered by triangles of the object that covers the first, and
+    /// how many.
+    pub(super) fn span_at_one_sample<const N: usize>(
+        &self,
+        i: usize,
+        room: usize,
+    ) -> ([u32; N], usize) {
+        let mut span = [NONE; N];
         let (mut object, mut last) = (NONE, NONE);
-        for (k, &t) in self.samples.triangle[i..i + room.min(LANES)]
-            .iter()
-            .enumerate()
-        {
+        for (k, &t) in self.samples.triangle[i..i + room.min(N)].iter().enumerate() {
             if t == NONE {
-                break;
+                return (span, k);
             }
             if t != last {
                 let on = self.object_of(t);
                 if k > 0 && on != object {
-                    break;
+                    return (span, k);
                 }
                 (object, last) = (on, t);
             }
-            run.push(t, k);
+            span[k] = t;
         }
-        (run.pixels > 0).then_some(run)
+        (span, room.min(N))
     }
 
     /// The object raster triangle `t` belongs to.
