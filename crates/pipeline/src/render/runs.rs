@@ -26,7 +26,7 @@ use crate::texture::Lookup;
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Run {
     /// Each fragment's raster triangle; [`NONE`] past `len`.
-    pub(super) triangle: [u32; LANES],
+    triangle: [u32; LANES],
     /// Each fragment's pixel, counted from the run's first.
     pixel: [u8; LANES],
     /// How many of its pixel's samples each fragment covers.
