@@ -13,6 +13,7 @@
 //! | [`camera`], [`light`] | the camera and projection; lights and materials |
 //! | [`raster`] | edge functions, top-left rule, sample patterns, the z-buffer and depth test |
 //! | [`shade`] | Phong / Blinn-Phong terms, attenuation, shading frequencies |
+//! | [`shader`] | the student's GLSL: adapted, parsed and validated by naga, run on the CPU |
 //! | [`buffers`], [`settings`] | which per-pixel buffers there are and are kept; the render settings |
 //! | [`hierarchy`], [`scene`] | articulated figures; what is drawn |
 //! | [`vertex`], [`clip`] | model → world → eye → clip → NDC → window per vertex; clipping |
@@ -34,6 +35,7 @@ mod render;
 pub mod scene;
 pub mod settings;
 pub mod shade;
+pub mod shader;
 pub mod texture;
 pub mod transform;
 pub mod vertex;

@@ -199,7 +199,7 @@ impl Texture {
 
     /// One isotropic lookup at level of detail `lod`: returns the colour, the finer level read
     /// and the blend weight of the next one.
-    fn sample_lod(&self, uv: Vec2, lod: f32, s: &Sampler) -> (Vec3, u32, f32) {
+    pub(crate) fn sample_lod(&self, uv: Vec2, lod: f32, s: &Sampler) -> (Vec3, u32, f32) {
         let max = (self.levels.len() - 1) as f32;
         let read = |k: usize| self.read_level(k, uv, s.filter, s.wrap);
         match s.mipmap {

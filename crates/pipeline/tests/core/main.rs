@@ -15,6 +15,7 @@ mod properties;
 mod raster;
 mod sampling;
 mod shade;
+mod shader;
 mod support;
 mod texture;
 mod transform;

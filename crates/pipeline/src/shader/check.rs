@@ -1,0 +1,273 @@
+//! The checks that turn naga's findings and pipelens' own into a student's messages: naga's
+//! words said plainly, the uniforms, textures and attributes pipelens provides (with "did you
+//! mean"), uniforms never assigned, outputs always written.
+
+use std::ops::Range;
+
+use super::{ShaderError, Stage, code, dialect, error_at, interface, trace::glsl_type};
+
+/// naga's words for a student: handles such as `[7]` and `naga::ir::` paths left out.
+pub(super) fn plain(message: &str) -> String {
+    let mut out = String::with_capacity(message.len());
+    let mut skip = false;
+    for c in message.chars() {
+        match c {
+            '[' => skip = true,
+            ']' if skip => skip = false,
+            _ if !skip => out.push(c),
+            _ => {}
+        }
+    }
+    out.replace("naga::ir::", "")
+        .replace("  ", " ")
+        .replace(" of  ", " of ")
+        .trim()
+        .to_owned()
+}
+
+/// A validation error as one sentence: the innermost cause, said plainly.
+pub(super) fn validation_message(e: &naga::valid::ValidationError) -> String {
+    use std::error::Error;
+    let mut chain = vec![e.to_string()];
+    let mut source = e.source();
+    while let Some(s) = source {
+        chain.push(s.to_string());
+        source = s.source();
+    }
+    let inner = chain.last().cloned().unwrap_or_default();
+    if inner.contains("doesn't match the type stored in") {
+        return "the value's type is not the variable's type (a vec4 stored into a vec3? pick \
+                components with .rgb or .xyz, or convert with vec3(…))"
+            .to_owned();
+    }
+    if inner.contains("InvalidReturnType") || inner.contains("return type") {
+        return format!(
+            "the returned value's type is not the function's return type ({})",
+            plain(&inner)
+        );
+    }
+    plain(&chain.join(": "))
+}
+
+/// Uniforms and textures pipelens knows, with the right types; attributes it feeds.
+pub(super) fn check_declarations(
+    source: &str,
+    stage: Stage,
+    adapted: &dialect::Adapted,
+    module: &naga::Module,
+    errors: &mut Vec<ShaderError>,
+) {
+    use dialect::Storage;
+    let known_uniforms: Vec<&str> = interface::UNIFORMS
+        .iter()
+        .flat_map(|u| u.names.iter().copied())
+        .collect();
+    for d in &adapted.declarations {
+        match d.storage {
+            Storage::Uniform => match interface::uniform(&d.name) {
+                None => errors.push(error_at(
+                    source,
+                    d.name_span.clone(),
+                    format!(
+                        "pipelens sets no uniform called `{}`{}; the uniforms it sets: {}",
+                        d.name,
+                        did_you_mean(&d.name, &known_uniforms),
+                        interface::UNIFORMS.iter().map(|u| u.names[0]).collect::<Vec<_>>().join(", ")
+                    ),
+                )),
+                Some(spec) => {
+                    let written = glsl_type_of_global(module, &d.name).unwrap_or_default();
+                    let expected = spec.glsl.replace("MAX_LIGHTS", &interface::MAX_LIGHTS.to_string());
+                    if written != expected {
+                        errors.push(error_at(
+                            source,
+                            d.span.clone(),
+                            format!("pipelens' `{}` is a {expected} ({}), declared here as {written}", d.name, spec.meaning),
+                        ));
+                    }
+                }
+            },
+            Storage::Texture if !interface::TEXTURES.contains(&d.name.as_str()) => errors.push(error_at(
+                source,
+                d.name_span.clone(),
+                format!(
+                    "pipelens binds no texture called `{}`{}; the object's texture is `uniform sampler2D tex;`",
+                    d.name,
+                    did_you_mean(&d.name, &interface::TEXTURES)
+                ),
+            )),
+            Storage::Input if stage == Stage::Vertex && interface::attribute_location(&d.name).is_none() => {
+                let names: Vec<&str> = interface::ATTRIBUTES.iter().flat_map(|a| a.names.iter().copied()).collect();
+                errors.push(error_at(
+                    source,
+                    d.name_span.clone(),
+                    format!(
+                        "pipelens feeds no vertex attribute called `{}`{}; the attributes: {}",
+                        d.name,
+                        did_you_mean(&d.name, &names),
+                        interface::ATTRIBUTES.iter().map(|a| format!("{} {}", a.glsl, a.names[0])).collect::<Vec<_>>().join(", ")
+                    ),
+                ));
+            }
+            _ => {}
+        }
+    }
+    let outputs = adapted
+        .declarations
+        .iter()
+        .filter(|d| d.storage == Storage::Output)
+        .count();
+    if stage == Stage::Fragment && outputs > 1 {
+        let d = adapted
+            .declarations
+            .iter()
+            .rfind(|d| d.storage == Storage::Output);
+        errors.push(error_at(
+            source,
+            d.map_or(0..0, |d| d.span.clone()),
+            "pipelens draws into one colour buffer: declare one `out vec4` for the fragment's colour",
+        ));
+    }
+}
+
+/// ` (did you mean `x`?)` when a known name is close to `name`.
+pub(super) fn did_you_mean(name: &str, known: &[&str]) -> String {
+    known
+        .iter()
+        .map(|k| (edit_distance(name, k), k))
+        .filter(|(d, k)| *d <= 2.max(k.len() / 3))
+        .min()
+        .map_or_else(String::new, |(_, k)| format!(" (did you mean `{k}`?)"))
+}
+
+/// Levenshtein distance.
+pub(super) fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut cur = vec![i + 1];
+        for (j, cb) in b.iter().enumerate() {
+            cur.push(
+                (prev[j] + usize::from(ca != *cb))
+                    .min(prev[j + 1] + 1)
+                    .min(cur[j] + 1),
+            );
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}
+
+/// The GLSL spelling of a global's type.
+pub(super) fn glsl_type_of_global(module: &naga::Module, name: &str) -> Option<String> {
+    let g = module
+        .global_variables
+        .iter()
+        .find(|(_, g)| g.name.as_deref() == Some(name))?
+        .1;
+    Some(glsl_type(module, g.ty))
+}
+
+/// Uniforms are read-only; the outputs must be written.
+pub(super) fn check_writes(
+    source: &str,
+    stage: Stage,
+    adapted: &dialect::Adapted,
+    module: &naga::Module,
+    code: &code::Code,
+    errors: &mut Vec<ShaderError>,
+) {
+    let mut stores: Vec<(usize, code::Root, String)> = Vec::new();
+    for f in &code.functions {
+        collect_stores(&f.body, &mut stores);
+    }
+    for (at, root, name) in &stores {
+        if *root == code::Root::Uniform {
+            errors.push(error_at(
+                source,
+                *at..*at,
+                format!("`{name}` is a uniform: a shader reads it, it cannot assign to it"),
+            ));
+        }
+    }
+    // The entry point's wrapper stores inputs into their globals; the student's `main` must
+    // store into each output.
+    let main = code.functions.len().checked_sub(2);
+    let written = |name: &str| {
+        stores.iter().any(|(_, _, n)| n == name)
+            && main.is_some_and(|m| {
+                code.functions[..=m]
+                    .iter()
+                    .any(|f| stores_into(&f.body, name))
+            })
+    };
+    match stage {
+        Stage::Vertex if !written("gl_Position") => {
+            let at = main_span(source);
+            errors.push(error_at(source, at, NO_POSITION));
+        }
+        Stage::Fragment => {
+            let out = adapted
+                .declarations
+                .iter()
+                .find(|d| d.storage == dialect::Storage::Output);
+            let name = out.map_or(dialect::FRAG_COLOR, |d| d.name.as_str());
+            let declared = out.is_some()
+                || module
+                    .global_variables
+                    .iter()
+                    .any(|(_, g)| g.name.as_deref() == Some(dialect::FRAG_COLOR));
+            if !declared {
+                errors.push(error_at(source, main_span(source), "the fragment shader has no output: declare `out vec4 color;` and write the fragment's colour into it"));
+            } else if !written(name) {
+                let span = out.map_or_else(|| main_span(source), |d| d.span.clone());
+                errors.push(error_at(
+                    source,
+                    span,
+                    format!(
+                        "the fragment shader never writes `{}`: the fragment would have no colour",
+                        out.map_or("gl_FragColor", |d| d.name.as_str())
+                    ),
+                ));
+            }
+        }
+        Stage::Vertex => {}
+    }
+}
+
+/// What a vertex shader without `gl_Position` is told.
+pub(super) const NO_POSITION: &str = "the vertex shader never writes `gl_Position` (the clip-space position): \
+                           add `gl_Position = mvp * vec4(position, 1.0);`";
+
+/// Where `void main` is, for messages about the whole shader.
+pub(super) fn main_span(source: &str) -> Range<usize> {
+    source.find("main").map_or(0..0, |i| i..i + 4)
+}
+
+pub(super) fn stores_into(stmts: &[code::Stmt], name: &str) -> bool {
+    let mut s = Vec::new();
+    collect_stores(stmts, &mut s);
+    s.iter().any(|(_, _, n)| n == name)
+}
+
+pub(super) fn collect_stores(stmts: &[code::Stmt], out: &mut Vec<(usize, code::Root, String)>) {
+    use code::Stmt;
+    for s in stmts {
+        match s {
+            Stmt::Store { at, place, .. } => out.push((*at, place.root, place.name.clone())),
+            Stmt::Block(b) => collect_stores(b, out),
+            Stmt::If { accept, reject, .. } => {
+                collect_stores(accept, out);
+                collect_stores(reject, out);
+            }
+            Stmt::Switch { cases, .. } => cases.iter().for_each(|(_, b, _)| collect_stores(b, out)),
+            Stmt::Loop {
+                body, continuing, ..
+            } => {
+                collect_stores(body, out);
+                collect_stores(continuing, out);
+            }
+            _ => {}
+        }
+    }
+}

@@ -1,0 +1,384 @@
+//! naga's IR translated once into a register form the [`super::machine`] runs: every
+//! expression a register of 32-bit components (one row of lanes per component), every operation
+//! resolved to the offsets and shapes it works on, every pointer to a place in a variable.
+//!
+//! Registers and places are counted in *components*: a `vec3` is 3, a `mat4` 16 (column by
+//! column, as GLSL stores it), a struct the sum of its members, an array its length times its
+//! element. A register of `c` components over `N` lanes is `c` rows of `N` values.
+
+use naga::{
+    BinaryOperator, Expression, Handle, Literal, MathFunction, Module, ScalarKind, TypeInner,
+};
+
+/// The kind of a scalar component.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// `float`.
+    F,
+    /// `int`.
+    I,
+    /// `uint`.
+    U,
+    /// `bool` (0 or 1).
+    B,
+}
+
+impl Kind {
+    pub(super) fn of(kind: ScalarKind) -> Self {
+        match kind {
+            ScalarKind::Float | ScalarKind::AbstractFloat => Self::F,
+            ScalarKind::Sint | ScalarKind::AbstractInt => Self::I,
+            ScalarKind::Uint => Self::U,
+            ScalarKind::Bool => Self::B,
+        }
+    }
+}
+
+/// A register: its first component and how many it has.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Reg {
+    /// First component.
+    pub at: u32,
+    /// Number of components.
+    pub n: u32,
+}
+
+/// What a pointer points into.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Root {
+    /// A local variable of the running function (offset in its locals).
+    Local,
+    /// A global of the invocation (`in`/`out` copies, the student's globals).
+    Private,
+    /// A uniform: one value for every lane.
+    Uniform,
+}
+
+/// A place in a variable: a static offset plus dynamic indices, `n` components long.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Place {
+    /// Which storage.
+    pub root: Root,
+    /// The variable's first component plus every constant index's offset.
+    pub at: u32,
+    /// Dynamic indices: the index register, the stride in components, the element count.
+    pub dynamic: Vec<(u32, u32, u32)>,
+    /// Components.
+    pub n: u32,
+    /// The variable's name, for traces.
+    pub name: String,
+    /// The variable's first component and size, for traces.
+    pub whole: Reg,
+    /// The variable's type, for traces.
+    pub ty: Handle<naga::Type>,
+}
+
+/// How a binary operation's operands are shaped.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shape {
+    /// Component by component (a scalar operand repeats).
+    Each,
+    /// `mat(c columns × r rows) · vec(c)`.
+    MatVec { c: u32, r: u32 },
+    /// `vec(r) · mat(c × r)`.
+    VecMat { c: u32, r: u32 },
+    /// `mat(k × r) · mat(c × k)`.
+    MatMat { k: u32, r: u32, c: u32 },
+}
+
+/// The level of detail of a texture lookup.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Level {
+    /// From the quad's derivatives of the coordinates (`texture`).
+    Auto,
+    /// `λ` given (`textureLod`).
+    Exact(u32),
+    /// Added to `λ` (`texture(s, uv, bias)`).
+    Bias(u32),
+    /// Level 0.
+    Zero,
+}
+
+/// One expression's operation; its result goes to the expression's register.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Op {
+    /// Nothing to compute: a pointer, a handle, a function's argument or a call's result.
+    None,
+    /// Fixed components.
+    Const(Vec<u32>),
+    /// Registers side by side.
+    Compose(Vec<Reg>),
+    /// `n` components of a register from `at` on.
+    Copy { from: u32, n: u32 },
+    /// One component repeated.
+    Splat { from: u32, n: u32 },
+    /// Components picked.
+    Swizzle { from: u32, pattern: Vec<u32> },
+    /// A dynamic index into a value: `base`, element size, element count, index register.
+    Index {
+        base: u32,
+        elem: u32,
+        count: u32,
+        index: u32,
+        kind: Kind,
+    },
+    /// Read a place.
+    Load(Place),
+    /// A unary operator.
+    Unary {
+        op: naga::UnaryOperator,
+        kind: Kind,
+        a: Reg,
+    },
+    /// A binary operator.
+    Binary {
+        op: BinaryOperator,
+        kind: Kind,
+        a: Reg,
+        b: Reg,
+        shape: Shape,
+    },
+    /// `c ? a : b`, component by component (a scalar condition for all).
+    Select { c: Reg, a: Reg, b: Reg },
+    /// `dFdx`, `dFdy`, `fwidth` over the quad.
+    Derivative {
+        axis: naga::DerivativeAxis,
+        fine: bool,
+        a: Reg,
+    },
+    /// `all`, `any`, `isnan`, `isinf`.
+    Relational {
+        fun: naga::RelationalFunction,
+        a: Reg,
+    },
+    /// A built-in function; `rows` is the vector or column size of its first argument.
+    Math {
+        fun: MathFunction,
+        kind: Kind,
+        args: Vec<Reg>,
+        rows: u32,
+    },
+    /// A conversion (`convert`) or a bit cast.
+    As {
+        a: Reg,
+        from: Kind,
+        to: Kind,
+        convert: bool,
+    },
+    /// `texture(s, uv)` and its kin: a vec4.
+    Sample {
+        texture: u32,
+        coordinate: Reg,
+        level: Level,
+    },
+    /// `texelFetch(s, ij, level)`: a vec4.
+    Fetch {
+        texture: u32,
+        coordinate: Reg,
+        level: Option<u32>,
+    },
+    /// `textureSize(s, level)`: an ivec2.
+    Size { texture: u32, level: Option<u32> },
+}
+
+/// A statement in register form; `at` is its place in the student's source (bytes).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Stmt {
+    /// Evaluate these expressions in order.
+    Emit(std::ops::Range<u32>),
+    /// A nested block.
+    Block(Vec<Stmt>),
+    /// `if`.
+    If {
+        at: usize,
+        c: u32,
+        accept: Vec<Stmt>,
+        reject: Vec<Stmt>,
+    },
+    /// `switch` on an integer: the cases (None = default), their bodies, and fall-through.
+    Switch {
+        at: usize,
+        selector: u32,
+        cases: Vec<(Option<i64>, Vec<Stmt>, bool)>,
+    },
+    /// A loop: body, continuing, and the register of `break if`.
+    Loop {
+        at: usize,
+        body: Vec<Stmt>,
+        continuing: Vec<Stmt>,
+        break_if: Option<u32>,
+    },
+    /// `break`.
+    Break,
+    /// `continue`.
+    Continue,
+    /// `return`, with the value's register.
+    Return { at: usize, value: Option<Reg> },
+    /// `discard`.
+    Kill { at: usize },
+    /// `*place = value`.
+    Store { at: usize, place: Place, value: u32 },
+    /// A call: the function, its arguments' registers, the result's register.
+    Call {
+        at: usize,
+        function: usize,
+        args: Vec<Reg>,
+        result: Option<Reg>,
+    },
+}
+
+/// One function in register form.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Function {
+    /// Its name (`main`, the student's helpers).
+    pub name: String,
+    /// The operation of each expression, in order.
+    pub ops: Vec<Op>,
+    /// The register of each expression.
+    pub regs: Vec<Reg>,
+    /// Where each expression is in the student's source (bytes), for errors.
+    pub spans: Vec<usize>,
+    /// Expressions that no `Emit` covers (constants), evaluated when the function starts.
+    pub pre: Vec<u32>,
+    /// Components of all registers.
+    pub width: u32,
+    /// Local variables: first component, size, and the register of their initial value.
+    pub locals: Vec<(Reg, Option<u32>)>,
+    /// Components of all locals.
+    pub locals_width: u32,
+    /// The arguments' registers.
+    pub args: Vec<Reg>,
+    /// The body.
+    pub body: Vec<Stmt>,
+}
+
+/// A program in register form: its functions (callees before callers) and its storage.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Code {
+    /// naga's functions, then the entry point last.
+    pub functions: Vec<Function>,
+    /// Each global: where it is and in which storage (`None`: a texture or sampler).
+    pub globals: Vec<Option<(Root, Reg)>>,
+    /// Components of the invocation's globals.
+    pub private_width: u32,
+    /// Components of the uniforms.
+    pub uniform_width: u32,
+    /// Initial values of private globals that have one: place, components.
+    pub private_init: Vec<(u32, Vec<u32>)>,
+}
+
+/// Something the translation cannot do, with where (bytes in the adapted source).
+#[derive(Clone, Debug)]
+pub struct Unsupported {
+    /// Where, in the adapted source.
+    pub at: usize,
+    /// What.
+    pub what: String,
+}
+
+/// Components of a type.
+pub fn components(module: &Module, inner: &TypeInner) -> u32 {
+    match *inner {
+        TypeInner::Scalar(_) | TypeInner::Atomic(_) => 1,
+        TypeInner::Vector { size, .. } => size as u32,
+        TypeInner::Matrix { columns, rows, .. } => columns as u32 * rows as u32,
+        TypeInner::Array {
+            base,
+            size: naga::ArraySize::Constant(n),
+            ..
+        } => n.get() * components(module, &module.types[base].inner),
+        TypeInner::Struct { ref members, .. } => members
+            .iter()
+            .map(|m| components(module, &module.types[m.ty].inner))
+            .sum(),
+        _ => 0,
+    }
+}
+
+/// The scalar kind of a scalar, vector or matrix type (float otherwise).
+pub fn kind_of(inner: &TypeInner) -> Kind {
+    match *inner {
+        TypeInner::Scalar(s)
+        | TypeInner::Vector { scalar: s, .. }
+        | TypeInner::Matrix { scalar: s, .. } => Kind::of(s.kind),
+        TypeInner::ValuePointer { scalar, .. } => Kind::of(scalar.kind),
+        _ => Kind::F,
+    }
+}
+
+/// The offset in components of member or element `index` of a type, and its type.
+pub(super) fn member(module: &Module, inner: &TypeInner, index: u32) -> (u32, u32) {
+    match *inner {
+        TypeInner::Vector { .. } => (index, 1),
+        TypeInner::Matrix { rows, .. } => (index * rows as u32, rows as u32),
+        TypeInner::Array { base, .. } => {
+            let n = components(module, &module.types[base].inner);
+            (index * n, n)
+        }
+        TypeInner::ValuePointer { .. } => (index, 1),
+        TypeInner::Struct { ref members, .. } => {
+            let before: u32 = members[..index as usize]
+                .iter()
+                .map(|m| components(module, &module.types[m.ty].inner))
+                .sum();
+            (
+                before,
+                components(module, &module.types[members[index as usize].ty].inner),
+            )
+        }
+        _ => (0, 1),
+    }
+}
+
+/// The type a pointer or value points to or is, and its element count (for dynamic indices).
+pub(super) fn element_count(inner: &TypeInner) -> u32 {
+    match *inner {
+        TypeInner::Vector { size, .. } => size as u32,
+        TypeInner::Matrix { columns, .. } => columns as u32,
+        TypeInner::Array {
+            size: naga::ArraySize::Constant(n),
+            ..
+        } => n.get(),
+        TypeInner::ValuePointer {
+            size: Some(size), ..
+        } => size as u32,
+        _ => 1,
+    }
+}
+
+/// Evaluates a constant expression of the module (`global_expressions`).
+pub fn const_value(module: &Module, h: Handle<Expression>) -> Result<Vec<u32>, String> {
+    let e = &module.global_expressions;
+    match e[h] {
+        Expression::Literal(l) => literal(l),
+        Expression::Constant(c) => const_value(module, module.constants[c].init),
+        Expression::ZeroValue(ty) => Ok(vec![
+            0;
+            components(module, &module.types[ty].inner) as usize
+        ]),
+        Expression::Compose { ref components, .. } => {
+            let mut out = Vec::new();
+            for &c in components {
+                out.extend(const_value(module, c)?);
+            }
+            Ok(out)
+        }
+        Expression::Splat { size, value } => Ok(const_value(module, value)?.repeat(size as usize)),
+        ref other => Err(format!(
+            "a constant expression pipelens cannot evaluate ({other:?})"
+        )),
+    }
+}
+
+pub(super) fn literal(l: Literal) -> Result<Vec<u32>, String> {
+    Ok(vec![match l {
+        Literal::F32(x) => x.to_bits(),
+        Literal::F64(x) | Literal::AbstractFloat(x) => (x as f32).to_bits(),
+        Literal::U32(x) => x,
+        Literal::I32(x) => x as u32,
+        Literal::I64(x) | Literal::AbstractInt(x) => x as i32 as u32,
+        Literal::U64(x) => x as u32,
+        Literal::Bool(b) => u32::from(b),
+        other => return Err(format!("a literal pipelens cannot hold ({other:?})")),
+    }])
+}

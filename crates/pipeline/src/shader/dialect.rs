@@ -1,0 +1,519 @@
+//! The GLSL a student of an OpenGL course writes, adapted to the GLSL naga reads.
+//!
+//! A student writes `#version 330 core`, plain `uniform vec3 eye;`, `uniform sampler2D tex;`,
+//! and `in`/`out` without locations (or GLSL 1.x's `attribute`, `varying` and `gl_FragColor`).
+//! naga's GLSL front end reads Vulkan-flavoured GLSL 4.50: uniforms only inside blocks with a
+//! binding, textures and samplers apart, every `in` and `out` with a location. This module
+//! rewrites the first into the second without moving the student's text:
+//!
+//! - `#version …` becomes blanks; the adapted source starts with `#version 450 core` and a
+//!   *preamble* (pipelens' `Light` type and constants, then what the student declared).
+//! - `uniform T name;` keeps its place with `uniform` (and any `layout(…)`) blanked: a plain
+//!   global that [`super::run`] fills from the scene before each run, by name.
+//! - `uniform sampler2D name;` is blanked and declared in the preamble as a texture and a
+//!   sampler, with `#define name sampler2D(texture, sampler)` so that `texture(name, uv)` reads.
+//! - `in`/`out`/`attribute`/`varying` declarations are blanked and declared again in the
+//!   preamble with a location (vertex attributes at their fixed locations, see
+//!   [`super::interface`]).
+//!
+//! Blanks keep every byte of the student's text at its offset plus the preamble's length, so a
+//! message of naga's maps back to the student's line and column ([`Adapted::original_offset`]);
+//! a message about a declaration that moved into the preamble maps to that declaration.
+
+use std::ops::Range;
+
+use super::Stage;
+
+/// The student's source adapted for naga, with the map back to the student's text.
+#[derive(Clone, Debug)]
+pub struct Adapted {
+    /// What naga reads: the preamble, then the student's text with declarations blanked.
+    pub text: String,
+    /// Length in bytes of the preamble: student byte `b` is at `preamble_len + b`.
+    pub preamble_len: usize,
+    /// For each piece of the preamble, the student's text it stands for.
+    pieces: Vec<(Range<usize>, Range<usize>)>,
+    /// The declarations the student wrote, in order.
+    pub declarations: Vec<Declaration>,
+}
+
+/// What a top-level declaration of the student's declares.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Storage {
+    /// `uniform` (not a sampler).
+    Uniform,
+    /// `uniform sampler2D`.
+    Texture,
+    /// `in` (or `attribute`, or `varying` in a fragment shader).
+    Input,
+    /// `out` (or `varying` in a vertex shader).
+    Output,
+}
+
+/// One name a student's declaration declares (`in vec3 a, b;` declares two).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Declaration {
+    /// How it is stored.
+    pub storage: Storage,
+    /// The name as written.
+    pub name: String,
+    /// The type as written (`vec3`, `Light`), without array brackets.
+    pub type_name: String,
+    /// Where the whole declaration is in the student's text (bytes).
+    pub span: Range<usize>,
+    /// Where the name is in the student's text (bytes).
+    pub name_span: Range<usize>,
+}
+
+/// A mistake in the student's declarations found before naga reads the source.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct DialectError {
+    /// Where, in the student's text (bytes).
+    pub span: Range<usize>,
+    /// What is wrong, as a sentence.
+    pub message: String,
+}
+
+/// The preamble every shader starts with: pipelens' light type and its kinds.
+pub const LIGHT_DECLARATIONS: &str = "struct Light { int kind; vec3 position; vec3 direction; \
+vec3 intensity; vec3 attenuation; float cutoff_cos; float exponent; };\n\
+const int LIGHT_AMBIENT = 0; const int LIGHT_POINT = 1; const int LIGHT_DIRECTIONAL = 2; \
+const int LIGHT_SPOT = 3; const int MAX_LIGHTS = 8;\n";
+
+/// Prefix of the names pipelens gives the texture and sampler behind a `sampler2D`.
+pub const TEXTURE_PREFIX: &str = "pl_texture_";
+/// See [`TEXTURE_PREFIX`].
+pub const SAMPLER_PREFIX: &str = "pl_sampler_";
+/// The output a GLSL 1.x fragment shader's `gl_FragColor` becomes.
+pub const FRAG_COLOR: &str = "pl_FragColor";
+
+impl Adapted {
+    /// The student's byte offset that naga's offset `at` (in [`Self::text`]) stands for.
+    #[must_use]
+    pub fn original_offset(&self, at: usize) -> usize {
+        if at >= self.preamble_len {
+            return at - self.preamble_len;
+        }
+        self.pieces
+            .iter()
+            .find(|(adapted, _)| adapted.contains(&at))
+            .map_or(0, |(_, original)| original.start)
+    }
+
+    /// The student's range that naga's span `span` stands for.
+    #[must_use]
+    pub fn original_range(&self, span: Range<usize>) -> Range<usize> {
+        let start = self.original_offset(span.start);
+        if span.start < self.preamble_len {
+            let piece = self.pieces.iter().find(|(a, _)| a.contains(&span.start));
+            return piece.map_or(start..start, |(_, o)| o.clone());
+        }
+        start..self.original_offset(span.end.max(span.start)).max(start)
+    }
+}
+
+/// A top-level statement's tokens, with the offset just after its `;`.
+type Statement = (Vec<Token>, usize);
+
+/// A token of the light scan: a word, or one character of punctuation.
+#[derive(Clone, Debug)]
+struct Token {
+    text: String,
+    span: Range<usize>,
+}
+
+/// Splits `src` into tokens, leaving out comments, and into top-level statements. Returns the
+/// top-level declarations (token lists ending before their `;`, with the offset just after
+/// it), and the `#version` line.
+fn top_level(src: &str) -> (Vec<Statement>, Option<Range<usize>>) {
+    let bytes = src.as_bytes();
+    let mut statements = Vec::new();
+    let mut current: Vec<Token> = Vec::new();
+    let mut version = None;
+    let (mut depth, mut i, mut at_line_start) = (0usize, 0usize, true);
+    // Whether the current top-level statement opened a body (a function, a struct, a block).
+    let mut opened_body = false;
+    while i < bytes.len() {
+        let c = bytes[i];
+        if c == b'\n' {
+            at_line_start = true;
+            i += 1;
+            continue;
+        }
+        if c.is_ascii_whitespace() {
+            i += 1;
+            continue;
+        }
+        if src[i..].starts_with("//") {
+            i = src[i..].find('\n').map_or(bytes.len(), |n| i + n);
+            continue;
+        }
+        if src[i..].starts_with("/*") {
+            i = src[i + 2..]
+                .find("*/")
+                .map_or(bytes.len(), |n| i + 2 + n + 2);
+            continue;
+        }
+        if c == b'#' && at_line_start {
+            // A preprocessor line, with its `\` continuations.
+            let start = i;
+            while i < bytes.len() && !(bytes[i] == b'\n' && bytes[i - 1] != b'\\') {
+                i += 1;
+            }
+            let line = src[start..i].trim_end_matches('\r');
+            if line
+                .trim_start_matches('#')
+                .trim_start()
+                .starts_with("version")
+            {
+                version = Some(start..start + line.len());
+            }
+            continue;
+        }
+        at_line_start = false;
+        if c.is_ascii_alphanumeric() || c == b'_' || c == b'.' {
+            let start = i;
+            while i < bytes.len()
+                && (bytes[i].is_ascii_alphanumeric() || matches!(bytes[i], b'_' | b'.'))
+            {
+                i += 1;
+            }
+            if depth == 0 && !opened_body {
+                current.push(Token {
+                    text: src[start..i].to_owned(),
+                    span: start..i,
+                });
+            }
+            continue;
+        }
+        let ch = src[i..].chars().next().map_or(1, char::len_utf8);
+        match c {
+            b'{' => {
+                if depth == 0 && !opened_body {
+                    current.push(Token {
+                        text: "{".to_owned(),
+                        span: i..i + 1,
+                    });
+                    opened_body = true;
+                }
+                depth += 1;
+            }
+            b'}' => {
+                depth = depth.saturating_sub(1);
+                // A function's body ends its statement; a struct's or block's ends at `;`.
+                if depth == 0 && current.iter().any(|t| t.text == "(") {
+                    current.clear();
+                    opened_body = false;
+                }
+            }
+            b';' if depth == 0 => {
+                // A struct's or block's body was skipped: its tokens end at its `{`.
+                statements.push((std::mem::take(&mut current), i + 1));
+                opened_body = false;
+            }
+            _ if depth == 0 && !opened_body => {
+                current.push(Token {
+                    text: src[i..i + ch].to_owned(),
+                    span: i..i + ch,
+                });
+            }
+            _ => {}
+        }
+        i += ch;
+    }
+    (statements, version)
+}
+
+/// Qualifiers that may stand before the type of an `in` or `out`.
+const INTERPOLATION: [&str; 6] = [
+    "flat",
+    "noperspective",
+    "smooth",
+    "centroid",
+    "highp",
+    "mediump",
+];
+
+/// Adapts the student's `src` for naga (see the module's documentation).
+///
+/// # Errors
+/// A declaration pipelens cannot adapt: a `uniform` block, an `in` or `out` it cannot read.
+pub fn adapt(src: &str, stage: Stage) -> Result<Adapted, Vec<DialectError>> {
+    let (statements, version) = top_level(src);
+    let mut blanks: Vec<Range<usize>> = version.into_iter().collect();
+    let mut declarations = Vec::new();
+    let mut errors = Vec::new();
+    let mut preamble = Preamble::new();
+    for (tokens, end) in &statements {
+        let Some(first) = tokens.first() else {
+            continue;
+        };
+        let span = first.span.start..*end;
+        // Layout qualifiers are pipelens' to choose: skip them.
+        let (layout, rest) = split_layout(tokens);
+        // `flat in vec3 c;`: interpolation qualifiers may come first.
+        let q = rest
+            .iter()
+            .position(|t| !INTERPOLATION.contains(&t.text.as_str()))
+            .unwrap_or(0);
+        let (qualifiers, rest) = rest.split_at(q);
+        let Some(keyword) = rest.first() else {
+            continue;
+        };
+        let storage = match (keyword.text.as_str(), stage) {
+            ("uniform", _) => Storage::Uniform,
+            ("in" | "attribute", _) | ("varying", Stage::Fragment) => Storage::Input,
+            ("out", _) | ("varying", Stage::Vertex) => Storage::Output,
+            _ => continue,
+        };
+        let after = &rest[1..];
+        if storage == Storage::Uniform {
+            if after.iter().any(|t| t.text == "{") {
+                errors.push(DialectError {
+                    span: span.clone(),
+                    message: "a uniform block: declare each uniform on its own, \
+                              `uniform vec3 eye;` (pipelens sets them by name)"
+                        .to_owned(),
+                });
+                continue;
+            }
+            let names = declared_names(after, &span, &mut errors);
+            if names.first().is_some_and(|(ty, _)| ty.text == "sampler2D") {
+                for (_, name) in &names {
+                    declarations.push(preamble.texture(name, &span));
+                }
+                blanks.push(span.clone());
+            } else {
+                // Keep the declaration where it is, as a plain global: blank `uniform` and layout.
+                blanks.push(keyword.span.clone());
+                if let Some(layout) = layout {
+                    blanks.push(layout);
+                }
+                for (ty, name) in names {
+                    declarations.push(Declaration {
+                        storage,
+                        name: name.text.clone(),
+                        type_name: ty.text.clone(),
+                        span: span.clone(),
+                        name_span: name.span.clone(),
+                    });
+                }
+            }
+            continue;
+        }
+        let qualifiers: Vec<&Token> = qualifiers.iter().collect();
+        for (ty, name) in declared_names(after, &span, &mut errors) {
+            declarations.push(preamble.interface(storage, &qualifiers, ty, name, &span, stage));
+        }
+        blanks.push(span);
+    }
+    if stage == Stage::Fragment
+        && !declarations.iter().any(|d| d.storage == Storage::Output)
+        && contains_word(src, "gl_FragColor")
+    {
+        preamble.push_generated(
+            &format!(
+                "layout(location = 0) out vec4 {FRAG_COLOR};\n#define gl_FragColor {FRAG_COLOR}\n"
+            ),
+            0..0,
+        );
+    }
+    if !errors.is_empty() {
+        return Err(errors);
+    }
+    let mut student = src.as_bytes().to_vec();
+    for r in blanks {
+        for b in &mut student[r] {
+            if *b != b'\n' {
+                *b = b' ';
+            }
+        }
+    }
+    // Blanking replaces whole declarations and ASCII keywords, so the text stays UTF-8.
+    let student = String::from_utf8_lossy(&student);
+    let preamble_len = preamble.text.len();
+    Ok(Adapted {
+        text: preamble.text + &student,
+        preamble_len,
+        pieces: preamble.pieces,
+        declarations,
+    })
+}
+
+/// Whether `word` stands in `src` as a whole word.
+fn contains_word(src: &str, word: &str) -> bool {
+    src.match_indices(word).any(|(i, _)| {
+        let before = src[..i].chars().next_back();
+        let after = src[i + word.len()..].chars().next();
+        let ident = |c: Option<char>| c.is_some_and(|c| c.is_alphanumeric() || c == '_');
+        !ident(before) && !ident(after)
+    })
+}
+
+/// Splits a leading `layout(…)` off a declaration's tokens: its span, and the rest.
+fn split_layout(tokens: &[Token]) -> (Option<Range<usize>>, &[Token]) {
+    if tokens.first().is_some_and(|t| t.text == "layout")
+        && tokens.get(1).is_some_and(|t| t.text == "(")
+        && let Some(close) = tokens.iter().position(|t| t.text == ")")
+    {
+        return (
+            Some(tokens[0].span.start..tokens[close].span.end),
+            &tokens[close + 1..],
+        );
+    }
+    (None, tokens)
+}
+
+/// The type and the names of `T a, b[3], c;` (tokens after the storage keyword, precision words
+/// skipped).
+fn declared_names<'t>(
+    tokens: &'t [Token],
+    span: &Range<usize>,
+    errors: &mut Vec<DialectError>,
+) -> Vec<(&'t Token, &'t Token)> {
+    let tokens: Vec<&Token> = tokens
+        .iter()
+        .filter(|t| !INTERPOLATION[4..].contains(&t.text.as_str()) && t.text != "lowp")
+        .collect();
+    let Some(ty) = tokens.first() else {
+        errors.push(DialectError {
+            span: span.clone(),
+            message: "a declaration without a type and a name".to_owned(),
+        });
+        return Vec::new();
+    };
+    let mut names = Vec::new();
+    let mut expect_name = true;
+    let mut bracket = 0;
+    for t in &tokens[1..] {
+        match t.text.as_str() {
+            "[" => bracket += 1,
+            "]" => bracket -= 1,
+            "," if bracket == 0 => expect_name = true,
+            _ if expect_name && bracket == 0 => {
+                if t.text
+                    .starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+                {
+                    names.push((*ty, *t));
+                } else {
+                    errors.push(DialectError {
+                        span: t.span.clone(),
+                        message: format!("expected a name after `{}`, found `{}`", ty.text, t.text),
+                    });
+                }
+                expect_name = false;
+            }
+            _ => {}
+        }
+    }
+    if names.is_empty() && errors.is_empty() {
+        errors.push(DialectError {
+            span: span.clone(),
+            message: format!("`{}` declares no name", ty.text),
+        });
+    }
+    names
+}
+
+/// The preamble as it is built, with what each of its pieces stands for.
+struct Preamble {
+    text: String,
+    pieces: Vec<(Range<usize>, Range<usize>)>,
+    textures: u32,
+    /// The next location of a varying or output.
+    next_location: u32,
+}
+
+impl Preamble {
+    fn new() -> Self {
+        let mut p = Self {
+            text: String::new(),
+            pieces: Vec::new(),
+            textures: 0,
+            next_location: 0,
+        };
+        p.push_generated("#version 450 core\n", 0..0);
+        p.push_generated(LIGHT_DECLARATIONS, 0..0);
+        p
+    }
+
+    fn push_generated(&mut self, text: &str, stands_for: Range<usize>) {
+        let start = self.text.len();
+        self.text.push_str(text);
+        self.pieces.push((start..self.text.len(), stands_for));
+    }
+
+    /// `uniform sampler2D name;` as a texture, a sampler and the define that joins them.
+    fn texture(&mut self, name: &Token, span: &Range<usize>) -> Declaration {
+        let (b, n) = (2 * self.textures, &name.text);
+        self.textures += 1;
+        self.push_generated(
+            &format!(
+                "layout(set = 1, binding = {b}) uniform texture2D {TEXTURE_PREFIX}{n};\n\
+                 layout(set = 1, binding = {}) uniform sampler {SAMPLER_PREFIX}{n};\n\
+                 #define {n} sampler2D({TEXTURE_PREFIX}{n}, {SAMPLER_PREFIX}{n})\n",
+                b + 1
+            ),
+            span.clone(),
+        );
+        Declaration {
+            storage: Storage::Texture,
+            name: n.clone(),
+            type_name: "sampler2D".to_owned(),
+            span: span.clone(),
+            name_span: name.span.clone(),
+        }
+    }
+
+    /// An `in` or `out`, declared again with a location. Vertex attributes take their fixed
+    /// locations; anything else the next free one.
+    fn interface(
+        &mut self,
+        storage: Storage,
+        qualifiers: &[&Token],
+        ty: &Token,
+        name: &Token,
+        span: &Range<usize>,
+        stage: Stage,
+    ) -> Declaration {
+        let attribute = (stage == Stage::Vertex && storage == Storage::Input)
+            .then(|| super::interface::attribute_location(&name.text))
+            .flatten();
+        let location = attribute.unwrap_or_else(|| {
+            let l = self.next_location
+                + if stage == Stage::Vertex && storage == Storage::Input {
+                    8
+                } else {
+                    0
+                };
+            self.next_location += 1;
+            l
+        });
+        let q: Vec<&str> = qualifiers
+            .iter()
+            .map(|t| t.text.as_str())
+            .filter(|q| !q.ends_with('p'))
+            .collect();
+        let keyword = if storage == Storage::Input {
+            "in"
+        } else {
+            "out"
+        };
+        self.push_generated(
+            &format!(
+                "layout(location = {location}) {} {keyword} {} {};\n",
+                q.join(" "),
+                ty.text,
+                name.text
+            ),
+            name.span.clone(),
+        );
+        Declaration {
+            storage,
+            name: name.text.clone(),
+            type_name: ty.text.clone(),
+            span: span.clone(),
+            name_span: name.span.clone(),
+        }
+    }
+}

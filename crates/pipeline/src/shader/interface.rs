@@ -1,0 +1,321 @@
+//! What pipelens hands a shader and takes back: the vertex attributes, the uniforms it sets by
+//! name, the textures, and their values for one object.
+//!
+//! The names are those of the OpenGL course (`model`, `view`, `projection`, `normal_matrix`),
+//! GAMES101's letters (`M`, `V`, `P`) and the llvmpipe peer's (`mvp`, `in_pos`, `light_pos`),
+//! so that one source runs unchanged in pipelens and in a real OpenGL.
+
+use glam::{Mat3, Mat4, Vec2, Vec3};
+
+use crate::light::{Light, Material};
+
+/// A vertex attribute pipelens feeds the vertex shader: its names and its fixed location.
+#[derive(Clone, Copy, Debug)]
+pub struct Attribute {
+    /// The name pipelens documents, and the other names it answers to.
+    pub names: &'static [&'static str],
+    /// Its type.
+    pub glsl: &'static str,
+    /// Its location (the order of [`ATTRIBUTES`]).
+    pub location: u32,
+    /// What it holds.
+    pub meaning: &'static str,
+}
+
+/// The vertex attributes, at locations 0 to 3.
+pub const ATTRIBUTES: [Attribute; 4] = [
+    Attribute {
+        names: &["position", "in_pos", "aPos"],
+        glsl: "vec3",
+        location: 0,
+        meaning: "the vertex position in object coordinates",
+    },
+    Attribute {
+        names: &["normal", "in_nrm", "aNormal"],
+        glsl: "vec3",
+        location: 1,
+        meaning: "the vertex normal in object coordinates",
+    },
+    Attribute {
+        names: &["uv", "in_uv", "aTexCoord"],
+        glsl: "vec2",
+        location: 2,
+        meaning: "the texture coordinates (0, 0 where the mesh has none)",
+    },
+    Attribute {
+        names: &["color", "in_color", "aColor"],
+        glsl: "vec3",
+        location: 3,
+        meaning: "the vertex colour (the normal as a colour where the mesh has none)",
+    },
+];
+
+/// The location of the attribute called `name`, if it is one.
+#[must_use]
+pub fn attribute_location(name: &str) -> Option<u32> {
+    ATTRIBUTES
+        .iter()
+        .find(|a| a.names.contains(&name))
+        .map(|a| a.location)
+}
+
+/// A uniform pipelens sets.
+#[derive(Clone, Copy, Debug)]
+pub struct UniformSpec {
+    /// The name pipelens documents, and the other names it answers to.
+    pub names: &'static [&'static str],
+    /// Its GLSL type (`Light[MAX_LIGHTS]` for the lights).
+    pub glsl: &'static str,
+    /// What it holds, with its formula.
+    pub meaning: &'static str,
+}
+
+/// Every uniform pipelens sets. A shader declares those it uses (`uniform mat4 model;`).
+pub const UNIFORMS: [UniformSpec; 17] = [
+    UniformSpec {
+        names: &["model", "M"],
+        glsl: "mat4",
+        meaning: "the model matrix M (object → world)",
+    },
+    UniformSpec {
+        names: &["view", "V"],
+        glsl: "mat4",
+        meaning: "the view matrix V (world → eye), LookAt",
+    },
+    UniformSpec {
+        names: &["projection", "P"],
+        glsl: "mat4",
+        meaning: "the projection matrix P (eye → clip)",
+    },
+    UniformSpec {
+        names: &["mvp", "MVP"],
+        glsl: "mat4",
+        meaning: "P·V·M (object → clip)",
+    },
+    UniformSpec {
+        names: &["model_view", "MV", "ModelView"],
+        glsl: "mat4",
+        meaning: "V·M (object → eye)",
+    },
+    UniformSpec {
+        names: &["normal_matrix"],
+        glsl: "mat3",
+        meaning: "(M₃ₓ₃⁻¹)ᵀ: object normals → world normals",
+    },
+    UniformSpec {
+        names: &["eye", "eye_pos"],
+        glsl: "vec3",
+        meaning: "the eye position in world coordinates",
+    },
+    UniformSpec {
+        names: &["light_pos"],
+        glsl: "vec3",
+        meaning: "the position of the scene's first point or spot light (world)",
+    },
+    UniformSpec {
+        names: &["light_color"],
+        glsl: "vec3",
+        meaning: "that light's intensity I",
+    },
+    UniformSpec {
+        names: &["lights"],
+        glsl: "Light[MAX_LIGHTS]",
+        meaning: "every light: kind, position, direction, intensity, attenuation (a, b, c), cutoff_cos, exponent",
+    },
+    UniformSpec {
+        names: &["light_count"],
+        glsl: "int",
+        meaning: "how many of `lights` are set",
+    },
+    UniformSpec {
+        names: &["ka"],
+        glsl: "vec3",
+        meaning: "the material's ambient coefficient k_a",
+    },
+    UniformSpec {
+        names: &["kd"],
+        glsl: "vec3",
+        meaning: "the material's diffuse coefficient k_d",
+    },
+    UniformSpec {
+        names: &["ks"],
+        glsl: "vec3",
+        meaning: "the material's specular coefficient k_s",
+    },
+    UniformSpec {
+        names: &["shininess"],
+        glsl: "float",
+        meaning: "the material's shininess (Phong's α, Blinn-Phong's β)",
+    },
+    UniformSpec {
+        names: &["use_tex"],
+        glsl: "bool",
+        meaning: "whether the object has a texture",
+    },
+    UniformSpec {
+        names: &["time"],
+        glsl: "float",
+        meaning: "seconds into the step's animation",
+    },
+];
+
+/// The uniform called `name`, if pipelens sets one.
+#[must_use]
+pub fn uniform(name: &str) -> Option<&'static UniformSpec> {
+    UNIFORMS.iter().find(|u| u.names.contains(&name))
+}
+
+/// The texture names pipelens binds (`uniform sampler2D tex;`).
+pub const TEXTURES: [&str; 2] = ["tex", "texture0"];
+
+/// The values of the uniforms for one object's draw.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Uniforms {
+    /// M.
+    pub model: Mat4,
+    /// V.
+    pub view: Mat4,
+    /// P.
+    pub projection: Mat4,
+    /// The eye in world coordinates.
+    pub eye: Vec3,
+    /// The scene's lights.
+    pub lights: Vec<Light>,
+    /// The object's material.
+    pub material: Material,
+    /// Whether the object has a texture.
+    pub has_texture: bool,
+    /// Seconds into the step's animation.
+    pub time: f32,
+    /// The viewport's size in pixels.
+    pub resolution: Vec2,
+}
+
+impl Default for Uniforms {
+    fn default() -> Self {
+        Self {
+            model: Mat4::IDENTITY,
+            view: Mat4::IDENTITY,
+            projection: Mat4::IDENTITY,
+            eye: Vec3::ZERO,
+            lights: Vec::new(),
+            material: Material::default(),
+            has_texture: false,
+            time: 0.0,
+            resolution: Vec2::ONE,
+        }
+    }
+}
+
+/// The most lights a shader sees (`MAX_LIGHTS`).
+pub const MAX_LIGHTS: usize = 8;
+
+fn floats(v: &[f32]) -> Vec<u32> {
+    v.iter().map(|x| x.to_bits()).collect()
+}
+
+impl Uniforms {
+    /// The value of the uniform called `name`, as 32-bit components in GLSL's order (matrices
+    /// column by column; a `Light` as its members in order). `None`: pipelens sets no such
+    /// uniform.
+    #[must_use]
+    pub fn components(&self, name: &str) -> Option<Vec<u32>> {
+        let spec = uniform(name)?;
+        let m = &self.material;
+        let first = self.lights.iter().find_map(|l| match *l {
+            Light::Point {
+                position,
+                intensity,
+                ..
+            }
+            | Light::Spot {
+                position,
+                intensity,
+                ..
+            } => Some((position, intensity)),
+            _ => None,
+        });
+        let (light_pos, light_color) = first.unwrap_or((Vec3::ZERO, Vec3::ZERO));
+        Some(match spec.names[0] {
+            "model" => floats(&self.model.to_cols_array()),
+            "view" => floats(&self.view.to_cols_array()),
+            "projection" => floats(&self.projection.to_cols_array()),
+            "mvp" => floats(&(self.projection * self.view * self.model).to_cols_array()),
+            "model_view" => floats(&(self.view * self.model).to_cols_array()),
+            "normal_matrix" => floats(
+                &Mat3::from_mat4(self.model)
+                    .inverse()
+                    .transpose()
+                    .to_cols_array(),
+            ),
+            "eye" => floats(&self.eye.to_array()),
+            "light_pos" => floats(&light_pos.to_array()),
+            "light_color" => floats(&light_color.to_array()),
+            "lights" => self.light_components(),
+            "light_count" => vec![self.lights.len().min(MAX_LIGHTS) as u32],
+            "ka" => floats(&m.ka.to_array()),
+            "kd" => floats(&m.kd.to_array()),
+            "ks" => floats(&m.ks.to_array()),
+            "shininess" => floats(&[m.shininess]),
+            "use_tex" => vec![u32::from(self.has_texture)],
+            _ => floats(&[self.time]),
+        })
+    }
+
+    /// `lights` as [`MAX_LIGHTS`] records of `Light`: `kind` (0 ambient, 1 point, 2
+    /// directional, 3 spot), `position`, `direction`, `intensity`, `attenuation` (a, b, c of
+    /// `1/(a + b·d + c·d²)`), `cutoff_cos`, `exponent`; unset records are zero.
+    fn light_components(&self) -> Vec<u32> {
+        let mut out = Vec::with_capacity(MAX_LIGHTS * LIGHT_COMPONENTS);
+        for k in 0..MAX_LIGHTS {
+            let (kind, p, d, i, a, cut, e) = match self.lights.get(k) {
+                Some(Light::Ambient { intensity }) => {
+                    (0, Vec3::ZERO, Vec3::ZERO, *intensity, Vec3::X, -1.0, 0.0)
+                }
+                Some(Light::Point {
+                    position,
+                    intensity,
+                    attenuation,
+                }) => (
+                    1,
+                    *position,
+                    Vec3::ZERO,
+                    *intensity,
+                    *attenuation,
+                    -1.0,
+                    0.0,
+                ),
+                Some(Light::Directional {
+                    direction,
+                    intensity,
+                }) => (2, Vec3::ZERO, *direction, *intensity, Vec3::X, -1.0, 0.0),
+                Some(Light::Spot {
+                    position,
+                    direction,
+                    cutoff_deg,
+                    exponent,
+                    intensity,
+                    attenuation,
+                }) => (
+                    3,
+                    *position,
+                    *direction,
+                    *intensity,
+                    *attenuation,
+                    cutoff_deg.to_radians().cos(),
+                    *exponent,
+                ),
+                None => (0, Vec3::ZERO, Vec3::ZERO, Vec3::ZERO, Vec3::ZERO, 0.0, 0.0),
+            };
+            out.push(kind as u32);
+            for v in [p, d, i, a] {
+                out.extend(floats(&v.to_array()));
+            }
+            out.extend(floats(&[cut, e]));
+        }
+        out
+    }
+}
+
+/// The components of one `Light` record.
+pub const LIGHT_COMPONENTS: usize = 15;

@@ -1,0 +1,359 @@
+//! The machine's expressions: each evaluated for every lane of the batch, reading its operands'
+//! registers and writing its own. Errors (an index out of range, an integer division by zero)
+//! count only in live lanes.
+
+use glam::{Vec2, Vec3};
+use naga::{RelationalFunction, UnaryOperator};
+
+use super::super::code::{Function, Kind, Level, Op, Reg, Root, Shape};
+use super::super::ops;
+use super::{Bindings, LANES, Machine, Res, RunError, bit};
+
+impl Machine<'_> {
+    #[allow(clippy::too_many_lines)]
+    pub(super) fn eval(&mut self, fi: usize, e: usize, live: u64, b: &Bindings<'_>) -> Res<()> {
+        let code = self.code;
+        let f: &Function = &code.functions[fi];
+        let dst = f.regs[e];
+        let n = self.n;
+        let at = f.spans[e];
+        let err = |message: String| RunError { at, message };
+        match &f.ops[e] {
+            Op::None => {}
+            Op::Const(v) => {
+                let regs = &mut self.regs[fi];
+                for (c, &x) in v.iter().enumerate() {
+                    regs[(dst.at as usize + c) * LANES..][..n].fill(x);
+                }
+            }
+            Op::Load(place) => {
+                let o: Vec<u32> = if place.dynamic.is_empty() {
+                    Vec::new()
+                } else {
+                    (0..n)
+                        .map(|l| self.offset_checked(fi, place, l, live & bit(l) != 0, at))
+                        .collect::<Res<_>>()?
+                };
+                let root = place.root;
+                let (src, regs) = match root {
+                    Root::Local => (&self.locals[fi], &mut self.regs[fi]),
+                    Root::Private => (&self.privates, &mut self.regs[fi]),
+                    Root::Uniform => (&self.uniforms, &mut self.regs[fi]),
+                };
+                for c in 0..place.n as usize {
+                    let row = &mut regs[(dst.at as usize + c) * LANES..][..n];
+                    match (root, o.is_empty()) {
+                        (Root::Uniform, _) if o.is_empty() => row.fill(src[place.at as usize + c]),
+                        (Root::Uniform, _) => {
+                            for (l, x) in row.iter_mut().enumerate() {
+                                *x = src[o[l] as usize + c];
+                            }
+                        }
+                        (_, true) => {
+                            row.copy_from_slice(&src[(place.at as usize + c) * LANES..][..n])
+                        }
+                        (_, false) => {
+                            for (l, x) in row.iter_mut().enumerate() {
+                                *x = src[(o[l] as usize + c) * LANES + l];
+                            }
+                        }
+                    }
+                }
+            }
+            op => {
+                let (src, out) = self.regs[fi].split_at_mut(dst.at as usize * LANES);
+                let row = |r: u32, c: u32| &src[(r + c) as usize * LANES..][..n];
+                let out = &mut out[..dst.n as usize * LANES];
+                match op {
+                    Op::Compose(parts) => {
+                        let mut c = 0;
+                        for p in parts {
+                            for k in 0..p.n {
+                                out[c * LANES..][..n].copy_from_slice(row(p.at, k));
+                                c += 1;
+                            }
+                        }
+                    }
+                    Op::Copy { from, n: count } => {
+                        for k in 0..*count {
+                            out[k as usize * LANES..][..n].copy_from_slice(row(*from, k));
+                        }
+                    }
+                    Op::Splat { from, n: count } => {
+                        for k in 0..*count as usize {
+                            out[k * LANES..][..n].copy_from_slice(row(*from, 0));
+                        }
+                    }
+                    Op::Swizzle { from, pattern } => {
+                        for (k, &p) in pattern.iter().enumerate() {
+                            out[k * LANES..][..n].copy_from_slice(row(*from, p));
+                        }
+                    }
+                    Op::Index {
+                        base,
+                        elem,
+                        count,
+                        index,
+                        kind,
+                    } => {
+                        for l in 0..n {
+                            let raw = row(*index, 0)[l];
+                            let i = if *kind == Kind::U {
+                                i64::from(raw)
+                            } else {
+                                i64::from(raw as i32)
+                            };
+                            let i = if i < 0 || i >= i64::from(*count) {
+                                if live & bit(l) != 0 {
+                                    return Err(err(format!(
+                                        "index {i} is out of range (0 to {})",
+                                        count - 1
+                                    )));
+                                }
+                                0
+                            } else {
+                                i as u32
+                            };
+                            for k in 0..*elem {
+                                out[k as usize * LANES + l] = row(*base, i * elem + k)[l];
+                            }
+                        }
+                    }
+                    Op::Unary { op, kind, a } => {
+                        for k in 0..a.n {
+                            let (x, y) = (row(a.at, k), &mut out[k as usize * LANES..][..n]);
+                            match (op, kind) {
+                                (UnaryOperator::Negate, Kind::F) => {
+                                    ops::map(x, y, |v| (-f32::from_bits(v)).to_bits())
+                                }
+                                (UnaryOperator::Negate, _) => {
+                                    ops::map(x, y, |v| (v as i32).wrapping_neg() as u32)
+                                }
+                                (UnaryOperator::LogicalNot, _) => {
+                                    ops::map(x, y, |v| u32::from(v == 0))
+                                }
+                                (UnaryOperator::BitwiseNot, Kind::B) => {
+                                    ops::map(x, y, |v| u32::from(v == 0))
+                                }
+                                (UnaryOperator::BitwiseNot, _) => ops::map(x, y, |v| !v),
+                            }
+                        }
+                    }
+                    Op::Binary {
+                        op,
+                        kind,
+                        a,
+                        b: rb,
+                        shape,
+                    } => {
+                        let get = |r: Reg, c: u32| row(r.at, if r.n == 1 { 0 } else { c });
+                        match shape {
+                            Shape::Each => {
+                                for k in 0..dst.n {
+                                    ops::binary(
+                                        *op,
+                                        *kind,
+                                        get(*a, k),
+                                        get(*rb, k),
+                                        &mut out[k as usize * LANES..][..n],
+                                        live,
+                                    )
+                                    .map_err(|m| err(m.to_owned()))?;
+                                }
+                            }
+                            Shape::MatVec { c, r } => {
+                                for i in 0..*r {
+                                    ops::dot_rows(
+                                        &(0..*c)
+                                            .map(|j| (row(a.at, j * r + i), row(rb.at, j)))
+                                            .collect::<Vec<_>>(),
+                                        &mut out[i as usize * LANES..][..n],
+                                    );
+                                }
+                            }
+                            Shape::VecMat { c, r } => {
+                                for j in 0..*c {
+                                    ops::dot_rows(
+                                        &(0..*r)
+                                            .map(|i| (row(a.at, i), row(rb.at, j * r + i)))
+                                            .collect::<Vec<_>>(),
+                                        &mut out[j as usize * LANES..][..n],
+                                    );
+                                }
+                            }
+                            Shape::MatMat { k, r, c } => {
+                                for j in 0..*c {
+                                    for i in 0..*r {
+                                        let terms: Vec<_> = (0..*k)
+                                            .map(|m| (row(a.at, m * r + i), row(rb.at, j * k + m)))
+                                            .collect();
+                                        ops::dot_rows(
+                                            &terms,
+                                            &mut out[(j * r + i) as usize * LANES..][..n],
+                                        );
+                                    }
+                                }
+                            }
+                        }
+                    }
+                    Op::Select { c, a, b: rb } => {
+                        for k in 0..dst.n {
+                            let cond = row(c.at, if c.n == 1 { 0 } else { k });
+                            let (x, y) = (row(a.at, k), row(rb.at, k));
+                            for (l, o) in out[k as usize * LANES..][..n].iter_mut().enumerate() {
+                                *o = if cond[l] != 0 { x[l] } else { y[l] };
+                            }
+                        }
+                    }
+                    Op::Derivative { axis, fine, a } => {
+                        for k in 0..a.n {
+                            ops::derivative(
+                                *axis,
+                                *fine,
+                                row(a.at, k),
+                                &mut out[k as usize * LANES..][..n],
+                            );
+                        }
+                    }
+                    Op::Relational { fun, a } => match fun {
+                        RelationalFunction::All | RelationalFunction::Any => {
+                            let all = *fun == RelationalFunction::All;
+                            for (l, o) in out[..n].iter_mut().enumerate() {
+                                let mut acc = all;
+                                for k in 0..a.n {
+                                    let v = row(a.at, k)[l] != 0;
+                                    acc = if all { acc && v } else { acc || v };
+                                }
+                                *o = u32::from(acc);
+                            }
+                        }
+                        RelationalFunction::IsNan | RelationalFunction::IsInf => {
+                            let nan = *fun == RelationalFunction::IsNan;
+                            for k in 0..a.n {
+                                ops::map(row(a.at, k), &mut out[k as usize * LANES..][..n], |v| {
+                                    let x = f32::from_bits(v);
+                                    u32::from(if nan { x.is_nan() } else { x.is_infinite() })
+                                });
+                            }
+                        }
+                    },
+                    Op::Math {
+                        fun,
+                        kind,
+                        args,
+                        rows,
+                    } => {
+                        ops::math(*fun, *kind, args, *rows, &|r, c| row(r, c), out, dst.n, n)
+                            .map_err(err)?;
+                    }
+                    Op::As {
+                        a,
+                        from,
+                        to,
+                        convert,
+                    } => {
+                        for k in 0..a.n {
+                            let y = &mut out[k as usize * LANES..][..n];
+                            let x = row(a.at, k);
+                            if *convert {
+                                ops::convert(*from, *to, x, y);
+                            } else {
+                                y.copy_from_slice(x);
+                            }
+                        }
+                    }
+                    Op::Sample {
+                        texture,
+                        coordinate,
+                        level,
+                    } => {
+                        let t = b.textures.get(*texture as usize).copied().flatten();
+                        let uv = |l: usize| {
+                            Vec2::new(
+                                f32::from_bits(row(coordinate.at, 0)[l]),
+                                f32::from_bits(row(coordinate.at, 1)[l]),
+                            )
+                        };
+                        for l in 0..n {
+                            let color = match (t, level) {
+                                (None, _) => Vec3::ZERO,
+                                (Some(t), Level::Auto | Level::Bias(_)) => {
+                                    let q = l & !3;
+                                    let (dx, dy) = if q + 3 < n {
+                                        (uv(q + 1) - uv(q), uv(q + 2) - uv(q))
+                                    } else {
+                                        (Vec2::ZERO, Vec2::ZERO)
+                                    };
+                                    let mut s = *b.sampler;
+                                    if let Level::Bias(r) = level {
+                                        s.lod_bias += f32::from_bits(row(*r, 0)[l]);
+                                    }
+                                    t.sample(uv(l), dx, dy, &s).color
+                                }
+                                (Some(t), Level::Exact(r)) => {
+                                    t.sample_lod(uv(l), f32::from_bits(row(*r, 0)[l]), b.sampler)
+                                        .0
+                                }
+                                (Some(t), Level::Zero) => t.sample_lod(uv(l), 0.0, b.sampler).0,
+                            };
+                            for (k, v) in color.extend(1.0).to_array().iter().enumerate() {
+                                out[k * LANES + l] = v.to_bits();
+                            }
+                        }
+                    }
+                    Op::Fetch {
+                        texture,
+                        coordinate,
+                        level,
+                    } => {
+                        let t = b.textures.get(*texture as usize).copied().flatten();
+                        for l in 0..n {
+                            let (i, j) = (
+                                row(coordinate.at, 0)[l] as i32,
+                                row(coordinate.at, 1)[l] as i32,
+                            );
+                            let k = level.map_or(0, |r| row(r, 0)[l] as i32);
+                            let texel = match t
+                                .and_then(|t| usize::try_from(k).ok().and_then(|k| t.levels.get(k)))
+                            {
+                                Some(lv)
+                                    if (0..lv.width as i32).contains(&i)
+                                        && (0..lv.height as i32).contains(&j) =>
+                                {
+                                    lv.texel(
+                                        i64::from(i),
+                                        i64::from(j),
+                                        crate::texture::Wrap::Clamp,
+                                    )
+                                    .extend(1.0)
+                                }
+                                Some(_) if live & bit(l) != 0 => {
+                                    return Err(err(format!(
+                                        "texelFetch at ({i}, {j}) level {k} is outside the texture"
+                                    )));
+                                }
+                                _ => glam::Vec4::ZERO,
+                            };
+                            for (c, v) in texel.to_array().iter().enumerate() {
+                                out[c * LANES + l] = v.to_bits();
+                            }
+                        }
+                    }
+                    Op::Size { texture, level } => {
+                        let t = b.textures.get(*texture as usize).copied().flatten();
+                        for l in 0..n {
+                            let k = level.map_or(0, |r| row(r, 0)[l] as usize);
+                            let (w, h) = t
+                                .and_then(|t| t.levels.get(k))
+                                .map_or((0, 0), |lv| (lv.width, lv.height));
+                            out[l] = w;
+                            out[LANES + l] = h;
+                        }
+                    }
+                    Op::None | Op::Const(_) | Op::Load(_) => {}
+                }
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,588 @@
+//! Runs a program in register form ([`super::code`]) over a batch of up to [`LANES`]
+//! invocations at once, as a GPU runs a warp: every expression is evaluated for all lanes, and
+//! a *mask* (one bit a lane) says which lanes a statement applies to. An `if` runs its two
+//! branches with the lanes whose condition holds and the others; a loop runs until every lane
+//! has left it; `break`, `continue`, `return` and `discard` take their lanes out of the mask.
+//!
+//! Fragments come in 2×2 quads (lanes `4q` … `4q + 3`: top-left, top-right, bottom-left,
+//! bottom-right), so `dFdx(v) = v(x+1, y) − v(x, y)` is a difference within the quad, and
+//! `texture()` takes its level of detail from the quad's differences of the coordinates.
+//!
+//! A step budget stops endless loops: each lane may run at most [`Machine::budget`] loop
+//! iterations in one invocation.
+
+use super::code::{Code, Place, Reg, Root, Stmt};
+use crate::texture::{Sampler, Texture};
+
+mod eval;
+
+/// The most invocations one batch runs (16 quads).
+pub const LANES: usize = 64;
+
+/// A failure of one run, at its place in the student's source (bytes).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RunError {
+    /// Where (bytes of the student's source).
+    pub at: usize,
+    /// What happened, as a sentence.
+    pub message: String,
+}
+
+/// What the traced lane did at one statement. `at` is always the statement's place in the
+/// student's source (bytes).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Event {
+    /// A variable was written.
+    Assign {
+        /// Where.
+        at: usize,
+        /// The variable's name.
+        name: String,
+        /// Its type.
+        ty: naga::Handle<naga::Type>,
+        /// Its whole new value.
+        bits: Vec<u32>,
+    },
+    /// An `if`.
+    Branch {
+        /// Where.
+        at: usize,
+        /// Whether its condition held.
+        taken: bool,
+    },
+    /// A loop began an iteration.
+    Iteration {
+        /// Where.
+        at: usize,
+        /// Which, from 1.
+        k: u32,
+    },
+    /// A function was called.
+    Call {
+        /// Where.
+        at: usize,
+        /// The function.
+        name: String,
+    },
+    /// A function returned (not the entry point).
+    Return {
+        /// Where.
+        at: usize,
+        /// The function.
+        name: String,
+    },
+    /// The fragment was discarded.
+    Discard {
+        /// Where.
+        at: usize,
+    },
+}
+
+/// The textures and sampler a run reads.
+#[derive(Clone, Copy)]
+pub struct Bindings<'a> {
+    /// The texture in each slot (`None`: nothing bound; lookups return black).
+    pub textures: &'a [Option<&'a Texture>],
+    /// How they are sampled.
+    pub sampler: &'a Sampler,
+}
+
+/// Control flow of the running function: lanes that broke, continued or returned.
+#[derive(Clone, Copy, Default)]
+struct Flow {
+    brk: u64,
+    cont: u64,
+    ret: u64,
+}
+
+/// The machine: a program's storage for one batch.
+pub struct Machine<'c> {
+    code: &'c Code,
+    regs: Vec<Vec<u32>>,
+    locals: Vec<Vec<u32>>,
+    returns: Vec<Vec<u32>>,
+    privates: Vec<u32>,
+    uniforms: Vec<u32>,
+    n: usize,
+    steps: [u32; LANES],
+    /// Loop iterations one invocation may run.
+    pub budget: u32,
+    killed: u64,
+    trace: Option<(usize, Vec<Event>)>,
+}
+
+type Res<T> = Result<T, RunError>;
+
+fn bit(l: usize) -> u64 {
+    1 << l
+}
+
+impl<'c> Machine<'c> {
+    /// A machine for `code`, its uniforms zero.
+    #[must_use]
+    pub fn new(code: &'c Code) -> Self {
+        Self {
+            code,
+            regs: code
+                .functions
+                .iter()
+                .map(|f| vec![0; f.width as usize * LANES])
+                .collect(),
+            locals: code
+                .functions
+                .iter()
+                .map(|f| vec![0; f.locals_width as usize * LANES])
+                .collect(),
+            returns: code.functions.iter().map(|_| Vec::new()).collect(),
+            privates: vec![0; code.private_width as usize * LANES],
+            uniforms: vec![0; code.uniform_width as usize],
+            n: 0,
+            steps: [0; LANES],
+            budget: 1 << 16,
+            killed: 0,
+            trace: None,
+        }
+    }
+
+    /// Sets the uniform at `reg` (see [`Code::globals`]).
+    pub fn set_uniform(&mut self, reg: Reg, bits: &[u32]) {
+        let r = reg.at as usize..(reg.at + reg.n) as usize;
+        self.uniforms[r].copy_from_slice(&bits[..reg.n as usize]);
+    }
+
+    /// Records what lane `lane` does in the next run.
+    pub fn trace_lane(&mut self, lane: Option<usize>) {
+        self.trace = lane.map(|l| (l, Vec::new()));
+    }
+
+    /// The events of the traced lane's last run.
+    pub fn take_trace(&mut self) -> Vec<Event> {
+        self.trace
+            .as_mut()
+            .map(|(_, e)| std::mem::take(e))
+            .unwrap_or_default()
+    }
+
+    /// Runs the entry point over `n` lanes, `live` of which are real invocations (the others
+    /// helpers of a quad). `inputs` holds each argument's rows (`LANES` values a component).
+    /// Returns the lanes that were discarded; the result is in [`Self::result`].
+    ///
+    /// # Errors
+    /// A run-time error of a live lane: an index out of range, an integer division by zero,
+    /// the step budget spent.
+    pub fn run(
+        &mut self,
+        inputs: &[&[u32]],
+        n: usize,
+        live: u64,
+        bindings: &Bindings<'_>,
+    ) -> Res<u64> {
+        self.n = n.min(LANES);
+        self.steps = [0; LANES];
+        self.killed = 0;
+        let code = self.code;
+        for (at, v) in &code.private_init {
+            for (c, &x) in v.iter().enumerate() {
+                let row = (*at as usize + c) * LANES;
+                self.privates[row..row + self.n].fill(x);
+            }
+        }
+        let entry = code.functions.len() - 1;
+        let f = &code.functions[entry];
+        for (arg, input) in f.args.iter().zip(inputs) {
+            let r = arg.at as usize * LANES..(arg.at + arg.n) as usize * LANES;
+            self.regs[entry][r].copy_from_slice(&input[..arg.n as usize * LANES]);
+        }
+        let all = if self.n == LANES {
+            u64::MAX
+        } else {
+            (1 << self.n) - 1
+        };
+        self.call(entry, all, live, bindings)?;
+        Ok(self.killed)
+    }
+
+    /// The entry point's result: each component's row of lanes.
+    #[must_use]
+    pub fn result(&self) -> &[u32] {
+        &self.returns[self.code.functions.len() - 1]
+    }
+
+    fn call(&mut self, fi: usize, mask: u64, live: u64, b: &Bindings<'_>) -> Res<()> {
+        let code = self.code;
+        let f = &code.functions[fi];
+        for &e in &f.pre {
+            self.eval(fi, e as usize, mask & live, b)?;
+        }
+        let regs = &self.regs[fi];
+        let locals = &mut self.locals[fi];
+        for (reg, init) in &f.locals {
+            for c in 0..reg.n as usize {
+                let row = (reg.at as usize + c) * LANES;
+                match init {
+                    Some(i) => {
+                        let src = (*i as usize + c) * LANES;
+                        locals[row..row + LANES].copy_from_slice(&regs[src..src + LANES]);
+                    }
+                    None => locals[row..row + LANES].fill(0),
+                }
+            }
+        }
+        let mut flow = Flow::default();
+        self.block(fi, &f.body, mask, live, &mut flow, b)?;
+        Ok(())
+    }
+
+    fn traced(&self, mask: u64) -> bool {
+        self.trace
+            .as_ref()
+            .is_some_and(|(l, _)| mask & bit(*l) != 0)
+    }
+
+    fn event(&mut self, mask: u64, e: impl FnOnce(&Self, usize) -> Event) {
+        if let Some(&(l, _)) = self.trace.as_ref().filter(|(l, _)| mask & bit(*l) != 0) {
+            let ev = e(self, l);
+            if let Some((_, events)) = self.trace.as_mut() {
+                events.push(ev);
+            }
+        }
+    }
+
+    #[allow(clippy::too_many_lines, clippy::too_many_arguments)]
+    fn block(
+        &mut self,
+        fi: usize,
+        stmts: &[Stmt],
+        mut mask: u64,
+        live: u64,
+        flow: &mut Flow,
+        b: &Bindings<'_>,
+    ) -> Res<u64> {
+        let code = self.code;
+        let f = &code.functions[fi];
+        for s in stmts {
+            if mask == 0 {
+                break;
+            }
+            match s {
+                Stmt::Emit(r) => {
+                    for e in r.clone() {
+                        self.eval(fi, e as usize, mask & live, b)?;
+                    }
+                }
+                Stmt::Block(inner) => mask = self.block(fi, inner, mask, live, flow, b)?,
+                Stmt::If {
+                    at,
+                    c,
+                    accept,
+                    reject,
+                } => {
+                    let cond = self.lanes_true(fi, *c);
+                    let (yes, no) = (mask & cond, mask & !cond);
+                    self.event(mask, |_, l| Event::Branch {
+                        at: *at,
+                        taken: yes & bit(l) != 0,
+                    });
+                    let a = if yes != 0 {
+                        self.block(fi, accept, yes, live, flow, b)?
+                    } else {
+                        0
+                    };
+                    let r = if no != 0 {
+                        self.block(fi, reject, no, live, flow, b)?
+                    } else {
+                        0
+                    };
+                    mask = a | r;
+                }
+                Stmt::Switch {
+                    selector, cases, ..
+                } => {
+                    let outer = flow.brk;
+                    flow.brk = 0;
+                    let sel = &self.regs[fi][*selector as usize * LANES..][..LANES];
+                    let mut matched = 0u64;
+                    let mut falling = 0u64;
+                    let mut after = 0u64;
+                    let default = {
+                        let mut d = mask;
+                        for (value, _, _) in cases {
+                            if let Some(v) = value {
+                                d &= !lanes_where(sel, self.n, |x| {
+                                    i64::from(x as i32) == *v || i64::from(x) == *v
+                                });
+                            }
+                        }
+                        d
+                    };
+                    for (value, body, fall_through) in cases {
+                        let hit = match value {
+                            Some(v) => {
+                                mask & lanes_where(
+                                    &self.regs[fi][*selector as usize * LANES..][..LANES],
+                                    self.n,
+                                    |x| i64::from(x as i32) == *v || i64::from(x) == *v,
+                                )
+                            }
+                            None => default,
+                        } & !matched;
+                        matched |= hit;
+                        let run = hit | falling;
+                        let out = if run != 0 {
+                            self.block(fi, body, run, live, flow, b)?
+                        } else {
+                            0
+                        };
+                        if *fall_through {
+                            falling = out;
+                        } else {
+                            after |= out;
+                            falling = 0;
+                        }
+                    }
+                    mask = after | falling | flow.brk | (mask & !matched);
+                    flow.brk = outer;
+                }
+                Stmt::Loop {
+                    at,
+                    body,
+                    continuing,
+                    break_if,
+                } => {
+                    let (outer_brk, outer_cont) = (flow.brk, flow.cont);
+                    let mut running = mask;
+                    let mut left = 0u64;
+                    let mut k = 0u32;
+                    while running != 0 {
+                        k += 1;
+                        for l in 0..self.n {
+                            if running & live & bit(l) != 0 {
+                                self.steps[l] += 1;
+                                if self.steps[l] > self.budget {
+                                    return Err(RunError {
+                                        at: *at,
+                                        message: format!(
+                                            "the loop ran more than {} steps (an endless loop?)",
+                                            self.budget
+                                        ),
+                                    });
+                                }
+                            }
+                        }
+                        self.event(running, |_, _| Event::Iteration { at: *at, k });
+                        flow.brk = 0;
+                        flow.cont = 0;
+                        let mut m = self.block(fi, body, running, live, flow, b)?;
+                        m |= flow.cont;
+                        left |= flow.brk;
+                        if m != 0 {
+                            flow.brk = 0;
+                            m = self.block(fi, continuing, m, live, flow, b)?;
+                            left |= flow.brk;
+                            if let Some(c) = break_if {
+                                let stop = m & self.lanes_true(fi, *c);
+                                left |= stop;
+                                m &= !stop;
+                            }
+                        }
+                        running = m;
+                    }
+                    flow.brk = outer_brk;
+                    flow.cont = outer_cont;
+                    mask = left;
+                }
+                Stmt::Break => {
+                    flow.brk |= mask;
+                    mask = 0;
+                }
+                Stmt::Continue => {
+                    flow.cont |= mask;
+                    mask = 0;
+                }
+                Stmt::Return { at, value } => {
+                    if let Some(v) = value {
+                        let ret = &mut self.returns[fi];
+                        ret.resize(v.n as usize * LANES, 0);
+                        let regs = &self.regs[fi];
+                        for c in 0..v.n as usize {
+                            let src = &regs[(v.at as usize + c) * LANES..][..LANES];
+                            masked_copy(&mut ret[c * LANES..][..LANES], src, mask, self.n);
+                        }
+                    }
+                    if fi + 1 < code.functions.len() {
+                        let name = f.name.clone();
+                        self.event(mask, |_, _| Event::Return { at: *at, name });
+                    }
+                    flow.ret |= mask;
+                    mask = 0;
+                }
+                Stmt::Kill { at } => {
+                    self.event(mask, |_, _| Event::Discard { at: *at });
+                    self.killed |= mask;
+                    mask = 0;
+                }
+                Stmt::Store { at, place, value } => {
+                    self.store(fi, place, *value, mask, live)?;
+                    if self.traced(mask) {
+                        self.event(mask, |m, l| Event::Assign {
+                            at: *at,
+                            name: place.name.clone(),
+                            ty: place.ty,
+                            bits: m.read_whole(fi, place, l),
+                        });
+                    }
+                }
+                Stmt::Call {
+                    at,
+                    function,
+                    args,
+                    result,
+                } => {
+                    let callee = &code.functions[*function];
+                    let name = callee.name.clone();
+                    self.event(mask, |_, _| Event::Call { at: *at, name });
+                    for (arg, src) in callee.args.iter().zip(args) {
+                        let (s, d) = (src.at as usize * LANES, arg.at as usize * LANES);
+                        let len = arg.n as usize * LANES;
+                        let rows: Vec<u32> = self.regs[fi][s..s + len].to_vec();
+                        self.regs[*function][d..d + len].copy_from_slice(&rows);
+                    }
+                    self.call(*function, mask, live, b)?;
+                    if let Some(r) = result {
+                        let len = r.n as usize * LANES;
+                        let ret = std::mem::take(&mut self.returns[*function]);
+                        let d = r.at as usize * LANES;
+                        self.regs[fi][d..d + len].copy_from_slice(&ret[..len]);
+                        self.returns[*function] = ret;
+                    }
+                    mask &= !self.killed;
+                }
+            }
+        }
+        Ok(mask)
+    }
+
+    /// The lanes whose bool at register row `c` is true.
+    fn lanes_true(&self, fi: usize, c: u32) -> u64 {
+        lanes_where(&self.regs[fi][c as usize * LANES..][..LANES], self.n, |x| {
+            x != 0
+        })
+    }
+
+    fn storage(&self, fi: usize, root: Root) -> &[u32] {
+        match root {
+            Root::Local => &self.locals[fi],
+            Root::Private => &self.privates,
+            Root::Uniform => &self.uniforms,
+        }
+    }
+
+    /// The first component of `place` in lane `l`, or the index that is out of range.
+    fn offset(&self, fi: usize, place: &Place, l: usize) -> Result<u32, (i64, u32)> {
+        let mut at = place.at;
+        for &(index, stride, count) in &place.dynamic {
+            let i = i64::from(self.regs[fi][index as usize * LANES + l] as i32);
+            if i < 0 || i >= i64::from(count) {
+                return Err((i, count));
+            }
+            at += i as u32 * stride;
+        }
+        Ok(at)
+    }
+
+    fn offset_checked(
+        &self,
+        fi: usize,
+        place: &Place,
+        l: usize,
+        live: bool,
+        at: usize,
+    ) -> Res<u32> {
+        match self.offset(fi, place, l) {
+            Ok(o) => Ok(o),
+            Err(_) if !live => Ok(place.at),
+            Err((i, count)) => Err(RunError {
+                at,
+                message: format!(
+                    "index {i} is out of range: `{}` has {count} elements (0 to {})",
+                    place.name,
+                    count - 1
+                ),
+            }),
+        }
+    }
+
+    fn read_whole(&self, fi: usize, place: &Place, l: usize) -> Vec<u32> {
+        let s = self.storage(fi, place.root);
+        (place.whole.at..place.whole.at + place.whole.n)
+            .map(|c| {
+                if place.root == Root::Uniform {
+                    s[c as usize]
+                } else {
+                    s[c as usize * LANES + l]
+                }
+            })
+            .collect()
+    }
+
+    fn store(&mut self, fi: usize, place: &Place, value: u32, mask: u64, live: u64) -> Res<()> {
+        let at = self.code.functions[fi]
+            .spans
+            .get(value as usize)
+            .copied()
+            .unwrap_or(0);
+        if place.dynamic.is_empty() {
+            for c in 0..place.n as usize {
+                let (dst, src) = (
+                    (place.at as usize + c) * LANES,
+                    (value as usize + c) * LANES,
+                );
+                let row: [u32; LANES] = self.regs[fi][src..src + LANES]
+                    .try_into()
+                    .unwrap_or([0; LANES]);
+                let storage = match place.root {
+                    Root::Local => &mut self.locals[fi],
+                    _ => &mut self.privates,
+                };
+                masked_copy(&mut storage[dst..dst + LANES], &row, mask, self.n);
+            }
+            return Ok(());
+        }
+        for l in 0..self.n {
+            if mask & bit(l) == 0 {
+                continue;
+            }
+            let o = self.offset_checked(fi, place, l, live & bit(l) != 0, at)?;
+            for c in 0..place.n as usize {
+                let v = self.regs[fi][(value as usize + c) * LANES + l];
+                let storage = match place.root {
+                    Root::Local => &mut self.locals[fi],
+                    _ => &mut self.privates,
+                };
+                storage[(o as usize + c) * LANES + l] = v;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The lanes among the first `n` where `f` holds.
+fn lanes_where(row: &[u32], n: usize, f: impl Fn(u32) -> bool) -> u64 {
+    row[..n]
+        .iter()
+        .enumerate()
+        .fold(0, |m, (l, &x)| if f(x) { m | bit(l) } else { m })
+}
+
+/// Copies the lanes of `mask` from `src` to `dst`.
+fn masked_copy(dst: &mut [u32], src: &[u32], mask: u64, n: usize) {
+    if mask.count_ones() as usize >= n {
+        dst[..n].copy_from_slice(&src[..n]);
+        return;
+    }
+    for l in 0..n {
+        if mask & bit(l) != 0 {
+            dst[l] = src[l];
+        }
+    }
+}

@@ -1,0 +1,571 @@
+//! naga's IR translated into the register form of [`super::code`]: registers laid out
+//! expression by expression, pointers followed to their places, constants evaluated, and every
+//! operation checked to be one the machine runs.
+
+use naga::valid::{FunctionInfo, ModuleInfo};
+use naga::{AddressSpace, BinaryOperator, Expression, Handle, Module, Statement, TypeInner};
+
+use super::code::{
+    Code, Function, Kind, Level, Op, Place, Reg, Root, Shape, Stmt, Unsupported, components,
+    const_value, element_count, kind_of, literal, member,
+};
+use super::dialect::Adapted;
+
+/// The translation of a validated module.
+pub struct Translator<'m> {
+    module: &'m Module,
+    adapted: &'m Adapted,
+    code: Code,
+    /// Names of the textures, in binding order, as globals.
+    textures: Vec<(Handle<naga::GlobalVariable>, u32)>,
+}
+
+impl<'m> Translator<'m> {
+    /// Translates the module's functions and its one entry point. `uniform(name)` says whether a
+    /// private global is a uniform pipelens fills; `texture(name)` the slot of a texture global.
+    ///
+    /// # Errors
+    /// An operation the interpreter does not run, with its place.
+    pub fn translate(
+        module: &'m Module,
+        info: &'m ModuleInfo,
+        adapted: &'m Adapted,
+        is_uniform: &dyn Fn(&str) -> bool,
+        texture: &dyn Fn(&str) -> Option<u32>,
+    ) -> Result<Code, Unsupported> {
+        let mut t = Self {
+            module,
+            adapted,
+            code: Code {
+                functions: Vec::new(),
+                globals: Vec::new(),
+                private_width: 0,
+                uniform_width: 0,
+                private_init: Vec::new(),
+            },
+            textures: Vec::new(),
+        };
+        for (h, g) in module.global_variables.iter() {
+            let n = components(module, &module.types[g.ty].inner);
+            let name = g.name.clone().unwrap_or_default();
+            let slot = match g.space {
+                AddressSpace::Handle => {
+                    if let Some(s) = texture(&name) {
+                        t.textures.push((h, s));
+                    }
+                    None
+                }
+                AddressSpace::Private if is_uniform(&name) => {
+                    let at = t.code.uniform_width;
+                    t.code.uniform_width += n;
+                    Some((Root::Uniform, Reg { at, n }))
+                }
+                _ => {
+                    let at = t.code.private_width;
+                    t.code.private_width += n;
+                    if let Some(init) = g.init {
+                        let v = const_value(module, init)
+                            .map_err(|what| Unsupported { at: 0, what })?;
+                        t.code.private_init.push((at, v));
+                    }
+                    Some((Root::Private, Reg { at, n }))
+                }
+            };
+            t.code.globals.push(slot);
+        }
+        for (h, f) in module.functions.iter() {
+            let func = t.function(f, &info[h])?;
+            t.code.functions.push(func);
+        }
+        let ep = module.entry_points.first().ok_or(Unsupported {
+            at: 0,
+            what: "no `main`".to_owned(),
+        })?;
+        let func = t.function(&ep.function, info.get_entry_point(0))?;
+        t.code.functions.push(func);
+        Ok(t.code)
+    }
+
+    fn at(&self, span: naga::Span) -> usize {
+        span.to_range()
+            .map_or(0, |r| self.adapted.original_offset(r.start))
+    }
+
+    fn function(&self, f: &naga::Function, fi: &FunctionInfo) -> Result<Function, Unsupported> {
+        let module = self.module;
+        let ty = |h: Handle<Expression>| fi[h].ty.inner_with(&module.types);
+        let mut regs = Vec::with_capacity(f.expressions.len());
+        let mut width = 0;
+        for (h, _) in f.expressions.iter() {
+            let n = match *ty(h) {
+                TypeInner::Pointer { .. } | TypeInner::ValuePointer { .. } => 0,
+                ref inner => components(module, inner),
+            };
+            regs.push(Reg { at: width, n });
+            width += n;
+        }
+        let mut locals = Vec::new();
+        let mut locals_width = 0;
+        for (_, l) in f.local_variables.iter() {
+            let n = components(module, &module.types[l.ty].inner);
+            locals.push((
+                Reg {
+                    at: locals_width,
+                    n,
+                },
+                l.init.map(|h| regs[h.index()].at),
+            ));
+            locals_width += n;
+        }
+        let mut emitted = vec![false; f.expressions.len()];
+        mark_emitted(&f.body, &mut emitted);
+        let mut func = Function {
+            name: f.name.clone().unwrap_or_else(|| "main".to_owned()),
+            ops: Vec::with_capacity(f.expressions.len()),
+            regs,
+            spans: Vec::with_capacity(f.expressions.len()),
+            pre: Vec::new(),
+            width,
+            locals,
+            locals_width,
+            args: Vec::new(),
+            body: Vec::new(),
+        };
+        let mut args = vec![Reg::default(); f.arguments.len()];
+        for (h, e) in f.expressions.iter() {
+            let span = f.expressions.get_span(h);
+            let op = self.op(f, fi, e, &func).map_err(|what| Unsupported {
+                at: self.at(span),
+                what,
+            })?;
+            if let Expression::FunctionArgument(i) = *e {
+                args[i as usize] = func.regs[h.index()];
+            }
+            if !emitted[h.index()] && !matches!(op, Op::None) {
+                func.pre.push(h.index() as u32);
+            }
+            func.ops.push(op);
+            func.spans.push(self.at(span));
+        }
+        func.args = args;
+        func.body = self.block(f, fi, &f.body, &func)?;
+        Ok(func)
+    }
+
+    fn place(
+        &self,
+        f: &naga::Function,
+        fi: &FunctionInfo,
+        h: Handle<Expression>,
+        func: &Function,
+    ) -> Result<Place, String> {
+        let module = self.module;
+        let ty = |h: Handle<Expression>| fi[h].ty.inner_with(&module.types);
+        match f.expressions[h] {
+            Expression::LocalVariable(l) => {
+                let (reg, _) = func.locals[l.index()];
+                let var = &f.local_variables[l];
+                Ok(Place {
+                    root: Root::Local,
+                    at: reg.at,
+                    dynamic: Vec::new(),
+                    n: reg.n,
+                    name: var.name.clone().unwrap_or_default(),
+                    whole: reg,
+                    ty: var.ty,
+                })
+            }
+            Expression::GlobalVariable(g) => {
+                let var = &module.global_variables[g];
+                let (root, reg) = self.code.globals[g.index()]
+                    .ok_or_else(|| "a texture used as a value".to_owned())?;
+                Ok(Place {
+                    root,
+                    at: reg.at,
+                    dynamic: Vec::new(),
+                    n: reg.n,
+                    name: var.name.clone().unwrap_or_default(),
+                    whole: reg,
+                    ty: var.ty,
+                })
+            }
+            Expression::AccessIndex { base, index } => {
+                let mut p = self.place(f, fi, base, func)?;
+                let pointee = pointee(module, ty(base));
+                let (off, n) = member(module, pointee, index);
+                p.at += off;
+                p.n = n;
+                Ok(p)
+            }
+            Expression::Access { base, index } => {
+                let mut p = self.place(f, fi, base, func)?;
+                let pointee = pointee(module, ty(base));
+                let (_, n) = member(module, pointee, 0);
+                p.dynamic
+                    .push((func.regs[index.index()].at, n, element_count(pointee)));
+                p.n = n;
+                Ok(p)
+            }
+            ref other => Err(format!("a pointer pipelens cannot follow ({other:?})")),
+        }
+    }
+
+    fn texture_slot(&self, f: &naga::Function, image: Handle<Expression>) -> Result<u32, String> {
+        match f.expressions[image] {
+            Expression::GlobalVariable(g) => self
+                .textures
+                .iter()
+                .find(|(h, _)| *h == g)
+                .map(|(_, s)| *s)
+                .ok_or_else(|| "a texture pipelens does not bind".to_owned()),
+            _ => Err("a texture passed to a function: use the `sampler2D` by its name".to_owned()),
+        }
+    }
+
+    #[allow(clippy::too_many_lines)]
+    fn op(
+        &self,
+        f: &naga::Function,
+        fi: &FunctionInfo,
+        e: &Expression,
+        func: &Function,
+    ) -> Result<Op, String> {
+        let module = self.module;
+        let ty = |h: Handle<Expression>| fi[h].ty.inner_with(&module.types);
+        let reg = |h: Handle<Expression>| func.regs[h.index()];
+        Ok(match *e {
+            Expression::Literal(l) => Op::Const(literal(l)?),
+            Expression::Constant(c) => Op::Const(const_value(module, module.constants[c].init)?),
+            Expression::ZeroValue(t) => {
+                Op::Const(vec![0; components(module, &module.types[t].inner) as usize])
+            }
+            Expression::Compose { ref components, .. } => {
+                Op::Compose(components.iter().map(|&c| reg(c)).collect())
+            }
+            Expression::Splat { size, value } => Op::Splat {
+                from: reg(value).at,
+                n: size as u32,
+            },
+            Expression::Swizzle {
+                size,
+                vector,
+                ref pattern,
+            } => Op::Swizzle {
+                from: reg(vector).at,
+                pattern: pattern[..size as usize].iter().map(|&c| c as u32).collect(),
+            },
+            Expression::AccessIndex { base, index } => match *ty(base) {
+                TypeInner::Pointer { .. } | TypeInner::ValuePointer { .. } => Op::None,
+                ref inner => {
+                    let (off, n) = member(module, inner, index);
+                    Op::Copy {
+                        from: reg(base).at + off,
+                        n,
+                    }
+                }
+            },
+            Expression::Access { base, index } => match *ty(base) {
+                TypeInner::Pointer { .. } | TypeInner::ValuePointer { .. } => Op::None,
+                ref inner => {
+                    let (_, elem) = member(module, inner, 0);
+                    Op::Index {
+                        base: reg(base).at,
+                        elem,
+                        count: element_count(inner),
+                        index: reg(index).at,
+                        kind: kind_of(ty(index)),
+                    }
+                }
+            },
+            Expression::FunctionArgument(_)
+            | Expression::GlobalVariable(_)
+            | Expression::LocalVariable(_)
+            | Expression::CallResult(_) => Op::None,
+            Expression::Load { pointer } => Op::Load(self.place(f, fi, pointer, func)?),
+            Expression::Unary { op, expr } => Op::Unary {
+                op,
+                kind: kind_of(ty(expr)),
+                a: reg(expr),
+            },
+            Expression::Binary { op, left, right } => {
+                let (lt, rt) = (ty(left), ty(right));
+                let shape = match (op, lt, rt) {
+                    (
+                        BinaryOperator::Multiply,
+                        &TypeInner::Matrix { columns, rows, .. },
+                        &TypeInner::Vector { .. },
+                    ) => Shape::MatVec {
+                        c: columns as u32,
+                        r: rows as u32,
+                    },
+                    (
+                        BinaryOperator::Multiply,
+                        &TypeInner::Vector { .. },
+                        &TypeInner::Matrix { columns, rows, .. },
+                    ) => Shape::VecMat {
+                        c: columns as u32,
+                        r: rows as u32,
+                    },
+                    (
+                        BinaryOperator::Multiply,
+                        &TypeInner::Matrix {
+                            columns: k, rows, ..
+                        },
+                        &TypeInner::Matrix { columns, .. },
+                    ) => Shape::MatMat {
+                        k: k as u32,
+                        r: rows as u32,
+                        c: columns as u32,
+                    },
+                    _ => Shape::Each,
+                };
+                Op::Binary {
+                    op,
+                    kind: kind_of(lt),
+                    a: reg(left),
+                    b: reg(right),
+                    shape,
+                }
+            }
+            Expression::Select {
+                condition,
+                accept,
+                reject,
+            } => Op::Select {
+                c: reg(condition),
+                a: reg(accept),
+                b: reg(reject),
+            },
+            Expression::Derivative { axis, ctrl, expr } => Op::Derivative {
+                axis,
+                fine: ctrl == naga::DerivativeControl::Fine,
+                a: reg(expr),
+            },
+            Expression::Relational { fun, argument } => Op::Relational {
+                fun,
+                a: reg(argument),
+            },
+            Expression::Math {
+                fun,
+                arg,
+                arg1,
+                arg2,
+                arg3,
+            } => {
+                if !super::ops::supported(fun) {
+                    return Err(format!(
+                        "`{fun:?}` is a built-in function pipelens does not run yet"
+                    ));
+                }
+                let args = [Some(arg), arg1, arg2, arg3]
+                    .into_iter()
+                    .flatten()
+                    .map(reg)
+                    .collect();
+                let rows = match *ty(arg) {
+                    TypeInner::Vector { size, .. } => size as u32,
+                    TypeInner::Matrix { rows, .. } => rows as u32,
+                    _ => 1,
+                };
+                Op::Math {
+                    fun,
+                    kind: kind_of(ty(arg)),
+                    args,
+                    rows,
+                }
+            }
+            Expression::As {
+                expr,
+                kind,
+                convert,
+            } => Op::As {
+                a: reg(expr),
+                from: kind_of(ty(expr)),
+                to: Kind::of(kind),
+                convert: convert.is_some(),
+            },
+            Expression::ImageSample {
+                image,
+                coordinate,
+                level,
+                gather: None,
+                depth_ref: None,
+                array_index: None,
+                ..
+            } => Op::Sample {
+                texture: self.texture_slot(f, image)?,
+                coordinate: reg(coordinate),
+                level: match level {
+                    naga::SampleLevel::Auto => Level::Auto,
+                    naga::SampleLevel::Zero => Level::Zero,
+                    naga::SampleLevel::Exact(l) => Level::Exact(reg(l).at),
+                    naga::SampleLevel::Bias(b) => Level::Bias(reg(b).at),
+                    naga::SampleLevel::Gradient { .. } => return Err("textureGrad".to_owned()),
+                },
+            },
+            Expression::ImageLoad {
+                image,
+                coordinate,
+                level,
+                array_index: None,
+                sample: None,
+            } => Op::Fetch {
+                texture: self.texture_slot(f, image)?,
+                coordinate: reg(coordinate),
+                level: level.map(|l| reg(l).at),
+            },
+            Expression::ImageQuery {
+                image,
+                query: naga::ImageQuery::Size { level },
+            } => Op::Size {
+                texture: self.texture_slot(f, image)?,
+                level: level.map(|l| reg(l).at),
+            },
+            ref other => {
+                return Err(format!(
+                    "an operation pipelens does not run yet ({})",
+                    describe(other)
+                ));
+            }
+        })
+    }
+
+    fn block(
+        &self,
+        f: &naga::Function,
+        fi: &FunctionInfo,
+        block: &naga::Block,
+        func: &Function,
+    ) -> Result<Vec<Stmt>, Unsupported> {
+        let mut out = Vec::with_capacity(block.len());
+        for (s, span) in block.span_iter() {
+            let at = self.at(*span);
+            let err = |what: String| Unsupported { at, what };
+            let reg = |h: Handle<Expression>| func.regs[h.index()];
+            out.push(match *s {
+                Statement::Emit(ref range) => Stmt::Emit(range.index_range()),
+                Statement::Block(ref b) => Stmt::Block(self.block(f, fi, b, func)?),
+                Statement::If {
+                    condition,
+                    ref accept,
+                    ref reject,
+                } => Stmt::If {
+                    at,
+                    c: reg(condition).at,
+                    accept: self.block(f, fi, accept, func)?,
+                    reject: self.block(f, fi, reject, func)?,
+                },
+                Statement::Switch {
+                    selector,
+                    ref cases,
+                } => {
+                    let mut cs = Vec::new();
+                    for c in cases {
+                        let value = match c.value {
+                            naga::SwitchValue::I32(v) => Some(i64::from(v)),
+                            naga::SwitchValue::U32(v) => Some(i64::from(v)),
+                            naga::SwitchValue::Default => None,
+                        };
+                        cs.push((value, self.block(f, fi, &c.body, func)?, c.fall_through));
+                    }
+                    Stmt::Switch {
+                        at,
+                        selector: reg(selector).at,
+                        cases: cs,
+                    }
+                }
+                Statement::Loop {
+                    ref body,
+                    ref continuing,
+                    break_if,
+                } => Stmt::Loop {
+                    at,
+                    body: self.block(f, fi, body, func)?,
+                    continuing: self.block(f, fi, continuing, func)?,
+                    break_if: break_if.map(|b| reg(b).at),
+                },
+                Statement::Break => Stmt::Break,
+                Statement::Continue => Stmt::Continue,
+                Statement::Return { value } => Stmt::Return {
+                    at,
+                    value: value.map(reg),
+                },
+                Statement::Kill => Stmt::Kill { at },
+                Statement::Store { pointer, value } => Stmt::Store {
+                    at,
+                    place: self.place(f, fi, pointer, func).map_err(err)?,
+                    value: reg(value).at,
+                },
+                Statement::Call {
+                    function,
+                    ref arguments,
+                    result,
+                } => Stmt::Call {
+                    at,
+                    function: function.index(),
+                    args: arguments.iter().map(|&a| reg(a)).collect(),
+                    result: result.map(reg),
+                },
+                Statement::ControlBarrier(_) | Statement::MemoryBarrier(_) => continue,
+                ref other => {
+                    return Err(err(format!(
+                        "a statement pipelens does not run ({})",
+                        describe(other)
+                    )));
+                }
+            });
+        }
+        Ok(out)
+    }
+}
+
+/// The first word of an IR node's debug form: `Atomic`, `ImageStore`.
+fn describe(node: &dyn std::fmt::Debug) -> String {
+    let s = format!("{node:?}");
+    s.split([' ', '(', '{'])
+        .next()
+        .unwrap_or_default()
+        .to_owned()
+}
+
+/// The type a pointer points to.
+fn pointee<'a>(module: &'a Module, inner: &'a TypeInner) -> &'a TypeInner {
+    match *inner {
+        TypeInner::Pointer { base, .. } => &module.types[base].inner,
+        _ => inner,
+    }
+}
+
+/// Marks every expression some `Emit` covers.
+fn mark_emitted(block: &naga::Block, emitted: &mut [bool]) {
+    for s in block.iter() {
+        match *s {
+            Statement::Emit(ref r) => {
+                for i in r.index_range() {
+                    emitted[i as usize] = true;
+                }
+            }
+            Statement::Block(ref b) => mark_emitted(b, emitted),
+            Statement::If {
+                ref accept,
+                ref reject,
+                ..
+            } => {
+                mark_emitted(accept, emitted);
+                mark_emitted(reject, emitted);
+            }
+            Statement::Switch { ref cases, .. } => {
+                cases.iter().for_each(|c| mark_emitted(&c.body, emitted))
+            }
+            Statement::Loop {
+                ref body,
+                ref continuing,
+                ..
+            } => {
+                mark_emitted(body, emitted);
+                mark_emitted(continuing, emitted);
+            }
+            _ => {}
+        }
+    }
+}
