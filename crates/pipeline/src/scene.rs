@@ -71,6 +71,18 @@ pub struct Object {
     /// How the mesh was generated, when it is built in: lets a lesson change a parameter of the
     /// shape itself (a Bézier curve's `t`) and build it again.
     pub builtin: Option<BuiltinMesh>,
+    /// Shaders the student wrote: they replace the vertex stage's transform and the shading
+    /// (see [`crate::shader`]).
+    pub shader: Option<ObjectShader>,
+}
+
+/// An object's shaders and the time their `time` uniform reads.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ObjectShader {
+    /// The linked vertex and fragment shaders.
+    pub programs: Arc<crate::shader::Programs>,
+    /// Seconds into the step's animation (`uniform float time;`).
+    pub time: f32,
 }
 
 impl Object {
@@ -95,6 +107,7 @@ impl Object {
             axis_rotation: None,
             slerp: None,
             builtin: None,
+            shader: None,
         }
     }
 

@@ -194,6 +194,34 @@ pub struct FrameCapture {
     pub pixels: PixelBuffers,
     /// The meshes' labels where they land in the image.
     pub labels: Vec<ScreenLabel>,
+    /// What the student's shaders computed: each object's vertex shader results, and the
+    /// fragment shaders' counts (`None` when no object has shaders).
+    pub shaders: Option<ShaderRecord>,
+}
+
+/// What the student's shaders computed in a frame.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct ShaderRecord {
+    /// For each object with shaders: its first row of the vertex table, and each vertex's
+    /// vertex-shader result (every output, `gl_Position` included), `stride` floats a vertex.
+    pub vertex_results: Vec<Option<VertexResults>>,
+    /// Fragments the fragment shaders ran for (helper invocations of a quad not counted).
+    pub fragments: u64,
+    /// Fragments a `discard` threw away.
+    pub discarded: u64,
+    /// Pixels whose colour came out NaN or infinite (shown black).
+    pub not_finite: u64,
+}
+
+/// One object's vertex-shader results.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct VertexResults {
+    /// The object's first row in the vertex table.
+    pub first: u32,
+    /// Floats a vertex.
+    pub stride: u32,
+    /// Every vertex's outputs, in the shader's output order.
+    pub values: Vec<f32>,
 }
 
 impl FrameCapture {

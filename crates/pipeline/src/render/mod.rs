@@ -13,6 +13,7 @@ mod coarse;
 mod fixtures;
 mod resolve;
 mod runs;
+mod shaders;
 
 use std::time::Duration;
 
@@ -22,7 +23,9 @@ use serde::Serialize;
 
 use self::assembly::{assemble_and_clip, light_faces};
 use self::resolve::{ResolveContext, resolve};
-use crate::capture::{FrameCapture, Matrices, ObjectSummary, PixelBuffers, PrimitiveRecord};
+use crate::capture::{
+    FrameCapture, Matrices, ObjectSummary, PixelBuffers, PrimitiveRecord, ShaderRecord,
+};
 use crate::raster::{RasterCounts, RasterTriangle, SampleBuffers};
 use crate::scene::Scene;
 use crate::settings::RenderSettings;
@@ -130,6 +133,7 @@ fn render_stages(
         &mut vertices,
         &mut vertex_shading,
     );
+    let vertex_results = shaders::vertex_shaders(scene, settings, &matrices, &mut vertices)?;
     times.vertex = t.elapsed();
 
     let t = Instant::now();
@@ -170,7 +174,19 @@ fn render_stages(
         vertex_shading: &vertex_shading,
         face_shading: &face_shading,
     };
-    let pixels = resolve(&ctx, storage.pixels);
+    let mut pixels = resolve(&ctx, storage.pixels);
+    let shaders = match vertex_results {
+        Some(results) => {
+            let counts = shaders::fragment_shaders(&ctx, &matrices, &results, &mut pixels)?;
+            Some(ShaderRecord {
+                vertex_results: results,
+                fragments: counts.fragments,
+                discarded: counts.discarded,
+                not_finite: counts.not_finite,
+            })
+        }
+        None => None,
+    };
     times.resolve = t.elapsed();
 
     let labels = matrices.screen_labels(&scene.objects, width, height);
@@ -179,25 +195,7 @@ fn render_stages(
         camera: scene.camera,
         projection: scene.projection,
         lights: scene.lights.clone(),
-        objects: scene
-            .objects
-            .iter()
-            .map(|o| ObjectSummary {
-                name: o.name.clone(),
-                mesh: o.mesh.name.clone(),
-                vertices: o.mesh.positions.len(),
-                triangles: o.mesh.indices.len(),
-                material: o.material,
-                lit: o.lit,
-                texture: o
-                    .texture
-                    .as_ref()
-                    .filter(|_| !o.mesh.uvs.is_empty())
-                    .map(|t| t.name.clone()),
-                detail: o.detail.is_some(),
-                reflectivity: o.environment.as_ref().map(|e| e.reflectivity),
-            })
-            .collect(),
+        objects: object_summaries(scene),
         matrices,
         vertices,
         vertex_shading,
@@ -217,8 +215,32 @@ fn render_stages(
         samples,
         pixels,
         labels,
+        shaders,
     };
     Ok((capture, times))
+}
+
+/// What the capture says of each object: its name, mesh, size, material and surface.
+fn object_summaries(scene: &Scene) -> Vec<ObjectSummary> {
+    scene
+        .objects
+        .iter()
+        .map(|o| ObjectSummary {
+            name: o.name.clone(),
+            mesh: o.mesh.name.clone(),
+            vertices: o.mesh.positions.len(),
+            triangles: o.mesh.indices.len(),
+            material: o.material,
+            lit: o.lit,
+            texture: o
+                .texture
+                .as_ref()
+                .filter(|_| !o.mesh.uvs.is_empty())
+                .map(|t| t.name.clone()),
+            detail: o.detail.is_some(),
+            reflectivity: o.environment.as_ref().map(|e| e.reflectivity),
+        })
+        .collect()
 }
 
 /// Rasterization with the depth test into the sample buffers (`spare`'s storage, cleared),

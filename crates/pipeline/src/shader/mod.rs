@@ -16,6 +16,7 @@ mod check;
 mod code;
 pub mod dialect;
 pub mod interface;
+pub mod link;
 mod machine;
 mod ops;
 mod trace;
@@ -27,6 +28,7 @@ use std::ops::Range;
 use naga::{Binding, BuiltIn, Interpolation, TypeInner};
 
 pub use interface::Uniforms;
+pub use link::{BUILTIN_FRAGMENT, BUILTIN_VERTEX, Link, Programs, StageError, link};
 pub use machine::{Bindings, Event, LANES, Machine, RunError};
 pub use trace::{Trace, TraceLine, glsl_type};
 
@@ -141,6 +143,8 @@ pub struct Program {
     pub uniforms: Vec<(String, code::Reg)>,
     /// The textures it declared, by slot.
     pub textures: Vec<String>,
+    /// The declarations the student wrote (uniforms, textures, inputs, outputs).
+    pub declarations: Vec<dialect::Declaration>,
 }
 
 /// Compiles the student's GLSL for `stage`.
@@ -245,6 +249,7 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
         outputs,
         uniforms,
         textures,
+        declarations: adapted.declarations.clone(),
     })
 }
 
@@ -325,5 +330,16 @@ impl Program {
     #[must_use]
     pub fn run_error(&self, e: &RunError) -> ShaderError {
         error_at(&self.source, e.at..e.at, e.message.clone())
+    }
+
+    /// A message at the declaration of `name` (or at `main` when it has none).
+    #[must_use]
+    pub fn error_at_name(&self, name: &str, message: String) -> ShaderError {
+        let span = self
+            .declarations
+            .iter()
+            .find(|d| d.name == name)
+            .map_or_else(|| check::main_span(&self.source), |d| d.name_span.clone());
+        error_at(&self.source, span, message)
     }
 }

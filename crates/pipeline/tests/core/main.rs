@@ -16,6 +16,7 @@ mod raster;
 mod sampling;
 mod shade;
 mod shader;
+mod shader_frame;
 mod support;
 mod texture;
 mod transform;

@@ -514,3 +514,17 @@ fn the_trace_shows_each_assignment_branch_and_iteration_of_one_lane() {
         "{text:#?}"
     );
 }
+
+#[test]
+fn the_builtin_shaders_link_and_a_fragment_input_finds_its_vertex_output() {
+    let p = shader::link(None, None).unwrap_or_else(|e| panic!("{e:?}"));
+    let names: Vec<&str> = p.fragment.inputs.iter().map(|i| i.name.as_str()).collect();
+    assert_eq!(names, ["w_pos", "w_nrm", "v_uv", "v_color"]);
+    assert!(p.links.iter().all(Option::is_some));
+    let e = shader::link(None, Some("#version 330 core\nin vec3 w_norm;\nout vec4 color;\nvoid main() { color = vec4(w_norm, 1.0); }\n")).expect_err("no such output");
+    assert_eq!((e[0].error.line, e[0].error.column), (2, 9), "{e:?}");
+    assert!(
+        e[0].error.message.contains("no output `w_norm`") && e[0].error.message.contains("w_nrm"),
+        "{e:?}"
+    );
+}

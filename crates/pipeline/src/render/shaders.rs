@@ -1,0 +1,542 @@
+//! The student's shaders in the pipeline. The vertex shader runs for every vertex of an object
+//! that has one, 64 vertices a batch, and its `gl_Position` takes the place of `P·V·M·p` in the
+//! vertex table (clipping, the division and the viewport follow from it as before). The
+//! fragment shader runs after rasterization for every triangle that covers a pixel, in 2×2
+//! quads as a GPU runs it (so `dFdx`, `dFdy` and `texture()`'s level of detail are differences
+//! within the quad), sixteen quads a batch, and its colour replaces the built-in shading.
+//!
+//! Each fragment input is interpolated from the vertex outputs of the same name at the pixel
+//! centre: perspective-correct by default, `(Σ λ_i·a_i/w_i)/(Σ λ_i/w_i)`; `noperspective`
+//! affinely in the window, `Σ λ_i·a_i`; `flat` from the provoking (last) vertex.
+//!
+//! The depth test runs before the fragment shader (early z), so a discarded fragment leaves
+//! the background at its samples, not what lies behind it.
+
+use glam::{I64Vec2, Vec3, Vec4};
+use rayon::prelude::*;
+
+use super::RenderError;
+use super::resolve::ResolveContext;
+use crate::capture::{Matrices, PixelBuffers, VertexResults};
+use crate::raster::{NONE, ONE, RasterTriangle};
+use crate::scene::{Object, Scene};
+use crate::settings::RenderSettings;
+use crate::shader::{self, Bindings, Interpolate, LANES, Programs, Uniforms};
+use crate::vertex::{self, VertexRecord};
+
+/// The uniforms object `i` of `scene` is drawn with.
+fn uniforms(
+    scene: &Scene,
+    settings: &RenderSettings,
+    matrices: &Matrices,
+    i: usize,
+    time: f32,
+) -> Uniforms {
+    let o = &scene.objects[i];
+    Uniforms {
+        model: matrices.models[i].matrix,
+        view: matrices.view.matrix,
+        projection: matrices.projection.matrix,
+        eye: scene.camera.eye,
+        lights: scene.lights.clone(),
+        material: o.material,
+        has_texture: o.texture.is_some() && !o.mesh.uvs.is_empty(),
+        time,
+        resolution: glam::Vec2::new(settings.width as f32, settings.height as f32),
+    }
+}
+
+/// The textures a program's `sampler2D`s read: the object's texture for each.
+fn textures<'a>(
+    program: &shader::Program,
+    object: &'a Object,
+) -> Vec<Option<&'a crate::texture::Texture>> {
+    let t = object
+        .texture
+        .as_deref()
+        .filter(|_| !object.mesh.uvs.is_empty());
+    program.textures.iter().map(|_| t).collect()
+}
+
+fn shader_error(stage: shader::Stage, object: &Object, e: &shader::ShaderError) -> RenderError {
+    RenderError::Invalid(vec![format!(
+        "{} shader of {}, {e}",
+        stage.name(),
+        object.name
+    )])
+}
+
+/// Runs each object's vertex shader over its rows of the vertex table (`vertices`, objects in
+/// order), writing `gl_Position` as the clip position (and the NDC and window positions that
+/// follow from it). Returns each object's results, or `None` when no object has shaders.
+///
+/// # Errors
+/// A run-time error of a vertex shader, or a `gl_Position` that is not finite.
+pub(super) fn vertex_shaders(
+    scene: &Scene,
+    settings: &RenderSettings,
+    matrices: &Matrices,
+    vertices: &mut [VertexRecord],
+) -> Result<Option<Vec<Option<VertexResults>>>, RenderError> {
+    if scene.objects.iter().all(|o| o.shader.is_none()) {
+        return Ok(None);
+    }
+    let mut out = Vec::with_capacity(scene.objects.len());
+    let mut first = 0usize;
+    for (i, object) in scene.objects.iter().enumerate() {
+        let n = object.mesh.positions.len();
+        let rows = first..first + n;
+        first += n;
+        let Some(sh) = &object.shader else {
+            out.push(None);
+            continue;
+        };
+        let u = uniforms(scene, settings, matrices, i, sh.time);
+        out.push(Some(run_vertex_shader(
+            &sh.programs,
+            object,
+            &u,
+            &matrices.viewport.matrix,
+            &mut vertices[rows.clone()],
+            rows.start,
+        )?));
+    }
+    Ok(Some(out))
+}
+
+/// One attribute's value for mesh vertex `i` (see [`shader::interface::ATTRIBUTES`]).
+fn attribute(object: &Object, record: &VertexRecord, location: Option<u32>, i: usize) -> [f32; 4] {
+    let mesh = &object.mesh;
+    let v3 = |v: Vec3| [v.x, v.y, v.z, 0.0];
+    match location {
+        Some(0) => v3(record.object_pos.truncate()),
+        Some(1) => v3(mesh.normals.get(i).copied().unwrap_or(Vec3::ZERO)),
+        Some(2) => mesh
+            .uvs
+            .get(i)
+            .map_or([0.0; 4], |uv| [uv.x, uv.y, 0.0, 0.0]),
+        Some(3) => v3(record.color),
+        _ => [0.0; 4],
+    }
+}
+
+fn run_vertex_shader(
+    programs: &Programs,
+    object: &Object,
+    u: &Uniforms,
+    viewport: &glam::Mat4,
+    rows: &mut [VertexRecord],
+    first: usize,
+) -> Result<VertexResults, RenderError> {
+    let vs = &programs.vertex;
+    let stride: u32 = vs.outputs.iter().map(|o| o.components).sum();
+    let mut values = vec![0f32; rows.len() * stride as usize];
+    let tex = textures(vs, object);
+    let sampler = crate::texture::Sampler::default();
+    let locations: Vec<Option<u32>> = vs
+        .inputs
+        .iter()
+        .map(|i| shader::interface::attribute_location(&i.name))
+        .collect();
+    let vertex_index = |input: &shader::Varying| input.builtin == Some(naga::BuiltIn::VertexIndex);
+    rows.par_chunks_mut(LANES)
+        .zip(values.par_chunks_mut(LANES * stride as usize))
+        .enumerate()
+        .try_for_each_init(
+            || {
+                let mut m = vs.machine();
+                vs.set_uniforms(&mut m, u);
+                (m, Vec::<Vec<u32>>::new())
+            },
+            |(m, inputs), (k, (records, results))| {
+                let n = records.len();
+                inputs.resize(vs.inputs.len(), Vec::new());
+                for ((input, rows_in), location) in vs.inputs.iter().zip(inputs.iter_mut()).zip(&locations) {
+                    rows_in.clear();
+                    rows_in.resize(input.components as usize * LANES, 0);
+                    for (l, r) in records.iter().enumerate() {
+                        let i = k * LANES + l;
+                        if vertex_index(input) {
+                            rows_in[l] = i as u32;
+                            continue;
+                        }
+                        let a = attribute(object, r, *location, i);
+                        for c in 0..input.components as usize {
+                            rows_in[c * LANES + l] = a[c].to_bits();
+                        }
+                    }
+                }
+                let refs: Vec<&[u32]> = inputs.iter().map(Vec::as_slice).collect();
+                let bindings = Bindings { textures: &tex, sampler: &sampler };
+                let live = if n == LANES { u64::MAX } else { (1 << n) - 1 };
+                m.run(&refs, n, live, &bindings)
+                    .map_err(|e| shader_error(shader::Stage::Vertex, object, &vs.run_error(&e)))?;
+                let result = m.result();
+                for (l, r) in records.iter_mut().enumerate() {
+                    for c in 0..stride as usize {
+                        results[l * stride as usize + c] = f32::from_bits(result[c * LANES + l]);
+                    }
+                    let p = programs.position as usize;
+                    let clip = Vec4::from_slice(&results[l * stride as usize + p..][..4]);
+                    if !clip.is_finite() {
+                        return Err(RenderError::Invalid(vec![format!(
+                            "vertex shader of {}: vertex {} has gl_Position = {clip}, which is not finite",
+                            object.name,
+                            k * LANES + l
+                        )]));
+                    }
+                    r.clip = clip;
+                    (r.ndc, r.window) = if clip.w > 0.0 {
+                        let (ndc, window, _) = vertex::to_window(clip, viewport);
+                        (Some(ndc), Some(window))
+                    } else {
+                        (None, None)
+                    };
+                }
+                Ok(())
+            },
+        )?;
+    Ok(VertexResults {
+        first: first as u32,
+        stride,
+        values,
+    })
+}
+
+/// A fragment to shade: a triangle over a 2×2 quad, with the pixels it covers (live lanes) and
+/// how many samples of each.
+#[derive(Clone, Copy)]
+struct QuadJob {
+    triangle: u32,
+    /// Window x of the quad's left pixels (its y is the row pair's).
+    x: u32,
+    /// Samples the triangle covers in each of the four pixels.
+    samples: [u8; 4],
+}
+
+/// The counts of a frame's fragment shading.
+#[derive(Clone, Copy, Default)]
+pub(super) struct FragmentCounts {
+    pub(super) fragments: u64,
+    pub(super) discarded: u64,
+    pub(super) not_finite: u64,
+}
+
+impl std::ops::Add for FragmentCounts {
+    type Output = Self;
+    fn add(self, o: Self) -> Self {
+        Self {
+            fragments: self.fragments + o.fragments,
+            discarded: self.discarded + o.discarded,
+            not_finite: self.not_finite + o.not_finite,
+        }
+    }
+}
+
+/// Runs the fragment shaders over every pixel a triangle of an object with shaders covers, and
+/// writes their colours into `pixels` (a pixel's other samples keep their share of the
+/// built-in resolve's colour).
+///
+/// # Errors
+/// A run-time error of a fragment shader.
+pub(super) fn fragment_shaders(
+    ctx: &ResolveContext<'_>,
+    matrices: &Matrices,
+    results: &[Option<VertexResults>],
+    pixels: &mut PixelBuffers,
+) -> Result<FragmentCounts, RenderError> {
+    let settings = ctx.settings;
+    let (w, h) = (settings.width as usize, settings.height as usize);
+    let uniforms: Vec<Option<Uniforms>> = ctx
+        .scene
+        .objects
+        .iter()
+        .enumerate()
+        .map(|(i, o)| {
+            o.shader
+                .as_ref()
+                .map(|sh| uniforms(ctx.scene, settings, matrices, i, sh.time))
+        })
+        .collect();
+    let shading = FragmentShading {
+        ctx,
+        results,
+        uniforms: &uniforms,
+    };
+    // Row pairs, bottom pair first in window terms does not matter: each pair is independent.
+    pixels
+        .color
+        .par_chunks_mut(2 * w)
+        .enumerate()
+        .map(|(k, rows)| {
+            // Image rows 2k (upper) and 2k + 1 (lower): window y of the lower one is the quad's y.
+            let y = (h as i64 - 2 - 2 * k as i64).max(-1);
+            shading.row_pair(rows, w, y)
+        })
+        .try_reduce(FragmentCounts::default, |a, b| Ok(a + b))
+}
+
+struct FragmentShading<'a> {
+    ctx: &'a ResolveContext<'a>,
+    results: &'a [Option<VertexResults>],
+    uniforms: &'a [Option<Uniforms>],
+}
+
+impl FragmentShading<'_> {
+    /// The image index of window pixel `(x, y)`, if it is in the image.
+    fn index(&self, x: i64, y: i64) -> Option<usize> {
+        let (w, h) = (
+            i64::from(self.ctx.settings.width),
+            i64::from(self.ctx.settings.height),
+        );
+        ((0..w).contains(&x) && (0..h).contains(&y)).then(|| ((h - 1 - y) * w + x) as usize)
+    }
+
+    /// The object of raster triangle `t`.
+    fn object_of(&self, t: u32) -> usize {
+        let prim = self.ctx.triangles[t as usize].primitive;
+        self.ctx.primitives[prim as usize].object as usize
+    }
+
+    /// Shades the quads of one row pair: `rows` is image rows 2k and 2k + 1 of the colour
+    /// buffer; `y` the window y of the lower row (−1 when the pair is a single top row).
+    fn row_pair(
+        &self,
+        rows: &mut [[f32; 3]],
+        w: usize,
+        y: i64,
+    ) -> Result<FragmentCounts, RenderError> {
+        let s = self.ctx.settings.samples.count();
+        let mut acc = vec![Vec3::ZERO; rows.len()];
+        let mut shaded = vec![0u8; rows.len()];
+        let mut counts = FragmentCounts::default();
+        let mut batch: Vec<QuadJob> = Vec::with_capacity(LANES / 4);
+        let mut batch_object = usize::MAX;
+        let mut machines: Vec<Option<shader::Machine<'_>>> =
+            self.ctx.scene.objects.iter().map(|_| None).collect();
+        let mut inputs: Vec<Vec<u32>> = Vec::new();
+        let mut flush = |batch: &mut Vec<QuadJob>,
+                         object: usize,
+                         acc: &mut [Vec3],
+                         shaded: &mut [u8],
+                         counts: &mut FragmentCounts| {
+            if batch.is_empty() {
+                return Ok(());
+            }
+            let r = self.run_batch(batch, object, &mut machines, &mut inputs, acc, shaded, y, w);
+            batch.clear();
+            *counts = *counts + r?;
+            Ok::<(), RenderError>(())
+        };
+        for x in (0..w as i64).step_by(2) {
+            let lanes = [(x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1)];
+            let mut jobs: Vec<QuadJob> = Vec::new();
+            for (j, &(px, py)) in lanes.iter().enumerate() {
+                let Some(i) = self.index(px, py) else {
+                    continue;
+                };
+                for &t in &self.ctx.samples.triangle[i * s..(i + 1) * s] {
+                    if t == NONE || self.ctx.scene.objects[self.object_of(t)].shader.is_none() {
+                        continue;
+                    }
+                    let job = match jobs.iter_mut().find(|q| q.triangle == t) {
+                        Some(q) => q,
+                        None => {
+                            jobs.push(QuadJob {
+                                triangle: t,
+                                x: x as u32,
+                                samples: [0; 4],
+                            });
+                            jobs.last_mut().expect("just pushed")
+                        }
+                    };
+                    job.samples[j] += 1;
+                }
+            }
+            for job in jobs {
+                let object = self.object_of(job.triangle);
+                if object != batch_object || batch.len() == LANES / 4 {
+                    flush(&mut batch, batch_object, &mut acc, &mut shaded, &mut counts)?;
+                    batch_object = object;
+                }
+                batch.push(job);
+            }
+        }
+        flush(&mut batch, batch_object, &mut acc, &mut shaded, &mut counts)?;
+        for ((c, a), &n) in rows.iter_mut().zip(&acc).zip(&shaded) {
+            if n > 0 {
+                let keep = (s - usize::from(n)) as f32 / s as f32;
+                *c = (Vec3::from(*c) * keep + *a / s as f32).to_array();
+            }
+        }
+        Ok(counts)
+    }
+
+    /// Runs one batch of quads of `object` and adds each live lane's colour, weighted by its
+    /// samples, to `acc` (indexed like the row pair), counting the samples in `shaded`.
+    #[allow(clippy::too_many_arguments)]
+    fn run_batch<'m>(
+        &'m self,
+        batch: &[QuadJob],
+        object: usize,
+        machines: &mut [Option<shader::Machine<'m>>],
+        inputs: &mut Vec<Vec<u32>>,
+        acc: &mut [Vec3],
+        shaded: &mut [u8],
+        y: i64,
+        w: usize,
+    ) -> Result<FragmentCounts, RenderError> {
+        let ctx = self.ctx;
+        let o = &ctx.scene.objects[object];
+        let Some(sh) = &o.shader else {
+            return Ok(FragmentCounts::default());
+        };
+        let fs = &sh.programs.fragment;
+        let m = machines[object].get_or_insert_with(|| {
+            let mut m = fs.machine();
+            if let Some(u) = &self.uniforms[object] {
+                fs.set_uniforms(&mut m, u);
+            }
+            m
+        });
+        let n = batch.len() * 4;
+        inputs.resize(fs.inputs.len(), Vec::new());
+        for (input, rows) in fs.inputs.iter().zip(inputs.iter_mut()) {
+            rows.clear();
+            rows.resize(input.components as usize * LANES, 0);
+        }
+        let mut live = 0u64;
+        for (q, job) in batch.iter().enumerate() {
+            let t = &ctx.triangles[job.triangle as usize];
+            for j in 0..4 {
+                let l = q * 4 + j;
+                let (px, py) = (i64::from(job.x) + (j % 2) as i64, y + (j / 2) as i64);
+                if job.samples[j] > 0 {
+                    live |= 1 << l;
+                }
+                let centre = I64Vec2::new(px * ONE + ONE / 2, py * ONE + ONE / 2);
+                self.lane_inputs(&sh.programs, t, object, centre, (px, py), l, inputs);
+            }
+        }
+        let refs: Vec<&[u32]> = inputs.iter().map(Vec::as_slice).collect();
+        let tex = textures(fs, o);
+        let bindings = Bindings {
+            textures: &tex,
+            sampler: &ctx.settings.sampler,
+        };
+        let killed = m
+            .run(&refs, n, live, &bindings)
+            .map_err(|e| shader_error(shader::Stage::Fragment, o, &fs.run_error(&e)))?;
+        let result = m.result();
+        let mut counts = FragmentCounts::default();
+        let background = ctx.settings.background;
+        for (q, job) in batch.iter().enumerate() {
+            for j in 0..4 {
+                let l = q * 4 + j;
+                let k = job.samples[j];
+                if k == 0 {
+                    continue;
+                }
+                counts.fragments += 1;
+                // The row pair's index: upper image row first.
+                let x = job.x as usize + j % 2;
+                let row = if j / 2 == 1 { 0 } else { 1 };
+                let Some(i) = (x < w).then_some(row * w + x).filter(|&i| i < acc.len()) else {
+                    continue;
+                };
+                let color = if killed & (1 << l) != 0 {
+                    counts.discarded += 1;
+                    background
+                } else {
+                    let c = Vec3::new(
+                        f32::from_bits(result[l]),
+                        f32::from_bits(result[LANES + l]),
+                        f32::from_bits(result[2 * LANES + l]),
+                    );
+                    if c.is_finite() {
+                        c
+                    } else {
+                        counts.not_finite += 1;
+                        Vec3::ZERO
+                    }
+                };
+                acc[i] += color * f32::from(k);
+                shaded[i] += k;
+            }
+        }
+        Ok(counts)
+    }
+
+    /// Writes lane `l`'s fragment inputs for triangle `t` at fixed-point position `centre`
+    /// (window pixel `at`).
+    #[allow(clippy::too_many_arguments)]
+    fn lane_inputs(
+        &self,
+        programs: &Programs,
+        t: &RasterTriangle,
+        object: usize,
+        centre: I64Vec2,
+        at: (i64, i64),
+        l: usize,
+        inputs: &mut [Vec<u32>],
+    ) {
+        let ctx = self.ctx;
+        let prim = &ctx.primitives[t.primitive as usize];
+        let lambda = t.lambda(centre);
+        let perspective = ctx.settings.perspective_correct;
+        let b_persp = t.original_bary(lambda, perspective);
+        let b_linear = t.original_bary(lambda, false);
+        let results = self.results[object].as_ref();
+        for ((input, link), rows) in programs
+            .fragment
+            .inputs
+            .iter()
+            .zip(&programs.links)
+            .zip(inputs.iter_mut())
+        {
+            match (link, input.builtin) {
+                (Some(link), _) => {
+                    let Some(r) = results else { continue };
+                    let value = |v: usize, c: usize| {
+                        let row = prim.vertices[v] as usize - r.first as usize;
+                        r.values[row * r.stride as usize + link.from as usize + c]
+                    };
+                    for c in 0..link.components as usize {
+                        let x = match input.interpolate {
+                            Interpolate::Flat => value(2, c),
+                            Interpolate::Linear => (0..3).map(|v| b_linear[v] * value(v, c)).sum(),
+                            Interpolate::Perspective => {
+                                (0..3).map(|v| b_persp[v] * value(v, c)).sum()
+                            }
+                        };
+                        rows[c * LANES + l] = x.to_bits();
+                    }
+                }
+                (None, Some(naga::BuiltIn::Position { .. })) => {
+                    // gl_FragCoord = (x + ½, y + ½, z_w, 1/w_clip).
+                    let inv_w = lambda.dot(Vec3::from(t.inv_w));
+                    let v = [
+                        at.0 as f32 + 0.5,
+                        at.1 as f32 + 0.5,
+                        t.depth_at(centre),
+                        inv_w,
+                    ];
+                    for (c, x) in v.iter().enumerate() {
+                        rows[c * LANES + l] = x.to_bits();
+                    }
+                }
+                (None, Some(naga::BuiltIn::FrontFacing)) => {
+                    let w = prim.vertices.map(|v| ctx.vertices[v as usize].window);
+                    let front = match w {
+                        [Some(a), Some(b), Some(c)] => {
+                            (b - a).truncate().perp_dot((c - a).truncate()) >= 0.0
+                        }
+                        _ => true,
+                    };
+                    rows[l] = u32::from(front);
+                }
+                _ => {}
+            }
+        }
+    }
+}

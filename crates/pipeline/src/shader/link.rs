@@ -1,0 +1,152 @@
+//! A vertex shader and a fragment shader linked into one program, as `glLinkProgram` does: each
+//! fragment input takes the vertex output of the same name. Either may be left out; pipelens
+//! then uses its own ([`BUILTIN_VERTEX`], [`BUILTIN_FRAGMENT`]), shipped as GLSL a student can
+//! start from.
+
+use std::sync::Arc;
+
+use super::{Program, ShaderError, Stage, compile};
+
+/// pipelens' vertex stage as GLSL: `gl_Position = mvp·p`, and the world position and normal,
+/// uv and colour for the fragment stage (`w_pos`, `w_nrm`, `v_uv`, `v_color`).
+pub const BUILTIN_VERTEX: &str = include_str!("builtin/pipelens.vert");
+
+/// pipelens' per-pixel Blinn-Phong lighting as GLSL.
+pub const BUILTIN_FRAGMENT: &str = include_str!("builtin/blinn_phong.frag");
+
+/// Where a fragment input comes from: the vertex output's first component in the vertex
+/// shader's result, and how many.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Link {
+    /// First component of the vertex output in the vertex shader's result.
+    pub from: u32,
+    /// Components.
+    pub components: u32,
+}
+
+/// A linked pair of shaders.
+#[derive(Clone, Debug)]
+pub struct Programs {
+    /// The vertex shader.
+    pub vertex: Arc<Program>,
+    /// The fragment shader.
+    pub fragment: Arc<Program>,
+    /// For each fragment input (in the fragment shader's input order), its vertex output;
+    /// `None` for built-ins (`gl_FragCoord`, `gl_FrontFacing`).
+    pub links: Vec<Option<Link>>,
+    /// The first component of `gl_Position` in the vertex shader's result.
+    pub position: u32,
+}
+
+impl PartialEq for Programs {
+    /// Two programs are the same when their sources are.
+    fn eq(&self, other: &Self) -> bool {
+        self.vertex.source == other.vertex.source && self.fragment.source == other.fragment.source
+    }
+}
+
+/// A message about one of the two shaders.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct StageError {
+    /// Which shader.
+    pub stage: Stage,
+    /// The message, at its line.
+    pub error: ShaderError,
+}
+
+impl std::fmt::Display for StageError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{} shader, {}", self.stage.name(), self.error)
+    }
+}
+
+/// Compiles and links a vertex and a fragment shader (`None`: pipelens' own).
+///
+/// # Errors
+/// Every message of either shader, and each fragment input no vertex output feeds (at the
+/// input's declaration).
+pub fn link(vertex: Option<&str>, fragment: Option<&str>) -> Result<Programs, Vec<StageError>> {
+    let tag = |stage: Stage| {
+        move |errors: Vec<ShaderError>| -> Vec<StageError> {
+            errors
+                .into_iter()
+                .map(|error| StageError { stage, error })
+                .collect()
+        }
+    };
+    let vs = compile(Stage::Vertex, vertex.unwrap_or(BUILTIN_VERTEX)).map_err(tag(Stage::Vertex));
+    let fs = compile(Stage::Fragment, fragment.unwrap_or(BUILTIN_FRAGMENT))
+        .map_err(tag(Stage::Fragment));
+    let (vs, fs) = match (vs, fs) {
+        (Ok(v), Ok(f)) => (v, f),
+        (v, f) => {
+            let mut all = v.err().unwrap_or_default();
+            all.extend(f.err().unwrap_or_default());
+            return Err(all);
+        }
+    };
+    let mut offsets = Vec::with_capacity(vs.outputs.len());
+    let mut at = 0;
+    for o in &vs.outputs {
+        offsets.push(at);
+        at += o.components;
+    }
+    let position = vs
+        .outputs
+        .iter()
+        .zip(&offsets)
+        .find(|(o, _)| o.name == "gl_Position")
+        .map_or(0, |(_, &at)| at);
+    let mut links = Vec::with_capacity(fs.inputs.len());
+    let mut errors = Vec::new();
+    for input in &fs.inputs {
+        if input.builtin.is_some() {
+            links.push(None);
+            continue;
+        }
+        let found = vs
+            .outputs
+            .iter()
+            .zip(&offsets)
+            .find(|(o, _)| o.name == input.name && o.builtin.is_none());
+        match found {
+            Some((o, &from)) if o.components == input.components => {
+                links.push(Some(Link { from, components: o.components }));
+            }
+            Some((o, _)) => errors.push(StageError {
+                stage: Stage::Fragment,
+                error: fs.error_at_name(
+                    &input.name,
+                    format!(
+                        "`{}` has {} components here but {} in the vertex shader: declare it with the same type in both",
+                        input.name, input.components, o.components
+                    ),
+                ),
+            }),
+            None => {
+                let outputs: Vec<&str> =
+                    vs.outputs.iter().filter(|o| o.builtin.is_none()).map(|o| o.name.as_str()).collect();
+                errors.push(StageError {
+                    stage: Stage::Fragment,
+                    error: fs.error_at_name(
+                        &input.name,
+                        format!(
+                            "the vertex shader has no output `{}` to interpolate into this input; its outputs: {}",
+                            input.name,
+                            if outputs.is_empty() { "none".to_owned() } else { outputs.join(", ") }
+                        ),
+                    ),
+                });
+            }
+        }
+    }
+    if !errors.is_empty() {
+        return Err(errors);
+    }
+    Ok(Programs {
+        vertex: Arc::new(vs),
+        fragment: Arc::new(fs),
+        links,
+        position,
+    })
+}

@@ -1,0 +1,237 @@
+//! The student's shaders inside a frame: pipelens' own vertex and fragment stages, written as
+//! GLSL and run by the shader machine, give the built-in path's pixels; the qualifiers
+//! interpolate as GLSL says; `discard` and run-time errors reach the frame.
+
+use std::sync::Arc;
+
+use glam::Vec3;
+use pipeline::camera::{Camera, Projection};
+use pipeline::capture::FrameCapture;
+use pipeline::light::{Light, Material};
+use pipeline::mesh::BuiltinMesh;
+use pipeline::scene::{ColorSource, Object, ObjectShader, Scene};
+use pipeline::settings::RenderSettings;
+use pipeline::shade::{Frequency, Reflection};
+use pipeline::texture::{Mipmap, Sampler, Texture};
+
+use crate::support::render;
+
+/// A sphere lit by every kind of light, seen from the front right.
+fn sphere_scene(textured: bool) -> Scene {
+    let mut sphere = Object::new(
+        "sphere",
+        BuiltinMesh::UvSphere {
+            segments: 48,
+            rings: 24,
+        }
+        .build(),
+    );
+    sphere.color = ColorSource::Uniform(Vec3::new(0.9, 0.6, 0.3));
+    sphere.material = Material {
+        ka: Vec3::splat(0.2),
+        kd: Vec3::new(0.7, 0.6, 0.5),
+        ks: Vec3::splat(0.5),
+        shininess: 24.0,
+    };
+    sphere.rotate_deg = Vec3::new(10.0, 30.0, 0.0);
+    if textured {
+        sphere.texture = Some(Arc::new(Texture::checkerboard(256, 8)));
+    }
+    Scene {
+        objects: vec![sphere],
+        camera: Camera {
+            eye: Vec3::new(1.0, 0.5, 4.0),
+            at: Vec3::ZERO,
+            up: Vec3::Y,
+        },
+        projection: Projection::Perspective {
+            fovy_deg: 40.0,
+            aspect: None,
+            near: 0.5,
+            far: 20.0,
+        },
+        figures: Vec::new(),
+        shadow: None,
+        lights: vec![
+            Light::Ambient {
+                intensity: Vec3::splat(0.3),
+            },
+            Light::Point {
+                position: Vec3::new(3.0, 3.0, 3.0),
+                intensity: Vec3::new(1.0, 0.9, 0.8),
+                attenuation: Vec3::new(1.0, 0.05, 0.01),
+            },
+            Light::Directional {
+                direction: Vec3::new(1.0, -0.5, -0.2),
+                intensity: Vec3::splat(0.4),
+            },
+            Light::Spot {
+                position: Vec3::new(-2.0, 1.0, 3.0),
+                direction: Vec3::new(2.0, -1.0, -3.0),
+                cutoff_deg: 20.0,
+                exponent: 8.0,
+                intensity: Vec3::splat(0.6),
+                attenuation: Vec3::X,
+            },
+        ],
+    }
+}
+
+fn settings() -> RenderSettings {
+    RenderSettings {
+        width: 160,
+        height: 120,
+        shading: Frequency::Phong,
+        reflection: Reflection::BlinnPhong,
+        sampler: Sampler {
+            mipmap: Mipmap::None,
+            ..Sampler::default()
+        },
+        ..RenderSettings::default()
+    }
+}
+
+fn with_shaders(mut scene: Scene, vertex: Option<&str>, fragment: Option<&str>) -> Scene {
+    let programs = pipeline::shader::link(vertex, fragment).unwrap_or_else(|e| panic!("{e:?}"));
+    for o in &mut scene.objects {
+        o.shader = Some(ObjectShader {
+            programs: Arc::new(programs.clone()),
+            time: 0.0,
+        });
+    }
+    scene
+}
+
+/// The largest difference of any colour component between two frames, and where.
+fn largest_difference(a: &FrameCapture, b: &FrameCapture) -> (f32, usize) {
+    a.pixels
+        .color
+        .iter()
+        .zip(&b.pixels.color)
+        .enumerate()
+        .map(|(i, (x, y))| ((0..3).map(|c| (x[c] - y[c]).abs()).fold(0.0, f32::max), i))
+        .fold((0.0, 0), |m, d| if d.0 > m.0 { d } else { m })
+}
+
+#[test]
+fn pipelens_own_shading_as_glsl_gives_the_built_in_pixels() {
+    for textured in [false, true] {
+        let scene = sphere_scene(textured);
+        let built_in = render(&scene, &settings());
+        let shaded = render(&with_shaders(scene, None, None), &settings());
+        assert_eq!(
+            built_in.pixels.coverage, shaded.pixels.coverage,
+            "coverage, textured = {textured}"
+        );
+        let (d, at) = largest_difference(&built_in, &shaded);
+        assert!(
+            d <= 1.0 / 255.0,
+            "textured = {textured}: pixel {at} differs by {d}: {:?} vs {:?}",
+            built_in.pixels.color[at],
+            shaded.pixels.color[at]
+        );
+        let record = shaded.shaders.as_ref().expect("a shader record");
+        assert_eq!(
+            record.fragments,
+            shaded.pixels.coverage.iter().filter(|&&c| c > 0).count() as u64
+        );
+        assert_eq!((record.discarded, record.not_finite), (0, 0));
+    }
+}
+
+#[test]
+fn flat_takes_the_provoking_vertex_and_noperspective_is_affine_in_the_window() {
+    // A plane receding from the eye; the vertex shader passes uv three ways.
+    let mut plane = Object::new(
+        "plane",
+        BuiltinMesh::Plane {
+            divisions: 1,
+            repeat: 1.0,
+        }
+        .build(),
+    );
+    plane.scale = Vec3::splat(2.0);
+    let mut scene = sphere_scene(false);
+    scene.objects = vec![plane];
+    scene.camera = Camera {
+        eye: Vec3::new(0.0, 0.6, 2.0),
+        at: Vec3::new(0.0, 0.0, -1.0),
+        up: Vec3::Y,
+    };
+    let vs = "#version 330 core\nuniform mat4 mvp;\nin vec3 position;\nin vec2 uv;\nout vec2 smooth_uv;\nnoperspective out vec2 affine_uv;\nflat out vec2 flat_uv;\n\
+              void main() { smooth_uv = uv; affine_uv = uv; flat_uv = uv; gl_Position = mvp * vec4(position, 1.0); }\n";
+    let frag = |name: &str| {
+        format!(
+            "#version 330 core\nin vec2 smooth_uv;\nnoperspective in vec2 affine_uv;\nflat in vec2 flat_uv;\nout vec4 color;\nvoid main() {{ color = vec4({name}, 0.0, 1.0); }}\n"
+        )
+    };
+    let s = RenderSettings {
+        shading: Frequency::Unlit,
+        ..settings()
+    };
+    let frame = |name: &str| {
+        render(
+            &with_shaders(scene.clone(), Some(vs), Some(&frag(name))),
+            &s,
+        )
+    };
+    let (smooth, affine, flat) = (frame("smooth_uv"), frame("affine_uv"), frame("flat_uv"));
+    let mut differs = 0;
+    for i in 0..smooth.pixels.color.len() {
+        if smooth.pixels.coverage[i] == 0 {
+            continue;
+        }
+        if (smooth.pixels.color[i][0] - affine.pixels.color[i][0]).abs() > 0.01 {
+            differs += 1;
+        }
+        // Flat: one of the triangle's three corners' uv, each 0 or 1 on the plane.
+        for c in 0..2 {
+            let v = flat.pixels.color[i][c];
+            assert!(v == 0.0 || v == 1.0, "flat uv {v} at pixel {i}");
+        }
+    }
+    assert!(
+        differs > 100,
+        "perspective and affine uv should differ on a receding plane ({differs} pixels)"
+    );
+}
+
+#[test]
+fn a_discarding_shader_leaves_the_background_and_counts_its_fragments() {
+    let fs = "#version 330 core\nin vec2 v_uv;\nout vec4 color;\nvoid main() {\n  if (mod(floor(v_uv.x * 8.0) + floor(v_uv.y * 8.0), 2.0) < 1.0) discard;\n  color = vec4(1.0, 0.0, 0.0, 1.0);\n}\n";
+    let scene = with_shaders(sphere_scene(false), None, Some(fs));
+    let f = render(&scene, &settings());
+    let record = f.shaders.as_ref().expect("a shader record");
+    assert!(
+        record.discarded > 0 && record.discarded < record.fragments,
+        "{record:?}"
+    );
+    let background = f.settings.background.to_array();
+    let red = f
+        .pixels
+        .color
+        .iter()
+        .filter(|c| **c == [1.0, 0.0, 0.0])
+        .count() as u64;
+    let bg_inside = f
+        .pixels
+        .color
+        .iter()
+        .zip(&f.pixels.coverage)
+        .filter(|(c, k)| **k > 0 && **c == background)
+        .count() as u64;
+    assert_eq!(red + bg_inside, record.fragments);
+    assert_eq!(bg_inside, record.discarded);
+}
+
+#[test]
+fn a_run_time_error_in_a_frame_is_a_message_with_its_line() {
+    let fs = "#version 330 core\nout vec4 color;\nvoid main() {\n  float x = 0.0;\n  while (x >= 0.0) {\n    x += 1.0;\n  }\n  color = vec4(x);\n}\n";
+    let scene = with_shaders(sphere_scene(false), None, Some(fs));
+    let e = pipeline::render(&scene, &settings()).expect_err("an endless loop");
+    let text = e.to_string();
+    assert!(
+        text.contains("fragment shader of sphere") && text.contains("line 5"),
+        "{text}"
+    );
+}
