@@ -37,6 +37,17 @@ pub struct RawScene {
     /// `[[scene.figures]]`.
     #[serde(default)]
     pub figures: Vec<Spanned<RawFigure>>,
+    /// `shader = { vertex = "x.vert", fragment = "x.frag" }`: every object's shaders.
+    pub shader: Option<Spanned<RawShader>>,
+}
+
+/// `shader = { vertex = …, fragment = … }`: a file beside the lesson (`"toon.frag"`) or the
+/// GLSL itself, for each stage; a stage left out is pipelens' own.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawShader {
+    pub vertex: Option<Spanned<String>>,
+    pub fragment: Option<Spanned<String>>,
 }
 
 /// One `[[scene.figures]]` entry: an articulated model and its joint angles in degrees.
@@ -182,6 +193,8 @@ pub struct RawObject {
     pub displacement: Option<Spanned<RawDisplacement>>,
     /// `{ cube = "room", reflectivity = … }`.
     pub environment: Option<Spanned<RawEnvironment>>,
+    /// This object's shaders (see [`RawShader`]), in place of the scene's.
+    pub shader: Option<Spanned<RawShader>>,
 }
 
 /// `rotate_axis = { axis = [x, y, z], angle = θ }`.

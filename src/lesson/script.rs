@@ -165,6 +165,15 @@ impl Lesson {
                 let _ = param::apply(&mut spec, &a.param, &a.value_at(t));
             }
         }
+        // Shaders read the time into the step as `uniform float time;`.
+        for shader in spec
+            .scene
+            .objects
+            .iter_mut()
+            .filter_map(|o| o.shader.as_mut())
+        {
+            shader.time = t;
+        }
         spec
     }
 }

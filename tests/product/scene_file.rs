@@ -348,3 +348,46 @@ fn vertex_normals_can_be_averaged_plainly_or_by_area() {
         "`normals` must be one of \"average\", \"area_weighted\", got \"avg\"",
     );
 }
+
+#[test]
+fn shaders_come_from_files_beside_the_scene_or_inline_and_their_mistakes_point_into_them() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let frag = "#version 330 core\nin vec3 v_color;\nout vec4 color;\nvoid main() {\n    color = vec4(v_color * 0.5, 1.0);\n}\n";
+    std::fs::write(dir.path().join("half.frag"), frag).expect("write");
+    let scene = format!("{OBJECT}shader = {{ fragment = \"half.frag\" }}\n");
+    let spec = lesson::parse_scene(&scene, "t.toml", dir.path()).expect("valid");
+    let sh = spec.scene.objects[0]
+        .shader
+        .as_ref()
+        .expect("the object's shaders");
+    assert_eq!(sh.programs.fragment.source, frag);
+    // The scene's shader applies to every object without one of its own, inline GLSL too.
+    let scene = format!("[scene]\nshader = {{ fragment = '''\n{frag}''' }}\n{OBJECT}{OBJECT}");
+    let spec = lesson::parse_scene(&scene, "t.toml", dir.path()).expect("valid");
+    assert!(spec.scene.objects.iter().all(|o| o.shader.is_some()));
+    // A typo in the file: its own name, line and column.
+    std::fs::write(
+        dir.path().join("typo.frag"),
+        frag.replace("vec4(v_color", "vec4(v_colour"),
+    )
+    .expect("write");
+    let scene = format!("{OBJECT}shader = {{ fragment = \"typo.frag\" }}\n");
+    let e = lesson::parse_scene(&scene, "t.toml", dir.path()).expect_err("a typo");
+    assert!(
+        e.0[0].file.ends_with("typo.frag") && e.0[0].line == 5 && e.0[0].column == 18,
+        "{e}"
+    );
+    assert!(e.0[0].message.contains("v_colour"), "{e}");
+    // A typo inline: its line in the scene file.
+    let scene = format!(
+        "[scene]\nshader = {{ fragment = '''\n{}''' }}\n{OBJECT}",
+        frag.replace("out vec4", "out vex4")
+    );
+    let found = errors(&scene);
+    crate::support::assert_found(&found, 5, 5, "vex4");
+    // A missing file is named with the folder it was looked for in.
+    let found = errors(&format!(
+        "{OBJECT}shader = {{ vertex = \"nowhere.vert\" }}\n"
+    ));
+    crate::support::assert_found(&found, 3, 21, "there is no file");
+}

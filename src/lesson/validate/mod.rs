@@ -8,6 +8,7 @@
 mod lights;
 mod objects;
 mod render;
+mod shaders;
 mod shapes;
 
 use std::ops::Range;
@@ -283,6 +284,16 @@ pub fn scene(
         .iter()
         .filter_map(|l| lights::light(&mut c, l))
         .collect();
+    let mut objects: Vec<pipeline::scene::Object> = objects;
+    if let Some(shader) = s
+        .shader
+        .as_ref()
+        .and_then(|sh| shaders::shader(&mut c, sh, base))
+    {
+        for o in objects.iter_mut().filter(|o| o.shader.is_none()) {
+            o.shader = Some(shader.clone());
+        }
+    }
     let light_names = lights::names(&mut c, &s.lights);
     let shadow = s.shadow.as_ref().and_then(|sh| lights::shadow(&mut c, sh));
     let figures = s

@@ -100,6 +100,9 @@ pub(super) fn object(
         };
     }
     let label = raw.label.as_ref().map(|l| c.text_of("label", l));
+    if let Some(sh) = &raw.shader {
+        object.shader = super::shaders::shader(c, sh, base);
+    }
     Some((object, label))
 }
 

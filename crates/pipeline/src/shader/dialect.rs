@@ -224,6 +224,12 @@ fn top_level(src: &str) -> (Vec<Statement>, Option<Range<usize>>) {
     (statements, version)
 }
 
+/// The types an `in` or `out` may have.
+const VARYING_TYPES: [&str; 15] = [
+    "float", "int", "uint", "vec2", "vec3", "vec4", "ivec2", "ivec3", "ivec4", "uvec2", "uvec3",
+    "uvec4", "mat2", "mat3", "mat4",
+];
+
 /// Qualifiers that may stand before the type of an `in` or `out`.
 const INTERPOLATION: [&str; 6] = [
     "flat",
@@ -303,6 +309,22 @@ pub fn adapt(src: &str, stage: Stage) -> Result<Adapted, Vec<DialectError>> {
         }
         let qualifiers: Vec<&Token> = qualifiers.iter().collect();
         for (ty, name) in declared_names(after, &span, &mut errors) {
+            if !VARYING_TYPES.contains(&ty.text.as_str()) {
+                let keyword = if storage == Storage::Input {
+                    "in"
+                } else {
+                    "out"
+                };
+                errors.push(DialectError {
+                    span: ty.span.clone(),
+                    message: format!(
+                        "`{}` is not a type an `{keyword}` can have{}: float, int, uint, vec2–4, ivec2–4, uvec2–4, mat2–4",
+                        ty.text,
+                        super::check::did_you_mean(&ty.text, &VARYING_TYPES)
+                    ),
+                });
+                continue;
+            }
             declarations.push(preamble.interface(storage, &qualifiers, ty, name, &span, stage));
         }
         blanks.push(span);

@@ -1,0 +1,109 @@
+//! `shader = { vertex = "x.vert", fragment = "x.frag" }` for the scene or an object: each stage
+//! a GLSL file beside the lesson, or the GLSL itself written in the lesson; linked by
+//! [`pipeline::shader::link`], every message at its line and column in the file it is in.
+
+use std::ops::Range;
+use std::path::Path;
+use std::sync::Arc;
+
+use pipeline::scene::ObjectShader;
+use pipeline::shader::Stage;
+use toml::Spanned;
+
+use super::Checker;
+use crate::lesson::Diagnostic;
+use crate::lesson::raw::RawShader;
+
+/// The endings of a shader file's name: a value ending so (on one line) names a file.
+pub const SHADER_FILE_ENDINGS: [&str; 5] = [".vert", ".frag", ".glsl", ".vs", ".fs"];
+
+/// Where a stage's source came from, to put its messages there.
+enum Origin {
+    /// A file: its name as written and its text.
+    File(String),
+    /// Written in the lesson: the source's first byte in the lesson's text, if the source
+    /// stands there as it is (no escapes).
+    Inline(Option<usize>, Range<usize>),
+}
+
+/// One stage's source, read from its file or taken as written.
+fn source(c: &mut Checker<'_>, v: &Spanned<String>, base: &Path) -> Option<(String, Origin)> {
+    let written = v.get_ref();
+    let one_line = !written.trim().contains('\n');
+    if one_line
+        && SHADER_FILE_ENDINGS
+            .iter()
+            .any(|e| written.trim().ends_with(e))
+    {
+        let path = c.file_beside(v.span(), base, written.trim())?;
+        return match std::fs::read_to_string(&path) {
+            Ok(text) => Some((text, Origin::File(path.display().to_string()))),
+            Err(e) => {
+                c.error(v.span(), format!("cannot read {}: {e}", path.display()));
+                None
+            }
+        };
+    }
+    let at = c
+        .text
+        .get(v.span())
+        .and_then(|raw| raw.find(written.as_str()))
+        .map(|k| v.span().start + k);
+    Some((written.clone(), Origin::Inline(at, v.span())))
+}
+
+/// The linked shaders `raw` names, or diagnostics (in the shader files or the lesson).
+pub(super) fn shader(
+    c: &mut Checker<'_>,
+    raw: &Spanned<RawShader>,
+    base: &Path,
+) -> Option<ObjectShader> {
+    let r = raw.get_ref();
+    if r.vertex.is_none() && r.fragment.is_none() {
+        c.error(raw.span(), "`shader` needs a `vertex` or a `fragment` shader (a file such as \"toon.frag\", or the GLSL itself)");
+        return None;
+    }
+    let vertex = r.vertex.as_ref().map(|v| source(c, v, base));
+    let fragment = r.fragment.as_ref().map(|v| source(c, v, base));
+    // A stage that named a missing file has its diagnostic already.
+    if matches!(vertex, Some(None)) || matches!(fragment, Some(None)) {
+        return None;
+    }
+    let (vertex, fragment) = (vertex.flatten(), fragment.flatten());
+    match pipeline::shader::link(
+        vertex.as_ref().map(|v| v.0.as_str()),
+        fragment.as_ref().map(|f| f.0.as_str()),
+    ) {
+        Ok(programs) => Some(ObjectShader {
+            programs: Arc::new(programs),
+            time: 0.0,
+        }),
+        Err(errors) => {
+            for e in errors {
+                let given = match e.stage {
+                    Stage::Vertex => vertex.as_ref(),
+                    Stage::Fragment => fragment.as_ref(),
+                };
+                let message = format!("{} shader: {}", e.stage.name(), e.error.message);
+                match given {
+                    Some((text, Origin::File(name))) => {
+                        c.found
+                            .push(Diagnostic::at(name, text, e.error.span.clone(), message))
+                    }
+                    Some((_, Origin::Inline(Some(at), _))) => {
+                        c.error(at + e.error.span.start..at + e.error.span.end, message);
+                    }
+                    Some((_, Origin::Inline(None, span))) => {
+                        c.error(
+                            span.clone(),
+                            format!("{message} (line {} of the shader)", e.error.line),
+                        );
+                    }
+                    // pipelens' own shader: it compiles, so only a link error can point here.
+                    None => c.error(raw.span(), message),
+                }
+            }
+            None
+        }
+    }
+}
