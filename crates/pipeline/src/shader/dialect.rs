@@ -230,6 +230,27 @@ const VARYING_TYPES: [&str; 15] = [
     "uvec4", "mat2", "mat3", "mat4",
 ];
 
+/// A mistake in the type of an `in` or `out`: one it cannot have (a misspelt type, which naga
+/// would only call "not implemented").
+fn varying_type_error(ty: &Token, storage: Storage) -> Option<DialectError> {
+    if VARYING_TYPES.contains(&ty.text.as_str()) {
+        return None;
+    }
+    let keyword = if storage == Storage::Input {
+        "in"
+    } else {
+        "out"
+    };
+    Some(DialectError {
+        span: ty.span.clone(),
+        message: format!(
+            "`{}` is not a type an `{keyword}` can have{}: float, int, uint, vec2–4, ivec2–4, uvec2–4, mat2–4",
+            ty.text,
+            super::check::did_you_mean(&ty.text, &VARYING_TYPES)
+        ),
+    })
+}
+
 /// Qualifiers that may stand before the type of an `in` or `out`.
 const INTERPOLATION: [&str; 6] = [
     "flat",
@@ -309,20 +330,8 @@ pub fn adapt(src: &str, stage: Stage) -> Result<Adapted, Vec<DialectError>> {
         }
         let qualifiers: Vec<&Token> = qualifiers.iter().collect();
         for (ty, name) in declared_names(after, &span, &mut errors) {
-            if !VARYING_TYPES.contains(&ty.text.as_str()) {
-                let keyword = if storage == Storage::Input {
-                    "in"
-                } else {
-                    "out"
-                };
-                errors.push(DialectError {
-                    span: ty.span.clone(),
-                    message: format!(
-                        "`{}` is not a type an `{keyword}` can have{}: float, int, uint, vec2–4, ivec2–4, uvec2–4, mat2–4",
-                        ty.text,
-                        super::check::did_you_mean(&ty.text, &VARYING_TYPES)
-                    ),
-                });
+            if let Some(e) = varying_type_error(ty, storage) {
+                errors.push(e);
                 continue;
             }
             declarations.push(preamble.interface(storage, &qualifiers, ty, name, &span, stage));
