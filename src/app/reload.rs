@@ -1,5 +1,6 @@
-//! Live reload: the file the app was opened on is checked about twice a second and loaded again
-//! when it changes; a broken edit shows its error while the last good version keeps running.
+//! Live reload: the file the app was opened on, and the shader files beside it, are checked
+//! about twice a second, and the file is loaded again when one of them changes; a broken edit
+//! shows its error while the last good version keeps running.
 
 use std::path::PathBuf;
 
@@ -16,8 +17,39 @@ pub(super) struct Watched {
 }
 
 impl Watched {
+    /// The latest change to `path` or to a shader file (`.vert`, `.frag`, …) in its folder or
+    /// a folder within it: a lesson reads its shaders from there.
     fn modified(path: &std::path::Path) -> Option<std::time::SystemTime> {
-        std::fs::metadata(path).and_then(|m| m.modified()).ok()
+        let stamp = |p: &std::path::Path| std::fs::metadata(p).and_then(|m| m.modified()).ok();
+        let is_shader = |p: &std::path::Path| {
+            let name = p.to_string_lossy();
+            crate::lesson::SHADER_FILE_ENDINGS
+                .iter()
+                .any(|e| name.ends_with(e))
+        };
+        let entries = |dir: &std::path::Path| {
+            std::fs::read_dir(dir)
+                .into_iter()
+                .flatten()
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .collect::<Vec<_>>()
+        };
+        let folder = path
+            .parent()
+            .filter(|p| !p.as_os_str().is_empty())
+            .unwrap_or(std::path::Path::new("."));
+        let mut latest = stamp(path);
+        for entry in entries(folder) {
+            let inner = if entry.is_dir() {
+                entries(&entry)
+            } else {
+                vec![entry]
+            };
+            for p in inner.iter().filter(|p| is_shader(p)) {
+                latest = latest.max(stamp(p));
+            }
+        }
+        latest
     }
 }
 

@@ -417,6 +417,10 @@ fn export(
         spec.settings.samples = Samples::from_count(n)
             .with_context(|| format!("--samples must be 1, 4, 8 or 16, got {n}"))?;
     }
+    // The inspected pixel's fragment-shader runs are recorded as the frame is drawn.
+    if opts.pixel.is_some() {
+        spec.settings.capture.pixel = opts.pixel;
+    }
     let capture = pipeline::render(&spec.scene, &spec.settings)?;
     let mut files = crate::export::encode_capture(&capture, opts)?;
     if let Some(line) = profile {

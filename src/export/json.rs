@@ -49,5 +49,15 @@ pub fn capture_json(
         "vertices": &capture.vertices[..take(capture.vertices.len())],
         "primitives": &capture.primitives[..take(capture.primitives.len())],
         "raster_triangles": &capture.triangles[..take(capture.triangles.len())],
+        "shaders": capture.shaders.as_ref().map(|sh| json!({
+            "fragments": sh.fragments,
+            "discarded": sh.discarded,
+            "not_finite": sh.not_finite,
+            "vertex_results": sh.vertex_results.iter().map(|r| r.as_ref().map(|r| json!({
+                "first_vertex_row": r.first,
+                "floats_per_vertex": r.stride,
+            }))).collect::<Vec<_>>(),
+            "inspected_pixel": sh.pixel,
+        })),
     })
 }

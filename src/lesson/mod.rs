@@ -16,6 +16,7 @@ mod syntax;
 pub mod validate;
 
 pub use script::{Lesson, Step};
+pub use validate::shaders::SHADER_FILE_ENDINGS;
 
 use std::path::{Path, PathBuf};
 

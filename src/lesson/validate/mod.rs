@@ -8,7 +8,7 @@
 mod lights;
 mod objects;
 mod render;
-mod shaders;
+pub mod shaders;
 mod shapes;
 
 use std::ops::Range;

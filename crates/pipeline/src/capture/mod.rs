@@ -211,6 +211,26 @@ pub struct ShaderRecord {
     pub discarded: u64,
     /// Pixels whose colour came out NaN or infinite (shown black).
     pub not_finite: u64,
+    /// The inspected pixel's fragments (`settings.capture.pixel`), each with its shader's run.
+    pub pixel: Vec<FragmentTrace>,
+}
+
+/// One fragment of the inspected pixel through the fragment shader: what it received, what
+/// each statement did, what it wrote.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct FragmentTrace {
+    /// The raster triangle.
+    pub triangle: u32,
+    /// The primitive (input triangle).
+    pub primitive: u32,
+    /// Samples of the pixel it covers.
+    pub samples: u32,
+    /// Each input as the shader received it, interpolated: `(name, value)`.
+    pub inputs: Vec<(String, String)>,
+    /// The run, statement by statement.
+    pub trace: Vec<crate::shader::TraceLine>,
+    /// The colour it wrote, or `None` when it was discarded.
+    pub output: Option<[f32; 4]>,
 }
 
 /// One object's vertex-shader results.

@@ -183,6 +183,7 @@ fn render_stages(
                 fragments: counts.fragments,
                 discarded: counts.discarded,
                 not_finite: counts.not_finite,
+                pixel: counts.pixel,
             })
         }
         None => None,

@@ -6,7 +6,7 @@ use naga::TypeInner;
 use super::{Event, Program, code, line_column};
 
 /// One line of a trace: where, and what happened, in words with the values.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct TraceLine {
     /// Line in the student's source, from 1.
     pub line: usize,

@@ -235,3 +235,36 @@ fn a_run_time_error_in_a_frame_is_a_message_with_its_line() {
         "{text}"
     );
 }
+
+#[test]
+fn the_inspected_pixel_keeps_its_fragment_shaders_run() {
+    let fs = "#version 330 core\nin vec3 w_nrm;\nout vec4 color;\nvoid main() {\n  vec3 n = normalize(w_nrm);\n  float k = n.z > 0.5 ? 1.0 : 0.25;\n  color = vec4(n * 0.5 + 0.5, k);\n}\n";
+    let mut s = settings();
+    s.capture.pixel = Some((80, 60));
+    let f = render(&with_shaders(sphere_scene(false), None, Some(fs)), &s);
+    let record = f.shaders.as_ref().expect("a shader record");
+    assert_eq!(
+        record.pixel.len(),
+        1,
+        "one triangle covers the centre pixel"
+    );
+    let frag = &record.pixel[0];
+    assert_eq!(frag.inputs.len(), 1);
+    assert_eq!(frag.inputs[0].0, "w_nrm");
+    let lines: Vec<usize> = frag.trace.iter().map(|t| t.line).collect();
+    assert_eq!(lines, [5, 6, 6, 7], "{:#?}", frag.trace);
+    assert_eq!(frag.trace[1].text, "if: true → then");
+    assert!(
+        frag.trace[0].text.starts_with("n = vec3("),
+        "{:?}",
+        frag.trace[0]
+    );
+    // The traced colour is the pixel's colour.
+    let out = frag.output.expect("not discarded");
+    let i = (119 - 60) * 160 + 80;
+    assert!(
+        (0..3).all(|c| (out[c] - f.pixels.color[i][c]).abs() < 1e-6),
+        "{out:?} vs {:?}",
+        f.pixels.color[i]
+    );
+}

@@ -239,7 +239,12 @@ impl<'c> Machine<'c> {
             .is_some_and(|(l, _)| mask & bit(*l) != 0)
     }
 
-    fn event(&mut self, mask: u64, e: impl FnOnce(&Self, usize) -> Event) {
+    /// Records an event of the traced lane, if it is in `mask` and function `fi` is the
+    /// student's (the entry point naga wraps around `main` copies inputs and outputs only).
+    fn event(&mut self, fi: usize, mask: u64, e: impl FnOnce(&Self, usize) -> Event) {
+        if fi + 1 == self.code.functions.len() {
+            return;
+        }
         if let Some(&(l, _)) = self.trace.as_ref().filter(|(l, _)| mask & bit(*l) != 0) {
             let ev = e(self, l);
             if let Some((_, events)) = self.trace.as_mut() {
@@ -279,7 +284,7 @@ impl<'c> Machine<'c> {
                 } => {
                     let cond = self.lanes_true(fi, *c);
                     let (yes, no) = (mask & cond, mask & !cond);
-                    self.event(mask, |_, l| Event::Branch {
+                    self.event(fi, mask, |_, l| Event::Branch {
                         at: *at,
                         taken: yes & bit(l) != 0,
                     });
@@ -369,7 +374,7 @@ impl<'c> Machine<'c> {
                                 }
                             }
                         }
-                        self.event(running, |_, _| Event::Iteration { at: *at, k });
+                        self.event(fi, running, |_, _| Event::Iteration { at: *at, k });
                         flow.brk = 0;
                         flow.cont = 0;
                         let mut m = self.block(fi, body, running, live, flow, b)?;
@@ -409,22 +414,25 @@ impl<'c> Machine<'c> {
                             masked_copy(&mut ret[c * LANES..][..LANES], src, mask, self.n);
                         }
                     }
-                    if fi + 1 < code.functions.len() {
+                    // `main`'s end needs no line of its own.
+                    if fi + 1 < code.functions.len() && f.name != "main" {
                         let name = f.name.clone();
-                        self.event(mask, |_, _| Event::Return { at: *at, name });
+                        self.event(fi, mask, |_, _| Event::Return { at: *at, name });
                     }
                     flow.ret |= mask;
                     mask = 0;
                 }
                 Stmt::Kill { at } => {
-                    self.event(mask, |_, _| Event::Discard { at: *at });
+                    self.event(fi, mask, |_, _| Event::Discard { at: *at });
                     self.killed |= mask;
                     mask = 0;
                 }
                 Stmt::Store { at, place, value } => {
                     self.store(fi, place, *value, mask, live)?;
-                    if self.traced(mask) {
-                        self.event(mask, |m, l| Event::Assign {
+                    // naga's own temporaries (a `?:`'s result) have no name: the student's
+                    // variables do.
+                    if self.traced(mask) && !place.name.is_empty() {
+                        self.event(fi, mask, |m, l| Event::Assign {
                             at: *at,
                             name: place.name.clone(),
                             ty: place.ty,
@@ -440,7 +448,7 @@ impl<'c> Machine<'c> {
                 } => {
                     let callee = &code.functions[*function];
                     let name = callee.name.clone();
-                    self.event(mask, |_, _| Event::Call { at: *at, name });
+                    self.event(fi, mask, |_, _| Event::Call { at: *at, name });
                     for (arg, src) in callee.args.iter().zip(args) {
                         let (s, d) = (src.at as usize * LANES, arg.at as usize * LANES);
                         let len = arg.n as usize * LANES;

@@ -1,0 +1,206 @@
+//! The student's shaders in the pipeline. The vertex shader runs for every vertex of an object
+//! that has one, 64 vertices a batch, and its `gl_Position` takes the place of `P·V·M·p` in the
+//! vertex table (clipping, the division and the viewport follow from it as before). The
+//! fragment shader runs after rasterization for every triangle that covers a pixel, in 2×2
+//! quads as a GPU runs it (so `dFdx`, `dFdy` and `texture()`'s level of detail are differences
+//! within the quad), sixteen quads a batch, and its colour replaces the built-in shading.
+//!
+//! Each fragment input is interpolated from the vertex outputs of the same name at the pixel
+//! centre: perspective-correct by default, `(Σ λ_i·a_i/w_i)/(Σ λ_i/w_i)`; `noperspective`
+//! affinely in the window, `Σ λ_i·a_i`; `flat` from the provoking (last) vertex.
+//!
+//! The depth test runs before the fragment shader (early z), so a discarded fragment leaves
+//! the background at its samples, not what lies behind it.
+
+use glam::{Vec3, Vec4};
+use rayon::prelude::*;
+
+mod fragment;
+
+pub(in crate::render) use fragment::fragment_shaders;
+
+use super::RenderError;
+use crate::capture::{Matrices, VertexResults};
+use crate::scene::{Object, Scene};
+use crate::settings::RenderSettings;
+use crate::shader::{self, Bindings, LANES, Programs, Uniforms};
+use crate::vertex::{self, VertexRecord};
+
+/// The uniforms object `i` of `scene` is drawn with.
+fn uniforms(
+    scene: &Scene,
+    settings: &RenderSettings,
+    matrices: &Matrices,
+    i: usize,
+    time: f32,
+) -> Uniforms {
+    let o = &scene.objects[i];
+    Uniforms {
+        model: matrices.models[i].matrix,
+        view: matrices.view.matrix,
+        projection: matrices.projection.matrix,
+        eye: scene.camera.eye,
+        lights: scene.lights.clone(),
+        material: o.material,
+        has_texture: o.texture.is_some() && !o.mesh.uvs.is_empty(),
+        time,
+        resolution: glam::Vec2::new(settings.width as f32, settings.height as f32),
+    }
+}
+
+/// The textures a program's `sampler2D`s read: the object's texture for each.
+fn textures<'a>(
+    program: &shader::Program,
+    object: &'a Object,
+) -> Vec<Option<&'a crate::texture::Texture>> {
+    let t = object
+        .texture
+        .as_deref()
+        .filter(|_| !object.mesh.uvs.is_empty());
+    program.textures.iter().map(|_| t).collect()
+}
+
+fn shader_error(stage: shader::Stage, object: &Object, e: &shader::ShaderError) -> RenderError {
+    RenderError::Invalid(vec![format!(
+        "{} shader of {}, {e}",
+        stage.name(),
+        object.name
+    )])
+}
+
+/// Runs each object's vertex shader over its rows of the vertex table (`vertices`, objects in
+/// order), writing `gl_Position` as the clip position (and the NDC and window positions that
+/// follow from it). Returns each object's results, or `None` when no object has shaders.
+///
+/// # Errors
+/// A run-time error of a vertex shader, or a `gl_Position` that is not finite.
+pub(super) fn vertex_shaders(
+    scene: &Scene,
+    settings: &RenderSettings,
+    matrices: &Matrices,
+    vertices: &mut [VertexRecord],
+) -> Result<Option<Vec<Option<VertexResults>>>, RenderError> {
+    if scene.objects.iter().all(|o| o.shader.is_none()) {
+        return Ok(None);
+    }
+    let mut out = Vec::with_capacity(scene.objects.len());
+    let mut first = 0usize;
+    for (i, object) in scene.objects.iter().enumerate() {
+        let n = object.mesh.positions.len();
+        let rows = first..first + n;
+        first += n;
+        let Some(sh) = &object.shader else {
+            out.push(None);
+            continue;
+        };
+        let u = uniforms(scene, settings, matrices, i, sh.time);
+        out.push(Some(run_vertex_shader(
+            &sh.programs,
+            object,
+            &u,
+            &matrices.viewport.matrix,
+            &mut vertices[rows.clone()],
+            rows.start,
+        )?));
+    }
+    Ok(Some(out))
+}
+
+/// One attribute's value for mesh vertex `i` (see [`shader::interface::ATTRIBUTES`]).
+fn attribute(object: &Object, record: &VertexRecord, location: Option<u32>, i: usize) -> [f32; 4] {
+    let mesh = &object.mesh;
+    let v3 = |v: Vec3| [v.x, v.y, v.z, 0.0];
+    match location {
+        Some(0) => v3(record.object_pos.truncate()),
+        Some(1) => v3(mesh.normals.get(i).copied().unwrap_or(Vec3::ZERO)),
+        Some(2) => mesh
+            .uvs
+            .get(i)
+            .map_or([0.0; 4], |uv| [uv.x, uv.y, 0.0, 0.0]),
+        Some(3) => v3(record.color),
+        _ => [0.0; 4],
+    }
+}
+
+fn run_vertex_shader(
+    programs: &Programs,
+    object: &Object,
+    u: &Uniforms,
+    viewport: &glam::Mat4,
+    rows: &mut [VertexRecord],
+    first: usize,
+) -> Result<VertexResults, RenderError> {
+    let vs = &programs.vertex;
+    let stride: u32 = vs.outputs.iter().map(|o| o.components).sum();
+    let mut values = vec![0f32; rows.len() * stride as usize];
+    let tex = textures(vs, object);
+    let sampler = crate::texture::Sampler::default();
+    let locations: Vec<Option<u32>> = vs
+        .inputs
+        .iter()
+        .map(|i| shader::interface::attribute_location(&i.name))
+        .collect();
+    let vertex_index = |input: &shader::Varying| input.builtin == Some(naga::BuiltIn::VertexIndex);
+    rows.par_chunks_mut(LANES)
+        .zip(values.par_chunks_mut(LANES * stride as usize))
+        .enumerate()
+        .try_for_each_init(
+            || {
+                let mut m = vs.machine();
+                vs.set_uniforms(&mut m, u);
+                (m, Vec::<Vec<u32>>::new())
+            },
+            |(m, inputs), (k, (records, results))| {
+                let n = records.len();
+                inputs.resize(vs.inputs.len(), Vec::new());
+                for ((input, rows_in), location) in vs.inputs.iter().zip(inputs.iter_mut()).zip(&locations) {
+                    rows_in.clear();
+                    rows_in.resize(input.components as usize * LANES, 0);
+                    for (l, r) in records.iter().enumerate() {
+                        let i = k * LANES + l;
+                        if vertex_index(input) {
+                            rows_in[l] = i as u32;
+                            continue;
+                        }
+                        let a = attribute(object, r, *location, i);
+                        for c in 0..input.components as usize {
+                            rows_in[c * LANES + l] = a[c].to_bits();
+                        }
+                    }
+                }
+                let refs: Vec<&[u32]> = inputs.iter().map(Vec::as_slice).collect();
+                let bindings = Bindings { textures: &tex, sampler: &sampler };
+                let live = if n == LANES { u64::MAX } else { (1 << n) - 1 };
+                m.run(&refs, n, live, &bindings)
+                    .map_err(|e| shader_error(shader::Stage::Vertex, object, &vs.run_error(&e)))?;
+                let result = m.result();
+                for (l, r) in records.iter_mut().enumerate() {
+                    for c in 0..stride as usize {
+                        results[l * stride as usize + c] = f32::from_bits(result[c * LANES + l]);
+                    }
+                    let p = programs.position as usize;
+                    let clip = Vec4::from_slice(&results[l * stride as usize + p..][..4]);
+                    if !clip.is_finite() {
+                        return Err(RenderError::Invalid(vec![format!(
+                            "vertex shader of {}: vertex {} has gl_Position = {clip}, which is not finite",
+                            object.name,
+                            k * LANES + l
+                        )]));
+                    }
+                    r.clip = clip;
+                    (r.ndc, r.window) = if clip.w > 0.0 {
+                        let (ndc, window, _) = vertex::to_window(clip, viewport);
+                        (Some(ndc), Some(window))
+                    } else {
+                        (None, None)
+                    };
+                }
+                Ok(())
+            },
+        )?;
+    Ok(VertexResults {
+        first: first as u32,
+        stride,
+        values,
+    })
+}
