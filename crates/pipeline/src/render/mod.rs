@@ -23,9 +23,7 @@ use serde::Serialize;
 
 use self::assembly::{assemble_and_clip, light_faces};
 use self::resolve::{ResolveContext, resolve};
-use crate::capture::{
-    FrameCapture, Matrices, ObjectSummary, PixelBuffers, PrimitiveRecord, ShaderRecord,
-};
+use crate::capture::{FrameCapture, Matrices, ObjectSummary, PixelBuffers, PrimitiveRecord};
 use crate::raster::{RasterCounts, RasterTriangle, SampleBuffers};
 use crate::scene::Scene;
 use crate::settings::RenderSettings;
@@ -154,13 +152,28 @@ fn render_stages(
 
     let t = Instant::now();
     let (width, height) = (settings.width, settings.height);
-    let samples = rasterize(
+    let mut samples = rasterize(
         settings,
         storage.samples.take(),
         &triangles,
         &mut primitives,
     );
     times.raster = t.elapsed();
+    // Fragments a shader discards are taken out of the depth test, layer by layer.
+    let mut peeled = 0;
+    if let Some(results) = &vertex_results {
+        let frame = shaders::Frame {
+            scene,
+            settings,
+            matrices: &matrices,
+            triangles: &triangles,
+            primitives: &primitives,
+            vertices: &vertices,
+            vertex_shading: &vertex_shading,
+            face_shading: &face_shading,
+        };
+        peeled = shaders::peel_discarded(&frame, results, &mut samples)?;
+    }
 
     let t = Instant::now();
     let ctx = ResolveContext {
@@ -175,19 +188,7 @@ fn render_stages(
         face_shading: &face_shading,
     };
     let mut pixels = resolve(&ctx, storage.pixels);
-    let shaders = match vertex_results {
-        Some(results) => {
-            let counts = shaders::fragment_shaders(&ctx, &matrices, &results, &mut pixels)?;
-            Some(ShaderRecord {
-                vertex_results: results,
-                fragments: counts.fragments,
-                discarded: counts.discarded,
-                not_finite: counts.not_finite,
-                pixel: counts.pixel,
-            })
-        }
-        None => None,
-    };
+    let shaders = shaders::record(&ctx, &matrices, vertex_results, &mut pixels.color, peeled)?;
     times.resolve = t.elapsed();
 
     let labels = matrices.screen_labels(&scene.objects, width, height);

@@ -342,4 +342,22 @@ impl Program {
             .map_or_else(|| check::main_span(&self.source), |d| d.name_span.clone());
         error_at(&self.source, span, message)
     }
+
+    /// Whether the program has a `discard` anywhere.
+    #[must_use]
+    pub fn can_discard(&self) -> bool {
+        fn kills(stmts: &[code::Stmt]) -> bool {
+            stmts.iter().any(|s| match s {
+                code::Stmt::Kill { .. } => true,
+                code::Stmt::Block(b) => kills(b),
+                code::Stmt::If { accept, reject, .. } => kills(accept) || kills(reject),
+                code::Stmt::Switch { cases, .. } => cases.iter().any(|(_, b, _)| kills(b)),
+                code::Stmt::Loop {
+                    body, continuing, ..
+                } => kills(body) || kills(continuing),
+                _ => false,
+            })
+        }
+        self.code.functions.iter().any(|f| kills(&f.body))
+    }
 }

@@ -197,31 +197,62 @@ fn flat_takes_the_provoking_vertex_and_noperspective_is_affine_in_the_window() {
 }
 
 #[test]
-fn a_discarding_shader_leaves_the_background_and_counts_its_fragments() {
+fn behind_a_discarded_fragment_the_next_surface_shows() {
+    // A square in front of the sphere, its checkerboard's even squares discarded: through the
+    // holes the sphere shows, as OpenGL draws it (a discarded fragment writes no depth).
     let fs = "#version 330 core\nin vec2 v_uv;\nout vec4 color;\nvoid main() {\n  if (mod(floor(v_uv.x * 8.0) + floor(v_uv.y * 8.0), 2.0) < 1.0) discard;\n  color = vec4(1.0, 0.0, 0.0, 1.0);\n}\n";
-    let scene = with_shaders(sphere_scene(false), None, Some(fs));
-    let f = render(&scene, &settings());
-    let record = f.shaders.as_ref().expect("a shader record");
-    assert!(
-        record.discarded > 0 && record.discarded < record.fragments,
-        "{record:?}"
+    let mut scene = sphere_scene(false);
+    let mut square = Object::new(
+        "square",
+        BuiltinMesh::Plane {
+            divisions: 1,
+            repeat: 1.0,
+        }
+        .build(),
     );
-    let background = f.settings.background.to_array();
-    let red = f
+    square.rotate_deg = Vec3::new(90.0, 0.0, 0.0);
+    square.translate = Vec3::new(0.0, 0.0, 1.5);
+    square.scale = Vec3::splat(0.8);
+    let programs = pipeline::shader::link(None, Some(fs)).unwrap_or_else(|e| panic!("{e:?}"));
+    square.shader = Some(ObjectShader {
+        programs: Arc::new(programs),
+        time: 0.0,
+    });
+    scene.objects.push(square);
+    let with_holes = render(&scene, &settings());
+    scene.objects.pop();
+    let sphere_alone = render(&scene, &settings());
+    let record = with_holes.shaders.as_ref().expect("a shader record");
+    assert!(record.discarded > 1000, "{record:?}");
+    let red = [1.0, 0.0, 0.0];
+    let mut sphere_seen = 0;
+    for (i, (c, alone)) in with_holes
         .pixels
         .color
         .iter()
-        .filter(|c| **c == [1.0, 0.0, 0.0])
-        .count() as u64;
-    let bg_inside = f
+        .zip(&sphere_alone.pixels.color)
+        .enumerate()
+    {
+        // Every pixel not painted red shows exactly what the sphere alone shows there.
+        if *c != red {
+            assert_eq!(c, alone, "pixel {i}");
+            assert_eq!(
+                with_holes.pixels.coverage[i], sphere_alone.pixels.coverage[i],
+                "pixel {i}"
+            );
+            sphere_seen += usize::from(alone != &with_holes.settings.background.to_array());
+        }
+    }
+    let reds = with_holes
         .pixels
         .color
         .iter()
-        .zip(&f.pixels.coverage)
-        .filter(|(c, k)| **k > 0 && **c == background)
-        .count() as u64;
-    assert_eq!(red + bg_inside, record.fragments);
-    assert_eq!(bg_inside, record.discarded);
+        .filter(|c| **c == red)
+        .count();
+    assert!(
+        reds > 1000 && sphere_seen > 1000,
+        "{reds} red pixels, {sphere_seen} of the sphere"
+    );
 }
 
 #[test]

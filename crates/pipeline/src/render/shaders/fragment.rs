@@ -6,7 +6,7 @@ use glam::{I64Vec2, Vec3};
 use rayon::prelude::*;
 
 use super::{shader_error, textures, uniforms};
-use crate::capture::{FragmentTrace, Matrices, PixelBuffers, VertexResults};
+use crate::capture::{FragmentTrace, Matrices, VertexResults};
 use crate::raster::{NONE, ONE, RasterTriangle};
 use crate::render::RenderError;
 use crate::render::resolve::ResolveContext;
@@ -30,17 +30,21 @@ pub(in crate::render) struct FragmentCounts {
     pub(in crate::render) discarded: u64,
     pub(in crate::render) not_finite: u64,
     pub(in crate::render) pixel: Vec<FragmentTrace>,
+    /// The fragments discarded: raster triangle and image pixel.
+    pub(in crate::render) discards: Vec<(u32, u32)>,
 }
 
 impl std::ops::Add for FragmentCounts {
     type Output = Self;
     fn add(mut self, o: Self) -> Self {
         self.pixel.extend(o.pixel);
+        self.discards.extend(o.discards);
         Self {
             fragments: self.fragments + o.fragments,
             discarded: self.discarded + o.discarded,
             not_finite: self.not_finite + o.not_finite,
             pixel: self.pixel,
+            discards: self.discards,
         }
     }
 }
@@ -55,7 +59,7 @@ pub(in crate::render) fn fragment_shaders(
     ctx: &ResolveContext<'_>,
     matrices: &Matrices,
     results: &[Option<VertexResults>],
-    pixels: &mut PixelBuffers,
+    color: &mut [[f32; 3]],
 ) -> Result<FragmentCounts, RenderError> {
     let settings = ctx.settings;
     let (w, h) = (settings.width as usize, settings.height as usize);
@@ -76,8 +80,7 @@ pub(in crate::render) fn fragment_shaders(
         uniforms: &uniforms,
     };
     // Row pairs, bottom pair first in window terms does not matter: each pair is independent.
-    pixels
-        .color
+    color
         .par_chunks_mut(2 * w)
         .enumerate()
         .map(|(k, rows)| {
@@ -271,6 +274,10 @@ impl FragmentShading<'_> {
                 };
                 let color = if killed & (1 << l) != 0 {
                     counts.discarded += 1;
+                    let (px, py) = (i64::from(job.x) + (j % 2) as i64, y + (j / 2) as i64);
+                    if let Some(at) = self.index(px, py) {
+                        counts.discards.push((job.triangle, at as u32));
+                    }
                     background
                 } else {
                     let c = Vec3::new(

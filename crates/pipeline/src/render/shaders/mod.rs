@@ -15,16 +15,57 @@
 use glam::{Vec3, Vec4};
 use rayon::prelude::*;
 
+mod discard;
 mod fragment;
 
+pub(in crate::render) use discard::peel_discarded;
 pub(in crate::render) use fragment::fragment_shaders;
 
 use super::RenderError;
-use crate::capture::{Matrices, VertexResults};
+use crate::capture::{Matrices, ShaderRecord, VertexResults};
+use crate::render::resolve::ResolveContext;
 use crate::scene::{Object, Scene};
 use crate::settings::RenderSettings;
 use crate::shader::{self, Bindings, LANES, Programs, Uniforms};
 use crate::vertex::{self, VertexRecord};
+
+/// The fragment stage over a resolved frame: the shaders' colours written into `color`, and
+/// the record of what the shaders did (`None` when no object has shaders). `peeled` fragments
+/// were discarded before the resolve.
+///
+/// # Errors
+/// A run-time error of a fragment shader.
+pub(in crate::render) fn record(
+    ctx: &ResolveContext<'_>,
+    matrices: &Matrices,
+    vertex_results: Option<Vec<Option<VertexResults>>>,
+    color: &mut [[f32; 3]],
+    peeled: u64,
+) -> Result<Option<ShaderRecord>, RenderError> {
+    let Some(results) = vertex_results else {
+        return Ok(None);
+    };
+    let counts = fragment_shaders(ctx, matrices, &results, color)?;
+    Ok(Some(ShaderRecord {
+        vertex_results: results,
+        fragments: counts.fragments,
+        discarded: counts.discarded + peeled,
+        not_finite: counts.not_finite,
+        pixel: counts.pixel,
+    }))
+}
+
+/// What the fragment stage reads of a frame drawn so far.
+pub(in crate::render) struct Frame<'a> {
+    pub(in crate::render) scene: &'a Scene,
+    pub(in crate::render) settings: &'a RenderSettings,
+    pub(in crate::render) matrices: &'a Matrices,
+    pub(in crate::render) triangles: &'a [crate::raster::RasterTriangle],
+    pub(in crate::render) primitives: &'a [crate::capture::PrimitiveRecord],
+    pub(in crate::render) vertices: &'a [VertexRecord],
+    pub(in crate::render) vertex_shading: &'a [crate::shade::ShadeTerms],
+    pub(in crate::render) face_shading: &'a [crate::shade::ShadeTerms],
+}
 
 /// The uniforms object `i` of `scene` is drawn with.
 fn uniforms(
