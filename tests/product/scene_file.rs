@@ -391,3 +391,20 @@ fn shaders_come_from_files_beside_the_scene_or_inline_and_their_mistakes_point_i
     ));
     crate::support::assert_found(&found, 3, 21, "there is no file");
 }
+
+#[test]
+fn the_shader_pair_in_lessons_readme_compiles_and_links() {
+    let readme =
+        std::fs::read_to_string(crate::support::repo().join("lessons/README.md")).expect("README");
+    let block = |name: &str| {
+        readme
+            .split("```glsl\n")
+            .find(|b| b.starts_with(&format!("// {name}")))
+            .and_then(|b| b.split("```").next())
+            .unwrap_or_else(|| panic!("a ```glsl block starting // {name}"))
+            .to_owned()
+    };
+    let programs = pipeline::shader::link(Some(&block("toon.vert")), Some(&block("toon.frag")))
+        .unwrap_or_else(|e| panic!("the README's shaders: {e:?}"));
+    assert_eq!(programs.fragment.inputs.len(), 2);
+}
