@@ -9,6 +9,7 @@ use pipeline::camera::{Camera, Projection};
 use pipeline::capture::FrameCapture;
 use pipeline::light::{Light, Material};
 use pipeline::mesh::BuiltinMesh;
+use pipeline::raster::Samples;
 use pipeline::scene::{ColorSource, Object, ObjectShader, Scene};
 use pipeline::settings::RenderSettings;
 use pipeline::shade::{Frequency, Reflection};
@@ -115,27 +116,41 @@ fn largest_difference(a: &FrameCapture, b: &FrameCapture) -> (f32, usize) {
 
 #[test]
 fn pipelens_own_shading_as_glsl_gives_the_built_in_pixels() {
-    for textured in [false, true] {
-        let scene = sphere_scene(textured);
-        let built_in = render(&scene, &settings());
-        let shaded = render(&with_shaders(scene, None, None), &settings());
-        assert_eq!(
-            built_in.pixels.coverage, shaded.pixels.coverage,
-            "coverage, textured = {textured}"
-        );
-        let (d, at) = largest_difference(&built_in, &shaded);
-        assert!(
-            d <= 1.0 / 255.0,
-            "textured = {textured}: pixel {at} differs by {d}: {:?} vs {:?}",
-            built_in.pixels.color[at],
-            shaded.pixels.color[at]
-        );
-        let record = shaded.shaders.as_ref().expect("a shader record");
-        assert_eq!(
-            record.fragments,
-            shaded.pixels.coverage.iter().filter(|&&c| c > 0).count() as u64
-        );
-        assert_eq!((record.discarded, record.not_finite), (0, 0));
+    // With 4 samples a silhouette pixel averages its shaded samples with the background ones,
+    // and a pixel two triangles share runs the shader once for each.
+    for samples in [Samples::X1, Samples::X4] {
+        for textured in [false, true] {
+            let settings = RenderSettings {
+                samples,
+                ..settings()
+            };
+            let scene = sphere_scene(textured);
+            let built_in = render(&scene, &settings);
+            let shaded = render(&with_shaders(scene, None, None), &settings);
+            let case = format!("textured = {textured}, {} sample(s)", samples.count());
+            assert_eq!(
+                built_in.pixels.coverage, shaded.pixels.coverage,
+                "coverage, {case}"
+            );
+            let (d, at) = largest_difference(&built_in, &shaded);
+            assert!(
+                d <= 1.0 / 255.0,
+                "{case}: pixel {at} differs by {d}: {:?} vs {:?}",
+                built_in.pixels.color[at],
+                shaded.pixels.color[at]
+            );
+            let record = shaded.shaders.as_ref().expect("a shader record");
+            let covered = shaded.pixels.coverage.iter().filter(|&&c| c > 0).count() as u64;
+            if samples == Samples::X1 {
+                assert_eq!(record.fragments, covered, "{case}");
+            } else {
+                assert!(
+                    record.fragments > covered,
+                    "{case}: shared pixels shade twice"
+                );
+            }
+            assert_eq!((record.discarded, record.not_finite), (0, 0));
+        }
     }
 }
 
