@@ -7,7 +7,10 @@ For every case (mesh, texture, size, samples) it
    shininess 64, black background) and exports it with `pipelens export`;
 2. renders the same mesh on llvmpipe with the model, view and projection matrices of pipelens'
    own capture.json, the peer's own OBJ reader and its own vertex normals (the plain average of
-   the unit face normals around each position), and its shaders (render.py's VS and FS);
+   the unit face normals around each position), and its shaders (render.py's VS and FS) — or, in
+   the GLSL cases, the very shader files pipelens ran (scripts/reference/shaders: Blinn-Phong,
+   Phong with r·v, toon, texture() minified, noperspective/flat, a checkerboard with discard),
+   compiled by Mesa, their uniforms set by name;
 3. compares: coverage (samples covered per pixel), window depth (the mean of the pixel's sample
    depths, as pipelens resolves it) and colour.
 
@@ -17,7 +20,7 @@ notes write the ambient term; both renderers get ka = 0 there, so the two ambien
 
 Exit status 1 when any figure misses its bound; a peer that cannot be set up is a failure too.
 """
-import argparse, json, os, subprocess, sys, tempfile
+import argparse, json, os, re, subprocess, sys, tempfile
 import numpy as np
 from PIL import Image
 
@@ -43,12 +46,14 @@ in vec2 in_pos;
 void main() { gl_Position = vec4(in_pos, 0.0, 1.0); }"""
 
 
-def scene_toml(mesh, texture, size, samples, ka):
+def scene_toml(mesh, texture, size, samples, ka, shaders=None):
     w, h = size
     obj = [f'name = "subject"', f'mesh = "{mesh}"', "fit = true", "color = [1.0, 1.0, 1.0]",
            f"material = {{ ka = {ka}, kd = {1.0 if texture else 0.7}, ks = 0.5, shininess = 64 }}"]
     if texture:
         obj.append(f'texture = "{texture}"')
+    if shaders:
+        obj.append(f'shader = {{ vertex = "{shaders[0]}", fragment = "{shaders[1]}" }}')
     return f"""[scene.camera]
 eye = [0.0, 0.0, 3.0]
 at = [0.0, 0.0, 0.0]
@@ -91,7 +96,7 @@ class Peer:
         self.gl, self.render = moderngl, render
         self.ctx = moderngl.create_standalone_context(backend="egl")
         self.renderer = self.ctx.info["GL_RENDERER"]
-        self.prog = self.ctx.program(vertex_shader=render.VS, fragment_shader=render.FS)
+        self.programs = {None: self.ctx.program(vertex_shader=render.VS, fragment_shader=render.FS)}
         self.mean = self.ctx.program(vertex_shader=QUAD_VS, fragment_shader=MEAN_DEPTH_FS)
         quad = np.array([-1, -1, 1, -1, -1, 1, 1, 1], dtype="f4")
         self.quad = self.ctx.vertex_array(self.mean, [(self.ctx.buffer(quad.tobytes()), "2f", "in_pos")])
@@ -105,25 +110,42 @@ class Peer:
             self.meshes[obj] = (self.ctx.buffer(verts.tobytes()), ntris)
         return self.meshes[obj]
 
-    def draw(self, obj, texture, size, samples, model, view, proj, ka):
+    def program(self, shaders):
+        """The peer's own shaders (None), or the very files pipelens runs, compiled by Mesa."""
+        if shaders not in self.programs:
+            vs, fs = (open(f).read() for f in shaders)
+            self.programs[shaders] = self.ctx.program(vertex_shader=vs, fragment_shader=fs)
+        return self.programs[shaders]
+
+    def draw(self, obj, texture, size, samples, model, view, proj, ka, shaders=None):
         """Colour (h×w×3 uint8, image rows), mean sample depth and covered samples (h×w)."""
-        gl, ctx, prog = self.gl, self.ctx, self.prog
+        gl, ctx = self.gl, self.ctx
+        prog = self.program(shaders)
         w, h = size
         vbo, _ = self.mesh(obj)
         eye = np.linalg.inv(view)[:3, 3]
-        prog["mvp"].write((proj @ view @ model).T.astype("f4").tobytes())
-        prog["model"].write(model.T.astype("f4").tobytes())
-        prog["normal_matrix"].write(np.linalg.inv(model[:3, :3]).astype("f4").tobytes())
-        prog["eye"].value = tuple(eye); prog["light_pos"].value = (4.0, 4.0, 4.0); prog["light_color"].value = (1, 1, 1)
-        prog["ka"].value = (ka,) * 3; prog["kd"].value = (0.7,) * 3; prog["ks"].value = (0.5,) * 3
-        prog["shininess"].value = 64.0
-        prog["use_tex"].value = bool(texture)
+
+        def put(name, value=None, raw=None):
+            # A shader may leave out any uniform (and the compiler drops the unused ones).
+            if name in prog:
+                if raw is not None:
+                    prog[name].write(raw)
+                else:
+                    prog[name].value = value
+        put("mvp", raw=(proj @ view @ model).T.astype("f4").tobytes())
+        put("model", raw=model.T.astype("f4").tobytes())
+        put("normal_matrix", raw=np.linalg.inv(model[:3, :3]).astype("f4").tobytes())
+        put("eye", tuple(eye)); put("light_pos", (4.0, 4.0, 4.0)); put("light_color", (1.0, 1.0, 1.0))
+        put("ka", (ka,) * 3); put("kd", (0.7,) * 3); put("ks", (0.5,) * 3)
+        put("shininess", 64.0)
+        put("use_tex", bool(texture))
         if texture:
             img = Image.open(texture).convert("RGBA").transpose(Image.FLIP_TOP_BOTTOM)
             tex = ctx.texture(img.size, 4, img.tobytes())
             tex.build_mipmaps(); tex.filter = (gl.LINEAR_MIPMAP_LINEAR, gl.LINEAR)
-            tex.use(0); prog["tex"].value = 0
-        vao = ctx.vertex_array(prog, [(vbo, "3f 3f 2f", "in_pos", "in_nrm", "in_uv")])
+            tex.use(0); put("tex", 0)
+        # An attribute the shader does not read is left out of the layout (skip_errors).
+        vao = ctx.vertex_array(prog, [(vbo, "3f 3f 2f", "in_pos", "in_nrm", "in_uv")], skip_errors=True)
         n = max(samples, 1)
         color = ctx.texture((w, h), 4, samples=n if samples > 1 else 0)
         depth = ctx.depth_texture((w, h), samples=n if samples > 1 else 0)
@@ -168,18 +190,18 @@ def matrix(capture, key):
 
 
 def run_case(pipelens, peer, work, case, size, samples):
-    name, mesh, texture = case
-    ka = 0.0 if texture else 0.05
-    tag = f"{name}-{size[0]}x{size[1]}-{samples}".replace(" ", "_").replace("+", "")
+    name, mesh, texture, shaders = case
+    ka = 0.0 if texture and not shaders else 0.05
+    tag = re.sub(r"[^A-Za-z0-9_.-]+", "_", f"{name}-{size[0]}x{size[1]}-{samples}")
     scene = os.path.join(work, tag + ".toml")
     with open(scene, "w") as f:
-        f.write(scene_toml(mesh, texture, size, samples, ka))
+        f.write(scene_toml(mesh, texture, size, samples, ka, shaders))
     out = os.path.join(work, tag)
     subprocess.run([pipelens, "export", scene, "--out", out], check=True, stdout=subprocess.DEVNULL)
     cap = json.load(open(os.path.join(out, "capture.json")))
     model = matrix(cap, "models")
     view, proj = matrix(cap, "view"), matrix(cap, "projection")
-    rgb_p, z_p, cov_p = peer.draw(mesh, texture, size, samples, model, view, proj, ka)
+    rgb_p, z_p, cov_p = peer.draw(mesh, texture, size, samples, model, view, proj, ka, shaders)
     rgb_l = np.asarray(Image.open(os.path.join(out, "color.png")).convert("RGB"))
     z_l = read_pfm(os.path.join(out, "depth.pfm"))
     cov_l = np.rint(np.asarray(Image.open(os.path.join(out, "coverage.png")).convert("L"), dtype=np.float64)
@@ -203,16 +225,33 @@ def main():
     ap.add_argument("--peer", required=True, help="the folder of the peer's render.py")
     ap.add_argument("--data", required=True, help="../shared/data")
     ap.add_argument("--work", default=None, help="where the exports go (a temporary folder when omitted)")
+    ap.add_argument("--only", default=None, help="run only the cases whose name contains this text")
     a = ap.parse_args()
     m = os.path.join(os.path.abspath(a.data), "models")
+    bunny, spot, spot_tex = f"{m}/stanford-bunny.obj", f"{m}/spot/spot_triangulated.obj", f"{m}/spot/spot_texture.png"
     cases = [
-        ("bunny", f"{m}/stanford-bunny.obj", None),
-        ("Spot", f"{m}/spot/spot_triangulated.obj", None),
-        ("Spot + texture, trilinear", f"{m}/spot/spot_triangulated.obj", f"{m}/spot/spot_texture.png"),
-        ("cow", f"{m}/cow.obj", None),
-        ("A2 two triangles", os.path.join(os.path.abspath(a.data), "scenes/games101_a2_two_triangles.obj"), None),
+        ("bunny", bunny, None, None),
+        ("Spot", spot, None, None),
+        ("Spot + texture, trilinear", spot, spot_tex, None),
+        ("cow", f"{m}/cow.obj", None, None),
+        ("A2 two triangles", os.path.join(os.path.abspath(a.data), "scenes/games101_a2_two_triangles.obj"), None, None),
     ]
-    for _, mesh, tex in cases:
+    # The same GLSL files in both renderers (scripts/reference/shaders): pipelens reads them from
+    # its scene file, the peer compiles them with Mesa.
+    here = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shaders")
+    lit = lambda fs: (os.path.join(here, "lit.vert"), os.path.join(here, fs))
+    shader_cases = []
+    for fs, label, meshes in (("blinn_phong.frag", "Blinn-Phong", (bunny, spot)),
+                              ("phong.frag", "Phong r·v", (bunny, spot)),
+                              ("toon.frag", "toon", (bunny, spot)),
+                              ("textured.frag", "texture() minified", (spot,)),
+                              ("qualifiers.frag", "noperspective/flat", (bunny, spot)),
+                              ("checker.frag", "checker discard", (bunny, spot))):
+        pair = (os.path.join(here, "qualifiers.vert"), os.path.join(here, fs)) if fs == "qualifiers.frag" else lit(fs)
+        for mesh in meshes:
+            texture = spot_tex if fs == "textured.frag" else None
+            shader_cases.append((f"GLSL {label}, {'bunny' if mesh == bunny else 'Spot'}", mesh, texture, pair))
+    for _, mesh, tex, _ in cases:
         for f in (mesh, tex):
             if f and not os.path.exists(f):
                 sys.exit(f"reference check: {f} is missing (the shared data folder)")
@@ -223,16 +262,18 @@ def main():
     print(f"pipelens vs {peer.renderer}; bounds: coverage differing pixels ≤ {COVERAGE_MAX}, "
           f"|Δz_w| ≤ {DEPTH_MAX:g} (pixels whose samples are all covered), "
           f"colour within 2/255 on ≥ {COLOR_SHARE:.1%} of covered pixels")
-    head = f"| {'case':<26} | {'size':>9} | samples | covered px | coverage ≠ | max Δz_w    | colour ≤ 2/255 | max Δ | |"
+    head = f"| {'case':<34} | {'size':>9} | samples | covered px | coverage ≠ | max Δz_w    | colour ≤ 2/255 | max Δ | |"
     print(head); print("|" + "|".join("-" * (len(c)) for c in head.split("|")[1:-1]) + "|")
-    for case in cases:
-        for size in ((800, 600), (1280, 720)):
-            for samples in (1, 4):
-                r = run_case(a.pipelens, peer, work, case, size, samples)
-                rows.append(r)
-                print(f"| {r['case']:<26} | {r['size']:>9} | {r['samples']:>7} | {r['covered']:>10} | "
-                      f"{r['coverage_diff']:>10} | {r['depth_max']:>11.2e} | {r['color_share']:>14.4%} | "
-                      f"{r['color_max']:>5} | {'ok' if r['ok'] else 'FAIL'} |", flush=True)
+    runs = [(c, size, samples) for c in cases for size in ((800, 600), (1280, 720)) for samples in (1, 4)]
+    runs += [(c, size, samples) for c in shader_cases for size, samples in (((800, 600), 1), ((1280, 720), 4))]
+    if a.only:
+        runs = [r for r in runs if a.only.lower() in r[0][0].lower()]
+    for case, size, samples in runs:
+        r = run_case(a.pipelens, peer, work, case, size, samples)
+        rows.append(r)
+        print(f"| {r['case']:<34} | {r['size']:>9} | {r['samples']:>7} | {r['covered']:>10} | "
+              f"{r['coverage_diff']:>10} | {r['depth_max']:>11.2e} | {r['color_share']:>14.4%} | "
+              f"{r['color_max']:>5} | {'ok' if r['ok'] else 'FAIL'} |", flush=True)
     failed = [r for r in rows if not r["ok"]]
     if failed:
         print(f"reference check FAILED: {len(failed)} of {len(rows)} cases miss a bound")
