@@ -7,7 +7,7 @@ use std::path::Path;
 use super::{Diagnostics, script::Lesson};
 
 /// Each built-in lesson: its file name in `lessons/` and its text.
-pub const LESSONS: [(&str, &str); 24] = [
+pub const LESSONS: [(&str, &str); 25] = [
     ("00-tour.toml", include_str!("../../lessons/00-tour.toml")),
     (
         "01-transforms.toml",
@@ -100,6 +100,10 @@ pub const LESSONS: [(&str, &str); 24] = [
     (
         "23-beyond-mipmaps.toml",
         include_str!("../../lessons/23-beyond-mipmaps.toml"),
+    ),
+    (
+        "24-shader-programs.toml",
+        include_str!("../../lessons/24-shader-programs.toml"),
     ),
 ];
 

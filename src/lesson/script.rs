@@ -5,6 +5,7 @@
 use std::path::Path;
 
 use pipeline::buffers::BufferKind;
+use pipeline::scene::ObjectShader;
 use toml::Spanned;
 
 use super::param::{self, Animation, Easing, Repeat, Value};
@@ -69,6 +70,8 @@ pub struct Step {
     /// The depth buffer's grey ramp `[black, white]` in window depth (`None`: the nearest and
     /// farthest depth present).
     pub depth_range: Option<[f32; 2]>,
+    /// The shaders every object runs from this step on (`None`: as the steps before left them).
+    pub shader: Option<ObjectShader>,
     /// A question for self-study.
     pub question: Option<Text>,
     /// Its answer.
@@ -152,6 +155,9 @@ impl Lesson {
                 // Checked at load time; a failure here leaves the value as it was.
                 let _ = param::apply(&mut spec, name, value);
             }
+            if let Some(shader) = &step.shader {
+                set_shader(&mut spec, shader);
+            }
         }
         spec
     }
@@ -175,6 +181,13 @@ impl Lesson {
             shader.time = t;
         }
         spec
+    }
+}
+
+/// Every object of `spec` runs `shader` (a step's `shader = { … }`).
+fn set_shader(spec: &mut SceneSpec, shader: &ObjectShader) {
+    for o in &mut spec.scene.objects {
+        o.shader = Some(shader.clone());
     }
 }
 
@@ -231,7 +244,7 @@ pub fn parse_lesson(text: &str, file: &str, base: &Path) -> Result<Lesson, Diagn
     if let Ok(base_spec) = &scene {
         let mut spec = base_spec.clone();
         for s in &raw.steps {
-            steps.push(c.step(s, &mut spec));
+            steps.push(c.step(s, &mut spec, base));
         }
     }
     let mut found = c.found;
@@ -287,7 +300,7 @@ impl Checker<'_> {
         })
     }
 
-    fn step(&mut self, s: &Spanned<RawStep>, spec: &mut SceneSpec) -> Step {
+    fn step(&mut self, s: &Spanned<RawStep>, spec: &mut SceneSpec, base: &Path) -> Step {
         let r = s.get_ref();
         let title = self.text_of("title", &r.title);
         let narration = self.text_of("narration", &r.narration);
@@ -304,6 +317,13 @@ impl Checker<'_> {
                 Ok(()) => set.push((name.get_ref().clone(), value)),
                 Err(e) => self.error(name.span(), e),
             }
+        }
+        let shader = r
+            .shader
+            .as_ref()
+            .and_then(|sh| super::validate::shaders::shader(self, sh, base));
+        if let Some(shader) = &shader {
+            set_shader(spec, shader);
         }
         let animate = r
             .animate
@@ -339,6 +359,7 @@ impl Checker<'_> {
             profile,
             focus,
             depth_range,
+            shader,
             question,
             answer,
         }

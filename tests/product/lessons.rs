@@ -528,3 +528,112 @@ fn the_built_in_lessons_are_the_lessons_folder() {
     let e = pipelens::lesson::library::lesson("99-nope.toml").expect_err("no such lesson");
     assert!(e.to_string().contains("there are 00-tour.toml"), "{e}");
 }
+
+#[test]
+fn the_shader_lesson_runs_each_edit_and_traces_its_pixel() {
+    let doc = load_file(&repo().join("lessons/24-shader-programs.toml"))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let Document::Lesson(lesson) = doc else {
+        panic!("not a lesson")
+    };
+    let frame = |k: usize, pixel: Option<(u32, u32)>| {
+        let mut spec = lesson.spec_at(k);
+        spec.settings.samples = pipeline::raster::Samples::X1;
+        spec.settings.capture.pixel = pixel;
+        assert!(
+            spec.scene.objects.iter().all(|o| o.shader.is_some()),
+            "step {k} runs a shader on every object"
+        );
+        pipeline::render(&spec.scene, &spec.settings).unwrap_or_else(|e| panic!("step {k}: {e}"))
+    };
+    let source = |k: usize| {
+        let spec = lesson.spec_at(k);
+        spec.scene.objects[0]
+            .shader
+            .as_ref()
+            .expect("a shader")
+            .programs
+            .fragment
+            .source
+            .clone()
+    };
+    // Each step is an edit of the one before: the exponent, r·v, a rim, toon, discard.
+    assert!(source(1).contains("float p = 8.0;"));
+    assert!(source(2).contains("reflect(-l, n)"));
+    assert!(source(3).contains("rim"));
+    assert!(source(4).contains("floor(d * 4.0)"));
+    assert!(source(5).contains("discard"));
+    let key = |c: &[f32; 3]| c.map(|v| (v * 255.0).round() as i32);
+    let colours = |k: usize| {
+        let c = frame(k, None);
+        c.pixels
+            .color
+            .iter()
+            .map(key)
+            .collect::<std::collections::BTreeSet<_>>()
+    };
+    let smooth = colours(0);
+    let toon = colours(4);
+    assert!(
+        smooth.len() > 200,
+        "Blinn-Phong shades smoothly: {} colours",
+        smooth.len()
+    );
+    // Four bands (and black where n·l ≤ 0), the highlight, the background.
+    assert!(toon.len() <= 8, "toon has a few flat bands: {toon:?}");
+    let wider = frame(1, None);
+    let narrow = frame(0, None);
+    let bright =
+        |c: &pipeline::capture::FrameCapture| c.pixels.color.iter().filter(|p| p[1] > 0.6).count();
+    assert!(
+        bright(&wider) > 2 * bright(&narrow),
+        "p = 8 spreads the highlight: {} against {} bright pixels",
+        bright(&wider),
+        bright(&narrow)
+    );
+    let holes = frame(5, None);
+    let record = holes.shaders.as_ref().expect("a shader record");
+    assert!(
+        record.discarded > 1000,
+        "the checkerboard discards: {}",
+        record.discarded
+    );
+    // The debugger's step: the inspected pixel's fragment with its inputs and its run.
+    let step = &lesson.steps[6];
+    let traced = frame(6, step.pixel);
+    let fragments = &traced.shaders.as_ref().expect("a record").pixel;
+    let f = fragments
+        .first()
+        .expect("the step's pixel is on the sphere");
+    assert!(
+        f.inputs.iter().any(|(name, _)| name == "w_nrm"),
+        "{:?}",
+        f.inputs
+    );
+    for v in ["n = vec3(", "h = vec3(", "specular = ", "color = vec4("] {
+        assert!(
+            f.trace.iter().any(|t| t.text.starts_with(v)),
+            "the run shows `{v}`: {:?}",
+            f.trace
+        );
+    }
+}
+
+#[test]
+fn a_steps_shader_mistake_points_into_the_lesson() {
+    let text = lesson_with(&format!(
+        "{STEP}shader.fragment = \"\"\"\n#version 330 core\nout vec4 color;\nvoid main() {{\n    color = vec4(flot(1.0));\n}}\n\"\"\"\n"
+    ));
+    let found = errors(&text);
+    let line = text
+        .lines()
+        .position(|l| l.contains("flot("))
+        .expect("the line")
+        + 1;
+    assert!(
+        found
+            .iter()
+            .any(|d| d.line == line && d.message.contains("flot")),
+        "{found:?}"
+    );
+}

@@ -53,7 +53,7 @@ fn source(c: &mut Checker<'_>, v: &Spanned<String>, base: &Path) -> Option<(Stri
 }
 
 /// The linked shaders `raw` names, or diagnostics (in the shader files or the lesson).
-pub(super) fn shader(
+pub(in crate::lesson) fn shader(
     c: &mut Checker<'_>,
     raw: &Spanned<RawShader>,
     base: &Path,
