@@ -36,8 +36,9 @@ pub(super) fn validation_message(e: &naga::valid::ValidationError) -> String {
     }
     let inner = chain.last().cloned().unwrap_or_default();
     if inner.contains("doesn't match the type stored in") {
-        return "the value's type is not the variable's type (a vec4 stored into a vec3? pick \
-                components with .rgb or .xyz, or convert with vec3(…))"
+        return "the value's type is not the variable's type: a vec3 into a vec4 needs building, \
+                vec4(v, 1.0); a vec4 into a vec3 needs picking, v.xyz or v.rgb; a float from \
+                an int needs float(i)"
             .to_owned();
     }
     if inner.contains("InvalidReturnType") || inner.contains("return type") {
