@@ -131,7 +131,7 @@ impl PipelensApp {
     fn panel_toggles(&mut self, ui: &mut egui::Ui, lang: Lang) {
         let lesson = self.session.lesson.is_some();
         let p = &mut self.panels;
-        let toggles: [(&mut bool, &str, &str); 4] = [
+        let toggles: [(&mut bool, &str, &str); 5] = [
             (
                 &mut p.narration,
                 lang.tr("Narration", "讲解"),
@@ -162,6 +162,14 @@ impl PipelensApp {
                 lang.tr(
                     "The stage's matrix over the geometry (M)",
                     "在几何视图上显示本阶段的矩阵（M）",
+                ),
+            ),
+            (
+                &mut p.shader,
+                lang.tr("Shader", "着色器"),
+                lang.tr(
+                    "Write the vertex and fragment shaders in GLSL; Ctrl+Enter applies (S)",
+                    "用 GLSL 编写顶点与片元着色器；Ctrl+Enter 应用（S）",
                 ),
             ),
         ];
@@ -284,6 +292,9 @@ impl PipelensApp {
                         lang.tr("resolve", "解析"),
                         ms(t.resolve),
                     ));
+                    if let Some(s) = &c.shaders {
+                        shader_counts(ui, s, lang);
+                    }
                 }
                 if self.session.rendering() {
                     ui.spinner();
@@ -295,7 +306,7 @@ impl PipelensApp {
     /// The keyboard shortcuts, in a window F1 (or ?) opens and closes.
     pub(super) fn keys_help(&mut self, ctx: &egui::Context) {
         let lang = self.session.lang;
-        let keys: [(&str, &str, &str); 13] = [
+        let keys: [(&str, &str, &str); 15] = [
             (
                 "→  Page Down",
                 "next step of a lesson (next stage without one)",
@@ -328,6 +339,8 @@ impl PipelensApp {
                 "classroom mode: large type, the picture first",
                 "课堂模式：大字号，画面优先",
             ),
+            ("S", "the shader editor (GLSL)", "着色器编辑器（GLSL）"),
+            ("Ctrl Enter", "apply the shaders", "应用着色器"),
             ("F11", "full screen", "全屏"),
             ("Ctrl +  Ctrl −", "text size", "字号"),
             ("F1  ?", "this list", "本列表"),
@@ -410,6 +423,9 @@ impl PipelensApp {
         if pressed(egui::Key::M) {
             p.matrix_card = !p.matrix_card;
         }
+        if pressed(egui::Key::S) {
+            p.shader = !p.shader;
+        }
         if pressed(egui::Key::F1) || pressed(egui::Key::Questionmark) {
             p.keys = !p.keys;
         }
@@ -421,5 +437,35 @@ impl PipelensApp {
             let full = ctx.input(|i| i.viewport().fullscreen.unwrap_or(false));
             ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(!full));
         }
+    }
+}
+
+/// What the shaders did this frame, in the status line: fragments run, fragments discarded, and
+/// pixels whose colour came out NaN or infinite (drawn black; the inspector marks the value).
+fn shader_counts(ui: &mut egui::Ui, s: &pipeline::capture::ShaderRecord, lang: Lang) {
+    ui.label(format!(
+        "· {} {} · {} {}",
+        s.fragments,
+        lang.tr("fragments shaded", "个片元已着色"),
+        s.discarded,
+        lang.tr("discarded", "个被丢弃"),
+    ))
+    .on_hover_text(lang.tr(
+        "The fragment shader ran once per fragment (2×2 quads' helper lanes not counted); `discard` threw these away.",
+        "片元着色器对每个片元运行一次（2×2 像素块的辅助通道不计）；这些被 `discard` 丢弃。",
+    ));
+    if s.not_finite > 0 {
+        ui.label(
+            RichText::new(format!(
+                "· {} {}",
+                s.not_finite,
+                lang.tr("pixels NaN or ∞ (drawn black)", "个像素为 NaN 或 ∞（画成黑色）")
+            ))
+            .color(Color32::LIGHT_RED),
+        )
+        .on_hover_text(lang.tr(
+            "A shader's colour was not a finite number, e.g. normalize(vec3(0.0)) or 0.0/0.0: click such a pixel to see the statement that made it.",
+            "着色器输出的颜色不是有限数，例如 normalize(vec3(0.0)) 或 0.0/0.0：单击这样的像素，查看产生它的语句。",
+        ));
     }
 }

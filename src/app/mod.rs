@@ -44,6 +44,8 @@ pub struct Panels {
     pub matrix_card: bool,
     /// The list of keyboard shortcuts (F1 or ?).
     pub keys: bool,
+    /// The shader editor (S).
+    pub shader: bool,
 }
 
 impl Panels {
@@ -56,6 +58,7 @@ impl Panels {
             inspector: !presenting,
             matrix_card: true,
             keys: false,
+            shader: false,
         }
     }
 }
@@ -74,6 +77,7 @@ pub struct PipelensApp {
     observer_view: ObserverView,
     compare_view: CompareView,
     inspector: inspector::Inspector,
+    shader_editor: views::shader::ShaderEditor,
     classroom: bool,
     export_dir: String,
     export_result: Option<Receiver<Result<Vec<PathBuf>, String>>>,
@@ -101,6 +105,7 @@ impl PipelensApp {
             observer_view: ObserverView::default(),
             compare_view: CompareView::default(),
             inspector: inspector::Inspector::default(),
+            shader_editor: views::shader::ShaderEditor::default(),
             classroom: false,
             export_dir: "pipelens-export".to_owned(),
             export_result: None,
@@ -216,6 +221,19 @@ impl PipelensApp {
                         &mut self.inspector,
                         &self.session,
                         capture,
+                    ));
+                });
+        }
+        if self.panels.shader {
+            egui::Panel::right("shader")
+                .default_size(520.0)
+                .resizable(true)
+                .show(ui, |ui| {
+                    ui.heading(lang.tr("Shaders (GLSL)", "着色器（GLSL）"));
+                    self.commands.extend(views::shader::ui(
+                        ui,
+                        &mut self.shader_editor,
+                        &self.session,
                     ));
                 });
         }

@@ -253,12 +253,16 @@ impl Session {
     /// What the current view needs a capture to keep: the buffer a pixel stage shows, and every
     /// term while a pixel is inspected (the inspector lists them all and draws the lighting
     /// vectors, and another pixel clicked is explained at once). A draft keeps the inspected
-    /// pixel's terms only: writing every buffer would cost it a quarter of its time.
+    /// pixel's terms only: writing every buffer would cost it a quarter of its time. Where
+    /// objects run shaders, the inspected pixel is named in the full capture too: the shaders'
+    /// runs are traced at that pixel only, so another pixel clicked renders again.
     #[must_use]
     pub fn capture_needed(&self) -> Capture {
         let shown = Capture::showing([self.selection.buffer]);
+        let shaders = self.spec.scene.objects.iter().any(|o| o.shader.is_some());
         match self.selection.pixel {
             Some(_) if self.drafting => shown.with_pixel(self.selection.pixel),
+            Some(_) if shaders => Capture::FULL.with_pixel(self.selection.pixel),
             Some(_) => Capture::FULL,
             None => shown,
         }
@@ -278,8 +282,12 @@ impl Session {
         let Some(kept) = self.capture.as_ref().map(|c| c.settings.capture) else {
             return;
         };
-        let missing =
-            !kept.covers(self.capture_needed()) || (self.observer_shown() && !self.observer_asked);
+        let needed = self.capture_needed();
+        // Shaders are traced at the captured pixel only: another pixel needs another run.
+        let shaders = self.spec.scene.objects.iter().any(|o| o.shader.is_some());
+        let missing = !kept.covers(needed)
+            || (shaders && needed.pixel.is_some() && kept.pixel != needed.pixel)
+            || (self.observer_shown() && !self.observer_asked);
         if !self.rendering() && missing {
             self.request_render();
         }

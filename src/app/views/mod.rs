@@ -9,6 +9,7 @@ pub mod navigator;
 pub mod observer;
 pub mod params;
 pub mod pixels;
+pub mod shader;
 pub mod typeset;
 
 use egui::{Color32, Pos2, Rect, RichText, Ui};

@@ -5,6 +5,7 @@
 mod matrices;
 mod pixel;
 mod rotation;
+mod shader_trace;
 mod vertices;
 
 use egui::Ui;

@@ -54,6 +54,19 @@ pub fn ui(ui: &mut Ui, session: &Session, capture: &FrameCapture, record: Option
         &style,
     );
     swatch(ui, record.color);
+    if capture.shaders.is_some() {
+        // The colour is the student's shader's: its run comes first; the derivation below
+        // still tells how the fragment got here, and what pipelens' own shading would give.
+        super::shader_trace::ui(ui, capture, lang);
+        ui.separator();
+        ui.label(
+            RichText::new(lang.tr(
+                "How the fragment got here (and what pipelens' own shading would make of it):",
+                "片元如何到达这里（以及 pipelens 自带着色会得到什么）：",
+            ))
+            .italics(),
+        );
+    }
     match &record.explanation {
         Some(e) => explanation(ui, e, lang),
         None => {

@@ -1,0 +1,121 @@
+//! The shader debugger in the pixel inspector: each fragment the student's fragment shader ran
+//! for at the inspected pixel, the inputs it received (interpolated), then its run statement by
+//! statement with every value written, and the colour it wrote or its `discard`.
+
+use egui::{RichText, Ui};
+use pipeline::capture::{FragmentTrace, FrameCapture};
+
+use crate::vocabulary::{Lang, num};
+
+/// The fragment shader's runs at the inspected pixel, when the frame ran one.
+pub(super) fn ui(ui: &mut Ui, capture: &FrameCapture, lang: Lang) {
+    let Some(record) = &capture.shaders else {
+        return;
+    };
+    ui.label(
+        RichText::new(lang.tr(
+            "Your fragment shader at this pixel",
+            "你的片元着色器在此像素",
+        ))
+        .strong(),
+    );
+    if record.pixel.is_empty() {
+        ui.label(lang.tr(
+            "It did not run here: no triangle of an object with shaders covers this pixel.",
+            "它没有在这里运行：没有带着色器的物体的三角形覆盖此像素。",
+        ));
+    }
+    for (k, f) in record.pixel.iter().enumerate() {
+        fragment(ui, k, f, lang);
+    }
+    if record.not_finite > 0 {
+        ui.colored_label(
+            ui.visuals().warn_fg_color,
+            format!(
+                "{} {}",
+                record.not_finite,
+                lang.tr(
+                    "pixels of this frame came out NaN or infinite (drawn black).",
+                    "个像素的结果为 NaN 或无穷大（画成黑色）。"
+                )
+            ),
+        );
+    }
+}
+
+fn fragment(ui: &mut Ui, k: usize, f: &FragmentTrace, lang: Lang) {
+    let title = format!(
+        "{} {} · {} {} · {} {}",
+        lang.tr("fragment", "片元"),
+        k + 1,
+        lang.tr("triangle", "三角形"),
+        f.primitive,
+        f.samples,
+        lang.tr("sample(s)", "个采样"),
+    );
+    egui::CollapsingHeader::new(title)
+        .id_salt(("shader fragment", k))
+        .default_open(true)
+        .show(ui, |ui| {
+            ui.label(
+                RichText::new(lang.tr(
+                    "received (interpolated across the triangle)",
+                    "收到的输入（在三角形上插值）",
+                ))
+                .italics(),
+            );
+            egui::Grid::new(("shader inputs", k))
+                .striped(true)
+                .show(ui, |ui| {
+                    for (name, value) in &f.inputs {
+                        ui.monospace(name);
+                        ui.monospace(value);
+                        ui.end_row();
+                    }
+                });
+            ui.label(
+                RichText::new(lang.tr("ran, statement by statement", "逐条语句的执行")).italics(),
+            );
+            egui::Grid::new(("shader trace", k))
+                .striped(true)
+                .show(ui, |ui| {
+                    for line in &f.trace {
+                        ui.monospace(format!("{} {}", lang.tr("line", "行"), line.line));
+                        if not_finite(&line.text) {
+                            // The statement where a value stopped being a number: flagged.
+                            ui.label(
+                                RichText::new(format!("{}   ⚠ NaN/∞", line.text))
+                                    .monospace()
+                                    .color(ui.visuals().error_fg_color),
+                            );
+                        } else {
+                            ui.monospace(&line.text);
+                        }
+                        ui.end_row();
+                    }
+                });
+            match f.output {
+                Some(c) => {
+                    ui.monospace(format!(
+                        "→ vec4({}, {}, {}, {})",
+                        num(c[0]),
+                        num(c[1]),
+                        num(c[2]),
+                        num(c[3])
+                    ));
+                }
+                None => {
+                    ui.label(lang.tr(
+                        "→ discarded: what lies behind shows instead.",
+                        "→ 被丢弃（discard）：显示其后方的表面。",
+                    ));
+                }
+            }
+        });
+}
+
+/// Whether a traced value holds NaN or an infinity (as the trace writes them: `NaN`, `inf`).
+fn not_finite(text: &str) -> bool {
+    text.split(|c: char| !(c.is_alphanumeric() || c == '-'))
+        .any(|w| matches!(w, "NaN" | "inf" | "-inf"))
+}

@@ -1,0 +1,249 @@
+//! The shader panel: the vertex and fragment shaders of the scene as source the student edits,
+//! with line numbers, highlighting and each message under the tabs with its line. A source that
+//! compiles is applied as one types (or on Ctrl+Enter); one that does not keeps the last good
+//! picture on screen. The source lives in the app (in the browser too, in the page).
+
+use std::sync::Arc;
+
+use egui::{Color32, RichText, Ui};
+use pipeline::scene::ObjectShader;
+use pipeline::shader::{self, BUILTIN_FRAGMENT, BUILTIN_VERTEX, Programs, Stage, StageError};
+
+use crate::app::session::{Command, Session};
+use crate::vocabulary::Lang;
+
+/// The panel's state: both sources, the tab shown, the messages of the last compile.
+pub struct ShaderEditor {
+    /// The tab shown.
+    pub stage: Stage,
+    /// The vertex shader's source.
+    pub vertex: String,
+    /// The fragment shader's source.
+    pub fragment: String,
+    /// The messages of the last compile (empty: it compiled).
+    pub errors: Vec<StageError>,
+    /// The programs the sources were last taken from or applied as: when the scene's differ (a
+    /// lesson step brought its own), the sources are taken from the scene again.
+    shown: Option<Arc<Programs>>,
+}
+
+impl Default for ShaderEditor {
+    fn default() -> Self {
+        Self {
+            stage: Stage::Fragment,
+            vertex: BUILTIN_VERTEX.to_owned(),
+            fragment: BUILTIN_FRAGMENT.to_owned(),
+            errors: Vec::new(),
+            shown: None,
+        }
+    }
+}
+
+impl ShaderEditor {
+    /// Compiles both sources; when they link, the command that gives every object of the
+    /// scene these shaders, else the messages are kept and nothing changes.
+    pub fn apply(&mut self, session: &Session) -> Option<Command> {
+        match shader::link(Some(&self.vertex), Some(&self.fragment)) {
+            Ok(programs) => {
+                self.errors.clear();
+                let programs = Arc::new(programs);
+                self.shown = Some(Arc::clone(&programs));
+                let mut spec = session.spec.clone();
+                for o in &mut spec.scene.objects {
+                    o.shader = Some(ObjectShader {
+                        programs: Arc::clone(&programs),
+                        time: 0.0,
+                    });
+                }
+                Some(Command::SetSpec(Box::new(spec)))
+            }
+            Err(e) => {
+                self.errors = e;
+                None
+            }
+        }
+    }
+
+    /// Takes the scene's own shaders (its first object's) when they are not the ones shown.
+    fn load(&mut self, session: &Session) {
+        let Some(sh) = session
+            .spec
+            .scene
+            .objects
+            .iter()
+            .find_map(|o| o.shader.as_ref())
+        else {
+            return;
+        };
+        if self
+            .shown
+            .as_ref()
+            .is_some_and(|p| Arc::ptr_eq(p, &sh.programs))
+        {
+            return;
+        }
+        self.vertex.clone_from(&sh.programs.vertex.source);
+        self.fragment.clone_from(&sh.programs.fragment.source);
+        self.errors.clear();
+        self.shown = Some(Arc::clone(&sh.programs));
+    }
+}
+
+/// The panel. Returns the command that applies the shaders, when they changed and compile.
+pub fn ui(ui: &mut Ui, editor: &mut ShaderEditor, session: &Session) -> Option<Command> {
+    let lang = session.lang;
+    editor.load(session);
+    let mut apply = false;
+    ui.horizontal(|ui| {
+        for (stage, en, zh) in [
+            (Stage::Vertex, "Vertex shader", "顶点着色器"),
+            (Stage::Fragment, "Fragment shader", "片元着色器"),
+        ] {
+            let failed = editor.errors.iter().any(|e| e.stage == stage);
+            let label = if failed {
+                format!("{} (!)", lang.tr(en, zh))
+            } else {
+                lang.tr(en, zh).to_owned()
+            };
+            ui.selectable_value(&mut editor.stage, stage, label);
+        }
+    });
+    ui.horizontal(|ui| {
+        apply |= ui
+            .button(lang.tr("Apply", "应用"))
+            .on_hover_text(lang.tr("Compile and draw with these shaders (Ctrl+Enter)", "编译并用这些着色器绘制（Ctrl+Enter）"))
+            .clicked();
+        if ui
+            .button(lang.tr("pipelens' own", "pipelens 自带"))
+            .on_hover_text(lang.tr(
+                "Start again from pipelens' own shading, written as GLSL: gl_Position = mvp·p; Blinn-Phong per pixel",
+                "从 pipelens 自带的着色（GLSL 写成）重新开始：gl_Position = mvp·p；逐像素 Blinn-Phong",
+            ))
+            .clicked()
+        {
+            editor.vertex = BUILTIN_VERTEX.to_owned();
+            editor.fragment = BUILTIN_FRAGMENT.to_owned();
+            apply = true;
+        }
+    });
+    messages(ui, editor, session, lang);
+    let source = match editor.stage {
+        Stage::Vertex => &mut editor.vertex,
+        Stage::Fragment => &mut editor.fragment,
+    };
+    let error_lines: Vec<usize> = editor
+        .errors
+        .iter()
+        .filter(|e| e.stage == editor.stage)
+        .map(|e| e.error.line)
+        .collect();
+    let edited = code(ui, source, &error_lines);
+    apply |= ui.input(|i| i.modifiers.ctrl && i.key_pressed(egui::Key::Enter));
+    if edited || apply {
+        editor.apply(session)
+    } else {
+        None
+    }
+}
+
+/// The messages of the last compile, each with its stage and line.
+fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
+    if let (true, Some(e)) = (editor.errors.is_empty(), &session.error) {
+        // It compiled, but its run stopped (an endless loop, an index out of range …).
+        ui.label(
+            RichText::new(format!(
+                "{} {e}",
+                lang.tr(
+                    "Compiles, but the run stopped; the last good picture stays on screen:",
+                    "可以编译，但运行中止；画面保持上一次成功的结果："
+                )
+            ))
+            .color(ui.visuals().error_fg_color),
+        );
+        return;
+    }
+    if editor.errors.is_empty() {
+        ui.label(
+            RichText::new(lang.tr(
+                "Compiled: the picture is drawn with these shaders.",
+                "已编译：画面由这些着色器绘制。",
+            ))
+            .color(Color32::from_rgb(90, 170, 90)),
+        );
+        return;
+    }
+    ui.label(
+        RichText::new(lang.tr(
+            "Does not compile: the last good picture stays on screen.",
+            "无法编译：画面保持上一次成功的结果。",
+        ))
+        .color(ui.visuals().error_fg_color),
+    );
+    for e in &editor.errors {
+        ui.label(
+            RichText::new(format!(
+                "{} {}:{}: {}",
+                e.stage.name(),
+                e.error.line,
+                e.error.column,
+                e.error.message
+            ))
+            .monospace()
+            .color(ui.visuals().error_fg_color),
+        );
+    }
+}
+
+/// The source with line numbers (a lines with a message marked), highlighted as C-like code.
+/// Returns whether it was edited.
+fn code(ui: &mut Ui, source: &mut String, error_lines: &[usize]) -> bool {
+    let mut changed = false;
+    egui::ScrollArea::both()
+        .id_salt("shader source")
+        .show(ui, |ui| {
+            ui.horizontal_top(|ui| {
+                let lines = source.lines().count().max(1) + usize::from(source.ends_with('\n'));
+                let gutter: String = (1..=lines)
+                    .map(|n| {
+                        if error_lines.contains(&n) {
+                            format!("!{n:>3}\n")
+                        } else {
+                            format!("{n:>4}\n")
+                        }
+                    })
+                    .collect();
+                ui.add(
+                    egui::Label::new(
+                        RichText::new(gutter.trim_end())
+                            .monospace()
+                            .color(ui.visuals().weak_text_color()),
+                    )
+                    .selectable(false),
+                );
+                let theme = egui_extras::syntax_highlighting::CodeTheme::from_style(ui.style());
+                // No wrapping: a source line is one line, as its number says.
+                let mut layouter = |ui: &Ui, text: &dyn egui::TextBuffer, _wrap_width: f32| {
+                    let mut job = egui_extras::syntax_highlighting::highlight(
+                        ui.ctx(),
+                        ui.style(),
+                        &theme,
+                        text.as_str(),
+                        "c",
+                    );
+                    job.wrap.max_width = f32::INFINITY;
+                    ui.fonts_mut(|f| f.layout_job(job))
+                };
+                changed = ui
+                    .add(
+                        egui::TextEdit::multiline(source)
+                            .code_editor()
+                            .desired_rows(lines.max(24))
+                            .desired_width(640.0)
+                            .lock_focus(true)
+                            .layouter(&mut layouter),
+                    )
+                    .changed();
+            });
+        });
+    changed
+}
