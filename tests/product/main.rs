@@ -11,4 +11,5 @@ mod lessons;
 mod observer;
 mod reference;
 mod scene_file;
+mod shader_lesson;
 mod support;

@@ -40,4 +40,4 @@ pub mod texture;
 pub mod transform;
 pub mod vertex;
 
-pub use render::{RenderError, StageTimes, render, render_reusing, render_timed};
+pub use render::{RenderError, StageTimes, render, render_reusing, render_timed, trace_vertex};

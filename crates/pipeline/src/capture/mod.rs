@@ -233,6 +233,22 @@ pub struct FragmentTrace {
     pub output: Option<[f32; 4]>,
 }
 
+/// One vertex through the vertex shader: what it received, what each statement did, what it
+/// wrote (`gl_Position` among its outputs).
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct VertexTrace {
+    /// Its row in the vertex table.
+    pub row: u32,
+    /// Its object.
+    pub object: String,
+    /// Each attribute as the shader received it: `(name, value)`.
+    pub inputs: Vec<(String, String)>,
+    /// The run, statement by statement.
+    pub trace: Vec<crate::shader::TraceLine>,
+    /// Each output as written: `(name, value)`.
+    pub outputs: Vec<(String, String)>,
+}
+
 /// One object's vertex-shader results.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct VertexResults {

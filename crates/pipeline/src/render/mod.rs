@@ -14,6 +14,7 @@ mod fixtures;
 mod resolve;
 mod runs;
 mod shaders;
+pub use shaders::trace_vertex;
 
 use std::time::Duration;
 

@@ -4,6 +4,9 @@
 
 use egui::{RichText, Ui};
 use pipeline::capture::{FragmentTrace, FrameCapture};
+use pipeline::shader::TraceLine;
+
+use crate::app::session::Session;
 
 use crate::vocabulary::{Lang, num};
 
@@ -64,36 +67,11 @@ fn fragment(ui: &mut Ui, k: usize, f: &FragmentTrace, lang: Lang) {
                 ))
                 .italics(),
             );
-            egui::Grid::new(("shader inputs", k))
-                .striped(true)
-                .show(ui, |ui| {
-                    for (name, value) in &f.inputs {
-                        ui.monospace(name);
-                        ui.monospace(value);
-                        ui.end_row();
-                    }
-                });
+            values(ui, ("shader inputs", k), &f.inputs);
             ui.label(
                 RichText::new(lang.tr("ran, statement by statement", "逐条语句的执行")).italics(),
             );
-            egui::Grid::new(("shader trace", k))
-                .striped(true)
-                .show(ui, |ui| {
-                    for line in &f.trace {
-                        ui.monospace(format!("{} {}", lang.tr("line", "行"), line.line));
-                        if not_finite(&line.text) {
-                            // The statement where a value stopped being a number: flagged.
-                            ui.label(
-                                RichText::new(format!("{}   ⚠ NaN/∞", line.text))
-                                    .monospace()
-                                    .color(ui.visuals().error_fg_color),
-                            );
-                        } else {
-                            ui.monospace(&line.text);
-                        }
-                        ui.end_row();
-                    }
-                });
+            run(ui, ("shader trace", k), &f.trace, lang);
             match f.output {
                 Some(c) => {
                     ui.monospace(format!(
@@ -118,4 +96,80 @@ fn fragment(ui: &mut Ui, k: usize, f: &FragmentTrace, lang: Lang) {
 fn not_finite(text: &str) -> bool {
     text.split(|c: char| !(c.is_alphanumeric() || c == '-'))
         .any(|w| matches!(w, "NaN" | "inf" | "-inf"))
+}
+
+/// The selected vertex's run through its object's vertex shader, when the object has one: its
+/// attributes, each statement, its outputs (`gl_Position` the clip position of the table).
+pub(super) fn vertex(ui: &mut Ui, session: &Session, capture: &FrameCapture, row: usize) {
+    let lang = session.lang;
+    let traced = match pipeline::trace_vertex(&session.spec.scene, capture, row) {
+        Ok(Some(t)) => t,
+        Ok(None) => return,
+        Err(e) => {
+            ui.colored_label(ui.visuals().error_fg_color, e.to_string());
+            return;
+        }
+    };
+    egui::CollapsingHeader::new(
+        RichText::new(format!(
+            "{} {} ({})",
+            lang.tr("Your vertex shader at vertex", "你的顶点着色器在顶点"),
+            traced.row,
+            traced.object
+        ))
+        .strong(),
+    )
+    .id_salt("vertex shader run")
+    .default_open(true)
+    .show(ui, |ui| {
+        egui::ScrollArea::vertical()
+            .id_salt("vertex shader run scroll")
+            .max_height(ui.available_height() * 0.45)
+            .show(ui, |ui| {
+                ui.label(
+                    RichText::new(lang.tr("received (its attributes)", "收到的输入（它的属性）"))
+                        .italics(),
+                );
+                values(ui, "vertex inputs", &traced.inputs);
+                ui.label(
+                    RichText::new(lang.tr("ran, statement by statement", "逐条语句的执行"))
+                        .italics(),
+                );
+                run(ui, "vertex trace", &traced.trace, lang);
+                ui.label(RichText::new(lang.tr("wrote", "输出")).italics());
+                values(ui, "vertex outputs", &traced.outputs);
+            });
+    });
+    ui.separator();
+}
+
+/// Names and values, one a row.
+fn values(ui: &mut Ui, id: impl std::hash::Hash + std::fmt::Debug, rows: &[(String, String)]) {
+    egui::Grid::new(id).striped(true).show(ui, |ui| {
+        for (name, value) in rows {
+            ui.monospace(name);
+            ui.monospace(value);
+            ui.end_row();
+        }
+    });
+}
+
+/// A run, statement by statement, a value that is NaN or infinite flagged.
+fn run(ui: &mut Ui, id: impl std::hash::Hash + std::fmt::Debug, trace: &[TraceLine], lang: Lang) {
+    egui::Grid::new(id).striped(true).show(ui, |ui| {
+        for line in trace {
+            ui.monospace(format!("{} {}", lang.tr("line", "行"), line.line));
+            if not_finite(&line.text) {
+                // The statement where a value stopped being a number.
+                ui.label(
+                    RichText::new(format!("{}   ⚠ NaN/∞", line.text))
+                        .monospace()
+                        .color(ui.visuals().error_fg_color),
+                );
+            } else {
+                ui.monospace(&line.text);
+            }
+            ui.end_row();
+        }
+    });
 }

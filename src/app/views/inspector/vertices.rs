@@ -90,6 +90,9 @@ pub fn ui(
         .size(ui.style().text_styles[&egui::TextStyle::Small].size),
     );
     let selected = session.selection.vertex;
+    if let Some(row) = selected {
+        super::shader_trace::vertex(ui, session, capture, row as usize);
+    }
     let scroll_to = selected.filter(|v| inspector.scrolled_to != Some(*v));
     inspector.scrolled_to = selected;
     let size = ui.style().text_styles[&egui::TextStyle::Monospace].size;

@@ -353,22 +353,7 @@ impl FragmentShading<'_> {
             let centre = I64Vec2::new(px * ONE + ONE / 2, py * ONE + ONE / 2);
             self.lane_inputs(&sh.programs, t, object, centre, (px, py), k, inputs);
         }
-        let received = fs
-            .inputs
-            .iter()
-            .zip(inputs.iter())
-            .map(|(input, rows)| {
-                let v: Vec<String> = (0..input.components as usize)
-                    .map(|c| format!("{:.3}", f32::from_bits(rows[c * LANES + j])))
-                    .collect();
-                let value = if v.len() == 1 {
-                    v[0].clone()
-                } else {
-                    format!("vec{}({})", v.len(), v.join(", "))
-                };
-                (input.name.clone(), value)
-            })
-            .collect();
+        let received = super::lane_values(&fs.inputs, inputs, j);
         let refs: Vec<&[u32]> = inputs.iter().map(Vec::as_slice).collect();
         let tex = textures(fs, o);
         let bindings = Bindings {

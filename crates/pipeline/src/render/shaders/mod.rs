@@ -9,8 +9,9 @@
 //! centre: perspective-correct by default, `(Σ λ_i·a_i/w_i)/(Σ λ_i/w_i)`; `noperspective`
 //! affinely in the window, `Σ λ_i·a_i`; `flat` from the provoking (last) vertex.
 //!
-//! The depth test runs before the fragment shader (early z), so a discarded fragment leaves
-//! the background at its samples, not what lies behind it.
+//! The depth test runs before the fragment shader (early z); a fragment the shader discards is
+//! taken out of the test afterwards and the pixel rasterized again without it, so what lies
+//! behind it shows (see `discard`).
 
 use glam::{Vec3, Vec4};
 use rayon::prelude::*;
@@ -22,7 +23,7 @@ pub(in crate::render) use discard::peel_discarded;
 pub(in crate::render) use fragment::fragment_shaders;
 
 use super::RenderError;
-use crate::capture::{Matrices, ShaderRecord, VertexResults};
+use crate::capture::{FrameCapture, Matrices, ShaderRecord, VertexResults, VertexTrace};
 use crate::render::resolve::ResolveContext;
 use crate::scene::{Object, Scene};
 use crate::settings::RenderSettings;
@@ -145,6 +146,124 @@ pub(super) fn vertex_shaders(
         )?));
     }
     Ok(Some(out))
+}
+
+/// Row `row` of the vertex table through its object's vertex shader, traced: the attributes it
+/// received, each statement with the values it wrote, and its outputs. `scene` is the scene
+/// `capture` was drawn from (its figures and shadow expanded as the render expands them).
+/// `None` when the row is not in the table or its object runs pipelens' own vertex stage.
+///
+/// # Errors
+/// A run-time error of the vertex shader.
+pub fn trace_vertex(
+    scene: &Scene,
+    capture: &FrameCapture,
+    row: usize,
+) -> Result<Option<VertexTrace>, RenderError> {
+    let expanded;
+    let scene = if scene.shadow.is_some() || !scene.figures.is_empty() {
+        expanded = Scene {
+            objects: scene.drawn_objects().0,
+            shadow: None,
+            figures: Vec::new(),
+            ..scene.clone()
+        };
+        &expanded
+    } else {
+        scene
+    };
+    let Some(record) = capture.vertices.get(row) else {
+        return Ok(None);
+    };
+    let mut first = 0usize;
+    let Some((i, object)) = scene.objects.iter().enumerate().find(|(_, o)| {
+        let n = o.mesh.positions.len();
+        first += n;
+        row < first
+    }) else {
+        return Ok(None);
+    };
+    let Some(sh) = &object.shader else {
+        return Ok(None);
+    };
+    let index = row - (first - object.mesh.positions.len());
+    let vs = &sh.programs.vertex;
+    let u = uniforms(scene, &capture.settings, &capture.matrices, i, sh.time);
+    let mut m = vs.machine();
+    vs.set_uniforms(&mut m, &u);
+    let inputs: Vec<Vec<u32>> = vs
+        .inputs
+        .iter()
+        .map(|input| {
+            let mut rows = vec![0u32; input.components as usize * LANES];
+            if input.builtin == Some(naga::BuiltIn::VertexIndex) {
+                rows[0] = index as u32;
+            } else {
+                let location = shader::interface::attribute_location(&input.name);
+                let a = attribute(object, record, location, index);
+                for c in 0..input.components as usize {
+                    rows[c * LANES] = a[c].to_bits();
+                }
+            }
+            rows
+        })
+        .collect();
+    let refs: Vec<&[u32]> = inputs.iter().map(Vec::as_slice).collect();
+    let tex = textures(vs, object);
+    let sampler = crate::texture::Sampler::default();
+    let bindings = Bindings {
+        textures: &tex,
+        sampler: &sampler,
+    };
+    m.trace_lane(Some(0));
+    m.run(&refs, 1, 1, &bindings)
+        .map_err(|e| shader_error(shader::Stage::Vertex, object, &vs.run_error(&e)))?;
+    let events = m.take_trace();
+    let result = m.result();
+    let mut at = 0usize;
+    let outputs = vs
+        .outputs
+        .iter()
+        .map(|o| {
+            let n = o.components as usize;
+            let value = lane_value(&result[at * LANES..], n, 0);
+            at += n;
+            (o.name.clone(), value)
+        })
+        .collect();
+    Ok(Some(VertexTrace {
+        row: row as u32,
+        object: object.name.clone(),
+        inputs: lane_values(&vs.inputs, &inputs, 0),
+        trace: vs.describe(&events),
+        outputs,
+    }))
+}
+
+/// Lane `lane`'s value of a varying of `components` floats, rows `LANES` apart, as GLSL writes
+/// it: `0.500` or `vec3(0.000, 0.707, 0.707)`.
+pub(super) fn lane_value(rows: &[u32], components: usize, lane: usize) -> String {
+    let v: Vec<String> = (0..components)
+        .map(|c| format!("{:.3}", f32::from_bits(rows[c * LANES + lane])))
+        .collect();
+    if v.len() == 1 {
+        v[0].clone()
+    } else {
+        format!("vec{}({})", v.len(), v.join(", "))
+    }
+}
+
+/// Each varying's name and lane `lane`'s value (see [`lane_value`]).
+pub(super) fn lane_values(
+    varyings: &[shader::Varying],
+    rows: &[Vec<u32>],
+    lane: usize,
+) -> Vec<(String, String)> {
+    varyings
+        .iter()
+        .zip(rows)
+        .map(|(v, r)| (v.name.clone(), lane_value(r, v.components as usize, lane)))
+        .collect()
 }
 
 /// One attribute's value for mesh vertex `i` (see [`shader::interface::ATTRIBUTES`]).
