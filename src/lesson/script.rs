@@ -2,14 +2,16 @@
 //! and English, the stage and layout to show, parameter changes and animations, overlays, a
 //! highlighted pixel or vertex, and a question for self-study.
 
+mod animation;
+
 use std::path::Path;
 
 use pipeline::buffers::BufferKind;
 use pipeline::scene::ObjectShader;
 use toml::Spanned;
 
-use super::param::{self, Animation, Easing, Repeat, Value};
-use super::raw::{RawAnimate, RawLessonFile, RawStep, RawValue};
+use super::param::{self, Animation, Value};
+use super::raw::{RawLessonFile, RawStep, RawValue};
 use super::validate::Checker;
 use super::{Diagnostics, SceneSpec};
 use crate::vocabulary::{Comparison, Lang, Stage, Text};
@@ -542,74 +544,5 @@ impl Checker<'_> {
                 None
             })
             .collect()
-    }
-
-    fn animation(&mut self, a: &Spanned<RawAnimate>, spec: &SceneSpec) -> Option<Animation> {
-        let r = a.get_ref();
-        let from = self.value(&r.from)?;
-        let to = self.value(&r.to)?;
-        let same_kind = matches!(
-            (&from, &to),
-            (Value::Number(_), Value::Number(_)) | (Value::Vec3(_), Value::Vec3(_))
-        );
-        if !same_kind {
-            self.error(
-                r.to.span(),
-                "`from` and `to` must both be numbers or both [x, y, z]: only those can move",
-            );
-            return None;
-        }
-        let seconds = *r.seconds.get_ref();
-        if !(seconds > 0.0 && seconds <= 600.0) {
-            self.error(
-                r.seconds.span(),
-                format!("`seconds` must be more than 0 and at most 600, got {seconds}"),
-            );
-            return None;
-        }
-        let name = r.param.get_ref();
-        for (end, span) in [(&from, r.from.span()), (&to, r.to.span())] {
-            let mut probe = spec.clone();
-            if let Err(e) = param::apply(&mut probe, name, end) {
-                let span = if e.starts_with("unknown parameter") {
-                    r.param.span()
-                } else {
-                    span
-                };
-                self.error(span, e);
-                return None;
-            }
-        }
-        let easing = match &r.easing {
-            Some(v) => self.choice(
-                "easing",
-                v,
-                &[
-                    ("linear", Easing::Linear),
-                    ("ease_in_out", Easing::EaseInOut),
-                ],
-            )?,
-            None => Easing::EaseInOut,
-        };
-        let repeat = match &r.repeat {
-            Some(v) => self.choice(
-                "repeat",
-                v,
-                &[
-                    ("once", Repeat::Once),
-                    ("loop", Repeat::Loop),
-                    ("ping_pong", Repeat::PingPong),
-                ],
-            )?,
-            None => Repeat::PingPong,
-        };
-        Some(Animation {
-            param: name.clone(),
-            from,
-            to,
-            seconds: seconds as f32,
-            easing,
-            repeat,
-        })
     }
 }
