@@ -139,3 +139,100 @@ fn the_selected_vertex_is_traced_through_its_vertex_shader() {
             .is_none()
     );
 }
+
+/// Why a lesson's scene at one step is left out of the built-in-as-GLSL comparison: what the
+/// shipped shaders do not model (each named, so a reader sees what is compared).
+fn not_modelled(spec: &pipelens::lesson::SceneSpec) -> Option<&'static str> {
+    let s = &spec.settings;
+    let objects = &spec.scene.objects;
+    if objects.iter().any(|o| o.shader.is_some()) {
+        Some("the lesson runs its own shaders")
+    } else if pipeline::shader::builtin_sources(s.shading, s.reflection).is_none() {
+        Some("flat shading, or Gouraud with r·v: no shipped shader pair")
+    } else if !s.perspective_correct {
+        Some("affine interpolation (a shader writes `noperspective` for that)")
+    } else if s.per_sample_shading {
+        Some("per-sample shading (a fragment shader runs once per pixel)")
+    } else if objects
+        .iter()
+        .any(|o| o.detail.is_some() || o.displacement.is_some())
+    {
+        Some("a bump or displacement map")
+    } else if objects.iter().any(|o| o.environment.is_some()) {
+        Some("a mirror's environment lookup")
+    } else if s.shading != pipeline::shade::Frequency::Unlit && objects.iter().any(|o| !o.lit) {
+        Some("an unlit object in a lit scene")
+    } else if spec.scene.shadow.is_some() || !spec.scene.figures.is_empty() {
+        Some("figures or a shadow pass drawn beside the objects")
+    } else {
+        None
+    }
+}
+
+#[test]
+fn pipelens_own_shading_as_glsl_gives_the_built_in_pixels_on_the_lessons_scenes() {
+    let mut compared = Vec::new();
+    let mut left_out = Vec::new();
+    for path in crate::support::lesson_files() {
+        let Document::Lesson(lesson) = load_file(&path).unwrap_or_else(|e| panic!("{e}")) else {
+            continue;
+        };
+        for k in 0..lesson.steps.len() {
+            let mut spec = lesson.spec_at(k);
+            let case = format!("{} step {}", lesson.id, k + 1);
+            if let Some(why) = not_modelled(&spec) {
+                left_out.push(format!("{case}: {why}"));
+                continue;
+            }
+            spec.settings.width = spec.settings.width.min(160);
+            spec.settings.height = spec.settings.height.min(100);
+            // A mip-mapped lookup takes its level λ from derivatives: a fragment shader's from
+            // its 2×2 quad, as a GPU does (the reference check compares that with llvmpipe),
+            // the built-in path's from each pixel's own neighbours to the right and above.
+            // Where λ falls between levels the two blend differently, so here the lookups
+            // read the base level in both, and everything else must agree to 1/255.
+            spec.settings.sampler.mipmap = pipeline::texture::Mipmap::None;
+            spec.settings.sampler.anisotropy = 1;
+            let (vs, fs) =
+                pipeline::shader::builtin_sources(spec.settings.shading, spec.settings.reflection)
+                    .expect("checked above");
+            let glsl =
+                pipelens::bench::with_shaders(&spec.scene, Some(vs), Some(fs)).expect("links");
+            let built_in = pipeline::render(&spec.scene, &spec.settings).expect("renders");
+            let shaded =
+                pipeline::render(&glsl, &spec.settings).unwrap_or_else(|e| panic!("{case}: {e}"));
+            assert_eq!(
+                built_in.pixels.coverage, shaded.pixels.coverage,
+                "{case}: coverage"
+            );
+            let (worst, at) = built_in
+                .pixels
+                .color
+                .iter()
+                .zip(&shaded.pixels.color)
+                .enumerate()
+                .map(|(i, (a, b))| ((0..3).map(|c| (a[c] - b[c]).abs()).fold(0.0, f32::max), i))
+                .fold((0.0, 0), |m, d| if d.0 > m.0 { d } else { m });
+            assert!(
+                worst <= 1.0 / 255.0,
+                "{case} ({:?}, {:?}): pixel {at} differs by {worst}: {:?} built in, {:?} as GLSL",
+                spec.settings.shading,
+                spec.settings.reflection,
+                built_in.pixels.color[at],
+                shaded.pixels.color[at]
+            );
+            compared.push(case);
+        }
+    }
+    eprintln!(
+        "compared {} steps; left out {}:\n  {}",
+        compared.len(),
+        left_out.len(),
+        left_out.join("\n  ")
+    );
+    assert!(
+        compared.len() >= 100,
+        "compared only {} steps: {compared:?}",
+        compared.len()
+    );
+}

@@ -14,6 +14,39 @@ pub const BUILTIN_VERTEX: &str = include_str!("builtin/pipelens.vert");
 /// pipelens' per-pixel Blinn-Phong lighting as GLSL.
 pub const BUILTIN_FRAGMENT: &str = include_str!("builtin/blinn_phong.frag");
 
+/// pipelens' per-pixel lighting with Phong's `r·v` as GLSL.
+pub const BUILTIN_PHONG_FRAGMENT: &str = include_str!("builtin/phong.frag");
+
+/// pipelens' unlit shading as GLSL: the texel or the vertex colour.
+pub const BUILTIN_UNLIT_FRAGMENT: &str = include_str!("builtin/unlit.frag");
+
+/// pipelens' Gouraud shading as GLSL, the vertex half: Blinn-Phong at each vertex.
+pub const BUILTIN_GOURAUD_VERTEX: &str = include_str!("builtin/gouraud.vert");
+
+/// pipelens' Gouraud shading as GLSL, the fragment half: the interpolated lighting, the texel.
+pub const BUILTIN_GOURAUD_FRAGMENT: &str = include_str!("builtin/gouraud.frag");
+
+/// The GLSL of pipelens' own shading with `shading` and `reflection`, `(vertex, fragment)`:
+/// running it gives the built-in pixels. `None` for flat shading, which lights each face once
+/// at its centroid (a fragment shader sees neither the face's vertices nor its centroid), and
+/// for Gouraud shading with Phong's `r·v` (not shipped: change `n·h` in gouraud.vert).
+#[must_use]
+pub fn builtin_sources(
+    shading: crate::shade::Frequency,
+    reflection: crate::shade::Reflection,
+) -> Option<(&'static str, &'static str)> {
+    use crate::shade::{Frequency, Reflection};
+    match (shading, reflection) {
+        (Frequency::Unlit, _) => Some((BUILTIN_VERTEX, BUILTIN_UNLIT_FRAGMENT)),
+        (Frequency::Phong, Reflection::BlinnPhong) => Some((BUILTIN_VERTEX, BUILTIN_FRAGMENT)),
+        (Frequency::Phong, Reflection::Phong) => Some((BUILTIN_VERTEX, BUILTIN_PHONG_FRAGMENT)),
+        (Frequency::Gouraud, Reflection::BlinnPhong) => {
+            Some((BUILTIN_GOURAUD_VERTEX, BUILTIN_GOURAUD_FRAGMENT))
+        }
+        (Frequency::Gouraud, Reflection::Phong) | (Frequency::Flat, _) => None,
+    }
+}
+
 /// Where a fragment input comes from: the vertex output's first component in the vertex
 /// shader's result, and how many.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -28,7 +28,10 @@ use std::ops::Range;
 use naga::{Binding, BuiltIn, Interpolation, TypeInner};
 
 pub use interface::Uniforms;
-pub use link::{BUILTIN_FRAGMENT, BUILTIN_VERTEX, Link, Programs, StageError, link};
+pub use link::{
+    BUILTIN_FRAGMENT, BUILTIN_GOURAUD_FRAGMENT, BUILTIN_GOURAUD_VERTEX, BUILTIN_PHONG_FRAGMENT,
+    BUILTIN_UNLIT_FRAGMENT, BUILTIN_VERTEX, Link, Programs, StageError, builtin_sources, link,
+};
 pub use machine::{Bindings, Event, LANES, Machine, RunError};
 pub use trace::{Trace, TraceLine, glsl_type};
 

@@ -1,0 +1,60 @@
+#version 330 core
+// pipelens' per-pixel (Phong-frequency) lighting with Phong's reflection model, as a shader:
+//   L = Σ k_a·c·I_a + Σ f_att·f_spot·(k_d·c·I·max(n·l, 0) + k_s·I·max(r·v, 0)^p)
+// with r = reflect(−l, n) = 2(n·l)n − l, f_att = 1/(a + b·d + c·d²), f_spot = (cos φ)^e inside
+// the cone. blinn_phong.frag differs in one line: n·h in place of r·v.
+uniform vec3 eye;
+uniform vec3 ka;
+uniform vec3 kd;
+uniform vec3 ks;
+uniform float shininess;
+uniform Light lights[MAX_LIGHTS];
+uniform int light_count;
+uniform bool use_tex;
+uniform sampler2D tex;
+
+in vec3 w_pos;
+in vec3 w_nrm;
+in vec2 v_uv;
+in vec3 v_color;
+
+out vec4 color;
+
+void main() {
+    vec3 n = normalize(w_nrm);
+    vec3 v = normalize(eye - w_pos);
+    vec3 c = use_tex ? texture(tex, v_uv).rgb : v_color;   // the surface colour
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < light_count; i++) {
+        Light light = lights[i];
+        if (light.kind == LIGHT_AMBIENT) {
+            sum += ka * c * light.intensity;
+            continue;
+        }
+        vec3 l;
+        float f = 1.0;
+        if (light.kind == LIGHT_DIRECTIONAL) {
+            l = normalize(-light.direction);
+        } else {
+            vec3 to_light = light.position - w_pos;
+            float d = length(to_light);
+            l = normalize(to_light);
+            vec3 abc = light.attenuation;
+            float denom = abc.x + abc.y * d + abc.z * d * d;
+            if (denom > 0.0) {
+                f = 1.0 / denom;
+            }
+            if (light.kind == LIGHT_SPOT) {
+                float cos_phi = dot(-l, normalize(light.direction));
+                f *= cos_phi < light.cutoff_cos ? 0.0 : pow(max(cos_phi, 0.0), light.exponent);
+            }
+        }
+        float n_dot_l = dot(n, l);
+        vec3 r = reflect(-l, n);
+        sum += f * kd * c * light.intensity * max(n_dot_l, 0.0);
+        if (n_dot_l > 0.0) {
+            sum += f * ks * light.intensity * pow(max(dot(r, v), 0.0), shininess);
+        }
+    }
+    color = vec4(sum, 1.0);
+}
