@@ -6,7 +6,8 @@
 //  3. the Chinese interface (?lang=zh) renders: its top bar differs from the English one, and a
 //     Chinese lesson step is reached the same way;
 //  4. the tour's frame time in the browser is read from <html data-frame-ms> and printed;
-//  5. a lesson file dropped on the page opens.
+//  5. a lesson file dropped on the page opens;
+//  6. the shader lesson runs the student's GLSL in the page, and S opens the shader panel.
 // Screenshots are written to the output folder for a person to look at.
 import { chromium } from "playwright-core";
 import { PNG } from "pngjs";
@@ -142,6 +143,24 @@ await zh2.evaluate((t) => {
 if (await waitForTitle(zh2, /^pipelens — 07-rasterization — step 1\/5$/, "a lesson dropped on the page opens")) {
   await zh2.waitForTimeout(2000);
   await zh2.screenshot({ path: `${out}/dropped-zh.png` });
+}
+
+// 6. The shader lesson: GLSL compiled by naga and run by pipelens' interpreter in the page; S
+// opens the shader panel on the right (its text changes that side of the window).
+const sh = await open("?lesson=24-shader-programs&step=5", "shaders");
+if (await waitForTitle(sh, /^pipelens — 24-shader-programs — step 5\/7$/, "the shader lesson opens on its toon step")) {
+  await sh.waitForTimeout(3000);
+  const before = PNG.sync.read(await sh.screenshot({ path: `${out}/shader-lesson-toon.png` }));
+  await sh.focus("#pipelens");
+  await sh.keyboard.press("s");
+  await sh.waitForTimeout(2000);
+  const after = PNG.sync.read(await sh.screenshot({ path: `${out}/shader-panel.png` }));
+  let differ = 0;
+  for (let y = 60; y < 700; y++) for (let x = Math.floor(after.width / 2); x < after.width; x++) {
+    const i = (y * after.width + x) * 4;
+    if (Math.abs(after.data[i] - before.data[i]) > 40) differ += 1;
+  }
+  check(differ > 20000, `S opens the shader panel (${differ} pixels of the right half changed)`);
 }
 
 check(errors.length === 0, `no errors in the pages${errors.length ? ": " + errors.join(" | ") : ""}`);

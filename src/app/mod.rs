@@ -234,6 +234,7 @@ impl PipelensApp {
                         ui,
                         &mut self.shader_editor,
                         &self.session,
+                        std::path::Path::new(self.export_dir.trim()),
                     ));
                 });
         }

@@ -22,6 +22,8 @@ pub struct ShaderEditor {
     pub fragment: String,
     /// The messages of the last compile (empty: it compiled).
     pub errors: Vec<StageError>,
+    /// What the last Save did: the files written (or downloaded), or why it failed.
+    saved: Option<Result<String, String>>,
     /// The programs the sources were last taken from or applied as: when the scene's differ (a
     /// lesson step brought its own), the sources are taken from the scene again.
     shown: Option<Arc<Programs>>,
@@ -34,6 +36,7 @@ impl Default for ShaderEditor {
             vertex: BUILTIN_VERTEX.to_owned(),
             fragment: BUILTIN_FRAGMENT.to_owned(),
             errors: Vec::new(),
+            saved: None,
             shown: None,
         }
     }
@@ -90,7 +93,13 @@ impl ShaderEditor {
 }
 
 /// The panel. Returns the command that applies the shaders, when they changed and compile.
-pub fn ui(ui: &mut Ui, editor: &mut ShaderEditor, session: &Session) -> Option<Command> {
+/// Save writes the sources into `save_dir` (in the browser: downloads them).
+pub fn ui(
+    ui: &mut Ui,
+    editor: &mut ShaderEditor,
+    session: &Session,
+    save_dir: &std::path::Path,
+) -> Option<Command> {
     let lang = session.lang;
     editor.load(session);
     let mut apply = false;
@@ -116,16 +125,38 @@ pub fn ui(ui: &mut Ui, editor: &mut ShaderEditor, session: &Session) -> Option<C
         if ui
             .button(lang.tr("pipelens' own", "pipelens 自带"))
             .on_hover_text(lang.tr(
-                "Start again from pipelens' own shading, written as GLSL: gl_Position = mvp·p; Blinn-Phong per pixel",
-                "从 pipelens 自带的着色（GLSL 写成）重新开始：gl_Position = mvp·p；逐像素 Blinn-Phong",
+                "Start again from pipelens' own shading for the current settings, written as GLSL (unlit; Gouraud; Phong shading with n·h or r·v): it draws the same pixels. Flat shading lights each face once at its centroid, which no fragment shader sees: there, Blinn-Phong per pixel.",
+                "从 pipelens 针对当前设置的自带着色（GLSL 写成）重新开始（无光照；Gouraud；Phong 着色，n·h 或 r·v）：画出的像素相同。平面着色在每个面的重心处计算一次光照，片元着色器看不到重心：此时用逐像素 Blinn-Phong。",
             ))
             .clicked()
         {
-            editor.vertex = BUILTIN_VERTEX.to_owned();
-            editor.fragment = BUILTIN_FRAGMENT.to_owned();
+            let s = &session.spec.settings;
+            let (vertex, fragment) = shader::builtin_sources(s.shading, s.reflection)
+                .unwrap_or((BUILTIN_VERTEX, BUILTIN_FRAGMENT));
+            editor.vertex = vertex.to_owned();
+            editor.fragment = fragment.to_owned();
             apply = true;
         }
+        if ui
+            .button(lang.tr("Save", "保存"))
+            .on_hover_text(lang.tr(
+                "Writes shader.vert and shader.frag into the export folder (in the browser: downloads them). A lesson reads them with shader = { vertex = \"shader.vert\", fragment = \"shader.frag\" }.",
+                "把 shader.vert 和 shader.frag 写入导出文件夹（在浏览器中：下载它们）。课程用 shader = { vertex = \"shader.vert\", fragment = \"shader.frag\" } 读取它们。",
+            ))
+            .clicked()
+        {
+            editor.saved = Some(save(editor, save_dir));
+        }
     });
+    match &editor.saved {
+        Some(Ok(files)) => {
+            ui.label(format!("{} {files}", lang.tr("Saved:", "已保存：")));
+        }
+        Some(Err(e)) => {
+            ui.colored_label(ui.visuals().error_fg_color, e);
+        }
+        None => {}
+    }
     messages(ui, editor, session, lang);
     let source = match editor.stage {
         Stage::Vertex => &mut editor.vertex,
@@ -144,6 +175,23 @@ pub fn ui(ui: &mut Ui, editor: &mut ShaderEditor, session: &Session) -> Option<C
     } else {
         None
     }
+}
+
+/// Both sources as files (downloads in the browser): what was written, or why not.
+fn save(editor: &ShaderEditor, dir: &std::path::Path) -> Result<String, String> {
+    let mut written = Vec::new();
+    for (name, text) in [
+        ("shader.vert", &editor.vertex),
+        ("shader.frag", &editor.fragment),
+    ] {
+        written.push(crate::app::platform::download(
+            name,
+            text.as_bytes(),
+            "text/plain",
+            dir,
+        )?);
+    }
+    Ok(written.join(", "))
 }
 
 /// The messages of the last compile, each with its stage and line.
