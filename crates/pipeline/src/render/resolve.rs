@@ -506,12 +506,37 @@ impl ResolveContext<'_> {
     /// The colour of triangle `t` at the fixed-point position `at`, with its lighting terms and
     /// texture lookup: the surface colour is the texel (textured) or the interpolated vertex
     /// colour, then lit by the shading frequency.
+    ///
+    /// A triangle of an object with shaders gets no colour here (zero): the fragment shaders
+    /// add its share afterwards. Its terms and lookup are still made where the frame keeps
+    /// them (what pipelens' own shading would give, for the inspector), else nothing is.
     fn shade_at(&self, t: &RasterTriangle, at: I64Vec2) -> Shaded {
+        let shader = self.has_shader(t);
+        if shader && !self.keeps_terms() {
+            return (Vec3::ZERO, None, None);
+        }
         let b = t.original_bary(t.lambda(at), self.settings.perspective_correct);
         let texel = self.texture_lookup(t, at);
         let surface = texel.map_or_else(|| self.color_of(t, b), |(_, l)| l.color);
         let terms = self.terms_of(t, b, surface, texel.is_some());
-        (terms.map_or(surface, |t| t.color()), terms, texel)
+        let color = if shader {
+            Vec3::ZERO
+        } else {
+            terms.map_or(surface, |t| t.color())
+        };
+        (color, terms, texel)
+    }
+
+    /// Whether raster triangle `t`'s object runs the student's shaders.
+    pub(super) fn has_shader(&self, t: &RasterTriangle) -> bool {
+        let prim = &self.primitives[t.primitive as usize];
+        self.scene.objects[prim.object as usize].shader.is_some()
+    }
+
+    /// Whether the frame keeps any pixel's lighting terms or texture lookup.
+    pub(super) fn keeps_terms(&self) -> bool {
+        let c = self.settings.capture;
+        c.lighting || c.texturing || c.pixel.is_some()
     }
 
     /// Resolves window pixel `(x, y)`, whose image index is `i`; with coarse shading, `block`

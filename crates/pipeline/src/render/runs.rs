@@ -254,6 +254,15 @@ impl ResolveContext<'_> {
         let n = run.len;
         let tri = |f: usize| &self.triangles[run.triangle[f] as usize];
         let object = &self.scene.objects[self.object_of(run.triangle[0]) as usize];
+        // An object with shaders: no colour here, see `shade_at`.
+        let shader = object.shader.is_some();
+        if shader && !self.keeps_terms() {
+            return RunShading {
+                color: [Vec3::ZERO; LANES],
+                terms: [None; LANES],
+                texels: [None; LANES],
+            };
+        }
         let pc = self.settings.perspective_correct;
         let centre = |f: usize| FrameCapture::pixel_centre_fixed(x + u32::from(run.pixel[f]), y);
         let mut b = [Vec3::ZERO; LANES];
@@ -307,7 +316,9 @@ impl ResolveContext<'_> {
         }
         let mut color = [Vec3::ZERO; LANES];
         for f in 0..n {
-            color[f] = terms[f].map_or(surface[f], |t| t.color());
+            if !shader {
+                color[f] = terms[f].map_or(surface[f], |t| t.color());
+            }
         }
         RunShading {
             color,

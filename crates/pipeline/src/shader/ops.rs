@@ -194,6 +194,18 @@ pub fn supported(fun: M) -> bool {
     )
 }
 
+/// The component rows of a vector argument, at most four, on the stack.
+type Vec4Rows<'a> = arrayvec::ArrayVec<&'a [u32], 4>;
+
+/// `Σ_c a_c·b_c` at lane `l`, summed over the components in order.
+fn dot_lane(a: &[&[u32]], b: &[&[u32]], l: usize) -> f32 {
+    let mut sum = -0.0f32;
+    for (x, y) in a.iter().zip(b) {
+        sum += f(x[l]) * f(y[l]);
+    }
+    sum
+}
+
 /// GLSL's `smoothstep`: `t = clamp((x − e0)/(e1 − e0), 0, 1)`, `t²(3 − 2t)`.
 fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
     let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
@@ -247,6 +259,14 @@ pub fn math<'a>(
                 *o = g(f(x[l]), f(y[l]), f(z[l])).to_bits();
             }
         }
+    };
+    // An argument's component rows (a vector has at most four).
+    let rows_of = |i: usize| -> Vec4Rows<'a> {
+        let mut r = Vec4Rows::new();
+        for c in 0..args[i].n {
+            r.push(arg(i, c));
+        }
+        r
     };
     // Per lane, whole vectors: dot products and the like.
     let vec = |i: usize, l: usize| -> Vec<f32> {
@@ -343,38 +363,80 @@ pub fn math<'a>(
         (M::Mix, _) => each3(out, &|a, b, t| a * (1.0 - t) + b * t),
         (M::Step, _) => each2(out, &|edge, x| if x < edge { 0.0 } else { 1.0 }),
         (M::SmoothStep, _) => each3(out, &smoothstep),
-        (M::Dot, _) => per_lane(out, &|l| vec![dot(&vec(0, l), &vec(1, l))]),
-        (M::Length, _) => per_lane(out, &|l| {
-            let v = vec(0, l);
-            vec![dot(&v, &v).sqrt()]
-        }),
-        (M::Distance, _) => per_lane(out, &|l| {
-            let d: Vec<f32> = vec(0, l)
-                .iter()
-                .zip(vec(1, l))
-                .map(|(a, b)| a - b)
-                .collect();
-            vec![dot(&d, &d).sqrt()]
-        }),
-        (M::Normalize, _) => per_lane(out, &|l| {
-            let v = vec(0, l);
-            let len = dot(&v, &v).sqrt();
-            v.iter().map(|x| x / len).collect()
-        }),
-        (M::Cross, _) => per_lane(out, &|l| {
-            let (a, b) = (vec(0, l), vec(1, l));
-            vec![
-                a[1] * b[2] - a[2] * b[1],
-                a[2] * b[0] - a[0] * b[2],
-                a[0] * b[1] - a[1] * b[0],
-            ]
-        }),
+        // The geometric functions lane by lane, on the stack (no vector allocated per lane),
+        // each argument's component rows fetched once; every sum runs over the components in
+        // order, as `dot` above does.
+        (M::Dot, _) => {
+            let (a, b) = (rows_of(0), rows_of(1));
+            for (l, o) in out[..n].iter_mut().enumerate() {
+                *o = dot_lane(&a, &b, l).to_bits();
+            }
+        }
+        (M::Length, _) => {
+            let a = rows_of(0);
+            for (l, o) in out[..n].iter_mut().enumerate() {
+                *o = dot_lane(&a, &a, l).sqrt().to_bits();
+            }
+        }
+        (M::Distance, _) => {
+            let (a, b) = (rows_of(0), rows_of(1));
+            for (l, o) in out[..n].iter_mut().enumerate() {
+                let mut sum = -0.0f32;
+                for (x, y) in a.iter().zip(&b) {
+                    let d = f(x[l]) - f(y[l]);
+                    sum += d * d;
+                }
+                *o = sum.sqrt().to_bits();
+            }
+        }
+        (M::Normalize, _) => {
+            let a = rows_of(0);
+            for l in 0..n {
+                let len = dot_lane(&a, &a, l).sqrt();
+                for (c, x) in a.iter().enumerate() {
+                    out[c * stride + l] = (f(x[l]) / len).to_bits();
+                }
+            }
+        }
+        (M::Cross, _) => {
+            let (a, b) = (rows_of(0), rows_of(1));
+            for l in 0..n {
+                let a = |c: usize| f(a[c][l]);
+                let b = |c: usize| f(b[c][l]);
+                let v = [
+                    a(1) * b(2) - a(2) * b(1),
+                    a(2) * b(0) - a(0) * b(2),
+                    a(0) * b(1) - a(1) * b(0),
+                ];
+                for (c, x) in v.iter().enumerate() {
+                    out[c * stride + l] = x.to_bits();
+                }
+            }
+        }
         // reflect(I, N) = I − 2·(N·I)·N
-        (M::Reflect, _) => per_lane(out, &|l| {
-            let (i, nn) = (vec(0, l), vec(1, l));
-            let d = dot(&nn, &i);
-            i.iter().zip(&nn).map(|(a, b)| a - 2.0 * d * b).collect()
-        }),
+        (M::Reflect, _) => {
+            let (i, nn) = (rows_of(0), rows_of(1));
+            for l in 0..n {
+                let d = dot_lane(&nn, &i, l);
+                for (c, (x, y)) in i.iter().zip(&nn).enumerate() {
+                    out[c * stride + l] = (f(x[l]) - 2.0 * d * f(y[l])).to_bits();
+                }
+            }
+        }
+        // faceforward(N, I, Nref) = N if Nref·I < 0, else −N
+        (M::FaceForward, _) => {
+            let (nn, i, nref) = (rows_of(0), rows_of(1), rows_of(2));
+            for l in 0..n {
+                let s = if dot_lane(&nref, &i, l) < 0.0 {
+                    1.0
+                } else {
+                    -1.0
+                };
+                for (c, x) in nn.iter().enumerate() {
+                    out[c * stride + l] = (s * f(x[l])).to_bits();
+                }
+            }
+        }
         // refract(I, N, η): k = 1 − η²(1 − (N·I)²); 0 if k < 0, else η·I − (η·(N·I) + √k)·N
         (M::Refract, _) => per_lane(out, &|l| {
             let (i, nn) = (vec(0, l), vec(1, l));
@@ -389,15 +451,6 @@ pub fn math<'a>(
                     .map(|(a, b)| eta * a - (eta * d + k.sqrt()) * b)
                     .collect()
             }
-        }),
-        // faceforward(N, I, Nref) = N if Nref·I < 0, else −N
-        (M::FaceForward, _) => per_lane(out, &|l| {
-            let s = if dot(&vec(2, l), &vec(1, l)) < 0.0 {
-                1.0
-            } else {
-                -1.0
-            };
-            vec(0, l).iter().map(|x| s * x).collect()
         }),
         (M::Transpose, _) => {
             let (r, c) = (rows, a0.n / rows);

@@ -124,10 +124,6 @@ impl FragmentShading<'_> {
         let s = self.ctx.settings.samples.count();
         let mut acc = vec![Vec3::ZERO; rows.len()];
         let mut shaded = vec![0u8; rows.len()];
-        // Per pixel: samples no triangle covers, and whether an object without shaders covers
-        // some (its colour is only in the built-in resolve's average).
-        let mut empty = vec![0u8; rows.len()];
-        let mut builtin = vec![false; rows.len()];
         let mut counts = FragmentCounts::default();
         let mut batch: Vec<QuadJob> = Vec::with_capacity(LANES / 4);
         let mut batch_object = usize::MAX;
@@ -161,15 +157,8 @@ impl FragmentShading<'_> {
                 let Some(i) = self.index(px, py) else {
                     continue;
                 };
-                // The row pair's index: upper image row first.
-                let local = if j / 2 == 1 { 0 } else { w } + px as usize;
                 for &t in &self.ctx.samples.triangle[i * s..(i + 1) * s] {
-                    if t == NONE {
-                        empty[local] += 1;
-                        continue;
-                    }
-                    if self.ctx.scene.objects[self.object_of(t)].shader.is_none() {
-                        builtin[local] = true;
+                    if t == NONE || self.ctx.scene.objects[self.object_of(t)].shader.is_none() {
                         continue;
                     }
                     let job = match jobs.iter_mut().find(|q| q.triangle == t) {
@@ -202,20 +191,12 @@ impl FragmentShading<'_> {
         for (job, j) in traced {
             counts.pixel.push(self.trace(job, j, y, &mut inputs)?);
         }
-        // A pixel is the average of its samples: the shaded ones, the empty ones (background)
-        // and, where an object without shaders shares the pixel, the built-in resolve's share.
-        let background = self.ctx.settings.background;
-        for (k, c) in rows.iter_mut().enumerate() {
-            let n = shaded[k];
-            if n == 0 {
-                continue;
+        // A pixel is the average of its samples. The resolve averaged the background and the
+        // objects without shaders, counting the shaded samples as zero: their share is added.
+        for ((c, a), &n) in rows.iter_mut().zip(&acc).zip(&shaded) {
+            if n > 0 {
+                *c = (Vec3::from(*c) + *a / s as f32).to_array();
             }
-            let rest = if builtin[k] {
-                Vec3::from(*c) * (s - usize::from(n)) as f32
-            } else {
-                background * f32::from(empty[k])
-            };
-            *c = ((acc[k] + rest) / s as f32).to_array();
         }
         Ok(counts)
     }

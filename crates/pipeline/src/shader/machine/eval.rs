@@ -27,12 +27,17 @@ impl Machine<'_> {
                 }
             }
             Op::Load(place) => {
-                let o: Vec<u32> = if place.dynamic.is_empty() {
-                    Vec::new()
+                // Each lane's offset when the place has a dynamic index (`lights[i]`).
+                let mut offsets = [0u32; LANES];
+                if !place.dynamic.is_empty() {
+                    for (l, o) in offsets.iter_mut().enumerate().take(n) {
+                        *o = self.offset_checked(fi, place, l, live & bit(l) != 0, at)?;
+                    }
+                }
+                let o = if place.dynamic.is_empty() {
+                    &offsets[..0]
                 } else {
-                    (0..n)
-                        .map(|l| self.offset_checked(fi, place, l, live & bit(l) != 0, at))
-                        .collect::<Res<_>>()?
+                    &offsets[..n]
                 };
                 let root = place.root;
                 let (src, regs) = match root {
@@ -161,22 +166,28 @@ impl Machine<'_> {
                                     .map_err(|m| err(m.to_owned()))?;
                                 }
                             }
+                            // Matrices have at most four rows and columns: each dot
+                            // product's terms fit in an array on the stack.
                             Shape::MatVec { c, r } => {
                                 for i in 0..*r {
+                                    let mut terms: [(&[u32], &[u32]); 4] = [(&[], &[]); 4];
+                                    for j in 0..*c {
+                                        terms[j as usize] = (row(a.at, j * r + i), row(rb.at, j));
+                                    }
                                     ops::dot_rows(
-                                        &(0..*c)
-                                            .map(|j| (row(a.at, j * r + i), row(rb.at, j)))
-                                            .collect::<Vec<_>>(),
+                                        &terms[..*c as usize],
                                         &mut out[i as usize * LANES..][..n],
                                     );
                                 }
                             }
                             Shape::VecMat { c, r } => {
                                 for j in 0..*c {
+                                    let mut terms: [(&[u32], &[u32]); 4] = [(&[], &[]); 4];
+                                    for i in 0..*r {
+                                        terms[i as usize] = (row(a.at, i), row(rb.at, j * r + i));
+                                    }
                                     ops::dot_rows(
-                                        &(0..*r)
-                                            .map(|i| (row(a.at, i), row(rb.at, j * r + i)))
-                                            .collect::<Vec<_>>(),
+                                        &terms[..*r as usize],
                                         &mut out[j as usize * LANES..][..n],
                                     );
                                 }
@@ -184,11 +195,13 @@ impl Machine<'_> {
                             Shape::MatMat { k, r, c } => {
                                 for j in 0..*c {
                                     for i in 0..*r {
-                                        let terms: Vec<_> = (0..*k)
-                                            .map(|m| (row(a.at, m * r + i), row(rb.at, j * k + m)))
-                                            .collect();
+                                        let mut terms: [(&[u32], &[u32]); 4] = [(&[], &[]); 4];
+                                        for m in 0..*k {
+                                            terms[m as usize] =
+                                                (row(a.at, m * r + i), row(rb.at, j * k + m));
+                                        }
                                         ops::dot_rows(
-                                            &terms,
+                                            &terms[..*k as usize],
                                             &mut out[(j * r + i) as usize * LANES..][..n],
                                         );
                                     }
