@@ -40,6 +40,29 @@ pub struct PixelBuffers {
     pub inspected: Option<InspectedPixel>,
 }
 
+impl PixelBuffers {
+    /// The per-pixel buffers for a frame of `n` pixels, in this spare's storage: the lighting
+    /// buffers when lighting is on and kept, the texturing buffers when an object is textured
+    /// and they are kept. The resolve overwrites every element.
+    #[must_use]
+    pub(crate) fn reused(self, n: usize, lighting: bool, texturing: bool) -> Self {
+        fn sized<T: Clone>(mut v: Vec<T>, n: usize, fill: T) -> Vec<T> {
+            v.resize(n, fill);
+            v
+        }
+        Self {
+            coverage: sized(self.coverage, n, 0),
+            depth: sized(self.depth, n, 0.0),
+            primitive: sized(self.primitive, n, crate::raster::NONE),
+            owner: sized(self.owner, n, crate::raster::NONE),
+            color: sized(self.color, n, [0.0; 3]),
+            shading: lighting.then(|| self.shading.unwrap_or_default().resized(n)),
+            texturing: texturing.then(|| self.texturing.unwrap_or_default().resized(n)),
+            inspected: None,
+        }
+    }
+}
+
 /// One pixel's lighting terms and texture lookup, kept without their buffers, at the precision
 /// the buffers would have (half floats).
 #[derive(Clone, Debug, PartialEq)]

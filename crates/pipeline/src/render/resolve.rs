@@ -244,28 +244,6 @@ fn split_rows(px: &mut PixelBuffers, w: usize, h: usize) -> Vec<RowOut<'_>> {
         .collect()
 }
 
-/// `v` holding `n` elements, reusing its storage (the resolve overwrites every element).
-fn sized<T: Clone>(mut v: Vec<T>, n: usize, fill: T) -> Vec<T> {
-    v.resize(n, fill);
-    v
-}
-
-/// The per-pixel buffers for a frame of `n` pixels, in `spare`'s storage when it has some:
-/// the lighting buffers when lighting is on and kept, the texturing buffers when an object is
-/// textured and they are kept.
-fn pixel_storage(spare: PixelBuffers, n: usize, lighting: bool, texturing: bool) -> PixelBuffers {
-    PixelBuffers {
-        coverage: sized(spare.coverage, n, 0),
-        depth: sized(spare.depth, n, 0.0),
-        primitive: sized(spare.primitive, n, NONE),
-        owner: sized(spare.owner, n, NONE),
-        color: sized(spare.color, n, [0.0; 3]),
-        shading: lighting.then(|| spare.shading.unwrap_or_default().resized(n)),
-        texturing: texturing.then(|| spare.texturing.unwrap_or_default().resized(n)),
-        inspected: None,
-    }
-}
-
 /// Resolves samples to pixels: coverage, mean depth, the owning primitive and raster
 /// triangle, and the colour at the pixel centre (once per pixel and triangle, as multisampling
 /// shades), with the lighting terms and texture lookup of the owning fragment when the settings
@@ -280,7 +258,7 @@ pub(super) fn resolve(ctx: &ResolveContext<'_>, spare: PixelBuffers) -> PixelBuf
             .objects
             .iter()
             .any(|o| o.texture.is_some() && !o.mesh.uvs.is_empty());
-    let mut px = pixel_storage(spare, w * h, lit, textured);
+    let mut px = spare.reused(w * h, lit, textured);
     let mut rows = split_rows(&mut px, w, h);
     // Coarse shading shares a 2×2 block's shading between two rows: they are resolved in pairs.
     let pair = if settings.coarse_shading { 2 } else { 1 };
@@ -506,10 +484,8 @@ impl ResolveContext<'_> {
     /// The colour of triangle `t` at the fixed-point position `at`, with its lighting terms and
     /// texture lookup: the surface colour is the texel (textured) or the interpolated vertex
     /// colour, then lit by the shading frequency.
-    ///
-    /// A triangle of an object with shaders gets no colour here (zero): the fragment shaders
-    /// add its share afterwards. Its terms and lookup are still made where the frame keeps
-    /// them (what pipelens' own shading would give, for the inspector), else nothing is.
+    /// An object with shaders gets no colour here (the fragment shaders add it), only its
+    /// terms and lookup where the frame keeps them (what pipelens' own shading would give).
     fn shade_at(&self, t: &RasterTriangle, at: I64Vec2) -> Shaded {
         let shader = self.has_shader(t);
         if shader && !self.keeps_terms() {
