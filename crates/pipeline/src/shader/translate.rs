@@ -148,7 +148,7 @@ impl<'m> Translator<'m> {
             func.spans.push(self.at(span));
         }
         func.args = args;
-        func.body = self.block(f, fi, &f.body, &func)?;
+        func.body = self.block(f, fi, &f.body, &func, 0)?;
         Ok(func)
     }
 
@@ -430,21 +430,29 @@ impl<'m> Translator<'m> {
         })
     }
 
+    /// A block's statements. One naga made up without a place of its own (the `if (!cond)
+    /// break;` it writes for a `for` or `while` condition) takes `around`, the place of the
+    /// statement that holds the block, so the trace names the loop's line, not line 1.
     fn block(
         &self,
         f: &naga::Function,
         fi: &FunctionInfo,
         block: &naga::Block,
         func: &Function,
+        around: usize,
     ) -> Result<Vec<Stmt>, Unsupported> {
         let mut out = Vec::with_capacity(block.len());
         for (s, span) in block.span_iter() {
-            let at = self.at(*span);
+            let at = if span.is_defined() {
+                self.at(*span)
+            } else {
+                around
+            };
             let err = |what: String| Unsupported { at, what };
             let reg = |h: Handle<Expression>| func.regs[h.index()];
             out.push(match *s {
                 Statement::Emit(ref range) => Stmt::Emit(range.index_range()),
-                Statement::Block(ref b) => Stmt::Block(self.block(f, fi, b, func)?),
+                Statement::Block(ref b) => Stmt::Block(self.block(f, fi, b, func, at)?),
                 Statement::If {
                     condition,
                     ref accept,
@@ -452,8 +460,8 @@ impl<'m> Translator<'m> {
                 } => Stmt::If {
                     at,
                     c: reg(condition).at,
-                    accept: self.block(f, fi, accept, func)?,
-                    reject: self.block(f, fi, reject, func)?,
+                    accept: self.block(f, fi, accept, func, at)?,
+                    reject: self.block(f, fi, reject, func, at)?,
                 },
                 Statement::Switch {
                     selector,
@@ -466,7 +474,7 @@ impl<'m> Translator<'m> {
                             naga::SwitchValue::U32(v) => Some(i64::from(v)),
                             naga::SwitchValue::Default => None,
                         };
-                        cs.push((value, self.block(f, fi, &c.body, func)?, c.fall_through));
+                        cs.push((value, self.block(f, fi, &c.body, func, at)?, c.fall_through));
                     }
                     Stmt::Switch {
                         at,
@@ -480,8 +488,8 @@ impl<'m> Translator<'m> {
                     break_if,
                 } => Stmt::Loop {
                     at,
-                    body: self.block(f, fi, body, func)?,
-                    continuing: self.block(f, fi, continuing, func)?,
+                    body: self.block(f, fi, body, func, at)?,
+                    continuing: self.block(f, fi, continuing, func, at)?,
                     break_if: break_if.map(|b| reg(b).at),
                 },
                 Statement::Break => Stmt::Break,

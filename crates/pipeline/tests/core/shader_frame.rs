@@ -314,3 +314,27 @@ fn the_inspected_pixel_keeps_its_fragment_shaders_run() {
         f.pixels.color[i]
     );
 }
+
+#[test]
+fn a_loops_condition_is_traced_on_the_loops_line() {
+    // naga writes a `for` condition as `if (!cond) break;` with no place of its own.
+    let fs = "#version 330 core\nout vec4 color;\nvoid main() {\n  float s = 0.0;\n  for (int i = 0; i < 3; i++) {\n    s += 0.25;\n  }\n  color = vec4(s);\n}\n";
+    let mut s = settings();
+    s.capture.pixel = Some((80, 60));
+    let f = render(&with_shaders(sphere_scene(false), None, Some(fs)), &s);
+    let frag = &f.shaders.as_ref().expect("a record").pixel[0];
+    let lines: Vec<usize> = frag.trace.iter().map(|t| t.line).collect();
+    assert!(
+        lines.iter().all(|&l| (4..=8).contains(&l)),
+        "{:#?}",
+        frag.trace
+    );
+    assert!(
+        frag.trace
+            .iter()
+            .any(|t| t.line == 5 && t.text.starts_with("if: ")),
+        "the condition is on the `for` line: {:#?}",
+        frag.trace
+    );
+    assert_eq!(frag.output.expect("drawn")[0], 0.75);
+}
