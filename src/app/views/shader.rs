@@ -162,13 +162,13 @@ pub fn ui(
         Stage::Vertex => &mut editor.vertex,
         Stage::Fragment => &mut editor.fragment,
     };
-    let error_lines: Vec<usize> = editor
+    let errors: Vec<(usize, &str)> = editor
         .errors
         .iter()
         .filter(|e| e.stage == editor.stage)
-        .map(|e| e.error.line)
+        .map(|e| (e.error.line, e.error.message.as_str()))
         .collect();
-    let edited = code(ui, source, &error_lines);
+    let edited = code(ui, source, &errors);
     apply |= ui.input(|i| i.modifiers.ctrl && i.key_pressed(egui::Key::Enter));
     if edited || apply {
         editor.apply(session)
@@ -242,9 +242,9 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
     }
 }
 
-/// The source with line numbers (a lines with a message marked), highlighted as C-like code.
-/// Returns whether it was edited.
-fn code(ui: &mut Ui, source: &mut String, error_lines: &[usize]) -> bool {
+/// The source with line numbers (a line with a message marked), highlighted as C-like code,
+/// each message written in red at the end of its line. Returns whether it was edited.
+fn code(ui: &mut Ui, source: &mut String, errors: &[(usize, &str)]) -> bool {
     let mut changed = false;
     egui::ScrollArea::both()
         .id_salt("shader source")
@@ -253,7 +253,7 @@ fn code(ui: &mut Ui, source: &mut String, error_lines: &[usize]) -> bool {
                 let lines = source.lines().count().max(1) + usize::from(source.ends_with('\n'));
                 let gutter: String = (1..=lines)
                     .map(|n| {
-                        if error_lines.contains(&n) {
+                        if errors.iter().any(|(line, _)| *line == n) {
                             format!("!{n:>3}\n")
                         } else {
                             format!("{n:>4}\n")
@@ -281,16 +281,29 @@ fn code(ui: &mut Ui, source: &mut String, error_lines: &[usize]) -> bool {
                     job.wrap.max_width = f32::INFINITY;
                     ui.fonts_mut(|f| f.layout_job(job))
                 };
-                changed = ui
-                    .add(
-                        egui::TextEdit::multiline(source)
-                            .code_editor()
-                            .desired_rows(lines.max(24))
-                            .desired_width(640.0)
-                            .lock_focus(true)
-                            .layouter(&mut layouter),
-                    )
-                    .changed();
+                let out = egui::TextEdit::multiline(source)
+                    .code_editor()
+                    .desired_rows(lines.max(24))
+                    .desired_width(640.0)
+                    .lock_focus(true)
+                    .layouter(&mut layouter)
+                    .show(ui);
+                changed = out.response.changed();
+                // Without wrapping, row k of the laid-out text is source line k + 1.
+                let font = egui::TextStyle::Monospace.resolve(ui.style());
+                let color = ui.visuals().error_fg_color;
+                for (line, message) in errors {
+                    if let Some(row) = line.checked_sub(1).and_then(|k| out.galley.rows.get(k)) {
+                        let rect = row.rect().translate(out.galley_pos.to_vec2());
+                        ui.painter().text(
+                            egui::pos2(rect.max.x + 24.0, rect.center().y),
+                            egui::Align2::LEFT_CENTER,
+                            format!("◀ {message}"),
+                            font.clone(),
+                            color,
+                        );
+                    }
+                }
             });
         });
     changed
