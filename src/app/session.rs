@@ -259,7 +259,7 @@ impl Session {
     #[must_use]
     pub fn capture_needed(&self) -> Capture {
         let shown = Capture::showing([self.selection.buffer]);
-        let shaders = self.spec.scene.objects.iter().any(|o| o.shader.is_some());
+        let shaders = self.spec.scene.has_shaders();
         match self.selection.pixel {
             Some(_) if self.drafting => shown.with_pixel(self.selection.pixel),
             Some(_) if shaders => Capture::FULL.with_pixel(self.selection.pixel),
@@ -284,7 +284,7 @@ impl Session {
         };
         let needed = self.capture_needed();
         // Shaders are traced at the captured pixel only: another pixel needs another run.
-        let shaders = self.spec.scene.objects.iter().any(|o| o.shader.is_some());
+        let shaders = self.spec.scene.has_shaders();
         let missing = !kept.covers(needed)
             || (shaders && needed.pixel.is_some() && kept.pixel != needed.pixel)
             || (self.observer_shown() && !self.observer_asked);

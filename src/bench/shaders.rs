@@ -41,14 +41,11 @@ pub fn with_shaders(
                 .join("\n")
         )
     })?;
-    let programs = std::sync::Arc::new(programs);
     let mut scene = scene.clone();
-    for o in &mut scene.objects {
-        o.shader = Some(pipeline::scene::ObjectShader {
-            programs: std::sync::Arc::clone(&programs),
-            time: 0.0,
-        });
-    }
+    scene.set_shaders(&pipeline::scene::ObjectShader {
+        programs: std::sync::Arc::new(programs),
+        time: 0.0,
+    });
     Ok(scene)
 }
 

@@ -158,7 +158,7 @@ impl Lesson {
                 let _ = param::apply(&mut spec, name, value);
             }
             if let Some(shader) = &step.shader {
-                set_shader(&mut spec, shader);
+                spec.scene.set_shaders(shader);
             }
         }
         spec
@@ -183,13 +183,6 @@ impl Lesson {
             shader.time = t;
         }
         spec
-    }
-}
-
-/// Every object of `spec` runs `shader` (a step's `shader = { … }`).
-fn set_shader(spec: &mut SceneSpec, shader: &ObjectShader) {
-    for o in &mut spec.scene.objects {
-        o.shader = Some(shader.clone());
     }
 }
 
@@ -325,7 +318,7 @@ impl Checker<'_> {
             .as_ref()
             .and_then(|sh| super::validate::shaders::shader(self, sh, base));
         if let Some(shader) = &shader {
-            set_shader(spec, shader);
+            spec.scene.set_shaders(shader);
         }
         let animate = r
             .animate

@@ -203,6 +203,19 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// Whether any object runs the student's shaders.
+    #[must_use]
+    pub fn has_shaders(&self) -> bool {
+        self.objects.iter().any(|o| o.shader.is_some())
+    }
+
+    /// Every object runs `shader` (a lesson step's, the shader panel's).
+    pub fn set_shaders(&mut self, shader: &ObjectShader) {
+        for o in &mut self.objects {
+            o.shader = Some(shader.clone());
+        }
+    }
+
     /// Whether a full capture of this scene at `settings` has buffer `kind` to show: the
     /// lighting buffers when lighting is on (the reflected term when an object mirrors its
     /// environment), the texturing buffers when an object is textured. Known before rendering,

@@ -52,12 +52,10 @@ impl ShaderEditor {
                 let programs = Arc::new(programs);
                 self.shown = Some(Arc::clone(&programs));
                 let mut spec = session.spec.clone();
-                for o in &mut spec.scene.objects {
-                    o.shader = Some(ObjectShader {
-                        programs: Arc::clone(&programs),
-                        time: 0.0,
-                    });
-                }
+                spec.scene.set_shaders(&ObjectShader {
+                    programs,
+                    time: 0.0,
+                });
                 Some(Command::SetSpec(Box::new(spec)))
             }
             Err(e) => {

@@ -122,7 +122,7 @@ pub(super) fn vertex_shaders(
     matrices: &Matrices,
     vertices: &mut [VertexRecord],
 ) -> Result<Option<Vec<Option<VertexResults>>>, RenderError> {
-    if scene.objects.iter().all(|o| o.shader.is_none()) {
+    if !scene.has_shaders() {
         return Ok(None);
     }
     let mut out = Vec::with_capacity(scene.objects.len());
@@ -160,6 +160,10 @@ pub fn trace_vertex(
     capture: &FrameCapture,
     row: usize,
 ) -> Result<Option<VertexTrace>, RenderError> {
+    // The inspector asks every frame a vertex is selected: no shader, no work (no expansion).
+    if !scene.has_shaders() {
+        return Ok(None);
+    }
     let expanded;
     let scene = if scene.shadow.is_some() || !scene.figures.is_empty() {
         expanded = Scene {
@@ -196,15 +200,8 @@ pub fn trace_vertex(
         .iter()
         .map(|input| {
             let mut rows = vec![0u32; input.components as usize * LANES];
-            if input.builtin == Some(naga::BuiltIn::VertexIndex) {
-                rows[0] = index as u32;
-            } else {
-                let location = shader::interface::attribute_location(&input.name);
-                let a = attribute(object, record, location, index);
-                for c in 0..input.components as usize {
-                    rows[c * LANES] = a[c].to_bits();
-                }
-            }
+            let location = shader::interface::attribute_location(&input.name);
+            write_input(&mut rows, 0, input, location, object, record, index);
             rows
         })
         .collect();
@@ -266,6 +263,27 @@ pub(super) fn lane_values(
         .collect()
 }
 
+/// Writes vertex shader input `input` of mesh vertex `i` (table row `record`) into lane `l` of
+/// its rows: `gl_VertexIndex` is `i`, an attribute its value at `location`.
+fn write_input(
+    rows: &mut [u32],
+    l: usize,
+    input: &shader::Varying,
+    location: Option<u32>,
+    object: &Object,
+    record: &VertexRecord,
+    i: usize,
+) {
+    if input.builtin == Some(naga::BuiltIn::VertexIndex) {
+        rows[l] = i as u32;
+        return;
+    }
+    let a = attribute(object, record, location, i);
+    for c in 0..input.components as usize {
+        rows[c * LANES + l] = a[c].to_bits();
+    }
+}
+
 /// One attribute's value for mesh vertex `i` (see [`shader::interface::ATTRIBUTES`]).
 fn attribute(object: &Object, record: &VertexRecord, location: Option<u32>, i: usize) -> [f32; 4] {
     let mesh = &object.mesh;
@@ -300,7 +318,6 @@ fn run_vertex_shader(
         .iter()
         .map(|i| shader::interface::attribute_location(&i.name))
         .collect();
-    let vertex_index = |input: &shader::Varying| input.builtin == Some(naga::BuiltIn::VertexIndex);
     rows.par_chunks_mut(LANES)
         .zip(values.par_chunks_mut(LANES * stride as usize))
         .enumerate()
@@ -317,15 +334,7 @@ fn run_vertex_shader(
                     rows_in.clear();
                     rows_in.resize(input.components as usize * LANES, 0);
                     for (l, r) in records.iter().enumerate() {
-                        let i = k * LANES + l;
-                        if vertex_index(input) {
-                            rows_in[l] = i as u32;
-                            continue;
-                        }
-                        let a = attribute(object, r, *location, i);
-                        for c in 0..input.components as usize {
-                            rows_in[c * LANES + l] = a[c].to_bits();
-                        }
+                        write_input(rows_in, l, input, *location, object, r, k * LANES + l);
                     }
                 }
                 let refs: Vec<&[u32]> = inputs.iter().map(Vec::as_slice).collect();
