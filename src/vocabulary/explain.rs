@@ -75,6 +75,10 @@ pub fn remark(r: &Remark, l: Lang) -> String {
             "affine interpolation, for comparison",
             "仿射插值（用于对比）",
         ),
+        Remark::Quad => s(
+            "derivatives as a GPU takes them: differences within the pixel's 2×2 quad, at its lower-left pixel (x_q, y_q); the quad's four pixels share them and λ",
+            "导数按 GPU 的做法求：在像素所在的 2×2 像素块（quad）内作差，取在其左下像素 (x_q, y_q) 处；块内四个像素共用这组导数和 λ",
+        ),
         Remark::Anisotropic => s(
             "anisotropic: N taps along the footprint's major axis",
             "各向异性：沿覆盖区域（footprint）长轴取 N 个样本",
@@ -119,8 +123,8 @@ pub fn remark(r: &Remark, l: Lang) -> String {
             "Gouraud：在每个顶点计算光照，再对颜色插值",
         ),
         Remark::Flat => s(
-            "flat: lit once per face, at its centroid, with the face normal",
-            "平面着色：每个面在其重心处用面法线计算一次光照",
+            "flat: lit once per face, at its provoking (last) vertex, with the face normal",
+            "平面着色：每个面在其引发顶点（最后一个顶点）处用面法线计算一次光照",
         ),
         Remark::Textured => s(
             "textured: the texel T multiplies the ambient and diffuse terms",

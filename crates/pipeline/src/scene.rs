@@ -86,6 +86,17 @@ pub struct ObjectShader {
 }
 
 impl Object {
+    /// What decides which of pipelens' shipped shader pairs draws this object
+    /// ([`crate::shader::builtin_sources`]).
+    #[must_use]
+    pub fn surface(&self) -> crate::shader::Surface {
+        crate::shader::Surface {
+            lit: self.lit,
+            detail: self.detail.is_some() && !self.mesh.uvs.is_empty(),
+            mirror: self.environment.is_some(),
+        }
+    }
+
     /// An object with the identity transform and its mesh's own colours.
     #[must_use]
     pub fn new(name: &str, mesh: Mesh) -> Self {
@@ -216,6 +227,40 @@ impl Scene {
         }
     }
 
+    /// This scene with each object running pipelens' own shading at `settings` written as
+    /// GLSL ([`crate::shader::builtin_sources`]), which draws the built-in pixels. `Ok(None)`
+    /// when an object's shading has no shipped pair.
+    ///
+    /// # Errors
+    /// The messages of a shipped pair that does not compile (a defect the tests catch).
+    pub fn with_builtin_shaders(
+        &self,
+        settings: &RenderSettings,
+    ) -> Result<Option<Self>, Vec<crate::shader::StageError>> {
+        let mut scene = self.clone();
+        let mut linked: Vec<(&str, &str, Arc<crate::shader::Programs>)> = Vec::new();
+        for o in &mut scene.objects {
+            let Some((vs, fs)) =
+                crate::shader::builtin_sources(settings.shading, settings.reflection, o.surface())
+            else {
+                return Ok(None);
+            };
+            let programs = match linked.iter().find(|(v, f, _)| *v == vs && *f == fs) {
+                Some((_, _, p)) => Arc::clone(p),
+                None => {
+                    let p = Arc::new(crate::shader::link(Some(vs), Some(fs))?);
+                    linked.push((vs, fs, Arc::clone(&p)));
+                    p
+                }
+            };
+            o.shader = Some(ObjectShader {
+                programs,
+                time: 0.0,
+            });
+        }
+        Ok(Some(scene))
+    }
+
     /// Whether a full capture of this scene at `settings` has buffer `kind` to show: the
     /// lighting buffers when lighting is on (the reflected term when an object mirrors its
     /// environment), the texturing buffers when an object is textured. Known before rendering,
@@ -276,6 +321,8 @@ impl Scene {
                 s.texture = None;
                 s.detail = None;
                 s.environment = None;
+                // Drawn in the shadow's colour, whatever shaders the object runs.
+                s.shader = None;
                 s.lit = false;
                 s.casts_shadow = false;
                 out.push(s);

@@ -123,13 +123,22 @@ pub fn ui(
         if ui
             .button(lang.tr("pipelens' own", "pipelens 自带"))
             .on_hover_text(lang.tr(
-                "Start again from pipelens' own shading for the current settings, written as GLSL (unlit; Gouraud; Phong shading with n·h or r·v): it draws the same pixels. Flat shading lights each face once at its centroid, which no fragment shader sees: there, Blinn-Phong per pixel.",
-                "从 pipelens 针对当前设置的自带着色（GLSL 写成）重新开始（无光照；Gouraud；Phong 着色，n·h 或 r·v）：画出的像素相同。平面着色在每个面的重心处计算一次光照，片元着色器看不到重心：此时用逐像素 Blinn-Phong。",
+                "Start again from pipelens' own shading for the current settings, written as GLSL (unlit; flat; Gouraud; Phong shading with n·h or r·v; a bump or normal map): it draws the same pixels. For r·v with flat or Gouraud shading or a bump map, and for a mirror, none is shipped: there, Blinn-Phong per pixel.",
+                "从 pipelens 针对当前设置的自带着色（GLSL 写成）重新开始（无光照；平面；Gouraud；Phong 着色，n·h 或 r·v；凹凸或法线贴图）：画出的像素相同。平面或 Gouraud 着色配 r·v、凹凸贴图配 r·v 以及镜面没有对应的着色器：此时用逐像素 Blinn-Phong。",
             ))
             .clicked()
         {
             let s = &session.spec.settings;
-            let (vertex, fragment) = shader::builtin_sources(s.shading, s.reflection)
+            // One pair for every object: that of the object the lesson is about (the first
+            // with a bump or normal map, else the first the lights reach).
+            let objects = &session.spec.scene.objects;
+            let subject = objects
+                .iter()
+                .find(|o| o.detail.is_some())
+                .or_else(|| objects.iter().find(|o| o.lit))
+                .or(objects.first());
+            let (vertex, fragment) = subject
+                .and_then(|o| shader::builtin_sources(s.shading, s.reflection, o.surface()))
                 .unwrap_or((BUILTIN_VERTEX, BUILTIN_FRAGMENT));
             editor.vertex = vertex.to_owned();
             editor.fragment = fragment.to_owned();

@@ -177,7 +177,7 @@ pub struct FrameCapture {
     /// The lighting at each vertex (a row per vertex-table row), with Gouraud shading; empty
     /// otherwise.
     pub vertex_shading: Vec<crate::shade::ShadeTerms>,
-    /// The lighting of each face (a row per primitive, evaluated once at its centroid), with
+    /// The lighting of each face (a row per primitive, evaluated once at its provoking vertex), with
     /// flat shading; empty otherwise.
     pub face_shading: Vec<crate::shade::ShadeTerms>,
     /// The textures the frame read, by object name (their mip pyramids can be shown and exported).

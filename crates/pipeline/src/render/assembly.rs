@@ -256,8 +256,9 @@ fn assemble_one(
 }
 
 /// Flat shading: each face lit once, with its own normal `(p1 − p0) × (p2 − p0)` (world
-/// coordinates), at its centroid, with the mean of its vertices' colours (white for a textured
-/// surface, whose texel then modulates the result per pixel). One entry per primitive; faces
+/// coordinates), at its provoking vertex `p2` with that vertex's colour, as OpenGL's `flat`
+/// takes every value from the last vertex (white for a textured surface, whose texel then
+/// modulates the result per pixel). One entry per primitive; faces
 /// that are not drawn get zero terms. Appended to `faces` (the frame's storage, empty).
 pub(super) fn light_faces(
     scene: &Scene,
@@ -273,7 +274,6 @@ pub(super) fn light_faces(
         let v = prim.vertices.map(|r| &vertices[r as usize]);
         let p = v.map(|v| v.world.truncate());
         let normal = (p[1] - p[0]).cross(p[2] - p[0]);
-        let centroid = (p[0] + p[1] + p[2]) / 3.0;
         let object = &scene.objects[prim.object as usize];
         if !object.lit {
             return ShadeTerms::default();
@@ -281,10 +281,10 @@ pub(super) fn light_faces(
         let color = if object.texture.is_some() && !object.mesh.uvs.is_empty() {
             Vec3::ONE
         } else {
-            (v[0].color + v[1].color + v[2].color) / 3.0
+            v[2].color
         };
         shade::shade(
-            centroid,
+            p[2],
             normal,
             scene.camera.eye,
             color,

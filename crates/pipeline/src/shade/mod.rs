@@ -46,7 +46,8 @@ pub enum Frequency {
     /// No lighting: the surface colour as it is.
     #[default]
     Unlit,
-    /// Once per face, with the face normal, at the face's centroid.
+    /// Once per face, with the face normal, at the face's provoking (last) vertex, as OpenGL's
+    /// `flat` takes the last vertex's values.
     Flat,
     /// Once per vertex, with the vertex normal; the colours are interpolated.
     Gouraud,

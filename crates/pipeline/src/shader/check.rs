@@ -88,13 +88,13 @@ pub(super) fn check_declarations(
                     }
                 }
             },
-            Storage::Texture if !interface::TEXTURES.contains(&d.name.as_str()) => errors.push(error_at(
+            Storage::Texture if interface::texture_slot(&d.name).is_none() => errors.push(error_at(
                 source,
                 d.name_span.clone(),
                 format!(
-                    "pipelens binds no texture called `{}`{}; the object's texture is `uniform sampler2D tex;`",
+                    "pipelens binds no texture called `{}`{}; the object's texture is `uniform sampler2D tex;`, its bump or normal map `uniform sampler2D detail;`",
                     d.name,
-                    did_you_mean(&d.name, &interface::TEXTURES)
+                    did_you_mean(&d.name, &interface::TEXTURES.map(|(n, _)| n))
                 ),
             )),
             Storage::Input if stage == Stage::Vertex && interface::attribute_location(&d.name).is_none() => {

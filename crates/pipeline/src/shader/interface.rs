@@ -71,7 +71,7 @@ pub struct UniformSpec {
 }
 
 /// Every uniform pipelens sets. A shader declares those it uses (`uniform mat4 model;`).
-pub const UNIFORMS: [UniformSpec; 17] = [
+pub const UNIFORMS: [UniformSpec; 19] = [
     UniformSpec {
         names: &["model", "M"],
         glsl: "mat4",
@@ -153,6 +153,16 @@ pub const UNIFORMS: [UniformSpec; 17] = [
         meaning: "whether the object has a texture",
     },
     UniformSpec {
+        names: &["detail_kind"],
+        glsl: "int",
+        meaning: "the object's surface detail: 0 none, 1 a bump (height) map, 2 a normal map, in `detail`",
+    },
+    UniformSpec {
+        names: &["bump_strength"],
+        glsl: "float",
+        meaning: "k_h·k_n of bump mapping: dU = k_h·k_n·(h(u + 1/w, v) − h(u, v))",
+    },
+    UniformSpec {
         names: &["time"],
         glsl: "float",
         meaning: "seconds into the step's animation",
@@ -165,8 +175,30 @@ pub fn uniform(name: &str) -> Option<&'static UniformSpec> {
     UNIFORMS.iter().find(|u| u.names.contains(&name))
 }
 
-/// The texture names pipelens binds (`uniform sampler2D tex;`).
-pub const TEXTURES: [&str; 2] = ["tex", "texture0"];
+/// A texture pipelens binds to a `uniform sampler2D`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TextureSlot {
+    /// The object's texture, sampled as the settings say (filter, mipmaps, anisotropy, bias).
+    Surface,
+    /// The object's bump (height) or normal map, sampled as the built-in bump mapping reads it:
+    /// bilinear, repeating, level 0 (`detail_kind` says which map it is).
+    Detail,
+}
+
+/// The texture names pipelens binds (`uniform sampler2D tex;`), and what each holds.
+pub const TEXTURES: [(&str, TextureSlot); 5] = [
+    ("tex", TextureSlot::Surface),
+    ("texture0", TextureSlot::Surface),
+    ("detail", TextureSlot::Detail),
+    ("normal_map", TextureSlot::Detail),
+    ("height_map", TextureSlot::Detail),
+];
+
+/// The texture called `name`, if pipelens binds one.
+#[must_use]
+pub fn texture_slot(name: &str) -> Option<TextureSlot> {
+    TEXTURES.iter().find(|(n, _)| *n == name).map(|&(_, s)| s)
+}
 
 /// The values of the uniforms for one object's draw.
 #[derive(Clone, Debug, PartialEq)]
@@ -185,6 +217,10 @@ pub struct Uniforms {
     pub material: Material,
     /// Whether the object has a texture.
     pub has_texture: bool,
+    /// `detail_kind`: 0 none, 1 bump, 2 normal map.
+    pub detail_kind: i32,
+    /// `bump_strength`, `k_h·k_n`.
+    pub bump_strength: f32,
     /// Seconds into the step's animation.
     pub time: f32,
     /// The viewport's size in pixels.
@@ -201,6 +237,8 @@ impl Default for Uniforms {
             lights: Vec::new(),
             material: Material::default(),
             has_texture: false,
+            detail_kind: 0,
+            bump_strength: 0.0,
             time: 0.0,
             resolution: Vec2::ONE,
         }
@@ -258,6 +296,8 @@ impl Uniforms {
             "ks" => floats(&m.ks.to_array()),
             "shininess" => floats(&[m.shininess]),
             "use_tex" => vec![u32::from(self.has_texture)],
+            "detail_kind" => vec![self.detail_kind as u32],
+            "bump_strength" => floats(&[self.bump_strength]),
             _ => floats(&[self.time]),
         })
     }

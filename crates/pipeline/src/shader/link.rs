@@ -26,24 +26,62 @@ pub const BUILTIN_GOURAUD_VERTEX: &str = include_str!("builtin/gouraud.vert");
 /// pipelens' Gouraud shading as GLSL, the fragment half: the interpolated lighting, the texel.
 pub const BUILTIN_GOURAUD_FRAGMENT: &str = include_str!("builtin/gouraud.frag");
 
-/// The GLSL of pipelens' own shading with `shading` and `reflection`, `(vertex, fragment)`:
-/// running it gives the built-in pixels. `None` for flat shading, which lights each face once
-/// at its centroid (a fragment shader sees neither the face's vertices nor its centroid), and
-/// for Gouraud shading with Phong's `r·v` (not shipped: change `n·h` in gouraud.vert).
+/// pipelens' flat shading as GLSL, the vertex half: the provoking vertex's position and colour.
+pub const BUILTIN_FLAT_VERTEX: &str = include_str!("builtin/flat.vert");
+
+/// pipelens' flat shading as GLSL, the fragment half: the face normal from the derivatives of
+/// the world position, lit at the provoking vertex.
+pub const BUILTIN_FLAT_FRAGMENT: &str = include_str!("builtin/flat.frag");
+
+/// pipelens' per-pixel Blinn-Phong lighting with a bump or normal map, as GLSL.
+pub const BUILTIN_NORMAL_MAPPED_FRAGMENT: &str = include_str!("builtin/normal_mapped.frag");
+
+/// What of an object decides which of pipelens' shipped shader pairs draws it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Surface {
+    /// The lights reach it (else it is drawn unlit).
+    pub lit: bool,
+    /// It has a bump or normal map and texture coordinates to read it with.
+    pub detail: bool,
+    /// It mirrors its environment.
+    pub mirror: bool,
+}
+
+/// The GLSL of pipelens' own shading of a `surface` with `shading` and `reflection`, `(vertex,
+/// fragment)`: running it gives the built-in pixels. An object the lights do not reach is
+/// drawn unlit; a bump or normal map takes normal_mapped.frag. `None` where no shipped pair
+/// models the built-in path: Gouraud or flat shading with Phong's `r·v` (change `n·h` in
+/// gouraud.vert or flat.frag), a surface detail with `r·v`, and a mirror's environment lookup
+/// (pipelens binds no cube map).
 #[must_use]
 pub fn builtin_sources(
     shading: crate::shade::Frequency,
     reflection: crate::shade::Reflection,
+    surface: Surface,
 ) -> Option<(&'static str, &'static str)> {
     use crate::shade::{Frequency, Reflection};
+    let Surface {
+        lit,
+        detail,
+        mirror,
+    } = surface;
     match (shading, reflection) {
         (Frequency::Unlit, _) => Some((BUILTIN_VERTEX, BUILTIN_UNLIT_FRAGMENT)),
+        _ if !lit => Some((BUILTIN_VERTEX, BUILTIN_UNLIT_FRAGMENT)),
+        (_, Reflection::Phong) if detail && shading == Frequency::Phong => None,
+        (Frequency::Phong, _) if mirror => None,
+        (Frequency::Phong, Reflection::BlinnPhong) if detail => {
+            Some((BUILTIN_VERTEX, BUILTIN_NORMAL_MAPPED_FRAGMENT))
+        }
         (Frequency::Phong, Reflection::BlinnPhong) => Some((BUILTIN_VERTEX, BUILTIN_FRAGMENT)),
         (Frequency::Phong, Reflection::Phong) => Some((BUILTIN_VERTEX, BUILTIN_PHONG_FRAGMENT)),
         (Frequency::Gouraud, Reflection::BlinnPhong) => {
             Some((BUILTIN_GOURAUD_VERTEX, BUILTIN_GOURAUD_FRAGMENT))
         }
-        (Frequency::Gouraud, Reflection::Phong) | (Frequency::Flat, _) => None,
+        (Frequency::Flat, Reflection::BlinnPhong) => {
+            Some((BUILTIN_FLAT_VERTEX, BUILTIN_FLAT_FRAGMENT))
+        }
+        (Frequency::Gouraud | Frequency::Flat, Reflection::Phong) => None,
     }
 }
 

@@ -29,8 +29,10 @@ use naga::{Binding, BuiltIn, Interpolation, TypeInner};
 
 pub use interface::Uniforms;
 pub use link::{
-    BUILTIN_FRAGMENT, BUILTIN_GOURAUD_FRAGMENT, BUILTIN_GOURAUD_VERTEX, BUILTIN_PHONG_FRAGMENT,
-    BUILTIN_UNLIT_FRAGMENT, BUILTIN_VERTEX, Link, Programs, StageError, builtin_sources, link,
+    BUILTIN_FLAT_FRAGMENT, BUILTIN_FLAT_VERTEX, BUILTIN_FRAGMENT, BUILTIN_GOURAUD_FRAGMENT,
+    BUILTIN_GOURAUD_VERTEX, BUILTIN_NORMAL_MAPPED_FRAGMENT, BUILTIN_PHONG_FRAGMENT,
+    BUILTIN_UNLIT_FRAGMENT, BUILTIN_VERTEX, Link, Programs, StageError, Surface, builtin_sources,
+    link,
 };
 pub use machine::{Bindings, Event, LANES, Machine, RunError};
 pub use trace::{Trace, TraceLine, glsl_type};

@@ -59,17 +59,12 @@ fn run(
     let inputs: Vec<&[u32]> = rows.iter().map(Vec::as_slice).collect();
     let mut m = program.machine();
     program.set_uniforms(&mut m, uniforms);
-    let sampler = Sampler::default();
+    let bound: Vec<_> = textures
+        .iter()
+        .map(|t| t.map(|t| (t, Sampler::default())))
+        .collect();
     let killed = m
-        .run(
-            &inputs,
-            n,
-            u64::MAX,
-            &Bindings {
-                textures,
-                sampler: &sampler,
-            },
-        )
+        .run(&inputs, n, u64::MAX, &Bindings { textures: &bound })
         .map_err(|e| program.run_error(&e))?;
     let comps = m.result().len() / LANES;
     let out = (0..n)
@@ -484,17 +479,8 @@ fn the_trace_shows_each_assignment_branch_and_iteration_of_one_lane() {
     let inputs: Vec<&[u32]> = rows.iter().map(Vec::as_slice).collect();
     let mut m = p.machine();
     m.trace_lane(Some(1));
-    let sampler = Sampler::default();
-    m.run(
-        &inputs,
-        4,
-        u64::MAX,
-        &Bindings {
-            textures: &[],
-            sampler: &sampler,
-        },
-    )
-    .expect("runs");
+    m.run(&inputs, 4, u64::MAX, &Bindings { textures: &[] })
+        .expect("runs");
     let trace = p.describe(&m.take_trace());
     let text: Vec<String> = trace
         .iter()

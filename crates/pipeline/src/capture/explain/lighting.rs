@@ -67,7 +67,7 @@ impl FrameCapture {
                 out.normal = terms.normal;
                 lines.add(
                     s,
-                    "c = I(p_centroid, n_face), n_face = normalize((p_1 − p_0)×(p_2 − p_0))",
+                    "c = I(p_2, c_2, n_face), n_face = normalize((p_1 − p_0)×(p_2 − p_0))",
                     format!("n_face = {}", v3(terms.normal)),
                     v3(terms.color()),
                 );

@@ -97,6 +97,9 @@ pub enum Remark {
     Affine,
     /// Anisotropic filtering: taps along the footprint's major axis.
     Anisotropic,
+    /// The screen derivatives are differences within the pixel's 2×2 quad, taken at its
+    /// lower-left pixel `(x_q, y_q)`, as a GPU takes them: the quad's four pixels share them.
+    Quad,
     /// `λ ≤ 0`: magnification, level 0.
     Magnification,
     /// No mipmap: level 0 always.
@@ -132,7 +135,7 @@ pub enum Remark {
     TapsMean,
     /// Gouraud shading: lit at each vertex, the colours interpolated.
     Gouraud,
-    /// Flat shading: lit once per face, at its centroid, with its own normal.
+    /// Flat shading: lit once per face, at its provoking (last) vertex, with its own normal.
     Flat,
     /// A textured surface lit per vertex or face: the texel multiplies ambient and diffuse.
     Textured,

@@ -248,11 +248,8 @@ impl FragmentShading<'_> {
             }
         }
         let refs: Vec<&[u32]> = inputs.iter().map(Vec::as_slice).collect();
-        let tex = textures(fs, o);
-        let bindings = Bindings {
-            textures: &tex,
-            sampler: &ctx.settings.sampler,
-        };
+        let tex = textures(fs, o, ctx.settings.sampler);
+        let bindings = Bindings { textures: &tex };
         let killed = m
             .run(&refs, n, live, &bindings)
             .map_err(|e| shader_error(shader::Stage::Fragment, o, &fs.run_error(&e)))?;
@@ -336,11 +333,8 @@ impl FragmentShading<'_> {
         }
         let received = super::lane_values(&fs.inputs, inputs, j);
         let refs: Vec<&[u32]> = inputs.iter().map(Vec::as_slice).collect();
-        let tex = textures(fs, o);
-        let bindings = Bindings {
-            textures: &tex,
-            sampler: &ctx.settings.sampler,
-        };
+        let tex = textures(fs, o, ctx.settings.sampler);
+        let bindings = Bindings { textures: &tex };
         m.trace_lane(Some(j));
         let killed = m
             .run(&refs, 4, live, &bindings)
@@ -419,13 +413,12 @@ impl FragmentShading<'_> {
                     }
                 }
                 (None, Some(naga::BuiltIn::FrontFacing)) => {
-                    let w = prim.vertices.map(|v| ctx.vertices[v as usize].window);
-                    let front = match w {
-                        [Some(a), Some(b), Some(c)] => {
-                            (b - a).truncate().perp_dot((c - a).truncate()) >= 0.0
-                        }
-                        _ => true,
-                    };
+                    // The piece's corners are counter-clockwise on screen; its barycentric
+                    // corners keep the original order, so their determinant is negative when
+                    // the original triangle ran clockwise (a back face), even when one of its
+                    // vertices is behind the eye and has no window position.
+                    let [b0, b1, b2] = t.bary;
+                    let front = glam::Mat3::from_cols(b0, b1, b2).determinant() >= 0.0;
                     rows[l] = u32::from(front);
                 }
                 _ => {}

@@ -27,6 +27,7 @@ use crate::capture::{FrameCapture, Matrices, ShaderRecord, VertexResults, Vertex
 use crate::render::resolve::ResolveContext;
 use crate::scene::{Object, Scene};
 use crate::settings::RenderSettings;
+use crate::shader::interface::TextureSlot;
 use crate::shader::{self, Bindings, LANES, Programs, Uniforms};
 use crate::vertex::{self, VertexRecord};
 
@@ -85,21 +86,51 @@ fn uniforms(
         lights: scene.lights.clone(),
         material: o.material,
         has_texture: o.texture.is_some() && !o.mesh.uvs.is_empty(),
+        detail_kind: match &o.detail {
+            _ if o.mesh.uvs.is_empty() => 0,
+            None => 0,
+            Some(crate::texture::SurfaceDetail::Bump { .. }) => 1,
+            Some(crate::texture::SurfaceDetail::Normal(_)) => 2,
+        },
+        bump_strength: match &o.detail {
+            Some(crate::texture::SurfaceDetail::Bump { strength, .. }) => *strength,
+            _ => 0.0,
+        },
         time,
         resolution: glam::Vec2::new(settings.width as f32, settings.height as f32),
     }
 }
 
-/// The textures a program's `sampler2D`s read: the object's texture for each.
+/// The textures a program's `sampler2D`s read and how each is sampled: the object's texture
+/// with `surface` (the settings' sampler), its bump or normal map as the built-in bump mapping
+/// reads it (bilinear, repeating, level 0). Nothing without texture coordinates.
 fn textures<'a>(
     program: &shader::Program,
     object: &'a Object,
-) -> Vec<Option<&'a crate::texture::Texture>> {
-    let t = object
-        .texture
-        .as_deref()
-        .filter(|_| !object.mesh.uvs.is_empty());
-    program.textures.iter().map(|_| t).collect()
+    surface: crate::texture::Sampler,
+) -> Vec<Option<(&'a crate::texture::Texture, crate::texture::Sampler)>> {
+    use crate::texture::{Filter, Mipmap, Sampler, SurfaceDetail, Wrap};
+    let detail = Sampler {
+        wrap: Wrap::Repeat,
+        filter: Filter::Bilinear,
+        mipmap: Mipmap::None,
+        anisotropy: 1,
+        lod_bias: 0.0,
+    };
+    let has_uvs = !object.mesh.uvs.is_empty();
+    program
+        .textures
+        .iter()
+        .map(|name| match shader::interface::texture_slot(name)? {
+            TextureSlot::Surface => Some((object.texture.as_deref()?, surface)),
+            TextureSlot::Detail => match object.detail.as_ref()? {
+                SurfaceDetail::Bump { height: t, .. } | SurfaceDetail::Normal(t) => {
+                    Some((&**t, detail))
+                }
+            },
+        })
+        .map(|bound| bound.filter(|_| has_uvs))
+        .collect()
 }
 
 fn shader_error(stage: shader::Stage, object: &Object, e: &shader::ShaderError) -> RenderError {
@@ -206,12 +237,8 @@ pub fn trace_vertex(
         })
         .collect();
     let refs: Vec<&[u32]> = inputs.iter().map(Vec::as_slice).collect();
-    let tex = textures(vs, object);
-    let sampler = crate::texture::Sampler::default();
-    let bindings = Bindings {
-        textures: &tex,
-        sampler: &sampler,
-    };
+    let tex = textures(vs, object, crate::texture::Sampler::default());
+    let bindings = Bindings { textures: &tex };
     m.trace_lane(Some(0));
     m.run(&refs, 1, 1, &bindings)
         .map_err(|e| shader_error(shader::Stage::Vertex, object, &vs.run_error(&e)))?;
@@ -311,8 +338,7 @@ fn run_vertex_shader(
     let vs = &programs.vertex;
     let stride: u32 = vs.outputs.iter().map(|o| o.components).sum();
     let mut values = vec![0f32; rows.len() * stride as usize];
-    let tex = textures(vs, object);
-    let sampler = crate::texture::Sampler::default();
+    let tex = textures(vs, object, crate::texture::Sampler::default());
     let locations: Vec<Option<u32>> = vs
         .inputs
         .iter()
@@ -338,7 +364,7 @@ fn run_vertex_shader(
                     }
                 }
                 let refs: Vec<&[u32]> = inputs.iter().map(Vec::as_slice).collect();
-                let bindings = Bindings { textures: &tex, sampler: &sampler };
+                let bindings = Bindings { textures: &tex };
                 let live = if n == LANES { u64::MAX } else { (1 << n) - 1 };
                 m.run(&refs, n, live, &bindings)
                     .map_err(|e| shader_error(shader::Stage::Vertex, object, &vs.run_error(&e)))?;

@@ -280,7 +280,7 @@ impl Machine<'_> {
                         coordinate,
                         level,
                     } => {
-                        let t = b.textures.get(*texture as usize).copied().flatten();
+                        let bound = b.textures.get(*texture as usize).copied().flatten();
                         let uv = |l: usize| {
                             Vec2::new(
                                 f32::from_bits(row(coordinate.at, 0)[l]),
@@ -288,26 +288,28 @@ impl Machine<'_> {
                             )
                         };
                         for l in 0..n {
-                            let color = match (t, level) {
+                            let color = match (bound, level) {
                                 (None, _) => Vec3::ZERO,
-                                (Some(t), Level::Auto | Level::Bias(_)) => {
+                                (Some((t, sampler)), Level::Auto | Level::Bias(_)) => {
                                     let q = l & !3;
                                     let (dx, dy) = if q + 3 < n {
                                         (uv(q + 1) - uv(q), uv(q + 2) - uv(q))
                                     } else {
                                         (Vec2::ZERO, Vec2::ZERO)
                                     };
-                                    let mut s = *b.sampler;
+                                    let mut s = sampler;
                                     if let Level::Bias(r) = level {
                                         s.lod_bias += f32::from_bits(row(*r, 0)[l]);
                                     }
                                     t.sample(uv(l), dx, dy, &s).color
                                 }
-                                (Some(t), Level::Exact(r)) => {
-                                    t.sample_lod(uv(l), f32::from_bits(row(*r, 0)[l]), b.sampler)
+                                (Some((t, sampler)), Level::Exact(r)) => {
+                                    t.sample_lod(uv(l), f32::from_bits(row(*r, 0)[l]), &sampler)
                                         .0
                                 }
-                                (Some(t), Level::Zero) => t.sample_lod(uv(l), 0.0, b.sampler).0,
+                                (Some((t, sampler)), Level::Zero) => {
+                                    t.sample_lod(uv(l), 0.0, &sampler).0
+                                }
                             };
                             for (k, v) in color.extend(1.0).to_array().iter().enumerate() {
                                 out[k * LANES + l] = v.to_bits();
@@ -319,7 +321,12 @@ impl Machine<'_> {
                         coordinate,
                         level,
                     } => {
-                        let t = b.textures.get(*texture as usize).copied().flatten();
+                        let t = b
+                            .textures
+                            .get(*texture as usize)
+                            .copied()
+                            .flatten()
+                            .map(|(t, _)| t);
                         for l in 0..n {
                             let (i, j) = (
                                 row(coordinate.at, 0)[l] as i32,
@@ -353,7 +360,12 @@ impl Machine<'_> {
                         }
                     }
                     Op::Size { texture, level } => {
-                        let t = b.textures.get(*texture as usize).copied().flatten();
+                        let t = b
+                            .textures
+                            .get(*texture as usize)
+                            .copied()
+                            .flatten()
+                            .map(|(t, _)| t);
                         for l in 0..n {
                             let k = level.map_or(0, |r| row(r, 0)[l] as usize);
                             let (w, h) = t

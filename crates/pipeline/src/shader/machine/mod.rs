@@ -81,10 +81,9 @@ pub enum Event {
 /// The textures and sampler a run reads.
 #[derive(Clone, Copy)]
 pub struct Bindings<'a> {
-    /// The texture in each slot (`None`: nothing bound; lookups return black).
-    pub textures: &'a [Option<&'a Texture>],
-    /// How they are sampled.
-    pub sampler: &'a Sampler,
+    /// The texture in each slot and how it is sampled (`None`: nothing bound; lookups return
+    /// black).
+    pub textures: &'a [Option<(&'a Texture, Sampler)>],
 }
 
 /// Control flow of the running function: lanes that broke, continued or returned.
