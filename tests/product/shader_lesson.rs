@@ -178,13 +178,7 @@ fn pipelens_own_shading_as_glsl_gives_the_built_in_pixels_on_the_lessons_scenes(
             }
             spec.settings.width = spec.settings.width.min(160);
             spec.settings.height = spec.settings.height.min(100);
-            // A mip-mapped lookup takes its level λ from derivatives: a fragment shader's from
-            // its 2×2 quad, as a GPU does (the reference check compares that with llvmpipe),
-            // the built-in path's from each pixel's own neighbours to the right and above.
-            // Where λ falls between levels the two blend differently, so here the lookups
-            // read the base level in both, and everything else must agree to 1/255.
-            spec.settings.sampler.mipmap = pipeline::texture::Mipmap::None;
-            spec.settings.sampler.anisotropy = 1;
+            // Mip-mapped lookups included: both paths take λ from the 2×2 quad's derivatives.
             // An object no shipped pair models (a mirror) is taken out of both pictures.
             let (shading, reflection) = (spec.settings.shading, spec.settings.reflection);
             spec.scene.objects.retain(|o| {

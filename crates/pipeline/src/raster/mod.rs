@@ -345,33 +345,70 @@ impl RasterTriangle {
         self.bary[0] * k.x + self.bary[1] * k.y + self.bary[2] * k.z
     }
 
+    /// `uv = Σ b_i·uv_i` at fixed-point position `p`, over the original triangle's `uvs`.
+    #[inline]
+    fn uv_of(&self, uvs: [Vec2; 3], p: I64Vec2, perspective_correct: bool) -> Vec2 {
+        let w = self.original_bary(self.lambda(p), perspective_correct);
+        uvs[0] * w.x + uvs[1] * w.y + uvs[2] * w.z
+    }
+
     /// The texture coordinates at fixed-point position `p`, `uv = Σ b_i·uv_i` over the original
     /// triangle's `uvs` (perspective-correct or affine), and, when `derivatives`, their screen
-    /// derivatives as the differences to the next pixel in x and in y (the same interpolation
-    /// evaluated one pixel over: exact, since `uv` is a ratio of functions linear in screen
-    /// space); zero derivatives otherwise.
+    /// derivatives as a GPU takes them, within the pixel's 2×2 quad ([`quad_offset`]; a frame
+    /// `height` rows tall): at the same place in the quad's lower-left pixel `o`,
+    /// `∂uv/∂x ≈ uv(o + (1, 0)) − uv(o)` and `∂uv/∂y ≈ uv(o + (0, 1)) − uv(o)` — the same
+    /// interpolation evaluated there, whether or not the triangle covers those pixels, so the
+    /// four pixels of a quad share one footprint and one λ. Zero derivatives otherwise.
     #[must_use]
     pub fn uv_at(
         &self,
         uvs: [Vec2; 3],
         p: I64Vec2,
+        height: u32,
         perspective_correct: bool,
         derivatives: bool,
     ) -> (Vec2, Vec2, Vec2) {
-        let at = |q: I64Vec2| {
-            let w = self.original_bary(self.lambda(q), perspective_correct);
-            uvs[0] * w.x + uvs[1] * w.y + uvs[2] * w.z
-        };
-        let uv = at(p);
+        let uv = self.uv_of(uvs, p, perspective_correct);
         if !derivatives {
             return (uv, Vec2::ZERO, Vec2::ZERO);
         }
+        let (dx, dy) = self.uv_derivatives(uvs, p - quad_offset(p, height), perspective_correct);
+        (uv, dx, dy)
+    }
+
+    /// The quad differences of the texture coordinates, taken at `o` (a place in a quad's
+    /// lower-left pixel): `(uv(o + (1, 0)) − uv(o), uv(o + (0, 1)) − uv(o))`.
+    #[must_use]
+    pub fn uv_derivatives(
+        &self,
+        uvs: [Vec2; 3],
+        o: I64Vec2,
+        perspective_correct: bool,
+    ) -> (Vec2, Vec2) {
+        let at = |q: I64Vec2| self.uv_of(uvs, q, perspective_correct);
+        let here = at(o);
         (
-            uv,
-            at(p + I64Vec2::new(ONE, 0)) - uv,
-            at(p + I64Vec2::new(0, ONE)) - uv,
+            at(o + I64Vec2::new(ONE, 0)) - here,
+            at(o + I64Vec2::new(0, ONE)) - here,
         )
     }
+}
+
+/// Fragments are shaded in 2×2 quads, as on a GPU, so that a value's screen derivatives are
+/// differences within its quad: pixel columns `2i, 2i + 1`, and image rows `2k, 2k + 1` counted
+/// from the top of a frame `height` rows tall — window rows `y_q = height − 2 − 2k` and
+/// `y_q + 1` (window y grows upwards). A quad's derivatives are taken at its lower-left pixel
+/// `(x_q, y_q)` (OpenGL's coarse derivatives, `dFdxCoarse`):
+/// `∂v/∂x ≈ v(x_q + 1, y_q) − v(x_q, y_q)`, `∂v/∂y ≈ v(x_q, y_q + 1) − v(x_q, y_q)`.
+/// Returns how far the pixel holding fixed-point position `p` lies from that pixel,
+/// `(x − x_q, y − y_q)`, in fixed point (each 0 or [`ONE`]).
+#[must_use]
+#[inline]
+pub fn quad_offset(p: I64Vec2, height: u32) -> I64Vec2 {
+    let (x, y) = (p.x.div_euclid(ONE), p.y.div_euclid(ONE));
+    // Image row h − 1 − y: an even one is a quad's upper row, its lower row one below.
+    let upper = (i64::from(height) - 1 - y).rem_euclid(2) == 0;
+    I64Vec2::new(x.rem_euclid(2) * ONE, i64::from(upper) * ONE)
 }
 
 /// Which faces are discarded before rasterization. Front faces are counter-clockwise in window

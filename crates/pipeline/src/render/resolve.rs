@@ -330,8 +330,8 @@ impl ResolveContext<'_> {
 
     /// The texture lookup of triangle `t` at the pixel centre `centre`, when its object has a
     /// texture and its mesh has uvs: `uv` interpolated like every attribute, and its screen
-    /// derivatives as the differences to the next pixel in x and in y (analytic: the same
-    /// triangle's interpolation evaluated there).
+    /// derivatives as the differences within the pixel's 2×2 quad, as a GPU takes them
+    /// ([`RasterTriangle::uv_at`]; analytic: the same triangle's interpolation evaluated there).
     fn texture_lookup(&self, t: &RasterTriangle, centre: I64Vec2) -> Option<(Vec2, Lookup)> {
         let prim = &self.primitives[t.primitive as usize];
         let texture = self.scene.objects[prim.object as usize].texture.as_ref()?;
@@ -343,6 +343,7 @@ impl ResolveContext<'_> {
         let (uv, dx, dy) = t.uv_at(
             [a, b, c],
             centre,
+            self.settings.height,
             self.settings.perspective_correct,
             self.derivatives,
         );

@@ -14,7 +14,7 @@ use glam::{I64Vec2, Vec2, Vec3};
 
 use super::resolve::{ResolveContext, ResolvedPixel};
 use crate::capture::FrameCapture;
-use crate::raster::{NONE, ONE, RasterTriangle};
+use crate::raster::{NONE, RasterTriangle, quad_offset};
 use crate::shade::lanes::{LANES, shade_lanes};
 use crate::shade::{Frequency, ShadeTerms};
 use crate::texture::Lookup;
@@ -329,9 +329,8 @@ impl ResolveContext<'_> {
 
     /// The texture lookups of a run's fragments at original-triangle weights `b` (fragment
     /// `f` at its pixel's fixed-point centre `centre(f)`), as [`Self::texture_lookup`] makes
-    /// each: `uv` interpolated from the same weights; its x derivative the next fragment's `uv`
-    /// minus this one's when that is the same triangle in the next pixel, else this triangle's
-    /// `uv` one pixel over.
+    /// each: `uv` interpolated from the same weights; its derivatives those of its 2×2 quad,
+    /// taken once for the two fragments of one triangle in a quad's row.
     fn run_texels(
         &self,
         run: &Run,
@@ -358,32 +357,28 @@ impl ResolveContext<'_> {
             }
         }
         let sampler = &self.settings.sampler;
+        // The last derivatives taken: the triangle, its quad's lower-left place, the pair.
+        let mut last: Option<(u32, I64Vec2, (Vec2, Vec2))> = None;
         for f in 0..b.len() {
-            let Some([u0, u1, u2]) = uvs[f] else {
+            let Some(uvs) = uvs[f] else {
                 continue;
             };
             if !self.derivatives {
                 out[f] = Some((uv[f], texture.sample_level0(uv[f], sampler)));
                 continue;
             }
-            let t: &RasterTriangle = &self.triangles[run.triangle[f] as usize];
-            let uv_at = |at: I64Vec2| {
-                let w = t.original_bary(t.lambda(at), pc);
-                u0 * w.x + u1 * w.y + u2 * w.z
+            let c = centre(f);
+            let o = c - quad_offset(c, self.settings.height);
+            let (dx, dy) = match last {
+                Some((t, at, d)) if t == run.triangle[f] && at == o => d,
+                _ => {
+                    let t: &RasterTriangle = &self.triangles[run.triangle[f] as usize];
+                    let d = t.uv_derivatives(uvs, o, pc);
+                    last = Some((run.triangle[f], o, d));
+                    d
+                }
             };
-            let next_pixel_same_triangle = f + 1 < b.len()
-                && run.triangle[f + 1] == run.triangle[f]
-                && run.pixel[f + 1] == run.pixel[f] + 1;
-            let right = if next_pixel_same_triangle {
-                uv[f + 1]
-            } else {
-                uv_at(centre(f) + I64Vec2::new(ONE, 0))
-            };
-            let up = uv_at(centre(f) + I64Vec2::new(0, ONE));
-            out[f] = Some((
-                uv[f],
-                texture.sample(uv[f], right - uv[f], up - uv[f], sampler),
-            ));
+            out[f] = Some((uv[f], texture.sample(uv[f], dx, dy, sampler)));
         }
         out
     }

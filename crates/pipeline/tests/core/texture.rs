@@ -156,13 +156,15 @@ fn level_of_detail_is_log2_of_texels_per_pixel() {
         // Trilinear reads levels ⌊λ⌋ and ⌊λ⌋ + 1 with weight fract(λ).
         assert!((tb.at(centre).level - expect).abs() < 0.01);
     }
-    // Tilted by θ about x (top away from the camera), the derivative is the difference to the
-    // next pixel up, as GPUs take it: the ray through screen height s (tan of its angle) hits
-    // the plane at t = s·d/(cos θ − s·sin θ) along it, so one pixel (s = 2/65) spans
-    // 128·t texels in v, while along x the centre row still spans texels_per_pixel(d).
+    // Tilted by θ about x (top away from the camera), the derivative is a difference within
+    // the pixel's 2×2 quad, as GPUs take it: the ray through screen height s (tan of its
+    // angle) hits the plane at t = s·d/(cos θ − s·sin θ) along it. The centre pixel (32, 32)
+    // of 65 rows is image row 32, the upper row of its quad, whose lower row is one pixel
+    // down (s = −2/65): ∂v/∂y spans 128·(t(0) − t(−s1)) texels, and along x the quad's
+    // lower row, at depth d·cos θ/(cos θ + s1·sin θ), spans texels_per_pixel of that depth.
     let (theta, d, s1) = (70f32.to_radians(), 4.0f32, 2.0f32 / 65.0);
-    let along_y = 128.0 * s1 * d / (theta.cos() - s1 * theta.sin());
-    let along_x = texels_per_pixel(d);
+    let along_y = 128.0 * s1 * d / (theta.cos() + s1 * theta.sin());
+    let along_x = texels_per_pixel(d * theta.cos() / (theta.cos() + s1 * theta.sin()));
     let c = textured_quad(d, 70.0, Sampler::default());
     let tb = c.pixels.texturing.as_ref().expect("texturing buffers");
     // The footprint's axes, in texels: one pixel right moves along s only, one pixel up along
@@ -194,7 +196,7 @@ fn level_of_detail_is_log2_of_texels_per_pixel() {
     // Anisotropic filtering: N = min(⌈major/minor⌉, max) taps along the major axis and
     // λ = log₂(major/N).
     let taps = (along_y / along_x).ceil();
-    assert_eq!(taps, 4.0);
+    assert_eq!(taps, 3.0, "{along_y} / {along_x}");
     let aniso = Sampler {
         anisotropy: 16,
         ..Sampler::default()
@@ -235,6 +237,57 @@ fn level_of_detail_is_log2_of_texels_per_pixel() {
         c.pixels.texturing.as_ref().map(|t| t.at(centre).level),
         Some(0.0)
     );
+}
+
+/// The four pixels of a 2×2 quad share one footprint and one λ, taken at the quad's lower-left
+/// pixel: image rows 2k and 2k + 1 from the top, columns 2i and 2i + 1, for an odd height too
+/// (its last quad row is image row h − 1 alone).
+#[test]
+fn a_quads_four_pixels_share_the_derivatives_of_its_lower_left_pixel() {
+    use glam::I64Vec2;
+    use pipeline::raster::{ONE, quad_offset};
+    let at = |x: i64, y: i64| I64Vec2::new(x * ONE + ONE / 2, y * ONE + ONE / 2);
+    // 4 rows: image rows 0, 1 are window rows 3, 2 (quad y 2); image rows 2, 3 are 1, 0.
+    assert_eq!(quad_offset(at(0, 0), 4), I64Vec2::ZERO);
+    assert_eq!(quad_offset(at(1, 1), 4), I64Vec2::new(ONE, ONE));
+    assert_eq!(quad_offset(at(4, 2), 4), I64Vec2::ZERO);
+    assert_eq!(quad_offset(at(5, 3), 4), I64Vec2::new(ONE, ONE));
+    // 5 rows: image rows 0, 1 are window rows 4, 3 (quad y 3); image row 4, window 0, is the
+    // upper row of a quad whose lower row is outside the frame.
+    assert_eq!(quad_offset(at(0, 3), 5), I64Vec2::ZERO);
+    assert_eq!(quad_offset(at(0, 4), 5), I64Vec2::new(0, ONE));
+    assert_eq!(quad_offset(at(0, 0), 5), I64Vec2::new(0, ONE));
+    assert_eq!(quad_offset(at(0, 1), 5), I64Vec2::ZERO);
+    // On the tilted floor every quad's four pixels read one footprint and one λ, while the
+    // footprint grows from quad to quad up the image.
+    let c = textured_quad(4.0, 70.0, Sampler::default());
+    let tb = c.pixels.texturing.as_ref().expect("texturing buffers");
+    let (w, h) = (65usize, 65usize);
+    let mut quads = 0;
+    for row in (0..h - 1).step_by(2) {
+        for x in (0..w - 1).step_by(2) {
+            let i = row * w + x;
+            let pixels = [i, i + 1, i + w, i + w + 1];
+            let four = pixels.map(|i| tb.at(i));
+            // One triangle over the quad (the floor's two meet on a diagonal; across it each
+            // evaluates its own plane at the lower-left pixel, equal but for rounding).
+            let p = c.pixels.primitive[i];
+            if pixels
+                .iter()
+                .any(|&i| c.pixels.coverage[i] == 0 || c.pixels.primitive[i] != p)
+            {
+                continue;
+            }
+            quads += 1;
+            for t in &four[1..] {
+                assert_eq!(t.footprint, four[0].footprint, "quad at image ({x}, {row})");
+                assert_eq!(t.lod, four[0].lod, "quad at image ({x}, {row})");
+            }
+        }
+    }
+    assert!(quads >= 10, "{quads} quads checked");
+    let [above, below] = [30 * w + 32, 34 * w + 32].map(|i| tb.at(i).footprint[3].abs());
+    assert!(above > below * 1.05, "∂t/∂y {above} above vs {below} below");
 }
 
 /// A sampler that reads one level with one tap needs no footprint: the lookup without

@@ -19,9 +19,13 @@ impl FrameCapture {
             return None;
         };
         let sampler = &self.settings.sampler;
-        let (uv, dx, dy) =
-            o.tri
-                .uv_at([a, b, c], o.centre, self.settings.perspective_correct, true);
+        let (uv, dx, dy) = o.tri.uv_at(
+            [a, b, c],
+            o.centre,
+            self.settings.height,
+            self.settings.perspective_correct,
+            true,
+        );
         let lookup = texture.sample(uv, dx, dy, sampler);
         let size = texture.levels[0].size();
         let [fx, fy] = lookup.footprint;
@@ -33,6 +37,15 @@ impl FrameCapture {
             format!("uv_k = {}, {}, {}", v2(a), v2(b), v2(c)),
             v2(uv),
         );
+        let quad = (o.centre - crate::raster::quad_offset(o.centre, self.settings.height))
+            / crate::raster::ONE;
+        lines.add(
+            s,
+            "∂uv/∂x = uv(x_q + 1, y_q) − uv(x_q, y_q); ∂uv/∂y = uv(x_q, y_q + 1) − uv(x_q, y_q)",
+            format!("(x_q, y_q) = ({}, {})", quad.x, quad.y),
+            format!("{}; {}", v2(dx), v2(dy)),
+        );
+        lines.note(Remark::Quad);
         for (axis, d, f) in [("x", dx, fx), ("y", dy, fy)] {
             lines.add(
                 s,
