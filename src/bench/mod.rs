@@ -3,7 +3,7 @@
 pub mod handouts;
 mod shaders;
 
-pub use shaders::with_shaders;
+pub use shaders::{rows as shader_rows, with_shaders};
 
 use std::time::Duration;
 

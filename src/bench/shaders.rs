@@ -53,7 +53,7 @@ pub fn with_shaders(
 /// sample, the colour kept: pipelens' Blinn-Phong as GLSL on the lit textured scene (target:
 /// the frame ≤ 3× the built-in one) and a pass-through vertex shader on the 1M-triangle sphere
 /// (target: the vertex stage ≤ 2× the built-in one).
-pub(super) fn rows(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
+pub fn rows(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
     let ms = |d: Duration| d.as_secs_f64() * 1e3;
     writeln!(
         out,

@@ -122,6 +122,9 @@ pub enum Command {
         /// of `lessons/`, and the six-step teapot lesson when the data has the teapot).
         #[arg(long)]
         handouts: bool,
+        /// Instead: only the rows of the student's shaders (GLSL beside the built-in path).
+        #[arg(long, conflicts_with = "handouts")]
+        shaders: bool,
         /// Frames per case (the median is shown).
         #[arg(long)]
         frames: Option<usize>,
@@ -283,12 +286,23 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
         Some(Command::Bench {
+            shaders: true,
+            quick,
+            frames,
+            ..
+        }) => {
+            let mut out = std::io::stdout().lock();
+            crate::bench::shader_rows(frames.unwrap_or(if quick { 1 } else { 5 }), &mut out)?;
+            Ok(ExitCode::SUCCESS)
+        }
+        Some(Command::Bench {
             quick,
             frames,
             peer_python,
             peer_script,
             data,
             handouts: false,
+            shaders: false,
         }) => {
             let mut out = std::io::stdout().lock();
             crate::bench::run(quick, frames, &mut out)?;

@@ -86,15 +86,39 @@ pub fn normal_matrix(model: &Mat4) -> Mat3 {
     Mat3::from_mat4(*model).inverse().transpose()
 }
 
+/// The clip positions a vertex shader wrote (`gl_Position`), one per vertex of an object: the
+/// 4 floats at `values[i·stride + position ..]` for vertex `i`.
+#[derive(Clone, Copy, Debug)]
+pub struct ShaderClip<'a> {
+    /// Every output of every vertex, vertex by vertex.
+    pub values: &'a [f32],
+    /// Floats per vertex.
+    pub stride: usize,
+    /// Where `gl_Position` starts among a vertex's outputs.
+    pub position: usize,
+}
+
+impl ShaderClip<'_> {
+    /// Vertex `i`'s `gl_Position`.
+    #[must_use]
+    #[inline]
+    pub fn at(&self, i: usize) -> Vec4 {
+        Vec4::from_slice(&self.values[i * self.stride + self.position..][..4])
+    }
+}
+
 /// Runs the vertex stage on every vertex of `object` (index `object_index` in the scene),
 /// appending one row per vertex to `out` and, with Gouraud shading, its lighting to `lit`.
 /// The vertices are independent: they are transformed in parallel, written straight into
-/// `out`'s storage (which the frame before may have left with room enough).
+/// `out`'s storage (which the frame before may have left with room enough). With `shader`,
+/// the object's vertex shader gave each clip position: the division and viewport follow from
+/// it, while world, eye and the normal stay the table's own (M·p, V·M·p, N·n).
 pub fn transform_object(
     object: &Object,
     object_index: u32,
     m: &VertexMatrices,
     lighting: &VertexLighting<'_>,
+    shader: Option<ShaderClip<'_>>,
     out: &mut Vec<VertexRecord>,
     lit: &mut Vec<ShadeTerms>,
 ) {
@@ -106,7 +130,10 @@ pub fn transform_object(
         (0..mesh.positions.len())
             .into_par_iter()
             .with_min_len(1024)
-            .map(|i| transform_vertex(object, object_index, i, m, &n_matrix)),
+            .map(|i| {
+                let clip = shader.map(|s| s.at(i));
+                transform_vertex(object, object_index, i, m, &n_matrix, clip)
+            }),
     );
     if lighting.frequency != Frequency::Gouraud {
         return;
@@ -130,35 +157,25 @@ pub fn transform_object(
 }
 
 /// Vertex `i` of `object` through every space: its row of the vertex table. `n_matrix` is the
-/// object's normal matrix.
+/// object's normal matrix; `shader_clip` the clip position a vertex shader wrote, if it ran.
 fn transform_vertex(
     object: &Object,
     object_index: u32,
     i: usize,
     m: &VertexMatrices,
     n_matrix: &Mat3,
+    shader_clip: Option<Vec4>,
 ) -> VertexRecord {
     let mesh = &object.mesh;
-    let p = mesh.positions[i];
-    // Displacement mapping: the vertex moves along its normal, p' = p + k·h(u, v)·n.
-    let p = match (&object.displacement, mesh.uvs.get(i)) {
-        (Some(d), Some(&uv)) => p + mesh.normals[i] * d.offset(uv),
-        _ => p,
-    };
-    let object_pos = p.extend(1.0);
+    let object_pos = object_position(object, i).extend(1.0);
     let world = m.model * object_pos;
     let eye = m.view * world;
-    let clip = m.projection * eye;
+    let clip = shader_clip.unwrap_or_else(|| m.projection * eye);
     let (ndc, window) = if clip.w > 0.0 {
         let (ndc, window, _) = to_window(clip, &m.viewport);
         (Some(ndc), Some(window))
     } else {
         (None, None)
-    };
-    let color = match object.color {
-        ColorSource::Uniform(c) => c,
-        ColorSource::Vertex if !mesh.colors.is_empty() => mesh.colors[i],
-        ColorSource::Vertex | ColorSource::Normal => (mesh.normals[i] + 1.0) / 2.0,
     };
     VertexRecord {
         object: object_index,
@@ -169,8 +186,34 @@ fn transform_vertex(
         clip,
         ndc,
         window,
-        color,
+        color: vertex_color(object, i),
         uv: mesh.uvs.get(i).copied(),
         normal_world: (*n_matrix * mesh.normals[i]).normalize_or_zero(),
+    }
+}
+
+/// Vertex `i`'s position in object coordinates, displaced along its normal when the object has
+/// a displacement map: `p' = p + k·h(u, v)·n`.
+#[must_use]
+#[inline]
+pub fn object_position(object: &Object, i: usize) -> Vec3 {
+    let mesh = &object.mesh;
+    let p = mesh.positions[i];
+    match (&object.displacement, mesh.uvs.get(i)) {
+        (Some(d), Some(&uv)) => p + mesh.normals[i] * d.offset(uv),
+        _ => p,
+    }
+}
+
+/// Vertex `i`'s colour: the object's one colour, the mesh's colour at the vertex, or its normal
+/// shown as a colour, `(n + 1)/2`.
+#[must_use]
+#[inline]
+pub fn vertex_color(object: &Object, i: usize) -> Vec3 {
+    let mesh = &object.mesh;
+    match object.color {
+        ColorSource::Uniform(c) => c,
+        ColorSource::Vertex if !mesh.colors.is_empty() => mesh.colors[i],
+        ColorSource::Vertex | ColorSource::Normal => (mesh.normals[i] + 1.0) / 2.0,
     }
 }

@@ -125,14 +125,17 @@ fn render_stages(
 
     let t = Instant::now();
     let (mut vertices, mut vertex_shading) = (storage.vertices, storage.vertex_shading);
+    // The student's vertex shaders first: the table's rows take their gl_Position.
+    let vertex_results =
+        shaders::vertex_shaders(scene, settings, &matrices, storage.shader_outputs)?;
     vertex_stage(
         scene,
         settings,
         &matrices,
+        vertex_results.as_deref(),
         &mut vertices,
         &mut vertex_shading,
     );
-    let vertex_results = shaders::vertex_shaders(scene, settings, &matrices, &mut vertices)?;
     times.vertex = t.elapsed();
 
     let t = Instant::now();
@@ -287,6 +290,8 @@ struct Storage {
     triangles: Vec<RasterTriangle>,
     samples: Option<SampleBuffers>,
     pixels: PixelBuffers,
+    /// The vertex shaders' output buffers, one per object that ran one.
+    shader_outputs: Vec<Vec<f32>>,
 }
 
 impl Storage {
@@ -307,16 +312,28 @@ impl Storage {
             triangles: c.triangles,
             samples: Some(c.samples),
             pixels: c.pixels,
+            shader_outputs: c
+                .shaders
+                .map(|s| {
+                    s.vertex_results
+                        .into_iter()
+                        .flatten()
+                        .map(|r| r.values)
+                        .collect()
+                })
+                .unwrap_or_default(),
         }
     }
 }
 
 /// The vertex stage: every vertex of every object through every space, in order, with its
-/// lighting when shading is per vertex, appended to `vertices` and `vertex_shading`.
+/// lighting when shading is per vertex, appended to `vertices` and `vertex_shading`; an object
+/// with a vertex shader takes its clip positions from `shader_results`.
 fn vertex_stage(
     scene: &Scene,
     settings: &RenderSettings,
     matrices: &Matrices,
+    shader_results: Option<&[Option<crate::capture::VertexResults>]>,
     vertices: &mut Vec<VertexRecord>,
     vertex_shading: &mut Vec<ShadeTerms>,
 ) {
@@ -333,7 +350,16 @@ fn vertex_stage(
             lights: &scene.lights,
             eye: scene.camera.eye,
         };
-        vertex::transform_object(object, i as u32, &m, &lighting, vertices, vertex_shading);
+        let shader = shaders::shader_clip(scene, shader_results, i);
+        vertex::transform_object(
+            object,
+            i as u32,
+            &m,
+            &lighting,
+            shader,
+            vertices,
+            vertex_shading,
+        );
     }
 }
 

@@ -102,12 +102,18 @@ pub fn binary(
 }
 
 /// `out = Σ a_k·b_k` over the pairs of rows (a row of a matrix times a column).
+/// The terms are added in order, `((0 + a_0·b_0) + a_1·b_1) + …`, a term over all lanes at a
+/// time (rows cut to the lanes, so the loop runs over plain arrays).
 pub fn dot_rows(terms: &[(&[u32], &[u32])], out: &mut [u32]) {
-    for (l, o) in out.iter_mut().enumerate() {
-        let mut s = 0.0f32;
-        for (a, b) in terms {
-            s += f(a[l]) * f(b[l]);
+    let n = out.len().min(super::LANES);
+    let mut sum = [0f32; super::LANES];
+    for (a, b) in terms {
+        let (a, b) = (&a[..n], &b[..n]);
+        for ((s, &x), &y) in sum[..n].iter_mut().zip(a).zip(b) {
+            *s += f(x) * f(y);
         }
+    }
+    for (o, s) in out.iter_mut().zip(&sum[..n]) {
         *o = s.to_bits();
     }
 }

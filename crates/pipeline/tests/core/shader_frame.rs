@@ -338,3 +338,37 @@ fn a_loops_condition_is_traced_on_the_loops_line() {
     );
     assert_eq!(frag.output.expect("drawn")[0], 0.75);
 }
+
+/// A vertex shader's `gl_Position` is the table's clip position, and a `vec3` attribute read
+/// as a `vec4` is filled with w = 1, as OpenGL fills it: `mvp * position` equals P·V·M·p for
+/// every vertex, and the window positions follow from it as the built-in stage's do.
+#[test]
+fn gl_position_is_the_clip_position_and_a_vec4_attribute_has_w_one() {
+    let scene = sphere_scene(false);
+    let built_in = render(&scene, &settings());
+    let vs = "#version 330 core
+uniform mat4 mvp;
+in vec4 position;
+void main() { gl_Position = mvp * position; }
+";
+    let fs = "#version 330 core
+out vec4 color;
+void main() { color = vec4(1.0); }
+";
+    let shaded = render(&with_shaders(scene, Some(vs), Some(fs)), &settings());
+    assert_eq!(built_in.vertices.len(), shaded.vertices.len());
+    for (a, b) in built_in.vertices.iter().zip(&shaded.vertices) {
+        assert!(
+            (a.clip - b.clip).abs().max_element() <= 1e-5 * a.clip.abs().max_element().max(1.0),
+            "vertex {}: P·V·M·p = {} vs gl_Position = {}",
+            a.index,
+            a.clip,
+            b.clip
+        );
+        assert_eq!(
+            (a.world, a.eye, a.normal_world),
+            (b.world, b.eye, b.normal_world)
+        );
+        assert_eq!(a.window.is_some(), b.window.is_some());
+    }
+}

@@ -141,9 +141,10 @@ fn shader_error(stage: shader::Stage, object: &Object, e: &shader::ShaderError) 
     )])
 }
 
-/// Runs each object's vertex shader over its rows of the vertex table (`vertices`, objects in
-/// order), writing `gl_Position` as the clip position (and the NDC and window positions that
-/// follow from it). Returns each object's results, or `None` when no object has shaders.
+/// Runs each object's vertex shader over its mesh's vertices, 64 a batch, from the mesh's own
+/// attributes. Returns each object's outputs (its `gl_Position` becomes the clip position of
+/// its rows when the vertex table is written), or `None` when no object has shaders. `spare`
+/// holds the output buffers of the frame before, written over in place.
 ///
 /// # Errors
 /// A run-time error of a vertex shader, or a `gl_Position` that is not finite.
@@ -151,7 +152,7 @@ pub(super) fn vertex_shaders(
     scene: &Scene,
     settings: &RenderSettings,
     matrices: &Matrices,
-    vertices: &mut [VertexRecord],
+    mut spare: Vec<Vec<f32>>,
 ) -> Result<Option<Vec<Option<VertexResults>>>, RenderError> {
     if !scene.has_shaders() {
         return Ok(None);
@@ -159,24 +160,39 @@ pub(super) fn vertex_shaders(
     let mut out = Vec::with_capacity(scene.objects.len());
     let mut first = 0usize;
     for (i, object) in scene.objects.iter().enumerate() {
-        let n = object.mesh.positions.len();
-        let rows = first..first + n;
-        first += n;
+        let start = first;
+        first += object.mesh.positions.len();
         let Some(sh) = &object.shader else {
             out.push(None);
             continue;
         };
         let u = uniforms(scene, settings, matrices, i, sh.time);
+        let values = spare.pop().unwrap_or_default();
         out.push(Some(run_vertex_shader(
             &sh.programs,
             object,
             &u,
-            &matrices.viewport.matrix,
-            &mut vertices[rows.clone()],
-            rows.start,
+            start,
+            values,
         )?));
     }
     Ok(Some(out))
+}
+
+/// Where object `i`'s vertex shader put each vertex's `gl_Position` (`None` when pipelens' own
+/// vertex stage transforms it).
+pub(super) fn shader_clip<'a>(
+    scene: &'a Scene,
+    results: Option<&'a [Option<VertexResults>]>,
+    i: usize,
+) -> Option<vertex::ShaderClip<'a>> {
+    let r = results?.get(i)?.as_ref()?;
+    let programs = &scene.objects[i].shader.as_ref()?.programs;
+    Some(vertex::ShaderClip {
+        values: &r.values,
+        stride: r.stride as usize,
+        position: programs.position as usize,
+    })
 }
 
 /// Row `row` of the vertex table through its object's vertex shader, traced: the attributes it
@@ -207,9 +223,9 @@ pub fn trace_vertex(
     } else {
         scene
     };
-    let Some(record) = capture.vertices.get(row) else {
+    if row >= capture.vertices.len() {
         return Ok(None);
-    };
+    }
     let mut first = 0usize;
     let Some((i, object)) = scene.objects.iter().enumerate().find(|(_, o)| {
         let n = o.mesh.positions.len();
@@ -232,7 +248,7 @@ pub fn trace_vertex(
         .map(|input| {
             let mut rows = vec![0u32; input.components as usize * LANES];
             let location = shader::interface::attribute_location(&input.name);
-            write_input(&mut rows, 0, input, location, object, record, index);
+            write_inputs(&mut rows, input, location, object, index, 1);
             rows
         })
         .collect();
@@ -290,112 +306,121 @@ pub(super) fn lane_values(
         .collect()
 }
 
-/// Writes vertex shader input `input` of mesh vertex `i` (table row `record`) into lane `l` of
-/// its rows: `gl_VertexIndex` is `i`, an attribute its value at `location`.
-fn write_input(
+/// Writes vertex shader input `input` of mesh vertices `first .. first + n` into lanes
+/// `0 .. n` of its rows: `gl_VertexIndex` is the vertex's index, an attribute its value at
+/// `location` (see [`shader::interface::ATTRIBUTES`]; a component the attribute lacks is 0, and
+/// the fourth 1, as OpenGL fills a vec4 from a vec3).
+fn write_inputs(
     rows: &mut [u32],
-    l: usize,
     input: &shader::Varying,
     location: Option<u32>,
     object: &Object,
-    record: &VertexRecord,
-    i: usize,
+    first: usize,
+    n: usize,
 ) {
+    let mesh = &object.mesh;
+    let components = input.components as usize;
+    let mut put = |l: usize, v: [f32; 3]| {
+        for (c, x) in [v[0], v[1], v[2], 1.0]
+            .into_iter()
+            .enumerate()
+            .take(components)
+        {
+            rows[c * LANES + l] = x.to_bits();
+        }
+    };
     if input.builtin == Some(naga::BuiltIn::VertexIndex) {
-        rows[l] = i as u32;
+        for l in 0..n {
+            rows[l] = (first + l) as u32;
+        }
         return;
     }
-    let a = attribute(object, record, location, i);
-    for c in 0..input.components as usize {
-        rows[c * LANES + l] = a[c].to_bits();
+    for l in 0..n {
+        let i = first + l;
+        let v = match location {
+            Some(0) => vertex::object_position(object, i).to_array(),
+            Some(1) => mesh
+                .normals
+                .get(i)
+                .copied()
+                .unwrap_or(Vec3::ZERO)
+                .to_array(),
+            Some(2) => mesh.uvs.get(i).map_or([0.0; 3], |uv| [uv.x, uv.y, 0.0]),
+            Some(3) => vertex::vertex_color(object, i).to_array(),
+            _ => [0.0; 3],
+        };
+        put(l, v);
     }
 }
 
-/// One attribute's value for mesh vertex `i` (see [`shader::interface::ATTRIBUTES`]).
-fn attribute(object: &Object, record: &VertexRecord, location: Option<u32>, i: usize) -> [f32; 4] {
-    let mesh = &object.mesh;
-    let v3 = |v: Vec3| [v.x, v.y, v.z, 0.0];
-    match location {
-        Some(0) => v3(record.object_pos.truncate()),
-        Some(1) => v3(mesh.normals.get(i).copied().unwrap_or(Vec3::ZERO)),
-        Some(2) => mesh
-            .uvs
-            .get(i)
-            .map_or([0.0; 4], |uv| [uv.x, uv.y, 0.0, 0.0]),
-        Some(3) => v3(record.color),
-        _ => [0.0; 4],
-    }
-}
-
+/// One object's vertex shader over its mesh: every output of every vertex, its `gl_Position`
+/// checked to be finite, in `values` (a buffer to reuse). `first` is the object's first row in
+/// the vertex table.
 fn run_vertex_shader(
     programs: &Programs,
     object: &Object,
     u: &Uniforms,
-    viewport: &glam::Mat4,
-    rows: &mut [VertexRecord],
     first: usize,
+    mut values: Vec<f32>,
 ) -> Result<VertexResults, RenderError> {
     let vs = &programs.vertex;
-    let stride: u32 = vs.outputs.iter().map(|o| o.components).sum();
-    let mut values = vec![0f32; rows.len() * stride as usize];
+    let count = object.mesh.positions.len();
+    let stride = vs.outputs.iter().map(|o| o.components).sum::<u32>() as usize;
+    // Every value is written below: only new room needs filling.
+    values.truncate(count * stride);
+    values.resize(count * stride, 0.0);
     let tex = textures(vs, object, crate::texture::Sampler::default());
     let locations: Vec<Option<u32>> = vs
         .inputs
         .iter()
         .map(|i| shader::interface::attribute_location(&i.name))
         .collect();
-    rows.par_chunks_mut(LANES)
-        .zip(values.par_chunks_mut(LANES * stride as usize))
+    let position = programs.position as usize;
+    values
+        .par_chunks_mut(LANES * stride.max(1))
         .enumerate()
         .try_for_each_init(
             || {
                 let mut m = vs.machine();
                 vs.set_uniforms(&mut m, u);
-                (m, Vec::<Vec<u32>>::new())
+                let rows: Vec<Vec<u32>> = vs
+                    .inputs
+                    .iter()
+                    .map(|i| vec![0; i.components as usize * LANES])
+                    .collect();
+                (m, rows)
             },
-            |(m, inputs), (k, (records, results))| {
-                let n = records.len();
-                inputs.resize(vs.inputs.len(), Vec::new());
-                for ((input, rows_in), location) in vs.inputs.iter().zip(inputs.iter_mut()).zip(&locations) {
-                    rows_in.clear();
-                    rows_in.resize(input.components as usize * LANES, 0);
-                    for (l, r) in records.iter().enumerate() {
-                        write_input(rows_in, l, input, *location, object, r, k * LANES + l);
-                    }
+            |(m, rows), (k, results)| {
+                let start = k * LANES;
+                let n = (count - start).min(LANES);
+                for ((input, rows), location) in vs.inputs.iter().zip(rows.iter_mut()).zip(&locations) {
+                    write_inputs(rows, input, *location, object, start, n);
                 }
-                let refs: Vec<&[u32]> = inputs.iter().map(Vec::as_slice).collect();
+                let refs: Vec<&[u32]> = rows.iter().map(Vec::as_slice).collect();
                 let bindings = Bindings { textures: &tex };
                 let live = if n == LANES { u64::MAX } else { (1 << n) - 1 };
                 m.run(&refs, n, live, &bindings)
                     .map_err(|e| shader_error(shader::Stage::Vertex, object, &vs.run_error(&e)))?;
                 let result = m.result();
-                for (l, r) in records.iter_mut().enumerate() {
-                    for c in 0..stride as usize {
-                        results[l * stride as usize + c] = f32::from_bits(result[c * LANES + l]);
+                for (l, out) in results.chunks_exact_mut(stride).enumerate() {
+                    for (c, v) in out.iter_mut().enumerate() {
+                        *v = f32::from_bits(result[c * LANES + l]);
                     }
-                    let p = programs.position as usize;
-                    let clip = Vec4::from_slice(&results[l * stride as usize + p..][..4]);
+                    let clip = Vec4::from_slice(&out[position..][..4]);
                     if !clip.is_finite() {
                         return Err(RenderError::Invalid(vec![format!(
                             "vertex shader of {}: vertex {} has gl_Position = {clip}, which is not finite",
                             object.name,
-                            k * LANES + l
+                            start + l
                         )]));
                     }
-                    r.clip = clip;
-                    (r.ndc, r.window) = if clip.w > 0.0 {
-                        let (ndc, window, _) = vertex::to_window(clip, viewport);
-                        (Some(ndc), Some(window))
-                    } else {
-                        (None, None)
-                    };
                 }
                 Ok(())
             },
         )?;
     Ok(VertexResults {
         first: first as u32,
-        stride,
+        stride: stride as u32,
         values,
     })
 }

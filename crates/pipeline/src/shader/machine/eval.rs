@@ -1,15 +1,82 @@
 //! The machine's expressions: each evaluated for every lane of the batch, reading its operands'
-//! registers and writing its own. Errors (an index out of range, an integer division by zero)
-//! count only in live lanes.
+//! registers and writing its own; a store into a place; the invariant registers (constants, a
+//! uniform at a fixed place) evaluated once per uniform set. Errors (an index out of range, an
+//! integer division by zero) count only in live lanes.
 
 use glam::{Vec2, Vec3};
 use naga::{RelationalFunction, UnaryOperator};
 
-use super::super::code::{Function, Kind, Level, Op, Reg, Root, Shape};
+use super::super::code::{Function, Kind, Level, Op, Place, Reg, Root, Shape};
 use super::super::ops;
-use super::{Bindings, LANES, Machine, Res, RunError, bit};
+use super::{Bindings, LANES, Machine, Res, RunError, bit, masked_copy};
 
 impl Machine<'_> {
+    pub(super) fn store(
+        &mut self,
+        fi: usize,
+        place: &Place,
+        value: u32,
+        mask: u64,
+        live: u64,
+    ) -> Res<()> {
+        let at = self.code.functions[fi]
+            .spans
+            .get(value as usize)
+            .copied()
+            .unwrap_or(0);
+        if place.dynamic.is_empty() {
+            for c in 0..place.n as usize {
+                let (dst, src) = (
+                    (place.at as usize + c) * LANES,
+                    (value as usize + c) * LANES,
+                );
+                let row: [u32; LANES] = self.regs[fi][src..src + LANES]
+                    .try_into()
+                    .unwrap_or([0; LANES]);
+                let storage = match place.root {
+                    Root::Local => &mut self.locals[fi],
+                    _ => &mut self.privates,
+                };
+                masked_copy(&mut storage[dst..dst + LANES], &row, mask, self.n);
+            }
+            return Ok(());
+        }
+        for l in 0..self.n {
+            if mask & bit(l) == 0 {
+                continue;
+            }
+            let o = self.offset_checked(fi, place, l, live & bit(l) != 0, at)?;
+            for c in 0..place.n as usize {
+                let v = self.regs[fi][(value as usize + c) * LANES + l];
+                let storage = match place.root {
+                    Root::Local => &mut self.locals[fi],
+                    _ => &mut self.privates,
+                };
+                storage[(o as usize + c) * LANES + l] = v;
+            }
+        }
+        Ok(())
+    }
+
+    /// Evaluates the invariant expressions (see `invariants_ready`) over all lanes.
+    pub(super) fn prepare_invariants(&mut self, b: &Bindings<'_>) -> Res<()> {
+        let code = self.code;
+        let n = std::mem::replace(&mut self.n, LANES);
+        for (fi, f) in code.functions.iter().enumerate() {
+            for &e in &f.pre {
+                self.eval(fi, e as usize, u64::MAX, b)?;
+            }
+            for (e, op) in f.ops.iter().enumerate() {
+                if is_fixed_uniform_load(op) {
+                    self.eval(fi, e, u64::MAX, b)?;
+                }
+            }
+        }
+        self.n = n;
+        self.invariants_ready = true;
+        Ok(())
+    }
+
     #[allow(clippy::too_many_lines)]
     pub(super) fn eval(&mut self, fi: usize, e: usize, live: u64, b: &Bindings<'_>) -> Res<()> {
         let code = self.code;
@@ -26,6 +93,8 @@ impl Machine<'_> {
                     regs[(dst.at as usize + c) * LANES..][..n].fill(x);
                 }
             }
+            // Evaluated once over every lane by `prepare_invariants`.
+            op @ Op::Load(_) if self.invariants_ready && is_fixed_uniform_load(op) => {}
             Op::Load(place) => {
                 // Each lane's offset when the place has a dynamic index (`lights[i]`).
                 let mut offsets = [0u32; LANES];
@@ -381,4 +450,10 @@ impl Machine<'_> {
         }
         Ok(())
     }
+}
+
+/// Whether `op` reads a uniform at a fixed place: its value is the same in every lane and every
+/// run until the uniforms change.
+pub(super) fn is_fixed_uniform_load(op: &Op) -> bool {
+    matches!(op, Op::Load(p) if p.root == Root::Uniform && p.dynamic.is_empty())
 }

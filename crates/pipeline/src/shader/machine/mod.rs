@@ -108,6 +108,10 @@ pub struct Machine<'c> {
     pub budget: u32,
     killed: u64,
     trace: Option<(usize, Vec<Event>)>,
+    /// Whether the registers of the values no invocation changes hold them: each function's
+    /// constants (its `pre`) and its loads of a uniform at a fixed place. They are evaluated
+    /// over every lane once, at the first run after the uniforms are set, not at every run.
+    invariants_ready: bool,
 }
 
 type Res<T> = Result<T, RunError>;
@@ -140,6 +144,7 @@ impl<'c> Machine<'c> {
             budget: 1 << 16,
             killed: 0,
             trace: None,
+            invariants_ready: false,
         }
     }
 
@@ -147,6 +152,7 @@ impl<'c> Machine<'c> {
     pub fn set_uniform(&mut self, reg: Reg, bits: &[u32]) {
         let r = reg.at as usize..(reg.at + reg.n) as usize;
         self.uniforms[r].copy_from_slice(&bits[..reg.n as usize]);
+        self.invariants_ready = false;
     }
 
     /// Records what lane `lane` does in the next run.
@@ -186,6 +192,9 @@ impl<'c> Machine<'c> {
                 self.privates[row..row + self.n].fill(x);
             }
         }
+        if !self.invariants_ready {
+            self.prepare_invariants(bindings)?;
+        }
         let entry = code.functions.len() - 1;
         let f = &code.functions[entry];
         for (arg, input) in f.args.iter().zip(inputs) {
@@ -210,9 +219,7 @@ impl<'c> Machine<'c> {
     fn call(&mut self, fi: usize, mask: u64, live: u64, b: &Bindings<'_>) -> Res<()> {
         let code = self.code;
         let f = &code.functions[fi];
-        for &e in &f.pre {
-            self.eval(fi, e as usize, mask & live, b)?;
-        }
+        // The constants (`pre`) were evaluated once, by `prepare_invariants`.
         let regs = &self.regs[fi];
         let locals = &mut self.locals[fi];
         for (reg, init) in &f.locals {
@@ -446,14 +453,19 @@ impl<'c> Machine<'c> {
                     result,
                 } => {
                     let callee = &code.functions[*function];
-                    let name = callee.name.clone();
-                    self.event(fi, mask, |_, _| Event::Call { at: *at, name });
+                    self.event(fi, mask, |_, _| Event::Call {
+                        at: *at,
+                        name: callee.name.clone(),
+                    });
+                    // A callee is never the caller (GLSL has no recursion): its registers are
+                    // another function's, taken out while the arguments are copied in.
+                    let caller = std::mem::take(&mut self.regs[fi]);
                     for (arg, src) in callee.args.iter().zip(args) {
                         let (s, d) = (src.at as usize * LANES, arg.at as usize * LANES);
                         let len = arg.n as usize * LANES;
-                        let rows: Vec<u32> = self.regs[fi][s..s + len].to_vec();
-                        self.regs[*function][d..d + len].copy_from_slice(&rows);
+                        self.regs[*function][d..d + len].copy_from_slice(&caller[s..s + len]);
                     }
+                    self.regs[fi] = caller;
                     self.call(*function, mask, live, b)?;
                     if let Some(r) = result {
                         let len = r.n as usize * LANES;
@@ -530,46 +542,6 @@ impl<'c> Machine<'c> {
                 }
             })
             .collect()
-    }
-
-    fn store(&mut self, fi: usize, place: &Place, value: u32, mask: u64, live: u64) -> Res<()> {
-        let at = self.code.functions[fi]
-            .spans
-            .get(value as usize)
-            .copied()
-            .unwrap_or(0);
-        if place.dynamic.is_empty() {
-            for c in 0..place.n as usize {
-                let (dst, src) = (
-                    (place.at as usize + c) * LANES,
-                    (value as usize + c) * LANES,
-                );
-                let row: [u32; LANES] = self.regs[fi][src..src + LANES]
-                    .try_into()
-                    .unwrap_or([0; LANES]);
-                let storage = match place.root {
-                    Root::Local => &mut self.locals[fi],
-                    _ => &mut self.privates,
-                };
-                masked_copy(&mut storage[dst..dst + LANES], &row, mask, self.n);
-            }
-            return Ok(());
-        }
-        for l in 0..self.n {
-            if mask & bit(l) == 0 {
-                continue;
-            }
-            let o = self.offset_checked(fi, place, l, live & bit(l) != 0, at)?;
-            for c in 0..place.n as usize {
-                let v = self.regs[fi][(value as usize + c) * LANES + l];
-                let storage = match place.root {
-                    Root::Local => &mut self.locals[fi],
-                    _ => &mut self.privates,
-                };
-                storage[(o as usize + c) * LANES + l] = v;
-            }
-        }
-        Ok(())
     }
 }
 
