@@ -349,7 +349,7 @@ impl Machine<'_> {
                         coordinate,
                         level,
                     } => {
-                        let bound = b.textures.get(*texture as usize).copied().flatten();
+                        let bound = b.bound(*texture);
                         let uv = |l: usize| {
                             Vec2::new(
                                 f32::from_bits(row(coordinate.at, 0)[l]),
@@ -390,12 +390,7 @@ impl Machine<'_> {
                         coordinate,
                         level,
                     } => {
-                        let t = b
-                            .textures
-                            .get(*texture as usize)
-                            .copied()
-                            .flatten()
-                            .map(|(t, _)| t);
+                        let t = b.bound(*texture).map(|(t, _)| t);
                         for l in 0..n {
                             let (i, j) = (
                                 row(coordinate.at, 0)[l] as i32,
@@ -429,12 +424,7 @@ impl Machine<'_> {
                         }
                     }
                     Op::Size { texture, level } => {
-                        let t = b
-                            .textures
-                            .get(*texture as usize)
-                            .copied()
-                            .flatten()
-                            .map(|(t, _)| t);
+                        let t = b.bound(*texture).map(|(t, _)| t);
                         for l in 0..n {
                             let k = level.map_or(0, |r| row(r, 0)[l] as usize);
                             let (w, h) = t

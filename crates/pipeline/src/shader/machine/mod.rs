@@ -86,6 +86,14 @@ pub struct Bindings<'a> {
     pub textures: &'a [Option<(&'a Texture, Sampler)>],
 }
 
+impl<'a> Bindings<'a> {
+    /// The texture in slot `slot` and its sampler, if one is bound.
+    #[must_use]
+    pub fn bound(&self, slot: u32) -> Option<(&'a Texture, Sampler)> {
+        self.textures.get(slot as usize).copied().flatten()
+    }
+}
+
 /// Control flow of the running function: lanes that broke, continued or returned.
 #[derive(Clone, Copy, Default)]
 struct Flow {
