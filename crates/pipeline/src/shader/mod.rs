@@ -35,7 +35,7 @@ pub use link::{
     link,
 };
 pub use machine::{Bindings, Event, LANES, Machine, RunError};
-pub use trace::{Trace, TraceLine, glsl_type};
+pub use trace::{Trace, TraceLine, float_text, glsl_type};
 
 /// Which programmable stage a shader is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -54,17 +54,25 @@ impl Program {
     }
 }
 
+/// A float as the debugger shows it: three decimals (`0.250`), or three significant digits in
+/// scientific form where three decimals would hide it (`2.512e-5`: a cross product of two
+/// per-pixel differences is that small) or it is very large; `NaN` and `inf` as they are.
+#[must_use]
+pub fn float_text(x: f32) -> String {
+    let a = x.abs();
+    if !x.is_finite() {
+        format!("{x}")
+    } else if a != 0.0 && !(0.0005..1e7).contains(&a) {
+        format!("{x:.3e}")
+    } else {
+        format!("{x:.3}")
+    }
+}
+
 fn format_value(module: &naga::Module, ty: naga::Handle<naga::Type>, bits: &[u32]) -> String {
     let name = glsl_type(module, ty);
     let scalar = |k: code::Kind, b: u32| match k {
-        code::Kind::F => {
-            let x = f32::from_bits(b);
-            if x.is_finite() {
-                format!("{x:.3}")
-            } else {
-                format!("{x}")
-            }
-        }
+        code::Kind::F => float_text(f32::from_bits(b)),
         code::Kind::I => (b as i32).to_string(),
         code::Kind::U => format!("{b}u"),
         code::Kind::B => (b != 0).to_string(),

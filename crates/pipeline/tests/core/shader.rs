@@ -514,3 +514,18 @@ fn the_builtin_shaders_link_and_a_fragment_input_finds_its_vertex_output() {
         "{e:?}"
     );
 }
+
+/// The debugger never shows a value that is not zero as `0.000`: three decimals where they
+/// show it, three significant digits in scientific form where they would not.
+#[test]
+fn the_debugger_shows_small_values_with_their_digits() {
+    use pipeline::shader::float_text;
+    assert_eq!(float_text(0.25), "0.250");
+    assert_eq!(float_text(-1.5), "-1.500");
+    assert_eq!(float_text(0.0), "0.000");
+    assert_eq!(float_text(1.09e-5), "1.090e-5");
+    assert_eq!(float_text(-4.066e-5), "-4.066e-5");
+    assert_eq!(float_text(3.0e9), "3.000e9");
+    assert_eq!(float_text(f32::NAN), "NaN");
+    assert_eq!(float_text(f32::INFINITY), "inf");
+}

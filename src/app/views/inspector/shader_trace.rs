@@ -67,11 +67,11 @@ fn fragment(ui: &mut Ui, k: usize, f: &FragmentTrace, lang: Lang) {
                 ))
                 .italics(),
             );
-            values(ui, ("shader inputs", k), &f.inputs);
+            values(ui, &f.inputs);
             ui.label(
                 RichText::new(lang.tr("ran, statement by statement", "逐条语句的执行")).italics(),
             );
-            run(ui, ("shader trace", k), &f.trace, lang);
+            run(ui, &f.trace, lang);
             match f.output {
                 Some(c) => {
                     ui.monospace(format!(
@@ -130,46 +130,44 @@ pub(super) fn vertex(ui: &mut Ui, session: &Session, capture: &FrameCapture, row
                     RichText::new(lang.tr("received (its attributes)", "收到的输入（它的属性）"))
                         .italics(),
                 );
-                values(ui, "vertex inputs", &traced.inputs);
+                values(ui, &traced.inputs);
                 ui.label(
                     RichText::new(lang.tr("ran, statement by statement", "逐条语句的执行"))
                         .italics(),
                 );
-                run(ui, "vertex trace", &traced.trace, lang);
+                run(ui, &traced.trace, lang);
                 ui.label(RichText::new(lang.tr("wrote", "输出")).italics());
-                values(ui, "vertex outputs", &traced.outputs);
+                values(ui, &traced.outputs);
             });
     });
     ui.separator();
 }
 
-/// Names and values, one a row.
-fn values(ui: &mut Ui, id: impl std::hash::Hash + std::fmt::Debug, rows: &[(String, String)]) {
-    egui::Grid::new(id).striped(true).show(ui, |ui| {
-        for (name, value) in rows {
+/// Names and values, one a row. A long value (a `Light` struct, a matrix) wraps within the
+/// panel instead of widening it past the window.
+fn values(ui: &mut Ui, rows: &[(String, String)]) {
+    for (name, value) in rows {
+        ui.horizontal_wrapped(|ui| {
             ui.monospace(name);
-            ui.monospace(value);
-            ui.end_row();
-        }
-    });
+            ui.add(egui::Label::new(RichText::new(value).monospace()).wrap());
+        });
+    }
 }
 
-/// A run, statement by statement, a value that is NaN or infinite flagged.
-fn run(ui: &mut Ui, id: impl std::hash::Hash + std::fmt::Debug, trace: &[TraceLine], lang: Lang) {
-    egui::Grid::new(id).striped(true).show(ui, |ui| {
-        for line in trace {
-            ui.monospace(format!("{} {}", lang.tr("line", "行"), line.line));
-            if not_finite(&line.text) {
+/// A run, statement by statement, a value that is NaN or infinite flagged; long lines wrap.
+fn run(ui: &mut Ui, trace: &[TraceLine], lang: Lang) {
+    for line in trace {
+        ui.horizontal_wrapped(|ui| {
+            ui.monospace(format!("{} {:>3}", lang.tr("line", "行"), line.line));
+            let text = if not_finite(&line.text) {
                 // The statement where a value stopped being a number.
-                ui.label(
-                    RichText::new(format!("{}   ⚠ NaN/∞", line.text))
-                        .monospace()
-                        .color(ui.visuals().error_fg_color),
-                );
+                RichText::new(format!("{}   ⚠ NaN/∞", line.text))
+                    .monospace()
+                    .color(ui.visuals().error_fg_color)
             } else {
-                ui.monospace(&line.text);
-            }
-            ui.end_row();
-        }
-    });
+                RichText::new(&line.text).monospace()
+            };
+            ui.add(egui::Label::new(text).wrap());
+        });
+    }
 }

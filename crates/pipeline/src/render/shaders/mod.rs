@@ -284,7 +284,7 @@ pub fn trace_vertex(
 /// it: `0.500` or `vec3(0.000, 0.707, 0.707)`.
 pub(super) fn lane_value(rows: &[u32], components: usize, lane: usize) -> String {
     let v: Vec<String> = (0..components)
-        .map(|c| format!("{:.3}", f32::from_bits(rows[c * LANES + lane])))
+        .map(|c| shader::float_text(f32::from_bits(rows[c * LANES + lane])))
         .collect();
     if v.len() == 1 {
         v[0].clone()
@@ -302,7 +302,16 @@ pub(super) fn lane_values(
     varyings
         .iter()
         .zip(rows)
-        .map(|(v, r)| (v.name.clone(), lane_value(r, v.components as usize, lane)))
+        .map(|(v, r)| {
+            let value = match v.builtin {
+                Some(naga::BuiltIn::FrontFacing) => (r[lane] != 0).to_string(),
+                Some(naga::BuiltIn::VertexIndex | naga::BuiltIn::InstanceIndex) => {
+                    r[lane].to_string()
+                }
+                _ => lane_value(r, v.components as usize, lane),
+            };
+            (v.name.clone(), value)
+        })
         .collect()
 }
 
