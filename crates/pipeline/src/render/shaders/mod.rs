@@ -339,8 +339,8 @@ fn write_inputs(
         }
     };
     if input.builtin == Some(naga::BuiltIn::VertexIndex) {
-        for l in 0..n {
-            rows[l] = (first + l) as u32;
+        for (l, r) in rows[..n].iter_mut().enumerate() {
+            *r = (first + l) as u32;
         }
         return;
     }
