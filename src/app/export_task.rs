@@ -123,6 +123,7 @@ impl PipelensApp {
             answers: false,
             slides,
             data: false,
+            pixel: None,
             cancel: crate::export::Cancel::default(),
         };
         Some((lesson, opts))

@@ -26,6 +26,7 @@ fn measure(lesson: &Lesson, lang: Lang, scratch: &Path) -> Result<(u64, f64)> {
         answers: false,
         slides: false,
         data: false,
+        pixel: None,
         cancel: crate::export::Cancel::default(),
     };
     let start = Instant::now();

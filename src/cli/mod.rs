@@ -97,7 +97,8 @@ pub enum Command {
         profile: Option<[f32; 4]>,
         /// Also write into capture.json everything about window pixel X,Y (y up, as the app's
         /// pixel inspector shows it): every fragment, its depth test, each lighting term, the
-        /// texture lookup.
+        /// texture lookup, the shaders' runs. For a lesson, with --data: in every step's
+        /// capture.json, in place of the step's own pixel.
         #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
         pixel: Option<(u32, u32)>,
     },
@@ -241,6 +242,13 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                 && let lesson::Document::Lesson(l) =
                     lesson::load_file(path).map_err(|d| anyhow::anyhow!("{d}"))?
             {
+                if let Some((x, y)) = pixel
+                    && !data
+                {
+                    anyhow::bail!(
+                        "--pixel {x},{y} writes that pixel's record into each step's capture.json, which a lesson's export writes with --data: add --data"
+                    );
+                }
                 let opts = crate::export::lesson::LessonExport {
                     out,
                     step: match step {
@@ -257,6 +265,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                     answers,
                     slides,
                     data,
+                    pixel,
                     cancel: cancel_on_interrupt(),
                 };
                 return export_lesson(&l, &opts);

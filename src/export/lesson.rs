@@ -37,6 +37,9 @@ pub struct LessonExport {
     pub slides: bool,
     /// Each step's buffers and `capture.json` in `step-NN/`, the textures in `textures/`.
     pub data: bool,
+    /// With `data`: the window pixel `(x, y)` (y up) whose full record each step's
+    /// `capture.json` holds, in place of the step's own inspected pixel.
+    pub pixel: Option<(u32, u32)>,
     /// Stops the export between two files.
     pub cancel: super::Cancel,
 }
@@ -243,6 +246,11 @@ fn spec_of(lesson: &Lesson, k: usize, opts: &LessonExport, t: Option<f32>) -> Re
         spec.settings.width = w;
         spec.settings.height = h;
     }
+    // The pixel `capture.json` describes: the frame records its fragment shaders' runs there.
+    if opts.data {
+        spec.settings.capture.pixel =
+            data_pixel(lesson, k, opts, (spec.settings.width, spec.settings.height));
+    }
     if let Some(p) = spec.settings.problems().first() {
         anyhow::bail!("{p}");
     }
@@ -402,6 +410,19 @@ fn gif(frames: &[RgbaImage], delay_ms: u32) -> Result<Vec<u8>> {
     Ok(bytes)
 }
 
+/// The pixel whose record step `k`'s `capture.json` holds in a `w × h` image: `--pixel`, else
+/// the step's own inspected pixel when it is inside the image.
+fn data_pixel(
+    lesson: &Lesson,
+    k: usize,
+    opts: &LessonExport,
+    (w, h): (u32, u32),
+) -> Option<(u32, u32)> {
+    opts.pixel
+        .or(lesson.steps[k].pixel)
+        .filter(|&(x, y)| x < w && y < h)
+}
+
 /// With `--data`: step `k`'s buffers, `capture.json` (with the step's pixel), the compared
 /// images and the profile; and the textures' mip levels (the same for every step).
 fn data_files(
@@ -412,13 +433,21 @@ fn data_files(
     variants: &[(String, FrameCapture)],
 ) -> Result<(Vec<ExportFile>, Vec<ExportFile>)> {
     let step = &lesson.steps[k];
+    if let Some((x, y)) = opts.pixel
+        && (x >= capture.width() || y >= capture.height())
+    {
+        anyhow::bail!(
+            "--pixel {x},{y} is outside step {}'s {}×{} image",
+            k + 1,
+            capture.width(),
+            capture.height()
+        );
+    }
     let export = ExportOptions {
         out: opts.out.join(step_dir(k)),
         overlay_zoom: 0,
         max_records: opts.max_records,
-        pixel: step
-            .pixel
-            .filter(|&(x, y)| x < capture.width() && y < capture.height()),
+        pixel: data_pixel(lesson, k, opts, (capture.width(), capture.height())),
         cancel: opts.cancel.clone(),
     };
     let (mut files, textures): (Vec<_>, Vec<_>) = encode_capture(capture, &export)?

@@ -235,3 +235,48 @@ fn slides_and_data_only_on_request() {
         .collect();
     assert_eq!(names, ["index.html"]);
 }
+
+/// `export LESSON --data --pixel X,Y` writes that pixel's record into every step's
+/// `capture.json` (in place of the step's own); without `--data` the flag is refused, and a
+/// pixel outside a step's image is an error naming the step, not a silent omission.
+#[test]
+fn a_lessons_data_holds_the_pixel_asked_for() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    export(dir.path(), &["--data", "--pixel", "20,30"]);
+    for k in 1..=2 {
+        let json: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(dir.path().join(format!("out/step-0{k}/capture.json")))
+                .expect("capture.json"),
+        )
+        .expect("json");
+        let pixel = &json["pixel"];
+        assert_eq!(
+            (pixel["x"].as_u64(), pixel["y"].as_u64()),
+            (Some(20), Some(30)),
+            "step {k}: {pixel}"
+        );
+    }
+    // Without --pixel, step 1 keeps its own pixel (80, 70).
+    let dir = tempfile::tempdir().expect("temp dir");
+    export(dir.path(), &["--data"]);
+    let json: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.path().join("out/step-01/capture.json")).expect("json"),
+    )
+    .expect("json");
+    assert_eq!(json["pixel"]["x"].as_u64(), Some(80));
+    for (args, expect) in [
+        (&["--pixel", "20,30"][..], "add --data"),
+        (
+            &["--data", "--pixel", "500,30"][..],
+            "outside step 1's 160×120 image",
+        ),
+    ] {
+        let dir = tempfile::tempdir().expect("temp dir");
+        std::fs::write(dir.path().join("picture.toml"), LESSON).expect("write");
+        let mut all = vec!["export", "picture.toml", "--out", "out"];
+        all.extend(args);
+        let o = pipelens(dir.path(), &all);
+        assert!(!o.status.success(), "{args:?} succeeded");
+        assert!(text(&o).contains(expect), "{args:?}: {}", text(&o));
+    }
+}
