@@ -44,6 +44,8 @@ pub enum Step {
     },
     /// `M ← M·local` and the part is drawn with `M·instance`.
     Visit {
+        /// The figure the part belongs to.
+        figure: String,
         /// The part.
         node: String,
         /// The composite `M` after multiplying by the part's local matrix.
@@ -351,6 +353,24 @@ pub fn traverse(figure: &Figure, first: usize) -> (Vec<Part>, Vec<Step>) {
     (walk.parts, walk.steps)
 }
 
+/// `figure`'s root part in a traversal (the first figure's when `None`) and its composite: the
+/// matrix its chain starts from, `M(base)` for the robot arm, `M(torso)` for the humanoid.
+#[must_use]
+pub fn root_composite<'a>(
+    steps: &'a [Step],
+    figure: Option<&str>,
+) -> Option<(&'a str, &'a NamedMatrix)> {
+    steps.iter().find_map(|s| match s {
+        Step::Visit {
+            figure: f,
+            node,
+            composite,
+            ..
+        } if figure.is_none_or(|g| g == f) => Some((node.as_str(), composite)),
+        _ => None,
+    })
+}
+
 /// The state of a traversal: what it has drawn and done so far.
 struct Walk<'a> {
     figure: &'a str,
@@ -377,6 +397,7 @@ impl Walk<'_> {
         )
         .with_factors(vec![composite.clone(), node.instance.clone()]);
         self.steps.push(Step::Visit {
+            figure: self.figure.to_owned(),
             node: node.name.clone(),
             composite: composite.clone(),
             object: self.first + self.parts.len(),

@@ -121,3 +121,40 @@ fn the_humanoid_is_traversed_depth_first_with_the_torso_restored_between_limbs()
         .expect("visited");
     assert!(close(&lower, &by_hand));
 }
+
+/// Each visit names its figure, and a step about the humanoid finds the humanoid's root,
+/// M(torso), even when the robot arm was traversed first.
+#[test]
+fn the_root_of_each_figure_is_found_by_its_name() {
+    use pipeline::hierarchy::root_composite;
+    let arm = Figure {
+        name: "arm".into(),
+        pose: Pose::RobotArm(RobotArm::default()),
+        translate: Vec3::ZERO,
+    };
+    let body = Figure {
+        name: "body".into(),
+        pose: Pose::Humanoid(Humanoid {
+            torso: 30.0,
+            ..Humanoid::default()
+        }),
+        translate: Vec3::new(2.0, 0.0, 0.0),
+    };
+    let (parts, mut steps) = traverse(&arm, 0);
+    steps.extend(traverse(&body, parts.len()).1);
+    let (node, m) = root_composite(&steps, Some("body")).expect("the humanoid's root");
+    assert_eq!(node, "torso");
+    assert_eq!(m.name, "M(torso)");
+    // The humanoid's own first composite, not the arm's base.
+    let (_, alone) = traverse(&body, 0);
+    let (_, torso) = root_composite(&alone, None).expect("a root");
+    assert!(close(&m.matrix, &torso.matrix));
+    let (_, base) = root_composite(&steps, None).expect("a root");
+    assert!(!close(&m.matrix, &base.matrix));
+    assert_eq!(root_composite(&steps, None).map(|(n, _)| n), Some("base"));
+    assert_eq!(
+        root_composite(&steps, Some("arm")).map(|(n, _)| n),
+        Some("base")
+    );
+    assert!(root_composite(&steps, Some("nobody")).is_none());
+}

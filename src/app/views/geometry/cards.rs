@@ -117,13 +117,22 @@ pub(super) fn matrix_card(
             ),
             _ => return None,
         },
-        (Space::World, Teaching::Stack) => match capture.hierarchy.iter().find_map(|s| match s {
-            pipeline::hierarchy::Step::Visit { composite, .. } => Some(composite),
-            _ => None,
-        }) {
-            Some(c) => (c.name.clone(), Some(c)),
-            None => return None,
-        },
+        (Space::World, Teaching::Stack) => {
+            // The root of the figure the step is about (the first figure when it names none).
+            let figures = &session.spec.scene.figures;
+            let focus = session.selection.focus.as_deref().unwrap_or_default();
+            let figure = focus
+                .iter()
+                .find(|f| figures.iter().any(|g| &g.name == *f))
+                .map(String::as_str);
+            let (node, c) = pipeline::hierarchy::root_composite(&capture.hierarchy, figure)?;
+            let part = crate::vocabulary::part_name(node, lang);
+            let title = match figure {
+                Some(f) => format!("M({part}) · {}", session.spec.label(f, lang)),
+                None => format!("M({part})"),
+            };
+            (title, Some(c))
+        }
         (Space::Eye, _) => (m.view.name.clone(), Some(&m.view)),
         (Space::Clip, _) => (m.projection.name.clone(), Some(&m.projection)),
         (Space::Ndc, _) => (

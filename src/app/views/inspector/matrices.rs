@@ -143,16 +143,12 @@ fn hierarchy(ui: &mut Ui, session: &Session, capture: &FrameCapture, lang: Lang)
                 );
             }
             Step::Visit {
+                figure,
                 node,
                 composite,
-                object,
+                ..
             } => {
-                let figure = capture
-                    .objects
-                    .get(*object)
-                    .and_then(|o| o.name.split_once(": "))
-                    .map(|(f, _)| f.to_owned());
-                let open = figure.as_ref().is_some_and(|f| focus.contains(f)) && i < 12;
+                let open = focus.contains(figure) && i < 12;
                 egui::CollapsingHeader::new(
                     RichText::new(format!("M({}) = M·local", part_name(node, lang))).monospace(),
                 )
