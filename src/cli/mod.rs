@@ -285,26 +285,34 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
         }
         Some(Command::Check { paths }) => Ok(authoring::check(&paths)),
         Some(Command::NewLesson { file }) => authoring::new_lesson(&file),
-        Some(Command::Bench {
+        Some(bench @ Command::Bench { .. }) => run_bench(bench),
+    }
+}
+
+/// `pipelens bench` in its three forms: the stages (with llvmpipe alongside on request), the
+/// handouts, the student's shaders.
+fn run_bench(command: Command) -> Result<ExitCode> {
+    match command {
+        Command::Bench {
             handouts: true,
             data,
             ..
-        }) => {
+        } => {
             let mut out = std::io::stdout().lock();
             crate::bench::handouts::run(Path::new("lessons"), &data, &mut out)?;
             Ok(ExitCode::SUCCESS)
         }
-        Some(Command::Bench {
+        Command::Bench {
             shaders: true,
             quick,
             frames,
             ..
-        }) => {
+        } => {
             let mut out = std::io::stdout().lock();
             crate::bench::shader_rows(frames.unwrap_or(if quick { 1 } else { 5 }), &mut out)?;
             Ok(ExitCode::SUCCESS)
         }
-        Some(Command::Bench {
+        Command::Bench {
             quick,
             frames,
             peer_python,
@@ -312,7 +320,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             data,
             handouts: false,
             shaders: false,
-        }) => {
+        } => {
             let mut out = std::io::stdout().lock();
             crate::bench::run(quick, frames, &mut out)?;
             if let Some(python) = peer_python {
@@ -324,6 +332,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             }
             Ok(ExitCode::SUCCESS)
         }
+        _ => anyhow::bail!("run_bench is called with a bench command"),
     }
 }
 
