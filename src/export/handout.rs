@@ -189,7 +189,7 @@ fn matrices_shown<'a>(
 }
 
 const STYLE: &str = "\
-body{font-family:'Noto Sans SC','Noto Sans CJK SC',sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;line-height:1.55;color:#222}
+body{font-family:'Noto Sans SC','Noto Sans CJK SC',sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;line-height:1.55;color:#222;line-break:strict}
 h1{margin-bottom:.2em} .summary{color:#555} section{border-top:1px solid #ccc;margin-top:2em;padding-top:1em}
 img{max-width:100%;border:1px solid #aaa} figure{margin:.6em 0} figcaption{font-size:.9em;color:#444}
 .film{display:grid;grid-template-columns:repeat(5,1fr);gap:.4em} .film figure{margin:0} .film img{width:100%}

@@ -136,19 +136,6 @@ fn run_width(text: &str, script: Script, size: f32) -> f32 {
     width(text, script.placed(size).0)
 }
 
-/// Whether a line may break before or after `c` without a space (Chinese and Japanese text).
-fn breaks_anywhere(c: char) -> bool {
-    matches!(c as u32, 0x2E80..=0x9FFF | 0xF900..=0xFAFF | 0xFF00..=0xFFEF)
-}
-
-/// Whether `c` is Chinese punctuation that may not begin a line (it stays with what it follows).
-fn closes(c: char) -> bool {
-    matches!(
-        c,
-        '，' | '。' | '、' | '；' | '：' | '！' | '？' | '）' | '」' | '』' | '》' | '】'
-    )
-}
-
 /// The runs cut into lines no wider than `max` at `size` (a word wider than a line stays whole).
 #[must_use]
 pub fn wrap(runs: &[Run], size: f32, max: f32) -> Vec<Vec<Run>> {
@@ -156,15 +143,21 @@ pub fn wrap(runs: &[Run], size: f32, max: f32) -> Vec<Vec<Run>> {
     // piece may hold several runs (a symbol and its subscript, a formula and its full stop).
     let mut pieces: Vec<Vec<Run>> = Vec::new();
     let mut cur: Vec<Run> = Vec::new();
+    // Chinese line-breaking rules: closing punctuation stays with what it follows, opening
+    // punctuation with what follows it.
+    use crate::vocabulary::notation::{closes, is_cjk, opens};
     let mut after_space = false;
+    let mut after_opening = false;
     for r in runs {
         for c in r.text.chars() {
-            let cut = !closes(c) && (breaks_anywhere(c) || (after_space && !c.is_whitespace()));
+            let cut =
+                !closes(c) && !after_opening && (is_cjk(c) || (after_space && !c.is_whitespace()));
             if cut && !cur.is_empty() {
                 pieces.push(std::mem::take(&mut cur));
             }
             push(&mut cur, c.encode_utf8(&mut [0; 4]), r.color, r.script);
-            after_space = c.is_whitespace() || breaks_anywhere(c);
+            after_space = c.is_whitespace() || is_cjk(c);
+            after_opening = opens(c);
         }
     }
     if !cur.is_empty() {
@@ -318,6 +311,14 @@ mod tests {
         let lines = wrap(&zh, 20.0, width("透视投影", 20.0) + 1.0);
         let first: String = lines[0].iter().map(|r| r.text.as_str()).collect();
         assert_eq!(first, "透视投");
+        // Nor does an opening bracket end one: it goes with the character after it.
+        let zh = marked_runs("透视投（影）", [0; 3], [0; 3]);
+        let lines = wrap(&zh, 20.0, width("透视投（", 20.0) + 1.0);
+        let texts: Vec<String> = lines
+            .iter()
+            .map(|l| l.iter().map(|r| r.text.as_str()).collect::<String>())
+            .collect();
+        assert_eq!(texts, ["透视投", "（影）"]);
     }
 
     /// Slides typeset as the app and the handout do: scripts smaller and shifted, a fraction on

@@ -50,6 +50,37 @@ pub fn is_cjk(c: char) -> bool {
     matches!(c as u32, 0x2E80..=0x9FFF | 0xF900..=0xFAFF | 0xFF00..=0xFFEF)
 }
 
+/// Whether `c` may not begin a line (Chinese line-breaking rules): closing punctuation stays
+/// with what it follows — `，。、；：！？` and closing brackets and quotes.
+#[must_use]
+pub fn closes(c: char) -> bool {
+    matches!(
+        c,
+        '，' | '。'
+            | '、'
+            | '；'
+            | '：'
+            | '！'
+            | '？'
+            | '）'
+            | '」'
+            | '』'
+            | '》'
+            | '】'
+            | '〉'
+            | '”'
+            | '’'
+            | '…'
+            | '—'
+    )
+}
+
+/// Whether `c` may not end a line: opening brackets and quotes stay with what follows.
+#[must_use]
+pub fn opens(c: char) -> bool {
+    matches!(c, '（' | '「' | '『' | '《' | '【' | '〈' | '“' | '‘')
+}
+
 /// An atom before the scripts and fractions are attached.
 #[derive(Clone, Debug, PartialEq, Eq)]
 enum Atom {

@@ -224,9 +224,19 @@ pub fn formula(ui: &mut Ui, formula: &str, style: &Style) -> Response {
 }
 
 /// The pieces a paragraph may break between: words with their trailing space, each Chinese
-/// character, and each formula, script or fraction whole.
-fn pieces(nodes: &[Node]) -> Vec<Node> {
+/// character, and each formula, script or fraction whole — except that, by the Chinese
+/// line-breaking rules, closing punctuation joins the piece before it and opening punctuation
+/// the piece after it, so no line begins with "，" or ends with "（".
+fn pieces(nodes: &[Node]) -> Vec<Vec<Node>> {
     let mut out = Vec::new();
+    let mut glue = false;
+    split(nodes, &mut out, &mut glue);
+    out
+}
+
+/// Adds the pieces of `nodes` to `out`; `glue` says the last piece ends with opening
+/// punctuation (the next one joins it).
+fn split(nodes: &[Node], out: &mut Vec<Vec<Node>>, glue: &mut bool) {
     for n in nodes {
         match n {
             Node::Text(t) => {
@@ -234,30 +244,43 @@ fn pieces(nodes: &[Node]) -> Vec<Node> {
                 for c in t.chars() {
                     if is_cjk(c) {
                         if !word.is_empty() {
-                            out.push(Node::Text(std::mem::take(&mut word)));
+                            add(out, Node::Text(std::mem::take(&mut word)), glue);
                         }
-                        out.push(Node::Text(c.to_string()));
+                        add(out, Node::Text(c.to_string()), glue);
                     } else {
                         word.push(c);
                         if c == ' ' {
-                            out.push(Node::Text(std::mem::take(&mut word)));
+                            add(out, Node::Text(std::mem::take(&mut word)), glue);
                         }
                     }
                 }
                 if !word.is_empty() {
-                    out.push(Node::Text(word));
+                    add(out, Node::Text(word), glue);
                 }
             }
             Node::Formula(inner) => {
                 // A long formula may break at its spaces; its parts keep the accent colour.
-                for p in pieces(inner) {
-                    out.push(Node::Formula(vec![p]));
+                let mut parts = Vec::new();
+                split(inner, &mut parts, &mut false);
+                for p in parts {
+                    add(out, Node::Formula(p), glue);
                 }
             }
-            other => out.push(other.clone()),
+            other => add(out, other.clone(), glue),
         }
     }
-    out
+}
+
+/// Appends `n` as a piece of its own, or to the last piece when it begins with closing
+/// punctuation or the last piece ends with opening punctuation.
+fn add(out: &mut Vec<Vec<Node>>, n: Node, glue: &mut bool) {
+    let closing = matches!(&n, Node::Text(t) if t.chars().next().is_some_and(notation::closes));
+    let opening = matches!(&n, Node::Text(t) if t.chars().last().is_some_and(notation::opens));
+    match out.last_mut() {
+        Some(last) if *glue || closing => last.push(n),
+        _ => out.push(vec![n]),
+    }
+    *glue = opening;
 }
 
 /// A paragraph of narration (`**formulas**`, scripts, `` `code` ``), wrapped to the width
@@ -268,15 +291,7 @@ pub fn paragraph(ui: &mut Ui, text: &str, style: &Style) -> Response {
     let width = ui.available_width().max(40.0);
     let boxes: Vec<Boxed> = pieces(&nodes)
         .iter()
-        .map(|p| {
-            layout(
-                &painter,
-                std::slice::from_ref(p),
-                style.size,
-                style.color,
-                style,
-            )
-        })
+        .map(|p| layout(&painter, p, style.size, style.color, style))
         .collect();
     // Greedy lines.
     let mut lines: Vec<Vec<usize>> = vec![Vec::new()];
@@ -319,4 +334,35 @@ pub fn paragraph(ui: &mut Ui, text: &str, style: &Style) -> Response {
     let plain = notation::plain_text(&nodes);
     response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Label, true, &plain));
     response
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn texts(p: &[Vec<Node>]) -> Vec<String> {
+        p.iter()
+            .map(|piece| {
+                piece
+                    .iter()
+                    .map(|n| match n {
+                        Node::Text(t) => t.clone(),
+                        Node::Formula(_) => "F".to_owned(),
+                        _ => "?".to_owned(),
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// The Chinese line-breaking rules: a line never begins with closing punctuation, after a
+    /// character or after a formula, and never ends with opening punctuation.
+    #[test]
+    fn closing_punctuation_joins_the_piece_before_and_opening_the_piece_after() {
+        let p = pieces(&notation::parse_paragraph("甲乙，丙（丁）。"));
+        assert_eq!(texts(&p), ["甲", "乙，", "丙", "（丁）。"]);
+        let p = pieces(&notation::parse_paragraph("是 **x = 1**，然后"));
+        // The formula breaks at its spaces (three parts); the comma joins the last.
+        assert_eq!(texts(&p), ["是", " ", "F", "F", "F，", "然", "后"]);
+    }
 }

@@ -331,35 +331,55 @@ pub(super) fn draw_edge_test(
         Color32::from_rgb(120, 170, 255),
     ];
     let font = picture_font(painter.ctx(), 15.0);
+    // The edges' labels, drawn last, over the samples.
+    let mut labels = Vec::with_capacity(3);
     for (k, &edge_color) in EDGE.iter().enumerate() {
         let (a, b) = (e.corners[(k + 1) % 3], e.corners[(k + 2) % 3]);
         let (pa, pb) = (view.window_to_screen(a), view.window_to_screen(b));
         painter.line_segment([pa, pb], Stroke::new(2.5, edge_color));
-        // The label sits on the inner side of the edge, near the pixel if the edge passes it.
+        // The label sits on the inner side of the edge (towards the opposite corner), at the
+        // foot of the perpendicular from the pixel centre; where the edge passes through the
+        // pixel's marker, it slides along the edge until it clears the marker.
         let centre = view.window_to_screen(e.centre_position);
+        let length = (pb - pa).length();
         let along = (pb - pa).normalized();
-        let t = (centre - pa).dot(along).clamp(0.0, (pb - pa).length());
+        let t = (centre - pa).dot(along).clamp(0.0, length);
         let foot = pa + along * t;
-        let inward = (centre - foot).normalized();
-        let at = foot
-            + if inward.is_finite() {
-                inward * 14.0
-            } else {
-                Vec2::ZERO
-            };
+        let opposite = view.window_to_screen(e.corners[k]);
+        let normal = Vec2::new(-along.y, along.x);
+        let inward = if (opposite - foot).dot(normal) < 0.0 {
+            -normal
+        } else {
+            normal
+        };
         let tl = if e.top_left[k] {
             lang.tr(" (top/left)", "（上/左边）")
         } else {
             ""
         };
-        crate::app::views::label_with_background(
-            painter,
-            at,
-            egui::Align2::CENTER_CENTER,
-            &format!("E{k} = {}{tl}", crate::vocabulary::num(e.centre[k] as f32)),
-            &font,
-            edge_color,
-        );
+        let text = format!("E{k} = {}{tl}", crate::vocabulary::num(e.centre[k] as f32));
+        let size = painter
+            .layout_no_wrap(text.clone(), font.clone(), edge_color)
+            .size();
+        let width = size.x;
+        let near = (centre - foot).length() < 24.0 + view.zoom / 2.0;
+        let slide = if near {
+            let clear = width / 2.0 + view.zoom.max(16.0);
+            // Towards the longer part of the edge.
+            if t < length / 2.0 { clear } else { -clear }
+        } else {
+            0.0
+        };
+        // Off the edge by a gap plus the label's own half extent across it.
+        let off = 6.0 + (inward.x.abs() * size.x + inward.y.abs() * size.y) / 2.0;
+        let at = foot
+            + along * slide
+            + if inward.is_finite() {
+                inward * off
+            } else {
+                Vec2::ZERO
+            };
+        labels.push((at, text, edge_color));
     }
     let radius = (view.zoom / 10.0).clamp(3.0, 7.0);
     for s in &e.samples {
@@ -371,5 +391,15 @@ pub(super) fn draw_edge_test(
         for &k in &s.on_edges {
             painter.circle_stroke(p, radius + 3.0, Stroke::new(2.0, EDGE[k]));
         }
+    }
+    for (at, text, color) in labels {
+        crate::app::views::label_with_background(
+            painter,
+            at,
+            egui::Align2::CENTER_CENTER,
+            &text,
+            &font,
+            color,
+        );
     }
 }
