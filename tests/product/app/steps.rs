@@ -215,3 +215,58 @@ fn a_dragged_parameter_renders_drafts_then_the_full_frame_on_release() {
         "the full frame once let go"
     );
 }
+
+/// Lesson 10 teaches k_a, k_d, k_s, the shininess and the lights: the Parameters panel has them,
+/// and dragging a light's intensity changes the scene the picture is drawn from.
+#[test]
+fn the_lighting_lesson_s_lights_and_material_are_sliders() {
+    let mut h = lesson_harness(Some(
+        crate::support::repo().join("lessons/10-blinn-phong.toml"),
+    ));
+    h.run_steps(3);
+    h.key_press(egui::Key::P);
+    h.run_steps(2);
+    assert!(h.query_by_label("Lights").is_some(), "the Lights section");
+    assert!(h.query_by_label_contains("point light 1").is_some());
+    let intensity = |h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>| {
+        h.state()
+            .session
+            .spec
+            .scene
+            .lights
+            .iter()
+            .find_map(|l| match l {
+                pipeline::light::Light::Point { intensity, .. } => Some(intensity.x),
+                _ => None,
+            })
+    };
+    let start = intensity(&h).expect("a point light");
+    // The sliders of the lights, in order: ambient, then the point light.
+    let sliders: Vec<egui::Rect> = h
+        .get_all_by_role_and_label(egui::accesskit::Role::Slider, "intensity I")
+        .map(|n| n.rect())
+        .collect();
+    assert!(sliders.len() >= 2, "{} intensity sliders", sliders.len());
+    let slider = sliders[1];
+    h.drag_at(slider.center());
+    h.run();
+    h.hover_at(slider.center() + egui::vec2(40.0, 0.0));
+    h.run();
+    h.drop_at(slider.center() + egui::vec2(40.0, 0.0));
+    h.run_steps(3);
+    let now = intensity(&h).expect("a point light");
+    assert!(now > start, "intensity {start} → {now}");
+    // Each lit object's material: k_a, k_d, k_s and the shininess (under Objects).
+    // Folded, the sections above leave the objects in view.
+    for section in ["Lights", "Rasterizer settings", "Projection", "Camera"] {
+        h.get_by_label(section).click();
+        h.run_steps(2);
+    }
+    h.get_by_label("Objects").click();
+    h.run_steps(2);
+    h.get_by_label_contains("sphere").click();
+    h.run_steps(2);
+    for label in ["material", "k_a", "k_d", "k_s", "shininess p"] {
+        assert!(h.query_all_by_label(label).next().is_some(), "{label}");
+    }
+}

@@ -1,5 +1,6 @@
-//! Parameters: camera, projection, render settings and each object's transform, as sliders and
-//! fields with their formulas in the tooltips. Every change asks for a new capture.
+//! Parameters: camera, projection, render settings, lights and each object's transform and
+//! material (`lighting.rs`), as sliders and fields with their formulas in the tooltips. Every
+//! change asks for a new capture.
 
 use egui::{DragValue, RichText, Slider, Ui};
 use glam::Vec3;
@@ -10,6 +11,8 @@ use pipeline::shade::{Frequency, Reflection};
 
 use crate::app::session::{Command, Session};
 use crate::vocabulary::Lang;
+
+mod lighting;
 
 fn vec3_edit(ui: &mut Ui, label: &str, v: &mut Vec3, speed: f32, tip: &str) {
     ui.horizontal(|ui| {
@@ -54,6 +57,13 @@ pub fn ui(ui: &mut Ui, session: &Session) -> Option<Command> {
         egui::CollapsingHeader::new(RichText::new(lang.tr("Rasterizer settings", "光栅化设置")).strong()).default_open(true).show(ui, |ui| {
             render(ui, &mut spec.settings, lang);
         });
+        if !spec.scene.lights.is_empty() {
+            // Open where the picture is lit: the lights are then what a step teaches.
+            let lit = spec.settings.shading != Frequency::Unlit;
+            egui::CollapsingHeader::new(RichText::new(lang.tr("Lights", "光源")).strong())
+                .default_open(lit)
+                .show(ui, |ui| lighting::lights(ui, &mut spec.scene.lights, lang));
+        }
         if !spec.scene.figures.is_empty() {
             egui::CollapsingHeader::new(RichText::new(lang.tr("Joint angles", "关节角")).strong())
                 .default_open(true)
@@ -69,6 +79,9 @@ pub fn ui(ui: &mut Ui, session: &Session) -> Option<Command> {
                     vec3_edit(ui, lang.tr("rotate °", "旋转 °"), &mut o.rotate_deg, 1.0, tip);
                     vec3_edit(ui, lang.tr("scale", "缩放"), &mut o.scale, 0.02, tip);
                     orientations(ui, o, lang);
+                    if o.lit {
+                        lighting::material(ui, &mut o.material, lang);
+                    }
                 });
             }
         });
