@@ -3,93 +3,17 @@
 
 use egui::{RichText, Slider, Ui};
 use glam::Vec3;
+use pipeline::light::Light;
 
 use super::vec3_edit;
 use crate::vocabulary::Lang;
 
 /// Each light's intensity (one slider for a grey light, the three channels otherwise) and where
 /// it is: position, direction, attenuation, a spot's cone.
-pub(super) fn lights(ui: &mut Ui, lights: &mut [pipeline::light::Light], lang: Lang) {
-    use pipeline::light::Light;
+pub(super) fn lights(ui: &mut Ui, lights: &mut [Light], lang: Lang) {
     for (k, light) in lights.iter_mut().enumerate() {
         ui.label(RichText::new(crate::observer::light_name(light, k, lang)).strong());
-        let (intensity, attenuation) = match light {
-            Light::Ambient { intensity } => (intensity, None),
-            Light::Directional {
-                direction,
-                intensity,
-            } => {
-                vec3_edit(
-                    ui,
-                    lang.tr("direction", "方向"),
-                    direction,
-                    0.05,
-                    lang.tr(
-                        "l = −direction/|direction|: the light travels along it",
-                        "l = −direction/|direction|：光沿这个方向传播",
-                    ),
-                );
-                (intensity, None)
-            }
-            Light::Point {
-                position,
-                intensity,
-                attenuation,
-            } => {
-                vec3_edit(
-                    ui,
-                    lang.tr("position", "位置"),
-                    position,
-                    0.05,
-                    lang.tr(
-                        "l = (position − p)/|position − p|",
-                        "l = (position − p)/|position − p|",
-                    ),
-                );
-                (intensity, Some(attenuation))
-            }
-            Light::Spot {
-                position,
-                direction,
-                cutoff_deg,
-                exponent,
-                intensity,
-                attenuation,
-            } => {
-                vec3_edit(
-                    ui,
-                    lang.tr("position", "位置"),
-                    position,
-                    0.05,
-                    lang.tr(
-                        "l = (position − p)/|position − p|",
-                        "l = (position − p)/|position − p|",
-                    ),
-                );
-                vec3_edit(
-                    ui,
-                    lang.tr("axis", "锥轴"),
-                    direction,
-                    0.05,
-                    lang.tr("the cone's axis", "圆锥的轴"),
-                );
-                ui.add(
-                    Slider::new(cutoff_deg, 1.0..=90.0)
-                        .text(lang.tr("cutoff", "截止角"))
-                        .suffix("°"),
-                )
-                .on_hover_text(lang.tr(
-                    "f_spot = (cos φ)^e inside the cutoff angle, 0 outside",
-                    "截止角以内 f_spot = (cos φ)^e，以外为 0",
-                ));
-                ui.add(Slider::new(exponent, 0.0..=128.0).text("e"))
-                    .on_hover_text(lang.tr(
-                        "f_spot = (cos φ)^e: a larger e fades the disc towards its rim",
-                        "f_spot = (cos φ)^e：e 越大，圆斑向边缘衰减越快",
-                    ));
-                (intensity, Some(attenuation))
-            }
-        };
+        let (intensity, attenuation) = placement(ui, light, lang);
         let tip = lang.tr(
             "I, the light's intensity per RGB channel: L = k·I·…",
             "I：光源在 RGB 各通道的强度，L = k·I·…",
@@ -107,15 +31,72 @@ pub(super) fn lights(ui: &mut Ui, lights: &mut [pipeline::light::Light], lang: L
             vec3_edit(ui, lang.tr("intensity I", "强度 I"), intensity, 0.02, tip);
         }
         if let Some(a) = attenuation {
-            vec3_edit(
-                ui,
-                "a, b, c",
-                a,
-                0.005,
-                lang.tr("f_att = 1/(a + b·d + c·d²)", "f_att = 1/(a + b·d + c·d²)"),
-            );
+            let tip = lang.tr("f_att = 1/(a + b·d + c·d²)", "f_att = 1/(a + b·d + c·d²)");
+            vec3_edit(ui, "a, b, c", a, 0.005, tip);
         }
         ui.separator();
+    }
+}
+
+/// Where `light` is (position, direction, a spot's cone), as fields; returns its intensity and
+/// its attenuation (a point or spot light's), for the caller to show.
+fn placement<'a>(
+    ui: &mut Ui,
+    light: &'a mut Light,
+    lang: Lang,
+) -> (&'a mut Vec3, Option<&'a mut Vec3>) {
+    let to_light = lang.tr(
+        "l = (position − p)/|position − p|",
+        "l = (position − p)/|position − p|",
+    );
+    match light {
+        Light::Ambient { intensity } => (intensity, None),
+        Light::Directional {
+            direction,
+            intensity,
+        } => {
+            let tip = lang.tr(
+                "l = −direction/|direction|: the light travels along it",
+                "l = −direction/|direction|：光沿这个方向传播",
+            );
+            vec3_edit(ui, lang.tr("direction", "方向"), direction, 0.05, tip);
+            (intensity, None)
+        }
+        Light::Point {
+            position,
+            intensity,
+            attenuation,
+        } => {
+            vec3_edit(ui, lang.tr("position", "位置"), position, 0.05, to_light);
+            (intensity, Some(attenuation))
+        }
+        Light::Spot {
+            position,
+            direction,
+            cutoff_deg,
+            exponent,
+            intensity,
+            attenuation,
+        } => {
+            vec3_edit(ui, lang.tr("position", "位置"), position, 0.05, to_light);
+            let axis = lang.tr("the cone's axis", "圆锥的轴");
+            vec3_edit(ui, lang.tr("axis", "锥轴"), direction, 0.05, axis);
+            ui.add(
+                Slider::new(cutoff_deg, 1.0..=90.0)
+                    .text(lang.tr("cutoff", "截止角"))
+                    .suffix("°"),
+            )
+            .on_hover_text(lang.tr(
+                "f_spot = (cos φ)^e inside the cutoff angle, 0 outside",
+                "截止角以内 f_spot = (cos φ)^e，以外为 0",
+            ));
+            ui.add(Slider::new(exponent, 0.0..=128.0).text("e"))
+                .on_hover_text(lang.tr(
+                    "f_spot = (cos φ)^e: a larger e fades the disc towards its rim",
+                    "f_spot = (cos φ)^e：e 越大，圆斑向边缘衰减越快",
+                ));
+            (intensity, Some(attenuation))
+        }
     }
 }
 
