@@ -218,13 +218,19 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
         return;
     }
     if editor.errors.is_empty() {
-        ui.label(
-            RichText::new(lang.tr(
+        // Until the source is applied (or edited), pipelens' own shading draws the picture.
+        let text = if session.spec.scene.has_shaders() {
+            lang.tr(
                 "Compiled: the picture is drawn with these shaders.",
                 "已编译：画面由这些着色器绘制。",
-            ))
-            .color(Color32::from_rgb(90, 170, 90)),
-        );
+            )
+        } else {
+            lang.tr(
+                "The picture is drawn by pipelens' own shading: Apply (Ctrl+Enter) or edit to draw it with these shaders.",
+                "画面由 pipelens 自带的着色绘制：按“应用”（Ctrl+Enter）或编辑后，改用这些着色器绘制。",
+            )
+        };
+        ui.label(RichText::new(text).color(Color32::from_rgb(90, 170, 90)));
         return;
     }
     ui.label(
