@@ -248,8 +248,12 @@ fn spec_of(lesson: &Lesson, k: usize, opts: &LessonExport, t: Option<f32>) -> Re
     }
     // The pixel `capture.json` describes: the frame records its fragment shaders' runs there.
     if opts.data {
-        spec.settings.capture.pixel =
-            data_pixel(lesson, k, opts, (spec.settings.width, spec.settings.height));
+        // `--pixel`, else the step's own inspected pixel, when it is inside the image.
+        let (w, h) = (spec.settings.width, spec.settings.height);
+        spec.settings.capture.pixel = opts
+            .pixel
+            .or(lesson.steps[k].pixel)
+            .filter(|&(x, y)| x < w && y < h);
     }
     if let Some(p) = spec.settings.problems().first() {
         anyhow::bail!("{p}");
@@ -410,19 +414,6 @@ fn gif(frames: &[RgbaImage], delay_ms: u32) -> Result<Vec<u8>> {
     Ok(bytes)
 }
 
-/// The pixel whose record step `k`'s `capture.json` holds in a `w × h` image: `--pixel`, else
-/// the step's own inspected pixel when it is inside the image.
-fn data_pixel(
-    lesson: &Lesson,
-    k: usize,
-    opts: &LessonExport,
-    (w, h): (u32, u32),
-) -> Option<(u32, u32)> {
-    opts.pixel
-        .or(lesson.steps[k].pixel)
-        .filter(|&(x, y)| x < w && y < h)
-}
-
 /// With `--data`: step `k`'s buffers, `capture.json` (with the step's pixel), the compared
 /// images and the profile; and the textures' mip levels (the same for every step).
 fn data_files(
@@ -447,7 +438,8 @@ fn data_files(
         out: opts.out.join(step_dir(k)),
         overlay_zoom: 0,
         max_records: opts.max_records,
-        pixel: data_pixel(lesson, k, opts, (capture.width(), capture.height())),
+        // The frame was drawn with the pixel `capture.json` describes (see `spec_of`).
+        pixel: capture.settings.capture.pixel,
         cancel: opts.cancel.clone(),
     };
     let (mut files, textures): (Vec<_>, Vec<_>) = encode_capture(capture, &export)?

@@ -4,7 +4,7 @@
 
 use glam::{Vec2, Vec3};
 
-use super::{Level, Texture, Wrap};
+use super::{Filter, Level, Mipmap, Sampler, Texture, Wrap};
 
 /// Detail a texture adds to a surface's normal (used where lighting is per pixel).
 #[derive(Clone, Debug, PartialEq)]
@@ -43,6 +43,16 @@ pub fn tangent_frame(p: [Vec3; 3], uv: [Vec2; 3]) -> Option<(Vec3, Vec3)> {
 }
 
 impl SurfaceDetail {
+    /// How a bump or normal map is read (here and, as `uniform sampler2D detail;`, by the
+    /// student's shaders): bilinear, repeating, level 0.
+    pub const MAP_SAMPLER: Sampler = Sampler {
+        wrap: Wrap::Repeat,
+        filter: Filter::Bilinear,
+        mipmap: Mipmap::None,
+        anisotropy: 1,
+        lod_bias: 0.0,
+    };
+
     /// The normal at `uv` perturbed from the unit normal `n` in the tangent frame `(t, b)`
     /// (made orthonormal to `n` first: `T' = normalize(t − n(n·t))`, `B' = ±n × T'`).
     #[must_use]

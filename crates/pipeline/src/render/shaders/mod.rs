@@ -109,14 +109,7 @@ fn textures<'a>(
     object: &'a Object,
     surface: crate::texture::Sampler,
 ) -> Vec<Option<(&'a crate::texture::Texture, crate::texture::Sampler)>> {
-    use crate::texture::{Filter, Mipmap, Sampler, SurfaceDetail, Wrap};
-    let detail = Sampler {
-        wrap: Wrap::Repeat,
-        filter: Filter::Bilinear,
-        mipmap: Mipmap::None,
-        anisotropy: 1,
-        lod_bias: 0.0,
-    };
+    use crate::texture::SurfaceDetail;
     let has_uvs = !object.mesh.uvs.is_empty();
     program
         .textures
@@ -125,7 +118,7 @@ fn textures<'a>(
             TextureSlot::Surface => Some((object.texture.as_deref()?, surface)),
             TextureSlot::Detail => match object.detail.as_ref()? {
                 SurfaceDetail::Bump { height: t, .. } | SurfaceDetail::Normal(t) => {
-                    Some((&**t, detail))
+                    Some((&**t, SurfaceDetail::MAP_SAMPLER))
                 }
             },
         })
