@@ -328,5 +328,5 @@ pub fn observer_image(spec: &SceneSpec, main: &FrameCapture) -> Option<image::Rg
             color: [255, 255, 255, 255],
         });
     }
-    Some(outside.image_with_shapes(BufferKind::Color, &shapes, 1))
+    Some(outside.image_with_shapes(BufferKind::Color, 1.0, &shapes, 1))
 }

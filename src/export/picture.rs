@@ -79,7 +79,11 @@ pub fn step_picture(lesson: &Lesson, k: usize, r: &Rendered<'_>, lang: Lang) -> 
             line,
             depth_range: step.depth_range,
         };
-        let img = buffer_with_shapes(r.capture, buffer, &shapes, lang);
+        let gain = r.capture.term_gain(buffer);
+        let mut img = buffer_with_shapes(r.capture, (buffer, gain), &shapes, lang);
+        if let Some(note) = crate::vocabulary::gain_note(buffer, gain, lang) {
+            bottom_note(&mut img, &note);
+        }
         match (step.layout, observer()) {
             (Layout::Observer, Some(o)) => beside(&img, &o),
             _ => img,
@@ -224,7 +228,7 @@ fn zoom_for(width: u32) -> u32 {
 /// `kind` of `capture`, magnified, with the shapes drawn and the lighting vectors named.
 fn buffer_with_shapes(
     capture: &FrameCapture,
-    kind: BufferKind,
+    (kind, gain): (BufferKind, f32),
     s: &Shapes<'_>,
     lang: Lang,
 ) -> RgbaImage {
@@ -285,7 +289,7 @@ fn buffer_with_shapes(
     let mut img = if kind == BufferKind::Depth {
         capture.depth_image_with_shapes(s.depth_range, &shapes, zoom)
     } else {
-        capture.image_with_shapes(kind, &shapes, zoom)
+        capture.image_with_shapes(kind, gain, &shapes, zoom)
     };
     for a in &arrows {
         let (dx, dy) = (a.to[0] - a.from[0], a.to[1] - a.from[1]);
@@ -418,6 +422,7 @@ fn side_by_side(
         variants.len().min(3) as u32
     };
     let rows = (variants.len() as u32).div_ceil(columns);
+    let gain = FrameCapture::shared_term_gain(variants.iter().map(|(_, c)| c), kind);
     let tiles: Vec<RgbaImage> = variants
         .iter()
         .enumerate()
@@ -429,7 +434,7 @@ fn side_by_side(
                 line,
                 depth_range: None,
             };
-            let mut tile = buffer_with_shapes(cap, kind, &shapes, lang);
+            let mut tile = buffer_with_shapes(cap, (kind, gain), &shapes, lang);
             let label = variant_label(name, lang);
             let [r, g, b] = profile::CURVE_COLORS[i % profile::CURVE_COLORS.len()];
             let size = (tile.width() as f32 / 16.0).clamp(20.0, 64.0);
@@ -460,7 +465,26 @@ fn side_by_side(
             i64::from(r * (th + gap)),
         );
     }
+    if let Some(note) = crate::vocabulary::gain_note(kind, gain, lang) {
+        bottom_note(&mut out, &note);
+    }
     out
+}
+
+/// A line of text on a dark box at the bottom-left (what a picture says about how it is drawn).
+fn bottom_note(img: &mut RgbaImage, note: &str) {
+    let size = (img.width() as f32 / 48.0).clamp(16.0, 28.0);
+    let (w, h) = (text::width(note, size) + size, size * 1.6);
+    let y = img.height().saturating_sub(h as u32 + 8);
+    darken(img, 8, y, w as u32, h as u32);
+    text::draw(
+        img,
+        8.0 + size / 2.0,
+        y as f32 + size * 1.15,
+        size,
+        [255, 255, 255],
+        note,
+    );
 }
 
 /// `a` and `b` side by side, `b` scaled to `a`'s height.

@@ -29,3 +29,17 @@ pub fn buffer_name(kind: BufferKind, l: Lang) -> &'static str {
         BufferKind::Reflected => l.tr("Reflected (environment)", "反射项（环境映射（反射映射））"),
     }
 }
+
+/// What a picture of a dim lighting term drawn `gain` times brighter says about itself (see
+/// `FrameCapture::term_gain`); `None` when it is drawn as it is.
+#[must_use]
+pub fn gain_note(kind: BufferKind, gain: f32, l: Lang) -> Option<String> {
+    if gain <= 1.0 {
+        return None;
+    }
+    let name = buffer_name(kind, l);
+    Some(match l {
+        Lang::En => format!("{name} shown ×{gain}: {gain} times brighter than its values"),
+        Lang::Zh => format!("{name}放大 ×{gain} 显示：亮度是其数值的 {gain} 倍"),
+    })
+}

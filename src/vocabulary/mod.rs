@@ -14,7 +14,7 @@ mod numbers;
 pub mod profile;
 mod stage;
 
-pub use buffers::buffer_name;
+pub use buffers::{buffer_name, gain_note};
 pub use comparison::{Comparison, variant_label};
 pub use explain::{lighting_legend, remark, section_name};
 pub use lang::{Lang, Text};

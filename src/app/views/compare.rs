@@ -45,6 +45,28 @@ fn best_columns(n: usize, aspect: f32, area: Vec2) -> usize {
         .unwrap_or(1)
 }
 
+/// The images in the grid that makes them largest (in at most 70 % of the height when a
+/// profile is plotted; the plot takes all the height they leave): `(n, aspect)` images, `gap`
+/// between them. Returns the columns, a cell's size and the rectangle of all the images.
+fn grid(area: Rect, (n, aspect): (usize, f32), with_plot: bool, gap: f32) -> (usize, Vec2, Rect) {
+    let room = Vec2::new(
+        area.width(),
+        area.height() * if with_plot { 0.7 } else { 1.0 },
+    );
+    let cols = best_columns(n, aspect, room);
+    let rows = n.div_ceil(cols);
+    let cell_w = (area.width() - gap * (cols as f32 - 1.0)) / cols as f32;
+    let cell_h = ((room.y - gap * (rows as f32 - 1.0)) / rows as f32).min(cell_w / aspect);
+    let images = Rect::from_min_size(
+        area.min,
+        Vec2::new(
+            area.width(),
+            cell_h * rows as f32 + gap * (rows as f32 - 1.0),
+        ),
+    );
+    (cols, Vec2::new(cell_w, cell_h), images)
+}
+
 impl CompareView {
     /// Draws the images and the profile plot below them.
     pub fn ui(&mut self, ui: &mut Ui, session: &Session) -> Vec<Command> {
@@ -61,23 +83,11 @@ impl CompareView {
         let aspect = variants[0].1.width() as f32 / variants[0].1.height() as f32;
         let caption_size = ui.style().text_styles[&egui::TextStyle::Body].size * 1.1;
         let gap = 6.0;
-        // The images in the grid that makes them largest (in at most 70 % of the height when a
-        // profile is plotted); the plot takes all the height they leave.
-        let room = Vec2::new(
-            area.width(),
-            area.height() * if with_plot { 0.7 } else { 1.0 },
-        );
-        let cols = best_columns(variants.len(), aspect, room);
-        let rows = variants.len().div_ceil(cols);
-        let cell_w = (area.width() - gap * (cols as f32 - 1.0)) / cols as f32;
-        let cell_h = ((room.y - gap * (rows as f32 - 1.0)) / rows as f32).min(cell_w / aspect);
-        let cell = Vec2::new(cell_w, cell_h);
-        let images = Rect::from_min_size(
-            area.min,
-            Vec2::new(
-                area.width(),
-                cell_h * rows as f32 + gap * (rows as f32 - 1.0),
-            ),
+        let (cols, cell, images) = grid(area, (variants.len(), aspect), with_plot, gap);
+        let kind = session.selection.buffer;
+        let gain = pipeline::capture::FrameCapture::shared_term_gain(
+            variants.iter().map(|(_, c)| &**c),
+            kind,
         );
         for (i, (name, capture)) in variants.iter().enumerate() {
             let (c, r) = (i % cols, i / cols);
@@ -91,8 +101,7 @@ impl CompareView {
             let texture = self.textures[i].get(
                 ui.ctx(),
                 &format!("compare-{i}"),
-                session.shown_generation,
-                session.selection.buffer,
+                (session.shown_generation, kind, gain),
                 capture,
                 TextureOptions::NEAREST,
             );
@@ -144,6 +153,11 @@ impl CompareView {
                 );
             }
         }
+        let bottom = (
+            images.center_bottom() - Vec2::new(0.0, 8.0),
+            egui::Align2::CENTER_BOTTOM,
+        );
+        super::draw_gain_note(ui.painter(), bottom, kind, gain, lang);
         ui.advance_cursor_after_rect(images);
         if with_plot {
             let plot = Rect::from_min_max(Pos2::new(area.left(), images.bottom() + gap), area.max);

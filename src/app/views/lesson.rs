@@ -43,19 +43,53 @@ pub fn card(
                 .show(ui, |ui| {
                     ui.set_width(width);
                     ui.set_max_height(over.height() * 0.55);
-                    contents(ui, player, spec, lang, &mut out);
+                    let fit_id = egui::Id::unique("narration-card-fit");
+                    let fit = ctx.data(|d| d.get_temp::<f32>(fit_id)).unwrap_or(1.0);
+                    let normal = crate::app::style::text_styles(1.0)[&egui::TextStyle::Body].size;
+                    let body = ui.style().text_styles[&egui::TextStyle::Body].size;
+                    for font in ui.style_mut().text_styles.values_mut() {
+                        font.size *= fit;
+                    }
+                    let (room, needed) = contents(ui, player, spec, lang, &mut out);
+                    let next = fitted(fit, room, needed, normal / body);
+                    if next != fit {
+                        ctx.data_mut(|d| d.insert_temp(fit_id, next));
+                        ctx.request_repaint();
+                    }
                 });
         });
     out
 }
 
+/// The card's type scale for the next frame, so that what it says fits without scrolling
+/// (classroom type on a 1366×768 projector): from `fit`, the text needed `needed` points of
+/// height where `room` were left. Text area grows as the square of the type size at a fixed
+/// width, so the size changes by `√(room/needed)`; it grows back only when there is a fifth
+/// to spare (no flicker between two sizes), never above the style's size nor below `least`
+/// (the normal size: below it the card scrolls instead).
+fn fitted(fit: f32, room: f32, needed: f32, least: f32) -> f32 {
+    if !(room > 0.0 && needed > 0.0) {
+        return fit;
+    }
+    let least = least.min(1.0);
+    let ratio = (room / needed).sqrt();
+    if needed > room + 1.0 && fit > least {
+        (fit * ratio * 0.99).max(least)
+    } else if needed < room * 0.8 && fit < 1.0 {
+        (fit * ratio * 0.97).min(1.0)
+    } else {
+        fit
+    }
+}
+
+/// The card's words; returns the height left for them below the title and the height they took.
 fn contents(
     ui: &mut Ui,
     player: &LessonPlayer,
     spec: &SceneSpec,
     lang: Lang,
     out: &mut CardOutput,
-) {
+) -> (f32, f32) {
     let step = player.current();
     let style = Style {
         color: Color32::from_gray(245),
@@ -78,7 +112,8 @@ fn contents(
             }
         });
     });
-    egui::ScrollArea::vertical()
+    let room = ui.available_height();
+    let words = egui::ScrollArea::vertical()
         .id_salt("narration")
         .auto_shrink([false, true])
         .show(ui, |ui| {
@@ -127,6 +162,7 @@ fn contents(
                 }
             }
         });
+    (room, words.content_size.y)
 }
 
 /// Simple markdown: paragraphs split by blank lines, lines starting `- ` as bullets, `**…**`

@@ -142,6 +142,27 @@ pub fn picture_mono(ctx: &egui::Context, size: f32) -> egui::FontId {
     egui::FontId::monospace(size * picture_scale(ctx))
 }
 
+/// Says over a picture that a dim lighting term is drawn `gain` times brighter than its values
+/// (`vocabulary::gain_note`), in the accent colour at `at`; nothing when it is drawn as it is.
+pub fn draw_gain_note(
+    painter: &egui::Painter,
+    (at, align): (Pos2, egui::Align2),
+    kind: pipeline::buffers::BufferKind,
+    gain: f32,
+    lang: crate::vocabulary::Lang,
+) {
+    if let Some(note) = crate::vocabulary::gain_note(kind, gain, lang) {
+        label_with_background(
+            painter,
+            at,
+            align,
+            &note,
+            &picture_font(painter.ctx(), 15.0),
+            egui::Color32::from_rgb(255, 214, 120),
+        );
+    }
+}
+
 /// Text on a dark translucent box, legible over any picture; returns its rect.
 pub fn label_with_background(
     painter: &egui::Painter,
@@ -312,19 +333,18 @@ pub struct BufferTexture(
 );
 
 impl BufferTexture {
-    /// The texture of `kind` from `capture` (generation `generation`), drawn by `capture.image`.
+    /// The texture of `kind` from `capture` (generation `generation`), its lighting terms drawn
+    /// `gain` times brighter (`capture.image_gained`).
     pub fn get(
         &mut self,
         ctx: &egui::Context,
         name: &str,
-        generation: u64,
-        kind: pipeline::buffers::BufferKind,
+        (generation, kind, gain): (u64, pipeline::buffers::BufferKind, f32),
         capture: &pipeline::capture::FrameCapture,
         options: egui::TextureOptions,
     ) -> egui::TextureHandle {
-        self.get_with(ctx, name, (generation, kind, 0), options, || {
-            capture.image(kind)
-        })
+        let key = (generation, kind, u64::from(gain.to_bits()));
+        self.get_with(ctx, name, key, options, || capture.image_gained(kind, gain))
     }
 
     /// The texture for `key`, made by `make` when the key changed.

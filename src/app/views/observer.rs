@@ -53,8 +53,7 @@ impl ObserverView {
         let texture = self.texture.get(
             ui.ctx(),
             "observer",
-            session.shown_generation,
-            BufferKind::Color,
+            (session.shown_generation, BufferKind::Color, 1.0),
             obs,
             TextureOptions::LINEAR,
         );

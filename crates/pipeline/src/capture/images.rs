@@ -33,9 +33,9 @@ fn hue(h: f32) -> [f32; 3] {
     }
 }
 
-/// The colour of a lighting buffer at pixel `i`.
-fn lighting_rgb(sh: &ShadingBuffers, kind: BufferKind, i: usize) -> [u8; 3] {
-    let rgb = |v: [f16; 3]| v.map(|c| to_u8(c.to_f32()));
+/// The colour of a lighting buffer at pixel `i`, a term's radiance multiplied by `gain`.
+fn lighting_rgb(sh: &ShadingBuffers, kind: BufferKind, i: usize, gain: f32) -> [u8; 3] {
+    let rgb = |v: [f16; 3]| v.map(|c| to_u8(c.to_f32() * gain));
     match kind {
         BufferKind::Ambient => rgb(sh.ambient[i]),
         BufferKind::Diffuse => rgb(sh.diffuse[i]),
@@ -96,6 +96,56 @@ impl FrameCapture {
     /// The image of one buffer (see [`BufferKind`] for each colour mapping).
     #[must_use]
     pub fn image(&self, kind: BufferKind) -> RgbaImage {
+        self.image_gained(kind, 1.0)
+    }
+
+    /// How much brighter a lighting term's picture is drawn than its values, so that a dim
+    /// term can be seen on a projector: the largest power of two `g ≤ 16` with `g·max ≤ 1`,
+    /// where `max` is the term's largest channel over the covered pixels (1 when `max ≥ ½`,
+    /// for a buffer that is not a term, or for an empty one). The ambient term
+    /// `k_a·I_a = 0.16` is shown ×4, as 0.64.
+    #[must_use]
+    pub fn term_gain(&self, kind: BufferKind) -> f32 {
+        let Some(sh) = &self.pixels.shading else {
+            return 1.0;
+        };
+        let term = match kind {
+            BufferKind::Ambient => &sh.ambient,
+            BufferKind::Diffuse => &sh.diffuse,
+            BufferKind::Specular => &sh.specular,
+            _ => return 1.0,
+        };
+        let max = term
+            .iter()
+            .zip(&self.pixels.primitive)
+            .filter(|(_, p)| **p != NONE)
+            .flat_map(|(v, _)| v.iter().map(|c| c.to_f32()))
+            .fold(0.0_f32, f32::max);
+        if !(max > 0.0) || max >= 0.5 {
+            return 1.0;
+        }
+        (1.0 / max).log2().floor().clamp(0.0, 4.0).exp2()
+    }
+
+    /// One gain for captures shown side by side, so that their terms stay comparable: the
+    /// smallest of their [`Self::term_gain`]s (1 for none).
+    #[must_use]
+    pub fn shared_term_gain<'a>(
+        captures: impl IntoIterator<Item = &'a FrameCapture>,
+        kind: BufferKind,
+    ) -> f32 {
+        captures
+            .into_iter()
+            .map(|c| c.term_gain(kind))
+            .reduce(f32::min)
+            .unwrap_or(1.0)
+    }
+
+    /// The image of `kind` with the lighting terms' radiance multiplied by `gain` (see
+    /// [`Self::term_gain`]; other buffers ignore it) — what the app and a lesson's pictures
+    /// show, saying so, while the exported buffers keep the values (`gain` 1).
+    #[must_use]
+    pub fn image_gained(&self, kind: BufferKind, gain: f32) -> RgbaImage {
         if kind == BufferKind::Depth {
             return self.depth_image(false, None);
         }
@@ -124,7 +174,7 @@ impl FrameCapture {
                     _ => [0; 3],
                 },
                 k => match (&px.shading, covered) {
-                    (Some(sh), true) => lighting_rgb(sh, k, i),
+                    (Some(sh), true) => lighting_rgb(sh, k, i, gain),
                     _ => [0; 3],
                 },
             };
@@ -237,7 +287,7 @@ impl FrameCapture {
             .iter()
             .flat_map(|&k| self.overlay(k).shapes)
             .collect();
-        self.image_with_shapes(kind, &shapes, zoom)
+        self.image_with_shapes(kind, 1.0, &shapes, zoom)
     }
 
     /// Where world point `p` lands in the image (pixels, y down): `P·V·p`, divided by `w`, through
@@ -278,10 +328,17 @@ impl FrameCapture {
         Some([self.clip_to_image(ca)?, self.clip_to_image(cb)?])
     }
 
-    /// An image of buffer `kind`, magnified `zoom`× (nearest), with `shapes` drawn over it.
+    /// The image of buffer `kind` with its terms ×`gain` ([`Self::image_gained`]), magnified
+    /// `zoom`× (nearest), with `shapes` drawn over it.
     #[must_use]
-    pub fn image_with_shapes(&self, kind: BufferKind, shapes: &[Shape], zoom: u32) -> RgbaImage {
-        overlay::magnified_with_shapes(&self.image(kind), shapes, zoom)
+    pub fn image_with_shapes(
+        &self,
+        kind: BufferKind,
+        gain: f32,
+        shapes: &[Shape],
+        zoom: u32,
+    ) -> RgbaImage {
+        overlay::magnified_with_shapes(&self.image_gained(kind, gain), shapes, zoom)
     }
 
     /// The depth buffer as grey over the window-depth range `range` (black at its first end,

@@ -360,3 +360,45 @@ fn coarse_shading_shades_a_2x2_block_once_per_triangle_and_edges_as_usual() {
         }
     }
 }
+
+/// A dim lighting term is shown brighter by a power of two, the largest with `g·max ≤ 1`, and the
+/// buffer's values stay as they are: ambient `k_a·I_a·c = 1 · 0.2 · 0.8 = 0.16` is shown ×4
+/// (0.64; ×8 would pass 1), and a term of at least ½ as it is.
+#[test]
+fn a_dim_term_is_shown_brighter_by_a_power_of_two_and_its_values_stay() {
+    use pipeline::buffers::BufferKind;
+    use pipeline::light::{Light, Material};
+    use pipeline::scene::ColorSource;
+    let (mut scene, settings) = lit_textured_quad(16, Samples::X1);
+    let quad = &mut scene.objects[0];
+    quad.texture = None;
+    quad.color = ColorSource::Uniform(Vec3::splat(0.8));
+    quad.material = Material {
+        ka: Vec3::ONE,
+        ..Material::default()
+    };
+    scene.lights = vec![Light::Ambient {
+        intensity: Vec3::splat(0.2),
+    }];
+    let c = render(&scene, &settings);
+    assert_eq!(c.term_gain(BufferKind::Ambient), 4.0);
+    // Nothing lit but the ambient: no diffuse or specular, nothing to brighten.
+    assert_eq!(c.term_gain(BufferKind::Diffuse), 1.0);
+    assert_eq!(c.term_gain(BufferKind::Color), 1.0);
+    let centre = (8, 8);
+    let raw = c.image(BufferKind::Ambient).get_pixel(centre.0, centre.1).0;
+    let shown = c
+        .image_gained(BufferKind::Ambient, 4.0)
+        .get_pixel(centre.0, centre.1)
+        .0;
+    assert_eq!(raw[0], (0.16_f32 * 255.0).round() as u8);
+    assert_eq!(shown[0], (0.64_f32 * 255.0).round() as u8);
+    // Brighter than ½: shown as it is.
+    scene.lights = vec![Light::Ambient {
+        intensity: Vec3::splat(0.7),
+    }];
+    assert_eq!(
+        render(&scene, &settings).term_gain(BufferKind::Ambient),
+        1.0
+    );
+}

@@ -142,7 +142,11 @@ pub(super) fn matrix_card(
         (Space::Window, _) => (m.viewport.name.clone(), Some(&m.viewport)),
         _ => return None,
     };
-    let size = (rect.width() / 42.0).clamp(13.0, 24.0);
+    // Larger in classroom mode (the room reads its digits), never wider than half the view.
+    let scale = crate::app::views::picture_scale(painter.ctx());
+    let size = (rect.width() / 42.0)
+        .clamp(13.0 * scale, 24.0 * scale)
+        .min(rect.width() / 36.0);
     let style = typeset::Style {
         size,
         color: Color32::WHITE,

@@ -163,6 +163,7 @@ impl PixelView {
         } else {
             0
         };
+        let gain = capture.term_gain(sel.buffer);
         let texture = self.texture.get_with(
             ui.ctx(),
             "pixel-view",
@@ -170,7 +171,7 @@ impl PixelView {
             TextureOptions::NEAREST,
             || match sel.buffer {
                 BufferKind::Depth => capture.depth_image(depth.linear, depth.range),
-                kind => capture.image(kind),
+                kind => capture.image_gained(kind, gain),
             },
         );
         let full = ui.available_rect_before_wrap();
@@ -231,6 +232,12 @@ impl PixelView {
             draw::draw_mip_legend(&painter, rect, lang);
         }
         status_message(&painter, rect, capture, sel.buffer, offered, lang);
+        // At the top, clear of the narration card in the bottom-left.
+        let top = (
+            rect.center_top() + egui::Vec2::new(0.0, 8.0),
+            egui::Align2::CENTER_TOP,
+        );
+        crate::app::views::draw_gain_note(&painter, top, sel.buffer, gain, lang);
         if let Some(below) = extra {
             self.picture.push(below);
             if sel.buffer == BufferKind::Depth {
