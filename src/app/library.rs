@@ -10,13 +10,14 @@ use super::PipelensApp;
 use crate::lesson::{self, Document, library};
 use crate::vocabulary::Lang;
 
-/// The built-in lessons' titles `(en, zh)`, read once.
-fn titles() -> &'static [(String, String)] {
-    static TITLES: OnceLock<Vec<(String, String)>> = OnceLock::new();
+/// The built-in lessons' titles `(en, zh)` and how many of their questions ask for a typed
+/// value, read once.
+fn titles() -> &'static [((String, String), usize)] {
+    static TITLES: OnceLock<Vec<((String, String), usize)>> = OnceLock::new();
     TITLES.get_or_init(|| {
         library::LESSONS
             .iter()
-            .map(|(file, text)| library::title(text, file))
+            .map(|(file, text)| (library::title(text, file), library::typed_questions(text)))
             .collect()
     })
 }
@@ -27,12 +28,23 @@ impl PipelensApp {
         let open_id = self.session.lesson.as_ref().map(|p| p.lesson.id.clone());
         let mut chosen = None;
         ui.menu_button(lang.tr("Lessons", "课程"), |ui| {
-            for ((file, _), (en, zh)) in library::LESSONS.iter().zip(titles()) {
+            for ((file, _), ((en, zh), asks)) in library::LESSONS.iter().zip(titles()) {
                 let id = file.trim_end_matches(".toml");
                 let title = if lang == Lang::Zh { zh } else { en };
                 let number = id.split('-').next().unwrap_or_default();
+                // The questions answered right, of those with a value to type.
+                let done = self.session.progress.of(id).map_or(0, |p| p.answered.len());
+                let label = match (*asks, done) {
+                    (0, _) => format!("{number}  {title}"),
+                    (n, d) if d >= n => format!("{number}  {title}   {n}/{n} {}", lang.tr("all right", "全对")),
+                    (n, d) => format!("{number}  {title}   {d}/{n}"),
+                };
                 if ui
-                    .selectable_label(open_id.as_deref() == Some(id), format!("{number}  {title}"))
+                    .selectable_label(open_id.as_deref() == Some(id), label)
+                    .on_hover_text(lang.tr(
+                        "d/n: questions you answered right, of those with a value to type",
+                        "d/n：需要填写数值的思考题中你已答对的数目",
+                    ))
                     .clicked()
                 {
                     chosen = Some(*file);

@@ -6,6 +6,8 @@ mod chrome;
 mod export_task;
 mod library;
 pub mod platform;
+mod player;
+pub mod progress;
 mod reload;
 pub mod selection;
 pub mod session;
@@ -257,7 +259,13 @@ impl PipelensApp {
         if self.panels.narration
             && let Some(player) = &self.session.lesson
         {
-            let out = views::lesson::card(ui.ctx(), central, player, &self.session.spec, lang);
+            let out = views::lesson::card(
+                ui.ctx(),
+                central,
+                (player, &self.session.progress),
+                &self.session.spec,
+                lang,
+            );
             self.commands.extend(out.commands);
             if out.fold {
                 self.panels.narration = false;
@@ -463,6 +471,23 @@ impl eframe::App for PipelensApp {
         let ms = self.session.times.map(|t| t.total().as_secs_f64() * 1e3);
         platform::report(ui.ctx(), &self.title(), ms);
     }
+
+    /// Keeps the student's progress (eframe calls this on closing and every
+    /// [`Self::auto_save_interval`]).
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        self.session.progress.save(storage);
+    }
+
+    /// Progress is saved within seconds of an answer (a lab in a browser tab may be closed
+    /// without a goodbye).
+    fn auto_save_interval(&self) -> std::time::Duration {
+        std::time::Duration::from_secs(5)
+    }
+
+    /// Only the progress is kept: the app opens the same way every time.
+    fn persist_egui_memory(&self) -> bool {
+        false
+    }
 }
 
 /// How the app starts: language, stage, comparison.
@@ -498,6 +523,7 @@ pub fn create(
     let worker = RenderWorker::start(move || ctx.request_repaint()).ok();
     let mut session = Session::with_document(doc, source, worker);
     session.lang = start.lang;
+    session.progress = progress::Progress::load(cc.storage);
     if let Some(k) = start.step {
         session.apply(Command::GoToStep(k));
     }

@@ -149,6 +149,8 @@ pub fn run(
             .with_title("pipelens")
             .with_inner_size([1366.0, 768.0])
             .with_min_inner_size([800.0, 500.0]),
+        // The app's storage keeps the student's progress, not the window's place.
+        persist_window: false,
         ..Default::default()
     };
     eframe::run_native(

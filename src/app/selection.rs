@@ -119,6 +119,15 @@ pub enum Command {
     Tick(f32),
     /// Show or hide the answer to the step's question.
     ShowAnswer(bool),
+    /// The student typed `text` into cell `cell` (row by row) of the step's answer field.
+    TypeAnswer {
+        /// The cell, row by row from 0.
+        cell: usize,
+        /// Its whole text now.
+        text: String,
+    },
+    /// Check the step's typed answer against its `expect` (Enter, or the Check button).
+    CheckAnswer,
     /// The lesson file changed on disk and loaded: replace it, staying on the same step.
     ReloadLesson(Box<Lesson>),
     /// The file changed on disk and is broken (the message), or is fine again (`None`).

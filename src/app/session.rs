@@ -10,35 +10,13 @@ use pipeline::buffers::Capture;
 use pipeline::capture::FrameCapture;
 use pipeline::overlay::OverlayKind;
 
+pub use super::player::LessonPlayer;
 pub use super::selection::{Command, DepthView, Selection};
 use super::worker::{Job, RenderWorker, Rendered};
 use crate::lesson::script::{Layout, Overlay};
-use crate::lesson::{Document, Lesson, SceneSpec};
+use crate::lesson::{Document, SceneSpec};
 use crate::observer::{Orbit, default_orbit};
 use crate::vocabulary::{Comparison, Lang, Stage};
-
-/// A lesson being played: which step, and how far into its animations.
-#[derive(Clone, Debug)]
-pub struct LessonPlayer {
-    /// The lesson.
-    pub lesson: Arc<Lesson>,
-    /// The current step.
-    pub step: usize,
-    /// Seconds into the step's animations.
-    pub time: f32,
-    /// Whether the animations are moving.
-    pub playing: bool,
-    /// Whether the answer to the step's question is shown.
-    pub show_answer: bool,
-}
-
-impl LessonPlayer {
-    /// The current step.
-    #[must_use]
-    pub fn current(&self) -> &crate::lesson::Step {
-        &self.lesson.steps[self.step]
-    }
-}
 
 /// The state of the app.
 pub struct Session {
@@ -88,6 +66,8 @@ pub struct Session {
     pub drafting: bool,
     /// Whether the capture on screen is a draft.
     pub shown_draft: bool,
+    /// What the student has done, kept across runs by the app's storage.
+    pub progress: super::progress::Progress,
 }
 
 impl Session {
@@ -129,6 +109,7 @@ impl Session {
             step_entered: 0,
             drafting: false,
             shown_draft: false,
+            progress: super::progress::Progress::default(),
         };
         s.request_render();
         s
@@ -145,8 +126,10 @@ impl Session {
     pub fn open(&mut self, doc: Document, source: &str) {
         let worker = self.worker.take();
         let lang = self.lang;
+        let progress = std::mem::take(&mut self.progress);
         *self = Self::document_at(doc, source, worker, self.generation + 1);
         self.lang = lang;
+        self.progress = progress;
     }
 
     fn document_at(
@@ -157,13 +140,7 @@ impl Session {
     ) -> Self {
         let mut s = Self::starting_at(doc.first_spec(), source, worker, generation);
         if let Document::Lesson(lesson) = doc {
-            s.lesson = Some(LessonPlayer {
-                lesson: Arc::from(lesson),
-                step: 0,
-                time: 0.0,
-                playing: false,
-                show_answer: false,
-            });
+            s.lesson = Some(LessonPlayer::new(Arc::from(lesson), 0));
             s.enter_step(0);
         }
         s
@@ -178,6 +155,7 @@ impl Session {
         player.step = k;
         player.time = 0.0;
         player.show_answer = false;
+        player.verdict = None;
         let step = player.current().clone();
         player.playing = !step.animate.is_empty() && !step.predicts();
         let spec = player.lesson.spec_playing(k, 0.0);
@@ -418,16 +396,24 @@ impl Session {
                     p.show_answer = b;
                 }
             }
+            Command::TypeAnswer { cell, text } => {
+                if let Some(p) = &mut self.lesson
+                    && let Some(e) = &p.current().expect
+                {
+                    let at = (p.step, cell, e.shape.cells());
+                    self.progress.type_cell(&p.lesson, at, text);
+                    p.verdict = None;
+                }
+            }
+            Command::CheckAnswer => {
+                if let Some(p) = &mut self.lesson {
+                    p.verdict = self.progress.check(&p.lesson, p.step);
+                }
+            }
             Command::ReloadLesson(lesson) => {
                 let step = self.lesson.as_ref().map_or(0, |p| p.step);
                 self.reload_error = None;
-                self.lesson = Some(LessonPlayer {
-                    lesson: Arc::from(lesson),
-                    step,
-                    time: 0.0,
-                    playing: false,
-                    show_answer: false,
-                });
+                self.lesson = Some(LessonPlayer::new(Arc::from(lesson), step));
                 self.enter_step(step);
             }
             Command::SetReloadError(e) => self.reload_error = e,
@@ -447,6 +433,8 @@ impl Session {
             | Command::TogglePlay
             | Command::Tick(_)
             | Command::ShowAnswer(_)
+            | Command::TypeAnswer { .. }
+            | Command::CheckAnswer
             | Command::ReloadLesson(_)
             | Command::SetReloadError(_) => {}
             Command::SelectBuffer(b) => sel.buffer = b,

@@ -199,6 +199,7 @@ sub,sup{font-size:75%;line-height:0} code{font-size:92%;background:#f0f0ea;paddi
 .frac{display:inline-flex;flex-direction:column;vertical-align:middle;text-align:center;font-size:88%;margin:0 .15em;line-height:1.15}
 .frac>span:first-child{border-bottom:1px solid currentColor;padding:0 .2em}
 .question{background:#f6f6f0;padding:.5em 1em;margin-top:1em} .answer{border-left:4px solid #8a3b00;padding:.2em 1em;margin:.5em 0}
+table.fill{border-collapse:collapse;margin:.4em 0} table.fill td{border:1px solid #555;min-width:4.5em;height:1.8em;padding:0 .4em;text-align:right;font-family:monospace;background:#fff}
 details{margin-top:.4em} .key{display:inline-block;background:#8a3b00;color:#fff;padding:.1em .6em;border-radius:.3em}
 @media print{
 @page{size:A4;margin:14mm}
@@ -326,6 +327,9 @@ fn step_html(
             t("Question:", "思考题："),
             typeset(&notation::parse_paragraph(q.get(lang)))
         );
+        if let Some(e) = &step.expect {
+            h.push_str(&fill_in(e, answers, lang));
+        }
         if let Some(a) = &step.answer {
             if answers {
                 let _ = write!(
@@ -346,6 +350,37 @@ fn step_html(
         h.push_str("</div>\n");
     }
     h.push_str("</section>\n");
+}
+
+/// The boxes a question's expected value is written into on paper, one per entry (a matrix
+/// cell by cell), with the tolerance stated; in a teacher's key, filled with the value.
+fn fill_in(e: &crate::lesson::answer::Expect, answers: bool, lang: Lang) -> String {
+    let (rows, cols) = e.shape.size();
+    let tolerance = crate::vocabulary::short(e.tolerance as f32, 4);
+    let mut h = String::new();
+    let _ = write!(
+        h,
+        "<div class=\"ui\">{}</div><table class=\"fill\">",
+        match lang {
+            Lang::En => format!("Your answer (each entry within ±{tolerance}):"),
+            Lang::Zh => format!("你的答案（每项误差 ±{tolerance} 以内）："),
+        }
+    );
+    for r in 0..rows {
+        h.push_str("<tr>");
+        for c in 0..cols {
+            let v = e.values[r * cols + c];
+            let cell = if answers {
+                crate::vocabulary::short(v as f32, 4)
+            } else {
+                String::new()
+            };
+            let _ = write!(h, "<td>{cell}</td>");
+        }
+        h.push_str("</tr>");
+    }
+    h.push_str("</table>");
+    h
 }
 
 #[cfg(test)]

@@ -126,6 +126,19 @@ pub fn lesson(file: &str) -> Result<Lesson, Diagnostics> {
     }
 }
 
+/// How many of a lesson's steps ask for a value to type (`expect`), read from its text without
+/// building the lesson (for the Lessons menu's progress).
+#[must_use]
+pub fn typed_questions(text: &str) -> usize {
+    text.parse::<toml::Table>()
+        .ok()
+        .and_then(|t| {
+            let steps = t.get("steps")?.as_array()?;
+            Some(steps.iter().filter(|s| s.get("expect").is_some()).count())
+        })
+        .unwrap_or(0)
+}
+
 /// A built-in lesson's title in each language, read from its `[lesson]` table without building
 /// its scene (for menus): `(en, zh)`, or the file name when the text has none.
 #[must_use]

@@ -7,6 +7,7 @@
 //! A lesson ([`script`]) is a scene with `[lesson]` metadata and `[[steps]]`; its parameters are
 //! named in [`param`]. The grammar of both is documented in `lessons/README.md`.
 
+pub mod answer;
 mod diagnostic;
 pub mod library;
 pub mod param;

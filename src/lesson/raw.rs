@@ -377,7 +377,25 @@ pub struct RawStep {
     /// `shader = { vertex = …, fragment = … }`: every object's shaders from this step on.
     pub shader: Option<Spanned<RawShader>>,
     pub question: Option<Spanned<RawText>>,
+    /// The value the question asks for, typed by the student: a number, `[x, y, z]`, or a
+    /// matrix's rows `[[…], […]]`.
+    pub expect: Option<Spanned<RawExpect>>,
+    /// How far a typed entry may be from `expect` and still be right.
+    pub tolerance: Option<Spanned<f64>>,
     pub answer: Option<Spanned<RawText>>,
+}
+
+/// `expect = …` as written.
+#[derive(Debug, Deserialize)]
+#[serde(
+    untagged,
+    expecting = "`expect` takes a number (expect = 0.64), a vector (expect = [0.6, 0.8, 0]) or a matrix's rows \
+    (expect = [[1, 0], [0, 1]])"
+)]
+pub enum RawExpect {
+    Number(f64),
+    Vector(Vec<f64>),
+    Matrix(Vec<Vec<f64>>),
 }
 
 /// `{ param = "…", from = …, to = …, seconds = …, easing = "…", repeat = "…" }`.

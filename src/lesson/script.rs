@@ -3,6 +3,7 @@
 //! highlighted pixel or vertex, and a question for self-study.
 
 mod animation;
+mod expect;
 
 use std::path::Path;
 
@@ -76,6 +77,8 @@ pub struct Step {
     pub shader: Option<ObjectShader>,
     /// A question for self-study.
     pub question: Option<Text>,
+    /// The value the question asks for, which the student types (`expect = …`).
+    pub expect: Option<super::answer::Expect>,
     /// Its answer.
     pub answer: Option<Text>,
 }
@@ -301,6 +304,7 @@ impl Checker<'_> {
         let narration = self.text_of("narration", &r.narration);
         let question = r.question.as_ref().map(|q| self.text_of("question", q));
         let answer = r.answer.as_ref().map(|a| self.text_of("answer", a));
+        let expect = self.expect(r);
         let (stage, layout, compare, buffer, overlays) = self.views(s);
         let mut set = Vec::new();
         // In the order written (a `projection.kind` before the keys of that kind).
@@ -356,6 +360,7 @@ impl Checker<'_> {
             depth_range,
             shader,
             question,
+            expect,
             answer,
         }
     }

@@ -386,7 +386,10 @@ fn every_lesson_step_draws_in_both_languages() {
 }
 
 /// The app on a lesson file at a window size.
-fn sized_lesson_harness(path: &std::path::Path, size: [f32; 2]) -> Harness<'static, PipelensApp> {
+pub(crate) fn sized_lesson_harness(
+    path: &std::path::Path,
+    size: [f32; 2],
+) -> Harness<'static, PipelensApp> {
     let doc = pipelens::lesson::load_file(path).expect("the lesson loads");
     let session = Session::with_document(doc, "test", None);
     Harness::builder()

@@ -110,6 +110,30 @@ const LESSONS: &[(&str, usize, usize, &str)] = &[
     ),
     ("lesson-unknown-stage", 13, 9, "`stage` must be one of"),
     (
+        "lesson-expect-without-question",
+        13,
+        10,
+        "`expect` needs a `question` in the same step",
+    ),
+    (
+        "lesson-expect-ragged-matrix",
+        14,
+        10,
+        "every row of an `expect` matrix needs as many numbers as the first",
+    ),
+    (
+        "lesson-expect-not-a-number",
+        14,
+        10,
+        "`expect` takes a number (expect = 0.64), a vector",
+    ),
+    (
+        "lesson-tolerance-negative",
+        15,
+        13,
+        "`tolerance` must be a positive number, got -1",
+    ),
+    (
         "lesson-missing-chinese",
         12,
         13,

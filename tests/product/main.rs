@@ -1,5 +1,6 @@
 //! Tests of the whole product: the command line, scene files, exports, reference images.
 
+mod answers;
 mod app;
 mod architecture;
 mod authoring;

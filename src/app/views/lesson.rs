@@ -5,6 +5,7 @@
 use egui::{Align2, Color32, Frame, RichText, Ui, Vec2};
 
 use super::typeset::{self, Style};
+use crate::app::progress::Progress;
 use crate::app::session::{Command, LessonPlayer};
 use crate::lesson::{SceneSpec, param};
 use crate::vocabulary::Lang;
@@ -21,7 +22,7 @@ pub struct CardOutput {
 pub fn card(
     ctx: &egui::Context,
     over: egui::Rect,
-    player: &LessonPlayer,
+    (player, progress): (&LessonPlayer, &Progress),
     spec: &SceneSpec,
     lang: Lang,
 ) -> CardOutput {
@@ -50,7 +51,7 @@ pub fn card(
                     for font in ui.style_mut().text_styles.values_mut() {
                         font.size *= fit;
                     }
-                    let (room, needed) = contents(ui, player, spec, lang, &mut out);
+                    let (room, needed) = contents(ui, (player, progress), spec, lang, &mut out);
                     let next = fitted(fit, room, needed, normal / body);
                     if next != fit {
                         ctx.data_mut(|d| d.insert_temp(fit_id, next));
@@ -85,7 +86,7 @@ fn fitted(fit: f32, room: f32, needed: f32, least: f32) -> f32 {
 /// The card's words; returns the height left for them below the title and the height they took.
 fn contents(
     ui: &mut Ui,
-    player: &LessonPlayer,
+    (player, progress): (&LessonPlayer, &Progress),
     spec: &SceneSpec,
     lang: Lang,
     out: &mut CardOutput,
@@ -146,6 +147,7 @@ fn contents(
                         .color(Color32::WHITE),
                 );
                 narration(ui, q.get(lang), &style);
+                super::answer::field(ui, (player, progress), &style, lang, &mut out.commands);
                 if let Some(a) = &step.answer {
                     let shown = player.show_answer;
                     let label = if shown {

@@ -1,0 +1,118 @@
+//! What a student has done, kept across runs: in each lesson, the questions answered right by
+//! typing their value (`expect`), and what was last typed into each field. The app keeps it in
+//! its storage (on the desktop a file in the user's data folder, in the browser the page's
+//! local storage) under [`Progress::KEY`]; the Lessons menu shows it.
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use serde::{Deserialize, Serialize};
+
+use crate::lesson::Lesson;
+use crate::lesson::answer::Verdict;
+
+/// Everything a student has done, by lesson id.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Progress {
+    /// Each lesson's record, by the lesson's `id`.
+    pub lessons: BTreeMap<String, LessonProgress>,
+}
+
+/// What a student has done in one lesson. Steps are counted from 1, as the app shows them.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct LessonProgress {
+    /// The steps whose typed answer was right.
+    pub answered: BTreeSet<usize>,
+    /// What was last typed into each step's field, cell by cell.
+    pub typed: BTreeMap<usize, Vec<String>>,
+}
+
+impl Progress {
+    /// The key the app's storage keeps the progress under.
+    pub const KEY: &'static str = "pipelens-progress";
+
+    /// The progress kept in the app's storage (none kept, or no storage: nothing done yet).
+    #[must_use]
+    pub fn load(storage: Option<&dyn eframe::Storage>) -> Self {
+        storage
+            .and_then(|s| eframe::get_value(s, Self::KEY))
+            .unwrap_or_default()
+    }
+
+    /// Keeps the progress in the app's storage (written to disk, or to the page's local
+    /// storage, by eframe).
+    pub fn save(&self, storage: &mut dyn eframe::Storage) {
+        eframe::set_value(storage, Self::KEY, self);
+    }
+
+    /// What was typed into step `k`'s (0-based) field of `lesson`, `cells` long.
+    #[must_use]
+    pub fn typed(&self, lesson: &Lesson, k: usize, cells: usize) -> Vec<String> {
+        let mut t = self
+            .lessons
+            .get(&lesson.id)
+            .and_then(|l| l.typed.get(&(k + 1)))
+            .cloned()
+            .unwrap_or_default();
+        t.resize(cells, String::new());
+        t
+    }
+
+    /// Keeps `text` as cell `cell` of step `k`'s (0-based) field, `cells` long.
+    pub fn type_cell(
+        &mut self,
+        lesson: &Lesson,
+        (k, cell, cells): (usize, usize, usize),
+        text: String,
+    ) {
+        let mut t = self.typed(lesson, k, cells);
+        if let Some(c) = t.get_mut(cell) {
+            *c = text;
+        }
+        self.lessons
+            .entry(lesson.id.clone())
+            .or_default()
+            .typed
+            .insert(k + 1, t);
+    }
+
+    /// Checks step `k`'s (0-based) typed answer against its `expect`, and remembers the step
+    /// as answered when it is right; `None` when the step expects nothing.
+    pub fn check(&mut self, lesson: &Lesson, k: usize) -> Option<Verdict> {
+        let expect = lesson.steps.get(k)?.expect.as_ref()?;
+        let verdict = expect.check(&self.typed(lesson, k, expect.shape.cells()));
+        if verdict == Verdict::Right {
+            self.lessons
+                .entry(lesson.id.clone())
+                .or_default()
+                .answered
+                .insert(k + 1);
+        }
+        Some(verdict)
+    }
+
+    /// Whether step `k`'s (0-based) question was answered right.
+    #[must_use]
+    pub fn answered(&self, lesson: &Lesson, k: usize) -> bool {
+        self.lessons
+            .get(&lesson.id)
+            .is_some_and(|l| l.answered.contains(&(k + 1)))
+    }
+
+    /// `(done, of)`: how many of the lesson's questions with a value to type were answered
+    /// right, of how many.
+    #[must_use]
+    pub fn done(&self, lesson: &Lesson) -> (usize, usize) {
+        let asks: Vec<usize> = (0..lesson.steps.len())
+            .filter(|&k| lesson.steps[k].expect.is_some())
+            .collect();
+        let done = asks.iter().filter(|&&k| self.answered(lesson, k)).count();
+        (done, asks.len())
+    }
+
+    /// The progress of `id`'s lesson, as kept (for the Lessons menu, which lists lessons not
+    /// loaded).
+    #[must_use]
+    pub fn of(&self, id: &str) -> Option<&LessonProgress> {
+        self.lessons.get(id)
+    }
+}

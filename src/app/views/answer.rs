@@ -1,0 +1,112 @@
+//! The field under a question with a value to type (`expect`): one box per number (a matrix
+//! cell by cell), the tolerance said beside it, Check (or Enter), and the verdict — right, or
+//! which entry is off and by how much — after which the worked answer is offered.
+
+use egui::{Color32, RichText, Ui};
+
+use super::typeset::Style;
+use crate::app::progress::Progress;
+use crate::app::session::{Command, LessonPlayer};
+use crate::lesson::answer::{Expect, Shape, Verdict};
+use crate::vocabulary::{Lang, short};
+
+/// Green for right, amber for not yet.
+const RIGHT: Color32 = Color32::from_rgb(120, 220, 120);
+const NOT_YET: Color32 = Color32::from_rgb(255, 170, 90);
+
+/// Draws the field of the current step's `expect`, if it has one; typing and checking are
+/// returned as commands.
+pub fn field(
+    ui: &mut Ui,
+    (player, progress): (&LessonPlayer, &Progress),
+    style: &Style,
+    lang: Lang,
+    commands: &mut Vec<Command>,
+) {
+    let Some(expect) = &player.current().expect else {
+        return;
+    };
+    let (rows, cols) = expect.shape.size();
+    let typed = progress.typed(&player.lesson, player.step, expect.shape.cells());
+    ui.label(
+        RichText::new(prompt(expect, lang))
+            .size(style.size * 0.85)
+            .color(style.color),
+    );
+    let mut check = false;
+    let cell_width = style.size * 4.2;
+    egui::Grid::new("answer-field")
+        .spacing([style.size * 0.3, style.size * 0.3])
+        .show(ui, |ui| {
+            for r in 0..rows {
+                for c in 0..cols {
+                    let i = r * cols + c;
+                    let mut text = typed[i].clone();
+                    let edit = egui::TextEdit::singleline(&mut text)
+                        .font(egui::FontId::monospace(style.size * 0.9))
+                        .background_color(Color32::from_gray(45))
+                        .hint_text(hint(expect.shape, (r, c)));
+                    let response = ui
+                        .add_sized([cell_width, style.size * 1.5], edit)
+                        .on_hover_text(lang.tr(
+                            "A number or an expression: 0.866, sqrt(3)/2, 2*pi/3, 1/4",
+                            "数值或算式：0.866、sqrt(3)/2、2*pi/3、1/4",
+                        ));
+                    if response.changed() {
+                        commands.push(Command::TypeAnswer { cell: i, text });
+                    }
+                    check |= response.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+                }
+                ui.end_row();
+            }
+        });
+    ui.horizontal(|ui| {
+        check |= ui
+            .button(lang.tr("Check", "检查"))
+            .on_hover_text(lang.tr(
+                "Compare with the expected value (Enter)",
+                "与期望值比较（回车）",
+            ))
+            .clicked();
+        if player.verdict.is_none() && progress.answered(&player.lesson, player.step) {
+            ui.label(RichText::new(lang.tr("answered right before", "之前已答对")).color(RIGHT));
+        }
+    });
+    if check {
+        commands.push(Command::CheckAnswer);
+    }
+    if let Some(v) = &player.verdict {
+        let color = if *v == Verdict::Right { RIGHT } else { NOT_YET };
+        ui.label(
+            RichText::new(v.describe(expect, lang))
+                .size(style.size * 0.9)
+                .color(color),
+        );
+    }
+}
+
+/// What the field asks for, with the tolerance stated.
+fn prompt(expect: &Expect, lang: Lang) -> String {
+    let tolerance = short(expect.tolerance as f32, 4);
+    let what = match (expect.shape, lang) {
+        (Shape::Number, Lang::En) => "Type the value".to_owned(),
+        (Shape::Number, Lang::Zh) => "填入数值".to_owned(),
+        (Shape::Vector(n), Lang::En) => format!("Type the {n} components"),
+        (Shape::Vector(n), Lang::Zh) => format!("填入 {n} 个分量"),
+        (Shape::Matrix(r, c), Lang::En) => format!("Type the {r}×{c} matrix, cell by cell"),
+        (Shape::Matrix(r, c), Lang::Zh) => format!("逐格填入 {r}×{c} 矩阵"),
+    };
+    match lang {
+        Lang::En => format!("{what} (each within ±{tolerance}):"),
+        Lang::Zh => format!("{what}（每项误差 ±{tolerance} 以内）："),
+    }
+}
+
+/// The grey hint in an empty cell: `x`, `y`, … for a vector, `m11` … for a matrix.
+fn hint(shape: Shape, (r, c): (usize, usize)) -> String {
+    match shape {
+        Shape::Number => "?".to_owned(),
+        Shape::Vector(_) => ["x", "y", "z", "w"][c.min(3)].to_owned(),
+        Shape::Matrix(..) => format!("m{}{}", r + 1, c + 1),
+    }
+}

@@ -1,0 +1,69 @@
+//! A step's `expect = …` and `tolerance`: the value its question asks the student to type,
+//! checked when the lesson is read.
+
+use super::super::answer::{DEFAULT_TOLERANCE, Expect, Shape};
+use super::super::raw::{RawExpect, RawStep};
+use super::super::validate::Checker;
+
+impl Checker<'_> {
+    /// A step's `expect` and `tolerance`: a finite number, a vector of 2–4 or a matrix of 2–4
+    /// rows of 2–4, for a question the step asks; a positive tolerance, only beside `expect`.
+    pub(super) fn expect(&mut self, r: &RawStep) -> Option<Expect> {
+        let tolerance = match &r.tolerance {
+            Some(t) if r.expect.is_none() => {
+                self.error(t.span(), "`tolerance` belongs beside an `expect` value");
+                return None;
+            }
+            Some(t) if !(t.get_ref().is_finite() && *t.get_ref() > 0.0) => {
+                self.error(
+                    t.span(),
+                    format!("`tolerance` must be a positive number, got {}", t.get_ref()),
+                );
+                DEFAULT_TOLERANCE
+            }
+            Some(t) => *t.get_ref(),
+            None => DEFAULT_TOLERANCE,
+        };
+        let e = r.expect.as_ref()?;
+        if r.question.is_none() {
+            self.error(e.span(), "`expect` needs a `question` in the same step: it is the value that question asks for");
+            return None;
+        }
+        let (shape, values) = match e.get_ref() {
+            RawExpect::Number(x) => (Shape::Number, vec![*x]),
+            RawExpect::Vector(v) => (Shape::Vector(v.len()), v.clone()),
+            RawExpect::Matrix(rows) => {
+                let cols = rows.first().map_or(0, Vec::len);
+                if rows.iter().any(|row| row.len() != cols) {
+                    self.error(
+                        e.span(),
+                        "every row of an `expect` matrix needs as many numbers as the first",
+                    );
+                    return None;
+                }
+                (Shape::Matrix(rows.len(), cols), rows.concat())
+            }
+        };
+        let (rows, cols) = shape.size();
+        let fits = |n: usize| (2..=4).contains(&n);
+        if shape != Shape::Number && !(fits(cols) && (rows == 1 || fits(rows))) {
+            self.error(
+                e.span(),
+                format!("an `expect` vector has 2 to 4 numbers and a matrix 2 to 4 rows of 2 to 4; this one is {rows}×{cols}"),
+            );
+            return None;
+        }
+        if values.iter().any(|v| !v.is_finite() || v.abs() > 1e15) {
+            self.error(
+                e.span(),
+                "`expect` needs finite numbers of magnitude at most 1e15",
+            );
+            return None;
+        }
+        Some(Expect {
+            shape,
+            values,
+            tolerance,
+        })
+    }
+}
