@@ -33,7 +33,11 @@ impl PipelensApp {
                 let title = if lang == Lang::Zh { zh } else { en };
                 let number = id.split('-').next().unwrap_or_default();
                 // The questions answered right, of those with a value to type.
-                let done = self.session.progress.of(id).map_or(0, |p| p.answered.len());
+                let done = self
+                    .session
+                    .progress
+                    .of(id)
+                    .map_or(0, |p| p.answered.union(&p.passed).count());
                 let label = match (*asks, done) {
                     (0, _) => format!("{number}  {title}"),
                     (n, d) if d >= n => format!("{number}  {title}   {n}/{n} {}", lang.tr("all right", "全对")),

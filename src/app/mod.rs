@@ -3,6 +3,7 @@
 //! pipeline results itself.
 
 mod chrome;
+mod exercise;
 mod export_task;
 mod library;
 pub mod platform;
@@ -78,6 +79,7 @@ pub struct PipelensApp {
     geometry_view: GeometryView,
     observer_view: ObserverView,
     compare_view: CompareView,
+    exercise_view: views::exercise::ExerciseView,
     inspector: inspector::Inspector,
     shader_editor: views::shader::ShaderEditor,
     classroom: bool,
@@ -106,6 +108,7 @@ impl PipelensApp {
             geometry_view: GeometryView::default(),
             observer_view: ObserverView::default(),
             compare_view: CompareView::default(),
+            exercise_view: views::exercise::ExerciseView::default(),
             inspector: inspector::Inspector::default(),
             shader_editor: views::shader::ShaderEditor::default(),
             classroom: false,
@@ -256,19 +259,14 @@ impl PipelensApp {
             })
             .response
             .rect;
-        if self.panels.narration
-            && let Some(player) = &self.session.lesson
-        {
-            let out = views::lesson::card(
-                ui.ctx(),
-                central,
-                (player, &self.session.progress),
-                &self.session.spec,
-                lang,
-            );
+        if self.panels.narration && self.session.lesson.is_some() {
+            let out = views::lesson::card(ui.ctx(), central, &self.session);
             self.commands.extend(out.commands);
             if out.fold {
                 self.panels.narration = false;
+            }
+            if out.inspect {
+                self.panels.inspector = true;
             }
         }
         self.animate(ui.ctx());
@@ -315,7 +313,8 @@ impl PipelensApp {
                 .extend(self.compare_view.picture.iter().copied());
             return;
         }
-        let (area, main, side) = if observer {
+        let exercise = space.is_none() && self.session.current_exercise().is_some();
+        let (area, main, side) = if observer || exercise {
             let (area, left, right) = split(
                 ui,
                 space
@@ -355,9 +354,16 @@ impl PipelensApp {
         if let Some(side) = side {
             ui.scope_builder(egui::UiBuilder::new().max_rect(side), |ui| {
                 ui.set_clip_rect(side.intersect(ui.clip_rect()));
-                let c = self.observer_view.ui(ui, &self.session, capture);
-                self.commands.extend(c);
-                self.picture.extend(self.observer_view.picture);
+                if exercise {
+                    let c = self.exercise_view.ui(ui, &self.session, capture, side);
+                    self.commands.extend(c);
+                    self.picture
+                        .extend(self.exercise_view.picture.iter().copied());
+                } else {
+                    let c = self.observer_view.ui(ui, &self.session, capture);
+                    self.commands.extend(c);
+                    self.picture.extend(self.observer_view.picture);
+                }
             });
         }
         ui.advance_cursor_after_rect(area);

@@ -24,6 +24,12 @@ pub struct LessonProgress {
     pub answered: BTreeSet<usize>,
     /// What was last typed into each step's field, cell by cell.
     pub typed: BTreeMap<usize, Vec<String>>,
+    /// The exercise steps whose every pixel matched pipelens' own.
+    #[serde(default)]
+    pub passed: BTreeSet<usize>,
+    /// The code (vertex, fragment) the student last ran in each exercise step.
+    #[serde(default)]
+    pub code: BTreeMap<usize, (String, String)>,
 }
 
 impl Progress {
@@ -90,6 +96,31 @@ impl Progress {
         Some(verdict)
     }
 
+    /// Keeps the code the student ran in exercise step `k` (0-based), and the step as passed
+    /// when every pixel matched.
+    pub fn keep_code(&mut self, lesson: &Lesson, k: usize, code: (String, String), passed: bool) {
+        let l = self.lessons.entry(lesson.id.clone()).or_default();
+        l.code.insert(k + 1, code);
+        if passed {
+            l.passed.insert(k + 1);
+        }
+    }
+
+    /// The code the student last ran in exercise step `k` (0-based): `(vertex, fragment)`.
+    #[must_use]
+    pub fn code(&self, lesson: &Lesson, k: usize) -> Option<(&str, &str)> {
+        let (v, f) = self.lessons.get(&lesson.id)?.code.get(&(k + 1))?;
+        Some((v.as_str(), f.as_str()))
+    }
+
+    /// Whether exercise step `k` (0-based) was passed.
+    #[must_use]
+    pub fn passed(&self, lesson: &Lesson, k: usize) -> bool {
+        self.lessons
+            .get(&lesson.id)
+            .is_some_and(|l| l.passed.contains(&(k + 1)))
+    }
+
     /// Whether step `k`'s (0-based) question was answered right.
     #[must_use]
     pub fn answered(&self, lesson: &Lesson, k: usize) -> bool {
@@ -99,13 +130,16 @@ impl Progress {
     }
 
     /// `(done, of)`: how many of the lesson's questions with a value to type were answered
-    /// right, of how many.
+    /// right and exercises passed, of how many.
     #[must_use]
     pub fn done(&self, lesson: &Lesson) -> (usize, usize) {
         let asks: Vec<usize> = (0..lesson.steps.len())
-            .filter(|&k| lesson.steps[k].expect.is_some())
+            .filter(|&k| lesson.steps[k].expect.is_some() || lesson.steps[k].exercise.is_some())
             .collect();
-        let done = asks.iter().filter(|&&k| self.answered(lesson, k)).count();
+        let done = asks
+            .iter()
+            .filter(|&&k| self.answered(lesson, k) || self.passed(lesson, k))
+            .count();
         (done, asks.len())
     }
 

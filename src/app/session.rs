@@ -68,6 +68,9 @@ pub struct Session {
     pub shown_draft: bool,
     /// What the student has done, kept across runs by the app's storage.
     pub progress: super::progress::Progress,
+    /// An exercise step's reference (pipelens' own stages) and how the student's frame
+    /// compares with it.
+    pub exercise: super::exercise::Comparison,
 }
 
 impl Session {
@@ -110,6 +113,7 @@ impl Session {
             drafting: false,
             shown_draft: false,
             progress: super::progress::Progress::default(),
+            exercise: super::exercise::Comparison::default(),
         };
         s.request_render();
         s
@@ -198,6 +202,8 @@ impl Session {
         };
         sel.profile = step.profile_line(spec.settings.width, spec.settings.height);
         self.step_entered += 1;
+        let mut spec = spec;
+        self.restore_code(&mut spec);
         self.spec = spec;
         self.request_render();
     }
@@ -292,10 +298,11 @@ impl Session {
                 .comparison
                 .map(|c| c.variants(&spec.settings))
                 .unwrap_or_default(),
-            spec,
             observer: self
                 .observer_shown()
                 .then(|| (self.orbit.camera(), self.observer_aspect)),
+            reference: self.exercise_reference(&spec),
+            spec,
         }
     }
 
@@ -351,6 +358,7 @@ impl Session {
                     old.1.into_iter().for_each(|c| w.recycle(c, true));
                 }
                 self.shown_draft = r.draft;
+                self.receive_reference(r.reference);
                 self.buffers = r.buffers;
                 self.variants = r.variants;
                 self.times = Some(r.times);

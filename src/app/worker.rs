@@ -27,6 +27,8 @@ pub struct Job {
     pub observer: Option<(Camera, Option<f32>)>,
     /// Settings to render as well, for a side-by-side comparison, with their labels.
     pub variants: Vec<(String, RenderSettings)>,
+    /// An exercise's reference: the same scene drawn by pipelens' own stages.
+    pub reference: Option<(pipeline::scene::Scene, RenderSettings)>,
 }
 
 /// What a job produced.
@@ -42,6 +44,8 @@ pub struct Rendered {
     pub observer: Option<Arc<FrameCapture>>,
     /// The compared captures, with their labels (those that could be rendered).
     pub variants: Vec<(String, Arc<FrameCapture>)>,
+    /// The exercise's reference, when the job asked for one and it could be rendered.
+    pub reference: Option<Arc<FrameCapture>>,
     /// The buffers the scene offers (the capture keeps those the view shows; choosing another
     /// renders again).
     pub buffers: Vec<BufferKind>,
@@ -110,7 +114,11 @@ impl Job {
                             Some((label.clone(), Arc::new(c)))
                         })
                         .collect();
+                    let reference = self.reference.as_ref().and_then(|(scene, settings)| {
+                        pipeline::render(scene, settings).ok().map(Arc::new)
+                    });
                     Rendered {
+                        reference,
                         draft: self.draft,
                         buffers: BufferKind::ALL
                             .into_iter()

@@ -11,7 +11,10 @@ use crate::lesson;
 /// The template `pipelens new-lesson` writes; `{id}` and `{file}` are filled in.
 const NEW_LESSON: &str = include_str!("../../assets/templates/new-lesson.toml");
 
-pub(super) fn new_lesson(file: &Path) -> Result<ExitCode> {
+/// The template `pipelens new-lesson --lab` writes: a lab whose step is an exercise.
+const NEW_LAB: &str = include_str!("../../assets/templates/new-lab.toml");
+
+pub(super) fn new_lesson(file: &Path, lab: bool) -> Result<ExitCode> {
     if file.extension().is_none_or(|e| e != "toml") {
         anyhow::bail!(
             "{}: a lesson file ends in .toml, e.g. lessons/20-my-lesson.toml",
@@ -28,7 +31,7 @@ pub(super) fn new_lesson(file: &Path) -> Result<ExitCode> {
                 file.display()
             )
         })?;
-    let text = NEW_LESSON
+    let text = if lab { NEW_LAB } else { NEW_LESSON }
         .replace("{id}", id)
         .replace("{file}", &file.display().to_string());
     if let Some(dir) = file.parent().filter(|d| !d.as_os_str().is_empty()) {
@@ -49,9 +52,12 @@ pub(super) fn new_lesson(file: &Path) -> Result<ExitCode> {
         })?;
     std::io::Write::write_all(&mut f, text.as_bytes())
         .with_context(|| format!("cannot write {}", file.display()))?;
+    let steps = text.matches("\n[[steps]]").count();
+    let what = if lab { "a lab" } else { "a lesson" };
     println!(
-        "Wrote {}: a lesson of 3 steps. Play it with `pipelens --lesson {0}`; it reloads on save.",
-        file.display()
+        "Wrote {}: {what} of {steps} step{}. Play it with `pipelens --lesson {0}`; it reloads on save.",
+        file.display(),
+        if steps == 1 { "" } else { "s" }
     );
     Ok(ExitCode::SUCCESS)
 }

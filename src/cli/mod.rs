@@ -113,6 +113,10 @@ pub enum Command {
     NewLesson {
         /// The lesson file to create, e.g. lessons/20-my-lesson.toml; its name becomes the id.
         file: PathBuf,
+        /// A lab instead: a step where the student completes a shader, checked pixel by pixel
+        /// against pipelens' own (`exercise = { task, starter, tolerance }`).
+        #[arg(long)]
+        lab: bool,
     },
     /// Time each stage of the pipeline on standard scenes.
     Bench {
@@ -284,7 +288,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
         Some(Command::Check { paths }) => Ok(authoring::check(&paths)),
-        Some(Command::NewLesson { file }) => authoring::new_lesson(&file),
+        Some(Command::NewLesson { file, lab }) => authoring::new_lesson(&file, lab),
         Some(bench @ Command::Bench { .. }) => run_bench(bench),
     }
 }

@@ -199,7 +199,7 @@ sub,sup{font-size:75%;line-height:0} code{font-size:92%;background:#f0f0ea;paddi
 .frac{display:inline-flex;flex-direction:column;vertical-align:middle;text-align:center;font-size:88%;margin:0 .15em;line-height:1.15}
 .frac>span:first-child{border-bottom:1px solid currentColor;padding:0 .2em}
 .question{background:#f6f6f0;padding:.5em 1em;margin-top:1em} .answer{border-left:4px solid #8a3b00;padding:.2em 1em;margin:.5em 0}
-table.fill{border-collapse:collapse;margin:.4em 0} table.fill td{border:1px solid #555;min-width:4.5em;height:1.8em;padding:0 .4em;text-align:right;font-family:monospace;background:#fff}
+pre.code{font-size:85%;background:#f0f0ea;padding:.5em;white-space:pre-wrap} table.fill{border-collapse:collapse;margin:.4em 0} table.fill td{border:1px solid #555;min-width:4.5em;height:1.8em;padding:0 .4em;text-align:right;font-family:monospace;background:#fff}
 details{margin-top:.4em} .key{display:inline-block;background:#8a3b00;color:#fff;padding:.1em .6em;border-radius:.3em}
 @media print{
 @page{size:A4;margin:14mm}
@@ -320,6 +320,9 @@ fn step_html(
         }
         h.push_str("</div>\n");
     }
+    if let Some(e) = &step.exercise {
+        h.push_str(&exercise_html(e, lang));
+    }
     if let Some(q) = &step.question {
         let _ = write!(
             h,
@@ -350,6 +353,29 @@ fn step_html(
         h.push_str("</div>\n");
     }
     h.push_str("</section>\n");
+}
+
+/// An exercise on paper: the task, and the starter code the student completes (the stages the
+/// lesson wrote; pipelens' own are not repeated).
+fn exercise_html(e: &crate::lesson::answer::Exercise, lang: Lang) -> String {
+    use pipeline::shader::{BUILTIN_FRAGMENT, BUILTIN_VERTEX};
+    let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
+    let mut h = format!(
+        "<div class=\"question\"><b class=\"ui\">{}</b> {}",
+        t("Exercise:", "练习："),
+        typeset(&notation::parse_paragraph(e.task.get(lang)))
+    );
+    let p = &e.starter.programs;
+    for (source, builtin) in [
+        (&p.vertex.source, BUILTIN_VERTEX),
+        (&p.fragment.source, BUILTIN_FRAGMENT),
+    ] {
+        if source.as_str() != builtin {
+            let _ = write!(h, "<pre class=\"code\">{}</pre>", esc(source.trim()));
+        }
+    }
+    h.push_str("</div>\n");
+    h
 }
 
 /// The boxes a question's expected value is written into on paper, one per entry (a matrix

@@ -46,6 +46,22 @@ pub struct Expect {
     pub tolerance: f64,
 }
 
+/// An exercise step: the student completes a shader (`starter`), which draws the step's
+/// picture; pipelens' own stage draws the reference, and every pixel is compared.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Exercise {
+    /// What to do, in both languages.
+    pub task: crate::vocabulary::Text,
+    /// The code the student starts from (it compiles, and does not pass yet).
+    pub starter: pipeline::scene::ObjectShader,
+    /// How many colour steps (of 255) a pixel may differ from the reference and still match.
+    pub tolerance: f32,
+}
+
+/// An exercise's tolerance when the lesson gives none: one 8-bit step, as far as the student's
+/// shaders and pipelens' own shading may differ by rounding alone.
+pub const EXERCISE_TOLERANCE: f32 = 1.0;
+
 /// The tolerance when a lesson gives none: half a unit in the third decimal, so that an answer
 /// rounded to three decimals, as the app prints numbers, is right.
 pub const DEFAULT_TOLERANCE: f64 = 0.0005 + 1e-9;

@@ -7,7 +7,7 @@ use std::path::Path;
 use super::{Diagnostics, script::Lesson};
 
 /// Each built-in lesson: its file name in `lessons/` and its text.
-pub const LESSONS: [(&str, &str); 25] = [
+pub const LESSONS: [(&str, &str); 26] = [
     ("00-tour.toml", include_str!("../../lessons/00-tour.toml")),
     (
         "01-transforms.toml",
@@ -105,6 +105,10 @@ pub const LESSONS: [(&str, &str); 25] = [
         "24-shader-programs.toml",
         include_str!("../../lessons/24-shader-programs.toml"),
     ),
+    (
+        "25-lab-model-projection.toml",
+        include_str!("../../lessons/25-lab-model-projection.toml"),
+    ),
 ];
 
 /// The built-in lesson `file` (a name in [`LESSONS`]), parsed.
@@ -126,15 +130,20 @@ pub fn lesson(file: &str) -> Result<Lesson, Diagnostics> {
     }
 }
 
-/// How many of a lesson's steps ask for a value to type (`expect`), read from its text without
-/// building the lesson (for the Lessons menu's progress).
+/// How many of a lesson's steps ask for a value to type (`expect`) or are exercises, read from
+/// its text without building the lesson (for the Lessons menu's progress).
 #[must_use]
 pub fn typed_questions(text: &str) -> usize {
     text.parse::<toml::Table>()
         .ok()
         .and_then(|t| {
             let steps = t.get("steps")?.as_array()?;
-            Some(steps.iter().filter(|s| s.get("expect").is_some()).count())
+            Some(
+                steps
+                    .iter()
+                    .filter(|s| s.get("expect").is_some() || s.get("exercise").is_some())
+                    .count(),
+            )
         })
         .unwrap_or(0)
 }

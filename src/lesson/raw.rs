@@ -383,6 +383,18 @@ pub struct RawStep {
     /// How far a typed entry may be from `expect` and still be right.
     pub tolerance: Option<Spanned<f64>>,
     pub answer: Option<Spanned<RawText>>,
+    /// The student writes code: `{ task, starter = { vertex, fragment }, tolerance }`.
+    pub exercise: Option<Spanned<RawExercise>>,
+}
+
+/// `exercise = { task = { en, zh }, starter = { fragment = "…" }, tolerance = 1 }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawExercise {
+    pub task: Spanned<RawText>,
+    pub starter: Spanned<RawShader>,
+    /// Colour steps (of 255) a pixel may differ from pipelens' own and still match.
+    pub tolerance: Option<Spanned<f64>>,
 }
 
 /// `expect = …` as written.

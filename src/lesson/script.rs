@@ -3,7 +3,7 @@
 //! highlighted pixel or vertex, and a question for self-study.
 
 mod animation;
-mod expect;
+mod student;
 
 use std::path::Path;
 
@@ -79,6 +79,8 @@ pub struct Step {
     pub question: Option<Text>,
     /// The value the question asks for, which the student types (`expect = …`).
     pub expect: Option<super::answer::Expect>,
+    /// Code the student writes, compared with pipelens' own stage (`exercise = { … }`).
+    pub exercise: Option<super::answer::Exercise>,
     /// Its answer.
     pub answer: Option<Text>,
 }
@@ -163,6 +165,10 @@ impl Lesson {
             if let Some(shader) = &step.shader {
                 spec.scene.set_shaders(shader);
             }
+        }
+        // An exercise's starter draws its own step only.
+        if let Some(e) = self.steps.get(k).and_then(|s| s.exercise.as_ref()) {
+            spec.scene.set_shaders(&e.starter);
         }
         spec
     }
@@ -305,6 +311,7 @@ impl Checker<'_> {
         let question = r.question.as_ref().map(|q| self.text_of("question", q));
         let answer = r.answer.as_ref().map(|a| self.text_of("answer", a));
         let expect = self.expect(r);
+        let exercise = r.exercise.as_ref().and_then(|e| self.exercise(e, base));
         let (stage, layout, compare, buffer, overlays) = self.views(s);
         let mut set = Vec::new();
         // In the order written (a `projection.kind` before the keys of that kind).
@@ -362,6 +369,7 @@ impl Checker<'_> {
             question,
             expect,
             answer,
+            exercise,
         }
     }
 

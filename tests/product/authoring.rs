@@ -107,7 +107,18 @@ fn new_lesson_writes_a_template_with_every_step_key_that_check_accepts() {
     assert!(keys.len() >= 16, "{keys:?}");
     let written: toml::Table =
         toml::from_str(&std::fs::read_to_string(&path).expect("read")).expect("TOML");
-    let steps = written["steps"].as_array().expect("steps");
+    // The lab template (`--lab`) shows the exercise key; the lesson template every other.
+    let o = pipelens(dir.path(), &["new-lesson", "--lab", "lessons/21-lab.toml"]);
+    assert!(o.status.success(), "{}", text(&o));
+    assert!(text(&o).contains("a lab of 1 step."), "{}", text(&o));
+    let o = pipelens(dir.path(), &["check", "lessons/21-lab.toml"]);
+    assert!(o.status.success(), "{}", text(&o));
+    let lab: toml::Table = toml::from_str(
+        &std::fs::read_to_string(dir.path().join("lessons/21-lab.toml")).expect("read"),
+    )
+    .expect("TOML");
+    let mut steps = written["steps"].as_array().expect("steps").clone();
+    steps.extend(lab["steps"].as_array().expect("steps").iter().cloned());
     for k in keys {
         assert!(
             steps

@@ -5,10 +5,8 @@
 use egui::{Align2, Color32, Frame, RichText, Ui, Vec2};
 
 use super::typeset::{self, Style};
-use crate::app::progress::Progress;
-use crate::app::session::{Command, LessonPlayer};
-use crate::lesson::{SceneSpec, param};
-use crate::vocabulary::Lang;
+use crate::app::session::{Command, Session};
+use crate::lesson::param;
 
 /// What the card asked for.
 pub struct CardOutput {
@@ -16,19 +14,16 @@ pub struct CardOutput {
     pub commands: Vec<Command>,
     /// The card's fold button was pressed.
     pub fold: bool,
+    /// A pixel to inspect was chosen (an exercise's first wrong pixel): open the Inspector.
+    pub inspect: bool,
 }
 
 /// Draws the narration card at the bottom-left of `over` (the picture's area).
-pub fn card(
-    ctx: &egui::Context,
-    over: egui::Rect,
-    (player, progress): (&LessonPlayer, &Progress),
-    spec: &SceneSpec,
-    lang: Lang,
-) -> CardOutput {
+pub fn card(ctx: &egui::Context, over: egui::Rect, session: &Session) -> CardOutput {
     let mut out = CardOutput {
         commands: Vec::new(),
         fold: false,
+        inspect: false,
     };
     let width = (over.width() * 0.42).clamp(320.0_f32.min(over.width() - 24.0), 760.0);
     egui::Area::new(egui::Id::unique("narration-card"))
@@ -51,7 +46,7 @@ pub fn card(
                     for font in ui.style_mut().text_styles.values_mut() {
                         font.size *= fit;
                     }
-                    let (room, needed) = contents(ui, (player, progress), spec, lang, &mut out);
+                    let (room, needed) = contents(ui, session, &mut out);
                     let next = fitted(fit, room, needed, normal / body);
                     if next != fit {
                         ctx.data_mut(|d| d.insert_temp(fit_id, next));
@@ -84,13 +79,11 @@ fn fitted(fit: f32, room: f32, needed: f32, least: f32) -> f32 {
 }
 
 /// The card's words; returns the height left for them below the title and the height they took.
-fn contents(
-    ui: &mut Ui,
-    (player, progress): (&LessonPlayer, &Progress),
-    spec: &SceneSpec,
-    lang: Lang,
-    out: &mut CardOutput,
-) -> (f32, f32) {
+fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) {
+    let Some(player) = &session.lesson else {
+        return (0.0, 0.0);
+    };
+    let (spec, lang) = (&session.spec, session.lang);
     let step = player.current();
     let style = Style {
         color: Color32::from_gray(245),
@@ -139,6 +132,10 @@ fn contents(
                 );
                 typeset::paragraph(ui, &line, &style.sized(style.size * 0.85));
             }
+            if let Some(e) = &step.exercise {
+                out.inspect |=
+                    super::exercise::card_part(ui, (e, session), &style, &mut out.commands);
+            }
             if let Some(q) = &step.question {
                 ui.add_space(6.0);
                 ui.label(
@@ -147,7 +144,13 @@ fn contents(
                         .color(Color32::WHITE),
                 );
                 narration(ui, q.get(lang), &style);
-                super::answer::field(ui, (player, progress), &style, lang, &mut out.commands);
+                super::answer::field(
+                    ui,
+                    (player, &session.progress),
+                    &style,
+                    lang,
+                    &mut out.commands,
+                );
                 if let Some(a) = &step.answer {
                     let shown = player.show_answer;
                     let label = if shown {

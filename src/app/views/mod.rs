@@ -3,6 +3,7 @@
 
 pub mod answer;
 pub mod compare;
+pub mod exercise;
 pub mod geometry;
 pub mod inspector;
 pub mod lesson;

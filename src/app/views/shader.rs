@@ -175,7 +175,7 @@ pub fn ui(
         .filter(|e| e.stage == editor.stage)
         .map(|e| (e.error.line, e.error.message.as_str()))
         .collect();
-    let edited = code(ui, source, &errors);
+    let edited = code(ui, (source, editor.stage), &errors);
     apply |= ui.input(|i| i.modifiers.ctrl && i.key_pressed(egui::Key::Enter));
     if edited || apply {
         editor.apply(session)
@@ -257,7 +257,7 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
 
 /// The source with line numbers (a line with a message marked), highlighted as C-like code,
 /// each message written in red at the end of its line. Returns whether it was edited.
-fn code(ui: &mut Ui, source: &mut String, errors: &[(usize, &str)]) -> bool {
+fn code(ui: &mut Ui, (source, stage): (&mut String, Stage), errors: &[(usize, &str)]) -> bool {
     let mut changed = false;
     egui::ScrollArea::both()
         .id_salt("shader source")
@@ -294,7 +294,10 @@ fn code(ui: &mut Ui, source: &mut String, errors: &[(usize, &str)]) -> bool {
                     job.wrap.max_width = f32::INFINITY;
                     ui.fonts_mut(|f| f.layout_job(job))
                 };
+                // A fixed id: the messages above come and go as one types, and an id counted
+                // from the widgets before it would change with them, taking the focus away.
                 let out = egui::TextEdit::multiline(source)
+                    .id_salt(("shader source", stage))
                     .code_editor()
                     .desired_rows(lines.max(24))
                     .desired_width(640.0)

@@ -8,11 +8,13 @@
 //! everything about one pixel (its fragments, lighting vectors, a profile along a line) in
 //! [`inspect`].
 
+mod difference;
 mod explain;
 mod images;
 mod inspect;
 mod pixels;
 
+pub use difference::Difference;
 pub use explain::*;
 pub use inspect::*;
 pub use pixels::*;

@@ -71,7 +71,7 @@ pub struct UniformSpec {
 }
 
 /// Every uniform pipelens sets. A shader declares those it uses (`uniform mat4 model;`).
-pub const UNIFORMS: [UniformSpec; 19] = [
+pub const UNIFORMS: [UniformSpec; 24] = [
     UniformSpec {
         names: &["model", "M"],
         glsl: "mat4",
@@ -167,6 +167,31 @@ pub const UNIFORMS: [UniformSpec; 19] = [
         glsl: "float",
         meaning: "seconds into the step's animation",
     },
+    UniformSpec {
+        names: &["fovy", "eye_fov"],
+        glsl: "float",
+        meaning: "the view volume's vertical angle in degrees, 2·atan((t − b)/(2·near)) (Perspective's fovy)",
+    },
+    UniformSpec {
+        names: &["aspect", "aspect_ratio"],
+        glsl: "float",
+        meaning: "the view volume's width over height, (r − l)/(t − b)",
+    },
+    UniformSpec {
+        names: &["near", "zNear"],
+        glsl: "float",
+        meaning: "the distance to the near plane (positive, as OpenGL writes it)",
+    },
+    UniformSpec {
+        names: &["far", "zFar"],
+        glsl: "float",
+        meaning: "the distance to the far plane (positive)",
+    },
+    UniformSpec {
+        names: &["rotation", "rotation_angles"],
+        glsl: "vec3",
+        meaning: "the object's rotation angles in degrees about x, y, z: M = T·Rz·Ry·Rx·S",
+    },
 ];
 
 /// The uniform called `name`, if pipelens sets one.
@@ -225,6 +250,10 @@ pub struct Uniforms {
     pub time: f32,
     /// The viewport's size in pixels.
     pub resolution: Vec2,
+    /// The view volume as `Perspective` names it: `[fovy (degrees), aspect, near, far]`.
+    pub lens: [f32; 4],
+    /// The object's rotation angles in degrees about x, y and z.
+    pub rotation: Vec3,
 }
 
 impl Default for Uniforms {
@@ -241,6 +270,8 @@ impl Default for Uniforms {
             bump_strength: 0.0,
             time: 0.0,
             resolution: Vec2::ONE,
+            lens: [90.0, 1.0, 1.0, 10.0],
+            rotation: Vec3::ZERO,
         }
     }
 }
@@ -298,6 +329,11 @@ impl Uniforms {
             "use_tex" => vec![u32::from(self.has_texture)],
             "detail_kind" => vec![self.detail_kind as u32],
             "bump_strength" => floats(&[self.bump_strength]),
+            "fovy" => floats(&self.lens[0..1]),
+            "aspect" => floats(&self.lens[1..2]),
+            "near" => floats(&self.lens[2..3]),
+            "far" => floats(&self.lens[3..4]),
+            "rotation" => floats(&self.rotation.to_array()),
             _ => floats(&[self.time]),
         })
     }

@@ -98,7 +98,18 @@ fn uniforms(
         },
         time,
         resolution: glam::Vec2::new(settings.width as f32, settings.height as f32),
+        lens: lens(&scene.projection, settings),
+        rotation: o.rotate_deg,
     }
+}
+
+/// `[fovy (degrees), aspect, near, far]` of the view volume: `fovy = 2·atan((t − b)/(2·near))`,
+/// `aspect = (r − l)/(t − b)` (for an off-centre or parallel volume, those of its extent).
+fn lens(projection: &crate::camera::Projection, settings: &RenderSettings) -> [f32; 4] {
+    let [l, r, b, t, near, far] =
+        projection.bounds(settings.width as f32 / settings.height.max(1) as f32);
+    let fovy = 2.0 * ((t - b) / (2.0 * near)).atan().to_degrees();
+    [fovy, (r - l) / (t - b), near, far]
 }
 
 /// The textures a program's `sampler2D`s read and how each is sampled: the object's texture

@@ -1,8 +1,12 @@
-//! A step's `expect = …` and `tolerance`: the value its question asks the student to type,
-//! checked when the lesson is read.
+//! What a step asks of the student, checked when the lesson is read: `expect = …` and
+//! `tolerance`, the value its question asks to type; `exercise = { … }`, code to write.
 
-use super::super::answer::{DEFAULT_TOLERANCE, Expect, Shape};
-use super::super::raw::{RawExpect, RawStep};
+use std::path::Path;
+
+use toml::Spanned;
+
+use super::super::answer::{DEFAULT_TOLERANCE, EXERCISE_TOLERANCE, Exercise, Expect, Shape};
+use super::super::raw::{RawExercise, RawExpect, RawStep};
 use super::super::validate::Checker;
 
 impl Checker<'_> {
@@ -63,6 +67,33 @@ impl Checker<'_> {
         Some(Expect {
             shape,
             values,
+            tolerance,
+        })
+    }
+
+    /// A step's `exercise`: the task in both languages, a starter that compiles (its messages
+    /// point into the lesson or the shader's file), a tolerance of 0 to 255 colour steps.
+    pub(super) fn exercise(&mut self, e: &Spanned<RawExercise>, base: &Path) -> Option<Exercise> {
+        let r = e.get_ref();
+        let task = self.text_of("task", &r.task);
+        let starter = super::super::validate::shaders::shader(self, &r.starter, base)?;
+        let tolerance = match &r.tolerance {
+            Some(t) if !(0.0..=255.0).contains(t.get_ref()) => {
+                self.error(
+                    t.span(),
+                    format!(
+                        "an exercise's `tolerance` is in colour steps, 0 to 255; got {}",
+                        t.get_ref()
+                    ),
+                );
+                EXERCISE_TOLERANCE
+            }
+            Some(t) => *t.get_ref() as f32,
+            None => EXERCISE_TOLERANCE,
+        };
+        Some(Exercise {
+            task,
+            starter,
             tolerance,
         })
     }

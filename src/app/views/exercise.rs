@@ -1,0 +1,262 @@
+//! An exercise step's pictures beside the student's: pipelens' own frame (the reference) above,
+//! the difference below (matching pixels dim, differing ones red, coverage differences yellow),
+//! with the count of matching pixels; a click on either inspects that pixel in the student's
+//! frame. And the card's part: the task, the verdict, and the first wrong pixel to inspect.
+
+use std::sync::Arc;
+
+use egui::{Color32, Pos2, Rect, RichText, Sense, TextureOptions, Ui, Vec2};
+use pipeline::buffers::BufferKind;
+use pipeline::capture::{Difference, FrameCapture};
+
+use super::typeset::{self, Style};
+use super::{BufferTexture, fit_rect, label_with_background, picture_font};
+use crate::app::session::{Command, Session};
+use crate::lesson::answer::Exercise;
+use crate::vocabulary::Lang;
+
+/// Green for passed, amber for not yet.
+const PASSED: Color32 = Color32::from_rgb(120, 220, 120);
+const NOT_YET: Color32 = Color32::from_rgb(255, 170, 90);
+
+/// The reference and difference pictures, cached per pair of frames.
+#[derive(Default)]
+pub struct ExerciseView {
+    reference: BufferTexture,
+    difference: Option<((usize, usize), egui::TextureHandle)>,
+    /// Where the pictures were drawn this frame (for the share of the window they take).
+    pub picture: Vec<Rect>,
+}
+
+/// A frame's identity for the caches: its address (a new render is a new frame).
+fn key(c: &Arc<FrameCapture>) -> usize {
+    Arc::as_ptr(c) as usize
+}
+
+impl ExerciseView {
+    /// Draws the reference above and the difference below in `rect`; a click inspects a pixel.
+    pub fn ui(
+        &mut self,
+        ui: &mut Ui,
+        session: &Session,
+        capture: &Arc<FrameCapture>,
+        rect: Rect,
+    ) -> Vec<Command> {
+        let lang = session.lang;
+        let mut cmds = Vec::new();
+        self.picture.clear();
+        let Some(reference) = &session.exercise.reference else {
+            ui.put(
+                rect,
+                egui::Label::new(lang.tr(
+                    "Drawing pipelens' own frame…",
+                    "正在绘制 pipelens 自带的画面…",
+                )),
+            );
+            return cmds;
+        };
+        let tolerance = session.current_exercise().map_or(1.0, |e| e.tolerance);
+        let aspect = capture.width() as f32 / capture.height() as f32;
+        let half = rect.height() / 2.0 - 4.0;
+        let top = fit_rect(
+            Rect::from_min_size(rect.min, Vec2::new(rect.width(), half)),
+            aspect,
+        );
+        let bottom = fit_rect(
+            Rect::from_min_size(
+                rect.min + Vec2::new(0.0, half + 8.0),
+                Vec2::new(rect.width(), half),
+            ),
+            aspect,
+        );
+        let reference_texture = self.reference.get(
+            ui.ctx(),
+            "exercise-reference",
+            (key(reference) as u64, BufferKind::Color, 1.0),
+            reference,
+            TextureOptions::NEAREST,
+        );
+        let pair = (key(capture), key(reference));
+        if self.difference.as_ref().is_none_or(|(k, _)| *k != pair) {
+            let img = capture.difference_image(reference, tolerance);
+            let image = egui::ColorImage::from_rgba_unmultiplied(
+                [img.width() as usize, img.height() as usize],
+                img.as_raw(),
+            );
+            let t = ui
+                .ctx()
+                .load_texture("exercise-difference", image, TextureOptions::NEAREST);
+            self.difference = Some((pair, t));
+        }
+        let difference_texture = self.difference.as_ref().map(|(_, t)| t.clone());
+        let captions = [
+            lang.tr("pipelens' own (the reference)", "pipelens 自带（参考）"),
+            lang.tr(
+                "difference (red: differs, yellow: coverage differs)",
+                "差异（红：颜色不同，黄：覆盖不同）",
+            ),
+        ];
+        for (i, (at, texture)) in [(top, Some(reference_texture)), (bottom, difference_texture)]
+            .into_iter()
+            .enumerate()
+        {
+            let Some(texture) = texture else { continue };
+            self.picture.push(at);
+            cmds.extend(picture(
+                ui,
+                (at, i, &texture),
+                captions[i],
+                session,
+                capture,
+            ));
+        }
+        cmds
+    }
+}
+
+/// One picture beside the student's, captioned, the inspected pixel marked; a click on it
+/// inspects that pixel.
+fn picture(
+    ui: &mut Ui,
+    (at, i, texture): (Rect, usize, &egui::TextureHandle),
+    caption: &str,
+    session: &Session,
+    capture: &FrameCapture,
+) -> Option<Command> {
+    let response = ui.interact(at, ui.scope_id().with(("exercise", i)), Sense::click());
+    let painter = ui.painter_at(at);
+    painter.image(
+        texture.id(),
+        at,
+        Rect::from_min_max(Pos2::ZERO, Pos2::new(1.0, 1.0)),
+        Color32::WHITE,
+    );
+    label_with_background(
+        &painter,
+        at.left_top() + Vec2::splat(6.0),
+        egui::Align2::LEFT_TOP,
+        caption,
+        &picture_font(ui.ctx(), 14.0),
+        Color32::WHITE,
+    );
+    let (w, h) = (capture.width(), capture.height());
+    let s = at.width() / w as f32;
+    if let Some((x, y)) = session.selection.pixel {
+        let p = at.min + Vec2::new(x as f32 * s, (h - 1 - y.min(h - 1)) as f32 * s);
+        painter.rect_stroke(
+            Rect::from_min_size(p, Vec2::splat(s.max(3.0))).expand(2.0),
+            0.0,
+            egui::Stroke::new(2.0, Color32::from_rgb(0, 200, 255)),
+            egui::StrokeKind::Outside,
+        );
+    }
+    let p = response
+        .clicked()
+        .then(|| response.interact_pointer_pos())??;
+    let (x, row) = ((p.x - at.left()) / s, (p.y - at.top()) / s);
+    (x >= 0.0 && row >= 0.0 && (x as u32) < w && (row as u32) < h)
+        .then(|| Command::SelectPixel(Some((x as u32, h - 1 - row as u32))))
+}
+
+/// The verdict in words: passed, or how many pixels differ and where the first is.
+#[must_use]
+pub fn verdict(d: &Difference, lang: Lang) -> String {
+    let tolerance = crate::vocabulary::short(d.tolerance, 1);
+    if d.passed() {
+        return match lang {
+            Lang::En => format!(
+                "Passed: all {} pixels match pipelens' own (each channel within {tolerance}/255).",
+                d.total
+            ),
+            Lang::Zh => format!(
+                "通过：全部 {} 个像素与 pipelens 自带的一致（每个通道相差不超过 {tolerance}/255）。",
+                d.total
+            ),
+        };
+    }
+    let differ = d.total - d.matching;
+    let largest = crate::vocabulary::short(d.largest, 0);
+    let first = d
+        .first
+        .map(|(x, y)| format!("({x}, {y})"))
+        .unwrap_or_default();
+    match lang {
+        Lang::En => format!(
+            "Not yet: {} of {} pixels match; {differ} differ (by up to {largest}/255{}). The first, reading from the top, is {first}.",
+            d.matching,
+            d.total,
+            if d.coverage_differs > 0 {
+                format!("; {} are covered differently", d.coverage_differs)
+            } else {
+                String::new()
+            }
+        ),
+        Lang::Zh => format!(
+            "还没有通过：{} 个像素中 {} 个一致，{differ} 个不同（最多相差 {largest}/255{}）。从上往下读，第一个是 {first}。",
+            d.total,
+            d.matching,
+            if d.coverage_differs > 0 {
+                format!("；{} 个覆盖不同", d.coverage_differs)
+            } else {
+                String::new()
+            }
+        ),
+    }
+}
+
+/// The card's part of an exercise step: the task, where to write, the verdict and the first
+/// wrong pixel to inspect. Returns whether the Inspector should open (that pixel was chosen).
+pub fn card_part(
+    ui: &mut Ui,
+    (exercise, session): (&Exercise, &Session),
+    style: &Style,
+    commands: &mut Vec<Command>,
+) -> bool {
+    let lang = session.lang;
+    ui.add_space(6.0);
+    ui.label(
+        RichText::new(lang.tr("Exercise", "练习"))
+            .strong()
+            .color(Color32::WHITE),
+    );
+    typeset::paragraph(ui, exercise.task.get(lang), style);
+    ui.label(
+        RichText::new(lang.tr(
+            "Write your code in the Shader panel (key S): it runs as you type, and the frame is compared with pipelens' own, pixel by pixel.",
+            "在着色器面板（S 键）中编写代码：边写边运行，画面与 pipelens 自带的逐像素比较。",
+        ))
+        .size(style.size * 0.85),
+    );
+    let passed_before = session
+        .lesson
+        .as_ref()
+        .is_some_and(|p| session.progress.passed(&p.lesson, p.step));
+    match &session.exercise.difference {
+        Some(d) => {
+            let color = if d.passed() { PASSED } else { NOT_YET };
+            ui.label(
+                RichText::new(verdict(d, lang))
+                    .size(style.size * 0.9)
+                    .color(color),
+            );
+            if let Some(first) = d.first
+                && session.selection.pixel != Some(first)
+                && ui
+                    .button(lang.tr("Inspect the first wrong pixel", "检查第一个错误的像素"))
+                    .on_hover_text(lang.tr(
+                        "Selects it: the Inspector shows your shader's run there beside pipelens' own derivation.",
+                        "选中它：检查器并列显示你的着色器在该处的运行过程和 pipelens 自带的推导。",
+                    ))
+                    .clicked()
+            {
+                commands.push(Command::SelectPixel(Some(first)));
+                return true;
+            }
+        }
+        None if passed_before => {
+            ui.label(RichText::new(lang.tr("Passed before.", "之前已通过。")).color(PASSED));
+        }
+        None => {}
+    }
+    false
+}

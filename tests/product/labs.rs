@@ -1,0 +1,285 @@
+//! The labs: every exercise step's starter compiles and fails its check (its frame differs
+//! from pipelens' own somewhere), and a reference solution kept here — not in the lesson —
+//! passes it (every pixel matches). A lab without a solution here fails the test.
+
+use std::sync::Arc;
+
+use pipelens::lesson::Document;
+use pipeline::scene::ObjectShader;
+
+use crate::support::lesson_files;
+
+/// Each lab's solution: the lesson, the step's title, and the starter's `TODO` line replaced.
+const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
+    (
+        "25-lab-model-projection",
+        "Lab: the rotation about z",
+        "    // TODO: the rotation about z (mat4 takes its numbers column by column).
+    return mat4(1.0);",
+        "    float t = radians(deg);
+    float c = cos(t);
+    float s = sin(t);
+    return mat4(c, s, 0.0, 0.0, -s, c, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0);",
+    ),
+    (
+        "25-lab-model-projection",
+        "Lab: the perspective projection",
+        "    // TODO: the perspective matrix (mat4 takes its numbers column by column).
+    return mat4(1.0);",
+        "    float f = 1.0 / tan(radians(fovy) / 2.0);
+    return mat4(f / aspect, 0.0, 0.0, 0.0,
+                0.0, f, 0.0, 0.0,
+                0.0, 0.0, (zFar + zNear) / (zNear - zFar), -1.0,
+                0.0, 0.0, 2.0 * zFar * zNear / (zNear - zFar), 0.0);",
+    ),
+    (
+        "10-blinn-phong",
+        "Lab: the specular term in a fragment shader",
+        "        // TODO: the specular term, where n·l > 0.",
+        "        vec3 h = normalize(l + v);
+        if (n_dot_l > 0.0) {
+            sum += f * ks * light.intensity * pow(max(dot(n, h), 0.0), shininess);
+        }",
+    ),
+];
+
+/// The frame of `spec` against pipelens' own (the same scene without shaders).
+fn compared(spec: &pipelens::lesson::SceneSpec, tolerance: f32) -> pipeline::capture::Difference {
+    let mine = pipeline::render(&spec.scene, &spec.settings).expect("the lab renders");
+    let mut own = spec.scene.clone();
+    for o in &mut own.objects {
+        o.shader = None;
+    }
+    let reference = pipeline::render(&own, &spec.settings).expect("the reference renders");
+    mine.difference(&reference, tolerance).expect("same size")
+}
+
+#[test]
+fn every_lab_starter_fails_and_its_solution_passes() {
+    let mut labs = 0;
+    for path in lesson_files() {
+        let Ok(Document::Lesson(lesson)) = pipelens::lesson::load_file(&path) else {
+            panic!("{} loads", path.display());
+        };
+        for (k, step) in lesson.steps.iter().enumerate() {
+            let Some(exercise) = &step.exercise else {
+                continue;
+            };
+            let name = format!("{} step {} ({})", lesson.id, k + 1, step.title.en);
+            let spec = lesson.spec_at(k);
+            let starter = compared(&spec, exercise.tolerance);
+            assert!(!starter.passed(), "{name}: the starter passes already");
+            let (_, _, todo, solution) = SOLUTIONS
+                .iter()
+                .find(|(id, title, ..)| *id == lesson.id && *title == step.title.en)
+                .unwrap_or_else(|| {
+                    panic!("{name}: no reference solution in tests/product/labs.rs")
+                });
+            let programs = &exercise.starter.programs;
+            assert!(
+                programs.fragment.source.contains(todo) || programs.vertex.source.contains(todo),
+                "{name}: the starter has no line {todo:?}"
+            );
+            let solved = pipeline::shader::link(
+                Some(&programs.vertex.source.replace(todo, solution)),
+                Some(&programs.fragment.source.replace(todo, solution)),
+            )
+            .unwrap_or_else(|e| panic!("{name}: the solution does not compile: {e:?}"));
+            let mut spec = spec.clone();
+            spec.scene.set_shaders(&ObjectShader {
+                programs: Arc::new(solved),
+                time: 0.0,
+            });
+            let solution = compared(&spec, exercise.tolerance);
+            assert!(
+                solution.passed(),
+                "{name}: the solution matches {} of {} pixels (largest difference {}/255, first at {:?})",
+                solution.matching,
+                solution.total,
+                solution.largest,
+                solution.first
+            );
+            eprintln!(
+                "{name}: starter {} of {} pixels, solution all",
+                starter.matching, starter.total
+            );
+            labs += 1;
+        }
+    }
+    assert_eq!(labs, SOLUTIONS.len(), "every solution belongs to a lab");
+}
+
+/// The lab in the app: the starter's frame is "not yet" with its first wrong pixel; the code
+/// the student runs is compared as it changes, passes, and is kept with the pass.
+#[test]
+fn a_lab_in_the_app_says_not_yet_then_passed_and_keeps_the_code() {
+    use egui_kittest::kittest::Queryable;
+    use pipelens::app::session::Command;
+    let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    let k = h
+        .state()
+        .session
+        .lesson
+        .as_ref()
+        .map_or(0, |p| p.lesson.steps.len() - 1);
+    h.state_mut().session.apply(Command::GoToStep(k));
+    h.run_steps(6);
+    assert!(
+        h.query_by_label_contains("Not yet: 162116 of 172800 pixels match")
+            .is_some()
+    );
+    h.get_by_label("Inspect the first wrong pixel").click();
+    h.run_steps(4);
+    assert_eq!(h.state().session.selection.pixel, Some((269, 205)));
+    assert!(
+        h.state().panels.inspector,
+        "the Inspector opens on that pixel"
+    );
+    // The student's code, run as the shader panel runs it.
+    let (_, _, todo, solution) = SOLUTIONS
+        .iter()
+        .find(|(id, ..)| *id == "10-blinn-phong")
+        .expect("lesson 10's lab has a solution");
+    let mut spec = h.state().session.spec.clone();
+    let programs = h
+        .state()
+        .session
+        .current_exercise()
+        .expect("a lab")
+        .starter
+        .programs
+        .clone();
+    let solved = pipeline::shader::link(
+        Some(&programs.vertex.source),
+        Some(&programs.fragment.source.replace(todo, solution)),
+    )
+    .expect("the solution compiles");
+    spec.scene.set_shaders(&ObjectShader {
+        programs: Arc::new(solved),
+        time: 0.0,
+    });
+    h.state_mut()
+        .session
+        .apply(Command::SetSpec(Box::new(spec)));
+    h.run_steps(6);
+    assert!(
+        h.query_by_label_contains("Passed: all 172800 pixels match")
+            .is_some()
+    );
+    let lesson = h
+        .state()
+        .session
+        .lesson
+        .as_ref()
+        .expect("a lesson")
+        .lesson
+        .clone();
+    let progress = &h.state().session.progress;
+    assert!(progress.passed(&lesson, k));
+    let (_, fragment) = progress.code(&lesson, k).expect("the code is kept");
+    assert!(fragment.contains("pow(max(dot(n, h), 0.0), shininess)"));
+}
+
+/// Typing into the shader panel keeps the focus while its messages come and go above the
+/// source (a half-typed line does not compile): the next key still goes to the source.
+#[test]
+fn the_shader_source_keeps_the_focus_while_messages_appear() {
+    use egui_kittest::kittest::Queryable;
+    let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    h.state_mut().panels.shader = true;
+    h.run_steps(4);
+    let source = || egui::accesskit::Role::MultilineTextInput;
+    h.get_by_role(source()).focus();
+    h.run_steps(2);
+    h.get_by_role(source()).type_text("x");
+    h.run_steps(4);
+    assert!(
+        h.query_by_label_contains("Fragment shader (!)").is_some(),
+        "the half-typed source has a message"
+    );
+    assert!(
+        h.get_by_role(source()).is_focused(),
+        "the source lost the focus"
+    );
+    h.get_by_role(source()).type_text("y");
+    h.run_steps(2);
+    assert!(
+        h.get_by_role(source())
+            .value()
+            .is_some_and(|v| v.contains("xy"))
+    );
+}
+
+/// Correct matrices written another way (cos/sin for the cotangent, the frustum's bounds,
+/// an 8-digit π) pass too: the check does not ask for pipelens' own order of operations.
+#[test]
+fn other_correct_solutions_pass_too() {
+    let path = crate::support::repo().join("lessons/25-lab-model-projection.toml");
+    let Ok(Document::Lesson(lesson)) = pipelens::lesson::load_file(&path) else {
+        panic!("the lab lesson loads");
+    };
+    let todo = SOLUTIONS[1].2;
+    for (k, variant) in [(2usize, "    float t = radians(fovy) * 0.5;
+    float f = cos(t) / sin(t);
+    float nf = zNear - zFar;
+    return mat4(vec4(f / aspect, 0, 0, 0), vec4(0, f, 0, 0), vec4(0, 0, (zNear + zFar) / nf, -1), vec4(0, 0, 2.0 * zNear * zFar / nf, 0));"),
+    (2, "    float top = zNear * tan(radians(fovy / 2.0));
+    float right = top * aspect;
+    return mat4(zNear / right, 0, 0, 0,  0, zNear / top, 0, 0,  0, 0, -(zFar + zNear) / (zFar - zNear), -1,  0, 0, -2.0 * zFar * zNear / (zFar - zNear), 0);"),
+    (1, "    float a = deg * 3.14159265 / 180.0;
+    return mat4(cos(a), sin(a), 0, 0, -sin(a), cos(a), 0, 0, 0, 0, 1, 0, 0, 0, 0, 1);")] {
+        let e = lesson.steps[k].exercise.as_ref().expect("a lab");
+        let todo = if k == 1 { SOLUTIONS[0].2 } else { todo };
+        let p = &e.starter.programs;
+        let solved = pipeline::shader::link(Some(&p.vertex.source.replace(todo, variant)), Some(&p.fragment.source)).expect("compiles");
+        let mut spec = lesson.spec_at(k);
+        spec.scene.set_shaders(&ObjectShader { programs: Arc::new(solved), time: 0.0 });
+        let d = compared(&spec, e.tolerance);
+        assert!(
+            d.passed(),
+            "step {}: {} of {} pixels (coverage differs at {}, largest {}/255)",
+            k + 1,
+            d.matching,
+            d.total,
+            d.coverage_differs,
+            d.largest
+        );
+    }
+}
+
+/// The lab `pipelens new-lesson --lab` writes is a lab too: its starter fails, and the diffuse
+/// term written where it says TODO passes.
+#[test]
+fn the_lab_template_fails_as_written_and_passes_when_done() {
+    let text =
+        std::fs::read_to_string(crate::support::repo().join("assets/templates/new-lab.toml"))
+            .expect("the template");
+    let text = text.replace("{id}", "lab").replace("{file}", "lab.toml");
+    let lesson =
+        pipelens::lesson::script::parse_lesson(&text, "lab.toml", std::path::Path::new("."))
+            .expect("the template is a valid lesson");
+    let e = lesson.steps[0].exercise.as_ref().expect("an exercise");
+    let spec = lesson.spec_at(0);
+    assert!(
+        !compared(&spec, e.tolerance).passed(),
+        "the starter passes already"
+    );
+    let p = &e.starter.programs;
+    let solved = pipeline::shader::link(
+        Some(&p.vertex.source),
+        Some(&p.fragment.source.replace(
+            "    // TODO: the diffuse term k_d·c·I·max(0, n·l).",
+            "    sum += kd * c * light_color * max(dot(n, l), 0.0);",
+        )),
+    )
+    .expect("the solution compiles");
+    let mut spec = spec.clone();
+    spec.scene.set_shaders(&ObjectShader {
+        programs: Arc::new(solved),
+        time: 0.0,
+    });
+    let d = compared(&spec, e.tolerance);
+    assert!(d.passed(), "{} of {} pixels", d.matching, d.total);
+}
