@@ -126,7 +126,7 @@ if (await waitForTitle(zh, /^pipelens — 00-tour — step 1\/10$/, "the Chinese
   }
 }
 const zh2 = await open("?lang=zh&lesson=10-blinn-phong&step=5", "zh-10");
-if (await waitForTitle(zh2, /^pipelens — 10-blinn-phong — step 5\/7$/, "a Chinese lesson opens on a step")) {
+if (await waitForTitle(zh2, /^pipelens — 10-blinn-phong — step 5\/8$/, "a Chinese lesson opens on a step")) {
   await zh2.waitForTimeout(3000);
   await zh2.screenshot({ path: `${out}/blinn-phong-zh-step5.png` });
 }

@@ -196,6 +196,7 @@ fn references() -> Vec<(&'static str, &'static str, Vec<f64>)> {
     .transform_point3(Vec3::new(0.0, 1.2, 0.0));
     let curve = [Vec2::ZERO, Vec2::Y, Vec2::ONE, Vec2::X];
     let b = pipeline::bezier::point(&curve, 0.5);
+    let lens = projection::perspective(45.0, 1.6, 0.1, 50.0).matrix;
     vec![
         (
             "01-transforms",
@@ -242,6 +243,18 @@ fn references() -> Vec<(&'static str, &'static str, Vec<f64>)> {
             "18-bezier",
             "For the control points (0, 0), (0, 1), (1, 1), (1, 0)",
             v(&b.to_array()),
+        ),
+        (
+            "25-lab-model-projection",
+            "Where does Rz(30°) send",
+            v(&transform::rotate_z(rad(30.0))
+                .transform_point3(Vec3::ONE)
+                .to_array()),
+        ),
+        (
+            "25-lab-model-projection",
+            "With fovy = 45° and aspect = 1.6",
+            v(&[lens.y_axis.y, lens.x_axis.x]),
         ),
         (
             "23-beyond-mipmaps",

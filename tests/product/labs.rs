@@ -12,6 +12,32 @@ use crate::support::lesson_files;
 /// Each lab's solution: the lesson, the step's title, and the starter's `TODO` line replaced.
 const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
     (
+        "13-texture-mapping",
+        "Lab: bilinear filtering from texelFetch",
+        "    // TODO: the four texels around (x, y) and their weights. (This reads the nearest one.)
+    return texel(ivec2(floor(uv * vec2(size))));",
+        "    vec2 xy = uv * vec2(size) - 0.5;
+    vec2 f = floor(xy);
+    vec2 st = xy - f;
+    ivec2 ij = ivec2(f);
+    vec3 bottom = mix(texel(ij), texel(ij + ivec2(1, 0)), st.x);
+    vec3 top = mix(texel(ij + ivec2(0, 1)), texel(ij + ivec2(1, 1)), st.x);
+    return mix(bottom, top, st.y);",
+    ),
+    (
+        "03-frames-lookat",
+        "Lab: LookAt from n, u, v",
+        "    // TODO: n, u, v, then the matrix (mat4 takes its numbers column by column).
+    return mat4(1.0);",
+        "    vec3 n = normalize(eye - at);
+    vec3 u = normalize(cross(up, n));
+    vec3 v = cross(n, u);
+    return mat4(u.x, v.x, n.x, 0.0,
+                u.y, v.y, n.y, 0.0,
+                u.z, v.z, n.z, 0.0,
+                -dot(u, eye), -dot(v, eye), -dot(n, eye), 1.0);",
+    ),
+    (
         "25-lab-model-projection",
         "Lab: the rotation about z",
         "    // TODO: the rotation about z (mat4 takes its numbers column by column).
@@ -220,18 +246,24 @@ fn other_correct_solutions_pass_too() {
     let Ok(Document::Lesson(lesson)) = pipelens::lesson::load_file(&path) else {
         panic!("the lab lesson loads");
     };
-    let todo = SOLUTIONS[1].2;
-    for (k, variant) in [(2usize, "    float t = radians(fovy) * 0.5;
+    let todo_of = |title: &str| {
+        SOLUTIONS
+            .iter()
+            .find(|(_, t, ..)| *t == title)
+            .expect("a solution")
+            .2
+    };
+    for (k, variant) in [(4usize, "    float t = radians(fovy) * 0.5;
     float f = cos(t) / sin(t);
     float nf = zNear - zFar;
     return mat4(vec4(f / aspect, 0, 0, 0), vec4(0, f, 0, 0), vec4(0, 0, (zNear + zFar) / nf, -1), vec4(0, 0, 2.0 * zNear * zFar / nf, 0));"),
-    (2, "    float top = zNear * tan(radians(fovy / 2.0));
+    (4, "    float top = zNear * tan(radians(fovy / 2.0));
     float right = top * aspect;
     return mat4(zNear / right, 0, 0, 0,  0, zNear / top, 0, 0,  0, 0, -(zFar + zNear) / (zFar - zNear), -1,  0, 0, -2.0 * zFar * zNear / (zFar - zNear), 0);"),
-    (1, "    float a = deg * 3.14159265 / 180.0;
+    (2, "    float a = deg * 3.14159265 / 180.0;
     return mat4(cos(a), sin(a), 0, 0, -sin(a), cos(a), 0, 0, 0, 0, 1, 0, 0, 0, 0, 1);")] {
         let e = lesson.steps[k].exercise.as_ref().expect("a lab");
-        let todo = if k == 1 { SOLUTIONS[0].2 } else { todo };
+        let todo = todo_of(&lesson.steps[k].title.en);
         let p = &e.starter.programs;
         let solved = pipeline::shader::link(Some(&p.vertex.source.replace(todo, variant)), Some(&p.fragment.source)).expect("compiles");
         let mut spec = lesson.spec_at(k);

@@ -53,7 +53,7 @@ fn the_lessons_menu_opens_a_built_in_lesson_on_its_first_step() {
     assert_eq!(step_of(&h), 0, "a lesson opens on its first step");
     assert_eq!(
         h.state().title(),
-        "pipelens — 13-texture-mapping — step 1/6"
+        "pipelens — 13-texture-mapping — step 1/7"
     );
     assert!(
         h.state().session.capture.is_some(),

@@ -71,7 +71,7 @@ pub struct UniformSpec {
 }
 
 /// Every uniform pipelens sets. A shader declares those it uses (`uniform mat4 model;`).
-pub const UNIFORMS: [UniformSpec; 24] = [
+pub const UNIFORMS: [UniformSpec; 26] = [
     UniformSpec {
         names: &["model", "M"],
         glsl: "mat4",
@@ -188,6 +188,16 @@ pub const UNIFORMS: [UniformSpec; 24] = [
         meaning: "the distance to the far plane (positive)",
     },
     UniformSpec {
+        names: &["at", "center"],
+        glsl: "vec3",
+        meaning: "the point the camera looks at (LookAt's at, world coordinates)",
+    },
+    UniformSpec {
+        names: &["up"],
+        glsl: "vec3",
+        meaning: "the camera's up vector (LookAt's up, world coordinates)",
+    },
+    UniformSpec {
         names: &["rotation", "rotation_angles"],
         glsl: "vec3",
         meaning: "the object's rotation angles in degrees about x, y, z: M = T·Rz·Ry·Rx·S",
@@ -236,6 +246,8 @@ pub struct Uniforms {
     pub projection: Mat4,
     /// The eye in world coordinates.
     pub eye: Vec3,
+    /// LookAt's `at` and `up`.
+    pub at_up: [Vec3; 2],
     /// The scene's lights.
     pub lights: Vec<Light>,
     /// The object's material.
@@ -263,6 +275,7 @@ impl Default for Uniforms {
             view: Mat4::IDENTITY,
             projection: Mat4::IDENTITY,
             eye: Vec3::ZERO,
+            at_up: [Vec3::NEG_Z, Vec3::Y],
             lights: Vec::new(),
             material: Material::default(),
             has_texture: false,
@@ -334,6 +347,8 @@ impl Uniforms {
             "near" => floats(&self.lens[2..3]),
             "far" => floats(&self.lens[3..4]),
             "rotation" => floats(&self.rotation.to_array()),
+            "at" => floats(&self.at_up[0].to_array()),
+            "up" => floats(&self.at_up[1].to_array()),
             _ => floats(&[self.time]),
         })
     }

@@ -83,6 +83,7 @@ fn uniforms(
         view: matrices.view.matrix,
         projection: matrices.projection.matrix,
         eye: scene.camera.eye,
+        at_up: [scene.camera.at, scene.camera.up],
         lights: scene.lights.clone(),
         material: o.material,
         has_texture: o.texture.is_some() && !o.mesh.uvs.is_empty(),
