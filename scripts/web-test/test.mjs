@@ -7,7 +7,9 @@
 //     Chinese lesson step is reached the same way;
 //  4. the tour's frame time in the browser is read from <html data-frame-ms> and printed;
 //  5. a lesson file dropped on the page opens;
-//  6. the shader lesson runs the student's GLSL in the page, and S opens the shader panel.
+//  6. the shader lesson runs the student's GLSL in the page, and S opens the shader panel;
+//  7. a typed answer (lesson 14's mip level) is checked, kept in the page's local storage, and
+//     still there after a reload.
 // Screenshots are written to the output folder for a person to look at.
 import { chromium } from "playwright-core";
 import { PNG } from "pngjs";
@@ -161,6 +163,33 @@ if (await waitForTitle(sh, /^pipelens — 24-shader-programs — step 5\/7$/, "t
     if (Math.abs(after.data[i] - before.data[i]) > 40) differ += 1;
   }
   check(differ > 20000, `S opens the shader panel (${differ} pixels of the right half changed)`);
+}
+
+// 7. A typed answer: lesson 14 step 3 asks for a mip level. Its box is at the narration card's
+// bottom-left at 1920×1080; a wrong value first, then the right one, Enter each time. eframe
+// keeps the progress in the page's local storage (saved within seconds); a reload keeps it.
+const ans = await open("?lesson=14-mipmaps&step=3", "answer");
+if (await waitForTitle(ans, /^pipelens — 14-mipmaps — step 3\/5$/, "the mipmap lesson opens on its question")) {
+  await ans.waitForTimeout(3000);
+  for (const typed of ["2", "3"]) {
+    await ans.mouse.click(55, 996);
+    await ans.waitForTimeout(500);
+    await ans.keyboard.press("Control+A");
+    await ans.keyboard.type(typed, { delay: 100 });
+    await ans.keyboard.press("Enter");
+    await ans.waitForTimeout(1500);
+    await ans.screenshot({ path: `${out}/typed-answer-${typed}.png` });
+  }
+  await ans.waitForTimeout(7000);
+  const kept = await ans.evaluate(() => JSON.stringify(Object.entries(localStorage)));
+  check(/answered:\[3\]/.test(kept), `the right answer is kept in local storage (${kept.slice(0, 160)})`);
+  await ans.reload();
+  if (await waitForTitle(ans, /^pipelens — 14-mipmaps — step 3\/5$/, "the page reloads on the question")) {
+    await ans.waitForTimeout(3000);
+    await ans.screenshot({ path: `${out}/typed-answer-after-reload.png` });
+    const again = await ans.evaluate(() => JSON.stringify(Object.entries(localStorage)));
+    check(/answered:\[3\]/.test(again), "the answer is still kept after the reload");
+  }
 }
 
 check(errors.length === 0, `no errors in the pages${errors.length ? ": " + errors.join(" | ") : ""}`);
