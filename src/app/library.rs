@@ -85,12 +85,18 @@ impl PipelensApp {
 
     /// Opens a lesson or scene file dropped on the window: on the desktop from its path (and
     /// watches it); in the browser from its bytes, read in the background and opened on a later
-    /// frame. A file that does not load keeps the current one running and says why.
+    /// frame. A file that does not load keeps the current one running and says why. A shader
+    /// (`.vert`, `.frag`) goes into the shader panel instead — a student's saved exercise code
+    /// loaded back — and runs when it compiles.
     pub(super) fn open_dropped(&mut self, ctx: &egui::Context) {
         let dropped = ctx.input(|i| i.raw.dropped_files.clone());
         if let Some(file) = dropped.into_iter().next() {
             let path = file.path().to_path_buf();
-            if path.is_absolute() {
+            if path.is_absolute() && shader_stage(&path.display().to_string()).is_some() {
+                let name = path.display().to_string();
+                let text = std::fs::read(&path).map_err(|e| format!("cannot read the file: {e}"));
+                self.load_shader(&name, text);
+            } else if path.is_absolute() {
                 let loaded = lesson::load_file(&path);
                 self.opened(loaded, &path.display().to_string(), Some(path));
             } else {
@@ -98,6 +104,13 @@ impl PipelensApp {
             }
         }
         for (name, bytes) in self.inbox.take() {
+            if shader_stage(&name).is_some() {
+                self.load_shader(
+                    &name,
+                    bytes.map_err(|e| format!("cannot read the file: {e}")),
+                );
+                continue;
+            }
             let loaded = bytes
                 .map_err(|e| format!("cannot read the file: {e}"))
                 .and_then(|b| {
@@ -108,6 +121,33 @@ impl PipelensApp {
                 .map_err(|e| lesson::Diagnostics(vec![lesson::Diagnostic::whole_file(&name, e)]))
                 .and_then(|text| lesson::parse_document(&text, &name, std::path::Path::new(".")));
             self.opened(loaded, &name, None);
+        }
+    }
+
+    /// Puts a dropped shader file's source in the shader panel's tab for its stage and runs it
+    /// (when it does not compile, the panel shows where, and the picture stays).
+    fn load_shader(&mut self, name: &str, bytes: Result<Vec<u8>, String>) {
+        let Some(stage) = shader_stage(name) else {
+            return;
+        };
+        let text = bytes
+            .and_then(|b| String::from_utf8(b).map_err(|_| format!("{name} is not UTF-8 text")));
+        match text {
+            Ok(text) => {
+                let editor = &mut self.shader_editor;
+                // The other stage stays what the scene runs (an exercise's starter, say).
+                editor.load(&self.session);
+                match stage {
+                    pipeline::shader::Stage::Vertex => editor.vertex = text,
+                    pipeline::shader::Stage::Fragment => editor.fragment = text,
+                }
+                editor.stage = stage;
+                self.panels.shader = true;
+                if let Some(c) = editor.apply(&self.session) {
+                    self.commands.push(c);
+                }
+            }
+            Err(e) => self.session.reload_error = Some(e),
         }
     }
 
@@ -132,5 +172,17 @@ impl PipelensApp {
         if let Some(path) = path {
             self.watch(path);
         }
+    }
+}
+
+/// The shader stage a file's name says (`.vert`, `.frag`), if it names one.
+fn shader_stage(name: &str) -> Option<pipeline::shader::Stage> {
+    let lower = name.to_ascii_lowercase();
+    if lower.ends_with(".vert") {
+        Some(pipeline::shader::Stage::Vertex)
+    } else if lower.ends_with(".frag") {
+        Some(pipeline::shader::Stage::Fragment)
+    } else {
+        None
     }
 }

@@ -66,7 +66,7 @@ impl ShaderEditor {
     }
 
     /// Takes the scene's own shaders (its first object's) when they are not the ones shown.
-    fn load(&mut self, session: &Session) {
+    pub(crate) fn load(&mut self, session: &Session) {
         let Some(sh) = session
             .spec
             .scene

@@ -142,3 +142,51 @@ fn an_edited_lesson_reloads_on_the_same_step_and_a_broken_edit_keeps_the_last_go
     assert_eq!(step_of(&h), 1);
     assert!(h.query_by_label_contains("Model space, edited").is_some());
 }
+
+/// A student's saved exercise code dropped back on the window (as the browser gives it: a name
+/// and bytes) goes into the shader panel and runs: lesson 10's lab passes with the solution
+/// loaded from a file, and the vertex stage stays the lab's.
+#[test]
+fn a_dropped_shader_file_loads_into_the_panel_and_runs() {
+    let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
+    let mut h = super::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    let k = h
+        .state()
+        .session
+        .lesson
+        .as_ref()
+        .map_or(0, |p| p.lesson.steps.len() - 1);
+    h.state_mut()
+        .session
+        .apply(pipelens::app::session::Command::GoToStep(k));
+    h.run_steps(6);
+    assert!(h.query_by_label_contains("Not yet").is_some());
+    let starter = h
+        .state()
+        .session
+        .current_exercise()
+        .expect("a lab")
+        .starter
+        .programs
+        .fragment
+        .source
+        .clone();
+    let solved = starter.replace(
+        "        // TODO: the specular term, where n·l > 0.",
+        "        vec3 h = normalize(l + v);
+        if (n_dot_l > 0.0) {
+            sum += f * ks * light.intensity * pow(max(dot(n, h), 0.0), shininess);
+        }",
+    );
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("shader.frag"),
+        bytes: solved.into_bytes(),
+    }));
+    h.run_steps(8);
+    assert!(h.state().panels.shader, "the shader panel opens");
+    assert!(
+        h.query_by_label_contains("Passed: all 172800 pixels match")
+            .is_some(),
+        "the dropped solution runs and passes"
+    );
+}
