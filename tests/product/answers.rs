@@ -29,6 +29,17 @@ impl eframe::Storage for Memory {
     fn flush(&mut self) {}
 }
 
+/// Goes to the open lesson's first question with a value to type.
+fn go_to_the_typed_question(h: &mut egui_kittest::Harness<'_, pipelens::app::PipelensApp>) {
+    let k = crate::app::lesson_of(h)
+        .steps
+        .iter()
+        .position(|s| s.expect.is_some())
+        .expect("the lesson has a question with a value");
+    h.state_mut().session.apply(Command::GoToStep(k));
+    h.run_steps(4);
+}
+
 /// Types `cells` into the answer field's boxes, row by row, and presses Check.
 fn type_and_check(h: &mut egui_kittest::Harness<'_, pipelens::app::PipelensApp>, cells: &[&str]) {
     let boxes = h.get_all_by_role(egui::accesskit::Role::TextInput).count();
@@ -68,14 +79,7 @@ fn a_typed_matrix_is_checked_entry_by_entry_and_remembered_across_runs() {
             && said.contains("row 3, column 4 = -2 is 1 too large"),
         "{said}"
     );
-    let lesson = h
-        .state()
-        .session
-        .lesson
-        .as_ref()
-        .expect("a lesson")
-        .lesson
-        .clone();
+    let lesson = crate::app::lesson_of(&h);
     assert!(!h.state().session.progress.answered(&lesson, 2));
     // Typed as a student might: expressions and a comma for the decimal point.
     let right = [
@@ -142,15 +146,7 @@ fn the_verdict_speaks_chinese_and_names_empty_cells() {
     h.state_mut()
         .session
         .apply(Command::SetLang(pipelens::vocabulary::Lang::Zh));
-    let k = h
-        .state()
-        .session
-        .lesson
-        .as_ref()
-        .and_then(|p| p.lesson.steps.iter().position(|s| s.expect.is_some()))
-        .expect("lesson 14 has a question with a value");
-    h.state_mut().session.apply(Command::GoToStep(k));
-    h.run_steps(4);
+    go_to_the_typed_question(&mut h);
     h.get_by_label("检查").click();
     h.run_steps(3);
     assert!(h.query_by_label_contains("尚未填写：你的数值").is_some());
@@ -331,15 +327,7 @@ fn a_character_typed_during_a_discarded_pass_enters_once() {
             },
             pipelens::app::PipelensApp::new(session),
         );
-    let k = h
-        .state()
-        .session
-        .lesson
-        .as_ref()
-        .and_then(|p| p.lesson.steps.iter().position(|s| s.expect.is_some()))
-        .expect("lesson 14 has a question with a value");
-    h.state_mut().session.apply(Command::GoToStep(k));
-    h.run_steps(4);
+    go_to_the_typed_question(&mut h);
     h.get_by_role(egui::accesskit::Role::TextInput).focus();
     h.run_steps(2);
     h.get_by_role(egui::accesskit::Role::TextInput)

@@ -265,8 +265,19 @@ pub(crate) fn lesson_harness(path: Option<std::path::PathBuf>) -> Harness<'stati
         .build_ui_state(|ui, app: &mut PipelensApp| app.frame(ui), app)
 }
 
+/// The lesson open in the app.
+pub(crate) fn lesson_of(h: &Harness<'_, PipelensApp>) -> std::sync::Arc<pipelens::lesson::Lesson> {
+    h.state()
+        .session
+        .lesson
+        .as_ref()
+        .expect("a lesson")
+        .lesson
+        .clone()
+}
+
 /// Goes to the open lesson's last step; returns its index.
-fn go_to_last_step(h: &mut Harness<'_, PipelensApp>) -> usize {
+pub(crate) fn go_to_last_step(h: &mut Harness<'_, PipelensApp>) -> usize {
     let last = h
         .state()
         .session

@@ -10,7 +10,7 @@ use pipeline::scene::ObjectShader;
 use crate::support::lesson_files;
 
 /// Each lab's solution: the lesson, the step's title, and the starter's `TODO` line replaced.
-const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
+pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
     (
         "13-texture-mapping",
         "Lab: bilinear filtering from texelFetch",
@@ -68,6 +68,23 @@ const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
         }",
     ),
 ];
+
+/// The open lab's fragment (or vertex) source with its solution in place of the TODO.
+pub(crate) fn solved_source(session: &pipelens::app::session::Session, fragment: bool) -> String {
+    let player = session.lesson.as_ref().expect("a lesson");
+    let (lesson, step) = (&player.lesson, player.current());
+    let (_, _, todo, solution) = SOLUTIONS
+        .iter()
+        .find(|(id, title, ..)| *id == lesson.id && *title == step.title.en)
+        .expect("the lab has a solution");
+    let programs = &step.exercise.as_ref().expect("a lab").starter.programs;
+    let source = if fragment {
+        &programs.fragment.source
+    } else {
+        &programs.vertex.source
+    };
+    source.replace(todo, solution)
+}
 
 /// The frame of `spec` against pipelens' own (the same scene without shaders).
 fn compared(spec: &pipelens::lesson::SceneSpec, tolerance: f32) -> pipeline::capture::Difference {
@@ -143,14 +160,8 @@ fn a_lab_in_the_app_says_not_yet_then_passed_and_keeps_the_code() {
     use pipelens::app::session::Command;
     let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
     let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    let k = h
-        .state()
-        .session
-        .lesson
-        .as_ref()
-        .map_or(0, |p| p.lesson.steps.len() - 1);
-    h.state_mut().session.apply(Command::GoToStep(k));
-    h.run_steps(6);
+    let k = crate::app::go_to_last_step(&mut h);
+    h.run_steps(4);
     assert!(
         h.query_by_label_contains("Not yet: 162116 of 172800 pixels match")
             .is_some()
@@ -163,22 +174,20 @@ fn a_lab_in_the_app_says_not_yet_then_passed_and_keeps_the_code() {
         "the Inspector opens on that pixel"
     );
     // The student's code, run as the shader panel runs it.
-    let (_, _, todo, solution) = SOLUTIONS
-        .iter()
-        .find(|(id, ..)| *id == "10-blinn-phong")
-        .expect("lesson 10's lab has a solution");
     let mut spec = h.state().session.spec.clone();
-    let programs = h
+    let vertex = h
         .state()
         .session
         .current_exercise()
         .expect("a lab")
         .starter
         .programs
+        .vertex
+        .source
         .clone();
     let solved = pipeline::shader::link(
-        Some(&programs.vertex.source),
-        Some(&programs.fragment.source.replace(todo, solution)),
+        Some(&vertex),
+        Some(&solved_source(&h.state().session, true)),
     )
     .expect("the solution compiles");
     spec.scene.set_shaders(&ObjectShader {
@@ -193,14 +202,7 @@ fn a_lab_in_the_app_says_not_yet_then_passed_and_keeps_the_code() {
         h.query_by_label_contains("Passed: all 172800 pixels match")
             .is_some()
     );
-    let lesson = h
-        .state()
-        .session
-        .lesson
-        .as_ref()
-        .expect("a lesson")
-        .lesson
-        .clone();
+    let lesson = crate::app::lesson_of(&h);
     let progress = &h.state().session.progress;
     assert!(progress.passed(&lesson, k));
     let (_, fragment) = progress.code(&lesson, k).expect("the code is kept");

@@ -150,34 +150,10 @@ fn an_edited_lesson_reloads_on_the_same_step_and_a_broken_edit_keeps_the_last_go
 fn a_dropped_shader_file_loads_into_the_panel_and_runs() {
     let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
     let mut h = super::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    let k = h
-        .state()
-        .session
-        .lesson
-        .as_ref()
-        .map_or(0, |p| p.lesson.steps.len() - 1);
-    h.state_mut()
-        .session
-        .apply(pipelens::app::session::Command::GoToStep(k));
-    h.run_steps(6);
+    super::go_to_last_step(&mut h);
+    h.run_steps(4);
     assert!(h.query_by_label_contains("Not yet").is_some());
-    let starter = h
-        .state()
-        .session
-        .current_exercise()
-        .expect("a lab")
-        .starter
-        .programs
-        .fragment
-        .source
-        .clone();
-    let solved = starter.replace(
-        "        // TODO: the specular term, where n·l > 0.",
-        "        vec3 h = normalize(l + v);
-        if (n_dot_l > 0.0) {
-            sum += f * ks * light.intensity * pow(max(dot(n, h), 0.0), shininess);
-        }",
-    );
+    let solved = crate::labs::solved_source(&h.state().session, true);
     h.input_mut().dropped_files.push(Arc::new(Dropped {
         path: PathBuf::from("shader.frag"),
         bytes: solved.into_bytes(),

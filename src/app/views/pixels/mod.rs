@@ -457,7 +457,7 @@ fn status_message(
         rect.center(),
         egui::Align2::CENTER_CENTER,
         text,
-        &egui::FontId::proportional(18.0),
+        &crate::app::views::picture_font(painter.ctx(), 18.0),
         Color32::from_gray(235),
     );
 }
