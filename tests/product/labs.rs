@@ -12,6 +12,34 @@ use crate::support::lesson_files;
 /// Each lab's solution: the lesson, the step's title, and the starter's `TODO` line replaced.
 pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
     (
+        "11-shading-frequencies",
+        "Lab: the normal matrix",
+        "    // TODO: the inverse transpose of m's upper-left 3×3 block. (As written: m's block itself.)
+    return mat3(m);",
+        "    return transpose(inverse(mat3(m)));",
+    ),
+    (
+        "14-mipmaps",
+        "Lab: the level of detail from the derivatives",
+        "    // TODO: L from dFdx(uv) and dFdy(uv) in texels, then λ = log2(L). (As written: level 0.)
+    return 0.0;",
+        "    float lx = length(dFdx(uv) * size);
+    float ly = length(dFdy(uv) * size);
+    return log2(max(max(lx, ly), 1e-12));",
+    ),
+    (
+        "15-surface-detail",
+        "Lab: the bump map in a fragment shader",
+        "        // TODO: dU and dV from the height one texel to the right and one texel up, times
+        // bump_strength; then local = (−dU, −dV, 1). (As written, the normal is not tilted.)
+        local = vec3(0.0, 0.0, 1.0);",
+        "        vec2 size = vec2(textureSize(detail, 0));
+        float here = height(uv);
+        float du = bump_strength * (height(uv + vec2(1.0 / size.x, 0.0)) - here);
+        float dv = bump_strength * (height(uv + vec2(0.0, 1.0 / size.y)) - here);
+        local = vec3(-du, -dv, 1.0);",
+    ),
+    (
         "13-texture-mapping",
         "Lab: bilinear filtering from texelFetch",
         "    // TODO: the four texels around (x, y) and their weights. (This reads the nearest one.)
