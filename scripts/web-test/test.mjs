@@ -169,10 +169,11 @@ if (await waitForTitle(sh, /^pipelens — 24-shader-programs — step 5\/7$/, "t
 // bottom-left at 1920×1080; a wrong value first, then the right one, Enter each time. eframe
 // keeps the progress in the page's local storage (saved within seconds); a reload keeps it.
 const ans = await open("?lesson=14-mipmaps&step=3", "answer");
-if (await waitForTitle(ans, /^pipelens — 14-mipmaps — step 3\/5$/, "the mipmap lesson opens on its question")) {
+if (await waitForTitle(ans, /^pipelens — 14-mipmaps — step 3\/6$/, "the mipmap lesson opens on its question")) {
   await ans.waitForTimeout(3000);
-  for (const typed of ["2", "3"]) {
-    await ans.mouse.click(55, 996);
+  // The box is at y = 996; once a verdict is written under it, the card grows upwards by a line.
+  for (const [typed, y] of [["2", 996], ["3", 976]]) {
+    await ans.mouse.click(55, y);
     await ans.waitForTimeout(500);
     await ans.keyboard.press("Control+A");
     await ans.keyboard.type(typed, { delay: 100 });
@@ -184,7 +185,7 @@ if (await waitForTitle(ans, /^pipelens — 14-mipmaps — step 3\/5$/, "the mipm
   const kept = await ans.evaluate(() => JSON.stringify(Object.entries(localStorage)));
   check(/answered:\[3\]/.test(kept), `the right answer is kept in local storage (${kept.slice(0, 160)})`);
   await ans.reload();
-  if (await waitForTitle(ans, /^pipelens — 14-mipmaps — step 3\/5$/, "the page reloads on the question")) {
+  if (await waitForTitle(ans, /^pipelens — 14-mipmaps — step 3\/6$/, "the page reloads on the question")) {
     await ans.waitForTimeout(3000);
     await ans.screenshot({ path: `${out}/typed-answer-after-reload.png` });
     const again = await ans.evaluate(() => JSON.stringify(Object.entries(localStorage)));

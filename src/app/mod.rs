@@ -89,6 +89,9 @@ pub struct PipelensApp {
     /// Stops the export under way.
     export_cancel: Option<crate::export::Cancel>,
     commands: Vec<Command>,
+    /// The progress as last saved: when the session's differs, a frame is asked for after the
+    /// save interval, so that eframe saves it even if nothing else moves (a browser tab).
+    saved_progress: progress::Progress,
     /// The file shown, watched for changes (live reload): its path and last modification.
     watched: Option<reload::Watched>,
     /// Dropped files read in the background (in the browser).
@@ -111,6 +114,7 @@ impl PipelensApp {
             exercise_view: views::exercise::ExerciseView::default(),
             inspector: inspector::Inspector::default(),
             shader_editor: views::shader::ShaderEditor::default(),
+            saved_progress: progress::Progress::default(),
             classroom: false,
             export_dir: "pipelens-export".to_owned(),
             export_result: None,
@@ -193,6 +197,10 @@ impl PipelensApp {
     /// Draws one frame and applies the commands it produced.
     pub fn frame(&mut self, ui: &mut egui::Ui) {
         self.session.poll();
+        if self.session.progress != self.saved_progress {
+            ui.ctx()
+                .request_repaint_after(SAVE_INTERVAL + std::time::Duration::from_millis(500));
+        }
         self.reload_if_changed(ui.ctx());
         self.open_dropped(ui.ctx());
         self.keyboard(ui.ctx());
@@ -482,12 +490,13 @@ impl eframe::App for PipelensApp {
     /// [`Self::auto_save_interval`]).
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         self.session.progress.save(storage);
+        self.saved_progress.clone_from(&self.session.progress);
     }
 
     /// Progress is saved within seconds of an answer (a lab in a browser tab may be closed
     /// without a goodbye).
     fn auto_save_interval(&self) -> std::time::Duration {
-        std::time::Duration::from_secs(5)
+        SAVE_INTERVAL
     }
 
     /// Only the progress is kept: the app opens the same way every time.
@@ -495,6 +504,9 @@ impl eframe::App for PipelensApp {
         false
     }
 }
+
+/// How often eframe saves the progress (and on closing).
+const SAVE_INTERVAL: std::time::Duration = std::time::Duration::from_secs(5);
 
 /// How the app starts: language, stage, comparison.
 #[derive(Clone, Copy, Debug, Default)]
