@@ -45,9 +45,26 @@ impl Progress {
     }
 
     /// Keeps the progress in the app's storage (written to disk, or to the page's local
-    /// storage, by eframe).
+    /// storage, by eframe), merged with what is kept there already: another window or tab of
+    /// the app saves into the same storage, and neither may undo what the other recorded.
     pub fn save(&self, storage: &mut dyn eframe::Storage) {
-        eframe::set_value(storage, Self::KEY, self);
+        let mut kept = Self::load(Some(&*storage));
+        kept.merge(self);
+        eframe::set_value(storage, Self::KEY, &kept);
+    }
+
+    /// Adds `other`'s record to this one: steps answered or passed in either stay so; what was
+    /// typed and the code run are `other`'s where it has them.
+    pub fn merge(&mut self, other: &Self) {
+        for (id, theirs) in &other.lessons {
+            let mine = self.lessons.entry(id.clone()).or_default();
+            mine.answered.extend(theirs.answered.iter().copied());
+            mine.passed.extend(theirs.passed.iter().copied());
+            mine.typed
+                .extend(theirs.typed.iter().map(|(k, v)| (*k, v.clone())));
+            mine.code
+                .extend(theirs.code.iter().map(|(k, v)| (*k, v.clone())));
+        }
     }
 
     /// What was typed into step `k`'s (0-based) field of `lesson`, `cells` long.

@@ -340,3 +340,22 @@ fn a_character_typed_during_a_discarded_pass_enters_once() {
         Some("3")
     );
 }
+
+/// Two windows (or browser tabs) of the app save into one storage: each keeps what the other
+/// recorded.
+#[test]
+fn two_windows_saving_keep_each_others_progress() {
+    let path = repo().join("lessons/05-perspective.toml");
+    let mut storage = Memory::default();
+    let mut first = sized_lesson_harness(&path, [1366.0, 768.0]);
+    let mut second = sized_lesson_harness(&path, [1366.0, 768.0]);
+    first.state_mut().session.apply(Command::GoToStep(1));
+    first.run_steps(3);
+    type_and_check(&mut first, &["1", "1"]);
+    first.state().session.progress.save(&mut storage);
+    // The second window answered nothing; its save must not erase the first's answer.
+    second.state().session.progress.save(&mut storage);
+    let lesson = crate::app::lesson_of(&first);
+    let kept = Progress::load(Some(&storage));
+    assert!(kept.answered(&lesson, 1), "{kept:?}");
+}
