@@ -348,7 +348,7 @@ fn two_windows_saving_keep_each_others_progress() {
     let path = repo().join("lessons/05-perspective.toml");
     let mut storage = Memory::default();
     let mut first = sized_lesson_harness(&path, [1366.0, 768.0]);
-    let mut second = sized_lesson_harness(&path, [1366.0, 768.0]);
+    let second = sized_lesson_harness(&path, [1366.0, 768.0]);
     first.state_mut().session.apply(Command::GoToStep(1));
     first.run_steps(3);
     type_and_check(&mut first, &["1", "1"]);
