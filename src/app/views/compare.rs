@@ -14,6 +14,8 @@ use crate::vocabulary::{profile, variant_label};
 #[derive(Default)]
 pub struct CompareView {
     textures: Vec<super::BufferTexture>,
+    /// The gain the compared lighting terms share.
+    gain: super::TermGain,
     drag_start: Option<[f32; 2]>,
     /// The images' and the plot's rects this frame.
     pub picture: Vec<Rect>,
@@ -85,10 +87,12 @@ impl CompareView {
         let gap = 6.0;
         let (cols, cell, images) = grid(area, (variants.len(), aspect), with_plot, gap);
         let kind = session.selection.buffer;
-        let gain = pipeline::capture::FrameCapture::shared_term_gain(
-            variants.iter().map(|(_, c)| &**c),
-            kind,
-        );
+        let gain = self.gain.get((session.shown_generation, kind), || {
+            pipeline::capture::FrameCapture::shared_term_gain(
+                variants.iter().map(|(_, c)| &**c),
+                kind,
+            )
+        });
         for (i, (name, capture)) in variants.iter().enumerate() {
             let (c, r) = (i % cols, i / cols);
             let cell = Rect::from_min_size(

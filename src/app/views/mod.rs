@@ -324,6 +324,29 @@ pub const FATES: [(Color32, &str, &str); 5] = {
 
 pub use crate::spaces::fate_index;
 
+/// A lighting term's display gain (`FrameCapture::term_gain`, a scan of every pixel), found
+/// again only when the capture (its generation) or the buffer changes, not on every UI frame.
+#[derive(Default)]
+pub struct TermGain(Option<((u64, pipeline::buffers::BufferKind), f32)>);
+
+impl TermGain {
+    /// The gain for `key`, from `find` when the key changed.
+    pub fn get(
+        &mut self,
+        key: (u64, pipeline::buffers::BufferKind),
+        find: impl FnOnce() -> f32,
+    ) -> f32 {
+        match self.0 {
+            Some((k, gain)) if k == key => gain,
+            _ => {
+                let gain = find();
+                self.0 = Some((key, gain));
+                gain
+            }
+        }
+    }
+}
+
 /// A capture's buffer uploaded as an egui texture, uploaded again only when the capture (its
 /// generation), the buffer or the way it is drawn (`variant`) changes.
 #[derive(Default)]

@@ -24,6 +24,8 @@ pub struct PixelView {
     centre: Option<Vec2>,
     /// The texture of the buffer shown, with the generation and kind it was made from.
     texture: super::BufferTexture,
+    /// The display gain of the lighting term shown.
+    gain: super::TermGain,
     /// The mip levels' textures.
     pyramid: extras::Pyramid,
     /// Show the mip pyramid under a texturing buffer.
@@ -40,6 +42,7 @@ impl Default for PixelView {
             zoom: None,
             centre: None,
             texture: super::BufferTexture::default(),
+            gain: super::TermGain::default(),
             pyramid: extras::Pyramid::default(),
             show_pyramid: true,
             record: None,
@@ -151,11 +154,15 @@ impl PixelView {
         (view != sel.depth_view).then_some(Command::SetDepthView(view))
     }
 
-    /// The image view itself.
-    pub fn ui(&mut self, ui: &mut Ui, session: &Session, capture: &FrameCapture) -> Vec<Command> {
+    /// The shown buffer's texture (made again when the capture, the buffer or the depth ramp
+    /// changes) and the gain its lighting term is drawn with.
+    fn buffer_texture(
+        &mut self,
+        ctx: &egui::Context,
+        session: &Session,
+        capture: &FrameCapture,
+    ) -> (egui::TextureHandle, f32) {
         let sel = &session.selection;
-        let lang = session.lang;
-        let mut cmds = Vec::new();
         let depth = sel.depth_view;
         let variant = if sel.buffer == BufferKind::Depth {
             let [a, b] = depth.range.unwrap_or([f32::NAN; 2]);
@@ -163,9 +170,11 @@ impl PixelView {
         } else {
             0
         };
-        let gain = capture.term_gain(sel.buffer);
+        let gain = self.gain.get((session.shown_generation, sel.buffer), || {
+            capture.term_gain(sel.buffer)
+        });
         let texture = self.texture.get_with(
-            ui.ctx(),
+            ctx,
             "pixel-view",
             (session.shown_generation, sel.buffer, variant),
             TextureOptions::NEAREST,
@@ -174,6 +183,15 @@ impl PixelView {
                 kind => capture.image_gained(kind, gain),
             },
         );
+        (texture, gain)
+    }
+
+    /// The image view itself.
+    pub fn ui(&mut self, ui: &mut Ui, session: &Session, capture: &FrameCapture) -> Vec<Command> {
+        let sel = &session.selection;
+        let lang = session.lang;
+        let mut cmds = Vec::new();
+        let (texture, gain) = self.buffer_texture(ui.ctx(), session, capture);
         let full = ui.available_rect_before_wrap();
         let offered = session.buffers.contains(&sel.buffer) || !sel.buffer.is_texturing();
         let wants_extra = sel.buffer == BufferKind::Depth
