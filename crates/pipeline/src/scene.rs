@@ -74,6 +74,9 @@ pub struct Object {
     /// Shaders the student wrote: they replace the vertex stage's transform and the shading
     /// (see [`crate::shader`]).
     pub shader: Option<ObjectShader>,
+    /// The student's inside test: the rasterizer asks it, not its own edge functions, which
+    /// samples this object's triangles cover (see [`crate::shader::hook`]).
+    pub inside: Option<crate::shader::InsideTest>,
 }
 
 /// An object's shaders and the time their `time` uniform reads.
@@ -119,6 +122,7 @@ impl Object {
             slerp: None,
             builtin: None,
             shader: None,
+            inside: None,
         }
     }
 
@@ -224,6 +228,13 @@ impl Scene {
     pub fn set_shaders(&mut self, shader: &ObjectShader) {
         for o in &mut self.objects {
             o.shader = Some(shader.clone());
+        }
+    }
+
+    /// Every object's triangles are covered where the student's `inside` says.
+    pub fn set_inside(&mut self, inside: &crate::shader::InsideTest) {
+        for o in &mut self.objects {
+            o.inside = Some(inside.clone());
         }
     }
 

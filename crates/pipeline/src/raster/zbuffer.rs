@@ -287,15 +287,46 @@ impl SampleBuffers {
         index: u32,
         test: DepthTest,
     ) -> RasterCounts {
+        self.rasterize_where(tri, index, test, |_, p| tri.covers(p))
+    }
+
+    /// The samples of `tri`'s bounding box in the order [`Self::rasterize_where`] visits them:
+    /// row by row from the box's bottom (window y up), each pixel's samples in turn; each as
+    /// its fixed-point position.
+    #[must_use]
+    pub fn box_samples(&self, tri: &RasterTriangle) -> Vec<I64Vec2> {
+        let [x0, y0, x1, y1] = tri.bbox.map(u32::from);
+        let mut out = Vec::new();
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
+                out.extend(self.offsets.iter().map(|&o| corner + o));
+            }
+        }
+        out
+    }
+
+    /// Rasterizes `tri` with another inside test: `covers(k, p)` says whether the `k`-th sample
+    /// of the box (in [`Self::box_samples`]' order), at fixed-point position `p`, is covered.
+    /// Each covered sample takes the depth test with the triangle's depth plane.
+    pub fn rasterize_where(
+        &mut self,
+        tri: &RasterTriangle,
+        index: u32,
+        test: DepthTest,
+        mut covers: impl FnMut(usize, I64Vec2) -> bool,
+    ) -> RasterCounts {
         let mut counts = RasterCounts::default();
         let [x0, y0, x1, y1] = tri.bbox.map(u32::from);
         let plane = tri.depth_plane();
+        let mut k = 0;
         for y in y0..=y1 {
             for x in x0..=x1 {
                 let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
                 for s in 0..self.offsets.len() {
                     let p = corner + self.offsets[s];
-                    if !tri.covers(p) {
+                    k += 1;
+                    if !covers(k - 1, p) {
                         continue;
                     }
                     let i = self.index(x, y, s);

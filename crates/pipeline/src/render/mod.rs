@@ -157,11 +157,12 @@ fn render_stages(
     let t = Instant::now();
     let (width, height) = (settings.width, settings.height);
     let mut samples = rasterize(
+        scene,
         settings,
         storage.samples.take(),
         &triangles,
         &mut primitives,
-    );
+    )?;
     times.raster = t.elapsed();
     // Fragments a shader discards are taken out of the depth test, layer by layer.
     let mut peeled = 0;
@@ -251,12 +252,16 @@ fn object_summaries(scene: &Scene) -> Vec<ObjectSummary> {
 
 /// Rasterization with the depth test into the sample buffers (`spare`'s storage, cleared),
 /// and each primitive's counts: the samples its raster triangles covered and wrote.
+///
+/// # Errors
+/// A run-time error of an object's inside test (the student's `inside`).
 fn rasterize(
+    scene: &Scene,
     settings: &RenderSettings,
     spare: Option<SampleBuffers>,
     triangles: &[RasterTriangle],
     primitives: &mut [PrimitiveRecord],
-) -> SampleBuffers {
+) -> Result<SampleBuffers, RenderError> {
     use rayon::prelude::*;
     let clear = settings.depth_test.clear_value();
     let (width, height) = (settings.width, settings.height);
@@ -264,7 +269,13 @@ fn rasterize(
         Some(s) => s.cleared(width, height, settings.samples, clear),
         None => SampleBuffers::new(width, height, settings.samples, clear),
     };
-    let counts = samples.rasterize_all(triangles, settings.depth_test);
+    let hooked;
+    let counts = if scene.objects.iter().any(|o| o.inside.is_some()) {
+        hooked = rasterize_with_hooks(scene, settings, triangles, primitives, &mut samples)?;
+        &hooked[..]
+    } else {
+        samples.rasterize_all(triangles, settings.depth_test)
+    };
     primitives.par_iter_mut().with_min_len(1024).for_each(|p| {
         let own = &counts[p.triangles[0] as usize..p.triangles[1] as usize];
         p.counts = own
@@ -274,7 +285,46 @@ fn rasterize(
                 written: a.written + c.written,
             });
     });
-    samples
+    Ok(samples)
+}
+
+/// Rasterization where some objects carry the student's inside test: triangle after triangle,
+/// each sample of its box asked of the object's `inside` (in batches, see
+/// [`crate::shader::InsideTest::covers`]) or of pipelens' edge functions.
+fn rasterize_with_hooks(
+    scene: &Scene,
+    settings: &RenderSettings,
+    triangles: &[RasterTriangle],
+    primitives: &[PrimitiveRecord],
+    samples: &mut SampleBuffers,
+) -> Result<Vec<RasterCounts>, RenderError> {
+    let pixels = |v: i64| (v as f64 / crate::raster::ONE as f64) as f32;
+    let mut counts = Vec::with_capacity(triangles.len());
+    for (i, tri) in triangles.iter().enumerate() {
+        let object = primitives
+            .get(tri.primitive as usize)
+            .and_then(|p| scene.objects.get(p.object as usize));
+        let Some((object, test)) = object.and_then(|o| Some((o, o.inside.as_ref()?))) else {
+            counts.push(samples.rasterize_reference(tri, i as u32, settings.depth_test));
+            continue;
+        };
+        let points: Vec<[f32; 2]> = samples
+            .box_samples(tri)
+            .iter()
+            .map(|p| [pixels(p.x), pixels(p.y)])
+            .collect();
+        let corners = tri.window.map(|c| {
+            [
+                pixels(crate::raster::snap(c.x)),
+                pixels(crate::raster::snap(c.y)),
+            ]
+        });
+        let inside = test.covers(&points, corners).map_err(|e| {
+            RenderError::Invalid(vec![format!("inside test of {}, {e}", object.name)])
+        })?;
+        counts.push(samples.rasterize_where(tri, i as u32, settings.depth_test, |k, _| inside[k]));
+    }
+    Ok(counts)
 }
 
 /// The storage of a capture no longer needed, emptied, for the next frame to write into: a

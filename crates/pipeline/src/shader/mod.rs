@@ -15,6 +15,7 @@
 mod check;
 mod code;
 pub mod dialect;
+pub mod hook;
 pub mod interface;
 pub mod link;
 mod machine;
@@ -27,6 +28,7 @@ use std::ops::Range;
 
 use naga::{Binding, BuiltIn, Interpolation, TypeInner};
 
+pub use hook::{INSIDE_SIGNATURE, InsideTest, compile_inside};
 pub use interface::Uniforms;
 pub use link::{
     BUILTIN_FLAT_FRAGMENT, BUILTIN_FLAT_VERTEX, BUILTIN_FRAGMENT, BUILTIN_GOURAUD_FRAGMENT,

@@ -9,6 +9,7 @@ mod detail;
 mod explain;
 mod frame;
 mod hierarchy;
+mod hooks;
 mod implicit;
 mod normals;
 mod properties;

@@ -1,0 +1,119 @@
+//! Functions the pipeline calls: the student's `inside` decides coverage sample by sample. An
+//! inside test written as pipelens' rule (edge functions, top-left ties) gives pipelens'
+//! samples exactly; a test that takes every tie covers a shared edge twice; one that answers
+//! `false` covers nothing; a mistake in it is a message at its line.
+
+use glam::Vec2;
+use pipeline::raster::{NONE, Samples};
+use pipeline::shader::compile_inside;
+
+use crate::support::{cover_counts, pixel_scene, render};
+
+/// The edge functions with the top-left rule, as a student writes them in GLSL: `E_ab(p) =
+/// (b − a) × (p − a)`, a tie (`E = 0`) inside only on a top edge (horizontal, going left) or a
+/// left edge (going down), the corners counter-clockwise.
+const TOP_LEFT: &str = "
+float edge(vec2 a, vec2 b, vec2 p) {
+    return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
+bool owns(vec2 a, vec2 b, vec2 p) {
+    float e = edge(a, b, p);
+    vec2 d = b - a;
+    bool top_left = (d.y == 0.0 && d.x < 0.0) || d.y < 0.0;
+    return e > 0.0 || (e == 0.0 && top_left);
+}
+bool inside(vec2 p, vec2 a, vec2 b, vec2 c) {
+    return owns(a, b, p) && owns(b, c, p) && owns(c, a, p);
+}
+";
+
+/// Every tie counted inside: GAMES101's `insideTriangle` as often first written.
+const EVERY_TIE: &str = "
+bool inside(vec2 p, vec2 a, vec2 b, vec2 c) {
+    float e0 = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+    float e1 = (c.x - b.x) * (p.y - b.y) - (c.y - b.y) * (p.x - b.x);
+    float e2 = (a.x - c.x) * (p.y - c.y) - (a.y - c.y) * (p.x - c.x);
+    return e0 >= 0.0 && e1 >= 0.0 && e2 >= 0.0;
+}
+";
+
+/// Two triangles sharing the diagonal of a square whose corners lie on pixel centres, so
+/// samples fall exactly on the shared edge and on the square's sides.
+fn square() -> [[Vec2; 3]; 2] {
+    let (a, b, c, d) = (
+        Vec2::new(2.5, 2.5),
+        Vec2::new(13.5, 2.5),
+        Vec2::new(13.5, 13.5),
+        Vec2::new(2.5, 13.5),
+    );
+    [[a, b, c], [a, c, d]]
+}
+
+#[test]
+fn an_inside_test_with_the_top_left_rule_covers_pipelens_samples_exactly() {
+    for samples in [Samples::X1, Samples::X4] {
+        let (mut scene, mut settings) = pixel_scene(16, 16, &square());
+        settings.samples = samples;
+        let own = render(&scene, &settings);
+        let test = compile_inside(TOP_LEFT).expect("the top-left test compiles");
+        scene.set_inside(&test);
+        let student = render(&scene, &settings);
+        assert_eq!(student.samples.triangle, own.samples.triangle, "{samples:?}");
+        assert_eq!(cover_counts(&student), cover_counts(&own), "{samples:?}");
+        // The shared diagonal and the square's sides: ties, each sample once.
+        let (sum, distinct) = cover_counts(&student);
+        assert_eq!(sum, distinct);
+    }
+}
+
+#[test]
+fn a_test_that_takes_every_tie_covers_the_shared_edge_twice() {
+    let (mut scene, settings) = pixel_scene(16, 16, &square());
+    let own = render(&scene, &settings);
+    scene.set_inside(&compile_inside(EVERY_TIE).expect("compiles"));
+    let student = render(&scene, &settings);
+    let (sum, distinct) = cover_counts(&student);
+    // The 12 centres on the diagonal (2.5, 2.5) … (13.5, 13.5) are covered by both halves.
+    assert_eq!(sum - distinct, 12);
+    // pipelens' rule covers each centre once, 11 × 11 of the closed square's 12 × 12: of two
+    // opposite sides it keeps one (the top and the left, y up).
+    let (own_sum, own_distinct) = cover_counts(&own);
+    assert_eq!(own_sum, own_distinct);
+    assert_eq!(own_distinct, 121);
+    // Taking every tie adds the other two sides' 12 + 11 centres.
+    assert_eq!(distinct, own_distinct + 12 + 11);
+}
+
+#[test]
+fn a_test_that_answers_false_covers_nothing_and_a_mistake_is_a_message_at_its_line() {
+    let (mut scene, settings) = pixel_scene(16, 16, &square());
+    let never = "bool inside(vec2 p, vec2 a, vec2 b, vec2 c) {\n    return false;\n}\n";
+    scene.set_inside(&compile_inside(never).expect("compiles"));
+    let frame = render(&scene, &settings);
+    assert!(frame.samples.triangle.iter().all(|&t| t == NONE));
+    assert!(frame.primitives.iter().all(|p| p.counts.covered == 0));
+
+    let wrong_type = "bool inside(vec2 p, vec2 a, vec2 b, vec2 c) {\n    return 1.0;\n}\n";
+    let errors = compile_inside(wrong_type).expect_err("a float is not a bool");
+    assert!(errors.iter().any(|e| e.line == 2), "{errors:?}");
+
+    let misnamed = "bool in_triangle(vec2 p, vec2 a, vec2 b, vec2 c) {\n    return true;\n}\n";
+    let errors = compile_inside(misnamed).expect_err("the rasterizer calls `inside`");
+    assert!(
+        errors
+            .iter()
+            .any(|e| e.message.contains("bool inside(vec2 p, vec2 a, vec2 b, vec2 c)")),
+        "{errors:?}"
+    );
+}
+
+#[test]
+fn an_endless_inside_test_is_a_render_error_not_a_hang() {
+    let (mut scene, settings) = pixel_scene(16, 16, &square());
+    let endless = "bool inside(vec2 p, vec2 a, vec2 b, vec2 c) {\n    float x = 0.0;\n    while (x >= 0.0) { x += 1.0; }\n    return true;\n}\n";
+    scene.set_inside(&compile_inside(endless).expect("compiles"));
+    let err = pipeline::render(&scene, &settings).expect_err("the loop budget stops it");
+    let text = err.to_string();
+    assert!(text.contains("inside test of test"), "{text}");
+    assert!(text.contains("line 3"), "{text}");
+}
