@@ -1,5 +1,5 @@
-//! An exercise step in the session (no egui here): the student's shaders draw the step's
-//! picture, pipelens' own stages draw the reference in the same render job, and the two frames
+//! An exercise step in the session (no egui here): the student's shaders and inside test draw
+//! the step's picture, pipelens' own stages draw the reference in the same render job, and the two frames
 //! are compared pixel by pixel. A frame that matches everywhere passes the exercise, which the
 //! progress remembers with the code that passed; the code the student last ran is kept too and
 //! comes back when the step is entered again.
@@ -11,6 +11,7 @@ use pipeline::capture::{Difference, FrameCapture};
 use pipeline::scene::{ObjectShader, Scene};
 use pipeline::settings::RenderSettings;
 
+use super::progress::SavedCode;
 use super::session::Session;
 use crate::lesson::SceneSpec;
 use crate::lesson::answer::Exercise;
@@ -44,6 +45,7 @@ impl Session {
         let mut scene = spec.scene.clone();
         for o in &mut scene.objects {
             o.shader = None;
+            o.inside = None;
         }
         let settings = RenderSettings {
             capture: Capture::COLOR.with_pixel(self.selection.pixel),
@@ -79,17 +81,21 @@ impl Session {
     }
 
     /// The sources the scene's objects run: the student's code on an exercise step.
-    fn student_code(&self) -> Option<(String, String)> {
-        let sh = self
-            .spec
-            .scene
-            .objects
-            .iter()
-            .find_map(|o| o.shader.as_ref())?;
-        Some((
-            sh.programs.vertex.source.clone(),
-            sh.programs.fragment.source.clone(),
-        ))
+    fn student_code(&self) -> Option<SavedCode> {
+        let objects = &self.spec.scene.objects;
+        let code = SavedCode {
+            shaders: objects.iter().find_map(|o| o.shader.as_ref()).map(|sh| {
+                (
+                    sh.programs.vertex.source.clone(),
+                    sh.programs.fragment.source.clone(),
+                )
+            }),
+            inside: objects
+                .iter()
+                .find_map(|o| o.inside.as_ref())
+                .map(|i| i.source.clone()),
+        };
+        (code != SavedCode::default()).then_some(code)
     }
 
     /// On entering an exercise step: the code the student last ran there, in place of the
@@ -102,14 +108,19 @@ impl Session {
         if player.current().exercise.is_none() {
             return;
         }
-        let Some((vertex, fragment)) = self.progress.code(&player.lesson, player.step) else {
+        let Some(code) = self.progress.code(&player.lesson, player.step) else {
             return;
         };
-        if let Ok(programs) = pipeline::shader::link(Some(vertex), Some(fragment)) {
+        if let Some((vertex, fragment)) = &code.shaders
+            && let Ok(programs) = pipeline::shader::link(Some(vertex), Some(fragment))
+        {
             spec.scene.set_shaders(&ObjectShader {
                 programs: Arc::new(programs),
                 time: 0.0,
             });
+        }
+        if let Some(Ok(inside)) = code.inside.as_deref().map(pipeline::shader::compile_inside) {
+            spec.scene.set_inside(&inside);
         }
     }
 }

@@ -141,7 +141,8 @@ impl PipelensApp {
                     pipeline::shader::Stage::Vertex => editor.vertex = text,
                     pipeline::shader::Stage::Fragment => editor.fragment = text,
                 }
-                editor.stage = stage;
+                editor.tab = crate::app::views::shader::Tab::Shader(stage);
+                editor.shaders_in_use = true;
                 self.panels.shader = true;
                 if let Some(c) = editor.apply(&self.session) {
                     self.commands.push(c);

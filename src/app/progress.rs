@@ -27,9 +27,21 @@ pub struct LessonProgress {
     /// The exercise steps whose every pixel matched pipelens' own.
     #[serde(default)]
     pub passed: BTreeSet<usize>,
-    /// The code (vertex, fragment) the student last ran in each exercise step.
+    /// The shaders (vertex, fragment) the student last ran in each exercise step.
     #[serde(default)]
     pub code: BTreeMap<usize, (String, String)>,
+    /// The inside test the student last ran in each exercise step that has one.
+    #[serde(default)]
+    pub inside: BTreeMap<usize, String>,
+}
+
+/// The code a student ran in an exercise step: the shaders, the inside test, or both.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SavedCode {
+    /// The vertex and fragment shaders' sources.
+    pub shaders: Option<(String, String)>,
+    /// The inside test's source.
+    pub inside: Option<String>,
 }
 
 impl Progress {
@@ -64,6 +76,8 @@ impl Progress {
                 .extend(theirs.typed.iter().map(|(k, v)| (*k, v.clone())));
             mine.code
                 .extend(theirs.code.iter().map(|(k, v)| (*k, v.clone())));
+            mine.inside
+                .extend(theirs.inside.iter().map(|(k, v)| (*k, v.clone())));
         }
     }
 
@@ -115,19 +129,28 @@ impl Progress {
 
     /// Keeps the code the student ran in exercise step `k` (0-based), and the step as passed
     /// when every pixel matched.
-    pub fn keep_code(&mut self, lesson: &Lesson, k: usize, code: (String, String), passed: bool) {
+    pub fn keep_code(&mut self, lesson: &Lesson, k: usize, code: SavedCode, passed: bool) {
         let l = self.lessons.entry(lesson.id.clone()).or_default();
-        l.code.insert(k + 1, code);
+        if let Some(shaders) = code.shaders {
+            l.code.insert(k + 1, shaders);
+        }
+        if let Some(inside) = code.inside {
+            l.inside.insert(k + 1, inside);
+        }
         if passed {
             l.passed.insert(k + 1);
         }
     }
 
-    /// The code the student last ran in exercise step `k` (0-based): `(vertex, fragment)`.
+    /// The code the student last ran in exercise step `k` (0-based), if any was kept.
     #[must_use]
-    pub fn code(&self, lesson: &Lesson, k: usize) -> Option<(&str, &str)> {
-        let (v, f) = self.lessons.get(&lesson.id)?.code.get(&(k + 1))?;
-        Some((v.as_str(), f.as_str()))
+    pub fn code(&self, lesson: &Lesson, k: usize) -> Option<SavedCode> {
+        let l = self.lessons.get(&lesson.id)?;
+        let code = SavedCode {
+            shaders: l.code.get(&(k + 1)).cloned(),
+            inside: l.inside.get(&(k + 1)).cloned(),
+        };
+        (code != SavedCode::default()).then_some(code)
     }
 
     /// Whether exercise step `k` (0-based) was passed.

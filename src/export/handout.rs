@@ -365,14 +365,22 @@ fn exercise_html(e: &crate::lesson::answer::Exercise, lang: Lang) -> String {
         t("Exercise:", "练习："),
         typeset(&notation::parse_paragraph(e.task.get(lang)))
     );
-    let p = &e.starter.programs;
-    for (source, builtin) in [
-        (&p.vertex.source, BUILTIN_VERTEX),
-        (&p.fragment.source, BUILTIN_FRAGMENT),
-    ] {
-        if source.as_str() != builtin {
-            let _ = write!(h, "<pre class=\"code\">{}</pre>", esc(source.trim()));
-        }
+    let mut sources: Vec<&str> = Vec::new();
+    if let Some(shader) = &e.starter.shader {
+        let p = &shader.programs;
+        sources.extend(
+            [
+                (p.vertex.source.as_str(), BUILTIN_VERTEX),
+                (p.fragment.source.as_str(), BUILTIN_FRAGMENT),
+            ]
+            .into_iter()
+            .filter(|(source, builtin)| source != builtin)
+            .map(|(source, _)| source),
+        );
+    }
+    sources.extend(e.starter.inside.as_ref().map(|i| i.source.as_str()));
+    for source in sources {
+        let _ = write!(h, "<pre class=\"code\">{}</pre>", esc(source.trim()));
     }
     h.push_str("</div>\n");
     h

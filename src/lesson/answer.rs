@@ -53,7 +53,7 @@ pub struct Exercise {
     /// What to do, in both languages.
     pub task: crate::vocabulary::Text,
     /// The code the student starts from (it compiles, and does not pass yet).
-    pub starter: pipeline::scene::ObjectShader,
+    pub starter: pipeline::scene::StudentCode,
     /// How many colour steps (of 255) a pixel may differ from the reference and still match.
     pub tolerance: f32,
 }

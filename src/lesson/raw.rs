@@ -48,6 +48,8 @@ pub struct RawScene {
 pub struct RawShader {
     pub vertex: Option<Spanned<String>>,
     pub fragment: Option<Spanned<String>>,
+    /// `bool inside(vec2 p, vec2 a, vec2 b, vec2 c)`, which the rasterizer calls per sample.
+    pub inside: Option<Spanned<String>>,
 }
 
 /// One `[[scene.figures]]` entry: an articulated model and its joint angles in degrees.

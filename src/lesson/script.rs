@@ -8,7 +8,6 @@ mod student;
 use std::path::Path;
 
 use pipeline::buffers::BufferKind;
-use pipeline::scene::ObjectShader;
 use toml::Spanned;
 
 use super::param::{self, Animation, Value};
@@ -73,8 +72,9 @@ pub struct Step {
     /// The depth buffer's grey ramp `[black, white]` in window depth (`None`: the nearest and
     /// farthest depth present).
     pub depth_range: Option<[f32; 2]>,
-    /// The shaders every object runs from this step on (`None`: as the steps before left them).
-    pub shader: Option<ObjectShader>,
+    /// The shaders and inside test every object runs from this step on (`None`: as the steps
+    /// before left them).
+    pub shader: Option<pipeline::scene::StudentCode>,
     /// A question for self-study.
     pub question: Option<Text>,
     /// The value the question asks for, which the student types (`expect = …`).
@@ -162,13 +162,13 @@ impl Lesson {
                 // Checked at load time; a failure here leaves the value as it was.
                 let _ = param::apply(&mut spec, name, value);
             }
-            if let Some(shader) = &step.shader {
-                spec.scene.set_shaders(shader);
+            if let Some(code) = &step.shader {
+                spec.scene.run_code(code);
             }
         }
         // An exercise's starter draws its own step only.
         if let Some(e) = self.steps.get(k).and_then(|s| s.exercise.as_ref()) {
-            spec.scene.set_shaders(&e.starter);
+            spec.scene.run_code(&e.starter);
         }
         spec
     }
@@ -328,8 +328,8 @@ impl Checker<'_> {
             .shader
             .as_ref()
             .and_then(|sh| super::validate::shaders::shader(self, sh, base));
-        if let Some(shader) = &shader {
-            spec.scene.set_shaders(shader);
+        if let Some(code) = &shader {
+            spec.scene.run_code(code);
         }
         let animate = r
             .animate

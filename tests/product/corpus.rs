@@ -128,6 +128,12 @@ const LESSONS: &[(&str, usize, usize, &str)] = &[
         "`expect` takes a number (expect = 0.64), a vector",
     ),
     (
+        "lesson-inside-misnamed",
+        15,
+        1,
+        "inside test: the rasterizer calls `bool inside(vec2 p, vec2 a, vec2 b, vec2 c)`",
+    ),
+    (
         "lesson-tolerance-negative",
         15,
         13,

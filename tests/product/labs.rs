@@ -87,6 +87,24 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
                 0.0, 0.0, 2.0 * zFar * zNear / (zNear - zFar), 0.0);",
     ),
     (
+        "07-rasterization",
+        "Lab: the inside test",
+        "    // TODO: all three edges, and a tie (edge = 0.0) inside only on a top edge
+    // (b.y == a.y, going left) or a left edge (going down).
+    return edge(a, b, p) >= 0.0;",
+        "    vec2 corner[3] = vec2[3](a, b, c);
+    for (int i = 0; i < 3; i++) {
+        vec2 from = corner[i];
+        vec2 to = corner[(i + 1) % 3];
+        float e = edge(from, to, p);
+        bool top_left = (to.y == from.y && to.x < from.x) || to.y < from.y;
+        if (e < 0.0 || (e == 0.0 && !top_left)) {
+            return false;
+        }
+    }
+    return true;",
+    ),
+    (
         "10-blinn-phong",
         "Lab: the specular term in a fragment shader",
         "        // TODO: the specular term, where n·l > 0.",
@@ -105,7 +123,15 @@ pub(crate) fn solved_source(session: &pipelens::app::session::Session, fragment:
         .iter()
         .find(|(id, title, ..)| *id == lesson.id && *title == step.title.en)
         .expect("the lab has a solution");
-    let programs = &step.exercise.as_ref().expect("a lab").starter.programs;
+    let programs = &step
+        .exercise
+        .as_ref()
+        .expect("a lab")
+        .starter
+        .shader
+        .as_ref()
+        .expect("a shader lab")
+        .programs;
     let source = if fragment {
         &programs.fragment.source
     } else {
@@ -120,6 +146,7 @@ fn compared(spec: &pipelens::lesson::SceneSpec, tolerance: f32) -> pipeline::cap
     let mut own = spec.scene.clone();
     for o in &mut own.objects {
         o.shader = None;
+        o.inside = None;
     }
     let reference = pipeline::render(&own, &spec.settings).expect("the reference renders");
     mine.difference(&reference, tolerance).expect("same size")
@@ -146,21 +173,31 @@ fn every_lab_starter_fails_and_its_solution_passes() {
                 .unwrap_or_else(|| {
                     panic!("{name}: no reference solution in tests/product/labs.rs")
                 });
-            let programs = &exercise.starter.programs;
-            assert!(
-                programs.fragment.source.contains(todo) || programs.vertex.source.contains(todo),
-                "{name}: the starter has no line {todo:?}"
-            );
-            let solved = pipeline::shader::link(
-                Some(&programs.vertex.source.replace(todo, solution)),
-                Some(&programs.fragment.source.replace(todo, solution)),
-            )
-            .unwrap_or_else(|e| panic!("{name}: the solution does not compile: {e:?}"));
             let mut spec = spec.clone();
-            spec.scene.set_shaders(&ObjectShader {
-                programs: Arc::new(solved),
-                time: 0.0,
-            });
+            let starter_code = &exercise.starter;
+            let mut found = false;
+            if let Some(shader) = &starter_code.shader {
+                let programs = &shader.programs;
+                found |= programs.fragment.source.contains(todo)
+                    || programs.vertex.source.contains(todo);
+                let solved = pipeline::shader::link(
+                    Some(&programs.vertex.source.replace(todo, solution)),
+                    Some(&programs.fragment.source.replace(todo, solution)),
+                )
+                .unwrap_or_else(|e| panic!("{name}: the solution does not compile: {e:?}"));
+                spec.scene.set_shaders(&ObjectShader {
+                    programs: Arc::new(solved),
+                    time: 0.0,
+                });
+            }
+            if let Some(inside) = &starter_code.inside {
+                found |= inside.source.contains(todo);
+                let solved =
+                    pipeline::shader::compile_inside(&inside.source.replace(todo, solution))
+                        .unwrap_or_else(|e| panic!("{name}: the solution does not compile: {e:?}"));
+                spec.scene.set_inside(&solved);
+            }
+            assert!(found, "{name}: the starter has no line {todo:?}");
             let solution = compared(&spec, exercise.tolerance);
             assert!(
                 solution.passed(),
@@ -209,6 +246,9 @@ fn a_lab_in_the_app_says_not_yet_then_passed_and_keeps_the_code() {
         .current_exercise()
         .expect("a lab")
         .starter
+        .shader
+        .as_ref()
+        .expect("a shader lab")
         .programs
         .vertex
         .source
@@ -233,7 +273,10 @@ fn a_lab_in_the_app_says_not_yet_then_passed_and_keeps_the_code() {
     let lesson = crate::app::lesson_of(&h);
     let progress = &h.state().session.progress;
     assert!(progress.passed(&lesson, k));
-    let (_, fragment) = progress.code(&lesson, k).expect("the code is kept");
+    let (_, fragment) = progress
+        .code(&lesson, k)
+        .and_then(|c| c.shaders)
+        .expect("the code is kept");
     assert!(fragment.contains("pow(max(dot(n, h), 0.0), shininess)"));
 }
 
@@ -294,7 +337,7 @@ fn other_correct_solutions_pass_too() {
     return mat4(cos(a), sin(a), 0, 0, -sin(a), cos(a), 0, 0, 0, 0, 1, 0, 0, 0, 0, 1);")] {
         let e = lesson.steps[k].exercise.as_ref().expect("a lab");
         let todo = todo_of(&lesson.steps[k].title.en);
-        let p = &e.starter.programs;
+        let p = &e.starter.shader.as_ref().expect("a shader lab").programs;
         let solved = pipeline::shader::link(Some(&p.vertex.source.replace(todo, variant)), Some(&p.fragment.source)).expect("compiles");
         let mut spec = lesson.spec_at(k);
         spec.scene.set_shaders(&ObjectShader { programs: Arc::new(solved), time: 0.0 });
@@ -328,7 +371,7 @@ fn the_lab_template_fails_as_written_and_passes_when_done() {
         !compared(&spec, e.tolerance).passed(),
         "the starter passes already"
     );
-    let p = &e.starter.programs;
+    let p = &e.starter.shader.as_ref().expect("a shader lab").programs;
     let solved = pipeline::shader::link(
         Some(&p.vertex.source),
         Some(&p.fragment.source.replace(
@@ -344,4 +387,95 @@ fn the_lab_template_fails_as_written_and_passes_when_done() {
     });
     let d = compared(&spec, e.tolerance);
     assert!(d.passed(), "{} of {} pixels", d.matching, d.total);
+}
+
+/// The inside-test lab is decided by its ties: the square's sides and diagonal lie on pixel
+/// centres, so an `inside` that takes every tie (E ≥ 0) or none (E > 0) fails, and only the
+/// top-left rule passes.
+#[test]
+fn the_inside_lab_fails_a_test_that_takes_every_tie_or_none() {
+    let path = crate::support::repo().join("lessons/07-rasterization.toml");
+    let Ok(Document::Lesson(lesson)) = pipelens::lesson::load_file(&path) else {
+        panic!("lesson 07 loads");
+    };
+    let k = lesson
+        .steps
+        .iter()
+        .position(|s| s.title.en == "Lab: the inside test")
+        .expect("the lab");
+    let e = lesson.steps[k].exercise.as_ref().expect("a lab");
+    for (ties, compare) in [("every tie", ">="), ("no tie", ">")] {
+        let source = format!(
+            "float edge(vec2 a, vec2 b, vec2 p) {{
+    return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}}
+bool inside(vec2 p, vec2 a, vec2 b, vec2 c) {{
+    return edge(a, b, p) {compare} 0.0 && edge(b, c, p) {compare} 0.0 && edge(c, a, p) {compare} 0.0;
+}}
+"
+        );
+        let mut spec = lesson.spec_at(k);
+        spec.scene
+            .set_inside(&pipeline::shader::compile_inside(&source).expect("compiles"));
+        let d = compared(&spec, e.tolerance);
+        assert!(!d.passed(), "a test that takes {ties} passes");
+        assert!(d.coverage_differs > 0, "{ties}: {d:?}");
+    }
+}
+
+/// The inside-test lab in the app: the shader panel opens on the inside test's tab, the
+/// starter's frame is "not yet", the solution passes, and the test that passed comes back when
+/// the step is entered again.
+#[test]
+fn the_inside_lab_in_the_app_passes_and_keeps_the_inside_test() {
+    use egui_kittest::kittest::Queryable;
+    use pipelens::app::session::Command;
+    let path = crate::support::repo().join("lessons/07-rasterization.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    let k = crate::app::go_to_last_step(&mut h);
+    h.state_mut().panels.shader = true;
+    h.run_steps(4);
+    assert!(h.query_by_label("Inside test").is_some(), "the tab is there");
+    assert!(
+        h.query_by_label_contains("Not yet: 363 of 384 pixels match")
+            .is_some()
+    );
+    let (_, _, todo, solution) = SOLUTIONS
+        .iter()
+        .find(|(id, ..)| *id == "07-rasterization")
+        .expect("the lab's solution");
+    let starter = h
+        .state()
+        .session
+        .current_exercise()
+        .and_then(|e| e.starter.inside.clone())
+        .expect("an inside lab");
+    let solved = starter.source.replace(todo, solution);
+    let mut spec = h.state().session.spec.clone();
+    spec.scene
+        .set_inside(&pipeline::shader::compile_inside(&solved).expect("compiles"));
+    h.state_mut()
+        .session
+        .apply(Command::SetSpec(Box::new(spec)));
+    h.run_steps(6);
+    assert!(
+        h.query_by_label_contains("Passed: all 384 pixels match")
+            .is_some()
+    );
+    let lesson = crate::app::lesson_of(&h);
+    assert!(h.state().session.progress.passed(&lesson, k));
+    // Away and back: the step runs the test that passed, not the starter.
+    h.state_mut().session.apply(Command::PreviousStep);
+    h.run_steps(4);
+    h.state_mut().session.apply(Command::NextStep);
+    h.run_steps(6);
+    let running = h.state().session.spec.scene.objects[0]
+        .inside
+        .as_ref()
+        .map(|i| i.source.clone());
+    assert_eq!(running.as_deref(), Some(solved.as_str()));
+    assert!(
+        h.query_by_label_contains("Passed: all 384 pixels match")
+            .is_some()
+    );
 }

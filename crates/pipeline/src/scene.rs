@@ -88,6 +88,16 @@ pub struct ObjectShader {
     pub time: f32,
 }
 
+/// The code a student gives a scene: shaders for its objects, an inside test for its
+/// rasterizer, or both (a lesson's `shader = { vertex, fragment, inside }`).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct StudentCode {
+    /// The vertex and fragment shaders (`None`: pipelens' own stages).
+    pub shader: Option<ObjectShader>,
+    /// The inside test (`None`: pipelens' edge functions).
+    pub inside: Option<crate::shader::InsideTest>,
+}
+
 impl Object {
     /// What decides which of pipelens' shipped shader pairs draws this object
     /// ([`crate::shader::builtin_sources`]).
@@ -235,6 +245,16 @@ impl Scene {
     pub fn set_inside(&mut self, inside: &crate::shader::InsideTest) {
         for o in &mut self.objects {
             o.inside = Some(inside.clone());
+        }
+    }
+
+    /// Every object runs what of `code` is given; what is not given stays as it is.
+    pub fn run_code(&mut self, code: &StudentCode) {
+        if let Some(shader) = &code.shader {
+            self.set_shaders(shader);
+        }
+        if let Some(inside) = &code.inside {
+            self.set_inside(inside);
         }
     }
 

@@ -1,5 +1,6 @@
 //! The shader panel: the vertex and fragment shaders of the scene as source the student edits,
-//! with line numbers, highlighting and each message under the tabs with its line. A source that
+//! and the rasterizer's inside test when the scene runs one (an exercise of the inside test), with
+//! line numbers, highlighting and each message under the tabs with its line. A source that
 //! compiles is applied as one types (or on Ctrl+Enter); one that does not keeps the last good
 //! picture on screen. The source lives in the app (in the browser too, in the page).
 
@@ -7,73 +8,127 @@ use std::sync::Arc;
 
 use egui::{Color32, RichText, Ui};
 use pipeline::scene::ObjectShader;
-use pipeline::shader::{self, BUILTIN_FRAGMENT, BUILTIN_VERTEX, Programs, Stage, StageError};
+use pipeline::shader::{
+    self, BUILTIN_FRAGMENT, BUILTIN_VERTEX, INSIDE_SIGNATURE, Programs, ShaderError, Stage,
+    StageError,
+};
 
 use crate::app::session::{Command, Session};
 use crate::vocabulary::Lang;
 
-/// The panel's state: both sources, the tab shown, the messages of the last compile.
+/// A tab of the panel: a shader, or the inside test.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Tab {
+    /// A shader stage.
+    Shader(Stage),
+    /// The rasterizer's inside test.
+    Inside,
+}
+
+/// The panel's state: the sources, the tab shown, the messages of the last compile.
 pub struct ShaderEditor {
     /// The tab shown.
-    pub stage: Stage,
+    pub tab: Tab,
     /// The vertex shader's source.
     pub vertex: String,
     /// The fragment shader's source.
     pub fragment: String,
+    /// The inside test's source, when the scene runs one.
+    pub inside: Option<String>,
+    /// Whether the shaders draw the picture (the scene ran them, or the student applied or
+    /// edited them): an exercise of the inside test alone leaves pipelens' own shading.
+    pub shaders_in_use: bool,
     /// The messages of the last compile (empty: it compiled).
     pub errors: Vec<StageError>,
+    /// The inside test's messages of the last compile.
+    pub inside_errors: Vec<ShaderError>,
     /// What the last Save did: the files written (or downloaded), or why it failed.
     saved: Option<Result<String, String>>,
     /// The programs the sources were last taken from or applied as: when the scene's differ (a
     /// lesson step brought its own), the sources are taken from the scene again.
     shown: Option<Arc<Programs>>,
+    /// The inside test's source last taken from the scene or applied.
+    shown_inside: Option<String>,
 }
 
 impl Default for ShaderEditor {
     fn default() -> Self {
         Self {
-            stage: Stage::Fragment,
+            tab: Tab::Shader(Stage::Fragment),
             vertex: BUILTIN_VERTEX.to_owned(),
             fragment: BUILTIN_FRAGMENT.to_owned(),
+            inside: None,
+            shaders_in_use: false,
             errors: Vec::new(),
+            inside_errors: Vec::new(),
             saved: None,
             shown: None,
+            shown_inside: None,
         }
     }
 }
 
 impl ShaderEditor {
-    /// Compiles both sources; when they link, the command that gives every object of the
-    /// scene these shaders, else the messages are kept and nothing changes.
+    /// Compiles the sources in use; when they all compile (and the shaders link), the command
+    /// that gives every object of the scene this code, else the messages are kept and nothing
+    /// changes.
     pub fn apply(&mut self, session: &Session) -> Option<Command> {
-        match shader::link(Some(&self.vertex), Some(&self.fragment)) {
-            Ok(programs) => {
-                self.errors.clear();
-                let programs = Arc::new(programs);
-                self.shown = Some(Arc::clone(&programs));
-                let mut spec = session.spec.clone();
-                spec.scene.set_shaders(&ObjectShader {
-                    programs,
-                    time: 0.0,
-                });
-                Some(Command::SetSpec(Box::new(spec)))
-            }
-            Err(e) => {
-                self.errors = e;
-                None
+        let mut spec = session.spec.clone();
+        self.errors.clear();
+        self.inside_errors.clear();
+        if self.shaders_in_use || spec.scene.has_shaders() {
+            match shader::link(Some(&self.vertex), Some(&self.fragment)) {
+                Ok(programs) => {
+                    let programs = Arc::new(programs);
+                    self.shown = Some(Arc::clone(&programs));
+                    self.shaders_in_use = true;
+                    spec.scene.set_shaders(&ObjectShader {
+                        programs,
+                        time: 0.0,
+                    });
+                }
+                Err(e) => self.errors = e,
             }
         }
+        if let Some(source) = &self.inside {
+            match shader::compile_inside(source) {
+                Ok(test) => {
+                    self.shown_inside = Some(source.clone());
+                    spec.scene.set_inside(&test);
+                }
+                Err(e) => self.inside_errors = e,
+            }
+        }
+        (self.errors.is_empty() && self.inside_errors.is_empty())
+            .then(|| Command::SetSpec(Box::new(spec)))
     }
 
-    /// Takes the scene's own shaders (its first object's) when they are not the ones shown.
+    /// Takes the scene's own code (its first object's) when it is not the code shown.
     pub(crate) fn load(&mut self, session: &Session) {
-        let Some(sh) = session
-            .spec
-            .scene
-            .objects
+        let objects = &session.spec.scene.objects;
+        let inside = objects
             .iter()
-            .find_map(|o| o.shader.as_ref())
-        else {
+            .find_map(|o| o.inside.as_ref())
+            .map(|i| i.source.clone());
+        if inside.is_none() {
+            // A step without an inside test: its tab goes.
+            self.inside = None;
+            self.shown_inside = None;
+            self.inside_errors.clear();
+            if self.tab == Tab::Inside {
+                self.tab = Tab::Shader(Stage::Fragment);
+            }
+        } else if inside != self.shown_inside {
+            self.inside.clone_from(&inside);
+            self.shown_inside = inside;
+            self.inside_errors.clear();
+            self.tab = Tab::Inside;
+        }
+        let Some(sh) = objects.iter().find_map(|o| o.shader.as_ref()) else {
+            if self.shown.take().is_some() {
+                // Back to pipelens' own shading (a step without shaders).
+                self.shaders_in_use = false;
+            }
             return;
         };
         if self
@@ -86,6 +141,7 @@ impl ShaderEditor {
         self.vertex.clone_from(&sh.programs.vertex.source);
         self.fragment.clone_from(&sh.programs.fragment.source);
         self.errors.clear();
+        self.shaders_in_use = true;
         self.shown = Some(Arc::clone(&sh.programs));
     }
 }
@@ -101,20 +157,7 @@ pub fn ui(
     let lang = session.lang;
     editor.load(session);
     let mut apply = false;
-    ui.horizontal(|ui| {
-        for (stage, en, zh) in [
-            (Stage::Vertex, "Vertex shader", "顶点着色器"),
-            (Stage::Fragment, "Fragment shader", "片元着色器"),
-        ] {
-            let failed = editor.errors.iter().any(|e| e.stage == stage);
-            let label = if failed {
-                format!("{} (!)", lang.tr(en, zh))
-            } else {
-                lang.tr(en, zh).to_owned()
-            };
-            ui.selectable_value(&mut editor.stage, stage, label);
-        }
-    });
+    tabs(ui, editor, lang);
     ui.horizontal(|ui| {
         apply |= ui
             .button(lang.tr("Apply", "应用"))
@@ -142,6 +185,7 @@ pub fn ui(
                 .unwrap_or((BUILTIN_VERTEX, BUILTIN_FRAGMENT));
             editor.vertex = vertex.to_owned();
             editor.fragment = fragment.to_owned();
+            editor.shaders_in_use = true;
             apply = true;
         }
         if ui
@@ -165,17 +209,39 @@ pub fn ui(
         None => {}
     }
     messages(ui, editor, session, lang);
-    let source = match editor.stage {
-        Stage::Vertex => &mut editor.vertex,
-        Stage::Fragment => &mut editor.fragment,
+    let tab = editor.tab;
+    let (source, errors): (&mut String, Vec<(usize, &str)>) = match (tab, &mut editor.inside) {
+        (Tab::Inside, Some(inside)) => (
+            inside,
+            editor
+                .inside_errors
+                .iter()
+                .map(|e| (e.line, e.message.as_str()))
+                .collect(),
+        ),
+        (tab, _) => {
+            // The inside tab without an inside test (never shown so): the fragment shader.
+            let stage = match tab {
+                Tab::Shader(stage) => stage,
+                Tab::Inside => Stage::Fragment,
+            };
+            let source = match stage {
+                Stage::Vertex => &mut editor.vertex,
+                Stage::Fragment => &mut editor.fragment,
+            };
+            let errors = editor
+                .errors
+                .iter()
+                .filter(|e| e.stage == stage)
+                .map(|e| (e.error.line, e.error.message.as_str()))
+                .collect();
+            (source, errors)
+        }
     };
-    let errors: Vec<(usize, &str)> = editor
-        .errors
-        .iter()
-        .filter(|e| e.stage == editor.stage)
-        .map(|e| (e.error.line, e.error.message.as_str()))
-        .collect();
-    let edited = code(ui, (source, editor.stage), &errors);
+    let edited = code(ui, (source, tab), &errors);
+    if edited && matches!(tab, Tab::Shader(_)) {
+        editor.shaders_in_use = true;
+    }
     apply |= ui.input(|i| i.modifiers.ctrl && i.key_pressed(egui::Key::Enter));
     if edited || apply {
         editor.apply(session)
@@ -184,13 +250,57 @@ pub fn ui(
     }
 }
 
+/// What the inside test's tab says when hovered, in English and Chinese.
+const INSIDE_TIP: (&str, &str) = (
+    "The rasterizer calls it for every sample of a triangle's bounding box: p the sample, a, b, c the corners (window pixels, y up, counter-clockwise). It decides coverage in place of pipelens' edge functions E_i(p) ≥ 0 with the top-left rule.",
+    "光栅化器对三角形包围盒内的每个采样点调用它：p 是采样点，a、b、c 是顶点（窗口像素坐标，y 向上，逆时针）。它代替 pipelens 的边函数 E_i(p) ≥ 0 及左上规则来决定覆盖。",
+);
+
+/// The tabs: the inside test (when the scene runs one), the vertex and the fragment shader,
+/// each marked when its source does not compile.
+fn tabs(ui: &mut Ui, editor: &mut ShaderEditor, lang: Lang) {
+    let marked = |label: &str, failed: bool| {
+        if failed {
+            format!("{label} (!)")
+        } else {
+            label.to_owned()
+        }
+    };
+    ui.horizontal(|ui| {
+        if editor.inside.is_some() {
+            let label = marked(
+                lang.tr("Inside test", "内部测试 inside"),
+                !editor.inside_errors.is_empty(),
+            );
+            let tip = format!(
+                "{INSIDE_SIGNATURE}\n{}",
+                lang.tr(INSIDE_TIP.0, INSIDE_TIP.1)
+            );
+            ui.selectable_value(&mut editor.tab, Tab::Inside, label)
+                .on_hover_text(tip);
+        }
+        for (stage, en, zh) in [
+            (Stage::Vertex, "Vertex shader", "顶点着色器"),
+            (Stage::Fragment, "Fragment shader", "片元着色器"),
+        ] {
+            let failed = editor.errors.iter().any(|e| e.stage == stage);
+            let label = marked(lang.tr(en, zh), failed);
+            ui.selectable_value(&mut editor.tab, Tab::Shader(stage), label);
+        }
+    });
+}
+
 /// Both sources as files (downloads in the browser): what was written, or why not.
 fn save(editor: &ShaderEditor, dir: &std::path::Path) -> Result<String, String> {
     let mut written = Vec::new();
-    for (name, text) in [
+    let mut files = vec![
         ("shader.vert", &editor.vertex),
         ("shader.frag", &editor.fragment),
-    ] {
+    ];
+    if let Some(inside) = &editor.inside {
+        files.push(("inside.glsl", inside));
+    }
+    for (name, text) in files {
         written.push(crate::app::platform::download(
             name,
             text.as_bytes(),
@@ -217,9 +327,15 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
         );
         return;
     }
-    if editor.errors.is_empty() {
+    if editor.errors.is_empty() && editor.inside_errors.is_empty() {
         // Until the source is applied (or edited), pipelens' own shading draws the picture.
-        let text = if session.spec.scene.has_shaders() {
+        let inside = session.spec.scene.objects.iter().any(|o| o.inside.is_some());
+        let text = if inside && !session.spec.scene.has_shaders() {
+            lang.tr(
+                "Compiled: the rasterizer asks this inside test which samples each triangle covers; the shading is pipelens' own.",
+                "已编译：光栅化器用这个内部测试判断每个三角形覆盖哪些采样点；着色仍由 pipelens 完成。",
+            )
+        } else if session.spec.scene.has_shaders() {
             lang.tr(
                 "Compiled: the picture is drawn with these shaders.",
                 "已编译：画面由这些着色器绘制。",
@@ -240,6 +356,19 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
         ))
         .color(ui.visuals().error_fg_color),
     );
+    for e in &editor.inside_errors {
+        ui.label(
+            RichText::new(format!(
+                "{} {}:{}: {}",
+                lang.tr("inside test", "内部测试"),
+                e.line,
+                e.column,
+                e.message
+            ))
+            .monospace()
+            .color(ui.visuals().error_fg_color),
+        );
+    }
     for e in &editor.errors {
         ui.label(
             RichText::new(format!(
@@ -257,7 +386,7 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
 
 /// The source with line numbers (a line with a message marked), highlighted as C-like code,
 /// each message written in red at the end of its line. Returns whether it was edited.
-fn code(ui: &mut Ui, (source, stage): (&mut String, Stage), errors: &[(usize, &str)]) -> bool {
+fn code(ui: &mut Ui, (source, tab): (&mut String, Tab), errors: &[(usize, &str)]) -> bool {
     let mut changed = false;
     egui::ScrollArea::both()
         .id_salt("shader source")
@@ -297,7 +426,7 @@ fn code(ui: &mut Ui, (source, stage): (&mut String, Stage), errors: &[(usize, &s
                 // A fixed id: the messages above come and go as one types, and an id counted
                 // from the widgets before it would change with them, taking the focus away.
                 let out = egui::TextEdit::multiline(source)
-                    .id_salt(("shader source", stage))
+                    .id_salt(("shader source", format!("{tab:?}")))
                     .code_editor()
                     .desired_rows(lines.max(24))
                     .desired_width(640.0)

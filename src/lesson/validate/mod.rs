@@ -285,13 +285,19 @@ pub fn scene(
         .filter_map(|l| lights::light(&mut c, l))
         .collect();
     let mut objects: Vec<pipeline::scene::Object> = objects;
-    if let Some(shader) = s
+    if let Some(code) = s
         .shader
         .as_ref()
         .and_then(|sh| shaders::shader(&mut c, sh, base))
     {
-        for o in objects.iter_mut().filter(|o| o.shader.is_none()) {
-            o.shader = Some(shader.clone());
+        // An object's own code comes first.
+        for o in &mut objects {
+            if o.shader.is_none() {
+                o.shader.clone_from(&code.shader);
+            }
+            if o.inside.is_none() {
+                o.inside.clone_from(&code.inside);
+            }
         }
     }
     let light_names = lights::names(&mut c, &s.lights);

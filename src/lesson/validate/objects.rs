@@ -100,8 +100,11 @@ pub(super) fn object(
         };
     }
     let label = raw.label.as_ref().map(|l| c.text_of("label", l));
-    if let Some(sh) = &raw.shader {
-        object.shader = super::shaders::shader(c, sh, base);
+    if let Some(sh) = &raw.shader
+        && let Some(code) = super::shaders::shader(c, sh, base)
+    {
+        object.shader = code.shader;
+        object.inside = code.inside;
     }
     Some((object, label))
 }

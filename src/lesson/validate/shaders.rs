@@ -1,12 +1,14 @@
-//! `shader = { vertex = "x.vert", fragment = "x.frag" }` for the scene or an object: each stage
-//! a GLSL file beside the lesson, or the GLSL itself written in the lesson; linked by
-//! [`pipeline::shader::link`], every message at its line and column in the file it is in.
+//! `shader = { vertex = "x.vert", fragment = "x.frag", inside = "inside.glsl" }` for the scene
+//! or an object: each stage (and the rasterizer's inside test) a GLSL file beside the lesson, or
+//! the GLSL itself written in the lesson; linked by [`pipeline::shader::link`] (the inside test
+//! compiled by [`pipeline::shader::compile_inside`]), every message at its line and column in the
+//! file it is in.
 
 use std::ops::Range;
 use std::path::Path;
 use std::sync::Arc;
 
-use pipeline::scene::ObjectShader;
+use pipeline::scene::{ObjectShader, StudentCode};
 use pipeline::shader::Stage;
 use toml::Spanned;
 
@@ -52,58 +54,96 @@ fn source(c: &mut Checker<'_>, v: &Spanned<String>, base: &Path) -> Option<(Stri
     Some((written.clone(), Origin::Inline(at, v.span())))
 }
 
-/// The linked shaders `raw` names, or diagnostics (in the shader files or the lesson).
+/// The code `raw` names: linked shaders (a stage left out is pipelens' own) and the inside
+/// test, or diagnostics (in the shader files or the lesson).
 pub(in crate::lesson) fn shader(
     c: &mut Checker<'_>,
     raw: &Spanned<RawShader>,
     base: &Path,
-) -> Option<ObjectShader> {
+) -> Option<StudentCode> {
     let r = raw.get_ref();
-    if r.vertex.is_none() && r.fragment.is_none() {
-        c.error(raw.span(), "`shader` needs a `vertex` or a `fragment` shader (a file such as \"toon.frag\", or the GLSL itself)");
+    if r.vertex.is_none() && r.fragment.is_none() && r.inside.is_none() {
+        c.error(raw.span(), "`shader` needs a `vertex` or a `fragment` shader (a file such as \"toon.frag\", or the GLSL itself), or an `inside` test");
         return None;
     }
     let vertex = r.vertex.as_ref().map(|v| source(c, v, base));
     let fragment = r.fragment.as_ref().map(|v| source(c, v, base));
+    let inside = r.inside.as_ref().map(|v| source(c, v, base));
     // A stage that named a missing file has its diagnostic already.
-    if matches!(vertex, Some(None)) || matches!(fragment, Some(None)) {
+    if [&vertex, &fragment, &inside]
+        .iter()
+        .any(|s| matches!(s, Some(None)))
+    {
         return None;
     }
-    let (vertex, fragment) = (vertex.flatten(), fragment.flatten());
-    match pipeline::shader::link(
-        vertex.as_ref().map(|v| v.0.as_str()),
-        fragment.as_ref().map(|f| f.0.as_str()),
-    ) {
-        Ok(programs) => Some(ObjectShader {
-            programs: Arc::new(programs),
-            time: 0.0,
-        }),
-        Err(errors) => {
-            for e in errors {
-                let given = match e.stage {
-                    Stage::Vertex => vertex.as_ref(),
-                    Stage::Fragment => fragment.as_ref(),
-                };
-                let message = format!("{} shader: {}", e.stage.name(), e.error.message);
-                match given {
-                    Some((text, Origin::File(name))) => {
-                        c.found
-                            .push(Diagnostic::at(name, text, e.error.span.clone(), message))
-                    }
-                    Some((_, Origin::Inline(Some(at), _))) => {
-                        c.error(at + e.error.span.start..at + e.error.span.end, message);
-                    }
-                    Some((_, Origin::Inline(None, span))) => {
-                        c.error(
-                            span.clone(),
-                            format!("{message} (line {} of the shader)", e.error.line),
-                        );
-                    }
-                    // pipelens' own shader: it compiles, so only a link error can point here.
-                    None => c.error(raw.span(), message),
+    let (vertex, fragment, inside) = (vertex.flatten(), fragment.flatten(), inside.flatten());
+    let mut ok = true;
+    let shader = if vertex.is_none() && fragment.is_none() {
+        None
+    } else {
+        match pipeline::shader::link(
+            vertex.as_ref().map(|v| v.0.as_str()),
+            fragment.as_ref().map(|f| f.0.as_str()),
+        ) {
+            Ok(programs) => Some(ObjectShader {
+                programs: Arc::new(programs),
+                time: 0.0,
+            }),
+            Err(errors) => {
+                for e in errors {
+                    let given = match e.stage {
+                        Stage::Vertex => vertex.as_ref(),
+                        Stage::Fragment => fragment.as_ref(),
+                    };
+                    let message = format!("{} shader: {}", e.stage.name(), e.error.message);
+                    place(c, given, raw.span(), &e.error, message);
                 }
+                ok = false;
+                None
             }
+        }
+    };
+    let inside = match inside
+        .as_ref()
+        .map(|i| pipeline::shader::compile_inside(&i.0))
+    {
+        Some(Ok(test)) => Some(test),
+        Some(Err(errors)) => {
+            for e in errors {
+                let message = format!("inside test: {}", e.message);
+                place(c, inside.as_ref(), raw.span(), &e, message);
+            }
+            ok = false;
             None
         }
+        None => None,
+    };
+    ok.then_some(StudentCode { shader, inside })
+}
+
+/// A shader's message where its source is: in its file, at its place in the lesson, or at the
+/// `shader` table (pipelens' own stage: only a link error can point there).
+fn place(
+    c: &mut Checker<'_>,
+    given: Option<&(String, Origin)>,
+    table: Range<usize>,
+    error: &pipeline::shader::ShaderError,
+    message: String,
+) {
+    match given {
+        Some((text, Origin::File(name))) => {
+            c.found
+                .push(Diagnostic::at(name, text, error.span.clone(), message));
+        }
+        Some((_, Origin::Inline(Some(at), _))) => {
+            c.error(at + error.span.start..at + error.span.end, message);
+        }
+        Some((_, Origin::Inline(None, span))) => {
+            c.error(
+                span.clone(),
+                format!("{message} (line {} of the shader)", error.line),
+            );
+        }
+        None => c.error(table, message),
     }
 }

@@ -58,7 +58,10 @@ fn an_inside_test_with_the_top_left_rule_covers_pipelens_samples_exactly() {
         let test = compile_inside(TOP_LEFT).expect("the top-left test compiles");
         scene.set_inside(&test);
         let student = render(&scene, &settings);
-        assert_eq!(student.samples.triangle, own.samples.triangle, "{samples:?}");
+        assert_eq!(
+            student.samples.triangle, own.samples.triangle,
+            "{samples:?}"
+        );
         assert_eq!(cover_counts(&student), cover_counts(&own), "{samples:?}");
         // The shared diagonal and the square's sides: ties, each sample once.
         let (sum, distinct) = cover_counts(&student);
@@ -100,9 +103,9 @@ fn a_test_that_answers_false_covers_nothing_and_a_mistake_is_a_message_at_its_li
     let misnamed = "bool in_triangle(vec2 p, vec2 a, vec2 b, vec2 c) {\n    return true;\n}\n";
     let errors = compile_inside(misnamed).expect_err("the rasterizer calls `inside`");
     assert!(
-        errors
-            .iter()
-            .any(|e| e.message.contains("bool inside(vec2 p, vec2 a, vec2 b, vec2 c)")),
+        errors.iter().any(|e| e
+            .message
+            .contains("bool inside(vec2 p, vec2 a, vec2 b, vec2 c)")),
         "{errors:?}"
     );
 }
