@@ -53,6 +53,16 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
     return mix(bottom, top, st.y);",
     ),
     (
+        "02-arbitrary-axis",
+        "Lab: Rodrigues' formula",
+        "    // TODO: n of length 1, then the three terms (mat3 takes its numbers column by column).
+    return mat3(1.0);",
+        "    vec3 n = normalize(axis);
+    float t = radians(deg);
+    mat3 cross_n = mat3(0.0, n.z, -n.y, -n.z, 0.0, n.x, n.y, -n.x, 0.0);
+    return cos(t) * mat3(1.0) + (1.0 - cos(t)) * outerProduct(n, n) + sin(t) * cross_n;",
+    ),
+    (
         "03-frames-lookat",
         "Lab: LookAt from n, u, v",
         "    // TODO: n, u, v, then the matrix (mat4 takes its numbers column by column).
@@ -435,7 +445,10 @@ fn the_inside_lab_in_the_app_passes_and_keeps_the_inside_test() {
     let k = crate::app::go_to_last_step(&mut h);
     h.state_mut().panels.shader = true;
     h.run_steps(4);
-    assert!(h.query_by_label("Inside test").is_some(), "the tab is there");
+    assert!(
+        h.query_by_label("Inside test").is_some(),
+        "the tab is there"
+    );
     assert!(
         h.query_by_label_contains("Not yet: 363 of 384 pixels match")
             .is_some()

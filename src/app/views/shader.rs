@@ -329,7 +329,12 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
     }
     if editor.errors.is_empty() && editor.inside_errors.is_empty() {
         // Until the source is applied (or edited), pipelens' own shading draws the picture.
-        let inside = session.spec.scene.objects.iter().any(|o| o.inside.is_some());
+        let inside = session
+            .spec
+            .scene
+            .objects
+            .iter()
+            .any(|o| o.inside.is_some());
         let text = if inside && !session.spec.scene.has_shaders() {
             lang.tr(
                 "Compiled: the rasterizer asks this inside test which samples each triangle covers; the shading is pipelens' own.",

@@ -71,7 +71,7 @@ pub struct UniformSpec {
 }
 
 /// Every uniform pipelens sets. A shader declares those it uses (`uniform mat4 model;`).
-pub const UNIFORMS: [UniformSpec; 26] = [
+pub const UNIFORMS: [UniformSpec; 29] = [
     UniformSpec {
         names: &["model", "M"],
         glsl: "mat4",
@@ -202,6 +202,21 @@ pub const UNIFORMS: [UniformSpec; 26] = [
         glsl: "vec3",
         meaning: "the object's rotation angles in degrees about x, y, z: M = T·Rz·Ry·Rx·S",
     },
+    UniformSpec {
+        names: &["axis"],
+        glsl: "vec3",
+        meaning: "the axis of the object's rotation R(n, θ), as the lesson gives it (not normalized; zero without one)",
+    },
+    UniformSpec {
+        names: &["angle"],
+        glsl: "float",
+        meaning: "the angle θ of the object's rotation about its axis, in degrees",
+    },
+    UniformSpec {
+        names: &["scale"],
+        glsl: "vec3",
+        meaning: "the object's scale factors: S = diag(sx, sy, sz)",
+    },
 ];
 
 /// The uniform called `name`, if pipelens sets one.
@@ -266,6 +281,10 @@ pub struct Uniforms {
     pub lens: [f32; 4],
     /// The object's rotation angles in degrees about x, y and z.
     pub rotation: Vec3,
+    /// The object's rotation about an axis: the axis as given and θ in degrees.
+    pub axis_angle: (Vec3, f32),
+    /// The object's scale factors.
+    pub scale: Vec3,
 }
 
 impl Default for Uniforms {
@@ -285,6 +304,8 @@ impl Default for Uniforms {
             resolution: Vec2::ONE,
             lens: [90.0, 1.0, 1.0, 10.0],
             rotation: Vec3::ZERO,
+            axis_angle: (Vec3::ZERO, 0.0),
+            scale: Vec3::ONE,
         }
     }
 }
@@ -347,6 +368,9 @@ impl Uniforms {
             "near" => floats(&self.lens[2..3]),
             "far" => floats(&self.lens[3..4]),
             "rotation" => floats(&self.rotation.to_array()),
+            "axis" => floats(&self.axis_angle.0.to_array()),
+            "angle" => floats(&[self.axis_angle.1]),
+            "scale" => floats(&self.scale.to_array()),
             "at" => floats(&self.at_up[0].to_array()),
             "up" => floats(&self.at_up[1].to_array()),
             _ => floats(&[self.time]),

@@ -169,7 +169,6 @@ pub fn supported(fun: M) -> bool {
         M::Modf
             | M::Frexp
             | M::Ldexp
-            | M::Outer
             | M::QuantizeToF16
             | M::CountTrailingZeros
             | M::CountLeadingZeros
@@ -416,6 +415,17 @@ pub fn math<'a>(
                 ];
                 for (c, x) in v.iter().enumerate() {
                     out[c * stride + l] = x.to_bits();
+                }
+            }
+        }
+        // outerProduct(c, r) = c·rᵀ: column j is c·r_j.
+        (M::Outer, _) => {
+            let (c, r) = (rows_of(0), rows_of(1));
+            for l in 0..n {
+                for (j, rj) in r.iter().enumerate() {
+                    for (i, ci) in c.iter().enumerate() {
+                        out[(j * c.len() + i) * stride + l] = (f(ci[l]) * f(rj[l])).to_bits();
+                    }
                 }
             }
         }

@@ -225,6 +225,32 @@ fn matrices_agree_with_glam() {
 }
 
 #[test]
+fn an_outer_product_is_a_column_times_a_row_as_glam_builds_it() {
+    // outerProduct(c, r) has columns c·r_j: a 3×2 product, read through a mat3×vec product.
+    let src = "#version 330 core\nin vec3 c;\nout vec4 color;\nvoid main() {\n  mat3 m = outerProduct(c, vec3(1.0, -2.0, 0.5));\n  color = vec4(m * vec3(0.3, 0.7, -1.1), m[1][2]);\n}\n";
+    let p = compile(Stage::Fragment, src);
+    let c = Vec3::new(0.4, -1.5, 2.0);
+    let (out, _) = run(
+        &p,
+        &Uniforms::default(),
+        &[vec![c.to_array().to_vec(); 4]],
+        &[],
+    )
+    .expect("runs");
+    let r = Vec3::new(1.0, -2.0, 0.5);
+    let m = Mat3::from_cols(c * r.x, c * r.y, c * r.z);
+    let want = (m * Vec3::new(0.3, 0.7, -1.1)).extend(m.y_axis.z);
+    assert!(
+        out[0]
+            .iter()
+            .zip(want.to_array())
+            .all(|(a, b)| (a - b).abs() < 1e-5),
+        "{:?} != {want:?}",
+        out[0]
+    );
+}
+
+#[test]
 fn dfdx_and_dfdy_are_differences_within_the_quad() {
     let src = "#version 330 core\nin vec2 p;\nout vec4 color;\nvoid main() { float f = p.x * p.x + 3.0 * p.y; color = vec4(dFdx(f), dFdy(f), fwidth(f), dFdxFine(f)); }\n";
     let p = compile(Stage::Fragment, src);

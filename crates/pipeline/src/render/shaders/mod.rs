@@ -101,6 +101,8 @@ fn uniforms(
         resolution: glam::Vec2::new(settings.width as f32, settings.height as f32),
         lens: lens(&scene.projection, settings),
         rotation: o.rotate_deg,
+        axis_angle: o.axis_rotation.unwrap_or((glam::Vec3::ZERO, 0.0)),
+        scale: o.scale,
     }
 }
 
