@@ -40,6 +40,15 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
         local = vec3(-du, -dv, 1.0);",
     ),
     (
+        "12-interpolation",
+        "Lab: the 1/w weights",
+        "    // TODO: u/w, v/w and 1/w, with w = clip.w. (As written: u, v and 1, the affine blend.)
+    uv_over_w = uv;
+    one_over_w = 1.0;",
+        "    uv_over_w = uv / clip.w;
+    one_over_w = 1.0 / clip.w;",
+    ),
+    (
         "13-texture-mapping",
         "Lab: bilinear filtering from texelFetch",
         "    // TODO: the four texels around (x, y) and their weights. (This reads the nearest one.)
