@@ -106,6 +106,16 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
                 0.0, 0.0, 2.0 * zFar * zNear / (zNear - zFar), 0.0);",
     ),
     (
+        "06-clipping-ndc-viewport",
+        "Lab: the viewport matrix",
+        "    // TODO: the viewport matrix (mat4 takes its numbers column by column).
+    return mat4(1.0);",
+        "    return mat4(w / 2.0, 0.0, 0.0, 0.0,
+                0.0, h / 2.0, 0.0, 0.0,
+                0.0, 0.0, 0.5, 0.0,
+                w / 2.0, h / 2.0, 0.5, 1.0);",
+    ),
+    (
         "07-rasterization",
         "Lab: the inside test",
         "    // TODO: all three edges, and a tie (edge = 0.0) inside only on a top edge
@@ -500,4 +510,45 @@ fn the_inside_lab_in_the_app_passes_and_keeps_the_inside_test() {
         h.query_by_label_contains("Passed: all 384 pixels match")
             .is_some()
     );
+}
+
+/// The viewport lab checks depth too: GAMES101's M_viewport, which leaves z in [−1, 1], does not
+/// land on gl_FragCoord (OpenGL's depth is in [0, 1]), nor does a matrix that forgets the shift.
+#[test]
+fn the_viewport_lab_fails_a_matrix_that_keeps_z_or_forgets_the_shift() {
+    let path = crate::support::repo().join("lessons/06-clipping-ndc-viewport.toml");
+    let Ok(Document::Lesson(lesson)) = pipelens::lesson::load_file(&path) else {
+        panic!("lesson 06 loads");
+    };
+    let k = lesson
+        .steps
+        .iter()
+        .position(|s| s.title.en == "Lab: the viewport matrix")
+        .expect("the lab");
+    let e = lesson.steps[k].exercise.as_ref().expect("a lab");
+    let todo = "    // TODO: the viewport matrix (mat4 takes its numbers column by column).
+    return mat4(1.0);";
+    for (wrong, matrix) in [
+        (
+            "z kept",
+            "    return mat4(w / 2.0, 0, 0, 0,  0, h / 2.0, 0, 0,  0, 0, 1, 0,  w / 2.0, h / 2.0, 0, 1);",
+        ),
+        (
+            "no shift",
+            "    return mat4(w / 2.0, 0, 0, 0,  0, h / 2.0, 0, 0,  0, 0, 0.5, 0,  0, 0, 0.5, 1);",
+        ),
+    ] {
+        let p = &e.starter.shader.as_ref().expect("a shader lab").programs;
+        let programs = pipeline::shader::link(
+            Some(&p.vertex.source),
+            Some(&p.fragment.source.replace(todo, matrix)),
+        )
+        .expect("compiles");
+        let mut spec = lesson.spec_at(k);
+        spec.scene.set_shaders(&ObjectShader {
+            programs: Arc::new(programs),
+            time: 0.0,
+        });
+        assert!(!compared(&spec, e.tolerance).passed(), "{wrong} passes");
+    }
 }

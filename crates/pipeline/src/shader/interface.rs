@@ -71,7 +71,7 @@ pub struct UniformSpec {
 }
 
 /// Every uniform pipelens sets. A shader declares those it uses (`uniform mat4 model;`).
-pub const UNIFORMS: [UniformSpec; 29] = [
+pub const UNIFORMS: [UniformSpec; 30] = [
     UniformSpec {
         names: &["model", "M"],
         glsl: "mat4",
@@ -211,6 +211,11 @@ pub const UNIFORMS: [UniformSpec; 29] = [
         names: &["angle"],
         glsl: "float",
         meaning: "the angle θ of the object's rotation about its axis, in degrees",
+    },
+    UniformSpec {
+        names: &["resolution", "viewport_size"],
+        glsl: "vec2",
+        meaning: "the viewport's width and height in pixels (W, H of the viewport transform)",
     },
     UniformSpec {
         names: &["scale"],
@@ -371,6 +376,7 @@ impl Uniforms {
             "axis" => floats(&self.axis_angle.0.to_array()),
             "angle" => floats(&[self.axis_angle.1]),
             "scale" => floats(&self.scale.to_array()),
+            "resolution" => floats(&self.resolution.to_array()),
             "at" => floats(&self.at_up[0].to_array()),
             "up" => floats(&self.at_up[1].to_array()),
             _ => floats(&[self.time]),
