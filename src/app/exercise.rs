@@ -10,6 +10,7 @@ use pipeline::buffers::Capture;
 use pipeline::capture::{Difference, FrameCapture};
 use pipeline::scene::{ObjectShader, Scene};
 use pipeline::settings::RenderSettings;
+use pipeline::shader::HookKind;
 
 use super::progress::SavedCode;
 use super::session::Session;
@@ -46,6 +47,7 @@ impl Session {
         for o in &mut scene.objects {
             o.shader = None;
             o.inside = None;
+            o.depth_test = None;
         }
         let settings = RenderSettings {
             capture: Capture::COLOR.with_pixel(self.selection.pixel),
@@ -94,6 +96,10 @@ impl Session {
                 .iter()
                 .find_map(|o| o.inside.as_ref())
                 .map(|i| i.source.clone()),
+            depth_test: objects
+                .iter()
+                .find_map(|o| o.depth_test.as_ref())
+                .map(|t| t.source.clone()),
         };
         (code != SavedCode::default()).then_some(code)
     }
@@ -119,8 +125,16 @@ impl Session {
                 time: 0.0,
             });
         }
-        if let Some(Ok(inside)) = code.inside.as_deref().map(pipeline::shader::compile_inside) {
-            spec.scene.set_inside(&inside);
+        for (kind, source) in [
+            (HookKind::Inside, &code.inside),
+            (HookKind::DepthTest, &code.depth_test),
+        ] {
+            if let Some(Ok(hook)) = source
+                .as_deref()
+                .map(|s| pipeline::shader::compile_hook(kind, s))
+            {
+                spec.scene.set_hook(&hook);
+            }
         }
     }
 }

@@ -2,6 +2,8 @@
 //! language) and a lesson or scene file dropped on the window (on the desktop its path is then
 //! watched for live reload; in the browser its bytes are read, and nothing is watched).
 
+use crate::app::views::shader::Tab;
+use pipeline::shader::HookKind;
 use std::sync::OnceLock;
 
 use egui::RichText;
@@ -127,7 +129,7 @@ impl PipelensApp {
     /// Puts a dropped shader file's source in the shader panel's tab for its stage and runs it
     /// (when it does not compile, the panel shows where, and the picture stays).
     fn load_shader(&mut self, name: &str, bytes: Result<Vec<u8>, String>) {
-        let Some(stage) = shader_stage(name) else {
+        let Some(tab) = shader_stage(name) else {
             return;
         };
         let text = bytes
@@ -137,12 +139,15 @@ impl PipelensApp {
                 let editor = &mut self.shader_editor;
                 // The other stage stays what the scene runs (an exercise's starter, say).
                 editor.load(&self.session);
-                match stage {
-                    pipeline::shader::Stage::Vertex => editor.vertex = text,
-                    pipeline::shader::Stage::Fragment => editor.fragment = text,
+                match tab {
+                    Tab::Shader(pipeline::shader::Stage::Vertex) => editor.vertex = text,
+                    Tab::Shader(pipeline::shader::Stage::Fragment) => editor.fragment = text,
+                    Tab::Hook(kind) => editor.set_hook(kind, text),
                 }
-                editor.tab = crate::app::views::shader::Tab::Shader(stage);
-                editor.shaders_in_use = true;
+                if let Tab::Shader(_) = tab {
+                    editor.shaders_in_use = true;
+                }
+                editor.tab = tab;
                 self.panels.shader = true;
                 if let Some(c) = editor.apply(&self.session) {
                     self.commands.push(c);
@@ -177,12 +182,23 @@ impl PipelensApp {
 }
 
 /// The shader stage a file's name says (`.vert`, `.frag`), if it names one.
-fn shader_stage(name: &str) -> Option<pipeline::shader::Stage> {
+fn shader_stage(name: &str) -> Option<Tab> {
     let lower = name.to_ascii_lowercase();
+    let stem = std::path::Path::new(&lower)
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .unwrap_or_default()
+        .to_owned();
     if lower.ends_with(".vert") {
-        Some(pipeline::shader::Stage::Vertex)
+        Some(Tab::Shader(pipeline::shader::Stage::Vertex))
     } else if lower.ends_with(".frag") {
-        Some(pipeline::shader::Stage::Fragment)
+        Some(Tab::Shader(pipeline::shader::Stage::Fragment))
+    } else if lower.ends_with(".glsl") {
+        // A function the pipeline calls, saved by the panel as `inside.glsl`, `depth_test.glsl`.
+        HookKind::ALL
+            .into_iter()
+            .find(|k| stem == k.key())
+            .map(Tab::Hook)
     } else {
         None
     }

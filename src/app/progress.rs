@@ -33,6 +33,9 @@ pub struct LessonProgress {
     /// The inside test the student last ran in each exercise step that has one.
     #[serde(default)]
     pub inside: BTreeMap<usize, String>,
+    /// The depth test the student last ran in each exercise step that has one.
+    #[serde(default)]
+    pub depth_test: BTreeMap<usize, String>,
 }
 
 /// The code a student ran in an exercise step: the shaders, the inside test, or both.
@@ -42,6 +45,8 @@ pub struct SavedCode {
     pub shaders: Option<(String, String)>,
     /// The inside test's source.
     pub inside: Option<String>,
+    /// The depth test's source.
+    pub depth_test: Option<String>,
 }
 
 impl Progress {
@@ -78,6 +83,8 @@ impl Progress {
                 .extend(theirs.code.iter().map(|(k, v)| (*k, v.clone())));
             mine.inside
                 .extend(theirs.inside.iter().map(|(k, v)| (*k, v.clone())));
+            mine.depth_test
+                .extend(theirs.depth_test.iter().map(|(k, v)| (*k, v.clone())));
         }
     }
 
@@ -137,6 +144,9 @@ impl Progress {
         if let Some(inside) = code.inside {
             l.inside.insert(k + 1, inside);
         }
+        if let Some(test) = code.depth_test {
+            l.depth_test.insert(k + 1, test);
+        }
         if passed {
             l.passed.insert(k + 1);
         }
@@ -149,6 +159,7 @@ impl Progress {
         let code = SavedCode {
             shaders: l.code.get(&(k + 1)).cloned(),
             inside: l.inside.get(&(k + 1)).cloned(),
+            depth_test: l.depth_test.get(&(k + 1)).cloned(),
         };
         (code != SavedCode::default()).then_some(code)
     }

@@ -50,6 +50,8 @@ pub struct RawShader {
     pub fragment: Option<Spanned<String>>,
     /// `bool inside(vec2 p, vec2 a, vec2 b, vec2 c)`, which the rasterizer calls per sample.
     pub inside: Option<Spanned<String>>,
+    /// `bool depth_test(float z, float stored)`, which it calls per covered sample.
+    pub depth_test: Option<Spanned<String>>,
 }
 
 /// One `[[scene.figures]]` entry: an articulated model and its joint angles in degrees.

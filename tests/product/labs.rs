@@ -134,6 +134,13 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
     return true;",
     ),
     (
+        "09-z-buffer",
+        "Lab: the depth test",
+        "    // TODO: write the sample only when this fragment is nearer than what is stored.
+    return true;",
+        "    return z < stored;",
+    ),
+    (
         "10-blinn-phong",
         "Lab: the specular term in a fragment shader",
         "        // TODO: the specular term, where n·l > 0.",
@@ -176,6 +183,7 @@ fn compared(spec: &pipelens::lesson::SceneSpec, tolerance: f32) -> pipeline::cap
     for o in &mut own.objects {
         o.shader = None;
         o.inside = None;
+        o.depth_test = None;
     }
     let reference = pipeline::render(&own, &spec.settings).expect("the reference renders");
     mine.difference(&reference, tolerance).expect("same size")
@@ -219,12 +227,15 @@ fn every_lab_starter_fails_and_its_solution_passes() {
                     time: 0.0,
                 });
             }
-            if let Some(inside) = &starter_code.inside {
-                found |= inside.source.contains(todo);
+            for hook in [&starter_code.inside, &starter_code.depth_test]
+                .into_iter()
+                .flatten()
+            {
+                found |= hook.source.contains(todo);
                 let solved =
-                    pipeline::shader::compile_inside(&inside.source.replace(todo, solution))
+                    pipeline::shader::compile_hook(hook.kind, &hook.source.replace(todo, solution))
                         .unwrap_or_else(|e| panic!("{name}: the solution does not compile: {e:?}"));
-                spec.scene.set_inside(&solved);
+                spec.scene.set_hook(&solved);
             }
             assert!(found, "{name}: the starter has no line {todo:?}");
             let solution = compared(&spec, exercise.tolerance);

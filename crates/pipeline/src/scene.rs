@@ -77,6 +77,9 @@ pub struct Object {
     /// The student's inside test: the rasterizer asks it, not its own edge functions, which
     /// samples this object's triangles cover (see [`crate::shader::hook`]).
     pub inside: Option<crate::shader::InsideTest>,
+    /// The student's depth test: the rasterizer asks it, not the settings' comparison, which
+    /// covered samples of this object's triangles are written (see [`crate::shader::hook`]).
+    pub depth_test: Option<crate::shader::Hook>,
 }
 
 /// An object's shaders and the time their `time` uniform reads.
@@ -88,14 +91,16 @@ pub struct ObjectShader {
     pub time: f32,
 }
 
-/// The code a student gives a scene: shaders for its objects, an inside test for its
-/// rasterizer, or both (a lesson's `shader = { vertex, fragment, inside }`).
+/// The code a student gives a scene: shaders for its objects, an inside test and a depth test
+/// for its rasterizer (a lesson's `shader = { vertex, fragment, inside, depth_test }`).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct StudentCode {
     /// The vertex and fragment shaders (`None`: pipelens' own stages).
     pub shader: Option<ObjectShader>,
     /// The inside test (`None`: pipelens' edge functions).
     pub inside: Option<crate::shader::InsideTest>,
+    /// The depth test (`None`: the settings' comparison).
+    pub depth_test: Option<crate::shader::Hook>,
 }
 
 impl Object {
@@ -133,6 +138,7 @@ impl Object {
             builtin: None,
             shader: None,
             inside: None,
+            depth_test: None,
         }
     }
 
@@ -248,6 +254,30 @@ impl Scene {
         }
     }
 
+    /// Every object runs the student's function `hook` (of its kind).
+    pub fn set_hook(&mut self, hook: &crate::shader::Hook) {
+        match hook.kind {
+            crate::shader::HookKind::Inside => self.set_inside(hook),
+            crate::shader::HookKind::DepthTest => self.set_depth_test(hook),
+        }
+    }
+
+    /// The student's function of kind `kind` the scene runs (its first object's with one).
+    #[must_use]
+    pub fn hook(&self, kind: crate::shader::HookKind) -> Option<&crate::shader::Hook> {
+        self.objects.iter().find_map(|o| match kind {
+            crate::shader::HookKind::Inside => o.inside.as_ref(),
+            crate::shader::HookKind::DepthTest => o.depth_test.as_ref(),
+        })
+    }
+
+    /// Every object's covered samples are written where the student's `depth_test` says.
+    pub fn set_depth_test(&mut self, test: &crate::shader::Hook) {
+        for o in &mut self.objects {
+            o.depth_test = Some(test.clone());
+        }
+    }
+
     /// Every object runs what of `code` is given; what is not given stays as it is.
     pub fn run_code(&mut self, code: &StudentCode) {
         if let Some(shader) = &code.shader {
@@ -255,6 +285,9 @@ impl Scene {
         }
         if let Some(inside) = &code.inside {
             self.set_inside(inside);
+        }
+        if let Some(test) = &code.depth_test {
+            self.set_depth_test(test);
         }
     }
 

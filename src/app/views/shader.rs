@@ -1,5 +1,5 @@
 //! The shader panel: the vertex and fragment shaders of the scene as source the student edits,
-//! and the rasterizer's inside test when the scene runs one (an exercise of the inside test), with
+//! and the functions of the rasterizer the scene runs (an exercise of the inside or depth test), with
 //! line numbers, highlighting and each message under the tabs with its line. A source that
 //! compiles is applied as one types (or on Ctrl+Enter); one that does not keeps the last good
 //! picture on screen. The source lives in the app (in the browser too, in the page).
@@ -9,20 +9,19 @@ use std::sync::Arc;
 use egui::{Color32, RichText, Ui};
 use pipeline::scene::ObjectShader;
 use pipeline::shader::{
-    self, BUILTIN_FRAGMENT, BUILTIN_VERTEX, INSIDE_SIGNATURE, Programs, ShaderError, Stage,
-    StageError,
+    self, BUILTIN_FRAGMENT, BUILTIN_VERTEX, HookKind, Programs, ShaderError, Stage, StageError,
 };
 
 use crate::app::session::{Command, Session};
 use crate::vocabulary::Lang;
 
-/// A tab of the panel: a shader, or the inside test.
+/// A tab of the panel: a shader, or a function the pipeline calls.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Tab {
     /// A shader stage.
     Shader(Stage),
-    /// The rasterizer's inside test.
-    Inside,
+    /// The rasterizer's inside or depth test.
+    Hook(HookKind),
 }
 
 /// The panel's state: the sources, the tab shown, the messages of the last compile.
@@ -33,22 +32,41 @@ pub struct ShaderEditor {
     pub vertex: String,
     /// The fragment shader's source.
     pub fragment: String,
-    /// The inside test's source, when the scene runs one.
-    pub inside: Option<String>,
+    /// The functions the pipeline calls that the scene runs, with their sources.
+    pub hooks: Vec<HookEdit>,
     /// Whether the shaders draw the picture (the scene ran them, or the student applied or
     /// edited them): an exercise of the inside test alone leaves pipelens' own shading.
     pub shaders_in_use: bool,
     /// The messages of the last compile (empty: it compiled).
     pub errors: Vec<StageError>,
-    /// The inside test's messages of the last compile.
-    pub inside_errors: Vec<ShaderError>,
     /// What the last Save did: the files written (or downloaded), or why it failed.
     saved: Option<Result<String, String>>,
     /// The programs the sources were last taken from or applied as: when the scene's differ (a
     /// lesson step brought its own), the sources are taken from the scene again.
     shown: Option<Arc<Programs>>,
-    /// The inside test's source last taken from the scene or applied.
-    shown_inside: Option<String>,
+}
+
+/// A function the pipeline calls, as the student edits it.
+pub struct HookEdit {
+    /// Which function.
+    pub kind: HookKind,
+    /// Its source.
+    pub source: String,
+    /// Its messages of the last compile.
+    pub errors: Vec<ShaderError>,
+    /// The source last taken from the scene or applied.
+    shown: String,
+}
+
+impl HookEdit {
+    fn new(kind: HookKind, source: String) -> Self {
+        Self {
+            kind,
+            shown: source.clone(),
+            source,
+            errors: Vec::new(),
+        }
+    }
 }
 
 impl Default for ShaderEditor {
@@ -57,13 +75,11 @@ impl Default for ShaderEditor {
             tab: Tab::Shader(Stage::Fragment),
             vertex: BUILTIN_VERTEX.to_owned(),
             fragment: BUILTIN_FRAGMENT.to_owned(),
-            inside: None,
+            hooks: Vec::new(),
             shaders_in_use: false,
             errors: Vec::new(),
-            inside_errors: Vec::new(),
             saved: None,
             shown: None,
-            shown_inside: None,
         }
     }
 }
@@ -75,7 +91,9 @@ impl ShaderEditor {
     pub fn apply(&mut self, session: &Session) -> Option<Command> {
         let mut spec = session.spec.clone();
         self.errors.clear();
-        self.inside_errors.clear();
+        for h in &mut self.hooks {
+            h.errors.clear();
+        }
         if self.shaders_in_use || spec.scene.has_shaders() {
             match shader::link(Some(&self.vertex), Some(&self.fragment)) {
                 Ok(programs) => {
@@ -90,39 +108,58 @@ impl ShaderEditor {
                 Err(e) => self.errors = e,
             }
         }
-        if let Some(source) = &self.inside {
-            match shader::compile_inside(source) {
-                Ok(test) => {
-                    self.shown_inside = Some(source.clone());
-                    spec.scene.set_inside(&test);
+        for h in &mut self.hooks {
+            match shader::compile_hook(h.kind, &h.source) {
+                Ok(hook) => {
+                    h.shown.clone_from(&h.source);
+                    spec.scene.set_hook(&hook);
                 }
-                Err(e) => self.inside_errors = e,
+                Err(e) => h.errors = e,
             }
         }
-        (self.errors.is_empty() && self.inside_errors.is_empty())
+        (self.errors.is_empty() && self.hooks.iter().all(|h| h.errors.is_empty()))
             .then(|| Command::SetSpec(Box::new(spec)))
+    }
+
+    /// Puts `source` in the tab of the function `kind` (opening it), to be applied.
+    pub fn set_hook(&mut self, kind: HookKind, source: String) {
+        match self.hooks.iter_mut().find(|h| h.kind == kind) {
+            Some(h) => h.source = source,
+            None => {
+                let mut h = HookEdit::new(kind, source);
+                // Not yet what the scene runs: `load` must not take it back.
+                h.shown = String::new();
+                self.hooks.push(h);
+                self.hooks.sort_by_key(|h| h.kind as u8);
+            }
+        }
     }
 
     /// Takes the scene's own code (its first object's) when it is not the code shown.
     pub(crate) fn load(&mut self, session: &Session) {
         let objects = &session.spec.scene.objects;
-        let inside = objects
-            .iter()
-            .find_map(|o| o.inside.as_ref())
-            .map(|i| i.source.clone());
-        if inside.is_none() {
-            // A step without an inside test: its tab goes.
-            self.inside = None;
-            self.shown_inside = None;
-            self.inside_errors.clear();
-            if self.tab == Tab::Inside {
-                self.tab = Tab::Shader(Stage::Fragment);
+        for kind in HookKind::ALL {
+            let running = session.spec.scene.hook(kind).map(|h| h.source.clone());
+            let at = self.hooks.iter().position(|h| h.kind == kind);
+            match (running, at) {
+                // A step without this function: its tab goes.
+                (None, Some(k)) => {
+                    self.hooks.remove(k);
+                    if self.tab == Tab::Hook(kind) {
+                        self.tab = Tab::Shader(Stage::Fragment);
+                    }
+                }
+                (Some(source), Some(k)) if self.hooks[k].shown != source => {
+                    self.hooks[k] = HookEdit::new(kind, source);
+                    self.tab = Tab::Hook(kind);
+                }
+                (Some(source), None) => {
+                    self.hooks.push(HookEdit::new(kind, source));
+                    self.hooks.sort_by_key(|h| h.kind as u8);
+                    self.tab = Tab::Hook(kind);
+                }
+                _ => {}
             }
-        } else if inside != self.shown_inside {
-            self.inside.clone_from(&inside);
-            self.shown_inside = inside;
-            self.inside_errors.clear();
-            self.tab = Tab::Inside;
         }
         let Some(sh) = objects.iter().find_map(|o| o.shader.as_ref()) else {
             if self.shown.take().is_some() {
@@ -191,8 +228,8 @@ pub fn ui(
         if ui
             .button(lang.tr("Save", "保存"))
             .on_hover_text(lang.tr(
-                "Writes shader.vert and shader.frag into the export folder (in the browser: downloads them). A lesson reads them with shader = { vertex = \"shader.vert\", fragment = \"shader.frag\" }.",
-                "把 shader.vert 和 shader.frag 写入导出文件夹（在浏览器中：下载它们）。课程用 shader = { vertex = \"shader.vert\", fragment = \"shader.frag\" } 读取它们。",
+                "Writes shader.vert and shader.frag into the export folder, and inside.glsl or depth_test.glsl when the step runs those functions (in the browser: downloads them). A lesson reads them with shader = { vertex = \"shader.vert\", fragment = \"shader.frag\", inside = \"inside.glsl\" }.",
+                "把 shader.vert 和 shader.frag 写入导出文件夹；当前步骤运行 inside 或 depth_test 函数时，还写入 inside.glsl 或 depth_test.glsl（在浏览器中：下载它们）。课程用 shader = { vertex = \"shader.vert\", fragment = \"shader.frag\", inside = \"inside.glsl\" } 读取它们。",
             ))
             .clicked()
         {
@@ -210,20 +247,25 @@ pub fn ui(
     }
     messages(ui, editor, session, lang);
     let tab = editor.tab;
-    let (source, errors): (&mut String, Vec<(usize, &str)>) = match (tab, &mut editor.inside) {
-        (Tab::Inside, Some(inside)) => (
-            inside,
-            editor
-                .inside_errors
+    let hook = match tab {
+        Tab::Hook(kind) => editor.hooks.iter().position(|h| h.kind == kind),
+        Tab::Shader(_) => None,
+    };
+    let (source, errors): (&mut String, Vec<(usize, &str)>) = match hook {
+        Some(k) => {
+            let h = &mut editor.hooks[k];
+            let errors = h
+                .errors
                 .iter()
                 .map(|e| (e.line, e.message.as_str()))
-                .collect(),
-        ),
-        (tab, _) => {
-            // The inside tab without an inside test (never shown so): the fragment shader.
+                .collect();
+            (&mut h.source, errors)
+        }
+        None => {
+            // A function's tab whose function is gone (never shown so): the fragment shader.
             let stage = match tab {
                 Tab::Shader(stage) => stage,
-                Tab::Inside => Stage::Fragment,
+                Tab::Hook(_) => Stage::Fragment,
             };
             let source = match stage {
                 Stage::Vertex => &mut editor.vertex,
@@ -250,14 +292,31 @@ pub fn ui(
     }
 }
 
-/// What the inside test's tab says when hovered, in English and Chinese.
-const INSIDE_TIP: (&str, &str) = (
-    "The rasterizer calls it for every sample of a triangle's bounding box: p the sample, a, b, c the corners (window pixels, y up, counter-clockwise). It decides coverage in place of pipelens' edge functions E_i(p) ≥ 0 with the top-left rule.",
-    "光栅化器对三角形包围盒内的每个采样点调用它：p 是采样点，a、b、c 是顶点（窗口像素坐标，y 向上，逆时针）。它代替 pipelens 的边函数 E_i(p) ≥ 0 及左上规则来决定覆盖。",
-);
+/// What a function's tab says when hovered, in English and Chinese.
+fn hook_tip(kind: HookKind, lang: Lang) -> String {
+    let what = match kind {
+        HookKind::Inside => lang.tr(
+            "The rasterizer calls it for every sample of a triangle's bounding box: p the sample, a, b, c the corners (window pixels, y up, counter-clockwise). It decides coverage in place of pipelens' edge functions E_i(p) ≥ 0 with the top-left rule.",
+            "光栅化器对三角形包围盒内的每个采样点调用它：p 是采样点，a、b、c 是顶点（窗口像素坐标，y 向上，逆时针）。它代替 pipelens 的边函数 E_i(p) ≥ 0 及左上规则来决定覆盖。",
+        ),
+        HookKind::DepthTest => lang.tr(
+            "The rasterizer calls it for every sample a triangle covers: z the triangle's window depth there (in [0, 1]), stored what the z-buffer holds (1 where nothing was drawn). true writes z and the triangle into the sample. It replaces the depth comparison of the settings (less: z < stored).",
+            "光栅化器对三角形覆盖的每个采样点调用它：z 是三角形在该处的窗口深度（在 [0, 1] 内），stored 是深度缓冲中已存的值（尚未绘制处为 1）。返回 true 则把 z 和该三角形写入采样点。它代替设置中的深度比较（less：z < stored）。",
+        ),
+    };
+    format!("{}\n{what}", kind.signature())
+}
 
-/// The tabs: the inside test (when the scene runs one), the vertex and the fragment shader,
-/// each marked when its source does not compile.
+/// A function's tab's name.
+fn hook_label(kind: HookKind, lang: Lang) -> &'static str {
+    match kind {
+        HookKind::Inside => lang.tr("Inside test", "内部测试 inside"),
+        HookKind::DepthTest => lang.tr("Depth test", "深度测试 depth_test"),
+    }
+}
+
+/// The tabs: the functions the pipeline calls (those the scene runs), the vertex and the
+/// fragment shader, each marked when its source does not compile.
 fn tabs(ui: &mut Ui, editor: &mut ShaderEditor, lang: Lang) {
     let marked = |label: &str, failed: bool| {
         if failed {
@@ -267,17 +326,15 @@ fn tabs(ui: &mut Ui, editor: &mut ShaderEditor, lang: Lang) {
         }
     };
     ui.horizontal(|ui| {
-        if editor.inside.is_some() {
-            let label = marked(
-                lang.tr("Inside test", "内部测试 inside"),
-                !editor.inside_errors.is_empty(),
-            );
-            let tip = format!(
-                "{INSIDE_SIGNATURE}\n{}",
-                lang.tr(INSIDE_TIP.0, INSIDE_TIP.1)
-            );
-            ui.selectable_value(&mut editor.tab, Tab::Inside, label)
-                .on_hover_text(tip);
+        for (kind, failed) in editor
+            .hooks
+            .iter()
+            .map(|h| (h.kind, !h.errors.is_empty()))
+            .collect::<Vec<_>>()
+        {
+            let label = marked(hook_label(kind, lang), failed);
+            ui.selectable_value(&mut editor.tab, Tab::Hook(kind), label)
+                .on_hover_text(hook_tip(kind, lang));
         }
         for (stage, en, zh) in [
             (Stage::Vertex, "Vertex shader", "顶点着色器"),
@@ -294,15 +351,15 @@ fn tabs(ui: &mut Ui, editor: &mut ShaderEditor, lang: Lang) {
 fn save(editor: &ShaderEditor, dir: &std::path::Path) -> Result<String, String> {
     let mut written = Vec::new();
     let mut files = vec![
-        ("shader.vert", &editor.vertex),
-        ("shader.frag", &editor.fragment),
+        ("shader.vert".to_owned(), &editor.vertex),
+        ("shader.frag".to_owned(), &editor.fragment),
     ];
-    if let Some(inside) = &editor.inside {
-        files.push(("inside.glsl", inside));
+    for h in &editor.hooks {
+        files.push((format!("{}.glsl", h.kind.key()), &h.source));
     }
     for (name, text) in files {
         written.push(crate::app::platform::download(
-            name,
+            &name,
             text.as_bytes(),
             "text/plain",
             dir,
@@ -327,18 +384,12 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
         );
         return;
     }
-    if editor.errors.is_empty() && editor.inside_errors.is_empty() {
+    if editor.errors.is_empty() && editor.hooks.iter().all(|h| h.errors.is_empty()) {
         // Until the source is applied (or edited), pipelens' own shading draws the picture.
-        let inside = session
-            .spec
-            .scene
-            .objects
-            .iter()
-            .any(|o| o.inside.is_some());
-        let text = if inside && !session.spec.scene.has_shaders() {
+        let text = if !editor.hooks.is_empty() && !session.spec.scene.has_shaders() {
             lang.tr(
-                "Compiled: the rasterizer asks this inside test which samples each triangle covers; the shading is pipelens' own.",
-                "已编译：光栅化器用这个内部测试判断每个三角形覆盖哪些采样点；着色仍由 pipelens 完成。",
+                "Compiled: the rasterizer calls these functions (which samples each triangle covers, which it writes); the shading is pipelens' own.",
+                "已编译：光栅化器调用这些函数（每个三角形覆盖哪些采样点、写入哪些）；着色仍由 pipelens 完成。",
             )
         } else if session.spec.scene.has_shaders() {
             lang.tr(
@@ -361,11 +412,15 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
         ))
         .color(ui.visuals().error_fg_color),
     );
-    for e in &editor.inside_errors {
+    for (h, e) in editor
+        .hooks
+        .iter()
+        .flat_map(|h| h.errors.iter().map(move |e| (h, e)))
+    {
         ui.label(
             RichText::new(format!(
                 "{} {}:{}: {}",
-                lang.tr("inside test", "内部测试"),
+                h.kind.key(),
                 e.line,
                 e.column,
                 e.message

@@ -298,6 +298,9 @@ pub fn scene(
             if o.inside.is_none() {
                 o.inside.clone_from(&code.inside);
             }
+            if o.depth_test.is_none() {
+                o.depth_test.clone_from(&code.depth_test);
+            }
         }
     }
     let light_names = lights::names(&mut c, &s.lights);

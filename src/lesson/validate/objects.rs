@@ -105,6 +105,7 @@ pub(super) fn object(
     {
         object.shader = code.shader;
         object.inside = code.inside;
+        object.depth_test = code.depth_test;
     }
     Some((object, label))
 }

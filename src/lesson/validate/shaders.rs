@@ -9,7 +9,7 @@ use std::path::Path;
 use std::sync::Arc;
 
 use pipeline::scene::{ObjectShader, StudentCode};
-use pipeline::shader::Stage;
+use pipeline::shader::{HookKind, Stage};
 use toml::Spanned;
 
 use super::Checker;
@@ -62,21 +62,22 @@ pub(in crate::lesson) fn shader(
     base: &Path,
 ) -> Option<StudentCode> {
     let r = raw.get_ref();
-    if r.vertex.is_none() && r.fragment.is_none() && r.inside.is_none() {
-        c.error(raw.span(), "`shader` needs a `vertex` or a `fragment` shader (a file such as \"toon.frag\", or the GLSL itself), or an `inside` test");
+    if r.vertex.is_none() && r.fragment.is_none() && r.inside.is_none() && r.depth_test.is_none() {
+        c.error(raw.span(), "`shader` needs a `vertex` or a `fragment` shader (a file such as \"toon.frag\", or the GLSL itself), or an `inside` or `depth_test` function");
         return None;
     }
     let vertex = r.vertex.as_ref().map(|v| source(c, v, base));
     let fragment = r.fragment.as_ref().map(|v| source(c, v, base));
     let inside = r.inside.as_ref().map(|v| source(c, v, base));
+    let depth_test = r.depth_test.as_ref().map(|v| source(c, v, base));
     // A stage that named a missing file has its diagnostic already.
-    if [&vertex, &fragment, &inside]
+    if [&vertex, &fragment, &inside, &depth_test]
         .iter()
         .any(|s| matches!(s, Some(None)))
     {
         return None;
     }
-    let (vertex, fragment, inside) = (vertex.flatten(), fragment.flatten(), inside.flatten());
+    let (vertex, fragment) = (vertex.flatten(), fragment.flatten());
     let mut ok = true;
     let shader = if vertex.is_none() && fragment.is_none() {
         None
@@ -103,22 +104,37 @@ pub(in crate::lesson) fn shader(
             }
         }
     };
-    let inside = match inside
-        .as_ref()
-        .map(|i| pipeline::shader::compile_inside(&i.0))
-    {
-        Some(Ok(test)) => Some(test),
-        Some(Err(errors)) => {
-            for e in errors {
-                let message = format!("inside test: {}", e.message);
-                place(c, inside.as_ref(), raw.span(), &e, message);
+    let mut hook = |kind: HookKind, given: Option<(String, Origin)>| {
+        let result = given
+            .as_ref()
+            .map(|g| pipeline::shader::compile_hook(kind, &g.0))?;
+        match result {
+            Ok(hook) => Some(hook),
+            Err(errors) => {
+                for e in errors {
+                    let message = format!("{}: {}", hook_name(kind), e.message);
+                    place(c, given.as_ref(), raw.span(), &e, message);
+                }
+                ok = false;
+                None
             }
-            ok = false;
-            None
         }
-        None => None,
     };
-    ok.then_some(StudentCode { shader, inside })
+    let inside = hook(HookKind::Inside, inside.flatten());
+    let depth_test = hook(HookKind::DepthTest, depth_test.flatten());
+    ok.then_some(StudentCode {
+        shader,
+        inside,
+        depth_test,
+    })
+}
+
+/// How a message names the function it is about.
+fn hook_name(kind: HookKind) -> &'static str {
+    match kind {
+        HookKind::Inside => "inside test",
+        HookKind::DepthTest => "depth test",
+    }
 }
 
 /// A shader's message where its source is: in its file, at its place in the lesson, or at the

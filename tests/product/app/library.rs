@@ -166,3 +166,26 @@ fn a_dropped_shader_file_loads_into_the_panel_and_runs() {
         "the dropped solution runs and passes"
     );
 }
+
+/// A saved depth test (`depth_test.glsl`, as the panel's Save names it) dropped back on the
+/// window goes into its tab and runs: lesson 09's lab passes with it.
+#[test]
+fn a_dropped_depth_test_loads_into_its_tab_and_runs() {
+    let path = crate::support::repo().join("lessons/09-z-buffer.toml");
+    let mut h = super::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    super::go_to_last_step(&mut h);
+    h.run_steps(4);
+    assert!(h.query_by_label_contains("Not yet").is_some());
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("depth_test.glsl"),
+        bytes: b"bool depth_test(float z, float stored) {\n    return z < stored;\n}\n".to_vec(),
+    }));
+    h.run_steps(8);
+    assert!(h.state().panels.shader, "the shader panel opens");
+    assert!(h.query_by_label("Depth test").is_some(), "on its tab");
+    assert!(
+        h.query_by_label_contains("Passed: all 256000 pixels match")
+            .is_some(),
+        "the dropped depth test runs and passes"
+    );
+}

@@ -270,7 +270,11 @@ fn rasterize(
         None => SampleBuffers::new(width, height, settings.samples, clear),
     };
     let hooked;
-    let counts = if scene.objects.iter().any(|o| o.inside.is_some()) {
+    let hooks = scene
+        .objects
+        .iter()
+        .any(|o| o.inside.is_some() || o.depth_test.is_some());
+    let counts = if hooks {
         hooked = rasterize_with_hooks(scene, settings, triangles, primitives, &mut samples)?;
         &hooked[..]
     } else {
@@ -288,9 +292,10 @@ fn rasterize(
     Ok(samples)
 }
 
-/// Rasterization where some objects carry the student's inside test: triangle after triangle,
-/// each sample of its box asked of the object's `inside` (in batches, see
-/// [`crate::shader::InsideTest::covers`]) or of pipelens' edge functions.
+/// Rasterization where some objects carry the student's inside test or depth test: triangle
+/// after triangle, each sample of its box asked of the object's `inside` (in batches, see
+/// [`crate::shader::Hook::covers`]) or of pipelens' edge functions, each covered sample of the
+/// object's `depth_test` (see [`crate::shader::Hook::passes`]) or of the settings' comparison.
 fn rasterize_with_hooks(
     scene: &Scene,
     settings: &RenderSettings,
@@ -299,30 +304,48 @@ fn rasterize_with_hooks(
     samples: &mut SampleBuffers,
 ) -> Result<Vec<RasterCounts>, RenderError> {
     let pixels = |v: i64| (v as f64 / crate::raster::ONE as f64) as f32;
+    let failed = |what: &str, object: &crate::scene::Object, e: crate::shader::ShaderError| {
+        RenderError::Invalid(vec![format!("{what} of {}, {e}", object.name)])
+    };
     let mut counts = Vec::with_capacity(triangles.len());
     for (i, tri) in triangles.iter().enumerate() {
-        let object = primitives
+        let Some(object) = primitives
             .get(tri.primitive as usize)
-            .and_then(|p| scene.objects.get(p.object as usize));
-        let Some((object, test)) = object.and_then(|o| Some((o, o.inside.as_ref()?))) else {
+            .and_then(|p| scene.objects.get(p.object as usize))
+        else {
             counts.push(samples.rasterize_reference(tri, i as u32, settings.depth_test));
             continue;
         };
-        let points: Vec<[f32; 2]> = samples
-            .box_samples(tri)
-            .iter()
-            .map(|p| [pixels(p.x), pixels(p.y)])
-            .collect();
-        let corners = tri.window.map(|c| {
-            [
-                pixels(crate::raster::snap(c.x)),
-                pixels(crate::raster::snap(c.y)),
-            ]
-        });
-        let inside = test.covers(&points, corners).map_err(|e| {
-            RenderError::Invalid(vec![format!("inside test of {}, {e}", object.name)])
-        })?;
-        counts.push(samples.rasterize_where(tri, i as u32, settings.depth_test, |k, _| inside[k]));
+        let inside = match &object.inside {
+            Some(test) => {
+                let points: Vec<[f32; 2]> = samples
+                    .box_samples(tri)
+                    .iter()
+                    .map(|p| [pixels(p.x), pixels(p.y)])
+                    .collect();
+                let corners = tri.window.map(|c| {
+                    [
+                        pixels(crate::raster::snap(c.x)),
+                        pixels(crate::raster::snap(c.y)),
+                    ]
+                });
+                let answers = test.covers(&points, corners);
+                Some(answers.map_err(|e| failed("inside test", object, e))?)
+            }
+            None => None,
+        };
+        let covers = |k: usize, p| inside.as_ref().map_or_else(|| tri.covers(p), |a| a[k]);
+        let Some(test) = &object.depth_test else {
+            counts.push(samples.rasterize_where(tri, i as u32, settings.depth_test, covers));
+            continue;
+        };
+        let covered = samples.covered_samples(tri, covers);
+        let z: Vec<f32> = covered.iter().map(|&(_, z)| z).collect();
+        let stored: Vec<f32> = covered.iter().map(|&(s, _)| samples.depth[s]).collect();
+        let passes = test
+            .passes(&z, &stored)
+            .map_err(|e| failed("depth test", object, e))?;
+        counts.push(samples.write_samples(&covered, &passes, i as u32));
     }
     Ok(counts)
 }

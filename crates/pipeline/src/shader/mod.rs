@@ -28,7 +28,9 @@ use std::ops::Range;
 
 use naga::{Binding, BuiltIn, Interpolation, TypeInner};
 
-pub use hook::{INSIDE_SIGNATURE, InsideTest, compile_inside};
+pub use hook::{
+    DEPTH_SIGNATURE, Hook, HookKind, INSIDE_SIGNATURE, InsideTest, compile_hook, compile_inside,
+};
 pub use interface::Uniforms;
 pub use link::{
     BUILTIN_FLAT_FRAGMENT, BUILTIN_FLAT_VERTEX, BUILTIN_FRAGMENT, BUILTIN_GOURAUD_FRAGMENT,

@@ -120,3 +120,62 @@ fn an_endless_inside_test_is_a_render_error_not_a_hang() {
     assert!(text.contains("inside test of test"), "{text}");
     assert!(text.contains("line 3"), "{text}");
 }
+
+/// Two overlapping triangles, the nearer drawn first: a depth test decides which one the
+/// overlap shows.
+fn overlapping() -> (pipeline::scene::Scene, pipeline::settings::RenderSettings) {
+    let near = [
+        Vec2::new(2.0, 2.0),
+        Vec2::new(14.0, 3.0),
+        Vec2::new(6.0, 14.0),
+    ];
+    let far = [
+        Vec2::new(3.0, 12.0),
+        Vec2::new(4.0, 1.0),
+        Vec2::new(15.0, 9.0),
+    ];
+    let (mut scene, mut settings) = pixel_scene(16, 16, &[near, far]);
+    let mesh = std::sync::Arc::make_mut(&mut scene.objects[0].mesh);
+    for (k, p) in mesh.positions.iter_mut().enumerate() {
+        // The eye is at z = 1 looking down −z: the first triangle is nearer.
+        p.z = if k < 3 { 0.5 } else { -0.5 };
+    }
+    settings.samples = Samples::X4;
+    (scene, settings)
+}
+
+#[test]
+fn a_depth_test_written_as_less_gives_pipelens_z_buffer_and_true_draws_over() {
+    use pipeline::raster::DepthTest;
+    use pipeline::shader::{HookKind, compile_hook};
+    let (mut scene, mut settings) = overlapping();
+    settings.depth_test = DepthTest::Less;
+    let less = render(&scene, &settings);
+    settings.depth_test = DepthTest::Always;
+    let always = render(&scene, &settings);
+    assert_ne!(
+        less.samples.triangle, always.samples.triangle,
+        "they overlap"
+    );
+
+    settings.depth_test = DepthTest::Less;
+    let mine = "bool depth_test(float z, float stored) {\n    return z < stored;\n}\n";
+    scene.set_depth_test(&compile_hook(HookKind::DepthTest, mine).expect("compiles"));
+    let student = render(&scene, &settings);
+    assert_eq!(student.samples.triangle, less.samples.triangle);
+    assert_eq!(student.samples.depth, less.samples.depth);
+
+    let painter = "bool depth_test(float z, float stored) {\n    return true;\n}\n";
+    scene.set_depth_test(&compile_hook(HookKind::DepthTest, painter).expect("compiles"));
+    let student = render(&scene, &settings);
+    assert_eq!(student.samples.triangle, always.samples.triangle);
+
+    let wrong = "bool depth_test(float z) {\n    return true;\n}\n";
+    let errors = compile_hook(HookKind::DepthTest, wrong).expect_err("one argument short");
+    assert!(
+        errors
+            .iter()
+            .any(|e| e.message.contains("bool depth_test(float z, float stored)")),
+        "{errors:?}"
+    );
+}
