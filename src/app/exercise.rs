@@ -10,7 +10,7 @@ use pipeline::buffers::Capture;
 use pipeline::capture::{Difference, FrameCapture};
 use pipeline::scene::{ObjectShader, Scene};
 use pipeline::settings::RenderSettings;
-use pipeline::shader::HookKind;
+use pipeline::shader::{CurveDifference, HookKind};
 
 use super::progress::SavedCode;
 use super::session::Session;
@@ -25,6 +25,26 @@ pub struct Comparison {
     /// The frame on screen against the reference (`None` while either is missing or the frame
     /// on screen is a draft).
     pub difference: Option<Difference>,
+    /// The student's curve against pipelens' own, point by point, when the step's scene runs
+    /// the student's de Casteljau: what decides the exercise then.
+    pub curve: Option<CurveDifference>,
+}
+
+/// How far (in the curve's units) a student's curve point may be from pipelens' `b(t)` and
+/// still match: far below a pixel of the lesson's view (3 units across 720 pixels), far above
+/// the rounding of a correct construction in `f32`.
+pub const CURVE_TOLERANCE: f32 = 1e-4;
+
+impl Comparison {
+    /// Whether the exercise passed: every curve point within the tolerance where a curve is
+    /// compared, else every pixel.
+    #[must_use]
+    pub fn passed(&self) -> bool {
+        match &self.curve {
+            Some(c) => c.passed(),
+            None => self.difference.as_ref().is_some_and(Difference::passed),
+        }
+    }
 }
 
 impl Session {
@@ -48,6 +68,7 @@ impl Session {
             o.shader = None;
             o.inside = None;
             o.depth_test = None;
+            o.curve = None;
         }
         let settings = RenderSettings {
             capture: Capture::COLOR.with_pixel(self.selection.pixel),
@@ -70,16 +91,25 @@ impl Session {
             (Some(c), Some(r)) if !self.shown_draft => c.difference(r, exercise.tolerance),
             _ => None,
         };
+        self.exercise.curve = self.curve_difference();
         let (Some(player), Some(code)) = (&self.lesson, self.student_code()) else {
             return;
         };
-        let passed = self
-            .exercise
-            .difference
-            .as_ref()
-            .is_some_and(Difference::passed);
+        let passed = self.exercise.passed();
         self.progress
             .keep_code(&player.lesson, player.step, code, passed);
+    }
+
+    /// The student's de Casteljau against pipelens' curve, when an object runs one on a Bézier
+    /// curve (`None` also when it stops with a run-time error, which the status line shows).
+    fn curve_difference(&self) -> Option<CurveDifference> {
+        self.spec.scene.objects.iter().find_map(|o| {
+            let hook = o.curve.as_ref()?;
+            let Some(pipeline::mesh::BuiltinMesh::Bezier { points, .. }) = o.builtin else {
+                return None;
+            };
+            hook.curve_difference(points, CURVE_TOLERANCE).ok()
+        })
     }
 
     /// The sources the scene's objects run: the student's code on an exercise step.
@@ -100,6 +130,10 @@ impl Session {
                 .iter()
                 .find_map(|o| o.depth_test.as_ref())
                 .map(|t| t.source.clone()),
+            curve: objects
+                .iter()
+                .find_map(|o| o.curve.as_ref())
+                .map(|c| c.source.clone()),
         };
         (code != SavedCode::default()).then_some(code)
     }
@@ -128,6 +162,7 @@ impl Session {
         for (kind, source) in [
             (HookKind::Inside, &code.inside),
             (HookKind::DepthTest, &code.depth_test),
+            (HookKind::Curve, &code.curve),
         ] {
             if let Some(Ok(hook)) = source
                 .as_deref()

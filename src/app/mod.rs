@@ -3,7 +3,7 @@
 //! pipeline results itself.
 
 mod chrome;
-mod exercise;
+pub mod exercise;
 mod export_task;
 mod library;
 pub mod platform;

@@ -36,6 +36,9 @@ pub struct LessonProgress {
     /// The depth test the student last ran in each exercise step that has one.
     #[serde(default)]
     pub depth_test: BTreeMap<usize, String>,
+    /// The de Casteljau the student last ran in each exercise step that has one.
+    #[serde(default)]
+    pub curve: BTreeMap<usize, String>,
 }
 
 /// The code a student ran in an exercise step: the shaders, the inside test, or both.
@@ -47,6 +50,8 @@ pub struct SavedCode {
     pub inside: Option<String>,
     /// The depth test's source.
     pub depth_test: Option<String>,
+    /// De Casteljau's source.
+    pub curve: Option<String>,
 }
 
 impl Progress {
@@ -85,6 +90,8 @@ impl Progress {
                 .extend(theirs.inside.iter().map(|(k, v)| (*k, v.clone())));
             mine.depth_test
                 .extend(theirs.depth_test.iter().map(|(k, v)| (*k, v.clone())));
+            mine.curve
+                .extend(theirs.curve.iter().map(|(k, v)| (*k, v.clone())));
         }
     }
 
@@ -147,6 +154,9 @@ impl Progress {
         if let Some(test) = code.depth_test {
             l.depth_test.insert(k + 1, test);
         }
+        if let Some(curve) = code.curve {
+            l.curve.insert(k + 1, curve);
+        }
         if passed {
             l.passed.insert(k + 1);
         }
@@ -160,6 +170,7 @@ impl Progress {
             shaders: l.code.get(&(k + 1)).cloned(),
             inside: l.inside.get(&(k + 1)).cloned(),
             depth_test: l.depth_test.get(&(k + 1)).cloned(),
+            curve: l.curve.get(&(k + 1)).cloned(),
         };
         (code != SavedCode::default()).then_some(code)
     }

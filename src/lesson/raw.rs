@@ -52,6 +52,8 @@ pub struct RawShader {
     pub inside: Option<Spanned<String>>,
     /// `bool depth_test(float z, float stored)`, which it calls per covered sample.
     pub depth_test: Option<Spanned<String>>,
+    /// `vec2 de_casteljau(vec2 p0, vec2 p1, vec2 p2, vec2 p3, float t)`, a Bézier curve's point.
+    pub de_casteljau: Option<Spanned<String>>,
 }
 
 /// One `[[scene.figures]]` entry: an articulated model and its joint angles in degrees.

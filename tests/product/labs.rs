@@ -85,6 +85,18 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
                 -dot(u, eye), -dot(v, eye), -dot(n, eye), 1.0);",
     ),
     (
+        "18-bezier",
+        "Lab: de Casteljau",
+        "    // TODO: three levels: 4 points → 3 → 2 → 1. (As written: the first point of the first level.)
+    return lerp(p0, p1, t);",
+        "    vec2 a = lerp(p0, p1, t);
+    vec2 b = lerp(p1, p2, t);
+    vec2 c = lerp(p2, p3, t);
+    vec2 d = lerp(a, b, t);
+    vec2 e = lerp(b, c, t);
+    return lerp(d, e, t);",
+    ),
+    (
         "25-lab-model-projection",
         "Lab: the rotation about z",
         "    // TODO: the rotation about z (mat4 takes its numbers column by column).
@@ -177,16 +189,48 @@ pub(crate) fn solved_source(session: &pipelens::app::session::Session, fragment:
 }
 
 /// The frame of `spec` against pipelens' own (the same scene without shaders).
-fn compared(spec: &pipelens::lesson::SceneSpec, tolerance: f32) -> pipeline::capture::Difference {
+pub(crate) fn compared(
+    spec: &pipelens::lesson::SceneSpec,
+    tolerance: f32,
+) -> pipeline::capture::Difference {
     let mine = pipeline::render(&spec.scene, &spec.settings).expect("the lab renders");
     let mut own = spec.scene.clone();
     for o in &mut own.objects {
         o.shader = None;
         o.inside = None;
         o.depth_test = None;
+        o.curve = None;
     }
     let reference = pipeline::render(&own, &spec.settings).expect("the reference renders");
     mine.difference(&reference, tolerance).expect("same size")
+}
+
+/// An exercise's check as the app makes it: the curve point by point where the scene runs the
+/// student's de Casteljau, else every pixel. Whether it passed, and what was found.
+pub(crate) fn checked(spec: &pipelens::lesson::SceneSpec, tolerance: f32) -> (bool, String) {
+    let curve = spec.scene.objects.iter().find_map(|o| match o.builtin {
+        Some(pipeline::mesh::BuiltinMesh::Bezier { points, .. }) => {
+            Some((o.curve.as_ref()?, points))
+        }
+        _ => None,
+    });
+    if let Some((hook, points)) = curve {
+        let tolerance = pipelens::app::exercise::CURVE_TOLERANCE;
+        let d = hook
+            .curve_difference(points, tolerance)
+            .expect("the curve runs");
+        let found = format!(
+            "{} of {} curve points (farthest {}, first at {:?})",
+            d.matching, d.total, d.largest, d.first
+        );
+        return (d.passed(), found);
+    }
+    let d = compared(spec, tolerance);
+    let found = format!(
+        "{} of {} pixels (largest difference {}/255, first at {:?})",
+        d.matching, d.total, d.largest, d.first
+    );
+    (d.passed(), found)
 }
 
 #[test]
@@ -202,8 +246,8 @@ fn every_lab_starter_fails_and_its_solution_passes() {
             };
             let name = format!("{} step {} ({})", lesson.id, k + 1, step.title.en);
             let spec = lesson.spec_at(k);
-            let starter = compared(&spec, exercise.tolerance);
-            assert!(!starter.passed(), "{name}: the starter passes already");
+            let (passed, starter) = checked(&spec, exercise.tolerance);
+            assert!(!passed, "{name}: the starter passes already");
             let (_, _, todo, solution) = SOLUTIONS
                 .iter()
                 .find(|(id, title, ..)| *id == lesson.id && *title == step.title.en)
@@ -227,9 +271,13 @@ fn every_lab_starter_fails_and_its_solution_passes() {
                     time: 0.0,
                 });
             }
-            for hook in [&starter_code.inside, &starter_code.depth_test]
-                .into_iter()
-                .flatten()
+            for hook in [
+                &starter_code.inside,
+                &starter_code.depth_test,
+                &starter_code.curve,
+            ]
+            .into_iter()
+            .flatten()
             {
                 found |= hook.source.contains(todo);
                 let solved =
@@ -238,19 +286,9 @@ fn every_lab_starter_fails_and_its_solution_passes() {
                 spec.scene.set_hook(&solved);
             }
             assert!(found, "{name}: the starter has no line {todo:?}");
-            let solution = compared(&spec, exercise.tolerance);
-            assert!(
-                solution.passed(),
-                "{name}: the solution matches {} of {} pixels (largest difference {}/255, first at {:?})",
-                solution.matching,
-                solution.total,
-                solution.largest,
-                solution.first
-            );
-            eprintln!(
-                "{name}: starter {} of {} pixels, solution all",
-                starter.matching, starter.total
-            );
+            let (passed, solution) = checked(&spec, exercise.tolerance);
+            assert!(passed, "{name}: the solution matches {solution}");
+            eprintln!("{name}: starter {starter}, solution {solution}");
             labs += 1;
         }
     }
@@ -427,139 +465,4 @@ fn the_lab_template_fails_as_written_and_passes_when_done() {
     });
     let d = compared(&spec, e.tolerance);
     assert!(d.passed(), "{} of {} pixels", d.matching, d.total);
-}
-
-/// The inside-test lab is decided by its ties: the square's sides and diagonal lie on pixel
-/// centres, so an `inside` that takes every tie (E ≥ 0) or none (E > 0) fails, and only the
-/// top-left rule passes.
-#[test]
-fn the_inside_lab_fails_a_test_that_takes_every_tie_or_none() {
-    let path = crate::support::repo().join("lessons/07-rasterization.toml");
-    let Ok(Document::Lesson(lesson)) = pipelens::lesson::load_file(&path) else {
-        panic!("lesson 07 loads");
-    };
-    let k = lesson
-        .steps
-        .iter()
-        .position(|s| s.title.en == "Lab: the inside test")
-        .expect("the lab");
-    let e = lesson.steps[k].exercise.as_ref().expect("a lab");
-    for (ties, compare) in [("every tie", ">="), ("no tie", ">")] {
-        let source = format!(
-            "float edge(vec2 a, vec2 b, vec2 p) {{
-    return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
-}}
-bool inside(vec2 p, vec2 a, vec2 b, vec2 c) {{
-    return edge(a, b, p) {compare} 0.0 && edge(b, c, p) {compare} 0.0 && edge(c, a, p) {compare} 0.0;
-}}
-"
-        );
-        let mut spec = lesson.spec_at(k);
-        spec.scene
-            .set_inside(&pipeline::shader::compile_inside(&source).expect("compiles"));
-        let d = compared(&spec, e.tolerance);
-        assert!(!d.passed(), "a test that takes {ties} passes");
-        assert!(d.coverage_differs > 0, "{ties}: {d:?}");
-    }
-}
-
-/// The inside-test lab in the app: the shader panel opens on the inside test's tab, the
-/// starter's frame is "not yet", the solution passes, and the test that passed comes back when
-/// the step is entered again.
-#[test]
-fn the_inside_lab_in_the_app_passes_and_keeps_the_inside_test() {
-    use egui_kittest::kittest::Queryable;
-    use pipelens::app::session::Command;
-    let path = crate::support::repo().join("lessons/07-rasterization.toml");
-    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    let k = crate::app::go_to_last_step(&mut h);
-    h.state_mut().panels.shader = true;
-    h.run_steps(4);
-    assert!(
-        h.query_by_label("Inside test").is_some(),
-        "the tab is there"
-    );
-    assert!(
-        h.query_by_label_contains("Not yet: 363 of 384 pixels match")
-            .is_some()
-    );
-    let (_, _, todo, solution) = SOLUTIONS
-        .iter()
-        .find(|(id, ..)| *id == "07-rasterization")
-        .expect("the lab's solution");
-    let starter = h
-        .state()
-        .session
-        .current_exercise()
-        .and_then(|e| e.starter.inside.clone())
-        .expect("an inside lab");
-    let solved = starter.source.replace(todo, solution);
-    let mut spec = h.state().session.spec.clone();
-    spec.scene
-        .set_inside(&pipeline::shader::compile_inside(&solved).expect("compiles"));
-    h.state_mut()
-        .session
-        .apply(Command::SetSpec(Box::new(spec)));
-    h.run_steps(6);
-    assert!(
-        h.query_by_label_contains("Passed: all 384 pixels match")
-            .is_some()
-    );
-    let lesson = crate::app::lesson_of(&h);
-    assert!(h.state().session.progress.passed(&lesson, k));
-    // Away and back: the step runs the test that passed, not the starter.
-    h.state_mut().session.apply(Command::PreviousStep);
-    h.run_steps(4);
-    h.state_mut().session.apply(Command::NextStep);
-    h.run_steps(6);
-    let running = h.state().session.spec.scene.objects[0]
-        .inside
-        .as_ref()
-        .map(|i| i.source.clone());
-    assert_eq!(running.as_deref(), Some(solved.as_str()));
-    assert!(
-        h.query_by_label_contains("Passed: all 384 pixels match")
-            .is_some()
-    );
-}
-
-/// The viewport lab checks depth too: GAMES101's M_viewport, which leaves z in [−1, 1], does not
-/// land on gl_FragCoord (OpenGL's depth is in [0, 1]), nor does a matrix that forgets the shift.
-#[test]
-fn the_viewport_lab_fails_a_matrix_that_keeps_z_or_forgets_the_shift() {
-    let path = crate::support::repo().join("lessons/06-clipping-ndc-viewport.toml");
-    let Ok(Document::Lesson(lesson)) = pipelens::lesson::load_file(&path) else {
-        panic!("lesson 06 loads");
-    };
-    let k = lesson
-        .steps
-        .iter()
-        .position(|s| s.title.en == "Lab: the viewport matrix")
-        .expect("the lab");
-    let e = lesson.steps[k].exercise.as_ref().expect("a lab");
-    let todo = "    // TODO: the viewport matrix (mat4 takes its numbers column by column).
-    return mat4(1.0);";
-    for (wrong, matrix) in [
-        (
-            "z kept",
-            "    return mat4(w / 2.0, 0, 0, 0,  0, h / 2.0, 0, 0,  0, 0, 1, 0,  w / 2.0, h / 2.0, 0, 1);",
-        ),
-        (
-            "no shift",
-            "    return mat4(w / 2.0, 0, 0, 0,  0, h / 2.0, 0, 0,  0, 0, 0.5, 0,  0, 0, 0.5, 1);",
-        ),
-    ] {
-        let p = &e.starter.shader.as_ref().expect("a shader lab").programs;
-        let programs = pipeline::shader::link(
-            Some(&p.vertex.source),
-            Some(&p.fragment.source.replace(todo, matrix)),
-        )
-        .expect("compiles");
-        let mut spec = lesson.spec_at(k);
-        spec.scene.set_shaders(&ObjectShader {
-            programs: Arc::new(programs),
-            time: 0.0,
-        });
-        assert!(!compared(&spec, e.tolerance).passed(), "{wrong} passes");
-    }
 }

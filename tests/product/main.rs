@@ -8,6 +8,7 @@ mod cli;
 mod corpus;
 mod course;
 mod handout;
+mod lab_hooks;
 mod labs;
 mod lessons;
 mod observer;

@@ -80,6 +80,9 @@ pub struct Object {
     /// The student's depth test: the rasterizer asks it, not the settings' comparison, which
     /// covered samples of this object's triangles are written (see [`crate::shader::hook`]).
     pub depth_test: Option<crate::shader::Hook>,
+    /// The student's de Casteljau: a Bézier curve's drawing takes its points from it, not from
+    /// pipelens' own curve (see [`crate::shader::hook`]).
+    pub curve: Option<crate::shader::Hook>,
 }
 
 /// An object's shaders and the time their `time` uniform reads.
@@ -92,7 +95,8 @@ pub struct ObjectShader {
 }
 
 /// The code a student gives a scene: shaders for its objects, an inside test and a depth test
-/// for its rasterizer (a lesson's `shader = { vertex, fragment, inside, depth_test }`).
+/// for its rasterizer, de Casteljau for a Bézier curve (a lesson's `shader = { vertex, fragment,
+/// inside, depth_test, de_casteljau }`).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct StudentCode {
     /// The vertex and fragment shaders (`None`: pipelens' own stages).
@@ -101,6 +105,8 @@ pub struct StudentCode {
     pub inside: Option<crate::shader::InsideTest>,
     /// The depth test (`None`: the settings' comparison).
     pub depth_test: Option<crate::shader::Hook>,
+    /// De Casteljau's curve point (`None`: pipelens' own).
+    pub curve: Option<crate::shader::Hook>,
 }
 
 impl Object {
@@ -139,6 +145,7 @@ impl Object {
             shader: None,
             inside: None,
             depth_test: None,
+            curve: None,
         }
     }
 
@@ -259,6 +266,11 @@ impl Scene {
         match hook.kind {
             crate::shader::HookKind::Inside => self.set_inside(hook),
             crate::shader::HookKind::DepthTest => self.set_depth_test(hook),
+            crate::shader::HookKind::Curve => {
+                for o in &mut self.objects {
+                    o.curve = Some(hook.clone());
+                }
+            }
         }
     }
 
@@ -268,6 +280,7 @@ impl Scene {
         self.objects.iter().find_map(|o| match kind {
             crate::shader::HookKind::Inside => o.inside.as_ref(),
             crate::shader::HookKind::DepthTest => o.depth_test.as_ref(),
+            crate::shader::HookKind::Curve => o.curve.as_ref(),
         })
     }
 
@@ -283,11 +296,11 @@ impl Scene {
         if let Some(shader) = &code.shader {
             self.set_shaders(shader);
         }
-        if let Some(inside) = &code.inside {
-            self.set_inside(inside);
-        }
-        if let Some(test) = &code.depth_test {
-            self.set_depth_test(test);
+        for hook in [&code.inside, &code.depth_test, &code.curve]
+            .into_iter()
+            .flatten()
+        {
+            self.set_hook(hook);
         }
     }
 

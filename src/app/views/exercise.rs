@@ -8,6 +8,7 @@ use std::sync::Arc;
 use egui::{Color32, Pos2, Rect, RichText, Sense, TextureOptions, Ui, Vec2};
 use pipeline::buffers::BufferKind;
 use pipeline::capture::{Difference, FrameCapture};
+use pipeline::shader::CurveDifference;
 
 use super::typeset::{self, Style};
 use super::{BufferTexture, fit_rect, label_with_background, picture_font};
@@ -204,6 +205,55 @@ pub fn verdict(d: &Difference, lang: Lang) -> String {
     }
 }
 
+/// The verdict on a curve in words: passed, or how many points are off, by how much, and the
+/// first one with both values.
+#[must_use]
+pub fn curve_verdict(c: &CurveDifference, lang: Lang) -> String {
+    let tolerance = format!("{:e}", c.tolerance);
+    if c.passed() {
+        return match lang {
+            Lang::En => format!(
+                "Passed: all {} points of your curve lie within {tolerance} of pipelens' b(t).",
+                c.total
+            ),
+            Lang::Zh => format!(
+                "通过：你的曲线的全部 {} 个点与 pipelens 的 b(t) 相差都不超过 {tolerance}。",
+                c.total
+            ),
+        };
+    }
+    let point = |p: glam::Vec2| format!("({:.4}, {:.4})", p.x, p.y);
+    let largest = if c.largest.is_finite() {
+        format!("{:.4}", c.largest)
+    } else {
+        "∞".to_owned()
+    };
+    let first = c
+        .first
+        .map_or_else(String::new, |(t, mine, theirs)| match lang {
+            Lang::En => format!(
+                " The first, t = {t:.4}: yours {}, pipelens' {}.",
+                point(mine),
+                point(theirs)
+            ),
+            Lang::Zh => format!(
+                "第一个在 t = {t:.4}：你的 {}，pipelens 的 {}。",
+                point(mine),
+                point(theirs)
+            ),
+        });
+    match lang {
+        Lang::En => format!(
+            "Not yet: {} of {} curve points lie within {tolerance} of pipelens' b(t) (the farthest is {largest} away).{first}",
+            c.matching, c.total
+        ),
+        Lang::Zh => format!(
+            "还没有通过：{} 个曲线点中 {} 个与 pipelens 的 b(t) 相差不超过 {tolerance}（最远相差 {largest}）。{first}",
+            c.total, c.matching
+        ),
+    }
+}
+
 /// The card's part of an exercise step: the task, where to write, the verdict and the first
 /// wrong pixel to inspect. Returns whether the Inspector should open (that pixel was chosen).
 pub fn card_part(
@@ -220,17 +270,31 @@ pub fn card_part(
             .color(Color32::WHITE),
     );
     typeset::paragraph(ui, exercise.task.get(lang), style);
-    ui.label(
-        RichText::new(lang.tr(
+    let how = if exercise.starter.curve.is_some() {
+        lang.tr(
+            "Write your code in the Shader panel (key S): it runs as you type, and your curve is compared with pipelens' b(t), point by point.",
+            "在着色器面板（S 键）中编写代码：边写边运行，你的曲线与 pipelens 的 b(t) 逐点比较。",
+        )
+    } else {
+        lang.tr(
             "Write your code in the Shader panel (key S): it runs as you type, and the frame is compared with pipelens' own, pixel by pixel.",
             "在着色器面板（S 键）中编写代码：边写边运行，画面与 pipelens 自带的逐像素比较。",
-        ))
-        .size(style.size * 0.85),
-    );
+        )
+    };
+    ui.label(RichText::new(how).size(style.size * 0.85));
     let passed_before = session
         .lesson
         .as_ref()
         .is_some_and(|p| session.progress.passed(&p.lesson, p.step));
+    if let Some(c) = &session.exercise.curve {
+        let color = if c.passed() { PASSED } else { NOT_YET };
+        ui.label(
+            RichText::new(curve_verdict(c, lang))
+                .size(style.size * 0.9)
+                .color(color),
+        );
+        return false;
+    }
     match &session.exercise.difference {
         Some(d) => {
             let color = if d.passed() { PASSED } else { NOT_YET };

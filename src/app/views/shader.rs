@@ -303,6 +303,10 @@ fn hook_tip(kind: HookKind, lang: Lang) -> String {
             "The rasterizer calls it for every sample a triangle covers: z the triangle's window depth there (in [0, 1]), stored what the z-buffer holds (1 where nothing was drawn). true writes z and the triangle into the sample. It replaces the depth comparison of the settings (less: z < stored).",
             "光栅化器对三角形覆盖的每个采样点调用它：z 是三角形在该处的窗口深度（在 [0, 1] 内），stored 是深度缓冲中已存的值（尚未绘制处为 1）。返回 true 则把 z 和该三角形写入采样点。它代替设置中的深度比较（less：z < stored）。",
         ),
+        HookKind::Curve => lang.tr(
+            "A Bézier curve's drawing calls it for every point of the curve (161 values of t from 0 to 1): p0 … p3 the control points, in the curve's plane. It replaces pipelens' own b(t) = Σ B_i³(t)·P_i.",
+            "贝塞尔曲线的绘制对曲线上的每个点调用它（t 从 0 到 1 取 161 个值）：p0 … p3 是控制点，在曲线所在平面内。它代替 pipelens 自己的 b(t) = Σ B_i³(t)·P_i。",
+        ),
     };
     format!("{}\n{what}", kind.signature())
 }
@@ -312,6 +316,7 @@ fn hook_label(kind: HookKind, lang: Lang) -> &'static str {
     match kind {
         HookKind::Inside => lang.tr("Inside test", "内部测试 inside"),
         HookKind::DepthTest => lang.tr("Depth test", "深度测试 depth_test"),
+        HookKind::Curve => lang.tr("de Casteljau", "de Casteljau 算法"),
     }
 }
 

@@ -290,18 +290,7 @@ pub fn scene(
         .as_ref()
         .and_then(|sh| shaders::shader(&mut c, sh, base))
     {
-        // An object's own code comes first.
-        for o in &mut objects {
-            if o.shader.is_none() {
-                o.shader.clone_from(&code.shader);
-            }
-            if o.inside.is_none() {
-                o.inside.clone_from(&code.inside);
-            }
-            if o.depth_test.is_none() {
-                o.depth_test.clone_from(&code.depth_test);
-            }
-        }
+        shaders::give(&mut objects, &code);
     }
     let light_names = lights::names(&mut c, &s.lights);
     let shadow = s.shadow.as_ref().and_then(|sh| lights::shadow(&mut c, sh));

@@ -106,6 +106,7 @@ pub(super) fn object(
         object.shader = code.shader;
         object.inside = code.inside;
         object.depth_test = code.depth_test;
+        object.curve = code.curve;
     }
     Some((object, label))
 }

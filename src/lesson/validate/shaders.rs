@@ -62,16 +62,22 @@ pub(in crate::lesson) fn shader(
     base: &Path,
 ) -> Option<StudentCode> {
     let r = raw.get_ref();
-    if r.vertex.is_none() && r.fragment.is_none() && r.inside.is_none() && r.depth_test.is_none() {
-        c.error(raw.span(), "`shader` needs a `vertex` or a `fragment` shader (a file such as \"toon.frag\", or the GLSL itself), or an `inside` or `depth_test` function");
+    if r.vertex.is_none()
+        && r.fragment.is_none()
+        && r.inside.is_none()
+        && r.depth_test.is_none()
+        && r.de_casteljau.is_none()
+    {
+        c.error(raw.span(), "`shader` needs a `vertex` or a `fragment` shader (a file such as \"toon.frag\", or the GLSL itself), or an `inside`, `depth_test` or `de_casteljau` function");
         return None;
     }
     let vertex = r.vertex.as_ref().map(|v| source(c, v, base));
     let fragment = r.fragment.as_ref().map(|v| source(c, v, base));
     let inside = r.inside.as_ref().map(|v| source(c, v, base));
     let depth_test = r.depth_test.as_ref().map(|v| source(c, v, base));
+    let curve = r.de_casteljau.as_ref().map(|v| source(c, v, base));
     // A stage that named a missing file has its diagnostic already.
-    if [&vertex, &fragment, &inside, &depth_test]
+    if [&vertex, &fragment, &inside, &depth_test, &curve]
         .iter()
         .any(|s| matches!(s, Some(None)))
     {
@@ -122,10 +128,12 @@ pub(in crate::lesson) fn shader(
     };
     let inside = hook(HookKind::Inside, inside.flatten());
     let depth_test = hook(HookKind::DepthTest, depth_test.flatten());
+    let curve = hook(HookKind::Curve, curve.flatten());
     ok.then_some(StudentCode {
         shader,
         inside,
         depth_test,
+        curve,
     })
 }
 
@@ -134,6 +142,7 @@ fn hook_name(kind: HookKind) -> &'static str {
     match kind {
         HookKind::Inside => "inside test",
         HookKind::DepthTest => "depth test",
+        HookKind::Curve => "de Casteljau",
     }
 }
 
@@ -161,5 +170,24 @@ fn place(
             );
         }
         None => c.error(table, message),
+    }
+}
+
+/// Gives every object the scene's `code`, where the object has none of its own of that kind (an
+/// object's own `shader = { … }` comes first).
+pub(in crate::lesson) fn give(objects: &mut [pipeline::scene::Object], code: &StudentCode) {
+    for o in objects {
+        if o.shader.is_none() {
+            o.shader.clone_from(&code.shader);
+        }
+        if o.inside.is_none() {
+            o.inside.clone_from(&code.inside);
+        }
+        if o.depth_test.is_none() {
+            o.depth_test.clone_from(&code.depth_test);
+        }
+        if o.curve.is_none() {
+            o.curve.clone_from(&code.curve);
+        }
     }
 }

@@ -365,19 +365,46 @@ const WHOLE_CURVE: Vec3 = Vec3::new(0.55, 0.32, 0.3);
 /// interpolated point (one level) or beside `b(t)` (all three).
 #[must_use]
 pub fn construction_mesh(points: [Vec2; 4], t: f32, levels: u8) -> Mesh {
+    let own = |ts: &[f32]| -> Result<Vec<Vec2>, String> {
+        Ok(ts.iter().map(|&t| bezier::point(&points, t)).collect())
+    };
+    match construction_mesh_from(points, t, levels, &own) {
+        Ok(m) => m,
+        Err(e) => unreachable!("pipelens' own curve points cannot fail: {e}"),
+    }
+}
+
+/// The values of `t` at which a construction up to `upto` samples the curve: 160 steps over
+/// the whole curve, as many in proportion up to `upto`.
+#[must_use]
+pub fn curve_parameters(upto: f32) -> Vec<f32> {
+    let n = ((upto * 160.0).ceil() as usize).max(1);
+    (0..=n).map(|k| upto * k as f32 / n as f32).collect()
+}
+
+/// Where a construction takes its curve's points: the points at the given parameters, or why
+/// there are none.
+pub type CurvePoints<'a> = dyn Fn(&[f32]) -> Result<Vec<Vec2>, String> + 'a;
+
+/// [`construction_mesh`] with the curve's points from `curve` (the points at the given `t`s):
+/// the student's de Casteljau, say.
+///
+/// # Errors
+/// What `curve` returned.
+pub fn construction_mesh_from(
+    points: [Vec2; 4],
+    t: f32,
+    levels: u8,
+    curve: &CurvePoints<'_>,
+) -> Result<Mesh, String> {
     let t = t.clamp(0.0, 1.0);
     let drawn = usize::from(levels.min(3));
     let mut m = Mesh {
         name: "bezier".into(),
         ..Mesh::default()
     };
-    let samples = |upto: f32| -> Vec<Vec2> {
-        let n = ((upto * 160.0).ceil() as usize).max(1);
-        (0..=n)
-            .map(|k| bezier::point(&points, upto * k as f32 / n as f32))
-            .collect()
-    };
-    polyline(&mut m, &samples(1.0), 0.01, 0.0, WHOLE_CURVE);
+    let samples = |upto: f32| curve(&curve_parameters(upto));
+    polyline(&mut m, &samples(1.0)?, 0.01, 0.0, WHOLE_CURVE);
     polyline(&mut m, &points, 0.018, 0.001, POLYGON);
     let levels = bezier::de_casteljau(&points, t);
     let levels = &levels[..=drawn.min(levels.len() - 1)];
@@ -386,7 +413,7 @@ pub fn construction_mesh(points: [Vec2; 4], t: f32, levels: u8) -> Mesh {
         polyline(&mut m, level, 0.016, 0.002, color);
     }
     if t > 0.0 && drawn == 3 {
-        polyline(&mut m, &samples(t), 0.035, 0.003, CURVE);
+        polyline(&mut m, &samples(t)?, 0.035, 0.003, CURVE);
     }
     for p in points {
         square(&mut m, p, 0.05, 0.004, Vec3::ONE);
@@ -404,7 +431,7 @@ pub fn construction_mesh(points: [Vec2; 4], t: f32, levels: u8) -> Mesh {
         }
     }
     m.normals = vec![Vec3::Z; m.positions.len()];
-    m
+    Ok(m)
 }
 
 /// The labels of a construction: each control point's name beside it, on the side away from

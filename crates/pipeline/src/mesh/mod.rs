@@ -10,7 +10,7 @@ mod obj;
 pub mod patch;
 pub mod signal;
 
-pub use builtin::BuiltinMesh;
+pub use builtin::{BuiltinMesh, construction_mesh_from, curve_parameters};
 
 use glam::{Vec2, Vec3};
 use serde::Serialize;

@@ -27,6 +27,7 @@
 //! buffers (the z-buffer), the depth test and rasterizing into them in [`zbuffer`].
 
 mod samples;
+mod student;
 mod zbuffer;
 
 pub use samples::*;

@@ -63,7 +63,7 @@ pub struct SampleBuffers {
     pub depth: Vec<f32>,
     /// Index of the raster triangle that wrote each sample last, or [`NONE`].
     pub triangle: Vec<u32>,
-    offsets: Vec<I64Vec2>,
+    pub(super) offsets: Vec<I64Vec2>,
     bins: Bins,
 }
 
@@ -333,56 +333,6 @@ impl SampleBuffers {
                     let sample = (&mut self.depth[i], &mut self.triangle[i]);
                     depth_test(sample, plane.at(p), index, test, &mut counts);
                 }
-            }
-        }
-        counts
-    }
-}
-
-impl SampleBuffers {
-    /// The samples of `tri`'s bounding box that `covers(k, p)` says are covered (`k` the
-    /// sample's place in [`Self::box_samples`]' order, `p` its fixed-point position): each as
-    /// its index in the buffers and the triangle's depth there.
-    pub fn covered_samples(
-        &self,
-        tri: &RasterTriangle,
-        mut covers: impl FnMut(usize, I64Vec2) -> bool,
-    ) -> Vec<(usize, f32)> {
-        let [x0, y0, x1, y1] = tri.bbox.map(u32::from);
-        let plane = tri.depth_plane();
-        let mut out = Vec::new();
-        let mut k = 0;
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
-                for s in 0..self.offsets.len() {
-                    let p = corner + self.offsets[s];
-                    k += 1;
-                    if covers(k - 1, p) {
-                        out.push((self.index(x, y, s), plane.at(p)));
-                    }
-                }
-            }
-        }
-        out
-    }
-
-    /// Writes triangle `index` into the `covered` samples (from [`Self::covered_samples`])
-    /// where `passes[k]` (another depth test's answer for the `k`-th); counts them as
-    /// [`Self::rasterize`] does.
-    pub fn write_samples(
-        &mut self,
-        covered: &[(usize, f32)],
-        passes: &[bool],
-        index: u32,
-    ) -> RasterCounts {
-        let mut counts = RasterCounts::default();
-        for (&(i, z), &pass) in covered.iter().zip(passes) {
-            counts.covered += 1;
-            if pass {
-                self.depth[i] = z;
-                self.triangle[i] = index;
-                counts.written += 1;
             }
         }
         counts

@@ -96,6 +96,9 @@ pub fn render_reusing(
     if !problems.is_empty() {
         return Err(RenderError::Invalid(problems));
     }
+    if let Some(drawn) = with_student_curves(scene)? {
+        return render_reusing(&drawn, settings, spare);
+    }
     if scene.shadow.is_some() || !scene.figures.is_empty() {
         // Figures and the shadow pass become plain objects; the same pipeline draws them all.
         let (objects, steps) = scene.drawn_objects();
@@ -111,6 +114,32 @@ pub fn render_reusing(
         });
     }
     render_stages(scene, settings, spare)
+}
+
+/// The scene with each Bézier curve that carries the student's de Casteljau drawn from the
+/// student's curve points; `None` when no object carries one.
+///
+/// # Errors
+/// A run-time error of the student's function.
+fn with_student_curves(scene: &Scene) -> Result<Option<Scene>, RenderError> {
+    use crate::mesh::BuiltinMesh;
+    if !scene.objects.iter().any(|o| o.curve.is_some()) {
+        return Ok(None);
+    }
+    let mut drawn = scene.clone();
+    for o in &mut drawn.objects {
+        let Some(hook) = o.curve.take() else {
+            continue;
+        };
+        let Some(BuiltinMesh::Bezier { points, t, levels }) = o.builtin else {
+            continue;
+        };
+        let curve = |ts: &[f32]| hook.curve_points(points, ts).map_err(|e| e.to_string());
+        let mesh = crate::mesh::construction_mesh_from(points, t, levels, &curve)
+            .map_err(|e| RenderError::Invalid(vec![format!("de Casteljau of {}, {e}", o.name)]))?;
+        o.mesh = std::sync::Arc::new(mesh);
+    }
+    Ok(Some(drawn))
 }
 
 /// The stages, in order, over a scene whose figures and shadows are already plain objects.

@@ -26,6 +26,17 @@
 //! triangle into the sample. It replaces the settings' comparison (`less`: `z < stored`).
 //! Within one triangle every sample is distinct, so a triangle's samples are asked in batches.
 //!
+//! De Casteljau's construction of a cubic Bézier curve (GAMES101, assignment 4),
+//! [`HookKind::Curve`]:
+//!
+//! ```glsl
+//! vec2 de_casteljau(vec2 p0, vec2 p1, vec2 p2, vec2 p3, float t)
+//! ```
+//!
+//! called for every point of the curve a Bézier object draws (161 values of `t` from 0 to 1,
+//! and those up to the construction's `t`), the control points in the object's plane; it
+//! replaces pipelens' own curve point `b(t) = Σ B_i³(t)·P_i`.
+//!
 //! The student writes the function alone; pipelens appends a `main` that calls it with its
 //! arguments as inputs and writes the answer as its output, and compiles the two as one fragment
 //! shader. The student's lines keep their numbers.
@@ -40,6 +51,9 @@ pub const INSIDE_SIGNATURE: &str = "bool inside(vec2 p, vec2 a, vec2 b, vec2 c)"
 /// The signature the rasterizer calls for the depth test, as the student writes it.
 pub const DEPTH_SIGNATURE: &str = "bool depth_test(float z, float stored)";
 
+/// The signature a Bézier curve's drawing calls for each curve point, as the student writes it.
+pub const CURVE_SIGNATURE: &str = "vec2 de_casteljau(vec2 p0, vec2 p1, vec2 p2, vec2 p3, float t)";
+
 /// Which function of the pipeline the student writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum HookKind {
@@ -47,11 +61,13 @@ pub enum HookKind {
     Inside,
     /// `bool depth_test(float z, float stored)`: which covered samples it writes.
     DepthTest,
+    /// `vec2 de_casteljau(vec2 p0, vec2 p1, vec2 p2, vec2 p3, float t)`: a Bézier curve's point.
+    Curve,
 }
 
 impl HookKind {
     /// Every kind, in the order the shader panel shows their tabs.
-    pub const ALL: [Self; 2] = [Self::Inside, Self::DepthTest];
+    pub const ALL: [Self; 3] = [Self::Inside, Self::DepthTest, Self::Curve];
 
     /// The signature the pipeline calls.
     #[must_use]
@@ -59,6 +75,7 @@ impl HookKind {
         match self {
             Self::Inside => INSIDE_SIGNATURE,
             Self::DepthTest => DEPTH_SIGNATURE,
+            Self::Curve => CURVE_SIGNATURE,
         }
     }
 
@@ -68,14 +85,16 @@ impl HookKind {
         match self {
             Self::Inside => "inside",
             Self::DepthTest => "depth_test",
+            Self::Curve => "de_casteljau",
         }
     }
 
-    /// When the pipeline calls it, for the messages.
-    fn when(self) -> &'static str {
+    /// Who calls it and when, for the messages.
+    fn when(self) -> (&'static str, &'static str) {
         match self {
-            Self::Inside => "for every sample",
-            Self::DepthTest => "for every sample a triangle covers",
+            Self::Inside => ("the rasterizer", "for every sample"),
+            Self::DepthTest => ("the rasterizer", "for every sample a triangle covers"),
+            Self::Curve => ("a Bézier curve's drawing", "for every point of the curve"),
         }
     }
 
@@ -84,6 +103,13 @@ impl HookKind {
         match self {
             Self::Inside => &["pipelens_p", "pipelens_a", "pipelens_b", "pipelens_c"],
             Self::DepthTest => &["pipelens_z", "pipelens_stored"],
+            Self::Curve => &[
+                "pipelens_p0",
+                "pipelens_p1",
+                "pipelens_p2",
+                "pipelens_p3",
+                "pipelens_t",
+            ],
         }
     }
 
@@ -113,6 +139,19 @@ void main() {
 }
 "
             }
+            Self::Curve => {
+                "
+in vec2 pipelens_p0;
+in vec2 pipelens_p1;
+in vec2 pipelens_p2;
+in vec2 pipelens_p3;
+in float pipelens_t;
+out vec4 pipelens_answer;
+void main() {
+    pipelens_answer = vec4(de_casteljau(pipelens_p0, pipelens_p1, pipelens_p2, pipelens_p3, pipelens_t), 0.0, 1.0);
+}
+"
+            }
         }
     }
 }
@@ -130,6 +169,29 @@ pub struct Hook {
 
 /// The student's inside test.
 pub type InsideTest = Hook;
+
+/// A student's curve compared with pipelens' own, point by point.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CurveDifference {
+    /// Points within the tolerance of pipelens'.
+    pub matching: usize,
+    /// Points compared.
+    pub total: usize,
+    /// The largest distance from pipelens' point.
+    pub largest: f32,
+    /// The first point that does not match: `t`, the student's point and pipelens'.
+    pub first: Option<(f32, glam::Vec2, glam::Vec2)>,
+    /// The tolerance used.
+    pub tolerance: f32,
+}
+
+impl CurveDifference {
+    /// Whether every point matches.
+    #[must_use]
+    pub fn passed(&self) -> bool {
+        self.matching == self.total
+    }
+}
 
 impl PartialEq for Hook {
     /// Two tests are the same when their sources are.
@@ -170,10 +232,11 @@ pub fn compile_hook(kind: HookKind, source: &str) -> Result<Hook, Vec<ShaderErro
                 source,
                 0..0,
                 format!(
-                    "the rasterizer calls `{}` {}: define it with exactly that signature (no \
-                     `main`, no inputs or outputs of your own)",
+                    "{} calls `{}` {}: define it with exactly that signature (no `main`, no \
+                     inputs or outputs of your own)",
+                    kind.when().0,
                     kind.signature(),
-                    kind.when()
+                    kind.when().1
                 ),
             ));
         }
@@ -198,10 +261,11 @@ impl Hook {
         corners: [[f32; 2]; 3],
     ) -> Result<Vec<bool>, ShaderError> {
         let [a, b, c] = corners;
-        self.answers(points.len(), |k| {
+        let answers = self.answers(points.len(), |k| {
             let [x, y] = points[k];
-            [[x, y], a, b, c]
-        })
+            [[x, y], a, b, c, [0.0; 2]]
+        })?;
+        Ok(answers.iter().map(|a| a[0] != 0.0).collect())
     }
 
     /// The depth test at each covered sample: `z[k]` against `stored[k]`, in batches.
@@ -209,18 +273,72 @@ impl Hook {
     /// # Errors
     /// A run-time error, at its line in the student's source.
     pub fn passes(&self, z: &[f32], stored: &[f32]) -> Result<Vec<bool>, ShaderError> {
-        self.answers(z.len(), |k| {
-            [[z[k], 0.0], [stored[k], 0.0], [0.0; 2], [0.0; 2]]
-        })
+        let answers = self.answers(z.len(), |k| {
+            [[z[k], 0.0], [stored[k], 0.0], [0.0; 2], [0.0; 2], [0.0; 2]]
+        })?;
+        Ok(answers.iter().map(|a| a[0] != 0.0).collect())
     }
 
-    /// The function's answer for `n` calls, call `k`'s arguments `args(k)` (each one or two
-    /// floats, in the signature's order), 64 calls a batch.
+    /// The curve's point at each of `ts`, the control points `p`, in batches.
+    ///
+    /// # Errors
+    /// A run-time error, at its line in the student's source.
+    pub fn curve_points(
+        &self,
+        p: [glam::Vec2; 4],
+        ts: &[f32],
+    ) -> Result<Vec<glam::Vec2>, ShaderError> {
+        let [a, b, c, d] = p.map(|v| [v.x, v.y]);
+        let answers = self.answers(ts.len(), |k| [a, b, c, d, [ts[k], 0.0]])?;
+        Ok(answers
+            .iter()
+            .map(|v| glam::Vec2::new(v[0], v[1]))
+            .collect())
+    }
+
+    /// The student's curve against pipelens' own `b(t) = Σ B_i³(t)·P_i` at the 161 parameters
+    /// a whole curve is drawn with: a point matches when it is within `tolerance` (in the
+    /// curve's units) of pipelens' point.
+    ///
+    /// # Errors
+    /// A run-time error, at its line in the student's source.
+    pub fn curve_difference(
+        &self,
+        points: [glam::Vec2; 4],
+        tolerance: f32,
+    ) -> Result<CurveDifference, ShaderError> {
+        let ts = crate::mesh::curve_parameters(1.0);
+        let mine = self.curve_points(points, &ts)?;
+        let mut d = CurveDifference {
+            matching: 0,
+            total: ts.len(),
+            largest: 0.0,
+            first: None,
+            tolerance,
+        };
+        for (&t, &p) in ts.iter().zip(&mine) {
+            let reference = crate::bezier::point(&points, t);
+            // NaN (a division by zero, say) is never within the tolerance.
+            let off = p.distance(reference);
+            let off = if off.is_nan() { f32::INFINITY } else { off };
+            d.largest = d.largest.max(off);
+            if off <= tolerance {
+                d.matching += 1;
+            } else if d.first.is_none() {
+                d.first = Some((t, p, reference));
+            }
+        }
+        Ok(d)
+    }
+
+    /// The function's answer (the caller's output's first two components) for `n` calls, call
+    /// `k`'s arguments `args(k)` (each one or two floats, in the signature's order), 64 calls a
+    /// batch.
     fn answers(
         &self,
         n: usize,
-        args: impl Fn(usize) -> [[f32; 2]; 4],
-    ) -> Result<Vec<bool>, ShaderError> {
+        args: impl Fn(usize) -> [[f32; 2]; 5],
+    ) -> Result<Vec<[f32; 2]>, ShaderError> {
         let program = &*self.program;
         let mut machine = program.machine();
         let bindings = Bindings { textures: &[] };
@@ -260,7 +378,9 @@ impl Hook {
                 .run(&inputs, batch, live, &bindings)
                 .map_err(|e| program.run_error(&e))?;
             let result = machine.result();
-            out.extend((0..batch).map(|l| f32::from_bits(result[l]) != 0.0));
+            out.extend(
+                (0..batch).map(|l| [f32::from_bits(result[l]), f32::from_bits(result[LANES + l])]),
+            );
         }
         Ok(out)
     }

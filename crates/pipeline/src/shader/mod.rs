@@ -29,7 +29,8 @@ use std::ops::Range;
 use naga::{Binding, BuiltIn, Interpolation, TypeInner};
 
 pub use hook::{
-    DEPTH_SIGNATURE, Hook, HookKind, INSIDE_SIGNATURE, InsideTest, compile_hook, compile_inside,
+    CURVE_SIGNATURE, CurveDifference, DEPTH_SIGNATURE, Hook, HookKind, INSIDE_SIGNATURE,
+    InsideTest, compile_hook, compile_inside,
 };
 pub use interface::Uniforms;
 pub use link::{

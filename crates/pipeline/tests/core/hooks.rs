@@ -179,3 +179,70 @@ fn a_depth_test_written_as_less_gives_pipelens_z_buffer_and_true_draws_over() {
         "{errors:?}"
     );
 }
+
+/// De Casteljau written in GLSL: three levels of `mix`.
+const DE_CASTELJAU: &str = "
+vec2 de_casteljau(vec2 p0, vec2 p1, vec2 p2, vec2 p3, float t) {
+    vec2 a = mix(p0, p1, t);
+    vec2 b = mix(p1, p2, t);
+    vec2 c = mix(p2, p3, t);
+    vec2 d = mix(a, b, t);
+    vec2 e = mix(b, c, t);
+    return mix(d, e, t);
+}
+";
+
+#[test]
+fn de_casteljau_in_glsl_draws_pipelens_curve_and_a_straight_line_does_not() {
+    use pipeline::mesh::BuiltinMesh;
+    use pipeline::shader::{HookKind, compile_hook};
+    let points = [
+        Vec2::new(-1.2, -0.7),
+        Vec2::new(-0.7, 0.8),
+        Vec2::new(0.6, 0.85),
+        Vec2::new(1.2, -0.6),
+    ];
+    let hook = compile_hook(HookKind::Curve, DE_CASTELJAU).expect("compiles");
+    let d = hook.curve_difference(points, 1e-5).expect("runs");
+    assert!(d.passed(), "{d:?}");
+    assert_eq!(d.total, 161);
+    // By hand: b(½) = (P0 + 3·P1 + 3·P2 + P3)/8.
+    let half = hook.curve_points(points, &[0.5]).expect("runs")[0];
+    let want = (points[0] + 3.0 * points[1] + 3.0 * points[2] + points[3]) / 8.0;
+    assert!(half.distance(want) < 1e-6, "{half} != {want}");
+
+    let line = "vec2 de_casteljau(vec2 p0, vec2 p1, vec2 p2, vec2 p3, float t) {\n    return mix(p0, p3, t);\n}\n";
+    let line = compile_hook(HookKind::Curve, line).expect("compiles");
+    let d = line.curve_difference(points, 1e-5).expect("runs");
+    assert!(!d.passed());
+    // The ends agree (b(0) = P0, b(1) = P3); the first point off is the second.
+    assert_eq!(d.matching, 2);
+    assert_eq!(d.first.map(|f| f.0), Some(1.0 / 160.0));
+
+    // The frame: the curve object drawn with the student's points, pixel for pixel.
+    let curve = BuiltinMesh::Bezier {
+        points,
+        t: 0.6,
+        levels: 3,
+    };
+    let mut object = pipeline::scene::Object::new("curve", curve.build());
+    object.builtin = Some(curve);
+    object.color = pipeline::scene::ColorSource::Vertex;
+    let (mut scene, settings) = pixel_scene(64, 48, &[]);
+    scene.objects = vec![object];
+    scene.projection = pipeline::camera::Projection::Ortho {
+        left: -1.5,
+        right: 1.5,
+        bottom: -1.0,
+        top: 1.0,
+        near: 0.0,
+        far: 2.0,
+    };
+    let own = render(&scene, &settings);
+    scene.objects[0].curve = Some(line);
+    let wrong = render(&scene, &settings);
+    assert!(own.difference(&wrong, 1.0).is_some_and(|d| !d.passed()));
+    scene.objects[0].curve = Some(hook);
+    let mine = render(&scene, &settings);
+    assert!(own.difference(&mine, 1.0).is_some_and(|d| d.passed()));
+}

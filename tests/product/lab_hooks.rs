@@ -1,0 +1,202 @@
+//! Labs by their kind of check: a function of the pipeline the student writes (the inside
+//! test decided by its ties, the viewport matrix by depth, de Casteljau point by point), done
+//! in the app and failed by the mistakes students make.
+
+use std::sync::Arc;
+
+use pipelens::lesson::Document;
+use pipeline::scene::ObjectShader;
+
+use crate::labs::{SOLUTIONS, compared};
+
+/// The inside-test lab is decided by its ties: the square's sides and diagonal lie on pixel
+/// centres, so an `inside` that takes every tie (E ≥ 0) or none (E > 0) fails, and only the
+/// top-left rule passes.
+#[test]
+fn the_inside_lab_fails_a_test_that_takes_every_tie_or_none() {
+    let path = crate::support::repo().join("lessons/07-rasterization.toml");
+    let Ok(Document::Lesson(lesson)) = pipelens::lesson::load_file(&path) else {
+        panic!("lesson 07 loads");
+    };
+    let k = lesson
+        .steps
+        .iter()
+        .position(|s| s.title.en == "Lab: the inside test")
+        .expect("the lab");
+    let e = lesson.steps[k].exercise.as_ref().expect("a lab");
+    for (ties, compare) in [("every tie", ">="), ("no tie", ">")] {
+        let source = format!(
+            "float edge(vec2 a, vec2 b, vec2 p) {{
+    return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}}
+bool inside(vec2 p, vec2 a, vec2 b, vec2 c) {{
+    return edge(a, b, p) {compare} 0.0 && edge(b, c, p) {compare} 0.0 && edge(c, a, p) {compare} 0.0;
+}}
+"
+        );
+        let mut spec = lesson.spec_at(k);
+        spec.scene
+            .set_inside(&pipeline::shader::compile_inside(&source).expect("compiles"));
+        let d = compared(&spec, e.tolerance);
+        assert!(!d.passed(), "a test that takes {ties} passes");
+        assert!(d.coverage_differs > 0, "{ties}: {d:?}");
+    }
+}
+
+/// The inside-test lab in the app: the shader panel opens on the inside test's tab, the
+/// starter's frame is "not yet", the solution passes, and the test that passed comes back when
+/// the step is entered again.
+#[test]
+fn the_inside_lab_in_the_app_passes_and_keeps_the_inside_test() {
+    use egui_kittest::kittest::Queryable;
+    use pipelens::app::session::Command;
+    let path = crate::support::repo().join("lessons/07-rasterization.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    let k = crate::app::go_to_last_step(&mut h);
+    h.state_mut().panels.shader = true;
+    h.run_steps(4);
+    assert!(
+        h.query_by_label("Inside test").is_some(),
+        "the tab is there"
+    );
+    assert!(
+        h.query_by_label_contains("Not yet: 363 of 384 pixels match")
+            .is_some()
+    );
+    let (_, _, todo, solution) = SOLUTIONS
+        .iter()
+        .find(|(id, ..)| *id == "07-rasterization")
+        .expect("the lab's solution");
+    let starter = h
+        .state()
+        .session
+        .current_exercise()
+        .and_then(|e| e.starter.inside.clone())
+        .expect("an inside lab");
+    let solved = starter.source.replace(todo, solution);
+    let mut spec = h.state().session.spec.clone();
+    spec.scene
+        .set_inside(&pipeline::shader::compile_inside(&solved).expect("compiles"));
+    h.state_mut()
+        .session
+        .apply(Command::SetSpec(Box::new(spec)));
+    h.run_steps(6);
+    assert!(
+        h.query_by_label_contains("Passed: all 384 pixels match")
+            .is_some()
+    );
+    let lesson = crate::app::lesson_of(&h);
+    assert!(h.state().session.progress.passed(&lesson, k));
+    // Away and back: the step runs the test that passed, not the starter.
+    h.state_mut().session.apply(Command::PreviousStep);
+    h.run_steps(4);
+    h.state_mut().session.apply(Command::NextStep);
+    h.run_steps(6);
+    let running = h.state().session.spec.scene.objects[0]
+        .inside
+        .as_ref()
+        .map(|i| i.source.clone());
+    assert_eq!(running.as_deref(), Some(solved.as_str()));
+    assert!(
+        h.query_by_label_contains("Passed: all 384 pixels match")
+            .is_some()
+    );
+}
+
+/// The viewport lab checks depth too: GAMES101's M_viewport, which leaves z in [−1, 1], does not
+/// land on gl_FragCoord (OpenGL's depth is in [0, 1]), nor does a matrix that forgets the shift.
+#[test]
+fn the_viewport_lab_fails_a_matrix_that_keeps_z_or_forgets_the_shift() {
+    let path = crate::support::repo().join("lessons/06-clipping-ndc-viewport.toml");
+    let Ok(Document::Lesson(lesson)) = pipelens::lesson::load_file(&path) else {
+        panic!("lesson 06 loads");
+    };
+    let k = lesson
+        .steps
+        .iter()
+        .position(|s| s.title.en == "Lab: the viewport matrix")
+        .expect("the lab");
+    let e = lesson.steps[k].exercise.as_ref().expect("a lab");
+    let todo = "    // TODO: the viewport matrix (mat4 takes its numbers column by column).
+    return mat4(1.0);";
+    for (wrong, matrix) in [
+        (
+            "z kept",
+            "    return mat4(w / 2.0, 0, 0, 0,  0, h / 2.0, 0, 0,  0, 0, 1, 0,  w / 2.0, h / 2.0, 0, 1);",
+        ),
+        (
+            "no shift",
+            "    return mat4(w / 2.0, 0, 0, 0,  0, h / 2.0, 0, 0,  0, 0, 0.5, 0,  0, 0, 0.5, 1);",
+        ),
+    ] {
+        let p = &e.starter.shader.as_ref().expect("a shader lab").programs;
+        let programs = pipeline::shader::link(
+            Some(&p.vertex.source),
+            Some(&p.fragment.source.replace(todo, matrix)),
+        )
+        .expect("compiles");
+        let mut spec = lesson.spec_at(k);
+        spec.scene.set_shaders(&ObjectShader {
+            programs: Arc::new(programs),
+            time: 0.0,
+        });
+        assert!(!compared(&spec, e.tolerance).passed(), "{wrong} passes");
+    }
+}
+
+/// The de Casteljau lab in the app: its tab opens, the card counts the curve points that match
+/// and gives the first one off with both values; the solution passes, and the pass is kept.
+#[test]
+fn the_de_casteljau_lab_compares_the_curve_point_by_point() {
+    use egui_kittest::kittest::Queryable;
+    use pipelens::app::session::Command;
+    let path = crate::support::repo().join("lessons/18-bezier.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    let k = crate::app::go_to_last_step(&mut h);
+    h.state_mut().panels.shader = true;
+    h.run_steps(4);
+    assert!(
+        h.query_by_label("de Casteljau").is_some(),
+        "the tab is there"
+    );
+    assert!(
+        h.query_by_label_contains(
+            "Not yet: 1 of 161 curve points lie within 1e-4 of pipelens' b(t)"
+        )
+        .is_some()
+    );
+    // b(1/160) by hand is (−1.1905, −0.6720); the starter's is on the segment P0P1.
+    assert!(
+        h.query_by_label_contains(
+            "The first, t = 0.0063: yours (-1.1969, -0.6906), pipelens' (-1.1905, -0.6720)."
+        )
+        .is_some()
+    );
+    let (_, _, todo, solution) = SOLUTIONS
+        .iter()
+        .find(|(id, ..)| *id == "18-bezier")
+        .expect("the lab's solution");
+    let starter = h
+        .state()
+        .session
+        .current_exercise()
+        .and_then(|e| e.starter.curve.clone())
+        .expect("a curve lab");
+    let solved = pipeline::shader::compile_hook(
+        pipeline::shader::HookKind::Curve,
+        &starter.source.replace(todo, solution),
+    )
+    .expect("compiles");
+    let mut spec = h.state().session.spec.clone();
+    spec.scene.set_hook(&solved);
+    h.state_mut()
+        .session
+        .apply(Command::SetSpec(Box::new(spec)));
+    h.run_steps(6);
+    assert!(
+        h.query_by_label_contains("Passed: all 161 points of your curve lie within 1e-4")
+            .is_some()
+    );
+    let lesson = crate::app::lesson_of(&h);
+    assert!(h.state().session.progress.passed(&lesson, k));
+}
