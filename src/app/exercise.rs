@@ -55,8 +55,8 @@ impl Session {
         p.current().exercise.as_ref()
     }
 
-    /// The reference the render job draws beside the student's frame: the scene without shaders
-    /// (pipelens' own stages), at the same settings, keeping the colour and the inspected
+    /// The reference the render job draws beside the student's frame: the scene without the
+    /// student's code (pipelens' own stages, as its shipped GLSL where there is one), at the same settings, keeping the colour and the inspected
     /// pixel's record (its derivation is shown beside the student's trace). None for a draft.
     pub(super) fn exercise_reference(&self, spec: &SceneSpec) -> Option<(Scene, RenderSettings)> {
         self.current_exercise()?;
@@ -70,6 +70,13 @@ impl Session {
             o.depth_test = None;
             o.curve = None;
         }
+        // pipelens' own stages written as GLSL, where they are shipped: they draw the same
+        // pixels, and their run at the inspected pixel is what the student's run is compared
+        // with, value by value (`first_mismatch`).
+        let scene = match scene.with_builtin_shaders(&spec.settings) {
+            Ok(Some(own)) => own,
+            _ => scene,
+        };
         let settings = RenderSettings {
             capture: Capture::COLOR.with_pixel(self.selection.pixel),
             ..spec.settings
@@ -172,4 +179,146 @@ impl Session {
             }
         }
     }
+}
+
+/// Where the student's run at the inspected pixel first parts from pipelens' own shader's run:
+/// a variable both assign in the same stretch of the run (before the first loop iteration, or
+/// within the same iteration), whose last values there differ.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mismatch {
+    /// The variable.
+    pub name: String,
+    /// Its line in the student's source.
+    pub line: usize,
+    /// The student's value, as the trace writes it.
+    pub yours: String,
+    /// pipelens' value.
+    pub theirs: String,
+    /// For a vector: its length in each run (a normal not normalized shows here).
+    pub lengths: Option<(f64, f64)>,
+}
+
+/// The numbers of a traced value (`vec3(0.000, 0.707, 0.707)` → 0, 0.707, 0.707), and its
+/// words (`true`), each as a token.
+fn tokens(value: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut chars = value.chars().peekable();
+    while let Some(&c) = chars.peek() {
+        if c.is_ascii_alphabetic() || c == '_' {
+            let mut word = String::new();
+            while let Some(&c) = chars.peek() {
+                if !(c.is_ascii_alphanumeric() || c == '_') {
+                    break;
+                }
+                word.push(c);
+                chars.next();
+            }
+            // A constructor's name (`vec3(`) is not a value.
+            if chars.peek() != Some(&'(') {
+                out.push(word);
+            }
+        } else if c.is_ascii_digit() || c == '-' || c == '.' {
+            let mut number = String::new();
+            while let Some(&c) = chars.peek() {
+                if !(c.is_ascii_alphanumeric() || c == '-' || c == '.' || c == '+') {
+                    break;
+                }
+                number.push(c);
+                chars.next();
+            }
+            out.push(number);
+        } else {
+            chars.next();
+        }
+    }
+    out
+}
+
+/// Whether two traced values are the same as far as the trace shows them (three decimals, or
+/// three significant digits).
+fn same_value(a: &str, b: &str) -> bool {
+    let (ta, tb) = (tokens(a), tokens(b));
+    ta.len() == tb.len()
+        && ta
+            .iter()
+            .zip(&tb)
+            .all(|(x, y)| match (x.parse::<f64>(), y.parse::<f64>()) {
+                (Ok(x), Ok(y)) => (x - y).abs() <= 0.0015 + 0.002 * x.abs().max(y.abs()),
+                _ => x == y,
+            })
+}
+
+/// The length of a traced vector of three or four numbers.
+fn length(value: &str) -> Option<f64> {
+    let v: Vec<f64> = tokens(value)
+        .iter()
+        .map(|t| t.parse::<f64>())
+        .collect::<Result<_, _>>()
+        .ok()?;
+    (v.len() == 3).then(|| v.iter().map(|x| x * x).sum::<f64>().sqrt())
+}
+
+/// The first value at which the student's fragments at the inspected pixel part from pipelens'
+/// own shader's (fragments paired by their triangle), in the order of the student's run.
+#[must_use]
+pub fn first_mismatch(
+    student: &[pipeline::capture::FragmentTrace],
+    reference: &[pipeline::capture::FragmentTrace],
+) -> Option<Mismatch> {
+    for mine in student {
+        let Some(theirs) = reference.iter().find(|f| f.triangle == mine.triangle) else {
+            continue;
+        };
+        // Each run's values by stretch: the stretch (how many loop iterations began before
+        // it), the name, its line and its last value there, in the order first assigned.
+        let stretches = |f: &pipeline::capture::FragmentTrace| {
+            let mut stretch = 0;
+            let mut values: Vec<((usize, String), (usize, String))> = Vec::new();
+            for l in &f.trace {
+                if l.text.starts_with("loop: iteration") {
+                    stretch += 1;
+                    continue;
+                }
+                let Some((name, value)) = l.text.split_once(" = ") else {
+                    continue;
+                };
+                let key = (stretch, name.to_owned());
+                match values.iter_mut().find(|(k, _)| *k == key) {
+                    Some((_, v)) => *v = (l.line, value.to_owned()),
+                    None => values.push((key, (l.line, value.to_owned()))),
+                }
+            }
+            values
+        };
+        let reference_values: std::collections::HashMap<_, _> =
+            stretches(theirs).into_iter().collect();
+        let paired: Vec<_> = stretches(mine)
+            .into_iter()
+            .filter_map(|(key, (line, yours))| {
+                let (_, theirs) = reference_values.get(&key)?;
+                Some((key.1, line, yours, theirs.clone()))
+            })
+            .collect();
+        let mismatch = |(name, line, yours, theirs): &(String, usize, String, String)| Mismatch {
+            name: name.clone(),
+            line: *line,
+            lengths: length(yours).zip(length(theirs)),
+            yours: yours.clone(),
+            theirs: theirs.clone(),
+        };
+        // A vector of length 1 in pipelens' run that is not in the student's — a normal left
+        // unnormalized — says more than the first value it puts off, however small the gap.
+        let unit = paired.iter().find(|(_, _, yours, theirs)| {
+            length(yours)
+                .zip(length(theirs))
+                .is_some_and(|(y, t)| (t - 1.0).abs() < 0.001 && (y - 1.0).abs() > 0.0015)
+        });
+        if let Some(u) = unit {
+            return Some(mismatch(u));
+        }
+        if let Some(m) = paired.iter().find(|(_, _, y, t)| !same_value(y, t)) {
+            return Some(mismatch(m));
+        }
+    }
+    None
 }

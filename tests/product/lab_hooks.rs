@@ -200,3 +200,51 @@ fn the_de_casteljau_lab_compares_the_curve_point_by_point() {
     let lesson = crate::app::lesson_of(&h);
     assert!(h.state().session.progress.passed(&lesson, k));
 }
+
+/// A mismatch is explained in words at the inspected pixel: the first value in which the
+/// student's run parts from pipelens' own shader's run, with both values; a normal left
+/// unnormalized is named as such.
+#[test]
+fn a_mismatch_names_the_first_value_that_differs_and_an_unnormalized_normal() {
+    use egui_kittest::kittest::Queryable;
+    use pipelens::app::session::Command;
+    let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    crate::app::go_to_last_step(&mut h);
+    h.run_steps(4);
+    h.get_by_label("Inspect the first wrong pixel").click();
+    h.run_steps(6);
+    // The starter has no specular term: its sum parts from pipelens' where that term is added.
+    assert!(
+        h.query_by_label_contains("At the inspected pixel your `sum` (line")
+            .is_some(),
+        "the starter's mismatch is named"
+    );
+    let vertex = h
+        .state()
+        .session
+        .current_exercise()
+        .and_then(|e| e.starter.shader.as_ref())
+        .map(|s| s.programs.vertex.source.clone())
+        .expect("a shader lab");
+    let fragment = crate::labs::solved_source(&h.state().session, true)
+        .replace("vec3 n = normalize(w_nrm);", "vec3 n = w_nrm;");
+    let programs = pipeline::shader::link(Some(&vertex), Some(&fragment)).expect("compiles");
+    let mut spec = h.state().session.spec.clone();
+    spec.scene.set_shaders(&ObjectShader {
+        programs: Arc::new(programs),
+        time: 0.0,
+    });
+    h.state_mut()
+        .session
+        .apply(Command::SetSpec(Box::new(spec)));
+    h.run_steps(6);
+    assert!(h.query_by_label_contains("Not yet").is_some());
+    h.get_by_label("Inspect the first wrong pixel").click();
+    h.run_steps(6);
+    assert!(
+        h.query_by_label_contains("At the inspected pixel your `n` (line 18)")
+            .is_some()
+    );
+    assert!(h.query_by_label_contains("is it normalized?").is_some());
+}

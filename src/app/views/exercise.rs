@@ -205,6 +205,42 @@ pub fn verdict(d: &Difference, lang: Lang) -> String {
     }
 }
 
+/// Where the student's run at the inspected pixel first parts from pipelens' own shader's run,
+/// when both ran there.
+fn mismatch_at_pixel(session: &Session) -> Option<crate::app::exercise::Mismatch> {
+    session.selection.pixel?;
+    let mine = session.capture.as_ref()?.shaders.as_ref()?;
+    let reference = session.exercise.reference.as_ref()?.shaders.as_ref()?;
+    crate::app::exercise::first_mismatch(&mine.pixel, &reference.pixel)
+}
+
+/// A mismatch in words: the variable, its line, both values, and a vector's length when only
+/// pipelens' is 1 (a normal not normalized).
+#[must_use]
+pub fn mismatch_words(m: &crate::app::exercise::Mismatch, lang: Lang) -> String {
+    let unnormalized = m
+        .lengths
+        .filter(|(yours, theirs)| (theirs - 1.0).abs() < 0.001 && (yours - 1.0).abs() > 0.0015)
+        .map(|(yours, _)| yours);
+    let mut text = match lang {
+        Lang::En => format!(
+            "At the inspected pixel your `{}` (line {}) is {}; pipelens' own shader has {}.",
+            m.name, m.line, m.yours, m.theirs
+        ),
+        Lang::Zh => format!(
+            "在所检查的像素处，你的 `{}`（第 {} 行）是 {}；pipelens 自带的着色器得到 {}。",
+            m.name, m.line, m.yours, m.theirs
+        ),
+    };
+    if let Some(len) = unnormalized {
+        text.push_str(&match lang {
+            Lang::En => format!(" Yours has length {len:.3}, pipelens' 1: is it normalized?"),
+            Lang::Zh => format!("你的长度是 {len:.3}，pipelens 的是 1：它归一化了吗？"),
+        });
+    }
+    text
+}
+
 /// The verdict on a curve in words: passed, or how many points are off, by how much, and the
 /// first one with both values.
 #[must_use]
@@ -303,6 +339,15 @@ pub fn card_part(
                     .size(style.size * 0.9)
                     .color(color),
             );
+            if !d.passed()
+                && let Some(m) = mismatch_at_pixel(session)
+            {
+                ui.label(
+                    RichText::new(mismatch_words(&m, lang))
+                        .size(style.size * 0.9)
+                        .color(NOT_YET),
+                );
+            }
             if let Some(first) = d.first
                 && session.selection.pixel != Some(first)
                 && ui
