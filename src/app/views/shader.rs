@@ -393,8 +393,8 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
         // Until the source is applied (or edited), pipelens' own shading draws the picture.
         let text = if !editor.hooks.is_empty() && !session.spec.scene.has_shaders() {
             lang.tr(
-                "Compiled: the rasterizer calls these functions (which samples each triangle covers, which it writes); the shading is pipelens' own.",
-                "已编译：光栅化器调用这些函数（每个三角形覆盖哪些采样点、写入哪些）；着色仍由 pipelens 完成。",
+                "Compiled: the pipeline calls these functions in place of its own (hover a tab: when, and what it replaces); the shading is pipelens' own.",
+                "已编译：管线调用这些函数来代替它自己的实现（把鼠标停在标签上可看到何时调用、代替什么）；着色仍由 pipelens 完成。",
             )
         } else if session.spec.scene.has_shaders() {
             lang.tr(
