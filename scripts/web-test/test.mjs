@@ -142,7 +142,7 @@ await zh2.evaluate((t) => {
   canvas.dispatchEvent(new DragEvent("dragover", { dataTransfer: dt, bubbles: true, cancelable: true }));
   canvas.dispatchEvent(new DragEvent("drop", { dataTransfer: dt, bubbles: true, cancelable: true }));
 }, text);
-if (await waitForTitle(zh2, /^pipelens — 07-rasterization — step 1\/5$/, "a lesson dropped on the page opens")) {
+if (await waitForTitle(zh2, /^pipelens — 07-rasterization — step 1\/6$/, "a lesson dropped on the page opens")) {
   await zh2.waitForTimeout(2000);
   await zh2.screenshot({ path: `${out}/dropped-zh.png` });
 }
@@ -190,6 +190,47 @@ if (await waitForTitle(ans, /^pipelens — 14-mipmaps — step 3\/6$/, "the mipm
     await ans.screenshot({ path: `${out}/typed-answer-after-reload.png` });
     const again = await ans.evaluate(() => JSON.stringify(Object.entries(localStorage)));
     check(/answered:\[3\]/.test(again), "the answer is still kept after the reload");
+  }
+}
+
+// 8. A lab of a function the rasterizer calls: lesson 07's last step asks for inside(p, a, b, c).
+// S opens the shader panel on its Inside test tab; the whole source is typed over the starter
+// (which fails), the frame passes, and the pass and the code are kept in local storage.
+const lab = await open("?lesson=07-rasterization&step=6", "lab");
+if (await waitForTitle(lab, /^pipelens — 07-rasterization — step 6\/6$/, "the inside-test lab opens")) {
+  await lab.waitForTimeout(3000);
+  await lab.focus("#pipelens");
+  await lab.keyboard.press("s");
+  await lab.waitForTimeout(2000);
+  await lab.screenshot({ path: `${out}/lab-inside-starter.png` });
+  const solution = [
+    "float edge(vec2 a, vec2 b, vec2 p) {",
+    "return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);",
+    "}",
+    "bool owns(vec2 a, vec2 b, vec2 p) {",
+    "float e = edge(a, b, p);",
+    "bool top_left = (b.y == a.y && b.x < a.x) || b.y < a.y;",
+    "return e > 0.0 || (e == 0.0 && top_left);",
+    "}",
+    "bool inside(vec2 p, vec2 a, vec2 b, vec2 c) {",
+    "return owns(a, b, p) && owns(b, c, p) && owns(c, a, p);",
+    "}",
+  ].join("\n");
+  // The source is on the right, below the tabs and buttons.
+  await lab.mouse.click(1600, 260);
+  await lab.waitForTimeout(500);
+  await lab.keyboard.press("Control+A");
+  await lab.keyboard.type(solution, { delay: 5 });
+  await lab.waitForTimeout(8000);
+  await lab.screenshot({ path: `${out}/lab-inside-passed.png` });
+  const kept = await lab.evaluate(() => JSON.stringify(Object.entries(localStorage)));
+  check(/passed:\[6\]/.test(kept) && /inside:\{6:/.test(kept), `the lab passes and its code is kept (${kept.slice(0, 200)})`);
+  await lab.reload();
+  if (await waitForTitle(lab, /^pipelens — 07-rasterization — step 6\/6$/, "the lab reloads")) {
+    await lab.waitForTimeout(3000);
+    await lab.screenshot({ path: `${out}/lab-inside-after-reload.png` });
+    const again = await lab.evaluate(() => JSON.stringify(Object.entries(localStorage)));
+    check(/passed:\[6\]/.test(again) && /owns\(a, b, p\)/.test(again), "the pass and the code are still kept after the reload");
   }
 }
 

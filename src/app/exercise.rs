@@ -28,6 +28,9 @@ pub struct Comparison {
     /// The student's curve against pipelens' own, point by point, when the step's scene runs
     /// the student's de Casteljau: what decides the exercise then.
     pub curve: Option<CurveDifference>,
+    /// The first row of the vertex table whose clip position is not pipelens' (a vertex
+    /// shader's lab): the row, the student's clip position and pipelens'.
+    pub vertex: Option<(u32, glam::Vec4, glam::Vec4)>,
 }
 
 /// How far (in the curve's units) a student's curve point may be from pipelens' `b(t)` and
@@ -99,6 +102,12 @@ impl Session {
             _ => None,
         };
         self.exercise.curve = self.curve_difference();
+        self.exercise.vertex = match (&self.capture, &self.exercise.reference) {
+            (Some(c), Some(r)) if !self.shown_draft && self.spec.scene.has_shaders() => {
+                first_wrong_vertex(c, r)
+            }
+            _ => None,
+        };
         let (Some(player), Some(code)) = (&self.lesson, self.student_code()) else {
             return;
         };
@@ -318,6 +327,114 @@ pub fn first_mismatch(
         }
         if let Some(m) = paired.iter().find(|(_, _, y, t)| !same_value(y, t)) {
             return Some(mismatch(m));
+        }
+    }
+    None
+}
+
+/// The first row of the vertex table whose clip position in the student's frame differs from
+/// the reference's (each coordinate within `10⁻⁴·max(1, |c|)`): the row, the student's clip
+/// position and pipelens'. `None` when every row agrees or the tables differ in length.
+#[must_use]
+pub fn first_wrong_vertex(
+    student: &FrameCapture,
+    reference: &FrameCapture,
+) -> Option<(u32, glam::Vec4, glam::Vec4)> {
+    if student.vertices.len() != reference.vertices.len() {
+        return None;
+    }
+    student
+        .vertices
+        .iter()
+        .zip(&reference.vertices)
+        .enumerate()
+        .find(|(_, (a, b))| {
+            (a.clip - b.clip)
+                .abs()
+                .cmpgt(1e-4 * a.clip.abs().max(glam::Vec4::ONE))
+                .any()
+        })
+        .map(|(row, (a, b))| (row as u32, a.clip, b.clip))
+}
+
+/// A matrix the student's vertex shader built, compared with pipelens' own entry by entry.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MatrixMismatch {
+    /// The variable that holds it.
+    pub name: String,
+    /// Its line.
+    pub line: usize,
+    /// Which of pipelens' matrices it stands for: `M`, `V`, `P`, `V·M` or `P·V·M`.
+    pub matrix: &'static str,
+    /// The entries that differ: row and column (from 1), the student's value, pipelens'.
+    pub entries: Vec<(usize, usize, f32, f32)>,
+}
+
+/// In the student's vertex-shader run, the first 4×4 matrix assigned that is not pipelens' own:
+/// one named as pipelens names its matrices (`model`, `view`, `projection`, `mvp`, …) stands for
+/// that one; another is compared with M (the vertex's object's), V, P, V·M and P·V·M and stands
+/// for the one it differs from in the fewest entries (at most 8 of 16, else it is some other
+/// matrix). Entries agree within the trace's three decimals.
+#[must_use]
+pub fn wrong_matrix(
+    trace: &pipeline::capture::VertexTrace,
+    capture: &FrameCapture,
+    object: usize,
+) -> Option<MatrixMismatch> {
+    let m = &capture.matrices;
+    let model = m.models.get(object)?.matrix;
+    let (v, p) = (m.view.matrix, m.projection.matrix);
+    let candidates = [
+        ("M", model),
+        ("V", v),
+        ("P", p),
+        ("V·M", v * model),
+        ("P·V·M", p * v * model),
+    ];
+    for l in &trace.trace {
+        let Some((name, value)) = l.text.split_once(" = ") else {
+            continue;
+        };
+        if !value.starts_with("mat4(") {
+            continue;
+        }
+        let numbers: Vec<f32> = tokens(value)
+            .iter()
+            .filter_map(|t| t.parse::<f32>().ok())
+            .collect();
+        let Ok(columns) = <[f32; 16]>::try_from(numbers) else {
+            continue;
+        };
+        // A matrix named as pipelens names its uniforms stands for that one; another for
+        // the one it is nearest.
+        let lower = name.to_ascii_lowercase();
+        let named = match lower.as_str() {
+            "model" | "m" | "model_matrix" => Some("M"),
+            "view" | "v" | "view_matrix" | "look_at" | "lookat" => Some("V"),
+            "projection" | "proj" | "p" | "perspective" | "projection_matrix" => Some("P"),
+            "model_view" | "mv" | "modelview" => Some("V·M"),
+            "mvp" => Some("P·V·M"),
+            _ => None,
+        };
+        let best = candidates
+            .iter()
+            .filter(|(label, _)| named.is_none_or(|n| n == *label))
+            .map(|(label, reference)| {
+                let theirs = reference.to_cols_array();
+                let entries: Vec<(usize, usize, f32, f32)> = (0..16)
+                    .filter(|&k| (columns[k] - theirs[k]).abs() > 0.0015 + 0.002 * theirs[k].abs())
+                    .map(|k| (k % 4 + 1, k / 4 + 1, columns[k], theirs[k]))
+                    .collect();
+                (*label, entries)
+            })
+            .min_by_key(|(_, e)| e.len())?;
+        if !best.1.is_empty() && best.1.len() <= 8 {
+            return Some(MatrixMismatch {
+                name: name.to_owned(),
+                line: l.line,
+                matrix: best.0,
+                entries: best.1,
+            });
         }
     }
     None

@@ -248,3 +248,31 @@ fn a_mismatch_names_the_first_value_that_differs_and_an_unnormalized_normal() {
     );
     assert!(h.query_by_label_contains("is it normalized?").is_some());
 }
+
+/// A matrix lab names the first vertex off and the matrix entry by entry: lesson 25's rotation
+/// about z, whose starter returns the identity, is pipelens' M but for the four entries of the
+/// rotation's 2×2 block (θ = 30°).
+#[test]
+fn a_matrix_lab_names_the_first_wrong_vertex_and_the_entries_off() {
+    use egui_kittest::kittest::Queryable;
+    let path = crate::support::repo().join("lessons/25-lab-model-projection.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    h.state_mut()
+        .session
+        .apply(pipelens::app::session::Command::GoToStep(2));
+    h.run_steps(6);
+    assert!(
+        h.query_by_label_contains("The first vertex off is row")
+            .is_some()
+    );
+    assert!(
+        h.query_by_label_contains(
+            "Your `model` (line 24) is pipelens' M but for 4 entries: row 1, column 1 is 1.000 (M has 0.866); row 2, column 1 is 0.000 (M has 0.500)"
+        )
+        .is_some()
+    );
+    h.get_by_label("Inspect the first wrong vertex").click();
+    h.run_steps(4);
+    assert!(h.state().session.selection.vertex.is_some());
+    assert!(h.state().panels.inspector, "the Inspector opens on it");
+}

@@ -146,6 +146,24 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
     return true;",
     ),
     (
+        "08-antialiasing",
+        "Lab: the inside test at every sample",
+        "    // TODO: test the sample p itself. (As written: the pixel's centre, for all its samples.)
+    vec2 q = floor(p) + 0.5;
+    return edge(a, b, q) >= 0.0 && edge(b, c, q) >= 0.0 && edge(c, a, q) >= 0.0;",
+        "    vec2 corner[3] = vec2[3](a, b, c);
+    for (int i = 0; i < 3; i++) {
+        vec2 from = corner[i];
+        vec2 to = corner[(i + 1) % 3];
+        float e = edge(from, to, p);
+        bool top_left = (to.y == from.y && to.x < from.x) || to.y < from.y;
+        if (e < 0.0 || (e == 0.0 && !top_left)) {
+            return false;
+        }
+    }
+    return true;",
+    ),
+    (
         "09-z-buffer",
         "Lab: the depth test",
         "    // TODO: write the sample only when this fragment is nearer than what is stored.

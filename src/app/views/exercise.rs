@@ -241,6 +241,81 @@ pub fn mismatch_words(m: &crate::app::exercise::Mismatch, lang: Lang) -> String 
     text
 }
 
+/// The first wrong vertex in words: its row and both clip positions.
+fn vertex_words(row: u32, yours: glam::Vec4, theirs: glam::Vec4, lang: Lang) -> String {
+    let v = |c: glam::Vec4| format!("({:.3}, {:.3}, {:.3}, {:.3})", c.x, c.y, c.z, c.w);
+    match lang {
+        Lang::En => format!(
+            "The first vertex off is row {row}: your clip position {}, pipelens' {}.",
+            v(yours),
+            v(theirs)
+        ),
+        Lang::Zh => format!(
+            "第一个出错的顶点在第 {row} 行：你的裁剪坐标 {}，pipelens 的 {}。",
+            v(yours),
+            v(theirs)
+        ),
+    }
+}
+
+/// The matrix the student's vertex shader built for vertex `row` that is not pipelens' own.
+fn matrix_at_vertex(session: &Session, row: u32) -> Option<crate::app::exercise::MatrixMismatch> {
+    let capture = session.capture.as_ref()?;
+    let object = capture.vertices.get(row as usize)?.object as usize;
+    let trace = pipeline::trace_vertex(&session.spec.scene, capture, row as usize).ok()??;
+    crate::app::exercise::wrong_matrix(&trace, capture, object)
+}
+
+/// A matrix compared entry by entry, in words: which of pipelens' matrices it stands for and
+/// each entry that differs (at most four listed).
+#[must_use]
+pub fn matrix_words(m: &crate::app::exercise::MatrixMismatch, lang: Lang) -> String {
+    let entries: Vec<String> = m
+        .entries
+        .iter()
+        .take(4)
+        .map(|(r, c, yours, theirs)| match lang {
+            Lang::En => format!(
+                "row {r}, column {c} is {yours:.3} ({} has {theirs:.3})",
+                m.matrix
+            ),
+            Lang::Zh => format!(
+                "第 {r} 行第 {c} 列是 {yours:.3}（{} 中为 {theirs:.3}）",
+                m.matrix
+            ),
+        })
+        .collect();
+    let more = m.entries.len().saturating_sub(4);
+    match lang {
+        Lang::En => format!(
+            "Your `{}` (line {}) is pipelens' {} but for {} entries: {}{}.",
+            m.name,
+            m.line,
+            m.matrix,
+            m.entries.len(),
+            entries.join("; "),
+            if more > 0 {
+                format!("; and {more} more")
+            } else {
+                String::new()
+            }
+        ),
+        Lang::Zh => format!(
+            "你的 `{}`（第 {} 行）与 pipelens 的 {} 有 {} 个元素不同：{}{}。",
+            m.name,
+            m.line,
+            m.matrix,
+            m.entries.len(),
+            entries.join("；"),
+            if more > 0 {
+                format!("；还有 {more} 个")
+            } else {
+                String::new()
+            }
+        ),
+    }
+}
+
 /// The verdict on a curve in words: passed, or how many points are off, by how much, and the
 /// first one with both values.
 #[must_use]
@@ -339,6 +414,34 @@ pub fn card_part(
                     .size(style.size * 0.9)
                     .color(color),
             );
+            if !d.passed()
+                && let Some((row, yours, theirs)) = session.exercise.vertex
+            {
+                ui.label(
+                    RichText::new(vertex_words(row, yours, theirs, lang))
+                        .size(style.size * 0.9)
+                        .color(NOT_YET),
+                );
+                if let Some(m) = matrix_at_vertex(session, row) {
+                    ui.label(
+                        RichText::new(matrix_words(&m, lang))
+                            .size(style.size * 0.9)
+                            .color(NOT_YET),
+                    );
+                }
+                if session.selection.vertex != Some(row)
+                    && ui
+                        .button(lang.tr("Inspect the first wrong vertex", "检查第一个错误的顶点"))
+                        .on_hover_text(lang.tr(
+                            "Selects its row of the vertex table: the Inspector shows your vertex shader's run for it.",
+                            "选中它在顶点表中的那一行：检查器显示你的顶点着色器对它的运行过程。",
+                        ))
+                        .clicked()
+                {
+                    commands.push(Command::SelectVertex(Some(row)));
+                    return true;
+                }
+            }
             if !d.passed()
                 && let Some(m) = mismatch_at_pixel(session)
             {
