@@ -9,6 +9,20 @@ use pipeline::scene::ObjectShader;
 
 use crate::support::lesson_files;
 
+/// The inside test with the top-left rule, the solution of both inside-test labs (07 and 08):
+/// each edge's `E ≥ 0`, a tie inside only on a top or left edge.
+const TOP_LEFT_INSIDE: &str = "    vec2 corner[3] = vec2[3](a, b, c);
+    for (int i = 0; i < 3; i++) {
+        vec2 from = corner[i];
+        vec2 to = corner[(i + 1) % 3];
+        float e = edge(from, to, p);
+        bool top_left = (to.y == from.y && to.x < from.x) || to.y < from.y;
+        if (e < 0.0 || (e == 0.0 && !top_left)) {
+            return false;
+        }
+    }
+    return true;";
+
 /// Each lab's solution: the lesson, the step's title, and the starter's `TODO` line replaced.
 pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
     (
@@ -133,17 +147,7 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
         "    // TODO: all three edges, and a tie (edge = 0.0) inside only on a top edge
     // (b.y == a.y, going left) or a left edge (going down).
     return edge(a, b, p) >= 0.0;",
-        "    vec2 corner[3] = vec2[3](a, b, c);
-    for (int i = 0; i < 3; i++) {
-        vec2 from = corner[i];
-        vec2 to = corner[(i + 1) % 3];
-        float e = edge(from, to, p);
-        bool top_left = (to.y == from.y && to.x < from.x) || to.y < from.y;
-        if (e < 0.0 || (e == 0.0 && !top_left)) {
-            return false;
-        }
-    }
-    return true;",
+        TOP_LEFT_INSIDE,
     ),
     (
         "08-antialiasing",
@@ -151,17 +155,7 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
         "    // TODO: test the sample p itself. (As written: the pixel's centre, for all its samples.)
     vec2 q = floor(p) + 0.5;
     return edge(a, b, q) >= 0.0 && edge(b, c, q) >= 0.0 && edge(c, a, q) >= 0.0;",
-        "    vec2 corner[3] = vec2[3](a, b, c);
-    for (int i = 0; i < 3; i++) {
-        vec2 from = corner[i];
-        vec2 to = corner[(i + 1) % 3];
-        float e = edge(from, to, p);
-        bool top_left = (to.y == from.y && to.x < from.x) || to.y < from.y;
-        if (e < 0.0 || (e == 0.0 && !top_left)) {
-            return false;
-        }
-    }
-    return true;",
+        TOP_LEFT_INSIDE,
     ),
     (
         "09-z-buffer",

@@ -5,8 +5,8 @@
 
 use glam::I64Vec2;
 
+use super::RasterTriangle;
 use super::zbuffer::{RasterCounts, SampleBuffers};
-use super::{ONE, RasterTriangle};
 
 impl SampleBuffers {
     /// The samples of `tri`'s bounding box that `covers(k, p)` says are covered (`k` the
@@ -17,23 +17,12 @@ impl SampleBuffers {
         tri: &RasterTriangle,
         mut covers: impl FnMut(usize, I64Vec2) -> bool,
     ) -> Vec<(usize, f32)> {
-        let [x0, y0, x1, y1] = tri.bbox.map(u32::from);
         let plane = tri.depth_plane();
-        let mut out = Vec::new();
-        let mut k = 0;
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
-                for s in 0..self.offsets.len() {
-                    let p = corner + self.offsets[s];
-                    k += 1;
-                    if covers(k - 1, p) {
-                        out.push((self.index(x, y, s), plane.at(p)));
-                    }
-                }
-            }
-        }
-        out
+        self.box_sample_indices(tri)
+            .enumerate()
+            .filter(|(k, (_, p))| covers(*k, *p))
+            .map(|(_, (i, p))| (i, plane.at(p)))
+            .collect()
     }
 
     /// Writes triangle `index` into the `covered` samples (from [`Self::covered_samples`])

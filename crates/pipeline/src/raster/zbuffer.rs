@@ -290,20 +290,27 @@ impl SampleBuffers {
         self.rasterize_where(tri, index, test, |_, p| tri.covers(p))
     }
 
-    /// The samples of `tri`'s bounding box in the order [`Self::rasterize_where`] visits them:
-    /// row by row from the box's bottom (window y up), each pixel's samples in turn; each as
-    /// its fixed-point position.
+    /// Each sample of `tri`'s bounding box, row by row from the box's bottom (window y up), each
+    /// pixel's samples in turn: its index in the buffers and its fixed-point position.
+    pub(super) fn box_sample_indices(
+        &self,
+        tri: &RasterTriangle,
+    ) -> impl Iterator<Item = (usize, I64Vec2)> + '_ {
+        let [x0, y0, x1, y1] = tri.bbox.map(u32::from);
+        (y0..=y1).flat_map(move |y| {
+            (x0..=x1).flat_map(move |x| {
+                let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
+                (0..self.offsets.len())
+                    .map(move |s| (self.index(x, y, s), corner + self.offsets[s]))
+            })
+        })
+    }
+
+    /// The samples of `tri`'s bounding box in the order [`Self::rasterize_where`] visits them
+    /// (see [`Self::box_sample_indices`]), each as its fixed-point position.
     #[must_use]
     pub fn box_samples(&self, tri: &RasterTriangle) -> Vec<I64Vec2> {
-        let [x0, y0, x1, y1] = tri.bbox.map(u32::from);
-        let mut out = Vec::new();
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
-                out.extend(self.offsets.iter().map(|&o| corner + o));
-            }
-        }
-        out
+        self.box_sample_indices(tri).map(|(_, p)| p).collect()
     }
 
     /// Rasterizes `tri` with another inside test: `covers(k, p)` says whether the `k`-th sample
@@ -317,23 +324,16 @@ impl SampleBuffers {
         mut covers: impl FnMut(usize, I64Vec2) -> bool,
     ) -> RasterCounts {
         let mut counts = RasterCounts::default();
-        let [x0, y0, x1, y1] = tri.bbox.map(u32::from);
         let plane = tri.depth_plane();
-        let mut k = 0;
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
-                for s in 0..self.offsets.len() {
-                    let p = corner + self.offsets[s];
-                    k += 1;
-                    if !covers(k - 1, p) {
-                        continue;
-                    }
-                    let i = self.index(x, y, s);
-                    let sample = (&mut self.depth[i], &mut self.triangle[i]);
-                    depth_test(sample, plane.at(p), index, test, &mut counts);
-                }
-            }
+        let covered: Vec<(usize, I64Vec2)> = self
+            .box_sample_indices(tri)
+            .enumerate()
+            .filter(|(k, (_, p))| covers(*k, *p))
+            .map(|(_, sample)| sample)
+            .collect();
+        for (i, p) in covered {
+            let sample = (&mut self.depth[i], &mut self.triangle[i]);
+            depth_test(sample, plane.at(p), index, test, &mut counts);
         }
         counts
     }
