@@ -234,6 +234,37 @@ if (await waitForTitle(lab, /^pipelens — 07-rasterization — step 6\/6$/, "th
   }
 }
 
+// 9. A fragment-shader lab in Chinese: lesson 10's last step lacks the specular term. The
+// starter does not pass; the lab's fragment shader with the term written in is typed over it
+// (the shader panel opens on the fragment tab), and the pass is kept.
+const lesson10 = readFileSync(new URL("../../lessons/10-blinn-phong.toml", import.meta.url), "utf8");
+const starter = lesson10.split('exercise.starter.fragment = """\n')[1].split('"""')[0];
+const specular = [
+  "        vec3 h = normalize(l + v);",
+  "        if (n_dot_l > 0.0) {",
+  "            sum += f * ks * light.intensity * pow(max(dot(n, h), 0.0), shininess);",
+  "        }",
+].join("\n");
+const solved = starter.replace("        // TODO: the specular term, where n·l > 0.", specular);
+const frag = await open("?lang=zh&lesson=10-blinn-phong&step=8", "frag-lab");
+if (await waitForTitle(frag, /^pipelens — 10-blinn-phong — step 8\/8$/, "the specular lab opens in Chinese")) {
+  await frag.waitForTimeout(3000);
+  const before = await frag.evaluate(() => JSON.stringify(Object.entries(localStorage)));
+  check(!/10-blinn-phong[^)]*passed:\[8\]/.test(before), "the starter has not passed");
+  await frag.focus("#pipelens");
+  await frag.keyboard.press("s");
+  await frag.waitForTimeout(2000);
+  await frag.screenshot({ path: `${out}/lab-specular-starter-zh.png` });
+  await frag.mouse.click(1600, 300);
+  await frag.waitForTimeout(500);
+  await frag.keyboard.press("Control+A");
+  await frag.keyboard.type(solved, { delay: 2 });
+  await frag.waitForTimeout(10000);
+  await frag.screenshot({ path: `${out}/lab-specular-passed-zh.png` });
+  const kept = await frag.evaluate(() => JSON.stringify(Object.entries(localStorage)));
+  check(/10-blinn-phong[^)]*passed:\[8\]/.test(kept), `the specular lab passes and is kept (${kept.slice(0, 120)})`);
+}
+
 check(errors.length === 0, `no errors in the pages${errors.length ? ": " + errors.join(" | ") : ""}`);
 await browser.close();
 writeFileSync(`${out}/result.txt`, `${passed} passed, ${failures.length} failed\n`);
