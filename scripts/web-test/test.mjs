@@ -265,6 +265,43 @@ if (await waitForTitle(frag, /^pipelens — 10-blinn-phong — step 8\/8$/, "the
   check(/10-blinn-phong[^)]*passed:\[8\]/.test(kept), `the specular lab passes and is kept (${kept.slice(0, 120)})`);
 }
 
+// 10. A matrix lab: lesson 25's step 3 asks for rotate_z(deg) in the vertex shader. The starter
+// returns the identity (the cube stands square, not passed); the vertex shader with the
+// rotation written in is typed over it on the vertex tab, and the pass is kept.
+const lesson25 = readFileSync(new URL("../../lessons/25-lab-model-projection.toml", import.meta.url), "utf8");
+const vertexStarter = lesson25.split('exercise.starter.vertex = """\n')[1].split('"""')[0];
+const rotation = [
+  "    float t = radians(deg);",
+  "    return mat4(cos(t), sin(t), 0.0, 0.0, -sin(t), cos(t), 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0);",
+].join("\n");
+const rotated = vertexStarter.replace(
+  "    // TODO: the rotation about z (mat4 takes its numbers column by column).\n    return mat4(1.0);",
+  rotation,
+);
+const mat = await open("?lesson=25-lab-model-projection&step=3", "matrix-lab");
+if (await waitForTitle(mat, /^pipelens — 25-lab-model-projection — step 3\/5$/, "the rotation lab opens")) {
+  await mat.waitForTimeout(3000);
+  await mat.focus("#pipelens");
+  await mat.keyboard.press("s");
+  await mat.waitForTimeout(2000);
+  await mat.screenshot({ path: `${out}/lab-rotation-starter.png` });
+  await mat.mouse.click(1600, 300);
+  await mat.waitForTimeout(500);
+  await mat.keyboard.press("Control+A");
+  await mat.keyboard.type(rotated, { delay: 2 });
+  await mat.waitForTimeout(10000);
+  await mat.screenshot({ path: `${out}/lab-rotation-passed.png` });
+  // eframe saves within seconds of the pass, which comes after the last frame and its reference.
+  let kept = "";
+  for (let k = 0; k < 15; k++) {
+    kept = await mat.evaluate(() => JSON.stringify(Object.entries(localStorage)));
+    if (/25-lab-model-projection[^)]*passed:\[3\]/.test(kept)) break;
+    await mat.waitForTimeout(2000);
+  }
+  const at = kept.indexOf("25-lab-model-projection");
+  check(/25-lab-model-projection[^)]*passed:\[3\]/.test(kept), `the rotation lab passes and is kept (${at < 0 ? "not in the storage" : kept.slice(at, at + 120)})`);
+}
+
 check(errors.length === 0, `no errors in the pages${errors.length ? ": " + errors.join(" | ") : ""}`);
 await browser.close();
 writeFileSync(`${out}/result.txt`, `${passed} passed, ${failures.length} failed\n`);

@@ -179,6 +179,18 @@ impl ShaderEditor {
         self.fragment.clone_from(&sh.programs.fragment.source);
         self.errors.clear();
         self.shaders_in_use = true;
+        // Open on the stage the step wrote: a vertex shader of its own beside pipelens'
+        // fragment stage (a matrix lab) is on the vertex tab.
+        if matches!(self.tab, Tab::Shader(_)) {
+            let own = |source: &str, shipped: &[&str]| shipped.contains(&source);
+            let vertex_shipped = own(&self.vertex, &shader::SHIPPED_VERTEX);
+            let fragment_shipped = own(&self.fragment, &shader::SHIPPED_FRAGMENT);
+            self.tab = Tab::Shader(if !vertex_shipped && fragment_shipped {
+                Stage::Vertex
+            } else {
+                Stage::Fragment
+            });
+        }
         self.shown = Some(Arc::clone(&sh.programs));
     }
 }

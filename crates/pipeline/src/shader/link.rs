@@ -36,6 +36,19 @@ pub const BUILTIN_FLAT_FRAGMENT: &str = include_str!("builtin/flat.frag");
 /// pipelens' per-pixel Blinn-Phong lighting with a bump or normal map, as GLSL.
 pub const BUILTIN_NORMAL_MAPPED_FRAGMENT: &str = include_str!("builtin/normal_mapped.frag");
 
+/// pipelens' shipped vertex shaders.
+pub const SHIPPED_VERTEX: [&str; 3] = [BUILTIN_VERTEX, BUILTIN_GOURAUD_VERTEX, BUILTIN_FLAT_VERTEX];
+
+/// pipelens' shipped fragment shaders.
+pub const SHIPPED_FRAGMENT: [&str; 6] = [
+    BUILTIN_FRAGMENT,
+    BUILTIN_PHONG_FRAGMENT,
+    BUILTIN_UNLIT_FRAGMENT,
+    BUILTIN_GOURAUD_FRAGMENT,
+    BUILTIN_FLAT_FRAGMENT,
+    BUILTIN_NORMAL_MAPPED_FRAGMENT,
+];
+
 /// What of an object decides which of pipelens' shipped shader pairs draws it.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Surface {
