@@ -31,6 +31,10 @@ pub struct Comparison {
     /// The first row of the vertex table whose clip position is not pipelens' (a vertex
     /// shader's lab): the row, the student's clip position and pipelens'.
     pub vertex: Option<(u32, glam::Vec4, glam::Vec4)>,
+    /// The matrix the student's vertex shader built for that vertex that is not pipelens' own.
+    pub matrix: Option<MatrixMismatch>,
+    /// Where the student's run at the inspected pixel first parts from pipelens' own shader's.
+    pub mismatch: Option<Mismatch>,
 }
 
 /// How far (in the curve's units) a student's curve point may be from pipelens' `b(t)` and
@@ -102,18 +106,34 @@ impl Session {
             _ => None,
         };
         self.exercise.curve = self.curve_difference();
-        self.exercise.vertex = match (&self.capture, &self.exercise.reference) {
-            (Some(c), Some(r)) if !self.shown_draft && self.spec.scene.has_shaders() => {
-                first_wrong_vertex(c, r)
-            }
+        // Found once per frame received, not at every repaint of the card.
+        let frames = match (&self.capture, &self.exercise.reference) {
+            (Some(c), Some(r)) if !self.shown_draft => Some((c, r)),
             _ => None,
         };
+        self.exercise.vertex = frames
+            .filter(|_| self.spec.scene.has_shaders())
+            .and_then(|(c, r)| first_wrong_vertex(c, r));
+        self.exercise.matrix = frames
+            .zip(self.exercise.vertex)
+            .and_then(|((c, _), (row, ..))| self.matrix_at_vertex(c, row));
+        self.exercise.mismatch = frames.and_then(|(c, r)| {
+            first_mismatch(&c.shaders.as_ref()?.pixel, &r.shaders.as_ref()?.pixel)
+        });
         let (Some(player), Some(code)) = (&self.lesson, self.student_code()) else {
             return;
         };
         let passed = self.exercise.passed();
         self.progress
             .keep_code(&player.lesson, player.step, code, passed);
+    }
+
+    /// The matrix the student's vertex shader built for vertex `row` of `capture` that is not
+    /// pipelens' own.
+    fn matrix_at_vertex(&self, capture: &FrameCapture, row: u32) -> Option<MatrixMismatch> {
+        let object = capture.vertices.get(row as usize)?.object as usize;
+        let trace = pipeline::trace_vertex(&self.spec.scene, capture, row as usize).ok()??;
+        wrong_matrix(&trace, capture, object)
     }
 
     /// The student's de Casteljau against pipelens' curve, when an object runs one on a Bézier

@@ -205,15 +205,6 @@ pub fn verdict(d: &Difference, lang: Lang) -> String {
     }
 }
 
-/// Where the student's run at the inspected pixel first parts from pipelens' own shader's run,
-/// when both ran there.
-fn mismatch_at_pixel(session: &Session) -> Option<crate::app::exercise::Mismatch> {
-    session.selection.pixel?;
-    let mine = session.capture.as_ref()?.shaders.as_ref()?;
-    let reference = session.exercise.reference.as_ref()?.shaders.as_ref()?;
-    crate::app::exercise::first_mismatch(&mine.pixel, &reference.pixel)
-}
-
 /// A mismatch in words: the variable, its line, both values, and a vector's length when only
 /// pipelens' is 1 (a normal not normalized).
 #[must_use]
@@ -256,14 +247,6 @@ fn vertex_words(row: u32, yours: glam::Vec4, theirs: glam::Vec4, lang: Lang) -> 
             v(theirs)
         ),
     }
-}
-
-/// The matrix the student's vertex shader built for vertex `row` that is not pipelens' own.
-fn matrix_at_vertex(session: &Session, row: u32) -> Option<crate::app::exercise::MatrixMismatch> {
-    let capture = session.capture.as_ref()?;
-    let object = capture.vertices.get(row as usize)?.object as usize;
-    let trace = pipeline::trace_vertex(&session.spec.scene, capture, row as usize).ok()??;
-    crate::app::exercise::wrong_matrix(&trace, capture, object)
 }
 
 /// A matrix compared entry by entry, in words: which of pipelens' matrices it stands for and
@@ -422,9 +405,9 @@ pub fn card_part(
                         .size(style.size * 0.9)
                         .color(NOT_YET),
                 );
-                if let Some(m) = matrix_at_vertex(session, row) {
+                if let Some(m) = &session.exercise.matrix {
                     ui.label(
-                        RichText::new(matrix_words(&m, lang))
+                        RichText::new(matrix_words(m, lang))
                             .size(style.size * 0.9)
                             .color(NOT_YET),
                     );
@@ -443,10 +426,11 @@ pub fn card_part(
                 }
             }
             if !d.passed()
-                && let Some(m) = mismatch_at_pixel(session)
+                && session.selection.pixel.is_some()
+                && let Some(m) = &session.exercise.mismatch
             {
                 ui.label(
-                    RichText::new(mismatch_words(&m, lang))
+                    RichText::new(mismatch_words(m, lang))
                         .size(style.size * 0.9)
                         .color(NOT_YET),
                 );
