@@ -73,9 +73,9 @@ impl Session {
         let mut scene = spec.scene.clone();
         for o in &mut scene.objects {
             o.shader = None;
-            o.inside = None;
-            o.depth_test = None;
-            o.curve = None;
+            for kind in HookKind::ALL {
+                *o.hook_slot(kind) = None;
+            }
         }
         // pipelens' own stages written as GLSL, where they are shipped: they draw the same
         // pixels, and their run at the inspected pixel is what the student's run is compared
@@ -116,7 +116,8 @@ impl Session {
             .and_then(|(c, r)| first_wrong_vertex(c, r));
         self.exercise.matrix = frames
             .zip(self.exercise.vertex)
-            .and_then(|((c, _), (row, ..))| self.matrix_at_vertex(c, row));
+            .and_then(|((c, _), (row, ..))| self.matrix_at_vertex(c, row))
+            .or_else(|| wrong_shadow_matrix(&self.spec.scene));
         self.exercise.mismatch = frames.and_then(|(c, r)| {
             first_mismatch(&c.shaders.as_ref()?.pixel, &r.shaders.as_ref()?.pixel)
         });
@@ -158,18 +159,10 @@ impl Session {
                     sh.programs.fragment.source.clone(),
                 )
             }),
-            inside: objects
-                .iter()
-                .find_map(|o| o.inside.as_ref())
-                .map(|i| i.source.clone()),
-            depth_test: objects
-                .iter()
-                .find_map(|o| o.depth_test.as_ref())
-                .map(|t| t.source.clone()),
-            curve: objects
-                .iter()
-                .find_map(|o| o.curve.as_ref())
-                .map(|c| c.source.clone()),
+            hooks: HookKind::ALL
+                .into_iter()
+                .filter_map(|kind| Some((kind, self.spec.scene.hook(kind)?.source.clone())))
+                .collect(),
         };
         (code != SavedCode::default()).then_some(code)
     }
@@ -195,15 +188,8 @@ impl Session {
                 time: 0.0,
             });
         }
-        for (kind, source) in [
-            (HookKind::Inside, &code.inside),
-            (HookKind::DepthTest, &code.depth_test),
-            (HookKind::Curve, &code.curve),
-        ] {
-            if let Some(Ok(hook)) = source
-                .as_deref()
-                .map(|s| pipeline::shader::compile_hook(kind, s))
-            {
+        for (kind, source) in &code.hooks {
+            if let Ok(hook) = pipeline::shader::compile_hook(*kind, source) {
                 spec.scene.set_hook(&hook);
             }
         }
@@ -390,6 +376,45 @@ pub struct MatrixMismatch {
     pub entries: Vec<(usize, usize, f32, f32)>,
 }
 
+/// The entries of `columns` (column-major) that differ from `reference`'s beyond the trace's
+/// three decimals: row and column (from 1), the student's value, pipelens'.
+fn differing_entries(columns: &[f32; 16], reference: &glam::Mat4) -> Vec<(usize, usize, f32, f32)> {
+    let theirs = reference.to_cols_array();
+    (0..16)
+        .filter(|&k| (columns[k] - theirs[k]).abs() > 0.0015 + 0.002 * theirs[k].abs())
+        .map(|k| (k % 4 + 1, k / 4 + 1, columns[k], theirs[k]))
+        .collect()
+}
+
+/// The student's shadow matrix against pipelens' `T(l)·M_p·T(−l)` for the scene's light, when
+/// the scene runs one and it casts another shadow. A positive multiple casts the same shadow,
+/// so the student's matrix is first divided by the factor `k = ⟨S, M⟩/⟨M, M⟩` that brings it
+/// nearest pipelens' (when `k > 0`).
+#[must_use]
+pub fn wrong_shadow_matrix(scene: &Scene) -> Option<MatrixMismatch> {
+    let shadow = scene.shadow?;
+    let hook = scene.hook(HookKind::ShadowMatrix)?;
+    let light = shadow.light - glam::Vec3::new(0.0, shadow.plane_y, 0.0);
+    let yours = hook.shadow_matrix(light).ok()?;
+    let theirs = pipeline::transform::planar_shadow(light).matrix;
+    let (a, b) = (yours.to_cols_array(), theirs.to_cols_array());
+    let k =
+        a.iter().zip(&b).map(|(x, y)| x * y).sum::<f32>() / b.iter().map(|y| y * y).sum::<f32>();
+    let scaled = if k > 0.0 { yours * (1.0 / k) } else { yours };
+    let entries = differing_entries(&scaled.to_cols_array(), &theirs);
+    let line = hook
+        .source
+        .lines()
+        .position(|l| l.contains("shadow_matrix"))
+        .map_or(1, |i| i + 1);
+    (!entries.is_empty()).then(|| MatrixMismatch {
+        name: "shadow_matrix(light)".to_owned(),
+        line,
+        matrix: "M_shadow",
+        entries,
+    })
+}
+
 /// In the student's vertex-shader run, the first 4×4 matrix assigned that is not pipelens' own:
 /// one named as pipelens names its matrices (`model`, `view`, `projection`, `mvp`, …) stands for
 /// that one; another is compared with M (the vertex's object's), V, P, V·M and P·V·M and stands
@@ -439,14 +464,7 @@ pub fn wrong_matrix(
         let best = candidates
             .iter()
             .filter(|(label, _)| named.is_none_or(|n| n == *label))
-            .map(|(label, reference)| {
-                let theirs = reference.to_cols_array();
-                let entries: Vec<(usize, usize, f32, f32)> = (0..16)
-                    .filter(|&k| (columns[k] - theirs[k]).abs() > 0.0015 + 0.002 * theirs[k].abs())
-                    .map(|k| (k % 4 + 1, k / 4 + 1, columns[k], theirs[k]))
-                    .collect();
-                (*label, entries)
-            })
+            .map(|(label, reference)| (*label, differing_entries(&columns, reference)))
             .min_by_key(|(_, e)| e.len())?;
         if !best.1.is_empty() && best.1.len() <= 8 {
             return Some(MatrixMismatch {

@@ -7,6 +7,8 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use serde::{Deserialize, Serialize};
 
+use pipeline::shader::HookKind;
+
 use crate::lesson::Lesson;
 use crate::lesson::answer::Verdict;
 
@@ -39,19 +41,41 @@ pub struct LessonProgress {
     /// The de Casteljau the student last ran in each exercise step that has one.
     #[serde(default)]
     pub curve: BTreeMap<usize, String>,
+    /// The shadow matrix the student last ran in each exercise step that has one.
+    #[serde(default)]
+    pub shadow_matrix: BTreeMap<usize, String>,
 }
 
-/// The code a student ran in an exercise step: the shaders, the inside test, or both.
+impl LessonProgress {
+    /// The sources of the student's functions of kind `kind`, by step (1-based).
+    fn hooks(&self, kind: HookKind) -> &BTreeMap<usize, String> {
+        match kind {
+            HookKind::Inside => &self.inside,
+            HookKind::DepthTest => &self.depth_test,
+            HookKind::Curve => &self.curve,
+            HookKind::ShadowMatrix => &self.shadow_matrix,
+        }
+    }
+
+    /// [`Self::hooks`], to change.
+    fn hooks_mut(&mut self, kind: HookKind) -> &mut BTreeMap<usize, String> {
+        match kind {
+            HookKind::Inside => &mut self.inside,
+            HookKind::DepthTest => &mut self.depth_test,
+            HookKind::Curve => &mut self.curve,
+            HookKind::ShadowMatrix => &mut self.shadow_matrix,
+        }
+    }
+}
+
+/// The code a student ran in an exercise step: the shaders, the functions the pipeline calls,
+/// or both.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct SavedCode {
     /// The vertex and fragment shaders' sources.
     pub shaders: Option<(String, String)>,
-    /// The inside test's source.
-    pub inside: Option<String>,
-    /// The depth test's source.
-    pub depth_test: Option<String>,
-    /// De Casteljau's source.
-    pub curve: Option<String>,
+    /// The functions' sources, by kind (in [`HookKind::ALL`]'s order).
+    pub hooks: Vec<(HookKind, String)>,
 }
 
 impl Progress {
@@ -86,12 +110,10 @@ impl Progress {
                 .extend(theirs.typed.iter().map(|(k, v)| (*k, v.clone())));
             mine.code
                 .extend(theirs.code.iter().map(|(k, v)| (*k, v.clone())));
-            mine.inside
-                .extend(theirs.inside.iter().map(|(k, v)| (*k, v.clone())));
-            mine.depth_test
-                .extend(theirs.depth_test.iter().map(|(k, v)| (*k, v.clone())));
-            mine.curve
-                .extend(theirs.curve.iter().map(|(k, v)| (*k, v.clone())));
+            for kind in HookKind::ALL {
+                let theirs = theirs.hooks(kind).iter().map(|(k, v)| (*k, v.clone()));
+                mine.hooks_mut(kind).extend(theirs);
+            }
         }
     }
 
@@ -148,14 +170,8 @@ impl Progress {
         if let Some(shaders) = code.shaders {
             l.code.insert(k + 1, shaders);
         }
-        if let Some(inside) = code.inside {
-            l.inside.insert(k + 1, inside);
-        }
-        if let Some(test) = code.depth_test {
-            l.depth_test.insert(k + 1, test);
-        }
-        if let Some(curve) = code.curve {
-            l.curve.insert(k + 1, curve);
+        for (kind, source) in code.hooks {
+            l.hooks_mut(kind).insert(k + 1, source);
         }
         if passed {
             l.passed.insert(k + 1);
@@ -168,9 +184,10 @@ impl Progress {
         let l = self.lessons.get(&lesson.id)?;
         let code = SavedCode {
             shaders: l.code.get(&(k + 1)).cloned(),
-            inside: l.inside.get(&(k + 1)).cloned(),
-            depth_test: l.depth_test.get(&(k + 1)).cloned(),
-            curve: l.curve.get(&(k + 1)).cloned(),
+            hooks: HookKind::ALL
+                .into_iter()
+                .filter_map(|kind| Some((kind, l.hooks(kind).get(&(k + 1))?.clone())))
+                .collect(),
         };
         (code != SavedCode::default()).then_some(code)
     }

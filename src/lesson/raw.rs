@@ -54,6 +54,8 @@ pub struct RawShader {
     pub depth_test: Option<Spanned<String>>,
     /// `vec2 de_casteljau(vec2 p0, vec2 p1, vec2 p2, vec2 p3, float t)`, a Bézier curve's point.
     pub de_casteljau: Option<Spanned<String>>,
+    /// `mat4 shadow_matrix(vec3 light)`, the planar shadow's projection onto `y = 0`.
+    pub shadow_matrix: Option<Spanned<String>>,
 }
 
 /// One `[[scene.figures]]` entry: an articulated model and its joint angles in degrees.

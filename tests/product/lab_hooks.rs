@@ -276,3 +276,70 @@ fn a_matrix_lab_names_the_first_wrong_vertex_and_the_entries_off() {
     assert!(h.state().session.selection.vertex.is_some());
     assert!(h.state().panels.inspector, "the Inspector opens on it");
 }
+
+/// The shadow-matrix lab: the starter's identities are named entry by entry against pipelens'
+/// M_shadow; the solution and a positive multiple of it (the textbook's form, scaled by y_l)
+/// cast pipelens' shadows and have no entry off; a negative multiple puts every point behind
+/// the eye (w < 0) and fails.
+#[test]
+fn the_shadow_lab_compares_the_matrix_up_to_a_positive_factor() {
+    use pipelens::app::exercise::wrong_shadow_matrix;
+    use pipeline::shader::{HookKind, compile_hook};
+    let path = crate::support::repo().join("lessons/16-planar-shadows.toml");
+    let Ok(Document::Lesson(lesson)) = pipelens::lesson::load_file(&path) else {
+        panic!("lesson 16 loads");
+    };
+    let k = lesson
+        .steps
+        .iter()
+        .position(|s| s.title.en == "Lab: the shadow matrix")
+        .expect("the lab");
+    let e = lesson.steps[k].exercise.as_ref().expect("a lab");
+    let starter = e
+        .starter
+        .hook(HookKind::ShadowMatrix)
+        .expect("a shadow_matrix");
+    let (_, _, todo, solution) = SOLUTIONS
+        .iter()
+        .find(|(id, ..)| *id == "16-planar-shadows")
+        .expect("a solution");
+    let spec = lesson.spec_at(k);
+    let m = wrong_shadow_matrix(&spec.scene).expect("the starter's matrix is off");
+    assert_eq!(m.matrix, "M_shadow");
+    // The identity against T(l)·P·T(−l) for l = (1, 5, 1): row 2 and row 4 differ.
+    assert!(
+        m.entries
+            .iter()
+            .any(|&(r, c, yours, theirs)| (r, c) == (4, 2)
+                && yours == 0.0
+                && (theirs + 0.2).abs() < 1e-6),
+        "{:?}",
+        m.entries
+    );
+    let solved = starter.source.replace(todo, solution);
+    let scaled = solved.replace(
+        "return back * project * to_light;",
+        "return light.y * (back * project * to_light);",
+    );
+    let negative = solved.replace(
+        "return back * project * to_light;",
+        "return -(back * project * to_light);",
+    );
+    for (name, source, passes) in [
+        ("the solution", &solved, true),
+        ("5 × the solution", &scaled, true),
+        ("−1 × the solution", &negative, false),
+    ] {
+        let mut spec = spec.clone();
+        spec.scene
+            .set_hook(&compile_hook(HookKind::ShadowMatrix, source).expect("compiles"));
+        let d = compared(&spec, e.tolerance);
+        assert_eq!(d.passed(), passes, "{name}: {} of {}", d.matching, d.total);
+        assert_eq!(
+            wrong_shadow_matrix(&spec.scene).is_none(),
+            passes,
+            "{name}: {:?}",
+            wrong_shadow_matrix(&spec.scene)
+        );
+    }
+}

@@ -83,6 +83,9 @@ pub struct Object {
     /// The student's de Casteljau: a Bézier curve's drawing takes its points from it, not from
     /// pipelens' own curve (see [`crate::shader::hook`]).
     pub curve: Option<crate::shader::Hook>,
+    /// The student's shadow matrix: the shadow pass projects this object's shadow with it, not
+    /// with pipelens' own (see [`crate::shader::hook`]).
+    pub shadow_matrix: Option<crate::shader::Hook>,
 }
 
 /// An object's shaders and the time their `time` uniform reads.
@@ -96,7 +99,7 @@ pub struct ObjectShader {
 
 /// The code a student gives a scene: shaders for its objects, an inside test and a depth test
 /// for its rasterizer, de Casteljau for a Bézier curve (a lesson's `shader = { vertex, fragment,
-/// inside, depth_test, de_casteljau }`).
+/// inside, depth_test, de_casteljau, shadow_matrix }`).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct StudentCode {
     /// The vertex and fragment shaders (`None`: pipelens' own stages).
@@ -107,7 +110,45 @@ pub struct StudentCode {
     pub depth_test: Option<crate::shader::Hook>,
     /// De Casteljau's curve point (`None`: pipelens' own).
     pub curve: Option<crate::shader::Hook>,
+    /// The planar shadow's projection (`None`: pipelens' own).
+    pub shadow_matrix: Option<crate::shader::Hook>,
 }
+
+/// Where an object or the student's code keeps its function of each kind.
+macro_rules! hook_slots {
+    ($t:ty) => {
+        impl $t {
+            /// The student's function of kind `kind`, if given.
+            #[must_use]
+            pub fn hook(&self, kind: crate::shader::HookKind) -> Option<&crate::shader::Hook> {
+                use crate::shader::HookKind;
+                match kind {
+                    HookKind::Inside => self.inside.as_ref(),
+                    HookKind::DepthTest => self.depth_test.as_ref(),
+                    HookKind::Curve => self.curve.as_ref(),
+                    HookKind::ShadowMatrix => self.shadow_matrix.as_ref(),
+                }
+            }
+
+            /// Where the student's function of kind `kind` is kept.
+            pub fn hook_slot(
+                &mut self,
+                kind: crate::shader::HookKind,
+            ) -> &mut Option<crate::shader::Hook> {
+                use crate::shader::HookKind;
+                match kind {
+                    HookKind::Inside => &mut self.inside,
+                    HookKind::DepthTest => &mut self.depth_test,
+                    HookKind::Curve => &mut self.curve,
+                    HookKind::ShadowMatrix => &mut self.shadow_matrix,
+                }
+            }
+        }
+    };
+}
+
+hook_slots!(Object);
+hook_slots!(StudentCode);
 
 impl Object {
     /// What decides which of pipelens' shipped shader pairs draws this object
@@ -146,6 +187,7 @@ impl Object {
             inside: None,
             depth_test: None,
             curve: None,
+            shadow_matrix: None,
         }
     }
 
@@ -195,6 +237,9 @@ pub struct PlanarShadow {
     pub plane_y: f32,
     /// The shadow's colour.
     pub color: Vec3,
+    /// The projection onto `y = 0` the student's `shadow_matrix` gave for this light, in place
+    /// of pipelens' own (set by the render before the shadow pass).
+    pub yours: Option<Mat4>,
 }
 
 /// How far above its plane shadow geometry is lifted so that it wins the depth test against
@@ -207,7 +252,10 @@ impl PlanarShadow {
     #[must_use]
     pub fn matrix(&self) -> NamedMatrix {
         let h = Vec3::new(0.0, self.plane_y, 0.0);
-        let m = transform::planar_shadow(self.light - h);
+        let m = match self.yours {
+            Some(m) => NamedMatrix::new("M_shadow (yours)", "your shadow_matrix(l)", m),
+            None => transform::planar_shadow(self.light - h),
+        };
         let up = transform::translate(h + Vec3::new(0.0, SHADOW_LIFT, 0.0));
         let down = transform::translate(-h);
         NamedMatrix::new(
@@ -256,39 +304,25 @@ impl Scene {
 
     /// Every object's triangles are covered where the student's `inside` says.
     pub fn set_inside(&mut self, inside: &crate::shader::InsideTest) {
-        for o in &mut self.objects {
-            o.inside = Some(inside.clone());
-        }
+        self.set_hook(inside);
     }
 
     /// Every object runs the student's function `hook` (of its kind).
     pub fn set_hook(&mut self, hook: &crate::shader::Hook) {
-        match hook.kind {
-            crate::shader::HookKind::Inside => self.set_inside(hook),
-            crate::shader::HookKind::DepthTest => self.set_depth_test(hook),
-            crate::shader::HookKind::Curve => {
-                for o in &mut self.objects {
-                    o.curve = Some(hook.clone());
-                }
-            }
+        for o in &mut self.objects {
+            *o.hook_slot(hook.kind) = Some(hook.clone());
         }
     }
 
     /// The student's function of kind `kind` the scene runs (its first object's with one).
     #[must_use]
     pub fn hook(&self, kind: crate::shader::HookKind) -> Option<&crate::shader::Hook> {
-        self.objects.iter().find_map(|o| match kind {
-            crate::shader::HookKind::Inside => o.inside.as_ref(),
-            crate::shader::HookKind::DepthTest => o.depth_test.as_ref(),
-            crate::shader::HookKind::Curve => o.curve.as_ref(),
-        })
+        self.objects.iter().find_map(|o| o.hook(kind))
     }
 
     /// Every object's covered samples are written where the student's `depth_test` says.
     pub fn set_depth_test(&mut self, test: &crate::shader::Hook) {
-        for o in &mut self.objects {
-            o.depth_test = Some(test.clone());
-        }
+        self.set_hook(test);
     }
 
     /// Every object runs what of `code` is given; what is not given stays as it is.
@@ -296,9 +330,14 @@ impl Scene {
         if let Some(shader) = &code.shader {
             self.set_shaders(shader);
         }
-        for hook in [&code.inside, &code.depth_test, &code.curve]
-            .into_iter()
-            .flatten()
+        for hook in [
+            &code.inside,
+            &code.depth_test,
+            &code.curve,
+            &code.shadow_matrix,
+        ]
+        .into_iter()
+        .flatten()
         {
             self.set_hook(hook);
         }

@@ -232,6 +232,11 @@ pub fn mismatch_words(m: &crate::app::exercise::Mismatch, lang: Lang) -> String 
     text
 }
 
+/// A line of what is not yet right, in the card's colour for it.
+fn not_yet(ui: &mut Ui, text: String, style: &Style) {
+    ui.label(RichText::new(text).size(style.size * 0.9).color(NOT_YET));
+}
+
 /// The first wrong vertex in words: its row and both clip positions.
 fn vertex_words(row: u32, yours: glam::Vec4, theirs: glam::Vec4, lang: Lang) -> String {
     let v = |c: glam::Vec4| format!("({:.3}, {:.3}, {:.3}, {:.3})", c.x, c.y, c.z, c.w);
@@ -400,17 +405,9 @@ pub fn card_part(
             if !d.passed()
                 && let Some((row, yours, theirs)) = session.exercise.vertex
             {
-                ui.label(
-                    RichText::new(vertex_words(row, yours, theirs, lang))
-                        .size(style.size * 0.9)
-                        .color(NOT_YET),
-                );
+                not_yet(ui, vertex_words(row, yours, theirs, lang), style);
                 if let Some(m) = &session.exercise.matrix {
-                    ui.label(
-                        RichText::new(matrix_words(m, lang))
-                            .size(style.size * 0.9)
-                            .color(NOT_YET),
-                    );
+                    not_yet(ui, matrix_words(m, lang), style);
                 }
                 if session.selection.vertex != Some(row)
                     && ui
@@ -425,15 +422,18 @@ pub fn card_part(
                     return true;
                 }
             }
+            // A function's matrix (the shadow's), compared without a vertex shader.
+            if !d.passed()
+                && session.exercise.vertex.is_none()
+                && let Some(m) = &session.exercise.matrix
+            {
+                not_yet(ui, matrix_words(m, lang), style);
+            }
             if !d.passed()
                 && session.selection.pixel.is_some()
                 && let Some(m) = &session.exercise.mismatch
             {
-                ui.label(
-                    RichText::new(mismatch_words(m, lang))
-                        .size(style.size * 0.9)
-                        .color(NOT_YET),
-                );
+                not_yet(ui, mismatch_words(m, lang), style);
             }
             if let Some(first) = d.first
                 && session.selection.pixel != Some(first)

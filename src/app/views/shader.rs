@@ -319,6 +319,10 @@ fn hook_tip(kind: HookKind, lang: Lang) -> String {
             "A Bézier curve's drawing calls it for every point of the curve (161 values of t from 0 to 1): p0 … p3 the control points, in the curve's plane. It replaces pipelens' own b(t) = Σ B_i³(t)·P_i.",
             "贝塞尔曲线的绘制对曲线上的每个点调用它（t 从 0 到 1 取 161 个值）：p0 … p3 是控制点，在曲线所在平面内。它代替 pipelens 自己的 b(t) = Σ B_i³(t)·P_i。",
         ),
+        HookKind::ShadowMatrix => lang.tr(
+            "The shadow pass calls it once a frame: light the point light, relative to the plane the shadow falls on, which it takes to be y = 0. Every shadow object is drawn with it in place of pipelens' M_shadow = T(l)·M_p·T(−l); any positive multiple casts the same shadow.",
+            "阴影绘制每帧调用它一次：light 是点光源相对于接收阴影的平面的位置，平面取为 y = 0。每个阴影物体都用它代替 pipelens 的 M_shadow = T(l)·M_p·T(−l) 绘制；它的任何正倍数投下同样的阴影。",
+        ),
     };
     format!("{}\n{what}", kind.signature())
 }
@@ -329,6 +333,7 @@ fn hook_label(kind: HookKind, lang: Lang) -> &'static str {
         HookKind::Inside => lang.tr("Inside test", "内部测试 inside"),
         HookKind::DepthTest => lang.tr("Depth test", "深度测试 depth_test"),
         HookKind::Curve => lang.tr("de Casteljau", "de Casteljau 算法"),
+        HookKind::ShadowMatrix => lang.tr("Shadow matrix", "阴影矩阵 shadow_matrix"),
     }
 }
 

@@ -189,6 +189,7 @@ pub(super) fn shadow(c: &mut Checker<'_>, sh: &Spanned<RawShadow>) -> Option<Pla
         light,
         plane_y,
         color,
+        yours: None,
     })
 }
 

@@ -103,10 +103,10 @@ pub(super) fn object(
     if let Some(sh) = &raw.shader
         && let Some(code) = super::shaders::shader(c, sh, base)
     {
-        object.shader = code.shader;
-        object.inside = code.inside;
-        object.depth_test = code.depth_test;
-        object.curve = code.curve;
+        object.shader.clone_from(&code.shader);
+        for kind in pipeline::shader::HookKind::ALL {
+            *object.hook_slot(kind) = code.hook(kind).cloned();
+        }
     }
     Some((object, label))
 }

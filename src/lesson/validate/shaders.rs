@@ -67,8 +67,9 @@ pub(in crate::lesson) fn shader(
         && r.inside.is_none()
         && r.depth_test.is_none()
         && r.de_casteljau.is_none()
+        && r.shadow_matrix.is_none()
     {
-        c.error(raw.span(), "`shader` needs a `vertex` or a `fragment` shader (a file such as \"toon.frag\", or the GLSL itself), or an `inside`, `depth_test` or `de_casteljau` function");
+        c.error(raw.span(), "`shader` needs a `vertex` or a `fragment` shader (a file such as \"toon.frag\", or the GLSL itself), or an `inside`, `depth_test`, `de_casteljau` or `shadow_matrix` function");
         return None;
     }
     let vertex = r.vertex.as_ref().map(|v| source(c, v, base));
@@ -76,10 +77,18 @@ pub(in crate::lesson) fn shader(
     let inside = r.inside.as_ref().map(|v| source(c, v, base));
     let depth_test = r.depth_test.as_ref().map(|v| source(c, v, base));
     let curve = r.de_casteljau.as_ref().map(|v| source(c, v, base));
+    let shadow_matrix = r.shadow_matrix.as_ref().map(|v| source(c, v, base));
     // A stage that named a missing file has its diagnostic already.
-    if [&vertex, &fragment, &inside, &depth_test, &curve]
-        .iter()
-        .any(|s| matches!(s, Some(None)))
+    if [
+        &vertex,
+        &fragment,
+        &inside,
+        &depth_test,
+        &curve,
+        &shadow_matrix,
+    ]
+    .iter()
+    .any(|s| matches!(s, Some(None)))
     {
         return None;
     }
@@ -129,11 +138,13 @@ pub(in crate::lesson) fn shader(
     let inside = hook(HookKind::Inside, inside.flatten());
     let depth_test = hook(HookKind::DepthTest, depth_test.flatten());
     let curve = hook(HookKind::Curve, curve.flatten());
+    let shadow_matrix = hook(HookKind::ShadowMatrix, shadow_matrix.flatten());
     ok.then_some(StudentCode {
         shader,
         inside,
         depth_test,
         curve,
+        shadow_matrix,
     })
 }
 
@@ -143,6 +154,7 @@ fn hook_name(kind: HookKind) -> &'static str {
         HookKind::Inside => "inside test",
         HookKind::DepthTest => "depth test",
         HookKind::Curve => "de Casteljau",
+        HookKind::ShadowMatrix => "shadow matrix",
     }
 }
 
@@ -180,14 +192,10 @@ pub(in crate::lesson) fn give(objects: &mut [pipeline::scene::Object], code: &St
         if o.shader.is_none() {
             o.shader.clone_from(&code.shader);
         }
-        if o.inside.is_none() {
-            o.inside.clone_from(&code.inside);
-        }
-        if o.depth_test.is_none() {
-            o.depth_test.clone_from(&code.depth_test);
-        }
-        if o.curve.is_none() {
-            o.curve.clone_from(&code.curve);
+        for kind in HookKind::ALL {
+            if o.hook(kind).is_none() {
+                *o.hook_slot(kind) = code.hook(kind).cloned();
+            }
         }
     }
 }

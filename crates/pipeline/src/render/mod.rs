@@ -99,6 +99,9 @@ pub fn render_reusing(
     if let Some(drawn) = with_student_curves(scene)? {
         return render_reusing(&drawn, settings, spare);
     }
+    if let Some(drawn) = with_student_shadow(scene)? {
+        return render_reusing(&drawn, settings, spare);
+    }
     if scene.shadow.is_some() || !scene.figures.is_empty() {
         // Figures and the shadow pass become plain objects; the same pipeline draws them all.
         let (objects, steps) = scene.drawn_objects();
@@ -139,6 +142,37 @@ fn with_student_curves(scene: &Scene) -> Result<Option<Scene>, RenderError> {
             .map_err(|e| RenderError::Invalid(vec![format!("de Casteljau of {}, {e}", o.name)]))?;
         o.mesh = std::sync::Arc::new(mesh);
     }
+    Ok(Some(drawn))
+}
+
+/// The scene with its planar shadow projected by the student's `shadow_matrix` (called once,
+/// for the light relative to the plane); `None` when the scene has no shadow, no object carries
+/// the function, or its matrix is already in place.
+///
+/// # Errors
+/// A run-time error of the student's function, or a matrix that is not finite.
+fn with_student_shadow(scene: &Scene) -> Result<Option<Scene>, RenderError> {
+    let Some(shadow) = scene.shadow.filter(|s| s.yours.is_none()) else {
+        return Ok(None);
+    };
+    let Some(hook) = scene.hook(crate::shader::HookKind::ShadowMatrix) else {
+        return Ok(None);
+    };
+    let light = shadow.light - glam::Vec3::new(0.0, shadow.plane_y, 0.0);
+    let m = hook
+        .shadow_matrix(light)
+        .map_err(|e| RenderError::Invalid(vec![format!("shadow_matrix, {e}")]))?;
+    if !m.is_finite() {
+        return Err(RenderError::Invalid(vec![format!(
+            "shadow_matrix(vec3{light}) returned a matrix that is not finite (a division by \
+             zero?): {m}"
+        )]));
+    }
+    let mut drawn = scene.clone();
+    drawn.shadow = Some(crate::scene::PlanarShadow {
+        yours: Some(m),
+        ..shadow
+    });
     Ok(Some(drawn))
 }
 

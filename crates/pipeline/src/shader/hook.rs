@@ -37,6 +37,16 @@
 //! and those up to the construction's `t`), the control points in the object's plane; it
 //! replaces pipelens' own curve point `b(t) = Σ B_i³(t)·P_i`.
 //!
+//! The planar shadow matrix (Angel's shadow projection), [`HookKind::ShadowMatrix`]:
+//!
+//! ```glsl
+//! mat4 shadow_matrix(vec3 light)
+//! ```
+//!
+//! called once a frame by the shadow pass, `light` the point light relative to the receiving
+//! plane, which it takes to be `y = 0`; it replaces pipelens' own `T(l)·M_p·T(−l)` in every
+//! shadow object's model matrix. Any positive multiple of the matrix casts the same shadow.
+//!
 //! The student writes the function alone; pipelens appends a `main` that calls it with its
 //! arguments as inputs and writes the answer as its output, and compiles the two as one fragment
 //! shader. The student's lines keep their numbers.
@@ -54,6 +64,9 @@ pub const DEPTH_SIGNATURE: &str = "bool depth_test(float z, float stored)";
 /// The signature a Bézier curve's drawing calls for each curve point, as the student writes it.
 pub const CURVE_SIGNATURE: &str = "vec2 de_casteljau(vec2 p0, vec2 p1, vec2 p2, vec2 p3, float t)";
 
+/// The signature the shadow pass calls for its projection, as the student writes it.
+pub const SHADOW_SIGNATURE: &str = "mat4 shadow_matrix(vec3 light)";
+
 /// Which function of the pipeline the student writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum HookKind {
@@ -63,11 +76,18 @@ pub enum HookKind {
     DepthTest,
     /// `vec2 de_casteljau(vec2 p0, vec2 p1, vec2 p2, vec2 p3, float t)`: a Bézier curve's point.
     Curve,
+    /// `mat4 shadow_matrix(vec3 light)`: the planar shadow's projection onto `y = 0`.
+    ShadowMatrix,
 }
 
 impl HookKind {
     /// Every kind, in the order the shader panel shows their tabs.
-    pub const ALL: [Self; 3] = [Self::Inside, Self::DepthTest, Self::Curve];
+    pub const ALL: [Self; 4] = [
+        Self::Inside,
+        Self::DepthTest,
+        Self::Curve,
+        Self::ShadowMatrix,
+    ];
 
     /// The signature the pipeline calls.
     #[must_use]
@@ -76,6 +96,7 @@ impl HookKind {
             Self::Inside => INSIDE_SIGNATURE,
             Self::DepthTest => DEPTH_SIGNATURE,
             Self::Curve => CURVE_SIGNATURE,
+            Self::ShadowMatrix => SHADOW_SIGNATURE,
         }
     }
 
@@ -86,6 +107,7 @@ impl HookKind {
             Self::Inside => "inside",
             Self::DepthTest => "depth_test",
             Self::Curve => "de_casteljau",
+            Self::ShadowMatrix => "shadow_matrix",
         }
     }
 
@@ -95,6 +117,7 @@ impl HookKind {
             Self::Inside => ("the rasterizer", "for every sample"),
             Self::DepthTest => ("the rasterizer", "for every sample a triangle covers"),
             Self::Curve => ("a Bézier curve's drawing", "for every point of the curve"),
+            Self::ShadowMatrix => ("the shadow pass", "once a frame, for the plane y = 0"),
         }
     }
 
@@ -110,6 +133,7 @@ impl HookKind {
                 "pipelens_p3",
                 "pipelens_t",
             ],
+            Self::ShadowMatrix => &["pipelens_light", "pipelens_column"],
         }
     }
 
@@ -149,6 +173,18 @@ in float pipelens_t;
 out vec4 pipelens_answer;
 void main() {
     pipelens_answer = vec4(de_casteljau(pipelens_p0, pipelens_p1, pipelens_p2, pipelens_p3, pipelens_t), 0.0, 1.0);
+}
+"
+            }
+            Self::ShadowMatrix => {
+                "
+in vec3 pipelens_light;
+in float pipelens_column;
+out vec4 pipelens_answer;
+void main() {
+    mat4 m = shadow_matrix(pipelens_light);
+    int c = int(pipelens_column);
+    pipelens_answer = c == 0 ? m[0] : c == 1 ? m[1] : c == 2 ? m[2] : m[3];
 }
 "
             }
@@ -261,9 +297,10 @@ impl Hook {
         corners: [[f32; 2]; 3],
     ) -> Result<Vec<bool>, ShaderError> {
         let [a, b, c] = corners;
+        let flat = |[x, y]: [f32; 2]| [x, y, 0.0];
         let answers = self.answers(points.len(), |k| {
             let [x, y] = points[k];
-            [[x, y], a, b, c, [0.0; 2]]
+            [[x, y, 0.0], flat(a), flat(b), flat(c), [0.0; 3]]
         })?;
         Ok(answers.iter().map(|a| a[0] != 0.0).collect())
     }
@@ -274,7 +311,13 @@ impl Hook {
     /// A run-time error, at its line in the student's source.
     pub fn passes(&self, z: &[f32], stored: &[f32]) -> Result<Vec<bool>, ShaderError> {
         let answers = self.answers(z.len(), |k| {
-            [[z[k], 0.0], [stored[k], 0.0], [0.0; 2], [0.0; 2], [0.0; 2]]
+            [
+                [z[k], 0.0, 0.0],
+                [stored[k], 0.0, 0.0],
+                [0.0; 3],
+                [0.0; 3],
+                [0.0; 3],
+            ]
         })?;
         Ok(answers.iter().map(|a| a[0] != 0.0).collect())
     }
@@ -288,8 +331,8 @@ impl Hook {
         p: [glam::Vec2; 4],
         ts: &[f32],
     ) -> Result<Vec<glam::Vec2>, ShaderError> {
-        let [a, b, c, d] = p.map(|v| [v.x, v.y]);
-        let answers = self.answers(ts.len(), |k| [a, b, c, d, [ts[k], 0.0]])?;
+        let [a, b, c, d] = p.map(|v| [v.x, v.y, 0.0]);
+        let answers = self.answers(ts.len(), |k| [a, b, c, d, [ts[k], 0.0, 0.0]])?;
         Ok(answers
             .iter()
             .map(|v| glam::Vec2::new(v[0], v[1]))
@@ -331,14 +374,29 @@ impl Hook {
         Ok(d)
     }
 
-    /// The function's answer (the caller's output's first two components) for `n` calls, call
-    /// `k`'s arguments `args(k)` (each one or two floats, in the signature's order), 64 calls a
+    /// The student's shadow matrix for the point light `light` (relative to the plane `y = 0`):
+    /// the function called once for each of its four columns.
+    ///
+    /// # Errors
+    /// A run-time error, at its line in the student's source.
+    pub fn shadow_matrix(&self, light: glam::Vec3) -> Result<glam::Mat4, ShaderError> {
+        let l = light.to_array();
+        let columns = self.answers(4, |k| {
+            [l, [k as f32, 0.0, 0.0], [0.0; 3], [0.0; 3], [0.0; 3]]
+        })?;
+        Ok(glam::Mat4::from_cols_array_2d(&[
+            columns[0], columns[1], columns[2], columns[3],
+        ]))
+    }
+
+    /// The function's answer (the caller's output, four components) for `n` calls, call `k`'s
+    /// arguments `args(k)` (each of one to three floats, in the signature's order), 64 calls a
     /// batch.
     fn answers(
         &self,
         n: usize,
-        args: impl Fn(usize) -> [[f32; 2]; 5],
-    ) -> Result<Vec<[f32; 2]>, ShaderError> {
+        args: impl Fn(usize) -> [[f32; 3]; 5],
+    ) -> Result<Vec<[f32; 4]>, ShaderError> {
         let program = &*self.program;
         let mut machine = program.machine();
         let bindings = Bindings { textures: &[] };
@@ -379,7 +437,7 @@ impl Hook {
                 .map_err(|e| program.run_error(&e))?;
             let result = machine.result();
             out.extend(
-                (0..batch).map(|l| [f32::from_bits(result[l]), f32::from_bits(result[LANES + l])]),
+                (0..batch).map(|l| std::array::from_fn(|c| f32::from_bits(result[c * LANES + l]))),
             );
         }
         Ok(out)

@@ -71,7 +71,7 @@ pub struct UniformSpec {
 }
 
 /// Every uniform pipelens sets. A shader declares those it uses (`uniform mat4 model;`).
-pub const UNIFORMS: [UniformSpec; 30] = [
+pub const UNIFORMS: [UniformSpec; 31] = [
     UniformSpec {
         names: &["model", "M"],
         glsl: "mat4",
@@ -163,6 +163,11 @@ pub const UNIFORMS: [UniformSpec; 30] = [
         meaning: "k_h·k_n of bump mapping: dU = k_h·k_n·(h(u + 1/w, v) − h(u, v))",
     },
     UniformSpec {
+        names: &["displacement_scale"],
+        glsl: "float",
+        meaning: "k of displacement mapping p' = p + k·h(u, v)·n (0 without a displacement map)",
+    },
+    UniformSpec {
         names: &["time"],
         glsl: "float",
         meaning: "seconds into the step's animation",
@@ -238,15 +243,19 @@ pub enum TextureSlot {
     /// The object's bump (height) or normal map, sampled as the built-in bump mapping reads it:
     /// bilinear, repeating, level 0 (`detail_kind` says which map it is).
     Detail,
+    /// The object's displacement (height) map, sampled as the built-in displacement reads it:
+    /// bilinear, repeating, level 0.
+    Displacement,
 }
 
 /// The texture names pipelens binds (`uniform sampler2D tex;`), and what each holds.
-pub const TEXTURES: [(&str, TextureSlot); 5] = [
+pub const TEXTURES: [(&str, TextureSlot); 6] = [
     ("tex", TextureSlot::Surface),
     ("texture0", TextureSlot::Surface),
     ("detail", TextureSlot::Detail),
     ("normal_map", TextureSlot::Detail),
     ("height_map", TextureSlot::Detail),
+    ("displacement", TextureSlot::Displacement),
 ];
 
 /// The texture called `name`, if pipelens binds one.
@@ -278,6 +287,8 @@ pub struct Uniforms {
     pub detail_kind: i32,
     /// `bump_strength`, `k_h·k_n`.
     pub bump_strength: f32,
+    /// `displacement_scale`, k of `p' = p + k·h(u, v)·n` (0 without a displacement map).
+    pub displacement_scale: f32,
     /// Seconds into the step's animation.
     pub time: f32,
     /// The viewport's size in pixels.
@@ -305,6 +316,7 @@ impl Default for Uniforms {
             has_texture: false,
             detail_kind: 0,
             bump_strength: 0.0,
+            displacement_scale: 0.0,
             time: 0.0,
             resolution: Vec2::ONE,
             lens: [90.0, 1.0, 1.0, 10.0],
@@ -368,6 +380,7 @@ impl Uniforms {
             "use_tex" => vec![u32::from(self.has_texture)],
             "detail_kind" => vec![self.detail_kind as u32],
             "bump_strength" => floats(&[self.bump_strength]),
+            "displacement_scale" => floats(&[self.displacement_scale]),
             "fovy" => floats(&self.lens[0..1]),
             "aspect" => floats(&self.lens[1..2]),
             "near" => floats(&self.lens[2..3]),

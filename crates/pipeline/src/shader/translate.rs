@@ -119,6 +119,13 @@ impl<'m> Translator<'m> {
         }
         let mut emitted = vec![false; f.expressions.len()];
         mark_emitted(&f.body, &mut emitted);
+        // A local's initial value is a constant expression the function's entry copies, before
+        // its body emits anything (`mat4 m = mat4(1.0);`): evaluated with the constants.
+        for (_, l) in f.local_variables.iter() {
+            if let Some(init) = l.init {
+                mark_constant(&f.expressions, init, &mut emitted);
+            }
+        }
         let mut func = Function {
             name: f.name.clone().unwrap_or_else(|| "main".to_owned()),
             ops: Vec::with_capacity(f.expressions.len()),
@@ -545,6 +552,45 @@ fn pointee<'a>(module: &'a Module, inner: &'a TypeInner) -> &'a TypeInner {
 }
 
 /// Marks every expression some `Emit` covers.
+/// Marks constant expression `h` and the expressions it is made of as not emitted, so that they
+/// are evaluated once with the function's constants.
+fn mark_constant(
+    expressions: &naga::Arena<Expression>,
+    h: Handle<Expression>,
+    emitted: &mut [bool],
+) {
+    emitted[h.index()] = false;
+    let operands: Vec<Handle<Expression>> = match expressions[h] {
+        Expression::Compose { ref components, .. } => components.clone(),
+        Expression::Splat { value, .. } => vec![value],
+        Expression::As { expr, .. } | Expression::Unary { expr, .. } => vec![expr],
+        Expression::Binary { left, right, .. } => vec![left, right],
+        Expression::Swizzle { vector, .. } => vec![vector],
+        Expression::AccessIndex { base, .. } => vec![base],
+        Expression::Access { base, index } => vec![base, index],
+        Expression::Select {
+            condition,
+            accept,
+            reject,
+        } => vec![condition, accept, reject],
+        Expression::Relational { argument, .. } => vec![argument],
+        Expression::Math {
+            arg,
+            arg1,
+            arg2,
+            arg3,
+            ..
+        } => [Some(arg), arg1, arg2, arg3]
+            .into_iter()
+            .flatten()
+            .collect(),
+        _ => Vec::new(),
+    };
+    for o in operands {
+        mark_constant(expressions, o, emitted);
+    }
+}
+
 fn mark_emitted(block: &naga::Block, emitted: &mut [bool]) {
     for s in block.iter() {
         match *s {

@@ -246,3 +246,62 @@ fn de_casteljau_in_glsl_draws_pipelens_curve_and_a_straight_line_does_not() {
     let mine = render(&scene, &settings);
     assert!(own.difference(&mine, 1.0).is_some_and(|d| d.passed()));
 }
+
+/// Angel's shadow matrix written in GLSL (T(l)·P·T(−l), P the identity with last row
+/// (0, −1/y_l, 0, 0)) is pipelens' own, entry by entry.
+const SHADOW: &str = "mat4 shadow_matrix(vec3 light) {
+    mat4 to_light = mat4(1.0);
+    to_light[3] = vec4(-light, 1.0);
+    mat4 project = mat4(1.0);
+    project[1][3] = -1.0 / light.y;
+    project[3][3] = 0.0;
+    mat4 back = mat4(1.0);
+    back[3] = vec4(light, 1.0);
+    return back * project * to_light;
+}";
+
+#[test]
+fn a_shadow_matrix_in_glsl_is_angels() {
+    use glam::Vec3;
+    use pipeline::shader::{HookKind, compile_hook};
+    let hook = compile_hook(HookKind::ShadowMatrix, SHADOW).expect("compiles");
+    for light in [Vec3::new(1.0, 5.0, 1.0), Vec3::new(-3.0, 2.5, 0.5)] {
+        let mine = hook.shadow_matrix(light).expect("runs");
+        let theirs = pipeline::transform::planar_shadow(light).matrix;
+        assert!(
+            mine.abs_diff_eq(theirs, 1e-6),
+            "{light}: {mine} against {theirs}"
+        );
+    }
+}
+
+/// A local initialised with a constant vector or matrix holds it from the function's start (the
+/// machine had copied the initial value before the body computed it: `mat4 m = mat4(1.0)` was
+/// all zeros), in a loop too.
+#[test]
+fn locals_start_with_their_constant_values() {
+    use glam::{Mat4, Vec3, Vec4};
+    use pipeline::shader::{HookKind, compile_hook};
+    let source = "mat4 shadow_matrix(vec3 light) {
+    mat4 m = mat4(1.0);
+    vec4 third = vec4(2.0);
+    float sum = 0.0;
+    for (int i = 0; i < 3; i++) {
+        vec2 v = vec2(1.0, 3.0);
+        v.x += 1.0;
+        sum += v.x;
+    }
+    m[2] = third;
+    m[3][0] = sum;
+    return m;
+}";
+    let hook = compile_hook(HookKind::ShadowMatrix, source).expect("compiles");
+    let m = hook.shadow_matrix(Vec3::ONE).expect("runs");
+    let expected = Mat4::from_cols(
+        Vec4::X,
+        Vec4::Y,
+        Vec4::splat(2.0),
+        Vec4::new(6.0, 0.0, 0.0, 1.0),
+    );
+    assert_eq!(m, expected);
+}

@@ -328,6 +328,7 @@ fn the_shadow_pass_projects_every_vertex_by_the_closed_form() {
             light,
             plane_y: 0.0,
             color: Vec3::splat(0.1),
+            yours: None,
         }),
     };
     let c = render(&scene, &RenderSettings::default());

@@ -97,6 +97,10 @@ fn uniforms(
             Some(crate::texture::SurfaceDetail::Bump { strength, .. }) => *strength,
             _ => 0.0,
         },
+        displacement_scale: match &o.displacement {
+            Some(d) if !o.mesh.uvs.is_empty() => d.scale,
+            _ => 0.0,
+        },
         time,
         resolution: glam::Vec2::new(settings.width as f32, settings.height as f32),
         lens: lens(&scene.projection, settings),
@@ -117,7 +121,8 @@ fn lens(projection: &crate::camera::Projection, settings: &RenderSettings) -> [f
 
 /// The textures a program's `sampler2D`s read and how each is sampled: the object's texture
 /// with `surface` (the settings' sampler), its bump or normal map as the built-in bump mapping
-/// reads it (bilinear, repeating, level 0). Nothing without texture coordinates.
+/// reads it and its displacement map as the built-in displacement does (both bilinear,
+/// repeating, level 0). Nothing without texture coordinates.
 fn textures<'a>(
     program: &shader::Program,
     object: &'a Object,
@@ -135,6 +140,10 @@ fn textures<'a>(
                     Some((&**t, SurfaceDetail::MAP_SAMPLER))
                 }
             },
+            TextureSlot::Displacement => object
+                .displacement
+                .as_ref()
+                .map(|d| (&*d.height, SurfaceDetail::MAP_SAMPLER)),
         })
         .map(|bound| bound.filter(|_| has_uvs))
         .collect()
@@ -354,7 +363,9 @@ fn write_inputs(
     for l in 0..n {
         let i = first + l;
         let v = match location {
-            Some(0) => vertex::object_position(object, i).to_array(),
+            // The mesh's own position: a vertex shader displaces it itself (pipelens.vert
+            // does, with `displacement` and `displacement_scale`).
+            Some(0) => mesh.positions[i].to_array(),
             Some(1) => mesh
                 .normals
                 .get(i)

@@ -5,8 +5,11 @@
 uniform mat4 model;
 uniform mat4 view;
 uniform mat4 projection;
+uniform sampler2D displacement;    // displacement mapping's height map (none: black)
+uniform float displacement_scale;  // its k (0 without one)
 
 in vec3 position;
+in vec3 normal;
 in vec2 uv;
 in vec3 color;
 
@@ -16,7 +19,11 @@ flat out vec3 f_color;    // and its colour
 out vec2 v_uv;
 
 void main() {
-    vec4 world = model * vec4(position, 1.0);
+    // Displacement mapping moves the vertex along its normal: p' = p + k·h(u, v)·n, h the
+    // height map's luminance (bilinear, level 0).
+    float h = dot(textureLod(displacement, uv, 0.0).rgb, vec3(0.2126, 0.7152, 0.0722));
+    vec3 p_object = position + normal * (displacement_scale * h);
+    vec4 world = model * vec4(p_object, 1.0);
     w_pos = world.xyz;
     f_pos = world.xyz;
     f_color = color;

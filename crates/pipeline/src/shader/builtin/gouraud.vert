@@ -7,6 +7,8 @@
 uniform mat4 model;
 uniform mat4 view;
 uniform mat4 projection;
+uniform sampler2D displacement;    // displacement mapping's height map (none: black)
+uniform float displacement_scale;  // its k (0 without one)
 uniform mat3 normal_matrix;
 uniform vec3 eye;
 uniform vec3 ka;
@@ -27,7 +29,11 @@ out vec3 v_specular;   // specular
 out vec2 v_uv;
 
 void main() {
-    vec4 world = model * vec4(position, 1.0);
+    // Displacement mapping moves the vertex along its normal: p' = p + k·h(u, v)·n, h the
+    // height map's luminance (bilinear, level 0).
+    float h = dot(textureLod(displacement, uv, 0.0).rgb, vec3(0.2126, 0.7152, 0.0722));
+    vec3 p_object = position + normal * (displacement_scale * h);
+    vec4 world = model * vec4(p_object, 1.0);
     vec3 p = world.xyz;
     vec3 n = normalize(normal_matrix * normal);
     vec3 v = normalize(eye - p);

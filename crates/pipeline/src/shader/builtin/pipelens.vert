@@ -1,10 +1,12 @@
 #version 330 core
-// pipelens' own vertex stage as a shader: the position through M, V and P one matrix at a
-// time (model → world → eye → clip, in the order the vertex table shows them), and what the
-// fragment stage interpolates (world position, unit world normal, texture coordinates, colour).
+// pipelens' own vertex stage as a shader: the position (displaced, with a displacement map)
+// through M, V and P one matrix at a time (model → world → eye → clip, in the order the vertex
+// table shows them), and what the fragment stage interpolates (world position, unit world normal, texture coordinates, colour).
 uniform mat4 model;
 uniform mat4 view;
 uniform mat4 projection;
+uniform sampler2D displacement;    // displacement mapping's height map (none: black)
+uniform float displacement_scale;  // its k (0 without one)
 uniform mat3 normal_matrix;
 
 in vec3 position;
@@ -18,7 +20,11 @@ out vec2 v_uv;
 out vec3 v_color;
 
 void main() {
-    vec4 world = model * vec4(position, 1.0);
+    // Displacement mapping moves the vertex along its normal: p' = p + k·h(u, v)·n, h the
+    // height map's luminance (bilinear, level 0).
+    float h = dot(textureLod(displacement, uv, 0.0).rgb, vec3(0.2126, 0.7152, 0.0722));
+    vec3 p_object = position + normal * (displacement_scale * h);
+    vec4 world = model * vec4(p_object, 1.0);
     w_pos = world.xyz;
     w_nrm = normalize(normal_matrix * normal);
     v_uv = uv;
