@@ -47,6 +47,7 @@ const FORMULAS_ZH: &[(&str, &str)] = &[
         "[l,r]×[b,t]×[f,n] → [−1,1]³：先把中心平移到原点，再缩放",
     ),
     ("back up to the plane, lifted by ε", "移回平面，并抬高 ε"),
+    ("your shadow_matrix(l)", "你的 shadow_matrix(l)"),
     (
         "centre the view volume at the origin, then scale it to the cube [−1,1]³",
         "把视见体的中心移到原点，再缩放为立方体 [−1,1]³",

@@ -15,6 +15,7 @@
 mod check;
 mod code;
 pub mod dialect;
+mod emitted;
 pub mod hook;
 pub mod interface;
 pub mod link;

@@ -10,6 +10,7 @@ use super::code::{
     const_value, element_count, kind_of, literal, member,
 };
 use super::dialect::Adapted;
+use super::emitted::{mark_constant, mark_emitted};
 
 /// The translation of a validated module.
 pub struct Translator<'m> {
@@ -548,78 +549,5 @@ fn pointee<'a>(module: &'a Module, inner: &'a TypeInner) -> &'a TypeInner {
     match *inner {
         TypeInner::Pointer { base, .. } => &module.types[base].inner,
         _ => inner,
-    }
-}
-
-/// Marks every expression some `Emit` covers.
-/// Marks constant expression `h` and the expressions it is made of as not emitted, so that they
-/// are evaluated once with the function's constants.
-fn mark_constant(
-    expressions: &naga::Arena<Expression>,
-    h: Handle<Expression>,
-    emitted: &mut [bool],
-) {
-    emitted[h.index()] = false;
-    let operands: Vec<Handle<Expression>> = match expressions[h] {
-        Expression::Compose { ref components, .. } => components.clone(),
-        Expression::Splat { value, .. } => vec![value],
-        Expression::As { expr, .. } | Expression::Unary { expr, .. } => vec![expr],
-        Expression::Binary { left, right, .. } => vec![left, right],
-        Expression::Swizzle { vector, .. } => vec![vector],
-        Expression::AccessIndex { base, .. } => vec![base],
-        Expression::Access { base, index } => vec![base, index],
-        Expression::Select {
-            condition,
-            accept,
-            reject,
-        } => vec![condition, accept, reject],
-        Expression::Relational { argument, .. } => vec![argument],
-        Expression::Math {
-            arg,
-            arg1,
-            arg2,
-            arg3,
-            ..
-        } => [Some(arg), arg1, arg2, arg3]
-            .into_iter()
-            .flatten()
-            .collect(),
-        _ => Vec::new(),
-    };
-    for o in operands {
-        mark_constant(expressions, o, emitted);
-    }
-}
-
-fn mark_emitted(block: &naga::Block, emitted: &mut [bool]) {
-    for s in block.iter() {
-        match *s {
-            Statement::Emit(ref r) => {
-                for i in r.index_range() {
-                    emitted[i as usize] = true;
-                }
-            }
-            Statement::Block(ref b) => mark_emitted(b, emitted),
-            Statement::If {
-                ref accept,
-                ref reject,
-                ..
-            } => {
-                mark_emitted(accept, emitted);
-                mark_emitted(reject, emitted);
-            }
-            Statement::Switch { ref cases, .. } => {
-                cases.iter().for_each(|c| mark_emitted(&c.body, emitted))
-            }
-            Statement::Loop {
-                ref body,
-                ref continuing,
-                ..
-            } => {
-                mark_emitted(body, emitted);
-                mark_emitted(continuing, emitted);
-            }
-            _ => {}
-        }
     }
 }
