@@ -387,9 +387,9 @@ fn differing_entries(columns: &[f32; 16], reference: &glam::Mat4) -> Vec<(usize,
 }
 
 /// The student's shadow matrix against pipelens' `T(l)·M_p·T(−l)` for the scene's light, when
-/// the scene runs one and it casts another shadow. A positive multiple casts the same shadow,
-/// so the student's matrix is first divided by the factor `k = ⟨S, M⟩/⟨M, M⟩` that brings it
-/// nearest pipelens' (when `k > 0`).
+/// the scene runs one and it casts another shadow. A positive multiple casts the same shadow:
+/// the student's matrix divided by the factor `k = ⟨S, M⟩/⟨M, M⟩` that brings it nearest
+/// pipelens' (when `k > 0`) and then equal is not off; otherwise its own entries are compared.
 #[must_use]
 pub fn wrong_shadow_matrix(scene: &Scene) -> Option<MatrixMismatch> {
     let shadow = scene.shadow?;
@@ -400,8 +400,10 @@ pub fn wrong_shadow_matrix(scene: &Scene) -> Option<MatrixMismatch> {
     let (a, b) = (yours.to_cols_array(), theirs.to_cols_array());
     let k =
         a.iter().zip(&b).map(|(x, y)| x * y).sum::<f32>() / b.iter().map(|y| y * y).sum::<f32>();
-    let scaled = if k > 0.0 { yours * (1.0 / k) } else { yours };
-    let entries = differing_entries(&scaled.to_cols_array(), &theirs);
+    if k > 0.0 && differing_entries(&(yours * (1.0 / k)).to_cols_array(), &theirs).is_empty() {
+        return None;
+    }
+    let entries = differing_entries(&a, &theirs);
     let line = hook
         .source
         .lines()
