@@ -54,7 +54,7 @@ pub(super) fn new_lesson(file: &Path, lab: bool) -> Result<ExitCode> {
         .with_context(|| format!("cannot write {}", file.display()))?;
     let steps = text.matches("\n[[steps]]").count();
     let what = if lab { "a lab" } else { "a lesson" };
-    println!(
+    say!(
         "Wrote {}: {what} of {steps} step{}. Play it with `pipelens --lesson {0}`; it reloads on save.",
         file.display(),
         if steps == 1 { "" } else { "s" }
@@ -76,7 +76,7 @@ fn print_meshes(spec: &lesson::SceneSpec) {
                 format!("box {} to {}, centre {}", v(lo), v(hi), v(c))
             },
         );
-        println!(
+        say!(
             "  {}: {}, {} triangles, {bounds}",
             o.name,
             m.name,
@@ -95,11 +95,11 @@ pub(super) fn check(paths: &[PathBuf]) -> ExitCode {
     for p in &paths {
         match lesson::load_file(p) {
             Ok(lesson::Document::Scene(s)) => {
-                println!("{}: ok (scene)", p.display());
+                say!("{}: ok (scene)", p.display());
                 print_meshes(&s);
             }
             Ok(lesson::Document::Lesson(l)) => {
-                println!(
+                say!(
                     "{}: ok (lesson {}, {} steps)",
                     p.display(),
                     l.id,

@@ -1,5 +1,18 @@
 //! The command line: `pipelens [COMMAND]`.
 
+/// `println!` that ends the program quietly when its reader has gone (`pipelens check lessons/ |
+/// head`), where `println!` panics with "failed printing to stdout".
+macro_rules! say {
+    ($($t:tt)*) => {{
+        use std::io::Write as _;
+        if let Err(e) = writeln!(std::io::stdout().lock(), $($t)*) {
+            if e.kind() == std::io::ErrorKind::BrokenPipe {
+                std::process::exit(0);
+            }
+        }
+    }};
+}
+
 mod authoring;
 
 use std::path::{Path, PathBuf};
@@ -415,7 +428,7 @@ fn export_lesson(
         bar.show(done, all, what);
     })?;
     drop(bar);
-    println!(
+    say!(
         "Exported {} files of lesson {} to {}; open {}",
         written.len(),
         lesson.id,
@@ -470,7 +483,7 @@ fn export(
         &opts.cancel,
     )?;
     drop(bar);
-    println!(
+    say!(
         "Exported {} files ({}×{}, {} sample(s), {} primitives) to {}:",
         written.len(),
         spec.settings.width,
@@ -480,7 +493,7 @@ fn export(
         opts.out.display()
     );
     for p in &written {
-        println!("  {}", p.display());
+        say!("  {}", p.display());
     }
     Ok(())
 }

@@ -134,3 +134,22 @@ fn new_lesson_writes_a_template_with_every_step_key_that_check_accepts() {
     assert!(text(&o).contains("exists already; it was left as it is"));
     assert_eq!(std::fs::read_to_string(&path).expect("read"), "mine");
 }
+
+/// `pipelens check lessons | head -0`: a reader that has gone ends the program quietly, as the
+/// shell's tools do, not with a panic ("failed printing to stdout: Broken pipe").
+#[test]
+fn check_piped_into_a_reader_that_has_gone_ends_quietly() {
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_pipelens"))
+        .args(["check", "lessons"])
+        .current_dir(repo())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("runs");
+    // The reader closes its end before the first line is written: every write fails.
+    drop(child.stdout.take());
+    let out = child.wait_with_output().expect("ends");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{:?}: {err}", out.status);
+    assert!(!err.contains("panicked"), "{err}");
+}
