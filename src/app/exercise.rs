@@ -71,12 +71,7 @@ impl Session {
             return None;
         }
         let mut scene = spec.scene.clone();
-        for o in &mut scene.objects {
-            o.shader = None;
-            for kind in HookKind::ALL {
-                *o.hook_slot(kind) = None;
-            }
-        }
+        scene.clear_code();
         // pipelens' own stages written as GLSL, where they are shipped: they draw the same
         // pixels, and their run at the inspected pixel is what the student's run is compared
         // with, value by value (`first_mismatch`).

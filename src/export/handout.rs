@@ -277,9 +277,17 @@ fn step_html(
         heading = typeset(&notation::parse_paragraph(step.title.get(lang))),
         body = markdown(step.narration.get(lang))
     );
+    let target = if step.exercise.is_some() {
+        t(
+            " — pipelens' own, what your code must draw",
+            "——pipelens 自带的结果，即你的代码要画出的",
+        )
+    } else {
+        ""
+    };
     let _ = writeln!(
         h,
-        "<figure><img src=\"{}\" alt=\"{title}\"><figcaption class=\"ui\">{}: {}</figcaption></figure>",
+        "<figure><img src=\"{}\" alt=\"{title}\"><figcaption class=\"ui\">{}: {}{target}</figcaption></figure>",
         page.picture.url(),
         t("Stage", "阶段"),
         page.stage.name(lang)
@@ -378,7 +386,12 @@ fn exercise_html(e: &crate::lesson::answer::Exercise, lang: Lang) -> String {
             .map(|(source, _)| source),
         );
     }
-    sources.extend(e.starter.inside.as_ref().map(|i| i.source.as_str()));
+    sources.extend(
+        pipeline::shader::HookKind::ALL
+            .into_iter()
+            .filter_map(|kind| e.starter.hook(kind))
+            .map(|hook| hook.source.as_str()),
+    );
     for source in sources {
         let _ = write!(h, "<pre class=\"code\">{}</pre>", esc(source.trim()));
     }

@@ -246,6 +246,10 @@ fn spec_of(lesson: &Lesson, k: usize, opts: &LessonExport, t: Option<f32>) -> Re
         spec.settings.width = w;
         spec.settings.height = h;
     }
+    // An exercise is exported as what it asks for: pipelens' own frame, not the starter's.
+    if lesson.steps[k].exercise.is_some() {
+        spec.scene.clear_code();
+    }
     // The pixel `capture.json` describes: the frame records its fragment shaders' runs there.
     if opts.data {
         // `--pixel`, else the step's own inspected pixel, when it is inside the image.

@@ -223,12 +223,7 @@ pub(crate) fn compared(
 ) -> pipeline::capture::Difference {
     let mine = pipeline::render(&spec.scene, &spec.settings).expect("the lab renders");
     let mut own = spec.scene.clone();
-    for o in &mut own.objects {
-        o.shader = None;
-        for kind in pipeline::shader::HookKind::ALL {
-            *o.hook_slot(kind) = None;
-        }
-    }
+    own.clear_code();
     let reference = pipeline::render(&own, &spec.settings).expect("the reference renders");
     mine.difference(&reference, tolerance).expect("same size")
 }

@@ -303,6 +303,21 @@ fn every_lesson_exports_a_handout() {
                     "{}: step {k}'s title in the handout",
                     lesson.id
                 );
+                // A lab prints the starter of every function the student completes.
+                for hook in step.exercise.iter().flat_map(|e| {
+                    pipeline::shader::HookKind::ALL
+                        .into_iter()
+                        .filter_map(|kind| e.starter.hook(kind))
+                }) {
+                    let first = hook.source.trim().lines().next().unwrap_or_default();
+                    let printed = first.replace('&', "&amp;").replace('<', "&lt;");
+                    assert!(
+                        html.contains(&printed),
+                        "{}: step {k}'s starter {:?} in the handout",
+                        lesson.id,
+                        hook.kind
+                    );
+                }
             }
             crate::handout::assert_self_contained(&html, &lesson.id);
             if lang == "zh" {

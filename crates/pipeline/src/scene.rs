@@ -325,6 +325,16 @@ impl Scene {
         self.set_hook(test);
     }
 
+    /// Every object runs pipelens' own stages again: no shaders, no functions of the student's.
+    pub fn clear_code(&mut self) {
+        for o in &mut self.objects {
+            o.shader = None;
+            for kind in crate::shader::HookKind::ALL {
+                *o.hook_slot(kind) = None;
+            }
+        }
+    }
+
     /// Every object runs what of `code` is given; what is not given stays as it is.
     pub fn run_code(&mut self, code: &StudentCode) {
         if let Some(shader) = &code.shader {
