@@ -15,7 +15,7 @@ in vec2 uv;
 in vec3 color;
 
 out vec3 w_pos;   // world position M·p
-out vec3 w_nrm;   // world normal (M⁻¹)ᵀ·n, normalized (interpolation shortens it again)
+out vec3 w_nrm;   // world normal (M⁻¹)^T·n, normalized (interpolation shortens it again)
 out vec2 v_uv;
 out vec3 v_color;
 
