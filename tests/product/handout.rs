@@ -38,8 +38,52 @@ pub fn assert_self_contained(html: &str, what: &str) {
             );
         }
     }
-    for word in ["<link", "<script", "url(", "@import"] {
+    for word in ["<link", "<script", "@import"] {
         assert!(!html.contains(word), "{what}: {word} in the handout");
+    }
+    // A Chinese handout's font is a `url(data:…)` in its style; nothing else is fetched.
+    for value in html.split("url(").skip(1) {
+        assert!(
+            value.starts_with("data:"),
+            "{what}: url({} points outside the file",
+            &value[..value.len().min(40)]
+        );
+    }
+}
+
+/// A Chinese handout carries the app's Chinese font, so that a reader without one (a bare
+/// Linux, headless Chromium printing to PDF) sees Chinese, not boxes; an English one does not.
+#[test]
+fn a_chinese_handout_embeds_its_font_and_an_english_one_does_not() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let lesson = crate::support::repo().join("lessons/16-planar-shadows.toml");
+    for (lang, embedded) in [("zh", true), ("en", false)] {
+        let out = dir.path().join(lang);
+        let o = crate::support::pipelens(
+            dir.path(),
+            &[
+                "export",
+                lesson.to_str().expect("utf-8"),
+                "--out",
+                out.to_str().expect("utf-8"),
+                "--size",
+                "160x100",
+                "--lang",
+                lang,
+            ],
+        );
+        assert!(o.status.success(), "{}", crate::support::text(&o));
+        let html = std::fs::read_to_string(out.join("index.html")).expect("index.html");
+        let font = format!(
+            "url(data:font/otf;base64,{}",
+            &base64::engine::general_purpose::STANDARD.encode(pipelens::vocabulary::CJK_FONT)[..64]
+        );
+        assert_eq!(html.contains(&font), embedded, "{lang}");
+        assert_eq!(
+            html.contains("font-family:'pipelens CJK'"),
+            embedded,
+            "{lang}"
+        );
     }
 }
 
