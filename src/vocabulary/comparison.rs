@@ -19,7 +19,8 @@ pub enum Comparison {
     Samples,
     /// Nearest | bilinear | trilinear | anisotropic texture filtering.
     Filtering,
-    /// Trilinear | ripmap | summed-area table | EWA: minification beyond the mipmap.
+    /// Trilinear | anisotropic 16× | ripmap | summed-area table | EWA: minification beyond the
+    /// mipmap, beside what GPUs do (N trilinear taps along the footprint's major axis).
     Minification,
 }
 
@@ -63,8 +64,8 @@ impl Comparison {
                 "最近邻 | 双线性 | 三线性 | 各向异性",
             ),
             Self::Minification => l.tr(
-                "trilinear | ripmap | summed-area table | EWA",
-                "三线性 | ripmap | 求和面积表 | EWA",
+                "trilinear | anisotropic | ripmap | summed-area table | EWA",
+                "三线性 | 各向异性 | ripmap | 求和面积表 | EWA",
             ),
         }
     }
@@ -112,6 +113,10 @@ impl Comparison {
                 if self == Self::Minification {
                     return vec![
                         with("trilinear", &sampler(Filter::Bilinear, Mipmap::Linear, 1)),
+                        with(
+                            "anisotropic 16×",
+                            &sampler(Filter::Bilinear, Mipmap::Linear, 16),
+                        ),
                         with("ripmap", &sampler(Filter::Bilinear, Mipmap::Ripmap, 1)),
                         with(
                             "summed-area table",
