@@ -235,13 +235,17 @@ fn buffer_with_shapes(
     let zoom = zoom_for(capture.width());
     let z = zoom as f32;
     let mut shapes: Vec<Shape> = Vec::new();
+    // As the app draws them: the triangles in sight, the inspected pixel's strongly.
+    let visible = capture.visible_triangles();
+    let focus = s.pixel.and_then(|(x, y)| capture.primitive_at(x, y));
     for o in s.overlays {
         let kind = match o {
             Overlay::Edges => OverlayKind::TriangleEdges,
             Overlay::BoundingBoxes => OverlayKind::BoundingBoxes,
             Overlay::Samples | Overlay::Normals => continue,
         };
-        shapes.extend(capture.overlay_shapes(kind).take(MAX_SHAPES));
+        let focused = capture.overlay_shapes_focused(kind, visible.as_deref(), focus);
+        shapes.extend(focused.take(MAX_SHAPES));
     }
     if s.overlays.contains(&Overlay::Samples) && zoom >= 6 {
         shapes.extend(sample_dots(capture, z));

@@ -9,7 +9,7 @@ use image::{ImageBuffer, Luma, Rgba, RgbaImage};
 use super::{FrameCapture, ShadingBuffers, TextureBuffers};
 use crate::buffers::BufferKind;
 use crate::overlay::{self, Overlay, OverlayKind, Shape};
-use crate::raster::NONE;
+use crate::raster::{NONE, RasterTriangle};
 
 fn to_u8(v: f32) -> u8 {
     (v.clamp(0.0, 1.0) * 255.0).round() as u8
@@ -254,24 +254,88 @@ impl FrameCapture {
     /// The shapes of one overlay, made one raster triangle at a time (a view that draws only
     /// some of a million need not build them all).
     pub fn overlay_shapes(&self, kind: OverlayKind) -> impl Iterator<Item = Shape> + '_ {
+        self.triangles
+            .iter()
+            .map(move |t| self.overlay_shape(kind, t, Emphasis::Normal))
+    }
+
+    /// The shapes of one overlay as a picture of the rasterizer shows them: only the triangles
+    /// that own a sample after the depth test (`visible`, from [`Self::visible_triangles`]; all
+    /// when `None`), the pieces of primitive `focus` (the one under the pointer, or the
+    /// inspected pixel's) strongly and the rest faintly (all of them, without a focus).
+    pub fn overlay_shapes_focused<'a>(
+        &'a self,
+        kind: OverlayKind,
+        visible: Option<&'a [bool]>,
+        focus: Option<u32>,
+    ) -> impl Iterator<Item = Shape> + 'a {
+        self.triangles
+            .iter()
+            .enumerate()
+            .filter(move |(i, _)| visible.is_none_or(|v| v.get(*i).copied().unwrap_or(true)))
+            .map(move |(_, t)| {
+                let emphasis = match focus {
+                    Some(p) if p == t.primitive => Emphasis::Strong,
+                    _ => Emphasis::Faint,
+                };
+                self.overlay_shape(kind, t, emphasis)
+            })
+    }
+
+    /// Which raster triangles own at least one sample after the depth test (indexed as
+    /// [`Self::triangles`]); `None` when the frame kept no per-sample owners. The others are
+    /// hidden (the back of a closed mesh) or cover no sample.
+    #[must_use]
+    pub fn visible_triangles(&self) -> Option<Vec<bool>> {
+        if self.samples.triangle.is_empty() {
+            return None;
+        }
+        let mut visible = vec![false; self.triangles.len()];
+        for &t in &self.samples.triangle {
+            if let Some(v) = visible.get_mut(t as usize) {
+                *v = true;
+            }
+        }
+        Some(visible)
+    }
+
+    /// The primitive whose fragment pixel `(x, y)` (window, y up) shows, if any.
+    #[must_use]
+    pub fn primitive_at(&self, x: u32, y: u32) -> Option<u32> {
+        if x >= self.width() || y >= self.height() {
+            return None;
+        }
+        let i = ((self.height() - 1 - y) * self.width() + x) as usize;
+        let p = *self.pixels.primitive.get(i)?;
+        (p != NONE).then_some(p)
+    }
+
+    /// One raster triangle's shape in overlay `kind`, drawn with `emphasis`.
+    fn overlay_shape(&self, kind: OverlayKind, t: &RasterTriangle, emphasis: Emphasis) -> Shape {
         let h = self.height() as f32;
-        self.triangles.iter().map(move |t| match kind {
+        let (alpha, width) = match emphasis {
+            Emphasis::Normal => (1.0, 1.0),
+            Emphasis::Strong => (1.0, 2.5),
+            Emphasis::Faint => (0.3, 1.0),
+        };
+        let fade = |a: u8| (f32::from(a) * alpha) as u8;
+        match kind {
             OverlayKind::TriangleEdges => Shape::Polyline {
                 points: t.window.iter().map(|p| self.window_to_image(*p)).collect(),
                 closed: true,
-                color: [255, 255, 255, 220],
-                width: 1.0,
+                color: [255, 255, 255, fade(220)],
+                width,
             },
             OverlayKind::BoundingBoxes => {
                 let [x0, y0, x1, y1] = t.bbox.map(f32::from);
                 Shape::Rect {
                     min: [x0, h - (y1 + 1.0)],
                     max: [x1 + 1.0, h - y0],
-                    color: [255, 200, 40, 200],
-                    width: 1.0,
+                    color: [255, 200, 40, fade(200)],
+                    width,
                 }
             }
-        })
+        }
     }
 
     /// `kind`'s image magnified `zoom` times (nearest neighbour, so pixels stay crisp) with the
@@ -353,4 +417,12 @@ impl FrameCapture {
     ) -> RgbaImage {
         overlay::magnified_with_shapes(&self.depth_image(false, range), shapes, zoom)
     }
+}
+
+/// How strongly an overlay draws a triangle.
+#[derive(Clone, Copy)]
+enum Emphasis {
+    Normal,
+    Strong,
+    Faint,
 }

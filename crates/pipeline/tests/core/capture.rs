@@ -402,3 +402,58 @@ fn a_dim_term_is_shown_brighter_by_a_power_of_two_and_its_values_stay() {
         1.0
     );
 }
+
+/// The overlays of a picture of the rasterizer draw the triangles in sight: one drawn over
+/// entirely by a later one (depth test `always`) owns no sample and is left out; the focus
+/// primitive's box and edges are strong, the rest faint.
+#[test]
+fn overlays_leave_out_hidden_triangles_and_stress_the_focus() {
+    use glam::Vec2;
+    use pipeline::overlay::{OverlayKind, Shape};
+    let t = [
+        Vec2::new(2.0, 2.0),
+        Vec2::new(14.0, 2.0),
+        Vec2::new(2.0, 14.0),
+    ];
+    let other = [
+        Vec2::new(20.0, 2.0),
+        Vec2::new(30.0, 2.0),
+        Vec2::new(20.0, 12.0),
+    ];
+    let (scene, settings) = crate::support::pixel_scene(32, 16, &[t, t, other]);
+    let c = crate::support::render(&scene, &settings);
+    assert_eq!(c.visible_triangles(), Some(vec![false, true, true]));
+    let visible = c.visible_triangles();
+    let focus = c.primitive_at(22, 4);
+    assert_eq!(focus, Some(2));
+    let edges: Vec<Shape> = c
+        .overlay_shapes_focused(OverlayKind::TriangleEdges, visible.as_deref(), focus)
+        .collect();
+    let styles: Vec<(u8, f32)> = edges
+        .iter()
+        .map(|s| match s {
+            Shape::Polyline { color, width, .. } => (color[3], *width),
+            other => panic!("an edge overlay draws polylines, not {other:?}"),
+        })
+        .collect();
+    assert_eq!(
+        styles,
+        vec![(66, 1.0), (220, 2.5)],
+        "triangle 1 faint, 2 strong"
+    );
+    // Without a focus every triangle in sight is faint; all three without visibility data.
+    let faint = c.overlay_shapes_focused(OverlayKind::BoundingBoxes, visible.as_deref(), None);
+    assert!(
+        faint
+            .map(|s| match s {
+                Shape::Rect { color, .. } => color[3],
+                _ => 0,
+            })
+            .all(|a| a == 60)
+    );
+    assert_eq!(
+        c.overlay_shapes_focused(OverlayKind::BoundingBoxes, None, None)
+            .count(),
+        3
+    );
+}

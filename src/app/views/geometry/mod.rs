@@ -81,12 +81,15 @@ fn draw_axes(painter: &egui::Painter, cam: &Projector, length: f32) {
         (Vec3::Z, palette::Z, "z"),
     ] {
         cam.line(painter, Vec3::ZERO, axis * length, Stroke::new(2.0, color));
+        // On a dark box: an axis often ends on a line of the view volume (the viewport's x
+        // runs along the near rectangle's edge).
         if let Some(p) = cam.project(axis * length * 1.08) {
-            painter.text(
+            crate::app::views::label_with_background(
+                painter,
                 p,
                 Align2::CENTER_CENTER,
                 label,
-                picture_font(painter.ctx(), 16.0),
+                &picture_font(painter.ctx(), 16.0),
                 color,
             );
         }

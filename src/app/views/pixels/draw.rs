@@ -120,17 +120,19 @@ pub(super) fn draw_samples(painter: &egui::Painter, view: &ImageViewport, captur
     }
 }
 
-/// The selected overlays, from the capture's own shape descriptions.
+/// The selected overlays, from the capture's own shape descriptions: the triangles in sight
+/// (`visible`), the primitive `focus` strongly and the rest faintly.
 pub(super) fn draw_overlays(
     painter: &egui::Painter,
     view: &ImageViewport,
     capture: &FrameCapture,
-    overlays: &[OverlayKind],
+    (overlays, visible, focus): (&[OverlayKind], Option<&[bool]>, Option<u32>),
     lang: Lang,
 ) {
     let mut drawn = 0;
     for &kind in overlays {
-        for shape in capture.overlay_shapes(kind).take(MAX_SHAPES - drawn) {
+        let shapes = capture.overlay_shapes_focused(kind, visible, focus);
+        for shape in shapes.take(MAX_SHAPES - drawn) {
             drawn += 1;
             draw_shape(painter, &shape, &|p| view.to_screen(p));
         }

@@ -34,6 +34,8 @@ pub struct PixelView {
     record: Option<(u64, (u32, u32), pipeline::capture::PixelRecord)>,
     /// Where the picture (the image, the depth curve, the pyramid) was drawn this frame.
     pub picture: Vec<Rect>,
+    /// Which raster triangles own a sample, per capture shown (overlays leave out the rest).
+    visible: Option<(u64, Option<Vec<bool>>)>,
 }
 
 impl Default for PixelView {
@@ -47,6 +49,7 @@ impl Default for PixelView {
             show_pyramid: true,
             record: None,
             picture: Vec::new(),
+            visible: None,
         }
     }
 }
@@ -230,7 +233,23 @@ impl PixelView {
         if view.zoom >= 14.0 && sel.show_samples {
             draw::draw_samples(&painter, &view, capture);
         }
-        draw::draw_overlays(&painter, &view, capture, &sel.overlays, lang);
+        if !sel.overlays.is_empty() {
+            // The triangle under the pointer, else the inspected pixel's, drawn strongly.
+            let hovered = response
+                .hover_pos()
+                .and_then(|p| view.window_pixel(p, capture));
+            let focus = hovered
+                .or(session.selection.pixel)
+                .and_then(|(x, y)| capture.primitive_at(x, y));
+            let visible = self.visible(session, capture);
+            draw::draw_overlays(
+                &painter,
+                &view,
+                capture,
+                (&sel.overlays, visible, focus),
+                lang,
+            );
+        }
         draw::draw_selection(&painter, &view, capture, sel);
         draw::draw_labels(&painter, &view, capture);
         let record = self.record(session, capture);
@@ -287,6 +306,15 @@ impl PixelView {
             self.record = capture.pixel_record(x, y).map(|r| (key.0, key.1, r));
         }
         self.record.as_ref().map(|(_, _, r)| r.clone())
+    }
+
+    /// Which raster triangles own a sample in the frame shown (found once per frame).
+    fn visible(&mut self, session: &Session, capture: &FrameCapture) -> Option<&[bool]> {
+        let generation = session.shown_generation;
+        if self.visible.as_ref().is_none_or(|(g, _)| *g != generation) {
+            self.visible = Some((generation, capture.visible_triangles()));
+        }
+        self.visible.as_ref().and_then(|(_, v)| v.as_deref())
     }
 
     /// Applies wheel zoom (about the cursor) and drag pan; returns the mapping to use.
