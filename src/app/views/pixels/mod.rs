@@ -75,7 +75,14 @@ impl PixelView {
             egui::ComboBox::new("buffer", lang.tr("buffer", "缓冲"))
                 .selected_text(buffer_name(sel.buffer, lang))
                 .show_ui(ui, |ui| {
-                    for kind in available.iter().copied() {
+                    // The final colour first (the most used, and at the bottom of 17 it fell
+                    // below the fold), then the buffers in the pipeline's order.
+                    let colour = available.iter().copied().filter(|&k| k == BufferKind::Color);
+                    let rest = available.iter().copied().filter(|&k| k != BufferKind::Color);
+                    for (i, kind) in colour.chain(rest).enumerate() {
+                        if i == 1 && available.contains(&BufferKind::Color) {
+                            ui.separator();
+                        }
                         if ui
                             .selectable_label(sel.buffer == kind, buffer_name(kind, lang))
                             .on_hover_text(kind.mapping())
