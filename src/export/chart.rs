@@ -24,10 +24,22 @@ fn register_font() {
     });
 }
 
-/// The background and the axes' colours: the app's dark plot.
-const BACKGROUND: RGBColor = RGBColor(14, 14, 14);
-const INK: RGBColor = RGBColor(220, 220, 220);
-const GRID: RGBColor = RGBColor(50, 50, 50);
+/// The background, the axes' and the grid's colours: the app's dark plot on screen, dark ink
+/// on white in print.
+fn colours(palette: super::picture::Palette) -> (RGBColor, RGBColor, RGBColor) {
+    match palette {
+        super::picture::Palette::Screen => (
+            RGBColor(14, 14, 14),
+            RGBColor(220, 220, 220),
+            RGBColor(50, 50, 50),
+        ),
+        super::picture::Palette::Print => (
+            RGBColor(255, 255, 255),
+            RGBColor(30, 30, 30),
+            RGBColor(215, 215, 215),
+        ),
+    }
+}
 
 /// A `width`×`height` chart of `curves` (each a name and its points, in the comparison's order).
 ///
@@ -35,15 +47,16 @@ const GRID: RGBColor = RGBColor(50, 50, 50);
 /// When plotters cannot draw (an empty or degenerate chart area).
 pub fn profile_chart(
     curves: &[(String, Vec<[f64; 2]>)],
-    lang: Lang,
+    (lang, palette): (Lang, super::picture::Palette),
     width: u32,
     height: u32,
 ) -> Result<RgbaImage> {
     register_font();
+    let (background, ink, grid) = colours(palette);
     let mut rgb = vec![0u8; (width * height * 3) as usize];
     {
         let root = BitMapBackend::with_buffer(&mut rgb, (width, height)).into_drawing_area();
-        root.fill(&BACKGROUND).map_err(|e| anyhow!("{e}"))?;
+        root.fill(&background).map_err(|e| anyhow!("{e}"))?;
         let x_max = curves
             .iter()
             .flat_map(|(_, p)| p.iter().map(|q| q[0]))
@@ -54,7 +67,7 @@ pub fn profile_chart(
             .fold(0.0f64, f64::max)
             .max(0.1)
             * 1.08;
-        let font = |size: f64| (FAMILY, size).into_font().color(&INK);
+        let font = |size: f64| (FAMILY, size).into_font().color(&ink);
         // Type sized to the image: it is shown as wide as the picture above it.
         let scale = (f64::from(width) / 800.0).max(f64::from(height) / 400.0);
         let mut chart = ChartBuilder::on(&root)
@@ -69,9 +82,9 @@ pub fn profile_chart(
             .y_desc(profile::y_label(lang))
             .axis_desc_style(font(17.0 * scale))
             .label_style(font(14.0 * scale))
-            .light_line_style(GRID)
-            .bold_line_style(GRID.mix(0.9))
-            .axis_style(INK)
+            .light_line_style(grid)
+            .bold_line_style(grid.mix(0.9))
+            .axis_style(ink)
             .draw()
             .map_err(|e| anyhow!("{e}"))?;
         for (i, (name, points)) in curves.iter().enumerate() {
@@ -91,8 +104,8 @@ pub fn profile_chart(
         chart
             .configure_series_labels()
             .position(SeriesLabelPosition::UpperRight)
-            .background_style(BACKGROUND.mix(0.85))
-            .border_style(GRID)
+            .background_style(background.mix(0.85))
+            .border_style(grid)
             .label_font(font(15.0 * scale))
             .draw()
             .map_err(|e| anyhow!("{e}"))?;

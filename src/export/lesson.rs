@@ -12,7 +12,7 @@ use pipeline::capture::FrameCapture;
 use rayon::prelude::*;
 
 use super::handout::{self, Animated, Frame, StepPage};
-use super::picture::{Rendered, step_picture};
+use super::picture::{Palette, Rendered, step_picture};
 use super::{ExportFile, ExportOptions, encode_capture, png_rgba, profile_csv, write_files};
 use crate::lesson::param::Value;
 use crate::lesson::{Lesson, SceneSpec};
@@ -160,6 +160,7 @@ fn build_step(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<BuiltSte
         capture,
         variants,
         picture,
+        print,
     } = draw(lesson, k, opts, None)?;
     let animated = animation(lesson, k, opts)?;
     let mut folders = Vec::new();
@@ -192,7 +193,7 @@ fn build_step(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<BuiltSte
     }
     let page = StepPage {
         index: k,
-        picture: compact_image(&picture)?,
+        picture: compact_image(&print)?,
         animated,
         subject: crate::spaces::subject(
             &capture,
@@ -212,7 +213,10 @@ struct Drawn {
     spec: SceneSpec,
     capture: FrameCapture,
     variants: Vec<(String, FrameCapture)>,
+    /// As the app and the slides show it.
     picture: RgbaImage,
+    /// For the printed page: its drawings in ink on white.
+    print: RgbaImage,
 }
 
 /// Step `k` at moment `t` of its animation (`None`: before it), rendered and drawn.
@@ -226,12 +230,23 @@ fn draw(lesson: &Lesson, k: usize, opts: &LessonExport, t: Option<f32>) -> Resul
         capture: &capture,
         variants: &variants,
     };
-    let picture = step_picture(lesson, k, &rendered, opts.lang)?;
+    let picture = step_picture(lesson, k, &rendered, (opts.lang, Palette::Screen))?;
+    // The handout's page: drawn pictures (a geometry stage, a chart) in ink on white.
+    let drawn = lesson.stage_at(k).space().is_some()
+        || lesson.steps[k]
+            .profile_line(capture.width(), capture.height())
+            .is_some();
+    let print = if drawn && t.is_none() {
+        step_picture(lesson, k, &rendered, (opts.lang, Palette::Print))?
+    } else {
+        picture.clone()
+    };
     Ok(Drawn {
         spec,
         capture,
         variants,
         picture,
+        print,
     })
 }
 

@@ -35,11 +35,27 @@ const MAX_SHAPES: usize = 20_000;
 /// The width a buffer is magnified towards (by a whole factor, so pixels stay square).
 const TARGET_WIDTH: u32 = 640;
 
-/// Step `k`'s picture.
+/// The colours of the drawn (not rendered) pictures: the app's dark ones for the screen and
+/// slides, dark ink on white for print (a handout), which would otherwise print black
+/// rectangles. Rendered buffers are the same in both.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Palette {
+    /// As the app draws them.
+    Screen,
+    /// On paper.
+    Print,
+}
+
+/// Step `k`'s picture, its drawings in `palette`.
 ///
 /// # Errors
 /// When the chart cannot be drawn.
-pub fn step_picture(lesson: &Lesson, k: usize, r: &Rendered<'_>, lang: Lang) -> Result<RgbaImage> {
+pub fn step_picture(
+    lesson: &Lesson,
+    k: usize,
+    r: &Rendered<'_>,
+    (lang, palette): (Lang, Palette),
+) -> Result<RgbaImage> {
     let step = &lesson.steps[k];
     let stage = lesson.stage_at(k);
     let buffer = lesson.buffer_at(k);
@@ -58,7 +74,13 @@ pub fn step_picture(lesson: &Lesson, k: usize, r: &Rendered<'_>, lang: Lang) -> 
             .overlays
             .as_deref()
             .is_some_and(|o| o.contains(&Overlay::Normals));
-        let own = space_picture(r.capture, space, focus, (step.vertex, normals), lang);
+        let own = space_picture(
+            r.capture,
+            space,
+            focus,
+            (step.vertex, normals),
+            (lang, palette),
+        );
         return Ok(match (own, step.layout, observer()) {
             (Some(a), Layout::Observer, Some(o)) => beside(&a, &o),
             (Some(a), ..) => a,
@@ -102,7 +124,7 @@ pub fn step_picture(lesson: &Lesson, k: usize, r: &Rendered<'_>, lang: Lang) -> 
             .collect()
     };
     let chart_h = (picture.width() * 2 / 5).clamp(240, 760);
-    let chart = super::chart::profile_chart(&curves, lang, picture.width(), chart_h)?;
+    let chart = super::chart::profile_chart(&curves, (lang, palette), picture.width(), chart_h)?;
     Ok(above(&picture, &chart))
 }
 
@@ -118,8 +140,18 @@ fn space_picture(
     space: Space,
     focus: &[String],
     (vertex, normals): (Option<u32>, bool),
-    lang: Lang,
+    (lang, palette): (Lang, Palette),
 ) -> Option<RgbaImage> {
+    let print = palette == Palette::Print;
+    // On white, the colours the app draws on black are darkened to read as well.
+    let ink = |[r, g, b]: [u8; 3], a: u8| -> [u8; 4] {
+        if print {
+            let dark = |c: u8| (f32::from(c) * 0.62) as u8;
+            [dark(r), dark(g), dark(b), a]
+        } else {
+            [r, g, b, a]
+        }
+    };
     let subject = spaces::subject(capture, focus, vertex, space);
     let (centre, radius) = spaces::bounds(capture, [space, space], &subject)?;
     let (w, h) = SPACE_PICTURE;
@@ -150,9 +182,9 @@ fn space_picture(
     };
     if let Some(v) = spaces::volume(capture, space) {
         for i in 0..4 {
-            segment(v[i], v[(i + 1) % 4], [255, 200, 60, 255], 1.5);
-            segment(v[4 + i], v[4 + (i + 1) % 4], [255, 140, 40, 255], 1.2);
-            segment(v[i], v[4 + i], [255, 140, 40, 255], 1.2);
+            segment(v[i], v[(i + 1) % 4], ink([255, 200, 60], 255), 1.5);
+            segment(v[4 + i], v[4 + (i + 1) % 4], ink([255, 140, 40], 255), 1.2);
+            segment(v[i], v[4 + i], ink([255, 140, 40], 255), 1.2);
         }
     }
     let points: Vec<Option<Vec3>> = capture
@@ -166,11 +198,16 @@ fn space_picture(
     let stride = capture.primitives.len().div_ceil(30_000).max(1);
     for prim in capture.primitives.iter().step_by(stride) {
         let focused = subject.get(prim.object as usize).copied().unwrap_or(false);
-        let [r, g, b] = spaces::FATES[spaces::fate_index(&prim.fate)].0;
+        let fate = spaces::fate_index(&prim.fate);
+        // The drawn triangles are white on screen: black ink on paper.
+        let rgb = match (print, fate) {
+            (true, 0) => [40, 40, 40],
+            _ => spaces::FATES[fate].0,
+        };
         let (color, width) = if focused {
-            ([r, g, b, 255], 1.3)
+            (ink(rgb, 255), 1.3)
         } else {
-            ([r, g, b, 80], 0.8)
+            (ink(rgb, 80), 0.8)
         };
         if let [Some(a), Some(b), Some(c)] = prim.vertices.map(|i| points[i as usize]) {
             segment(a, b, color, width);
@@ -182,7 +219,7 @@ fn space_picture(
         for (v, p) in capture.vertices.iter().zip(&points) {
             if let Some(p) = p {
                 let tip = *p + v.normal_world * (radius * 0.12);
-                segment(*p, tip, [90, 210, 230, 255], 1.5);
+                segment(*p, tip, ink([90, 210, 230], 255), 1.5);
             }
         }
     }
@@ -192,21 +229,29 @@ fn space_picture(
         (Vec3::Z, [90, 140, 255], "z"),
     ];
     let length = radius * 0.6;
-    for (axis, [r, g, b], _) in axes {
-        segment(Vec3::ZERO, axis * length, [r, g, b, 255], 2.0);
+    for (axis, rgb, _) in axes {
+        segment(Vec3::ZERO, axis * length, ink(rgb, 255), 2.0);
     }
     let mut pixmap = tiny_skia::Pixmap::new(w, h)?;
-    pixmap.fill(tiny_skia::Color::from_rgba8(18, 18, 18, 255));
+    let background = if print { 255 } else { 18 };
+    pixmap.fill(tiny_skia::Color::from_rgba8(
+        background, background, background, 255,
+    ));
     pipeline::overlay::draw(&mut pixmap, &shapes, 1.0);
     let mut img = RgbaImage::from_raw(w, h, pixmap.take())?;
-    for (axis, color, name) in axes {
+    for (axis, rgb, name) in axes {
         if let Some([x, y]) = project(axis * length * 1.08) {
-            text::draw(&mut img, x - 5.0, y + 7.0, 20.0, color, name);
+            let [r, g, b, _] = ink(rgb, 255);
+            text::draw(&mut img, x - 5.0, y + 7.0, 20.0, [r, g, b], name);
         }
     }
     let title = spaces::space_name(space, lang);
-    darken(&mut img, 8, 8, text::width(title, 22.0) as u32 + 20, 36);
-    text::draw(&mut img, 18.0, 34.0, 22.0, [235, 235, 235], title);
+    if print {
+        text::draw(&mut img, 18.0, 34.0, 22.0, [30, 30, 30], title);
+    } else {
+        darken(&mut img, 8, 8, text::width(title, 22.0) as u32 + 20, 36);
+        text::draw(&mut img, 18.0, 34.0, 22.0, [235, 235, 235], title);
+    }
     Some(img)
 }
 

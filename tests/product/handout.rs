@@ -212,14 +212,15 @@ fn the_handout_picture_has_the_overlays_the_pixel_and_the_chart() {
         count(drawn, picture.clone(), [90, 220, 255], 40) > 10,
         "h drawn"
     );
-    // The chart: the curve in the first curve colour, on the app's dark background.
+    // The chart: the curve in the first curve colour, in print on white (the slides keep the
+    // app's dark plot: `a_geometry_picture_prints_in_ink_on_white_and_projects_dark`).
     let chart = 488..drawn.height();
     assert!(
         count(drawn, chart.clone(), [255, 170, 60], 40) > 100,
         "the curve"
     );
     assert!(
-        count(drawn, chart, [14, 14, 14], 6) > 10_000,
+        count(drawn, chart, [255, 255, 255], 0) > 10_000,
         "the chart's background"
     );
     // The animated step: a GIF and a filmstrip of five frames captioned with fovy's values.
@@ -234,6 +235,62 @@ fn the_handout_picture_has_the_overlays_the_pixel_and_the_chart() {
     // A student's handout: the answers folded away on screen, not printed.
     assert!(html.contains("<details class=\"screen\">"));
     assert!(html.contains(".screen{display:none}"));
+}
+
+/// Print palette: a handout's drawn pictures (a geometry stage, a chart) are ink on white, not
+/// the black rectangles the app's dark drawings print as; the slides, projected, keep them dark.
+#[test]
+fn a_geometry_picture_prints_in_ink_on_white_and_projects_dark() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let lesson = LESSON.replace(
+        "stage = \"shading\"\nbuffer = \"color\"",
+        "stage = \"world\"",
+    );
+    assert_ne!(lesson, LESSON);
+    std::fs::write(dir.path().join("picture.toml"), lesson).expect("write");
+    let o = pipelens(
+        dir.path(),
+        &[
+            "export",
+            "picture.toml",
+            "--out",
+            "out",
+            "--slides",
+            "--step",
+            "1",
+        ],
+    );
+    assert!(o.status.success(), "{}", text(&o));
+    let html = std::fs::read_to_string(dir.path().join("out/index.html")).expect("index.html");
+    let page = &images(&html)[0];
+    let slide = image::open(dir.path().join("out/slides/step-01.png"))
+        .expect("the slide")
+        .to_rgba8();
+    let share = |img: &RgbaImage, light: bool| {
+        let n = img
+            .pixels()
+            .filter(|p| {
+                let l = (u32::from(p.0[0]) + u32::from(p.0[1]) + u32::from(p.0[2])) / 3;
+                if light { l > 235 } else { l < 30 }
+            })
+            .count();
+        n as f64 / f64::from(img.width() * img.height())
+    };
+    assert!(
+        share(page, true) > 0.8,
+        "the page's picture is white: {}",
+        share(page, true)
+    );
+    assert!(
+        share(page, false) < 0.05,
+        "and has no dark ground: {}",
+        share(page, false)
+    );
+    assert!(
+        share(&slide, false) > 0.3,
+        "the slide stays dark: {}",
+        share(&slide, false)
+    );
 }
 
 #[test]
