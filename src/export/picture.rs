@@ -143,15 +143,7 @@ fn space_picture(
     (lang, palette): (Lang, Palette),
 ) -> Option<RgbaImage> {
     let print = palette == Palette::Print;
-    // On white, the colours the app draws on black are darkened to read as well.
-    let ink = |[r, g, b]: [u8; 3], a: u8| -> [u8; 4] {
-        if print {
-            let dark = |c: u8| (f32::from(c) * 0.62) as u8;
-            [dark(r), dark(g), dark(b), a]
-        } else {
-            [r, g, b, a]
-        }
-    };
+    let ink = |rgb: [u8; 3], a: u8| ink(palette, rgb, a);
     let subject = spaces::subject(capture, focus, vertex, space);
     let (centre, radius) = spaces::bounds(capture, [space, space], &subject)?;
     let (w, h) = SPACE_PICTURE;
@@ -232,20 +224,51 @@ fn space_picture(
     for (axis, rgb, _) in axes {
         segment(Vec3::ZERO, axis * length, ink(rgb, 255), 2.0);
     }
-    let mut pixmap = tiny_skia::Pixmap::new(w, h)?;
-    let background = if print { 255 } else { 18 };
-    pixmap.fill(tiny_skia::Color::from_rgba8(
-        background, background, background, 255,
-    ));
-    pipeline::overlay::draw(&mut pixmap, &shapes, 1.0);
-    let mut img = RgbaImage::from_raw(w, h, pixmap.take())?;
-    for (axis, rgb, name) in axes {
-        if let Some([x, y]) = project(axis * length * 1.08) {
+    let labels: Vec<([f32; 2], [u8; 3], &str)> = axes
+        .iter()
+        .filter_map(|&(axis, rgb, name)| {
             let [r, g, b, _] = ink(rgb, 255);
-            text::draw(&mut img, x - 5.0, y + 7.0, 20.0, [r, g, b], name);
+            Some((project(axis * length * 1.08)?, [r, g, b], name))
+        })
+        .collect();
+    paint(
+        (w, h),
+        &shapes,
+        &labels,
+        spaces::space_name(space, lang),
+        palette,
+    )
+}
+
+/// On white, the colours the app draws on black are darkened to read as well.
+fn ink(palette: Palette, [r, g, b]: [u8; 3], a: u8) -> [u8; 4] {
+    match palette {
+        Palette::Screen => [r, g, b, a],
+        Palette::Print => {
+            let dark = |c: u8| (f32::from(c) * 0.62) as u8;
+            [dark(r), dark(g), dark(b), a]
         }
     }
-    let title = spaces::space_name(space, lang);
+}
+
+/// A `w`×`h` drawing: `shapes` on the palette's ground, the axes' `labels` and the `title`
+/// (light on a dark box on screen, dark ink in print).
+fn paint(
+    (w, h): (u32, u32),
+    shapes: &[Shape],
+    labels: &[([f32; 2], [u8; 3], &str)],
+    title: &str,
+    palette: Palette,
+) -> Option<RgbaImage> {
+    let print = palette == Palette::Print;
+    let mut pixmap = tiny_skia::Pixmap::new(w, h)?;
+    let ground = if print { 255 } else { 18 };
+    pixmap.fill(tiny_skia::Color::from_rgba8(ground, ground, ground, 255));
+    pipeline::overlay::draw(&mut pixmap, shapes, 1.0);
+    let mut img = RgbaImage::from_raw(w, h, pixmap.take())?;
+    for &([x, y], rgb, name) in labels {
+        text::draw(&mut img, x - 5.0, y + 7.0, 20.0, rgb, name);
+    }
     if print {
         text::draw(&mut img, 18.0, 34.0, 22.0, [30, 30, 30], title);
     } else {
