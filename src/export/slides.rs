@@ -1,5 +1,6 @@
 //! Slides: one 1920×1080 PNG per step — the title, the step's picture as large as it fits, and
-//! the narration in large type beside it (its formulas highlighted) — the files a teacher drags
+//! the narration in large type beside it or, under a wide picture, below it (its formulas
+//! highlighted) — the files a teacher drags
 //! into a slide deck.
 
 use image::{Rgba, RgbaImage, imageops};
@@ -40,37 +41,45 @@ pub fn slide(lesson: &Lesson, k: usize, picture: &RgbaImage, lang: Lang) -> Rgba
         lesson.steps.len()
     );
     text::draw(&mut img, margin, HEIGHT as f32 - 24.0, 22.0, DIM, &footer);
-    // The picture on the left, as large as fits in 1160×880; the words in what is left.
-    let (area_w, area_h) = (1160.0, 880.0);
-    let s = (area_w / picture.width() as f32).min(area_h / picture.height() as f32);
-    let (pw, ph) = (
-        (picture.width() as f32 * s).round() as u32,
-        (picture.height() as f32 * s).round() as u32,
-    );
+    // The picture as large as it can be: beside the words (on the left, in 1160×880) or, a wide
+    // picture, across the slide with the words under it, whichever leaves it the larger.
+    let paragraphs = paragraphs(step.narration.get(lang));
+    let (w0, h0) = (picture.width() as f32, picture.height() as f32);
+    let full = WIDTH as f32 - 2.0 * margin;
+    let beside = (1160.0 / w0).min(880.0 / h0);
+    let under_words = needed(&paragraphs, STACKED_TYPE, full).max(2.0 * STACKED_TYPE * 1.45);
+    let stacked = (full / w0).min((880.0 - under_words - 24.0).max(0.0) / h0);
+    let across = stacked > beside * 1.1;
+    let s = if across { stacked } else { beside };
+    let (pw, ph) = ((w0 * s).round() as u32, (h0 * s).round() as u32);
     let filter = if s >= 2.0 {
         imageops::FilterType::Nearest
     } else {
         imageops::FilterType::Triangle
     };
     let scaled = imageops::resize(picture, pw.max(1), ph.max(1), filter);
-    imageops::overlay(&mut img, &scaled, margin as i64, 130);
-    let left = margin + pw as f32 + 48.0;
-    let width = WIDTH as f32 - left - margin;
-    narration(
-        &mut img,
-        step.narration.get(lang),
-        left,
-        width,
-        130.0,
-        900.0,
-    );
+    if across {
+        let x = margin + (full - pw as f32) / 2.0;
+        imageops::overlay(&mut img, &scaled, x as i64, 130);
+        let top = 130.0 + ph as f32 + 24.0;
+        let height = HEIGHT as f32 - 70.0 - top;
+        narration(&mut img, &paragraphs, (margin, full), top, height);
+    } else {
+        imageops::overlay(&mut img, &scaled, margin as i64, 130);
+        let left = margin + pw as f32 + 48.0;
+        let width = WIDTH as f32 - left - margin;
+        narration(&mut img, &paragraphs, (left, width), 130.0, 900.0);
+    }
     img
 }
 
-/// The narration in the largest type from 46 down to 20 pixels that fits `height`.
-fn narration(img: &mut RgbaImage, text: &str, x: f32, width: f32, top: f32, height: f32) {
-    let paragraphs: Vec<Vec<Run>> = text
-        .split("\n\n")
+/// The type size of words under a picture that spans the slide (the largest size the
+/// narration may shrink from there).
+const STACKED_TYPE: f32 = 38.0;
+
+/// The narration's paragraphs as runs (formulas highlighted, list items bulleted).
+fn paragraphs(text: &str) -> Vec<Vec<Run>> {
+    text.split("\n\n")
         .map(str::trim)
         .filter(|p| !p.is_empty())
         .map(|p| {
@@ -85,20 +94,34 @@ fn narration(img: &mut RgbaImage, text: &str, x: f32, width: f32, top: f32, heig
                 .join(" ");
             text::marked_runs(&joined, INK, ACCENT)
         })
-        .collect();
+        .collect()
+}
+
+/// The height `paragraphs` take in type of `size` wrapped to `width`.
+fn needed(paragraphs: &[Vec<Run>], size: f32, width: f32) -> f32 {
+    let lines: usize = paragraphs
+        .iter()
+        .map(|p| text::wrap(p, size, width).len())
+        .sum();
+    lines as f32 * size * 1.45 + (paragraphs.len() as f32 - 1.0).max(0.0) * size * 0.6
+}
+
+/// The narration in the largest type from 46 down to 20 pixels that fits `height`.
+fn narration(
+    img: &mut RgbaImage,
+    paragraphs: &[Vec<Run>],
+    (x, width): (f32, f32),
+    top: f32,
+    height: f32,
+) {
     let mut size = 46.0;
-    let layout = loop {
-        let lines: Vec<Vec<Vec<Run>>> = paragraphs
-            .iter()
-            .map(|p| text::wrap(p, size, width))
-            .collect();
-        let count: usize = lines.iter().map(Vec::len).sum();
-        let needed = count as f32 * size * 1.45 + (lines.len() as f32 - 1.0) * size * 0.6;
-        if needed <= height || size <= 20.0 {
-            break lines;
-        }
+    while needed(paragraphs, size, width) > height && size > 20.0 {
         size -= 2.0;
-    };
+    }
+    let layout: Vec<Vec<Vec<Run>>> = paragraphs
+        .iter()
+        .map(|p| text::wrap(p, size, width))
+        .collect();
     let mut y = top + size;
     for paragraph in layout {
         for line in paragraph {

@@ -381,3 +381,40 @@ fn a_lessons_data_holds_the_pixel_asked_for() {
         assert!(text(&o).contains(expect), "{args:?}: {}", text(&o));
     }
 }
+
+/// A slide is full: lesson 17's step 2 has a wide picture (the wireframe beside the observer),
+/// which spans the slide with the narration under it. Beside the words it filled 44 % of the
+/// rows under the title and left the lower half blank.
+#[test]
+fn a_wide_picture_spans_the_slide_with_the_words_under_it() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let lesson = crate::support::repo().join("lessons/17-hierarchy.toml");
+    let o = pipelens(
+        dir.path(),
+        &[
+            "export",
+            lesson.to_str().expect("utf-8"),
+            "--out",
+            "out",
+            "--slides",
+            "--step",
+            "2",
+        ],
+    );
+    assert!(o.status.success(), "{}", text(&o));
+    let slide = image::open(dir.path().join("out/slides/step-02.png"))
+        .expect("the slide")
+        .to_rgba8();
+    let ground = *slide.get_pixel(slide.width() - 1, slide.height() / 2);
+    let (below_title, above_footer) = (130, slide.height() - 70);
+    let full = (below_title..above_footer)
+        .filter(|&y| {
+            (0..slide.width()).any(|x| {
+                let p = slide.get_pixel(x, y);
+                (0..3).any(|c| (i32::from(p.0[c]) - i32::from(ground.0[c])).abs() > 20)
+            })
+        })
+        .count();
+    let share = full as f64 / f64::from(above_footer - below_title);
+    assert!(share > 0.7, "rows with content under the title: {share:.2}");
+}
