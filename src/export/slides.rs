@@ -1,7 +1,6 @@
 //! Slides: one 1920×1080 PNG per step — the title, the step's picture as large as it fits, and
 //! the narration in large type beside it or, under a wide picture, below it (its formulas
-//! highlighted) — the files a teacher drags
-//! into a slide deck.
+//! highlighted) — the files a teacher drags into a slide deck.
 
 use image::{Rgba, RgbaImage, imageops};
 
