@@ -103,6 +103,12 @@ pub fn step_picture(
         };
         let gain = r.capture.term_gain(buffer);
         let mut img = buffer_with_shapes(r.capture, (buffer, gain), &shapes, lang);
+        // The objects a step compares, named above them as the app names them.
+        let z = zoom_for(r.capture.width()) as f32;
+        let points = r.capture.object_label_points();
+        for ([x, y], name) in r.spec.object_labels(r.capture, &points, lang) {
+            centred_label(&mut img, x * z, y * z - 18.0, &name);
+        }
         if let Some(note) = crate::vocabulary::gain_note(buffer, gain, lang) {
             bottom_note(&mut img, &note);
         }

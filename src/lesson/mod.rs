@@ -233,3 +233,28 @@ pub fn parse_toml<T: serde::de::DeserializeOwned>(
         Diagnostics(vec![syntax::explain(text, file, span, e.message().trim())])
     })
 }
+
+impl SceneSpec {
+    /// The names a picture of `capture` writes over the objects it compares: each object the
+    /// lesson labels (`label = { en, zh }`) with the point above it in the image (pixels,
+    /// y down), when at least two labelled objects are in the picture (one alone needs no
+    /// name). Empty otherwise.
+    #[must_use]
+    pub fn object_labels(
+        &self,
+        capture: &pipeline::capture::FrameCapture,
+        points: &[Option<[f32; 2]>],
+        lang: Lang,
+    ) -> Vec<([f32; 2], String)> {
+        let shown: Vec<([f32; 2], String)> = capture
+            .objects
+            .iter()
+            .zip(points)
+            .filter_map(|(o, p)| {
+                let text = self.labels.get(&o.name)?;
+                Some(((*p)?, text.get(lang).to_owned()))
+            })
+            .collect();
+        if shown.len() >= 2 { shown } else { Vec::new() }
+    }
+}

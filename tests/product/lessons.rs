@@ -562,3 +562,30 @@ fn a_steps_shader_mistake_points_into_the_lesson() {
         "{found:?}"
     );
 }
+
+/// A step that compares objects names them in the picture: lesson 21's three shapes get their
+/// labels above them, left to right as the narration says; lesson 15's first step shows one
+/// labelled sphere (the others are moved away), which needs no name.
+#[test]
+fn the_objects_a_step_compares_are_named_in_the_picture() {
+    use pipelens::vocabulary::Lang;
+    let named = |file: &str, k: usize, lang: Lang| {
+        let Ok(Document::Lesson(lesson)) = load_file(&repo().join(file)) else {
+            panic!("{file} loads");
+        };
+        let spec = lesson.spec_at(k);
+        let c = pipeline::render(&spec.scene, &spec.settings).expect("renders");
+        let mut names = spec.object_labels(&c, &c.object_label_points(), lang);
+        names.sort_by(|a, b| a.0[0].total_cmp(&b.0[0]));
+        names
+    };
+    let three = named("lessons/21-geometry-representations.toml", 0, Lang::Zh);
+    let words: Vec<&str> = three.iter().map(|(_, n)| n.as_str()).collect();
+    assert_eq!(words, ["参数球面", "隐式曲面", "点云"]);
+    // Each name sits above its shape: in the upper half of a picture whose shapes are centred.
+    assert!(
+        three.iter().all(|([_, y], _)| *y < 360.0 / 2.0),
+        "{three:?}"
+    );
+    assert!(named("lessons/15-surface-detail.toml", 0, Lang::En).is_empty());
+}

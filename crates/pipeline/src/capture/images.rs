@@ -299,6 +299,31 @@ impl FrameCapture {
         Some(visible)
     }
 
+    /// Where each object's name goes in the image (pixels, y down): above the top of its world
+    /// bounding box, at the box's centre in x and z; `None` for an object with no vertex in
+    /// front of the camera or whose point falls outside the image.
+    #[must_use]
+    pub fn object_label_points(&self) -> Vec<Option<[f32; 2]>> {
+        let mut boxes: Vec<Option<(Vec3, Vec3)>> = vec![None; self.objects.len()];
+        for v in &self.vertices {
+            let Some(b) = boxes.get_mut(v.object as usize) else {
+                continue;
+            };
+            let p = v.world.truncate();
+            *b = Some(b.map_or((p, p), |(lo, hi)| (lo.min(p), hi.max(p))));
+        }
+        let (w, h) = (self.width() as f32, self.height() as f32);
+        boxes
+            .into_iter()
+            .map(|b| {
+                let (lo, hi) = b?;
+                let top = Vec3::new((lo.x + hi.x) / 2.0, hi.y, (lo.z + hi.z) / 2.0);
+                self.world_to_image(top)
+                    .filter(|&[x, y]| (0.0..w).contains(&x) && (0.0..h).contains(&y))
+            })
+            .collect()
+    }
+
     /// The primitive whose fragment pixel `(x, y)` (window, y up) shows, if any.
     #[must_use]
     pub fn primitive_at(&self, x: u32, y: u32) -> Option<u32> {

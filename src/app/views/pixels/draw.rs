@@ -257,6 +257,25 @@ pub(super) fn draw_mip_legend(painter: &egui::Painter, rect: Rect, lang: Lang) {
     }
 }
 
+/// The names of the objects a step compares, each above its object, on a dark box.
+pub(super) fn draw_object_labels(
+    painter: &egui::Painter,
+    view: &ImageViewport,
+    names: &[([f32; 2], String)],
+) {
+    let font = picture_font(painter.ctx(), 17.0);
+    for (at, name) in names {
+        crate::app::views::label_with_background(
+            painter,
+            view.to_screen(*at) - Vec2::new(0.0, 8.0),
+            egui::Align2::CENTER_BOTTOM,
+            name,
+            &font,
+            Color32::WHITE,
+        );
+    }
+}
+
 /// The meshes' labels (a Bézier curve's P0…P3 and t) centred on their points, in the picture's
 /// type, which grows in classroom mode.
 pub(super) fn draw_labels(painter: &egui::Painter, view: &ImageViewport, capture: &FrameCapture) {

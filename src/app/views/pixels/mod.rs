@@ -36,6 +36,8 @@ pub struct PixelView {
     pub picture: Vec<Rect>,
     /// Which raster triangles own a sample, per capture shown (overlays leave out the rest).
     visible: Option<(u64, Option<Vec<bool>>)>,
+    /// Where each object's name goes, per capture shown.
+    label_points: Option<(u64, Vec<Option<[f32; 2]>>)>,
 }
 
 impl Default for PixelView {
@@ -50,6 +52,7 @@ impl Default for PixelView {
             record: None,
             picture: Vec::new(),
             visible: None,
+            label_points: None,
         }
     }
 }
@@ -240,25 +243,7 @@ impl PixelView {
         if view.zoom >= 14.0 && sel.show_samples {
             draw::draw_samples(&painter, &view, capture);
         }
-        if !sel.overlays.is_empty() {
-            // The triangle under the pointer, else the inspected pixel's, drawn strongly.
-            let hovered = response
-                .hover_pos()
-                .and_then(|p| view.window_pixel(p, capture));
-            let focus = hovered
-                .or(session.selection.pixel)
-                .and_then(|(x, y)| capture.primitive_at(x, y));
-            let visible = self.visible(session, capture);
-            draw::draw_overlays(
-                &painter,
-                &view,
-                capture,
-                (&sel.overlays, visible, focus),
-                lang,
-            );
-        }
-        draw::draw_selection(&painter, &view, capture, sel);
-        draw::draw_labels(&painter, &view, capture);
+        self.annotate(&painter, (&view, &response), session, capture);
         let record = self.record(session, capture);
         if let Some(r) = &record
             && matches!(
@@ -313,6 +298,49 @@ impl PixelView {
             self.record = capture.pixel_record(x, y).map(|r| (key.0, key.1, r));
         }
         self.record.as_ref().map(|(_, _, r)| r.clone())
+    }
+
+    /// What is drawn over the image: the overlays (the triangle under the pointer, else the
+    /// inspected pixel's, strongly), the selection, the meshes' labels and the names of the
+    /// objects a step compares.
+    fn annotate(
+        &mut self,
+        painter: &egui::Painter,
+        (view, response): (&ImageViewport, &egui::Response),
+        session: &Session,
+        capture: &FrameCapture,
+    ) {
+        let (sel, lang) = (&session.selection, session.lang);
+        if !sel.overlays.is_empty() {
+            let hovered = response
+                .hover_pos()
+                .and_then(|p| view.window_pixel(p, capture));
+            let focus = hovered
+                .or(sel.pixel)
+                .and_then(|(x, y)| capture.primitive_at(x, y));
+            let visible = self.visible(session, capture);
+            draw::draw_overlays(
+                painter,
+                view,
+                capture,
+                (&sel.overlays, visible, focus),
+                lang,
+            );
+        }
+        draw::draw_selection(painter, view, capture, sel);
+        draw::draw_labels(painter, view, capture);
+        let generation = session.shown_generation;
+        if self
+            .label_points
+            .as_ref()
+            .is_none_or(|(g, _)| *g != generation)
+        {
+            self.label_points = Some((generation, capture.object_label_points()));
+        }
+        if let Some((_, points)) = &self.label_points {
+            let names = session.spec.object_labels(capture, points, lang);
+            draw::draw_object_labels(painter, view, &names);
+        }
     }
 
     /// Which raster triangles own a sample in the frame shown (found once per frame).
