@@ -12,14 +12,25 @@ display=:97
 cargo build --quiet --bin pipelens
 . scripts/xvfb-lib.sh
 start_xvfb
-DISPLAY=$display target/debug/pipelens "$@" >target/smoke-app.log 2>&1 &
-app=$!
-for _ in $(seq 1 60); do
-  if DISPLAY=$display xdotool search --name '^pipelens' >/dev/null 2>&1; then break; fi
-  if ! kill -0 "$app" 2>/dev/null; then
-    echo "smoke: the app exited before its window appeared:"; cat target/smoke-app.log; exit 1
-  fi
-  sleep 1
+# Once in a while a client that connects just as the server settles is refused ("Failed to open
+# connection to X server") though the server then accepts the next one: that, and only that, is
+# tried again, at most three times.
+for attempt in 1 2 3; do
+  DISPLAY=$display target/debug/pipelens "$@" >target/smoke-app.log 2>&1 &
+  app=$!
+  refused=
+  for _ in $(seq 1 60); do
+    if DISPLAY=$display xdotool search --name '^pipelens' >/dev/null 2>&1; then break; fi
+    if ! kill -0 "$app" 2>/dev/null; then
+      if [ "$attempt" -lt 3 ] && grep -q "Failed to open connection to X server" target/smoke-app.log; then
+        echo "smoke: the X server refused the app (attempt $attempt); trying again"
+        refused=yes; sleep 2; break
+      fi
+      echo "smoke: the app exited before its window appeared:"; cat target/smoke-app.log; exit 1
+    fi
+    sleep 1
+  done
+  [ -z "$refused" ] && break
 done
 if ! DISPLAY=$display xdotool search --name '^pipelens' >/dev/null 2>&1; then
   echo "smoke: no window named pipelens after 60 s"; cat target/smoke-app.log; exit 1
