@@ -389,7 +389,7 @@ fn differing_entries(columns: &[f32; 16], reference: &glam::Mat4) -> Vec<(usize,
 pub fn wrong_shadow_matrix(scene: &Scene) -> Option<MatrixMismatch> {
     let shadow = scene.shadow?;
     let hook = scene.hook(HookKind::ShadowMatrix)?;
-    let light = shadow.light - glam::Vec3::new(0.0, shadow.plane_y, 0.0);
+    let light = shadow.light_over_plane();
     let yours = hook.shadow_matrix(light).ok()?;
     let theirs = pipeline::transform::planar_shadow(light).matrix;
     let (a, b) = (yours.to_cols_array(), theirs.to_cols_array());

@@ -247,6 +247,13 @@ pub struct PlanarShadow {
 pub const SHADOW_LIFT: f32 = 2e-3;
 
 impl PlanarShadow {
+    /// The light relative to the receiving plane, `l − (0, h, 0)`: where it is when the plane
+    /// is moved to `y = 0`, as the notes' matrix (and the student's `shadow_matrix`) take it.
+    #[must_use]
+    pub fn light_over_plane(&self) -> Vec3 {
+        self.light - Vec3::new(0.0, self.plane_y, 0.0)
+    }
+
     /// `T(0, h + ε, 0)·M_shadow(l − (0, h, 0))·T(0, −h, 0)`: the notes' matrix for the plane
     /// `y = 0`, moved to `y = h` and lifted by [`SHADOW_LIFT`].
     #[must_use]
@@ -254,7 +261,7 @@ impl PlanarShadow {
         let h = Vec3::new(0.0, self.plane_y, 0.0);
         let m = match self.yours {
             Some(m) => NamedMatrix::new("M_shadow (yours)", "your shadow_matrix(l)", m),
-            None => transform::planar_shadow(self.light - h),
+            None => transform::planar_shadow(self.light_over_plane()),
         };
         let up = transform::translate(h + Vec3::new(0.0, SHADOW_LIFT, 0.0));
         let down = transform::translate(-h);

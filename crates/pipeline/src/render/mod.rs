@@ -158,14 +158,15 @@ fn with_student_shadow(scene: &Scene) -> Result<Option<Scene>, RenderError> {
     let Some(hook) = scene.hook(crate::shader::HookKind::ShadowMatrix) else {
         return Ok(None);
     };
-    let light = shadow.light - glam::Vec3::new(0.0, shadow.plane_y, 0.0);
+    let light = shadow.light_over_plane();
     let m = hook
         .shadow_matrix(light)
         .map_err(|e| RenderError::Invalid(vec![format!("shadow_matrix, {e}")]))?;
     if !m.is_finite() {
         return Err(RenderError::Invalid(vec![format!(
-            "shadow_matrix(vec3{light}) returned a matrix that is not finite (a division by \
-             zero?): {m}"
+            "shadow_matrix(vec3({}, {}, {})) returned a matrix that is not finite (a division by \
+             zero?): {m}",
+            light.x, light.y, light.z
         )]));
     }
     let mut drawn = scene.clone();
