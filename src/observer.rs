@@ -58,6 +58,56 @@ pub fn default_orbit(spec: &SceneSpec) -> Orbit {
     }
 }
 
+/// The orbit a step's observer starts from, for a picture of `aspect` (width/height; the
+/// lesson image's when `None`). With a `focus`, framed on the objects it names (their
+/// world-space box, [`crate::spaces::named_in`]) from the default orbit's angles, at the
+/// distance where the box's bounding sphere of radius r fills 85 % of the picture's narrower
+/// side: `d = r / (0.85·tan α)`, α the lens's half-angle on that side ([`observer_fovy`]). The
+/// viewing camera and its frustum are then context around the subject, not what is framed.
+/// Without a focus, or when it names nothing drawn, the whole scene with the camera
+/// ([`default_orbit`]).
+pub fn orbit_for(spec: &SceneSpec, focus: &[String], aspect: Option<f32>) -> Orbit {
+    let whole = default_orbit(spec);
+    if focus.is_empty() {
+        return whole;
+    }
+    let (objects, _) = spec.scene.drawn_objects();
+    let corners: Vec<Vec3> = objects
+        .iter()
+        .filter(|o| crate::spaces::named_in(focus, &o.name))
+        .filter_map(|o| {
+            let (lo, hi) = o.mesh.bounds()?;
+            let m = o.model_matrix().matrix;
+            Some((0..8).map(move |k| {
+                let pick = |bit: usize, a: f32, b: f32| if k >> bit & 1 == 1 { b } else { a };
+                m.transform_point3(Vec3::new(
+                    pick(0, lo.x, hi.x),
+                    pick(1, lo.y, hi.y),
+                    pick(2, lo.z, hi.z),
+                ))
+            }))
+        })
+        .flatten()
+        .filter(|p| p.is_finite())
+        .collect();
+    let (Some(lo), Some(hi)) = (
+        corners.iter().copied().reduce(Vec3::min),
+        corners.iter().copied().reduce(Vec3::max),
+    ) else {
+        return whole;
+    };
+    let radius = ((hi - lo).length() / 2.0).max(1e-3);
+    let aspect = aspect
+        .filter(|a| a.is_finite() && *a > 0.0)
+        .unwrap_or(spec.settings.width as f32 / spec.settings.height.max(1) as f32);
+    let vertical = (observer_fovy(aspect).to_radians() / 2.0).tan();
+    Orbit {
+        centre: (lo + hi) / 2.0,
+        distance: radius / (0.85 * vertical * aspect.min(1.0)),
+        ..whole
+    }
+}
+
 /// The observer's lens: 50° vertically for a picture at least 1.6 times as wide as high; a
 /// narrower picture gets a taller angle that keeps the same horizontal one,
 /// `fovy = 2·atan(tan(25°)·1.6/aspect)` (at most 120°), so that a tall panel still shows the
@@ -304,9 +354,13 @@ pub fn scene_extent(spec: &SceneSpec) -> (Vec3, f32) {
 
 /// The scene seen from outside (the app's observer view): rendered from the default orbit, with
 /// the viewing camera's frame, frustum, clipped polygons and lights drawn over it.
-pub fn observer_image(spec: &SceneSpec, main: &FrameCapture) -> Option<image::RgbaImage> {
+pub fn observer_image(
+    spec: &SceneSpec,
+    main: &FrameCapture,
+    focus: &[String],
+) -> Option<image::RgbaImage> {
     use pipeline::overlay::Shape;
-    let orbit = default_orbit(spec);
+    let orbit = orbit_for(spec, focus, None);
     let outside = render_observer(spec, orbit.camera(), None, None)?;
     let (marks, _) = viewing_camera(main, &Parts::default(), scene_extent(spec), Lang::En);
     let mut shapes: Vec<Shape> = marks

@@ -182,6 +182,18 @@ pub fn fate_index(f: &pipeline::capture::Fate) -> usize {
     }
 }
 
+/// Whether `focus` names the object `name`: by its own name, or a figure's part by the
+/// figure's name (`arm` names `arm: base`).
+#[must_use]
+pub fn named_in(focus: &[String], name: &str) -> bool {
+    focus.iter().any(|f| {
+        name == f
+            || name
+                .strip_prefix(f.as_str())
+                .is_some_and(|r| r.starts_with(": "))
+    })
+}
+
 /// Which vertex rows are the subject: the objects named by `focus` (a figure by its parts), every
 /// object without it; in model space, one object (its own origin): the focused one, the selected
 /// vertex's, or the first.
@@ -192,14 +204,7 @@ pub fn subject(
     vertex: Option<u32>,
     space: Space,
 ) -> Vec<bool> {
-    let named = |name: &str| {
-        focus.iter().any(|f| {
-            name == f
-                || name
-                    .strip_prefix(f.as_str())
-                    .is_some_and(|r| r.starts_with(": "))
-        })
-    };
+    let named = |name: &str| named_in(focus, name);
     let mut objects: Vec<bool> = capture
         .objects
         .iter()

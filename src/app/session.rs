@@ -196,6 +196,12 @@ impl Session {
         sel.pixel = step.pixel;
         sel.vertex = step.vertex;
         sel.focus.clone_from(&step.focus);
+        // The observer frames the step's subject, as the geometry views do.
+        self.orbit = crate::observer::orbit_for(
+            &spec,
+            step.focus.as_deref().unwrap_or_default(),
+            self.observer_aspect,
+        );
         sel.depth_view = DepthView {
             linear: false,
             range: step.depth_range,

@@ -61,15 +61,15 @@ pub fn step_picture(
     let buffer = lesson.buffer_at(k);
     // The scene from outside, at least as wide as a magnified buffer (a 24×16 lesson image
     // would give a 24×16 observer view).
+    let focus = step.focus.as_deref().unwrap_or_default();
     let observer = || {
         let mut big = r.spec.clone();
         let z = zoom_for(big.settings.width);
         big.settings.width *= z;
         big.settings.height *= z;
-        crate::observer::observer_image(&big, r.capture)
+        crate::observer::observer_image(&big, r.capture, focus)
     };
     if let Some(space) = stage.space() {
-        let focus = step.focus.as_deref().unwrap_or_default();
         let normals = step
             .overlays
             .as_deref()

@@ -63,3 +63,51 @@ fn the_observer_draws_the_frustum_and_the_clipped_floor_where_they_are() {
         }
     }
 }
+
+/// Lesson 17 (issue: the observer framed the whole floor, the robot arm ~40 px in a slide): a
+/// step whose `focus` names the arm frames the arm. Rendered from the step's orbit, the arm's
+/// pixels span at least half of the observer picture's height, and the whole-scene orbit it
+/// replaced showed them at under a fifth.
+#[test]
+fn the_observer_frames_the_steps_subject() {
+    use pipelens::observer::{default_orbit, orbit_for, render_observer};
+    let lesson = crate::support::lesson("17-hierarchy");
+    let spec = lesson.spec_playing(0, 0.0);
+    let focus = lesson.steps[0]
+        .focus
+        .clone()
+        .expect("the step names its subject");
+    assert_eq!(focus, ["arm"]);
+    // The rows of the observer picture that show a part of the arm.
+    let arm_rows = |orbit: pipelens::observer::Orbit, aspect: f32| {
+        let obs = render_observer(&spec, orbit.camera(), Some(aspect), None).expect("renders");
+        let (w, h) = (obs.width() as usize, obs.height() as usize);
+        let arm: Vec<bool> = obs
+            .objects
+            .iter()
+            .map(|o| pipelens::spaces::named_in(&focus, &o.name))
+            .collect();
+        let primitive_object = |p: u32| {
+            obs.primitives
+                .get(p as usize)
+                .is_some_and(|p| arm[p.object as usize])
+        };
+        let rows = (0..h)
+            .filter(|y| (0..w).any(|x| primitive_object(obs.pixels.primitive[y * w + x])))
+            .count();
+        rows as f32 / h as f32
+    };
+    let whole = arm_rows(default_orbit(&spec), 1.0);
+    assert!(whole < 0.2, "the whole scene showed the arm at {whole}");
+    // In a square panel (the app's split) and a wide one (a slide), taking the lens's
+    // angle on the narrower side into account.
+    for aspect in [1.0, 2.0] {
+        let framed = arm_rows(orbit_for(&spec, &focus, Some(aspect)), aspect);
+        assert!(
+            framed >= 0.5,
+            "aspect {aspect}: the arm spans {framed} of the height"
+        );
+    }
+    // A step without a focus keeps the whole scene.
+    assert_eq!(orbit_for(&spec, &[], Some(1.0)), default_orbit(&spec));
+}

@@ -75,3 +75,13 @@ pub fn save_edited(path: &std::path::Path, text: &str, modified: std::time::Syst
         .and_then(|f| f.set_modified(modified))
         .expect("touch");
 }
+
+/// The lesson `lessons/{id}.toml`, loaded as the app loads it.
+pub fn lesson(id: &str) -> pipelens::lesson::Lesson {
+    let path = repo().join(format!("lessons/{id}.toml"));
+    match pipelens::lesson::load_file(&path) {
+        Ok(pipelens::lesson::Document::Lesson(lesson)) => *lesson,
+        Ok(_) => panic!("{} is not a lesson", path.display()),
+        Err(e) => panic!("{e}"),
+    }
+}
