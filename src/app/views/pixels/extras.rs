@@ -10,7 +10,6 @@ use egui::{Align2, Color32, Pos2, Rect, Stroke, TextureOptions, Ui, Vec2};
 use egui_plot::{Legend, Line, Plot, VLine};
 use pipeline::capture::{FrameCapture, PixelRecord};
 
-use crate::app::views::label_with_background;
 use crate::vocabulary::{Lang, num};
 
 /// The curve `z_w(d)` from near to far, and where the image's depths lie on it.
@@ -104,7 +103,31 @@ impl Pyramid {
         };
         let read = record.and_then(|r| r.texture.as_ref());
         let level_read = read.map(|t| (t.level.floor().max(0.0) as usize, t.level.fract()));
-        let rects = level_rects(texture, rect);
+        // The title on its own rows at the top (wrapped to the panel), the levels below it.
+        let title = painter.layout(
+            format!(
+                "{} · {}",
+                lang.tr("mip pyramid", "mipmap 金字塔"),
+                lang.tr(
+                    "framed: the level read at the inspected pixel, its footprint in cyan",
+                    "框出：所检查像素读取的层级，青色为其覆盖区域"
+                )
+            ),
+            picture_font(painter.ctx(), 13.0),
+            Color32::WHITE,
+            rect.width() - 12.0,
+        );
+        let below = rect.top() + title.size().y + 10.0;
+        painter.galley(rect.left_top() + Vec2::splat(6.0), title, Color32::WHITE);
+        let sizes: Vec<Vec2> = texture
+            .levels
+            .iter()
+            .map(|l| Vec2::new(l.width as f32, l.height as f32))
+            .collect();
+        let rects = level_rects(
+            &sizes,
+            Rect::from_min_max(Pos2::new(rect.left(), below), rect.max),
+        );
         for (k, (level, r)) in texture.levels.iter().zip(rects).enumerate() {
             let key = (texture.name.clone(), k);
             let handle = self.textures.entry(key).or_insert_with(|| {
@@ -139,10 +162,16 @@ impl Pyramid {
                 ),
                 egui::StrokeKind::Outside,
             );
+            // A level too narrow for its size is labelled by its number only.
+            let label = if r.width() >= 70.0 {
+                format!("{k}: {}×{}", level.width, level.height)
+            } else {
+                k.to_string()
+            };
             painter.text(
                 Pos2::new(r.left(), r.top() - LABEL_H),
                 Align2::LEFT_TOP,
-                format!("{k}: {}×{}", level.width, level.height),
+                label,
                 picture_font(painter.ctx(), 13.0),
                 if chosen {
                     Color32::YELLOW
@@ -156,21 +185,6 @@ impl Pyramid {
                 draw_footprint(&painter, r, t, k, level.width);
             }
         }
-        label_with_background(
-            &painter,
-            rect.right_top() + Vec2::new(-6.0, 6.0),
-            Align2::RIGHT_TOP,
-            &format!(
-                "{} · {}",
-                lang.tr("mip pyramid", "mipmap 金字塔"),
-                lang.tr(
-                    "framed: the level read at the inspected pixel, its footprint in cyan",
-                    "框出：所检查像素读取的层级，青色为其覆盖区域"
-                )
-            ),
-            &picture_font(painter.ctx(), 13.0),
-            Color32::WHITE,
-        );
     }
 }
 
@@ -206,34 +220,89 @@ fn draw_footprint(
 /// The height of a level's label.
 const LABEL_H: f32 = 18.0;
 
-/// Where each mip level goes in `rect`: side by side, halving (one under the other in a tall
-/// panel), level 0 taking about half the length; as many levels as fit.
-fn level_rects(texture: &pipeline::texture::Texture, rect: Rect) -> Vec<Rect> {
+/// Where each mip level goes in `rect`, in the arrangement that shows level 0 largest: in a row
+/// (level 0, then each smaller level right of the one before), or, in a tall panel, level 0 on
+/// top and the smaller levels in a row under it. Every level has its label's height above it
+/// and a gap before the next; the levels that would be under 2 points are left out.
+fn level_rects(sizes: &[Vec2], rect: Rect) -> Vec<Rect> {
     let pad = 8.0;
-    let vertical = rect.height() > rect.width();
-    let (w0, h0) = (
-        texture.levels[0].width as f32,
-        texture.levels[0].height as f32,
-    );
-    let scale = if vertical {
-        ((rect.width() - 2.0 * pad) / w0).min((rect.height() - 2.0 * pad) / (2.0 * (h0 + LABEL_H)))
-    } else {
-        ((rect.height() - 2.0 * pad - LABEL_H) / h0).min((rect.width() - 2.0 * pad) / (2.2 * w0))
+    let gap = 16.0;
+    let Some(&first) = sizes.first() else {
+        return Vec::new();
     };
-    let mut at = rect.left_top() + Vec2::splat(pad);
+    let rest_w: f32 = sizes[1..].iter().map(|s| s.x).sum();
+    let rest_h = sizes.get(1).map_or(0.0, |s| s.y);
+    let gaps = gap * (sizes.len() - 1) as f32;
+    let (w, h) = (rect.width() - 2.0 * pad, rect.height() - 2.0 * pad);
+    // In a row: (first.x + rest_w)·s + gaps ≤ w, first.y·s + label ≤ h.
+    let row = ((w - gaps) / (first.x + rest_w)).min((h - LABEL_H) / first.y);
+    // Stacked: level 0 over the row of the rest.
+    let stacked = (w / first.x)
+        .min((w - gaps + gap) / rest_w.max(1.0))
+        .min((h - 2.0 * LABEL_H - pad) / (first.y + rest_h));
+    let scale = row.max(stacked).max(0.0);
+    let origin = rect.left_top() + Vec2::splat(pad);
+    let mut at = origin;
     let mut out = Vec::new();
-    for level in &texture.levels {
-        let size = Vec2::new(level.width as f32, level.height as f32) * scale;
-        let r = Rect::from_min_size(at + Vec2::new(0.0, LABEL_H), size);
-        if size.x < 2.0 || size.y < 2.0 || !rect.contains_rect(r.shrink(0.5)) {
+    for (k, size) in sizes.iter().enumerate() {
+        let size = *size * scale;
+        if size.x < 2.0 || size.y < 2.0 {
             break;
         }
+        let r = Rect::from_min_size(at + Vec2::new(0.0, LABEL_H), size);
         out.push(r);
-        at = if vertical {
-            Pos2::new(at.x, r.bottom() + pad)
+        at = if k == 0 && stacked > row {
+            Pos2::new(origin.x, r.bottom() + pad)
         } else {
-            Pos2::new(r.right() + pad * 1.5, at.y)
+            Pos2::new(r.right() + gap, at.y)
         };
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pyramid(n: u32) -> Vec<Vec2> {
+        (0..n)
+            .map(|k| Vec2::splat((1u32 << (n - 1 - k)) as f32))
+            .collect()
+    }
+
+    /// Every level shown lies inside the panel with its label, none overlaps another.
+    fn laid_out(rects: &[Rect], panel: Rect) {
+        for (i, r) in rects.iter().enumerate() {
+            let labelled = Rect::from_min_max(r.min - Vec2::new(0.0, LABEL_H), r.max);
+            assert!(
+                panel.contains_rect(labelled),
+                "level {i} {labelled:?} outside {panel:?}"
+            );
+            for s in &rects[i + 1..] {
+                assert!(!labelled.intersects(*s), "level {i} overlaps another");
+            }
+        }
+    }
+
+    #[test]
+    fn a_wide_panel_shows_the_levels_in_a_row() {
+        // 1366×768 with the pyramid under the image: a band about 1000 × 180.
+        let panel = Rect::from_min_size(Pos2::ZERO, Vec2::new(1000.0, 180.0));
+        let rects = level_rects(&pyramid(9), panel);
+        laid_out(&rects, panel);
+        assert!(rects.len() >= 7, "only {} levels", rects.len());
+        assert!(rects.windows(2).all(|w| w[1].left() > w[0].right()));
+    }
+
+    #[test]
+    fn a_tall_panel_puts_the_smaller_levels_under_level_zero() {
+        // The column beside a wide image: 300 × 600.
+        let panel = Rect::from_min_size(Pos2::ZERO, Vec2::new(300.0, 600.0));
+        let rects = level_rects(&pyramid(9), panel);
+        laid_out(&rects, panel);
+        assert!(rects.len() >= 6, "only {} levels", rects.len());
+        assert!(rects[1].top() > rects[0].bottom());
+        // Level 0 over half the panel's width (the row under it, with its gaps, limits it).
+        assert!(rects[0].width() > 150.0);
+    }
 }
