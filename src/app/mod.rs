@@ -75,6 +75,8 @@ pub struct PipelensApp {
     /// Where this frame drew the picture of the stage (the buffer, the geometry, the observer,
     /// the compared images and their plot): what a presentation is for, measured by the tests.
     pub picture: Vec<egui::Rect>,
+    /// Where this frame drew the step's subject, which the narration card must leave clear.
+    pub subject: Vec<egui::Rect>,
     pixel_view: PixelView,
     geometry_view: GeometryView,
     observer_view: ObserverView,
@@ -107,6 +109,7 @@ impl PipelensApp {
             session,
             panels: Panels::for_mode(presenting),
             picture: Vec::new(),
+            subject: Vec::new(),
             pixel_view: PixelView::default(),
             geometry_view: GeometryView::default(),
             observer_view: ObserverView::default(),
@@ -205,6 +208,7 @@ impl PipelensApp {
         self.open_dropped(ui.ctx());
         self.keyboard(ui.ctx());
         self.picture.clear();
+        self.subject.clear();
         self.top_bar(ui);
         self.keys_help(ui.ctx());
         // Presenting, the status line shows only to say what went wrong.
@@ -267,7 +271,9 @@ impl PipelensApp {
             })
             .response
             .rect;
-        if self.panels.narration && self.session.lesson.is_some() {
+        if !(self.panels.narration && self.session.lesson.is_some()) {
+            views::room::set_narration_card(ui.ctx(), None);
+        } else {
             let out = views::lesson::card(ui.ctx(), central, &self.session);
             self.commands.extend(out.commands);
             if out.fold {
@@ -314,10 +320,30 @@ impl PipelensApp {
         let space = sel.stage.space();
         self.stage_toolbar(ui, capture);
         let observer = sel.show_observer && (space.is_some() || sel.comparison.is_none());
+        // A narration band across the bottom leaves the views the part above it.
+        let card = views::room::narration_card(ui.ctx());
+        let above = views::room::above_band(ui.available_rect_before_wrap(), card);
+        ui.scope_builder(egui::UiBuilder::new().max_rect(above), |ui| {
+            self.views(ui, capture, observer);
+        });
+        ui.advance_cursor_after_rect(above);
+    }
+
+    /// The compared images, or the stage's view with the observer or the exercise beside it.
+    fn views(
+        &mut self,
+        ui: &mut egui::Ui,
+        capture: &std::sync::Arc<pipeline::capture::FrameCapture>,
+        observer: bool,
+    ) {
+        let sel = self.session.selection.clone();
+        let space = sel.stage.space();
         if sel.comparison.is_some() && space.is_none() {
             let c = self.compare_view.ui(ui, &self.session);
             self.commands.extend(c);
             self.picture
+                .extend(self.compare_view.picture.iter().copied());
+            self.subject
                 .extend(self.compare_view.picture.iter().copied());
             return;
         }
@@ -353,10 +379,12 @@ impl PipelensApp {
                 );
                 self.commands.extend(c);
                 self.picture.extend(self.geometry_view.picture);
+                self.subject.extend(self.geometry_view.subject);
             } else {
                 let c = self.pixel_view.ui(ui, &self.session, capture);
                 self.commands.extend(c);
                 self.picture.extend(self.pixel_view.picture.iter().copied());
+                self.subject.extend(self.pixel_view.subject.iter().copied());
             }
         });
         if let Some(side) = side {

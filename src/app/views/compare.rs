@@ -69,6 +69,46 @@ fn grid(area: Rect, (n, aspect): (usize, f32), with_plot: bool, gap: f32) -> (us
     (cols, Vec2::new(cell_w, cell_h), images)
 }
 
+/// Each image's cell in the grid `(cols, cell, images)` of `n` images, and the grid's rect.
+fn cells((cols, cell, images): (usize, Vec2, Rect), n: usize, gap: f32) -> (Vec<Rect>, Rect) {
+    let cells = (0..n)
+        .map(|i| {
+            let (c, r) = (i % cols, i / cols);
+            Rect::from_min_size(
+                images.min + Vec2::new(c as f32 * (cell.x + gap), r as f32 * (cell.y + gap)),
+                cell,
+            )
+        })
+        .collect();
+    (cells, images)
+}
+
+/// The grid's cells framed clear of the narration card: in the whole area when the images miss
+/// it, else right of it or above it, whichever makes them larger (reported to the card as the
+/// share of their size they kept).
+fn framed(
+    ctx: &egui::Context,
+    area: Rect,
+    (n, aspect): (usize, f32),
+    with_plot: bool,
+    gap: f32,
+) -> (Vec<Rect>, Rect) {
+    let card = super::room::narration_card(ctx);
+    let (cells, images) = super::room::candidates(area, card)
+        .into_iter()
+        .map(|r| cells(grid(r, (n, aspect), with_plot, gap), n, gap))
+        .filter(|(cells, _)| {
+            cells
+                .iter()
+                .all(|c| super::room::misses(fit_rect(*c, aspect), card))
+        })
+        .max_by(|a, b| a.0[0].area().total_cmp(&b.0[0].area()))
+        .unwrap_or_else(|| cells(grid(area, (n, aspect), with_plot, gap), n, gap));
+    let unobstructed = grid(area, (n, aspect), with_plot, gap).1;
+    super::room::report_kept(ctx, cells[0].area() / (unobstructed.x * unobstructed.y));
+    (cells, images)
+}
+
 impl CompareView {
     /// Draws the images and the profile plot below them.
     pub fn ui(&mut self, ui: &mut Ui, session: &Session) -> Vec<Command> {
@@ -80,12 +120,13 @@ impl CompareView {
             ui.label(lang.tr("Rendering the comparison…", "正在渲染对比…"));
             return cmds;
         }
+        let card = super::room::narration_card(ui.ctx());
         let area = ui.available_rect_before_wrap();
         let with_plot = session.selection.profile.is_some();
         let aspect = variants[0].1.width() as f32 / variants[0].1.height() as f32;
         let caption_size = ui.style().text_styles[&egui::TextStyle::Body].size * 1.1;
         let gap = 6.0;
-        let (cols, cell, images) = grid(area, (variants.len(), aspect), with_plot, gap);
+        let (cells, images) = framed(ui.ctx(), area, (variants.len(), aspect), with_plot, gap);
         let kind = session.selection.buffer;
         let gain = self.gain.get((session.shown_generation, kind), || {
             pipeline::capture::FrameCapture::shared_term_gain(
@@ -93,12 +134,7 @@ impl CompareView {
                 kind,
             )
         });
-        for (i, (name, capture)) in variants.iter().enumerate() {
-            let (c, r) = (i % cols, i / cols);
-            let cell = Rect::from_min_size(
-                images.min + Vec2::new(c as f32 * (cell.x + gap), r as f32 * (cell.y + gap)),
-                cell,
-            );
+        for (i, ((name, capture), &cell)) in variants.iter().zip(&cells).enumerate() {
             if self.textures.len() <= i {
                 self.textures.resize_with(i + 1, Default::default);
             }
@@ -164,7 +200,14 @@ impl CompareView {
         super::draw_gain_note(ui.painter(), bottom, kind, gain, lang);
         ui.advance_cursor_after_rect(images);
         if with_plot {
-            let plot = Rect::from_min_max(Pos2::new(area.left(), images.bottom() + gap), area.max);
+            // Below the images, right of the card when the card would cover its axes.
+            let plot = super::room::right_of(
+                Rect::from_min_max(
+                    Pos2::new(images.left(), images.bottom() + gap),
+                    Pos2::new(images.right(), area.bottom()),
+                ),
+                card,
+            );
             self.picture.push(plot);
             ui.scope_builder(egui::UiBuilder::new().max_rect(plot), |ui| {
                 self.plot(ui, session)

@@ -25,8 +25,30 @@ pub fn card(ctx: &egui::Context, over: egui::Rect, session: &Session) -> CardOut
         fold: false,
         inspect: false,
     };
-    let width = (over.width() * 0.42).clamp(320.0_f32.min(over.width() - 24.0), 760.0);
-    egui::Area::new(egui::Id::unique("narration-card"))
+    // In the corner; a band across the bottom for the rest of the step when a view's subject
+    // kept less than `LEAST_KEPT` of its size beside the corner card.
+    let band_id = egui::Id::unique("narration-card-band");
+    let kept = super::room::take_kept(ctx);
+    let key = (
+        session.step_entered,
+        over.size().x.round() as i64,
+        over.size().y.round() as i64,
+    );
+    let mut band = ctx
+        .data(|d| d.get_temp::<((u64, i64, i64), bool)>(band_id))
+        .filter(|(k, _)| *k == key)
+        .is_some_and(|(_, b)| b);
+    if !band && kept < super::room::LEAST_KEPT {
+        band = true;
+        ctx.request_repaint();
+    }
+    ctx.data_mut(|d| d.insert_temp(band_id, (key, band)));
+    let width = if band {
+        over.width() - 24.0
+    } else {
+        (over.width() * 0.42).clamp(320.0_f32.min(over.width() - 24.0), 760.0)
+    };
+    let shown = egui::Area::new(egui::Id::unique("narration-card"))
         .order(egui::Order::Foreground)
         .pivot(Align2::LEFT_BOTTOM)
         .fixed_pos(over.left_bottom() + Vec2::new(12.0, -12.0))
@@ -38,7 +60,7 @@ pub fn card(ctx: &egui::Context, over: egui::Rect, session: &Session) -> CardOut
                 .stroke(egui::Stroke::new(1.0, Color32::from_gray(90)))
                 .show(ui, |ui| {
                     ui.set_width(width);
-                    ui.set_max_height(over.height() * 0.55);
+                    ui.set_max_height(over.height() * if band { 0.4 } else { 0.55 });
                     let fit_id = egui::Id::unique("narration-card-fit");
                     let fit = ctx.data(|d| d.get_temp::<f32>(fit_id)).unwrap_or(1.0);
                     let normal = crate::app::style::text_styles(1.0)[&egui::TextStyle::Body].size;
@@ -54,6 +76,7 @@ pub fn card(ctx: &egui::Context, over: egui::Rect, session: &Session) -> CardOut
                     }
                 });
         });
+    super::room::set_narration_card(ctx, Some(shown.response.rect));
     out
 }
 

@@ -11,6 +11,7 @@ pub mod navigator;
 pub mod observer;
 pub mod params;
 pub mod pixels;
+pub mod room;
 pub mod shader;
 pub mod typeset;
 

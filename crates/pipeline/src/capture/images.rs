@@ -282,6 +282,28 @@ impl FrameCapture {
             })
     }
 
+    /// The smallest box of image pixels holding every covered pixel, `[x0, y0, x1, y1)` with
+    /// rows counted from the top (as in [`Self::image`]); `None` when nothing is covered.
+    #[must_use]
+    pub fn covered_box(&self) -> Option<[u32; 4]> {
+        let w = self.width() as usize;
+        let mut b: Option<[u32; 4]> = None;
+        for (i, _) in self
+            .pixels
+            .primitive
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| **p != NONE)
+        {
+            let (x, y) = ((i % w) as u32, (i / w) as u32);
+            b = Some(match b {
+                None => [x, y, x + 1, y + 1],
+                Some([x0, y0, x1, y1]) => [x0.min(x), y0.min(y), x1.max(x + 1), y1.max(y + 1)],
+            });
+        }
+        b
+    }
+
     /// Which raster triangles own at least one sample after the depth test (indexed as
     /// [`Self::triangles`]); `None` when the frame kept no per-sample owners. The others are
     /// hidden (the back of a closed mesh) or cover no sample.

@@ -457,3 +457,34 @@ fn overlays_leave_out_hidden_triangles_and_stress_the_focus() {
         3
     );
 }
+
+/// The covered box is that of the covered pixels, rows counted from the top: a triangle with
+/// its legs on x = 2 and y = 2 (window coordinates, y up) and its hypotenuse on x + y = 16
+/// covers the pixels whose centres (x + ½, y + ½) are inside. The centres on the hypotenuse
+/// (a right edge: not owned, by the top-left rule) are out, so the columns are 2..13 and the
+/// window rows 2..13, image rows 16 − 13..16 − 2.
+#[test]
+fn the_covered_box_holds_every_covered_pixel() {
+    use glam::Vec2;
+    let t = [
+        Vec2::new(2.0, 2.0),
+        Vec2::new(14.0, 2.0),
+        Vec2::new(2.0, 14.0),
+    ];
+    let (scene, settings) = crate::support::pixel_scene(32, 16, &[t]);
+    let c = crate::support::render(&scene, &settings);
+    assert_eq!(c.covered_box(), Some([2, 3, 13, 14]));
+    let other = [
+        Vec2::new(20.0, 2.0),
+        Vec2::new(30.0, 2.0),
+        Vec2::new(20.0, 12.0),
+    ];
+    let (scene, settings) = crate::support::pixel_scene(32, 16, &[t, other]);
+    let c = crate::support::render(&scene, &settings);
+    assert_eq!(c.covered_box(), Some([2, 3, 29, 14]));
+    let (scene, settings) = crate::support::pixel_scene(32, 16, &[]);
+    assert_eq!(
+        crate::support::render(&scene, &settings).covered_box(),
+        None
+    );
+}

@@ -29,6 +29,8 @@ pub struct GeometryView {
     reset_for: Option<u64>,
     /// Where the picture was drawn this frame.
     pub picture: Option<Rect>,
+    /// Where the step's focused objects were drawn this frame (none without a focus).
+    pub subject: Option<Rect>,
 }
 
 impl Default for GeometryView {
@@ -40,6 +42,7 @@ impl Default for GeometryView {
             pan: Vec2::ZERO,
             reset_for: None,
             picture: None,
+            subject: None,
         }
     }
 }
@@ -182,9 +185,11 @@ impl GeometryView {
         let mut cmds = Vec::new();
         let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
         self.picture = Some(rect);
+        self.subject = None;
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 0.0, Color32::from_gray(18));
-        self.navigate(ui, &response, rect);
+        let frame = clear_of_card(ui.ctx(), rect);
+        self.navigate(ui, &response, frame);
         let subject = subject(capture, session, space);
         let eased = t * t * (3.0 - 2.0 * t);
         let from = from.unwrap_or(space);
@@ -200,7 +205,7 @@ impl GeometryView {
             })
             .collect();
         let Some((cam, radius, centre)) =
-            bounds(capture, [space, from], &subject).and_then(|b| self.camera(rect, b))
+            bounds(capture, [space, from], &subject).and_then(|b| self.camera(frame, b))
         else {
             painter.text(
                 rect.center(),
@@ -217,6 +222,13 @@ impl GeometryView {
             draw_volume(&painter, &cam, v);
         }
         let (stride, seen, fates) = draw_triangles(&painter, &cam, capture, &points, &subject);
+        self.subject = session
+            .selection
+            .focus
+            .as_ref()
+            .filter(|f| !f.is_empty())
+            .map(|_| seen.intersect(rect))
+            .filter(Rect::is_positive);
         if space == Space::World && from == space && session.selection.show_normals {
             draw_normals(&painter, &cam, capture, &points, radius * 0.12);
         }
@@ -390,6 +402,19 @@ impl GeometryView {
             centre,
         ))
     }
+}
+
+/// Where the subject's sphere (a square on the narrower side of `rect`) is framed clear of the
+/// narration card: the rect the orbiting camera's viewport maps to.
+fn clear_of_card(ctx: &egui::Context, rect: Rect) -> Rect {
+    let card = super::room::narration_card(ctx);
+    let square = Rect::from_center_size(
+        (rect.size() / 2.0).to_pos2(),
+        Vec2::splat(rect.width().min(rect.height())),
+    );
+    let frame = super::room::place(rect, rect.size(), square, card);
+    super::room::report_kept(ctx, frame.area() / rect.area());
+    frame
 }
 
 /// The vertex nearest a click (within 12 points), or none.

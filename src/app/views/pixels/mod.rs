@@ -5,6 +5,7 @@
 
 mod draw;
 mod extras;
+mod viewport;
 
 pub use draw::draw_shape;
 
@@ -15,6 +16,7 @@ use pipeline::overlay::OverlayKind;
 
 use crate::app::session::{Command, Selection, Session};
 use crate::vocabulary::{Lang, buffer_name, num};
+use viewport::{ImageViewport, layout};
 
 /// Zoom and pan of the pixel view, its texture caches, and where it drew the picture.
 pub struct PixelView {
@@ -34,10 +36,16 @@ pub struct PixelView {
     record: Option<(u64, (u32, u32), pipeline::capture::PixelRecord)>,
     /// Where the picture (the image, the depth curve, the pyramid) was drawn this frame.
     pub picture: Vec<Rect>,
+    /// Where the step's subject in the image (the covered pixels, the inspected one) was
+    /// drawn this frame, and the panel beside the image.
+    pub subject: Vec<Rect>,
     /// Which raster triangles own a sample, per capture shown (overlays leave out the rest).
     visible: Option<(u64, Option<Vec<bool>>)>,
     /// Where each object's name goes, per capture shown.
     label_points: Option<(u64, Vec<Option<[f32; 2]>>)>,
+    /// The covered pixels' box (image pixels, y down), per capture shown: the subject the
+    /// narration card must leave clear.
+    covered: Option<(u64, Option<Rect>)>,
 }
 
 impl Default for PixelView {
@@ -51,8 +59,10 @@ impl Default for PixelView {
             show_pyramid: true,
             record: None,
             picture: Vec::new(),
+            subject: Vec::new(),
             visible: None,
             label_points: None,
+            covered: None,
         }
     }
 }
@@ -205,11 +215,13 @@ impl PixelView {
         let lang = session.lang;
         let mut cmds = Vec::new();
         let (texture, gain) = self.buffer_texture(ui.ctx(), session, capture);
+        let card = crate::app::views::room::narration_card(ui.ctx());
         let full = ui.available_rect_before_wrap();
         let offered = session.buffers.contains(&sel.buffer) || !sel.buffer.is_texturing();
         let wants_extra = sel.buffer == BufferKind::Depth
             || (sel.buffer.is_texturing() && self.show_pyramid && !capture.textures.is_empty());
         let (rect, extra) = layout(full, capture, wants_extra);
+        let extra = extra.map(|e| crate::app::views::room::right_of(e, card));
         let response = ui.allocate_rect(rect, Sense::click_and_drag());
         self.picture.clear();
         response.widget_info(|| {
@@ -222,12 +234,20 @@ impl PixelView {
             self.centre = None;
             return cmds;
         }
-        let view = self.navigate(ui, &response, rect, capture);
+        let view = self.navigate(ui, (&response, session), rect, capture);
         let image = Rect::from_min_max(
             view.to_screen([0.0, 0.0]),
             view.to_screen([view.size.x, view.size.y]),
         );
         self.picture.push(image.intersect(rect));
+        let subject = self.subject(session, capture);
+        self.subject = vec![
+            Rect::from_min_max(
+                view.to_screen([subject.min.x, subject.min.y]),
+                view.to_screen([subject.max.x, subject.max.y]),
+            )
+            .intersect(rect),
+        ];
         painter.image(
             texture.id(),
             Rect::from_min_max(
@@ -269,6 +289,7 @@ impl PixelView {
         crate::app::views::draw_gain_note(&painter, top, sel.buffer, gain, lang);
         if let Some(below) = extra {
             self.picture.push(below);
+            self.subject.push(below);
             if sel.buffer == BufferKind::Depth {
                 extras::depth_curve(
                     ui,
@@ -352,19 +373,75 @@ impl PixelView {
         self.visible.as_ref().and_then(|(_, v)| v.as_deref())
     }
 
+    /// What the step is about in the image (pixels, y down): the covered pixels and the
+    /// corners of the triangles in sight (a vertex lies outside the pixels it covers), and the
+    /// inspected pixel; the whole image when nothing is covered.
+    fn subject(&mut self, session: &Session, capture: &FrameCapture) -> Rect {
+        let g = session.shown_generation;
+        let (w, h) = (capture.width() as f32, capture.height() as f32);
+        if self.covered.as_ref().is_none_or(|(k, _)| *k != g) {
+            let image = Rect::from_min_size(Pos2::ZERO, Vec2::new(w, h));
+            let covered = capture.covered_box().map(|[x0, y0, x1, y1]| {
+                let pixels = Rect::from_min_max(
+                    Pos2::new(x0 as f32, y0 as f32),
+                    Pos2::new(x1 as f32, y1 as f32),
+                );
+                let visible = self.visible(session, capture).map(<[bool]>::to_vec);
+                capture
+                    .triangles
+                    .iter()
+                    .enumerate()
+                    .filter(|(i, _)| visible.as_ref().is_none_or(|v| v.get(*i) == Some(&true)))
+                    .flat_map(|(_, t)| t.window)
+                    .map(|p| Pos2::new(p.x, h - p.y))
+                    .filter(|p| image.contains(*p))
+                    .fold(pixels, |b, p| b.union(Rect::from_min_max(p, p)))
+            });
+            self.covered = Some((g, covered));
+        }
+        let mut subject = self
+            .covered
+            .as_ref()
+            .and_then(|(_, b)| *b)
+            .unwrap_or(Rect::from_min_size(Pos2::ZERO, Vec2::new(w, h)));
+        if let Some((x, y)) = session
+            .selection
+            .pixel
+            .filter(|&(x, y)| x < capture.width() && y < capture.height())
+        {
+            let row = h - 1.0 - y as f32;
+            subject = subject.union(Rect::from_min_size(
+                Pos2::new(x as f32, row),
+                Vec2::splat(1.0),
+            ));
+        }
+        subject
+    }
+
     /// Applies wheel zoom (about the cursor) and drag pan; returns the mapping to use.
     fn navigate(
         &mut self,
         ui: &Ui,
-        response: &egui::Response,
+        (response, session): (&egui::Response, &Session),
         rect: Rect,
         capture: &FrameCapture,
     ) -> ImageViewport {
         let size = Vec2::new(capture.width() as f32, capture.height() as f32);
-        let fit = (rect.width() / size.x).min(rect.height() / size.y);
+        // Until the user zooms or drags: as large as the view allows with the covered pixels
+        // and the inspected one clear of the narration card.
+        let card = crate::app::views::room::narration_card(ui.ctx());
+        let placed =
+            crate::app::views::room::place(rect, size, self.subject(session, capture), card);
+        let fit = placed.width() / size.x;
+        crate::app::views::room::report_kept(
+            ui.ctx(),
+            placed.area() / crate::app::views::fit_rect(rect, size.x / size.y).area(),
+        );
         let range = (fit.min(1.0) * 0.5, 256.0);
         let mut zoom = self.zoom.unwrap_or(fit).clamp(range.0, range.1);
-        let mut centre = self.centre.unwrap_or(size / 2.0);
+        let mut centre = self
+            .centre
+            .unwrap_or(size / 2.0 - (placed.center() - rect.center()) / zoom);
         if let Some(pointer) = response.hover_pos() {
             let scroll = ui.input(|i| i.smooth_scroll_delta.y + i.zoom_delta().ln() * 200.0);
             if scroll != 0.0 {
@@ -373,12 +450,13 @@ impl PixelView {
                 centre = under - (pointer - rect.center()) / new_zoom;
                 zoom = new_zoom;
                 self.zoom = Some(zoom);
+                self.centre = Some(centre);
             }
         }
         if response.dragged() {
             centre -= response.drag_delta() / zoom;
+            self.centre = Some(centre);
         }
-        self.centre = Some(centre);
         ImageViewport {
             rect,
             centre,
@@ -436,80 +514,6 @@ fn pixel_tooltip(ui: &mut Ui, capture: &FrameCapture, x: u32, y: u32, lang: Lang
         num(c[2])
     ));
     ui.label(RichText::new(lang.tr("click to inspect", "单击查看详情")).weak());
-}
-
-/// Where the image is on screen: `centre` (image pixels) at the middle of `rect`, `zoom` screen
-/// points per image pixel.
-struct ImageViewport {
-    rect: Rect,
-    centre: Vec2,
-    zoom: f32,
-    size: Vec2,
-}
-
-impl ImageViewport {
-    /// Window coordinates (y up) to the screen.
-    fn window_to_screen(&self, p: [f64; 2]) -> Pos2 {
-        self.to_screen([p[0] as f32, self.size.y - p[1] as f32])
-    }
-}
-
-impl ImageViewport {
-    fn to_screen(&self, p: [f32; 2]) -> Pos2 {
-        self.rect.center() + (Vec2::new(p[0], p[1]) - self.centre) * self.zoom
-    }
-
-    fn to_image(&self, s: Pos2) -> Vec2 {
-        self.centre + (s - self.rect.center()) / self.zoom
-    }
-
-    /// The visible image pixels: columns `c0..c1`, rows `r0..r1`.
-    fn visible(&self) -> (u32, u32, u32, u32) {
-        let (a, b) = (self.to_image(self.rect.min), self.to_image(self.rect.max));
-        (
-            a.x.floor().clamp(0.0, self.size.x) as u32,
-            a.y.floor().clamp(0.0, self.size.y) as u32,
-            b.x.ceil().clamp(0.0, self.size.x) as u32,
-            b.y.ceil().clamp(0.0, self.size.y) as u32,
-        )
-    }
-
-    /// The window pixel (x, y up) under a screen point, if it is on the image.
-    fn window_pixel(&self, pos: Pos2, capture: &FrameCapture) -> Option<(u32, u32)> {
-        let ip = self.to_image(pos);
-        (ip.x >= 0.0 && ip.y >= 0.0 && ip.x < self.size.x && ip.y < self.size.y)
-            .then(|| (ip.x as u32, capture.height() - 1 - ip.y as u32))
-    }
-}
-
-/// Where the image goes in `full`, and the depth curve or the mip pyramid when `extra`: beside
-/// the image when the view is wider than the image (the space would be empty otherwise), below it
-/// when it is taller.
-fn layout(full: Rect, capture: &FrameCapture, extra: bool) -> (Rect, Option<Rect>) {
-    let aspect = capture.width() as f32 / capture.height() as f32;
-    if !extra {
-        (full, None)
-    } else if full.width() > full.height() * aspect * 1.15 {
-        let w = (full.width() - full.height() * aspect).max(full.width() * 0.3);
-        let image = Rect::from_min_max(full.min, egui::pos2(full.right() - w - 6.0, full.bottom()));
-        (
-            image,
-            Some(Rect::from_min_max(
-                egui::pos2(full.right() - w, full.top()),
-                full.max,
-            )),
-        )
-    } else {
-        let h = full.height() * 0.32;
-        let image = Rect::from_min_max(full.min, egui::pos2(full.right(), full.bottom() - h - 6.0));
-        (
-            image,
-            Some(Rect::from_min_max(
-                egui::pos2(full.left(), full.bottom() - h),
-                full.max,
-            )),
-        )
-    }
 }
 
 /// Why the image shows nothing (no texture in the scene), or that the buffer is on its way.

@@ -1,0 +1,218 @@
+//! Room for the subject beside the narration card. The card lies over the bottom-left of the
+//! picture's area; a view frames its subject (the image, the geometry's bounding sphere, the
+//! compared images) in the part of its area the card leaves free, so that the narration never
+//! covers what the step is about. The card is drawn after the views, so they read where it
+//! was in the frame before; a card that moved asks for one more frame.
+
+use egui::{Context, Id, Rect};
+
+/// The gap kept between the card and the subject, in points.
+const GAP: f32 = 8.0;
+
+fn key() -> Id {
+    Id::unique("pipelens-narration-card-rect")
+}
+
+/// Where the narration card was drawn last frame, if it is shown.
+#[must_use]
+pub fn narration_card(ctx: &Context) -> Option<Rect> {
+    ctx.data(|d| d.get_temp::<Option<Rect>>(key())).flatten()
+}
+
+/// Records where the narration card is (`None`: folded or no lesson); repaints once more when it
+/// moved, so that the views frame their subjects clear of its new place.
+pub fn set_narration_card(ctx: &Context, card: Option<Rect>) {
+    if narration_card(ctx) != card {
+        ctx.data_mut(|d| d.insert_temp(key(), card));
+        ctx.request_repaint();
+    }
+}
+
+/// How much of its own size a subject kept beside the card, the least a view reported this
+/// frame (1: untouched).
+fn kept_key() -> Id {
+    Id::unique("pipelens-narration-kept")
+}
+
+/// A view reports that, framed clear of the card, its subject kept `share` of the area it
+/// would have had without the card.
+pub fn report_kept(ctx: &Context, share: f32) {
+    ctx.data_mut(|d| {
+        let least = d.get_temp::<f32>(kept_key()).unwrap_or(1.0).min(share);
+        d.insert_temp(kept_key(), least);
+    });
+}
+
+/// The least share the views reported since the last call (1 when none did).
+pub fn take_kept(ctx: &Context) -> f32 {
+    ctx.data_mut(|d| d.remove_temp::<f32>(kept_key()))
+        .unwrap_or(1.0)
+}
+
+/// Below this share of its size a subject shrinks too much beside the card in the corner: the
+/// card becomes a band across the bottom of the picture, as low as its words allow.
+pub const LEAST_KEPT: f32 = 0.8;
+
+/// The parts of `outer` a subject may be framed in, best first: `outer` itself, then (when
+/// `card` lies over it) the part right of the card and the part above it, where not empty.
+#[must_use]
+pub fn candidates(outer: Rect, card: Option<Rect>) -> Vec<Rect> {
+    let mut out = vec![outer];
+    if let Some(card) = card.map(|c| c.expand(GAP)).filter(|c| c.intersects(outer)) {
+        let right = Rect::from_min_max(egui::pos2(card.right(), outer.top()), outer.max);
+        let above = Rect::from_min_max(outer.min, egui::pos2(outer.right(), card.top()));
+        out.extend([right, above].into_iter().filter(Rect::is_positive));
+    }
+    out
+}
+
+/// Whether `subject` (on screen) is clear of the card, with at least half the gap between.
+#[must_use]
+pub fn misses(subject: Rect, card: Option<Rect>) -> bool {
+    card.is_none_or(|c| !subject.intersects(c.expand(GAP / 2.0)))
+}
+
+/// Where a picture of `size` goes in `outer` so that its `subject` (a part of it, in the
+/// picture's own units, y down) lies clear of `card`: as large as it can be, then as near the
+/// middle. Each scale, from the whole area's fit down to the fits right of and above the card,
+/// is tried centred in the area, shifted right or up just past the card, and centred in the
+/// part right of or above it; the first placement whose subject is inside `outer` and clear of
+/// the card is taken. A card that leaves no room leaves the picture centred. Returns the
+/// picture's rectangle on screen.
+#[must_use]
+pub fn place(outer: Rect, size: egui::Vec2, subject: Rect, card: Option<Rect>) -> Rect {
+    let centred = |r: Rect| super::fit_rect(r, size.x / size.y);
+    let whole = centred(outer);
+    let parts = candidates(outer, card);
+    let mut scales: Vec<f32> = parts.iter().map(|r| centred(*r).width()).collect();
+    scales.sort_by(|a, b| b.total_cmp(a));
+    let on_screen = |picture: Rect| {
+        let k = picture.width() / size.x;
+        Rect::from_min_max(
+            picture.min + subject.min.to_vec2() * k,
+            picture.min + subject.max.to_vec2() * k,
+        )
+    };
+    let fits = |picture: &Rect| {
+        let s = on_screen(*picture);
+        outer.expand(0.5).contains_rect(s) && misses(s, card)
+    };
+    for width in scales {
+        let picture = Rect::from_center_size(outer.center(), size * (width / size.x));
+        let mut tries = vec![picture];
+        if let Some(c) = card.map(|c| c.expand(GAP)) {
+            let s = on_screen(picture);
+            tries.push(picture.translate(egui::vec2(c.right() - s.left(), 0.0)));
+            tries.push(picture.translate(egui::vec2(0.0, c.top() - s.bottom())));
+        }
+        tries.extend(
+            parts
+                .iter()
+                .skip(1)
+                .map(|r| Rect::from_center_size(r.center(), picture.size())),
+        );
+        if let Some(found) = tries.into_iter().find(fits) {
+            return found;
+        }
+    }
+    whole
+}
+
+/// The part of `area` above the card when the card is a band across it (at least four fifths
+/// of its width): a view then lays out all it shows there. `area` otherwise.
+#[must_use]
+pub fn above_band(area: Rect, card: Option<Rect>) -> Rect {
+    match card.map(|c| c.expand(GAP)).filter(|c| c.intersects(area)) {
+        Some(c) if c.width() >= area.width() * 0.8 && c.top() > area.top() + 40.0 => {
+            Rect::from_min_max(area.min, egui::pos2(area.right(), c.top()))
+        }
+        _ => area,
+    }
+}
+
+/// A panel in `area` (the depth curve, the mip pyramid) clear of `card`: the part of `area`
+/// right of the card when the card covers it, unless that leaves less than a third of it.
+#[must_use]
+pub fn right_of(area: Rect, card: Option<Rect>) -> Rect {
+    match card.map(|c| c.expand(GAP)).filter(|c| c.intersects(area)) {
+        Some(c) if area.right() - c.right() >= area.width() / 3.0 => {
+            Rect::from_min_max(egui::pos2(c.right(), area.top()), area.max)
+        }
+        _ => area,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use egui::pos2;
+
+    fn rect(x0: f32, y0: f32, x1: f32, y1: f32) -> Rect {
+        Rect::from_min_max(pos2(x0, y0), pos2(x1, y1))
+    }
+
+    #[test]
+    fn a_subject_the_card_misses_keeps_the_whole_fit() {
+        // A 2:1 image filling a 1600 × 800 area; its subject in the top-right quarter.
+        let outer = rect(0.0, 0.0, 1600.0, 800.0);
+        let size = egui::vec2(200.0, 100.0);
+        let card = rect(12.0, 500.0, 700.0, 788.0);
+        let subject = rect(120.0, 0.0, 200.0, 50.0);
+        assert_eq!(place(outer, size, subject, Some(card)), outer);
+        assert_eq!(
+            place(outer, size, rect(0.0, 0.0, 200.0, 100.0), None),
+            outer
+        );
+    }
+
+    #[test]
+    fn a_covered_subject_moves_before_it_shrinks() {
+        let outer = rect(0.0, 0.0, 1600.0, 900.0);
+        let size = egui::vec2(100.0, 100.0);
+        // A square image in a wide area, its subject the whole image: centred it would meet a
+        // card reaching x = 600; shifted right past the card it keeps its size.
+        let card = rect(12.0, 500.0, 600.0, 888.0);
+        let whole = rect(0.0, 0.0, 100.0, 100.0);
+        let placed = place(outer, size, whole, Some(card));
+        assert_eq!(placed.size(), egui::vec2(900.0, 900.0));
+        assert_eq!(placed.left(), 608.0);
+        // A card too wide to pass: the image shrinks to the height above it.
+        let card = rect(12.0, 500.0, 1500.0, 888.0);
+        let placed = place(outer, size, whole, Some(card));
+        assert_eq!(placed.size(), egui::vec2(492.0, 492.0));
+        assert!(placed.bottom() <= 492.0 && placed.top() >= 0.0);
+    }
+
+    #[test]
+    fn a_panel_under_the_card_moves_right_of_it() {
+        let band = rect(0.0, 500.0, 1600.0, 800.0);
+        let card = rect(12.0, 400.0, 350.0, 788.0);
+        assert_eq!(
+            right_of(band, Some(card)),
+            rect(358.0, 500.0, 1600.0, 800.0)
+        );
+        assert_eq!(right_of(band, None), band);
+        // A card over most of the panel leaves it where it is.
+        assert_eq!(right_of(band, Some(rect(0.0, 400.0, 1300.0, 800.0))), band);
+    }
+
+    #[test]
+    fn a_band_leaves_the_area_above_it() {
+        let area = rect(0.0, 60.0, 1366.0, 760.0);
+        let band = rect(12.0, 500.0, 1354.0, 748.0);
+        assert_eq!(above_band(area, Some(band)), rect(0.0, 60.0, 1366.0, 492.0));
+        // A card in the corner is no band.
+        let corner = rect(12.0, 500.0, 600.0, 748.0);
+        assert_eq!(above_band(area, Some(corner)), area);
+        assert_eq!(above_band(area, None), area);
+    }
+
+    #[test]
+    fn a_card_that_leaves_no_room_leaves_the_area() {
+        let outer = rect(0.0, 0.0, 400.0, 300.0);
+        let card = rect(-10.0, -10.0, 410.0, 310.0);
+        let size = egui::vec2(150.0, 100.0);
+        let placed = place(outer, size, rect(0.0, 0.0, 150.0, 100.0), Some(card));
+        assert_eq!(placed, super::super::fit_rect(outer, 1.5));
+    }
+}
