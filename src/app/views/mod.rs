@@ -198,26 +198,34 @@ pub fn wrapped_label(
 /// Where to put a label of `size` pointing at `anchor` so that it covers nothing in `avoid`
 /// (first the subject on screen, then the cards and legends over the picture) and stays inside
 /// `view`: the first place around the anchor, a little farther each round, that does neither;
-/// else the view's corner farthest from the subject that covers nothing else; else the corner
+/// else the first such place that covers the subject but no card (the label has its own dark
+/// box: a label far from its point, with a leader line across the picture, reads worse); else
+/// the view's corner farthest from the subject that covers nothing else; else the corner
 /// farthest from the subject.
 #[must_use]
 pub fn place_label(anchor: Pos2, size: egui::Vec2, avoid: &[Rect], view: Rect) -> Rect {
-    let clear = |r: &Rect| avoid.iter().all(|a| !r.intersects(*a));
-    for step in 1..=8 {
-        let d = 12.0 * step as f32;
-        for dir in [
-            egui::vec2(1.0, -1.0),
-            egui::vec2(1.0, 1.0),
-            egui::vec2(-1.0, -1.0),
-            egui::vec2(-1.0, 1.0),
-            egui::vec2(0.0, -1.0),
-            egui::vec2(0.0, 1.0),
-        ] {
-            let r = Rect::from_center_size(anchor + dir * (d + size.length() / 2.0), size);
-            if view.contains_rect(r) && clear(&r) {
-                return r;
+    let around = |avoid: &[Rect]| {
+        let clear = |r: &Rect| avoid.iter().all(|a| !r.intersects(*a));
+        for step in 1..=8 {
+            let d = 12.0 * step as f32;
+            for dir in [
+                egui::vec2(1.0, -1.0),
+                egui::vec2(1.0, 1.0),
+                egui::vec2(-1.0, -1.0),
+                egui::vec2(-1.0, 1.0),
+                egui::vec2(0.0, -1.0),
+                egui::vec2(0.0, 1.0),
+            ] {
+                let r = Rect::from_center_size(anchor + dir * (d + size.length() / 2.0), size);
+                if view.contains_rect(r) && clear(&r) {
+                    return Some(r);
+                }
             }
         }
+        None
+    };
+    if let Some(r) = around(avoid).or_else(|| around(avoid.get(1..).unwrap_or_default())) {
+        return r;
     }
     let subject = avoid.first().map_or(view.center(), Rect::center);
     let mut corners: Vec<Rect> = [

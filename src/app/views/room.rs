@@ -7,7 +7,7 @@
 use egui::{Context, Id, Rect};
 
 /// The gap kept between the card and the subject, in points.
-const GAP: f32 = 8.0;
+const GAP: f32 = 16.0;
 
 fn key() -> Id {
     Id::unique("pipelens-narration-card-rect")

@@ -263,7 +263,8 @@ impl GeometryView {
         };
         let top = card.map_or(rect.top(), |c| c.bottom()) + 8.0;
         let legend = cards::legend(&painter, rect, top, lang, stride, &shown);
-        let avoid = [seen, card.unwrap_or(Rect::NOTHING), legend, title];
+        let narration = super::room::narration_card(ui.ctx()).unwrap_or(Rect::NOTHING);
+        let avoid = [seen, card.unwrap_or(Rect::NOTHING), legend, title, narration];
         cards::draw_selected(
             &painter, &cam, session, capture, space, &points, &avoid, rect,
         );
