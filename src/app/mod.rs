@@ -3,6 +3,7 @@
 //! pipeline results itself.
 
 mod chrome;
+pub mod display;
 pub mod exercise;
 mod export_task;
 mod library;
@@ -29,8 +30,7 @@ use self::views::{
     pixels::PixelView,
 };
 use self::worker::RenderWorker;
-use crate::vocabulary::Lang;
-use crate::vocabulary::Stage;
+use crate::vocabulary::{Lang, Stage};
 
 /// What the window shows around the picture. In a lesson or classroom mode the picture comes
 /// first: the narration lies over it and can be folded (N), the parameters (P) and the

@@ -97,6 +97,8 @@ pub enum Command {
     SetOrbit(Orbit),
     /// The observer's panel has this width/height: render it so.
     SetObserverAspect(f32),
+    /// The pixel view draws the image over this many physical pixels (`display`).
+    SetViewPixels([u32; 2]),
     /// Replay the transition into the current stage.
     PlayTransition,
     /// Switch the language.

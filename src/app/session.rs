@@ -40,6 +40,10 @@ pub struct Session {
     pub orbit: Orbit,
     /// The width/height the observer is rendered at (its panel's).
     pub observer_aspect: Option<f32>,
+    /// The physical pixels the pixel view draws the image over.
+    pub view_pixels: Option<[u32; 2]>,
+    /// The buffer shown rendered at that resolution (`display`).
+    pub display: super::display::Fine,
     /// What is selected.
     pub selection: Selection,
     /// The interface language.
@@ -101,6 +105,8 @@ impl Session {
             error: None,
             orbit,
             observer_aspect: None,
+            view_pixels: None,
+            display: super::display::Fine::default(),
             selection: Selection::default(),
             lang: Lang::default(),
             generation,
@@ -269,6 +275,10 @@ impl Session {
     /// Asks for a new capture when the view needs a buffer the latest one did not keep, or the
     /// observer it did not render.
     pub fn ensure_captured(&mut self) {
+        if super::display::job(self).is_none() {
+            // The finer render is not for this view (another stage, a comparison, a drag).
+            self.display = super::display::Fine::default();
+        }
         let Some(kept) = self.capture.as_ref().map(|c| c.settings.capture) else {
             return;
         };
@@ -277,7 +287,8 @@ impl Session {
         let shaders = self.spec.scene.has_shaders();
         let missing = !kept.covers(needed)
             || (shaders && needed.pixel.is_some() && kept.pixel != needed.pixel)
-            || (self.observer_shown() && !self.observer_asked);
+            || (self.observer_shown() && !self.observer_asked)
+            || super::display::missing(self);
         if !self.rendering() && missing {
             self.request_render();
         }
@@ -308,6 +319,7 @@ impl Session {
                 .observer_shown()
                 .then(|| (self.orbit.camera(), self.observer_aspect)),
             reference: self.exercise_reference(&spec),
+            display: super::display::job(self),
             spec,
         }
     }
@@ -326,6 +338,7 @@ impl Session {
         self.generation += 1;
         let job = self.job();
         self.observer_asked = job.observer.is_some();
+        self.display.asked = job.display;
         match &self.worker {
             Some(w) => w.submit(job),
             None => {
@@ -365,6 +378,7 @@ impl Session {
                 }
                 self.shown_draft = r.draft;
                 self.receive_reference(r.reference);
+                self.display.capture = r.display;
                 self.buffers = r.buffers;
                 self.variants = r.variants;
                 self.times = Some(r.times);
@@ -481,6 +495,7 @@ impl Session {
                     }
                 }
             }
+            Command::SetViewPixels(p) => self.view_pixels = Some(p),
             Command::SetOrbit(o) => {
                 if o != self.orbit {
                     self.orbit = o;

@@ -29,6 +29,8 @@ pub struct Job {
     pub variants: Vec<(String, RenderSettings)>,
     /// An exercise's reference: the same scene drawn by pipelens' own stages.
     pub reference: Option<(pipeline::scene::Scene, RenderSettings)>,
+    /// The buffer shown, to render at the view's resolution as well (`display`), and the size.
+    pub display: Option<(BufferKind, (u32, u32))>,
 }
 
 /// What a job produced.
@@ -46,6 +48,8 @@ pub struct Rendered {
     pub variants: Vec<(String, Arc<FrameCapture>)>,
     /// The exercise's reference, when the job asked for one and it could be rendered.
     pub reference: Option<Arc<FrameCapture>>,
+    /// The buffer shown at the view's resolution, when the job asked for it.
+    pub display: Option<Arc<FrameCapture>>,
     /// The buffers the scene offers (the capture keeps those the view shows; choosing another
     /// renders again).
     pub buffers: Vec<BufferKind>,
@@ -117,8 +121,12 @@ impl Job {
                     let reference = self.reference.as_ref().and_then(|(scene, settings)| {
                         pipeline::render(scene, settings).ok().map(Arc::new)
                     });
+                    let display = self.display.and_then(|(buffer, size)| {
+                        crate::app::display::render(&self.spec, buffer, size).map(Arc::new)
+                    });
                     Rendered {
                         reference,
+                        display,
                         draft: self.draft,
                         buffers: BufferKind::ALL
                             .into_iter()

@@ -8,6 +8,7 @@ use pipelens::vocabulary::{Lang, Stage};
 
 mod classroom;
 mod export;
+mod framing;
 mod library;
 mod steps;
 
@@ -533,44 +534,6 @@ fn the_keys_fold_panels_switch_classroom_mode_and_list_themselves() {
     h.key_press(egui::Key::F1);
     h.run_steps(2);
     assert!(h.query_by_label("Keyboard shortcuts").is_none());
-}
-
-#[test]
-fn a_label_keeps_off_the_subject_and_the_cards() {
-    use egui::{Pos2, Rect, vec2};
-    use pipelens::app::views::place_label;
-    let view = Rect::from_min_size(Pos2::ZERO, vec2(800.0, 600.0));
-    let subject = Rect::from_min_max(Pos2::new(200.0, 150.0), Pos2::new(600.0, 450.0));
-    let card = Rect::from_min_max(Pos2::new(560.0, 0.0), Pos2::new(800.0, 200.0));
-    let size = vec2(160.0, 24.0);
-    // An anchor on the subject's edge: the label goes next to it, off both.
-    let r = place_label(Pos2::new(600.0, 300.0), size, &[subject, card], view);
-    assert!(view.contains_rect(r));
-    assert!(!r.intersects(subject) && !r.intersects(card), "{r:?}");
-    assert!(r.center().distance(Pos2::new(600.0, 300.0)) < 200.0);
-    // No room around the anchor off the subject: still beside the anchor, over the subject
-    // but off the card (not pinned in a far corner with a leader line across the picture).
-    let whole = Rect::from_min_max(Pos2::new(20.0, 100.0), Pos2::new(700.0, 580.0));
-    let r = place_label(Pos2::new(400.0, 300.0), size, &[whole, card], view);
-    assert!(view.contains_rect(r));
-    assert!(!r.intersects(card), "{r:?}");
-    assert!(r.center().distance(Pos2::new(400.0, 300.0)) < 150.0, "{r:?}");
-    // No room anywhere near the anchor: a corner, the farthest from the subject that the card
-    // leaves free (the top-right is farthest, and the card's; the bottom-right comes next).
-    let tall = Rect::from_min_max(Pos2::new(250.0, 0.0), Pos2::new(560.0, 600.0));
-    let r = place_label(Pos2::new(400.0, 300.0), size, &[whole, card, tall], view);
-    assert!(view.contains_rect(r));
-    assert!(!r.intersects(card) && !r.intersects(tall), "{r:?}");
-    assert!(
-        r.right() > 799.0 && r.bottom() > 599.0,
-        "the bottom-right corner: {r:?}"
-    );
-    // With no card, the farthest corner.
-    let r = place_label(Pos2::new(400.0, 300.0), size, &[whole, tall], view);
-    assert!(
-        r.right() > 799.0 && r.top() < 1.0,
-        "the top-right corner: {r:?}"
-    );
 }
 
 #[test]

@@ -175,12 +175,12 @@ mod tests {
         let whole = rect(0.0, 0.0, 100.0, 100.0);
         let placed = place(outer, size, whole, Some(card));
         assert_eq!(placed.size(), egui::vec2(900.0, 900.0));
-        assert_eq!(placed.left(), 608.0);
+        assert_eq!(placed.left(), 600.0 + GAP);
         // A card too wide to pass: the image shrinks to the height above it.
         let card = rect(12.0, 500.0, 1500.0, 888.0);
         let placed = place(outer, size, whole, Some(card));
-        assert_eq!(placed.size(), egui::vec2(492.0, 492.0));
-        assert!(placed.bottom() <= 492.0 && placed.top() >= 0.0);
+        assert_eq!(placed.size(), egui::Vec2::splat(500.0 - GAP));
+        assert!(placed.bottom() <= 500.0 - GAP && placed.top() >= 0.0);
     }
 
     #[test]
@@ -189,7 +189,7 @@ mod tests {
         let card = rect(12.0, 400.0, 350.0, 788.0);
         assert_eq!(
             right_of(band, Some(card)),
-            rect(358.0, 500.0, 1600.0, 800.0)
+            rect(350.0 + GAP, 500.0, 1600.0, 800.0)
         );
         assert_eq!(right_of(band, None), band);
         // A card over most of the panel leaves it where it is.
@@ -200,7 +200,10 @@ mod tests {
     fn a_band_leaves_the_area_above_it() {
         let area = rect(0.0, 60.0, 1366.0, 760.0);
         let band = rect(12.0, 500.0, 1354.0, 748.0);
-        assert_eq!(above_band(area, Some(band)), rect(0.0, 60.0, 1366.0, 492.0));
+        assert_eq!(
+            above_band(area, Some(band)),
+            rect(0.0, 60.0, 1366.0, 500.0 - GAP)
+        );
         // A card in the corner is no band.
         let corner = rect(12.0, 500.0, 600.0, 748.0);
         assert_eq!(above_band(area, Some(corner)), area);

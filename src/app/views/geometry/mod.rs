@@ -193,17 +193,7 @@ impl GeometryView {
         let subject = subject(capture, session, space);
         let eased = t * t * (3.0 - 2.0 * t);
         let from = from.unwrap_or(space);
-        let points: Vec<Option<Vec3>> = capture
-            .vertices
-            .iter()
-            .map(|v| {
-                if space == Space::Model && !subject[v.object as usize] {
-                    None
-                } else {
-                    between(v, from, space, eased)
-                }
-            })
-            .collect();
+        let points = positions(capture, (from, space, eased), &subject);
         let Some((cam, radius, centre)) =
             bounds(capture, [space, from], &subject).and_then(|b| self.camera(frame, b))
         else {
@@ -222,13 +212,12 @@ impl GeometryView {
             draw_volume(&painter, &cam, v);
         }
         let (stride, seen, fates) = draw_triangles(&painter, &cam, capture, &points, &subject);
-        self.subject = session
+        let focused = session
             .selection
             .focus
             .as_ref()
-            .filter(|f| !f.is_empty())
-            .map(|_| seen.intersect(rect))
-            .filter(Rect::is_positive);
+            .is_some_and(|f| !f.is_empty());
+        self.subject = Some(seen.intersect(rect)).filter(|r| focused && r.is_positive());
         if space == Space::World && from == space && session.selection.show_normals {
             draw_normals(&painter, &cam, capture, &points, radius * 0.12);
         }
@@ -264,7 +253,13 @@ impl GeometryView {
         let top = card.map_or(rect.top(), |c| c.bottom()) + 8.0;
         let legend = cards::legend(&painter, rect, top, lang, stride, &shown);
         let narration = super::room::narration_card(ui.ctx()).unwrap_or(Rect::NOTHING);
-        let avoid = [seen, card.unwrap_or(Rect::NOTHING), legend, title, narration];
+        let avoid = [
+            seen,
+            card.unwrap_or(Rect::NOTHING),
+            legend,
+            title,
+            narration,
+        ];
         cards::draw_selected(
             &painter, &cam, session, capture, space, &points, &avoid, rect,
         );
@@ -416,6 +411,26 @@ fn clear_of_card(ctx: &egui::Context, rect: Rect) -> Rect {
     let frame = super::room::place(rect, rect.size(), square, card);
     super::room::report_kept(ctx, frame.area() / rect.area());
     frame
+}
+
+/// Each vertex row's position on the way from space `from` to `to` at eased progress `t`; in
+/// model space, only the subject's (each object has its own origin there).
+fn positions(
+    capture: &FrameCapture,
+    (from, to, t): (Space, Space, f32),
+    subject: &[bool],
+) -> Vec<Option<Vec3>> {
+    capture
+        .vertices
+        .iter()
+        .map(|v| {
+            if to == Space::Model && !subject[v.object as usize] {
+                None
+            } else {
+                between(v, from, to, t)
+            }
+        })
+        .collect()
 }
 
 /// The vertex nearest a click (within 12 points), or none.

@@ -5,11 +5,12 @@
 
 mod draw;
 mod extras;
+mod texture;
 mod viewport;
 
 pub use draw::draw_shape;
 
-use egui::{Color32, Pos2, Rect, RichText, Sense, TextureOptions, Ui, Vec2};
+use egui::{Color32, Pos2, Rect, RichText, Sense, Ui, Vec2};
 use pipeline::buffers::BufferKind;
 use pipeline::capture::FrameCapture;
 use pipeline::overlay::OverlayKind;
@@ -24,10 +25,8 @@ pub struct PixelView {
     zoom: Option<f32>,
     /// The image point at the centre of the view.
     centre: Option<Vec2>,
-    /// The texture of the buffer shown, with the generation and kind it was made from.
-    texture: super::BufferTexture,
-    /// The display gain of the lighting term shown.
-    gain: super::TermGain,
+    /// The textures of the buffer shown: the lesson's pixels, or finer.
+    textures: texture::Textures,
     /// The mip levels' textures.
     pyramid: extras::Pyramid,
     /// Show the mip pyramid under a texturing buffer.
@@ -46,6 +45,8 @@ pub struct PixelView {
     /// The covered pixels' box (image pixels, y down), per capture shown: the subject the
     /// narration card must leave clear.
     covered: Option<(u64, Option<Rect>)>,
+    /// The image's size on screen when fitted (points).
+    fitted: Vec2,
 }
 
 impl Default for PixelView {
@@ -53,8 +54,7 @@ impl Default for PixelView {
         Self {
             zoom: None,
             centre: None,
-            texture: super::BufferTexture::default(),
-            gain: super::TermGain::default(),
+            textures: texture::Textures::default(),
             pyramid: extras::Pyramid::default(),
             show_pyramid: true,
             record: None,
@@ -63,6 +63,7 @@ impl Default for PixelView {
             visible: None,
             label_points: None,
             covered: None,
+            fitted: Vec2::ZERO,
         }
     }
 }
@@ -177,44 +178,11 @@ impl PixelView {
         (view != sel.depth_view).then_some(Command::SetDepthView(view))
     }
 
-    /// The shown buffer's texture (made again when the capture, the buffer or the depth ramp
-    /// changes) and the gain its lighting term is drawn with.
-    fn buffer_texture(
-        &mut self,
-        ctx: &egui::Context,
-        session: &Session,
-        capture: &FrameCapture,
-    ) -> (egui::TextureHandle, f32) {
-        let sel = &session.selection;
-        let depth = sel.depth_view;
-        let variant = if sel.buffer == BufferKind::Depth {
-            let [a, b] = depth.range.unwrap_or([f32::NAN; 2]);
-            (u64::from(a.to_bits()) << 32 | u64::from(b.to_bits())) ^ u64::from(depth.linear)
-        } else {
-            0
-        };
-        let gain = self.gain.get((session.shown_generation, sel.buffer), || {
-            capture.term_gain(sel.buffer)
-        });
-        let texture = self.texture.get_with(
-            ctx,
-            "pixel-view",
-            (session.shown_generation, sel.buffer, variant),
-            TextureOptions::NEAREST,
-            || match sel.buffer {
-                BufferKind::Depth => capture.depth_image(depth.linear, depth.range),
-                kind => capture.image_gained(kind, gain),
-            },
-        );
-        (texture, gain)
-    }
-
     /// The image view itself.
     pub fn ui(&mut self, ui: &mut Ui, session: &Session, capture: &FrameCapture) -> Vec<Command> {
         let sel = &session.selection;
         let lang = session.lang;
         let mut cmds = Vec::new();
-        let (texture, gain) = self.buffer_texture(ui.ctx(), session, capture);
         let card = crate::app::views::room::narration_card(ui.ctx());
         let full = ui.available_rect_before_wrap();
         let offered = session.buffers.contains(&sel.buffer) || !sel.buffer.is_texturing();
@@ -235,6 +203,16 @@ impl PixelView {
             return cmds;
         }
         let view = self.navigate(ui, (&response, session), rect, capture);
+        // The physical pixels the fitted image covers: the finer render's size (`display`).
+        let ppp = ui.ctx().pixels_per_point();
+        let pixels = [
+            (self.fitted.x * ppp).round() as u32,
+            (self.fitted.y * ppp).round() as u32,
+        ];
+        if session.view_pixels != Some(pixels) {
+            cmds.push(Command::SetViewPixels(pixels));
+        }
+        let (texture, gain) = self.textures.get(ui.ctx(), session, capture, view.zoom);
         let image = Rect::from_min_max(
             view.to_screen([0.0, 0.0]),
             view.to_screen([view.size.x, view.size.y]),
@@ -257,7 +235,7 @@ impl PixelView {
             Rect::from_min_max(Pos2::ZERO, Pos2::new(1.0, 1.0)),
             Color32::WHITE,
         );
-        if view.zoom >= 6.0 {
+        if view.zoom >= texture::GRID_ZOOM {
             draw::draw_grid(&painter, &view);
         }
         if view.zoom >= 14.0 && sel.show_samples {
@@ -433,6 +411,7 @@ impl PixelView {
         let placed =
             crate::app::views::room::place(rect, size, self.subject(session, capture), card);
         let fit = placed.width() / size.x;
+        self.fitted = placed.size();
         crate::app::views::room::report_kept(
             ui.ctx(),
             placed.area() / crate::app::views::fit_rect(rect, size.x / size.y).area(),

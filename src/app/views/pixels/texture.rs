@@ -1,0 +1,72 @@
+//! The textures of the buffer shown: the lesson's own pixels, or, on a stage about the shading
+//! and until the view is zoomed in to the pixel grid, the same buffer rendered at the view's
+//! resolution (`app::display`), drawn with the lesson capture's gain so that the two agree.
+
+use egui::TextureOptions;
+use pipeline::buffers::BufferKind;
+use pipeline::capture::FrameCapture;
+
+use crate::app::session::Session;
+
+/// The pixel grid is drawn from this magnification on: there the lesson's own pixels show.
+pub(super) const GRID_ZOOM: f32 = 6.0;
+
+/// The lesson's texture, the finer one, and the gain of the lighting term shown.
+#[derive(Default)]
+pub(super) struct Textures {
+    lesson: crate::app::views::BufferTexture,
+    fine: crate::app::views::BufferTexture,
+    gain: crate::app::views::TermGain,
+}
+
+impl Textures {
+    /// The texture to draw at magnification `zoom` (made again when the capture, the buffer or
+    /// the depth ramp changes) and the gain its lighting term is drawn with.
+    pub(super) fn get(
+        &mut self,
+        ctx: &egui::Context,
+        session: &Session,
+        capture: &FrameCapture,
+        zoom: f32,
+    ) -> (egui::TextureHandle, f32) {
+        let sel = &session.selection;
+        let generation = session.shown_generation;
+        let gain = self
+            .gain
+            .get((generation, sel.buffer), || capture.term_gain(sel.buffer));
+        if let Some(fine) = session.display.capture.as_ref().filter(|d| {
+            zoom < GRID_ZOOM
+                && crate::app::display::wanted(sel.stage, sel.buffer)
+                && d.settings
+                    .capture
+                    .covers(pipeline::buffers::Capture::showing([sel.buffer]))
+        }) {
+            let texture = self.fine.get(
+                ctx,
+                "pixel-view-fine",
+                (generation, sel.buffer, gain),
+                fine,
+                TextureOptions::LINEAR,
+            );
+            return (texture, gain);
+        }
+        let depth = sel.depth_view;
+        let variant = if sel.buffer == BufferKind::Depth {
+            let [a, b] = depth.range.unwrap_or([f32::NAN; 2]);
+            (u64::from(a.to_bits()) << 32 | u64::from(b.to_bits())) ^ u64::from(depth.linear)
+        } else {
+            0
+        };
+        let texture = self.lesson.get_with(
+            ctx,
+            "pixel-view",
+            (generation, sel.buffer, variant),
+            TextureOptions::NEAREST,
+            || match sel.buffer {
+                BufferKind::Depth => capture.depth_image(depth.linear, depth.range),
+                kind => capture.image_gained(kind, gain),
+            },
+        );
+        (texture, gain)
+    }
+}
