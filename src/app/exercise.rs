@@ -80,10 +80,24 @@ impl Session {
             _ => scene,
         };
         let settings = RenderSettings {
-            capture: Capture::COLOR.with_pixel(self.selection.pixel),
+            // The buffer the student's frame is shown in, so that the reference beside it is
+            // shown in it too.
+            capture: Capture::showing([self.selection.buffer]).with_pixel(self.selection.pixel),
             ..spec.settings
         };
         Some((scene, settings))
+    }
+
+    /// Whether the exercise's reference does not keep the buffer now shown (it is shown in the
+    /// student's buffer beside the student's frame): it is rendered again, but not for a draft,
+    /// which renders no reference.
+    pub(super) fn reference_stale(&self) -> bool {
+        !self.drafting
+            && self.exercise.reference.as_ref().is_some_and(|r| {
+                !r.settings
+                    .capture
+                    .covers(Capture::showing([self.selection.buffer]))
+            })
     }
 
     /// Takes a render's reference (none for a draft: the last one stays), compares the frame on

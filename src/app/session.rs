@@ -288,7 +288,8 @@ impl Session {
         let missing = !kept.covers(needed)
             || (shaders && needed.pixel.is_some() && kept.pixel != needed.pixel)
             || (self.observer_shown() && !self.observer_asked)
-            || super::display::missing(self);
+            || super::display::missing(self)
+            || self.reference_stale();
         if !self.rendering() && missing {
             self.request_render();
         }

@@ -6,7 +6,7 @@
 use std::sync::Arc;
 
 use egui::{Color32, Pos2, Rect, RichText, Sense, TextureOptions, Ui, Vec2};
-use pipeline::buffers::BufferKind;
+use pipeline::buffers::{BufferKind, Capture};
 use pipeline::capture::{Difference, FrameCapture};
 use pipeline::shader::CurveDifference;
 
@@ -70,12 +70,33 @@ impl ExerciseView {
             ),
             aspect,
         );
-        let reference_texture = self.reference.get(
+        // The reference in the buffer the student's frame is shown in (its gain, its depth
+        // ramp), as the buffer menu names it.
+        let sel = &session.selection;
+        let kind = if reference
+            .settings
+            .capture
+            .covers(Capture::showing([sel.buffer]))
+        {
+            sel.buffer
+        } else {
+            BufferKind::Color
+        };
+        let gain = capture.term_gain(kind);
+        let depth = sel.depth_view;
+        let reference_texture = self.reference.get_with(
             ui.ctx(),
             "exercise-reference",
-            (key(reference) as u64, BufferKind::Color, 1.0),
-            reference,
+            (
+                key(reference) as u64,
+                kind,
+                u64::from(gain.to_bits()) ^ u64::from(depth.linear),
+            ),
             TextureOptions::NEAREST,
+            || match kind {
+                BufferKind::Depth => reference.depth_image(depth.linear, depth.range),
+                kind => reference.image_gained(kind, gain),
+            },
         );
         let pair = (key(capture), key(reference));
         if self.difference.as_ref().is_none_or(|(k, _)| *k != pair) {
@@ -90,8 +111,13 @@ impl ExerciseView {
             self.difference = Some((pair, t));
         }
         let difference_texture = self.difference.as_ref().map(|(_, t)| t.clone());
-        let captions = [
+        let own = format!(
+            "{} · {}",
             lang.tr("pipelens' own (the reference)", "pipelens 自带（参考）"),
+            crate::vocabulary::buffer_name(kind, lang)
+        );
+        let captions = [
+            own.as_str(),
             lang.tr(
                 "difference (red: differs, yellow: coverage differs)",
                 "差异（红：颜色不同，黄：覆盖不同）",

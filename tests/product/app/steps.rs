@@ -334,3 +334,38 @@ fn a_shading_stage_shows_its_picture_at_the_views_resolution() {
         "a draft keeps up with the hand"
     );
 }
+
+/// A lab's reference is shown in the buffer the student's frame is shown in (issue: the buffer
+/// menu named one buffer while the picture beside the student's showed the colour): in lesson
+/// 10's specular lab, choosing the specular term renders the reference keeping it too.
+#[test]
+fn a_labs_reference_is_shown_in_the_students_buffer() {
+    use pipelens::app::session::Command;
+    use pipeline::buffers::{BufferKind, Capture};
+    let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
+    let mut h = super::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    super::go_to_last_step(&mut h);
+    h.run_steps(4);
+    assert!(
+        h.state().session.current_exercise().is_some(),
+        "the lab step"
+    );
+    h.state_mut()
+        .session
+        .apply(Command::SelectBuffer(BufferKind::Specular));
+    h.run_steps(4);
+    let s = &h.state().session;
+    let reference = s.exercise.reference.as_ref().expect("the reference");
+    assert!(
+        reference
+            .settings
+            .capture
+            .covers(Capture::showing([BufferKind::Specular])),
+        "the reference keeps the specular term"
+    );
+    // What is drawn beside the student's frame: the reference's specular term, not its colour.
+    assert_ne!(
+        reference.image(BufferKind::Specular),
+        reference.image(BufferKind::Color)
+    );
+}
