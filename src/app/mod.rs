@@ -320,9 +320,9 @@ impl PipelensApp {
         let space = sel.stage.space();
         self.stage_toolbar(ui, capture);
         let observer = sel.show_observer && (space.is_some() || sel.comparison.is_none());
-        // A narration band across the bottom leaves the views the part above it.
+        // A narration band or column leaves the views the part above or beside it.
         let card = views::room::narration_card(ui.ctx());
-        let above = views::room::above_band(ui.available_rect_before_wrap(), card);
+        let above = views::room::free_recorded(ui.ctx(), ui.available_rect_before_wrap(), card);
         ui.scope_builder(egui::UiBuilder::new().max_rect(above), |ui| {
             self.views(ui, capture, observer);
         });

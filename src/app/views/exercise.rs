@@ -11,7 +11,7 @@ use pipeline::capture::{Difference, FrameCapture};
 use pipeline::shader::CurveDifference;
 
 use super::typeset::{self, Style};
-use super::{BufferTexture, fit_rect, label_with_background, picture_font};
+use super::{BufferTexture, fit_rect, picture_font, wrapped_label};
 use crate::app::session::{Command, Session};
 use crate::lesson::answer::Exercise;
 use crate::vocabulary::Lang;
@@ -158,13 +158,17 @@ fn picture(
         Rect::from_min_max(Pos2::ZERO, Pos2::new(1.0, 1.0)),
         Color32::WHITE,
     );
-    label_with_background(
-        &painter,
+    // Over the picture's top-left corner, wrapped to the panel (a square picture is narrower
+    // than its caption in classroom type).
+    let panel = ui.max_rect();
+    wrapped_label(
+        &ui.painter_at(panel),
         at.left_top() + Vec2::splat(6.0),
         egui::Align2::LEFT_TOP,
         caption,
         &picture_font(ui.ctx(), 14.0),
         Color32::WHITE,
+        (panel.right() - at.left() - 12.0).max(60.0),
     );
     let (w, h) = (capture.width(), capture.height());
     let s = at.width() / w as f32;

@@ -18,36 +18,19 @@ pub struct CardOutput {
     pub inspect: bool,
 }
 
-/// Draws the narration card at the bottom-left of `over` (the picture's area).
-pub fn card(ctx: &egui::Context, over: egui::Rect, session: &Session) -> CardOutput {
+/// Draws the narration card at the bottom-left of the picture's area (below the stage's
+/// toolbar, as the views last laid out; `central` before they have).
+pub fn card(ctx: &egui::Context, central: egui::Rect, session: &Session) -> CardOutput {
+    let over = super::room::picture_area(ctx).unwrap_or(central);
     let mut out = CardOutput {
         commands: Vec::new(),
         fold: false,
         inspect: false,
     };
-    // In the corner; a band across the bottom for the rest of the step when a view's subject
-    // kept less than `LEAST_KEPT` of its size beside the corner card.
-    let band_id = egui::Id::unique("narration-card-band");
-    let kept = super::room::take_kept(ctx);
-    let key = (
-        session.step_entered,
-        over.size().x.round() as i64,
-        over.size().y.round() as i64,
-    );
-    let mut band = ctx
-        .data(|d| d.get_temp::<((u64, i64, i64), bool)>(band_id))
-        .filter(|(k, _)| *k == key)
-        .is_some_and(|(_, b)| b);
-    if !band && kept < super::room::LEAST_KEPT {
-        band = true;
-        ctx.request_repaint();
-    }
-    ctx.data_mut(|d| d.insert_temp(band_id, (key, band)));
-    let width = if band {
-        over.width() - 24.0
-    } else {
-        (over.width() * 0.42).clamp(320.0_f32.min(over.width() - 24.0), 760.0)
-    };
+    // In the corner, or a band or a column when the corner card would shrink the subject.
+    let shape = super::room::shape(ctx, over, session);
+    let (width, least, most) =
+        super::room::card_size(shape, over, super::room::content_aspect(session));
     let shown = egui::Area::new(egui::Id::unique("narration-card"))
         .order(egui::Order::Foreground)
         .pivot(Align2::LEFT_BOTTOM)
@@ -60,7 +43,8 @@ pub fn card(ctx: &egui::Context, over: egui::Rect, session: &Session) -> CardOut
                 .stroke(egui::Stroke::new(1.0, Color32::from_gray(90)))
                 .show(ui, |ui| {
                     ui.set_width(width);
-                    ui.set_max_height(over.height() * if band { 0.4 } else { 0.55 });
+                    ui.set_min_height(least);
+                    ui.set_max_height(most);
                     let fit_id = egui::Id::unique("narration-card-fit");
                     let fit = ctx.data(|d| d.get_temp::<f32>(fit_id)).unwrap_or(1.0);
                     let normal = crate::app::style::text_styles(1.0)[&egui::TextStyle::Body].size;
@@ -112,13 +96,16 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
         color: Color32::from_gray(245),
         ..Style::body(ui)
     };
-    ui.horizontal(|ui| {
-        ui.label(
-            RichText::new(format!("{}. {}", player.step + 1, step.title.get(lang)))
-                .strong()
-                .size(style.size * 1.25)
-                .color(Color32::WHITE),
-        );
+    ui.horizontal_top(|ui| {
+        // The title wraps beside the fold button (a narrow column has no room for it on one
+        // line).
+        let title = RichText::new(format!("{}. {}", player.step + 1, step.title.get(lang)))
+            .strong()
+            .size(style.size * 1.25)
+            .color(Color32::WHITE);
+        ui.allocate_ui(egui::vec2(ui.available_width() - 36.0, 0.0), |ui| {
+            ui.add(egui::Label::new(title).wrap());
+        });
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Min), |ui| {
             if ui
                 .small_button("—")

@@ -50,8 +50,151 @@ pub fn take_kept(ctx: &Context) -> f32 {
 }
 
 /// Below this share of its size a subject shrinks too much beside the card in the corner: the
-/// card becomes a band across the bottom of the picture, as low as its words allow.
+/// card becomes a band across the bottom or a column down the left.
 pub const LEAST_KEPT: f32 = 0.8;
+
+/// How the narration card lies over the picture's area.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shape {
+    /// In the bottom-left corner, over the picture.
+    Corner,
+    /// Across the bottom, as low as its words allow; the views keep the part above it.
+    Band,
+    /// Down the left, the area's height; the views keep the part right of it.
+    Column,
+}
+
+/// The shape of what the views show, width/height: the stage's image (a geometry's subject is
+/// a square), twice as wide with the observer beside it, half as wide again with an exercise's
+/// two pictures stacked beside it; a comparison's grid fills any width (infinite).
+#[must_use]
+pub fn content_aspect(session: &crate::app::session::Session) -> f32 {
+    let sel = &session.selection;
+    let space = sel.stage.space();
+    if sel.comparison.is_some() && space.is_none() {
+        return f32::INFINITY;
+    }
+    let one = match (space, &session.capture) {
+        (None, Some(c)) => c.width() as f32 / c.height().max(1) as f32,
+        _ => 1.0,
+    };
+    if space.is_none() && session.current_exercise().is_some() {
+        // The reference and the difference stacked beside the student's frame, half as high.
+        one * 1.5
+    } else if sel.show_observer {
+        one * 2.0
+    } else {
+        one
+    }
+}
+
+/// The card's shape this frame over `over`: in the corner; for the rest of the step (and this
+/// window size), once a view's subject kept less than [`LEAST_KEPT`] of its size beside the
+/// corner card, a band or a column, whichever leaves the subject larger ([`band_or_column`]).
+pub fn shape(ctx: &Context, over: Rect, session: &crate::app::session::Session) -> Shape {
+    let id = Id::unique("pipelens-narration-shape");
+    let kept = take_kept(ctx);
+    let key = (
+        session.step_entered,
+        over.width().round() as i64,
+        over.height().round() as i64,
+    );
+    let kept_shape = ctx
+        .data(|d| d.get_temp::<((u64, i64, i64), Shape)>(id))
+        .filter(|(k, _)| *k == key)
+        .map_or(Shape::Corner, |(_, s)| s);
+    let shape = if kept_shape == Shape::Corner && kept < LEAST_KEPT {
+        ctx.request_repaint();
+        let words = narration_card(ctx).map_or(0.0, |c| c.area());
+        band_or_column(over, content_aspect(session), words)
+    } else {
+        kept_shape
+    };
+    ctx.data_mut(|d| d.insert_temp(id, (key, shape)));
+    shape
+}
+
+/// Whether a band or a column leaves content of `aspect` larger in `over`, for a card whose
+/// words took `words` square points in the corner: a band `words / width` high leaves the
+/// content `min(H − h_band, W / aspect)` high, a column of [`card_size`]'s width
+/// `min(H, (W − w_column) / aspect)`. A comparison's grid (infinitely wide) takes a band.
+#[must_use]
+pub fn band_or_column(over: Rect, aspect: f32, words: f32) -> Shape {
+    if !aspect.is_finite() {
+        return Shape::Band;
+    }
+    let (w, h) = (over.width(), over.height());
+    let band = words / (w - 24.0).max(1.0) + 24.0 + GAP;
+    let column = card_size(Shape::Column, over, aspect).0 + 12.0 + GAP;
+    let beside_band = (h - band).min(w / aspect);
+    let beside_column = h.min((w - column) / aspect);
+    if beside_column > beside_band {
+        Shape::Column
+    } else {
+        Shape::Band
+    }
+}
+
+/// The card's width and its least and greatest heights for `shape` over `over`, with the views
+/// showing content of `aspect`: a column as wide as the room the content leaves beside it
+/// (between 320 points and 45 % of the area).
+#[must_use]
+pub fn card_size(shape: Shape, over: Rect, aspect: f32) -> (f32, f32, f32) {
+    let most = over.width() - 24.0;
+    // The card's frame adds 12 points of margin on each side and its stroke.
+    let tall = over.height() - 24.0 - 26.0;
+    match shape {
+        Shape::Corner => (
+            (over.width() * 0.42).clamp(320.0_f32.min(most), 760.0),
+            0.0,
+            over.height() * 0.55,
+        ),
+        Shape::Band => (most, 0.0, over.height() * 0.4),
+        Shape::Column => (
+            (over.width() - over.height() * aspect)
+                .clamp(320.0, over.width() * 0.45)
+                .min(most),
+            tall,
+            tall,
+        ),
+    }
+}
+
+/// The part of `area` a band or a column leaves the views ([`above_band`], [`beside_column`]).
+#[must_use]
+pub fn free(area: Rect, card: Option<Rect>) -> Rect {
+    beside_column(above_band(area, card), card)
+}
+
+fn area_key() -> Id {
+    Id::unique("pipelens-picture-area")
+}
+
+/// [`free`], recording `area` (below the stage's toolbar) as where the card goes next frame:
+/// a column runs down beside the pictures, not over the toolbar.
+pub fn free_recorded(ctx: &Context, area: Rect, card: Option<Rect>) -> Rect {
+    ctx.data_mut(|d| d.insert_temp(area_key(), area));
+    free(area, card)
+}
+
+/// The area the views laid out in last frame (see [`free_recorded`]).
+#[must_use]
+pub fn picture_area(ctx: &Context) -> Option<Rect> {
+    ctx.data(|d| d.get_temp::<Rect>(area_key()))
+}
+
+/// The part of `area` right of the card when the card is a column down it (at least four
+/// fifths of its height, at most half its width): a view then lays out all it shows there.
+/// `area` otherwise.
+#[must_use]
+pub fn beside_column(area: Rect, card: Option<Rect>) -> Rect {
+    match card.map(|c| c.expand(GAP)).filter(|c| c.intersects(area)) {
+        Some(c) if c.height() >= area.height() * 0.8 && c.width() <= area.width() * 0.5 => {
+            Rect::from_min_max(egui::pos2(c.right(), area.top()), area.max)
+        }
+        _ => area,
+    }
+}
 
 /// The parts of `outer` a subject may be framed in, best first: `outer` itself, then (when
 /// `card` lies over it) the part right of the card and the part above it, where not empty.
@@ -208,6 +351,51 @@ mod tests {
         let corner = rect(12.0, 500.0, 600.0, 748.0);
         assert_eq!(above_band(area, Some(corner)), area);
         assert_eq!(above_band(area, None), area);
+    }
+
+    #[test]
+    fn a_column_leaves_the_area_right_of_it() {
+        let area = rect(0.0, 60.0, 1366.0, 760.0);
+        let column = rect(12.0, 72.0, 452.0, 748.0);
+        assert_eq!(
+            beside_column(area, Some(column)),
+            rect(452.0 + GAP, 60.0, 1366.0, 760.0)
+        );
+        // A card in the corner, or a band, is no column.
+        assert_eq!(
+            beside_column(area, Some(rect(12.0, 400.0, 600.0, 748.0))),
+            area
+        );
+        assert_eq!(
+            beside_column(area, Some(rect(12.0, 500.0, 1354.0, 748.0))),
+            area
+        );
+    }
+
+    #[test]
+    fn a_column_is_as_wide_as_the_room_beside_the_content() {
+        let over = rect(0.0, 60.0, 1366.0, 760.0);
+        // Two square pictures side by side (aspect 2) over 700 points of height leave 1366 −
+        // 1400 < 320: the column's least width; one square leaves 666, more than 45 %.
+        assert_eq!(card_size(Shape::Column, over, 2.0).0, 320.0);
+        assert_eq!(card_size(Shape::Column, over, 1.0).0, 1366.0 * 0.45);
+        let (_, least, most) = card_size(Shape::Column, over, 1.0);
+        assert_eq!((least, most), (650.0, 650.0));
+        assert_eq!(card_size(Shape::Band, over, 1.0).0, 1342.0);
+    }
+
+    #[test]
+    fn a_wide_picture_takes_a_band_and_a_square_one_a_column() {
+        let over = rect(0.0, 60.0, 1366.0, 760.0);
+        // The corner card's words: 570 × 400 square points.
+        let words = 570.0 * 400.0;
+        // Two 5:4 pictures side by side (2.5) lack height: a band about 210 points high
+        // leaves them 490 high, a column of 320 points 407.
+        assert_eq!(band_or_column(over, 2.5, words), Shape::Band);
+        // A 16:10 image keeps 636 beside a column, 490 over a band.
+        assert_eq!(band_or_column(over, 1.6, words), Shape::Column);
+        assert_eq!(band_or_column(over, 1.0, words), Shape::Column);
+        assert_eq!(band_or_column(over, f32::INFINITY, words), Shape::Band);
     }
 
     #[test]
