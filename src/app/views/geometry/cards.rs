@@ -23,11 +23,11 @@ pub(super) struct Shown {
 }
 
 /// What each colour drawn means, at the right from `top` down (below the matrix card: the
-/// bottom-left belongs to the narration); returns where it is.
+/// bottom-left belongs to the narration), or at the bottom-right when that would cover the
+/// step's `subject` there and not here; returns where it is.
 pub(super) fn legend(
     painter: &egui::Painter,
-    rect: Rect,
-    top: f32,
+    (rect, top, subject): (Rect, f32, Rect),
     lang: Lang,
     stride: usize,
     shown: &Shown,
@@ -64,11 +64,18 @@ pub(super) fn legend(
         })
         .fold(0.0f32, f32::max)
         + 40.0 * scale;
-    let top = top + 4.0;
-    let back = Rect::from_min_size(
-        Pos2::new(rect.right() - w - 10.0, top - 4.0),
-        Vec2::new(w + 4.0, row * items.len() as f32 + 8.0),
+    let size = Vec2::new(w + 4.0, row * items.len() as f32 + 8.0);
+    let below_card = Rect::from_min_size(Pos2::new(rect.right() - w - 10.0, top), size);
+    let bottom = Rect::from_min_size(
+        Pos2::new(rect.right() - w - 10.0, rect.bottom() - size.y - 40.0),
+        size,
     );
+    let back = if below_card.intersects(subject) && !bottom.intersects(subject) {
+        bottom
+    } else {
+        below_card
+    };
+    let top = back.top() + 4.0;
     painter.rect_filled(back, 4.0, Color32::from_black_alpha(150));
     for (k, (color, text)) in items.into_iter().enumerate() {
         let p = Pos2::new(back.left() + 8.0, top + row * (k as f32 + 0.5));

@@ -251,7 +251,7 @@ impl GeometryView {
             lights,
         };
         let top = card.map_or(rect.top(), |c| c.bottom()) + 8.0;
-        let legend = cards::legend(&painter, rect, top, lang, stride, &shown);
+        let legend = cards::legend(&painter, (rect, top, seen), lang, stride, &shown);
         let narration = super::room::narration_card(ui.ctx()).unwrap_or(Rect::NOTHING);
         let avoid = [
             seen,
@@ -309,12 +309,13 @@ impl GeometryView {
             Color32::WHITE,
             (right - rect.left() - 30.0).max(size * 6.0),
         );
+        // Left of the matrix card, wrapped onto more rows when they do not fit.
         let buttons = Rect::from_min_size(
             Pos2::new(rect.left() + 8.0, label.bottom() + 6.0),
-            Vec2::new(rect.width() * 0.5, size * 2.0),
+            Vec2::new((right - rect.left() - 16.0).max(size * 8.0), size * 6.0),
         );
         let row = ui.scope_builder(egui::UiBuilder::new().max_rect(buttons), |ui| {
-            ui.horizontal(|ui| {
+            ui.horizontal_wrapped(|ui| {
                 if ui.button(lang.tr("Front view", "正视图")).clicked() {
                     (self.yaw, self.pitch) = (0.0, 0.0);
                 }
