@@ -12,6 +12,7 @@ mod diagnostic;
 pub mod library;
 pub mod param;
 pub mod raw;
+pub mod record;
 pub mod script;
 mod syntax;
 pub mod validate;

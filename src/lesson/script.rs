@@ -27,6 +27,21 @@ pub enum Layout {
     Compare,
 }
 
+/// The layouts' names in a lesson file.
+pub const LAYOUTS: [(&str, Layout); 3] = [
+    ("single", Layout::Single),
+    ("observer", Layout::Observer),
+    ("compare", Layout::Compare),
+];
+
+/// The overlays' names in a lesson file.
+pub const OVERLAYS: [(&str, Overlay); 4] = [
+    ("edges", Overlay::Edges),
+    ("bounding_boxes", Overlay::BoundingBoxes),
+    ("samples", Overlay::Samples),
+    ("normals", Overlay::Normals),
+];
+
 /// What a step draws over the pixel views.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Overlay {
@@ -393,17 +408,7 @@ impl Checker<'_> {
             .as_ref()
             .and_then(|v| self.choice("compare", v, &compare_options));
         let layout = match &r.layout {
-            Some(v) => self
-                .choice(
-                    "layout",
-                    v,
-                    &[
-                        ("single", Layout::Single),
-                        ("observer", Layout::Observer),
-                        ("compare", Layout::Compare),
-                    ],
-                )
-                .unwrap_or(Layout::Single),
+            Some(v) => self.choice("layout", v, &LAYOUTS).unwrap_or(Layout::Single),
             None if compare.is_some() => Layout::Compare,
             None => Layout::Single,
         };
@@ -433,18 +438,7 @@ impl Checker<'_> {
             .and_then(|v| self.choice("buffer", v, &buffer_options));
         let overlays = r.overlays.as_ref().map(|list| {
             list.iter()
-                .filter_map(|o| {
-                    self.choice(
-                        "overlays",
-                        o,
-                        &[
-                            ("edges", Overlay::Edges),
-                            ("bounding_boxes", Overlay::BoundingBoxes),
-                            ("samples", Overlay::Samples),
-                            ("normals", Overlay::Normals),
-                        ],
-                    )
-                })
+                .filter_map(|o| self.choice("overlays", o, &OVERLAYS))
                 .collect()
         });
         (stage, layout, compare, buffer, overlays)

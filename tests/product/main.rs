@@ -12,6 +12,7 @@ mod lab_hooks;
 mod labs;
 mod lessons;
 mod observer;
+mod record;
 mod reference;
 mod scene_file;
 mod shader_lesson;

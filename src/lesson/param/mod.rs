@@ -3,6 +3,7 @@
 //! animations between two values over time.
 
 mod describe;
+mod get;
 mod object;
 
 use object::{
@@ -11,6 +12,7 @@ use object::{
 };
 
 pub use describe::describe;
+pub use get::{differences, get};
 
 use glam::Vec3;
 use pipeline::camera::Projection;
@@ -61,6 +63,25 @@ pub enum Repeat {
     Loop,
     /// Goes back to `from`, then forth again.
     PingPong,
+}
+
+impl Easing {
+    /// The names a lesson file gives them.
+    pub const NAMES: [(&str, Self); 2] =
+        [("linear", Self::Linear), ("ease_in_out", Self::EaseInOut)];
+    /// Without `easing`.
+    pub const DEFAULT: Self = Self::EaseInOut;
+}
+
+impl Repeat {
+    /// The names a lesson file gives them.
+    pub const NAMES: [(&str, Self); 3] = [
+        ("once", Self::Once),
+        ("loop", Self::Loop),
+        ("ping_pong", Self::PingPong),
+    ];
+    /// Without `repeat`.
+    pub const DEFAULT: Self = Self::PingPong;
 }
 
 /// A parameter moving from one value to another.
@@ -279,8 +300,16 @@ fn set(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Problem> {
         }
         ["projection", "kind"] => {
             let kind = choice(v, &[("perspective", 0), ("frustum", 1), ("ortho", 2)])?;
-            spec.scene.projection =
-                projection_kind(&spec.scene.projection, kind, spec.settings.aspect());
+            let now = match spec.scene.projection {
+                Projection::Perspective { .. } => 0,
+                Projection::Frustum { .. } => 1,
+                Projection::Ortho { .. } => 2,
+            };
+            // The same kind again changes nothing (a perspective keeps its aspect unset).
+            if kind != now {
+                spec.scene.projection =
+                    projection_kind(&spec.scene.projection, kind, spec.settings.aspect());
+            }
         }
         ["projection", p] => projection(&mut spec.scene.projection, p, v)?,
         ["render", p] => render(spec, p, v)?,

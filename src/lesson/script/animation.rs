@@ -50,27 +50,12 @@ impl Checker<'_> {
             }
         }
         let easing = match &r.easing {
-            Some(v) => self.choice(
-                "easing",
-                v,
-                &[
-                    ("linear", Easing::Linear),
-                    ("ease_in_out", Easing::EaseInOut),
-                ],
-            )?,
-            None => Easing::EaseInOut,
+            Some(v) => self.choice("easing", v, &Easing::NAMES)?,
+            None => Easing::DEFAULT,
         };
         let repeat = match &r.repeat {
-            Some(v) => self.choice(
-                "repeat",
-                v,
-                &[
-                    ("once", Repeat::Once),
-                    ("loop", Repeat::Loop),
-                    ("ping_pong", Repeat::PingPong),
-                ],
-            )?,
-            None => Repeat::PingPong,
+            Some(v) => self.choice("repeat", v, &Repeat::NAMES)?,
+            None => Repeat::DEFAULT,
         };
         Some(Animation {
             param: name.clone(),

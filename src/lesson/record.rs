@@ -1,0 +1,176 @@
+//! Writing a step into a lesson file, as a teacher's "Add step" records it from what is on screen:
+//! the step becomes a `[[steps]]` table appended to the file with `toml_edit`, so that every other
+//! line — the teacher's comments, order and formatting — stays byte for byte as it was, and the
+//! file still reads as the same lesson with one more step.
+
+use toml_edit::{Array, DocumentMut, InlineTable, Item, Table, value};
+
+use super::Step;
+use super::param::{Animation, Easing, Repeat, Value};
+use super::script::{LAYOUTS, Layout, OVERLAYS};
+use crate::vocabulary::{Lang, Text};
+
+/// `text`, a lesson file, with `step` appended as its last `[[steps]]`.
+///
+/// # Errors
+/// When `text` is not TOML, has no `[[steps]]` array, or `step` holds what a recorded step
+/// cannot (shaders, an exercise or a typed answer: those are written by hand).
+pub fn append_step(text: &str, step: &Step) -> Result<String, String> {
+    let mut doc: DocumentMut = text
+        .parse()
+        .map_err(|e| format!("the lesson file is not TOML: {e}"))?;
+    let table = step_table(step)?;
+    let steps = doc
+        .get_mut("steps")
+        .and_then(Item::as_array_of_tables_mut)
+        .ok_or("the lesson file has no [[steps]]")?;
+    steps.push(table);
+    Ok(doc.to_string())
+}
+
+/// A `[[steps]]` table holding `step`: what it names, in the order a lesson's author writes it.
+///
+/// # Errors
+/// See [`append_step`].
+pub fn step_table(step: &Step) -> Result<Table, String> {
+    if step.shader.is_some() || step.exercise.is_some() || step.expect.is_some() {
+        return Err(
+            "a recorded step has no shaders, exercise or typed answer: write those in the file"
+                .to_owned(),
+        );
+    }
+    let mut t = Table::new();
+    t.insert("title", value(text(&step.title)));
+    // `narration.en = """…"""`, as a lesson's author writes it.
+    let mut narration = Table::new();
+    narration.set_dotted(true);
+    for (lang, key) in [(Lang::En, "en"), (Lang::Zh, "zh")] {
+        let words = step.narration.get(lang);
+        if !words.is_empty() {
+            narration.insert(key, value(words));
+        }
+    }
+    if !narration.is_empty() {
+        t.insert("narration", Item::Table(narration));
+    }
+    if let Some(stage) = step.stage {
+        t.insert("stage", value(stage.name(Lang::En).to_lowercase()));
+    }
+    if step.layout != Layout::Single && step.compare.is_none() {
+        let name = LAYOUTS
+            .iter()
+            .find(|(_, l)| *l == step.layout)
+            .map(|(n, _)| *n);
+        t.insert("layout", value(name.unwrap_or("single")));
+    }
+    if let Some(c) = step.compare {
+        t.insert("compare", value(c.key()));
+    }
+    if let Some(b) = step.buffer {
+        t.insert("buffer", value(b.name()));
+    }
+    if let Some(overlays) = &step.overlays {
+        let names: Array = overlays
+            .iter()
+            .filter_map(|o| OVERLAYS.iter().find(|(_, k)| k == o).map(|(n, _)| *n))
+            .collect();
+        t.insert("overlays", value(names));
+    }
+    if let Some(focus) = &step.focus {
+        t.insert(
+            "focus",
+            value(focus.iter().map(String::as_str).collect::<Array>()),
+        );
+    }
+    if let Some((x, y)) = step.pixel {
+        t.insert(
+            "pixel",
+            value(Array::from_iter([i64::from(x), i64::from(y)])),
+        );
+    }
+    if let Some(v) = step.vertex {
+        t.insert("vertex", value(i64::from(v)));
+    }
+    if let Some(p) = step.profile {
+        t.insert(
+            "profile",
+            value(p.map(number).into_iter().collect::<Array>()),
+        );
+    }
+    if let Some(r) = step.depth_range {
+        t.insert(
+            "depth_range",
+            value(r.map(number).into_iter().collect::<Array>()),
+        );
+    }
+    if !step.set.is_empty() {
+        let mut set = InlineTable::new();
+        for (name, v) in &step.set {
+            set.insert(name, param_value(v));
+        }
+        t.insert("set", value(set));
+    }
+    if !step.animate.is_empty() {
+        let list: Array = step.animate.iter().map(animation).collect();
+        t.insert("animate", value(list));
+    }
+    if let Some(q) = &step.question {
+        t.insert("question", value(text(q)));
+    }
+    if let Some(a) = &step.answer {
+        t.insert("answer", value(text(a)));
+    }
+    Ok(t)
+}
+
+/// `{ en = "…", zh = "…" }`, without a language left empty.
+fn text(t: &Text) -> InlineTable {
+    let mut out = InlineTable::new();
+    for (key, words) in [("en", &t.en), ("zh", &t.zh)] {
+        if !words.is_empty() {
+            out.insert(key, words.as_str().into());
+        }
+    }
+    out
+}
+
+/// A parameter's value as `set` and `animate` write it.
+fn param_value(v: &Value) -> toml_edit::Value {
+    match v {
+        Value::Number(x) => number(*x),
+        Value::Vec3(v) => Array::from_iter(v.to_array().map(number)).into(),
+        Value::Bool(b) => (*b).into(),
+        Value::Name(n) => n.as_str().into(),
+    }
+}
+
+/// A number as the shortest decimal that reads back as the same `f32` (`0.3`, not
+/// `0.30000001192092896`); whole numbers as integers.
+fn number(x: f32) -> toml_edit::Value {
+    if x.fract() == 0.0 && x.abs() < 1e9 {
+        (x as i64).into()
+    } else {
+        format!("{x}").parse::<f64>().unwrap_or(f64::from(x)).into()
+    }
+}
+
+/// `{ param = "…", from = …, to = …, seconds = …, easing = …, repeat = … }`, the last two only
+/// when not the defaults.
+fn animation(a: &Animation) -> toml_edit::Value {
+    let mut t = InlineTable::new();
+    t.insert("param", a.param.as_str().into());
+    t.insert("from", param_value(&a.from));
+    t.insert("to", param_value(&a.to));
+    t.insert("seconds", number(a.seconds));
+    if a.easing != Easing::DEFAULT
+        && let Some((name, _)) = Easing::NAMES.iter().find(|(_, e)| *e == a.easing)
+    {
+        t.insert("easing", (*name).into());
+    }
+    if a.repeat != Repeat::DEFAULT
+        && let Some((name, _)) = Repeat::NAMES.iter().find(|(_, r)| *r == a.repeat)
+    {
+        t.insert("repeat", (*name).into());
+    }
+    t.into()
+}
