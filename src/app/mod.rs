@@ -10,6 +10,7 @@ mod library;
 pub mod platform;
 mod player;
 pub mod progress;
+pub mod record;
 mod reload;
 pub mod selection;
 pub mod session;
@@ -19,8 +20,7 @@ pub mod worker;
 
 pub use style::{CJK_FONT, apply_style, install_fonts, setup_context};
 
-use std::path::PathBuf;
-use std::sync::mpsc::Receiver;
+use std::{path::PathBuf, sync::mpsc::Receiver};
 
 use egui::RichText;
 

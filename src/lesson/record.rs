@@ -13,18 +13,35 @@ use crate::vocabulary::{Lang, Text};
 /// `text`, a lesson file, with `step` appended as its last `[[steps]]`.
 ///
 /// # Errors
-/// When `text` is not TOML, has no `[[steps]]` array, or `step` holds what a recorded step
-/// cannot (shaders, an exercise or a typed answer: those are written by hand).
+/// When `text` is not TOML, has no `[[steps]]` array, `step` has no narration in one of the two
+/// languages yet, or it holds what a recorded step cannot (shaders, an exercise or a typed
+/// answer: those are written by hand).
 pub fn append_step(text: &str, step: &Step) -> Result<String, String> {
+    insert_step(text, usize::MAX, step)
+}
+
+/// `text`, a lesson file, with `step` as its step `at` (counted from 0; past the end: the last),
+/// before the step that was there and that step's comments.
+///
+/// # Errors
+/// See [`append_step`].
+pub fn insert_step(text: &str, at: usize, step: &Step) -> Result<String, String> {
     let mut doc: DocumentMut = text
         .parse()
         .map_err(|e| format!("the lesson file is not TOML: {e}"))?;
-    let table = step_table(step)?;
+    let mut table = step_table(step)?;
     let steps = doc
         .get_mut("steps")
         .and_then(Item::as_array_of_tables_mut)
         .ok_or("the lesson file has no [[steps]]")?;
-    steps.push(table);
+    match steps.get(at).map(Table::position) {
+        // Written where the step it goes before was (a tie in position goes by order).
+        Some(position) => {
+            table.set_position(position);
+            steps.insert(at, table);
+        }
+        None => steps.push(table),
+    }
     Ok(doc.to_string())
 }
 
@@ -41,18 +58,29 @@ pub fn step_table(step: &Step) -> Result<Table, String> {
     }
     let mut t = Table::new();
     t.insert("title", value(text(&step.title)));
-    // `narration.en = """…"""`, as a lesson's author writes it.
+    // `narration.en = """…"""`, as a lesson's author writes it, in both languages (the file format
+    // asks for both).
+    let missing: Vec<&str> = [
+        ("English", &step.narration.en),
+        ("Chinese", &step.narration.zh),
+    ]
+    .into_iter()
+    .filter(|(_, words)| words.trim().is_empty())
+    .map(|(lang, _)| lang)
+    .collect();
+    if !missing.is_empty() {
+        return Err(format!(
+            "step \"{}\" has no narration in {} yet: a lesson's step needs its words in both languages",
+            step.title.en,
+            missing.join(" and ")
+        ));
+    }
     let mut narration = Table::new();
     narration.set_dotted(true);
     for (lang, key) in [(Lang::En, "en"), (Lang::Zh, "zh")] {
-        let words = step.narration.get(lang);
-        if !words.is_empty() {
-            narration.insert(key, value(words));
-        }
+        narration.insert(key, value(step.narration.get(lang)));
     }
-    if !narration.is_empty() {
-        t.insert("narration", Item::Table(narration));
-    }
+    t.insert("narration", Item::Table(narration));
     if let Some(stage) = step.stage {
         t.insert("stage", value(stage.name(Lang::En).to_lowercase()));
     }

@@ -177,3 +177,67 @@ fn a_step_appended_to_a_lesson_reads_back_as_the_same_step() {
     }
     assert!(written > 100, "only {written} steps were written back");
 }
+
+/// What is on screen becomes a step: in lesson 17 at step 1, with the base turned to 50°, a
+/// pixel inspected and the observer on, the recorded step names the stage, the
+/// layout, the pixel and the one parameter changed; appended to the lesson file it reads back,
+/// and replayed from the step before it gives the scene on screen.
+#[test]
+fn the_state_on_screen_is_recorded_as_a_step() {
+    use pipelens::app::session::{Command, Session};
+    use pipelens::lesson::script::Layout;
+    let path = crate::support::repo().join("lessons/17-hierarchy.toml");
+    let doc = pipelens::lesson::load_file(&path).expect("the lesson loads");
+    let mut s = Session::with_document(doc, "test", None);
+    s.apply(Command::GoToStep(0));
+    let mut spec = s.spec.clone();
+    param::apply(&mut spec, "figures.arm.base", &Value::Number(50.0)).expect("a joint");
+    s.apply(Command::SetSpec(Box::new(spec)));
+    s.apply(Command::SelectPixel(Some((120, 80))));
+    let step = pipelens::app::record::recorded_step(&s).expect("a lesson is open");
+    assert_eq!(step.stage, Some(pipelens::vocabulary::Stage::World));
+    assert_eq!(step.layout, Layout::Observer);
+    assert_eq!(step.pixel, Some((120, 80)));
+    assert_eq!(step.focus.as_deref(), Some(&["arm".to_owned()][..]));
+    assert_eq!(step.title.en, "World");
+    let changed: Vec<&str> = step.set.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(changed, ["figures.arm.base"], "{:?}", step.set);
+    let text = std::fs::read_to_string(&path).expect("the lesson reads");
+    // Not worded yet: refused with a message, the file untouched.
+    let refused = pipelens::lesson::record::append_step(&text, &step).expect_err("no words yet");
+    assert!(refused.contains("English and Chinese"), "{refused}");
+    // As the teacher words it.
+    let mut step = step;
+    step.narration = pipelens::vocabulary::Text {
+        en: "The base turned to 50°.".to_owned(),
+        zh: "支架转到 50°。".to_owned(),
+    };
+    // After the step on screen (the first), before the second and its comment.
+    let out = pipelens::lesson::record::insert_step(&text, 1, &step).expect("written");
+    let again = pipelens::lesson::script::parse_lesson(
+        &out,
+        "lesson.toml",
+        path.parent().expect("a folder"),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(again.steps.len(), 6);
+    assert_eq!(again.steps[1], step);
+    let lesson = pipelens::lesson::script::parse_lesson(
+        &text,
+        "lesson.toml",
+        path.parent().expect("a folder"),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        again.steps[2..],
+        lesson.steps[1..],
+        "the steps after it are unchanged"
+    );
+    // Replayed, the new step shows the scene that was on screen.
+    assert!(param::differences(&again.spec_at(1), &s.spec).is_empty());
+    // Every line of the file is still there, in order, the new step's lines among them.
+    let mut lines = out.lines();
+    for line in text.lines() {
+        assert!(lines.any(|l| l == line), "lost: {line}");
+    }
+}

@@ -1,0 +1,63 @@
+//! A step recorded from what is on screen ("Add step", issue 36): the stage, the buffer, the
+//! layout and comparison, the overlays, the inspected pixel and selected vertex, the framed
+//! objects, the profile line, the depth ramp, and — as `set` entries — every parameter that
+//! differs from the scene the lesson's current step leaves (`set` entries are kept by the steps
+//! after theirs). Its title names the stage in both languages until the teacher words it; it has
+//! no narration yet. `lesson::record::append_step` writes it into the lesson file.
+
+use crate::app::session::Session;
+use crate::lesson::Step;
+use crate::lesson::script::{Layout, Overlay};
+use crate::vocabulary::{Lang, Text};
+use pipeline::overlay::OverlayKind;
+
+/// The step on screen, to come after the lesson's current one; `None` without a lesson.
+#[must_use]
+pub fn recorded_step(session: &Session) -> Option<Step> {
+    let player = session.lesson.as_ref()?;
+    let sel = &session.selection;
+    let before = player.lesson.spec_at(player.step);
+    let mut overlays: Vec<Overlay> = sel
+        .overlays
+        .iter()
+        .map(|o| match o {
+            OverlayKind::TriangleEdges => Overlay::Edges,
+            OverlayKind::BoundingBoxes => Overlay::BoundingBoxes,
+        })
+        .collect();
+    if sel.show_samples {
+        overlays.push(Overlay::Samples);
+    }
+    if sel.show_normals {
+        overlays.push(Overlay::Normals);
+    }
+    let layout = match (sel.comparison, sel.show_observer) {
+        (Some(_), _) => Layout::Compare,
+        (None, true) => Layout::Observer,
+        (None, false) => Layout::Single,
+    };
+    Some(Step {
+        title: Text {
+            en: sel.stage.name(Lang::En).to_owned(),
+            zh: sel.stage.name(Lang::Zh).to_owned(),
+        },
+        narration: Text::default(),
+        stage: Some(sel.stage),
+        layout,
+        compare: sel.comparison,
+        buffer: Some(sel.buffer),
+        overlays: Some(overlays),
+        set: crate::lesson::param::differences(&before, &session.spec),
+        animate: Vec::new(),
+        pixel: sel.pixel,
+        vertex: sel.vertex,
+        profile: sel.profile,
+        focus: sel.focus.clone(),
+        depth_range: sel.depth_view.range,
+        shader: None,
+        question: None,
+        expect: None,
+        exercise: None,
+        answer: None,
+    })
+}
