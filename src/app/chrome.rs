@@ -124,6 +124,16 @@ impl PipelensApp {
                 self.commands.push(Command::TogglePlay);
             }
         }
+        if ui
+            .selectable_label(self.recorder.open, lang.tr("＋ Step", "＋ 步骤"))
+            .on_hover_text(lang.tr(
+                "Record what is on screen as a step after this one (R)",
+                "把屏幕上的内容记录为当前步骤之后的一步（R）",
+            ))
+            .clicked()
+        {
+            self.recorder.open = !self.recorder.open;
+        }
     }
 
     /// Which panels are shown: narration (N), parameters (P), inspector (I), the matrix card (M);
@@ -306,7 +316,7 @@ impl PipelensApp {
     /// The keyboard shortcuts, in a window F1 (or ?) opens and closes.
     pub(super) fn keys_help(&mut self, ctx: &egui::Context) {
         let lang = self.session.lang;
-        let keys: [(&str, &str, &str); 15] = [
+        let keys: [(&str, &str, &str); 16] = [
             (
                 "→  Page Down",
                 "next step of a lesson (next stage without one)",
@@ -340,6 +350,11 @@ impl PipelensApp {
                 "课堂模式：大字号，画面优先",
             ),
             ("S", "the shader editor (GLSL)", "着色器编辑器（GLSL）"),
+            (
+                "R",
+                "add a step: record what is on screen after this step",
+                "添加步骤：把屏幕上的内容记录为当前步骤之后的一步",
+            ),
             ("Ctrl Enter", "apply the shaders", "应用着色器"),
             ("F11", "full screen", "全屏"),
             ("Ctrl +  Ctrl −", "text size", "字号"),
@@ -425,6 +440,9 @@ impl PipelensApp {
         }
         if pressed(egui::Key::S) {
             p.shader = !p.shader;
+        }
+        if pressed(egui::Key::R) && lesson {
+            self.recorder.open = !self.recorder.open;
         }
         if pressed(egui::Key::F1) || pressed(egui::Key::Questionmark) {
             p.keys = !p.keys;

@@ -11,6 +11,7 @@ pub mod platform;
 mod player;
 pub mod progress;
 pub mod record;
+mod recorder;
 mod reload;
 pub mod selection;
 pub mod session;
@@ -96,6 +97,8 @@ pub struct PipelensApp {
     saved_progress: progress::Progress,
     /// The file shown, watched for changes (live reload): its path and last modification.
     watched: Option<reload::Watched>,
+    /// The "Add step" window (R).
+    recorder: recorder::Recorder,
     /// Dropped files read in the background (in the browser).
     inbox: platform::Inbox,
 }
@@ -125,6 +128,7 @@ impl PipelensApp {
             export_cancel: None,
             commands: Vec::new(),
             watched: None,
+            recorder: recorder::Recorder::default(),
             inbox: platform::Inbox::default(),
         }
     }
@@ -170,31 +174,10 @@ impl PipelensApp {
         };
     }
 
-    /// The share of `screen` the picture covers (the area of the union of [`Self::picture`],
-    /// exactly: the rectangles cut the screen into cells along their edges, and each cell is in
-    /// or out).
+    /// The share of `screen` the picture covers (the area of the union of [`Self::picture`]).
     #[must_use]
     pub fn picture_share(&self, screen: egui::Rect) -> f32 {
-        let rects: Vec<egui::Rect> = self
-            .picture
-            .iter()
-            .map(|r| r.intersect(screen))
-            .filter(|r| r.is_positive())
-            .collect();
-        let mut xs: Vec<f32> = rects.iter().flat_map(|r| [r.left(), r.right()]).collect();
-        let mut ys: Vec<f32> = rects.iter().flat_map(|r| [r.top(), r.bottom()]).collect();
-        xs.sort_by(f32::total_cmp);
-        ys.sort_by(f32::total_cmp);
-        let mut area = 0.0;
-        for x in xs.windows(2) {
-            for y in ys.windows(2) {
-                let centre = egui::pos2((x[0] + x[1]) / 2.0, (y[0] + y[1]) / 2.0);
-                if rects.iter().any(|r| r.contains(centre)) {
-                    area += (x[1] - x[0]) * (y[1] - y[0]);
-                }
-            }
-        }
-        area / screen.area().max(1.0)
+        views::room::share(&self.picture, screen)
     }
 
     /// Draws one frame and applies the commands it produced.
@@ -283,6 +266,8 @@ impl PipelensApp {
                 self.panels.inspector = true;
             }
         }
+        let file = self.watched.as_ref().map(reload::Watched::path);
+        self.recorder.ui(ui.ctx(), &self.session, file);
         self.animate(ui.ctx());
         // A parameter dragged (a slider, a number): drafts until the pointer is let go, then the
         // full frame.

@@ -17,6 +17,11 @@ pub(super) struct Watched {
 }
 
 impl Watched {
+    /// The file watched.
+    pub(super) fn path(&self) -> &std::path::Path {
+        &self.path
+    }
+
     /// The latest change to `path` or to a shader file (`.vert`, `.frag`, …) in its folder or
     /// a folder within it: a lesson reads its shaders from there.
     fn modified(path: &std::path::Path) -> Option<std::time::SystemTime> {

@@ -10,6 +10,7 @@ mod classroom;
 mod export;
 mod framing;
 mod library;
+mod recording;
 mod steps;
 
 /// The app on the built-in scene, rendering synchronously so that tests are deterministic.

@@ -273,6 +273,31 @@ pub fn above_band(area: Rect, card: Option<Rect>) -> Rect {
     }
 }
 
+/// The share of `screen` that `rects` cover: the area of their union, exactly (the rectangles
+/// cut the screen into cells along their edges, and each cell is in or out), over the screen's.
+#[must_use]
+pub fn share(rects: &[Rect], screen: Rect) -> f32 {
+    let rects: Vec<Rect> = rects
+        .iter()
+        .map(|r| r.intersect(screen))
+        .filter(|r| r.is_positive())
+        .collect();
+    let mut xs: Vec<f32> = rects.iter().flat_map(|r| [r.left(), r.right()]).collect();
+    let mut ys: Vec<f32> = rects.iter().flat_map(|r| [r.top(), r.bottom()]).collect();
+    xs.sort_by(f32::total_cmp);
+    ys.sort_by(f32::total_cmp);
+    let mut area = 0.0;
+    for x in xs.windows(2) {
+        for y in ys.windows(2) {
+            let centre = egui::pos2((x[0] + x[1]) / 2.0, (y[0] + y[1]) / 2.0);
+            if rects.iter().any(|r| r.contains(centre)) {
+                area += (x[1] - x[0]) * (y[1] - y[0]);
+            }
+        }
+    }
+    area / screen.area().max(1.0)
+}
+
 /// A panel in `area` (the depth curve, the mip pyramid) clear of `card`: the part of `area`
 /// right of the card when the card covers it, unless that leaves less than a third of it.
 #[must_use]
