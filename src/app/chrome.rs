@@ -124,16 +124,6 @@ impl PipelensApp {
                 self.commands.push(Command::TogglePlay);
             }
         }
-        if ui
-            .selectable_label(self.recorder.open, lang.tr("＋ Step", "＋ 步骤"))
-            .on_hover_text(lang.tr(
-                "Record what is on screen as a step after this one (R)",
-                "把屏幕上的内容记录为当前步骤之后的一步（R）",
-            ))
-            .clicked()
-        {
-            self.recorder.open = !self.recorder.open;
-        }
     }
 
     /// Which panels are shown: narration (N), parameters (P), inspector (I), the matrix card (M);

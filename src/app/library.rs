@@ -58,6 +58,21 @@ impl PipelensApp {
                 }
             }
             ui.separator();
+            // In the menu, not the bar: the bar must stay one row at 1366 points.
+            if ui
+                .add_enabled(
+                    self.session.lesson.is_some(),
+                    egui::Button::new(lang.tr("Add a step… (R)", "添加步骤…（R）")),
+                )
+                .on_hover_text(lang.tr(
+                    "Record what is on screen as a step after this one, into the lesson file",
+                    "把屏幕上的内容记录为当前步骤之后的一步，写入课程文件",
+                ))
+                .clicked()
+            {
+                self.recorder.open = true;
+                ui.close();
+            }
             let hint = if super::platform::WATCHES_FILES {
                 lang.tr(
                     "Your own lesson or scene: drop its .toml file on the window; it reloads when you save it.",
