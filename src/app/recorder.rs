@@ -89,12 +89,9 @@ impl Recorder {
             && let Some(file) = file
         {
             let mut step = step;
-            step.title = self.title.clone();
-            if step.title.en.trim().is_empty() && step.title.zh.trim().is_empty() {
-                step.title = Text {
-                    en: session.selection.stage.name(Lang::En).to_owned(),
-                    zh: session.selection.stage.name(Lang::Zh).to_owned(),
-                };
+            // Untitled, it keeps the stage's name `recorded_step` gave it.
+            if crate::lesson::record::unworded(&self.title).len() < 2 {
+                step.title = self.title.clone();
             }
             step.narration = self.narration.clone();
             self.said = Some(
@@ -134,14 +131,10 @@ impl Recorder {
                 }
             });
         }
-        let missing: Vec<&str> = [
-            ("English", &self.narration.en),
-            ("中文", &self.narration.zh),
-        ]
-        .into_iter()
-        .filter(|(_, w)| w.trim().is_empty())
-        .map(|(n, _)| n)
-        .collect();
+        let missing: Vec<&str> = crate::lesson::record::unworded(&self.narration)
+            .into_iter()
+            .map(|l| if l == Lang::En { "English" } else { "中文" })
+            .collect();
         if !missing.is_empty() {
             ui.label(
                 RichText::new(format!(

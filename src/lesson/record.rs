@@ -45,6 +45,15 @@ pub fn insert_step(text: &str, at: usize, step: &Step) -> Result<String, String>
     Ok(doc.to_string())
 }
 
+/// The languages `text` has no words in yet (blank counts as none).
+#[must_use]
+pub fn unworded(text: &Text) -> Vec<Lang> {
+    [Lang::En, Lang::Zh]
+        .into_iter()
+        .filter(|&l| text.get(l).trim().is_empty())
+        .collect()
+}
+
 /// A `[[steps]]` table holding `step`: what it names, in the order a lesson's author writes it.
 ///
 /// # Errors
@@ -60,14 +69,10 @@ pub fn step_table(step: &Step) -> Result<Table, String> {
     t.insert("title", value(text(&step.title)));
     // `narration.en = """…"""`, as a lesson's author writes it, in both languages (the file format
     // asks for both).
-    let missing: Vec<&str> = [
-        ("English", &step.narration.en),
-        ("Chinese", &step.narration.zh),
-    ]
-    .into_iter()
-    .filter(|(_, words)| words.trim().is_empty())
-    .map(|(lang, _)| lang)
-    .collect();
+    let missing: Vec<&str> = unworded(&step.narration)
+        .into_iter()
+        .map(|l| if l == Lang::En { "English" } else { "Chinese" })
+        .collect();
     if !missing.is_empty() {
         return Err(format!(
             "step \"{}\" has no narration in {} yet: a lesson's step needs its words in both languages",
