@@ -342,8 +342,8 @@ impl PipelensApp {
             ("S", "the shader editor (GLSL)", "着色器编辑器（GLSL）"),
             (
                 "R",
-                "add a step: record what is on screen after this step",
-                "添加步骤：把屏幕上的内容记录为当前步骤之后的一步",
+                "the lesson editor: record what is on screen as steps, word, arrange, save (Ctrl+S)",
+                "课程编辑器：把屏幕内容录制为步骤，撰写文字，调整顺序，保存（Ctrl+S）",
             ),
             ("Ctrl Enter", "apply the shaders", "应用着色器"),
             ("F11", "full screen", "全屏"),
@@ -431,8 +431,8 @@ impl PipelensApp {
         if pressed(egui::Key::S) {
             p.shader = !p.shader;
         }
-        if pressed(egui::Key::R) && lesson {
-            self.recorder.open = !self.recorder.open;
+        if pressed(egui::Key::R) {
+            self.editor.open = !self.editor.open;
         }
         if pressed(egui::Key::F1) || pressed(egui::Key::Questionmark) {
             p.keys = !p.keys;

@@ -60,17 +60,14 @@ impl PipelensApp {
             ui.separator();
             // In the menu, not the bar: the bar must stay one row at 1366 points.
             if ui
-                .add_enabled(
-                    self.session.lesson.is_some(),
-                    egui::Button::new(lang.tr("Add a step… (R)", "添加步骤…（R）")),
-                )
+                .button(lang.tr("Edit this lesson, or make one… (R)", "编辑本课程或新建课程…（R）"))
                 .on_hover_text(lang.tr(
-                    "Record what is on screen as a step after this one, into the lesson file",
-                    "把屏幕上的内容记录为当前步骤之后的一步，写入课程文件",
+                    "Record what is on screen as steps, word them in both languages, arrange them, save the file",
+                    "把屏幕上的内容录制为步骤，用两种语言撰写文字，调整顺序，保存文件",
                 ))
                 .clicked()
             {
-                self.recorder.open = true;
+                self.editor.open = true;
                 ui.close();
             }
             let hint = if super::platform::WATCHES_FILES {
@@ -109,7 +106,17 @@ impl PipelensApp {
         let dropped = ctx.input(|i| i.raw.dropped_files.clone());
         if let Some(file) = dropped.into_iter().next() {
             let path = file.path().to_path_buf();
-            if path.is_absolute() && shader_stage(&path.display().to_string()).is_some() {
+            if path.is_absolute()
+                && path
+                    .extension()
+                    .is_some_and(|e| e.eq_ignore_ascii_case("obj"))
+            {
+                // A mesh of one's own: a new lesson on it, in the editor.
+                self.editor.new.from = super::editor::From::Mesh;
+                self.editor.new.mesh = path.display().to_string();
+                self.editor.new.show = true;
+                self.editor.open = true;
+            } else if path.is_absolute() && shader_stage(&path.display().to_string()).is_some() {
                 let name = path.display().to_string();
                 let text = std::fs::read(&path).map_err(|e| format!("cannot read the file: {e}"));
                 self.load_shader(&name, text);
@@ -128,16 +135,24 @@ impl PipelensApp {
                 );
                 continue;
             }
-            let loaded = bytes
+            let text = bytes
                 .map_err(|e| format!("cannot read the file: {e}"))
                 .and_then(|b| {
                     String::from_utf8(b).map_err(|_| {
                         "the file is not UTF-8 text: drop a lesson or scene .toml file".to_owned()
                     })
                 })
-                .map_err(|e| lesson::Diagnostics(vec![lesson::Diagnostic::whole_file(&name, e)]))
-                .and_then(|text| lesson::parse_document(&text, &name, std::path::Path::new(".")));
+                .map_err(|e| lesson::Diagnostics(vec![lesson::Diagnostic::whole_file(&name, e)]));
+            let loaded = text
+                .as_ref()
+                .map_err(Clone::clone)
+                .and_then(|text| lesson::parse_document(text, &name, std::path::Path::new(".")));
+            let is_lesson = matches!(loaded, Ok(Document::Lesson(_)));
             self.opened(loaded, &name, None);
+            // In the browser the editor edits the dropped text; saving it is a download.
+            if let (true, Ok(text)) = (is_lesson, text) {
+                self.editor.adopt(&name, None, text);
+            }
         }
     }
 
@@ -186,7 +201,7 @@ impl PipelensApp {
     }
 
     /// Puts `doc` (named `source`) in place of what is open; a file on disk is watched.
-    fn open(&mut self, doc: Document, source: &str, path: Option<std::path::PathBuf>) {
+    pub(super) fn open(&mut self, doc: Document, source: &str, path: Option<std::path::PathBuf>) {
         self.session.open(doc, source);
         self.panels = super::Panels::for_mode(self.presenting());
         self.watched = None;

@@ -4,6 +4,7 @@
 
 mod chrome;
 pub mod display;
+mod editor;
 pub mod exercise;
 mod export_task;
 mod library;
@@ -11,7 +12,6 @@ pub mod platform;
 mod player;
 pub mod progress;
 pub mod record;
-mod recorder;
 mod reload;
 pub mod selection;
 pub mod session;
@@ -98,7 +98,8 @@ pub struct PipelensApp {
     /// The file shown, watched for changes (live reload): its path and last modification.
     watched: Option<reload::Watched>,
     /// The "Add step" window (R).
-    recorder: recorder::Recorder,
+    /// The lesson editor (R).
+    editor: editor::Editor,
     /// Dropped files read in the background (in the browser).
     inbox: platform::Inbox,
 }
@@ -128,7 +129,7 @@ impl PipelensApp {
             export_cancel: None,
             commands: Vec::new(),
             watched: None,
-            recorder: recorder::Recorder::default(),
+            editor: editor::Editor::default(),
             inbox: platform::Inbox::default(),
         }
     }
@@ -266,8 +267,7 @@ impl PipelensApp {
                 self.panels.inspector = true;
             }
         }
-        let file = self.watched.as_ref().map(reload::Watched::path);
-        self.recorder.ui(ui.ctx(), &self.session, file);
+        self.edit_lesson(ui.ctx());
         self.animate(ui.ctx());
         // A parameter dragged (a slider, a number): drafts until the pointer is let go, then the
         // full frame.

@@ -133,6 +133,56 @@ pub fn download(
     }
 }
 
+/// Keeps `text` as the unsaved edits `key` names (`None`: nothing is unsaved any more): on the
+/// desktop the file `key`, beside the lesson, written whole or not at all; in the browser the
+/// page's local storage under that name.
+///
+/// # Errors
+/// When the file cannot be written, or the page refuses its storage.
+pub fn keep_unsaved(key: &std::path::Path, text: Option<&str>) -> Result<(), String> {
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        match text {
+            Some(t) => {
+                crate::export::write_atomically(key, t.as_bytes()).map_err(|e| format!("{e:#}"))
+            }
+            None if key.exists() => std::fs::remove_file(key).map_err(|e| e.to_string()),
+            None => Ok(()),
+        }
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        let storage = web_sys::window()
+            .and_then(|w| w.local_storage().ok().flatten())
+            .ok_or_else(|| "the page has no local storage".to_owned())?;
+        let name = format!("pipelens-unsaved:{}", key.display());
+        match text {
+            Some(t) => storage.set_item(&name, t),
+            None => storage.remove_item(&name),
+        }
+        .map_err(|e| format!("the page refused its storage: {e:?}"))
+    }
+}
+
+/// The unsaved edits kept under `key` (see [`keep_unsaved`]), if any.
+#[must_use]
+pub fn unsaved(key: &std::path::Path) -> Option<String> {
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        std::fs::read_to_string(key).ok()
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        web_sys::window()
+            .and_then(|w| w.local_storage().ok().flatten())
+            .and_then(|s| {
+                s.get_item(&format!("pipelens-unsaved:{}", key.display()))
+                    .ok()
+                    .flatten()
+            })
+    }
+}
+
 /// Opens the window on `doc` and runs until it is closed.
 ///
 /// # Errors

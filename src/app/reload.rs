@@ -91,6 +91,16 @@ impl PipelensApp {
             return;
         }
         w.modified = now;
+        // A lesson being edited with unsaved changes is not replaced: the editor says the file
+        // changed, and a save asks before overwriting it.
+        if let Some(doc) = &mut self.editor.doc
+            && doc.file.as_deref() == Some(w.path.as_path())
+            && let Ok(text) = std::fs::read_to_string(&w.path)
+            && !doc.changed_on_disk(&text)
+        {
+            self.editor.open = true;
+            return;
+        }
         let loaded = crate::lesson::load_file(&w.path);
         self.commands.extend(match loaded {
             Ok(crate::lesson::Document::Lesson(l)) => vec![Command::ReloadLesson(l)],

@@ -132,6 +132,16 @@ pub enum Command {
     CheckAnswer,
     /// The lesson file changed on disk and loaded: replace it, staying on the same step.
     ReloadLesson(Box<Lesson>),
+    /// The lesson as edited in the app, at its step `step`: entered, or (`enter` false, for a
+    /// change of words) with the screen kept as it is.
+    ReviseLesson {
+        /// The lesson as it reads now.
+        lesson: Box<Lesson>,
+        /// The step to be at.
+        step: usize,
+        /// Whether the step is entered (its scene and view set as it says).
+        enter: bool,
+    },
     /// The file changed on disk and is broken (the message), or is fine again (`None`).
     SetReloadError(Option<String>),
 }

@@ -17,6 +17,9 @@ use crate::lesson::script::{Layout, Overlay};
 use crate::lesson::{Document, SceneSpec};
 use crate::observer::{Orbit, default_orbit};
 use crate::vocabulary::{Comparison, Lang, Stage};
+pub use teaching::Teaching;
+
+mod teaching;
 
 /// The state of the app.
 pub struct Session {
@@ -68,6 +71,9 @@ pub struct Session {
     /// per 2×2 block but the inspected pixel, the observer at a quarter of its pixels) so
     /// that the picture keeps up with the hand; letting go renders the full frame.
     pub drafting: bool,
+    /// The scene as it was when the drag under way (or the last one) began: the lesson editor
+    /// records a drag as an animation from it.
+    pub drag_from: Option<SceneSpec>,
     /// Whether the capture on screen is a draft.
     pub shown_draft: bool,
     /// What the student has done, kept across runs by the app's storage.
@@ -117,6 +123,7 @@ impl Session {
             worker,
             step_entered: 0,
             drafting: false,
+            drag_from: None,
             shown_draft: false,
             progress: super::progress::Progress::default(),
             exercise: super::exercise::Comparison::default(),
@@ -329,6 +336,10 @@ impl Session {
     /// full frame in place of the draft on screen or under way.
     pub fn set_drafting(&mut self, on: bool) {
         let was = std::mem::replace(&mut self.drafting, on);
+        if on && !was {
+            // Called before the drag's first change is applied.
+            self.drag_from = Some(self.spec.clone());
+        }
         if was && !on && (self.shown_draft || self.shown_generation < self.generation) {
             self.request_render();
         }
@@ -441,12 +452,26 @@ impl Session {
             }
             Command::ReloadLesson(lesson) => {
                 let step = self.lesson.as_ref().map_or(0, |p| p.step);
-                self.reload_error = None;
-                self.lesson = Some(LessonPlayer::new(Arc::from(lesson), step));
-                self.enter_step(step);
+                self.revise(*lesson, step, true);
             }
+            Command::ReviseLesson {
+                lesson,
+                step,
+                enter,
+            } => self.revise(*lesson, step, enter),
             Command::SetReloadError(e) => self.reload_error = e,
             _ => self.apply_selection(cmd),
+        }
+    }
+
+    /// `lesson` in place of the one playing, at its step `step`: entered (its scene, view and
+    /// selection as the step sets them) or, for a change of words only, kept as it is on screen.
+    fn revise(&mut self, lesson: crate::lesson::Lesson, step: usize, enter: bool) {
+        self.reload_error = None;
+        let step = step.min(lesson.steps.len().saturating_sub(1));
+        self.lesson = Some(LessonPlayer::new(Arc::new(lesson), step));
+        if enter {
+            self.enter_step(step);
         }
     }
 
@@ -465,6 +490,7 @@ impl Session {
             | Command::TypeAnswer { .. }
             | Command::CheckAnswer
             | Command::ReloadLesson(_)
+            | Command::ReviseLesson { .. }
             | Command::SetReloadError(_) => {}
             Command::SelectBuffer(b) => sel.buffer = b,
             Command::ToggleOverlay(o) => {
@@ -535,7 +561,6 @@ impl Session {
     }
 }
 
-/// A first profile line to look at: across the middle row of the image.
 /// Where a scene file was loaded from, for the title.
 #[must_use]
 pub fn source_name(path: Option<&PathBuf>) -> String {
@@ -543,57 +568,4 @@ pub fn source_name(path: Option<&PathBuf>) -> String {
         || crate::lesson::DEFAULT_LESSON_NAME.to_owned(),
         |p| p.display().to_string(),
     )
-}
-
-/// What the stage and the step teach, that the inspector opens on.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Teaching {
-    /// The model matrix of object `k` (an index into the capture's objects).
-    Model(usize),
-    /// The matrix stack of the figures.
-    Stack,
-    /// The view matrix.
-    View,
-    /// The projection, in both courses' forms.
-    Projection,
-    /// The viewport transform.
-    Viewport,
-    /// The inspected pixel.
-    Pixel,
-}
-
-impl Session {
-    /// What the inspector should open on: the matrix the geometry stage applies (the model
-    /// matrix of the object in focus, or the figures' matrix stack; V; P; the viewport), and the
-    /// pixel on the pixel stages.
-    #[must_use]
-    pub fn teaching(&self) -> Teaching {
-        let sel = &self.selection;
-        let focus = sel.focus.as_deref().unwrap_or_default();
-        match sel.stage {
-            Stage::Model | Stage::World => {
-                let figures = &self.spec.scene.figures;
-                let focus_is_figure = focus.iter().any(|f| figures.iter().any(|g| &g.name == f));
-                if !figures.is_empty()
-                    && (focus.is_empty() || focus_is_figure)
-                    && sel.vertex.is_none()
-                {
-                    return Teaching::Stack;
-                }
-                let objects = self.capture.as_ref().map(|c| &c.objects);
-                let by_focus = focus
-                    .first()
-                    .and_then(|f| objects?.iter().position(|o| &o.name == f));
-                let by_vertex = sel.vertex.and_then(|v| {
-                    let c = self.capture.as_ref()?;
-                    Some(c.vertices.get(v as usize)?.object as usize)
-                });
-                Teaching::Model(by_focus.or(by_vertex).unwrap_or(0))
-            }
-            Stage::View => Teaching::View,
-            Stage::Clip | Stage::Ndc => Teaching::Projection,
-            Stage::Screen => Teaching::Viewport,
-            _ => Teaching::Pixel,
-        }
-    }
 }

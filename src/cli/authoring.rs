@@ -8,32 +8,8 @@ use anyhow::{Context, Result};
 
 use crate::lesson;
 
-/// The template `pipelens new-lesson` writes; `{id}` and `{file}` are filled in.
-const NEW_LESSON: &str = include_str!("../../assets/templates/new-lesson.toml");
-
-/// The template `pipelens new-lesson --lab` writes: a lab whose step is an exercise.
-const NEW_LAB: &str = include_str!("../../assets/templates/new-lab.toml");
-
 pub(super) fn new_lesson(file: &Path, lab: bool) -> Result<ExitCode> {
-    if file.extension().is_none_or(|e| e != "toml") {
-        anyhow::bail!(
-            "{}: a lesson file ends in .toml, e.g. lessons/20-my-lesson.toml",
-            file.display()
-        );
-    }
-    let id = file
-        .file_stem()
-        .and_then(|s| s.to_str())
-        .filter(|s| !s.is_empty() && !s.contains('"') && !s.contains('\\'))
-        .with_context(|| {
-            format!(
-                "{}: the file's name becomes the lesson's id; use letters, digits and -",
-                file.display()
-            )
-        })?;
-    let text = if lab { NEW_LAB } else { NEW_LESSON }
-        .replace("{id}", id)
-        .replace("{file}", &file.display().to_string());
+    let text = lesson::start::from_template(file, lab).map_err(anyhow::Error::msg)?;
     if let Some(dir) = file.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir)
             .with_context(|| format!("cannot create the folder {}", dir.display()))?;

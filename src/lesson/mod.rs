@@ -9,11 +9,13 @@
 
 pub mod answer;
 mod diagnostic;
+pub mod edit;
 pub mod library;
 pub mod param;
 pub mod raw;
 pub mod record;
 pub mod script;
+pub mod start;
 mod syntax;
 pub mod validate;
 

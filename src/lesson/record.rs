@@ -29,20 +29,25 @@ pub fn insert_step(text: &str, at: usize, step: &Step) -> Result<String, String>
     let mut doc: DocumentMut = text
         .parse()
         .map_err(|e| format!("the lesson file is not TOML: {e}"))?;
-    let mut table = step_table(step)?;
+    let table = step_table(step)?;
     let steps = doc
         .get_mut("steps")
         .and_then(Item::as_array_of_tables_mut)
         .ok_or("the lesson file has no [[steps]]")?;
+    put_step(steps, at, table);
+    Ok(doc.to_string())
+}
+
+/// `table` as step `at` of `steps` (past the end: the last), written in the file where the step
+/// it goes before was, before that step's comments (a tie in place goes by order).
+pub fn put_step(steps: &mut toml_edit::ArrayOfTables, at: usize, mut table: Table) {
     match steps.get(at).map(Table::position) {
-        // Written where the step it goes before was (a tie in position goes by order).
         Some(position) => {
             table.set_position(position);
             steps.insert(at, table);
         }
         None => steps.push(table),
     }
-    Ok(doc.to_string())
 }
 
 /// The languages `text` has no words in yet (blank counts as none).
@@ -86,66 +91,8 @@ pub fn step_table(step: &Step) -> Result<Table, String> {
         narration.insert(key, value(step.narration.get(lang)));
     }
     t.insert("narration", Item::Table(narration));
-    if let Some(stage) = step.stage {
-        t.insert("stage", value(stage.name(Lang::En).to_lowercase()));
-    }
-    if step.layout != Layout::Single && step.compare.is_none() {
-        let name = LAYOUTS
-            .iter()
-            .find(|(_, l)| *l == step.layout)
-            .map(|(n, _)| *n);
-        t.insert("layout", value(name.unwrap_or("single")));
-    }
-    if let Some(c) = step.compare {
-        t.insert("compare", value(c.key()));
-    }
-    if let Some(b) = step.buffer {
-        t.insert("buffer", value(b.name()));
-    }
-    if let Some(overlays) = &step.overlays {
-        let names: Array = overlays
-            .iter()
-            .filter_map(|o| OVERLAYS.iter().find(|(_, k)| k == o).map(|(n, _)| *n))
-            .collect();
-        t.insert("overlays", value(names));
-    }
-    if let Some(focus) = &step.focus {
-        t.insert(
-            "focus",
-            value(focus.iter().map(String::as_str).collect::<Array>()),
-        );
-    }
-    if let Some((x, y)) = step.pixel {
-        t.insert(
-            "pixel",
-            value(Array::from_iter([i64::from(x), i64::from(y)])),
-        );
-    }
-    if let Some(v) = step.vertex {
-        t.insert("vertex", value(i64::from(v)));
-    }
-    if let Some(p) = step.profile {
-        t.insert(
-            "profile",
-            value(p.map(number).into_iter().collect::<Array>()),
-        );
-    }
-    if let Some(r) = step.depth_range {
-        t.insert(
-            "depth_range",
-            value(r.map(number).into_iter().collect::<Array>()),
-        );
-    }
-    if !step.set.is_empty() {
-        let mut set = InlineTable::new();
-        for (name, v) in &step.set {
-            set.insert(name, param_value(v));
-        }
-        t.insert("set", value(set));
-    }
-    if !step.animate.is_empty() {
-        let list: Array = step.animate.iter().map(animation).collect();
-        t.insert("animate", value(list));
+    for (key, item) in view_items(step) {
+        t.insert(key, item);
     }
     if let Some(q) = &step.question {
         t.insert("question", value(text(q)));
@@ -154,6 +101,92 @@ pub fn step_table(step: &Step) -> Result<Table, String> {
         t.insert("answer", value(text(a)));
     }
     Ok(t)
+}
+
+/// The keys of a step that say what is on screen — everything "Update step" rewrites from the
+/// screen; the words, the shaders, an exercise and a typed answer are not among them.
+pub const VIEW_KEYS: [&str; 12] = [
+    "stage",
+    "layout",
+    "compare",
+    "buffer",
+    "overlays",
+    "focus",
+    "pixel",
+    "vertex",
+    "profile",
+    "depth_range",
+    "set",
+    "animate",
+];
+
+/// What `step` shows, as the `[[steps]]` entries of [`VIEW_KEYS`] it has, in the order a
+/// lesson's author writes them.
+#[must_use]
+pub fn view_items(step: &Step) -> Vec<(&'static str, Item)> {
+    let mut items = Vec::new();
+    if let Some(stage) = step.stage {
+        items.push(("stage", value(stage.name(Lang::En).to_lowercase())));
+    }
+    if step.layout != Layout::Single && step.compare.is_none() {
+        let name = LAYOUTS
+            .iter()
+            .find(|(_, l)| *l == step.layout)
+            .map(|(n, _)| *n);
+        items.push(("layout", value(name.unwrap_or("single"))));
+    }
+    if let Some(c) = step.compare {
+        items.push(("compare", value(c.key())));
+    }
+    if let Some(b) = step.buffer {
+        items.push(("buffer", value(b.name())));
+    }
+    if let Some(overlays) = &step.overlays {
+        let names: Array = overlays
+            .iter()
+            .filter_map(|o| OVERLAYS.iter().find(|(_, k)| k == o).map(|(n, _)| *n))
+            .collect();
+        items.push(("overlays", value(names)));
+    }
+    if let Some(focus) = &step.focus {
+        items.push((
+            "focus",
+            value(focus.iter().map(String::as_str).collect::<Array>()),
+        ));
+    }
+    if let Some((x, y)) = step.pixel {
+        items.push((
+            "pixel",
+            value(Array::from_iter([i64::from(x), i64::from(y)])),
+        ));
+    }
+    if let Some(v) = step.vertex {
+        items.push(("vertex", value(i64::from(v))));
+    }
+    if let Some(p) = step.profile {
+        items.push((
+            "profile",
+            value(p.map(number).into_iter().collect::<Array>()),
+        ));
+    }
+    if let Some(r) = step.depth_range {
+        items.push((
+            "depth_range",
+            value(r.map(number).into_iter().collect::<Array>()),
+        ));
+    }
+    if !step.set.is_empty() {
+        let mut set = InlineTable::new();
+        for (name, v) in &step.set {
+            set.insert(name, param_value(v));
+        }
+        items.push(("set", value(set)));
+    }
+    if !step.animate.is_empty() {
+        let list: Array = step.animate.iter().map(animation).collect();
+        items.push(("animate", value(list)));
+    }
+    items
 }
 
 /// `{ en = "…", zh = "…" }`, without a language left empty.

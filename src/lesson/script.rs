@@ -188,6 +188,16 @@ impl Lesson {
         spec
     }
 
+    /// The scene step `k` starts from: the one the step before it leaves (the lesson's scene
+    /// before the first).
+    #[must_use]
+    pub fn spec_before(&self, k: usize) -> SceneSpec {
+        match k.checked_sub(1) {
+            Some(before) => self.spec_at(before),
+            None => self.scene.clone(),
+        }
+    }
+
     /// The scene `t` seconds into step `k`: [`Self::spec_at`] with its animations applied.
     #[must_use]
     pub fn spec_playing(&self, k: usize, t: f32) -> SceneSpec {

@@ -7,6 +7,7 @@ mod authoring;
 mod cli;
 mod corpus;
 mod course;
+mod edit;
 mod handout;
 mod lab_hooks;
 mod labs;

@@ -1,92 +1,282 @@
-//! "Add step" (R): what is on screen, worded in both languages, is written into the lesson file
-//! after the current step.
+//! The lesson editor (R): a teacher records what is on screen as steps (a drag as an
+//! animation), words them in both languages, moves them, undoes and redoes, and saves the file;
+//! unsaved edits are kept in a recovery copy and offered again; a file changed on disk is not
+//! overwritten without asking; a new lesson starts from a mesh of one's own.
 
+use egui::accesskit::Role;
+use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
+use pipelens::app::PipelensApp;
 use pipelens::app::session::Command;
 use pipelens::lesson::param::{self, Value};
 
-/// A teacher opens lesson 17 from a file, turns the arm's base to 50° and inspects a pixel,
-/// presses R, words the step in English and Chinese and records it: the file then holds six
-/// steps, the new one second, with the stage, the layout, the pixel and the one parameter
-/// changed, and it still passes the checker. Without words the button writes nothing.
-#[test]
-fn a_step_is_recorded_from_the_screen_into_the_lesson_file() {
+fn copy_of(lesson: &str) -> (tempfile::TempDir, std::path::PathBuf) {
     let dir = tempfile::tempdir().expect("temp dir");
-    let file = dir.path().join("17-hierarchy.toml");
-    std::fs::copy(
-        crate::support::repo().join("lessons/17-hierarchy.toml"),
-        &file,
-    )
-    .expect("copied");
+    let file = dir.path().join(lesson);
+    std::fs::copy(crate::support::repo().join("lessons").join(lesson), &file).expect("copied");
+    (dir, file)
+}
+
+/// Types `text` into the `k`-th multi-line box of the window (the editor's, in order: the
+/// current step's title, narration, question and answer, English then Chinese; then the new
+/// step's title and narration).
+fn type_into(h: &mut Harness<'_, PipelensApp>, k: usize, text: &str) {
+    h.get_all_by_role(Role::MultilineTextInput)
+        .nth(k)
+        .expect("a box")
+        .focus();
+    h.run_steps(1);
+    h.get_all_by_role(Role::MultilineTextInput)
+        .nth(k)
+        .expect("a box")
+        .type_text(text);
+    h.run_steps(2);
+}
+
+/// A slider dragged from the scene on screen to `name = value`, as the app sees a drag: the
+/// draft starts before the first change and ends when the pointer is let go.
+fn drag(h: &mut Harness<'_, PipelensApp>, name: &str, value: f32) {
+    let s = &mut h.state_mut().session;
+    s.set_drafting(true);
+    let mut spec = s.spec.clone();
+    param::apply(&mut spec, name, &Value::Number(value)).expect("a parameter");
+    s.apply(Command::SetSpec(Box::new(spec)));
+    h.run_steps(3);
+}
+
+fn titles(h: &Harness<'_, PipelensApp>) -> Vec<String> {
+    super::lesson_of(h)
+        .steps
+        .iter()
+        .map(|s| s.title.en.clone())
+        .collect()
+}
+
+/// Lesson 17 from a file: R opens the editor; the arm's base dragged to 50° and a pixel
+/// inspected are a new step 2, worded in both languages, with an animation of the drag; the step
+/// moved down one, its question typed, the move undone and redone; the file untouched until
+/// Save (the edits kept meanwhile in a recovery copy), then written, and read back it is the
+/// lesson the app plays, passing `pipelens check`, every line the file had still there.
+#[test]
+fn a_lesson_is_recorded_arranged_and_saved_in_the_editor() {
+    let (dir, file) = copy_of("17-hierarchy.toml");
     let before = std::fs::read_to_string(&file).expect("reads");
+    let recovery = dir.path().join("17-hierarchy.toml.unsaved");
     let mut h = super::lesson_harness(Some(file.clone()));
     h.run_steps(2);
-    let mut spec = h.state().session.spec.clone();
-    param::apply(&mut spec, "figures.arm.base", &Value::Number(50.0)).expect("a joint");
-    h.state_mut()
-        .session
-        .apply(Command::SetSpec(Box::new(spec)));
+    h.key_press(egui::Key::R);
+    h.run_steps(3);
+    assert!(h.query_by_label_contains("Lesson editor").is_some());
+    drag(&mut h, "figures.arm.base", 50.0);
     h.state_mut()
         .session
         .apply(Command::SelectPixel(Some((120, 80))));
-    h.key_press(egui::Key::R);
-    h.run_steps(3);
-    assert!(h.query_by_label_contains("figures.arm.base = 50").is_some());
-    // Not worded yet: the note says so, and recording writes nothing.
-    assert!(
-        h.query_by_label_contains("The narration still needs")
-            .is_some()
-    );
-    h.get_by_label("Record as step 2").click();
     h.run_steps(2);
-    assert_eq!(std::fs::read_to_string(&file).expect("reads"), before);
     assert!(
-        h.query_by_label_contains("no narration in English and Chinese")
+        h.query_by_label_contains("set figures.arm.base = 50")
             .is_some()
     );
-    // Worded: title and narration, English and Chinese.
+    assert!(
+        h.query_by_label_contains("animate figures.arm.base : 30 → 50")
+            .is_some(),
+        "the drag is an animation from where it began"
+    );
+    // Not worded: the note says so, and adding is refused.
+    assert!(
+        h.query_by_label_contains("Still needs: English, 中文")
+            .is_some()
+    );
+    h.get_by_label("＋ Add as step 2").click_accesskit();
+    h.run_steps(2);
+    assert_eq!(titles(&h).len(), 5);
     let words = [
         "The base at 50°",
         "支架转到 50°",
-        "The whole arm turns with the base.",
+        "The whole arm turns with the base: **M = T·R_y·…**",
         "整条手臂随支架转动。",
     ];
     for (k, text) in words.iter().enumerate() {
-        let boxes: Vec<_> = h
-            .get_all_by_role(egui::accesskit::Role::MultilineTextInput)
-            .collect();
-        boxes[k].focus();
-        h.run_steps(1);
-        let boxes: Vec<_> = h
-            .get_all_by_role(egui::accesskit::Role::MultilineTextInput)
-            .collect();
-        boxes[k].type_text(text);
-        h.run_steps(1);
+        type_into(&mut h, 8 + k, text);
     }
-    h.get_by_label("Record as step 2").click();
-    h.run_steps(2);
-    assert!(h.query_by_label_contains("Written into").is_some());
-    let text = std::fs::read_to_string(&file).expect("reads");
-    let lesson = pipelens::lesson::script::parse_lesson(&text, "lesson.toml", dir.path())
-        .unwrap_or_else(|e| panic!("{e}"));
+    h.get_by_label("＋ Add as step 2").click_accesskit();
+    h.run_steps(3);
+    let lesson = super::lesson_of(&h);
     assert_eq!(lesson.steps.len(), 6);
+    assert_eq!(h.state().session.lesson.as_ref().map(|p| p.step), Some(1));
     let step = &lesson.steps[1];
     assert_eq!(
         (step.title.en.as_str(), step.title.zh.as_str()),
         (words[0], words[1])
     );
-    assert_eq!(step.narration.en, words[2]);
     assert_eq!(step.pixel, Some((120, 80)));
-    assert_eq!(step.stage, Some(pipelens::vocabulary::Stage::World));
     assert_eq!(
         step.set,
         [("figures.arm.base".to_owned(), Value::Number(50.0))]
     );
-    // The file passes `pipelens check`, every line it had still there.
-    let o = crate::support::pipelens(dir.path(), &["check", "17-hierarchy.toml"]);
+    let a = &step.animate[0];
+    assert_eq!(
+        (a.param.as_str(), &a.from, &a.to),
+        (
+            "figures.arm.base",
+            &Value::Number(30.0),
+            &Value::Number(50.0)
+        )
+    );
+    // Not saved yet: the file is as it was, the edits in the recovery copy beside it.
+    assert_eq!(std::fs::read_to_string(&file).expect("reads"), before);
+    assert!(recovery.exists(), "a recovery copy keeps the unsaved edits");
+    assert!(h.query_by_label_contains("● unsaved changes").is_some());
+    // Moved down one, and a question typed on the step.
+    h.get_by_label("▼ Later").click_accesskit();
+    h.run_steps(3);
+    assert_eq!(titles(&h)[2], words[0]);
+    assert_eq!(h.state().session.lesson.as_ref().map(|p| p.step), Some(2));
+    type_into(&mut h, 4, "Where is the elbow now?");
+    type_into(&mut h, 5, "肘部现在在哪里？");
+    let asked = super::lesson_of(&h).steps[2]
+        .question
+        .clone()
+        .expect("asked");
+    assert_eq!(asked.en, "Where is the elbow now?");
+    // Undo takes the Chinese question back, then the English one, then the move; redo brings
+    // the move back.
+    for _ in 0..3 {
+        h.get_by_label("↶ Undo").click_accesskit();
+        h.run_steps(3);
+    }
+    assert_eq!(titles(&h)[1], words[0], "the move undone");
+    assert!(super::lesson_of(&h).steps[1].question.is_none());
+    h.get_by_label("↷ Redo").click_accesskit();
+    h.run_steps(3);
+    assert_eq!(titles(&h)[2], words[0], "the move redone");
+    saved_as_played(&mut h, &file, &before);
+    assert!(!recovery.exists(), "saved: no recovery copy");
+}
+
+/// Save: the file read back is the lesson the app plays, passes `pipelens check`, and keeps
+/// every line it had `before`.
+fn saved_as_played(h: &mut Harness<'_, PipelensApp>, file: &std::path::Path, before: &str) {
+    h.get_by_label("Save").click_accesskit();
+    h.run_steps(3);
+    assert!(h.query_by_label_contains("saved:").is_some());
+    let dir = file.parent().expect("a folder");
+    let saved = std::fs::read_to_string(file).expect("reads");
+    let back = pipelens::lesson::script::parse_lesson(&saved, "lesson.toml", dir)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        back.steps,
+        super::lesson_of(h).steps,
+        "the file reads back as the lesson played"
+    );
+    let name = file.file_name().expect("a name").to_string_lossy();
+    let o = crate::support::pipelens(dir, &["check", &name]);
     assert!(o.status.success(), "{}", crate::support::text(&o));
-    let mut lines = text.lines();
+    let mut lines = saved.lines();
     for line in before.lines() {
         assert!(lines.any(|l| l == line), "lost: {line}");
     }
+}
+
+/// Unsaved edits outlive the app: a recovery copy beside the file is offered when the lesson is
+/// opened again, and restored it is what the app plays. A file changed on disk while edits are
+/// unsaved is not reloaded over them, and Save asks before overwriting it.
+#[test]
+fn unsaved_edits_are_offered_again_and_a_changed_file_is_not_overwritten_unasked() {
+    let (dir, file) = copy_of("17-hierarchy.toml");
+    let before = std::fs::read_to_string(&file).expect("reads");
+    let edited = before.replacen("The robot arm", "The robot arm, kept", 1);
+    assert_ne!(edited, before);
+    std::fs::write(dir.path().join("17-hierarchy.toml.unsaved"), &edited).expect("written");
+    let mut h = super::lesson_harness(Some(file.clone()));
+    h.run_steps(3);
+    assert!(
+        h.query_by_label_contains("Unsaved changes to this lesson were kept")
+            .is_some()
+    );
+    assert!(
+        dir.path().join("17-hierarchy.toml.unsaved").exists(),
+        "the copy stays until the teacher chooses"
+    );
+    h.get_by_label("Restore them").click_accesskit();
+    h.run_steps(3);
+    assert_eq!(titles(&h)[0], "The robot arm, kept");
+    // Someone else changes the file meanwhile: the edits stay on screen.
+    let theirs = format!("{before}\n# changed elsewhere\n");
+    std::fs::write(&file, &theirs).expect("written");
+    std::thread::sleep(std::time::Duration::from_millis(600));
+    h.run_steps(3);
+    assert_eq!(titles(&h)[0], "The robot arm, kept");
+    assert!(
+        h.query_by_label_contains("The file changed on disk")
+            .is_some()
+    );
+    h.get_by_label("Save").click_accesskit();
+    h.run_steps(3);
+    assert_eq!(
+        std::fs::read_to_string(&file).expect("reads"),
+        theirs,
+        "asked first"
+    );
+    h.get_by_label("Overwrite it with my edits")
+        .click_accesskit();
+    h.run_steps(3);
+    assert_eq!(std::fs::read_to_string(&file).expect("reads"), edited);
+    assert!(!dir.path().join("17-hierarchy.toml.unsaved").exists());
+}
+
+/// A mesh of one's own: "New lesson", from a mesh file, writes a lesson file on it beside the
+/// mesh and opens it; it passes `pipelens check`.
+#[test]
+fn a_new_lesson_starts_from_a_mesh_of_ones_own() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let mesh = dir.path().join("tetra.obj");
+    std::fs::write(
+        &mesh,
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n",
+    )
+    .expect("written");
+    let file = dir.path().join("my-tetra.toml");
+    let mut h = super::lesson_harness(None);
+    h.run_steps(2);
+    // The tour, as the app opens on it.
+    h.state_mut().session.source = pipelens::lesson::DEFAULT_LESSON_NAME.to_owned();
+    h.key_press(egui::Key::R);
+    h.run_steps(2);
+    // The tour is built in: not edited in place, made one's own first.
+    assert!(
+        h.query_by_label_contains("A built-in lesson is not edited in place")
+            .is_some()
+    );
+    h.get_by_label("New lesson…").click_accesskit();
+    h.run_steps(2);
+    h.get_by_label("from a mesh of your own (.obj; or drop one on the window):")
+        .click_accesskit();
+    h.run_steps(2);
+    // The last two one-line boxes: the mesh, and where the lesson is written.
+    let n = h.get_all_by_role(Role::TextInput).count();
+    for (k, text) in [
+        (n - 2, mesh.display().to_string()),
+        (n - 1, file.display().to_string()),
+    ] {
+        h.get_all_by_role(Role::TextInput)
+            .nth(k)
+            .expect("a box")
+            .focus();
+        h.run_steps(1);
+        h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+        h.run_steps(1);
+        h.get_all_by_role(Role::TextInput)
+            .nth(k)
+            .expect("a box")
+            .type_text(&text);
+        h.run_steps(1);
+    }
+    h.get_by_label("Make the lesson").click_accesskit();
+    h.run_steps(4);
+    let text = std::fs::read_to_string(&file).expect("written");
+    assert!(text.contains("mesh = \"tetra.obj\""), "{text}");
+    assert_eq!(h.state().session.source, file.display().to_string());
+    assert_eq!(super::lesson_of(&h).id, "my-tetra");
+    let o = crate::support::pipelens(dir.path(), &["check", "my-tetra.toml"]);
+    assert!(o.status.success(), "{}", crate::support::text(&o));
 }

@@ -1,0 +1,239 @@
+//! "New lesson": a lesson file of one's own, started from the scene on screen (with one step
+//! recorded from what it shows), from a built-in lesson, or from a mesh file (the template with
+//! the mesh in place of its sphere; a `.obj` dropped on the window fills it in). On the desktop
+//! the file is written (never over an existing one) and opened, watched and edited; in the
+//! browser it is opened and edited, and saving it is a download.
+
+use std::path::{Path, PathBuf};
+
+use egui::RichText;
+
+use crate::app::session::Session;
+use crate::lesson::{self, Document, library, start};
+use crate::vocabulary::{Lang, Text};
+
+/// What a new lesson starts from.
+#[derive(Clone, Debug, PartialEq, Eq, Default)]
+pub enum From {
+    /// The scene on screen and a step recorded from it.
+    #[default]
+    Screen,
+    /// A built-in lesson, by the session's name for it (`lessons/05-perspective.toml (built in)`).
+    Builtin(String),
+    /// The template, with a mesh file.
+    Mesh,
+}
+
+/// The "New lesson" part of the editor.
+#[derive(Default)]
+pub struct NewLesson {
+    /// Whether it is unfolded.
+    pub show: bool,
+    /// What it starts from.
+    pub from: From,
+    /// Where it is written (a file name in the browser).
+    pub path: String,
+    /// The mesh file, for [`From::Mesh`].
+    pub mesh: String,
+}
+
+/// A lesson made: the app opens it and the editor takes it up.
+pub struct Made {
+    /// The lesson, read back from its text.
+    pub doc: Document,
+    /// The session's name for it.
+    pub source: String,
+    /// The file it was written to (the desktop).
+    pub file: Option<PathBuf>,
+    /// Its text.
+    pub text: String,
+    /// What to tell the teacher.
+    pub said: String,
+}
+
+impl NewLesson {
+    /// The part, folded under its header; `Some` when a lesson was made (or failed to be).
+    pub fn ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        session: &Session,
+        lang: Lang,
+        current: Option<&str>,
+    ) -> Option<Result<Made, String>> {
+        if self.path.is_empty() {
+            self.path = default_path();
+        }
+        let header = egui::CollapsingHeader::new(
+            RichText::new(lang.tr("New lesson…", "新建课程…")).strong(),
+        )
+        .id_salt("new-lesson")
+        .open(self.show.then_some(true))
+        .show(ui, |ui| self.contents(ui, session, lang, current));
+        if header.header_response.clicked() {
+            self.show = !self.show;
+        }
+        header.body_returned.flatten()
+    }
+
+    fn contents(
+        &mut self,
+        ui: &mut egui::Ui,
+        session: &Session,
+        lang: Lang,
+        current: Option<&str>,
+    ) -> Option<Result<Made, String>> {
+        ui.radio_value(
+            &mut self.from,
+            From::Screen,
+            lang.tr(
+                "from the scene on screen, with this view as its first step",
+                "从屏幕上的场景开始，当前画面作为第一步",
+            ),
+        );
+        let builtin = matches!(self.from, From::Builtin(_));
+        if ui
+            .radio(
+                builtin,
+                lang.tr("from a built-in lesson:", "从一个内置课程开始："),
+            )
+            .clicked()
+            && !builtin
+        {
+            self.from = From::Builtin(session.source.clone());
+        }
+        if let From::Builtin(name) = &mut self.from {
+            let shown = name
+                .strip_prefix("lessons/")
+                .and_then(|n| n.strip_suffix(" (built in)"))
+                .unwrap_or("—")
+                .to_owned();
+            egui::ComboBox::from_id_salt("new-lesson-builtin")
+                .selected_text(shown)
+                .show_ui(ui, |ui| {
+                    for (file, _) in library::LESSONS {
+                        ui.selectable_value(name, format!("lessons/{file} (built in)"), file);
+                    }
+                });
+        }
+        ui.radio_value(
+            &mut self.from,
+            From::Mesh,
+            lang.tr(
+                "from a mesh of your own (.obj; or drop one on the window):",
+                "从你自己的网格开始（.obj；也可以把文件拖到窗口上）：",
+            ),
+        );
+        if self.from == From::Mesh {
+            ui.add(
+                egui::TextEdit::singleline(&mut self.mesh)
+                    .hint_text("/path/to/model.obj")
+                    .desired_width(f32::INFINITY),
+            );
+        }
+        ui.horizontal(|ui| {
+            ui.label(if super::super::platform::WRITES_FILES {
+                lang.tr("Write it to:", "写入：")
+            } else {
+                lang.tr("Name:", "名称：")
+            });
+            ui.add(egui::TextEdit::singleline(&mut self.path).desired_width(f32::INFINITY));
+        });
+        ui.button(lang.tr("Make the lesson", "新建课程"))
+            .clicked()
+            .then(|| self.make(session, current))
+    }
+
+    /// The lesson's text, written (the desktop) and read back.
+    fn make(&self, session: &Session, current: Option<&str>) -> Result<Made, String> {
+        let file = PathBuf::from(self.path.trim());
+        let text = match &self.from {
+            From::Screen => {
+                let source = current.ok_or("nothing on screen to start from")?;
+                start::from_scene(source, &file, &first_step(session)?)?
+            }
+            // The lesson open, as it is on screen.
+            From::Builtin(name) if *name == session.source && current.is_some() => {
+                start::renamed(current.unwrap_or_default(), &file)?
+            }
+            From::Builtin(name) => {
+                let text = library::LESSONS
+                    .iter()
+                    .find(|(f, _)| {
+                        Some(*f)
+                            == name
+                                .strip_prefix("lessons/")
+                                .and_then(|n| n.strip_suffix(" (built in)"))
+                    })
+                    .map(|(_, t)| *t)
+                    .ok_or("choose a built-in lesson")?;
+                start::renamed(text, &file)?
+            }
+            From::Mesh => {
+                let mesh = Path::new(self.mesh.trim());
+                if self.mesh.trim().is_empty() {
+                    return Err("name the mesh file (.obj)".to_owned());
+                }
+                start::from_mesh(&file, &super::file::mesh_from(&file, mesh))?
+            }
+        };
+        let (doc, file) = if super::super::platform::WRITES_FILES {
+            if file.exists() {
+                return Err(format!(
+                    "{} exists already: choose another name (it was left as it is)",
+                    file.display()
+                ));
+            }
+            if let Some(dir) = file.parent().filter(|d| !d.as_os_str().is_empty()) {
+                std::fs::create_dir_all(dir)
+                    .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+            }
+            let doc = lesson::parse_document(
+                &text,
+                &file.display().to_string(),
+                file.parent().unwrap_or(Path::new(".")),
+            )
+            .map_err(|e| e.to_string())?;
+            crate::export::write_atomically(&file, text.as_bytes())
+                .map_err(|e| format!("{e:#}"))?;
+            (doc, Some(file))
+        } else {
+            let doc = lesson::parse_document(&text, &file.display().to_string(), Path::new("."))
+                .map_err(|e| e.to_string())?;
+            (doc, None)
+        };
+        let source = file
+            .as_ref()
+            .map_or_else(|| self.path.trim().to_owned(), |f| f.display().to_string());
+        Ok(Made {
+            said: format!("new lesson: {source}"),
+            doc,
+            source,
+            file,
+            text,
+        })
+    }
+}
+
+/// The step on screen as a new lesson's first step: what differs from the lesson's scene as
+/// `set`, words for the teacher to replace.
+fn first_step(session: &Session) -> Result<lesson::Step, String> {
+    let player = session.lesson.as_ref().ok_or("no lesson open")?;
+    let mut step = crate::app::record::recorded_step(session).ok_or("no lesson open")?;
+    step.set = lesson::param::differences(&player.lesson.scene, &session.spec);
+    step.narration = Text {
+        en: "Write here what the viewer should see, and why.".to_owned(),
+        zh: "在这里写下观众应当看到什么、为什么。".to_owned(),
+    };
+    Ok(step)
+}
+
+/// `my-lesson.toml` in the folder the app was started in (a name only in the browser).
+fn default_path() -> String {
+    let name = "my-lesson.toml";
+    if super::super::platform::WRITES_FILES {
+        std::env::current_dir()
+            .map_or_else(|_| name.to_owned(), |d| d.join(name).display().to_string())
+    } else {
+        name.to_owned()
+    }
+}

@@ -1,0 +1,121 @@
+//! What is on screen, recorded: the parameters changed since the step began (as `set`), the
+//! sliders dragged while the editor was open (as `animate`, their seconds editable), added as a
+//! new step after the current one — its words typed first — or written into the current one.
+
+use egui::RichText;
+
+use super::{Editor, words};
+use crate::app::session::{Command, Session};
+use crate::lesson::param;
+use crate::vocabulary::Lang;
+
+impl Editor {
+    /// What is on screen: the parameters changed since the step began, the drags recorded as
+    /// animations (their seconds editable), added as a new step after this one (its words typed
+    /// first) or written into this one.
+    pub(super) fn on_screen(
+        &mut self,
+        ui: &mut egui::Ui,
+        session: &Session,
+        lang: Lang,
+        out: &mut Vec<Command>,
+    ) {
+        let (Some(player), Some(mut step)) =
+            (&session.lesson, crate::app::record::recorded_step(session))
+        else {
+            return;
+        };
+        let k = player.step;
+        ui.label(RichText::new(lang.tr("What is on screen", "屏幕上的内容")).strong());
+        ui.label(RichText::new(lang.tr(
+            "The stage, buffer, layout, overlays, inspected pixel, selected vertex and every parameter changed since this step began. Drag a slider while this window is open to record an animation.",
+            "阶段、缓冲、布局、叠加层、所检查的像素、选中的顶点，以及本步骤开始以来改动过的每个参数。窗口打开时拖动滑块即可录制动画。",
+        )).small());
+        if step.set.is_empty() {
+            ui.label(lang.tr("No parameter changed.", "没有改动参数。"));
+        }
+        for (name, value) in &step.set {
+            ui.monospace(format!("set {name} = {value}"));
+        }
+        let mut drop = None;
+        for (i, a) in self.drags.iter_mut().enumerate() {
+            ui.horizontal(|ui| {
+                ui.monospace(format!("animate {} : {} → {}", a.param, a.from, a.to));
+                ui.add(
+                    egui::DragValue::new(&mut a.seconds)
+                        .range(0.5..=60.0)
+                        .speed(0.1)
+                        .suffix(" s"),
+                )
+                .on_hover_text(lang.tr(
+                    "Seconds from the first value to the last",
+                    "从起始值到结束值的秒数",
+                ));
+                if ui
+                    .small_button("×")
+                    .on_hover_text(lang.tr("Not an animation", "不作为动画"))
+                    .clicked()
+                {
+                    drop = Some(i);
+                }
+            });
+        }
+        if let Some(i) = drop {
+            self.drags.remove(i);
+        }
+        step.animate.clone_from(&self.drags);
+        let Some(doc) = &mut self.doc else {
+            return;
+        };
+        let mut result = None;
+        let mut go = k;
+        if ui
+            .button(match lang {
+                Lang::En => format!("Update step {} from the screen", k + 1),
+                Lang::Zh => format!("用屏幕内容更新第 {} 步", k + 1),
+            })
+            .on_hover_text(lang.tr(
+                "Its words, shaders and exercise are kept",
+                "保留它的文字、着色器和练习",
+            ))
+            .clicked()
+        {
+            // `set` counts from the step before this one.
+            step.set = param::differences(&player.lesson.spec_before(k), &session.spec);
+            result = Some(doc.draft.update(k, &step));
+        }
+        ui.add_space(6.0);
+        ui.label(
+            RichText::new(match lang {
+                Lang::En => format!("A new step {}: its words", k + 2),
+                Lang::Zh => format!("新的第 {} 步：文字", k + 2),
+            })
+            .strong(),
+        );
+        words::pair(ui, lang.tr("Title", "标题"), &mut self.fresh[0], 1);
+        words::pair(ui, lang.tr("Narration", "讲解"), &mut self.fresh[1], 3);
+        words::missing_note(ui, lang, &self.fresh[1]);
+        if ui
+            .button(match lang {
+                Lang::En => format!("＋ Add as step {}", k + 2),
+                Lang::Zh => format!("＋ 添加为第 {} 步", k + 2),
+            })
+            .clicked()
+        {
+            if crate::lesson::record::unworded(&self.fresh[0]).len() < 2 {
+                step.title = self.fresh[0].clone();
+            }
+            step.narration = self.fresh[1].clone();
+            result = Some(doc.draft.insert(k + 1, &step).map(|()| {
+                self.fresh = Default::default();
+                self.drags.clear();
+            }));
+            go = k + 1;
+        }
+        match result {
+            Some(Ok(())) => self.revised(session, Some(go), out),
+            Some(Err(e)) => self.said = Some(Err(e)),
+            None => {}
+        }
+    }
+}

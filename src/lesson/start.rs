@@ -1,0 +1,158 @@
+//! A new lesson's first text: the template `pipelens new-lesson` writes (every key a step can
+//! take, with comments), the same with a mesh of one's own in place of its sphere, or the scene
+//! on screen — a lesson's or a scene file's, with their comments — and one step recorded from
+//! what is on screen. Each reads back through `check` as a lesson.
+
+use std::path::Path;
+
+use toml_edit::{DocumentMut, InlineTable, Item, Table, value};
+
+use super::Step;
+use super::record::step_table;
+
+/// The template of a new lesson (`assets/templates/new-lesson.toml`).
+pub const NEW_LESSON: &str = include_str!("../../assets/templates/new-lesson.toml");
+
+/// The template of a new lab (`assets/templates/new-lab.toml`).
+pub const NEW_LAB: &str = include_str!("../../assets/templates/new-lab.toml");
+
+/// The lesson's id a file's name gives: its name without `.toml`.
+///
+/// # Errors
+/// When the file does not end in `.toml`, or its name could not be a TOML string as written.
+pub fn id_of(file: &Path) -> Result<String, String> {
+    if file.extension().is_none_or(|e| e != "toml") {
+        return Err(format!(
+            "{}: a lesson file ends in .toml, e.g. lessons/20-my-lesson.toml",
+            file.display()
+        ));
+    }
+    file.file_stem()
+        .and_then(|s| s.to_str())
+        .filter(|s| !s.is_empty() && !s.contains('"') && !s.contains('\\'))
+        .map(str::to_owned)
+        .ok_or_else(|| {
+            format!(
+                "{}: the file's name becomes the lesson's id; use letters, digits and -",
+                file.display()
+            )
+        })
+}
+
+/// The template (a lab's with `lab`) for the lesson file `file`.
+///
+/// # Errors
+/// See [`id_of`].
+pub fn from_template(file: &Path, lab: bool) -> Result<String, String> {
+    let id = id_of(file)?;
+    Ok(if lab { NEW_LAB } else { NEW_LESSON }
+        .replace("{id}", &id)
+        .replace("{file}", &file.display().to_string()))
+}
+
+/// The template for `file` with the mesh file `mesh` (a path from the lesson's folder, or
+/// absolute) in place of its sphere, fitted into the unit sphere, and the template's first step
+/// only (the rest are for the teacher to record).
+///
+/// # Errors
+/// See [`id_of`].
+pub fn from_mesh(file: &Path, mesh: &str) -> Result<String, String> {
+    let mut doc = parse(&from_template(file, false)?)?;
+    let objects = doc["scene"]["objects"]
+        .as_array_of_tables_mut()
+        .ok_or("the template has no objects")?;
+    let model = objects
+        .iter_mut()
+        .find(|o| o.get("name").and_then(Item::as_str) == Some("model"))
+        .ok_or("the template has no object named model")?;
+    let name = Path::new(mesh)
+        .file_stem()
+        .map_or_else(|| "model".to_owned(), |s| s.to_string_lossy().into_owned());
+    set_keeping_comment(model, "mesh", value(mesh));
+    let mut label = InlineTable::new();
+    label.insert("en", name.as_str().into());
+    label.insert("zh", name.as_str().into());
+    set_keeping_comment(model, "label", value(label));
+    let steps = doc["steps"]
+        .as_array_of_tables_mut()
+        .ok_or("the template has no steps")?;
+    while steps.len() > 1 {
+        steps.remove(1);
+    }
+    Ok(doc.to_string())
+}
+
+/// The lesson `source` (a built-in lesson's text, say) as the lesson file `file`: the same,
+/// its id the file's name.
+///
+/// # Errors
+/// When `source` is not a lesson file's TOML, or see [`id_of`].
+pub fn renamed(source: &str, file: &Path) -> Result<String, String> {
+    let id = id_of(file)?;
+    let mut doc = parse(source)?;
+    let header = doc
+        .get_mut("lesson")
+        .and_then(Item::as_table_mut)
+        .ok_or("the file has no [lesson]")?;
+    set_keeping_comment(header, "id", value(id.as_str()));
+    Ok(doc.to_string())
+}
+
+/// A lesson for `file` on the scene of `source` (a lesson's or a scene file's text; its
+/// comments kept), its `[lesson]` header new, its steps replaced by `step`.
+///
+/// # Errors
+/// When `source` is not TOML, `file` is not a lesson file's name (see [`id_of`]) or `step`
+/// cannot be written (see [`step_table`]).
+pub fn from_scene(source: &str, file: &Path, step: &Step) -> Result<String, String> {
+    let id = id_of(file)?;
+    let mut doc = parse(source)?;
+    doc.remove("steps");
+    let mut header = Table::new();
+    header.insert("id", value(id.as_str()));
+    header.insert("title", value(text("A new lesson", "新的一课")));
+    header.insert(
+        "summary",
+        value(text(
+            "What this lesson teaches, in one or two sentences.",
+            "这一课讲什么，一两句话。",
+        )),
+    );
+    header.insert("prerequisites", value(toml_edit::Array::new()));
+    match doc.get_mut("lesson").and_then(Item::as_table_mut) {
+        // A lesson's header keeps its place and comments; its keys are the new lesson's.
+        Some(old) => {
+            old.clear();
+            old.extend(header.iter().map(|(k, v)| (k.to_owned(), v.clone())));
+        }
+        None => {
+            // First in the file, as the template has it.
+            header.set_position(Some(-1));
+            doc.insert("lesson", Item::Table(header));
+        }
+    }
+    let mut steps = toml_edit::ArrayOfTables::new();
+    steps.push(step_table(step)?);
+    doc.insert("steps", Item::ArrayOfTables(steps));
+    Ok(doc.to_string())
+}
+
+fn parse(text: &str) -> Result<DocumentMut, String> {
+    text.parse()
+        .map_err(|e| format!("the file is not TOML: {e}"))
+}
+
+fn text(en: &str, zh: &str) -> InlineTable {
+    let mut t = InlineTable::new();
+    t.insert("en", en.into());
+    t.insert("zh", zh.into());
+    t
+}
+
+/// `table[key] = item`, the comment after the old value kept.
+fn set_keeping_comment(table: &mut Table, key: &str, mut item: Item) {
+    if let (Some(old), Some(new)) = (table.get(key).and_then(Item::as_value), item.as_value_mut()) {
+        *new.decor_mut() = old.decor().clone();
+    }
+    table.insert(key, item);
+}
