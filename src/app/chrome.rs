@@ -385,8 +385,16 @@ impl PipelensApp {
         if ctx.egui_wants_keyboard_input() {
             return;
         }
-        let pressed =
-            |k: egui::Key| ctx.input(|i| i.key_pressed(k) && !i.modifiers.ctrl && !i.modifiers.alt);
+        // The key's own modifiers, not those at the end of the frame: a Ctrl+S whose Ctrl is let
+        // go within the frame is still a shortcut, not S.
+        let pressed = |k: egui::Key| {
+            ctx.input(|i| {
+                i.events.iter().any(|e| {
+                    matches!(e, egui::Event::Key { key, pressed: true, modifiers, .. }
+                        if *key == k && !modifiers.ctrl && !modifiers.alt && !modifiers.command)
+                })
+            })
+        };
         let (left, right) = (
             pressed(egui::Key::ArrowLeft) || pressed(egui::Key::PageUp),
             pressed(egui::Key::ArrowRight) || pressed(egui::Key::PageDown),

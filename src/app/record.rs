@@ -16,7 +16,9 @@ use pipeline::overlay::OverlayKind;
 pub fn recorded_step(session: &Session) -> Option<Step> {
     let player = session.lesson.as_ref()?;
     let sel = &session.selection;
-    let before = player.lesson.spec_at(player.step);
+    // The scene the step shows by itself (its animations at the time they are at): what the
+    // teacher changed is what differs from it.
+    let before = player.lesson.spec_playing(player.step, player.time);
     let mut overlays: Vec<Overlay> = sel
         .overlays
         .iter()
@@ -51,7 +53,8 @@ pub fn recorded_step(session: &Session) -> Option<Step> {
         animate: Vec::new(),
         pixel: sel.pixel,
         vertex: sel.vertex,
-        profile: sel.profile,
+        // The profile plot is drawn under compared images only.
+        profile: sel.profile.filter(|_| sel.comparison.is_some()),
         focus: sel.focus.clone(),
         depth_range: sel.depth_view.range,
         shader: None,

@@ -26,27 +26,38 @@ pub enum Words {
     Question,
     /// `answer`, shown on request (optional).
     Answer,
+    /// The lesson's own `title`, in `[lesson]` (the step `at` it is asked with is not read).
+    LessonTitle,
+    /// The lesson's `summary`, in `[lesson]`.
+    Summary,
 }
 
 impl Words {
-    /// All four, in the card's order.
+    /// A step's four, in the card's order.
     pub const ALL: [Self; 4] = [Self::Title, Self::Narration, Self::Question, Self::Answer];
 
     /// The key in a `[[steps]]` table.
     #[must_use]
     pub fn key(self) -> &'static str {
         match self {
-            Self::Title => "title",
+            Self::Title | Self::LessonTitle => "title",
             Self::Narration => "narration",
             Self::Question => "question",
             Self::Answer => "answer",
+            Self::Summary => "summary",
         }
     }
 
-    /// Whether a step must have it, in both languages.
+    /// Whether the file must have it, in both languages.
     #[must_use]
     pub fn required(self) -> bool {
-        matches!(self, Self::Title | Self::Narration)
+        !matches!(self, Self::Question | Self::Answer)
+    }
+
+    /// Whether it is the lesson's (in `[lesson]`) rather than a step's.
+    #[must_use]
+    pub fn of_lesson(self) -> bool {
+        matches!(self, Self::LessonTitle | Self::Summary)
     }
 }
 
@@ -361,17 +372,21 @@ impl Draft {
         })
     }
 
-    /// The words `which` of step `at`, in both languages, as the file has them now (empty when
-    /// it has none).
+    /// The words `which` of step `at` (or of the lesson), in both languages, as the file has them
+    /// now (empty when it has none).
     #[must_use]
     pub fn words(&self, at: usize, which: Words) -> Text {
         let doc = parse(&self.now.text).ok();
-        let item = doc
-            .as_ref()
-            .and_then(|d| d.get("steps"))
-            .and_then(Item::as_array_of_tables)
-            .and_then(|s| s.get(at))
-            .and_then(|t| t.get(which.key()));
+        let table = doc.as_ref().and_then(|d| {
+            if which.of_lesson() {
+                d.get("lesson").and_then(Item::as_table)
+            } else {
+                d.get("steps")
+                    .and_then(Item::as_array_of_tables)
+                    .and_then(|s| s.get(at))
+            }
+        });
+        let item = table.and_then(|t| t.get(which.key()));
         let read = |lang: &str| {
             item.and_then(|i| i.get(lang))
                 .and_then(Item::as_str)
@@ -384,8 +399,8 @@ impl Draft {
         }
     }
 
-    /// The words `which` of step `at` in `lang` are `words`. Typing on in the same box is one
-    /// change to undo. An optional text (question, answer) empty in both languages is removed.
+    /// The words `which` of step `at` (or of the lesson) in `lang` are `words`. Typing on in the
+    /// same box is one change to undo. An optional text (question, answer) empty in both languages is removed.
     ///
     /// # Errors
     /// When there is no step `at`.
@@ -396,13 +411,22 @@ impl Draft {
         lang: Lang,
         words: &str,
     ) -> Result<(), String> {
-        let Some(&id) = self.now.ids.get(at) else {
-            return Err(no_step(at));
+        // The lesson's words are typed in boxes of their own, whichever step is on screen.
+        let id = if which.of_lesson() {
+            u64::MAX
+        } else {
+            *self.now.ids.get(at).ok_or_else(|| no_step(at))?
         };
         let key = if lang == Lang::En { "en" } else { "zh" };
         let other = if lang == Lang::En { "zh" } else { "en" };
         self.change(Some((id, which, lang)), |doc, _| {
-            let t = step_mut(doc, at)?;
+            let t = if which.of_lesson() {
+                doc.get_mut("lesson")
+                    .and_then(Item::as_table_mut)
+                    .ok_or("the lesson file has no [lesson]")?
+            } else {
+                step_mut(doc, at)?
+            };
             let name = which.key();
             let empty_other = t
                 .get(name)

@@ -183,6 +183,17 @@ fn words_typed_in_the_editor_are_the_steps_words() {
         assert!(d.undo());
     }
     assert_eq!(d.text(), original);
+    // The lesson's own title and summary, in `[lesson]`, whichever step is asked.
+    d.set_words(3, Words::LessonTitle, Lang::En, "Perspective, by hand")
+        .expect("typed");
+    d.set_words(0, Words::Summary, Lang::Zh, "透视投影，一步一步。")
+        .expect("typed");
+    let l = lesson(&d);
+    assert_eq!(l.title.en, "Perspective, by hand");
+    assert_eq!(l.summary.zh, "透视投影，一步一步。");
+    assert_eq!(d.words(1, Words::LessonTitle).en, "Perspective, by hand");
+    assert!(d.undo() && d.undo());
+    assert_eq!(d.text(), original);
     // A question emptied in both languages is gone from the file.
     d.set_words(0, Words::Question, Lang::En, "Why?")
         .expect("typed");

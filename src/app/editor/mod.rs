@@ -31,8 +31,9 @@ pub struct Editor {
     /// The lesson being edited (the one open in the session, once the window was opened or a
     /// recovery copy was found).
     pub doc: Option<Edited>,
-    /// The words of the step shown in the boxes, and the step and revision they were read at.
-    words: [Text; 4],
+    /// The words in the boxes (the lesson's title and summary, the step's four), and the step
+    /// and revision they were read at.
+    words: [Text; 6],
     words_for: Option<(usize, u64)>,
     /// The words of a new step, typed before it is added.
     fresh: [Text; 2],
@@ -494,7 +495,10 @@ impl Editor {
             }
         });
         match result {
-            Some(Ok(())) => self.revised(session, moved, out),
+            Some(Ok(())) => {
+                self.said = None;
+                self.revised(session, moved, out);
+            }
             Some(Err(e)) => self.said = Some(Err(e)),
             None => {}
         }

@@ -37,32 +37,7 @@ impl Editor {
         for (name, value) in &step.set {
             ui.monospace(format!("set {name} = {value}"));
         }
-        let mut drop = None;
-        for (i, a) in self.drags.iter_mut().enumerate() {
-            ui.horizontal(|ui| {
-                ui.monospace(format!("animate {} : {} → {}", a.param, a.from, a.to));
-                ui.add(
-                    egui::DragValue::new(&mut a.seconds)
-                        .range(0.5..=60.0)
-                        .speed(0.1)
-                        .suffix(" s"),
-                )
-                .on_hover_text(lang.tr(
-                    "Seconds from the first value to the last",
-                    "从起始值到结束值的秒数",
-                ));
-                if ui
-                    .small_button("×")
-                    .on_hover_text(lang.tr("Not an animation", "不作为动画"))
-                    .clicked()
-                {
-                    drop = Some(i);
-                }
-            });
-        }
-        if let Some(i) = drop {
-            self.drags.remove(i);
-        }
+        self.drags_ui(ui, lang);
         step.animate.clone_from(&self.drags);
         let Some(doc) = &mut self.doc else {
             return;
@@ -80,9 +55,19 @@ impl Editor {
             ))
             .clicked()
         {
-            // `set` counts from the step before this one.
-            step.set = param::differences(&player.lesson.spec_before(k), &session.spec);
+            // `set` counts from the scene the step before leaves, its own animations where they
+            // are now (they are the step's, not changes); without new drags, they stay.
+            let own = &player.current().animate;
+            let mut base = player.lesson.spec_before(k);
+            for a in own {
+                let _ = param::apply(&mut base, &a.param, &a.value_at(player.time));
+            }
+            step.set = param::differences(&base, &session.spec);
+            if self.drags.is_empty() {
+                step.animate.clone_from(own);
+            }
             result = Some(doc.draft.update(k, &step));
+            self.drags.clear();
         }
         ui.add_space(6.0);
         ui.label(
@@ -113,9 +98,42 @@ impl Editor {
             go = k + 1;
         }
         match result {
-            Some(Ok(())) => self.revised(session, Some(go), out),
+            Some(Ok(())) => {
+                self.said = None;
+                self.revised(session, Some(go), out);
+            }
             Some(Err(e)) => self.said = Some(Err(e)),
             None => {}
+        }
+    }
+
+    /// The drags recorded as animations: each with its seconds to edit, or dropped (×).
+    fn drags_ui(&mut self, ui: &mut egui::Ui, lang: Lang) {
+        let mut drop = None;
+        for (i, a) in self.drags.iter_mut().enumerate() {
+            ui.horizontal(|ui| {
+                ui.monospace(format!("animate {} : {} → {}", a.param, a.from, a.to));
+                ui.add(
+                    egui::DragValue::new(&mut a.seconds)
+                        .range(0.5..=60.0)
+                        .speed(0.1)
+                        .suffix(" s"),
+                )
+                .on_hover_text(lang.tr(
+                    "Seconds from the first value to the last",
+                    "从起始值到结束值的秒数",
+                ));
+                if ui
+                    .small_button("×")
+                    .on_hover_text(lang.tr("Not an animation", "不作为动画"))
+                    .clicked()
+                {
+                    drop = Some(i);
+                }
+            });
+        }
+        if let Some(i) = drop {
+            self.drags.remove(i);
         }
     }
 }

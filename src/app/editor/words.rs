@@ -11,8 +11,20 @@ use crate::app::views::{lesson::narration, typeset::Style};
 use crate::lesson::edit::Words;
 use crate::vocabulary::{Lang, Text};
 
+/// Every text the editor types: the lesson's title and summary, then the step's four.
+const EDITED: [Words; 6] = [
+    Words::LessonTitle,
+    Words::Summary,
+    Words::Title,
+    Words::Narration,
+    Words::Question,
+    Words::Answer,
+];
+
 impl Editor {
-    /// The current step's words, read from the file's text when the step or the text changed.
+    /// The lesson's title and summary (folded) and the current step's words, read from the
+    /// file's text when the step or the text changed; what is typed goes into the text and onto
+    /// the card.
     pub(super) fn step_words(
         &mut self,
         ui: &mut egui::Ui,
@@ -25,9 +37,19 @@ impl Editor {
         };
         let k = player.step;
         if self.words_for != Some((k, doc.draft.revision())) {
-            self.words = Words::ALL.map(|w| doc.draft.words(k, w));
+            self.words = EDITED.map(|w| doc.draft.words(k, w));
             self.words_for = Some((k, doc.draft.revision()));
         }
+        let mut typed = Vec::new();
+        egui::CollapsingHeader::new(
+            RichText::new(lang.tr("The lesson's title and summary", "课程的标题与简介")).strong(),
+        )
+        .id_salt("lesson-words")
+        .show(ui, |ui| {
+            for (which, text) in EDITED.iter().zip(&mut self.words).take(2) {
+                typed.extend(boxes(ui, lang, *which, text));
+            }
+        });
         ui.label(
             RichText::new(match lang {
                 Lang::En => format!("The words of step {}", k + 1),
@@ -35,26 +57,8 @@ impl Editor {
             })
             .strong(),
         );
-        let mut typed = Vec::new();
-        for (i, which) in Words::ALL.into_iter().enumerate() {
-            let (label, rows) = match which {
-                Words::Title => (lang.tr("Title", "标题"), 1),
-                Words::Narration => (lang.tr("Narration", "讲解"), 4),
-                Words::Question => (lang.tr("Question (optional)", "思考题（可选）"), 2),
-                Words::Answer => (lang.tr("Answer (optional)", "答案（可选）"), 2),
-            };
-            let changed = pair(ui, label, &mut self.words[i], rows);
-            if which != Words::Title {
-                preview(ui, &self.words[i]);
-            }
-            for (lang, on) in [(Lang::En, changed.0), (Lang::Zh, changed.1)] {
-                if on {
-                    typed.push((which, lang, self.words[i].get(lang).to_owned()));
-                }
-            }
-            if which.required() {
-                missing_note(ui, lang, &self.words[i]);
-            }
+        for (which, text) in EDITED.iter().zip(&mut self.words).skip(2) {
+            typed.extend(boxes(ui, lang, *which, text));
         }
         if typed.is_empty() {
             return;
@@ -68,9 +72,11 @@ impl Editor {
         self.words_for = Some((k, doc.draft.revision()));
         // On the card at once, the screen kept as it is (no parsing of the file per key).
         let mut lesson = (*player.lesson).clone();
+        let [title, summary, step_title, narration, question, answer] = self.words.clone();
+        lesson.title = title;
+        lesson.summary = summary;
         if let Some(step) = lesson.steps.get_mut(k) {
-            let [title, narration, question, answer] = self.words.clone();
-            step.title = title;
+            step.title = step_title;
             step.narration = narration;
             let optional =
                 |t: Text| (!(t.en.trim().is_empty() && t.zh.trim().is_empty())).then_some(t);
@@ -83,6 +89,34 @@ impl Editor {
             enter: false,
         });
     }
+}
+
+/// The boxes of one text, with its preview and the note of a missing language; what was typed.
+fn boxes(
+    ui: &mut egui::Ui,
+    lang: Lang,
+    which: Words,
+    text: &mut Text,
+) -> Vec<(Words, Lang, String)> {
+    let (label, rows) = match which {
+        Words::LessonTitle | Words::Title => (lang.tr("Title", "标题"), 1),
+        Words::Summary => (lang.tr("Summary", "简介"), 2),
+        Words::Narration => (lang.tr("Narration", "讲解"), 4),
+        Words::Question => (lang.tr("Question (optional)", "思考题（可选）"), 2),
+        Words::Answer => (lang.tr("Answer (optional)", "答案（可选）"), 2),
+    };
+    let changed = pair(ui, label, text, rows);
+    if matches!(which, Words::Narration | Words::Question | Words::Answer) {
+        preview(ui, text);
+    }
+    if which.required() {
+        missing_note(ui, lang, text);
+    }
+    [(Lang::En, changed.0), (Lang::Zh, changed.1)]
+        .into_iter()
+        .filter(|(_, on)| *on)
+        .map(|(l, _)| (which, l, text.get(l).to_owned()))
+        .collect()
 }
 
 /// A label over two boxes, English and 中文, side by side; whether each was typed in.
