@@ -72,3 +72,11 @@ close
 open --lang en --scene assets/scenes/texture.toml --stage output --compare filtering
 shoot en-compare-filtering
 close
+# The lesson editor (R), on a copy of lesson 17: a lesson opened from a file is edited in place.
+copy=$(mktemp -d)
+cp lessons/17-hierarchy.toml "$copy/"
+open --lang en --lesson "$copy/17-hierarchy.toml" --step 3
+keys r
+shoot editor
+close
+rm -rf "$copy"

@@ -6,7 +6,8 @@
 //  3. the Chinese interface (?lang=zh) renders: its top bar differs from the English one, and a
 //     Chinese lesson step is reached the same way;
 //  4. the tour's frame time in the browser is read from <html data-frame-ms> and printed;
-//  5. a lesson file dropped on the page opens;
+//  5. a lesson file dropped on the page opens, is edited (a step deleted, the edit kept in the
+//     page's storage) and saved as a download;
 //  6. the shader lesson runs the student's GLSL in the page, and S opens the shader panel;
 //  7. a typed answer (lesson 14's mip level) is checked, kept in the page's local storage, and
 //     still there after a reload.
@@ -145,6 +146,33 @@ await zh2.evaluate((t) => {
 if (await waitForTitle(zh2, /^pipelens — 07-rasterization — step 1\/6$/, "a lesson dropped on the page opens")) {
   await zh2.waitForTimeout(2000);
   await zh2.screenshot({ path: `${out}/dropped-zh.png` });
+
+  // 5b. The dropped lesson is edited in the page (R, the editor in Chinese): its first step
+  // deleted, the edit kept in the page's storage until it is saved, and Save is a download of
+  // the file with five steps.
+  await zh2.focus("#pipelens");
+  await zh2.keyboard.press("r");
+  await zh2.waitForTimeout(2000);
+  await zh2.screenshot({ path: `${out}/editor-zh.png` });
+  // "删除" (delete) in the row under the six steps; "保存（下载）" (save) beside Undo and Redo.
+  await zh2.mouse.click(1560, 281);
+  await zh2.waitForTimeout(2500);
+  await zh2.screenshot({ path: `${out}/editor-zh-deleted.png` });
+  const unsaved = await zh2.evaluate(() => localStorage.getItem("pipelens-unsaved:my-lesson.toml.unsaved") ?? "");
+  check((unsaved.match(/^\[\[steps\]\]/gm) ?? []).length === 5, `the unsaved edit is kept in the page's storage (${(unsaved.match(/^\[\[steps\]\]/gm) ?? []).length} steps)`);
+  const saving = zh2.waitForEvent("download", { timeout: 15000 }).catch(() => null);
+  await zh2.mouse.click(1440, 94);
+  const download = await saving;
+  check(download !== null && download.suggestedFilename() === "my-lesson.toml", `Save is a download of my-lesson.toml (${download?.suggestedFilename()})`);
+  if (download) {
+    const path = `${out}/saved-my-lesson.toml`;
+    await download.saveAs(path);
+    const saved = readFileSync(path, "utf8");
+    check((saved.match(/^\[\[steps\]\]/gm) ?? []).length === 5 && saved.includes("[lesson]"), `the downloaded lesson has the five steps left`);
+  }
+  await zh2.waitForTimeout(1500);
+  const after = await zh2.evaluate(() => localStorage.getItem("pipelens-unsaved:my-lesson.toml.unsaved"));
+  check(after === null, "saved: nothing is kept as unsaved any more");
 }
 
 // 6. The shader lesson: GLSL compiled by naga and run by pipelens' interpreter in the page; S

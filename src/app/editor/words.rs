@@ -7,7 +7,7 @@ use egui::RichText;
 
 use super::Editor;
 use crate::app::session::{Command, Session};
-use crate::app::views::{lesson::narration, typeset::Style};
+use crate::app::views::lesson::{card_style, narration};
 use crate::lesson::edit::Words;
 use crate::vocabulary::{Lang, Text};
 
@@ -159,8 +159,7 @@ fn preview(ui: &mut egui::Ui, text: &Text) {
                 .inner_margin(8.0)
                 .show(col, |ui| {
                     ui.set_width(ui.available_width());
-                    let style = Style::body(ui);
-                    narration(ui, words, &style);
+                    narration(ui, words, &card_style(ui));
                 });
         }
     });

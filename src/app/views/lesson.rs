@@ -85,6 +85,15 @@ fn fitted(fit: f32, room: f32, needed: f32, least: f32) -> f32 {
     }
 }
 
+/// The card's type: near-white on its dark ground, formulas in the accent colour.
+#[must_use]
+pub fn card_style(ui: &Ui) -> Style {
+    Style {
+        color: Color32::from_gray(245),
+        ..Style::body(ui)
+    }
+}
+
 /// The card's words; returns the height left for them below the title and the height they took.
 fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) {
     let Some(player) = &session.lesson else {
@@ -92,10 +101,7 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
     };
     let (spec, lang) = (&session.spec, session.lang);
     let step = player.current();
-    let style = Style {
-        color: Color32::from_gray(245),
-        ..Style::body(ui)
-    };
+    let style = card_style(ui);
     ui.horizontal_top(|ui| {
         // The title wraps beside the fold button (a narrow column has no room for it on one
         // line).
