@@ -182,14 +182,27 @@ impl Draft {
     /// Whether step `at` changed since the last save: new, moved, or edited.
     #[must_use]
     pub fn changed(&self, at: usize) -> bool {
-        let Some(id) = self.now.ids.get(at) else {
-            return false;
-        };
+        self.changed_steps().get(at).copied().unwrap_or(false)
+    }
+
+    /// For each step, whether it changed since the last save: it is new, its words or view
+    /// differ, or it moved. A step moved is one outside the longest run of saved steps still in
+    /// their saved order (moving one step marks that step, not the ones it passed; a deletion
+    /// or a copy moves nothing).
+    #[must_use]
+    pub fn changed_steps(&self) -> Vec<bool> {
         let now = step_texts(&self.now.text);
-        match self.saved.iter().position(|(i, _)| i == id) {
-            Some(k) => k != at || now.get(at) != Some(&self.saved[k].1),
-            None => true,
-        }
+        let saved_at = |id: &u64| self.saved.iter().position(|(i, _)| i == id);
+        let ranks: Vec<Option<usize>> = self.now.ids.iter().map(saved_at).collect();
+        let kept = in_order(&ranks);
+        ranks
+            .iter()
+            .enumerate()
+            .map(|(at, rank)| match rank {
+                Some(k) => !kept[at] || now.get(at) != Some(&self.saved[*k].1),
+                None => true,
+            })
+            .collect()
     }
 
     /// How many steps of the last save are gone.
@@ -495,6 +508,35 @@ impl Draft {
         self.typing = typing;
         self.revision += 1;
     }
+}
+
+/// Which entries with a rank lie on a longest run of ranks increasing from first to last (the
+/// steps still in their saved order); entries without one (new steps) are on none.
+fn in_order(ranks: &[Option<usize>]) -> Vec<bool> {
+    // longest[i]: the length of the longest increasing run ending at i; before[i]: the entry
+    // before i on it.
+    let n = ranks.len();
+    let mut longest = vec![0usize; n];
+    let mut before: Vec<Option<usize>> = vec![None; n];
+    for i in 0..n {
+        let Some(r) = ranks[i] else { continue };
+        longest[i] = 1;
+        for j in 0..i {
+            if ranks[j].is_some_and(|q| q < r) && longest[j] + 1 > longest[i] {
+                longest[i] = longest[j] + 1;
+                before[i] = Some(j);
+            }
+        }
+    }
+    let mut on = vec![false; n];
+    let mut at = (0..n)
+        .filter(|&i| longest[i] > 0)
+        .max_by_key(|&i| (longest[i], usize::MAX - i));
+    while let Some(i) = at {
+        on[i] = true;
+        at = before[i];
+    }
+    on
 }
 
 fn parse(text: &str) -> Result<DocumentMut, String> {

@@ -431,12 +431,17 @@ impl Editor {
         let n = doc.draft.len();
         ui.label(RichText::new(lang.tr("Steps", "步骤")).strong())
             .on_hover_text(lang.tr("● changed since the last save", "● 自上次保存以来有改动"));
+        let changed = doc.draft.changed_steps();
         egui::ScrollArea::vertical()
             .id_salt("lesson-editor-steps")
             .max_height(180.0)
             .show(ui, |ui| {
                 for (k, step) in player.lesson.steps.iter().enumerate().take(n) {
-                    let mark = if doc.draft.changed(k) { "●" } else { "  " };
+                    let mark = if changed.get(k) == Some(&true) {
+                        "●"
+                    } else {
+                        "  "
+                    };
                     let label = format!("{mark} {:>2}  {}", k + 1, step.title.get(lang));
                     if ui.selectable_label(k == current, label).clicked() && k != current {
                         out.push(Command::GoToStep(k));
