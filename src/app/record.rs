@@ -48,7 +48,8 @@ pub fn recorded_step(session: &Session) -> Option<Step> {
         layout,
         compare: sel.comparison,
         buffer: Some(sel.buffer),
-        overlays: Some(overlays),
+        // None named is none shown: an empty list would say nothing more.
+        overlays: (!overlays.is_empty()).then_some(overlays),
         set: crate::lesson::param::differences(&before, &session.spec),
         animate: Vec::new(),
         pixel: sel.pixel,

@@ -141,8 +141,7 @@ pub fn view_items(step: &Step) -> Vec<(&'static str, Item)> {
     if let Some(b) = step.buffer {
         items.push(("buffer", value(b.name())));
     }
-    // None named is none shown: an empty list says nothing more.
-    if let Some(overlays) = step.overlays.as_ref().filter(|o| !o.is_empty()) {
+    if let Some(overlays) = &step.overlays {
         let names: Array = overlays
             .iter()
             .filter_map(|o| OVERLAYS.iter().find(|(_, k)| k == o).map(|(n, _)| *n))

@@ -45,6 +45,8 @@ pub struct Editor {
     pub new: NewLesson,
     /// A lesson just made, for the app to open (and then [`Self::adopt`]).
     pub made: Option<Made>,
+    /// Why the last new lesson was not made.
+    new_error: Option<String>,
 }
 
 impl Editor {
@@ -168,6 +170,10 @@ impl Editor {
     ) {
         if self.doc.is_some() {
             self.file_row(ui, session, lang, out);
+            // What the last action said, at the top where it is seen.
+            if let Some(m) = &self.said {
+                said(ui, m);
+            }
             if self
                 .doc
                 .as_ref()
@@ -200,23 +206,14 @@ impl Editor {
         match self.new.ui(ui, session, lang, current.as_deref()) {
             Some(Ok(made)) => {
                 self.said = Some(Ok(made.said.clone()));
+                self.new_error = None;
                 self.made = Some(made);
             }
-            Some(Err(e)) => self.said = Some(Err(e)),
+            Some(Err(e)) => self.new_error = Some(e),
             None => {}
         }
-        match &self.said {
-            Some(Ok(m)) => {
-                ui.label(RichText::new(m).color(egui::Color32::LIGHT_GREEN));
-            }
-            Some(Err(e)) => {
-                ui.label(
-                    RichText::new(e)
-                        .color(ui.visuals().error_fg_color)
-                        .monospace(),
-                );
-            }
-            None => {}
+        if let Some(e) = &self.new_error {
+            said(ui, &Err(e.clone()));
         }
     }
 
@@ -384,7 +381,7 @@ impl Editor {
             });
         }
         if changed {
-            self.revised(session, None, out);
+            self.revised(session, None, false, out);
         }
     }
 
@@ -398,18 +395,27 @@ impl Editor {
             doc.draft.redo()
         };
         if done {
-            self.revised(session, None, out);
+            self.revised(session, None, false, out);
         }
     }
 
     /// After a change to the draft: the session plays the lesson as it now reads, at `step`
-    /// (the step it was at when `None`), entered; or, when it no longer checks, says why and
-    /// keeps the last good one.
-    fn revised(&mut self, session: &Session, step: Option<usize>, out: &mut Vec<Command>) {
-        let Some(doc) = &self.doc else {
+    /// (the step it was at when `None`), entered. A change that leaves a lesson `check` rejects
+    /// is taken back when `refuse` (a step recorded, moved, copied or deleted: the steps on
+    /// screen and in the file stay the same steps), and the editor says why; otherwise (undo,
+    /// redo, a restored copy) the last good lesson keeps playing and the editor lists what to fix.
+    fn revised(
+        &mut self,
+        session: &Session,
+        step: Option<usize>,
+        refuse: bool,
+        out: &mut Vec<Command>,
+    ) {
+        let Some(doc) = &mut self.doc else {
             return;
         };
         self.words_for = None;
+        let lang = session.lang;
         let at = step.unwrap_or_else(|| session.lesson.as_ref().map_or(0, |p| p.step));
         match doc.draft.lesson() {
             Ok(lesson) => out.push(Command::ReviseLesson {
@@ -417,7 +423,25 @@ impl Editor {
                 step: at,
                 enter: true,
             }),
-            Err(e) => out.push(Command::SetReloadError(Some(e.to_string()))),
+            Err(e) if refuse => {
+                doc.draft.discard_last();
+                self.said = Some(Err(format!(
+                    "{}\n{e}",
+                    lang.tr(
+                        "Not done: the lesson would no longer pass the check (a step's parameters may need one before it):",
+                        "未执行：这样改动后课程将无法通过检查（某一步的参数可能依赖它之前的步骤）：",
+                    )
+                )));
+            }
+            Err(e) => {
+                self.said = Some(Err(format!(
+                    "{}\n{e}",
+                    lang.tr(
+                        "The lesson does not pass the check; the last good version keeps playing until this is fixed:",
+                        "课程无法通过检查；在修正之前继续播放上一个正确的版本：",
+                    )
+                )));
+            }
         }
     }
 
@@ -502,12 +526,24 @@ impl Editor {
         match result {
             Some(Ok(())) => {
                 self.said = None;
-                self.revised(session, moved, out);
+                self.revised(session, moved, true, out);
             }
             Some(Err(e)) => self.said = Some(Err(e)),
             None => {}
         }
     }
+}
+
+/// A message: done in green, refused or failed in the error colour.
+fn said(ui: &mut egui::Ui, message: &Result<String, String>) {
+    match message {
+        Ok(m) => ui.label(RichText::new(m).color(egui::Color32::LIGHT_GREEN)),
+        Err(e) => ui.label(
+            RichText::new(e)
+                .color(ui.visuals().error_fg_color)
+                .monospace(),
+        ),
+    };
 }
 
 impl crate::app::PipelensApp {

@@ -100,7 +100,7 @@ impl Editor {
         match result {
             Some(Ok(())) => {
                 self.said = None;
-                self.revised(session, Some(go), out);
+                self.revised(session, Some(go), true, out);
             }
             Some(Err(e)) => self.said = Some(Err(e)),
             None => {}

@@ -280,3 +280,26 @@ fn a_new_lesson_starts_from_a_mesh_of_ones_own() {
     let o = crate::support::pipelens(dir.path(), &["check", "my-tetra.toml"]);
     assert!(o.status.success(), "{}", crate::support::text(&o));
 }
+
+/// A move the checker would reject is not made: lesson 05's off-centre frustum (step 4) moved
+/// before the step that sets fovy would leave that step a fovy the frustum has not. The editor
+/// says why; the lesson, the file and the unsaved state are as they were.
+#[test]
+fn a_move_that_breaks_the_lesson_is_refused_with_the_reason() {
+    let (_dir, file) = copy_of("05-perspective.toml");
+    let mut h = super::lesson_harness(Some(file));
+    h.run_steps(2);
+    h.state_mut().session.apply(Command::GoToStep(3));
+    h.key_press(egui::Key::R);
+    h.run_steps(3);
+    let before = titles(&h);
+    h.get_by_label("▲ Earlier").click_accesskit();
+    h.run_steps(3);
+    assert!(
+        h.query_by_label_contains("Not done: the lesson would no longer pass the check")
+            .is_some()
+    );
+    assert_eq!(titles(&h), before);
+    assert_eq!(h.state().session.lesson.as_ref().map(|p| p.step), Some(3));
+    assert!(h.query_by_label_contains("● unsaved changes").is_none());
+}

@@ -6,6 +6,8 @@
 //! writes. Nothing here touches a file: the app saves, keeps the recovery copy and asks before
 //! overwriting a file changed on disk.
 
+mod order;
+
 use std::path::{Path, PathBuf};
 
 use toml_edit::{DocumentMut, Item, Table, value};
@@ -14,6 +16,7 @@ use super::record::{VIEW_KEYS, put_step, step_table, view_items};
 use super::script::{Lesson, parse_lesson};
 use super::{Diagnostics, Step};
 use crate::vocabulary::{Lang, Text};
+use order::{in_order, renumber};
 
 /// The words of a step the editor types, each in both languages.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -234,6 +237,18 @@ impl Draft {
     /// Takes again the change last undone; `false` when there was none.
     pub fn redo(&mut self) -> bool {
         self.step_back(false)
+    }
+
+    /// Takes back the change last made, leaving nothing to redo: a change the app refuses (its
+    /// lesson would not check) leaves no trace.
+    pub fn discard_last(&mut self) -> bool {
+        let Some(state) = self.undo.pop() else {
+            return false;
+        };
+        self.now = state;
+        self.typing = None;
+        self.revision += 1;
+        true
     }
 
     fn step_back(&mut self, undo: bool) -> bool {
@@ -510,35 +525,6 @@ impl Draft {
     }
 }
 
-/// Which entries with a rank lie on a longest run of ranks increasing from first to last (the
-/// steps still in their saved order); entries without one (new steps) are on none.
-fn in_order(ranks: &[Option<usize>]) -> Vec<bool> {
-    // longest[i]: the length of the longest increasing run ending at i; before[i]: the entry
-    // before i on it.
-    let n = ranks.len();
-    let mut longest = vec![0usize; n];
-    let mut before: Vec<Option<usize>> = vec![None; n];
-    for i in 0..n {
-        let Some(r) = ranks[i] else { continue };
-        longest[i] = 1;
-        for j in 0..i {
-            if ranks[j].is_some_and(|q| q < r) && longest[j] + 1 > longest[i] {
-                longest[i] = longest[j] + 1;
-                before[i] = Some(j);
-            }
-        }
-    }
-    let mut on = vec![false; n];
-    let mut at = (0..n)
-        .filter(|&i| longest[i] > 0)
-        .max_by_key(|&i| (longest[i], usize::MAX - i));
-    while let Some(i) = at {
-        on[i] = true;
-        at = before[i];
-    }
-    on
-}
-
 fn parse(text: &str) -> Result<DocumentMut, String> {
     text.parse()
         .map_err(|e| format!("the lesson file is not TOML: {e}"))
@@ -580,56 +566,5 @@ fn step_texts(text: &str) -> Vec<String> {
 fn keep_decor(old: Option<&Item>, new: &mut Item) {
     if let (Some(old), Some(v)) = (old.and_then(Item::as_value), new.as_value_mut()) {
         *v.decor_mut() = old.decor().clone();
-    }
-}
-
-/// Calls `f` on each table a step is written as: itself, then any `[steps.x]` or
-/// `[[steps.x]]` within it.
-fn each_table(t: &mut Table, f: &mut impl FnMut(&mut Table)) {
-    f(t);
-    for (_, item) in t.iter_mut() {
-        match item {
-            Item::Table(sub) if !sub.is_dotted() => each_table(sub, f),
-            Item::ArrayOfTables(a) => a.iter_mut().for_each(|sub| each_table(sub, f)),
-            _ => {}
-        }
-    }
-}
-
-/// The steps written in the file in the order `order` gives (`order[i]` is the step that is to be
-/// written `i`-th; the array already holds them in that order after a move, or is reordered here
-/// after a copy). Every table keeps a place in the file a step's tables had, so tables outside
-/// the steps stay where they were.
-fn renumber(steps: &mut toml_edit::ArrayOfTables, order: &[usize]) {
-    // The place each table is written at: its own, or the one before it when it has none (a
-    // table made here is written after the table before it).
-    let mut last = 0;
-    let mut places: Vec<Vec<isize>> = Vec::new();
-    for t in steps.iter_mut() {
-        let mut own = Vec::new();
-        each_table(t, &mut |table| {
-            last = table.position().unwrap_or(last);
-            own.push(last);
-        });
-        places.push(own);
-    }
-    let mut free: Vec<isize> = places.iter().flatten().copied().collect();
-    free.sort_unstable();
-    // Taken out in the new order and written back with the places in ascending order.
-    let mut tables: Vec<Table> = Vec::new();
-    while !steps.is_empty() {
-        tables.push(steps.remove(0));
-    }
-    let mut next = free.into_iter();
-    let mut reordered: Vec<Table> = Vec::with_capacity(tables.len());
-    let mut slots: Vec<Option<Table>> = tables.into_iter().map(Some).collect();
-    for &k in order {
-        if let Some(mut t) = slots.get_mut(k).and_then(Option::take) {
-            each_table(&mut t, &mut |table| table.set_position(next.next()));
-            reordered.push(t);
-        }
-    }
-    for t in reordered {
-        steps.push(t);
     }
 }
