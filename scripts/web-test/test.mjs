@@ -11,6 +11,8 @@
 //  6. the shader lesson runs the student's GLSL in the page, and S opens the shader panel;
 //  7. a typed answer (lesson 14's mip level) is checked, kept in the page's local storage, and
 //     still there after a reload.
+//  9. on a phone (390×844, touch) the picture covers half the page or more, and a swipe across
+//     the narration sheet goes to the next step; landscape and tablet screenshots.
 // Screenshots are written to the output folder for a person to look at.
 import { chromium } from "playwright-core";
 import { PNG } from "pngjs";
@@ -328,6 +330,42 @@ if (await waitForTitle(mat, /^pipelens — 25-lab-model-projection — step 3\/5
   }
   const at = kept.indexOf("25-lab-model-projection");
   check(/25-lab-model-projection[^)]*passed:\[3\]/.test(kept), `the rotation lab passes and is kept (${at < 0 ? "not in the storage" : kept.slice(at, at + 120)})`);
+}
+
+// 9. A phone, upright (390×844, touch): the bar is one row and the
+// narration a sheet under the picture, which covers at least half of the page; a finger swiped
+// leftwards across the sheet goes to the next step. On its side and on a tablet, screenshots
+// for a person to look at.
+for (const [w, h, name] of [[390, 844, "phone-portrait"], [844, 390, "phone-landscape"], [820, 1180, "tablet-portrait"]]) {
+  // One device pixel a CSS pixel: headless Chromium's emulation of a denser screen reports the
+  // canvas's devicePixelContentBoxSize in CSS pixels, which eframe sizes the canvas by (a phone's
+  // own browser reports device pixels), so the page would draw at a third of its size.
+  const device = await browser.newContext({ viewport: { width: w, height: h }, deviceScaleFactor: 1, isMobile: true, hasTouch: true });
+  const page = await device.newPage();
+  page.on("pageerror", (e) => errors.push(`${name}: ${e.message}`));
+  page.on("console", (m) => { if (m.type() === "error") errors.push(`${name}: ${m.text()}`); });
+  await page.goto(url);
+  if (await waitForTitle(page, /^pipelens — 00-tour — step 1\/10$/, `the tour opens on a ${name.replace("-", " ")} (${w}×${h})`)) {
+    await page.waitForTimeout(3000);
+    await page.screenshot({ path: `${out}/${name}.png` });
+    if (name === "phone-portrait") {
+      const share = Number(await page.evaluate(() => document.documentElement.dataset.pictureShare));
+      check(share >= 0.5, `the picture covers ${Math.round(share * 100)} % of the phone's page`);
+      const cdp = await device.newCDPSession(page);
+      const touch = (type, x, y) => cdp.send("Input.dispatchTouchEvent", { type, touchPoints: type === "touchEnd" ? [] : [{ x, y }] });
+      await touch("touchStart", 330, 730);
+      for (let k = 1; k <= 6; k++) {
+        await touch("touchMove", 330 - 45 * k, 732);
+        await page.waitForTimeout(50);
+      }
+      await touch("touchEnd");
+      if (await waitForTitle(page, /^pipelens — 00-tour — step 2\/10$/, "a swipe across the narration goes to the next step")) {
+        await page.waitForTimeout(2000);
+        await page.screenshot({ path: `${out}/phone-portrait-step2.png` });
+      }
+    }
+  }
+  await device.close();
 }
 
 check(errors.length === 0, `no errors in the pages${errors.length ? ": " + errors.join(" | ") : ""}`);

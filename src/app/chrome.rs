@@ -51,27 +51,36 @@ impl PipelensApp {
                 ui.toggle_value(&mut self.panels.keys, "?")
                     .on_hover_text(lang.tr("Keyboard shortcuts (F1)", "键盘快捷键（F1）"));
             });
-            if let Some(e) = &self.session.reload_error {
-                ui.label(
-                    RichText::new(format!(
-                        "{}\n{e}",
-                        lang.tr(
-                            "The file changed on disk and no longer loads; the last good version keeps running:",
-                            "文件在磁盘上被修改后无法加载；继续运行上一个正确的版本："
-                        )
-                    ))
-                    .monospace()
-                    .color(Color32::LIGHT_RED),
-                );
-            }
-            if let Some((ok, msg)) = &self.export_message {
-                ui.label(RichText::new(msg).color(if *ok { Color32::LIGHT_GREEN } else { Color32::LIGHT_RED }));
-            }
+            self.bar_messages(ui, lang);
         });
     }
 
+    /// Under the bar: why the file on disk no longer loads, what an export did.
+    pub(super) fn bar_messages(&self, ui: &mut egui::Ui, lang: Lang) {
+        if let Some(e) = &self.session.reload_error {
+            ui.label(
+                RichText::new(format!(
+                    "{}\n{e}",
+                    lang.tr(
+                        "The file changed on disk and no longer loads; the last good version keeps running:",
+                        "文件在磁盘上被修改后无法加载；继续运行上一个正确的版本："
+                    )
+                ))
+                .monospace()
+                .color(Color32::LIGHT_RED),
+            );
+        }
+        if let Some((ok, msg)) = &self.export_message {
+            ui.label(RichText::new(msg).color(if *ok {
+                Color32::LIGHT_GREEN
+            } else {
+                Color32::LIGHT_RED
+            }));
+        }
+    }
+
     /// ◀ Step k / n ▾ ▶ and Play/Pause, with the list of steps in the menu.
-    fn step_controls(&mut self, ui: &mut egui::Ui, lang: Lang) {
+    pub(super) fn step_controls(&mut self, ui: &mut egui::Ui, lang: Lang) {
         let Some(player) = &self.session.lesson else {
             return;
         };
@@ -128,7 +137,7 @@ impl PipelensApp {
 
     /// Which panels are shown: narration (N), parameters (P), inspector (I), the matrix card (M);
     /// as buttons where there is room, in a menu otherwise.
-    fn panel_toggles(&mut self, ui: &mut egui::Ui, lang: Lang) {
+    pub(super) fn panel_toggles(&mut self, ui: &mut egui::Ui, lang: Lang) {
         let lesson = self.session.lesson.is_some();
         let p = &mut self.panels;
         let toggles: [(&mut bool, &str, &str); 5] = [
@@ -192,7 +201,7 @@ impl PipelensApp {
     }
 
     /// The snapshot export, in a menu: the folder, the button, Cancel while it runs.
-    fn export_menu(&mut self, ui: &mut egui::Ui, lang: Lang) {
+    pub(super) fn export_menu(&mut self, ui: &mut egui::Ui, lang: Lang) {
         if !super::platform::WRITES_FILES {
             // In the browser: no folders to write to, the handout downloads.
             if self.session.lesson.is_some()

@@ -3,6 +3,7 @@
 //! pipeline results itself.
 
 mod chrome;
+mod compact;
 pub mod display;
 mod editor;
 pub mod exercise;
@@ -16,14 +17,13 @@ mod reload;
 pub mod selection;
 pub mod session;
 mod style;
+mod toolbar;
 pub mod views;
 pub mod worker;
 
 pub use style::{CJK_FONT, apply_style, install_fonts, setup_context};
 
 use std::{path::PathBuf, sync::mpsc::Receiver};
-
-use egui::RichText;
 
 use self::session::{Command, Session};
 use self::views::{
@@ -193,7 +193,7 @@ impl PipelensApp {
         self.keyboard(ui.ctx());
         self.picture.clear();
         self.subject.clear();
-        self.top_bar(ui);
+        let compact = self.bar(ui);
         self.keys_help(ui.ctx());
         // Presenting, the status line shows only to say what went wrong.
         if !self.presenting() || self.session.error.is_some() {
@@ -239,6 +239,10 @@ impl PipelensApp {
                     ));
                 });
         }
+        let narrated = self.panels.narration && self.session.lesson.is_some();
+        if compact && narrated {
+            self.narration_sheet(ui);
+        }
         let central = egui::CentralPanel::default()
             .show(ui, |ui| match &capture {
                 Some(capture) => self.main_view(ui, capture),
@@ -255,17 +259,11 @@ impl PipelensApp {
             })
             .response
             .rect;
-        if !(self.panels.narration && self.session.lesson.is_some()) {
+        if !narrated || compact {
             views::room::set_narration_card(ui.ctx(), None);
         } else {
             let out = views::lesson::card(ui.ctx(), central, &self.session);
-            self.commands.extend(out.commands);
-            if out.fold {
-                self.panels.narration = false;
-            }
-            if out.inspect {
-                self.panels.inspector = true;
-            }
+            self.narrated(out);
         }
         self.edit_lesson(ui.ctx());
         self.animate(ui.ctx());
@@ -285,6 +283,29 @@ impl PipelensApp {
         }
         // A buffer or a pixel chosen that the capture shown did not keep: render it.
         self.session.ensure_captured();
+    }
+
+    /// The bar at the top: the desktop's, or a small window's one row; whether the window is
+    /// small (see [`compact::is_compact`]).
+    fn bar(&mut self, ui: &mut egui::Ui) -> bool {
+        let compact = compact::is_compact(ui.ctx());
+        if compact {
+            self.compact_bar(ui);
+        } else {
+            self.top_bar(ui);
+        }
+        compact
+    }
+
+    /// What the narration (the card, or a small window's sheet) asked for.
+    fn narrated(&mut self, out: views::lesson::CardOutput) {
+        self.commands.extend(out.commands);
+        if out.fold {
+            self.panels.narration = false;
+        }
+        if out.inspect {
+            self.panels.inspector = true;
+        }
     }
 
     /// The stage's toolbar (one row) and its picture below it.
@@ -390,73 +411,6 @@ impl PipelensApp {
         ui.advance_cursor_after_rect(area);
     }
 
-    /// One row: the stage's name (its explanation on hover) and the view's controls.
-    fn stage_toolbar(&mut self, ui: &mut egui::Ui, capture: &pipeline::capture::FrameCapture) {
-        let sel = self.session.selection.clone();
-        let lang = self.session.lang;
-        let space = sel.stage.space();
-        ui.horizontal_wrapped(|ui| {
-            style::chrome_style(ui);
-            let size = ui.style().text_styles[&egui::TextStyle::Heading].size;
-            ui.label(RichText::new(sel.stage.name(lang)).strong().size(size))
-                .on_hover_ui(|ui| {
-                    views::typeset::paragraph(
-                        ui,
-                        sel.stage.explanation(lang),
-                        &views::typeset::Style::body(ui),
-                    );
-                });
-            if space.is_none() {
-                let c = self
-                    .pixel_view
-                    .toolbar(ui, &sel, &self.session.buffers, lang);
-                self.commands.extend(c);
-                if sel.buffer == pipeline::buffers::BufferKind::Depth
-                    && let Some(c) = PixelView::depth_controls(ui, &sel, capture, lang)
-                {
-                    self.commands.push(c);
-                }
-                self.comparison_choice(ui);
-            }
-            if space.is_some() || sel.comparison.is_none() {
-                let mut obs = sel.show_observer;
-                if ui
-                    .checkbox(&mut obs, lang.tr("Observer view", "观察者视图"))
-                    .on_hover_text(lang.tr(
-                        "The scene seen from outside, with the camera's frustum and the lights.",
-                        "从外部看场景，并显示相机的视锥和光源。",
-                    ))
-                    .changed()
-                {
-                    self.commands.push(Command::ToggleObserver);
-                }
-            }
-        });
-    }
-
-    /// Side by side: none, or one of the comparisons.
-    fn comparison_choice(&mut self, ui: &mut egui::Ui) {
-        let lang = self.session.lang;
-        let current = self.session.selection.comparison;
-        let mut choice = current;
-        egui::ComboBox::new("comparison", lang.tr("side by side", "并排对比"))
-            .selected_text(current.map_or(lang.tr("off", "关"), |c| c.name(lang)))
-            .show_ui(ui, |ui| {
-                ui.selectable_value(&mut choice, None, lang.tr("off", "关"));
-                for c in crate::vocabulary::Comparison::ALL {
-                    ui.selectable_value(&mut choice, Some(c), c.name(lang));
-                }
-            })
-            .response
-            .on_hover_text(lang.tr(
-                "Render the scene with different settings and show them side by side, with an intensity profile.",
-                "用不同设置渲染场景并并排显示，附亮度剖面曲线。",
-            ));
-        if choice != current {
-            self.commands.push(Command::SetComparison(choice));
-        }
-    }
-
     fn animate(&mut self, ctx: &egui::Context) {
         if self.session.lesson.as_ref().is_some_and(|p| p.playing) {
             let dt = ctx.input(|i| i.stable_dt).min(0.1);
@@ -476,13 +430,23 @@ impl PipelensApp {
     }
 }
 
-/// The space left in `ui` cut in two beside each other with a gap: `(all, left, right)`. With
-/// the `aspect` of an image on the left, the left part is as wide as the image needs to fill the
-/// height, but no more than two thirds; the right part (the observer, which renders at any
-/// aspect) takes the rest.
+/// The space left in `ui` cut in two with a gap: `(all, first, second)`, beside each other, or
+/// (in a portrait space, a phone's) one over the other. With the `aspect` of the image in the
+/// first part, it is as large as the image needs to fill the other side, but no more than two
+/// thirds; the second part (the observer, which renders at any aspect) takes the rest.
 fn split(ui: &egui::Ui, aspect: Option<f32>) -> (egui::Rect, egui::Rect, egui::Rect) {
     let area = ui.available_rect_before_wrap();
     let gap = 8.0;
+    if area.height() > area.width() * 1.1 {
+        let height = area.height() - gap;
+        let top = aspect.map_or(height / 2.0, |a| {
+            (area.width() / a).clamp(height * 0.4, height * 0.64)
+        });
+        let first = egui::Rect::from_min_size(area.min, egui::vec2(area.width(), top));
+        let second =
+            egui::Rect::from_min_max(egui::pos2(area.left(), first.bottom() + gap), area.max);
+        return (area, first, second);
+    }
     let width = area.width() - gap;
     let left_width = aspect.map_or(width / 2.0, |a| {
         (area.height() * a).clamp(width * 0.4, width * 0.64)
@@ -496,7 +460,8 @@ impl eframe::App for PipelensApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.frame(ui);
         let ms = self.session.times.map(|t| t.total().as_secs_f64() * 1e3);
-        platform::report(ui.ctx(), &self.title(), ms);
+        let share = self.picture_share(ui.ctx().content_rect());
+        platform::report(ui.ctx(), &self.title(), ms, share);
     }
 
     /// Keeps the student's progress (eframe calls this on closing and every

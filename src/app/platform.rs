@@ -54,20 +54,22 @@ impl Inbox {
 }
 
 /// Shows `title` as the window's title (the browser tab's in a page) when it changed; in a page
-/// also the latest frame's render time in milliseconds, as `<html data-frame-ms="…">`, for the
-/// browser test and the benchmark to read.
-pub fn report(ctx: &egui::Context, title: &str, frame_ms: Option<f64>) {
+/// also the latest frame's render time in milliseconds and the share of the page the picture
+/// covers, as `<html data-frame-ms="…" data-picture-share="…">`, for the browser test and the
+/// benchmark to read.
+pub fn report(ctx: &egui::Context, title: &str, frame_ms: Option<f64>, share: f32) {
     #[cfg(target_arch = "wasm32")]
-    if let (Some(ms), Some(root)) = (
-        frame_ms,
-        web_sys::window()
-            .and_then(|w| w.document())
-            .and_then(|d| d.document_element()),
-    ) {
-        let _ = root.set_attribute("data-frame-ms", &format!("{ms:.1}"));
+    if let Some(root) = web_sys::window()
+        .and_then(|w| w.document())
+        .and_then(|d| d.document_element())
+    {
+        if let Some(ms) = frame_ms {
+            let _ = root.set_attribute("data-frame-ms", &format!("{ms:.1}"));
+        }
+        let _ = root.set_attribute("data-picture-share", &format!("{share:.2}"));
     }
     #[cfg(not(target_arch = "wasm32"))]
-    let _ = frame_ms;
+    let _ = (frame_ms, share);
     let id = egui::Id::unique("pipelens-title");
     if ctx.data(|d| d.get_temp::<String>(id)).as_deref() == Some(title) {
         return;
@@ -198,7 +200,7 @@ pub fn run(
         viewport: egui::ViewportBuilder::default()
             .with_title("pipelens")
             .with_inner_size([1366.0, 768.0])
-            .with_min_inner_size([800.0, 500.0]),
+            .with_min_inner_size([320.0, 320.0]),
         // The app's storage keeps the student's progress, not the window's place.
         persist_window: false,
         ..Default::default()

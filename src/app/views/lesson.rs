@@ -64,6 +64,18 @@ pub fn card(ctx: &egui::Context, central: egui::Rect, session: &Session) -> Card
     out
 }
 
+/// The card's words in `ui` (the narration sheet of a small window, under the picture), in the
+/// card's type at its normal size.
+pub fn sheet(ui: &mut Ui, session: &Session) -> CardOutput {
+    let mut out = CardOutput {
+        commands: Vec::new(),
+        fold: false,
+        inspect: false,
+    };
+    contents(ui, session, &mut out);
+    out
+}
+
 /// The card's type scale for the next frame, so that what it says fits without scrolling
 /// (classroom type on a 1366×768 projector): from `fit`, the text needed `needed` points of
 /// height where `room` were left. Text area grows as the square of the type size at a fixed

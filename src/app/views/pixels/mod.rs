@@ -408,8 +408,14 @@ impl PixelView {
         // Until the user zooms or drags: as large as the view allows with the covered pixels
         // and the inspected one clear of the narration card.
         let card = crate::app::views::room::narration_card(ui.ctx());
-        let placed =
-            crate::app::views::room::place(rect, size, self.subject(session, capture), card);
+        let subject = self.subject(session, capture);
+        // A phone's view is narrow and tall: the picture covers it (the sides cropped, the
+        // subject whole and in the middle; a pinch shows the rest).
+        let placed = if crate::app::compact::is_compact(ui.ctx()) {
+            viewport::cover(rect, size, subject)
+        } else {
+            crate::app::views::room::place(rect, size, subject, card)
+        };
         let fit = placed.width() / size.x;
         self.fitted = placed.size();
         crate::app::views::room::report_kept(

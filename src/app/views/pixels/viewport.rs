@@ -82,3 +82,64 @@ pub(super) fn layout(full: Rect, capture: &FrameCapture, extra: bool) -> (Rect, 
         )
     }
 }
+
+/// Where a picture of `size` goes to cover `outer` (a phone's tall, narrow view): as large as
+/// filling it, but no larger than keeps `subject` (in the picture's units, y down) whole in it,
+/// nor smaller than the whole picture fitted; the subject in the middle, then moved so that the
+/// picture leaves no margin it can cover.
+#[must_use]
+pub fn cover(outer: Rect, size: Vec2, subject: Rect) -> Rect {
+    let across = outer.width() / size.x;
+    let down = outer.height() / size.y;
+    let most =
+        (outer.width() / subject.width().max(1.0)).min(outer.height() / subject.height().max(1.0));
+    let k = across.max(down).min(most).max(across.min(down));
+    let picture = size * k;
+    let min = outer.center() - subject.center().to_vec2() * k;
+    // Along each axis: centred when the picture is smaller than the view, else kept over it.
+    let place = |at: f32, len: f32, lo: f32, hi: f32| {
+        if len <= hi - lo {
+            lo + (hi - lo - len) / 2.0
+        } else {
+            at.clamp(hi - len, lo)
+        }
+    };
+    Rect::from_min_size(
+        egui::pos2(
+            place(min.x, picture.x, outer.left(), outer.right()),
+            place(min.y, picture.y, outer.top(), outer.bottom()),
+        ),
+        picture,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::cover;
+    use egui::{Rect, pos2, vec2};
+
+    /// A tall view (a phone's): a picture whose subject is small fills the view's height, the
+    /// subject whole and in the middle; one whose subject spans it is as wide as the view.
+    #[test]
+    fn a_picture_covers_a_tall_view_with_its_subject_whole() {
+        let view = Rect::from_min_size(pos2(0.0, 60.0), vec2(390.0, 530.0));
+        let size = vec2(32.0, 32.0);
+        let small = Rect::from_min_max(pos2(8.0, 6.0), pos2(24.0, 26.0));
+        let p = cover(view, size, small);
+        assert!((p.height() - 530.0).abs() < 0.5, "{p:?}");
+        let k = p.width() / size.x;
+        let on_screen = Rect::from_min_max(
+            p.min + small.min.to_vec2() * k,
+            p.min + small.max.to_vec2() * k,
+        );
+        assert!(view.contains_rect(on_screen), "{on_screen:?} in {view:?}");
+        assert!((on_screen.center().x - view.center().x).abs() < 1.0);
+        let wide = vec2(640.0, 400.0);
+        let all = Rect::from_min_size(pos2(0.0, 0.0), wide);
+        let p = cover(view, wide, all);
+        assert!(
+            (p.width() - 390.0).abs() < 0.5 && view.contains_rect(p),
+            "{p:?}"
+        );
+    }
+}

@@ -1,0 +1,142 @@
+//! The layout of a phone, a tablet in portrait, or any small window: the picture first. The
+//! desktop's bar (lessons, eleven stages, panel toggles) would wrap into a column of buttons and
+//! its card would cover the picture, so here the bar is one row — a Menu with everything else,
+//! the step arrows, the stage as a drop-down — and the narration is a sheet under the picture
+//! (beside it on a phone held sideways; never over it), swiped left or right for the next or
+//! previous step. The picture itself pans
+//! with a drag and zooms with a pinch (the views read egui's zoom), and a tap inspects a pixel.
+
+use egui::{Context, RichText};
+
+use super::PipelensApp;
+use super::session::Command;
+use crate::vocabulary::{Lang, Stage};
+
+/// Whether the window is too small for the desktop's bar and card: narrower than 700 points
+/// (a phone or a tablet in portrait) or lower than 480 (a phone in landscape).
+#[must_use]
+pub fn is_compact(ctx: &Context) -> bool {
+    let r = ctx.content_rect();
+    r.width() < 700.0 || r.height() < 480.0
+}
+
+/// The least a swipe moves across (points), and how much more across than down it goes.
+const SWIPE: f32 = 60.0;
+
+impl PipelensApp {
+    /// The bar in one row: Menu (lessons, panels, language, classroom, export, keys), the step's
+    /// arrows, the stage as a drop-down; a message under it when there is one.
+    pub(super) fn compact_bar(&mut self, ui: &mut egui::Ui) {
+        let lang = self.session.lang;
+        egui::Panel::top("top").show(ui, |ui| {
+            super::style::chrome_style(ui);
+            ui.spacing_mut().item_spacing.x = 4.0;
+            ui.horizontal(|ui| {
+                ui.menu_button(lang.tr("Menu", "菜单"), |ui| {
+                    self.lessons_menu(ui, lang);
+                    self.panel_toggles(ui, lang);
+                    if ui.button(lang.other().name()).clicked() {
+                        self.commands.push(Command::SetLang(lang.other()));
+                    }
+                    self.export_menu(ui, lang);
+                    ui.toggle_value(&mut self.panels.keys, lang.tr("Keys (?)", "快捷键（?）"));
+                });
+                self.step_controls(ui, lang);
+                self.stage_menu(ui, lang);
+            });
+            self.bar_messages(ui, lang);
+        });
+    }
+
+    /// The stage on screen, and the others to go to, in a drop-down.
+    fn stage_menu(&mut self, ui: &mut egui::Ui, lang: Lang) {
+        let now = self.session.selection.stage;
+        egui::ComboBox::from_id_salt("stage-menu")
+            .selected_text(RichText::new(now.name(lang)).strong())
+            .show_ui(ui, |ui| {
+                for stage in Stage::ALL {
+                    if ui
+                        .selectable_label(stage == now, stage.name(lang))
+                        .on_hover_text(stage.explanation(lang))
+                        .clicked()
+                    {
+                        self.commands.push(Command::SelectStage(stage));
+                    }
+                }
+            })
+            .response
+            .widget_info(|| {
+                egui::WidgetInfo::labeled(egui::Role::ComboBox, true, lang.tr("Stage", "阶段"))
+            });
+    }
+
+    /// The narration in a sheet under the picture (upright: at most two fifths of the height) or
+    /// beside it (on its side, where height is what the picture lacks), scrolled when longer; a
+    /// swipe across it goes to the next step (leftwards) or the one before.
+    pub(super) fn narration_sheet(&mut self, ui: &mut egui::Ui) {
+        let screen = ui.ctx().content_rect();
+        let panel = if screen.width() > screen.height() {
+            egui::Panel::right("narration-sheet")
+                .resizable(true)
+                .min_size(160.0)
+                .default_size(screen.width() * 0.36)
+                .max_size(screen.width() * 0.5)
+        } else {
+            egui::Panel::bottom("narration-sheet")
+                .resizable(true)
+                .min_size(60.0)
+                .default_size(screen.height() * 0.3)
+                .max_size(screen.height() * 0.4)
+        };
+        let sheet = panel.show(ui, |ui| {
+            egui::ScrollArea::vertical()
+                .id_salt("narration-sheet-scroll")
+                .auto_shrink([false, false])
+                .show(ui, |ui| super::views::lesson::sheet(ui, &self.session))
+                .inner
+        });
+        self.narrated(sheet.inner);
+        if let Some(step) = swiped(ui.ctx(), sheet.response.rect) {
+            self.commands.push(step);
+        }
+    }
+}
+
+/// A swipe across `rect` let go this frame: leftwards the next step, rightwards the one before.
+/// Read from the press and release events (a finger's too), kept from one frame to the next, so
+/// that the sheet's scrolling and buttons keep their own drags and taps.
+fn swiped(ctx: &Context, rect: egui::Rect) -> Option<Command> {
+    let id = egui::Id::unique("narration-sheet-press");
+    let (pressed, released) = ctx.input(|i| {
+        let (mut pressed, mut released) = (None, None);
+        for e in &i.events {
+            if let egui::Event::PointerButton {
+                pos,
+                pressed: down,
+                button: egui::PointerButton::Primary,
+                ..
+            } = e
+            {
+                if *down {
+                    pressed = Some(*pos);
+                } else {
+                    released = Some(*pos);
+                }
+            }
+        }
+        (pressed, released)
+    });
+    if let Some(p) = pressed {
+        ctx.data_mut(|d| d.insert_temp(id, p));
+    }
+    let to = released?;
+    let from: egui::Pos2 = ctx.data_mut(|d| d.remove_temp(id))?;
+    let d = to - from;
+    (rect.contains(from) && d.x.abs() > SWIPE && d.x.abs() > 2.0 * d.y.abs()).then_some(
+        if d.x < 0.0 {
+            Command::NextStep
+        } else {
+            Command::PreviousStep
+        },
+    )
+}

@@ -1,0 +1,100 @@
+//! The stage's toolbar over its picture: the stage's name (its explanation on hover), the buffer
+//! and overlays of the pixel stages, the depth ramp, the comparison and the observer. In a small
+//! window (a phone) the name is in the bar above, and the rest is one View menu, so that the
+//! picture keeps the rows a wrapped toolbar would take.
+
+use egui::RichText;
+
+use super::session::Command;
+use super::views::pixels::PixelView;
+use super::{PipelensApp, style, views};
+
+impl PipelensApp {
+    /// One row: the stage's name (its explanation on hover) and the view's controls; in a small
+    /// window the controls in a View menu.
+    pub(super) fn stage_toolbar(
+        &mut self,
+        ui: &mut egui::Ui,
+        capture: &pipeline::capture::FrameCapture,
+    ) {
+        let sel = self.session.selection.clone();
+        let lang = self.session.lang;
+        if super::compact::is_compact(ui.ctx()) {
+            ui.horizontal(|ui| {
+                style::chrome_style(ui);
+                ui.menu_button(lang.tr("View ▾", "视图 ▾"), |ui| {
+                    self.view_controls(ui, capture);
+                });
+            });
+            return;
+        }
+        ui.horizontal_wrapped(|ui| {
+            style::chrome_style(ui);
+            let size = ui.style().text_styles[&egui::TextStyle::Heading].size;
+            ui.label(RichText::new(sel.stage.name(lang)).strong().size(size))
+                .on_hover_ui(|ui| {
+                    views::typeset::paragraph(
+                        ui,
+                        sel.stage.explanation(lang),
+                        &views::typeset::Style::body(ui),
+                    );
+                });
+            self.view_controls(ui, capture);
+        });
+    }
+
+    /// The buffer and overlays (pixel stages), the depth ramp, the comparison, the observer.
+    fn view_controls(&mut self, ui: &mut egui::Ui, capture: &pipeline::capture::FrameCapture) {
+        let sel = self.session.selection.clone();
+        let lang = self.session.lang;
+        let space = sel.stage.space();
+        if space.is_none() {
+            let c = self
+                .pixel_view
+                .toolbar(ui, &sel, &self.session.buffers, lang);
+            self.commands.extend(c);
+            if sel.buffer == pipeline::buffers::BufferKind::Depth
+                && let Some(c) = PixelView::depth_controls(ui, &sel, capture, lang)
+            {
+                self.commands.push(c);
+            }
+            self.comparison_choice(ui);
+        }
+        if space.is_some() || sel.comparison.is_none() {
+            let mut obs = sel.show_observer;
+            if ui
+                .checkbox(&mut obs, lang.tr("Observer view", "观察者视图"))
+                .on_hover_text(lang.tr(
+                    "The scene seen from outside, with the camera's frustum and the lights.",
+                    "从外部看场景，并显示相机的视锥和光源。",
+                ))
+                .changed()
+            {
+                self.commands.push(Command::ToggleObserver);
+            }
+        }
+    }
+
+    /// Side by side: none, or one of the comparisons.
+    fn comparison_choice(&mut self, ui: &mut egui::Ui) {
+        let lang = self.session.lang;
+        let current = self.session.selection.comparison;
+        let mut choice = current;
+        egui::ComboBox::new("comparison", lang.tr("side by side", "并排对比"))
+            .selected_text(current.map_or(lang.tr("off", "关"), |c| c.name(lang)))
+            .show_ui(ui, |ui| {
+                ui.selectable_value(&mut choice, None, lang.tr("off", "关"));
+                for c in crate::vocabulary::Comparison::ALL {
+                    ui.selectable_value(&mut choice, Some(c), c.name(lang));
+                }
+            })
+            .response
+            .on_hover_text(lang.tr(
+                "Render the scene with different settings and show them side by side, with an intensity profile.",
+                "用不同设置渲染场景并并排显示，附亮度剖面曲线。",
+            ));
+        if choice != current {
+            self.commands.push(Command::SetComparison(choice));
+        }
+    }
+}

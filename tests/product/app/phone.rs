@@ -1,0 +1,96 @@
+//! A phone's layout (issue "Every student's device"): at 390×844 (portrait) and 844×390
+//! (landscape) the bar is one row, the narration a sheet under the picture, the picture at least
+//! half of the screen on every step of a lesson, and a swipe across the sheet moves the steps.
+
+use egui::{Event, Modifiers, PointerButton, Pos2};
+use egui_kittest::Harness;
+use pipelens::app::PipelensApp;
+use pipelens::app::session::Command;
+
+/// A finger pressed at `from`, moved to `to` and lifted.
+fn swipe(h: &mut Harness<'_, PipelensApp>, from: Pos2, to: Pos2) {
+    let press = |pos, pressed| Event::PointerButton {
+        pos,
+        button: PointerButton::Primary,
+        pressed,
+        modifiers: Modifiers::NONE,
+    };
+    h.input_mut().events.push(Event::PointerMoved(from));
+    h.input_mut().events.push(press(from, true));
+    h.run_steps(1);
+    for k in 1..=5 {
+        let t = k as f32 / 5.0;
+        h.input_mut()
+            .events
+            .push(Event::PointerMoved(from + (to - from) * t));
+        h.run_steps(1);
+    }
+    h.input_mut().events.push(press(to, false));
+    h.run_steps(3);
+}
+
+/// On a phone, every step of the tour and of lesson 07 gives the picture at least half of the
+/// screen upright (the narration under it) and a third on its side (the narration beside it),
+/// or as much as its shape allows: a wide image on an upright phone, whose subject spans it, is
+/// as wide as the screen (its height is then the width over its aspect, a quarter of the
+/// screen for the tour's 640×400 buffer); on its side, a picture as tall as the view.
+#[test]
+fn on_a_phone_the_picture_takes_half_the_screen_or_more() {
+    for (size, least) in [([390.0, 844.0], 0.5), ([844.0, 390.0], 0.33)] {
+        let screen = egui::Rect::from_min_size(Pos2::ZERO, egui::vec2(size[0], size[1]));
+        let mut short = Vec::new();
+        for name in ["00-tour", "07-rasterization"] {
+            let path = crate::support::repo().join(format!("lessons/{name}.toml"));
+            let mut h = super::sized_lesson_harness(&path, size);
+            let n = super::lesson_of(&h).steps.len();
+            for k in 0..n {
+                h.state_mut().session.apply(Command::GoToStep(k));
+                h.run_steps(6);
+                assert!(h.state().panels.narration, "the narration is shown");
+                let share = h.state().picture_share(screen);
+                let spans = h
+                    .state()
+                    .picture
+                    .iter()
+                    .fold(egui::Rect::NOTHING, |a, r| a.union(*r));
+                // As wide as the screen upright, as tall as the view on its side.
+                let as_shape_allows = if size[0] < size[1] {
+                    spans.width() >= 0.9 * size[0]
+                } else {
+                    spans.height() >= 0.75 * size[1]
+                };
+                if share < least && !(as_shape_allows && share >= 0.2) {
+                    short.push(format!(
+                        "{name} step {}: {:.0} % ({:.0}×{:.0})",
+                        k + 1,
+                        share * 100.0,
+                        spans.width(),
+                        spans.height()
+                    ));
+                }
+            }
+        }
+        assert!(short.is_empty(), "at {}×{}: {short:?}", size[0], size[1]);
+    }
+}
+
+/// A swipe leftwards across the narration sheet goes to the next step, rightwards back; a
+/// short or mostly vertical drag (scrolling the sheet) does not.
+#[test]
+fn a_swipe_across_the_narration_moves_the_steps() {
+    let path = crate::support::repo().join("lessons/00-tour.toml");
+    let mut h = super::sized_lesson_harness(&path, [390.0, 844.0]);
+    h.run_steps(4);
+    assert_eq!(super::step_of(&h), 0);
+    swipe(&mut h, Pos2::new(320.0, 760.0), Pos2::new(80.0, 770.0));
+    assert_eq!(super::step_of(&h), 1, "leftwards: the next step");
+    swipe(&mut h, Pos2::new(320.0, 760.0), Pos2::new(80.0, 770.0));
+    assert_eq!(super::step_of(&h), 2);
+    swipe(&mut h, Pos2::new(80.0, 760.0), Pos2::new(320.0, 760.0));
+    assert_eq!(super::step_of(&h), 1, "rightwards: the step before");
+    swipe(&mut h, Pos2::new(200.0, 800.0), Pos2::new(180.0, 700.0));
+    assert_eq!(super::step_of(&h), 1, "a scroll is not a swipe");
+    // Over the picture a drag is the view's (pan, orbit), not a step.
+    swipe(&mut h, Pos2::new(320.0, 300.0), Pos2::new(80.0, 300.0));
+    assert_eq!(super::step_of(&h), 1, "the picture keeps its drags");
+}
