@@ -140,14 +140,16 @@ impl Editor {
             ),
             None => lang.tr("Lesson editor", "课程编辑器").to_owned(),
         };
-        // Over the narration card, at the top-right: the picture's subject keeps clear of the
-        // card, at the bottom-left.
-        let most = ctx.content_rect().height() - 90.0;
+        // Over the narration card, first at the top-right (the picture's subject keeps clear of
+        // the card, at the bottom-left); its title bar moves it.
+        let screen = ctx.content_rect();
+        let most = screen.height() - 90.0;
         egui::Window::new(title)
             .id(egui::Id::unique("lesson-editor"))
             .open(&mut open)
             .order(egui::Order::Foreground)
-            .anchor(egui::Align2::RIGHT_TOP, egui::vec2(-16.0, 64.0))
+            .pivot(egui::Align2::RIGHT_TOP)
+            .default_pos(egui::pos2(screen.right() - 16.0, screen.top() + 64.0))
             .default_width(640.0)
             .max_height(most)
             .show(ctx, |ui| {

@@ -115,14 +115,17 @@ impl NewLesson {
                     }
                 });
         }
-        ui.radio_value(
-            &mut self.from,
-            From::Mesh,
-            lang.tr(
-                "from a mesh of your own (.obj; or drop one on the window):",
-                "从你自己的网格开始（.obj；也可以把文件拖到窗口上）：",
-            ),
-        );
+        // A page cannot read a mesh from a path: the browser has the other two.
+        if super::super::platform::WRITES_FILES {
+            ui.radio_value(
+                &mut self.from,
+                From::Mesh,
+                lang.tr(
+                    "from a mesh of your own (.obj; or drop one on the window):",
+                    "从你自己的网格开始（.obj；也可以把文件拖到窗口上）：",
+                ),
+            );
+        }
         if self.from == From::Mesh {
             ui.add(
                 egui::TextEdit::singleline(&mut self.mesh)
