@@ -89,7 +89,7 @@ impl PipelensApp {
             match library::lesson(file) {
                 Ok(l) => self.open(
                     Document::Lesson(Box::new(l)),
-                    &format!("lessons/{file} (built in)"),
+                    &library::source_name(file),
                     None,
                 ),
                 Err(e) => self.session.error = Some(e.to_string()),

@@ -111,13 +111,30 @@ pub const LESSONS: [(&str, &str); 26] = [
     ),
 ];
 
+/// What the app calls the built-in lesson `file` (a name in [`LESSONS`]):
+/// `lessons/05-perspective.toml (built in)`.
+#[must_use]
+pub fn source_name(file: &str) -> String {
+    format!("lessons/{file} (built in)")
+}
+
+/// The built-in lesson the app's name `source` names (see [`source_name`]): its file's name and
+/// its text; `None` for any other source.
+#[must_use]
+pub fn named(source: &str) -> Option<(&'static str, &'static str)> {
+    let file = source
+        .strip_prefix("lessons/")?
+        .strip_suffix(" (built in)")?;
+    LESSONS.iter().find(|(f, _)| *f == file).copied()
+}
+
 /// The built-in lesson `file` (a name in [`LESSONS`]), parsed.
 ///
 /// # Errors
 /// Never for a shipped lesson (a test loads every one); an unknown name is reported as a
 /// diagnostic naming the lessons there are.
 pub fn lesson(file: &str) -> Result<Lesson, Diagnostics> {
-    let name = format!("lessons/{file} (built in)");
+    let name = source_name(file);
     match LESSONS.iter().find(|(f, _)| *f == file) {
         Some((_, text)) => super::script::parse_lesson(text, &name, Path::new(".")),
         None => Err(Diagnostics(vec![super::Diagnostic::whole_file(

@@ -26,16 +26,49 @@ pub fn append_step(text: &str, step: &Step) -> Result<String, String> {
 /// # Errors
 /// See [`append_step`].
 pub fn insert_step(text: &str, at: usize, step: &Step) -> Result<String, String> {
-    let mut doc: DocumentMut = text
-        .parse()
-        .map_err(|e| format!("the lesson file is not TOML: {e}"))?;
+    let mut doc = document(text)?;
     let table = step_table(step)?;
-    let steps = doc
-        .get_mut("steps")
-        .and_then(Item::as_array_of_tables_mut)
-        .ok_or("the lesson file has no [[steps]]")?;
-    put_step(steps, at, table);
+    put_step(steps_mut(&mut doc)?, at, table);
     Ok(doc.to_string())
+}
+
+/// `text` read as a TOML document to edit.
+///
+/// # Errors
+/// When it is not TOML.
+pub(super) fn document(text: &str) -> Result<DocumentMut, String> {
+    text.parse()
+        .map_err(|e| format!("the lesson file is not TOML: {e}"))
+}
+
+/// The document's `[[steps]]`.
+///
+/// # Errors
+/// When it has none.
+pub(super) fn steps_mut(doc: &mut DocumentMut) -> Result<&mut toml_edit::ArrayOfTables, String> {
+    doc.get_mut("steps")
+        .and_then(Item::as_array_of_tables_mut)
+        .ok_or_else(|| "the lesson file has no [[steps]]".to_owned())
+}
+
+/// `new` with the comment and spacing around the value `old` it replaces.
+pub(super) fn commented(
+    old: Option<&toml_edit::Value>,
+    mut new: toml_edit::Value,
+) -> toml_edit::Value {
+    if let Some(old) = old {
+        *new.decor_mut() = old.decor().clone();
+    }
+    new
+}
+
+/// `table[key] = item`, the comment after the value it replaces kept.
+pub(super) fn replace(table: &mut Table, key: &str, item: Item) {
+    let item = match item {
+        Item::Value(v) => Item::Value(commented(table.get(key).and_then(Item::as_value), v)),
+        other => other,
+    };
+    table.insert(key, item);
 }
 
 /// `table` as step `at` of `steps` (past the end: the last), written in the file where the step
@@ -190,7 +223,7 @@ pub fn view_items(step: &Step) -> Vec<(&'static str, Item)> {
 }
 
 /// `{ en = "…", zh = "…" }`, without a language left empty.
-fn text(t: &Text) -> InlineTable {
+pub(super) fn text(t: &Text) -> InlineTable {
     let mut out = InlineTable::new();
     for (key, words) in [("en", &t.en), ("zh", &t.zh)] {
         if !words.is_empty() {

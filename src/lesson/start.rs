@@ -5,10 +5,11 @@
 
 use std::path::Path;
 
-use toml_edit::{DocumentMut, InlineTable, Item, Table, value};
+use toml_edit::{Item, Table, value};
 
 use super::Step;
-use super::record::step_table;
+use super::record::{self, document, replace, step_table};
+use crate::vocabulary::Text;
 
 /// The template of a new lesson (`assets/templates/new-lesson.toml`).
 pub const NEW_LESSON: &str = include_str!("../../assets/templates/new-lesson.toml");
@@ -57,7 +58,7 @@ pub fn from_template(file: &Path, lab: bool) -> Result<String, String> {
 /// # Errors
 /// See [`id_of`].
 pub fn from_mesh(file: &Path, mesh: &str) -> Result<String, String> {
-    let mut doc = parse(&from_template(file, false)?)?;
+    let mut doc = document(&from_template(file, false)?)?;
     let objects = doc["scene"]["objects"]
         .as_array_of_tables_mut()
         .ok_or("the template has no objects")?;
@@ -68,11 +69,8 @@ pub fn from_mesh(file: &Path, mesh: &str) -> Result<String, String> {
     let name = Path::new(mesh)
         .file_stem()
         .map_or_else(|| "model".to_owned(), |s| s.to_string_lossy().into_owned());
-    set_keeping_comment(model, "mesh", value(mesh));
-    let mut label = InlineTable::new();
-    label.insert("en", name.as_str().into());
-    label.insert("zh", name.as_str().into());
-    set_keeping_comment(model, "label", value(label));
+    replace(model, "mesh", value(mesh));
+    replace(model, "label", value(text(&name, &name)));
     let steps = doc["steps"]
         .as_array_of_tables_mut()
         .ok_or("the template has no steps")?;
@@ -89,12 +87,12 @@ pub fn from_mesh(file: &Path, mesh: &str) -> Result<String, String> {
 /// When `source` is not a lesson file's TOML, or see [`id_of`].
 pub fn renamed(source: &str, file: &Path) -> Result<String, String> {
     let id = id_of(file)?;
-    let mut doc = parse(source)?;
+    let mut doc = document(source)?;
     let header = doc
         .get_mut("lesson")
         .and_then(Item::as_table_mut)
         .ok_or("the file has no [lesson]")?;
-    set_keeping_comment(header, "id", value(id.as_str()));
+    replace(header, "id", value(id.as_str()));
     Ok(doc.to_string())
 }
 
@@ -106,7 +104,7 @@ pub fn renamed(source: &str, file: &Path) -> Result<String, String> {
 /// cannot be written (see [`step_table`]).
 pub fn from_scene(source: &str, file: &Path, step: &Step) -> Result<String, String> {
     let id = id_of(file)?;
-    let mut doc = parse(source)?;
+    let mut doc = document(source)?;
     doc.remove("steps");
     let mut header = Table::new();
     header.insert("id", value(id.as_str()));
@@ -137,22 +135,10 @@ pub fn from_scene(source: &str, file: &Path, step: &Step) -> Result<String, Stri
     Ok(doc.to_string())
 }
 
-fn parse(text: &str) -> Result<DocumentMut, String> {
-    text.parse()
-        .map_err(|e| format!("the file is not TOML: {e}"))
-}
-
-fn text(en: &str, zh: &str) -> InlineTable {
-    let mut t = InlineTable::new();
-    t.insert("en", en.into());
-    t.insert("zh", zh.into());
-    t
-}
-
-/// `table[key] = item`, the comment after the old value kept.
-fn set_keeping_comment(table: &mut Table, key: &str, mut item: Item) {
-    if let (Some(old), Some(new)) = (table.get(key).and_then(Item::as_value), item.as_value_mut()) {
-        *new.decor_mut() = old.decor().clone();
-    }
-    table.insert(key, item);
+/// `{ en = "…", zh = "…" }`.
+fn text(en: &str, zh: &str) -> toml_edit::InlineTable {
+    record::text(&Text {
+        en: en.to_owned(),
+        zh: zh.to_owned(),
+    })
 }

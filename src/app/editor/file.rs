@@ -220,16 +220,9 @@ impl Edited {
     }
 }
 
-/// The text of the built-in lesson the session names `source` (`lessons/05-perspective.toml
-/// (built in)`), if it is one.
+/// The text of the built-in lesson the session names `source`, if it is one.
 fn builtin_text(source: &str) -> Option<&'static str> {
-    let file = source
-        .strip_prefix("lessons/")?
-        .strip_suffix(" (built in)")?;
-    library::LESSONS
-        .iter()
-        .find(|(f, _)| *f == file)
-        .map(|(_, t)| *t)
+    library::named(source).map(|(_, text)| text)
 }
 
 /// `mesh` as the lesson file `lesson` names it: from the lesson's folder when it is inside it,

@@ -39,6 +39,8 @@ pub struct Editor {
     fresh: [Text; 2],
     /// Sliders dragged while the window was open: the new step's animations.
     drags: Vec<Animation>,
+    /// The steps changed since the last save, and the draft's revision they were read at.
+    marks: Option<(u64, Vec<bool>)>,
     /// What the last action said.
     said: Option<Result<String, String>>,
     /// The "New lesson" part.
@@ -66,6 +68,7 @@ impl Editor {
             return;
         }
         self.words_for = None;
+        self.marks = None;
         self.drags.clear();
         match Edited::open(&session.source, file, None) {
             Ok(doc) => {
@@ -88,6 +91,7 @@ impl Editor {
     /// lesson just made, or a file dropped on the page), saved into `file` when there is one.
     pub fn adopt(&mut self, source: &str, file: Option<&std::path::Path>, text: String) {
         self.words_for = None;
+        self.marks = None;
         match Edited::open(source, file, Some(text)) {
             Ok(doc) => self.doc = Some(doc),
             Err(e) => self.said = Some(Err(e)),
@@ -457,7 +461,12 @@ impl Editor {
         let n = doc.draft.len();
         ui.label(RichText::new(lang.tr("Steps", "步骤")).strong())
             .on_hover_text(lang.tr("● changed since the last save", "● 自上次保存以来有改动"));
-        let changed = doc.draft.changed_steps();
+        // Read from the file's text once a change or a save, not every frame.
+        let revision = doc.draft.revision();
+        if self.marks.as_ref().is_none_or(|(r, _)| *r != revision) {
+            self.marks = Some((revision, doc.draft.changed_steps()));
+        }
+        let changed = self.marks.as_ref().map_or(&[][..], |(_, m)| m.as_slice());
         egui::ScrollArea::vertical()
             .id_salt("lesson-editor-steps")
             .max_height(180.0)

@@ -102,16 +102,12 @@ impl NewLesson {
             self.from = From::Builtin(session.source.clone());
         }
         if let From::Builtin(name) = &mut self.from {
-            let shown = name
-                .strip_prefix("lessons/")
-                .and_then(|n| n.strip_suffix(" (built in)"))
-                .unwrap_or("—")
-                .to_owned();
+            let shown = library::named(name).map_or("—", |(file, _)| file);
             egui::ComboBox::from_id_salt("new-lesson-builtin")
                 .selected_text(shown)
                 .show_ui(ui, |ui| {
                     for (file, _) in library::LESSONS {
-                        ui.selectable_value(name, format!("lessons/{file} (built in)"), file);
+                        ui.selectable_value(name, library::source_name(file), file);
                     }
                 });
         }
@@ -159,16 +155,7 @@ impl NewLesson {
                 start::renamed(current.unwrap_or_default(), &file)?
             }
             From::Builtin(name) => {
-                let text = library::LESSONS
-                    .iter()
-                    .find(|(f, _)| {
-                        Some(*f)
-                            == name
-                                .strip_prefix("lessons/")
-                                .and_then(|n| n.strip_suffix(" (built in)"))
-                    })
-                    .map(|(_, t)| *t)
-                    .ok_or("choose a built-in lesson")?;
+                let (_, text) = library::named(name).ok_or("choose a built-in lesson")?;
                 start::renamed(text, &file)?
             }
             From::Mesh => {

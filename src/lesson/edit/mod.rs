@@ -12,7 +12,9 @@ use std::path::{Path, PathBuf};
 
 use toml_edit::{DocumentMut, Item, Table, value};
 
-use super::record::{VIEW_KEYS, put_step, step_table, view_items};
+use super::record::{
+    VIEW_KEYS, commented, document as parse, put_step, replace, step_table, steps_mut, view_items,
+};
 use super::script::{Lesson, parse_lesson};
 use super::{Diagnostics, Step};
 use crate::vocabulary::{Lang, Text};
@@ -85,7 +87,8 @@ pub struct Draft {
     /// box is one change to undo, not one per key.
     typing: Option<(u64, Words, Lang)>,
     next_id: u64,
-    /// Counts the changes, undone and redone ones too: what the text was drawn from is known.
+    /// Counts the changes (undone and redone ones too) and the saves: what the words and the
+    /// marks on screen were drawn from is known.
     revision: u64,
     /// The name diagnostics give the file, and the folder its meshes and shaders are read from.
     name: String,
@@ -125,7 +128,8 @@ impl Draft {
         &self.now.text
     }
 
-    /// A number that changes with every change to the text (undone and redone ones too).
+    /// A number that changes with every change to the text (undone and redone ones too) and
+    /// with every save (which changes what counts as changed).
     #[must_use]
     pub fn revision(&self) -> u64 {
         self.revision
@@ -180,6 +184,7 @@ impl Draft {
             .map(|(&id, t)| (id, t))
             .collect();
         self.typing = None;
+        self.revision += 1;
     }
 
     /// Whether step `at` changed since the last save: new, moved, or edited.
@@ -318,18 +323,7 @@ impl Draft {
             let t = step_mut(doc, at)?;
             for key in VIEW_KEYS {
                 match items.iter().find(|(k, _)| *k == key) {
-                    Some((_, item)) => {
-                        let keep = t
-                            .get(key)
-                            .and_then(Item::as_value)
-                            .map(|v| v.decor().clone());
-                        t.insert(key, item.clone());
-                        if let (Some(decor), Some(v)) =
-                            (keep, t.get_mut(key).and_then(Item::as_value_mut))
-                        {
-                            *v.decor_mut() = decor;
-                        }
-                    }
+                    Some((_, item)) => replace(t, key, item.clone()),
                     None => {
                         t.remove(key);
                     }
@@ -465,24 +459,17 @@ impl Draft {
                 t.remove(name);
                 return Ok(());
             }
-            let mut new = value(words);
             match t.get_mut(name) {
-                Some(Item::Table(inner)) => {
-                    keep_decor(inner.get(key), &mut new);
-                    inner.insert(key, new);
-                }
+                Some(Item::Table(inner)) => replace(inner, key, value(words)),
                 Some(Item::Value(toml_edit::Value::InlineTable(inner))) => {
-                    let mut v = toml_edit::Value::from(words);
-                    if let Some(old) = inner.get(key) {
-                        *v.decor_mut() = old.decor().clone();
-                    }
+                    let v = commented(inner.get(key), words.into());
                     inner.insert(key, v);
                 }
                 _ => {
                     // Written as the template writes narration: `question.en = "…"`.
                     let mut inner = Table::new();
                     inner.set_dotted(true);
-                    inner.insert(key, new);
+                    inner.insert(key, value(words));
                     t.insert(name, Item::Table(inner));
                 }
             }
@@ -525,20 +512,9 @@ impl Draft {
     }
 }
 
-fn parse(text: &str) -> Result<DocumentMut, String> {
-    text.parse()
-        .map_err(|e| format!("the lesson file is not TOML: {e}"))
-}
-
 fn steps_of(doc: &DocumentMut) -> Result<&toml_edit::ArrayOfTables, String> {
     doc.get("steps")
         .and_then(Item::as_array_of_tables)
-        .ok_or_else(|| "the lesson file has no [[steps]]".to_owned())
-}
-
-fn steps_mut(doc: &mut DocumentMut) -> Result<&mut toml_edit::ArrayOfTables, String> {
-    doc.get_mut("steps")
-        .and_then(Item::as_array_of_tables_mut)
         .ok_or_else(|| "the lesson file has no [[steps]]".to_owned())
 }
 
@@ -560,11 +536,4 @@ fn step_texts(text: &str) -> Vec<String> {
                 .map(|s| s.iter().map(ToString::to_string).collect())
         })
         .unwrap_or_default()
-}
-
-/// `new` keeps the comment after the value it replaces.
-fn keep_decor(old: Option<&Item>, new: &mut Item) {
-    if let (Some(old), Some(v)) = (old.and_then(Item::as_value), new.as_value_mut()) {
-        *v.decor_mut() = old.decor().clone();
-    }
 }
