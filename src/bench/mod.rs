@@ -2,6 +2,7 @@
 
 pub mod handouts;
 mod shaders;
+pub mod steps;
 
 pub use shaders::{rows as shader_rows, with_shaders};
 

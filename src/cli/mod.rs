@@ -143,6 +143,11 @@ pub enum Command {
         /// Instead: only the rows of the student's shaders (GLSL beside the built-in path).
         #[arg(long, conflicts_with = "handouts")]
         shaders: bool,
+        /// Instead: each step of a built-in lesson (its file name without `.toml`, as
+        /// `00-tour`) rendered as the app renders it, on one thread and on every thread: the
+        /// frame time a page reports beside it (`scripts/web-test.sh`).
+        #[arg(long, value_name = "LESSON", conflicts_with_all = ["handouts", "shaders"])]
+        steps: Option<String>,
         /// Frames per case (the median is shown).
         #[arg(long)]
         frames: Option<usize>,
@@ -306,8 +311,8 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
     }
 }
 
-/// `pipelens bench` in its three forms: the stages (with llvmpipe alongside on request), the
-/// handouts, the student's shaders.
+/// `pipelens bench` in its four forms: the stages (with llvmpipe alongside on request), the
+/// handouts, the student's shaders, a lesson's steps as the app renders them.
 fn run_bench(command: Command) -> Result<ExitCode> {
     match command {
         Command::Bench {
@@ -330,6 +335,18 @@ fn run_bench(command: Command) -> Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
         Command::Bench {
+            steps: Some(lesson),
+            quick,
+            frames,
+            ..
+        } => {
+            let mut out = std::io::stdout().lock();
+            let threads = std::thread::available_parallelism().map_or(1, usize::from);
+            let frames = frames.unwrap_or(if quick { 1 } else { 7 });
+            crate::bench::steps::run(&format!("{lesson}.toml"), frames, threads, &mut out)?;
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Bench {
             quick,
             frames,
             peer_python,
@@ -337,6 +354,7 @@ fn run_bench(command: Command) -> Result<ExitCode> {
             data,
             handouts: false,
             shaders: false,
+            steps: None,
         } => {
             let mut out = std::io::stdout().lock();
             crate::bench::run(quick, frames, &mut out)?;
