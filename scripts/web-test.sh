@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The browser test: builds dist/ (scripts/build-web.sh), serves it on localhost, and loads it in
 # Debian's Chromium (installed here if missing) through playwright-core (scripts/web-test/):
-# the tour draws, a key advances a step, Chinese renders; the tour's frame time is printed.
+# the service worker isolates the page and the threaded build runs, the tour draws, a key
+# advances a step, Chinese renders, the page opens offline; the tour's heaviest step's frame
+# times are printed beside the native app's.
 # Screenshots land in target/web-test/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,4 +30,9 @@ for _ in $(seq 1 50); do
   python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$port/index.html')" 2>/dev/null && break
   sleep 0.2
 done
-node scripts/web-test/test.mjs "http://127.0.0.1:$port/index.html" target/web-test
+# The native app's frame times of the same steps, printed beside the page's.
+cargo build --release --quiet --bin pipelens
+native=$(target/release/pipelens bench --steps 00-tour --frames 5)
+echo "$native"
+NATIVE_STEPS=$(echo "$native" | tail -1) SERVER_PID=$server \
+  node scripts/web-test/test.mjs "http://127.0.0.1:$port/index.html" target/web-test

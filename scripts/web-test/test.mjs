@@ -5,7 +5,7 @@
 //  2. a key press advances a step: → and the title says step 2/10;
 //  3. the Chinese interface (?lang=zh) renders: its top bar differs from the English one, and a
 //     Chinese lesson step is reached the same way;
-//  4. the tour's frame time in the browser is read from <html data-frame-ms> and printed;
+//  4. (see 0) the frame times the page reports in <html data-frame-ms>;
 //  5. a lesson file dropped on the page opens, is edited (a step deleted, the edit kept in the
 //     page's storage) and saved as a download;
 //  6. the shader lesson runs the student's GLSL in the page, and S opens the shader panel;
@@ -13,6 +13,11 @@
 //     still there after a reload.
 //  9. on a phone (390×844, touch) the picture covers half the page or more, and a swipe across
 //     the narration sheet goes to the next step; landscape and tablet screenshots.
+//  0. (first) the service worker takes the page over and makes it cross-origin isolated (this
+//     server sends no isolation headers, as a static host), so the threaded build runs a pool of
+//     every core; the tour's heaviest step's frame times in the page on 1 and on every thread
+//     are printed beside the native app's (`pipelens bench --steps 00-tour`, in $NATIVE_STEPS);
+// 11. (last) with the server stopped, the page opens again from the service worker's cache.
 // Screenshots are written to the output folder for a person to look at.
 import { chromium } from "playwright-core";
 import { PNG } from "pngjs";
@@ -51,15 +56,48 @@ function variety(png, x0, y0, x1, y1) {
   return { colours: colours.size, deviation: Math.sqrt(Math.max(0, sum2 / n - mean * mean)) };
 }
 
+/** `test` evaluated in the page until true; a page that reloads itself meanwhile (the service
+ * worker's first visit) is waited for again. */
+async function until(page, test, arg, timeout = 180_000) {
+  const end = Date.now() + timeout;
+  for (;;) {
+    try {
+      await page.waitForFunction(test, arg, { timeout: Math.max(1000, end - Date.now()) });
+      return true;
+    } catch (e) {
+      if (Date.now() >= end || !/context was destroyed|navigat/i.test(String(e))) return false;
+      await page.waitForLoadState("load").catch(() => {});
+    }
+  }
+}
+
 async function waitForTitle(page, pattern, what) {
-  try {
-    await page.waitForFunction((p) => new RegExp(p).test(document.title), pattern.source, { timeout: 180_000 });
+  if (await until(page, (p) => new RegExp(p).test(document.title), pattern.source)) {
     check(true, `${what}: title "${await page.title()}"`);
     return true;
-  } catch {
-    check(false, `${what}: title should match ${pattern}, is "${await page.title()}"`);
-    return false;
   }
+  check(false, `${what}: title should match ${pattern}, is "${await page.title()}"`);
+  return false;
+}
+
+/** The median of five fresh renders of `step` (the page's reported frame time), each entered
+ * from the step before it. */
+async function frameTimes(page, step, steps) {
+  const times = [];
+  const back = step > 1 ? "ArrowLeft" : "ArrowRight";
+  const other = step > 1 ? step - 1 : step + 1;
+  await page.focus("#pipelens");
+  for (let i = 0; i < 5; i++) {
+    await page.keyboard.press(back);
+    await page.waitForFunction((t) => document.title.endsWith(t), `step ${other}/${steps}`);
+    await page.waitForTimeout(1500);
+    await page.keyboard.press(back === "ArrowLeft" ? "ArrowRight" : "ArrowLeft");
+    await page.waitForFunction((t) => document.title.endsWith(t), `step ${step}/${steps}`);
+    await page.waitForTimeout(1500);
+    times.push(Number(await page.evaluate(() => document.documentElement.dataset.frameMs)));
+  }
+  times.sort((a, b) => a - b);
+  return { median: times[2], all: times };
 }
 
 const browser = await chromium.launch({
@@ -81,6 +119,39 @@ async function open(query, name) {
   return page;
 }
 
+// 0. The service worker, the isolation it brings, and the threads.
+const first = await open("", "first visit");
+const ready = await until(first, () => document.documentElement.dataset.threads !== undefined, null);
+const state = await first.evaluate(() => ({
+  isolated: self.crossOriginIsolated,
+  controlled: navigator.serviceWorker.controller !== null,
+  threads: Number(document.documentElement.dataset.threads),
+  cores: navigator.hardwareConcurrency,
+}));
+check(ready && state.controlled && state.isolated, `the service worker controls the page and isolates it (controlled ${state.controlled}, crossOriginIsolated ${state.isolated})`);
+check(state.threads === state.cores, `the threaded build runs a pool of every core (${state.threads} of ${state.cores})`);
+await first.close();
+
+// The tour's heaviest step, in the page and natively on the same numbers of threads.
+const native = /heaviest step (\d+): ([\d.]+) ms on 1 thread, ([\d.]+) ms on (\d+) threads/.exec(process.env.NATIVE_STEPS ?? "");
+const heaviest = native ? Number(native[1]) : 10;
+const rows = [];
+for (const [query, label, mine] of [
+  ["threads=0", "the single-threaded build (the UI thread renders)", native?.[2]],
+  ["threads=1", "the threaded build, a pool of 1", native?.[2]],
+  ["", `the threaded build, a pool of ${state.cores}`, native?.[3]],
+]) {
+  const page = await open(`?${query}&step=${heaviest}`, `frames ${query || "all"}`);
+  if (await waitForTitle(page, new RegExp(`^pipelens — 00-tour — step ${heaviest}/10$`), `the tour's step ${heaviest} (${label})`)) {
+    await page.waitForTimeout(3000);
+    const t = await frameTimes(page, heaviest, 10);
+    const ratio = mine ? ` = ${(t.median / Number(mine)).toFixed(2)}× the native ${mine} ms` : "";
+    rows.push(`  ${label}: ${t.median} ms (${t.all.join(", ")})${ratio}`);
+  }
+  await page.close();
+}
+console.log(`the tour's step ${heaviest} at 1920×1080, the frame the page reports (medians of 5):\n${rows.join("\n")}`);
+
 // 1. English, the tour.
 let enShot;
 const en = await open("", "en");
@@ -99,19 +170,6 @@ if (await waitForTitle(en, /^pipelens — 00-tour — step 1\/10$/, "the tour lo
   if (await waitForTitle(en, /step 2\/10$/, "→ advances a step")) {
     await en.waitForTimeout(2000);
     await en.screenshot({ path: `${out}/tour-en-step2.png` });
-    // 4. The tour's first frame, rendered anew on each return to step 1: the median of five.
-    const times = [];
-    for (let i = 0; i < 5; i++) {
-      await en.keyboard.press("ArrowLeft");
-      await en.waitForFunction(() => document.title.endsWith("step 1/10"));
-      await en.waitForTimeout(1500);
-      times.push(Number(await en.evaluate(() => document.documentElement.dataset.frameMs)));
-      await en.keyboard.press("ArrowRight");
-      await en.waitForFunction(() => document.title.endsWith("step 2/10"));
-      await en.waitForTimeout(1500);
-    }
-    times.sort((a, b) => a - b);
-    console.log(`tour step 1 frame in the browser (one thread): median ${times[2]} ms of ${times.join(", ")}`);
   }
   enShot = shot;
 }
@@ -366,6 +424,20 @@ for (const [w, h, name] of [[390, 844, "phone-portrait"], [844, 390, "phone-land
     }
   }
   await device.close();
+}
+
+// 11. Offline: the server stopped, the page opens from the service worker's cache, threads and
+// all (the workers' scripts come from the cache too).
+if (process.env.SERVER_PID) {
+  process.kill(Number(process.env.SERVER_PID));
+  await new Promise((r) => setTimeout(r, 1000));
+  const off = await open("?lang=zh&step=3", "offline");
+  if (await waitForTitle(off, /^pipelens — 00-tour — step 3\/10$/, "with the server stopped the page opens from the cache")) {
+    await off.waitForTimeout(3000);
+    const threads = Number(await off.evaluate(() => document.documentElement.dataset.threads));
+    check(threads === state.cores, `offline, the threaded build still runs on ${threads} threads`);
+    await off.screenshot({ path: `${out}/offline-zh-step3.png` });
+  }
 }
 
 check(errors.length === 0, `no errors in the pages${errors.length ? ": " + errors.join(" | ") : ""}`);

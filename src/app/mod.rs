@@ -21,7 +21,7 @@ mod toolbar;
 pub mod views;
 pub mod worker;
 
-pub use style::{CJK_FONT, apply_style, install_fonts, setup_context};
+pub use style::{apply_style, cjk_font, install_fonts, setup_context};
 
 use std::{path::PathBuf, sync::mpsc::Receiver};
 
@@ -516,7 +516,7 @@ pub fn create(
     start: Start,
 ) -> PipelensApp {
     let ctx = cc.egui_ctx.clone();
-    let worker = RenderWorker::start(move || ctx.request_repaint()).ok();
+    let worker = RenderWorker::start(platform::waker(&ctx)).ok();
     let mut session = Session::with_document(doc, source, worker);
     session.lang = start.lang;
     session.progress = progress::Progress::load(cc.storage);

@@ -1,10 +1,11 @@
 //! What differs between the desktop and the browser, and only that: how the app starts (a
 //! native window, or a canvas in a page), how a dropped file's bytes are read (at once, or in
 //! the background as browsers require), and where the title goes (the window's, or the tab's:
-//! `document.title`). Everything else runs the same: rayon runs on one thread in the browser,
-//! the render worker falls back to the UI thread where there are no threads, and clocks come
-//! from `web-time`. Live reload watches files on disk, so the browser has none (the Lessons menu
-//! says how to open a file there).
+//! `document.title`), and how the render thread is woken. Everything else runs the same. In a
+//! page that is cross-origin isolated, the threaded build's rayon pool runs on Web Workers over
+//! shared memory, and the render worker is one of them; elsewhere rayon runs on one thread and
+//! frames render on the UI thread. Clocks come from `web-time`. Live reload watches files on
+//! disk, so the browser has none (the Lessons menu says how to open a file there).
 
 use std::sync::{Arc, Mutex};
 
@@ -217,13 +218,72 @@ pub fn run(
     })
 }
 
+/// The rayon pool's threads the page started (`start`'s `threads`): 0 in the single-threaded
+/// build, or where the page is not cross-origin isolated.
+#[cfg(target_arch = "wasm32")]
+static POOL_THREADS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+
+/// Whether the render worker may run beside the UI thread: always on the desktop (where the
+/// operating system may still refuse a thread); in a page only when its rayon pool runs on Web
+/// Workers (the worker is then one of them, see `worker::spawn`).
+#[must_use]
+pub fn render_threads() -> bool {
+    #[cfg(target_arch = "wasm32")]
+    {
+        POOL_THREADS.load(std::sync::atomic::Ordering::Relaxed) > 0
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        true
+    }
+}
+
+/// What the render thread calls when a job is done: a repaint of the window. On the desktop it
+/// asks egui directly. In a page the render thread is a Web Worker, which must not take the
+/// context's lock the UI thread holds (a page's UI thread cannot wait for a lock), so it posts
+/// on a `BroadcastChannel` the UI thread listens on, and the UI thread asks for the repaint.
+pub fn waker(ctx: &egui::Context) -> impl Fn() + Send + 'static {
+    #[cfg(all(target_arch = "wasm32", target_feature = "atomics"))]
+    {
+        use wasm_bindgen::JsCast as _;
+        let name = format!("pipelens-wake-{}", js_sys::Math::random());
+        if let Ok(channel) = web_sys::BroadcastChannel::new(&name) {
+            let ctx = ctx.clone();
+            let listener = wasm_bindgen::closure::Closure::<dyn Fn()>::new(move || {
+                ctx.request_repaint();
+            });
+            channel.set_onmessage(Some(listener.as_ref().unchecked_ref()));
+            // Both live as long as the page.
+            listener.forget();
+            std::mem::forget(channel);
+        }
+        // A channel of its own per wake (once a job): a page's objects belong to one thread.
+        move || {
+            if let Ok(c) = web_sys::BroadcastChannel::new(&name) {
+                let _ = c.post_message(&wasm_bindgen::JsValue::NULL);
+                c.close();
+            }
+        }
+    }
+    #[cfg(not(all(target_arch = "wasm32", target_feature = "atomics")))]
+    {
+        let ctx = ctx.clone();
+        move || ctx.request_repaint()
+    }
+}
+
 /// Starts the app in the page's `canvas` on the built-in tour, in the language the page asks for
-/// (`?lang=zh`), on a step if it names one (`&step=3`, counted from 1).
+/// (`?lang=zh`), on a step if it names one (`&step=3`, counted from 1). `threads` is the size of
+/// the rayon pool the page started on Web Workers (`initThreadPool`), 0 when it has none.
 ///
 /// # Errors
 /// When the canvas has no WebGL2 or the app cannot start.
 #[cfg(target_arch = "wasm32")]
-pub async fn start(canvas: web_sys::HtmlCanvasElement) -> Result<(), wasm_bindgen::JsValue> {
+pub async fn start(
+    canvas: web_sys::HtmlCanvasElement,
+    threads: usize,
+) -> Result<(), wasm_bindgen::JsValue> {
+    POOL_THREADS.store(threads, std::sync::atomic::Ordering::Relaxed);
     let query = web_sys::window()
         .and_then(|w| w.location().search().ok())
         .unwrap_or_default();

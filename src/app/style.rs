@@ -2,7 +2,7 @@
 
 use egui::{FontData, FontFamily};
 
-pub use crate::vocabulary::CJK_FONT;
+pub use crate::vocabulary::cjk_font;
 
 /// Adds the Chinese font after egui's own fonts (which have no CJK glyphs), and egui's Hack as
 /// the last fallback of the proportional family: it has symbols the others lack (⁻ ⌊ ⌋).
@@ -10,7 +10,7 @@ pub fn install_fonts(ctx: &egui::Context) {
     let mut fonts = egui::FontDefinitions::default();
     fonts.font_data.insert(
         "noto-sans-sc".to_owned(),
-        std::sync::Arc::new(FontData::from_static(CJK_FONT)),
+        std::sync::Arc::new(FontData::from_static(cjk_font())),
     );
     for (family, extra) in [
         (FontFamily::Proportional, &["noto-sans-sc", "Hack"][..]),

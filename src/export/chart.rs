@@ -19,8 +19,11 @@ fn register_font() {
     DONE.call_once(|| {
         // The embedded font parses (the app and a test use it); a failure would only leave
         // plotters without text.
-        let _ =
-            plotters::style::register_font(FAMILY, FontStyle::Normal, crate::vocabulary::CJK_FONT);
+        let _ = plotters::style::register_font(
+            FAMILY,
+            FontStyle::Normal,
+            crate::vocabulary::cjk_font(),
+        );
     });
 }
 

@@ -222,7 +222,7 @@ fn cjk_font_face(lang: Lang) -> String {
     match lang {
         Lang::Zh => format!(
             "@font-face{{font-family:'pipelens CJK';src:url({}) format('opentype')}}\n",
-            data_url("font/otf", crate::vocabulary::CJK_FONT)
+            data_url("font/otf", crate::vocabulary::cjk_font())
         ),
         Lang::En => String::new(),
     }

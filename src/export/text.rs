@@ -17,11 +17,22 @@ fn fonts() -> &'static [FontRef<'static>; 3] {
         let parse =
             |bytes: &'static [u8]| FontRef::try_from_slice(bytes).expect("an embedded font");
         [
-            parse(crate::vocabulary::CJK_FONT),
-            parse(epaint_default_fonts::HACK_REGULAR),
-            parse(epaint_default_fonts::UBUNTU_LIGHT),
+            parse(crate::vocabulary::cjk_font()),
+            parse(egui_font("Hack")),
+            parse(egui_font("Ubuntu-Light")),
         ]
     })
+}
+
+/// egui's own copy of its font `name`. Naming the bytes again (`epaint_default_fonts`'
+/// constants) would put a second copy of each font into the binary: 0.7 MB of the page's
+/// download.
+fn egui_font(name: &str) -> &'static [u8] {
+    static EGUI: std::sync::OnceLock<egui::FontDefinitions> = std::sync::OnceLock::new();
+    EGUI.get_or_init(egui::FontDefinitions::default)
+        .font_data
+        .get(name)
+        .map_or(&[], |d| (*d.font).as_ref())
 }
 
 /// A run of text of one colour, on the line or as a script.

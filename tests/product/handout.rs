@@ -76,7 +76,8 @@ fn a_chinese_handout_embeds_its_font_and_an_english_one_does_not() {
         let html = std::fs::read_to_string(out.join("index.html")).expect("index.html");
         let font = format!(
             "url(data:font/otf;base64,{}",
-            &base64::engine::general_purpose::STANDARD.encode(pipelens::vocabulary::CJK_FONT)[..64]
+            &base64::engine::general_purpose::STANDARD.encode(pipelens::vocabulary::cjk_font())
+                [..64]
         );
         assert_eq!(html.contains(&font), embedded, "{lang}");
         assert_eq!(
