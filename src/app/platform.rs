@@ -223,19 +223,12 @@ pub fn run(
 #[cfg(target_arch = "wasm32")]
 static POOL_THREADS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
 
-/// Whether the render worker may run beside the UI thread: always on the desktop (where the
-/// operating system may still refuse a thread); in a page only when its rayon pool runs on Web
-/// Workers (the worker is then one of them, see `worker::spawn`).
+/// Whether a page's render worker may run beside its UI thread: only when the page's rayon pool
+/// runs on Web Workers (the worker is then one of them, see `worker::spawn`).
+#[cfg(target_arch = "wasm32")]
 #[must_use]
 pub fn render_threads() -> bool {
-    #[cfg(target_arch = "wasm32")]
-    {
-        POOL_THREADS.load(std::sync::atomic::Ordering::Relaxed) > 0
-    }
-    #[cfg(not(target_arch = "wasm32"))]
-    {
-        true
-    }
+    POOL_THREADS.load(std::sync::atomic::Ordering::Relaxed) > 0
 }
 
 /// What the render thread calls when a job is done: a repaint of the window. On the desktop it

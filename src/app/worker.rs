@@ -90,6 +90,17 @@ impl Spares {
     }
 }
 
+impl Spares {
+    /// Keeps a finished job's captures for the next job to write into, as the app hands back
+    /// the frames it no longer shows.
+    pub fn reuse(&mut self, rendered: Rendered) {
+        self.keep(rendered.capture, false);
+        if let Some(o) = rendered.observer {
+            self.keep(o, true);
+        }
+    }
+}
+
 impl Job {
     /// Renders the job on this thread, into the storage of `spares` when it has some.
     #[must_use]

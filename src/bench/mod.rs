@@ -239,17 +239,10 @@ fn slider_drag(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()
         session.selection.pixel = pixel;
         session.drafting = drafting;
         let job = session.job();
-        let mut spares = crate::app::worker::Spares::default();
-        let _ = job.clone().run(&mut spares);
-        let mut times = Vec::with_capacity(frames);
-        for _ in 0..frames.max(1) {
-            let t = std::time::Instant::now();
-            let done = job.clone().run(&mut spares);
-            times.push(t.elapsed());
-            let r = done.result.map_err(|e| anyhow::anyhow!(e))?;
-            spares.capture = std::sync::Arc::try_unwrap(r.capture).ok();
-            spares.observer = r.observer.and_then(|o| std::sync::Arc::try_unwrap(o).ok());
-        }
+        let mut times: Vec<_> = job_frames(&job, frames)?
+            .into_iter()
+            .map(|(_, wall)| wall)
+            .collect();
         times.sort();
         writeln!(
             out,
@@ -279,6 +272,31 @@ fn slider_drag(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()
         )?;
     }
     Ok(())
+}
+
+/// Renders `job` once to warm up and then `frames` times (at least once), each frame written
+/// into the storage of the one before, as the app's render worker does: each frame's stage
+/// times and the job's wall time.
+///
+/// # Errors
+/// When the job's scene cannot be rendered.
+pub fn job_frames(
+    job: &crate::app::worker::Job,
+    frames: usize,
+) -> anyhow::Result<Vec<(pipeline::StageTimes, std::time::Duration)>> {
+    let mut spares = crate::app::worker::Spares::default();
+    let mut measured = Vec::with_capacity(frames.max(1));
+    for i in 0..=frames.max(1) {
+        let start = std::time::Instant::now();
+        let done = job.clone().run(&mut spares);
+        let wall = start.elapsed();
+        let rendered = done.result.map_err(|e| anyhow::anyhow!(e))?;
+        if i > 0 {
+            measured.push((rendered.times, wall));
+        }
+        spares.reuse(rendered);
+    }
+    Ok(measured)
 }
 
 /// Where the reference renderer is: Mesa's llvmpipe through `render.py` of

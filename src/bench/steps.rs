@@ -7,7 +7,6 @@
 use std::io::Write;
 
 use crate::app::session::{Command, Session};
-use crate::app::worker::Spares;
 
 /// One step's frame times: the median of `frames` on one thread and on `threads`.
 #[derive(Clone, Debug)]
@@ -110,16 +109,9 @@ pub fn run(
 /// The median over `frames` renders (after one to warm up) of the view's capture's stage
 /// times, each frame written into the storage of the one before, as the render worker does.
 fn median_ms(job: &crate::app::worker::Job, frames: usize) -> anyhow::Result<f64> {
-    let mut spares = Spares::default();
-    let mut times = Vec::with_capacity(frames);
-    for i in 0..=frames.max(1) {
-        let done = job.clone().run(&mut spares);
-        let r = done.result.map_err(|e| anyhow::anyhow!(e))?;
-        if i > 0 {
-            times.push(r.times.total().as_secs_f64() * 1e3);
-        }
-        spares.capture = std::sync::Arc::try_unwrap(r.capture).ok();
-        spares.observer = r.observer.and_then(|o| std::sync::Arc::try_unwrap(o).ok());
-    }
+    let mut times: Vec<f64> = super::job_frames(job, frames)?
+        .into_iter()
+        .map(|(stages, _)| stages.total().as_secs_f64() * 1e3)
+        .collect();
     Ok(super::median(&mut times))
 }
