@@ -20,7 +20,7 @@ notes write the ambient term; both renderers get ka = 0 there, so the two ambien
 
 Exit status 1 when any figure misses its bound; a peer that cannot be set up is a failure too.
 """
-import argparse, json, os, re, subprocess, sys, tempfile
+import argparse, json, os, re, shutil, subprocess, sys, tempfile
 import numpy as np
 from PIL import Image
 
@@ -256,8 +256,19 @@ def main():
             if f and not os.path.exists(f):
                 sys.exit(f"reference check: {f} is missing (the shared data folder)")
     peer = Peer(a.peer)
+    # The exports take about 2 GB: a folder of our own is removed at the end, pass or fail (keep
+    # them with --work / PIPELENS_REFERENCE_OUT to look at a failure's images).
     work = a.work or tempfile.mkdtemp(prefix="pipelens-reference-")
     os.makedirs(work, exist_ok=True)
+    try:
+        compare(a, peer, work, cases, shader_cases)
+    finally:
+        if not a.work:
+            shutil.rmtree(work, ignore_errors=True)
+
+
+def compare(a, peer, work, cases, shader_cases):
+    """Runs every case in `work`, prints the table, and exits 1 if a case misses a bound."""
     rows = []
     print(f"pipelens vs {peer.renderer}; bounds: coverage differing pixels ≤ {COVERAGE_MAX}, "
           f"|Δz_w| ≤ {DEPTH_MAX:g} (pixels whose samples are all covered), "
@@ -276,7 +287,8 @@ def main():
               f"{r['color_max']:>5} | {'ok' if r['ok'] else 'FAIL'} |", flush=True)
     failed = [r for r in rows if not r["ok"]]
     if failed:
-        print(f"reference check FAILED: {len(failed)} of {len(rows)} cases miss a bound")
+        print(f"reference check FAILED: {len(failed)} of {len(rows)} cases miss a bound"
+              + ("" if a.work else " (set PIPELENS_REFERENCE_OUT to keep the images)"))
         sys.exit(1)
     print(f"reference check passed: {len(rows)} cases")
 
