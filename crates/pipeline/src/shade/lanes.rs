@@ -5,13 +5,13 @@
 //! z·z'`, `normalize(v) = v·(1/√(v·v))` or zero, `f_att = 1/((a + b·d) + c·d·d)` — and IEEE
 //! addition, multiplication, division and square root are correctly rounded in a SIMD lane as in a
 //! scalar register, so each lane equals what [`super::shade`] gives for its point, bit for bit.
-//! The powers (`max(n·h, 0)^β`, a spotlight's `(cos φ)^e`) are taken lane by lane with the scalar
-//! `powf`. The tests hold the two paths to that equality.
+//! The powers (`max(n·h, 0)^β`, a spotlight's `(cos φ)^e`) are [`power::pow_lanes`], whose lane
+//! is the scalar path's [`power::pow`]. The tests hold the two paths to that equality.
 
 use glam::Vec3;
 use wide::f32x8;
 
-use super::{Reflection, ShadeTerms};
+use super::{Reflection, ShadeTerms, power};
 use crate::light::{Light, Material};
 
 /// How many points one call lights.
@@ -179,9 +179,7 @@ pub fn shade_lanes(
                 let to = V3::splat(position).sub(p);
                 let l = to.normalize_or_zero();
                 let f_att = attenuation_lanes(attenuation, to.dot(to).sqrt());
-                let spot = f32x8::new(std::array::from_fn(|k| {
-                    super::spot_factor(l.lane(k), direction, cutoff_deg, exponent)
-                }));
+                let spot = spot_factor_lanes(l, direction, cutoff_deg, exponent);
                 (l, intensity, f_att * spot)
             }
         };
@@ -195,14 +193,7 @@ pub fn shade_lanes(
             Reflection::BlinnPhong => n.dot(h),
         };
         let lit = n_dot_l.simd_gt(f32x8::ZERO);
-        let (lit_lanes, dots) = (lit.to_array(), spec_dot.to_array());
-        let power = f32x8::new(std::array::from_fn(|k| {
-            if lit_lanes[k] == 0.0 {
-                0.0
-            } else {
-                dots[k].max(0.0).powf(m.shininess)
-            }
-        }));
+        let power = power::pow_lanes(spec_dot.max(f32x8::ZERO), f32x8::splat(m.shininess));
         let intensity = V3::splat(intensity);
         let spec = V3::splat(m.ks).scale(factor).mul(intensity).scale(power);
         specular = specular.add(spec.keep(lit));
@@ -235,6 +226,18 @@ pub fn shade_lanes(
             n_dot_h,
         };
     }
+}
+
+/// [`super::spot_factor`] lane by lane: `(cos φ)^e` with `cos φ = (−l)·axis`, 0 where
+/// `cos φ < cos θ`.
+fn spot_factor_lanes(l: V3, axis: Vec3, cutoff_deg: f32, exponent: f32) -> f32x8 {
+    // `−l` as the scalar path negates: multiplying by −1 flips the sign bit and nothing else.
+    let cos_phi = l
+        .scale(f32x8::splat(-1.0))
+        .dot(V3::splat(axis.normalize_or_zero()));
+    let outside = cos_phi.simd_lt(f32x8::splat(cutoff_deg.to_radians().cos()));
+    let power = power::pow_lanes(cos_phi.max(f32x8::ZERO), f32x8::splat(exponent));
+    outside.select(f32x8::ZERO, power)
 }
 
 /// [`super::attenuation`] lane by lane: `1/((a + b·d) + c·d·d)`, 1 where that denominator is

@@ -27,6 +27,7 @@ use serde::Serialize;
 use crate::light::{Light, Material};
 
 pub mod lanes;
+pub mod power;
 
 /// Which specular term.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
@@ -119,7 +120,7 @@ pub fn spot_factor(l: Vec3, axis: Vec3, cutoff_deg: f32, exponent: f32) -> f32 {
     if cos_phi < cutoff_deg.to_radians().cos() {
         0.0
     } else {
-        cos_phi.max(0.0).powf(exponent)
+        power::pow(cos_phi.max(0.0), exponent)
     }
 }
 
@@ -208,7 +209,7 @@ pub fn light_term(
         Reflection::BlinnPhong => n.dot(h),
     };
     let specular = if n_dot_l > 0.0 {
-        factor * m.ks * intensity * spec_dot.max(0.0).powf(m.shininess)
+        factor * m.ks * intensity * power::pow(spec_dot.max(0.0), m.shininess)
     } else {
         Vec3::ZERO
     };

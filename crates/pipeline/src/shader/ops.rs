@@ -6,6 +6,7 @@ use glam::{Mat2, Mat3, Mat4};
 use naga::{BinaryOperator as B, DerivativeAxis, MathFunction as M};
 
 use super::code::{Kind, Reg};
+use crate::shade::power;
 
 fn f(x: u32) -> f32 {
     f32::from_bits(x)
@@ -352,7 +353,13 @@ pub fn math<'a>(
         (M::Exp2, _) => each1(out, &f32::exp2),
         (M::Log, _) => each1(out, &f32::ln),
         (M::Log2, _) => each1(out, &f32::log2),
-        (M::Pow, _) => each2(out, &f32::powf),
+        // The lighting's polynomial power (its error is stated in `shade::power`), eight lanes
+        // at a time.
+        (M::Pow, _) => {
+            for c in 0..width {
+                power::pow_bits(arg(0, c), arg(1, c), &mut out[c as usize * stride..][..n]);
+            }
+        }
         (M::Sqrt, _) => each1(out, &f32::sqrt),
         (M::InverseSqrt, _) => each1(out, &|x| 1.0 / x.sqrt()),
         (M::Sign, _) => each1(out, &|x| {
