@@ -3,7 +3,7 @@
 # Debian's Chromium (installed here if missing) through playwright-core (scripts/web-test/):
 # the service worker isolates the page and the threaded build runs, the tour draws, a key
 # advances a step, Chinese renders, the page opens offline; the tour's heaviest step's frame
-# times are printed beside the native app's.
+# times are printed beside the native render's and the native app's (scripts/native-frames.sh).
 # Screenshots land in target/web-test/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -30,9 +30,17 @@ for _ in $(seq 1 50); do
   python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$port/index.html')" 2>/dev/null && break
   sleep 0.2
 done
-# The native app's frame times of the same steps, printed beside the page's.
+# The native frame times of the same steps, printed beside the page's: the render alone
+# (bench --steps), and the app as it runs, its window painting under Xvfb at 1920×1080 as the
+# page's canvas is painted (scripts/native-frames.sh; skipped where Xvfb is not installed).
 cargo build --release --quiet --bin pipelens
 native=$(target/release/pipelens bench --steps 00-tour --frames 5)
 echo "$native"
-NATIVE_STEPS=$(echo "$native" | tail -1) SERVER_PID=$server \
+heaviest=$(echo "$native" | tail -1 | sed -E 's/^heaviest step ([0-9]+):.*/\1/')
+app_frames=
+if command -v Xvfb >/dev/null && command -v xdotool >/dev/null; then
+  app_frames=$(scripts/native-frames.sh "$heaviest" | tail -1)
+  echo "$app_frames"
+fi
+NATIVE_STEPS=$(echo "$native" | tail -1) NATIVE_APP=$app_frames SERVER_PID=$server \
   node scripts/web-test/test.mjs "http://127.0.0.1:$port/index.html" target/web-test

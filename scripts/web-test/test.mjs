@@ -16,7 +16,8 @@
 //  0. (first) the service worker takes the page over and makes it cross-origin isolated (this
 //     server sends no isolation headers, as a static host), so the threaded build runs a pool of
 //     every core; the tour's heaviest step's frame times in the page on 1 and on every thread
-//     are printed beside the native app's (`pipelens bench --steps 00-tour`, in $NATIVE_STEPS);
+//     are printed beside the native render's (`pipelens bench --steps 00-tour`, in $NATIVE_STEPS)
+//     and the native app's as it runs (`scripts/native-frames.sh`, in $NATIVE_APP);
 // 11. (last) with the server stopped, the page opens again from the service worker's cache.
 // Screenshots are written to the output folder for a person to look at.
 import { chromium } from "playwright-core";
@@ -135,17 +136,20 @@ await first.close();
 // The tour's heaviest step, in the page and natively on the same numbers of threads.
 const native = /heaviest step (\d+): ([\d.]+) ms on 1 thread, ([\d.]+) ms on (\d+) threads/.exec(process.env.NATIVE_STEPS ?? "");
 const heaviest = native ? Number(native[1]) : 10;
+// The native app as it runs (scripts/native-frames.sh): "… step 5: 39.6 ms on 1 thread (…), 33.1 ms on 2 threads (…)".
+const app = /: ([\d.]+) ms on 1 thread .*, ([\d.]+) ms on \d+ threads/.exec(process.env.NATIVE_APP ?? "");
 const rows = [];
-for (const [query, label, mine] of [
-  ["threads=0", "the single-threaded build (the UI thread renders)", native?.[2]],
-  ["threads=1", "the threaded build, a pool of 1", native?.[2]],
-  ["", `the threaded build, a pool of ${state.cores}`, native?.[3]],
+for (const [query, label, mine, running] of [
+  ["threads=0", "the single-threaded build (the UI thread renders)", native?.[2], app?.[1]],
+  ["threads=1", "the threaded build, a pool of 1", native?.[2], app?.[1]],
+  ["", `the threaded build, a pool of ${state.cores}`, native?.[3], app?.[2]],
 ]) {
   const page = await open(`?${query}&step=${heaviest}`, `frames ${query || "all"}`);
   if (await waitForTitle(page, new RegExp(`^pipelens — 00-tour — step ${heaviest}/10$`), `the tour's step ${heaviest} (${label})`)) {
     await page.waitForTimeout(3000);
     const t = await frameTimes(page, heaviest, 10);
-    const ratio = mine ? ` = ${(t.median / Number(mine)).toFixed(2)}× the native ${mine} ms` : "";
+    const ratio = (mine ? ` = ${(t.median / Number(mine)).toFixed(2)}× the native render's ${mine} ms` : "")
+      + (running ? `, ${(t.median / Number(running)).toFixed(2)}× the native app's ${running} ms` : "");
     rows.push(`  ${label}: ${t.median} ms (${t.all.join(", ")})${ratio}`);
   }
   await page.close();

@@ -70,7 +70,10 @@ pub fn report(ctx: &egui::Context, title: &str, frame_ms: Option<f64>, share: f3
         let _ = root.set_attribute("data-picture-share", &format!("{share:.2}"));
     }
     #[cfg(not(target_arch = "wasm32"))]
-    let _ = (frame_ms, share);
+    {
+        let _ = share;
+        log_frame(ctx, title, frame_ms);
+    }
     let id = egui::Id::unique("pipelens-title");
     if ctx.data(|d| d.get_temp::<String>(id)).as_deref() == Some(title) {
         return;
@@ -81,6 +84,24 @@ pub fn report(ctx: &egui::Context, title: &str, frame_ms: Option<f64>, share: f3
     #[cfg(target_arch = "wasm32")]
     if let Some(document) = web_sys::window().and_then(|w| w.document()) {
         document.set_title(title);
+    }
+}
+
+/// With `PIPELENS_FRAME_LOG` set, each new frame's render time goes to standard error as
+/// `frame: 23.1 ms (title)`: the desktop's counterpart of the page's `data-frame-ms`, read by
+/// `scripts/native-frames.sh` to measure the app as it runs, its window painting.
+#[cfg(not(target_arch = "wasm32"))]
+fn log_frame(ctx: &egui::Context, title: &str, frame_ms: Option<f64>) {
+    static ON: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    let Some(ms) =
+        frame_ms.filter(|_| *ON.get_or_init(|| std::env::var_os("PIPELENS_FRAME_LOG").is_some()))
+    else {
+        return;
+    };
+    let id = egui::Id::unique("pipelens-frame-logged");
+    if ctx.data(|d| d.get_temp::<f64>(id)) != Some(ms) {
+        ctx.data_mut(|d| d.insert_temp(id, ms));
+        eprintln!("frame: {ms:.1} ms ({title})");
     }
 }
 
