@@ -294,6 +294,17 @@ mod tests {
         assert!(!covers('ᵀ'));
     }
 
+    /// The attributes' and uniforms' meanings (in the shader checker's messages) are drawable.
+    #[test]
+    fn the_shader_interface_has_glyphs() {
+        use pipeline::shader::interface::{ATTRIBUTES, UNIFORMS};
+        let texts = ATTRIBUTES.iter().map(|a| a.meaning);
+        for text in texts.chain(UNIFORMS.iter().map(|u| u.meaning)) {
+            let missing: String = text.chars().filter(|&c| !covers(c)).collect();
+            assert!(missing.is_empty(), "{text:?}: no glyph for {missing:?}");
+        }
+    }
+
     #[test]
     fn chinese_latin_and_the_symbols_the_cjk_font_lacks_draw_ink() {
         for text in ["Phong", "透视投影", "⌊λ⌋", "M⁻¹"] {

@@ -100,7 +100,7 @@ pub const UNIFORMS: [UniformSpec; 31] = [
     UniformSpec {
         names: &["normal_matrix"],
         glsl: "mat3",
-        meaning: "(M₃ₓ₃⁻¹)ᵀ: object normals → world normals",
+        meaning: "transpose(inverse(mat3(model))): object normals → world normals",
     },
     UniformSpec {
         names: &["eye", "eye_pos"],

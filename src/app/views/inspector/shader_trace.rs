@@ -154,6 +154,10 @@ fn values(ui: &mut Ui, rows: &[(String, String)]) {
     }
 }
 
+/// The flag after a statement whose value stopped being a number (every glyph in the embedded
+/// fonts: `⚠` is in none of them and drew as a box).
+const NOT_FINITE_MARK: &str = "◀ NaN/∞";
+
 /// A run, statement by statement, a value that is NaN or infinite flagged; long lines wrap.
 fn run(ui: &mut Ui, trace: &[TraceLine], lang: Lang) {
     for line in trace {
@@ -161,7 +165,7 @@ fn run(ui: &mut Ui, trace: &[TraceLine], lang: Lang) {
             ui.monospace(format!("{} {:>3}", lang.tr("line", "行"), line.line));
             let text = if not_finite(&line.text) {
                 // The statement where a value stopped being a number.
-                RichText::new(format!("{}   ⚠ NaN/∞", line.text))
+                RichText::new(format!("{}   {NOT_FINITE_MARK}", line.text))
                     .monospace()
                     .color(ui.visuals().error_fg_color)
             } else {
@@ -169,5 +173,16 @@ fn run(ui: &mut Ui, trace: &[TraceLine], lang: Lang) {
             };
             ui.add(egui::Label::new(text).wrap());
         });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_nan_flag_has_glyphs() {
+        let drawable = |c| crate::export::text::covers(c);
+        assert!(super::NOT_FINITE_MARK.chars().all(drawable));
+        // The flag it replaced drew as a box: the check can fail.
+        assert!(!drawable('⚠'));
     }
 }
