@@ -1,8 +1,20 @@
 //! `capture.json`: the numbers of a capture, for handouts, scripts and other tools.
 
+use glam::Vec3;
 use pipeline::capture::FrameCapture;
-use pipeline::raster::SUBPIXEL_BITS;
+use pipeline::raster::{RasterTriangle, SUBPIXEL_BITS};
+use serde::Serialize;
 use serde_json::{Value, json};
+
+/// A raster triangle as `capture.json` writes it: its own fields and its corners' barycentric
+/// weights with respect to the original triangle (`bary`, which the triangle keeps as indices
+/// into its primitive).
+#[derive(Serialize)]
+struct RasterTriangleJson<'a> {
+    #[serde(flatten)]
+    triangle: &'a RasterTriangle,
+    bary: [Vec3; 3],
+}
 
 /// The conventions a reader needs to interpret the numbers.
 fn conventions() -> Value {
@@ -48,7 +60,14 @@ pub fn capture_json(
         },
         "vertices": &capture.vertices[..take(capture.vertices.len())],
         "primitives": &capture.primitives[..take(capture.primitives.len())],
-        "raster_triangles": &capture.triangles[..take(capture.triangles.len())],
+        "raster_triangles": capture.triangles[..take(capture.triangles.len())]
+            .iter()
+            .map(|t| RasterTriangleJson {
+                triangle: t,
+                bary: capture.primitives.get(t.primitive as usize)
+                    .map_or([Vec3::ZERO; 3], |p| p.bary_corners(t)),
+            })
+            .collect::<Vec<_>>(),
         "shaders": capture.shaders.as_ref().map(|sh| json!({
             "fragments": sh.fragments,
             "discarded": sh.discarded,

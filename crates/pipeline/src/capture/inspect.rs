@@ -314,14 +314,15 @@ impl FrameCapture {
                 continue;
             }
             let l = tri.lambda(centre);
+            let bary = self.primitives[tri.primitive as usize].bary_corners(tri);
             out.push(FragmentRecord {
                 primitive: tri.primitive,
                 triangle: t as u32,
                 samples,
                 sample_depths,
                 depth: tri.depth_at(centre),
-                bary_affine: tri.original_bary(l, false).to_array(),
-                bary_perspective: tri.original_bary(l, true).to_array(),
+                bary_affine: tri.original_bary(&bary, l, false).to_array(),
+                bary_perspective: tri.original_bary(&bary, l, true).to_array(),
                 visible: tri.primitive == owner,
                 edges: EdgeTest::of(tri, corner, &offsets),
             });

@@ -19,7 +19,7 @@ pub use explain::*;
 pub use inspect::*;
 pub use pixels::*;
 
-use glam::I64Vec2;
+use glam::{I64Vec2, Vec3};
 use half::f16;
 use serde::Serialize;
 
@@ -88,6 +88,16 @@ pub struct PrimitiveRecord {
     pub triangles: [u32; 2],
     /// Samples covered and written (after the depth test), over all its raster triangles.
     pub counts: RasterCounts,
+}
+
+impl PrimitiveRecord {
+    /// The barycentric weights, with respect to this primitive, of the corners of `t`, one of
+    /// its raster triangles ([`RasterTriangle::bary_corners`] with its clipped polygon).
+    #[must_use]
+    #[inline]
+    pub fn bary_corners(&self, t: &RasterTriangle) -> [Vec3; 3] {
+        t.bary_corners(self.clipped_polygon.as_deref())
+    }
 }
 
 /// A summary of one object, for the capture's JSON.
@@ -293,9 +303,13 @@ impl FrameCapture {
         let (w, h) = (self.width() as usize, self.height() as usize);
         let (x, y) = (i % w, h - 1 - i / w);
         let l = tri.lambda(Self::pixel_centre_fixed(x as u32, y as u32));
+        let bary = self
+            .primitives
+            .get(tri.primitive as usize)?
+            .bary_corners(tri);
         Some(Barycentrics {
-            perspective: tri.original_bary(l, true).to_array(),
-            affine: tri.original_bary(l, false).to_array(),
+            perspective: tri.original_bary(&bary, l, true).to_array(),
+            affine: tri.original_bary(&bary, l, false).to_array(),
         })
     }
 

@@ -34,6 +34,8 @@ pub use samples::*;
 pub use zbuffer::*;
 
 use glam::{I64Vec2, Vec2, Vec3};
+
+use crate::clip::ClipVertex;
 use serde::Serialize;
 
 /// Bits of sub-pixel precision of snapped vertex positions.
@@ -71,8 +73,12 @@ pub struct RasterTriangle {
     pub window: [Vec3; 3],
     /// `1/w_clip` of the corners (for perspective-correct interpolation).
     pub inv_w: [f32; 3],
-    /// Barycentric weights of the corners with respect to the original triangle.
-    pub bary: [Vec3; 3],
+    /// Where the corners lie in the original triangle (their barycentric weights, from
+    /// [`Self::bary_corners`]): an index per corner, of the primitive's own corners or of its
+    /// clipped polygon's vertices — 4 bytes instead of 36 weights, of which an unclipped
+    /// triangle, nearly every one, has no need.
+    #[serde(skip)]
+    corners: Corners,
     /// Pixel bounding box `[x_min, y_min, x_max, y_max]` (inclusive, window pixels, y up),
     /// clamped to the viewport, whose sides (at most 16 384 pixels) fit 16 bits: 8 bytes less
     /// of the memory a million triangles are written, moved and read through.
@@ -84,6 +90,40 @@ pub struct RasterTriangle {
     /// Which edges are top or left edges (see [`Self::top_left`]).
     #[serde(skip)]
     top_left: [bool; 3],
+}
+
+/// Which points of its primitive a raster triangle's corners are: `of[i]` indexes the
+/// primitive's corners (weights `(1, 0, 0)`, `(0, 1, 0)`, `(0, 0, 1)`) or, when `clipped`, the
+/// vertices of its clipped polygon, whose weights [`ClipVertex::bary`] holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Corners {
+    /// The index of each corner.
+    pub of: [u8; 3],
+    /// Whether they index the clipped polygon rather than the primitive's corners.
+    pub clipped: bool,
+}
+
+impl Corners {
+    /// The primitive's own corners, in order.
+    pub const ORIGINAL: Self = Self {
+        of: [0, 1, 2],
+        clipped: false,
+    };
+
+    /// The fan triangle `(0, k, k + 1)` of a clipped polygon.
+    #[must_use]
+    pub fn fan(k: u8) -> Self {
+        Self {
+            of: [0, k, k + 1],
+            clipped: true,
+        }
+    }
+}
+
+impl Default for Corners {
+    fn default() -> Self {
+        Self::ORIGINAL
+    }
 }
 
 /// One edge equation `E(p) = a·p.x + b·p.y + c`. `a` and `b` are differences of two corners'
@@ -165,7 +205,7 @@ impl RasterTriangle {
         primitive: u32,
         window: [Vec3; 3],
         inv_w: [f32; 3],
-        bary: [Vec3; 3],
+        corners: Corners,
         cull: CullMode,
         size: (u32, u32),
     ) -> Result<Self, SetupRejection> {
@@ -183,12 +223,12 @@ impl RasterTriangle {
             CullMode::Front if front => return Err(SetupRejection::FrontFace),
             _ => {}
         }
-        let (mut window, mut inv_w, mut bary) = (window, inv_w, bary);
+        let (mut window, mut inv_w, mut corners) = (window, inv_w, corners);
         if !front {
             fixed.swap(1, 2);
             window.swap(1, 2);
             inv_w.swap(1, 2);
-            bary.swap(1, 2);
+            corners.of.swap(1, 2);
         }
         let [(e0, t0), (e1, t1), (e2, t2)] = [
             Edge::new(fixed[1], fixed[2]),
@@ -208,7 +248,7 @@ impl RasterTriangle {
             primitive,
             window,
             inv_w,
-            bary,
+            corners,
             bbox,
             edges: [e0, e1, e2],
             area2: area2.abs(),
@@ -332,24 +372,49 @@ impl RasterTriangle {
         self.depth_plane().at(p)
     }
 
-    /// Barycentric weights of the **original** triangle at screen-space weights `λ`:
-    /// perspective-correct, `b = Σ (λ_i/w_i)·bary_i / Σ (λ_i/w_i)`, or affine, `b = Σ λ_i·bary_i`.
+    /// Which points of the primitive the corners are.
+    #[must_use]
+    pub fn corners(&self) -> Corners {
+        self.corners
+    }
+
+    /// The corners' barycentric weights with respect to the original triangle, `bary_i`:
+    /// unit weights for the primitive's own corners, the clipped polygon's weights for a piece
+    /// of it (`polygon`: the primitive's clipped polygon, `None` when it was not clipped).
     #[must_use]
     #[inline]
-    pub fn original_bary(&self, l: Vec3, perspective_correct: bool) -> Vec3 {
+    pub fn bary_corners(&self, polygon: Option<&[ClipVertex]>) -> [Vec3; 3] {
+        match polygon {
+            Some(poly) if self.corners.clipped => self.corners.of.map(|i| poly[i as usize].bary),
+            _ => self.corners.of.map(|i| Vec3::AXES[i as usize % 3]),
+        }
+    }
+
+    /// Barycentric weights of the **original** triangle at screen-space weights `λ`, the
+    /// corners' weights being `bary` ([`Self::bary_corners`]): perspective-correct,
+    /// `b = Σ (λ_i/w_i)·bary_i / Σ (λ_i/w_i)`, or affine, `b = Σ λ_i·bary_i`.
+    #[must_use]
+    #[inline]
+    pub fn original_bary(&self, bary: &[Vec3; 3], l: Vec3, perspective_correct: bool) -> Vec3 {
         let k = if perspective_correct {
             let k = l * Vec3::from(self.inv_w);
             k / (k.x + k.y + k.z)
         } else {
             l
         };
-        self.bary[0] * k.x + self.bary[1] * k.y + self.bary[2] * k.z
+        bary[0] * k.x + bary[1] * k.y + bary[2] * k.z
     }
 
     /// `uv = Σ b_i·uv_i` at fixed-point position `p`, over the original triangle's `uvs`.
     #[inline]
-    fn uv_of(&self, uvs: [Vec2; 3], p: I64Vec2, perspective_correct: bool) -> Vec2 {
-        let w = self.original_bary(self.lambda(p), perspective_correct);
+    fn uv_of(
+        &self,
+        bary: &[Vec3; 3],
+        uvs: [Vec2; 3],
+        p: I64Vec2,
+        perspective_correct: bool,
+    ) -> Vec2 {
+        let w = self.original_bary(bary, self.lambda(p), perspective_correct);
         uvs[0] * w.x + uvs[1] * w.y + uvs[2] * w.z
     }
 
@@ -363,17 +428,19 @@ impl RasterTriangle {
     #[must_use]
     pub fn uv_at(
         &self,
+        bary: &[Vec3; 3],
         uvs: [Vec2; 3],
         p: I64Vec2,
         height: u32,
         perspective_correct: bool,
         derivatives: bool,
     ) -> (Vec2, Vec2, Vec2) {
-        let uv = self.uv_of(uvs, p, perspective_correct);
+        let uv = self.uv_of(bary, uvs, p, perspective_correct);
         if !derivatives {
             return (uv, Vec2::ZERO, Vec2::ZERO);
         }
-        let (dx, dy) = self.uv_derivatives(uvs, p - quad_offset(p, height), perspective_correct);
+        let (dx, dy) =
+            self.uv_derivatives(bary, uvs, p - quad_offset(p, height), perspective_correct);
         (uv, dx, dy)
     }
 
@@ -382,11 +449,12 @@ impl RasterTriangle {
     #[must_use]
     pub fn uv_derivatives(
         &self,
+        bary: &[Vec3; 3],
         uvs: [Vec2; 3],
         o: I64Vec2,
         perspective_correct: bool,
     ) -> (Vec2, Vec2) {
-        let at = |q: I64Vec2| self.uv_of(uvs, q, perspective_correct);
+        let at = |q: I64Vec2| self.uv_of(bary, uvs, q, perspective_correct);
         let here = at(o);
         (
             at(o + I64Vec2::new(ONE, 0)) - here,

@@ -7,7 +7,7 @@ use rayon::prelude::*;
 
 use crate::capture::{Fate, Matrices, PrimitiveRecord};
 use crate::clip::{self, ClipOutcome, ClipVertex};
-use crate::raster::{RasterCounts, RasterTriangle, SetupRejection};
+use crate::raster::{Corners, RasterCounts, RasterTriangle, SetupRejection};
 use crate::scene::Scene;
 use crate::settings::RenderSettings;
 use crate::shade::{self, ShadeTerms};
@@ -99,15 +99,18 @@ impl Fan<'_> {
 }
 
 /// Moves each chunk's triangles together, in order — chunk `c` wrote `count` of them from
-/// place `c·chunk` on, its `excess` aside — and returns where each chunk's now begin. The moves
-/// go towards the front, in order, so each reads places not yet written; when an excess would
-/// overtake a later chunk's places the list is rebuilt instead.
+/// place `c·chunk` on, its `excess` aside — and returns where each chunk's now begin. When an
+/// excess would overtake a later chunk's places the list is rebuilt; otherwise the chunks move
+/// in parallel, each within its own destination `starts[c]..starts[c + 1]`, which holds all of
+/// its places but those the next chunk's destination covers (its "tail", when chunks before it
+/// dropped triangles: a uv sphere's degenerate pole triangles shift every later chunk), and
+/// those tails are set aside first.
 fn gather(
     triangles: &mut Vec<RasterTriangle>,
     fans: &[(usize, Vec<RasterTriangle>)],
     chunk: usize,
 ) -> Vec<u32> {
-    let mut starts = Vec::with_capacity(fans.len());
+    let mut starts = Vec::with_capacity(fans.len() + 1);
     let mut next = 0;
     for (count, _) in fans {
         starts.push(next);
@@ -123,16 +126,47 @@ fn gather(
             all.extend_from_slice(excess);
         }
         *triangles = all;
-    } else {
-        for ((c, (count, excess)), &start) in fans.iter().enumerate().zip(&starts) {
-            let placed = count - excess.len();
-            if start != c * chunk {
-                triangles.copy_within(c * chunk..c * chunk + placed, start);
-            }
-            triangles[start + placed..start + count].copy_from_slice(excess);
-        }
-        triangles.truncate(next);
+        return starts.into_iter().map(|s| s as u32).collect();
     }
+    starts.push(next);
+    // Chunk c's places `c·chunk .. c·chunk + placed`; those from `starts[c + 1]` on (its tail)
+    // lie in the next chunk's destination.
+    let places = |c: usize| {
+        let placed = fans[c].0 - fans[c].1.len();
+        let tail = starts[c + 1].clamp(c * chunk, c * chunk + placed);
+        (c * chunk, tail, c * chunk + placed)
+    };
+    let tails: Vec<Vec<RasterTriangle>> = (0..fans.len())
+        .into_par_iter()
+        .map(|c| {
+            let (_, tail, end) = places(c);
+            triangles[tail..end].to_vec()
+        })
+        .collect();
+    let mut parts = Vec::with_capacity(fans.len());
+    let mut rest = &mut triangles[..next];
+    for c in 0..fans.len() {
+        let (part, after) = rest.split_at_mut(starts[c + 1] - starts[c]);
+        parts.push(part);
+        rest = after;
+    }
+    parts
+        .into_par_iter()
+        .zip(tails)
+        .enumerate()
+        .for_each(|(c, (part, tail))| {
+            let (first, tail_from, _) = places(c);
+            let held = tail_from - first;
+            if held > 0 {
+                let from = first - starts[c];
+                part.copy_within(from..from + held, 0);
+            }
+            part[held..held + tail.len()].copy_from_slice(&tail);
+            let excess = &fans[c].1;
+            part[held + tail.len()..].copy_from_slice(excess);
+        });
+    triangles.truncate(next);
+    starts.pop();
     starts.into_iter().map(|s| s as u32).collect()
 }
 
@@ -219,7 +253,11 @@ fn assemble_one(
             id,
             idx.map(|i| window[i].0),
             idx.map(|i| window[i].1),
-            idx.map(|i| polygon[i].bary),
+            if inside {
+                Corners::ORIGINAL
+            } else {
+                Corners::fan(k as u8)
+            },
             settings.cull,
             size,
         ) {
@@ -293,4 +331,86 @@ pub(super) fn light_faces(
             settings.reflection,
         )
     }));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::raster::{Corners, CullMode};
+
+    /// A distinct raster triangle: its primitive number is `id`.
+    fn triangle(id: u32) -> RasterTriangle {
+        let corner = Vec3::new(0.0, 0.0, 0.5);
+        let window = [corner, corner + Vec3::X, corner + Vec3::Y];
+        RasterTriangle::setup(
+            id,
+            window,
+            [1.0; 3],
+            Corners::ORIGINAL,
+            CullMode::None,
+            (4, 4),
+        )
+        .expect("a proper triangle")
+    }
+
+    /// Chunks of `chunk` places each holding `counts[c]` triangles (those past `chunk` in
+    /// its excess), gathered, against the same triangles concatenated in order.
+    fn check(counts: &[usize], chunk: usize) {
+        let mut id = 0;
+        let mut triangles = vec![RasterTriangle::default(); counts.len() * chunk];
+        let mut fans = Vec::new();
+        let mut want = Vec::new();
+        for (c, &count) in counts.iter().enumerate() {
+            let mut excess = Vec::new();
+            for k in 0..count {
+                let t = triangle(id);
+                id += 1;
+                want.push(t);
+                if k < chunk {
+                    triangles[c * chunk + k] = t;
+                } else {
+                    excess.push(t);
+                }
+            }
+            fans.push((count, excess));
+        }
+        let starts = gather(&mut triangles, &fans, chunk);
+        assert_eq!(triangles, want, "counts {counts:?}");
+        let mut next = 0;
+        for (s, (count, _)) in starts.iter().zip(&fans) {
+            assert_eq!(*s as usize, next);
+            next += count;
+        }
+    }
+
+    #[test]
+    fn the_chunks_triangles_are_gathered_in_order_whatever_each_dropped_or_added() {
+        // Full chunks; a drop in the first shifting every later one (a sphere's poles); drops
+        // larger than a chunk; an excess after drops (moved in place); an excess that
+        // overtakes (the list rebuilt); empty chunks; no chunks.
+        for counts in [
+            &[8, 8, 8][..],
+            &[5, 8, 8, 8, 8],
+            &[0, 0, 3, 8, 1, 8, 8],
+            &[2, 2, 11, 8, 0, 9],
+            &[8, 12, 8],
+            &[0, 0, 0],
+            &[],
+        ] {
+            check(counts, 8);
+        }
+        // Random counts from 0 to 1.5 chunks.
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        for _ in 0..200 {
+            let counts: Vec<usize> = (0..1 + x as usize % 20)
+                .map(|_| {
+                    x ^= x << 13;
+                    x ^= x >> 7;
+                    x ^= x << 17;
+                    (x % 13) as usize
+                })
+                .collect();
+            check(&counts, 8);
+        }
+    }
 }

@@ -328,10 +328,8 @@ impl ResolveContext<'_> {
         c[0] * b.x + c[1] * b.y + c[2] * b.z
     }
 
-    /// The texture lookup of triangle `t` at the pixel centre `centre`, when its object has a
-    /// texture and its mesh has uvs: `uv` interpolated like every attribute, and its screen
-    /// derivatives as the differences within the pixel's 2×2 quad, as a GPU takes them
-    /// ([`RasterTriangle::uv_at`]; analytic: the same triangle's interpolation evaluated there).
+    /// The texture lookup of `t` at pixel centre `centre` (a textured object, a mesh with uvs):
+    /// `uv` and its 2×2 quad's differences, as a GPU takes them ([`RasterTriangle::uv_at`]).
     fn texture_lookup(&self, t: &RasterTriangle, centre: I64Vec2) -> Option<(Vec2, Lookup)> {
         let prim = &self.primitives[t.primitive as usize];
         let texture = self.scene.objects[prim.object as usize].texture.as_ref()?;
@@ -341,6 +339,7 @@ impl ResolveContext<'_> {
         };
         // Neither the colour (one level, one tap) nor a kept buffer may need the footprint.
         let (uv, dx, dy) = t.uv_at(
+            &prim.bary_corners(t),
             [a, b, c],
             centre,
             self.settings.height,
@@ -492,7 +491,8 @@ impl ResolveContext<'_> {
         if shader && !self.keeps_terms() {
             return (Vec3::ZERO, None, None);
         }
-        let b = t.original_bary(t.lambda(at), self.settings.perspective_correct);
+        let bary = self.primitives[t.primitive as usize].bary_corners(t);
+        let b = t.original_bary(&bary, t.lambda(at), self.settings.perspective_correct);
         let texel = self.texture_lookup(t, at);
         let surface = texel.map_or_else(|| self.color_of(t, b), |(_, l)| l.color);
         let terms = self.terms_of(t, b, surface, texel.is_some());

@@ -268,7 +268,8 @@ impl ResolveContext<'_> {
         let mut b = [Vec3::ZERO; LANES];
         for (f, b) in b.iter_mut().enumerate().take(n) {
             let t = tri(f);
-            *b = t.original_bary(t.lambda(centre(f)), pc);
+            let bary = self.primitives[t.primitive as usize].bary_corners(t);
+            *b = t.original_bary(&bary, t.lambda(centre(f)), pc);
         }
         let texels = self.run_texels(run, &b[..n], centre);
         let mut surface = [Vec3::ZERO; LANES];
@@ -373,7 +374,8 @@ impl ResolveContext<'_> {
                 Some((t, at, d)) if t == run.triangle[f] && at == o => d,
                 _ => {
                     let t: &RasterTriangle = &self.triangles[run.triangle[f] as usize];
-                    let d = t.uv_derivatives(uvs, o, pc);
+                    let bary = self.primitives[t.primitive as usize].bary_corners(t);
+                    let d = t.uv_derivatives(&bary, uvs, o, pc);
                     last = Some((run.triangle[f], o, d));
                     d
                 }

@@ -197,7 +197,7 @@ fn plain_triangle(
         k as u32,
         window,
         [1.0; 3],
-        [Vec3::X, Vec3::Y, Vec3::Z],
+        pipeline::raster::Corners::ORIGINAL,
         pipeline::raster::CullMode::None,
         size,
     )

@@ -388,16 +388,16 @@ impl FrameCapture {
         let offsets = crate::raster::sample_offsets_fixed(self.settings.samples);
         let edges = EdgeTest::of(tri, corner, &offsets);
         // A corner of the original triangle has unit weights; one that clipping made, not.
-        let corner_vertex = tri
-            .bary
+        let bary = prim.bary_corners(tri);
+        let corner_vertex = bary
             .map(|b| (0..3).find(|&k| (b[k] - 1.0).abs() < 1e-6 && b.element_sum() < 1.0 + 1e-6));
         geometry::explain_edges(&edges, &corner_vertex, &mut lines);
 
         let lambda = tri.lambda(centre);
         let pc = self.settings.perspective_correct;
         let (affine, perspective) = (
-            tri.original_bary(lambda, false),
-            tri.original_bary(lambda, true),
+            tri.original_bary(&bary, lambda, false),
+            tri.original_bary(&bary, lambda, true),
         );
         let b = if pc { perspective } else { affine };
         let depth = tri.depth_at(centre);

@@ -20,6 +20,7 @@ impl FrameCapture {
         };
         let sampler = &self.settings.sampler;
         let (uv, dx, dy) = o.tri.uv_at(
+            &o.prim.bary_corners(o.tri),
             [a, b, c],
             o.centre,
             self.settings.height,

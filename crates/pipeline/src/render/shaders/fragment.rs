@@ -371,8 +371,9 @@ impl FragmentShading<'_> {
         let prim = &ctx.primitives[t.primitive as usize];
         let lambda = t.lambda(centre);
         let perspective = ctx.settings.perspective_correct;
-        let b_persp = t.original_bary(lambda, perspective);
-        let b_linear = t.original_bary(lambda, false);
+        let bary = prim.bary_corners(t);
+        let b_persp = t.original_bary(&bary, lambda, perspective);
+        let b_linear = t.original_bary(&bary, lambda, false);
         let results = self.results[object].as_ref();
         for ((input, link), rows) in programs
             .fragment
@@ -417,7 +418,7 @@ impl FragmentShading<'_> {
                     // corners keep the original order, so their determinant is negative when
                     // the original triangle ran clockwise (a back face), even when one of its
                     // vertices is behind the eye and has no window position.
-                    let [b0, b1, b2] = t.bary;
+                    let [b0, b1, b2] = bary;
                     let front = glam::Mat3::from_cols(b0, b1, b2).determinant() >= 0.0;
                     rows[l] = u32::from(front);
                 }
