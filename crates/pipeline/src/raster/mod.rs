@@ -372,12 +372,6 @@ impl RasterTriangle {
         self.depth_plane().at(p)
     }
 
-    /// Which points of the primitive the corners are.
-    #[must_use]
-    pub fn corners(&self) -> Corners {
-        self.corners
-    }
-
     /// The corners' barycentric weights with respect to the original triangle, `bary_i`:
     /// unit weights for the primitive's own corners, the clipped polygon's weights for a piece
     /// of it (`polygon`: the primitive's clipped polygon, `None` when it was not clipped).
