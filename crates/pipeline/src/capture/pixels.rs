@@ -10,9 +10,11 @@ use serde::Serialize;
 /// Per-pixel buffers, top image row first (`index = row·width + column`).
 ///
 /// Where `coverage` is 0 (the background) `primitive` and `owner` are [`NONE`], the lighting
-/// buffers hold zeros and the texturing buffers no lookup ([`NO_LOOKUP`]). The resolve relies on
-/// it when it renders into the storage of the frame before: a background pixel's primitive,
-/// owner and terms are written only where that frame covered the pixel ([`Stored::Kept`]).
+/// buffers hold zeros and the texturing buffers no lookup ([`NO_LOOKUP`]), and the colour and
+/// depth are the background's ([`Self::background`]). The resolve relies on it when it renders
+/// into the storage of the frame before: a background pixel's primitive, owner and terms are
+/// written only where that frame covered the pixel ([`Stored::Kept`]), its colour and depth
+/// also only where the background changed.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct PixelBuffers {
     /// Number of the pixel's samples that a primitive covers (after the depth test).
@@ -38,6 +40,11 @@ pub struct PixelBuffers {
     /// The terms and lookup of the capture's pixel ([`crate::buffers::Capture::pixel`]) when
     /// their buffers are not kept.
     pub inspected: Option<InspectedPixel>,
+    /// The colour and depth that every pixel of coverage 0 holds — the background of the frame
+    /// resolved into these buffers — when known (not for storage just made or resized). The
+    /// resolve of the next frame into this storage then writes neither where that frame had the
+    /// background too and its background is the same.
+    pub(crate) background: Option<([f32; 3], f32)>,
 }
 
 impl PixelBuffers {
@@ -50,7 +57,10 @@ impl PixelBuffers {
             v.resize(n, fill);
             v
         }
+        // Pixels added by a resize have coverage 0 but not the background's colour.
+        let background = self.background.filter(|_| self.color.len() == n);
         Self {
+            background,
             coverage: sized(self.coverage, n, 0),
             depth: sized(self.depth, n, 0.0),
             primitive: sized(self.primitive, n, crate::raster::NONE),

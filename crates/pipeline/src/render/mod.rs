@@ -11,6 +11,7 @@ mod assembly;
 mod coarse;
 #[cfg(test)]
 mod fixtures;
+mod pixel_samples;
 mod resolve;
 mod runs;
 mod shaders;

@@ -33,6 +33,9 @@ pub(super) struct ResolvedPixel {
 
 /// One image row of every per-pixel buffer, written by one resolve task.
 struct RowOut<'a> {
+    /// Whether a pixel the storage's frame left uncovered holds this frame's background colour
+    /// and depth already ([`PixelBuffers::background`]).
+    background_kept: bool,
     coverage: &'a mut [u8],
     depth: &'a mut [f32],
     primitive: &'a mut [u32],
@@ -164,25 +167,33 @@ impl RowOut<'_> {
             s.read
                 .extend(self.coverage[span.clone()].iter().map(stored));
         }
-        // So do its primitive and owner buffers, where it had the background all along.
-        // (An OR over the span, without a branch a pixel: the span is usually all zeros.)
-        if self.coverage[span.clone()]
+        // So do its primitive and owner buffers, where it had the background all along, and
+        // its colour and depth buffers when its background was this frame's (an OR over the
+        // span, without a branch a pixel: the span is usually all zeros).
+        let covered_before = self.coverage[span.clone()]
             .iter()
             .fold(0, |any, &c| any | c)
-            != 0
-        {
+            != 0;
+        if covered_before {
             self.coverage[span.clone()].fill(0);
             self.primitive[span.clone()].fill(NONE);
             self.owner[span.clone()].fill(NONE);
         }
-        self.color[span.clone()].fill(ctx.settings.background.to_array());
-        if ctx.settings.samples.count() == 1 {
-            // The mean of one sample is that sample (x/1 = x exactly).
-            self.depth[span].copy_from_slice(&ctx.samples.depth[i..i + n]);
+        // A sample no triangle covers holds the depth it was cleared to (every writer of a
+        // sample's depth writes its triangle too), so the span's depths are one value, the mean
+        // of that many cleared depths, and the samples need not be read.
+        let (color, depth) = (ctx.settings.background.to_array(), ctx.background_depth());
+        debug_assert!((i..i + n).all(|p| ctx.mean_depth(p).to_bits() == depth.to_bits()));
+        if covered_before || !self.background_kept {
+            self.color[span.clone()].fill(color);
+            self.depth[span].fill(depth);
         } else {
-            for (k, depth) in self.depth[span].iter_mut().enumerate() {
-                *depth = ctx.mean_depth(i + k);
-            }
+            debug_assert!(self.color[span.clone()].iter().all(|c| *c == color));
+            debug_assert!(
+                self.depth[span]
+                    .iter()
+                    .all(|d| d.to_bits() == depth.to_bits())
+            );
         }
     }
 
@@ -214,7 +225,7 @@ impl RowOut<'_> {
 
 /// Every per-pixel buffer cut into image rows, one [`RowOut`] a row, so that rows can be
 /// resolved in parallel.
-fn split_rows(px: &mut PixelBuffers, w: usize, h: usize) -> Vec<RowOut<'_>> {
+fn split_rows(px: &mut PixelBuffers, w: usize, h: usize, background_kept: bool) -> Vec<RowOut<'_>> {
     let mut texture_rows: Vec<Option<TextureRow<'_>>> = match &mut px.texturing {
         Some(tb) => tb.rows(w).into_iter().map(Some).collect(),
         None => (0..h).map(|_| None).collect(),
@@ -232,6 +243,7 @@ fn split_rows(px: &mut PixelBuffers, w: usize, h: usize) -> Vec<RowOut<'_>> {
         .zip(shading_rows.drain(..).zip(texture_rows.drain(..)))
         .map(
             |(((((coverage, depth), primitive), owner), color), (shading, texturing))| RowOut {
+                background_kept,
                 coverage,
                 depth,
                 primitive,
@@ -259,7 +271,9 @@ pub(super) fn resolve(ctx: &ResolveContext<'_>, spare: PixelBuffers) -> PixelBuf
             .iter()
             .any(|o| o.texture.is_some() && !o.mesh.uvs.is_empty());
     let mut px = spare.reused(w * h, lit, textured);
-    let mut rows = split_rows(&mut px, w, h);
+    let background = (settings.background.to_array(), ctx.background_depth());
+    let kept = px.background.is_some_and(|b| b == background);
+    let mut rows = split_rows(&mut px, w, h, kept);
     // Coarse shading shares a 2×2 block's shading between two rows: they are resolved in pairs.
     let pair = if settings.coarse_shading { 2 } else { 1 };
     rows.par_chunks_mut(pair).enumerate().for_each_init(
@@ -275,6 +289,7 @@ pub(super) fn resolve(ctx: &ResolveContext<'_>, spare: PixelBuffers) -> PixelBuf
             }
         },
     );
+    px.background = Some(background);
     if px.shading.is_none() || px.texturing.is_none() {
         px.inspected = settings.capture.pixel.and_then(|at| ctx.inspected(at));
     }
@@ -431,54 +446,6 @@ impl ResolveContext<'_> {
         terms.reflected = env.cube.sample(2.0 * n.dot(v) * n - v) * k;
         terms.ambient *= 1.0 - k;
         terms.diffuse *= 1.0 - k;
-    }
-
-    /// How many consecutive pixels from image index `i` on (at most `room`) have no sample
-    /// covered: the background.
-    pub(super) fn background_run(&self, i: usize, room: usize) -> usize {
-        let s = self.settings.samples.count();
-        let tris = &self.samples.triangle[i * s..(i + room) * s];
-        if tris.first().is_some_and(|&t| t != NONE) {
-            return 0;
-        }
-        // Whole blocks first, each tested without a branch a sample (the compiler's lanes),
-        // then the sample that ends the span within its block.
-        const BLOCK: usize = 16;
-        let empty_blocks = tris
-            .chunks_exact(BLOCK)
-            .take_while(|b| b.iter().fold(0, |any, &t| any | (t ^ NONE)) == 0)
-            .count();
-        let from = empty_blocks * BLOCK;
-        tris[from..]
-            .iter()
-            .position(|&t| t != NONE)
-            .map_or(room, |k| (from + k) / s)
-    }
-
-    /// The raster triangle that owns a pixel whose samples lie on raster triangles `tris`
-    /// (at least one covered): of the primitive with the most samples, ties to the earliest
-    /// sample, the triangle of that primitive's first sample.
-    pub(super) fn owner_of(&self, tris: &[u32]) -> u32 {
-        // Each sample's primitive is looked up once (at most 16 samples a pixel).
-        let mut prims = [NONE; 16];
-        for (p, &t) in prims.iter_mut().zip(tris).filter(|(_, t)| **t != NONE) {
-            *p = self.triangles[t as usize].primitive;
-        }
-        let prims = &prims[..tris.len()];
-        let mut best = (0usize, NONE);
-        for (&t, &prim) in tris.iter().zip(prims).filter(|(t, _)| **t != NONE) {
-            let count = prims.iter().filter(|&&p| p == prim).count();
-            if count > best.0 {
-                best = (count, t);
-            }
-        }
-        best.1
-    }
-
-    /// The mean of image pixel `i`'s sample depths.
-    pub(super) fn mean_depth(&self, i: usize) -> f32 {
-        let s = self.settings.samples.count();
-        self.samples.depth[i * s..(i + 1) * s].iter().sum::<f32>() / s as f32
     }
 
     /// The colour of triangle `t` at the fixed-point position `at`, with its lighting terms and

@@ -131,6 +131,25 @@ fn reusing_a_capture_s_storage_gives_the_same_frame() {
         .expect("renders")
         .0;
     assert_eq!(reused, fresh);
+    // The same size and buffers, another background colour, then another depth test (whose
+    // samples are cleared to 0): the background the frame before left, which a frame with the
+    // same background keeps, must not stay.
+    for other in [
+        RenderSettings {
+            background: Vec3::new(0.9, 0.1, 0.3),
+            ..settings
+        },
+        RenderSettings {
+            depth_test: pipeline::raster::DepthTest::Greater,
+            ..settings
+        },
+    ] {
+        let spare = render(&scene, &other);
+        let reused = pipeline::render_reusing(&scene, &settings, Some(spare))
+            .expect("renders")
+            .0;
+        assert_eq!(reused, fresh);
+    }
 }
 
 /// A scene of `layout` runs of triangles, `(count, straddles)`: triangles behind the camera

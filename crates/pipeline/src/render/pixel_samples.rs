@@ -1,0 +1,67 @@
+//! A pixel's samples: which are covered, which raster triangle owns the pixel, and its mean
+//! depth — what multisampling resolves of a pixel before (and apart from) its colour.
+
+use super::resolve::ResolveContext;
+use crate::raster::NONE;
+
+impl ResolveContext<'_> {
+    /// How many consecutive pixels from image index `i` on (at most `room`) have no sample
+    /// covered: the background.
+    pub(super) fn background_run(&self, i: usize, room: usize) -> usize {
+        let s = self.settings.samples.count();
+        let tris = &self.samples.triangle[i * s..(i + room) * s];
+        if tris.first().is_some_and(|&t| t != NONE) {
+            return 0;
+        }
+        // Whole blocks first, each tested without a branch a sample (the compiler's lanes),
+        // then the sample that ends the span within its block.
+        const BLOCK: usize = 16;
+        let empty_blocks = tris
+            .chunks_exact(BLOCK)
+            .take_while(|b| b.iter().fold(0, |any, &t| any | (t ^ NONE)) == 0)
+            .count();
+        let from = empty_blocks * BLOCK;
+        tris[from..]
+            .iter()
+            .position(|&t| t != NONE)
+            .map_or(room, |k| (from + k) / s)
+    }
+
+    /// The raster triangle that owns a pixel whose samples lie on raster triangles `tris`
+    /// (at least one covered): of the primitive with the most samples, ties to the earliest
+    /// sample, the triangle of that primitive's first sample.
+    pub(super) fn owner_of(&self, tris: &[u32]) -> u32 {
+        // Each sample's primitive is looked up once (at most 16 samples a pixel).
+        let mut prims = [NONE; 16];
+        for (p, &t) in prims.iter_mut().zip(tris).filter(|(_, t)| **t != NONE) {
+            *p = self.triangles[t as usize].primitive;
+        }
+        let prims = &prims[..tris.len()];
+        let mut best = (0usize, NONE);
+        for (&t, &prim) in tris.iter().zip(prims).filter(|(t, _)| **t != NONE) {
+            let count = prims.iter().filter(|&&p| p == prim).count();
+            if count > best.0 {
+                best = (count, t);
+            }
+        }
+        best.1
+    }
+
+    /// The mean of image pixel `i`'s sample depths.
+    pub(super) fn mean_depth(&self, i: usize) -> f32 {
+        let s = self.settings.samples.count();
+        mean(&self.samples.depth[i * s..(i + 1) * s])
+    }
+
+    /// The mean depth of a pixel no triangle covers: [`Self::mean_depth`] of its samples, each
+    /// still the depth the buffers were cleared to.
+    pub(super) fn background_depth(&self) -> f32 {
+        let cleared = [self.settings.depth_test.clear_value(); 16];
+        mean(&cleared[..self.settings.samples.count()])
+    }
+}
+
+/// `(d₀ + d₁ + … + d_{s−1})/s`, summed in order.
+fn mean(depths: &[f32]) -> f32 {
+    depths.iter().sum::<f32>() / depths.len() as f32
+}
