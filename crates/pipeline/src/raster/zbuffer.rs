@@ -426,7 +426,7 @@ struct Band<'a> {
 }
 
 /// Boxes at least this many pixels wide are scanned only over each row's span.
-const SPAN_MIN_WIDTH: u32 = 8;
+const SPAN_MIN_WIDTH: u32 = 16;
 
 /// The pixels `a..=b` (offsets from the box's first column, within `0..=last`) of a row where
 /// some sample can be inside all three edges: sample `s` is inside edge `k` at offset `x` when
@@ -527,11 +527,27 @@ impl<'a> Band<'a> {
         let band = self.geometry();
         let (depth, owner, width) = (&mut *self.depth, &mut *self.owner, self.width);
         let offsets = self.offsets;
+        // How far each sample's edge values lie from sample 0's, `E_k(p_s) − E_k(p_0) =
+        // a_k·(x_s − x_0) + b_k·(y_s − y_0)` (exact, in integers), in lanes, once for the
+        // triangle: a row's lanes are then sample 0's values added to them, rather than loaded
+        // back from the row's per-sample values (a store-forwarding stall a row).
+        let apart: [[i64x4; 3]; G] = std::array::from_fn(|g| {
+            std::array::from_fn(|k| {
+                let (a, b) = (i64::from(tri.edges[k].a), i64::from(tri.edges[k].b));
+                i64x4::new(std::array::from_fn(|l| {
+                    let d = offsets[4 * g + l] - offsets[0];
+                    a * d.x + b * d.y
+                }))
+            })
+        });
         let mut scan = |row: usize, y: u32, (xs, xe): (u32, u32), e: &[[i64; 3]]| {
             // Edge k of samples 4g..4g+4 in lanes.
             let mut lanes: [[i64x4; 3]; G] = std::array::from_fn(|g| {
-                std::array::from_fn(|k| i64x4::new(std::array::from_fn(|l| e[4 * g + l][k])))
+                std::array::from_fn(|k| i64x4::splat(e[0][k]) + apart[g][k])
             });
+            debug_assert!(
+                (0..4 * G).all(|s| (0..3).all(|k| lanes[s / 4][k].as_array()[s % 4] == e[s][k]))
+            );
             for x in xs..=xe {
                 let base = (row * width + x as usize) * 4 * G;
                 for (g, l) in lanes.iter_mut().enumerate() {
