@@ -15,7 +15,7 @@ use glam::{I64Vec2, Vec2, Vec3};
 use super::resolve::{ResolveContext, ResolvedPixel};
 use crate::capture::FrameCapture;
 use crate::raster::{NONE, RasterTriangle, quad_offset};
-use crate::shade::lanes::{LANES, shade_lanes};
+use crate::shade::lanes::{LANES, shade_lanes, shade_lanes_color};
 use crate::shade::{Frequency, ShadeTerms};
 use crate::texture::Lookup;
 
@@ -39,12 +39,17 @@ pub(super) struct Run {
     pub(super) pixels: usize,
 }
 
-/// What [`ResolveContext::shade_run`] gives each fragment of a run.
+/// What [`ResolveContext::shade_run`] gives each fragment of a run: its colour, and its
+/// lighting terms and texture lookup where the frame keeps them (their buffers, `None`
+/// otherwise).
 pub(super) struct RunShading {
     pub(super) color: [Vec3; LANES],
     pub(super) terms: [Option<ShadeTerms>; LANES],
     pub(super) texels: [Option<(Vec2, Lookup)>; LANES],
 }
+
+/// A run's texel colours (`None` where no texture is read), and its lookups where kept.
+type RunTexels = ([Option<Vec3>; LANES], [Option<(Vec2, Lookup)>; LANES]);
 
 impl Run {
     /// No fragment yet.
@@ -271,28 +276,40 @@ impl ResolveContext<'_> {
             let bary = self.primitives[t.primitive as usize].bary_corners(t);
             *b = t.original_bary(&bary, t.lambda(centre(f)), pc);
         }
-        let texels = self.run_texels(run, &b[..n], centre);
+        // What the frame keeps besides the colour (a pixel inspected is resolved by itself).
+        let keeps = self.settings.capture;
+        let (texel_colors, texels) = self.run_texels(run, &b[..n], centre, keeps.texturing);
         let mut surface = [Vec3::ZERO; LANES];
         for f in 0..n {
-            surface[f] = match &texels[f] {
-                Some((_, l)) => l.color,
-                None => self.color_of(tri(f), b[f]),
-            };
+            surface[f] = texel_colors[f].unwrap_or_else(|| self.color_of(tri(f), b[f]));
         }
         let mut terms = [None; LANES];
-        if self.settings.shading == Frequency::Phong && object.lit && object.detail.is_none() {
+        let phong = self.settings.shading == Frequency::Phong && object.lit;
+        if phong && object.detail.is_none() && !keeps.lighting && object.environment.is_none() {
+            // The colour alone: no terms taken out of the lanes, none handed on.
+            let mut p = [Vec3::ZERO; LANES];
+            let mut normal = [Vec3::ZERO; LANES];
+            self.run_points(run, &b[..n], &mut p, &mut normal);
+            let mut color = [Vec3::ZERO; LANES];
+            shade_lanes_color(
+                &p[..n],
+                &normal[..n],
+                self.scene.camera.eye,
+                &surface[..n],
+                &self.scene.lights,
+                &object.material,
+                self.settings.reflection,
+                &mut color[..n],
+            );
+            return RunShading {
+                color,
+                terms,
+                texels,
+            };
+        }
+        if phong && object.detail.is_none() {
             let (mut p, mut normal) = ([Vec3::ZERO; LANES], [Vec3::ZERO; LANES]);
-            for f in 0..n {
-                let v = self.primitives[tri(f).primitive as usize]
-                    .vertices
-                    .map(|r| &self.vertices[r as usize]);
-                let w = b[f];
-                p[f] = v[0].world.truncate() * w.x
-                    + v[1].world.truncate() * w.y
-                    + v[2].world.truncate() * w.z;
-                normal[f] =
-                    v[0].normal_world * w.x + v[1].normal_world * w.y + v[2].normal_world * w.z;
-            }
+            self.run_points(run, &b[..n], &mut p, &mut normal);
             let mut lit = [ShadeTerms::default(); LANES];
             shade_lanes(
                 &p[..n],
@@ -312,7 +329,7 @@ impl ResolveContext<'_> {
             }
         } else {
             for f in 0..n {
-                terms[f] = self.terms_of(tri(f), b[f], surface[f], texels[f].is_some());
+                terms[f] = self.terms_of(tri(f), b[f], surface[f], texel_colors[f].is_some());
             }
         }
         let mut color = [Vec3::ZERO; LANES];
@@ -337,11 +354,12 @@ impl ResolveContext<'_> {
         run: &Run,
         b: &[Vec3],
         centre: impl Fn(usize) -> I64Vec2,
-    ) -> [Option<(Vec2, Lookup)>; LANES] {
-        let mut out = [None; LANES];
+        keep: bool,
+    ) -> RunTexels {
+        let (mut colors, mut out) = ([None; LANES], [None; LANES]);
         let object = &self.scene.objects[self.object_of(run.triangle[0]) as usize];
         let Some(texture) = object.texture.as_ref() else {
-            return out;
+            return (colors, out);
         };
         let pc = self.settings.perspective_correct;
         // Each fragment's triangle's vertex uvs (`None` when a vertex has none).
@@ -365,7 +383,11 @@ impl ResolveContext<'_> {
                 continue;
             };
             if !self.derivatives {
-                out[f] = Some((uv[f], texture.sample_level0(uv[f], sampler)));
+                let lookup = texture.sample_level0(uv[f], sampler);
+                colors[f] = Some(lookup.color);
+                if keep {
+                    out[f] = Some((uv[f], lookup));
+                }
                 continue;
             }
             let c = centre(f);
@@ -380,9 +402,28 @@ impl ResolveContext<'_> {
                     d
                 }
             };
-            out[f] = Some((uv[f], texture.sample(uv[f], dx, dy, sampler)));
+            let lookup = texture.sample(uv[f], dx, dy, sampler);
+            colors[f] = Some(lookup.color);
+            if keep {
+                out[f] = Some((uv[f], lookup));
+            }
         }
-        out
+        (colors, out)
+    }
+
+    /// The world positions `p` and normals `normal` (not yet unit) of a run's fragments at
+    /// original-triangle weights `b`: `Σ b_k·p_k`, `Σ b_k·n_k` over each triangle's vertices.
+    fn run_points(&self, run: &Run, b: &[Vec3], p: &mut [Vec3], normal: &mut [Vec3]) {
+        for (f, &w) in b.iter().enumerate() {
+            let t = &self.triangles[run.triangle[f] as usize];
+            let v = self.primitives[t.primitive as usize]
+                .vertices
+                .map(|r| &self.vertices[r as usize]);
+            p[f] = v[0].world.truncate() * w.x
+                + v[1].world.truncate() * w.y
+                + v[2].world.truncate() * w.z;
+            normal[f] = v[0].normal_world * w.x + v[1].normal_world * w.y + v[2].normal_world * w.z;
+        }
     }
 }
 
@@ -445,7 +486,8 @@ mod tests {
 
     /// Every pixel of frames rendered with runs and background spans equals the per-pixel
     /// resolve of the same pixel, bit for bit: colour, depth, owner, primitive, and the kept
-    /// lighting terms and texture lookup; and every run's resolve equals it too.
+    /// lighting terms and texture lookup; and every run's resolve equals it too, in all that
+    /// the frame keeps (a colour-only frame's runs light in lanes without the terms).
     #[test]
     fn runs_resolve_every_pixel_as_the_per_pixel_path_does() {
         let scene = scene();
@@ -487,9 +529,20 @@ mod tests {
                     let n = run.pixels;
                     let mut got = [ResolvedPixel::default(); LANES];
                     ctx.resolve_run(&run, (x as u32, y), i, |k, r| got[k] = *r);
+                    // Everything the frame keeps: a run hands on no terms or lookups whose
+                    // buffers the frame does not keep.
+                    let kept = |r: &ResolvedPixel| ResolvedPixel {
+                        terms: r.terms.filter(|_| settings.capture.lighting),
+                        texture: r.texture.filter(|_| settings.capture.texturing),
+                        ..*r
+                    };
                     for (j, got) in got[..n].iter().enumerate() {
                         let want = ctx.pixel((x + j) as u32, y, i + j, None);
-                        assert_eq!(*got, want, "setting {k}, run at ({x}, {y}), pixel {j}");
+                        assert_eq!(
+                            kept(got),
+                            kept(&want),
+                            "setting {k}, run at ({x}, {y}), pixel {j}"
+                        );
                     }
                     runs += usize::from(n > 1);
                     crossing += usize::from(run.crosses());

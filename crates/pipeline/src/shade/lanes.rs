@@ -1,5 +1,6 @@
 //! Lighting eight points at once: [`super::shade`]'s formulas in structure-of-arrays lanes
-//! (`wide::f32x8`: SSE on x86-64), for the pixels of a row that one triangle covers.
+//! (`wide::f32x8`: SSE on x86-64), for the pixels of a row that one triangle covers: every term
+//! ([`shade_lanes`]) or the colour alone ([`shade_lanes_color`]).
 //!
 //! Every lane performs the scalar path's operations in the same order — `v·w = (x·x' + y·y') +
 //! z·z'`, `normalize(v) = v·(1/√(v·v))` or zero, `f_att = 1/((a + b·d) + c·d·d)` — and IEEE
@@ -139,6 +140,78 @@ pub fn shade_lanes(
 ) {
     let count = out.len();
     assert!(count <= LANES && p.len() == count && n.len() == count && c.len() == count);
+    let lit = light_lanes(p, n, eye, c, lights, m, model);
+    for (k, o) in out.iter_mut().enumerate() {
+        let (light, half, n_dot_l, n_dot_h) =
+            lit.key.map_or((Vec3::ZERO, Vec3::ZERO, 0.0, 0.0), |t| {
+                (
+                    t.0.lane(k),
+                    t.1.lane(k),
+                    t.2.as_array()[k],
+                    t.3.as_array()[k],
+                )
+            });
+        *o = ShadeTerms {
+            ambient: lit.ambient.lane(k),
+            diffuse: lit.diffuse.lane(k),
+            specular: lit.specular.lane(k),
+            reflected: Vec3::ZERO,
+            normal: lit.normal.lane(k),
+            light,
+            half,
+            n_dot_l,
+            n_dot_h,
+        };
+    }
+}
+
+/// The colours alone of [`shade_lanes`]' points: `out[k]` becomes exactly
+/// `shade(p[k], n[k], eye, c[k], lights, m, model).color()`, `((ambient + diffuse) + specular) +
+/// reflected` with nothing reflected, without the terms a frame that keeps only its colour has
+/// no use for (their transposition out of the lanes was a sixth of a textured run's shading).
+///
+/// # Panics
+/// If the slices' lengths differ or exceed [`LANES`].
+#[allow(clippy::too_many_arguments)]
+pub fn shade_lanes_color(
+    p: &[Vec3],
+    n: &[Vec3],
+    eye: Vec3,
+    c: &[Vec3],
+    lights: &[Light],
+    m: &Material,
+    model: Reflection,
+    out: &mut [Vec3],
+) {
+    let count = out.len();
+    assert!(count <= LANES && p.len() == count && n.len() == count && c.len() == count);
+    let lit = light_lanes(p, n, eye, c, lights, m, model);
+    let color = lit.ambient.add(lit.diffuse).add(lit.specular).add(V3::ZERO);
+    for (k, o) in out.iter_mut().enumerate() {
+        *o = color.lane(k);
+    }
+}
+
+/// What lighting eight points leaves in lanes: the three terms, the unit normal, and the first
+/// directed light's `(l, h, n·l, n·h or r·v)` (the terms' key light), if there is one.
+struct LitLanes {
+    ambient: V3,
+    diffuse: V3,
+    specular: V3,
+    normal: V3,
+    key: Option<(V3, V3, f32x8, f32x8)>,
+}
+
+/// [`shade_lanes`]' lighting, left in lanes.
+fn light_lanes(
+    p: &[Vec3],
+    n: &[Vec3],
+    eye: Vec3,
+    c: &[Vec3],
+    lights: &[Light],
+    m: &Material,
+    model: Reflection,
+) -> LitLanes {
     let (p, c) = (V3::gather(p), V3::gather(c));
     let n = V3::gather(n).normalize_or_zero();
     let v = V3::splat(eye).sub(p).normalize_or_zero();
@@ -205,26 +278,12 @@ pub fn shade_lanes(
         diffuse = diffuse.add(diff);
         key.get_or_insert((l, h, n_dot_l, spec_dot));
     }
-    for (k, o) in out.iter_mut().enumerate() {
-        let (light, half, n_dot_l, n_dot_h) = key.map_or((Vec3::ZERO, Vec3::ZERO, 0.0, 0.0), |t| {
-            (
-                t.0.lane(k),
-                t.1.lane(k),
-                t.2.as_array()[k],
-                t.3.as_array()[k],
-            )
-        });
-        *o = ShadeTerms {
-            ambient: ambient.lane(k),
-            diffuse: diffuse.lane(k),
-            specular: specular.lane(k),
-            reflected: Vec3::ZERO,
-            normal: n.lane(k),
-            light,
-            half,
-            n_dot_l,
-            n_dot_h,
-        };
+    LitLanes {
+        ambient,
+        diffuse,
+        specular,
+        normal: n,
+        key,
     }
 }
 
@@ -327,9 +386,17 @@ mod tests {
             for model in [Reflection::Phong, Reflection::BlinnPhong] {
                 let mut out = vec![ShadeTerms::default(); count];
                 shade_lanes(&p, &n, eye, &c, &lights, &m, model, &mut out);
+                let mut colors = vec![Vec3::NAN; count];
+                shade_lanes_color(&p, &n, eye, &c, &lights, &m, model, &mut colors);
                 for k in 0..count {
                     let want = shade(p[k], n[k], eye, c[k], &lights, &m, model);
                     assert_eq!(out[k], want, "round {round}, lane {k}, {model:?}");
+                    let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+                    assert_eq!(
+                        bits(colors[k]),
+                        bits(want.color()),
+                        "colour, round {round}, lane {k}, {model:?}"
+                    );
                 }
             }
         }
