@@ -69,6 +69,9 @@ pub(super) struct BlockShade {
 /// The result of shading a point: colour, lighting terms, texture lookup.
 pub(super) type Shaded = (Vec3, Option<ShadeTerms>, Option<(Vec2, Lookup)>);
 
+/// A pixel's lighting terms and texture lookup, where the frame keeps them.
+pub(super) type Kept<'a> = (Option<&'a ShadeTerms>, Option<&'a (Vec2, Lookup)>);
+
 impl RowOut<'_> {
     /// Resolves image row `row` (window `y`) into every kept buffer, so that reused storage
     /// holds nothing of the frame before.
@@ -113,7 +116,9 @@ impl RowOut<'_> {
             } else {
                 let run = runs.then(|| ctx.run_at(i, w - x)).flatten();
                 if let Some(run) = run.filter(|r| r.len >= 4) {
-                    ctx.resolve_run(&run, at, i, |k, r| self.store(x + k, r, s));
+                    ctx.resolve_run(&run, at, i, |k, r, kept| {
+                        self.store_with(x + k, r, kept, s);
+                    });
                     x += run.pixels;
                     continue;
                 }
@@ -201,20 +206,34 @@ impl RowOut<'_> {
     /// scratch rows when their buffers are kept.
     #[inline]
     fn store(&mut self, x: usize, r: &ResolvedPixel, s: &mut RowScratch) {
+        self.store_with(x, r, (r.terms.as_ref(), r.texture.as_ref()), s);
+    }
+
+    /// [`Self::store`] with the pixel's terms and lookup given apart, where they are (a run's
+    /// shading), rather than in `r`: read where they were written, not copied into `r` first
+    /// (a copy that a read of the same bytes right after stalls on).
+    #[inline]
+    fn store_with(
+        &mut self,
+        x: usize,
+        r: &ResolvedPixel,
+        (terms, texture): Kept<'_>,
+        s: &mut RowScratch,
+    ) {
         self.coverage[x] = r.coverage;
         self.depth[x] = r.depth;
         self.primitive[x] = r.primitive;
         self.owner[x] = r.owner;
         self.color[x] = r.color;
         if self.shading.is_some() {
-            s.lit.push(Stored::given(r.terms.is_some()));
-            if let Some(t) = &r.terms {
+            s.lit.push(Stored::given(terms.is_some()));
+            if let Some(t) = terms {
                 s.lighting.extend_from_slice(&ShadingRow::flatten(t));
             }
         }
         if self.texturing.is_some() {
-            s.read.push(Stored::given(r.texture.is_some()));
-            if let Some((uv, l)) = &r.texture {
+            s.read.push(Stored::given(texture.is_some()));
+            if let Some((uv, l)) = texture {
                 let (uv, halves) = TextureRow::flatten(&PixelTexture::new(*uv, l));
                 s.uvs.push(uv);
                 s.texturing.extend_from_slice(&halves);

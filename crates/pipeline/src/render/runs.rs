@@ -12,7 +12,7 @@
 
 use glam::{I64Vec2, Vec2, Vec3};
 
-use super::resolve::{ResolveContext, ResolvedPixel};
+use super::resolve::{Kept, ResolveContext, ResolvedPixel};
 use crate::capture::FrameCapture;
 use crate::raster::{NONE, RasterTriangle, quad_offset};
 use crate::shade::lanes::{LANES, shade_lanes, shade_lanes_color};
@@ -201,14 +201,15 @@ impl ResolveContext<'_> {
     }
 
     /// Resolves the pixels of `run`, from window `(x, y)` (image index `i`) on, as
-    /// [`Self::pixel`] resolves each, and hands pixel `k` of the run to `out(k, pixel)` (built
-    /// in place, so that the terms a colour-only frame does not keep are not copied around).
+    /// [`Self::pixel`] resolves each, and hands pixel `k` of the run to `out(k, pixel, kept)`:
+    /// the pixel without its terms and lookup, which `kept` gives where the run's shading holds
+    /// them (so that they are not copied around).
     pub(super) fn resolve_run(
         &self,
         run: &Run,
         (x, y): (u32, u32),
         i: usize,
-        mut out: impl FnMut(usize, &ResolvedPixel),
+        mut out: impl FnMut(usize, &ResolvedPixel, Kept<'_>),
     ) {
         let n = run.len;
         let tri = |f: usize| &self.triangles[run.triangle[f] as usize];
@@ -240,14 +241,15 @@ impl ResolveContext<'_> {
             out(
                 k,
                 &ResolvedPixel {
-                    terms: shaded.terms[kept],
-                    texture: shaded.texels[kept],
+                    terms: None,
+                    texture: None,
                     coverage: s as u8,
                     depth: self.mean_depth(i + k),
                     primitive,
                     owner,
                     color: color.to_array(),
                 },
+                (shaded.terms[kept].as_ref(), shaded.texels[kept].as_ref()),
             );
         }
     }
@@ -528,7 +530,13 @@ mod tests {
                     };
                     let n = run.pixels;
                     let mut got = [ResolvedPixel::default(); LANES];
-                    ctx.resolve_run(&run, (x as u32, y), i, |k, r| got[k] = *r);
+                    ctx.resolve_run(&run, (x as u32, y), i, |k, r, (terms, texture)| {
+                        got[k] = ResolvedPixel {
+                            terms: terms.copied(),
+                            texture: texture.copied(),
+                            ..*r
+                        };
+                    });
                     // Everything the frame keeps: a run hands on no terms or lookups whose
                     // buffers the frame does not keep.
                     let kept = |r: &ResolvedPixel| ResolvedPixel {
