@@ -287,7 +287,8 @@ impl ResolveContext<'_> {
         }
         let mut terms = [None; LANES];
         let phong = self.settings.shading == Frequency::Phong && object.lit;
-        if phong && object.detail.is_none() && !keeps.lighting && object.environment.is_none() {
+        let plain = object.detail.is_none() && object.environment.is_none();
+        if phong && plain && !keeps.lighting && !shader {
             // The colour alone: no terms taken out of the lanes, none handed on.
             let mut p = [Vec3::ZERO; LANES];
             let mut normal = [Vec3::ZERO; LANES];

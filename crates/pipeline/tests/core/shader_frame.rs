@@ -117,17 +117,31 @@ fn largest_difference(a: &FrameCapture, b: &FrameCapture) -> (f32, usize) {
 #[test]
 fn pipelens_own_shading_as_glsl_gives_the_built_in_pixels() {
     // With 4 samples a silhouette pixel averages its shaded samples with the background ones,
-    // and a pixel two triangles share runs the shader once for each.
-    for samples in [Samples::X1, Samples::X4] {
+    // and a pixel two triangles share runs the shader once for each. Every buffer kept, the
+    // colour alone, and the colour with one pixel inspected (whose terms are kept, not the
+    // frame's): the built-in path adds no colour of its own under the shaders' in any.
+    use pipeline::buffers::Capture;
+    let inspected = Capture {
+        pixel: Some((80, 60)),
+        ..Capture::COLOR
+    };
+    let cases = [Capture::FULL, Capture::COLOR, inspected]
+        .into_iter()
+        .flat_map(|c| [(Samples::X1, c), (Samples::X4, c)]);
+    for (samples, capture) in cases {
         for textured in [false, true] {
             let settings = RenderSettings {
                 samples,
+                capture,
                 ..settings()
             };
             let scene = sphere_scene(textured);
             let built_in = render(&scene, &settings);
             let shaded = render(&with_shaders(scene, None, None), &settings);
-            let case = format!("textured = {textured}, {} sample(s)", samples.count());
+            let case = format!(
+                "textured = {textured}, {} sample(s), {capture:?}",
+                samples.count()
+            );
             assert_eq!(
                 built_in.pixels.coverage, shaded.pixels.coverage,
                 "coverage, {case}"
