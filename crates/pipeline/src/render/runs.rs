@@ -15,7 +15,7 @@ use glam::{I64Vec2, Vec2, Vec3};
 use super::resolve::{Kept, ResolveContext, ResolvedPixel};
 use crate::capture::FrameCapture;
 use crate::raster::{NONE, RasterTriangle, quad_offset};
-use crate::shade::lanes::{LANES, shade_lanes, shade_lanes_color};
+use crate::shade::lanes::{LANES, Lighting, shade_lanes, shade_lanes_color};
 use crate::shade::{Frequency, ShadeTerms};
 use crate::texture::Lookup;
 
@@ -287,43 +287,28 @@ impl ResolveContext<'_> {
         }
         let mut terms = [None; LANES];
         let phong = self.settings.shading == Frequency::Phong && object.lit;
-        let plain = object.detail.is_none() && object.environment.is_none();
-        if phong && plain && !keeps.lighting && !shader {
-            // The colour alone: no terms taken out of the lanes, none handed on.
-            let mut p = [Vec3::ZERO; LANES];
-            let mut normal = [Vec3::ZERO; LANES];
-            self.run_points(run, &b[..n], &mut p, &mut normal);
-            let mut color = [Vec3::ZERO; LANES];
-            shade_lanes_color(
-                &p[..n],
-                &normal[..n],
-                self.scene.camera.eye,
-                &surface[..n],
-                &self.scene.lights,
-                &object.material,
-                self.settings.reflection,
-                &mut color[..n],
-            );
-            return RunShading {
-                color,
-                terms,
-                texels,
-            };
-        }
         if phong && object.detail.is_none() {
             let (mut p, mut normal) = ([Vec3::ZERO; LANES], [Vec3::ZERO; LANES]);
             self.run_points(run, &b[..n], &mut p, &mut normal);
+            let (p, normal, surface) = (&p[..n], &normal[..n], &surface[..n]);
+            let lighting = Lighting {
+                eye: self.scene.camera.eye,
+                lights: &self.scene.lights,
+                material: &object.material,
+                model: self.settings.reflection,
+            };
+            if !keeps.lighting && !shader && object.environment.is_none() {
+                // The colour alone: no terms taken out of the lanes, none handed on.
+                let mut color = [Vec3::ZERO; LANES];
+                shade_lanes_color(p, normal, surface, &lighting, &mut color[..n]);
+                return RunShading {
+                    color,
+                    terms,
+                    texels,
+                };
+            }
             let mut lit = [ShadeTerms::default(); LANES];
-            shade_lanes(
-                &p[..n],
-                &normal[..n],
-                self.scene.camera.eye,
-                &surface[..n],
-                &self.scene.lights,
-                &object.material,
-                self.settings.reflection,
-                &mut lit[..n],
-            );
+            shade_lanes(p, normal, surface, &lighting, &mut lit[..n]);
             for f in 0..n {
                 if let Some(env) = &object.environment {
                     self.mirror(&mut lit[f], env, p[f]);

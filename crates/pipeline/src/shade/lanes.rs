@@ -121,26 +121,34 @@ fn positive_part(a: f32x8) -> f32x8 {
     a.simd_gt(f32x8::ZERO).select(a, f32x8::ZERO)
 }
 
+/// What lights a run's points: the eye they are seen from, the lights, the material and the
+/// reflection model.
+#[derive(Clone, Copy)]
+pub struct Lighting<'a> {
+    /// The eye (world coordinates).
+    pub eye: Vec3,
+    /// The scene's lights.
+    pub lights: &'a [Light],
+    /// The object's material.
+    pub material: &'a Material,
+    /// Phong or Blinn-Phong.
+    pub model: Reflection,
+}
+
 /// Lights the points `p` (world coordinates) with normals `n` (not yet unit) and surface
-/// colours `c` — one point a lane, at most [`LANES`] — seen from `eye`: for each `k`, `out[k]`
-/// becomes exactly `shade(p[k], n[k], eye, c[k], lights, m, model)`.
+/// colours `c` — one point a lane, at most [`LANES`] — as `lighting` says: for each `k`,
+/// `out[k]` becomes exactly `shade(p[k], n[k], eye, c[k], lights, material, model)`.
 ///
 /// # Panics
 /// If the slices' lengths differ or exceed [`LANES`].
-#[allow(clippy::too_many_arguments)]
 pub fn shade_lanes(
     p: &[Vec3],
     n: &[Vec3],
-    eye: Vec3,
     c: &[Vec3],
-    lights: &[Light],
-    m: &Material,
-    model: Reflection,
+    lighting: &Lighting,
     out: &mut [ShadeTerms],
 ) {
-    let count = out.len();
-    assert!(count <= LANES && p.len() == count && n.len() == count && c.len() == count);
-    let lit = light_lanes(p, n, eye, c, lights, m, model);
+    let lit = light_lanes(p, n, c, lighting, out.len());
     for (k, o) in out.iter_mut().enumerate() {
         let (light, half, n_dot_l, n_dot_h) =
             lit.key.map_or((Vec3::ZERO, Vec3::ZERO, 0.0, 0.0), |t| {
@@ -166,26 +174,20 @@ pub fn shade_lanes(
 }
 
 /// The colours alone of [`shade_lanes`]' points: `out[k]` becomes exactly
-/// `shade(p[k], n[k], eye, c[k], lights, m, model).color()`, `((ambient + diffuse) + specular) +
-/// reflected` with nothing reflected, without the terms a frame that keeps only its colour has
-/// no use for (their transposition out of the lanes was a sixth of a textured run's shading).
+/// `shade(…).color()`, `((ambient + diffuse) + specular) + reflected` with nothing reflected,
+/// without the terms a frame that keeps only its colour has no use for (their transposition
+/// out of the lanes was a sixth of a textured run's shading).
 ///
 /// # Panics
 /// If the slices' lengths differ or exceed [`LANES`].
-#[allow(clippy::too_many_arguments)]
 pub fn shade_lanes_color(
     p: &[Vec3],
     n: &[Vec3],
-    eye: Vec3,
     c: &[Vec3],
-    lights: &[Light],
-    m: &Material,
-    model: Reflection,
+    lighting: &Lighting,
     out: &mut [Vec3],
 ) {
-    let count = out.len();
-    assert!(count <= LANES && p.len() == count && n.len() == count && c.len() == count);
-    let lit = light_lanes(p, n, eye, c, lights, m, model);
+    let lit = light_lanes(p, n, c, lighting, out.len());
     let color = lit.ambient.add(lit.diffuse).add(lit.specular).add(V3::ZERO);
     for (k, o) in out.iter_mut().enumerate() {
         *o = color.lane(k);
@@ -202,16 +204,18 @@ struct LitLanes {
     key: Option<(V3, V3, f32x8, f32x8)>,
 }
 
-/// [`shade_lanes`]' lighting, left in lanes.
-fn light_lanes(
-    p: &[Vec3],
-    n: &[Vec3],
-    eye: Vec3,
-    c: &[Vec3],
-    lights: &[Light],
-    m: &Material,
-    model: Reflection,
-) -> LitLanes {
+/// [`shade_lanes`]' lighting of `count` points, left in lanes.
+///
+/// # Panics
+/// If the slices' lengths differ from `count` or `count` exceeds [`LANES`].
+fn light_lanes(p: &[Vec3], n: &[Vec3], c: &[Vec3], lighting: &Lighting, count: usize) -> LitLanes {
+    assert!(count <= LANES && p.len() == count && n.len() == count && c.len() == count);
+    let &Lighting {
+        eye,
+        lights,
+        material: m,
+        model,
+    } = lighting;
     let (p, c) = (V3::gather(p), V3::gather(c));
     let n = V3::gather(n).normalize_or_zero();
     let v = V3::splat(eye).sub(p).normalize_or_zero();
@@ -384,10 +388,16 @@ mod tests {
                 p[0] = Vec3::ZERO;
             }
             for model in [Reflection::Phong, Reflection::BlinnPhong] {
+                let lighting = Lighting {
+                    eye,
+                    lights: &lights,
+                    material: &m,
+                    model,
+                };
                 let mut out = vec![ShadeTerms::default(); count];
-                shade_lanes(&p, &n, eye, &c, &lights, &m, model, &mut out);
+                shade_lanes(&p, &n, &c, &lighting, &mut out);
                 let mut colors = vec![Vec3::NAN; count];
-                shade_lanes_color(&p, &n, eye, &c, &lights, &m, model, &mut colors);
+                shade_lanes_color(&p, &n, &c, &lighting, &mut colors);
                 for k in 0..count {
                     let want = shade(p[k], n[k], eye, c[k], &lights, &m, model);
                     assert_eq!(out[k], want, "round {round}, lane {k}, {model:?}");
@@ -406,16 +416,13 @@ mod tests {
     fn without_lights_every_lane_is_unlit_but_keeps_its_normal() {
         let n = [Vec3::new(0.0, 3.0, 4.0)];
         let mut out = [ShadeTerms::default()];
-        shade_lanes(
-            &[Vec3::ZERO],
-            &n,
-            Vec3::Z,
-            &[Vec3::ONE],
-            &[],
-            &Material::default(),
-            Reflection::BlinnPhong,
-            &mut out,
-        );
+        let lighting = Lighting {
+            eye: Vec3::Z,
+            lights: &[],
+            material: &Material::default(),
+            model: Reflection::BlinnPhong,
+        };
+        shade_lanes(&[Vec3::ZERO], &n, &[Vec3::ONE], &lighting, &mut out);
         assert_eq!(out[0].normal, Vec3::new(0.0, 0.6, 0.8));
         assert_eq!(out[0].color(), Vec3::ZERO);
     }
