@@ -33,9 +33,9 @@ pub(super) struct ResolvedPixel {
 
 /// One image row of every per-pixel buffer, written by one resolve task.
 struct RowOut<'a> {
-    /// Whether a pixel the storage's frame left uncovered holds this frame's background colour
-    /// and depth already ([`PixelBuffers::background`]).
-    background_kept: bool,
+    /// This frame's background colour and depth, and whether a pixel the storage's frame left
+    /// uncovered holds them already ([`PixelBuffers::background`]).
+    background: (([f32; 3], f32), bool),
     coverage: &'a mut [u8],
     depth: &'a mut [f32],
     primitive: &'a mut [u32],
@@ -187,9 +187,9 @@ impl RowOut<'_> {
         // A sample no triangle covers holds the depth it was cleared to (every writer of a
         // sample's depth writes its triangle too), so the span's depths are one value, the mean
         // of that many cleared depths, and the samples need not be read.
-        let (color, depth) = (ctx.settings.background.to_array(), ctx.background_depth());
+        let ((color, depth), kept) = self.background;
         debug_assert!((i..i + n).all(|p| ctx.mean_depth(p).to_bits() == depth.to_bits()));
-        if covered_before || !self.background_kept {
+        if covered_before || !kept {
             self.color[span.clone()].fill(color);
             self.depth[span].fill(depth);
         } else {
@@ -244,7 +244,12 @@ impl RowOut<'_> {
 
 /// Every per-pixel buffer cut into image rows, one [`RowOut`] a row, so that rows can be
 /// resolved in parallel.
-fn split_rows(px: &mut PixelBuffers, w: usize, h: usize, background_kept: bool) -> Vec<RowOut<'_>> {
+fn split_rows(
+    px: &mut PixelBuffers,
+    w: usize,
+    h: usize,
+    background: (([f32; 3], f32), bool),
+) -> Vec<RowOut<'_>> {
     let mut texture_rows: Vec<Option<TextureRow<'_>>> = match &mut px.texturing {
         Some(tb) => tb.rows(w).into_iter().map(Some).collect(),
         None => (0..h).map(|_| None).collect(),
@@ -262,7 +267,7 @@ fn split_rows(px: &mut PixelBuffers, w: usize, h: usize, background_kept: bool) 
         .zip(shading_rows.drain(..).zip(texture_rows.drain(..)))
         .map(
             |(((((coverage, depth), primitive), owner), color), (shading, texturing))| RowOut {
-                background_kept,
+                background,
                 coverage,
                 depth,
                 primitive,
@@ -292,7 +297,7 @@ pub(super) fn resolve(ctx: &ResolveContext<'_>, spare: PixelBuffers) -> PixelBuf
     let mut px = spare.reused(w * h, lit, textured);
     let background = (settings.background.to_array(), ctx.background_depth());
     let kept = px.background.is_some_and(|b| b == background);
-    let mut rows = split_rows(&mut px, w, h, kept);
+    let mut rows = split_rows(&mut px, w, h, (background, kept));
     // Coarse shading shares a 2×2 block's shading between two rows: they are resolved in pairs.
     let pair = if settings.coarse_shading { 2 } else { 1 };
     rows.par_chunks_mut(pair).enumerate().for_each_init(

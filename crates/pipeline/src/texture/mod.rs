@@ -200,8 +200,8 @@ impl Level {
 
 /// `(⌊x⌋, x − ⌊x⌋)`, without a call to the C library's `floorf` (which x86-64's baseline,
 /// without SSE4.1's rounding instruction, makes of `f32::floor`): truncate, then step down where
-/// truncation rounded up (x < 0). The fraction is exact (−0 for x = −0). An `x` of 2²³ or more in magnitude is
-/// a whole number already (fraction 0); a NaN gives `(0, NaN)`.
+/// truncation rounded up (x < 0). The fraction is exact (−0 for x = −0). An `x` of 2²³ or more
+/// in magnitude is a whole number already (fraction 0); a NaN gives `(0, NaN)`.
 #[inline]
 fn floor_and_fraction(x: f32) -> (i64, f32) {
     if !(x.abs() < 8_388_608.0) {
