@@ -26,10 +26,12 @@
 //! Triangle setup and the inside test are here; the sample patterns in [`samples`]; the sample
 //! buffers (the z-buffer), the depth test and rasterizing into them in [`zbuffer`].
 
+mod cleared;
 mod samples;
 mod student;
 mod zbuffer;
 
+pub(crate) use cleared::CoveredRows;
 pub use samples::*;
 pub use zbuffer::*;
 

@@ -6,7 +6,8 @@ use glam::I64Vec2;
 use serde::Serialize;
 use wide::i64x4;
 
-use super::{NONE, ONE, RasterTriangle, Samples, sample_offsets_fixed};
+use super::cleared::Covered;
+use super::{ONE, RasterTriangle, Samples};
 
 /// The depth test: a fragment is kept when `compare(fragment_depth, stored_depth)` holds.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
@@ -61,10 +62,13 @@ pub struct SampleBuffers {
     pub samples: Samples,
     /// Window depth per sample.
     pub depth: Vec<f32>,
-    /// Index of the raster triangle that wrote each sample last, or [`NONE`].
+    /// Index of the raster triangle that wrote each sample last, or [`NONE`](super::NONE).
     pub triangle: Vec<u32>,
     pub(super) offsets: Vec<I64Vec2>,
-    bins: Bins,
+    pub(super) bins: Bins,
+    /// Where the frame resolved from these buffers covered samples, so that the next clear
+    /// clears there only ([`Self::cleared`]).
+    pub(crate) covered: Covered,
 }
 
 /// The working lists of [`SampleBuffers::rasterize_all`], kept with the buffers so that a frame
@@ -72,7 +76,7 @@ pub struct SampleBuffers {
 /// triangles fill some 20 MB of lists a frame). Scratch, not content: a clone starts empty and
 /// any two compare equal.
 #[derive(Default)]
-struct Bins {
+pub(super) struct Bins {
     /// `runs[r][b]`: the triangles of run `r` whose bounding box reaches band `b`, in order.
     runs: Vec<Vec<Vec<u32>>>,
     /// `counts[b]`: what each triangle band `b` drew did there, in the order of its lists.
@@ -109,47 +113,6 @@ pub struct RasterCounts {
 }
 
 impl SampleBuffers {
-    /// Buffers cleared to `clear_depth` and no triangle.
-    #[must_use]
-    pub fn new(width: u32, height: u32, samples: Samples, clear_depth: f32) -> Self {
-        let n = width as usize * height as usize * samples.count();
-        Self {
-            width,
-            height,
-            samples,
-            depth: vec![clear_depth; n],
-            triangle: vec![NONE; n],
-            offsets: sample_offsets_fixed(samples),
-            bins: Bins::default(),
-        }
-    }
-
-    /// These buffers' storage, resized and cleared as [`Self::new`] makes them.
-    #[must_use]
-    pub fn cleared(mut self, width: u32, height: u32, samples: Samples, clear_depth: f32) -> Self {
-        use rayon::prelude::*;
-        let n = width as usize * height as usize * samples.count();
-        // Grown or shrunk, then cleared in parallel chunks (a clear is a memory-bound pass over
-        // tens of megabytes).
-        self.depth.resize(n, clear_depth);
-        self.triangle.resize(n, NONE);
-        const CHUNK: usize = 1 << 16;
-        self.depth
-            .par_chunks_mut(CHUNK)
-            .zip(self.triangle.par_chunks_mut(CHUNK))
-            .for_each(|(d, t)| {
-                d.fill(clear_depth);
-                t.fill(NONE);
-            });
-        Self {
-            width,
-            height,
-            samples,
-            offsets: sample_offsets_fixed(samples),
-            ..self
-        }
-    }
-
     /// The position of sample `s` within a pixel, from its bottom-left corner, in fixed point.
     #[must_use]
     pub fn offset(&self, s: usize) -> I64Vec2 {

@@ -11,6 +11,7 @@ mod assembly;
 mod coarse;
 #[cfg(test)]
 mod fixtures;
+mod inspected;
 mod pixel_samples;
 mod resolve;
 mod runs;
@@ -257,9 +258,11 @@ fn render_stages(
         vertex_shading: &vertex_shading,
         face_shading: &face_shading,
     };
-    let mut pixels = resolve(&ctx, storage.pixels);
+    let (mut pixels, covered) = resolve(&ctx, storage.pixels);
     let shaders = shaders::record(&ctx, &matrices, vertex_results, &mut pixels.color, peeled)?;
     times.resolve = t.elapsed();
+    // The next frame drawn into this storage clears only what this one covered.
+    samples.covered.0 = Some(covered);
 
     let labels = matrices.screen_labels(&scene.objects, width, height);
     let capture = FrameCapture {

@@ -65,3 +65,47 @@ impl ResolveContext<'_> {
 fn mean(depths: &[f32]) -> f32 {
     depths.iter().sum::<f32>() / depths.len() as f32
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::raster::{NONE, Samples};
+    use crate::render::fixtures::scene;
+    use crate::settings::RenderSettings;
+
+    /// The spans a frame's resolve hands its sample buffers are exactly where its samples are
+    /// covered: every row's from its first pixel with a covered sample to just past its last.
+    #[test]
+    fn the_resolve_says_exactly_which_pixels_of_each_row_are_covered() {
+        let mut ball = scene();
+        ball.objects.retain(|o| o.name == "ball");
+        for samples in [Samples::X1, Samples::X4] {
+            let settings = RenderSettings {
+                width: 48,
+                height: 32,
+                samples,
+                ..RenderSettings::default()
+            };
+            let frame = crate::render::render(&ball, &settings).expect("renders");
+            let buffers = &frame.samples;
+            let spans = &buffers.covered.0.as_ref().expect("the resolve says").spans;
+            let (w, s) = (48u32, samples.count());
+            let mut inside = 0;
+            for (row, &span) in spans.iter().enumerate() {
+                let covered: Vec<u32> = (0..w)
+                    .filter(|&x| {
+                        let i = (row * w as usize + x as usize) * s;
+                        buffers.triangle[i..i + s].iter().any(|&t| t != NONE)
+                    })
+                    .collect();
+                let exact = match (covered.first(), covered.last()) {
+                    (Some(&first), Some(&last)) => (first, last + 1),
+                    _ => (0, 0),
+                };
+                assert_eq!(span, exact, "row {row}, {s} samples");
+                inside += usize::from(span.0 > 0 && span.1 < w);
+            }
+            assert!(inside > 4, "the ball leaves some rows' ends uncovered");
+            assert!(spans.contains(&(0, 0)), "and some rows entirely");
+        }
+    }
+}

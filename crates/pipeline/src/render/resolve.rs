@@ -8,10 +8,9 @@ use half::f16;
 use rayon::prelude::*;
 
 use crate::capture::{
-    FrameCapture, InspectedPixel, PixelBuffers, PixelTexture, PrimitiveRecord, ShadingRow, Stored,
-    TextureRow,
+    FrameCapture, PixelBuffers, PixelTexture, PrimitiveRecord, ShadingRow, Stored, TextureRow,
 };
-use crate::raster::{NONE, ONE, RasterTriangle, SampleBuffers};
+use crate::raster::{CoveredRows, NONE, ONE, RasterTriangle, SampleBuffers};
 use crate::scene::Scene;
 use crate::settings::RenderSettings;
 use crate::shade::lanes::LANES;
@@ -36,6 +35,8 @@ struct RowOut<'a> {
     /// This frame's background colour and depth, and whether a pixel the storage's frame left
     /// uncovered holds them already ([`PixelBuffers::background`]).
     background: (([f32; 3], f32), bool),
+    /// The row's pixels with a covered sample lie in `first..end` (none when `first ≥ end`).
+    covered: (u32, u32),
     coverage: &'a mut [u8],
     depth: &'a mut [f32],
     primitive: &'a mut [u32],
@@ -89,6 +90,8 @@ impl RowOut<'_> {
         let runs = !per_sample && !coarse;
         let coarse_runs = !per_sample && coarse && ctx.settings.samples.count() == 1;
         let mut blocks = std::mem::take(&mut s.blocks);
+        // The first covered pixel, and the last background span.
+        let (mut first, mut last_background) = (None, None);
         let mut x = 0;
         while x < w {
             let i = row * w + x;
@@ -96,9 +99,11 @@ impl RowOut<'_> {
             let empty = ctx.background_run(i, w - x);
             if empty > 0 {
                 self.store_background(ctx, x, i, empty, s);
+                last_background = Some((x, x + empty));
                 x += empty;
                 continue;
             }
+            first.get_or_insert(x);
             // Shorter runs (a few pixels between a silhouette and a pixel with an uncovered
             // sample) cost more in lanes than they save: their pixels take the per-pixel path,
             // without looking again.
@@ -135,6 +140,13 @@ impl RowOut<'_> {
             }
             x += len;
         }
+        // Background spans are as long as they go: the covered pixels end where one reaching
+        // the row's end begins.
+        let end = match last_background {
+            Some((from, to)) if to == w => from,
+            _ => w,
+        };
+        self.covered = first.map_or((0, 0), |first| (first as u32, end as u32));
         s.blocks = blocks;
         if let Some(out) = &mut self.shading {
             out.store(&s.lit, &s.lighting, &mut s.halves);
@@ -268,6 +280,7 @@ fn split_rows(
         .map(
             |(((((coverage, depth), primitive), owner), color), (shading, texturing))| RowOut {
                 background,
+                covered: (0, 0),
                 coverage,
                 depth,
                 primitive,
@@ -283,8 +296,12 @@ fn split_rows(
 /// Resolves samples to pixels: coverage, mean depth, the owning primitive and raster
 /// triangle, and the colour at the pixel centre (once per pixel and triangle, as multisampling
 /// shades), with the lighting terms and texture lookup of the owning fragment when the settings
-/// keep them. Rows are independent, so they are resolved in parallel.
-pub(super) fn resolve(ctx: &ResolveContext<'_>, spare: PixelBuffers) -> PixelBuffers {
+/// keep them. Rows are independent, so they are resolved in parallel. Also says where the
+/// samples are covered, row by row, for the next clear of their buffers.
+pub(super) fn resolve(
+    ctx: &ResolveContext<'_>,
+    spare: PixelBuffers,
+) -> (PixelBuffers, CoveredRows) {
     let settings = ctx.settings;
     let (w, h) = (settings.width as usize, settings.height as usize);
     let lit = settings.shading != Frequency::Unlit && settings.capture.lighting;
@@ -313,11 +330,16 @@ pub(super) fn resolve(ctx: &ResolveContext<'_>, spare: PixelBuffers) -> PixelBuf
             }
         },
     );
+    let covered = CoveredRows {
+        clear: settings.depth_test.clear_value(),
+        spans: rows.iter().map(|r| r.covered).collect(),
+    };
+    drop(rows);
     px.background = Some(background);
     if px.shading.is_none() || px.texturing.is_none() {
         px.inspected = settings.capture.pixel.and_then(|at| ctx.inspected(at));
     }
-    px
+    (px, covered)
 }
 
 /// What the resolve of one pixel reads.
@@ -336,30 +358,6 @@ pub(super) struct ResolveContext<'a> {
 }
 
 impl ResolveContext<'_> {
-    /// The terms and lookup of window pixel `(x, y)`, resolved again by itself as the resolve
-    /// resolved it (coarse shading shares no block with it); `None` outside the viewport.
-    fn inspected(&self, (x, y): (u32, u32)) -> Option<InspectedPixel> {
-        let (w, h) = (self.settings.width, self.settings.height);
-        if x >= w || y >= h {
-            return None;
-        }
-        let i = ((h - 1 - y) * w + x) as usize;
-        // Its lookup keeps λ and the footprint, which the frame's colour may not need.
-        let with_derivatives = ResolveContext {
-            derivatives: true,
-            ..*self
-        };
-        let r = with_derivatives.pixel(x, y, i, None);
-        let lit = self.settings.shading != Frequency::Unlit;
-        let texture = r.texture.map(|(uv, l)| PixelTexture::new(uv, &l));
-        Some(InspectedPixel::new(
-            i,
-            lit,
-            r.terms.as_ref(),
-            texture.as_ref(),
-        ))
-    }
-
     /// The surface colour of triangle `t` at original-triangle weights `b`: `Σ b_k·c_k`.
     pub(super) fn color_of(&self, t: &RasterTriangle, b: Vec3) -> Vec3 {
         let rows = self.primitives[t.primitive as usize].vertices;
