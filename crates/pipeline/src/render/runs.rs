@@ -11,6 +11,7 @@
 //! compare the two.
 
 use glam::{I64Vec2, Vec2, Vec3};
+use wide::f32x8;
 
 use super::resolve::{Kept, ResolveContext, ResolvedPixel};
 use crate::capture::FrameCapture;
@@ -270,14 +271,8 @@ impl ResolveContext<'_> {
                 texels: [None; LANES],
             };
         }
-        let pc = self.settings.perspective_correct;
         let centre = |f: usize| FrameCapture::pixel_centre_fixed(x + u32::from(run.pixel[f]), y);
-        let mut b = [Vec3::ZERO; LANES];
-        for (f, b) in b.iter_mut().enumerate().take(n) {
-            let t = tri(f);
-            let bary = self.primitives[t.primitive as usize].bary_corners(t);
-            *b = t.original_bary(&bary, t.lambda(centre(f)), pc);
-        }
+        let b = self.run_weights(run, centre);
         // What the frame keeps besides the colour (a pixel inspected is resolved by itself).
         let keeps = self.settings.capture;
         let (texel_colors, texels) = self.run_texels(run, &b[..n], centre, keeps.texturing);
@@ -331,6 +326,42 @@ impl ResolveContext<'_> {
             terms,
             texels,
         }
+    }
+
+    /// Each fragment's weights of its original triangle at its pixel's centre (fixed point,
+    /// `centre(f)`), as [`RasterTriangle::original_bary`] gives them from the screen-space
+    /// weights λ: the perspective division `k = λ·(1/w) / Σ λ_i/w_i` and the corners' weights
+    /// `b = (bary₀·k₀ + bary₁·k₁) + bary₂·k₂` in lanes, the same operations in the same order
+    /// (so the same bits), where the fragments one by one would each wait on a division.
+    fn run_weights(&self, run: &Run, centre: impl Fn(usize) -> I64Vec2) -> [Vec3; LANES] {
+        // λ, 1/w and the corners' weights (corner, component) of each fragment, in lanes.
+        let (mut l, mut inv_w) = ([[0.0; LANES]; 3], [[0.0; LANES]; 3]);
+        let mut corners = [[[0.0; LANES]; 3]; 3];
+        for f in 0..run.len {
+            let t = &self.triangles[run.triangle[f] as usize];
+            let bary = self.primitives[t.primitive as usize].bary_corners(t);
+            let lambda = t.lambda(centre(f));
+            for i in 0..3 {
+                (l[i][f], inv_w[i][f]) = (lambda[i], t.inv_w[i]);
+                for c in 0..3 {
+                    corners[i][c][f] = bary[i][c];
+                }
+            }
+        }
+        let l = l.map(f32x8::new);
+        let k = if self.settings.perspective_correct {
+            let k: [f32x8; 3] = std::array::from_fn(|i| l[i] * f32x8::new(inv_w[i]));
+            // Lanes past the run divide zero by zero; nothing reads them.
+            let sum = k[0] + k[1] + k[2];
+            k.map(|k| k / sum)
+        } else {
+            l
+        };
+        let corners = corners.map(|c| c.map(f32x8::new));
+        let b: [[f32; LANES]; 3] = std::array::from_fn(|c| {
+            (corners[0][c] * k[0] + corners[1][c] * k[1] + corners[2][c] * k[2]).to_array()
+        });
+        std::array::from_fn(|f| Vec3::new(b[0][f], b[1][f], b[2][f]))
     }
 
     /// The texture lookups of a run's fragments at original-triangle weights `b` (fragment
@@ -473,7 +504,8 @@ mod tests {
     ];
 
     /// Every pixel of frames rendered with runs and background spans equals the per-pixel
-    /// resolve of the same pixel, bit for bit: colour, depth, owner, primitive, and the kept
+    /// resolve of the same pixel (perspective-correct or affine), bit for bit: colour, depth,
+    /// owner, primitive, and the kept
     /// lighting terms and texture lookup; and every run's resolve equals it too, in all that
     /// the frame keeps (a colour-only frame's runs light in lanes without the terms).
     #[test]
@@ -495,6 +527,8 @@ mod tests {
                 ..RenderSettings::default()
             };
             settings.sampler.mipmap = mipmap;
+            // One setting interpolates affinely, without the perspective division.
+            settings.perspective_correct = k != 2;
             let frame = crate::render::render(&scene, &settings).expect("renders");
             let ctx = context(&frame, &scene, &settings);
             let (w, h) = (settings.width as usize, settings.height as usize);
