@@ -8,7 +8,7 @@
 //! shaded, so sixteen pixels fill the eight lanes.
 
 use super::resolve::{BlockShade, ResolveContext, ResolvedPixel, Shaded};
-use super::runs::Run;
+use super::runs::{Run, RunShading};
 use crate::shade::lanes::LANES;
 
 /// Where a pixel of a coarse run takes its shading from.
@@ -73,7 +73,11 @@ impl ResolveContext<'_> {
                 filled += 1;
             }
         }
-        let shaded = (shade.len > 0).then(|| self.shade_run(&shade, (x, y)));
+        let shaded = (shade.len > 0).then(|| {
+            let mut shaded = RunShading::EMPTY;
+            self.shade_run(&shade, (x, y), &mut shaded);
+            shaded
+        });
         let fragment = |f: usize| -> Shaded {
             shaded
                 .as_ref()

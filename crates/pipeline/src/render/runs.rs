@@ -49,8 +49,14 @@ pub(super) struct RunShading {
     pub(super) texels: [Option<(Vec2, Lookup)>; LANES],
 }
 
-/// A run's texel colours (`None` where no texture is read), and its lookups where kept.
-type RunTexels = ([Option<Vec3>; LANES], [Option<(Vec2, Lookup)>; LANES]);
+impl RunShading {
+    /// Nothing shaded yet.
+    pub(super) const EMPTY: Self = Self {
+        color: [Vec3::ZERO; LANES],
+        terms: [None; LANES],
+        texels: [None; LANES],
+    };
+}
 
 impl Run {
     /// No fragment yet.
@@ -214,7 +220,8 @@ impl ResolveContext<'_> {
     ) {
         let n = run.len;
         let tri = |f: usize| &self.triangles[run.triangle[f] as usize];
-        let shaded = self.shade_run(run, (x, y));
+        let mut shaded = RunShading::EMPTY;
+        self.shade_run(run, (x, y), &mut shaded);
         let color = |f: usize| shaded.color[f];
         let s = self.settings.samples.count();
         let mut f = 0;
@@ -257,30 +264,29 @@ impl ResolveContext<'_> {
 
     /// The colours, lighting terms and texture lookups of `run`'s fragments (whose pixels
     /// are counted from window `(x, y)`), each as [`Self::shade_at`] gives it at its pixel's
-    /// centre.
-    pub(super) fn shade_run(&self, run: &Run, (x, y): (u32, u32)) -> RunShading {
+    /// centre, written into `out`'s first `run.len` places (in place: a run's terms and
+    /// lookups are over a kilobyte, which a returned value would copy).
+    pub(super) fn shade_run(&self, run: &Run, (x, y): (u32, u32), out: &mut RunShading) {
         let n = run.len;
         let tri = |f: usize| &self.triangles[run.triangle[f] as usize];
         let object = &self.scene.objects[self.object_of(run.triangle[0]) as usize];
         // An object with shaders: no colour here, see `shade_at`.
         let shader = object.shader.is_some();
+        out.terms[..n].fill(None);
         if shader && !self.keeps_terms() {
-            return RunShading {
-                color: [Vec3::ZERO; LANES],
-                terms: [None; LANES],
-                texels: [None; LANES],
-            };
+            out.color[..n].fill(Vec3::ZERO);
+            out.texels[..n].fill(None);
+            return;
         }
         let centre = |f: usize| FrameCapture::pixel_centre_fixed(x + u32::from(run.pixel[f]), y);
         let b = self.run_weights(run, centre);
         // What the frame keeps besides the colour (a pixel inspected is resolved by itself).
         let keeps = self.settings.capture;
-        let (texel_colors, texels) = self.run_texels(run, &b[..n], centre, keeps.texturing);
+        let texel_colors = self.run_texels(run, &b[..n], centre, keeps.texturing, &mut out.texels);
         let mut surface = [Vec3::ZERO; LANES];
         for f in 0..n {
             surface[f] = texel_colors[f].unwrap_or_else(|| self.color_of(tri(f), b[f]));
         }
-        let mut terms = [None; LANES];
         let phong = self.settings.shading == Frequency::Phong && object.lit;
         if phong && object.detail.is_none() {
             let (mut p, mut normal) = ([Vec3::ZERO; LANES], [Vec3::ZERO; LANES]);
@@ -294,13 +300,8 @@ impl ResolveContext<'_> {
             };
             if !keeps.lighting && !shader && object.environment.is_none() {
                 // The colour alone: no terms taken out of the lanes, none handed on.
-                let mut color = [Vec3::ZERO; LANES];
-                shade_lanes_color(p, normal, surface, &lighting, &mut color[..n]);
-                return RunShading {
-                    color,
-                    terms,
-                    texels,
-                };
+                shade_lanes_color(p, normal, surface, &lighting, &mut out.color[..n]);
+                return;
             }
             let mut lit = [ShadeTerms::default(); LANES];
             shade_lanes(p, normal, surface, &lighting, &mut lit[..n]);
@@ -308,23 +309,19 @@ impl ResolveContext<'_> {
                 if let Some(env) = &object.environment {
                     self.mirror(&mut lit[f], env, p[f]);
                 }
-                terms[f] = Some(lit[f]);
+                out.terms[f] = Some(lit[f]);
             }
         } else {
             for f in 0..n {
-                terms[f] = self.terms_of(tri(f), b[f], surface[f], texel_colors[f].is_some());
+                out.terms[f] = self.terms_of(tri(f), b[f], surface[f], texel_colors[f].is_some());
             }
         }
-        let mut color = [Vec3::ZERO; LANES];
-        for f in 0..n {
-            if !shader {
-                color[f] = terms[f].map_or(surface[f], |t| t.color());
-            }
-        }
-        RunShading {
-            color,
-            terms,
-            texels,
+        for ((color, terms), &surface) in out.color.iter_mut().zip(&out.terms).zip(&surface[..n]) {
+            *color = match terms {
+                _ if shader => Vec3::ZERO,
+                Some(t) => t.color(),
+                None => surface,
+            };
         }
     }
 
@@ -374,11 +371,13 @@ impl ResolveContext<'_> {
         b: &[Vec3],
         centre: impl Fn(usize) -> I64Vec2,
         keep: bool,
-    ) -> RunTexels {
-        let (mut colors, mut out) = ([None; LANES], [None; LANES]);
+        out: &mut [Option<(Vec2, Lookup)>; LANES],
+    ) -> [Option<Vec3>; LANES] {
+        let mut colors = [None; LANES];
+        out[..b.len()].fill(None);
         let object = &self.scene.objects[self.object_of(run.triangle[0]) as usize];
         let Some(texture) = object.texture.as_ref() else {
-            return (colors, out);
+            return colors;
         };
         let pc = self.settings.perspective_correct;
         // Each fragment's triangle's vertex uvs (`None` when a vertex has none).
@@ -427,7 +426,7 @@ impl ResolveContext<'_> {
                 out[f] = Some((uv[f], lookup));
             }
         }
-        (colors, out)
+        colors
     }
 
     /// The world positions `p` and normals `normal` (not yet unit) of a run's fragments at
