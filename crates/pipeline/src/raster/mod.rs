@@ -44,6 +44,8 @@ use serde::Serialize;
 pub const SUBPIXEL_BITS: u32 = 8;
 /// One pixel in fixed-point units.
 pub const ONE: i64 = 1 << SUBPIXEL_BITS;
+// A position within a pixel fits a byte (`RasterTriangle::box_within`).
+const _: () = assert!(ONE == 256);
 /// The primitive / triangle id of a sample nothing covered.
 pub const NONE: u32 = u32::MAX;
 
@@ -92,6 +94,10 @@ pub struct RasterTriangle {
     /// Which edges are top or left edges (see [`Self::top_left`]).
     #[serde(skip)]
     top_left: [bool; 3],
+    /// Where the snapped corners' box starts and ends within the first and last pixels of
+    /// `bbox` (`x_lo, y_lo, x_hi, y_hi`, in 1/256 pixel; see [`Self::box_holds_a_sample`]).
+    #[serde(skip)]
+    box_within: [u8; 4],
 }
 
 /// Which points of its primitive a raster triangle's corners are: `of[i]` indexes the
@@ -246,6 +252,22 @@ impl RasterTriangle {
             clamp(hi.x, size.0),
             clamp(hi.y, size.1),
         ];
+        // The box within the viewport's pixels: from `lo` (or the first pixel's start, when
+        // `lo` lies before it) to `hi` (or the last pixel's end). A box wholly outside keeps
+        // `lo` past `hi` in its one pixel (start 255, end 0), so that it holds no sample.
+        let start = |v: i64, pixel: u16| (v - i64::from(pixel) * ONE).clamp(0, ONE - 1);
+        let end = |v: i64, pixel: u16| (v - i64::from(pixel) * ONE).clamp(-1, ONE - 1);
+        let within = |lo: i64, hi: i64, (first, last): (u16, u16)| {
+            let (a, b) = (start(lo, first), end(hi, last));
+            if lo >= (i64::from(last) + 1) * ONE || b < 0 {
+                (ONE - 1, 0)
+            } else {
+                (a, b)
+            }
+        };
+        let (x_lo, x_hi) = within(lo.x, hi.x, (bbox[0], bbox[2]));
+        let (y_lo, y_hi) = within(lo.y, hi.y, (bbox[1], bbox[3]));
+        let box_within = [x_lo, y_lo, x_hi, y_hi].map(|v| v as u8);
         Ok(Self {
             primitive,
             window,
@@ -255,6 +277,7 @@ impl RasterTriangle {
             edges: [e0, e1, e2],
             area2: area2.abs(),
             top_left: [t0, t1, t2],
+            box_within,
         })
     }
 
@@ -293,15 +316,21 @@ impl RasterTriangle {
         self.area2
     }
 
-    /// Whether a sample position — a pixel corner `(k·ONE, l·ONE)` plus one of `offsets` —
-    /// lies in the box of the snapped corners (edges included). When none does, the triangle
-    /// covers no sample: of a million triangles at 1280×720 more than half are such slivers
-    /// between the pixel centres, and the rasterizer skips them without scanning their rows.
+    /// Whether a sample position of a pixel of the viewport — a pixel corner `(k·ONE, l·ONE)`
+    /// plus one of `offsets` — lies in the box of the snapped corners (edges included). When
+    /// none does, the triangle covers no sample: of a million triangles at 1280×720 more than
+    /// half are such slivers between the pixel centres, and the rasterizer skips them without
+    /// scanning their rows. The box is `bbox` with where it starts and ends within its first
+    /// and last pixels, kept at setup (not snapped again for every triangle of a frame).
     #[must_use]
     pub fn box_holds_a_sample(&self, offsets: &[I64Vec2]) -> bool {
-        let fixed = self.window.map(|p| I64Vec2::new(snap(p.x), snap(p.y)));
-        let lo = fixed[0].min(fixed[1]).min(fixed[2]);
-        let hi = fixed[0].max(fixed[1]).max(fixed[2]);
+        let at = |pixel: u16, within: u8| i64::from(pixel) * ONE + i64::from(within);
+        let [x0, y0, x1, y1] = self.bbox;
+        let [a, b, c, d] = self.box_within;
+        let (lo, hi) = (
+            I64Vec2::new(at(x0, a), at(y0, b)),
+            I64Vec2::new(at(x1, c), at(y1, d)),
+        );
         // The first position k·ONE + o at or after `lo` is at or before `hi`.
         let hits = |lo: i64, hi: i64, o: i64| (lo - o + ONE - 1).div_euclid(ONE) * ONE + o <= hi;
         offsets

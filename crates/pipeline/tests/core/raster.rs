@@ -435,3 +435,67 @@ fn binning_in_runs_keeps_the_drawing_order() {
         spare = Some(fast);
     }
 }
+
+/// Whether a triangle's box holds a sample, as the binning asks it (from what setup kept),
+/// is whether some sample position of a pixel of the viewport lies in the box of its snapped
+/// corners: for small and large triangles, inside, across and wholly outside the viewport, at
+/// every sample count.
+#[test]
+fn a_box_holds_a_sample_where_a_pixel_s_sample_lies_in_the_snapped_corners_box() {
+    use glam::{I64Vec2, Vec3};
+    use pipeline::raster::{CullMode, ONE, RasterTriangle, Samples, sample_offsets_fixed, snap};
+    let (w, h) = (8u32, 6u32);
+    let mut next = crate::support::uniform(0x6c07_8965_u32);
+    let (mut holds, mut empty, mut outside) = (0, 0, 0);
+    for k in 0..20_000 {
+        // Corners anywhere from three pixels before the viewport to three past it; a tenth of
+        // the triangles slivers under a pixel wide.
+        let size = if k % 10 == 0 { 0.6 } else { 6.0 };
+        let (x, y) = (next() * 14.0 - 3.0, next() * 12.0 - 3.0);
+        let corner = |dx: f32, dy: f32| Vec3::new(x + dx * size, y + dy * size, 0.5);
+        let window = [
+            corner(0.0, 0.0),
+            corner(next(), next() * 0.2),
+            corner(next() * 0.2, next()),
+        ];
+        let Ok(tri) = RasterTriangle::setup(
+            0,
+            window,
+            [1.0; 3],
+            pipeline::raster::Corners::ORIGINAL,
+            CullMode::None,
+            (w, h),
+        ) else {
+            continue;
+        };
+        let fixed = window.map(|p| I64Vec2::new(snap(p.x), snap(p.y)));
+        let lo = fixed[0].min(fixed[1]).min(fixed[2]);
+        let hi = fixed[0].max(fixed[1]).max(fixed[2]);
+        outside += usize::from(hi.x < 0 || lo.x >= i64::from(w) * ONE);
+        for samples in [Samples::X1, Samples::X4, Samples::X8, Samples::X16] {
+            let offsets = sample_offsets_fixed(samples);
+            let want = (0..w).any(|px| {
+                (0..h).any(|py| {
+                    offsets.iter().any(|o| {
+                        let p = I64Vec2::new(i64::from(px) * ONE, i64::from(py) * ONE) + *o;
+                        p.cmpge(lo).all() && p.cmple(hi).all()
+                    })
+                })
+            });
+            assert_eq!(
+                tri.box_holds_a_sample(&offsets),
+                want,
+                "{window:?}, {samples:?}"
+            );
+            (holds, empty) = (holds + usize::from(want), empty + usize::from(!want));
+        }
+    }
+    assert!(
+        holds > 10_000 && empty > 5_000,
+        "{holds} hold a sample, {empty} none"
+    );
+    assert!(
+        outside > 500,
+        "only {outside} boxes wholly beside the viewport"
+    );
+}
