@@ -272,9 +272,9 @@ impl ResolveContext<'_> {
         let object = &self.scene.objects[self.object_of(run.triangle[0]) as usize];
         // An object with shaders: no colour here, see `shade_at`.
         let shader = object.shader.is_some();
-        out.terms[..n].fill(None);
         if shader && !self.keeps_terms() {
             out.color[..n].fill(Vec3::ZERO);
+            out.terms[..n].fill(None);
             out.texels[..n].fill(None);
             return;
         }
@@ -301,6 +301,7 @@ impl ResolveContext<'_> {
             if !keeps.lighting && !shader && object.environment.is_none() {
                 // The colour alone: no terms taken out of the lanes, none handed on.
                 shade_lanes_color(p, normal, surface, &lighting, &mut out.color[..n]);
+                out.terms[..n].fill(None);
                 return;
             }
             let mut lit = [ShadeTerms::default(); LANES];
@@ -504,9 +505,9 @@ mod tests {
 
     /// Every pixel of frames rendered with runs and background spans equals the per-pixel
     /// resolve of the same pixel (perspective-correct or affine), bit for bit: colour, depth,
-    /// owner, primitive, and the kept
-    /// lighting terms and texture lookup; and every run's resolve equals it too, in all that
-    /// the frame keeps (a colour-only frame's runs light in lanes without the terms).
+    /// owner, primitive, and the kept lighting terms and texture lookup; and every run's resolve
+    /// equals it too, in all that the frame keeps (a colour-only frame's runs light in lanes
+    /// without the terms).
     #[test]
     fn runs_resolve_every_pixel_as_the_per_pixel_path_does() {
         let scene = scene();
