@@ -68,6 +68,13 @@ pub fn snap(v: f32) -> i64 {
     }
 }
 
+/// A window position's `x` and `y` snapped to the sub-pixel grid ([`snap`]), in fixed point.
+#[must_use]
+#[inline]
+pub fn snap_xy(p: Vec3) -> I64Vec2 {
+    I64Vec2::new(snap(p.x), snap(p.y))
+}
+
 /// A triangle ready to be rasterized: snapped, counter-clockwise, with its edge equations.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct RasterTriangle {
@@ -217,7 +224,25 @@ impl RasterTriangle {
         cull: CullMode,
         size: (u32, u32),
     ) -> Result<Self, SetupRejection> {
-        let mut fixed = window.map(|p| I64Vec2::new(snap(p.x), snap(p.y)));
+        let fixed = window.map(|p| snap_xy(p));
+        Self::setup_snapped(primitive, (window, fixed), inv_w, corners, cull, size)
+    }
+
+    /// [`Self::setup`] of corners whose window positions are already snapped, `fixed[k]` being
+    /// [`snap_xy`]`(window[k])`: a vertex shared by several triangles is snapped once.
+    ///
+    /// # Errors
+    /// [`SetupRejection`] when the triangle has no area or is culled.
+    pub fn setup_snapped(
+        primitive: u32,
+        (window, fixed): ([Vec3; 3], [I64Vec2; 3]),
+        inv_w: [f32; 3],
+        corners: Corners,
+        cull: CullMode,
+        size: (u32, u32),
+    ) -> Result<Self, SetupRejection> {
+        debug_assert!((0..3).all(|k| fixed[k] == snap_xy(window[k])));
+        let mut fixed = fixed;
         if fixed.iter().any(|f| f.abs().max_element() > MAX_FIXED) {
             return Err(SetupRejection::OutOfRange);
         }

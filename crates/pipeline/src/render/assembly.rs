@@ -2,12 +2,12 @@
 //! setup (with culling), one primitive at a time in parallel chunks; and flat shading's lighting
 //! of each face.
 
-use glam::Vec3;
+use glam::{I64Vec2, Vec3, Vec4};
 use rayon::prelude::*;
 
 use crate::capture::{Fate, Matrices, PrimitiveRecord};
 use crate::clip::{self, ClipOutcome, ClipVertex};
-use crate::raster::{Corners, RasterCounts, RasterTriangle, SetupRejection};
+use crate::raster::{Corners, RasterCounts, RasterTriangle, SetupRejection, snap_xy};
 use crate::scene::Scene;
 use crate::settings::RenderSettings;
 use crate::shade::{self, ShadeTerms};
@@ -47,6 +47,7 @@ pub(super) fn assemble_and_clip(
     // triangles into its own slice of `triangles` — as many places as it has primitives, the
     // rare excess into a vector of its own — and the chunks' triangles are then moved
     // together, in order. No memory is taken from the system for a frame of the same scene.
+    let packed: Vec<AssemblyVertex> = vertices.par_iter().map(AssemblyVertex::of).collect();
     resize_over(primitives, total, unwritten);
     resize_over(triangles, total, RasterTriangle::default);
     let fans: Vec<(usize, Vec<RasterTriangle>)> = primitives
@@ -63,7 +64,7 @@ pub(super) fn assemble_and_clip(
                 let id = c * CHUNK + k;
                 let (object, rows) = primitive(id);
                 *record = assemble_one(
-                    id as u32, object, rows, settings, matrices, vertices, &mut fan,
+                    id as u32, object, rows, settings, matrices, &packed, &mut fan,
                 );
             }
             (fan.count, fan.excess)
@@ -78,6 +79,31 @@ pub(super) fn assemble_and_clip(
                 r.triangles = r.triangles.map(|t| t + start);
             }
         });
+}
+
+/// What primitive assembly reads of a vertex, packed: its clip position, and where `w > 0` its
+/// window position and that position snapped to the sub-pixel grid. A vertex's record is about
+/// 140 bytes, read for each of the (about six) triangles around it; these 48 are written once a
+/// frame, in parallel, and a vertex is snapped once rather than once for each of its triangles.
+#[derive(Clone, Copy)]
+struct AssemblyVertex {
+    clip: Vec4,
+    window: Vec3,
+    /// Whether the vertex has a window position (`w > 0`): `window` and `fixed` are its.
+    placed: bool,
+    fixed: I64Vec2,
+}
+
+impl AssemblyVertex {
+    fn of(v: &VertexRecord) -> Self {
+        let window = v.window.unwrap_or(Vec3::ZERO);
+        Self {
+            clip: v.clip,
+            window,
+            placed: v.window.is_some(),
+            fixed: snap_xy(window),
+        }
+    }
 }
 
 /// Where one chunk of primitives puts its raster triangles: its places in the frame's list,
@@ -201,7 +227,7 @@ fn assemble_one(
     rows: [u32; 3],
     settings: &RenderSettings,
     matrices: &Matrices,
-    vertices: &[VertexRecord],
+    vertices: &[AssemblyVertex],
     triangles: &mut Fan,
 ) -> PrimitiveRecord {
     let size = (settings.width, settings.height);
@@ -228,31 +254,33 @@ fn assemble_one(
             };
         }
     };
-    // Perspective division and viewport for each polygon vertex (at most 10): a triangle wholly
-    // inside has its corners' window positions in the vertex table already (`w > 0` there).
-    let mut window = [(Vec3::ZERO, 0.0f32); 10];
+    // Perspective division, viewport and snapping for each polygon vertex (at most 10): a
+    // triangle wholly inside has its corners' window positions, snapped, in the vertex table
+    // already (`w > 0` there).
+    let mut window = [(Vec3::ZERO, I64Vec2::ZERO, 0.0f32); 10];
     let inside = matches!(outcome, ClipOutcome::Inside);
     for (k, (slot, v)) in window.iter_mut().zip(polygon).enumerate() {
         let recorded = if inside {
-            vertices[rows[k] as usize].window
+            let a = &vertices[rows[k] as usize];
+            a.placed.then_some((a.window, a.fixed))
         } else {
             None
         };
         *slot = match recorded {
-            Some(w) => (w, 1.0 / v.clip.w),
+            Some((w, fixed)) => (w, fixed, 1.0 / v.clip.w),
             None => {
                 let (_, w, inv_w) = crate::vertex::to_window(v.clip, &viewport);
-                (w, inv_w)
+                (w, snap_xy(w), inv_w)
             }
         };
     }
     let mut rejection = None;
     for k in 1..polygon.len() - 1 {
         let idx = [0, k, k + 1];
-        match RasterTriangle::setup(
+        match RasterTriangle::setup_snapped(
             id,
-            idx.map(|i| window[i].0),
-            idx.map(|i| window[i].1),
+            (idx.map(|i| window[i].0), idx.map(|i| window[i].1)),
+            idx.map(|i| window[i].2),
             if inside {
                 Corners::ORIGINAL
             } else {
