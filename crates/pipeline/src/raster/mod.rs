@@ -224,7 +224,7 @@ impl RasterTriangle {
         cull: CullMode,
         size: (u32, u32),
     ) -> Result<Self, SetupRejection> {
-        let fixed = window.map(|p| snap_xy(p));
+        let fixed = window.map(snap_xy);
         Self::setup_snapped(primitive, (window, fixed), inv_w, corners, cull, size)
     }
 
