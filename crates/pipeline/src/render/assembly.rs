@@ -46,7 +46,8 @@ pub(super) fn assemble_and_clip(
     // up to eight (clipped). Each chunk of primitives writes its records in place and its
     // triangles into its own slice of `triangles` — as many places as it has primitives, the
     // rare excess into a vector of its own — and the chunks' triangles are then moved
-    // together, in order. No memory is taken from the system for a frame of the same scene.
+    // together, in order, in the storage of the frame before. (The vertices packed for the
+    // assembly are a vector of their own each frame, 48 bytes a vertex.)
     let packed: Vec<AssemblyVertex> = vertices.par_iter().map(AssemblyVertex::of).collect();
     resize_over(primitives, total, unwritten);
     resize_over(triangles, total, RasterTriangle::default);
