@@ -235,14 +235,13 @@ impl RasterTriangle {
     /// [`SetupRejection`] when the triangle has no area or is culled.
     pub fn setup_snapped(
         primitive: u32,
-        (window, fixed): ([Vec3; 3], [I64Vec2; 3]),
+        (window, mut fixed): ([Vec3; 3], [I64Vec2; 3]),
         inv_w: [f32; 3],
         corners: Corners,
         cull: CullMode,
         size: (u32, u32),
     ) -> Result<Self, SetupRejection> {
         debug_assert!((0..3).all(|k| fixed[k] == snap_xy(window[k])));
-        let mut fixed = fixed;
         if fixed.iter().any(|f| f.abs().max_element() > MAX_FIXED) {
             return Err(SetupRejection::OutOfRange);
         }
@@ -404,8 +403,8 @@ impl RasterTriangle {
             .map(|w| glam::DVec3::new(w.x.into(), w.y.into(), w.z.into()));
         let snapped = || {
             self.window.map(|w| {
-                let q = |v: f32| snap(v) as f64 / ONE as f64;
-                glam::DVec3::new(q(w.x), q(w.y), w.z.into())
+                let f = snap_xy(w).as_dvec2() / ONE as f64;
+                glam::DVec3::new(f.x, f.y, w.z.into())
             })
         };
         let (a, b, c) = plane(exact).or_else(|| plane(snapped())).unwrap_or((

@@ -392,10 +392,8 @@ fn rasterize_with_hooks(
                     .map(|p| [pixels(p.x), pixels(p.y)])
                     .collect();
                 let corners = tri.window.map(|c| {
-                    [
-                        pixels(crate::raster::snap(c.x)),
-                        pixels(crate::raster::snap(c.y)),
-                    ]
+                    let f = crate::raster::snap_xy(c);
+                    [pixels(f.x), pixels(f.y)]
                 });
                 let answers = test.covers(&points, corners);
                 Some(answers.map_err(|e| failed("inside test", object, e))?)

@@ -443,7 +443,7 @@ fn binning_in_runs_keeps_the_drawing_order() {
 #[test]
 fn a_box_holds_a_sample_where_a_pixel_s_sample_lies_in_the_snapped_corners_box() {
     use glam::{I64Vec2, Vec3};
-    use pipeline::raster::{CullMode, ONE, RasterTriangle, Samples, sample_offsets_fixed, snap};
+    use pipeline::raster::{CullMode, ONE, RasterTriangle, Samples, sample_offsets_fixed, snap_xy};
     let (w, h) = (8u32, 6u32);
     let mut next = crate::support::uniform(0x6c07_8965_u32);
     let (mut holds, mut empty, mut outside) = (0, 0, 0);
@@ -468,7 +468,7 @@ fn a_box_holds_a_sample_where_a_pixel_s_sample_lies_in_the_snapped_corners_box()
         ) else {
             continue;
         };
-        let fixed = window.map(|p| I64Vec2::new(snap(p.x), snap(p.y)));
+        let fixed = window.map(snap_xy);
         let lo = fixed[0].min(fixed[1]).min(fixed[2]);
         let hi = fixed[0].max(fixed[1]).max(fixed[2]);
         outside += usize::from(hi.x < 0 || lo.x >= i64::from(w) * ONE);
