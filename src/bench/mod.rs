@@ -128,6 +128,25 @@ pub fn measure(
     })
 }
 
+/// The instruction sets this build was compiled for, as a run should state them: the native
+/// build takes those of the processor it was built on (`.cargo/config.toml`), one built with
+/// `RUSTFLAGS=` its architecture's baseline.
+fn compiled_for() -> String {
+    let wider: Vec<&str> = [
+        ("AVX-512", cfg!(target_feature = "avx512f")),
+        ("AVX2", cfg!(target_feature = "avx2")),
+        ("FMA", cfg!(target_feature = "fma")),
+    ]
+    .into_iter()
+    .filter_map(|(name, on)| on.then_some(name))
+    .collect();
+    if wider.is_empty() {
+        format!("{}'s baseline", std::env::consts::ARCH)
+    } else {
+        format!("{} with {}", std::env::consts::ARCH, wider.join(", "))
+    }
+}
+
 /// Runs the standard benchmark and prints a table; `quick` uses fewer frames.
 ///
 /// # Errors
@@ -136,9 +155,11 @@ pub fn run(quick: bool, frames: Option<usize>, out: &mut dyn std::io::Write) -> 
     let ms = |d: Duration| d.as_secs_f64() * 1e3;
     writeln!(
         out,
-        "pipelens bench — medians in ms, {} thread(s) available; stages with every buffer \
-         captured, then the frame keeping the colour only (what the Output view keeps)\n",
-        rayon::current_num_threads()
+        "pipelens bench — medians in ms, {} thread(s) available, compiled for {}; stages with \
+         every buffer captured, then the frame keeping the colour only (what the Output view \
+         keeps)\n",
+        rayon::current_num_threads(),
+        compiled_for()
     )?;
     writeln!(
         out,
