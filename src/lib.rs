@@ -6,6 +6,8 @@
 //! - [`lesson`]: scene files and lessons, parsed and validated;
 //! - [`observer`]: the scene seen from outside;
 //! - [`export`]: snapshots and handouts written to disk;
+//! - [`lab`]: a lab's check — the student's frame against pipelens' own — and its verdict in
+//!   words, for the app and `pipelens grade`;
 //! - [`app`]: the desktop app;
 //! - [`cli`]: the command line, which opens the app or exports, checks and benchmarks
 //!   ([`bench`]).
@@ -16,6 +18,7 @@ pub mod bench;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod cli;
 pub mod export;
+pub mod lab;
 pub mod lesson;
 pub mod observer;
 pub mod spaces;

@@ -349,7 +349,7 @@ fn buffer_with_shapes(
         .map(|(x, y)| capture.lighting_arrows(x, y))
         .unwrap_or_default();
     if let Some((x, y)) = s.pixel {
-        let r = (capture.height() - 1 - y) as f32;
+        let r = capture.grid().row(y.min(capture.height() - 1)) as f32;
         let pad = 1.5 / z;
         shapes.push(Shape::Rect {
             min: [x as f32 - pad, r - pad],
@@ -422,7 +422,7 @@ fn sample_dots(capture: &FrameCapture, zoom: f32) -> Vec<Shape> {
     let radius = (zoom / 14.0).clamp(1.5, 5.0);
     let mut dots = Vec::new();
     for r in 0..capture.height() {
-        let y = capture.height() - 1 - r;
+        let y = capture.grid().row(r);
         for c in 0..capture.width() {
             for (k, o) in offsets.iter().enumerate() {
                 let covered = capture.samples.triangle[capture.samples.index(c, y, k)]

@@ -130,7 +130,14 @@ fn the_core_s_modules_form_no_cycle() {
 fn the_product_s_modules_form_no_cycle_and_only_the_top_uses_the_app() {
     let deps = dependencies(&repo().join("src"));
     assert_eq!(cycle(&deps), None, "the product's modules: {deps:#?}");
-    for below in ["vocabulary", "lesson", "export", "observer", "spaces"] {
+    for below in [
+        "vocabulary",
+        "lesson",
+        "lab",
+        "export",
+        "observer",
+        "spaces",
+    ] {
         let used = &deps[below];
         assert!(
             !used.contains("app") && !used.contains("cli") && !used.contains("bench"),

@@ -283,7 +283,7 @@ fn a_matrix_lab_names_the_first_wrong_vertex_and_the_entries_off() {
 /// the eye (w < 0) and fails.
 #[test]
 fn the_shadow_lab_compares_the_matrix_up_to_a_positive_factor() {
-    use pipelens::app::exercise::wrong_shadow_matrix;
+    use pipelens::lab::wrong_shadow_matrix;
     use pipeline::shader::{HookKind, compile_hook};
     let path = crate::support::repo().join("lessons/16-planar-shadows.toml");
     let Ok(Document::Lesson(lesson)) = pipelens::lesson::load_file(&path) else {

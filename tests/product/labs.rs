@@ -221,11 +221,104 @@ pub(crate) fn compared(
     spec: &pipelens::lesson::SceneSpec,
     tolerance: f32,
 ) -> pipeline::capture::Difference {
+    let (mine, reference) = frames(spec);
+    mine.difference(&reference, tolerance).expect("same size")
+}
+
+/// The frame of `spec` and pipelens' own (the same scene without the student's code).
+fn frames(
+    spec: &pipelens::lesson::SceneSpec,
+) -> (
+    pipeline::capture::FrameCapture,
+    pipeline::capture::FrameCapture,
+) {
     let mine = pipeline::render(&spec.scene, &spec.settings).expect("the lab renders");
     let mut own = spec.scene.clone();
     own.clear_code();
     let reference = pipeline::render(&own, &spec.settings).expect("the reference renders");
-    mine.difference(&reference, tolerance).expect("same size")
+    (mine, reference)
+}
+
+/// Whether image pixel `(col, row)` (counted from the top, as the stored buffers and the
+/// pictures run) differs between two frames: its coverage, or a colour channel by more than
+/// `tolerance` 8-bit steps. Worked out here from the buffers as stored, not through the
+/// product's window positions.
+fn differs_at_image(
+    a: &pipeline::capture::FrameCapture,
+    b: &pipeline::capture::FrameCapture,
+    (col, row): (u32, u32),
+    tolerance: f32,
+) -> bool {
+    let i = (row * a.width() + col) as usize;
+    let step = |x: f32| (x.clamp(0.0, 1.0) * 255.0).round();
+    a.pixels.coverage[i] != b.pixels.coverage[i]
+        || (0..3)
+            .any(|c| (step(a.pixels.color[i][c]) - step(b.pixels.color[i][c])).abs() > tolerance)
+}
+
+/// In every lab whose starter is compared pixel by pixel, the first wrong pixel reported
+/// (window position, y up) is the first differing pixel reading the picture from its top row:
+/// it differs, no image row above it holds a difference, nor its row left of it; the
+/// difference picture marks that spot (not dim) and nothing above it; and the pixel's record
+/// (what **Inspect the first wrong pixel** opens) differs between the frames.
+#[test]
+fn the_first_wrong_pixel_of_every_lab_differs_and_is_the_topmost() {
+    let mut labs = 0;
+    for path in lesson_files() {
+        let Ok(Document::Lesson(lesson)) = pipelens::lesson::load_file(&path) else {
+            panic!("{} loads", path.display());
+        };
+        for (k, step) in lesson.steps.iter().enumerate() {
+            let Some(exercise) = &step.exercise else {
+                continue;
+            };
+            if exercise.starter.curve.is_some() {
+                continue; // compared point by point, not pixel by pixel
+            }
+            let name = format!("{} step {}", lesson.id, k + 1);
+            let spec = lesson.spec_at(k);
+            let (mine, reference) = frames(&spec);
+            let t = exercise.tolerance;
+            let d = mine.difference(&reference, t).expect("same size");
+            let (x, y) = d
+                .first
+                .unwrap_or_else(|| panic!("{name}: the starter matches"));
+            let (w, h) = (mine.width(), mine.height());
+            let row = h - 1 - y;
+            assert!(
+                differs_at_image(&mine, &reference, (x, row), t),
+                "{name}: ({x}, {y}) matches"
+            );
+            for r in 0..=row {
+                for c in 0..(if r == row { x } else { w }) {
+                    assert!(
+                        !differs_at_image(&mine, &reference, (c, r), t),
+                        "{name}: image pixel ({c}, {r}) differs, above the first reported ({x}, {y})"
+                    );
+                }
+            }
+            let picture = mine.difference_image(&reference, t);
+            let dim = |p: &image::Rgba<u8>| p.0[0] == p.0[1] && p.0[1] == p.0[2] && p.0[0] <= 64;
+            assert!(
+                !dim(picture.get_pixel(x, row)),
+                "{name}: the picture is dim at the first wrong pixel"
+            );
+            assert!(
+                (0..row).all(|r| (0..w).all(|c| dim(picture.get_pixel(c, r)))),
+                "{name}: the difference picture marks a pixel above the first wrong one"
+            );
+            let (a, b) = (
+                mine.pixel_record(x, y).expect("in the window"),
+                reference.pixel_record(x, y).expect("in the window"),
+            );
+            assert!(
+                a.coverage != b.coverage || a.color != b.color,
+                "{name}: the inspected first wrong pixel ({x}, {y}) is the same in both frames"
+            );
+            labs += 1;
+        }
+    }
+    assert!(labs >= 15, "only {labs} pixel-checked labs were found");
 }
 
 /// An exercise's check as the app makes it: the curve point by point where the scene runs the
@@ -238,7 +331,7 @@ pub(crate) fn checked(spec: &pipelens::lesson::SceneSpec, tolerance: f32) -> (bo
         _ => None,
     });
     if let Some((hook, points)) = curve {
-        let tolerance = pipelens::app::exercise::CURVE_TOLERANCE;
+        let tolerance = pipelens::lab::CURVE_TOLERANCE;
         let d = hook
             .curve_difference(points, tolerance)
             .expect("the curve runs");
@@ -409,7 +502,38 @@ fn a_lab_in_the_app_says_not_yet_then_passed_and_keeps_the_code() {
     );
     h.get_by_label("Inspect the first wrong pixel").click();
     h.run_steps(4);
-    assert_eq!(h.state().session.selection.pixel, Some((269, 205)));
+    // The starter leaves the specular term out: the first pixel that differs, reading from the
+    // top, is on the highlight's upper edge, and it is the one selected. Checked against the
+    // frames themselves (the buffers as stored, top row first), not a copied number.
+    let (x, y) = h
+        .state()
+        .session
+        .selection
+        .pixel
+        .expect("a pixel is selected");
+    let session = &h.state().session;
+    let capture = session.capture.as_ref().expect("the student's frame");
+    let reference = session.exercise.reference.as_ref().expect("the reference");
+    let row = capture.height() - 1 - y;
+    assert!(differs_at_image(capture, reference, (x, row), 1.0));
+    assert!(
+        (0..row).all(|r| (0..capture.width()).all(|c| !differs_at_image(
+            capture,
+            reference,
+            (c, r),
+            1.0
+        ))),
+        "a pixel above ({x}, {y}) differs"
+    );
+    let (mine, theirs) = (
+        capture.pixel_record(x, y).expect("in the window"),
+        reference.pixel_record(x, y).expect("in the window"),
+    );
+    assert!(mine.color != theirs.color, "the inspected pixel differs");
+    assert!(
+        mine.lighting.is_some() || mine.primitive.is_some(),
+        "the first wrong pixel lies on the sphere"
+    );
     assert!(
         h.state().panels.inspector,
         "the Inspector opens on that pixel"

@@ -7,6 +7,7 @@
 //!
 //! | module | stage |
 //! |---|---|
+//! | [`grid`] | window positions (y up) against image rows (top first), one way |
 //! | [`transform`] | every matrix of the course, with its formula |
 //! | [`bezier`], [`mesh`] | Bézier curves; meshes from OBJ files and built-in shapes |
 //! | [`texture`] | textures and their mip pyramids, samplers, surface detail |
@@ -26,6 +27,7 @@ pub mod buffers;
 pub mod camera;
 pub mod capture;
 pub mod clip;
+pub mod grid;
 pub mod hierarchy;
 pub mod light;
 pub mod mesh;

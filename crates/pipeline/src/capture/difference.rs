@@ -61,17 +61,17 @@ impl FrameCapture {
             first: None,
             tolerance,
         };
-        // Top row first: window row h − 1.
-        for row in (0..h).rev() {
+        // As a page is read: the top image row first (window row h − 1), left to right.
+        let grid = self.grid();
+        for y in (0..h).rev() {
             for x in 0..w {
-                let i = (row * w + x) as usize;
-                let (colour, coverage) = pixel_difference(self, reference, i);
+                let (colour, coverage) = pixel_difference(self, reference, grid.index(x, y));
                 d.largest = d.largest.max(colour);
                 d.coverage_differs += u64::from(coverage);
                 if colour <= tolerance && !coverage {
                     d.matching += 1;
                 } else if d.first.is_none() {
-                    d.first = Some((x, row));
+                    d.first = Some((x, y));
                 }
             }
         }
@@ -83,9 +83,11 @@ impl FrameCapture {
     /// and beyond), pixels whose coverage differs yellow. Image rows run down.
     #[must_use]
     pub fn difference_image(&self, reference: &FrameCapture, tolerance: f32) -> RgbaImage {
-        let (w, h) = (self.width(), self.height());
-        RgbaImage::from_fn(w, h, |x, y| {
-            let i = ((h - 1 - y) * w + x) as usize;
+        let w = self.width();
+        // Both the buffers and the picture run top row first: image pixel (x, row) is buffer
+        // index row·w + x, the window position (x, h − 1 − row).
+        RgbaImage::from_fn(w, self.height(), |x, row| {
+            let i = row as usize * w as usize + x as usize;
             if i >= reference.pixels.color.len() {
                 return Rgba([0, 0, 0, 255]);
             }

@@ -349,10 +349,7 @@ impl FrameCapture {
     /// The primitive whose fragment pixel `(x, y)` (window, y up) shows, if any.
     #[must_use]
     pub fn primitive_at(&self, x: u32, y: u32) -> Option<u32> {
-        if x >= self.width() || y >= self.height() {
-            return None;
-        }
-        let i = ((self.height() - 1 - y) * self.width() + x) as usize;
+        let i = self.grid().checked_index(x, y)?;
         let p = *self.pixels.primitive.get(i)?;
         (p != NONE).then_some(p)
     }

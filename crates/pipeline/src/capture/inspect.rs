@@ -223,10 +223,7 @@ impl FrameCapture {
     /// is off, or no light has a direction.
     #[must_use]
     pub fn pixel_vectors(&self, x: u32, y: u32) -> Option<PixelVectors> {
-        if x >= self.width() || y >= self.height() {
-            return None;
-        }
-        let i = ((self.height() - 1 - y) * self.width() + x) as usize;
+        let i = self.grid().checked_index(x, y)?;
         let prim = self.primitives.get(self.pixels.primitive[i] as usize)?;
         let normal = Vec3::from(self.pixels.lighting_at(i)?.normal);
         let b = self.barycentrics(i)?.perspective;
@@ -256,10 +253,7 @@ impl FrameCapture {
     /// [`Self::fragments_at`]); `None` outside the viewport.
     #[must_use]
     pub fn pixel_record(&self, x: u32, y: u32) -> Option<PixelRecord> {
-        if x >= self.width() || y >= self.height() {
-            return None;
-        }
-        let i = ((self.height() - 1 - y) * self.width() + x) as usize;
+        let i = self.grid().checked_index(x, y)?;
         let px = &self.pixels;
         let owned = px.primitive[i] != NONE;
         Some(PixelRecord {
@@ -289,7 +283,7 @@ impl FrameCapture {
         let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
         let centre = Self::pixel_centre_fixed(x, y);
         let mut stored = vec![self.settings.depth_test.clear_value(); offsets.len()];
-        let owner = self.pixels.primitive[((self.height() - 1 - y) * self.width() + x) as usize];
+        let owner = self.pixels.primitive[self.grid().index(x, y)];
         let mut out = Vec::new();
         for (t, tri) in self.triangles.iter().enumerate() {
             let [x0, y0, x1, y1] = tri.bbox.map(u32::from);

@@ -300,9 +300,8 @@ impl FrameCapture {
     #[must_use]
     pub fn barycentrics(&self, i: usize) -> Option<Barycentrics> {
         let tri = self.triangles.get(*self.pixels.owner.get(i)? as usize)?;
-        let (w, h) = (self.width() as usize, self.height() as usize);
-        let (x, y) = (i % w, h - 1 - i / w);
-        let l = tri.lambda(Self::pixel_centre_fixed(x as u32, y as u32));
+        let (x, y) = self.grid().position(i);
+        let l = tri.lambda(Self::pixel_centre_fixed(x, y));
         let bary = self
             .primitives
             .get(tri.primitive as usize)?
@@ -369,6 +368,13 @@ impl FrameCapture {
     #[must_use]
     pub fn height(&self) -> u32 {
         self.settings.height
+    }
+
+    /// The frame's pixels as a grid: window positions (y up) against the buffers' indices
+    /// (stored top row first).
+    #[must_use]
+    pub fn grid(&self) -> crate::grid::Grid {
+        crate::grid::Grid::new(self.width(), self.height())
     }
 
     /// The nearest and farthest window depth over covered pixels, if any pixel is covered.

@@ -123,8 +123,7 @@ impl SampleBuffers {
     #[must_use]
     #[inline]
     pub fn index(&self, x: u32, y: u32, s: usize) -> usize {
-        let row = (self.height - 1 - y) as usize;
-        (row * self.width as usize + x as usize) * self.samples.count() + s
+        crate::grid::Grid::new(self.width, self.height).index(x, y) * self.samples.count() + s
     }
 
     /// Rasterizes `tri` (whose index in the capture's triangle list is `index`): every covered
@@ -166,6 +165,7 @@ impl SampleBuffers {
             total,
         } = &mut self.bins;
         let offsets = &self.offsets;
+        let grid = crate::grid::Grid::new(self.width, self.height);
         runs.resize_with(tris.len().div_ceil(RUN), Vec::new);
         runs.par_iter_mut()
             .zip(tris.par_chunks(RUN))
@@ -178,8 +178,11 @@ impl SampleBuffers {
                         continue;
                     }
                     let [_, y0, _, y1] = t.bbox;
-                    // Image rows of the box: h − 1 − y1 (top) to h − 1 − y0 (bottom).
-                    let (r0, r1) = (h - 1 - y1 as usize, h - 1 - y0 as usize);
+                    // Image rows of the box: from window row y1's (top) to y0's (bottom).
+                    let (r0, r1) = (
+                        grid.row(u32::from(y1)) as usize,
+                        grid.row(u32::from(y0)) as usize,
+                    );
                     for bin in &mut bins[r0 / rows_per..=r1 / rows_per] {
                         bin.push((r * RUN + k) as u32);
                     }

@@ -175,7 +175,7 @@ mod tests {
             for pair in (0..h).step_by(2) {
                 let mut blocks = vec![None; w.div_ceil(2)];
                 for row in pair..(pair + 2).min(h) {
-                    let y = (h - 1 - row) as u32;
+                    let y = crate::grid::Grid::new(w as u32, h as u32).row(row as u32);
                     for x in 0..w {
                         let i = row * w + x;
                         let block = (settings.capture.pixel != Some((x as u32, y)))

@@ -10,11 +10,8 @@ impl ResolveContext<'_> {
     /// The terms and lookup of window pixel `(x, y)`, resolved again by itself as the resolve
     /// resolved it (coarse shading shares no block with it); `None` outside the viewport.
     pub(super) fn inspected(&self, (x, y): (u32, u32)) -> Option<InspectedPixel> {
-        let (w, h) = (self.settings.width, self.settings.height);
-        if x >= w || y >= h {
-            return None;
-        }
-        let i = ((h - 1 - y) * w + x) as usize;
+        let i = crate::grid::Grid::new(self.settings.width, self.settings.height)
+            .checked_index(x, y)?;
         // Its lookup keeps λ and the footprint, which the frame's colour may not need.
         let with_derivatives = ResolveContext {
             derivatives: true,

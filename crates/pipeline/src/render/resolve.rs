@@ -317,6 +317,7 @@ pub(super) fn resolve(
     let mut rows = split_rows(&mut px, w, h, (background, kept));
     // Coarse shading shares a 2×2 block's shading between two rows: they are resolved in pairs.
     let pair = if settings.coarse_shading { 2 } else { 1 };
+    let grid = crate::grid::Grid::new(w as u32, h as u32);
     rows.par_chunks_mut(pair).enumerate().for_each_init(
         RowScratch::default,
         |scratch, (k, outs)| {
@@ -326,7 +327,7 @@ pub(super) fn resolve(
             }
             for (j, out) in outs.iter_mut().enumerate() {
                 let row = k * pair + j;
-                out.resolve(ctx, row, (h - 1 - row) as u32, scratch);
+                out.resolve(ctx, row, grid.row(row as u32), scratch);
             }
         },
     );

@@ -533,7 +533,7 @@ mod tests {
             let ctx = context(&frame, &scene, &settings);
             let (w, h) = (settings.width as usize, settings.height as usize);
             for row in 0..h {
-                let y = (h - 1 - row) as u32;
+                let y = crate::grid::Grid::new(w as u32, h as u32).row(row as u32);
                 for x in 0..w {
                     let i = row * w + x;
                     let want = ctx.pixel(x as u32, y, i, None);

@@ -368,10 +368,12 @@ impl Texture {
                 height: h,
             });
         }
+        // Texel rows count up (v up), the image's rows down.
+        let grid = crate::grid::Grid::new(w, h);
         let mut texels = Vec::with_capacity((w * h) as usize);
         for j in 0..h {
             for i in 0..w {
-                let p = rgb.get_pixel(i, h - 1 - j).0;
+                let p = rgb.get_pixel(i, grid.row(j)).0;
                 texels.push(Vec3::from(p));
             }
         }
@@ -466,8 +468,10 @@ impl Texture {
         let Some(l) = self.levels.get(k.min(self.levels.len().saturating_sub(1))) else {
             return RgbaImage::new(1, 1);
         };
-        RgbaImage::from_fn(l.width, l.height, |x, y| {
-            let c = l.texels[((l.height - 1 - y) * l.width + x) as usize];
+        // Texels are stored bottom row first (v up): image row `r` is texel row `h − 1 − r`.
+        let grid = crate::grid::Grid::new(l.width, l.height);
+        RgbaImage::from_fn(l.width, l.height, |x, r| {
+            let c = l.texels[(grid.row(r) * l.width + x) as usize];
             let b = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as u8;
             Rgba([b(c.x), b(c.y), b(c.z), 255])
         })

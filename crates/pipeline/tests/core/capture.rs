@@ -507,3 +507,58 @@ fn the_covered_box_holds_every_covered_pixel() {
         None
     );
 }
+
+/// Two frames that differ in a known place, worked out by hand: on an 8×6 window, a triangle
+/// with corners at window (0, 0), (3.2, 0) and (0, 3.2) covers the pixels whose centre
+/// `(x + ½, y + ½)` has `x + y + 1 < 3.2`, so `x + y ≤ 2`: rows y = 0 (x = 0, 1, 2), y = 1
+/// (x = 0, 1) and y = 2 (x = 0), the bottom-left corner. Compared with the empty frame, the
+/// first differing pixel reading from the top is window (0, 2) — image row 6 − 1 − 2 = 3 — and
+/// the difference picture is yellow (coverage) at image rows 3, 4, 5 in the bottom-left, dim
+/// everywhere else. The pixel reported is one where the frames differ.
+#[test]
+fn the_first_wrong_pixel_and_the_difference_picture_are_upright() {
+    use glam::Vec2;
+    let tri = [
+        Vec2::new(0.0, 0.0),
+        Vec2::new(3.2, 0.0),
+        Vec2::new(0.0, 3.2),
+    ];
+    let (scene, settings) = crate::support::pixel_scene(8, 6, &[tri]);
+    let drawn = render(&scene, &settings);
+    let empty = render(
+        &Scene {
+            objects: Vec::new(),
+            ..scene.clone()
+        },
+        &settings,
+    );
+    let d = drawn.difference(&empty, 1.0).expect("same size");
+    assert_eq!(d.coverage_differs, 6);
+    assert_eq!(d.matching, 48 - 6);
+    assert_eq!(
+        d.first,
+        Some((0, 2)),
+        "window (0, 2): the top of the corner"
+    );
+    let (x, y) = d.first.expect("a difference");
+    let (a, b) = (
+        drawn.pixel_record(x, y).expect("in the window"),
+        empty.pixel_record(x, y).expect("in the window"),
+    );
+    assert_ne!(a.coverage, b.coverage, "the reported pixel differs");
+    let picture = drawn.difference_image(&empty, 1.0);
+    let yellow = image::Rgba([255, 220, 0, 255]);
+    let covered_rows: [(u32, &[u32]); 3] = [(3, &[0]), (4, &[0, 1]), (5, &[0, 1, 2])];
+    for row in 0..6 {
+        for col in 0..8 {
+            let expected = covered_rows
+                .iter()
+                .any(|(r, cols)| *r == row && cols.contains(&col));
+            assert_eq!(
+                *picture.get_pixel(col, row) == yellow,
+                expected,
+                "image pixel ({col}, {row})"
+            );
+        }
+    }
+}

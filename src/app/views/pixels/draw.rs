@@ -101,7 +101,7 @@ pub(super) fn draw_samples(painter: &egui::Painter, view: &ImageViewport, captur
     let offsets = sample_offsets_image(capture.settings.samples);
     let radius = (view.zoom / 14.0).clamp(1.5, 5.0);
     for r in r0..r1 {
-        let y = capture.height() - 1 - r;
+        let y = capture.grid().row(r);
         for c in c0..c1 {
             for (k, o) in offsets.iter().enumerate() {
                 let p = view.to_screen([c as f32 + o[0], r as f32 + o[1]]);
@@ -316,7 +316,7 @@ pub(super) fn draw_selection(
         }
     }
     if let Some((x, y)) = sel.pixel {
-        let r = (capture.height() - 1 - y) as f32;
+        let r = capture.grid().row(y.min(capture.height() - 1)) as f32;
         let a = view.to_screen([x as f32, r]);
         let b = view.to_screen([x as f32 + 1.0, r + 1.0]);
         painter.rect_stroke(

@@ -453,7 +453,7 @@ impl PixelView {
 
 /// The values of one pixel, for the hover tooltip.
 fn pixel_tooltip(ui: &mut Ui, capture: &FrameCapture, x: u32, y: u32, lang: Lang) {
-    let i = ((capture.height() - 1 - y) * capture.width() + x) as usize;
+    let i = capture.grid().index(x, y);
     let px = &capture.pixels;
     ui.label(RichText::new(format!("{} ({x}, {y})", lang.tr("pixel", "像素"))).strong());
     ui.label(format!(
@@ -552,7 +552,7 @@ fn hover_and_click(
         .on_hover_ui_at_pointer(|ui| pixel_tooltip(ui, capture, c, y, lang));
     if response.clicked() {
         cmds.push(Command::SelectPixel(Some((c, y))));
-        let i = ((capture.height() - 1 - y) * capture.width() + c) as usize;
+        let i = capture.grid().index(c, y);
         if let Some(prim) = capture.primitives.get(capture.pixels.primitive[i] as usize) {
             let click = view.to_image(pos);
             let nearest = prim.vertices.iter().copied().min_by(|a, b| {

@@ -49,7 +49,7 @@ impl ImageViewport {
     pub fn window_pixel(&self, pos: Pos2, capture: &FrameCapture) -> Option<(u32, u32)> {
         let ip = self.to_image(pos);
         (ip.x >= 0.0 && ip.y >= 0.0 && ip.x < self.size.x && ip.y < self.size.y)
-            .then(|| (ip.x as u32, capture.height() - 1 - ip.y as u32))
+            .then(|| (ip.x as u32, capture.grid().row(ip.y as u32)))
     }
 }
 

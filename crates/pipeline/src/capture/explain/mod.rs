@@ -372,10 +372,7 @@ impl FrameCapture {
     /// viewport or where nothing was drawn.
     #[must_use]
     pub fn explain(&self, x: u32, y: u32) -> Option<PixelExplanation> {
-        if x >= self.width() || y >= self.height() {
-            return None;
-        }
-        let i = ((self.height() - 1 - y) * self.width() + x) as usize;
+        let i = self.grid().checked_index(x, y)?;
         let tri = self.triangles.get(self.pixels.owner[i] as usize)?;
         let prim = self.primitives.get(tri.primitive as usize)?;
         let object = self.objects.get(prim.object as usize)?;

@@ -92,12 +92,13 @@ fn rasterize_again(
         samples.triangle[i * s..(i + 1) * s].fill(NONE);
     }
     let offsets: Vec<I64Vec2> = (0..s).map(|k| samples.offset(k)).collect();
+    let grid = crate::grid::Grid::new(w as u32, h as u32);
     for (index, tri) in triangles.iter().enumerate() {
         let [x0, y0, x1, y1] = tri.bbox.map(usize::from);
         let plane = tri.depth_plane();
         for y in y0..=y1.min(h - 1) {
             for x in x0..=x1.min(w - 1) {
-                let i = (h - 1 - y) * w + x;
+                let i = grid.index(x as u32, y as u32);
                 if !again[i] || discarded.contains(&(index as u32, i as u32)) {
                     continue;
                 }

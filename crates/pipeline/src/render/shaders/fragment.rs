@@ -100,11 +100,8 @@ struct FragmentShading<'a> {
 impl FragmentShading<'_> {
     /// The image index of window pixel `(x, y)`, if it is in the image.
     fn index(&self, x: i64, y: i64) -> Option<usize> {
-        let (w, h) = (
-            i64::from(self.ctx.settings.width),
-            i64::from(self.ctx.settings.height),
-        );
-        ((0..w).contains(&x) && (0..h).contains(&y)).then(|| ((h - 1 - y) * w + x) as usize)
+        let grid = crate::grid::Grid::new(self.ctx.settings.width, self.ctx.settings.height);
+        grid.checked_index(u32::try_from(x).ok()?, u32::try_from(y).ok()?)
     }
 
     /// The object of raster triangle `t`.

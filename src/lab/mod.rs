@@ -1,0 +1,173 @@
+//! A lab's check, one way for the app and for `pipelens grade`: the student's code draws the
+//! step's picture, pipelens' own stages (as their shipped GLSL where there is one) draw the
+//! reference at the same settings, and the two frames are compared pixel by pixel — or, where
+//! the step runs the student's de Casteljau, the curve point by point. What the comparison
+//! finds ([`Findings`]) is worded by [`words`] in the interface's language.
+//!
+//! The app renders both frames in one job and calls [`Findings::between`] as each frame
+//! arrives; [`check`] does the same with no window.
+
+mod findings;
+pub mod submission;
+pub mod words;
+
+pub use findings::{
+    CURVE_TOLERANCE, MatrixMismatch, Mismatch, first_mismatch, first_wrong_vertex, wrong_matrix,
+    wrong_shadow_matrix,
+};
+
+use pipeline::buffers::Capture;
+use pipeline::capture::{Difference, FrameCapture};
+use pipeline::scene::Scene;
+use pipeline::settings::RenderSettings;
+use pipeline::shader::CurveDifference;
+
+use crate::lesson::SceneSpec;
+use crate::vocabulary::Lang;
+
+/// What comparing a student's frame with pipelens' own found.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Findings {
+    /// The frame against the reference, pixel by pixel.
+    pub difference: Option<Difference>,
+    /// The student's curve against pipelens' own, point by point, when the scene runs the
+    /// student's de Casteljau: what decides the lab then.
+    pub curve: Option<CurveDifference>,
+    /// The first row of the vertex table whose clip position is not pipelens' (a vertex
+    /// shader's lab): the row, the student's clip position and pipelens'.
+    pub vertex: Option<(u32, glam::Vec4, glam::Vec4)>,
+    /// The matrix the student built (for that vertex, or the shadow's) that is not pipelens'.
+    pub matrix: Option<MatrixMismatch>,
+    /// Where the student's run at the inspected pixel first parts from pipelens' own shader's.
+    pub mismatch: Option<Mismatch>,
+}
+
+impl Findings {
+    /// What the student's frame `mine` (drawn from `scene`, which holds the student's code)
+    /// shows against pipelens' own `reference`, each channel within `tolerance` 8-bit steps.
+    /// The mismatch is found at the pixel both frames traced (their capture's pixel).
+    #[must_use]
+    pub fn between(
+        scene: &Scene,
+        mine: &FrameCapture,
+        reference: &FrameCapture,
+        tolerance: f32,
+    ) -> Self {
+        let vertex = scene
+            .has_shaders()
+            .then(|| first_wrong_vertex(mine, reference))
+            .flatten();
+        let matrix = vertex
+            .and_then(|(row, ..)| {
+                let object = mine.vertices.get(row as usize)?.object as usize;
+                let trace = pipeline::trace_vertex(scene, mine, row as usize).ok()??;
+                wrong_matrix(&trace, mine, object)
+            })
+            .or_else(|| wrong_shadow_matrix(scene));
+        Self {
+            difference: mine.difference(reference, tolerance),
+            curve: curve_difference(scene),
+            vertex,
+            matrix,
+            mismatch: first_mismatch(traced(mine), traced(reference)),
+        }
+    }
+
+    /// Whether the lab passed: every curve point within the tolerance where a curve is
+    /// compared, else every pixel.
+    #[must_use]
+    pub fn passed(&self) -> bool {
+        match &self.curve {
+            Some(c) => c.passed(),
+            None => self.difference.as_ref().is_some_and(Difference::passed),
+        }
+    }
+
+    /// Everything found, as the card says it: the verdict first, then what is off (the
+    /// vertex, the matrix, the value at the first wrong pixel).
+    #[must_use]
+    pub fn sentences(&self, lang: Lang) -> Vec<String> {
+        if let Some(c) = &self.curve {
+            return vec![words::curve_verdict(c, lang)];
+        }
+        let Some(d) = &self.difference else {
+            return Vec::new();
+        };
+        let mut out = vec![words::verdict(d, lang)];
+        if d.passed() {
+            return out;
+        }
+        if let Some((row, yours, theirs)) = self.vertex {
+            out.push(words::vertex_words(row, yours, theirs, lang));
+        }
+        if let Some(m) = &self.matrix {
+            out.push(words::matrix_words(m, lang));
+        }
+        if let Some(m) = &self.mismatch {
+            out.push(words::mismatch_words(m, lang));
+        }
+        out
+    }
+}
+
+/// The shaders' runs at the frame's traced pixel (none where no shader ran).
+fn traced(frame: &FrameCapture) -> &[pipeline::capture::FragmentTrace] {
+    frame.shaders.as_ref().map_or(&[], |s| &s.pixel)
+}
+
+/// The student's de Casteljau against pipelens' curve, when an object runs one on a Bézier
+/// curve (`None` also when it stops with a run-time error).
+fn curve_difference(scene: &Scene) -> Option<CurveDifference> {
+    scene.objects.iter().find_map(|o| {
+        let hook = o.curve.as_ref()?;
+        let Some(pipeline::mesh::BuiltinMesh::Bezier { points, .. }) = o.builtin else {
+            return None;
+        };
+        hook.curve_difference(points, CURVE_TOLERANCE).ok()
+    })
+}
+
+/// The reference a lab's frame is compared with: the scene without the student's code —
+/// pipelens' own stages, as its shipped GLSL where there is one, which draws the same pixels and
+/// whose run at a pixel is what the student's run is compared with value by value.
+#[must_use]
+pub fn reference_scene(scene: &Scene, settings: &RenderSettings) -> Scene {
+    let mut own = scene.clone();
+    own.clear_code();
+    match own.with_builtin_shaders(settings) {
+        Ok(Some(shipped)) => shipped,
+        _ => own,
+    }
+}
+
+/// The check of a lab with no window, as the app makes it: `spec` (the step's scene with the
+/// student's code in place) drawn and compared with pipelens' own, each channel within
+/// `tolerance`; where the frames differ, both are drawn once more with the first wrong pixel
+/// traced, so that the student's run there is compared with pipelens' value by value.
+///
+/// # Errors
+/// Either frame's render error (a run-time error of the student's shader: an endless loop, an
+/// index out of range), worded as the status line words it.
+pub fn check(spec: &SceneSpec, tolerance: f32) -> Result<Findings, String> {
+    let reference = reference_scene(&spec.scene, &spec.settings);
+    let draw = |scene: &Scene, pixel: Option<(u32, u32)>| {
+        let settings = RenderSettings {
+            capture: Capture::COLOR.with_pixel(pixel),
+            ..spec.settings
+        };
+        pipeline::render(scene, &settings).map_err(|e| e.to_string())
+    };
+    let (mine, theirs) = (draw(&spec.scene, None)?, draw(&reference, None)?);
+    let findings = Findings::between(&spec.scene, &mine, &theirs, tolerance);
+    let first = findings.difference.as_ref().and_then(|d| d.first);
+    match first {
+        Some(pixel) if findings.curve.is_none() && spec.scene.has_shaders() => {
+            let (mine, theirs) = (
+                draw(&spec.scene, Some(pixel))?,
+                draw(&reference, Some(pixel))?,
+            );
+            Ok(Findings::between(&spec.scene, &mine, &theirs, tolerance))
+        }
+        _ => Ok(findings),
+    }
+}

@@ -1,0 +1,153 @@
+//! A student's hand-in for a lab step, as the shader panel's **Save** writes it — `shader.vert`,
+//! `shader.frag`, and `inside.glsl`, `depth_test.glsl`, `de_casteljau.glsl` or
+//! `shadow_matrix.glsl` for the functions a step runs — put in place of the step's starter and
+//! checked as the app checks it. What the student did not hand in stays the starter's.
+
+use std::sync::Arc;
+
+use pipeline::scene::ObjectShader;
+use pipeline::shader::HookKind;
+
+use super::Findings;
+use crate::lesson::Lesson;
+use crate::vocabulary::Lang;
+
+/// The sources of one hand-in, by what they are.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Code {
+    /// The vertex shader (`shader.vert`), if handed in.
+    pub vertex: Option<String>,
+    /// The fragment shader (`shader.frag`), if handed in.
+    pub fragment: Option<String>,
+    /// The functions the pipeline calls in place of its own (`inside.glsl`, …).
+    pub hooks: Vec<(HookKind, String)>,
+}
+
+impl Code {
+    /// Whether nothing was handed in.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.vertex.is_none() && self.fragment.is_none() && self.hooks.is_empty()
+    }
+
+    /// Takes `text` as the file `name` says (`shader.vert`, `*.vert`, `shader.frag`, `*.frag`,
+    /// `inside.glsl`, …); whether the name is one a hand-in holds.
+    pub fn take(&mut self, name: &str, text: String) -> bool {
+        let lower = name.to_ascii_lowercase();
+        if lower.ends_with(".vert") {
+            self.vertex = Some(text);
+        } else if lower.ends_with(".frag") {
+            self.fragment = Some(text);
+        } else if let Some(kind) = lower
+            .strip_suffix(".glsl")
+            .and_then(|stem| HookKind::ALL.into_iter().find(|k| k.key() == stem))
+        {
+            self.hooks.retain(|(k, _)| *k != kind);
+            self.hooks.push((kind, text));
+        } else {
+            return false;
+        }
+        true
+    }
+}
+
+/// A hand-in graded at one lab step.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Grade {
+    /// Whether it passed.
+    pub passed: bool,
+    /// Matching pixels (or curve points) and how many were compared, when it ran.
+    pub matching: Option<(u64, u64)>,
+    /// What the check says, sentence by sentence, in the language asked for: the verdict and
+    /// what is off; or why the code could not be checked (it does not compile, its run stops).
+    pub sentences: Vec<String>,
+}
+
+impl Grade {
+    /// A hand-in that could not be checked, for `reason`.
+    #[must_use]
+    pub fn failed(reason: String) -> Self {
+        Self {
+            passed: false,
+            matching: None,
+            sentences: vec![reason],
+        }
+    }
+}
+
+/// Grades `code` at step `k` of `lesson` (an exercise step), as the app checks it: the step's
+/// scene with the starter replaced by what was handed in, compared with pipelens' own.
+#[must_use]
+pub fn grade(lesson: &Lesson, k: usize, code: &Code, lang: Lang) -> Grade {
+    let Some(exercise) = lesson.steps.get(k).and_then(|s| s.exercise.as_ref()) else {
+        return Grade::failed(match lang {
+            Lang::En => format!("step {} of {} is not a lab", k + 1, lesson.id),
+            Lang::Zh => format!("{} 的第 {} 步不是练习", lesson.id, k + 1),
+        });
+    };
+    let mut spec = lesson.spec_at(k);
+    let starter = &exercise.starter;
+    if let Some(shader) = &starter.shader {
+        let programs = &shader.programs;
+        let vertex = code.vertex.as_deref().unwrap_or(&programs.vertex.source);
+        let fragment = code
+            .fragment
+            .as_deref()
+            .unwrap_or(&programs.fragment.source);
+        match pipeline::shader::link(Some(vertex), Some(fragment)) {
+            Ok(linked) => spec.scene.set_shaders(&ObjectShader {
+                programs: Arc::new(linked),
+                time: 0.0,
+            }),
+            Err(errors) => return Grade::failed(compile_failed(&errors, lang)),
+        }
+    }
+    for (kind, source) in &code.hooks {
+        if starter.hook(*kind).is_none() {
+            continue;
+        }
+        match pipeline::shader::compile_hook(*kind, source) {
+            Ok(hook) => spec.scene.set_hook(&hook),
+            Err(errors) => {
+                let first = errors.first().map(ToString::to_string).unwrap_or_default();
+                return Grade::failed(match lang {
+                    Lang::En => format!("{}.glsl does not compile: {first}", kind.key()),
+                    Lang::Zh => format!("{}.glsl 无法编译：{first}", kind.key()),
+                });
+            }
+        }
+    }
+    match super::check(&spec, exercise.tolerance) {
+        Ok(found) => Grade {
+            passed: found.passed(),
+            matching: matching(&found),
+            sentences: found.sentences(lang),
+        },
+        Err(e) => Grade::failed(match lang {
+            Lang::En => format!("It compiles, but its run stopped: {e}"),
+            Lang::Zh => format!("可以编译，但运行中止：{e}"),
+        }),
+    }
+}
+
+/// Matching pixels, or curve points where a curve decides.
+fn matching(found: &Findings) -> Option<(u64, u64)> {
+    match (&found.curve, &found.difference) {
+        (Some(c), _) => Some((c.matching as u64, c.total as u64)),
+        (None, Some(d)) => Some((d.matching, d.total)),
+        (None, None) => None,
+    }
+}
+
+/// The first message of shaders that do not compile, with its stage and line.
+fn compile_failed(errors: &[pipeline::shader::StageError], lang: Lang) -> String {
+    let first = errors.first().map(ToString::to_string).unwrap_or_default();
+    let more = errors.len().saturating_sub(1);
+    match (lang, more) {
+        (Lang::En, 0) => format!("Does not compile: {first}"),
+        (Lang::En, 1) => format!("Does not compile: {first} (and 1 more message)"),
+        (Lang::En, n) => format!("Does not compile: {first} (and {n} more messages)"),
+        (Lang::Zh, 0) => format!("无法编译：{first}"),
+        (Lang::Zh, n) => format!("无法编译：{first}（另有 {n} 条消息）"),
+    }
+}

@@ -1,0 +1,201 @@
+//! A lab's verdict in words, in the interface's language: passed, or how many pixels (or curve
+//! points) differ and where the first is, and what was found there — the variable, the vertex,
+//! the matrix entries. The card in the app and `pipelens grade` print the same sentences.
+
+use pipeline::capture::Difference;
+use pipeline::shader::CurveDifference;
+
+use super::{MatrixMismatch, Mismatch};
+use crate::vocabulary::Lang;
+
+/// The verdict in words: passed, or how many pixels differ and where the first is.
+#[must_use]
+pub fn verdict(d: &Difference, lang: Lang) -> String {
+    let tolerance = crate::vocabulary::short(d.tolerance, 1);
+    if d.passed() {
+        return match lang {
+            Lang::En => format!(
+                "Passed: all {} pixels match pipelens' own (each channel within {tolerance}/255).",
+                d.total
+            ),
+            Lang::Zh => format!(
+                "通过：全部 {} 个像素与 pipelens 自带的一致（每个通道相差不超过 {tolerance}/255）。",
+                d.total
+            ),
+        };
+    }
+    let differ = d.total - d.matching;
+    let largest = crate::vocabulary::short(d.largest, 0);
+    let first = d
+        .first
+        .map(|(x, y)| format!("({x}, {y})"))
+        .unwrap_or_default();
+    match lang {
+        Lang::En => format!(
+            "Not yet: {} of {} pixels match; {differ} differ (by up to {largest}/255{}). The first, reading from the top, is {first}.",
+            d.matching,
+            d.total,
+            if d.coverage_differs > 0 {
+                format!("; {} are covered differently", d.coverage_differs)
+            } else {
+                String::new()
+            }
+        ),
+        Lang::Zh => format!(
+            "还没有通过：{} 个像素中 {} 个一致，{differ} 个不同（最多相差 {largest}/255{}）。从上往下读，第一个是 {first}。",
+            d.total,
+            d.matching,
+            if d.coverage_differs > 0 {
+                format!("；{} 个覆盖不同", d.coverage_differs)
+            } else {
+                String::new()
+            }
+        ),
+    }
+}
+
+/// A mismatch in words: the variable, its line, both values, and a vector's length when only
+/// pipelens' is 1 (a normal not normalized).
+#[must_use]
+pub fn mismatch_words(m: &Mismatch, lang: Lang) -> String {
+    let unnormalized = m
+        .lengths
+        .filter(|(yours, theirs)| (theirs - 1.0).abs() < 0.001 && (yours - 1.0).abs() > 0.0015)
+        .map(|(yours, _)| yours);
+    let mut text = match lang {
+        Lang::En => format!(
+            "At the inspected pixel your `{}` (line {}) is {}; pipelens' own shader has {}.",
+            m.name, m.line, m.yours, m.theirs
+        ),
+        Lang::Zh => format!(
+            "在所检查的像素处，你的 `{}`（第 {} 行）是 {}；pipelens 自带的着色器得到 {}。",
+            m.name, m.line, m.yours, m.theirs
+        ),
+    };
+    if let Some(len) = unnormalized {
+        text.push_str(&match lang {
+            Lang::En => format!(" Yours has length {len:.3}, pipelens' 1: is it normalized?"),
+            Lang::Zh => format!("你的长度是 {len:.3}，pipelens 的是 1：它归一化了吗？"),
+        });
+    }
+    text
+}
+
+/// The first wrong vertex in words: its row and both clip positions.
+pub fn vertex_words(row: u32, yours: glam::Vec4, theirs: glam::Vec4, lang: Lang) -> String {
+    let v = |c: glam::Vec4| format!("({:.3}, {:.3}, {:.3}, {:.3})", c.x, c.y, c.z, c.w);
+    match lang {
+        Lang::En => format!(
+            "The first vertex off is row {row}: your clip position {}, pipelens' {}.",
+            v(yours),
+            v(theirs)
+        ),
+        Lang::Zh => format!(
+            "第一个出错的顶点在第 {row} 行：你的裁剪坐标 {}，pipelens 的 {}。",
+            v(yours),
+            v(theirs)
+        ),
+    }
+}
+
+/// A matrix compared entry by entry, in words: which of pipelens' matrices it stands for and
+/// each entry that differs (at most four listed).
+#[must_use]
+pub fn matrix_words(m: &MatrixMismatch, lang: Lang) -> String {
+    let entries: Vec<String> = m
+        .entries
+        .iter()
+        .take(4)
+        .map(|(r, c, yours, theirs)| match lang {
+            Lang::En => format!(
+                "row {r}, column {c} is {yours:.3} ({} has {theirs:.3})",
+                m.matrix
+            ),
+            Lang::Zh => format!(
+                "第 {r} 行第 {c} 列是 {yours:.3}（{} 中为 {theirs:.3}）",
+                m.matrix
+            ),
+        })
+        .collect();
+    let more = m.entries.len().saturating_sub(4);
+    match lang {
+        Lang::En => format!(
+            "Your `{}` (line {}) is pipelens' {} but for {}: {}{}.",
+            m.name,
+            m.line,
+            m.matrix,
+            match m.entries.len() {
+                1 => "one entry".to_owned(),
+                n => format!("{n} entries"),
+            },
+            entries.join("; "),
+            if more > 0 {
+                format!("; and {more} more")
+            } else {
+                String::new()
+            }
+        ),
+        Lang::Zh => format!(
+            "你的 `{}`（第 {} 行）与 pipelens 的 {} 有 {} 个元素不同：{}{}。",
+            m.name,
+            m.line,
+            m.matrix,
+            m.entries.len(),
+            entries.join("；"),
+            if more > 0 {
+                format!("；还有 {more} 个")
+            } else {
+                String::new()
+            }
+        ),
+    }
+}
+
+/// The verdict on a curve in words: passed, or how many points are off, by how much, and the
+/// first one with both values.
+#[must_use]
+pub fn curve_verdict(c: &CurveDifference, lang: Lang) -> String {
+    let tolerance = format!("{:e}", c.tolerance);
+    if c.passed() {
+        return match lang {
+            Lang::En => format!(
+                "Passed: all {} points of your curve lie within {tolerance} of pipelens' b(t).",
+                c.total
+            ),
+            Lang::Zh => format!(
+                "通过：你的曲线的全部 {} 个点与 pipelens 的 b(t) 相差都不超过 {tolerance}。",
+                c.total
+            ),
+        };
+    }
+    let point = |p: glam::Vec2| format!("({:.4}, {:.4})", p.x, p.y);
+    let largest = if c.largest.is_finite() {
+        format!("{:.4}", c.largest)
+    } else {
+        "∞".to_owned()
+    };
+    let first = c
+        .first
+        .map_or_else(String::new, |(t, mine, theirs)| match lang {
+            Lang::En => format!(
+                " The first, t = {t:.4}: yours {}, pipelens' {}.",
+                point(mine),
+                point(theirs)
+            ),
+            Lang::Zh => format!(
+                "第一个在 t = {t:.4}：你的 {}，pipelens 的 {}。",
+                point(mine),
+                point(theirs)
+            ),
+        });
+    match lang {
+        Lang::En => format!(
+            "Not yet: {} of {} curve points lie within {tolerance} of pipelens' b(t) (the farthest is {largest} away).{first}",
+            c.matching, c.total
+        ),
+        Lang::Zh => format!(
+            "还没有通过：{} 个曲线点中 {} 个与 pipelens 的 b(t) 相差不超过 {tolerance}（最远相差 {largest}）。{first}",
+            c.total, c.matching
+        ),
+    }
+}
