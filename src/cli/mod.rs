@@ -14,6 +14,7 @@ macro_rules! say {
 }
 
 mod authoring;
+mod grade;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -130,6 +131,31 @@ pub enum Command {
         /// against pipelens' own (`exercise = { task, starter, tolerance }`).
         #[arg(long)]
         lab: bool,
+    },
+    /// Grade a class's lab hand-ins with no window, exactly as the app checks a lab: each
+    /// student's code drawn and compared with pipelens' own, pixel by pixel. Prints a table
+    /// (student, step, passed, matching pixels, the first difference in words).
+    Grade {
+        /// The lesson: a lesson file, or a built-in lesson's name such as 10-blinn-phong.
+        lesson: String,
+        /// The hand-ins, one per student: a folder as the shader panel's Save writes it
+        /// (shader.vert, shader.frag, inside.glsl, …), or one source file. What a student did
+        /// not hand in stays the starter's.
+        #[arg(required = true, value_name = "SUBMISSION")]
+        submissions: Vec<PathBuf>,
+        /// The lab step to grade (1-based; repeat for several). Every lab step when omitted.
+        #[arg(long = "step", value_name = "N")]
+        steps: Vec<usize>,
+        /// Also write the grades as CSV (one row per student and step).
+        #[arg(long, value_name = "FILE")]
+        csv: Option<PathBuf>,
+        /// Also write Gradescope's results.json (one hand-in: Gradescope runs one container
+        /// per submission; scripts/gradescope/ holds the autograder).
+        #[arg(long, value_name = "FILE")]
+        gradescope: Option<PathBuf>,
+        /// The feedback's language, `en` or `zh`.
+        #[arg(long, default_value = "en", value_parser = ["en", "zh"])]
+        lang: String,
     },
     /// Time each stage of the pipeline on standard scenes.
     Bench {
@@ -306,6 +332,28 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
         Some(Command::Check { paths }) => Ok(authoring::check(&paths)),
+        Some(Command::Grade {
+            lesson,
+            submissions,
+            steps,
+            csv,
+            gradescope,
+            lang,
+        }) => {
+            grade::run(&grade::GradeRequest {
+                lesson,
+                steps,
+                submissions,
+                csv,
+                gradescope,
+                lang: if lang == "zh" {
+                    crate::vocabulary::Lang::Zh
+                } else {
+                    crate::vocabulary::Lang::En
+                },
+            })?;
+            Ok(ExitCode::SUCCESS)
+        }
         Some(Command::NewLesson { file, lab }) => authoring::new_lesson(&file, lab),
         Some(bench @ Command::Bench { .. }) => run_bench(bench),
     }

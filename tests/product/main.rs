@@ -8,6 +8,7 @@ mod cli;
 mod corpus;
 mod course;
 mod edit;
+mod grade;
 mod handout;
 mod lab_hooks;
 mod labs;
