@@ -232,3 +232,58 @@ fn pipelens_own_shading_as_glsl_gives_the_built_in_pixels_on_the_lessons_scenes(
         compared.len()
     );
 }
+
+/// Lesson 24 teaches Blinn-Phong as the course writes it, L = k_a·c·I_a + k_d·c·I·max(n·l, 0) +
+/// k_s·I·max(n·h, 0)^p with the specular term only where n·l > 0: its first and last steps
+/// draw what pipelens' own Blinn-Phong shading draws (each channel within 2/255 on every
+/// pixel). And step 3's sentence: at the same p = 64, Phong's highlight is smaller than
+/// Blinn-Phong's, because (n·h)^p > (r·v)^p — fewer pixels have a specular factor above ½.
+#[test]
+fn lesson_24_s_blinn_phong_is_the_course_s_and_phong_s_highlight_is_smaller() {
+    let Ok(Document::Lesson(lesson)) = load_file(&repo().join("lessons/24-shader-programs.toml"))
+    else {
+        panic!("lesson 24 loads")
+    };
+    for k in [0, 6] {
+        let spec = lesson.spec_at(k);
+        let mine = pipeline::render(&spec.scene, &spec.settings).expect("renders");
+        let mut own = spec.scene.clone();
+        own.clear_code();
+        let theirs = pipeline::render(&own, &spec.settings).expect("renders");
+        let d = mine.difference(&theirs, 2.0).expect("same size");
+        assert!(
+            d.passed(),
+            "step {}: {} of {} pixels within 2/255 of pipelens' own (largest {}/255)",
+            k + 1,
+            d.matching,
+            d.total,
+            d.largest
+        );
+    }
+    // The specular factor over the sphere, from the lit scene's own buffers: pipelens' built-in
+    // terms with Blinn-Phong's n·h and with Phong's r·v, both at p = 64.
+    let highlight = |reflection: &str| {
+        let mut spec = lesson.spec_at(0);
+        spec.scene.clear_code();
+        pipelens::lesson::param::apply(
+            &mut spec,
+            "render.reflection",
+            &pipelens::lesson::param::Value::Name(reflection.to_owned()),
+        )
+        .expect("a reflection model");
+        assert_eq!(spec.scene.objects[0].material.shininess, 64.0);
+        let c = pipeline::render(&spec.scene, &spec.settings).expect("renders");
+        let sh = c.pixels.shading.as_ref().expect("lit");
+        // k_s·I = 0.6: a specular factor above ½ is a specular term above 0.3.
+        sh.specular
+            .iter()
+            .filter(|s| s.iter().any(|v| v.to_f32() > 0.3))
+            .count()
+    };
+    let (blinn, phong) = (highlight("blinn_phong"), highlight("phong"));
+    eprintln!("specular factor above ½: Blinn-Phong {blinn} px, Phong {phong} px");
+    assert!(
+        phong > 0 && phong * 2 < blinn,
+        "Phong's highlight ({phong} px) is not clearly smaller than Blinn-Phong's ({blinn} px)"
+    );
+}

@@ -71,7 +71,7 @@ pub struct UniformSpec {
 }
 
 /// Every uniform pipelens sets. A shader declares those it uses (`uniform mat4 model;`).
-pub const UNIFORMS: [UniformSpec; 31] = [
+pub const UNIFORMS: [UniformSpec; 32] = [
     UniformSpec {
         names: &["model", "M"],
         glsl: "mat4",
@@ -116,6 +116,11 @@ pub const UNIFORMS: [UniformSpec; 31] = [
         names: &["light_color"],
         glsl: "vec3",
         meaning: "that light's intensity I",
+    },
+    UniformSpec {
+        names: &["ambient_light"],
+        glsl: "vec3",
+        meaning: "the ambient light's intensity I_a: the sum of the scene's ambient lights",
     },
     UniformSpec {
         names: &["lights"],
@@ -356,6 +361,14 @@ impl Uniforms {
             _ => None,
         });
         let (light_pos, light_color) = first.unwrap_or((Vec3::ZERO, Vec3::ZERO));
+        let ambient: Vec3 = self
+            .lights
+            .iter()
+            .filter_map(|l| match *l {
+                Light::Ambient { intensity } => Some(intensity),
+                _ => None,
+            })
+            .sum();
         Some(match spec.names[0] {
             "model" => floats(&self.model.to_cols_array()),
             "view" => floats(&self.view.to_cols_array()),
@@ -371,6 +384,7 @@ impl Uniforms {
             "eye" => floats(&self.eye.to_array()),
             "light_pos" => floats(&light_pos.to_array()),
             "light_color" => floats(&light_color.to_array()),
+            "ambient_light" => floats(&ambient.to_array()),
             "lights" => self.light_components(),
             "light_count" => vec![self.lights.len().min(MAX_LIGHTS) as u32],
             "ka" => floats(&m.ka.to_array()),
