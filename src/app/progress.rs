@@ -152,7 +152,18 @@ impl Progress {
     /// as answered when it is right; `None` when the step expects nothing.
     pub fn check(&mut self, lesson: &Lesson, k: usize) -> Option<Verdict> {
         let expect = lesson.steps.get(k)?.expect.as_ref()?;
-        let verdict = expect.check(&self.typed(lesson, k, expect.shape.cells()));
+        let typed = self.typed(lesson, k, expect.shape.cells());
+        // Several numbers typed into one box go into the boxes after it, as they are read.
+        if let Ok(cells) = expect.spread(&typed)
+            && cells != typed
+        {
+            self.lessons
+                .entry(lesson.id.clone())
+                .or_default()
+                .typed
+                .insert(k + 1, cells);
+        }
+        let verdict = expect.check(&typed);
         if verdict == Verdict::Right {
             self.lessons
                 .entry(lesson.id.clone())

@@ -418,14 +418,14 @@ fn exercise_html(e: &crate::lesson::answer::Exercise, lang: Lang) -> String {
 /// cell by cell), with the tolerance stated; in a teacher's key, filled with the value.
 fn fill_in(e: &crate::lesson::answer::Expect, answers: bool, lang: Lang) -> String {
     let (rows, cols) = e.shape.size();
-    let tolerance = crate::vocabulary::short(e.tolerance as f32, 4);
+    let tolerance = e.tolerance_words(lang);
     let mut h = String::new();
     let _ = write!(
         h,
         "<div class=\"ui\">{}</div><table class=\"fill\">",
         match lang {
-            Lang::En => format!("Your answer (each entry within ±{tolerance}):"),
-            Lang::Zh => format!("你的答案（每项误差 ±{tolerance} 以内）："),
+            Lang::En => format!("Your answer (each entry within {tolerance}):"),
+            Lang::Zh => format!("你的答案（每项误差 {tolerance} 以内）："),
         }
     );
     for r in 0..rows {

@@ -8,7 +8,7 @@ use super::typeset::Style;
 use crate::app::progress::Progress;
 use crate::app::session::{Command, LessonPlayer};
 use crate::lesson::answer::{Expect, Shape, Verdict};
-use crate::vocabulary::{Lang, short};
+use crate::vocabulary::Lang;
 
 /// Green for right, amber for not yet.
 const RIGHT: Color32 = Color32::from_rgb(120, 220, 120);
@@ -87,7 +87,7 @@ pub fn field(
 
 /// What the field asks for, with the tolerance stated.
 fn prompt(expect: &Expect, lang: Lang) -> String {
-    let tolerance = short(expect.tolerance as f32, 4);
+    let tolerance = expect.tolerance_words(lang);
     let what = match (expect.shape, lang) {
         (Shape::Number, Lang::En) => "Type the value".to_owned(),
         (Shape::Number, Lang::Zh) => "填入数值".to_owned(),
@@ -97,8 +97,8 @@ fn prompt(expect: &Expect, lang: Lang) -> String {
         (Shape::Matrix(r, c), Lang::Zh) => format!("逐格填入 {r}×{c} 矩阵"),
     };
     match lang {
-        Lang::En => format!("{what} (each within ±{tolerance}):"),
-        Lang::Zh => format!("{what}（每项误差 ±{tolerance} 以内）："),
+        Lang::En => format!("{what} (each within {tolerance}):"),
+        Lang::Zh => format!("{what}（每项误差 {tolerance} 以内）："),
     }
 }
 
