@@ -5,6 +5,7 @@
 
 mod buffers;
 mod comparison;
+pub mod compile;
 mod explain;
 mod formulas;
 mod lang;

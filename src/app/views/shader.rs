@@ -263,14 +263,15 @@ pub fn ui(
         Tab::Hook(kind) => editor.hooks.iter().position(|h| h.kind == kind),
         Tab::Shader(_) => None,
     };
-    let (source, errors): (&mut String, Vec<(usize, &str)>) = match hook {
+    // Each message as a sentence in the interface's language, at its line.
+    let said = |e: &pipeline::shader::ShaderError| {
+        crate::vocabulary::compile::complaint(&e.complaint, lang)
+            .unwrap_or_else(|| e.message.clone())
+    };
+    let (source, errors): (&mut String, Vec<(usize, String)>) = match hook {
         Some(k) => {
             let h = &mut editor.hooks[k];
-            let errors = h
-                .errors
-                .iter()
-                .map(|e| (e.line, e.message.as_str()))
-                .collect();
+            let errors = h.errors.iter().map(|e| (e.line, said(e))).collect();
             (&mut h.source, errors)
         }
         None => {
@@ -287,11 +288,12 @@ pub fn ui(
                 .errors
                 .iter()
                 .filter(|e| e.stage == stage)
-                .map(|e| (e.error.line, e.error.message.as_str()))
+                .map(|e| (e.error.line, said(&e.error)))
                 .collect();
             (source, errors)
         }
     };
+    let errors: Vec<(usize, &str)> = errors.iter().map(|(l, m)| (*l, m.as_str())).collect();
     let edited = code(ui, (source, tab), &errors);
     if edited && matches!(tab, Tab::Shader(_)) {
         editor.shaders_in_use = true;
@@ -441,11 +443,9 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
     {
         ui.label(
             RichText::new(format!(
-                "{} {}:{}: {}",
+                "{}.glsl, {}",
                 h.kind.key(),
-                e.line,
-                e.column,
-                e.message
+                crate::vocabulary::compile::message(e, lang)
             ))
             .monospace()
             .color(ui.visuals().error_fg_color),
@@ -454,11 +454,14 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
     for e in &editor.errors {
         ui.label(
             RichText::new(format!(
-                "{} {}:{}: {}",
-                e.stage.name(),
-                e.error.line,
-                e.error.column,
-                e.error.message
+                "{}, {}",
+                match (e.stage, lang) {
+                    (Stage::Vertex, Lang::En) => "vertex shader",
+                    (Stage::Fragment, Lang::En) => "fragment shader",
+                    (Stage::Vertex, Lang::Zh) => "顶点着色器",
+                    (Stage::Fragment, Lang::Zh) => "片元着色器",
+                },
+                crate::vocabulary::compile::message(&e.error, lang)
             ))
             .monospace()
             .color(ui.visuals().error_fg_color),

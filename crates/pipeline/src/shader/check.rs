@@ -25,8 +25,13 @@ pub(super) fn plain(message: &str) -> String {
         .to_owned()
 }
 
-/// A validation error as one sentence: the innermost cause, said plainly.
-pub(super) fn validation_message(e: &naga::valid::ValidationError) -> String {
+/// A validation error's causes, outermost first, joined by `: `.
+pub(super) fn validation_chain(e: &naga::valid::ValidationError) -> String {
+    chain_of(e).join(": ")
+}
+
+/// A validation error and each of its sources, outermost first.
+fn chain_of(e: &naga::valid::ValidationError) -> Vec<String> {
     use std::error::Error;
     let mut chain = vec![e.to_string()];
     let mut source = e.source();
@@ -34,6 +39,12 @@ pub(super) fn validation_message(e: &naga::valid::ValidationError) -> String {
         chain.push(s.to_string());
         source = s.source();
     }
+    chain
+}
+
+/// A validation error as one sentence: the innermost cause, said plainly.
+pub(super) fn validation_message(e: &naga::valid::ValidationError) -> String {
+    let chain = chain_of(e);
     let inner = chain.last().cloned().unwrap_or_default();
     if inner.contains("doesn't match the type stored in") {
         return "the value's type is not the variable's type: a vec3 into a vec4 needs building, \

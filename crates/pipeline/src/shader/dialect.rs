@@ -29,8 +29,11 @@ use super::Stage;
 pub struct Adapted {
     /// What naga reads: the preamble, then the student's text with declarations blanked.
     pub text: String,
-    /// Length in bytes of the preamble: student byte `b` is at `preamble_len + b`.
+    /// Length in bytes of the preamble: student byte `b` is at `preamble_len + b`, but for the
+    /// forms rewritten for naga ([`super::lowering`]).
     pub preamble_len: usize,
+    /// The rewrites of the student's text after the preamble.
+    edits: Vec<super::lowering::Edit>,
     /// For each piece of the preamble, the student's text it stands for.
     pieces: Vec<(Range<usize>, Range<usize>)>,
     /// The declarations the student wrote, in order.
@@ -92,7 +95,7 @@ impl Adapted {
     #[must_use]
     pub fn original_offset(&self, at: usize) -> usize {
         if at >= self.preamble_len {
-            return at - self.preamble_len;
+            return super::lowering::before_edits(&self.edits, at - self.preamble_len);
         }
         self.pieces
             .iter()
@@ -362,10 +365,13 @@ pub fn adapt(src: &str, stage: Stage) -> Result<Adapted, Vec<DialectError>> {
     }
     // Blanking replaces whole declarations and ASCII keywords, so the text stays UTF-8.
     let student = String::from_utf8_lossy(&student);
+    // Valid GLSL naga refuses, rewritten (stores through a swizzle of an indexed value).
+    let (student, edits) = super::lowering::swizzle_stores(&student);
     let preamble_len = preamble.text.len();
     Ok(Adapted {
         text: preamble.text + &student,
         preamble_len,
+        edits,
         pieces: preamble.pieces,
         declarations,
     })

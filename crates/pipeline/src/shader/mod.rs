@@ -14,11 +14,13 @@
 
 mod check;
 mod code;
+pub mod complaint;
 pub mod dialect;
 mod emitted;
 pub mod hook;
 pub mod interface;
 pub mod link;
+mod lowering;
 mod machine;
 mod ops;
 mod trace;
@@ -29,6 +31,7 @@ use std::ops::Range;
 
 use naga::{Binding, BuiltIn, Interpolation, TypeInner};
 
+pub use complaint::Complaint;
 pub use hook::{
     CURVE_SIGNATURE, CurveDifference, DEPTH_SIGNATURE, Hook, HookKind, INSIDE_SIGNATURE,
     InsideTest, compile_hook, compile_inside,
@@ -72,8 +75,11 @@ pub struct ShaderError {
     pub column: usize,
     /// The bytes it concerns in the student's source.
     pub span: Range<usize>,
-    /// What is wrong, as a sentence.
+    /// What is wrong, as a sentence (English).
     pub message: String,
+    /// The mistake as data, for the interface to say in its language; [`Complaint::Other`]
+    /// where only `message` says it.
+    pub complaint: Complaint,
 }
 
 impl fmt::Display for ShaderError {
@@ -107,6 +113,7 @@ fn error_at(src: &str, span: Range<usize>, message: impl Into<String>) -> Shader
         column,
         span,
         message: message.into(),
+        complaint: Complaint::Other,
     }
 }
 
@@ -183,7 +190,13 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
                     .meta
                     .to_range()
                     .map_or(0..0, |r| adapted.original_range(r));
-                error_at(source, span, check::plain(&err.kind.to_string()))
+                let (complaint, at) = complaint::of_parse(&err.kind, source, span);
+                let mut e = error_at(source, at, check::plain(&err.kind.to_string()));
+                if complaint == Complaint::MissingSemicolon {
+                    e.message = "a `;` is missing at the end of this line".to_owned();
+                }
+                e.complaint = complaint;
+                e
             })
             .collect::<Vec<_>>()
     })?;
@@ -206,7 +219,9 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
                 check::NO_POSITION,
             )];
         }
-        vec![error_at(source, span, message)]
+        let mut err = error_at(source, span, message);
+        err.complaint = complaint::of_text(&check::validation_chain(e.as_inner()));
+        vec![err]
     })?;
     let mut errors = Vec::new();
     check::check_declarations(source, stage, &adapted, &module, &mut errors);

@@ -305,3 +305,35 @@ fn locals_start_with_their_constant_values() {
     );
     assert_eq!(m, expected);
 }
+
+/// Assigning through a swizzle of an indexed value — a matrix column (`m[1].w`, `t[3].xyz`), an
+/// array element (`r[0].xy`), compound (`+=`) — is valid GLSL that naga's front end refuses;
+/// written so, the shadow matrix is still Angel's, entry by entry (by glam's planar shadow).
+#[test]
+fn stores_through_a_swizzle_of_an_indexed_value_compile_and_run() {
+    use glam::Vec3;
+    use pipeline::shader::{HookKind, compile_hook};
+    let source = "mat4 shadow_matrix(vec3 light) {
+    mat4 to_light = mat4(1.0);
+    to_light[3].xyz = -light;      // column 3: the translation
+    mat4 project = mat4(1.0);
+    project[1].w = -1.0 / light.y; // row 4, column 2
+    project[3].w = 0.0;
+    mat4 back = mat4(1.0);
+    vec3 t[2];
+    t[0].xy = light.xy;
+    t[0].z = 0.0;
+    t[0].z += light.z;
+    back[3].rgb = t[0];
+    return back * project * to_light;
+}";
+    let hook = compile_hook(HookKind::ShadowMatrix, source).unwrap_or_else(|e| panic!("{e:?}"));
+    for light in [Vec3::new(1.0, 5.0, 1.0), Vec3::new(-3.0, 2.5, 0.5)] {
+        let mine = hook.shadow_matrix(light).expect("runs");
+        let theirs = pipeline::transform::planar_shadow(light).matrix;
+        assert!(
+            mine.abs_diff_eq(theirs, 1e-6),
+            "{light}: {mine} against {theirs}"
+        );
+    }
+}

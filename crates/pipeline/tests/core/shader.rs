@@ -555,3 +555,27 @@ fn the_debugger_shows_small_values_with_their_digits() {
     assert_eq!(float_text(f32::NAN), "NaN");
     assert_eq!(float_text(f32::INFINITY), "inf");
 }
+
+/// The same stores in both stages' shaders: a fragment shader that writes a colour through
+/// `c[1].gb` and `m[2].x` compiles and gives the colour worked out by hand, and a message after
+/// the rewritten line is still at its own line.
+#[test]
+fn swizzle_stores_of_indexed_values_compile_in_a_fragment_shader() {
+    let src = "#version 330 core
+out vec4 color;
+void main() {
+    vec3 c[2];
+    c[1] = vec3(0.0);
+    c[1].gb = vec2(0.25, 0.5);
+    mat3 m = mat3(0.0);
+    m[2].x = 0.75;
+    color = vec4(m[2].x, c[1].g, c[1].b, 1.0);
+}
+";
+    let p = compile(Stage::Fragment, src);
+    let (out, _) = run(&p, &Uniforms::default(), &[], &[]).expect("runs");
+    assert!(close(&out[0], &[0.75, 0.25, 0.5, 1.0]), "{:?}", out[0]);
+    let broken = src.replace("    color = vec4", "    float x = nope;\n    color = vec4");
+    let e = errors(Stage::Fragment, &broken);
+    assert_eq!(e[0].line, 9, "{e:?}");
+}

@@ -1,0 +1,234 @@
+//! What a compile message says, as data: naga's GLSL front end reports a missing `;` as
+//! "Expected Comma or Semicolon, found TypeName(Type { name: None, inner: Vector { … } })" at the
+//! token after it. A [`Complaint`] names the mistake (a `;` missing at the end of line 20, a
+//! name not declared, two types an operator cannot combine) so that the interface can say it as
+//! a sentence in its own language (`vocabulary::compile` in the app); the English `message` of
+//! [`super::ShaderError`] stays beside it for whatever no complaint covers.
+
+use std::ops::Range;
+
+use naga::front::glsl::{ErrorKind, ExpectedToken, TokenValue};
+
+/// A compile message's mistake, with what the sentence needs.
+#[derive(Clone, Debug, PartialEq, Eq, Default)]
+pub enum Complaint {
+    /// A `;` is missing at the end of the line the message is at.
+    MissingSemicolon,
+    /// The parser met `found` where it expected one of `expected` (written as the source
+    /// writes them: `)`, `,`, `a name`…).
+    Unexpected {
+        /// The text found, as the student wrote it (empty at the end of the file).
+        found: String,
+        /// What could stand there.
+        expected: Vec<String>,
+    },
+    /// The file ended inside a block or a call: a `}` or `)` is missing.
+    UnexpectedEnd,
+    /// A name used before it was declared (or misspelt).
+    UnknownVariable(String),
+    /// A type GLSL does not have.
+    UnknownType(String),
+    /// A field or swizzle the value does not have (`.w` of a vec3, `.pos` of a struct).
+    UnknownField(String),
+    /// A function no declaration or built-in matches, by name or by its arguments.
+    UnknownFunction(String),
+    /// A name declared twice in the same scope.
+    AlreadyDeclared(String),
+    /// A function defined twice.
+    FunctionAlreadyDefined,
+    /// An operator between values whose types it cannot combine (`vec3 * vec4`, `int + float`).
+    CannotCombine,
+    /// A constructor given more numbers than its type holds.
+    TooManyArguments,
+    /// A constructor that cannot build its type from these arguments.
+    BadConstructor,
+    /// An array size or a `const` that must be known when compiling and is not.
+    NotConstant,
+    /// An assignment to what cannot be written: a uniform, an input, a constant.
+    NotAssignable,
+    /// A value of type `void` used (a function that returns nothing, used in an expression).
+    VoidValue,
+    /// `#version` not on the first line.
+    VersionNotFirst,
+    /// A `#version` GLSL does not have.
+    InvalidVersion(u64),
+    /// A swizzle with a component twice on the left of `=` (`v.xx = …`), or too many.
+    BadSwizzle,
+    /// A value stored into a variable of another type (`vec3 c = vec4(…)`).
+    TypeMismatch,
+    /// A returned value of another type than the function's, or a value-returning function
+    /// that may end without `return`.
+    ReturnType,
+    /// A whole number too large for 32 bits.
+    IntegerOverflow,
+    /// A form naga's front end does not take yet.
+    NotImplemented(String),
+    /// Anything else: the English message says it.
+    #[default]
+    Other,
+}
+
+/// A parse error's complaint, and the span it is best reported at: a missing `;` belongs to the
+/// end of the line before the token the parser met, not to that token.
+#[must_use]
+pub fn of_parse(kind: &ErrorKind, source: &str, span: Range<usize>) -> (Complaint, Range<usize>) {
+    match kind {
+        ErrorKind::EndOfFile => (Complaint::UnexpectedEnd, span),
+        ErrorKind::InvalidVersion(v) => (Complaint::InvalidVersion(*v), span),
+        ErrorKind::NotImplemented(what) => (Complaint::NotImplemented((*what).to_owned()), span),
+        ErrorKind::UnknownVariable(n) => (Complaint::UnknownVariable(n.clone()), span),
+        ErrorKind::UnknownType(n) => (Complaint::UnknownType(n.clone()), span),
+        ErrorKind::UnknownField(n) => (Complaint::UnknownField(n.clone()), span),
+        ErrorKind::VariableAlreadyDeclared(n) => (Complaint::AlreadyDeclared(n.clone()), span),
+        ErrorKind::InvalidToken(found, expected) => {
+            let semicolon = expected
+                .iter()
+                .any(|e| matches!(e, ExpectedToken::Token(TokenValue::Semicolon)));
+            if semicolon && !matches!(found, TokenValue::Semicolon) {
+                let at = before(source, span.start);
+                return (Complaint::MissingSemicolon, at..at);
+            }
+            let found = source.get(span.clone()).unwrap_or_default().to_owned();
+            let expected = expected.iter().map(expected_text).collect();
+            (Complaint::Unexpected { found, expected }, span)
+        }
+        ErrorKind::SemanticError(text) => (of_text(text), span),
+        _ => (of_text(&kind.to_string()), span),
+    }
+}
+
+/// A semantic or validation message's complaint, read from naga's wording.
+#[must_use]
+pub fn of_text(text: &str) -> Complaint {
+    let quoted = |prefix: &str| {
+        text.strip_prefix(prefix).map(|rest| {
+            rest.trim_matches(|c| c == '\'' || c == '"' || c == ' ')
+                .to_owned()
+        })
+    };
+    if let Some(name) = quoted("Unknown function") {
+        return Complaint::UnknownFunction(name);
+    }
+    if text.starts_with("Ambiguous best function") || text == "Bad call" {
+        return Complaint::UnknownFunction(text.split('\'').nth(1).unwrap_or_default().to_owned());
+    }
+    let table: [(&str, Complaint); 16] = [
+        (
+            "Function already defined",
+            Complaint::FunctionAlreadyDefined,
+        ),
+        (
+            "Prototype already defined",
+            Complaint::FunctionAlreadyDefined,
+        ),
+        ("Cannot apply operation", Complaint::CannotCombine),
+        ("Cannot apply operator", Complaint::CannotCombine),
+        (
+            "Constructor: Too many arguments",
+            Complaint::TooManyArguments,
+        ),
+        ("Bad type constructor", Complaint::BadConstructor),
+        ("Expression is not const-expression", Complaint::NotConstant),
+        (
+            "const values must have an initializer",
+            Complaint::NotConstant,
+        ),
+        ("cannot be in the left hand side", Complaint::NotAssignable),
+        (
+            "Variable cannot be used in LHS position",
+            Complaint::NotAssignable,
+        ),
+        ("Expression returns void", Complaint::VoidValue),
+        ("void type", Complaint::VoidValue),
+        ("#version must occur first", Complaint::VersionNotFirst),
+        ("swizzle", Complaint::BadSwizzle),
+        ("Can't lookup field", Complaint::UnknownField(String::new())),
+        ("int constant overflows", Complaint::IntegerOverflow),
+    ];
+    if let Some((_, c)) = table.into_iter().find(|(needle, _)| text.contains(needle)) {
+        return c;
+    }
+    if text.contains("doesn't match the type stored in") {
+        return Complaint::TypeMismatch;
+    }
+    if text.contains("InvalidReturnType") || text.contains("return type") {
+        return Complaint::ReturnType;
+    }
+    Complaint::Other
+}
+
+/// How the source writes an expected token.
+fn expected_text(e: &ExpectedToken) -> String {
+    match e {
+        ExpectedToken::Token(t) => match t {
+            TokenValue::Semicolon => ";",
+            TokenValue::Comma => ",",
+            TokenValue::Colon => ":",
+            TokenValue::Dot => ".",
+            TokenValue::LeftParen => "(",
+            TokenValue::RightParen => ")",
+            TokenValue::LeftBrace => "{",
+            TokenValue::RightBrace => "}",
+            TokenValue::LeftBracket => "[",
+            TokenValue::RightBracket => "]",
+            TokenValue::Assign => "=",
+            TokenValue::Identifier(_) => "a name",
+            _ => return format!("{t:?}").to_lowercase(),
+        }
+        .to_owned(),
+        ExpectedToken::TypeName => "a type".to_owned(),
+        ExpectedToken::Identifier => "a name".to_owned(),
+        ExpectedToken::IntLiteral => "a whole number".to_owned(),
+        ExpectedToken::FloatLiteral => "a number".to_owned(),
+        ExpectedToken::BoolLiteral => "true or false".to_owned(),
+        ExpectedToken::Eof => "the end of the file".to_owned(),
+    }
+}
+
+/// The byte just after the last character of code before `at` (comments and white space
+/// skipped): where a missing `;` goes.
+fn before(source: &str, at: usize) -> usize {
+    let head = source.get(..at.min(source.len())).unwrap_or(source);
+    // Each line without its `//` comment, from the last one back.
+    let mut end = head.len();
+    for line in head.split('\n').rev() {
+        let start = end.saturating_sub(line.len());
+        let code = line.split("//").next().unwrap_or("").trim_end();
+        if !code.is_empty() {
+            return start + code.len();
+        }
+        // The line and its line break.
+        end = start.saturating_sub(1);
+    }
+    0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The end of the code before a token, by hand: the `)` of line 1 at byte 13, past a blank
+    /// line and a comment.
+    #[test]
+    fn a_missing_semicolon_goes_after_the_code_before_the_token() {
+        let src = "float x = f()\n\n// a comment\n  vec3 y;";
+        let at = src.find("vec3").expect("vec3");
+        assert_eq!(before(src, at), 13);
+        assert_eq!(&src[..before(src, at)], "float x = f()");
+        let src = "a = 1 // no ;\nb";
+        assert_eq!(before(src, src.len() - 1), 5);
+    }
+
+    #[test]
+    fn naga_s_wording_is_read_as_a_complaint() {
+        assert_eq!(
+            of_text("Unknown function 'depth'"),
+            Complaint::UnknownFunction("depth".into())
+        );
+        assert_eq!(
+            of_text("Cannot apply operation to Vector { size: Tri } and Vector { size: Quad }"),
+            Complaint::CannotCombine
+        );
+        assert_eq!(of_text("something new"), Complaint::Other);
+    }
+}

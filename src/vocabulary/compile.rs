@@ -1,0 +1,204 @@
+//! A shader's compile messages as sentences in the interface's language: the mistake the core
+//! read from naga's message ([`Complaint`]) said plainly at the student's line, and naga's own
+//! wording only where no sentence covers it.
+
+use pipeline::shader::{Complaint, ShaderError};
+
+use super::Lang;
+
+/// The sentence for `c`, or `None` where the English message is all there is.
+#[must_use]
+pub fn complaint(c: &Complaint, lang: Lang) -> Option<String> {
+    use Complaint as C;
+    let en = lang == Lang::En;
+    let t = |e: String, z: String| if en { e } else { z };
+    Some(match c {
+        C::MissingSemicolon => t(
+            "a `;` is missing at the end of this line".into(),
+            "这一行末尾缺少 `;`".into(),
+        ),
+        C::Unexpected { found, expected } => {
+            let list = expected
+                .iter()
+                .map(|e| format!("`{e}`"))
+                .collect::<Vec<_>>();
+            let (or, found) = (if en { " or " } else { "或" }, found.trim());
+            match (found.is_empty(), en) {
+                (true, true) => format!("the file ends where {} should follow", list.join(or)),
+                (true, false) => format!("文件在应当出现 {} 的地方结束了", list.join(or)),
+                (false, true) => format!(
+                    "`{found}` cannot stand here: {} should come first",
+                    list.join(or)
+                ),
+                (false, false) => format!("这里不能出现 `{found}`：应当先有 {}", list.join(or)),
+            }
+        }
+        C::UnexpectedEnd => t(
+            "the file ends too early: a `}` or `)` is missing".into(),
+            "文件提前结束了：缺少 `}` 或 `)`".into(),
+        ),
+        C::UnknownVariable(n) => t(
+            format!("`{n}` is not declared here: declare it before its first use, or check its spelling"),
+            format!("`{n}` 在这里没有声明：请在第一次使用前声明它，或检查拼写"),
+        ),
+        C::UnknownType(n) => t(
+            format!("`{n}` is not a GLSL type (float, vec2, vec3, vec4, int, bool, mat3, mat4, …)"),
+            format!("`{n}` 不是 GLSL 的类型（float、vec2、vec3、vec4、int、bool、mat3、mat4……）"),
+        ),
+        C::UnknownField(n) if n.is_empty() => t(
+            "this value has no such field or component".into(),
+            "这个值没有这样的成员或分量".into(),
+        ),
+        C::UnknownField(n) => t(
+            format!("this value has no field or component `{n}` (a vec3 has x, y, z; a vec2 has no z)"),
+            format!("这个值没有成员或分量 `{n}`（vec3 有 x、y、z；vec2 没有 z）"),
+        ),
+        C::UnknownFunction(n) if n.is_empty() => t(
+            "no function matches this call: check its name and the types of its arguments".into(),
+            "没有与这次调用匹配的函数：请检查函数名和参数的类型".into(),
+        ),
+        C::UnknownFunction(n) => t(
+            format!("no function `{n}` takes these arguments: check its name, the number and types of its arguments, and that it is declared above this line"),
+            format!("没有接受这些参数的函数 `{n}`：请检查函数名、参数的个数和类型，以及它是否在这一行之前声明"),
+        ),
+        C::AlreadyDeclared(n) => t(
+            format!("`{n}` is declared twice here: give the second one another name, or assign to the first without its type"),
+            format!("`{n}` 在这里声明了两次：给第二个换个名字，或去掉类型直接给第一个赋值"),
+        ),
+        C::FunctionAlreadyDefined => t(
+            "this function is defined twice".into(),
+            "这个函数定义了两次".into(),
+        ),
+        C::CannotCombine => t(
+            "the two sides of this operator have types it cannot combine: a vec3 with a vec4 needs v.xyz or vec4(v, 1.0); an int with a float needs float(i) or 1.0 for 1".into(),
+            "这个运算符两边的类型不能一起运算：vec3 与 vec4 需要 v.xyz 或 vec4(v, 1.0)；int 与 float 需要 float(i)，或把 1 写成 1.0".into(),
+        ),
+        C::TooManyArguments => t(
+            "this constructor is given more numbers than its type holds (vec3 takes 3, mat4 takes 16)".into(),
+            "这个构造函数给的数比它的类型能容纳的多（vec3 取 3 个，mat4 取 16 个）".into(),
+        ),
+        C::BadConstructor => t(
+            "this type cannot be built from these arguments".into(),
+            "不能用这些参数构造这个类型".into(),
+        ),
+        C::NotConstant => t(
+            "this must be known when the shader is compiled: a number, or a `const` made of numbers".into(),
+            "这里必须在编译时就确定：一个数，或由数构成的 `const`".into(),
+        ),
+        C::NotAssignable => t(
+            "this cannot be assigned to: a `uniform`, an `in` input and a `const` are read-only — copy it into a local variable first".into(),
+            "不能给它赋值：`uniform`、`in` 输入和 `const` 都是只读的——先把它复制到一个局部变量".into(),
+        ),
+        C::VoidValue => t(
+            "a `void` function returns nothing, so its call has no value to use here".into(),
+            "`void` 函数不返回值，所以这里没有可用的值".into(),
+        ),
+        C::VersionNotFirst => t(
+            "`#version` must be the first line of the shader".into(),
+            "`#version` 必须是着色器的第一行".into(),
+        ),
+        C::InvalidVersion(v) => t(
+            format!("GLSL has no version {v}: write `#version 330 core` (or 1x0 for the old GLSL)"),
+            format!("GLSL 没有版本 {v}：请写 `#version 330 core`（或旧版 GLSL 的 1x0）"),
+        ),
+        C::BadSwizzle => t(
+            "this swizzle is not allowed: on the left of `=` each component once (v.xy, not v.xx), and at most four".into(),
+            "这个分量选择（swizzle）不允许：在 `=` 左边每个分量只能出现一次（v.xy，而不是 v.xx），最多四个".into(),
+        ),
+        C::TypeMismatch => t(
+            "the value's type is not the variable's type: a vec3 into a vec4 needs building, vec4(v, 1.0); a vec4 into a vec3 needs picking, v.xyz; a float from an int needs float(i)".into(),
+            "值的类型与变量的类型不同：vec3 放进 vec4 需要构造 vec4(v, 1.0)；vec4 放进 vec3 需要选取 v.xyz；int 变成 float 需要 float(i)".into(),
+        ),
+        C::ReturnType => t(
+            "what this function returns is not its declared type, or it can end without `return`".into(),
+            "这个函数返回的值不是它声明的类型，或者它可能没有 `return` 就结束了".into(),
+        ),
+        C::IntegerOverflow => t(
+            "this whole number is too large for 32 bits".into(),
+            "这个整数超出了 32 位的范围".into(),
+        ),
+        C::NotImplemented(what) => t(
+            format!("pipelens does not run this form of GLSL yet ({what})"),
+            format!("pipelens 还不能运行这种 GLSL 写法（{what}）"),
+        ),
+        C::Other => return None,
+    })
+}
+
+/// A compile message as the student reads it: its line and column, then the sentence in
+/// `lang` (naga's or pipelens' English wording where no sentence covers it).
+#[must_use]
+pub fn message(e: &ShaderError, lang: Lang) -> String {
+    let said = complaint(&e.complaint, lang).unwrap_or_else(|| e.message.clone());
+    match lang {
+        Lang::En => format!("line {}, column {}: {said}", e.line, e.column),
+        Lang::Zh => format!("第 {} 行第 {} 列：{said}", e.line, e.column),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A missing `;` on line 3 is said at line 3 — the end of the line that lacks it — in both
+    /// languages, with no parser wording (the token found on line 4 is a type).
+    #[test]
+    fn a_missing_semicolon_is_a_sentence_at_its_own_line() {
+        let src = "#version 330 core\nout vec4 color;\nvoid main() {\n    float x = 1.0\n    vec3 c = vec3(x);\n    color = vec4(c, 1.0);\n}\n";
+        let errors = pipeline::shader::compile(pipeline::shader::Stage::Fragment, src)
+            .err()
+            .expect("it does not compile");
+        let e = &errors[0];
+        assert_eq!(e.complaint, Complaint::MissingSemicolon);
+        assert_eq!((e.line, e.column), (4, 18), "after `1.0` on line 4");
+        assert_eq!(
+            message(e, Lang::En),
+            "line 4, column 18: a `;` is missing at the end of this line"
+        );
+        assert_eq!(message(e, Lang::Zh), "第 4 行第 18 列：这一行末尾缺少 `;`");
+    }
+
+    /// Every complaint but `Other` has a sentence in both languages, and the Chinese one holds
+    /// no English sentence.
+    #[test]
+    fn every_complaint_is_said_in_both_languages() {
+        let all = [
+            Complaint::MissingSemicolon,
+            Complaint::Unexpected {
+                found: "}".into(),
+                expected: vec![")".into()],
+            },
+            Complaint::UnexpectedEnd,
+            Complaint::UnknownVariable("n".into()),
+            Complaint::UnknownType("vec5".into()),
+            Complaint::UnknownField("w".into()),
+            Complaint::UnknownFunction("depth".into()),
+            Complaint::AlreadyDeclared("n".into()),
+            Complaint::FunctionAlreadyDefined,
+            Complaint::CannotCombine,
+            Complaint::TooManyArguments,
+            Complaint::BadConstructor,
+            Complaint::NotConstant,
+            Complaint::NotAssignable,
+            Complaint::VoidValue,
+            Complaint::VersionNotFirst,
+            Complaint::InvalidVersion(999),
+            Complaint::BadSwizzle,
+            Complaint::TypeMismatch,
+            Complaint::ReturnType,
+            Complaint::IntegerOverflow,
+            Complaint::NotImplemented("x".into()),
+        ];
+        assert!(all.len() >= 20);
+        for c in &all {
+            let en = complaint(c, Lang::En).expect("a sentence");
+            let zh = complaint(c, Lang::Zh).expect("a sentence");
+            assert_ne!(en, zh);
+            assert!(
+                !zh.contains(" is ") && !zh.contains(" the "),
+                "English in the Chinese sentence: {zh}"
+            );
+        }
+        assert_eq!(complaint(&Complaint::Other, Lang::En), None);
+    }
+}
