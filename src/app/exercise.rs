@@ -87,9 +87,12 @@ impl Session {
         }
         // Found once per frame received, not at every repaint of the card.
         self.exercise.findings = match (&self.capture, &self.exercise.reference) {
-            (Some(c), Some(r)) if !self.shown_draft => {
-                Findings::between(&self.spec.scene, c, r, exercise.tolerance)
-            }
+            (Some(c), Some(r)) if !self.shown_draft => Findings::between(
+                &self.spec.scene,
+                (c, r),
+                exercise.tolerance,
+                crate::lab::Forbid::of(&exercise),
+            ),
             _ => Findings::default(),
         };
         let (Some(player), Some(code)) = (&self.lesson, self.student_code()) else {

@@ -17,13 +17,36 @@ pub use findings::{
 };
 
 use pipeline::buffers::Capture;
-use pipeline::capture::{Difference, FrameCapture};
+use pipeline::capture::{Criteria, Difference, FrameCapture};
 use pipeline::scene::Scene;
 use pipeline::settings::RenderSettings;
 use pipeline::shader::CurveDifference;
 
 use crate::lesson::SceneSpec;
+use crate::lesson::answer::Exercise;
+use crate::lesson::forbid::Shortcut;
 use crate::vocabulary::Lang;
+
+/// What a lab forbids the student's code to use, and the starter, whose own files are not
+/// the student's to answer for.
+#[derive(Clone, Copy, Debug)]
+pub struct Forbid<'a> {
+    /// The names (`exercise.forbid`).
+    pub names: &'a [String],
+    /// The lab's starter.
+    pub starter: &'a pipeline::scene::StudentCode,
+}
+
+impl<'a> Forbid<'a> {
+    /// What `exercise` forbids.
+    #[must_use]
+    pub fn of(exercise: &'a Exercise) -> Self {
+        Self {
+            names: &exercise.forbid,
+            starter: &exercise.starter,
+        }
+    }
+}
 
 /// What comparing a student's frame with pipelens' own found.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -40,18 +63,23 @@ pub struct Findings {
     pub matrix: Option<MatrixMismatch>,
     /// Where the student's run at the inspected pixel first parts from pipelens' own shader's.
     pub mismatch: Option<Mismatch>,
+    /// pipelens' own answer taken where the lab asks the student to compute it (a uniform it
+    /// forbids declared, a function it forbids called): the lab is not passed, whatever the
+    /// pixels say.
+    pub shortcut: Option<Shortcut>,
 }
 
 impl Findings {
     /// What the student's frame `mine` (drawn from `scene`, which holds the student's code)
     /// shows against pipelens' own `reference`, each channel within `tolerance` 8-bit steps.
-    /// The mismatch is found at the pixel both frames traced (their capture's pixel).
+    /// The mismatch is found at the pixel both frames traced (their capture's pixel); a name
+    /// of `forbid` in the student's code is a shortcut.
     #[must_use]
     pub fn between(
         scene: &Scene,
-        mine: &FrameCapture,
-        reference: &FrameCapture,
+        (mine, reference): (&FrameCapture, &FrameCapture),
         tolerance: f32,
+        forbid: Forbid<'_>,
     ) -> Self {
         let vertex = scene
             .has_shaders()
@@ -65,11 +93,16 @@ impl Findings {
             })
             .or_else(|| wrong_shadow_matrix(scene));
         Self {
-            difference: mine.difference(reference, tolerance),
+            difference: mine.difference_by(reference, criteria(scene, tolerance)),
             curve: curve_difference(scene),
             vertex,
             matrix,
             mismatch: first_mismatch(traced(mine), traced(reference)),
+            shortcut: crate::lesson::forbid::find(
+                forbid.names,
+                &scene_sources(scene),
+                &crate::lesson::forbid::sources(forbid.starter),
+            ),
         }
     }
 
@@ -77,6 +110,9 @@ impl Findings {
     /// compared, else every pixel.
     #[must_use]
     pub fn passed(&self) -> bool {
+        if self.shortcut.is_some() {
+            return false;
+        }
         match &self.curve {
             Some(c) => c.passed(),
             None => self.difference.as_ref().is_some_and(Difference::passed),
@@ -87,6 +123,9 @@ impl Findings {
     /// vertex, the matrix, the value at the first wrong pixel).
     #[must_use]
     pub fn sentences(&self, lang: Lang) -> Vec<String> {
+        if let Some(s) = &self.shortcut {
+            return vec![s.words(lang)];
+        }
         if let Some(c) = &self.curve {
             return vec![words::curve_verdict(c, lang)];
         }
@@ -108,6 +147,43 @@ impl Findings {
         }
         out
     }
+}
+
+/// How far two window depths of a pixel may differ and still match: far above the rounding of
+/// a matrix written in another order (about 10⁻⁷), far below what a wrong projection moves
+/// (`fn/(n − f)` for `2fn/(n − f)`, Direct3D's z in [0, 1]).
+pub const DEPTH_TOLERANCE: f32 = 1e-5;
+
+/// What a lab compares: the colour within `tolerance` steps, the coverage and the depth of every
+/// pixel; and, where the student's code decides which samples a triangle covers or keeps (the
+/// inside test, the depth test), which triangle owns each pixel.
+#[must_use]
+pub fn criteria(scene: &Scene, tolerance: f32) -> Criteria {
+    use pipeline::shader::HookKind;
+    Criteria {
+        tolerance,
+        depth: Some(DEPTH_TOLERANCE),
+        owner: scene.hook(HookKind::Inside).is_some() || scene.hook(HookKind::DepthTest).is_some(),
+    }
+}
+
+/// The student's sources in `scene`, named as the shader panel's Save names them: the first
+/// object's shaders and the scene's functions.
+fn scene_sources(scene: &Scene) -> Vec<(String, &str)> {
+    let mut out = Vec::new();
+    if let Some(sh) = scene.objects.iter().find_map(|o| o.shader.as_ref()) {
+        out.push(("shader.vert".to_owned(), sh.programs.vertex.source.as_str()));
+        out.push((
+            "shader.frag".to_owned(),
+            sh.programs.fragment.source.as_str(),
+        ));
+    }
+    for kind in pipeline::shader::HookKind::ALL {
+        if let Some(h) = scene.hook(kind) {
+            out.push((format!("{}.glsl", kind.key()), h.source.as_str()));
+        }
+    }
+    out
 }
 
 /// The shaders' runs at the frame's traced pixel (none where no shader ran).
@@ -148,7 +224,8 @@ pub fn reference_scene(scene: &Scene, settings: &RenderSettings) -> Scene {
 /// # Errors
 /// Either frame's render error (a run-time error of the student's shader: an endless loop, an
 /// index out of range), worded as the status line words it.
-pub fn check(spec: &SceneSpec, tolerance: f32) -> Result<Findings, String> {
+pub fn check(spec: &SceneSpec, exercise: &Exercise) -> Result<Findings, String> {
+    let (tolerance, forbid) = (exercise.tolerance, Forbid::of(exercise));
     let reference = reference_scene(&spec.scene, &spec.settings);
     let draw = |scene: &Scene, pixel: Option<(u32, u32)>| {
         let settings = RenderSettings {
@@ -158,7 +235,7 @@ pub fn check(spec: &SceneSpec, tolerance: f32) -> Result<Findings, String> {
         pipeline::render(scene, &settings).map_err(|e| e.to_string())
     };
     let (mine, theirs) = (draw(&spec.scene, None)?, draw(&reference, None)?);
-    let findings = Findings::between(&spec.scene, &mine, &theirs, tolerance);
+    let findings = Findings::between(&spec.scene, (&mine, &theirs), tolerance, forbid);
     let first = findings.difference.as_ref().and_then(|d| d.first);
     match first {
         Some(pixel) if findings.curve.is_none() && spec.scene.has_shaders() => {
@@ -166,7 +243,12 @@ pub fn check(spec: &SceneSpec, tolerance: f32) -> Result<Findings, String> {
                 draw(&spec.scene, Some(pixel))?,
                 draw(&reference, Some(pixel))?,
             );
-            Ok(Findings::between(&spec.scene, &mine, &theirs, tolerance))
+            Ok(Findings::between(
+                &spec.scene,
+                (&mine, &theirs),
+                tolerance,
+                forbid,
+            ))
         }
         _ => Ok(findings),
     }

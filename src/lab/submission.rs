@@ -109,15 +109,18 @@ pub fn grade(lesson: &Lesson, k: usize, code: &Code, lang: Lang) -> Grade {
         match pipeline::shader::compile_hook(*kind, source) {
             Ok(hook) => spec.scene.set_hook(&hook),
             Err(errors) => {
-                let first = errors.first().map(ToString::to_string).unwrap_or_default();
+                let first = errors
+                    .first()
+                    .map(|e| crate::vocabulary::compile::message(e, lang))
+                    .unwrap_or_default();
                 return Grade::failed(match lang {
-                    Lang::En => format!("{}.glsl does not compile: {first}", kind.key()),
-                    Lang::Zh => format!("{}.glsl 无法编译：{first}", kind.key()),
+                    Lang::En => format!("Does not compile: {}.glsl, {first}", kind.key()),
+                    Lang::Zh => format!("无法编译：{}.glsl，{first}", kind.key()),
                 });
             }
         }
     }
-    match super::check(&spec, exercise.tolerance) {
+    match super::check(&spec, exercise) {
         Ok(found) => Grade {
             passed: found.passed(),
             matching: matching(&found),
@@ -141,7 +144,18 @@ fn matching(found: &Findings) -> Option<(u64, u64)> {
 
 /// The first message of shaders that do not compile, with its stage and line.
 fn compile_failed(errors: &[pipeline::shader::StageError], lang: Lang) -> String {
-    let first = errors.first().map(ToString::to_string).unwrap_or_default();
+    let first = errors.first().map_or_else(String::new, |e| {
+        let stage = match (e.stage, lang) {
+            (pipeline::shader::Stage::Vertex, Lang::En) => "vertex shader",
+            (pipeline::shader::Stage::Fragment, Lang::En) => "fragment shader",
+            (pipeline::shader::Stage::Vertex, Lang::Zh) => "顶点着色器",
+            (pipeline::shader::Stage::Fragment, Lang::Zh) => "片元着色器",
+        };
+        format!(
+            "{stage}, {}",
+            crate::vocabulary::compile::message(&e.error, lang)
+        )
+    });
     let more = errors.len().saturating_sub(1);
     match (lang, more) {
         (Lang::En, 0) => format!("Does not compile: {first}"),

@@ -11,7 +11,7 @@ use crate::vocabulary::Lang;
 /// The verdict in words: passed, or how many pixels differ and where the first is.
 #[must_use]
 pub fn verdict(d: &Difference, lang: Lang) -> String {
-    let tolerance = crate::vocabulary::short(d.tolerance, 1);
+    let tolerance = crate::vocabulary::short(d.criteria.tolerance, 1);
     if d.passed() {
         return match lang {
             Lang::En => format!(
@@ -30,26 +30,60 @@ pub fn verdict(d: &Difference, lang: Lang) -> String {
         .first
         .map(|(x, y)| format!("({x}, {y})"))
         .unwrap_or_default();
+    // What differs, each clause only where some pixel differs so.
+    let mut how = Vec::new();
+    if d.largest > d.criteria.tolerance {
+        how.push(match lang {
+            Lang::En => format!("colours by up to {largest}/255"),
+            Lang::Zh => format!("颜色最多相差 {largest}/255"),
+        });
+    }
+    let counted = |n: u64, one: &str, many: &str, zh: &str| match lang {
+        Lang::En if n == 1 => format!("1 {one}"),
+        Lang::En => format!("{n} {many}"),
+        Lang::Zh => format!("{n} 个{zh}"),
+    };
+    if d.coverage_differs > 0 {
+        how.push(counted(
+            d.coverage_differs,
+            "is covered differently",
+            "are covered differently",
+            "覆盖不同",
+        ));
+    }
+    if d.depth_differs > 0 {
+        how.push(counted(
+            d.depth_differs,
+            "lies at another depth",
+            "lie at another depth",
+            "深度不同",
+        ));
+    }
+    if d.owner_differs > 0 {
+        how.push(counted(
+            d.owner_differs,
+            "belongs to another triangle",
+            "belong to another triangle",
+            "属于另一个三角形",
+        ));
+    }
     match lang {
         Lang::En => format!(
-            "Not yet: {} of {} pixels match; {differ} differ (by up to {largest}/255{}). The first, reading from the top, is {first}.",
+            "Not yet: {} of {} pixels match; {} ({}). The first, reading from the top, is {first}.",
             d.matching,
             d.total,
-            if d.coverage_differs > 0 {
-                format!("; {} are covered differently", d.coverage_differs)
+            if differ == 1 {
+                "1 differs".to_owned()
             } else {
-                String::new()
-            }
+                format!("{differ} differ")
+            },
+            how.join("; ")
         ),
         Lang::Zh => format!(
-            "还没有通过：{} 个像素中 {} 个一致，{differ} 个不同（最多相差 {largest}/255{}）。从上往下读，第一个是 {first}。",
+            "还没有通过：{} 个像素中 {} 个一致，{differ} 个不同（{}）。从上往下读，第一个是 {first}。",
             d.total,
             d.matching,
-            if d.coverage_differs > 0 {
-                format!("；{} 个覆盖不同", d.coverage_differs)
-            } else {
-                String::new()
-            }
+            how.join("；")
         ),
     }
 }

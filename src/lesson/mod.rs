@@ -10,6 +10,7 @@
 pub mod answer;
 mod diagnostic;
 pub mod edit;
+pub mod forbid;
 pub mod library;
 pub mod param;
 pub mod raw;
@@ -17,6 +18,7 @@ pub mod record;
 pub mod script;
 pub mod start;
 mod syntax;
+mod typed;
 pub mod validate;
 
 pub use script::{Lesson, Step};

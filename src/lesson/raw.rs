@@ -403,6 +403,9 @@ pub struct RawExercise {
     pub starter: Spanned<RawShader>,
     /// Colour steps (of 255) a pixel may differ from pipelens' own and still match.
     pub tolerance: Option<Spanned<f64>>,
+    /// Uniforms the student may not declare and functions they may not call: what the lab
+    /// asks them to compute (`forbid = ["view"]`, `forbid = ["texture"]`).
+    pub forbid: Option<Spanned<Vec<String>>>,
 }
 
 /// `expect = …` as written.

@@ -59,8 +59,22 @@ fn the_inside_lab_in_the_app_passes_and_keeps_the_inside_test() {
         h.query_by_label("Inside test").is_some(),
         "the tab is there"
     );
+    // The starter tests one edge of each triangle: the square's edge pixels on a tie are
+    // covered where the top-left rule leaves them out, and the first triangle drawn takes the
+    // second's pixels (the same colour: only the owner tells).
+    assert!(h.query_by_label_contains("Not yet: ").is_some());
+    let d = h
+        .state()
+        .session
+        .exercise
+        .findings
+        .difference
+        .clone()
+        .expect("compared");
+    assert_eq!(d.total, 24 * 16);
+    assert!(d.coverage_differs > 0 && d.owner_differs > 0, "{d:?}");
     assert!(
-        h.query_by_label_contains("Not yet: 363 of 384 pixels match")
+        h.query_by_label_contains(&format!("belong to another triangle"))
             .is_some()
     );
     let (_, _, todo, solution) = SOLUTIONS

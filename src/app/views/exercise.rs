@@ -99,7 +99,11 @@ impl ExerciseView {
         );
         let pair = (key(capture), key(reference));
         if self.difference.as_ref().is_none_or(|(k, _)| *k != pair) {
-            let img = capture.difference_image(reference, tolerance);
+            let criteria = session.exercise.findings.difference.as_ref().map_or_else(
+                || crate::lab::criteria(&session.spec.scene, tolerance),
+                |d| d.criteria,
+            );
+            let img = capture.difference_image(reference, criteria);
             let image = egui::ColorImage::from_rgba_unmultiplied(
                 [img.width() as usize, img.height() as usize],
                 img.as_raw(),
@@ -118,8 +122,8 @@ impl ExerciseView {
         let captions = [
             own.as_str(),
             lang.tr(
-                "difference (red: differs, yellow: coverage differs)",
-                "差异（红：颜色不同，黄：覆盖不同）",
+                "difference (red: colour, yellow: coverage, blue: depth, magenta: another triangle)",
+                "差异（红：颜色，黄：覆盖，蓝：深度，品红：另一个三角形）",
             ),
         ];
         for (i, (at, texture)) in [(top, Some(reference_texture)), (bottom, difference_texture)]
@@ -226,6 +230,10 @@ pub fn card_part(
         .lesson
         .as_ref()
         .is_some_and(|p| session.progress.passed(&p.lesson, p.step));
+    if let Some(s) = &session.exercise.findings.shortcut {
+        not_yet(ui, s.words(lang), style);
+        return false;
+    }
     if let Some(c) = &session.exercise.findings.curve {
         let color = if c.passed() { PASSED } else { NOT_YET };
         ui.label(

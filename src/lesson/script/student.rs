@@ -91,10 +91,35 @@ impl Checker<'_> {
             Some(t) => *t.get_ref() as f32,
             None => EXERCISE_TOLERANCE,
         };
+        let forbid = self.forbid(r);
         Some(Exercise {
             task,
             starter,
             tolerance,
+            forbid,
         })
+    }
+
+    /// An exercise's `forbid`: GLSL names.
+    fn forbid(&mut self, r: &RawExercise) -> Vec<String> {
+        let Some(f) = &r.forbid else {
+            return Vec::new();
+        };
+        let names = f.get_ref().clone();
+        for n in &names {
+            let ident = n
+                .chars()
+                .next()
+                .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+                && n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+            if !ident {
+                self.error(
+                    f.span(),
+                    format!("`forbid` lists GLSL names (uniforms or functions); `{n}` is not one"),
+                );
+                return Vec::new();
+            }
+        }
+        names
     }
 }

@@ -406,13 +406,14 @@ fn texture(c: &mut Checker<'_>, t: &Spanned<String>, base: &Path) -> Option<Text
         "uv_grid" => Some(Texture::uv_grid(512)),
         "mip_levels" => Some(Texture::mip_levels(512)),
         "bumps" => Some(Texture::bumps(512, 8)),
+        "relief" => Some(Texture::relief(512, 256, 64)),
         "bump_normals" => Some(Texture::bump_normals(512, 8, 6.0)),
         written => match Texture::load(&c.file_beside(t.span(), base, written)?) {
             Ok(t) => Some(t),
             Err(e) => {
                 c.error(
                     t.span(),
-                    format!("{e} (a texture is \"checkerboard\", \"uv_grid\", \"mip_levels\", \"bumps\", \"bump_normals\" or a PNG/JPEG path)"),
+                    format!("{e} (a texture is \"checkerboard\", \"uv_grid\", \"mip_levels\", \"bumps\", \"relief\", \"bump_normals\" or a PNG/JPEG path)"),
                 );
                 None
             }

@@ -1,28 +1,58 @@
 //! Two frames of the same scene compared pixel by pixel — a student's program against pipelens'
 //! own stage: which pixels match (the same coverage, every colour channel within a tolerance of
-//! 8-bit steps), the largest difference, the first pixel that does not match, and a picture of
-//! the difference.
+//! 8-bit steps, and where asked the same depth and the same owning triangle), the largest
+//! difference, the first pixel that does not match, and a picture of the difference.
 
 use image::{Rgba, RgbaImage};
 
 use super::FrameCapture;
 
+/// What must agree for a pixel to match, beside its coverage.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Criteria {
+    /// How many 8-bit steps each colour channel may differ.
+    pub tolerance: f32,
+    /// How far the window depths `z_w ∈ [0, 1]` of a pixel both frames cover may differ, when
+    /// depth is compared: a projection with the wrong z keeps the picture and moves every depth.
+    pub depth: Option<f32>,
+    /// Whether the same triangle must own the pixel: where the student decides which samples a
+    /// triangle covers, a triangle that takes its neighbour's pixels shows nothing else when both
+    /// have the same colour.
+    pub owner: bool,
+}
+
+impl Criteria {
+    /// The colour within `tolerance` steps and the coverage alone.
+    #[must_use]
+    pub const fn colour(tolerance: f32) -> Self {
+        Self {
+            tolerance,
+            depth: None,
+            owner: false,
+        }
+    }
+}
+
 /// What comparing a frame with a reference found.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Difference {
-    /// Pixels whose coverage is the same and whose colour is within the tolerance.
+    /// Pixels that match by every criterion.
     pub matching: u64,
     /// Every pixel of the frame.
     pub total: u64,
     /// Pixels covered in one frame and not in the other.
     pub coverage_differs: u64,
+    /// Pixels both frames cover at depths further apart than the criteria allow.
+    pub depth_differs: u64,
+    /// Pixels both frames cover, owned by different triangles (when that is compared).
+    pub owner_differs: u64,
     /// The largest colour difference of a pixel, in 8-bit steps (`max_c |a_c − b_c|·255`).
     pub largest: f32,
     /// The first pixel that does not match, in window coordinates (y up), reading the picture
     /// as a page (from its top row, left to right): where to look first.
     pub first: Option<(u32, u32)>,
-    /// The tolerance used, in 8-bit steps.
-    pub tolerance: f32,
+    /// What was compared.
+    pub criteria: Criteria,
 }
 
 impl Difference {
@@ -33,14 +63,44 @@ impl Difference {
     }
 }
 
-/// One pixel's colour difference in 8-bit steps, and whether its coverage differs.
-fn pixel_difference(a: &FrameCapture, b: &FrameCapture, i: usize) -> (f32, bool) {
-    let (pa, pb) = (&a.pixels, &b.pixels);
-    let step = |x: f32| (x.clamp(0.0, 1.0) * 255.0).round();
-    let colour = (0..3)
-        .map(|c| (step(pa.color[i][c]) - step(pb.color[i][c])).abs())
-        .fold(0.0_f32, f32::max);
-    (colour, pa.coverage[i] != pb.coverage[i])
+/// How one pixel differs.
+#[derive(Clone, Copy, Debug, Default)]
+struct PixelDifference {
+    /// The largest channel's difference in 8-bit steps.
+    colour: f32,
+    /// Covered by a different number of samples.
+    coverage: bool,
+    /// Covered by both, at depths further apart than allowed.
+    depth: bool,
+    /// Covered by both, owned by different triangles (when compared).
+    owner: bool,
+}
+
+impl PixelDifference {
+    /// Pixel `i` of `a` against `b`.
+    fn of(a: &FrameCapture, b: &FrameCapture, i: usize, criteria: &Criteria) -> Self {
+        let (pa, pb) = (&a.pixels, &b.pixels);
+        let step = |x: f32| (x.clamp(0.0, 1.0) * 255.0).round();
+        let colour = (0..3)
+            .map(|c| (step(pa.color[i][c]) - step(pb.color[i][c])).abs())
+            .fold(0.0_f32, f32::max);
+        let coverage = pa.coverage[i] != pb.coverage[i];
+        let both = pa.coverage[i] > 0 && pb.coverage[i] > 0;
+        Self {
+            colour,
+            coverage,
+            depth: both
+                && criteria
+                    .depth
+                    .is_some_and(|t| !((pa.depth[i] - pb.depth[i]).abs() <= t)),
+            owner: both && criteria.owner && pa.primitive[i] != pb.primitive[i],
+        }
+    }
+
+    /// Whether it matches.
+    fn matches(&self, criteria: &Criteria) -> bool {
+        self.colour <= criteria.tolerance && !self.coverage && !self.depth && !self.owner
+    }
 }
 
 impl FrameCapture {
@@ -49,6 +109,18 @@ impl FrameCapture {
     /// of the reference's. `None` when the sizes differ.
     #[must_use]
     pub fn difference(&self, reference: &FrameCapture, tolerance: f32) -> Option<Difference> {
+        self.difference_by(reference, Criteria::colour(tolerance))
+    }
+
+    /// Compares this frame with `reference` (same size) by `criteria`: a pixel matches when
+    /// both cover it equally, its colour channels are within the tolerance and, where asked,
+    /// its depths and its owning triangle agree. `None` when the sizes differ.
+    #[must_use]
+    pub fn difference_by(
+        &self,
+        reference: &FrameCapture,
+        criteria: Criteria,
+    ) -> Option<Difference> {
         let (w, h) = (self.width(), self.height());
         if (w, h) != (reference.width(), reference.height()) {
             return None;
@@ -57,18 +129,22 @@ impl FrameCapture {
             matching: 0,
             total: u64::from(w) * u64::from(h),
             coverage_differs: 0,
+            depth_differs: 0,
+            owner_differs: 0,
             largest: 0.0,
             first: None,
-            tolerance,
+            criteria,
         };
         // As a page is read: the top image row first (window row h − 1), left to right.
         let grid = self.grid();
         for y in (0..h).rev() {
             for x in 0..w {
-                let (colour, coverage) = pixel_difference(self, reference, grid.index(x, y));
-                d.largest = d.largest.max(colour);
-                d.coverage_differs += u64::from(coverage);
-                if colour <= tolerance && !coverage {
+                let p = PixelDifference::of(self, reference, grid.index(x, y), &criteria);
+                d.largest = d.largest.max(p.colour);
+                d.coverage_differs += u64::from(p.coverage);
+                d.depth_differs += u64::from(p.depth);
+                d.owner_differs += u64::from(p.owner);
+                if p.matches(&criteria) {
                     d.matching += 1;
                 } else if d.first.is_none() {
                     d.first = Some((x, y));
@@ -79,10 +155,11 @@ impl FrameCapture {
     }
 
     /// The difference as a picture: matching pixels dark grey (their reference's luminance at a
-    /// quarter), differing ones red, brighter the larger the difference (full red at 64 steps
-    /// and beyond), pixels whose coverage differs yellow. Image rows run down.
+    /// quarter), pixels whose colour differs red, brighter the larger the difference (full red
+    /// at 64 steps and beyond), pixels whose coverage differs yellow, pixels at another depth
+    /// blue, pixels another triangle owns magenta. Image rows run down.
     #[must_use]
-    pub fn difference_image(&self, reference: &FrameCapture, tolerance: f32) -> RgbaImage {
+    pub fn difference_image(&self, reference: &FrameCapture, criteria: Criteria) -> RgbaImage {
         let w = self.width();
         // Both the buffers and the picture run top row first: image pixel (x, row) is buffer
         // index row·w + x, the window position (x, h − 1 − row).
@@ -91,12 +168,16 @@ impl FrameCapture {
             if i >= reference.pixels.color.len() {
                 return Rgba([0, 0, 0, 255]);
             }
-            let (colour, coverage) = pixel_difference(self, reference, i);
-            if coverage {
+            let p = PixelDifference::of(self, reference, i, &criteria);
+            if p.coverage {
                 Rgba([255, 220, 0, 255])
-            } else if colour > tolerance {
-                let t = (colour / 64.0).clamp(0.25, 1.0);
+            } else if p.colour > criteria.tolerance {
+                let t = (p.colour / 64.0).clamp(0.25, 1.0);
                 Rgba([(255.0 * t) as u8, 30, 30, 255])
+            } else if p.owner {
+                Rgba([230, 60, 230, 255])
+            } else if p.depth {
+                Rgba([60, 140, 255, 255])
             } else {
                 let [r, g, b] = reference.pixels.color[i];
                 let y = (0.2126 * r + 0.7152 * g + 0.0722 * b).clamp(0.0, 1.0);

@@ -14,7 +14,7 @@ mod images;
 mod inspect;
 mod pixels;
 
-pub use difference::Difference;
+pub use difference::{Criteria, Difference};
 pub use explain::*;
 pub use inspect::*;
 pub use pixels::*;

@@ -207,3 +207,59 @@ pub struct Environment {
     /// 0: no reflection, 1: a perfect mirror.
     pub reflectivity: f32,
 }
+
+/// The built-in height and normal maps the lessons' surface detail uses.
+impl Texture {
+    /// A height map of round bumps on a grid (`count × count` of them), for bump mapping.
+    #[must_use]
+    pub fn bumps(size: u32, count: u32) -> Self {
+        let mut t = Self::from_fn("bumps", size, |i, j| {
+            let cell = size as f32 / count.max(1) as f32;
+            let (x, y) = (
+                (i as f32 + 0.5) % cell / cell - 0.5,
+                (j as f32 + 0.5) % cell / cell - 0.5,
+            );
+            let r2 = (x * x + y * y) * 4.0;
+            Vec3::splat((1.0 - r2).max(0.0).sqrt())
+        });
+        t.name = "bumps".to_owned();
+        t
+    }
+
+    /// A relief for the labs: round bumps `cell` texels across on a `width × height` map that
+    /// is not square, with channels that differ — `(h, h², 1 − h)` for the bump's height `h` —
+    /// so that a bump map stepping by 1/h where it should step by 1/w, or a displacement reading
+    /// one channel where it should read the luminance, draws another picture.
+    #[must_use]
+    pub fn relief(width: u32, height: u32, cell: u32) -> Self {
+        let cell = cell.max(1) as f32;
+        let mut t = Self::from_fn_sized("relief", (width, height), |i, j| {
+            let (x, y) = (
+                (i as f32 + 0.5) % cell / cell - 0.5,
+                (j as f32 + 0.5) % cell / cell - 0.5,
+            );
+            let h = (1.0 - (x * x + y * y) * 4.0).max(0.0).sqrt();
+            Vec3::new(h, h * h, 1.0 - h)
+        });
+        t.name = "relief".to_owned();
+        t
+    }
+
+    /// The tangent-space normal map of the same bumps: from the height's central differences
+    /// `∂h/∂u, ∂h/∂v` (per texel, times `strength`), `n = normalize(−∂h/∂u, −∂h/∂v, 1)` stored
+    /// as `(n + 1)/2` — what a normal map holds, so that normal mapping reproduces bump mapping.
+    #[must_use]
+    pub fn bump_normals(size: u32, count: u32, strength: f32) -> Self {
+        let height = Self::bumps(size, count);
+        let l = &height.levels[0];
+        let h = |i: i64, j: i64| l.texel(i, j, Wrap::Repeat).x;
+        let mut t = Self::from_fn("bump_normals", size, |i, j| {
+            let (i, j) = (i64::from(i), i64::from(j));
+            let du = (h(i + 1, j) - h(i - 1, j)) / 2.0 * strength;
+            let dv = (h(i, j + 1) - h(i, j - 1)) / 2.0 * strength;
+            (Vec3::new(-du, -dv, 1.0).normalize() + Vec3::ONE) / 2.0
+        });
+        t.name = "bump_normals".to_owned();
+        t
+    }
+}

@@ -447,16 +447,25 @@ impl Texture {
     }
 
     fn from_fn(name: &str, size: u32, f: impl Fn(u32, u32) -> Vec3) -> Self {
-        let size = size.max(1);
-        let texels = (0..size)
-            .flat_map(|j| (0..size).map(move |i| (i, j)))
+        Self::from_fn_sized(name, (size, size), f)
+    }
+
+    /// A `width × height` texture whose texel `(i, j)` (j up) is `f(i, j)`.
+    fn from_fn_sized(
+        name: &str,
+        (width, height): (u32, u32),
+        f: impl Fn(u32, u32) -> Vec3,
+    ) -> Self {
+        let (width, height) = (width.max(1), height.max(1));
+        let texels = (0..height)
+            .flat_map(|j| (0..width).map(move |i| (i, j)))
             .map(|(i, j)| f(i, j))
             .collect();
         Self::from_level(
             name,
             Level {
-                width: size,
-                height: size,
+                width,
+                height,
                 texels,
             },
         )
@@ -492,42 +501,6 @@ pub fn level_color(k: u32) -> Vec3 {
         [0.70, 0.35, 0.90],
     ];
     Vec3::from(COLORS[(k as usize).min(COLORS.len() - 1)])
-}
-
-impl Texture {
-    /// A height map of round bumps on a grid (`count × count` of them), for bump mapping.
-    #[must_use]
-    pub fn bumps(size: u32, count: u32) -> Self {
-        let mut t = Self::from_fn("bumps", size, |i, j| {
-            let cell = size as f32 / count.max(1) as f32;
-            let (x, y) = (
-                (i as f32 + 0.5) % cell / cell - 0.5,
-                (j as f32 + 0.5) % cell / cell - 0.5,
-            );
-            let r2 = (x * x + y * y) * 4.0;
-            Vec3::splat((1.0 - r2).max(0.0).sqrt())
-        });
-        t.name = "bumps".to_owned();
-        t
-    }
-
-    /// The tangent-space normal map of the same bumps: from the height's central differences
-    /// `∂h/∂u, ∂h/∂v` (per texel, times `strength`), `n = normalize(−∂h/∂u, −∂h/∂v, 1)` stored
-    /// as `(n + 1)/2` — what a normal map holds, so that normal mapping reproduces bump mapping.
-    #[must_use]
-    pub fn bump_normals(size: u32, count: u32, strength: f32) -> Self {
-        let height = Self::bumps(size, count);
-        let l = &height.levels[0];
-        let h = |i: i64, j: i64| l.texel(i, j, Wrap::Repeat).x;
-        let mut t = Self::from_fn("bump_normals", size, |i, j| {
-            let (i, j) = (i64::from(i), i64::from(j));
-            let du = (h(i + 1, j) - h(i - 1, j)) / 2.0 * strength;
-            let dv = (h(i, j + 1) - h(i, j - 1)) / 2.0 * strength;
-            (Vec3::new(-du, -dv, 1.0).normalize() + Vec3::ONE) / 2.0
-        });
-        t.name = "bump_normals".to_owned();
-        t
-    }
 }
 
 #[cfg(test)]

@@ -546,7 +546,7 @@ fn the_first_wrong_pixel_and_the_difference_picture_are_upright() {
         empty.pixel_record(x, y).expect("in the window"),
     );
     assert_ne!(a.coverage, b.coverage, "the reported pixel differs");
-    let picture = drawn.difference_image(&empty, 1.0);
+    let picture = drawn.difference_image(&empty, pipeline::capture::Criteria::colour(1.0));
     let yellow = image::Rgba([255, 220, 0, 255]);
     let covered_rows: [(u32, &[u32]); 3] = [(3, &[0]), (4, &[0, 1]), (5, &[0, 1, 2])];
     for row in 0..6 {

@@ -1,0 +1,73 @@
+//! The values the command line takes, read with a clear message for each mistake: a stage by
+//! name, a window pixel `X,Y`, a line `X0,Y0,X1,Y1`, a viewport size `WIDTHxHEIGHT`.
+
+use std::str::FromStr;
+
+use pipeline::settings::MAX_VIEWPORT_SIDE;
+
+/// A stage by its name.
+pub(super) fn parse_stage(s: &str) -> Result<crate::vocabulary::Stage, String> {
+    crate::vocabulary::Stage::from_name(s).ok_or_else(|| {
+        "expected one of model, world, view, clip, ndc, viewport, rasterization, depth, shading, texturing, output"
+            .to_owned()
+    })
+}
+
+/// A window pixel `X,Y` (y up).
+pub(super) fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
+    let (x, y) = s
+        .split_once(',')
+        .ok_or_else(|| format!("expected X,Y such as 120,80, got \"{s}\""))?;
+    let n = |p: &str| {
+        p.trim()
+            .parse::<u32>()
+            .map_err(|_| format!("\"{p}\" is not a whole pixel coordinate"))
+    };
+    Ok((n(x)?, n(y)?))
+}
+
+/// A line `X0,Y0,X1,Y1` of image pixels.
+pub(super) fn parse_line(s: &str) -> Result<[f32; 4], String> {
+    let v: Vec<f32> = s
+        .split(',')
+        .map(|p| {
+            p.trim()
+                .parse::<f32>()
+                .map_err(|_| format!("\"{p}\" is not a number"))
+        })
+        .collect::<Result<_, _>>()?;
+    match v.as_slice() {
+        [a, b, c, d] if v.iter().all(|x| x.is_finite()) => Ok([*a, *b, *c, *d]),
+        _ => Err(format!("expected four numbers X0,Y0,X1,Y1, got \"{s}\"")),
+    }
+}
+
+/// A viewport size `WIDTHxHEIGHT`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Size {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+}
+
+impl FromStr for Size {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let (w, h) = s
+            .split_once(['x', 'X', '×'])
+            .ok_or_else(|| format!("expected WIDTHxHEIGHT such as 1280x720, got \"{s}\""))?;
+        let side = |v: &str| -> Result<u32, String> {
+            v.trim()
+                .parse::<u32>()
+                .ok()
+                .filter(|n| (1..=MAX_VIEWPORT_SIDE).contains(n))
+                .ok_or_else(|| format!("each side must be a whole number from 1 to {MAX_VIEWPORT_SIDE}, got \"{v}\""))
+        };
+        Ok(Self {
+            width: side(w)?,
+            height: side(h)?,
+        })
+    }
+}

@@ -1,0 +1,192 @@
+//! A lab that asks the student to compute something does not take pipelens' own as the answer:
+//! its `exercise.forbid` lists the uniforms (`view`, `projection`, `normal_matrix`) the student's
+//! code may not declare and the functions (`texture`) it may not call. A name pipelens sets as a
+//! uniform is refused where it is declared `uniform`; any other name where it is called. A local
+//! variable that happens to be called `view` is no shortcut.
+
+use crate::vocabulary::Lang;
+
+/// A forbidden name found in the student's code.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Shortcut {
+    /// The name.
+    pub name: String,
+    /// Whether it is a uniform pipelens sets (else a function).
+    pub uniform: bool,
+    /// The file it is in, as the shader panel's tab names it (`shader.vert`, `inside.glsl`).
+    pub file: String,
+    /// Its line (from 1).
+    pub line: usize,
+}
+
+impl Shortcut {
+    /// Why the check refuses it, in words.
+    #[must_use]
+    pub fn words(&self, lang: Lang) -> String {
+        let (name, file, line) = (&self.name, &self.file, self.line);
+        match (self.uniform, lang) {
+            (true, Lang::En) => format!(
+                "Not yet: {file} line {line} declares pipelens' own `{name}` — this lab asks you to compute it yourself, so the uniform is not yours to use here."
+            ),
+            (true, Lang::Zh) => format!(
+                "还没有通过：{file} 第 {line} 行声明了 pipelens 自带的 `{name}`——本练习要求你自己算出它，这里不能使用这个 uniform。"
+            ),
+            (false, Lang::En) => format!(
+                "Not yet: {file} line {line} calls `{name}()` — this lab asks you to compute what it returns yourself, so it is not yours to call here."
+            ),
+            (false, Lang::Zh) => format!(
+                "还没有通过：{file} 第 {line} 行调用了 `{name}()`——本练习要求你自己算出它的结果，这里不能调用它。"
+            ),
+        }
+    }
+}
+
+/// The student's sources in a scene's code, each with the file name the shader panel's Save
+/// gives it: `shader.vert`, `shader.frag`, `inside.glsl`, …
+#[must_use]
+pub fn sources(code: &pipeline::scene::StudentCode) -> Vec<(String, &str)> {
+    let mut out = Vec::new();
+    if let Some(sh) = &code.shader {
+        out.push(("shader.vert".to_owned(), sh.programs.vertex.source.as_str()));
+        out.push((
+            "shader.frag".to_owned(),
+            sh.programs.fragment.source.as_str(),
+        ));
+    }
+    for kind in pipeline::shader::HookKind::ALL {
+        if let Some(h) = code.hook(kind) {
+            out.push((format!("{}.glsl", kind.key()), h.source.as_str()));
+        }
+    }
+    out
+}
+
+/// The first use of a forbidden name in `sources` (each a file name and its text), in the
+/// order given: a `uniform` declaration of a name pipelens sets as a uniform, a call of any
+/// other name. Comments are skipped, and so is a file the student left as the lab's `starter`
+/// has it (pipelens' own vertex shader may read a texture where the lab is about the fragment
+/// stage's).
+#[must_use]
+pub fn find(
+    forbid: &[String],
+    sources: &[(String, &str)],
+    starter: &[(String, &str)],
+) -> Option<Shortcut> {
+    if forbid.is_empty() {
+        return None;
+    }
+    for (file, text) in sources {
+        if starter.iter().any(|(f, t)| f == file && t == text) {
+            continue;
+        }
+        let tokens = tokens(text);
+        let mut in_uniform = false;
+        for (k, (token, line)) in tokens.iter().enumerate() {
+            match token.as_str() {
+                "uniform" => in_uniform = true,
+                ";" => in_uniform = false,
+                _ => {}
+            }
+            let Some(name) = forbid.iter().find(|n| *n == token) else {
+                continue;
+            };
+            let uniform = pipeline::shader::interface::uniform(name).is_some();
+            let called = tokens.get(k + 1).is_some_and(|(t, _)| t == "(");
+            if (uniform && in_uniform) || (!uniform && called) {
+                return Some(Shortcut {
+                    name: name.clone(),
+                    uniform,
+                    file: file.clone(),
+                    line: *line,
+                });
+            }
+        }
+    }
+    None
+}
+
+/// The identifiers and punctuation of GLSL source with their lines, comments left out.
+fn tokens(text: &str) -> Vec<(String, usize)> {
+    let mut out = Vec::new();
+    let mut chars = text.chars().peekable();
+    let mut line = 1;
+    while let Some(c) = chars.next() {
+        match c {
+            '\n' => line += 1,
+            '/' if chars.peek() == Some(&'/') => {
+                for c in chars.by_ref() {
+                    if c == '\n' {
+                        line += 1;
+                        break;
+                    }
+                }
+            }
+            '/' if chars.peek() == Some(&'*') => {
+                chars.next();
+                let mut star = false;
+                for c in chars.by_ref() {
+                    if c == '\n' {
+                        line += 1;
+                    }
+                    if star && c == '/' {
+                        break;
+                    }
+                    star = c == '*';
+                }
+            }
+            c if c.is_ascii_alphabetic() || c == '_' => {
+                let mut word = String::from(c);
+                while let Some(&n) = chars.peek() {
+                    if !(n.is_ascii_alphanumeric() || n == '_') {
+                        break;
+                    }
+                    word.push(n);
+                    chars.next();
+                }
+                out.push((word, line));
+            }
+            c if c.is_whitespace() => {}
+            c => out.push((c.to_string(), line)),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_declared_uniform_and_a_called_function_are_found_a_local_is_not() {
+        let forbid = ["view".to_owned(), "texture".to_owned()];
+        let local =
+            "mat4 look_at() {\n    mat4 view = mat4(1.0); // not the uniform\n    return view;\n}";
+        let none: &[(String, &str)] = &[];
+        assert_eq!(find(&forbid, &[("shader.vert".into(), local)], none), None);
+        let declared =
+            "uniform mat4 model;\n// uniform mat4 view;\nuniform mat4 projection,\n    view;\n";
+        assert_eq!(
+            find(&forbid, &[("shader.vert".into(), declared)], none),
+            Some(Shortcut {
+                name: "view".into(),
+                uniform: true,
+                file: "shader.vert".into(),
+                line: 4
+            })
+        );
+        let called = "/* texture(tex, uv) */\nvec3 c = texture (tex, uv).rgb;";
+        let found = find(&forbid, &[("shader.frag".into(), called)], none).expect("a call");
+        assert_eq!((found.line, found.uniform), (2, false));
+        assert_eq!(
+            find(
+                &forbid,
+                &[("shader.frag".into(), "float texture = 1.0;")],
+                none
+            ),
+            None
+        );
+        // The starter's own file, unchanged, is not the student's shortcut.
+        let own = [("shader.vert".to_owned(), called)];
+        assert_eq!(find(&forbid, &own, &own), None);
+    }
+}
