@@ -1,5 +1,6 @@
 //! `pipelens bench`: frame times per stage for standard scenes. It measures; it asserts nothing.
 
+pub mod grade;
 pub mod handouts;
 mod shaders;
 pub mod steps;

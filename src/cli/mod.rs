@@ -170,6 +170,12 @@ pub enum Command {
         /// frame time a page reports beside it (`scripts/web-test.sh`).
         #[arg(long, value_name = "LESSON", conflicts_with_all = ["handouts", "shaders"])]
         steps: Option<String>,
+        /// Instead: this many hand-ins of lesson 10's specular lab (right, wrong and broken)
+        /// graded as `pipelens grade` grades them, timed (200 in ≤ 60 s on 2 threads is the
+        /// target).
+        #[arg(long, value_name = "N", num_args = 0..=1, default_missing_value = "200",
+              conflicts_with_all = ["handouts", "shaders", "steps"])]
+        grade: Option<usize>,
         /// Frames per case (the median is shown).
         #[arg(long)]
         frames: Option<usize>,
@@ -298,8 +304,9 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
     }
 }
 
-/// `pipelens bench` in its four forms: the stages (with llvmpipe alongside on request), the
-/// handouts, the student's shaders, a lesson's steps as the app renders them.
+/// `pipelens bench` in its five forms: the stages (with llvmpipe alongside on request), the
+/// handouts, the student's shaders, a lesson's steps as the app renders them, a class's lab
+/// hand-ins graded.
 fn run_bench(command: Command) -> Result<ExitCode> {
     match command {
         Command::Bench {
@@ -319,6 +326,13 @@ fn run_bench(command: Command) -> Result<ExitCode> {
         } => {
             let mut out = std::io::stdout().lock();
             crate::bench::shader_rows(frames.unwrap_or(if quick { 1 } else { 5 }), &mut out)?;
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Bench {
+            grade: Some(count), ..
+        } => {
+            let mut out = std::io::stdout().lock();
+            crate::bench::grade::run(count, &mut out)?;
             Ok(ExitCode::SUCCESS)
         }
         Command::Bench {
@@ -342,6 +356,7 @@ fn run_bench(command: Command) -> Result<ExitCode> {
             handouts: false,
             shaders: false,
             steps: None,
+            grade: None,
         } => {
             let mut out = std::io::stdout().lock();
             crate::bench::run(quick, frames, &mut out)?;

@@ -144,8 +144,11 @@ struct Parser {
     at: usize,
 }
 
-/// The functions a typed cell may call, by name: what each does to its argument.
-const FUNCTIONS: [(&str, fn(f64) -> f64); 13] = [
+/// A function a typed cell may call: its name and what it does to its argument.
+type Function = (&'static str, fn(f64) -> f64);
+
+/// The functions a typed cell may call.
+const FUNCTIONS: [Function; 13] = [
     ("sqrt", f64::sqrt),
     ("sin", f64::sin),
     ("cos", f64::cos),

@@ -38,7 +38,9 @@ pub fn complaint(c: &Complaint, lang: Lang) -> Option<String> {
             "文件提前结束了：缺少 `}` 或 `)`".into(),
         ),
         C::UnknownVariable(n) => t(
-            format!("`{n}` is not declared here: declare it before its first use, or check its spelling"),
+            format!(
+                "`{n}` is not declared here: declare it before its first use, or check its spelling"
+            ),
             format!("`{n}` 在这里没有声明：请在第一次使用前声明它，或检查拼写"),
         ),
         C::UnknownType(n) => t(
@@ -50,7 +52,9 @@ pub fn complaint(c: &Complaint, lang: Lang) -> Option<String> {
             "这个值没有这样的成员或分量".into(),
         ),
         C::UnknownField(n) => t(
-            format!("this value has no field or component `{n}` (a vec3 has x, y, z; a vec2 has no z)"),
+            format!(
+                "this value has no field or component `{n}` (a vec3 has x, y, z; a vec2 has no z)"
+            ),
             format!("这个值没有成员或分量 `{n}`（vec3 有 x、y、z；vec2 没有 z）"),
         ),
         C::UnknownFunction(n) if n.is_empty() => t(
@@ -58,17 +62,34 @@ pub fn complaint(c: &Complaint, lang: Lang) -> Option<String> {
             "没有与这次调用匹配的函数：请检查函数名和参数的类型".into(),
         ),
         C::UnknownFunction(n) => t(
-            format!("no function `{n}` takes these arguments: check its name, the number and types of its arguments, and that it is declared above this line"),
-            format!("没有接受这些参数的函数 `{n}`：请检查函数名、参数的个数和类型，以及它是否在这一行之前声明"),
+            format!(
+                "no function `{n}` takes these arguments: check its name, the number and types of its arguments, and that it is declared above this line"
+            ),
+            format!(
+                "没有接受这些参数的函数 `{n}`：请检查函数名、参数的个数和类型，以及它是否在这一行之前声明"
+            ),
         ),
         C::AlreadyDeclared(n) => t(
-            format!("`{n}` is declared twice here: give the second one another name, or assign to the first without its type"),
+            format!(
+                "`{n}` is declared twice here: give the second one another name, or assign to the first without its type"
+            ),
             format!("`{n}` 在这里声明了两次：给第二个换个名字，或去掉类型直接给第一个赋值"),
         ),
         C::FunctionAlreadyDefined => t(
             "this function is defined twice".into(),
             "这个函数定义了两次".into(),
         ),
+        _ => return form(c, lang),
+    })
+}
+
+/// The sentence for a complaint about a form of GLSL (an operator, a constructor, a version…),
+/// or `None` where the English message is all there is.
+fn form(c: &Complaint, lang: Lang) -> Option<String> {
+    use Complaint as C;
+    let en = lang == Lang::En;
+    let t = |e: String, z: String| if en { e } else { z };
+    Some(match c {
         C::CannotCombine => t(
             "the two sides of this operator have types it cannot combine: a vec3 with a vec4 needs v.xyz or vec4(v, 1.0); an int with a float needs float(i) or 1.0 for 1".into(),
             "这个运算符两边的类型不能一起运算：vec3 与 vec4 需要 v.xyz 或 vec4(v, 1.0)；int 与 float 需要 float(i)，或把 1 写成 1.0".into(),
@@ -121,7 +142,7 @@ pub fn complaint(c: &Complaint, lang: Lang) -> Option<String> {
             format!("pipelens does not run this form of GLSL yet ({what})"),
             format!("pipelens 还不能运行这种 GLSL 写法（{what}）"),
         ),
-        C::Other => return None,
+        _ => return None,
     })
 }
 
@@ -145,9 +166,9 @@ mod tests {
     #[test]
     fn a_missing_semicolon_is_a_sentence_at_its_own_line() {
         let src = "#version 330 core\nout vec4 color;\nvoid main() {\n    float x = 1.0\n    vec3 c = vec3(x);\n    color = vec4(c, 1.0);\n}\n";
-        let errors = pipeline::shader::compile(pipeline::shader::Stage::Fragment, src)
-            .err()
-            .expect("it does not compile");
+        let Err(errors) = pipeline::shader::compile(pipeline::shader::Stage::Fragment, src) else {
+            panic!("it compiles");
+        };
         let e = &errors[0];
         assert_eq!(e.complaint, Complaint::MissingSemicolon);
         assert_eq!((e.line, e.column), (4, 18), "after `1.0` on line 4");

@@ -72,10 +72,10 @@ fn csv_rows(text: &str) -> Vec<Vec<String>> {
         .collect()
 }
 
-#[test]
-fn a_class_is_graded_right_wrong_broken_and_hostile_alike() {
-    let tmp = tempfile::tempdir().expect("a temporary folder");
-    let root = tmp.path();
+/// A class's hand-ins under `root`, each with whether it should pass and the words its grade
+/// should hold: right twice, a loose file, the starter, Phong's r·v, a syntax error, an endless
+/// loop, binary bytes, 50 MB, a link out of its folder, an empty folder, a missing path.
+fn class(root: &Path) -> Vec<(PathBuf, bool, &'static str)> {
     let right = "        vec3 h = normalize(l + v);
         if (n_dot_l > 0.0) {
             sum += f * ks * light.intensity * pow(max(dot(n, h), 0.0), shininess);
@@ -89,7 +89,7 @@ fn a_class_is_graded_right_wrong_broken_and_hostile_alike() {
         if (n_dot_l > 0.0) {
             sum += f * ks * light.intensity * pow(max(dot(r, v), 0.0), shininess);
         }";
-    let mut expected: Vec<(PathBuf, bool, &str)> = vec![
+    let mut expected: Vec<(PathBuf, bool, &'static str)> = vec![
         (
             hand_in(root, "ana", solved(right).as_bytes()),
             true,
@@ -146,7 +146,7 @@ fn a_class_is_graded_right_wrong_broken_and_hostile_alike() {
     expected.push((huge, false, "a shader is at most"));
     let outside = root.join("ivan");
     std::fs::create_dir_all(&outside).expect("a folder");
-    let secret = tmp.path().join("secret.frag");
+    let secret = root.join("secret.frag");
     std::fs::write(&secret, solved(right)).expect("written");
     #[cfg(unix)]
     std::os::unix::fs::symlink(&secret, outside.join("shader.frag")).expect("a link");
@@ -160,6 +160,14 @@ fn a_class_is_graded_right_wrong_broken_and_hostile_alike() {
     expected.push((loose, true, "Passed"));
     expected.push((root.join("nobody"), false, "cannot be read"));
 
+    expected
+}
+
+#[test]
+fn a_class_is_graded_right_wrong_broken_and_hostile_alike() {
+    let tmp = tempfile::tempdir().expect("a temporary folder");
+    let root = tmp.path();
+    let expected = class(root);
     let csv = root.join("grades.csv");
     let out = Command::new(env!("CARGO_BIN_EXE_pipelens"))
         .args(["grade", LESSON, "--step", STEP, "--csv"])
@@ -301,4 +309,23 @@ fn grade_says_what_is_wrong_with_its_own_arguments() {
         err.contains("no built-in lesson is called no-such-lesson.toml"),
         "{err}"
     );
+}
+
+/// `pipelens bench --grade N` grades N hand-ins of the specular lab and says how long each took
+/// and how many passed: of every five, the two right ones (the hand-ins cycle through two right
+/// fillings, the ungated term, Phong's r·v and one that does not compile).
+#[test]
+fn bench_grade_times_a_class() {
+    let o = Command::new(env!("CARGO_BIN_EXE_pipelens"))
+        .args(["bench", "--grade", "5"])
+        .output()
+        .expect("pipelens runs");
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        o.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(stdout.contains("graded 5 in"), "{stdout}");
+    assert!(stdout.contains(", 2 passed"), "{stdout}");
 }

@@ -74,7 +74,7 @@ fn the_inside_lab_in_the_app_passes_and_keeps_the_inside_test() {
     assert_eq!(d.total, 24 * 16);
     assert!(d.coverage_differs > 0 && d.owner_differs > 0, "{d:?}");
     assert!(
-        h.query_by_label_contains(&format!("belong to another triangle"))
+        h.query_by_label_contains("belong to another triangle")
             .is_some()
     );
     let (_, _, todo, solution) = SOLUTIONS

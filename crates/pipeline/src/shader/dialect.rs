@@ -355,9 +355,20 @@ pub fn adapt(src: &str, stage: Stage) -> Result<Adapted, Vec<DialectError>> {
     if !errors.is_empty() {
         return Err(errors);
     }
+    Ok(assemble(src, &blanks, preamble, declarations))
+}
+
+/// What naga reads: the preamble, then the student's text with `blanks` blanked and the forms
+/// naga refuses rewritten.
+fn assemble(
+    src: &str,
+    blanks: &[Range<usize>],
+    preamble: Preamble,
+    declarations: Vec<Declaration>,
+) -> Adapted {
     let mut student = src.as_bytes().to_vec();
     for r in blanks {
-        for b in &mut student[r] {
+        for b in &mut student[r.clone()] {
             if *b != b'\n' {
                 *b = b' ';
             }
@@ -368,13 +379,13 @@ pub fn adapt(src: &str, stage: Stage) -> Result<Adapted, Vec<DialectError>> {
     // Valid GLSL naga refuses, rewritten (stores through a swizzle of an indexed value).
     let (student, edits) = super::lowering::swizzle_stores(&student);
     let preamble_len = preamble.text.len();
-    Ok(Adapted {
+    Adapted {
         text: preamble.text + &student,
         preamble_len,
         edits,
         pieces: preamble.pieces,
         declarations,
-    })
+    }
 }
 
 /// Whether `word` stands in `src` as a whole word.

@@ -165,6 +165,31 @@ pub struct Program {
     pub declarations: Vec<dialect::Declaration>,
 }
 
+/// naga's parse errors at the student's lines, each with its complaint (a missing `;` at the
+/// end of the line that lacks it).
+fn parse_errors(
+    e: &naga::front::glsl::ParseErrors,
+    source: &str,
+    adapted: &dialect::Adapted,
+) -> Vec<ShaderError> {
+    e.errors
+        .iter()
+        .map(|err| {
+            let span = err
+                .meta
+                .to_range()
+                .map_or(0..0, |r| adapted.original_range(r));
+            let (complaint, at) = complaint::of_parse(&err.kind, source, span);
+            let mut e = error_at(source, at, check::plain(&err.kind.to_string()));
+            if complaint == Complaint::MissingSemicolon {
+                e.message = "a `;` is missing at the end of this line".to_owned();
+            }
+            e.complaint = complaint;
+            e
+        })
+        .collect()
+}
+
 /// Compiles the student's GLSL for `stage`.
 ///
 /// # Errors
@@ -182,24 +207,9 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
         Stage::Vertex => naga::ShaderStage::Vertex,
         Stage::Fragment => naga::ShaderStage::Fragment,
     });
-    let module = frontend.parse(&options, &adapted.text).map_err(|e| {
-        e.errors
-            .iter()
-            .map(|err| {
-                let span = err
-                    .meta
-                    .to_range()
-                    .map_or(0..0, |r| adapted.original_range(r));
-                let (complaint, at) = complaint::of_parse(&err.kind, source, span);
-                let mut e = error_at(source, at, check::plain(&err.kind.to_string()));
-                if complaint == Complaint::MissingSemicolon {
-                    e.message = "a `;` is missing at the end of this line".to_owned();
-                }
-                e.complaint = complaint;
-                e
-            })
-            .collect::<Vec<_>>()
-    })?;
+    let module = frontend
+        .parse(&options, &adapted.text)
+        .map_err(|e| parse_errors(&e, source, &adapted))?;
     let info = naga::valid::Validator::new(
         naga::valid::ValidationFlags::all(),
         naga::valid::Capabilities::default(),
