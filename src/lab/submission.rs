@@ -151,8 +151,9 @@ fn compile_failed(errors: &[pipeline::shader::StageError], lang: Lang) -> String
             (pipeline::shader::Stage::Vertex, Lang::Zh) => "顶点着色器",
             (pipeline::shader::Stage::Fragment, Lang::Zh) => "片元着色器",
         };
+        let comma = if lang == Lang::Zh { "，" } else { ", " };
         format!(
-            "{stage}, {}",
+            "{stage}{comma}{}",
             crate::vocabulary::compile::message(&e.error, lang)
         )
     });

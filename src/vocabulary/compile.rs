@@ -20,10 +20,13 @@ pub fn complaint(c: &Complaint, lang: Lang) -> Option<String> {
         C::Unexpected { found, expected } => {
             let list = expected
                 .iter()
-                .map(|e| format!("`{e}`"))
+                .map(|e| token_words(e, lang))
                 .collect::<Vec<_>>();
-            let (or, found) = (if en { " or " } else { "或" }, found.trim());
-            match (found.is_empty(), en) {
+            let found = found.trim().escape_debug().to_string();
+            let or = if en { " or " } else { "或" };
+            match (found.is_empty() || list.is_empty(), en) {
+                _ if list.is_empty() && en => format!("`{found}` cannot stand here"),
+                _ if list.is_empty() => format!("这里不能出现 `{found}`"),
                 (true, true) => format!("the file ends where {} should follow", list.join(or)),
                 (true, false) => format!("文件在应当出现 {} 的地方结束了", list.join(or)),
                 (false, true) => format!(
@@ -144,6 +147,23 @@ fn form(c: &Complaint, lang: Lang) -> Option<String> {
         ),
         _ => return None,
     })
+}
+
+/// An expected token as the sentence says it: a symbol in backticks, a kind of token in words.
+fn token_words(token: &str, lang: Lang) -> String {
+    let zh = match token {
+        "a name" => "一个名字",
+        "a type" => "一个类型",
+        "a whole number" => "一个整数",
+        "a number" => "一个数",
+        "true or false" => "true 或 false",
+        "the end of the file" => "文件结尾",
+        symbol => return format!("`{symbol}`"),
+    };
+    match lang {
+        Lang::En => token.to_owned(),
+        Lang::Zh => zh.to_owned(),
+    }
 }
 
 /// A compile message as the student reads it: its line and column, then the sentence in

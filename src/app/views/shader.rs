@@ -454,13 +454,14 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
     for e in &editor.errors {
         ui.label(
             RichText::new(format!(
-                "{}, {}",
+                "{}{}{}",
                 match (e.stage, lang) {
                     (Stage::Vertex, Lang::En) => "vertex shader",
                     (Stage::Fragment, Lang::En) => "fragment shader",
                     (Stage::Vertex, Lang::Zh) => "顶点着色器",
                     (Stage::Fragment, Lang::Zh) => "片元着色器",
                 },
+                if lang == Lang::Zh { "，" } else { ", " },
                 crate::vocabulary::compile::message(&e.error, lang)
             ))
             .monospace()
