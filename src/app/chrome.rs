@@ -215,6 +215,17 @@ impl PipelensApp {
             {
                 self.download_handout();
             }
+            if self.session.lesson.is_some()
+                && ui
+                    .button(lang.tr("Download my work", "下载我的作业"))
+                    .on_hover_text(lang.tr(
+                        "One file with this lesson's code you last ran at each step and the answers you typed (LESSON-work.toml): hand it in; a teacher grades it with `pipelens grade LESSON FILE`.",
+                        "一个文件，包含你在本课每一步最后运行的代码和填写的答案（LESSON-work.toml）：交上这个文件；老师用 `pipelens grade 课程 文件` 评分。",
+                    ))
+                    .clicked()
+            {
+                self.export_work();
+            }
             return;
         }
         let busy = self.export_result.is_some();
@@ -255,6 +266,17 @@ impl PipelensApp {
                     .clicked()
             {
                 self.start_handout_export();
+            }
+            if self.session.lesson.is_some()
+                && ui
+                    .button(lang.tr("Export my work", "导出我的作业"))
+                    .on_hover_text(lang.tr(
+                        "One file with this lesson's code you last ran at each step and the answers you typed (LESSON-work.toml, into the folder above): hand it in; a teacher grades it with `pipelens grade LESSON FILE`.",
+                        "一个文件，包含你在本课每一步最后运行的代码和填写的答案（LESSON-work.toml，写入上面的文件夹）：交上这个文件；老师用 `pipelens grade 课程 文件` 评分。",
+                    ))
+                    .clicked()
+            {
+                self.export_work();
             }
         });
         if let Some(cancel) = self.export_cancel.as_ref().filter(|_| busy)

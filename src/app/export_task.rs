@@ -158,3 +158,33 @@ impl PipelensApp {
         self.export_result = None;
     }
 }
+
+impl PipelensApp {
+    /// **Export my work**: the open lesson's code last run at each step and what was typed into
+    /// each answer, as one file (`LESSON-work.toml`) that `pipelens grade` reads — written into
+    /// the Export menu's folder, or downloaded in the browser.
+    pub(super) fn export_work(&mut self) {
+        let lang = self.session.lang;
+        let Some(player) = &self.session.lesson else {
+            return;
+        };
+        let work = crate::app::progress::work(&self.session.progress, &player.lesson);
+        let name = format!("{}-work.toml", player.lesson.id);
+        let dir = PathBuf::from(self.export_dir.trim());
+        let result = work.to_text().and_then(|text| {
+            super::platform::download(&name, text.as_bytes(), "application/toml", &dir)
+        });
+        self.export_message = Some(match result {
+            Ok(file) => (
+                true,
+                format!(
+                    "{} {file} ({} {})",
+                    lang.tr("Your work saved:", "你的作业已保存："),
+                    work.steps.len(),
+                    lang.tr("steps with work", "个步骤有作业")
+                ),
+            ),
+            Err(e) => (false, e),
+        });
+    }
+}

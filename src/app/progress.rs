@@ -240,3 +240,43 @@ impl Progress {
         self.lessons.get(id)
     }
 }
+
+/// The student's work on `lesson` as one file's content: each step's code last run and what
+/// was typed into its answer's boxes (steps with neither left out).
+#[must_use]
+pub fn work(progress: &Progress, lesson: &Lesson) -> crate::lab::submission::Work {
+    use crate::lab::submission::{Code, StepWork, Work};
+    let mut work = Work {
+        lesson: lesson.id.clone(),
+        ..Work::default()
+    };
+    for (k, step) in lesson.steps.iter().enumerate() {
+        let mut code = Code::default();
+        if let Some(saved) = progress.code(lesson, k) {
+            if let Some((vertex, fragment)) = saved.shaders {
+                code.take("shader.vert", vertex);
+                code.take("shader.frag", fragment);
+            }
+            for (kind, source) in saved.hooks {
+                code.take(&format!("{}.glsl", kind.key()), source);
+            }
+        }
+        let answers = step
+            .expect
+            .as_ref()
+            .map(|e| progress.typed(lesson, k, e.shape.cells()))
+            .filter(|t| t.iter().any(|c| !c.trim().is_empty()))
+            .unwrap_or_default();
+        if !code.is_empty() || !answers.is_empty() {
+            work.steps.insert(
+                k + 1,
+                StepWork {
+                    title: step.title.en.clone(),
+                    code,
+                    answers,
+                },
+            );
+        }
+    }
+    work
+}

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result};
 use rayon::prelude::*;
 
-use crate::lab::submission::{Code, Grade, grade};
+use crate::lab::submission::{Code, Grade, Work, grade};
 use crate::lesson::{self, Lesson};
 use crate::vocabulary::Lang;
 
@@ -68,7 +68,7 @@ pub fn run(req: &GradeRequest) -> Result<()> {
         .par_iter()
         .map(|&(s, k)| {
             let path = &req.submissions[s];
-            let grade = std::panic::catch_unwind(|| match read_hand_in(path) {
+            let grade = std::panic::catch_unwind(|| match read_hand_in(path, &lesson.id, k) {
                 Ok(code) => grade(&lesson, k, &code, req.lang),
                 Err(reason) => Grade::failed(reason.words(path, req.lang)),
             })
@@ -179,6 +179,12 @@ enum Unreadable {
     OutsideFolder(String),
     /// No source a lab reads.
     Nothing,
+    /// A `.toml` file that is not a work file.
+    NotWork(String),
+    /// A work file of another lesson.
+    OtherLesson(String),
+    /// A work file with no code for the step.
+    NoWorkAt(usize),
 }
 
 impl Unreadable {
@@ -211,6 +217,14 @@ impl Unreadable {
             (Self::Nothing, Lang::En) => format!(
                 "{at} holds no shader.vert, shader.frag or function file (inside.glsl, depth_test.glsl, de_casteljau.glsl, shadow_matrix.glsl)"
             ),
+            (Self::NotWork(why), Lang::En) => format!("{at}: {why}"),
+            (Self::NotWork(why), Lang::Zh) => format!("{at}：不是 pipelens 写的作业文件（{why}）"),
+            (Self::OtherLesson(id), Lang::En) => {
+                format!("{at} is work on lesson {id}, not on this one")
+            }
+            (Self::OtherLesson(id), Lang::Zh) => format!("{at} 是课程 {id} 的作业，不是这一课的"),
+            (Self::NoWorkAt(n), Lang::En) => format!("{at} holds no code for step {n}"),
+            (Self::NoWorkAt(n), Lang::Zh) => format!("{at} 中没有第 {n} 步的代码"),
             (Self::Nothing, Lang::Zh) => format!(
                 "{at} 中没有 shader.vert、shader.frag 或函数文件（inside.glsl、depth_test.glsl、de_casteljau.glsl、shadow_matrix.glsl）"
             ),
@@ -218,10 +232,24 @@ impl Unreadable {
     }
 }
 
-/// A hand-in: a folder as the shader panel's Save writes it, or one source file.
-fn read_hand_in(path: &Path) -> Result<Code, Unreadable> {
+/// A hand-in's code for step `k` (from 0) of lesson `lesson`: a folder as the shader panel's
+/// Save writes it, one source file, or a work file as **Export my work** writes it.
+fn read_hand_in(path: &Path, lesson: &str, k: usize) -> Result<Code, Unreadable> {
     let meta = std::fs::metadata(path).map_err(|e| Unreadable::Missing(e.to_string()))?;
     let mut code = Code::default();
+    let name = student_name(path);
+    if meta.is_file() && name.to_ascii_lowercase().ends_with(".toml") {
+        let work = Work::from_text(&read_source(path, &name)?).map_err(Unreadable::NotWork)?;
+        if work.lesson != lesson {
+            return Err(Unreadable::OtherLesson(work.lesson));
+        }
+        return work
+            .steps
+            .get(&(k + 1))
+            .map(|s| s.code.clone())
+            .filter(|c| !c.is_empty())
+            .ok_or(Unreadable::NoWorkAt(k + 1));
+    }
     if meta.is_dir() {
         let root = path
             .canonicalize()

@@ -135,8 +135,8 @@ pub enum Command {
         /// The lesson: a lesson file, or a built-in lesson's name such as 10-blinn-phong.
         lesson: String,
         /// The hand-ins, one per student: a folder as the shader panel's Save writes it
-        /// (shader.vert, shader.frag, inside.glsl, …), or one source file. What a student did
-        /// not hand in stays the starter's.
+        /// (shader.vert, shader.frag, inside.glsl, …), one source file, or the LESSON-work.toml
+        /// the app's Export my work writes. What a student did not hand in stays the starter's.
         #[arg(required = true, value_name = "SUBMISSION")]
         submissions: Vec<PathBuf>,
         /// The lab step to grade (1-based; repeat for several). Every lab step when omitted.

@@ -302,9 +302,9 @@ fn step_html(
     };
     let _ = writeln!(
         h,
-        "<figure><img src=\"{}\" alt=\"{title}\"><figcaption class=\"ui\">{}: {}{target}</figcaption></figure>",
+        "<figure><img src=\"{}\" alt=\"{title}\"><figcaption class=\"ui\">{}{}{target}</figcaption></figure>",
         page.picture.url(),
-        t("Stage", "阶段"),
+        t("Stage: ", "阶段："),
         page.stage.name(lang)
     );
     if let Some(a) = &page.animated {

@@ -166,3 +166,158 @@ fn compile_failed(errors: &[pipeline::shader::StageError], lang: Lang) -> String
         (Lang::Zh, n) => format!("无法编译：{first}（另有 {n} 条消息）"),
     }
 }
+
+/// A student's work on a lesson in one file, as **Export my work** writes it and `pipelens
+/// grade` reads it: each step's code, as the shader panel's Save names its files, and what was
+/// typed into its answer's boxes.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Work {
+    /// The lesson's id (`10-blinn-phong`).
+    pub lesson: String,
+    /// Each step's work, by step number (from 1).
+    pub steps: std::collections::BTreeMap<usize, StepWork>,
+}
+
+/// One step's work.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct StepWork {
+    /// The step's title, for a reader of the file.
+    pub title: String,
+    /// The code last run there.
+    pub code: Code,
+    /// What was typed into the answer's boxes, in order.
+    pub answers: Vec<String>,
+}
+
+impl Work {
+    /// The file's text: TOML, one table a step, the code as multi-line strings.
+    ///
+    /// # Errors
+    /// Never for text (the encoder's error is passed on).
+    pub fn to_text(&self) -> Result<String, String> {
+        let mut root = toml::Table::new();
+        root.insert("lesson".into(), self.lesson.clone().into());
+        let mut steps = toml::Table::new();
+        for (n, s) in &self.steps {
+            let mut t = toml::Table::new();
+            t.insert("title".into(), s.title.clone().into());
+            for (name, text) in s.code.files() {
+                t.insert(name, text.into());
+            }
+            if !s.answers.is_empty() {
+                t.insert("answers".into(), s.answers.clone().into());
+            }
+            steps.insert(n.to_string(), t.into());
+        }
+        root.insert("steps".into(), steps.into());
+        let body = toml::to_string_pretty(&root).map_err(|e| e.to_string())?;
+        Ok(format!(
+            "# pipelens: my work on a lesson, as Export my work wrote it. Hand this file in;\n\
+             # a teacher grades it with `pipelens grade LESSON THIS_FILE`.\n{body}"
+        ))
+    }
+
+    /// Reads a work file.
+    ///
+    /// # Errors
+    /// What is wrong with it, in words: not TOML, no `lesson`, a step that is not a number.
+    pub fn from_text(text: &str) -> Result<Self, String> {
+        let root: toml::Table = toml::from_str(text).map_err(|e| {
+            format!(
+                "not a work file pipelens wrote: {}",
+                e.message().trim_end_matches('\n')
+            )
+        })?;
+        let lesson = root
+            .get("lesson")
+            .and_then(toml::Value::as_str)
+            .ok_or("not a work file pipelens wrote: it names no `lesson`")?
+            .to_owned();
+        let mut steps = std::collections::BTreeMap::new();
+        for (key, value) in root
+            .get("steps")
+            .and_then(toml::Value::as_table)
+            .into_iter()
+            .flatten()
+        {
+            let n: usize = key
+                .parse()
+                .map_err(|_| format!("`steps.{key}` is not a step number"))?;
+            let table = value
+                .as_table()
+                .ok_or_else(|| format!("`steps.{n}` is not a table"))?;
+            let mut s = StepWork::default();
+            for (name, v) in table {
+                match (name.as_str(), v) {
+                    ("title", toml::Value::String(t)) => s.title.clone_from(t),
+                    ("answers", toml::Value::Array(a)) => {
+                        s.answers = a
+                            .iter()
+                            .map(|x| x.as_str().unwrap_or_default().to_owned())
+                            .collect();
+                    }
+                    (file, toml::Value::String(code)) => {
+                        s.code.take(file, code.clone());
+                    }
+                    _ => {}
+                }
+            }
+            steps.insert(n, s);
+        }
+        Ok(Self { lesson, steps })
+    }
+}
+
+impl Code {
+    /// The files of this hand-in, named as the shader panel's Save names them.
+    #[must_use]
+    pub fn files(&self) -> Vec<(String, String)> {
+        let mut out = Vec::new();
+        if let Some(v) = &self.vertex {
+            out.push(("shader.vert".to_owned(), v.clone()));
+        }
+        if let Some(f) = &self.fragment {
+            out.push(("shader.frag".to_owned(), f.clone()));
+        }
+        for (kind, source) in &self.hooks {
+            out.push((format!("{}.glsl", kind.key()), source.clone()));
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A work file written and read back holds the same code and answers; a file that is not
+    /// one says so.
+    #[test]
+    fn a_work_file_reads_back_what_was_written() {
+        let mut code = Code::default();
+        code.take(
+            "shader.frag",
+            "void main() {\n    // \"quoted\" ''' \n}\n".to_owned(),
+        );
+        code.take(
+            "inside.glsl",
+            "bool inside(vec2 p, vec2 a, vec2 b, vec2 c) { return true; }".to_owned(),
+        );
+        let mut work = Work {
+            lesson: "07-rasterization".to_owned(),
+            ..Work::default()
+        };
+        work.steps.insert(
+            6,
+            StepWork {
+                title: "Lab: the inside test".to_owned(),
+                code,
+                answers: vec!["0.5".to_owned(), "１／２".to_owned()],
+            },
+        );
+        let text = work.to_text().expect("encodes");
+        assert_eq!(Work::from_text(&text), Ok(work));
+        assert!(Work::from_text("hello").is_err());
+        assert!(Work::from_text("x = 1").is_err_and(|e| e.contains("names no `lesson`")));
+    }
+}

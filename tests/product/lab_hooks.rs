@@ -257,7 +257,7 @@ fn a_mismatch_names_the_first_value_that_differs_and_an_unnormalized_normal() {
     h.get_by_label("Inspect the first wrong pixel").click();
     h.run_steps(6);
     assert!(
-        h.query_by_label_contains("At the inspected pixel your `n` (line 18)")
+        h.query_by_label_contains("At the inspected pixel your `n` (line 23)")
             .is_some()
     );
     assert!(h.query_by_label_contains("is it normalized?").is_some());

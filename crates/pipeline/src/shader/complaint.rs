@@ -88,11 +88,30 @@ pub fn of_parse(kind: &ErrorKind, source: &str, span: Range<usize>) -> (Complain
                 let at = before(source, span.start);
                 return (Complaint::MissingSemicolon, at..at);
             }
-            let found = source.get(span.clone()).unwrap_or_default().to_owned();
+            // What was found, as written (a long run of garbage cut short).
+            let written = source.get(span.clone()).unwrap_or_default();
+            let found = match written.char_indices().nth(24) {
+                Some((cut, _)) => format!("{}…", &written[..cut]),
+                None => written.to_owned(),
+            };
             let expected = expected.iter().map(expected_text).collect();
             (Complaint::Unexpected { found, expected }, span)
         }
         ErrorKind::SemanticError(text) => (of_text(text), span),
+        ErrorKind::PreprocessorError(e) if format!("{e:?}") == "UnexpectedCharacter" => {
+            let found = source
+                .get(span.start..)
+                .and_then(|s| s.chars().next())
+                .map(String::from)
+                .unwrap_or_default();
+            (
+                Complaint::Unexpected {
+                    found,
+                    expected: Vec::new(),
+                },
+                span,
+            )
+        }
         _ => (of_text(&kind.to_string()), span),
     }
 }

@@ -2,6 +2,11 @@
 // pipelens' per-pixel (Phong-frequency) lighting with the Blinn-Phong model, as a shader:
 //   L = Σ k_a·c·I_a + Σ f_att·f_spot·(k_d·c·I·max(n·l, 0) + k_s·I·max(n·h, 0)^p)
 // with h = normalize(l + v), f_att = 1/(a + b·d + c·d²), f_spot = (cos φ)^e inside the cone.
+// pipelens declares these before your code (a program of your own declares them itself):
+//   struct Light { int kind; vec3 position; vec3 direction; vec3 intensity;
+//                  vec3 attenuation; float cutoff_cos; float exponent; };
+//   const int LIGHT_AMBIENT = 0; const int LIGHT_POINT = 1;
+//   const int LIGHT_DIRECTIONAL = 2; const int LIGHT_SPOT = 3; const int MAX_LIGHTS = 8;
 uniform vec3 eye;
 uniform vec3 ka;
 uniform vec3 kd;

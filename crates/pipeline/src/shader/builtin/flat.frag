@@ -8,6 +8,11 @@
 // The Blinn-Phong lighting is that of gouraud.vert, at the provoking vertex f_pos: every
 // fragment of the face computes the same colour. A textured surface is lit white (c = 1) and
 // its texel modulates ambient and diffuse, as with Gouraud shading.
+// pipelens declares these before your code (a program of your own declares them itself):
+//   struct Light { int kind; vec3 position; vec3 direction; vec3 intensity;
+//                  vec3 attenuation; float cutoff_cos; float exponent; };
+//   const int LIGHT_AMBIENT = 0; const int LIGHT_POINT = 1;
+//   const int LIGHT_DIRECTIONAL = 2; const int LIGHT_SPOT = 3; const int MAX_LIGHTS = 8;
 uniform vec3 eye;
 uniform vec3 ka;
 uniform vec3 kd;

@@ -4,6 +4,11 @@
 //   L = Σ k_a·c·I_a + Σ f_att·f_spot·(k_d·c·I·max(n·l, 0) + k_s·I·max(n·h, 0)^p),
 // sent to the fragment stage to be interpolated across the triangle (gouraud.frag). A textured
 // surface is lit white here (c = 1); its texel modulates ambient and diffuse per pixel.
+// pipelens declares these before your code (a program of your own declares them itself):
+//   struct Light { int kind; vec3 position; vec3 direction; vec3 intensity;
+//                  vec3 attenuation; float cutoff_cos; float exponent; };
+//   const int LIGHT_AMBIENT = 0; const int LIGHT_POINT = 1;
+//   const int LIGHT_DIRECTIONAL = 2; const int LIGHT_SPOT = 3; const int MAX_LIGHTS = 8;
 uniform mat4 model;
 uniform mat4 view;
 uniform mat4 projection;

@@ -8,6 +8,11 @@
 //   bump map (GAMES101): (x, y, z) = (−dU, −dV, 1), dU = k_h·k_n·(h(u + 1/w, v) − h(u, v)),
 //                        dV = k_h·k_n·(h(u, v + 1/h) − h(u, v)), h the texel's luminance;
 //   normal map:          (x, y, z) = 2·texel − 1.
+// pipelens declares these before your code (a program of your own declares them itself):
+//   struct Light { int kind; vec3 position; vec3 direction; vec3 intensity;
+//                  vec3 attenuation; float cutoff_cos; float exponent; };
+//   const int LIGHT_AMBIENT = 0; const int LIGHT_POINT = 1;
+//   const int LIGHT_DIRECTIONAL = 2; const int LIGHT_SPOT = 3; const int MAX_LIGHTS = 8;
 uniform vec3 eye;
 uniform vec3 ka;
 uniform vec3 kd;

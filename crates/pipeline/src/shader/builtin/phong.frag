@@ -3,6 +3,11 @@
 //   L = Σ k_a·c·I_a + Σ f_att·f_spot·(k_d·c·I·max(n·l, 0) + k_s·I·max(r·v, 0)^p)
 // with r = reflect(−l, n) = 2(n·l)n − l, f_att = 1/(a + b·d + c·d²), f_spot = (cos φ)^e inside
 // the cone. blinn_phong.frag differs in one line: n·h in place of r·v.
+// pipelens declares these before your code (a program of your own declares them itself):
+//   struct Light { int kind; vec3 position; vec3 direction; vec3 intensity;
+//                  vec3 attenuation; float cutoff_cos; float exponent; };
+//   const int LIGHT_AMBIENT = 0; const int LIGHT_POINT = 1;
+//   const int LIGHT_DIRECTIONAL = 2; const int LIGHT_SPOT = 3; const int MAX_LIGHTS = 8;
 uniform vec3 eye;
 uniform vec3 ka;
 uniform vec3 kd;
