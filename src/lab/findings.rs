@@ -27,6 +27,10 @@ pub struct Mismatch {
     pub theirs: String,
     /// For a vector: its length in each run (a normal not normalized shows here).
     pub lengths: Option<(f64, f64)>,
+    /// Where the runs were compared: the vertex shader's at this row of the vertex table (a
+    /// corner of the first wrong pixel's triangle), or `None` for the fragment shader's at the
+    /// inspected pixel.
+    pub vertex: Option<u32>,
 }
 
 /// The numbers of a traced value (`vec3(0.000, 0.707, 0.707)` → 0, 0.707, 0.707), and its
@@ -96,62 +100,67 @@ pub fn first_mismatch(
     student: &[pipeline::capture::FragmentTrace],
     reference: &[pipeline::capture::FragmentTrace],
 ) -> Option<Mismatch> {
-    for mine in student {
-        let Some(theirs) = reference.iter().find(|f| f.triangle == mine.triangle) else {
-            continue;
-        };
-        // Each run's values by stretch: the stretch (how many loop iterations began before
-        // it), the name, its line and its last value there, in the order first assigned.
-        let stretches = |f: &pipeline::capture::FragmentTrace| {
-            let mut stretch = 0;
-            let mut values: Vec<((usize, String), (usize, String))> = Vec::new();
-            for l in &f.trace {
-                if l.text.starts_with("loop: iteration") {
-                    stretch += 1;
-                    continue;
-                }
-                let Some((name, value)) = l.text.split_once(" = ") else {
-                    continue;
-                };
-                let key = (stretch, name.to_owned());
-                match values.iter_mut().find(|(k, _)| *k == key) {
-                    Some((_, v)) => *v = (l.line, value.to_owned()),
-                    None => values.push((key, (l.line, value.to_owned()))),
-                }
+    student.iter().find_map(|mine| {
+        let theirs = reference.iter().find(|f| f.triangle == mine.triangle)?;
+        first_difference(&mine.trace, &theirs.trace)
+    })
+}
+
+/// The first value at which the student's run `mine` parts from pipelens' own run `theirs`
+/// (of the same stage on the same input): a variable both assign in the same stretch of the
+/// run (before the first loop iteration, or within the same iteration), whose last values
+/// there differ — a vector of length 1 in pipelens' run that is not in the student's first.
+#[must_use]
+pub fn first_difference(
+    mine: &[pipeline::shader::TraceLine],
+    theirs: &[pipeline::shader::TraceLine],
+) -> Option<Mismatch> {
+    // Each run's values by stretch: the stretch (how many loop iterations began before it), the
+    // name, its line and its last value there, in the order first assigned.
+    let stretches = |trace: &[pipeline::shader::TraceLine]| {
+        let mut stretch = 0;
+        let mut values: Vec<((usize, String), (usize, String))> = Vec::new();
+        for l in trace {
+            if l.text.starts_with("loop: iteration") {
+                stretch += 1;
+                continue;
             }
-            values
-        };
-        let reference_values: std::collections::HashMap<_, _> =
-            stretches(theirs).into_iter().collect();
-        let paired: Vec<_> = stretches(mine)
-            .into_iter()
-            .filter_map(|(key, (line, yours))| {
-                let (_, theirs) = reference_values.get(&key)?;
-                Some((key.1, line, yours, theirs.clone()))
-            })
-            .collect();
-        let mismatch = |(name, line, yours, theirs): &(String, usize, String, String)| Mismatch {
-            name: name.clone(),
-            line: *line,
-            lengths: length(yours).zip(length(theirs)),
-            yours: yours.clone(),
-            theirs: theirs.clone(),
-        };
-        // A vector of length 1 in pipelens' run that is not in the student's — a normal left
-        // unnormalized — says more than the first value it puts off, however small the gap.
-        let unit = paired.iter().find(|(_, _, yours, theirs)| {
-            length(yours)
-                .zip(length(theirs))
-                .is_some_and(|(y, t)| (t - 1.0).abs() < 0.001 && (y - 1.0).abs() > 0.0015)
-        });
-        if let Some(u) = unit {
-            return Some(mismatch(u));
+            let Some((name, value)) = l.text.split_once(" = ") else {
+                continue;
+            };
+            let key = (stretch, name.to_owned());
+            match values.iter_mut().find(|(k, _)| *k == key) {
+                Some((_, v)) => *v = (l.line, value.to_owned()),
+                None => values.push((key, (l.line, value.to_owned()))),
+            }
         }
-        if let Some(m) = paired.iter().find(|(_, _, y, t)| !same_value(y, t)) {
-            return Some(mismatch(m));
-        }
-    }
-    None
+        values
+    };
+    let reference_values: std::collections::HashMap<_, _> = stretches(theirs).into_iter().collect();
+    let paired: Vec<_> = stretches(mine)
+        .into_iter()
+        .filter_map(|(key, (line, yours))| {
+            let (_, theirs) = reference_values.get(&key)?;
+            Some((key.1, line, yours, theirs.clone()))
+        })
+        .collect();
+    let mismatch = |(name, line, yours, theirs): &(String, usize, String, String)| Mismatch {
+        name: name.clone(),
+        line: *line,
+        lengths: length(yours).zip(length(theirs)),
+        yours: yours.clone(),
+        theirs: theirs.clone(),
+        vertex: None,
+    };
+    // A vector of length 1 in pipelens' run that is not in the student's — a normal left
+    // unnormalized — says more than the first value it puts off, however small the gap.
+    let unit = paired.iter().find(|(_, _, yours, theirs)| {
+        length(yours)
+            .zip(length(theirs))
+            .is_some_and(|(y, t)| (t - 1.0).abs() < 0.001 && (y - 1.0).abs() > 0.0015)
+    });
+    unit.or_else(|| paired.iter().find(|(_, _, y, t)| !same_value(y, t)))
+        .map(mismatch)
 }
 
 /// The first row of the vertex table whose clip position in the student's frame differs from

@@ -8,12 +8,13 @@
 //! arrives; [`check`] does the same with no window.
 
 mod findings;
+pub mod samples;
 pub mod submission;
 pub mod words;
 
 pub use findings::{
-    CURVE_TOLERANCE, MatrixMismatch, Mismatch, first_mismatch, first_wrong_vertex, wrong_matrix,
-    wrong_shadow_matrix,
+    CURVE_TOLERANCE, MatrixMismatch, Mismatch, first_difference, first_mismatch,
+    first_wrong_vertex, wrong_matrix, wrong_shadow_matrix,
 };
 
 use pipeline::buffers::Capture;
@@ -63,6 +64,9 @@ pub struct Findings {
     pub matrix: Option<MatrixMismatch>,
     /// Where the student's run at the inspected pixel first parts from pipelens' own shader's.
     pub mismatch: Option<Mismatch>,
+    /// The first sample of the first wrong pixel where the student's inside or depth test
+    /// answers otherwise than pipelens' rule.
+    pub sample: Option<samples::SampleMismatch>,
     /// pipelens' own answer taken where the lab asks the student to compute it (a uniform it
     /// forbids declared, a function it forbids called): the lab is not passed, whatever the
     /// pixels say.
@@ -92,12 +96,30 @@ impl Findings {
                 wrong_matrix(&trace, mine, object)
             })
             .or_else(|| wrong_shadow_matrix(scene));
+        let difference = mine.difference_by(reference, criteria(scene, tolerance));
+        let sample = difference
+            .as_ref()
+            .and_then(|d| d.first)
+            .and_then(|first| samples::first_sample_mismatch(scene, reference, first));
+        // A run is compared only in a shader the lab asks the student to write (its starter
+        // says TODO there) or that they changed: never a line of a stage they were not to touch.
+        let (vertex_changed, fragment_changed) = changed_stages(scene, forbid.starter);
+        let mismatch = if fragment_changed {
+            first_mismatch(traced(mine), traced(reference))
+        } else {
+            None
+        };
+        let mismatch = mismatch.or_else(|| {
+            let first = difference.as_ref()?.first?;
+            vertex_changed.then(|| vertex_mismatch(scene, (mine, reference), first))?
+        });
         Self {
-            difference: mine.difference_by(reference, criteria(scene, tolerance)),
+            difference,
             curve: curve_difference(scene),
             vertex,
             matrix,
-            mismatch: first_mismatch(traced(mine), traced(reference)),
+            mismatch,
+            sample,
             shortcut: crate::lesson::forbid::find(
                 forbid.names,
                 &scene_sources(scene),
@@ -135,6 +157,9 @@ impl Findings {
         let mut out = vec![words::verdict(d, lang)];
         if d.passed() {
             return out;
+        }
+        if let Some(s) = &self.sample {
+            out.push(s.words(lang));
         }
         if let Some((row, yours, theirs)) = self.vertex {
             out.push(words::vertex_words(row, yours, theirs, lang));
@@ -184,6 +209,42 @@ fn scene_sources(scene: &Scene) -> Vec<(String, &str)> {
         }
     }
     out
+}
+
+/// Whether the student's vertex and fragment shaders are theirs to write: the starter says
+/// TODO there, or the student's source differs from the starter's (a stage the starter does not
+/// give is the student's when they wrote one).
+fn changed_stages(scene: &Scene, starter: &pipeline::scene::StudentCode) -> (bool, bool) {
+    let Some(mine) = scene.objects.iter().find_map(|o| o.shader.as_ref()) else {
+        return (false, false);
+    };
+    let Some(given) = &starter.shader else {
+        return (true, true);
+    };
+    let (m, g) = (&mine.programs, &given.programs);
+    (
+        g.vertex.source.contains("TODO") || m.vertex.source != g.vertex.source,
+        g.fragment.source.contains("TODO") || m.fragment.source != g.fragment.source,
+    )
+}
+
+/// Where the student's vertex shader first parts from pipelens' own, run on the first corner
+/// of the triangle that owns pixel `first` in the student's frame: the same vertex through both
+/// (the reference's shipped GLSL traced on its own scene).
+fn vertex_mismatch(
+    scene: &Scene,
+    (mine, reference): (&FrameCapture, &FrameCapture),
+    first: (u32, u32),
+) -> Option<Mismatch> {
+    let i = mine.grid().checked_index(first.0, first.1)?;
+    let p = *mine.pixels.primitive.get(i)?;
+    let row = mine.primitives.get(p as usize)?.vertices[0];
+    let own = reference_scene(scene, &mine.settings);
+    let yours = pipeline::trace_vertex(scene, mine, row as usize).ok()??;
+    let theirs = pipeline::trace_vertex(&own, reference, row as usize).ok()??;
+    let mut m = first_difference(&yours.trace, &theirs.trace)?;
+    m.vertex = Some(row);
+    Some(m)
 }
 
 /// The shaders' runs at the frame's traced pixel (none where no shader ran).

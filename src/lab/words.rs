@@ -96,13 +96,21 @@ pub fn mismatch_words(m: &Mismatch, lang: Lang) -> String {
         .lengths
         .filter(|(yours, theirs)| (theirs - 1.0).abs() < 0.001 && (yours - 1.0).abs() > 0.0015)
         .map(|(yours, _)| yours);
-    let mut text = match lang {
-        Lang::En => format!(
+    let mut text = match (lang, m.vertex) {
+        (Lang::En, None) => format!(
             "At the inspected pixel your `{}` (line {}) is {}; pipelens' own shader has {}.",
             m.name, m.line, m.yours, m.theirs
         ),
-        Lang::Zh => format!(
+        (Lang::Zh, None) => format!(
             "在所检查的像素处，你的 `{}`（第 {} 行）是 {}；pipelens 自带的着色器得到 {}。",
+            m.name, m.line, m.yours, m.theirs
+        ),
+        (Lang::En, Some(row)) => format!(
+            "At vertex {row} (a corner of the first wrong pixel's triangle) your vertex shader's `{}` (line {}) is {}; pipelens' own has {}.",
+            m.name, m.line, m.yours, m.theirs
+        ),
+        (Lang::Zh, Some(row)) => format!(
+            "在顶点 {row}（第一个错误像素所在三角形的一个角）处，你的顶点着色器中的 `{}`（第 {} 行）是 {}；pipelens 自带的得到 {}。",
             m.name, m.line, m.yours, m.theirs
         ),
     };

@@ -124,11 +124,11 @@ const CORPUS: &[(&str, &str, &str, Want)] = &[
     m[3] = vec4(0.5 * w, 0.5 * h, 0.5, 1.0);
     return m;", Right),
     // 09: the depth test.
-    ("09-z-buffer", "Lab: the depth test", "    return z > stored;", Wrong(&["Not yet"])),
-    ("09-z-buffer", "Lab: the depth test", "    return z <= stored;", Wrong(&["Not yet"])),
-    ("09-z-buffer", "Lab: the depth test", "    return stored < z;", Wrong(&["Not yet"])),
-    ("09-z-buffer", "Lab: the depth test", "    return z != stored;", Wrong(&["Not yet"])),
-    ("09-z-buffer", "Lab: the depth test", "    return z < 1.0;", Wrong(&["Not yet"])),
+    ("09-z-buffer", "Lab: the depth test", "    return z > stored;", Wrong(&["Not yet", "your depth_test(z, stored)"])),
+    ("09-z-buffer", "Lab: the depth test", "    return z <= stored;", Wrong(&["Not yet", "your depth_test(z, stored)"])),
+    ("09-z-buffer", "Lab: the depth test", "    return stored < z;", Wrong(&["Not yet", "your depth_test(z, stored)"])),
+    ("09-z-buffer", "Lab: the depth test", "    return z != stored;", Wrong(&["Not yet", "your depth_test(z, stored)"])),
+    ("09-z-buffer", "Lab: the depth test", "    return z < 1.0;", Wrong(&["Not yet", "your depth_test(z, stored)"])),
     ("09-z-buffer", "Lab: the depth test", "    return stored > z;", Right),
     ("09-z-buffer", "Lab: the depth test", "    if (z < stored) {
         return true;
@@ -158,10 +158,10 @@ const CORPUS: &[(&str, &str, &str, Want)] = &[
         float lit = n_dot_l > 0.0 ? 1.0 : 0.0;
         sum += lit * f * light.intensity * ks * pow(max(dot(half_vector, n), 0.0), shininess);", Right),
     // 11: the normal matrix.
-    ("11-shading-frequencies", "Lab: the normal matrix", "    return inverse(mat3(m));", Wrong(&["Not yet"])),
-    ("11-shading-frequencies", "Lab: the normal matrix", "    return transpose(mat3(m));", Wrong(&["Not yet"])),
-    ("11-shading-frequencies", "Lab: the normal matrix", "    return mat3(transpose(m));", Wrong(&["Not yet"])),
-    ("11-shading-frequencies", "Lab: the normal matrix", "    return -transpose(inverse(mat3(m)));", Wrong(&["Not yet"])),
+    ("11-shading-frequencies", "Lab: the normal matrix", "    return inverse(mat3(m));", Wrong(&["Not yet", "your vertex shader's `w_nrm`"])),
+    ("11-shading-frequencies", "Lab: the normal matrix", "    return transpose(mat3(m));", Wrong(&["Not yet", "your vertex shader's `w_nrm`"])),
+    ("11-shading-frequencies", "Lab: the normal matrix", "    return mat3(transpose(m));", Wrong(&["Not yet", "your vertex shader's `w_nrm`"])),
+    ("11-shading-frequencies", "Lab: the normal matrix", "    return -transpose(inverse(mat3(m)));", Wrong(&["Not yet", "your vertex shader's `w_nrm`"])),
     ("11-shading-frequencies", "Lab: the normal matrix", "uniform mat3 normal_matrix;
 ---
     return normal_matrix;", Wrong(&["declares pipelens' own `normal_matrix`"])),
@@ -307,9 +307,9 @@ const CORPUS: &[(&str, &str, &str, Want)] = &[
     float right = top * aspect;
     return mat4(zNear / right, 0, 0, 0,  0, zNear / top, 0, 0,  0, 0, -(zFar + zNear) / (zFar - zNear), -1,  0, 0, -2.0 * zFar * zNear / (zFar - zNear), 0);", Right),
     // 07: the inside test (the square's corners and diagonal on pixel centres).
-    ("07-rasterization", "Lab: the inside test", "    return edge(a, b, p) >= 0.0 && edge(b, c, p) >= 0.0;", Wrong(&["Not yet", "belong to another triangle"])),
-    ("07-rasterization", "Lab: the inside test", "    return edge(a, b, p) >= 0.0 && edge(b, c, p) >= 0.0 && edge(c, a, p) >= 0.0;", Wrong(&["Not yet"])),
-    ("07-rasterization", "Lab: the inside test", "    return edge(a, b, p) > 0.0 && edge(b, c, p) > 0.0 && edge(c, a, p) > 0.0;", Wrong(&["Not yet"])),
+    ("07-rasterization", "Lab: the inside test", "    return edge(a, b, p) >= 0.0 && edge(b, c, p) >= 0.0;", Wrong(&["Not yet", "belong to another triangle", "your inside(): inside"])),
+    ("07-rasterization", "Lab: the inside test", "    return edge(a, b, p) >= 0.0 && edge(b, c, p) >= 0.0 && edge(c, a, p) >= 0.0;", Wrong(&["Not yet", "your inside()"])),
+    ("07-rasterization", "Lab: the inside test", "    return edge(a, b, p) > 0.0 && edge(b, c, p) > 0.0 && edge(c, a, p) > 0.0;", Wrong(&["Not yet", "your inside()"])),
     ("07-rasterization", "Lab: the inside test", "    vec2 corner[3] = vec2[3](a, b, c);
     for (int i = 0; i < 3; i++) {
         vec2 from = corner[i];
@@ -320,8 +320,8 @@ const CORPUS: &[(&str, &str, &str, Want)] = &[
             return false;
         }
     }
-    return true;", Wrong(&["Not yet"])),
-    ("07-rasterization", "Lab: the inside test", "    return edge(a, b, p) <= 0.0 && edge(b, c, p) <= 0.0 && edge(c, a, p) <= 0.0;", Wrong(&["Not yet"])),
+    return true;", Wrong(&["Not yet", "your inside()"])),
+    ("07-rasterization", "Lab: the inside test", "    return edge(a, b, p) <= 0.0 && edge(b, c, p) <= 0.0 && edge(c, a, p) <= 0.0;", Wrong(&["Not yet", "your inside()"])),
     ("07-rasterization", "Lab: the inside test", "    return owns(a, b, p) && owns(b, c, p) && owns(c, a, p);
 }
 bool top_or_left(vec2 from, vec2 to) {
@@ -351,10 +351,10 @@ bool owns(vec2 from, vec2 to, vec2 p) {
     return (e0 > 0.0 || (e0 == 0.0 && t0)) && (e1 > 0.0 || (e1 == 0.0 && t1)) && (e2 > 0.0 || (e2 == 0.0 && t2));", Right),
     // 08: the inside test at every sample.
     ("08-antialiasing", "Lab: the inside test at every sample", "    vec2 q = floor(p) + 0.5;
-    return edge(a, b, q) >= 0.0 && edge(b, c, q) >= 0.0;", Wrong(&["Not yet"])),
-    ("08-antialiasing", "Lab: the inside test at every sample", "    return edge(a, b, p) >= 0.0 && edge(b, c, p) >= 0.0;", Wrong(&["Not yet"])),
+    return edge(a, b, q) >= 0.0 && edge(b, c, q) >= 0.0;", Wrong(&["Not yet", "your inside()"])),
+    ("08-antialiasing", "Lab: the inside test at every sample", "    return edge(a, b, p) >= 0.0 && edge(b, c, p) >= 0.0;", Wrong(&["Not yet", "your inside()"])),
     ("08-antialiasing", "Lab: the inside test at every sample", "    vec2 q = p + 0.5;
-    return edge(a, b, q) >= 0.0 && edge(b, c, q) >= 0.0 && edge(c, a, q) >= 0.0;", Wrong(&["Not yet"])),
+    return edge(a, b, q) >= 0.0 && edge(b, c, q) >= 0.0 && edge(c, a, q) >= 0.0;", Wrong(&["Not yet", "your inside()"])),
     ("08-antialiasing", "Lab: the inside test at every sample", "    float e0 = edge(a, b, p);
     float e1 = edge(b, c, p);
     float e2 = edge(c, a, p);

@@ -193,6 +193,27 @@ fn picture(
         .then(|| Command::SelectPixel(Some((x as u32, grid.row(row as u32)))))
 }
 
+/// What else the check found, each as a line: the inside or depth test sample by sample at the
+/// first wrong pixel, a function's matrix (the shadow's) compared without a vertex shader, the
+/// first value where the student's run parts from pipelens' (at the inspected pixel, or at a
+/// vertex of the first wrong pixel's triangle).
+fn findings_lines(ui: &mut Ui, session: &Session, style: &Style) {
+    let (f, lang) = (&session.exercise.findings, session.lang);
+    if let Some(s) = &f.sample {
+        not_yet(ui, s.words(lang), style);
+    }
+    if f.vertex.is_none()
+        && let Some(m) = &f.matrix
+    {
+        not_yet(ui, words::matrix_words(m, lang), style);
+    }
+    if let Some(m) = &f.mismatch
+        && (m.vertex.is_some() || session.selection.pixel.is_some())
+    {
+        not_yet(ui, words::mismatch_words(m, lang), style);
+    }
+}
+
 /// A line of what is not yet right, in the card's colour for it.
 fn not_yet(ui: &mut Ui, text: String, style: &Style) {
     ui.label(RichText::new(text).size(style.size * 0.9).color(NOT_YET));
@@ -271,18 +292,8 @@ pub fn card_part(
                     return true;
                 }
             }
-            // A function's matrix (the shadow's), compared without a vertex shader.
-            if !d.passed()
-                && session.exercise.findings.vertex.is_none()
-                && let Some(m) = &session.exercise.findings.matrix
-            {
-                not_yet(ui, words::matrix_words(m, lang), style);
-            }
-            if !d.passed()
-                && session.selection.pixel.is_some()
-                && let Some(m) = &session.exercise.findings.mismatch
-            {
-                not_yet(ui, words::mismatch_words(m, lang), style);
+            if !d.passed() {
+                findings_lines(ui, session, style);
             }
             if let Some(first) = d.first
                 && session.selection.pixel != Some(first)

@@ -1,0 +1,213 @@
+//! Where the student's inside or depth test first parts from pipelens' at the first wrong
+//! pixel, sample by sample: the sample, the triangle's three edge values there and which edges
+//! are top or left ones, both verdicts (the inside test); the fragment's depth, the depth
+//! stored, both verdicts (the depth test). What the lab is about, named at the place it
+//! differs.
+
+use glam::I64Vec2;
+use pipeline::capture::FrameCapture;
+use pipeline::raster::ONE;
+use pipeline::scene::Scene;
+use pipeline::shader::HookKind;
+
+use crate::vocabulary::Lang;
+
+/// A sample where the student's function and pipelens' rule disagree.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SampleMismatch {
+    /// The inside test.
+    Inside {
+        /// The pixel, in window coordinates.
+        pixel: (u32, u32),
+        /// The raster triangle (its index in the frame).
+        triangle: u32,
+        /// The sample's position, window pixels.
+        position: [f64; 2],
+        /// `(E_0, E_1, E_2)` there, square pixels (edge `i` opposite corner `i`).
+        e: [f64; 3],
+        /// Which edges are top or left edges.
+        top_left: [bool; 3],
+        /// Whether pipelens counts the sample inside.
+        theirs: bool,
+        /// Whether the student's `inside` does.
+        yours: bool,
+    },
+    /// The depth test.
+    Depth {
+        /// The pixel, in window coordinates.
+        pixel: (u32, u32),
+        /// The sample (from 0).
+        sample: usize,
+        /// The raster triangle whose fragment is tested.
+        triangle: u32,
+        /// Its window depth at the sample.
+        z: f32,
+        /// What the z-buffer holds there before it (pipelens' run).
+        stored: f32,
+        /// Whether pipelens writes the fragment.
+        theirs: bool,
+        /// Whether the student's `depth_test` does.
+        yours: bool,
+    },
+}
+
+/// The first sample of pixel `(x, y)` of `reference` (pipelens' own frame of the same
+/// geometry) where the student's inside or depth test in `scene` answers otherwise than
+/// pipelens' rule: the triangles in drawing order, each one's samples in order.
+#[must_use]
+pub fn first_sample_mismatch(
+    scene: &Scene,
+    reference: &FrameCapture,
+    (x, y): (u32, u32),
+) -> Option<SampleMismatch> {
+    let offsets = pipeline::raster::sample_offsets_fixed(reference.settings.samples);
+    let corner = I64Vec2::new(i64::from(x) * ONE, i64::from(y) * ONE);
+    let pixels = |v: i64| v as f64 / ONE as f64;
+    let square = (ONE * ONE) as f64;
+    let test = reference.settings.depth_test;
+    let mut stored = vec![test.clear_value(); offsets.len()];
+    for (t, tri) in reference.triangles.iter().enumerate() {
+        let [x0, y0, x1, y1] = tri.bbox.map(u32::from);
+        if x < x0 || x > x1 || y < y0 || y > y1 {
+            continue;
+        }
+        for (s, off) in offsets.iter().enumerate() {
+            let p = corner + *off;
+            let covered = tri.covers(p);
+            if let Some(hook) = scene.hook(HookKind::Inside) {
+                let corners = tri.window.map(|c| {
+                    let f = pipeline::raster::snap_xy(c);
+                    [pixels(f.x) as f32, pixels(f.y) as f32]
+                });
+                let position = [pixels(p.x), pixels(p.y)];
+                let yours = hook
+                    .covers(&[[position[0] as f32, position[1] as f32]], corners)
+                    .ok()?
+                    .first()
+                    .copied()?;
+                if yours != covered {
+                    return Some(SampleMismatch::Inside {
+                        pixel: (x, y),
+                        triangle: t as u32,
+                        position,
+                        e: tri.edge_values(p).map(|e| e as f64 / square),
+                        top_left: tri.top_left(),
+                        theirs: covered,
+                        yours,
+                    });
+                }
+            }
+            if !covered {
+                continue;
+            }
+            let z = tri.depth_at(p);
+            let theirs = test.passes(z, stored[s]);
+            if let Some(hook) = scene.hook(HookKind::DepthTest) {
+                let yours = hook.passes(&[z], &[stored[s]]).ok()?.first().copied()?;
+                if yours != theirs {
+                    return Some(SampleMismatch::Depth {
+                        pixel: (x, y),
+                        sample: s,
+                        triangle: t as u32,
+                        z,
+                        stored: stored[s],
+                        theirs,
+                        yours,
+                    });
+                }
+            }
+            if theirs {
+                stored[s] = z;
+            }
+        }
+    }
+    None
+}
+
+impl SampleMismatch {
+    /// The mismatch in words: where, the numbers the test reads, both verdicts.
+    #[must_use]
+    pub fn words(&self, lang: Lang) -> String {
+        let verdict = |inside: bool| match (inside, lang) {
+            (true, Lang::En) => "inside",
+            (false, Lang::En) => "outside",
+            (true, Lang::Zh) => "在内部",
+            (false, Lang::Zh) => "在外部",
+        };
+        let writes = |w: bool| match (w, lang) {
+            (true, Lang::En) => "writes the fragment",
+            (false, Lang::En) => "keeps what is stored",
+            (true, Lang::Zh) => "写入这个片元",
+            (false, Lang::Zh) => "保留已存的值",
+        };
+        let num = |v: f64| crate::vocabulary::short(v as f32, 4);
+        match self {
+            Self::Inside {
+                pixel: (x, y),
+                triangle,
+                position: [px, py],
+                e,
+                top_left,
+                theirs,
+                yours,
+            } => {
+                let edges: Vec<String> = (0..3)
+                    .map(|i| {
+                        let on = if e[i] == 0.0 {
+                            match (top_left[i], lang) {
+                                (true, Lang::En) => " (on it: a top or left edge)",
+                                (false, Lang::En) => " (on it: neither a top nor a left edge)",
+                                (true, Lang::Zh) => "（恰在边上：上边或左边）",
+                                (false, Lang::Zh) => "（恰在边上：既非上边也非左边）",
+                            }
+                        } else {
+                            ""
+                        };
+                        format!("E{i} = {}{on}", num(e[i]))
+                    })
+                    .collect();
+                match lang {
+                    Lang::En => format!(
+                        "At pixel ({x}, {y}), the sample ({}, {}) against triangle {triangle}: {}. pipelens: {}; your inside(): {}.",
+                        num(*px),
+                        num(*py),
+                        edges.join(", "),
+                        verdict(*theirs),
+                        verdict(*yours)
+                    ),
+                    Lang::Zh => format!(
+                        "在像素 ({x}, {y})，采样点 ({}, {}) 对三角形 {triangle}：{}。pipelens：{}；你的 inside()：{}。",
+                        num(*px),
+                        num(*py),
+                        edges.join("，"),
+                        verdict(*theirs),
+                        verdict(*yours)
+                    ),
+                }
+            }
+            Self::Depth {
+                pixel: (x, y),
+                sample,
+                triangle,
+                z,
+                stored,
+                theirs,
+                yours,
+            } => {
+                let (z, stored) = (format!("{z:.6}"), format!("{stored:.6}"));
+                match lang {
+                    Lang::En => format!(
+                        "At pixel ({x}, {y}), sample {sample}: triangle {triangle}'s fragment has z = {z} and the z-buffer holds {stored}. pipelens {}; your depth_test(z, stored) {}.",
+                        writes(*theirs),
+                        writes(*yours)
+                    ),
+                    Lang::Zh => format!(
+                        "在像素 ({x}, {y}) 的第 {sample} 个采样点：三角形 {triangle} 的片元 z = {z}，深度缓冲中已存 {stored}。pipelens {}；你的 depth_test(z, stored) {}。",
+                        writes(*theirs),
+                        writes(*yours)
+                    ),
+                }
+            }
+        }
+    }
+}
