@@ -407,13 +407,14 @@ fn texture(c: &mut Checker<'_>, t: &Spanned<String>, base: &Path) -> Option<Text
         "mip_levels" => Some(Texture::mip_levels(512)),
         "bumps" => Some(Texture::bumps(512, 8)),
         "relief" => Some(Texture::relief(512, 256, 64)),
+        "relief_normals" => Some(Texture::relief_normals(512, 256, 64, 6.0)),
         "bump_normals" => Some(Texture::bump_normals(512, 8, 6.0)),
         written => match Texture::load(&c.file_beside(t.span(), base, written)?) {
             Ok(t) => Some(t),
             Err(e) => {
                 c.error(
                     t.span(),
-                    format!("{e} (a texture is \"checkerboard\", \"uv_grid\", \"mip_levels\", \"bumps\", \"relief\", \"bump_normals\" or a PNG/JPEG path)"),
+                    format!("{e} (a texture is \"checkerboard\", \"uv_grid\", \"mip_levels\", \"bumps\", \"relief\", \"bump_normals\", \"relief_normals\" or a PNG/JPEG path)"),
                 );
                 None
             }

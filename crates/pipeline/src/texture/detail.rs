@@ -250,16 +250,34 @@ impl Texture {
     /// as `(n + 1)/2` — what a normal map holds, so that normal mapping reproduces bump mapping.
     #[must_use]
     pub fn bump_normals(size: u32, count: u32, strength: f32) -> Self {
-        let height = Self::bumps(size, count);
+        Self::normals_of(&Self::bumps(size, count), strength, "bump_normals")
+    }
+
+    /// The tangent-space normal map of [`Self::relief`]'s heights (their luminance), as
+    /// [`Self::bump_normals`] is of the bumps: normal mapping with it reproduces bump mapping
+    /// with the relief.
+    #[must_use]
+    pub fn relief_normals(width: u32, height: u32, cell: u32, strength: f32) -> Self {
+        Self::normals_of(
+            &Self::relief(width, height, cell),
+            strength,
+            "relief_normals",
+        )
+    }
+
+    /// The normal map of a height map (its texels' luminance): central differences per texel,
+    /// times `strength`, `n = normalize(−∂h/∂u, −∂h/∂v, 1)` stored as `(n + 1)/2`.
+    fn normals_of(height: &Self, strength: f32, name: &str) -> Self {
         let l = &height.levels[0];
-        let h = |i: i64, j: i64| l.texel(i, j, Wrap::Repeat).x;
-        let mut t = Self::from_fn("bump_normals", size, |i, j| {
+        let luminance = Vec3::new(0.2126, 0.7152, 0.0722);
+        let h = |i: i64, j: i64| l.texel(i, j, Wrap::Repeat).dot(luminance);
+        let mut t = Self::from_fn_sized(name, (l.width, l.height), |i, j| {
             let (i, j) = (i64::from(i), i64::from(j));
             let du = (h(i + 1, j) - h(i - 1, j)) / 2.0 * strength;
             let dv = (h(i, j + 1) - h(i, j - 1)) / 2.0 * strength;
             (Vec3::new(-du, -dv, 1.0).normalize() + Vec3::ONE) / 2.0
         });
-        t.name = "bump_normals".to_owned();
+        t.name = name.to_owned();
         t
     }
 }

@@ -1,10 +1,10 @@
 #version 330 core
 // pipelens' flat shading, the fragment half: one normal per face and one lighting per face.
-// The face normal is the cross product of two directions in the face's plane; the screen
-// derivatives of the world position are two such directions, and
-//   (p1 − p0)×(p2 − p0) = 2·area·(∂p/∂x × ∂p/∂y)
-// (area: the triangle's signed area on screen, > 0 when it faces the viewer), so
-//   n_face = ±normalize(dFdx(p) × dFdy(p)), + for a front face.
+// The face normal is the cross product of two directions in the face's plane: as x and y move
+// on the screen the world position p moves within the face, so ∂p/∂x and ∂p/∂y are two such
+// directions and n_face = ±normalize(dFdx(p) × dFdy(p)), + for a front face. (Only the
+// direction holds in general: (p1 − p0)×(p2 − p0) = 2·area·(∂p/∂x × ∂p/∂y) holds for an affine
+// mapping alone, not under perspective.)
 // The Blinn-Phong lighting is that of gouraud.vert, at the provoking vertex f_pos: every
 // fragment of the face computes the same colour. A textured surface is lit white (c = 1) and
 // its texel modulates ambient and diffuse, as with Gouraud shading.
