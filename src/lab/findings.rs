@@ -159,8 +159,31 @@ pub fn first_difference(
             .zip(length(theirs))
             .is_some_and(|(y, t)| (t - 1.0).abs() < 0.001 && (y - 1.0).abs() > 0.0015)
     });
-    unit.or_else(|| paired.iter().find(|(_, _, y, t)| !same_value(y, t)))
-        .map(mismatch)
+    if let Some(m) = unit.or_else(|| paired.iter().find(|(_, _, y, t)| !same_value(y, t))) {
+        return Some(mismatch(m));
+    }
+    // Nothing differs stretch by stretch (the runs loop differently, or assign their values in
+    // different stretches): the last value of each name both runs assign — the output's at
+    // least — compared whatever the stretch.
+    let last = |values: Vec<((usize, String), (usize, String))>| {
+        let mut out: Vec<(String, (usize, String))> = Vec::new();
+        for ((_, name), v) in values {
+            match out.iter_mut().find(|(n, _)| *n == name) {
+                Some((_, old)) => *old = v,
+                None => out.push((name, v)),
+            }
+        }
+        out
+    };
+    let theirs_last: std::collections::HashMap<_, _> =
+        last(stretches(theirs)).into_iter().collect();
+    last(stretches(mine))
+        .into_iter()
+        .find_map(|(name, (line, yours))| {
+            let (_, theirs) = theirs_last.get(&name)?;
+            (!same_value(&yours, theirs)).then(|| (name, line, yours, theirs.clone()))
+        })
+        .map(|m| mismatch(&m))
 }
 
 /// The first row of the vertex table whose clip position in the student's frame differs from

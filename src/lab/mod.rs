@@ -195,20 +195,10 @@ pub fn criteria(scene: &Scene, tolerance: f32) -> Criteria {
 /// The student's sources in `scene`, named as the shader panel's Save names them: the first
 /// object's shaders and the scene's functions.
 fn scene_sources(scene: &Scene) -> Vec<(String, &str)> {
-    let mut out = Vec::new();
-    if let Some(sh) = scene.objects.iter().find_map(|o| o.shader.as_ref()) {
-        out.push(("shader.vert".to_owned(), sh.programs.vertex.source.as_str()));
-        out.push((
-            "shader.frag".to_owned(),
-            sh.programs.fragment.source.as_str(),
-        ));
-    }
-    for kind in pipeline::shader::HookKind::ALL {
-        if let Some(h) = scene.hook(kind) {
-            out.push((format!("{}.glsl", kind.key()), h.source.as_str()));
-        }
-    }
-    out
+    crate::lesson::forbid::files(
+        scene.objects.iter().find_map(|o| o.shader.as_ref()),
+        |kind| scene.hook(kind),
+    )
 }
 
 /// Whether the student's vertex and fragment shaders are theirs to write: the starter says

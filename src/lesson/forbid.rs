@@ -45,8 +45,17 @@ impl Shortcut {
 /// gives it: `shader.vert`, `shader.frag`, `inside.glsl`, …
 #[must_use]
 pub fn sources(code: &pipeline::scene::StudentCode) -> Vec<(String, &str)> {
+    files(code.shader.as_ref(), |kind| code.hook(kind))
+}
+
+/// The sources a shader pair and a set of functions hold, named as [`sources`] names them.
+#[must_use]
+pub fn files<'a>(
+    shader: Option<&'a pipeline::scene::ObjectShader>,
+    hook: impl Fn(pipeline::shader::HookKind) -> Option<&'a pipeline::shader::Hook>,
+) -> Vec<(String, &'a str)> {
     let mut out = Vec::new();
-    if let Some(sh) = &code.shader {
+    if let Some(sh) = shader {
         out.push(("shader.vert".to_owned(), sh.programs.vertex.source.as_str()));
         out.push((
             "shader.frag".to_owned(),
@@ -54,7 +63,7 @@ pub fn sources(code: &pipeline::scene::StudentCode) -> Vec<(String, &str)> {
         ));
     }
     for kind in pipeline::shader::HookKind::ALL {
-        if let Some(h) = code.hook(kind) {
+        if let Some(h) = hook(kind) {
             out.push((format!("{}.glsl", kind.key()), h.source.as_str()));
         }
     }

@@ -399,6 +399,15 @@ bool owns(vec2 from, vec2 to, vec2 p) {
     ("15-surface-detail", "Lab: displacement in a vertex shader", "    float k = displacement_scale;
     vec3 p = position;
     p += k * height(uv) * normal;", Right),
+    // 24: the diffuse term.
+    ("24-shader-programs", "Lab: the diffuse term", "    L += kd * light_color * max(dot(n, l), 0.0);", Wrong(&["Not yet", "`color`"])),
+    ("24-shader-programs", "Lab: the diffuse term", "    L += kd * v_color * light_color * dot(n, l);", Wrong(&["Not yet", "`color`"])),
+    ("24-shader-programs", "Lab: the diffuse term", "    L += kd * v_color * light_color * max(dot(n, v), 0.0);", Wrong(&["Not yet", "`color`"])),
+    ("24-shader-programs", "Lab: the diffuse term", "    L = kd * v_color * light_color * max(dot(n, l), 0.0);", Wrong(&["Not yet", "`color`"])),
+    ("24-shader-programs", "Lab: the diffuse term", "    L += kd * v_color * max(dot(n, h), 0.0);", Wrong(&["Not yet", "`color`"])),
+    ("24-shader-programs", "Lab: the diffuse term", "    float lambert = clamp(dot(l, n), 0.0, 1.0);
+    L = L + lambert * light_color * v_color * kd;", Right),
+    ("24-shader-programs", "Lab: the diffuse term", "    L += mix(vec3(0.0), kd * v_color * light_color, max(dot(n, l), 0.0));", Right),
 ];
 
 /// The lab titled `title` in `lesson`: its step and the lesson.

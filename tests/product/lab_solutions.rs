@@ -181,4 +181,10 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
             sum += f * ks * light.intensity * pow(max(dot(n, h), 0.0), shininess);
         }",
     ),
+    (
+        "24-shader-programs",
+        "Lab: the diffuse term",
+        "    // TODO: the diffuse term k_d·c·I·max(n·l, 0), added to L.",
+        "    L += kd * v_color * light_color * max(dot(n, l), 0.0);",
+    ),
 ];
