@@ -83,9 +83,10 @@ pub fn run(req: &GradeRequest) -> Result<()> {
                 )
             });
             let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-            bar.show(n, jobs.len(), &student_name(path));
+            let student = student_name(path);
+            bar.show(n, jobs.len(), &student);
             Row {
-                student: student_name(path),
+                student,
                 step: k + 1,
                 title: lesson.steps[k].title.get(req.lang).to_owned(),
                 grade,

@@ -66,19 +66,24 @@ pub fn first_sample_mismatch(
     let square = (ONE * ONE) as f64;
     let test = reference.settings.depth_test;
     let mut stored = vec![test.clear_value(); offsets.len()];
+    let (inside, depth_test) = (
+        scene.hook(HookKind::Inside),
+        scene.hook(HookKind::DepthTest),
+    );
     for (t, tri) in reference.triangles.iter().enumerate() {
         let [x0, y0, x1, y1] = tri.bbox.map(u32::from);
         if x < x0 || x > x1 || y < y0 || y > y1 {
             continue;
         }
+        // The corners as the rasterizer hands them to the student's inside test: snapped.
+        let corners = tri.window.map(|c| {
+            let f = pipeline::raster::snap_xy(c);
+            [pixels(f.x) as f32, pixels(f.y) as f32]
+        });
         for (s, off) in offsets.iter().enumerate() {
             let p = corner + *off;
             let covered = tri.covers(p);
-            if let Some(hook) = scene.hook(HookKind::Inside) {
-                let corners = tri.window.map(|c| {
-                    let f = pipeline::raster::snap_xy(c);
-                    [pixels(f.x) as f32, pixels(f.y) as f32]
-                });
+            if let Some(hook) = inside {
                 let position = [pixels(p.x), pixels(p.y)];
                 let yours = hook
                     .covers(&[[position[0] as f32, position[1] as f32]], corners)
@@ -102,7 +107,7 @@ pub fn first_sample_mismatch(
             }
             let z = tri.depth_at(p);
             let theirs = test.passes(z, stored[s]);
-            if let Some(hook) = scene.hook(HookKind::DepthTest) {
+            if let Some(hook) = depth_test {
                 let yours = hook.passes(&[z], &[stored[s]]).ok()?.first().copied()?;
                 if yours != theirs {
                     return Some(SampleMismatch::Depth {
