@@ -248,6 +248,8 @@ pub struct Function {
     pub locals_width: u32,
     /// The arguments' registers.
     pub args: Vec<Reg>,
+    /// The type it returns (`None`: `void`).
+    pub result: Option<naga::Handle<naga::Type>>,
     /// The body.
     pub body: Vec<Stmt>,
 }

@@ -1,47 +1,153 @@
-//! What one invocation did, in words: the machine's events with the student's line numbers and
-//! every value written as GLSL writes it (`vec3(0.000, 0.707, 0.707)`).
+//! What one invocation did: the machine's events as data ([`Step`], with every value's numbers)
+//! at the student's line numbers, and in words, every value written as GLSL writes it
+//! (`vec3(0.000, 0.707, 0.707)`).
 
 use naga::TypeInner;
 
 use super::{Event, Program, code, line_column};
 
-/// One line of a trace: where, and what happened, in words with the values.
+/// One line of a trace: where, what happened, and the same in words with the values.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct TraceLine {
     /// Line in the student's source, from 1.
     pub line: usize,
     /// What happened: `n = vec3(0.000, 0.707, 0.707)`, `if: true → then`, `loop: iteration 3`.
     pub text: String,
+    /// What happened, as data: what a program compares (a lab's check), where the text is what
+    /// a person reads.
+    pub step: Step,
+}
+
+/// What one statement of a run did.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Step {
+    /// A variable (or a part of one: its whole new value) was written.
+    Assign {
+        /// The variable.
+        name: String,
+        /// Its whole new value.
+        value: Value,
+    },
+    /// An `if` chose an arm.
+    Branch {
+        /// Whether its condition held.
+        taken: bool,
+    },
+    /// A loop began iteration `k` (from 1).
+    Iteration {
+        /// Which.
+        k: u32,
+    },
+    /// A function of the student's was called.
+    Call {
+        /// The function.
+        name: String,
+    },
+    /// It returned, with its value (none for a `void` function).
+    Return {
+        /// The function.
+        name: String,
+        /// What it returned.
+        value: Option<Value>,
+    },
+    /// The fragment was thrown away.
+    Discard,
+}
+
+/// A value of a run: its GLSL type and its scalars in GLSL's order (a matrix column by column,
+/// an array element by element, a struct member by member), each as a number (`true` is 1).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Value {
+    /// Its type as GLSL spells it (`vec3`, `mat4`, `Light[8]`).
+    pub ty: String,
+    /// Its scalars.
+    pub numbers: Vec<f64>,
+}
+
+impl Value {
+    /// Whether `self` and `other` are the same value up to rounding: the same type, and each
+    /// scalar within `10⁻⁴·(1 + |x|)` — far above what another order of the same operations
+    /// gives in `f32`, far below what a wrong formula changes.
+    #[must_use]
+    pub fn agrees(&self, other: &Self) -> bool {
+        self.ty == other.ty
+            && self.numbers.len() == other.numbers.len()
+            && self
+                .numbers
+                .iter()
+                .zip(&other.numbers)
+                .all(|(a, b)| (a - b).abs() <= 1e-4 * (1.0 + a.abs().max(b.abs())))
+    }
+
+    /// Its length, for a vector of three floats (a normal left unnormalized shows here).
+    #[must_use]
+    pub fn length(&self) -> Option<f64> {
+        (self.ty == "vec3").then(|| self.numbers.iter().map(|x| x * x).sum::<f64>().sqrt())
+    }
 }
 
 /// What one invocation did, statement by statement.
 pub type Trace = Vec<TraceLine>;
 
 impl Program {
-    /// The trace of the traced lane, in words.
+    /// The trace of the traced lane, as data and in words.
     #[must_use]
     pub fn describe(&self, events: &[Event]) -> Trace {
         events
             .iter()
             .map(|e| {
-                let (at, text) = match e {
-                    Event::Assign { at, name, ty, bits } => {
-                        (*at, format!("{name} = {}", self.format_value(*ty, bits)))
-                    }
+                let value = |ty: naga::Handle<naga::Type>, bits: &[u32]| Value {
+                    ty: glsl_type(&self.module, ty),
+                    numbers: scalars(&self.module, ty, bits),
+                };
+                let (at, text, step) = match e {
+                    Event::Assign { at, name, ty, bits } => (
+                        *at,
+                        format!("{name} = {}", self.format_value(*ty, bits)),
+                        Step::Assign {
+                            name: name.clone(),
+                            value: value(*ty, bits),
+                        },
+                    ),
                     Event::Branch { at, taken } => (
                         *at,
                         format!("if: {taken} → {}", if *taken { "then" } else { "else" }),
+                        Step::Branch { taken: *taken },
                     ),
-                    Event::Iteration { at, k } => (*at, format!("loop: iteration {k}")),
-                    Event::Call { at, name } => (*at, format!("call {name}()")),
-                    Event::Return { at, name } => (*at, format!("return from {name}()")),
-                    Event::Discard { at } => {
-                        (*at, "discard: the fragment is thrown away".to_owned())
-                    }
+                    Event::Iteration { at, k } => (
+                        *at,
+                        format!("loop: iteration {k}"),
+                        Step::Iteration { k: *k },
+                    ),
+                    Event::Call { at, name } => (
+                        *at,
+                        format!("call {name}()"),
+                        Step::Call { name: name.clone() },
+                    ),
+                    Event::Return { at, name, value: v } => (
+                        *at,
+                        match v {
+                            Some((ty, bits)) => {
+                                format!("{name}() returns {}", self.format_value(*ty, bits))
+                            }
+                            None => format!("return from {name}()"),
+                        },
+                        Step::Return {
+                            name: name.clone(),
+                            value: v.as_ref().map(|(ty, bits)| value(*ty, bits)),
+                        },
+                    ),
+                    Event::Discard { at } => (
+                        *at,
+                        "discard: the fragment is thrown away".to_owned(),
+                        Step::Discard,
+                    ),
                 };
                 TraceLine {
                     line: line_column(&self.source, at).0,
                     text,
+                    step,
                 }
             })
             .collect()
@@ -66,6 +172,41 @@ pub fn float_text(x: f32) -> String {
         format!("{x:.3e}")
     } else {
         format!("{x:.3}")
+    }
+}
+
+/// The scalars of a value of type `ty` held in `bits`, in GLSL's order, each as a number.
+fn scalars(module: &naga::Module, ty: naga::Handle<naga::Type>, bits: &[u32]) -> Vec<f64> {
+    let inner = &module.types[ty].inner;
+    let number = |k: code::Kind, b: u32| match k {
+        code::Kind::F => f64::from(f32::from_bits(b)),
+        code::Kind::I => f64::from(b as i32),
+        code::Kind::U => f64::from(b),
+        code::Kind::B => f64::from(u8::from(b != 0)),
+    };
+    match *inner {
+        TypeInner::Scalar(_) | TypeInner::Vector { .. } => bits
+            .iter()
+            .map(|&b| number(code::kind_of(inner), b))
+            .collect(),
+        TypeInner::Matrix { .. } => bits.iter().map(|&b| number(code::Kind::F, b)).collect(),
+        TypeInner::Array { base, .. } => {
+            let n = code::components(module, &module.types[base].inner) as usize;
+            bits.chunks(n.max(1))
+                .flat_map(|c| scalars(module, base, c))
+                .collect()
+        }
+        TypeInner::Struct { ref members, .. } => {
+            let mut at = 0;
+            let mut out = Vec::new();
+            for m in members {
+                let n = code::components(module, &module.types[m.ty].inner) as usize;
+                out.extend(scalars(module, m.ty, &bits[at..(at + n).min(bits.len())]));
+                at += n;
+            }
+            out
+        }
+        _ => Vec::new(),
     }
 }
 

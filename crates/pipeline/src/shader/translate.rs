@@ -137,6 +137,7 @@ impl<'m> Translator<'m> {
             locals,
             locals_width,
             args: Vec::new(),
+            result: f.result.as_ref().map(|r| r.ty),
             body: Vec::new(),
         };
         let mut args = vec![Reg::default(); f.arguments.len()];

@@ -329,6 +329,55 @@ fn the_inspected_pixel_keeps_its_fragment_shaders_run() {
     );
 }
 
+/// The trace is data: each step's values as numbers, a helper's return with its value. The
+/// shader's values are constants, so every number is known by hand: `twice(0.25)` returns 0.5,
+/// `m` is the 2×2 matrix with columns (h, 2) = (0.5, 2) and (3, 4), the `if` takes its arm.
+#[test]
+fn the_trace_holds_each_value_as_numbers_and_a_functions_return() {
+    use pipeline::shader::{Step, Value};
+    let fs = "#version 330 core\nout vec4 color;\nfloat twice(float x) {\n  return 2.0 * x;\n}\nvoid main() {\n  float h = twice(0.25);\n  mat2 m = mat2(h, 2.0, 3.0, 4.0);\n  bool big = h > 0.4;\n  if (big) {\n    h = 1.0;\n  }\n  color = vec4(h, m[1][0], 0.0, 1.0);\n}\n";
+    let mut s = settings();
+    s.capture.pixel = Some((80, 60));
+    let f = render(&with_shaders(sphere_scene(false), None, Some(fs)), &s);
+    let frag = &f.shaders.as_ref().expect("a record").pixel[0];
+    let steps: Vec<&Step> = frag.trace.iter().map(|t| &t.step).collect();
+    let value = |ty: &str, numbers: &[f64]| Value {
+        ty: ty.to_owned(),
+        numbers: numbers.to_vec(),
+    };
+    let returned = Step::Return {
+        name: "twice".to_owned(),
+        value: Some(value("float", &[0.5])),
+    };
+    assert!(steps.contains(&&returned), "{:#?}", frag.trace);
+    let line = frag
+        .trace
+        .iter()
+        .find(|t| t.step == returned)
+        .map(|t| (t.line, t.text.as_str()));
+    assert_eq!(line, Some((4, "twice() returns 0.500")));
+    for (name, v) in [
+        ("h", value("float", &[0.5])),
+        ("m", value("mat2", &[0.5, 2.0, 3.0, 4.0])),
+        ("big", value("bool", &[1.0])),
+        ("h", value("float", &[1.0])),
+    ] {
+        let assigned = Step::Assign {
+            name: name.to_owned(),
+            value: v,
+        };
+        assert!(
+            steps.contains(&&assigned),
+            "{assigned:?} in {:#?}",
+            frag.trace
+        );
+    }
+    assert!(steps.contains(&&Step::Branch { taken: true }));
+    assert!(steps.contains(&&Step::Call {
+        name: "twice".to_owned()
+    }));
+}
+
 #[test]
 fn a_loops_condition_is_traced_on_the_loops_line() {
     // naga writes a `for` condition as `if (!cond) break;` with no place of its own.

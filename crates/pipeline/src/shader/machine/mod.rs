@@ -70,6 +70,8 @@ pub enum Event {
         at: usize,
         /// The function.
         name: String,
+        /// What it returned, with its type (none for a `void` function).
+        value: Option<(naga::Handle<naga::Type>, Vec<u32>)>,
     },
     /// The fragment was discarded.
     Discard {
@@ -431,7 +433,16 @@ impl<'c> Machine<'c> {
                     // `main`'s end needs no line of its own.
                     if fi + 1 < code.functions.len() && f.name != "main" {
                         let name = f.name.clone();
-                        self.event(fi, mask, |_, _| Event::Return { at: *at, name });
+                        let result = f.result.zip(*value);
+                        self.event(fi, mask, |m, l| Event::Return {
+                            at: *at,
+                            name,
+                            value: result.map(|(ty, v)| {
+                                let ret = &m.returns[fi];
+                                let bits = (0..v.n as usize).map(|c| ret[c * LANES + l]).collect();
+                                (ty, bits)
+                            }),
+                        });
                     }
                     flow.ret |= mask;
                     mask = 0;
