@@ -2,7 +2,7 @@
 //! read from naga's message ([`Complaint`]) said plainly at the student's line, and naga's own
 //! wording only where no sentence covers it.
 
-use pipeline::shader::{Complaint, ShaderError};
+use pipeline::shader::{Complaint, ShaderError, interface};
 
 use super::Lang;
 
@@ -145,6 +145,76 @@ fn form(c: &Complaint, lang: Lang) -> Option<String> {
             format!("pipelens does not run this form of GLSL yet ({what})"),
             format!("pipelens 还不能运行这种 GLSL 写法（{what}）"),
         ),
+        _ => return own(c, lang),
+    })
+}
+
+/// The sentence for a complaint of pipelens' own checks (the uniforms, textures and attributes
+/// it provides, the outputs a stage must write), in Chinese; `None` in English, where the core's
+/// message says it.
+fn own(c: &Complaint, lang: Lang) -> Option<String> {
+    use Complaint as C;
+    if lang == Lang::En {
+        return None;
+    }
+    let meant = |s: &Option<String>| {
+        s.as_ref()
+            .map_or_else(String::new, |s| format!("（是不是想写 `{s}`？）"))
+    };
+    Some(match c {
+        C::UnknownUniform { name, suggestion } => format!(
+            "pipelens 不设置名为 `{name}` 的 uniform{}；它设置的 uniform：{}",
+            meant(suggestion),
+            interface::UNIFORMS
+                .iter()
+                .map(|u| u.names[0])
+                .collect::<Vec<_>>()
+                .join("、")
+        ),
+        C::UniformType { name, written } => format!(
+            "pipelens 的 `{name}` 是 {}，这里却声明为 {written}",
+            interface::uniform(name).map_or_else(String::new, |u| u
+                .glsl
+                .replace("MAX_LIGHTS", &interface::MAX_LIGHTS.to_string()))
+        ),
+        C::UnknownTexture { name, suggestion } => format!(
+            "pipelens 不绑定名为 `{name}` 的纹理{}；物体的纹理是 `uniform sampler2D tex;`，凹凸或法线贴图是 `uniform sampler2D detail;`",
+            meant(suggestion)
+        ),
+        C::UnknownAttribute { name, suggestion } => format!(
+            "pipelens 不提供名为 `{name}` 的顶点属性{}；它提供的属性：{}",
+            meant(suggestion),
+            interface::ATTRIBUTES
+                .iter()
+                .map(|a| format!("{} {}", a.glsl, a.names[0]))
+                .collect::<Vec<_>>()
+                .join("、")
+        ),
+        C::OneColourOutput => {
+            "pipelens 只画到一个颜色缓冲：只为片元的颜色声明一个 `out vec4`".to_owned()
+        }
+        C::UniformWritten(name) => {
+            format!("`{name}` 是 uniform：着色器只能读它，不能给它赋值")
+        }
+        C::NoPosition => "顶点着色器从未写 `gl_Position`（裁剪空间位置）：请加上 `gl_Position = mvp * vec4(position, 1.0);`".to_owned(),
+        C::NoOutput => "片元着色器没有输出：请声明 `out vec4 color;`，并把片元的颜色写进去".to_owned(),
+        C::OutputNotWritten(name) => {
+            format!("片元着色器从未写 `{name}`：这个片元将没有颜色")
+        }
+        C::VaryingComponents { name, here, vertex } => format!(
+            "`{name}` 在这里有 {here} 个分量，在顶点着色器中却有 {vertex} 个：请在两边用相同的类型声明它"
+        ),
+        C::NoVaryingSource { name, outputs } => format!(
+            "顶点着色器没有可插值到这个输入的输出 `{name}`；它的输出：{}",
+            if outputs.is_empty() {
+                "无".to_owned()
+            } else {
+                outputs.join("、")
+            }
+        ),
+        C::HookSignature(signature) => format!(
+            "pipelens 会调用 `{signature}`：请严格按这个签名定义它（不要 `main`，也不要自己的输入或输出）"
+        ),
         _ => return None,
     })
 }
@@ -241,5 +311,81 @@ mod tests {
             );
         }
         assert_eq!(complaint(&Complaint::Other, Lang::En), None);
+    }
+
+    /// pipelens' own checks (the uniforms, textures and attributes it provides, the outputs a
+    /// stage must write, the varyings linked), met in real shaders, are said in Chinese in the
+    /// Chinese interface — no English sentence of the core's reaches it — and in English as the
+    /// core says them.
+    #[test]
+    fn pipelens_own_checks_are_sentences_in_chinese_too() {
+        use pipeline::shader::{Stage, compile, compile_hook, link};
+        let frag = |body: &str| format!("#version 330 core\nout vec4 color;\n{body}\n");
+        let cases: Vec<(Vec<ShaderError>, &str)> = vec![
+            (
+                compile(Stage::Fragment, &frag("uniform vec3 eyes;\nvoid main() { color = vec4(eyes, 1.0); }"))
+                    .expect_err("refused"),
+                "`eye`",
+            ),
+            (
+                compile(Stage::Fragment, &frag("uniform vec4 eye;\nvoid main() { color = eye; }"))
+                    .expect_err("refused"),
+                "vec3",
+            ),
+            (
+                compile(Stage::Fragment, &frag("uniform sampler2D texx;\nvoid main() { color = texture(texx, vec2(0.0)); }"))
+                    .expect_err("refused"),
+                "`tex`",
+            ),
+            (
+                compile(Stage::Vertex, "#version 330 core\nin vec3 pos;\nvoid main() { gl_Position = vec4(pos, 1.0); }\n")
+                    .expect_err("refused"),
+                "position",
+            ),
+            (
+                compile(Stage::Vertex, "#version 330 core\nin vec3 position;\nvoid main() { vec3 p = position; }\n")
+                    .expect_err("refused"),
+                "gl_Position",
+            ),
+            (
+                compile(Stage::Fragment, &frag("void main() { vec4 c = vec4(1.0); }"))
+                    .expect_err("refused"),
+                "`color`",
+            ),
+            (
+                compile(Stage::Fragment, &frag("uniform vec3 eye;\nvoid main() { eye = vec3(0.0); color = vec4(1.0); }"))
+                    .expect_err("refused"),
+                "uniform",
+            ),
+            (
+                link(
+                    Some("#version 330 core\nin vec3 position;\nout vec2 v_uv;\nvoid main() { v_uv = vec2(0.0); gl_Position = vec4(position, 1.0); }\n"),
+                    Some(&frag("in vec3 v_uv;\nvoid main() { color = vec4(v_uv, 1.0); }")),
+                )
+                .expect_err("refused")
+                .into_iter()
+                .map(|e| e.error)
+                .collect(),
+                "3",
+            ),
+            (
+                compile_hook(pipeline::shader::HookKind::Inside, "bool inside(vec2 p) { return true; }")
+                    .expect_err("refused"),
+                "inside",
+            ),
+        ];
+        for (errors, names) in cases {
+            let own = errors
+                .iter()
+                .find(|e| e.complaint != Complaint::Other)
+                .unwrap_or_else(|| panic!("no complaint among {errors:?}"));
+            let zh = message(own, Lang::Zh);
+            assert!(zh.contains(names), "{zh}");
+            assert!(
+                !zh.contains(" is ") && !zh.contains(" the ") && !zh.contains("pipelens sets"),
+                "English in the Chinese sentence: {zh}"
+            );
+            assert!(message(own, Lang::En).contains(&own.message), "{own:?}");
+        }
     }
 }

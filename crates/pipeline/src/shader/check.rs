@@ -4,7 +4,7 @@
 
 use std::ops::Range;
 
-use super::{ShaderError, Stage, code, dialect, error_at, interface, trace::glsl_type};
+use super::{Complaint, ShaderError, Stage, code, dialect, error_at, interface, trace::glsl_type};
 
 /// naga's words for a student: handles such as `[7]` and `naga::ir::` paths left out.
 pub(super) fn plain(message: &str) -> String {
@@ -70,59 +70,14 @@ pub(super) fn check_declarations(
     errors: &mut Vec<ShaderError>,
 ) {
     use dialect::Storage;
-    let known_uniforms: Vec<&str> = interface::UNIFORMS
-        .iter()
-        .flat_map(|u| u.names.iter().copied())
-        .collect();
     for d in &adapted.declarations {
-        match d.storage {
-            Storage::Uniform => match interface::uniform(&d.name) {
-                None => errors.push(error_at(
-                    source,
-                    d.name_span.clone(),
-                    format!(
-                        "pipelens sets no uniform called `{}`{}; the uniforms it sets: {}",
-                        d.name,
-                        did_you_mean(&d.name, &known_uniforms),
-                        interface::UNIFORMS.iter().map(|u| u.names[0]).collect::<Vec<_>>().join(", ")
-                    ),
-                )),
-                Some(spec) => {
-                    let written = glsl_type_of_global(module, &d.name).unwrap_or_default();
-                    let expected = spec.glsl.replace("MAX_LIGHTS", &interface::MAX_LIGHTS.to_string());
-                    if written != expected {
-                        errors.push(error_at(
-                            source,
-                            d.span.clone(),
-                            format!("pipelens' `{}` is a {expected} ({}), declared here as {written}", d.name, spec.meaning),
-                        ));
-                    }
-                }
-            },
-            Storage::Texture if interface::texture_slot(&d.name).is_none() => errors.push(error_at(
-                source,
-                d.name_span.clone(),
-                format!(
-                    "pipelens binds no texture called `{}`{}; the object's texture is `uniform sampler2D tex;`, its bump or normal map `uniform sampler2D detail;`",
-                    d.name,
-                    did_you_mean(&d.name, &interface::TEXTURES.map(|(n, _)| n))
-                ),
-            )),
-            Storage::Input if stage == Stage::Vertex && interface::attribute_location(&d.name).is_none() => {
-                let names: Vec<&str> = interface::ATTRIBUTES.iter().flat_map(|a| a.names.iter().copied()).collect();
-                errors.push(error_at(
-                    source,
-                    d.name_span.clone(),
-                    format!(
-                        "pipelens feeds no vertex attribute called `{}`{}; the attributes: {}",
-                        d.name,
-                        did_you_mean(&d.name, &names),
-                        interface::ATTRIBUTES.iter().map(|a| format!("{} {}", a.glsl, a.names[0])).collect::<Vec<_>>().join(", ")
-                    ),
-                ));
-            }
-            _ => {}
-        }
+        let error = match d.storage {
+            Storage::Uniform => uniform_declaration(source, d, module),
+            Storage::Texture => texture_declaration(source, d),
+            Storage::Input if stage == Stage::Vertex => attribute_declaration(source, d),
+            _ => None,
+        };
+        errors.extend(error);
     }
     let outputs = adapted
         .declarations
@@ -134,22 +89,141 @@ pub(super) fn check_declarations(
             .declarations
             .iter()
             .rfind(|d| d.storage == Storage::Output);
-        errors.push(error_at(
-            source,
-            d.map_or(0..0, |d| d.span.clone()),
-            "pipelens draws into one colour buffer: declare one `out vec4` for the fragment's colour",
+        errors.push(complain(
+            error_at(
+                source,
+                d.map_or(0..0, |d| d.span.clone()),
+                "pipelens draws into one colour buffer: declare one `out vec4` for the fragment's colour",
+            ),
+            Complaint::OneColourOutput,
         ));
     }
 }
 
-/// ` (did you mean `x`?)` when a known name is close to `name`.
-pub(super) fn did_you_mean(name: &str, known: &[&str]) -> String {
+/// A uniform's declaration: one pipelens sets, with its type.
+fn uniform_declaration(
+    source: &str,
+    d: &dialect::Declaration,
+    module: &naga::Module,
+) -> Option<ShaderError> {
+    let Some(spec) = interface::uniform(&d.name) else {
+        let known: Vec<&str> = interface::UNIFORMS
+            .iter()
+            .flat_map(|u| u.names.iter().copied())
+            .collect();
+        let firsts: Vec<&str> = interface::UNIFORMS.iter().map(|u| u.names[0]).collect();
+        return Some(complain(
+            error_at(
+                source,
+                d.name_span.clone(),
+                format!(
+                    "pipelens sets no uniform called `{}`{}; the uniforms it sets: {}",
+                    d.name,
+                    did_you_mean(&d.name, &known),
+                    firsts.join(", ")
+                ),
+            ),
+            Complaint::UnknownUniform {
+                name: d.name.clone(),
+                suggestion: nearest(&d.name, &known).map(str::to_owned),
+            },
+        ));
+    };
+    let written = glsl_type_of_global(module, &d.name).unwrap_or_default();
+    let expected = spec
+        .glsl
+        .replace("MAX_LIGHTS", &interface::MAX_LIGHTS.to_string());
+    (written != expected).then(|| {
+        complain(
+            error_at(
+                source,
+                d.span.clone(),
+                format!(
+                    "pipelens' `{}` is a {expected} ({}), declared here as {written}",
+                    d.name, spec.meaning
+                ),
+            ),
+            Complaint::UniformType {
+                name: d.name.clone(),
+                written,
+            },
+        )
+    })
+}
+
+/// A texture's declaration: one pipelens binds.
+fn texture_declaration(source: &str, d: &dialect::Declaration) -> Option<ShaderError> {
+    if interface::texture_slot(&d.name).is_some() {
+        return None;
+    }
+    let known = interface::TEXTURES.map(|(n, _)| n);
+    Some(complain(
+        error_at(
+            source,
+            d.name_span.clone(),
+            format!(
+                "pipelens binds no texture called `{}`{}; the object's texture is `uniform sampler2D tex;`, its bump or normal map `uniform sampler2D detail;`",
+                d.name,
+                did_you_mean(&d.name, &known)
+            ),
+        ),
+        Complaint::UnknownTexture {
+            name: d.name.clone(),
+            suggestion: nearest(&d.name, &known).map(str::to_owned),
+        },
+    ))
+}
+
+/// A vertex shader's input: an attribute pipelens feeds.
+fn attribute_declaration(source: &str, d: &dialect::Declaration) -> Option<ShaderError> {
+    if interface::attribute_location(&d.name).is_some() {
+        return None;
+    }
+    let names: Vec<&str> = interface::ATTRIBUTES
+        .iter()
+        .flat_map(|a| a.names.iter().copied())
+        .collect();
+    let declared: Vec<String> = interface::ATTRIBUTES
+        .iter()
+        .map(|a| format!("{} {}", a.glsl, a.names[0]))
+        .collect();
+    Some(complain(
+        error_at(
+            source,
+            d.name_span.clone(),
+            format!(
+                "pipelens feeds no vertex attribute called `{}`{}; the attributes: {}",
+                d.name,
+                did_you_mean(&d.name, &names),
+                declared.join(", ")
+            ),
+        ),
+        Complaint::UnknownAttribute {
+            name: d.name.clone(),
+            suggestion: nearest(&d.name, &names).map(str::to_owned),
+        },
+    ))
+}
+
+/// `error` with the mistake `complaint` as data.
+pub(super) fn complain(mut error: ShaderError, complaint: Complaint) -> ShaderError {
+    error.complaint = complaint;
+    error
+}
+
+/// The known name nearest `name`, when one is close (at most 2 edits, or a third of its length).
+pub(super) fn nearest<'a>(name: &str, known: &[&'a str]) -> Option<&'a str> {
     known
         .iter()
-        .map(|k| (edit_distance(name, k), k))
+        .map(|k| (edit_distance(name, k), *k))
         .filter(|(d, k)| *d <= 2.max(k.len() / 3))
         .min()
-        .map_or_else(String::new, |(_, k)| format!(" (did you mean `{k}`?)"))
+        .map(|(_, k)| k)
+}
+
+/// ` (did you mean `x`?)` when a known name is close to `name`.
+pub(super) fn did_you_mean(name: &str, known: &[&str]) -> String {
+    nearest(name, known).map_or_else(String::new, |k| format!(" (did you mean `{k}`?)"))
 }
 
 /// Levenshtein distance.
@@ -195,10 +269,13 @@ pub(super) fn check_writes(
     }
     for (at, root, name) in &stores {
         if *root == code::Root::Uniform {
-            errors.push(error_at(
-                source,
-                *at..*at,
-                format!("`{name}` is a uniform: a shader reads it, it cannot assign to it"),
+            errors.push(complain(
+                error_at(
+                    source,
+                    *at..*at,
+                    format!("`{name}` is a uniform: a shader reads it, it cannot assign to it"),
+                ),
+                Complaint::UniformWritten(name.clone()),
             ));
         }
     }
@@ -216,7 +293,10 @@ pub(super) fn check_writes(
     match stage {
         Stage::Vertex if !written("gl_Position") => {
             let at = main_span(source);
-            errors.push(error_at(source, at, NO_POSITION));
+            errors.push(complain(
+                error_at(source, at, NO_POSITION),
+                Complaint::NoPosition,
+            ));
         }
         Stage::Fragment => {
             let out = adapted
@@ -230,16 +310,20 @@ pub(super) fn check_writes(
                     .iter()
                     .any(|(_, g)| g.name.as_deref() == Some(dialect::FRAG_COLOR));
             if !declared {
-                errors.push(error_at(source, main_span(source), "the fragment shader has no output: declare `out vec4 color;` and write the fragment's colour into it"));
+                errors.push(complain(
+                    error_at(source, main_span(source), "the fragment shader has no output: declare `out vec4 color;` and write the fragment's colour into it"),
+                    Complaint::NoOutput,
+                ));
             } else if !written(name) {
                 let span = out.map_or_else(|| main_span(source), |d| d.span.clone());
-                errors.push(error_at(
-                    source,
-                    span,
-                    format!(
-                        "the fragment shader never writes `{}`: the fragment would have no colour",
-                        out.map_or("gl_FragColor", |d| d.name.as_str())
+                let name = out.map_or("gl_FragColor", |d| d.name.as_str());
+                errors.push(complain(
+                    error_at(
+                        source,
+                        span,
+                        format!("the fragment shader never writes `{name}`: the fragment would have no colour"),
                     ),
+                    Complaint::OutputNotWritten(name.to_owned()),
                 ));
             }
         }

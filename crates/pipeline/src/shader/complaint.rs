@@ -63,6 +63,64 @@ pub enum Complaint {
     IntegerOverflow,
     /// A form naga's front end does not take yet.
     NotImplemented(String),
+    /// pipelens' own checks: a uniform pipelens does not set, with the nearest name it sets.
+    UnknownUniform {
+        /// The name declared.
+        name: String,
+        /// The uniform meant, when one is close.
+        suggestion: Option<String>,
+    },
+    /// A uniform pipelens sets (its type is in [`super::interface::UNIFORMS`]), declared with
+    /// another type.
+    UniformType {
+        /// The uniform.
+        name: String,
+        /// The type declared.
+        written: String,
+    },
+    /// A texture pipelens does not bind (it binds `tex` and `detail`).
+    UnknownTexture {
+        /// The name declared.
+        name: String,
+        /// The texture meant, when one is close.
+        suggestion: Option<String>,
+    },
+    /// A vertex attribute pipelens does not feed.
+    UnknownAttribute {
+        /// The name declared.
+        name: String,
+        /// The attribute meant, when one is close.
+        suggestion: Option<String>,
+    },
+    /// More than one fragment output (pipelens draws into one colour buffer).
+    OneColourOutput,
+    /// A uniform assigned to.
+    UniformWritten(String),
+    /// A vertex shader that never writes `gl_Position`.
+    NoPosition,
+    /// A fragment shader with no output.
+    NoOutput,
+    /// A fragment shader that never writes its output.
+    OutputNotWritten(String),
+    /// A fragment input whose vertex output has another number of components.
+    VaryingComponents {
+        /// The varying.
+        name: String,
+        /// Its components in the fragment shader.
+        here: u32,
+        /// In the vertex shader.
+        vertex: u32,
+    },
+    /// A fragment input no vertex output feeds.
+    NoVaryingSource {
+        /// The input.
+        name: String,
+        /// The vertex shader's outputs.
+        outputs: Vec<String>,
+    },
+    /// A pipeline function (`inside`, `depth_test`, …) not defined with the signature pipelens
+    /// calls.
+    HookSignature(String),
     /// Anything else: the English message says it.
     #[default]
     Other,

@@ -264,16 +264,19 @@ pub fn compile_hook(kind: HookKind, source: &str) -> Result<Hook, Vec<ShaderErro
             .collect();
         if mine.len() < errors.len() || mine.is_empty() {
             // What went wrong is in the caller: the function it calls is not there as written.
-            mine.push(super::error_at(
-                source,
-                0..0,
-                format!(
-                    "{} calls `{}` {}: define it with exactly that signature (no `main`, no \
-                     inputs or outputs of your own)",
-                    kind.when().0,
-                    kind.signature(),
-                    kind.when().1
+            mine.push(super::check::complain(
+                super::error_at(
+                    source,
+                    0..0,
+                    format!(
+                        "{} calls `{}` {}: define it with exactly that signature (no `main`, no \
+                         inputs or outputs of your own)",
+                        kind.when().0,
+                        kind.signature(),
+                        kind.when().1
+                    ),
                 ),
+                super::Complaint::HookSignature(kind.signature().to_owned()),
             ));
         }
         mine

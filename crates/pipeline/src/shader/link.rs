@@ -199,12 +199,19 @@ pub fn link(vertex: Option<&str>, fragment: Option<&str>) -> Result<Programs, Ve
             }
             Some((o, _)) => errors.push(StageError {
                 stage: Stage::Fragment,
-                error: fs.error_at_name(
-                    &input.name,
-                    format!(
-                        "`{}` has {} components here but {} in the vertex shader: declare it with the same type in both",
-                        input.name, input.components, o.components
+                error: super::check::complain(
+                    fs.error_at_name(
+                        &input.name,
+                        format!(
+                            "`{}` has {} components here but {} in the vertex shader: declare it with the same type in both",
+                            input.name, input.components, o.components
+                        ),
                     ),
+                    super::Complaint::VaryingComponents {
+                        name: input.name.clone(),
+                        here: input.components,
+                        vertex: o.components,
+                    },
                 ),
             }),
             None => {
@@ -212,13 +219,19 @@ pub fn link(vertex: Option<&str>, fragment: Option<&str>) -> Result<Programs, Ve
                     vs.outputs.iter().filter(|o| o.builtin.is_none()).map(|o| o.name.as_str()).collect();
                 errors.push(StageError {
                     stage: Stage::Fragment,
-                    error: fs.error_at_name(
-                        &input.name,
-                        format!(
-                            "the vertex shader has no output `{}` to interpolate into this input; its outputs: {}",
-                            input.name,
-                            if outputs.is_empty() { "none".to_owned() } else { outputs.join(", ") }
+                    error: super::check::complain(
+                        fs.error_at_name(
+                            &input.name,
+                            format!(
+                                "the vertex shader has no output `{}` to interpolate into this input; its outputs: {}",
+                                input.name,
+                                if outputs.is_empty() { "none".to_owned() } else { outputs.join(", ") }
+                            ),
                         ),
+                        super::Complaint::NoVaryingSource {
+                            name: input.name.clone(),
+                            outputs: outputs.iter().map(|o| (*o).to_owned()).collect(),
+                        },
                     ),
                 });
             }

@@ -44,7 +44,7 @@ pub use link::{
     StageError, Surface, builtin_sources, link,
 };
 pub use machine::{Bindings, Event, LANES, Machine, RunError};
-pub use trace::{Trace, TraceLine, float_text, glsl_type};
+pub use trace::{Step, Trace, TraceLine, Value, float_text, glsl_type};
 
 /// Which programmable stage a shader is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -223,10 +223,9 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
             .map_or(0..0, |r| adapted.original_range(r));
         let message = check::validation_message(e.as_inner());
         if message.contains("builtin(position)") {
-            return vec![error_at(
-                source,
-                check::main_span(source),
-                check::NO_POSITION,
+            return vec![check::complain(
+                error_at(source, check::main_span(source), check::NO_POSITION),
+                Complaint::NoPosition,
             )];
         }
         let mut err = error_at(source, span, message);
