@@ -186,7 +186,7 @@ pub struct RawObject {
     /// `"vertex"`, `"normal"` or `[r, g, b]`.
     pub color: Option<Spanned<RawColor>>,
     pub material: Option<Spanned<RawMaterial>>,
-    /// `"checkerboard"`, `"uv_grid"`, `"mip_levels"` or a path to a PNG or JPEG file.
+    /// `"checkerboard"`, `"checkerboard_wide"` (512 × 128), `"uv_grid"`, `"mip_levels"` or a path to a PNG or JPEG file.
     pub texture: Option<Spanned<String>>,
     pub casts_shadow: Option<bool>,
     /// Centre the mesh's bounding box at the origin and scale it into the unit sphere.
@@ -406,6 +406,17 @@ pub struct RawExercise {
     /// Uniforms the student may not declare and functions they may not call: what the lab
     /// asks them to compute (`forbid = ["view"]`, `forbid = ["texture"]`).
     pub forbid: Option<Spanned<Vec<String>>>,
+    /// `compare = { yours = "level_of_detail()", pipelens = "lod" }`: the value of the student's
+    /// run that stands for pipelens' quantity at the first wrong pixel.
+    pub compare: Option<Spanned<RawCompare>>,
+}
+
+/// `compare = { yours = "…", pipelens = "uv" | "lod" | "texel" }`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCompare {
+    pub yours: String,
+    pub pipelens: String,
 }
 
 /// `expect = …` as written.

@@ -361,8 +361,9 @@ impl Scene {
     }
 
     /// This scene with each object running pipelens' own shading at `settings` written as
-    /// GLSL ([`crate::shader::builtin_sources`]), which draws the built-in pixels. `Ok(None)`
-    /// when an object's shading has no shipped pair.
+    /// GLSL ([`crate::shader::builtin_sources`]), which draws the built-in pixels. An object
+    /// whose shading has no shipped pair (a mirror) keeps the built-in stages; `Ok(None)` when no
+    /// object has one.
     ///
     /// # Errors
     /// The messages of a shipped pair that does not compile (a defect the tests catch).
@@ -376,7 +377,7 @@ impl Scene {
             let Some((vs, fs)) =
                 crate::shader::builtin_sources(settings.shading, settings.reflection, o.surface())
             else {
-                return Ok(None);
+                continue;
             };
             let programs = match linked.iter().find(|(v, f, _)| *v == vs && *f == fs) {
                 Some((_, _, p)) => Arc::clone(p),
@@ -391,7 +392,7 @@ impl Scene {
                 time: 0.0,
             });
         }
-        Ok(Some(scene))
+        Ok((!linked.is_empty()).then_some(scene))
     }
 
     /// Whether a full capture of this scene at `settings` has buffer `kind` to show: the

@@ -403,6 +403,7 @@ fn material(c: &mut Checker<'_>, m: &Spanned<RawMaterial>) -> Material {
 fn texture(c: &mut Checker<'_>, t: &Spanned<String>, base: &Path) -> Option<Texture> {
     match t.get_ref().as_str() {
         "checkerboard" => Some(Texture::checkerboard(512, 16)),
+        "checkerboard_wide" => Some(Texture::checker_cells("checkerboard_wide", (512, 128), 32)),
         "uv_grid" => Some(Texture::uv_grid(512)),
         "mip_levels" => Some(Texture::mip_levels(512)),
         "bumps" => Some(Texture::bumps(512, 8)),
@@ -414,7 +415,7 @@ fn texture(c: &mut Checker<'_>, t: &Spanned<String>, base: &Path) -> Option<Text
             Err(e) => {
                 c.error(
                     t.span(),
-                    format!("{e} (a texture is \"checkerboard\", \"uv_grid\", \"mip_levels\", \"bumps\", \"relief\", \"bump_normals\", \"relief_normals\" or a PNG/JPEG path)"),
+                    format!("{e} (a texture is \"checkerboard\", \"checkerboard_wide\", \"uv_grid\", \"mip_levels\", \"bumps\", \"relief\", \"bump_normals\", \"relief_normals\" or a PNG/JPEG path)"),
                 );
                 None
             }

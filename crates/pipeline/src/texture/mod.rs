@@ -404,7 +404,15 @@ impl Texture {
     #[must_use]
     pub fn checkerboard(size: u32, squares: u32) -> Self {
         let cell = (size / squares.max(1)).max(1);
-        Self::from_fn("checkerboard", size, |i, j| {
+        Self::checker_cells("checkerboard", (size, size), cell)
+    }
+
+    /// A `width × height` checkerboard of black and white squares `cell` texels a side: wider
+    /// than high, it tells `u·w` from `u·h` (the level-of-detail lab).
+    #[must_use]
+    pub fn checker_cells(name: &str, size: (u32, u32), cell: u32) -> Self {
+        let cell = cell.max(1);
+        Self::from_fn_sized(name, size, |i, j| {
             if ((i / cell) + (j / cell)).is_multiple_of(2) {
                 Vec3::splat(0.95)
             } else {
