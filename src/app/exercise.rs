@@ -91,7 +91,7 @@ impl Session {
                 &self.spec.scene,
                 (c, r),
                 exercise.tolerance,
-                crate::lab::Forbid::of(&exercise),
+                crate::lab::Rules::of(&exercise),
             ),
             _ => Findings::default(),
         };

@@ -5,7 +5,7 @@
 
 use pipeline::capture::FrameCapture;
 use pipeline::scene::Scene;
-use pipeline::shader::HookKind;
+use pipeline::shader::{HookKind, Step, TraceLine, Value};
 
 /// How far (in the curve's units) a student's curve point may be from pipelens' `b(t)` and
 /// still match: far below a pixel of the lesson's view (3 units across 720 pixels), far above
@@ -33,64 +33,74 @@ pub struct Mismatch {
     pub vertex: Option<u32>,
 }
 
-/// The numbers of a traced value (`vec3(0.000, 0.707, 0.707)` → 0, 0.707, 0.707), and its
-/// words (`true`), each as a token.
-fn tokens(value: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    let mut chars = value.chars().peekable();
-    while let Some(&c) = chars.peek() {
-        if c.is_ascii_alphabetic() || c == '_' {
-            let mut word = String::new();
-            while let Some(&c) = chars.peek() {
-                if !(c.is_ascii_alphanumeric() || c == '_') {
-                    break;
+/// A value as the card shows it: GLSL's spelling with three decimals, or six significant digits
+/// where three decimals would show `other` the same.
+fn shown(value: &Value, other: &Value) -> (String, String) {
+    let write = |v: &Value, digits: usize| {
+        let numbers: Vec<String> = v
+            .numbers
+            .iter()
+            .map(|x| {
+                if digits == 3 {
+                    pipeline::shader::float_text(*x as f32)
+                } else {
+                    format!("{x:.6}")
                 }
-                word.push(c);
-                chars.next();
+            })
+            .collect();
+        match numbers.as_slice() {
+            [one] => one.clone(),
+            _ => format!("{}({})", v.ty, numbers.join(", ")),
+        }
+    };
+    let (a, b) = (write(value, 3), write(other, 3));
+    if a == b {
+        (write(value, 6), write(other, 6))
+    } else {
+        (a, b)
+    }
+}
+
+/// The student's length of a vector whose length is 1 in pipelens' run and not in theirs (a
+/// normal left unnormalized: an interpolated unit normal is about 0.999 long between vertices),
+/// from `(yours, pipelens')`.
+#[must_use]
+pub fn unnormalized(lengths: Option<(f64, f64)>) -> Option<f64> {
+    lengths
+        .filter(|(yours, theirs)| (theirs - 1.0).abs() < 1e-4 && (yours - 1.0).abs() > 2e-4)
+        .map(|(yours, _)| yours)
+}
+
+/// A run's values by stretch: the stretch (how many loop iterations began before it), the name
+/// (a function's return as `name()`), and every value it took there with its place in the run
+/// and its line, in the order first written.
+type Stretches = Vec<((usize, String), Vec<(usize, usize, Value)>)>;
+
+/// `trace`'s values by stretch (see [`Stretches`]).
+fn stretches(trace: &[TraceLine]) -> Stretches {
+    let mut stretch = 0;
+    let mut values: Stretches = Vec::new();
+    for (at, l) in trace.iter().enumerate() {
+        let (name, value) = match &l.step {
+            Step::Iteration { .. } => {
+                stretch += 1;
+                continue;
             }
-            // A constructor's name (`vec3(`) is not a value.
-            if chars.peek() != Some(&'(') {
-                out.push(word);
-            }
-        } else if c.is_ascii_digit() || c == '-' || c == '.' {
-            let mut number = String::new();
-            while let Some(&c) = chars.peek() {
-                if !(c.is_ascii_alphanumeric() || c == '-' || c == '.' || c == '+') {
-                    break;
-                }
-                number.push(c);
-                chars.next();
-            }
-            out.push(number);
-        } else {
-            chars.next();
+            Step::Assign { name, value } => (name.clone(), value),
+            Step::Return {
+                name,
+                value: Some(value),
+            } => (format!("{name}()"), value),
+            _ => continue,
+        };
+        let key = (stretch, name);
+        let taken = (at, l.line, value.clone());
+        match values.iter_mut().find(|(k, _)| *k == key) {
+            Some((_, v)) => v.push(taken),
+            None => values.push((key, vec![taken])),
         }
     }
-    out
-}
-
-/// Whether two traced values are the same as far as the trace shows them (three decimals, or
-/// three significant digits).
-fn same_value(a: &str, b: &str) -> bool {
-    let (ta, tb) = (tokens(a), tokens(b));
-    ta.len() == tb.len()
-        && ta
-            .iter()
-            .zip(&tb)
-            .all(|(x, y)| match (x.parse::<f64>(), y.parse::<f64>()) {
-                (Ok(x), Ok(y)) => (x - y).abs() <= 0.0015 + 0.002 * x.abs().max(y.abs()),
-                _ => x == y,
-            })
-}
-
-/// The length of a traced vector of three or four numbers.
-fn length(value: &str) -> Option<f64> {
-    let v: Vec<f64> = tokens(value)
-        .iter()
-        .map(|t| t.parse::<f64>())
-        .collect::<Result<_, _>>()
-        .ok()?;
-    (v.len() == 3).then(|| v.iter().map(|x| x * x).sum::<f64>().sqrt())
+    values
 }
 
 /// The first value at which the student's fragments at the inspected pixel part from pipelens'
@@ -111,63 +121,55 @@ pub fn first_mismatch(
 /// run (before the first loop iteration, or within the same iteration), whose last values
 /// there differ — a vector of length 1 in pipelens' run that is not in the student's first.
 #[must_use]
-pub fn first_difference(
-    mine: &[pipeline::shader::TraceLine],
-    theirs: &[pipeline::shader::TraceLine],
-) -> Option<Mismatch> {
-    // Each run's values by stretch: the stretch (how many loop iterations began before it), the
-    // name, its line and its last value there, in the order first assigned.
-    let stretches = |trace: &[pipeline::shader::TraceLine]| {
-        let mut stretch = 0;
-        let mut values: Vec<((usize, String), (usize, String))> = Vec::new();
-        for l in trace {
-            if l.text.starts_with("loop: iteration") {
-                stretch += 1;
-                continue;
-            }
-            let Some((name, value)) = l.text.split_once(" = ") else {
-                continue;
-            };
-            let key = (stretch, name.to_owned());
-            match values.iter_mut().find(|(k, _)| *k == key) {
-                Some((_, v)) => *v = (l.line, value.to_owned()),
-                None => values.push((key, (l.line, value.to_owned()))),
-            }
-        }
-        values
-    };
+pub fn first_difference(mine: &[TraceLine], theirs: &[TraceLine]) -> Option<Mismatch> {
+    // A name written as often in both runs within a stretch is compared write by write (the
+    // third `uv` with the third: a helper's argument); otherwise by its last value there.
     let reference_values: std::collections::HashMap<_, _> = stretches(theirs).into_iter().collect();
-    let paired: Vec<_> = stretches(mine)
-        .into_iter()
-        .filter_map(|(key, (line, yours))| {
-            let (_, theirs) = reference_values.get(&key)?;
-            Some((key.1, line, yours, theirs.clone()))
-        })
-        .collect();
-    let mismatch = |(name, line, yours, theirs): &(String, usize, String, String)| Mismatch {
-        name: name.clone(),
-        line: *line,
-        lengths: length(yours).zip(length(theirs)),
-        yours: yours.clone(),
-        theirs: theirs.clone(),
-        vertex: None,
+    let mut paired: Vec<(usize, (String, usize, Value, Value))> = Vec::new();
+    for (key, yours) in stretches(mine) {
+        let Some(theirs) = reference_values.get(&key) else {
+            continue;
+        };
+        let pairs: Vec<_> = if yours.len() == theirs.len() {
+            yours.iter().zip(theirs).collect()
+        } else {
+            yours.last().into_iter().zip(theirs.last()).collect()
+        };
+        for ((at, line, y), (.., t)) in pairs {
+            paired.push((*at, (key.1.clone(), *line, y.clone(), t.clone())));
+        }
+    }
+    paired.sort_by_key(|(at, _)| *at);
+    let paired: Vec<_> = paired.into_iter().map(|(_, p)| p).collect();
+    let mismatch = |(name, line, yours, theirs): &(String, usize, Value, Value)| {
+        let (y, t) = shown(yours, theirs);
+        Mismatch {
+            name: name.clone(),
+            line: *line,
+            lengths: yours.length().zip(theirs.length()),
+            yours: y,
+            theirs: t,
+            vertex: None,
+        }
     };
     // A vector of length 1 in pipelens' run that is not in the student's — a normal left
     // unnormalized — says more than the first value it puts off, however small the gap.
-    let unit = paired.iter().find(|(_, _, yours, theirs)| {
-        length(yours)
-            .zip(length(theirs))
-            .is_some_and(|(y, t)| (t - 1.0).abs() < 0.001 && (y - 1.0).abs() > 0.0015)
-    });
-    if let Some(m) = unit.or_else(|| paired.iter().find(|(_, _, y, t)| !same_value(y, t))) {
+    let unit = paired
+        .iter()
+        .find(|(_, _, yours, theirs)| unnormalized(yours.length().zip(theirs.length())).is_some());
+    if let Some(m) = unit.or_else(|| paired.iter().find(|(_, _, y, t)| !y.agrees(t))) {
         return Some(mismatch(m));
     }
-    // Nothing differs stretch by stretch (the runs loop differently, or assign their values in
-    // different stretches): the last value of each name both runs assign — the output's at
+    // Nothing differs stretch by stretch (the runs loop differently, or write their values in
+    // different stretches): the last value of each name both runs write — the output's at
     // least — compared whatever the stretch.
-    let last = |values: Vec<((usize, String), (usize, String))>| {
-        let mut out: Vec<(String, (usize, String))> = Vec::new();
-        for ((_, name), v) in values {
+    let last = |values: Stretches| {
+        let mut out: Vec<(String, (usize, Value))> = Vec::new();
+        for ((_, name), all) in values {
+            let Some((_, line, value)) = all.last() else {
+                continue;
+            };
+            let v = (*line, value.clone());
             match out.iter_mut().find(|(n, _)| *n == name) {
                 Some((_, old)) => *old = v,
                 None => out.push((name, v)),
@@ -181,7 +183,7 @@ pub fn first_difference(
         .into_iter()
         .find_map(|(name, (line, yours))| {
             let (_, theirs) = theirs_last.get(&name)?;
-            (!same_value(&yours, theirs)).then(|| (name, line, yours, theirs.clone()))
+            (!yours.agrees(theirs)).then(|| (name, line, yours, theirs.clone()))
         })
         .map(|m| mismatch(&m))
 }
@@ -265,14 +267,15 @@ pub fn wrong_shadow_matrix(scene: &Scene) -> Option<MatrixMismatch> {
     })
 }
 
-/// In the student's vertex-shader run, the first 4×4 matrix assigned that is not pipelens' own:
-/// one named as pipelens names its matrices (`model`, `view`, `projection`, `mvp`, …) stands for
-/// that one; another is compared with M (the vertex's object's), V, P, V·M and P·V·M and stands
-/// for the one it differs from in the fewest entries (at most 8 of 16, else it is some other
-/// matrix). Entries agree within the trace's three decimals.
+/// In a run of the student's shader, the first 4×4 matrix written or returned that is not
+/// pipelens' own: one named as pipelens names its matrices (`model`, `view`, `projection`,
+/// `mvp`, `viewport`, or a function `look_at()`, `perspective()`, …) stands for that one; another
+/// is compared with M (the object's), V, P, V·M, P·V·M and M_viewport and stands for the one it
+/// differs from in the fewest entries (at most 8 of 16, else it is some other matrix). Entries
+/// agree within `0.0015 + 0.2 %`.
 #[must_use]
 pub fn wrong_matrix(
-    trace: &pipeline::capture::VertexTrace,
+    trace: &[TraceLine],
     capture: &FrameCapture,
     object: usize,
 ) -> Option<MatrixMismatch> {
@@ -285,30 +288,39 @@ pub fn wrong_matrix(
         ("P", p),
         ("V·M", v * model),
         ("P·V·M", p * v * model),
+        ("M_viewport", m.viewport.matrix),
     ];
-    for l in &trace.trace {
-        let Some((name, value)) = l.text.split_once(" = ") else {
-            continue;
+    for l in trace {
+        let (name, value) = match &l.step {
+            Step::Assign { name, value } => (name.clone(), value),
+            Step::Return {
+                name,
+                value: Some(value),
+            } => (format!("{name}()"), value),
+            _ => continue,
         };
-        if !value.starts_with("mat4(") {
+        if value.ty != "mat4" {
             continue;
         }
-        let numbers: Vec<f32> = tokens(value)
-            .iter()
-            .filter_map(|t| t.parse::<f32>().ok())
-            .collect();
-        let Ok(columns) = <[f32; 16]>::try_from(numbers) else {
+        let Ok(columns) =
+            <[f32; 16]>::try_from(value.numbers.iter().map(|&x| x as f32).collect::<Vec<_>>())
+        else {
             continue;
         };
-        // A matrix named as pipelens names its uniforms stands for that one; another for
-        // the one it is nearest.
-        let lower = name.to_ascii_lowercase();
+        // A matrix named as pipelens names its uniforms (or a function named for what it
+        // builds) stands for that one; another for the one it is nearest.
+        let lower = name.trim_end_matches("()").to_ascii_lowercase();
         let named = match lower.as_str() {
-            "model" | "m" | "model_matrix" => Some("M"),
+            "model" | "m" | "model_matrix" | "rotate_z" | "rotation_z" | "rotation" | "rz" => {
+                Some("M")
+            }
             "view" | "v" | "view_matrix" | "look_at" | "lookat" => Some("V"),
-            "projection" | "proj" | "p" | "perspective" | "projection_matrix" => Some("P"),
+            "projection" | "proj" | "p" | "perspective" | "projection_matrix" | "frustum" => {
+                Some("P")
+            }
             "model_view" | "mv" | "modelview" => Some("V·M"),
             "mvp" => Some("P·V·M"),
+            "viewport" | "m_viewport" | "viewport_matrix" => Some("M_viewport"),
             _ => None,
         };
         let best = candidates
@@ -316,9 +328,9 @@ pub fn wrong_matrix(
             .filter(|(label, _)| named.is_none_or(|n| n == *label))
             .map(|(label, reference)| (*label, differing_entries(&columns, reference)))
             .min_by_key(|(_, e)| e.len())?;
-        if !best.1.is_empty() && best.1.len() <= 8 {
+        if !best.1.is_empty() && (named.is_some() || best.1.len() <= 8) {
             return Some(MatrixMismatch {
-                name: name.to_owned(),
+                name,
                 line: l.line,
                 matrix: best.0,
                 entries: best.1,

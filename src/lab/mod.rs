@@ -8,6 +8,7 @@
 //! arrives; [`check`] does the same with no window.
 
 mod findings;
+pub mod quantity;
 pub mod samples;
 pub mod submission;
 pub mod words;
@@ -24,27 +25,31 @@ use pipeline::settings::RenderSettings;
 use pipeline::shader::CurveDifference;
 
 use crate::lesson::SceneSpec;
-use crate::lesson::answer::Exercise;
+use crate::lesson::answer::{Compare, Exercise};
 use crate::lesson::forbid::Shortcut;
 use crate::vocabulary::Lang;
 
-/// What a lab forbids the student's code to use, and the starter, whose own files are not
-/// the student's to answer for.
+/// What a lab's check takes from its exercise besides the tolerance: the names it forbids the
+/// student's code to use, the starter (whose own files are not the student's to answer for),
+/// and the value it compares with one of pipelens' quantities.
 #[derive(Clone, Copy, Debug)]
-pub struct Forbid<'a> {
-    /// The names (`exercise.forbid`).
-    pub names: &'a [String],
+pub struct Rules<'a> {
+    /// The forbidden names (`exercise.forbid`).
+    pub forbid: &'a [String],
     /// The lab's starter.
     pub starter: &'a pipeline::scene::StudentCode,
+    /// `exercise.compare`.
+    pub compare: Option<&'a Compare>,
 }
 
-impl<'a> Forbid<'a> {
-    /// What `exercise` forbids.
+impl<'a> Rules<'a> {
+    /// The rules of `exercise`.
     #[must_use]
     pub fn of(exercise: &'a Exercise) -> Self {
         Self {
-            names: &exercise.forbid,
+            forbid: &exercise.forbid,
             starter: &exercise.starter,
+            compare: exercise.compare.as_ref(),
         }
     }
 }
@@ -67,6 +72,9 @@ pub struct Findings {
     /// The first sample of the first wrong pixel where the student's inside or depth test
     /// answers otherwise than pipelens' rule.
     pub sample: Option<samples::SampleMismatch>,
+    /// The value the lab compares with one of pipelens' quantities (`exercise.compare`), where
+    /// it differs at the inspected pixel.
+    pub quantity: Option<quantity::QuantityMismatch>,
     /// pipelens' own answer taken where the lab asks the student to compute it (a uniform it
     /// forbids declared, a function it forbids called): the lab is not passed, whatever the
     /// pixels say.
@@ -77,13 +85,13 @@ impl Findings {
     /// What the student's frame `mine` (drawn from `scene`, which holds the student's code)
     /// shows against pipelens' own `reference`, each channel within `tolerance` 8-bit steps.
     /// The mismatch is found at the pixel both frames traced (their capture's pixel); a name
-    /// of `forbid` in the student's code is a shortcut.
+    /// the rules forbid in the student's code is a shortcut.
     #[must_use]
     pub fn between(
         scene: &Scene,
         (mine, reference): (&FrameCapture, &FrameCapture),
         tolerance: f32,
-        forbid: Forbid<'_>,
+        rules: Rules<'_>,
     ) -> Self {
         let vertex = scene
             .has_shaders()
@@ -93,8 +101,9 @@ impl Findings {
             .and_then(|(row, ..)| {
                 let object = mine.vertices.get(row as usize)?.object as usize;
                 let trace = pipeline::trace_vertex(scene, mine, row as usize).ok()??;
-                wrong_matrix(&trace, mine, object)
+                wrong_matrix(&trace.trace, mine, object)
             })
+            .or_else(|| fragment_matrix(mine))
             .or_else(|| wrong_shadow_matrix(scene));
         let difference = mine.difference_by(reference, criteria(scene, tolerance));
         let sample = difference
@@ -103,7 +112,7 @@ impl Findings {
             .and_then(|first| samples::first_sample_mismatch(scene, reference, first));
         // A run is compared only in a shader the lab asks the student to write (its starter
         // says TODO there) or that they changed: never a line of a stage they were not to touch.
-        let (vertex_changed, fragment_changed) = changed_stages(scene, forbid.starter);
+        let (vertex_changed, fragment_changed) = changed_stages(scene, rules.starter);
         let mismatch = if fragment_changed {
             first_mismatch(traced(mine), traced(reference))
         } else {
@@ -113,6 +122,11 @@ impl Findings {
             let first = difference.as_ref()?.first?;
             vertex_changed.then(|| vertex_mismatch(scene, (mine, reference), first))?
         });
+        let quantity = rules
+            .compare
+            .and_then(|c| quantity::quantity_mismatch(c, (mine, reference), scene));
+        // A matrix off, or the lab's quantity, says more than a value it puts off further on.
+        let mismatch = mismatch.filter(|_| matrix.is_none() && quantity.is_none());
         Self {
             difference,
             curve: curve_difference(scene),
@@ -120,10 +134,11 @@ impl Findings {
             matrix,
             mismatch,
             sample,
+            quantity,
             shortcut: crate::lesson::forbid::find(
-                forbid.names,
+                rules.forbid,
                 &scene_sources(scene),
-                &crate::lesson::forbid::sources(forbid.starter),
+                &crate::lesson::forbid::sources(rules.starter),
             ),
         }
     }
@@ -166,6 +181,9 @@ impl Findings {
         }
         if let Some(m) = &self.matrix {
             out.push(words::matrix_words(m, lang));
+        }
+        if let Some(q) = &self.quantity {
+            out.push(q.words(lang));
         }
         if let Some(m) = &self.mismatch {
             out.push(words::mismatch_words(m, lang));
@@ -237,6 +255,15 @@ fn vertex_mismatch(
     Some(m)
 }
 
+/// A matrix the student's fragment shader built at the traced pixel (the viewport matrix, say)
+/// that is not pipelens' own.
+fn fragment_matrix(mine: &FrameCapture) -> Option<MatrixMismatch> {
+    traced(mine).iter().find_map(|f| {
+        let object = mine.primitives.get(f.primitive as usize)?.object as usize;
+        wrong_matrix(&f.trace, mine, object)
+    })
+}
+
 /// The shaders' runs at the frame's traced pixel (none where no shader ran).
 fn traced(frame: &FrameCapture) -> &[pipeline::capture::FragmentTrace] {
     frame.shaders.as_ref().map_or(&[], |s| &s.pixel)
@@ -276,7 +303,7 @@ pub fn reference_scene(scene: &Scene, settings: &RenderSettings) -> Scene {
 /// Either frame's render error (a run-time error of the student's shader: an endless loop, an
 /// index out of range), worded as the status line words it.
 pub fn check(spec: &SceneSpec, exercise: &Exercise) -> Result<Findings, String> {
-    let (tolerance, forbid) = (exercise.tolerance, Forbid::of(exercise));
+    let (tolerance, rules) = (exercise.tolerance, Rules::of(exercise));
     let reference = reference_scene(&spec.scene, &spec.settings);
     let draw = |scene: &Scene, pixel: Option<(u32, u32)>| {
         let settings = RenderSettings {
@@ -286,7 +313,7 @@ pub fn check(spec: &SceneSpec, exercise: &Exercise) -> Result<Findings, String> 
         pipeline::render(scene, &settings).map_err(|e| e.to_string())
     };
     let (mine, theirs) = (draw(&spec.scene, None)?, draw(&reference, None)?);
-    let findings = Findings::between(&spec.scene, (&mine, &theirs), tolerance, forbid);
+    let findings = Findings::between(&spec.scene, (&mine, &theirs), tolerance, rules);
     let first = findings.difference.as_ref().and_then(|d| d.first);
     match first {
         Some(pixel) if findings.curve.is_none() && spec.scene.has_shaders() => {
@@ -298,7 +325,7 @@ pub fn check(spec: &SceneSpec, exercise: &Exercise) -> Result<Findings, String> 
                 &spec.scene,
                 (&mine, &theirs),
                 tolerance,
-                forbid,
+                rules,
             ))
         }
         _ => Ok(findings),

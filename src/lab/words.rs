@@ -92,10 +92,7 @@ pub fn verdict(d: &Difference, lang: Lang) -> String {
 /// pipelens' is 1 (a normal not normalized).
 #[must_use]
 pub fn mismatch_words(m: &Mismatch, lang: Lang) -> String {
-    let unnormalized = m
-        .lengths
-        .filter(|(yours, theirs)| (theirs - 1.0).abs() < 0.001 && (yours - 1.0).abs() > 0.0015)
-        .map(|(yours, _)| yours);
+    let unnormalized = super::findings::unnormalized(m.lengths);
     let mut text = match (lang, m.vertex) {
         (Lang::En, None) => format!(
             "At the inspected pixel your `{}` (line {}) is {}; pipelens' own shader has {}.",
@@ -116,8 +113,8 @@ pub fn mismatch_words(m: &Mismatch, lang: Lang) -> String {
     };
     if let Some(len) = unnormalized {
         text.push_str(&match lang {
-            Lang::En => format!(" Yours has length {len:.3}, pipelens' 1: is it normalized?"),
-            Lang::Zh => format!("你的长度是 {len:.3}，pipelens 的是 1：它归一化了吗？"),
+            Lang::En => format!(" Yours has length {len:.4}, pipelens' 1: is it normalized?"),
+            Lang::Zh => format!("你的长度是 {len:.4}，pipelens 的是 1：它归一化了吗？"),
         });
     }
     text

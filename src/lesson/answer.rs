@@ -62,6 +62,43 @@ pub struct Exercise {
     /// uniforms it may not declare (`view`, `projection`, `normal_matrix`), functions it may
     /// not call (`texture`).
     pub forbid: Vec<String>,
+    /// The value of the student's run that stands for one of pipelens' own quantities at the
+    /// first wrong pixel (`level_of_detail()` for λ): compared there, and named in the findings.
+    pub compare: Option<Compare>,
+}
+
+/// `exercise.compare = { yours = "level_of_detail()", pipelens = "lod" }`: which value of the
+/// student's fragment shader stands for which of pipelens' quantities at the inspected pixel.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Compare {
+    /// A variable (`uv`) or a function's return (`bilinear()`) of the student's run.
+    pub yours: String,
+    /// pipelens' quantity it must equal.
+    pub pipelens: Quantity,
+}
+
+/// A quantity pipelens computes at every textured pixel, which a lab may ask the student to
+/// compute.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Quantity {
+    /// The texture coordinates, interpolated perspective-correctly.
+    Uv,
+    /// The level of detail `λ = log₂ L` (with the bias).
+    Lod,
+    /// The filtered texel colour.
+    Texel,
+}
+
+impl Quantity {
+    /// Every quantity, with its key in a lesson file.
+    pub const KEYS: [(&'static str, Self); 3] =
+        [("uv", Self::Uv), ("lod", Self::Lod), ("texel", Self::Texel)];
+
+    /// The quantity a lesson file names `key`.
+    #[must_use]
+    pub fn from_key(key: &str) -> Option<Self> {
+        Self::KEYS.iter().find(|(k, _)| *k == key).map(|(_, q)| *q)
+    }
 }
 
 /// An exercise's tolerance when the lesson gives none: one 8-bit step, as far as the student's

@@ -114,6 +114,12 @@ pub fn find(
     None
 }
 
+/// The identifiers of GLSL source `text`, comments left out.
+#[must_use]
+pub fn names(text: &str) -> std::collections::BTreeSet<String> {
+    tokens(text).into_iter().map(|(t, _)| t).collect()
+}
+
 /// The identifiers and punctuation of GLSL source with their lines, comments left out.
 fn tokens(text: &str) -> Vec<(String, usize)> {
     let mut out = Vec::new();

@@ -281,7 +281,7 @@ fn a_matrix_lab_names_the_first_wrong_vertex_and_the_entries_off() {
     );
     assert!(
         h.query_by_label_contains(
-            "Your `model` (line 24) is pipelens' M but for 4 entries: row 1, column 1 is 1.000 (M has 0.866); row 2, column 1 is 0.000 (M has 0.500)"
+            "Your `rotate_z()` (line 20) is pipelens' M but for 4 entries: row 1, column 1 is 1.000 (M has 0.866); row 2, column 1 is 0.000 (M has 0.500)"
         )
         .is_some()
     );

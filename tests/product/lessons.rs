@@ -123,6 +123,18 @@ fn assert_error(text: &str, line: usize, column: usize, needle: &str) {
 
 /// One mistake a line: the line, the text the error must point at, words of the message.
 const MISTAKES: &[(&str, &str, &str)] = &[
+    // A lab's `compare` names a value its starter's fragment shader has, and one of pipelens'
+    // quantities.
+    (
+        r##"exercise = { task = { en = "x", zh = "x" }, starter = { fragment = "#version 330 core\nout vec4 color;\nvoid main() { color = vec4(1.0); }\n" }, compare = { yours = "nope()", pipelens = "lod" } }"##,
+        "{ yours = \"nope()\"",
+        "`compare.yours` names `nope()`, which the starter's fragment shader does not have",
+    ),
+    (
+        r##"exercise = { task = { en = "x", zh = "x" }, starter = { fragment = "#version 330 core\nout vec4 color;\nvoid main() { color = vec4(1.0); }\n" }, compare = { yours = "color", pipelens = "lambda" } }"##,
+        "{ yours = \"color\"",
+        "`compare.pipelens` is one of `uv`, `lod`, `texel`; got `lambda`",
+    ),
     (
         "stage = \"rasterisation\"",
         "\"rasterisation\"",

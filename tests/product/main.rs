@@ -11,6 +11,8 @@ mod edit;
 mod grade;
 mod handout;
 mod lab_corpus;
+mod lab_corpus_geometry;
+mod lab_corpus_shading;
 mod lab_hooks;
 mod lab_solutions;
 mod labs;

@@ -5,7 +5,9 @@ use std::path::Path;
 
 use toml::Spanned;
 
-use super::super::answer::{DEFAULT_TOLERANCE, EXERCISE_TOLERANCE, Exercise, Expect, Shape};
+use super::super::answer::{
+    Compare, DEFAULT_TOLERANCE, EXERCISE_TOLERANCE, Exercise, Expect, Quantity, Shape,
+};
 use super::super::raw::{RawExercise, RawExpect, RawStep};
 use super::super::validate::Checker;
 
@@ -92,11 +94,59 @@ impl Checker<'_> {
             None => EXERCISE_TOLERANCE,
         };
         let forbid = self.forbid(r);
+        let compare = self.compare(r, &starter);
         Some(Exercise {
             task,
             starter,
             tolerance,
             forbid,
+            compare,
+        })
+    }
+
+    /// An exercise's `compare`: a value the starter's fragment shader writes or returns, and one
+    /// of pipelens' quantities.
+    fn compare(
+        &mut self,
+        r: &RawExercise,
+        starter: &pipeline::scene::StudentCode,
+    ) -> Option<Compare> {
+        let c = r.compare.as_ref()?;
+        let raw = c.get_ref();
+        let Some(pipelens) = Quantity::from_key(&raw.pipelens) else {
+            let keys: Vec<_> = Quantity::KEYS
+                .iter()
+                .map(|(k, _)| format!("`{k}`"))
+                .collect();
+            self.error(
+                c.span(),
+                format!(
+                    "`compare.pipelens` is one of {}; got `{}`",
+                    keys.join(", "),
+                    raw.pipelens
+                ),
+            );
+            return None;
+        };
+        let name = raw.yours.trim_end_matches("()");
+        let fragment = starter
+            .shader
+            .as_ref()
+            .map(|s| s.programs.fragment.source.as_str())
+            .unwrap_or_default();
+        if name.is_empty() || !crate::lesson::forbid::names(fragment).contains(name) {
+            self.error(
+                c.span(),
+                format!(
+                    "`compare.yours` names `{}`, which the starter's fragment shader does not have",
+                    raw.yours
+                ),
+            );
+            return None;
+        }
+        Some(Compare {
+            yours: raw.yours.clone(),
+            pipelens,
         })
     }
 
