@@ -43,4 +43,5 @@ if command -v Xvfb >/dev/null && command -v xdotool >/dev/null; then
   echo "$app_frames"
 fi
 NATIVE_STEPS=$(echo "$native" | tail -1) NATIVE_APP=$app_frames SERVER_PID=$server \
+  PIPELENS_BIN=$PWD/target/release/pipelens \
   node scripts/web-test/test.mjs "http://127.0.0.1:$port/index.html" target/web-test

@@ -11,6 +11,8 @@
 //  6. the shader lesson runs the student's GLSL in the page, and S opens the shader panel;
 //  7. a typed answer (lesson 14's mip level) is checked, kept in the page's local storage, and
 //     still there after a reload.
+//  8. a lab (lesson 07's inside test) passes, is kept over a reload, and Download my work gives
+//     the file that the native `pipelens grade` ($PIPELENS_BIN) passes;
 //  9. on a phone (390×844, touch) the picture covers half the page or more, and a swipe across
 //     the narration sheet goes to the next step; landscape and tablet screenshots.
 //  0. (first) the service worker takes the page over and makes it cross-origin isolated (this
@@ -23,6 +25,7 @@
 import { chromium } from "playwright-core";
 import { PNG } from "pngjs";
 import { mkdirSync, readFileSync, writeFileSync } from "node:fs";
+import { execFileSync } from "node:child_process";
 
 const url = process.argv[2] ?? "http://127.0.0.1:8765/index.html";
 const out = process.argv[3] ?? "target/web-test";
@@ -323,6 +326,27 @@ if (await waitForTitle(lab, /^pipelens — 07-rasterization — step 6\/6$/, "th
     await lab.screenshot({ path: `${out}/lab-inside-after-reload.png` });
     const again = await lab.evaluate(() => JSON.stringify(Object.entries(localStorage)));
     check(/passed:\[6\]/.test(again) && /owns\(a, b, p\)/.test(again), "the pass and the code are still kept after the reload");
+    // 8b. Download my work (the top bar's second row): one file with the lab's code, which the
+    // native `pipelens grade` grades as the app did — passed.
+    const downloading = lab.waitForEvent("download", { timeout: 15000 }).catch(() => null);
+    await lab.mouse.click(79, 37);
+    const work = await downloading;
+    check(work !== null && work.suggestedFilename() === "07-rasterization-work.toml", `Download my work is a download of 07-rasterization-work.toml (${work?.suggestedFilename()})`);
+    if (work) {
+      const path = `${out}/07-rasterization-work.toml`;
+      await work.saveAs(path);
+      const saved = readFileSync(path, "utf8");
+      check(saved.includes("owns(a, b, p)") && saved.includes("inside.glsl"), "the work file holds the lab's inside test");
+      if (process.env.PIPELENS_BIN) {
+        let graded = "";
+        try {
+          graded = execFileSync(process.env.PIPELENS_BIN, ["grade", "07-rasterization", "--step", "6", path], { encoding: "utf8" });
+        } catch (e) {
+          graded = `${e.stdout ?? ""}${e.stderr ?? ""}`;
+        }
+        check(/1 hand-in, 1 check, 1 passed/.test(graded), `pipelens grade passes the downloaded work (${graded.trim().split("\n").slice(-2).join(" / ")})`);
+      }
+    }
   }
 }
 

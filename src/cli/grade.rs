@@ -367,11 +367,16 @@ fn print_table(rows: &[Row], lang: Lang) {
     say!(
         "{}",
         match lang {
-            Lang::En => format!(
-                "{} hand-ins, {} checks, {passed} passed",
-                students.len(),
-                rows.len()
-            ),
+            Lang::En => {
+                let plural = |n: usize, one: &str, many: &str| {
+                    format!("{n} {}", if n == 1 { one } else { many })
+                };
+                format!(
+                    "{}, {}, {passed} passed",
+                    plural(students.len(), "hand-in", "hand-ins"),
+                    plural(rows.len(), "check", "checks")
+                )
+            }
             Lang::Zh => format!(
                 "{} 份作业，{} 项检查，{passed} 项通过",
                 students.len(),

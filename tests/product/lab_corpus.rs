@@ -118,9 +118,17 @@ fn every_lab_s_corpus_is_graded_as_a_teacher_would() {
                         "{lesson_id} / {title}: {said:?} lacks {w:?}\n{code}"
                     ));
                 }
-                // Both languages say it.
+                // Both languages say it: the Chinese verdict in Chinese, every sentence of it.
                 let zh = grade(&lesson, k, &hand_in(&lesson, k, code), Lang::Zh);
                 assert_eq!(zh.passed, g.passed);
+                for sentence in &zh.sentences {
+                    let english = ["Not yet", "your ", "Your ", " is ", " the ", "pixels match"];
+                    if let Some(w) = english.iter().find(|w| sentence.contains(**w)) {
+                        faults.push(format!(
+                            "{lesson_id} / {title}: English ({w:?}) in the Chinese sentence {sentence:?}"
+                        ));
+                    }
+                }
             }
         }
         eprintln!("{lesson_id} / {title}: {said}");

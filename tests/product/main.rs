@@ -16,6 +16,7 @@ mod lab_corpus_shading;
 mod lab_hooks;
 mod lab_solutions;
 mod labs;
+mod lesson_mistakes;
 mod lessons;
 mod observer;
 mod record;
