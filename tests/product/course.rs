@@ -93,3 +93,46 @@ fn every_character_of_every_lesson_is_in_the_embedded_fonts() {
         }
     }
 }
+
+/// A function's name with an underscore (`level_of_detail(uv)`) is code: written outside
+/// backticks, the typesetter takes `_detail` for a subscript and the student reads `level_of`
+/// with `detail` below it. Every title, narration, task, question and answer of every lesson
+/// writes such a call in backticks (a subscript like `k_d` or `M_viewport`, not followed by `(`,
+/// stays as it is).
+#[test]
+fn function_names_with_underscores_are_written_as_code() {
+    for path in lesson_files() {
+        let Document::Lesson(lesson) = load_file(&path).unwrap_or_else(|e| panic!("{e}")) else {
+            panic!("{} is not a lesson", path.display());
+        };
+        let mut texts = vec![&lesson.title, &lesson.summary];
+        for s in &lesson.steps {
+            texts.extend([&s.title, &s.narration]);
+            texts.extend(s.question.iter().chain(&s.answer));
+            texts.extend(s.exercise.iter().map(|e| &e.task));
+        }
+        for t in texts {
+            for text in [&t.en, &t.zh] {
+                // The text outside backticks, then each word followed by `(`.
+                let prose: String = text
+                    .split('`')
+                    .step_by(2)
+                    .collect::<Vec<_>>()
+                    .join(" ");
+                let mut word = String::new();
+                for c in prose.chars() {
+                    if c.is_ascii_alphanumeric() || c == '_' {
+                        word.push(c);
+                        continue;
+                    }
+                    assert!(
+                        !(c == '(' && word.contains('_') && word.len() > 3),
+                        "{}: `{word}(` outside backticks in {text:?}",
+                        lesson.id
+                    );
+                    word.clear();
+                }
+            }
+        }
+    }
+}
