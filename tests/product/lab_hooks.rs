@@ -357,3 +357,28 @@ fn the_shadow_lab_compares_the_matrix_up_to_a_positive_factor() {
         );
     }
 }
+
+/// A texture lab's card names the quantity at the first wrong pixel, in the app as in `grade`:
+/// lesson 14's starter returns λ = 0 where pipelens' λ is far above it (the horizon).
+#[test]
+fn a_texture_lab_names_its_quantity_at_the_inspected_pixel() {
+    use egui_kittest::kittest::Queryable;
+    let path = crate::support::repo().join("lessons/14-mipmaps.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    crate::app::go_to_last_step(&mut h);
+    h.run_steps(4);
+    h.get_by_label("Inspect the first wrong pixel").click();
+    h.run_steps(6);
+    let said = h
+        .state()
+        .session
+        .exercise
+        .findings
+        .sentences(pipelens::vocabulary::Lang::En)
+        .join(" ");
+    assert!(
+        said.contains("your `level_of_detail()` (line 13) gives λ = 0.000; pipelens' λ there is"),
+        "{said}"
+    );
+    assert!(h.query_by_label_contains("pipelens' λ there is").is_some());
+}

@@ -195,8 +195,9 @@ fn picture(
 
 /// What else the check found, each as a line: the inside or depth test sample by sample at the
 /// first wrong pixel, a function's matrix (the shadow's) compared without a vertex shader, the
-/// first value where the student's run parts from pipelens' (at the inspected pixel, or at a
-/// vertex of the first wrong pixel's triangle).
+/// lab's quantity (uv, λ, texel) against pipelens' at the inspected pixel, the first value where
+/// the student's run parts from pipelens' (at the inspected pixel, or at a vertex of the first
+/// wrong pixel's triangle).
 fn findings_lines(ui: &mut Ui, session: &Session, style: &Style) {
     let (f, lang) = (&session.exercise.findings, session.lang);
     if let Some(s) = &f.sample {
@@ -206,6 +207,9 @@ fn findings_lines(ui: &mut Ui, session: &Session, style: &Style) {
         && let Some(m) = &f.matrix
     {
         not_yet(ui, words::matrix_words(m, lang), style);
+    }
+    if let Some(q) = &f.quantity {
+        not_yet(ui, q.words(lang), style);
     }
     if let Some(m) = &f.mismatch
         && (m.vertex.is_some() || session.selection.pixel.is_some())
