@@ -114,11 +114,7 @@ fn function_names_with_underscores_are_written_as_code() {
         for t in texts {
             for text in [&t.en, &t.zh] {
                 // The text outside backticks, then each word followed by `(`.
-                let prose: String = text
-                    .split('`')
-                    .step_by(2)
-                    .collect::<Vec<_>>()
-                    .join(" ");
+                let prose: String = text.split('`').step_by(2).collect::<Vec<_>>().join(" ");
                 let mut word = String::new();
                 for c in prose.chars() {
                     if c.is_ascii_alphanumeric() || c == '_' {

@@ -372,27 +372,20 @@ impl Scene {
         settings: &RenderSettings,
     ) -> Result<Option<Self>, Vec<crate::shader::StageError>> {
         let mut scene = self.clone();
-        let mut linked: Vec<(&str, &str, Arc<crate::shader::Programs>)> = Vec::new();
+        let mut any = false;
         for o in &mut scene.objects {
             let Some((vs, fs)) =
                 crate::shader::builtin_sources(settings.shading, settings.reflection, o.surface())
             else {
                 continue;
             };
-            let programs = match linked.iter().find(|(v, f, _)| *v == vs && *f == fs) {
-                Some((_, _, p)) => Arc::clone(p),
-                None => {
-                    let p = Arc::new(crate::shader::link(Some(vs), Some(fs))?);
-                    linked.push((vs, fs, Arc::clone(&p)));
-                    p
-                }
-            };
             o.shader = Some(ObjectShader {
-                programs,
+                programs: crate::shader::builtin_programs(vs, fs)?,
                 time: 0.0,
             });
+            any = true;
         }
-        Ok((!linked.is_empty()).then_some(scene))
+        Ok(any.then_some(scene))
     }
 
     /// Whether a full capture of this scene at `settings` has buffer `kind` to show: the
