@@ -196,7 +196,7 @@ if (await waitForTitle(zh, /^pipelens — 00-tour — step 1\/10$/, "the Chinese
   }
 }
 const zh2 = await open("?lang=zh&lesson=10-blinn-phong&step=5", "zh-10");
-if (await waitForTitle(zh2, /^pipelens — 10-blinn-phong — step 5\/8$/, "a Chinese lesson opens on a step")) {
+if (await waitForTitle(zh2, /^pipelens — 10-blinn-phong — step 5\/9$/, "a Chinese lesson opens on a step")) {
   await zh2.waitForTimeout(3000);
   await zh2.screenshot({ path: `${out}/blinn-phong-zh-step5.png` });
 }
@@ -363,7 +363,7 @@ const specular = [
 ].join("\n");
 const solved = starter.replace("        // TODO: the specular term, where n·l > 0.", specular);
 const frag = await open("?lang=zh&lesson=10-blinn-phong&step=8", "frag-lab");
-if (await waitForTitle(frag, /^pipelens — 10-blinn-phong — step 8\/8$/, "the specular lab opens in Chinese")) {
+if (await waitForTitle(frag, /^pipelens — 10-blinn-phong — step 8\/9$/, "the specular lab opens in Chinese")) {
   await frag.waitForTimeout(3000);
   const before = await frag.evaluate(() => JSON.stringify(Object.entries(localStorage)));
   check(!/10-blinn-phong[^)]*passed:\[8\]/.test(before), "the starter has not passed");

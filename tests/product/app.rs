@@ -295,6 +295,25 @@ pub(crate) fn go_to_last_step(h: &mut Harness<'_, PipelensApp>) -> usize {
     last
 }
 
+/// Goes to the step titled `title` (in English) of the lesson on screen; returns its index.
+pub(crate) fn go_to_step_titled(h: &mut Harness<'_, PipelensApp>, title: &str) -> usize {
+    let k = h
+        .state()
+        .session
+        .lesson
+        .as_ref()
+        .and_then(|p| p.lesson.steps.iter().position(|s| s.title.en == title))
+        .unwrap_or_else(|| panic!("no step titled {title:?}"));
+    h.state_mut()
+        .session
+        .apply(pipelens::app::session::Command::GoToStep(k));
+    h.run_steps(2);
+    k
+}
+
+/// Lesson 10's specular lab (not its last step: the light casters' lab follows it).
+pub(crate) const SPECULAR_LAB: &str = "Lab: the specular term in a fragment shader";
+
 pub(crate) fn step_of(h: &Harness<'_, PipelensApp>) -> usize {
     h.state()
         .session

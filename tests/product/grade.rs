@@ -296,7 +296,7 @@ fn grade_says_what_is_wrong_with_its_own_arguments() {
     };
     let (ok, err) = run(&["grade", LESSON, "--step", "2", "x"]);
     assert!(!ok);
-    assert!(err.contains("step 2 of 10-blinn-phong is not a lab; its labs are steps 8 (Lab: the specular term in a fragment shader)"), "{err}");
+    assert!(err.contains("step 2 of 10-blinn-phong is not a lab; its labs are steps 8 (Lab: the specular term in a fragment shader), 9 (Lab: light casters)"), "{err}");
     let (ok, err) = run(&["grade", LESSON, "a", "b", "--gradescope", "r.json"]);
     assert!(!ok);
     assert!(

@@ -6,6 +6,139 @@ use crate::lab_corpus::Want::{self, Right, Wrong};
 
 /// `(lesson, the lab's title, the code in place of the starter's TODO, what it should get)`.
 pub(crate) const CORPUS: &[(&str, &str, &str, Want)] = &[
+    // 10-blinn-phong: Lab: light casters.
+    ("10-blinn-phong", "Lab: light casters", "        vec3 l;
+        float f = 1.0;
+        if (light.kind == LIGHT_DIRECTIONAL) {
+            l = normalize(light.direction);
+        } else {
+            vec3 to_light = light.position - w_pos;
+            float d = length(to_light);
+            l = normalize(to_light);
+            vec3 abc = light.attenuation;
+            f = 1.0 / (abc.x + abc.y * d + abc.z * d * d);
+            if (light.kind == LIGHT_SPOT) {
+                float cos_phi = dot(-l, normalize(light.direction));
+                f *= cos_phi < light.cutoff_cos ? 0.0 : pow(max(cos_phi, 0.0), light.exponent);
+            }
+        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+    ("10-blinn-phong", "Lab: light casters", "        vec3 l;
+        float f = 1.0;
+        if (light.kind == LIGHT_DIRECTIONAL) {
+            l = normalize(-light.direction);
+            float d = length(w_pos);
+            vec3 abc = light.attenuation;
+            f = 1.0 / (abc.x + abc.y * d + abc.z * d * d + 0.5 * d);
+        } else {
+            vec3 to_light = light.position - w_pos;
+            float d = length(to_light);
+            l = normalize(to_light);
+            vec3 abc = light.attenuation;
+            f = 1.0 / (abc.x + abc.y * d + abc.z * d * d);
+            if (light.kind == LIGHT_SPOT) {
+                float cos_phi = dot(-l, normalize(light.direction));
+                f *= cos_phi < light.cutoff_cos ? 0.0 : pow(max(cos_phi, 0.0), light.exponent);
+            }
+        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+    ("10-blinn-phong", "Lab: light casters", "        vec3 l;
+        float f = 1.0;
+        if (light.kind == LIGHT_DIRECTIONAL) {
+            l = normalize(-light.direction);
+        } else {
+            vec3 to_light = light.position - w_pos;
+            float d = length(to_light);
+            l = normalize(to_light);
+            vec3 abc = light.attenuation;
+            f = 1.0 / (abc.x + abc.y * d + abc.z * d * d);
+        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+    ("10-blinn-phong", "Lab: light casters", "        vec3 l;
+        float f = 1.0;
+        if (light.kind == LIGHT_DIRECTIONAL) {
+            l = normalize(-light.direction);
+        } else {
+            vec3 to_light = light.position - w_pos;
+            float d = length(to_light);
+            l = normalize(to_light);
+            vec3 abc = light.attenuation;
+            f = 1.0 / (abc.x + abc.y * d + abc.z * d * d);
+            if (light.kind == LIGHT_SPOT) {
+                float cos_phi = dot(l, normalize(light.direction));
+                f *= cos_phi < light.cutoff_cos ? 0.0 : pow(max(cos_phi, 0.0), light.exponent);
+            }
+        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+    ("10-blinn-phong", "Lab: light casters", "        vec3 l;
+        float f = 1.0;
+        if (light.kind == LIGHT_DIRECTIONAL) {
+            l = normalize(-light.direction);
+        } else {
+            vec3 to_light = light.position - w_pos;
+            float d = length(to_light);
+            l = normalize(to_light);
+            vec3 abc = light.attenuation;
+            f = 1.0 / (abc.x + abc.y * d + abc.z * d * d);
+            if (light.kind == LIGHT_SPOT) {
+                float cos_phi = dot(-l, normalize(light.direction));
+                f *= cos_phi < light.cutoff_cos ? 0.0 : 1.0;
+            }
+        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+    ("10-blinn-phong", "Lab: light casters", "        vec3 l;
+        float f = 1.0;
+        if (light.kind == LIGHT_DIRECTIONAL) {
+            l = normalize(-light.direction);
+        } else {
+            l = normalize(light.position - w_pos);
+            if (light.kind == LIGHT_SPOT) {
+                float cos_phi = dot(-l, normalize(light.direction));
+                f = cos_phi < light.cutoff_cos ? 0.0 : pow(max(cos_phi, 0.0), light.exponent);
+            } else {
+                float d = length(light.position - w_pos);
+                vec3 abc = light.attenuation;
+                f = 1.0 / (abc.x + abc.y * d + abc.z * d * d);
+            }
+        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+    ("10-blinn-phong", "Lab: light casters", "        vec3 l = light.kind == LIGHT_DIRECTIONAL ? normalize(-light.direction) : normalize(light.position - w_pos);
+        float f = 1.0;
+        if (light.kind != LIGHT_DIRECTIONAL) {
+            float d = distance(light.position, w_pos);
+            f = 1.0 / dot(light.attenuation, vec3(1.0, d, d * d));
+        }
+        if (light.kind == LIGHT_SPOT) {
+            float cos_phi = dot(-l, normalize(light.direction));
+            f *= step(light.cutoff_cos, cos_phi) * pow(max(cos_phi, 0.0), light.exponent);
+        }", Right),
+    ("10-blinn-phong", "Lab: light casters", "float falloff(vec3 abc, float d) {
+    return 1.0 / (abc.x + d * (abc.y + d * abc.z));
+}
+float cone(vec3 axis, vec3 l, float cutoff_cos, float e) {
+    float cos_phi = dot(-l, normalize(axis));
+    if (cos_phi < cutoff_cos) {
+        return 0.0;
+    }
+    return pow(cos_phi, e);
+}
+---
+        vec3 l = normalize(-light.direction);
+        float f = 1.0;
+        if (light.kind == LIGHT_POINT || light.kind == LIGHT_SPOT) {
+            vec3 to_light = light.position - w_pos;
+            l = to_light / length(to_light);
+            f = falloff(light.attenuation, length(to_light));
+        }
+        if (light.kind == LIGHT_SPOT) {
+            f = f * cone(light.direction, l, light.cutoff_cos, light.exponent);
+        }", Right),
+    ("10-blinn-phong", "Lab: light casters", "        bool distant = light.kind == LIGHT_DIRECTIONAL;
+        vec3 to_light = light.position - w_pos;
+        float d = length(to_light);
+        vec3 l = distant ? -normalize(light.direction) : to_light / d;
+        vec3 abc = light.attenuation;
+        float f = distant ? 1.0 : 1.0 / (abc.x + abc.y * d + abc.z * d * d);
+        float cos_phi = dot(-l, normalize(light.direction));
+        if (light.kind == LIGHT_SPOT && cos_phi < light.cutoff_cos) {
+            f = 0.0;
+        } else if (light.kind == LIGHT_SPOT) {
+            f *= pow(cos_phi, light.exponent);
+        }", Right),
     // 10-blinn-phong: Lab: the specular term in a fragment shader.
     ("10-blinn-phong", "Lab: the specular term in a fragment shader", "        vec3 h = normalize(l + v);
         sum += f * ks * light.intensity * pow(max(dot(n, h), 0.0), shininess);", Wrong(&["Not yet", "At the inspected pixel your `"])),

@@ -224,7 +224,7 @@ fn a_mismatch_names_the_first_value_that_differs_and_an_unnormalized_normal() {
     use pipelens::app::session::Command;
     let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
     let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    crate::app::go_to_last_step(&mut h);
+    crate::app::go_to_step_titled(&mut h, crate::app::SPECULAR_LAB);
     h.run_steps(4);
     h.get_by_label("Inspect the first wrong pixel").click();
     h.run_steps(6);

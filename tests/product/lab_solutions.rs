@@ -182,6 +182,32 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
         }",
     ),
     (
+        "10-blinn-phong",
+        "Lab: light casters",
+        "        // TODO: l and f for each kind: a distant light (LIGHT_DIRECTIONAL) and a spot light's
+        // cone (LIGHT_SPOT). (As written: every light is a point light.)
+        vec3 to_light = light.position - w_pos;
+        float d = length(to_light);
+        vec3 l = normalize(to_light);
+        vec3 abc = light.attenuation;
+        float f = 1.0 / (abc.x + abc.y * d + abc.z * d * d);",
+        "        vec3 l;
+        float f = 1.0;
+        if (light.kind == LIGHT_DIRECTIONAL) {
+            l = normalize(-light.direction);
+        } else {
+            vec3 to_light = light.position - w_pos;
+            float d = length(to_light);
+            l = normalize(to_light);
+            vec3 abc = light.attenuation;
+            f = 1.0 / (abc.x + abc.y * d + abc.z * d * d);
+            if (light.kind == LIGHT_SPOT) {
+                float cos_phi = dot(-l, normalize(light.direction));
+                f *= cos_phi < light.cutoff_cos ? 0.0 : pow(max(cos_phi, 0.0), light.exponent);
+            }
+        }",
+    ),
+    (
         "24-shader-programs",
         "Lab: the diffuse term",
         "    // TODO: the diffuse term k_d·c·I·max(n·l, 0), added to L.",

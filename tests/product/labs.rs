@@ -314,7 +314,7 @@ fn a_lab_in_the_app_says_not_yet_then_passed_and_keeps_the_code() {
     use pipelens::app::session::Command;
     let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
     let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    let k = crate::app::go_to_last_step(&mut h);
+    let k = crate::app::go_to_step_titled(&mut h, crate::app::SPECULAR_LAB);
     h.run_steps(4);
     assert!(
         h.query_by_label_contains("Not yet: 162116 of 172800 pixels match")

@@ -150,7 +150,7 @@ fn an_edited_lesson_reloads_on_the_same_step_and_a_broken_edit_keeps_the_last_go
 fn a_dropped_shader_file_loads_into_the_panel_and_runs() {
     let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
     let mut h = super::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    super::go_to_last_step(&mut h);
+    super::go_to_step_titled(&mut h, super::SPECULAR_LAB);
     h.run_steps(4);
     assert!(h.query_by_label_contains("Not yet").is_some());
     let solved = crate::labs::solved_source(&h.state().session, true);

@@ -344,7 +344,7 @@ fn a_labs_reference_is_shown_in_the_students_buffer() {
     use pipeline::buffers::{BufferKind, Capture};
     let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
     let mut h = super::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    super::go_to_last_step(&mut h);
+    super::go_to_step_titled(&mut h, super::SPECULAR_LAB);
     h.run_steps(4);
     assert!(
         h.state().session.current_exercise().is_some(),
