@@ -397,6 +397,22 @@ float cone(vec3 axis, vec3 l, float cutoff_cos, float e) {
         }
     }
     return q[0];", Right),
+    // 24-shader-programs: Lab: the texture as k_d's colour.
+    ("24-shader-programs", "Lab: the texture as k_d's colour", "    vec3 c = texture(tex, v_uv.yx).rgb;", Wrong(&["Not yet", "your `c`", "between texels"])),
+    ("24-shader-programs", "Lab: the texture as k_d's colour", "    vec3 c = texture(tex, vec2(v_uv.x, 1.0 - v_uv.y)).rgb;", Wrong(&["Not yet", "your `c`", "between texels"])),
+    ("24-shader-programs", "Lab: the texture as k_d's colour", "    vec3 c = v_color * texture(tex, v_uv).rgb;", Wrong(&["Not yet", "your `c`", "between texels"])),
+    ("24-shader-programs", "Lab: the texture as k_d's colour", "    ivec2 size = textureSize(tex, 0);
+    ivec2 nearest = clamp(ivec2(v_uv * vec2(size)), ivec2(0), size - 1);
+    vec3 c = texelFetch(tex, nearest, 0).rgb;", Wrong(&["Not yet", "your `c`"])),
+    ("24-shader-programs", "Lab: the texture as k_d's colour", "    vec3 c = texture(tex, v_uv).rgb / 255.0;", Wrong(&["Not yet", "your `c`", "between texels"])),
+    ("24-shader-programs", "Lab: the texture as k_d's colour", "    vec4 texel = texture(tex, v_uv);
+    vec3 c = texel.xyz;", Right),
+    ("24-shader-programs", "Lab: the texture as k_d's colour", "vec3 surface(vec2 uv) {
+    return texture(tex, uv).rgb;
+}
+---
+    vec3 c = surface(v_uv);", Right),
+    ("24-shader-programs", "Lab: the texture as k_d's colour", "    vec3 c = mix(v_color, texture(tex, v_uv).rgb, 1.0);", Right),
     // 24-shader-programs: Lab: the diffuse term.
     ("24-shader-programs", "Lab: the diffuse term", "    L += kd * light_color * max(dot(n, l), 0.0);", Wrong(&["Not yet", "`color`"])),
     ("24-shader-programs", "Lab: the diffuse term", "    L += kd * v_color * light_color * dot(n, l);", Wrong(&["Not yet", "`color`"])),

@@ -209,6 +209,13 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
     ),
     (
         "24-shader-programs",
+        "Lab: the texture as k_d's colour",
+        "    // TODO: c, the surface colour, from the texture at v_uv. (As written: the object's colour.)
+    vec3 c = v_color;",
+        "    vec3 c = texture(tex, v_uv).rgb;",
+    ),
+    (
+        "24-shader-programs",
         "Lab: the diffuse term",
         "    // TODO: the diffuse term k_d·c·I·max(n·l, 0), added to L.",
         "    L += kd * v_color * light_color * max(dot(n, l), 0.0);",
