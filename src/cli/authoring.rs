@@ -69,6 +69,10 @@ pub(super) fn check(paths: &[PathBuf]) -> ExitCode {
     }
     let mut failed = problems.len();
     for p in &paths {
+        if let Some(ok) = check_shader(p) {
+            failed += usize::from(!ok);
+            continue;
+        }
         match lesson::load_file(p) {
             Ok(lesson::Document::Scene(s)) => {
                 say!("{}: ok (scene)", p.display());
@@ -100,6 +104,81 @@ pub(super) fn check(paths: &[PathBuf]) -> ExitCode {
         ExitCode::FAILURE
     } else {
         ExitCode::SUCCESS
+    }
+}
+
+/// A shader file checked as the shader panel compiles it: `.vert` and `.frag` as that stage,
+/// `.glsl` as the pipeline function its name says (`inside.glsl`, `depth_test.glsl`, …), each
+/// message at `file:line:column`. `None` for a file that is no shader (a lesson or a scene);
+/// otherwise whether it compiled.
+fn check_shader(path: &Path) -> Option<bool> {
+    use pipeline::shader::{HookKind, Stage};
+    enum Kind {
+        Stage(Stage),
+        Hook(HookKind),
+    }
+    let extension = path.extension()?.to_str()?;
+    let stem = path
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .unwrap_or_default();
+    let kind = match extension {
+        "vert" => Kind::Stage(Stage::Vertex),
+        "frag" => Kind::Stage(Stage::Fragment),
+        "glsl" => match HookKind::ALL.into_iter().find(|k| k.key() == stem) {
+            Some(k) => Kind::Hook(k),
+            None => {
+                let names: Vec<String> = HookKind::ALL
+                    .iter()
+                    .map(|k| format!("{}.glsl", k.key()))
+                    .collect();
+                eprintln!(
+                    "{}: error: a .glsl file is checked as the pipeline function its name says: {}; a shader is a .vert or a .frag",
+                    path.display(),
+                    names.join(", ")
+                );
+                return Some(false);
+            }
+        },
+        _ => return None,
+    };
+    let source = match std::fs::read_to_string(path) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("{}: error: cannot read it: {e}", path.display());
+            return Some(false);
+        }
+    };
+    let (what, result) = match kind {
+        Kind::Stage(Stage::Vertex) => (
+            "vertex shader".to_owned(),
+            pipeline::shader::compile(Stage::Vertex, &source).map(drop),
+        ),
+        Kind::Stage(Stage::Fragment) => (
+            "fragment shader".to_owned(),
+            pipeline::shader::compile(Stage::Fragment, &source).map(drop),
+        ),
+        Kind::Hook(k) => (
+            format!("`{}`", k.signature()),
+            pipeline::shader::compile_hook(k, &source).map(drop),
+        ),
+    };
+    match result {
+        Ok(()) => {
+            say!("{}: ok ({what})", path.display());
+            Some(true)
+        }
+        Err(errors) => {
+            for e in &errors {
+                let said = crate::vocabulary::compile::complaint(
+                    &e.complaint,
+                    crate::vocabulary::Lang::En,
+                )
+                .unwrap_or_else(|| e.message.clone());
+                eprintln!("{}:{}:{}: error: {said}", path.display(), e.line, e.column);
+            }
+            Some(false)
+        }
     }
 }
 

@@ -114,7 +114,9 @@ pub enum Command {
     },
     /// Validate scene and lesson files and print every problem with file:line:column.
     Check {
-        /// The files to check; a folder stands for every `.toml` file under it.
+        /// The files to check; a folder stands for every `.toml` file under it. A `.vert` or
+        /// `.frag` file is compiled as that stage, `inside.glsl` (and the other pipeline
+        /// functions' files, as the shader panel's Save names them) as that function.
         #[arg(required = true)]
         paths: Vec<PathBuf>,
     },

@@ -122,8 +122,12 @@ fn form(c: &Complaint, lang: Lang) -> Option<String> {
             "`#version` 必须是着色器的第一行".into(),
         ),
         C::InvalidVersion(v) => t(
-            format!("GLSL has no version {v}: write `#version 330 core` (or 1x0 for the old GLSL)"),
-            format!("GLSL 没有版本 {v}：请写 `#version 330 core`（或旧版 GLSL 的 1x0）"),
+            format!("GLSL has no version `{v}`: write `#version 330 core` (or 110, 120 for the old GLSL)"),
+            format!("GLSL 没有版本 `{v}`：请写 `#version 330 core`（旧版 GLSL 写 110 或 120）"),
+        ),
+        C::FloatModulo => t(
+            "GLSL's `%` takes whole numbers only (int, uint, ivec…): for floats write mod(a, b)".into(),
+            "GLSL 的 `%` 只能用于整数（int、uint、ivec……）：浮点数请写 mod(a, b)".into(),
         ),
         C::BadSwizzle => t(
             "this swizzle is not allowed: on the left of `=` each component once (v.xy, not v.xx), and at most four".into(),
@@ -293,7 +297,8 @@ mod tests {
             Complaint::NotAssignable,
             Complaint::VoidValue,
             Complaint::VersionNotFirst,
-            Complaint::InvalidVersion(999),
+            Complaint::InvalidVersion("999".into()),
+            Complaint::FloatModulo,
             Complaint::BadSwizzle,
             Complaint::TypeMismatch,
             Complaint::ReturnType,

@@ -205,6 +205,50 @@ fn attribute_declaration(source: &str, d: &dialect::Declaration) -> Option<Shade
     ))
 }
 
+/// The versions of GLSL there are (OpenGL's and OpenGL ES's), as `#version` writes them.
+const VERSIONS: [u32; 17] = [
+    100, 110, 120, 130, 140, 150, 300, 310, 320, 330, 400, 410, 420, 430, 440, 450, 460,
+];
+
+/// A `#version` line GLSL refuses (`#version 999 core`, `#version 3.30`, an unknown profile):
+/// pipelens reads every shader alike, but the student's shader must also compile on the
+/// course's real OpenGL.
+pub(super) fn version(source: &str) -> Option<ShaderError> {
+    let mut at = 0;
+    for line in source.split_inclusive('\n') {
+        let start = at;
+        at += line.len();
+        let Some(rest) = line.trim_start().strip_prefix('#') else {
+            continue;
+        };
+        let Some(written) = rest.trim_start().strip_prefix("version") else {
+            continue;
+        };
+        let written = written.trim();
+        let mut words = written.split_whitespace();
+        let number = words.next().and_then(|n| n.parse::<u32>().ok());
+        let profile = words.next();
+        let known = number.is_some_and(|n| VERSIONS.contains(&n))
+            && matches!(profile, None | Some("core" | "compatibility" | "es"))
+            && words.next().is_none();
+        if known {
+            return None;
+        }
+        let column = line.len() - line.trim_start().len();
+        return Some(complain(
+            error_at(
+                source,
+                start + column..start + line.trim_end().len(),
+                format!(
+                    "GLSL has no version `{written}`: write `#version 330 core` (or 110, 120 for the old GLSL)"
+                ),
+            ),
+            Complaint::InvalidVersion(written.to_owned()),
+        ));
+    }
+    None
+}
+
 /// `error` with the mistake `complaint` as data.
 pub(super) fn complain(mut error: ShaderError, complaint: Complaint) -> ShaderError {
     error.complaint = complaint;

@@ -50,8 +50,10 @@ pub enum Complaint {
     VoidValue,
     /// `#version` not on the first line.
     VersionNotFirst,
-    /// A `#version` GLSL does not have.
-    InvalidVersion(u64),
+    /// A `#version` GLSL does not have (as written after `#version`: `999 core`, `3.30`).
+    InvalidVersion(String),
+    /// `%` between floats: GLSL's `%` takes integers (`mod` is the float form).
+    FloatModulo,
     /// A swizzle with a component twice on the left of `=` (`v.xx = …`), or too many.
     BadSwizzle,
     /// A value stored into a variable of another type (`vec3 c = vec4(…)`).
@@ -132,7 +134,7 @@ pub enum Complaint {
 pub fn of_parse(kind: &ErrorKind, source: &str, span: Range<usize>) -> (Complaint, Range<usize>) {
     match kind {
         ErrorKind::EndOfFile => (Complaint::UnexpectedEnd, span),
-        ErrorKind::InvalidVersion(v) => (Complaint::InvalidVersion(*v), span),
+        ErrorKind::InvalidVersion(v) => (Complaint::InvalidVersion(v.to_string()), span),
         ErrorKind::NotImplemented(what) => (Complaint::NotImplemented((*what).to_owned()), span),
         ErrorKind::UnknownVariable(n) => (Complaint::UnknownVariable(n.clone()), span),
         ErrorKind::UnknownType(n) => (Complaint::UnknownType(n.clone()), span),

@@ -197,6 +197,9 @@ fn parse_errors(
 /// naga's parse and validation errors, a uniform, texture, attribute or output pipelens does
 /// not know, an output never written, an operation the machine does not run.
 pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> {
+    if let Some(e) = check::version(source) {
+        return Err(vec![e]);
+    }
     let adapted = dialect::adapt(source, stage).map_err(|errs| {
         errs.into_iter()
             .map(|e| error_at(source, e.span, e.message))
@@ -255,7 +258,12 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
         match translate::Translator::translate(&module, &info, &adapted, &is_uniform, &texture) {
             Ok(c) => c,
             Err(u) => {
-                errors.push(error_at(source, u.at..u.at, u.what));
+                let float_modulo = u.what == translate::FLOAT_MODULO;
+                let mut e = error_at(source, u.at..u.at, u.what);
+                if float_modulo {
+                    e.complaint = Complaint::FloatModulo;
+                }
+                errors.push(e);
                 return Err(errors);
             }
         };

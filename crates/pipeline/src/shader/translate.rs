@@ -12,6 +12,9 @@ use super::code::{
 use super::dialect::Adapted;
 use super::emitted::{mark_constant, mark_emitted};
 
+/// What a `%` between floats is told (GLSL's `%` takes integers).
+pub const FLOAT_MODULO: &str = "GLSL's `%` takes whole numbers only (int, uint, ivec…): for floats write mod(a, b), a − b·floor(a/b)";
+
 /// The translation of a validated module.
 pub struct Translator<'m> {
     module: &'m Module,
@@ -328,6 +331,11 @@ impl<'m> Translator<'m> {
                     },
                     _ => Shape::Each,
                 };
+                // naga reads `%` on floats (WGSL has it); GLSL does not, and a real OpenGL
+                // refuses the shader (its `mod` is naga's floor form, never this operator).
+                if op == BinaryOperator::Modulo && kind_of(lt) == Kind::F {
+                    return Err(FLOAT_MODULO.to_owned());
+                }
                 Op::Binary {
                     op,
                     kind: kind_of(lt),
