@@ -4,6 +4,7 @@ mod answers;
 mod app;
 mod architecture;
 mod authoring;
+mod check;
 mod cli;
 mod corpus;
 mod course;

@@ -8,6 +8,7 @@ mod clip;
 mod detail;
 mod explain;
 mod frame;
+mod glsl_rules;
 mod hierarchy;
 mod hooks;
 mod implicit;
