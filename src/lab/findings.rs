@@ -81,17 +81,12 @@ fn stretches(trace: &[TraceLine]) -> Stretches {
     let mut stretch = 0;
     let mut values: Stretches = Vec::new();
     for (at, l) in trace.iter().enumerate() {
-        let (name, value) = match &l.step {
-            Step::Iteration { .. } => {
-                stretch += 1;
-                continue;
-            }
-            Step::Assign { name, value } => (name.clone(), value),
-            Step::Return {
-                name,
-                value: Some(value),
-            } => (format!("{name}()"), value),
-            _ => continue,
+        if let Step::Iteration { .. } = l.step {
+            stretch += 1;
+            continue;
+        }
+        let Some((name, value)) = l.step.written() else {
+            continue;
         };
         let key = (stretch, name);
         let taken = (at, l.line, value.clone());
@@ -291,13 +286,8 @@ pub fn wrong_matrix(
         ("M_viewport", m.viewport.matrix),
     ];
     for l in trace {
-        let (name, value) = match &l.step {
-            Step::Assign { name, value } => (name.clone(), value),
-            Step::Return {
-                name,
-                value: Some(value),
-            } => (format!("{name}()"), value),
-            _ => continue,
+        let Some((name, value)) = l.step.written() else {
+            continue;
         };
         if value.ty != "mat4" {
             continue;

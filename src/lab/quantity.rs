@@ -5,7 +5,6 @@
 //! which every frame with the pixel inspected keeps.
 
 use pipeline::capture::{FrameCapture, PixelTexture};
-use pipeline::shader::Step;
 
 use crate::lesson::answer::{Compare, Quantity};
 use crate::vocabulary::Lang;
@@ -66,22 +65,11 @@ pub fn quantity_mismatch(
         .pixel
         .iter()
         .find(|f| f.primitive == owner)?;
-    let function = compare.yours.strip_suffix("()");
-    let (line, value) = fragment
-        .trace
-        .iter()
-        .rev()
-        .find_map(|l| match (&l.step, function) {
-            (
-                Step::Return {
-                    name,
-                    value: Some(v),
-                },
-                Some(f),
-            ) if name == f => Some((l.line, v)),
-            (Step::Assign { name, value }, None) if *name == compare.yours => Some((l.line, value)),
-            _ => None,
-        })?;
+    // The last value written under the name the lesson gives (a function's return as `name()`).
+    let (line, value) = fragment.trace.iter().rev().find_map(|l| {
+        let (name, value) = l.step.written()?;
+        (name == compare.yours).then_some((l.line, value))
+    })?;
     let theirs = pipelens_value(compare.pipelens, &lookup);
     // A colour's fourth component (alpha) is not compared.
     let yours: Vec<f64> = value.numbers.iter().copied().take(theirs.len()).collect();

@@ -73,12 +73,7 @@ fn every_character_of_every_lesson_is_in_the_embedded_fonts() {
         let Document::Lesson(lesson) = load_file(&path).unwrap_or_else(|e| panic!("{e}")) else {
             panic!("{} is not a lesson", path.display());
         };
-        let mut texts = vec![&lesson.title, &lesson.summary];
-        for s in &lesson.steps {
-            texts.extend([&s.title, &s.narration]);
-            texts.extend(s.question.iter().chain(&s.answer));
-        }
-        for t in texts {
+        for t in texts(&lesson) {
             for text in [&t.en, &t.zh] {
                 let missing: String = text
                     .chars()
@@ -105,13 +100,7 @@ fn function_names_with_underscores_are_written_as_code() {
         let Document::Lesson(lesson) = load_file(&path).unwrap_or_else(|e| panic!("{e}")) else {
             panic!("{} is not a lesson", path.display());
         };
-        let mut texts = vec![&lesson.title, &lesson.summary];
-        for s in &lesson.steps {
-            texts.extend([&s.title, &s.narration]);
-            texts.extend(s.question.iter().chain(&s.answer));
-            texts.extend(s.exercise.iter().map(|e| &e.task));
-        }
-        for t in texts {
+        for t in texts(&lesson) {
             for text in [&t.en, &t.zh] {
                 // The text outside backticks, then each word followed by `(`.
                 let prose: String = text.split('`').step_by(2).collect::<Vec<_>>().join(" ");
@@ -131,4 +120,16 @@ fn function_names_with_underscores_are_written_as_code() {
             }
         }
     }
+}
+
+/// Every text a lesson shows: its title and summary, and each step's title, narration,
+/// question, answer and exercise task.
+fn texts(lesson: &pipelens::lesson::Lesson) -> Vec<&pipelens::vocabulary::Text> {
+    let mut texts = vec![&lesson.title, &lesson.summary];
+    for s in &lesson.steps {
+        texts.extend([&s.title, &s.narration]);
+        texts.extend(s.question.iter().chain(&s.answer));
+        texts.extend(s.exercise.iter().map(|e| &e.task));
+    }
+    texts
 }

@@ -55,6 +55,22 @@ pub enum Step {
     Discard,
 }
 
+impl Step {
+    /// What this step wrote, with its name: a variable's new value, or a function's return as
+    /// `name()` (`level_of_detail()`); `None` for any other step.
+    #[must_use]
+    pub fn written(&self) -> Option<(String, &Value)> {
+        match self {
+            Self::Assign { name, value } => Some((name.clone(), value)),
+            Self::Return {
+                name,
+                value: Some(value),
+            } => Some((format!("{name}()"), value)),
+            _ => None,
+        }
+    }
+}
+
 /// A value of a run: its GLSL type and its scalars in GLSL's order (a matrix column by column,
 /// an array element by element, a struct member by member), each as a number (`true` is 1).
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
