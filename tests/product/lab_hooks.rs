@@ -382,3 +382,23 @@ fn a_texture_lab_names_its_quantity_at_the_inspected_pixel() {
     );
     assert!(h.query_by_label_contains("pipelens' λ there is").is_some());
 }
+
+/// At a pixel the student's inside test leaves empty, the Inspector does not blame the depth
+/// test: lesson 08's starter tests the pixel centre for every sample, so its first wrong pixel
+/// (one pipelens covers at a sample) has no fragment kept, and the Inspector says that the
+/// student's inside() covered none of the samples.
+#[test]
+fn an_empty_pixel_of_the_students_inside_test_is_not_blamed_on_the_depth_test() {
+    use egui_kittest::kittest::Queryable;
+    let path = crate::support::repo().join("lessons/08-antialiasing.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    crate::app::go_to_last_step(&mut h);
+    h.run_steps(4);
+    h.get_by_label("Inspect the first wrong pixel").click();
+    h.run_steps(6);
+    assert!(
+        h.query_by_label_contains("Your inside() covers none of these fragments' samples")
+            .is_some()
+    );
+    assert!(h.query_by_label_contains("failed the depth test").is_none());
+}

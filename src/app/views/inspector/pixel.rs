@@ -91,10 +91,24 @@ pub fn ui(ui: &mut Ui, session: &Session, capture: &FrameCapture, record: Option
         fragment(ui, k, f, session, capture, lang);
     }
     if record.primitive.is_none() && !record.fragments.is_empty() {
-        ui.label(lang.tr(
-            "Every fragment failed the depth test.",
-            "所有片元都未通过深度测试。",
-        ));
+        // The samples above are pipelens' own edge test's; where the student's inside test
+        // decides the coverage, it is what left the pixel empty, not the depth test.
+        let student_inside = session
+            .spec
+            .scene
+            .hook(pipeline::shader::HookKind::Inside)
+            .is_some();
+        ui.label(if student_inside {
+            lang.tr(
+                "Your inside() covers none of these fragments' samples (the samples above are pipelens' own edge test's).",
+                "你的 inside() 没有覆盖这些片元的任何采样点（上面的采样点是 pipelens 自己的边测试给出的）。",
+            )
+        } else {
+            lang.tr(
+                "Every fragment failed the depth test.",
+                "所有片元都未通过深度测试。",
+            )
+        });
     }
 }
 
