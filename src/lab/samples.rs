@@ -19,7 +19,8 @@ pub enum SampleMismatch {
     Inside {
         /// The pixel, in window coordinates.
         pixel: (u32, u32),
-        /// The raster triangle (its index in the frame).
+        /// The triangle, numbered as the Inspector numbers it (its primitive: a clipped
+        /// triangle's pieces are one).
         triangle: u32,
         /// The sample's position, window pixels.
         position: [f64; 2],
@@ -38,7 +39,7 @@ pub enum SampleMismatch {
         pixel: (u32, u32),
         /// The sample (from 0).
         sample: usize,
-        /// The raster triangle whose fragment is tested.
+        /// The triangle whose fragment is tested, numbered as the Inspector numbers it.
         triangle: u32,
         /// Its window depth at the sample.
         z: f32,
@@ -70,7 +71,7 @@ pub fn first_sample_mismatch(
         scene.hook(HookKind::Inside),
         scene.hook(HookKind::DepthTest),
     );
-    for (t, tri) in reference.triangles.iter().enumerate() {
+    for tri in &reference.triangles {
         let [x0, y0, x1, y1] = tri.bbox.map(u32::from);
         if x < x0 || x > x1 || y < y0 || y > y1 {
             continue;
@@ -93,7 +94,7 @@ pub fn first_sample_mismatch(
                 if yours != covered {
                     return Some(SampleMismatch::Inside {
                         pixel: (x, y),
-                        triangle: t as u32,
+                        triangle: tri.primitive,
                         position,
                         e: tri.edge_values(p).map(|e| e as f64 / square),
                         top_left: tri.top_left(),
@@ -113,7 +114,7 @@ pub fn first_sample_mismatch(
                     return Some(SampleMismatch::Depth {
                         pixel: (x, y),
                         sample: s,
-                        triangle: t as u32,
+                        triangle: tri.primitive,
                         z,
                         stored: stored[s],
                         theirs,

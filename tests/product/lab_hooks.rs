@@ -401,4 +401,24 @@ fn an_empty_pixel_of_the_students_inside_test_is_not_blamed_on_the_depth_test() 
             .is_some()
     );
     assert!(h.query_by_label_contains("failed the depth test").is_none());
+    // The card's sample names its triangle as the Inspector numbers the fragments.
+    let said = h
+        .state()
+        .session
+        .exercise
+        .findings
+        .sentences(pipelens::vocabulary::Lang::En)
+        .join(" ");
+    let number: String = said
+        .split("against triangle ")
+        .nth(1)
+        .unwrap_or_else(|| panic!("{said}"))
+        .chars()
+        .take_while(char::is_ascii_digit)
+        .collect();
+    assert!(
+        h.query_by_label_contains(&format!("· triangle {number}"))
+            .is_some(),
+        "{said}"
+    );
 }
