@@ -58,6 +58,10 @@ pub fn quantity_mismatch(
     let (x, y) = mine.settings.capture.pixel?;
     let i = mine.grid().checked_index(x, y)?;
     let owner = *mine.pixels.primitive.get(i)?;
+    // pipelens' lookup is its owning fragment's: compared only where that is the student's too.
+    if reference.pixels.primitive.get(i) != Some(&owner) {
+        return None;
+    }
     let lookup = reference.pixels.texture_at(i)?;
     let fragment = mine
         .shaders
@@ -136,7 +140,14 @@ impl QuantityMismatch {
     /// A texel's finding: both colours, and the four texels and weights pipelens mixes.
     fn texel_words(&self, yours: &str, theirs: &str, uv: &str, lang: Lang) -> String {
         let (name, line) = (&self.name, self.line);
-        let Some((w, h)) = self.size else {
+        // The filter reads one level (bilinear): its size; a blend of two levels (trilinear) is
+        // said without the texels.
+        let level = self.theirs.level;
+        let size = self
+            .size
+            .filter(|_| level.fract() == 0.0)
+            .map(|(w, h)| ((w >> level as u32).max(1), (h >> level as u32).max(1)));
+        let Some((w, h)) = size else {
             return match lang {
                 Lang::En => format!(
                     "At the inspected pixel your `{name}` (line {line}) gives {yours}; pipelens' filter reads {theirs} there (uv {uv})."
@@ -151,14 +162,20 @@ impl QuantityMismatch {
         let y = f64::from(self.theirs.uv[1]) * f64::from(h) - 0.5;
         let (i, j) = (x.floor(), y.floor());
         let (s, t) = (x - i, y - j);
+        let on = match (lang, level as u32) {
+            (Lang::En, 0) => format!("the {w} × {h} texture"),
+            (Lang::En, k) => format!("level {k} ({w} × {h})"),
+            (Lang::Zh, 0) => format!(" {w} × {h} 的纹理"),
+            (Lang::Zh, k) => format!("第 {k} 层（{w} × {h}）"),
+        };
         match lang {
             Lang::En => format!(
-                "At the inspected pixel your `{name}` (line {line}) gives {yours}; pipelens' bilinear filter reads {theirs} there: uv {uv} on the {w} × {h} texture is (x, y) = ({x:.3}, {y:.3}) (x = u·w − ½, y = v·h − ½), between texels ({i}, {j}) and ({}, {}), mixed by s = {s:.3} and t = {t:.3}.",
+                "At the inspected pixel your `{name}` (line {line}) gives {yours}; pipelens' bilinear filter reads {theirs} there: uv {uv} on {on} is (x, y) = ({x:.3}, {y:.3}) (x = u·w − ½, y = v·h − ½), between texels ({i}, {j}) and ({}, {}), mixed by s = {s:.3} and t = {t:.3}.",
                 i + 1.0,
                 j + 1.0
             ),
             Lang::Zh => format!(
-                "在所检查的像素处，你的 `{name}`（第 {line} 行）给出 {yours}；pipelens 的双线性过滤在此处读出 {theirs}：uv {uv} 在 {w} × {h} 的纹理上是 (x, y) = ({x:.3}, {y:.3})（x = u·w − ½，y = v·h − ½），位于纹素 ({i}, {j}) 与 ({}, {}) 之间，按 s = {s:.3}、t = {t:.3} 混合。",
+                "在所检查的像素处，你的 `{name}`（第 {line} 行）给出 {yours}；pipelens 的双线性过滤在此处读出 {theirs}：uv {uv} 在{on}上是 (x, y) = ({x:.3}, {y:.3})（x = u·w − ½，y = v·h − ½），位于纹素 ({i}, {j}) 与 ({}, {}) 之间，按 s = {s:.3}、t = {t:.3} 混合。",
                 i + 1.0,
                 j + 1.0
             ),
