@@ -119,14 +119,16 @@ pub fn first_mismatch(
 pub fn first_difference(mine: &[TraceLine], theirs: &[TraceLine]) -> Option<Mismatch> {
     // A name written as often in both runs within a stretch is compared write by write (the
     // third `uv` with the third: a helper's argument); otherwise by its last value there.
-    let reference_values: std::collections::HashMap<_, _> = stretches(theirs).into_iter().collect();
+    let (mine, theirs) = (stretches(mine), stretches(theirs));
+    let reference_values: std::collections::HashMap<_, _> =
+        theirs.iter().map(|(k, v)| (k, v)).collect();
     let mut paired: Vec<(usize, (String, usize, Value, Value))> = Vec::new();
-    for (key, yours) in stretches(mine) {
-        let Some(theirs) = reference_values.get(&key) else {
+    for (key, yours) in &mine {
+        let Some(theirs) = reference_values.get(key) else {
             continue;
         };
         let pairs: Vec<_> = if yours.len() == theirs.len() {
-            yours.iter().zip(theirs).collect()
+            yours.iter().zip(theirs.iter()).collect()
         } else {
             yours.last().into_iter().zip(theirs.last()).collect()
         };
@@ -158,23 +160,22 @@ pub fn first_difference(mine: &[TraceLine], theirs: &[TraceLine]) -> Option<Mism
     // Nothing differs stretch by stretch (the runs loop differently, or write their values in
     // different stretches): the last value of each name both runs write — the output's at
     // least — compared whatever the stretch.
-    let last = |values: Stretches| {
+    let last = |values: &Stretches| {
         let mut out: Vec<(String, (usize, Value))> = Vec::new();
         for ((_, name), all) in values {
             let Some((_, line, value)) = all.last() else {
                 continue;
             };
             let v = (*line, value.clone());
-            match out.iter_mut().find(|(n, _)| *n == name) {
+            match out.iter_mut().find(|(n, _)| n == name) {
                 Some((_, old)) => *old = v,
-                None => out.push((name, v)),
+                None => out.push((name.clone(), v)),
             }
         }
         out
     };
-    let theirs_last: std::collections::HashMap<_, _> =
-        last(stretches(theirs)).into_iter().collect();
-    last(stretches(mine))
+    let theirs_last: std::collections::HashMap<_, _> = last(&theirs).into_iter().collect();
+    last(&mine)
         .into_iter()
         .find_map(|(name, (line, yours))| {
             let (_, theirs) = theirs_last.get(&name)?;

@@ -110,23 +110,25 @@ impl Findings {
             .as_ref()
             .and_then(|d| d.first)
             .and_then(|first| samples::first_sample_mismatch(scene, reference, first));
-        // A run is compared only in a shader the lab asks the student to write (its starter
-        // says TODO there) or that they changed: never a line of a stage they were not to touch.
-        let (vertex_changed, fragment_changed) = changed_stages(scene, rules.starter);
-        let mismatch = if fragment_changed {
-            first_mismatch(traced(mine), traced(reference))
-        } else {
-            None
-        };
-        let mismatch = mismatch.or_else(|| {
-            let first = difference.as_ref()?.first?;
-            vertex_changed.then(|| vertex_mismatch(scene, (mine, reference), first))?
-        });
         let quantity = rules
             .compare
             .and_then(|c| quantity::quantity_mismatch(c, (mine, reference), scene));
-        // A matrix off, or the lab's quantity, says more than a value it puts off further on.
-        let mismatch = mismatch.filter(|_| matrix.is_none() && quantity.is_none());
+        // A matrix off, or the lab's quantity, says more than a value it puts off further on:
+        // the runs are compared (a vertex traced again) only where neither is found. A run is
+        // compared only in a shader the lab asks the student to write (its starter says TODO
+        // there) or that they changed: never a line of a stage they were not to touch.
+        let (vertex_changed, fragment_changed) = changed_stages(scene, rules.starter);
+        let mismatch = (matrix.is_none() && quantity.is_none())
+            .then(|| {
+                fragment_changed
+                    .then(|| first_mismatch(traced(mine), traced(reference)))
+                    .flatten()
+                    .or_else(|| {
+                        let first = difference.as_ref()?.first?;
+                        vertex_changed.then(|| vertex_mismatch(scene, (mine, reference), first))?
+                    })
+            })
+            .flatten();
         Self {
             difference,
             curve: curve_difference(scene),

@@ -363,19 +363,7 @@ fn the_shadow_lab_compares_the_matrix_up_to_a_positive_factor() {
 #[test]
 fn a_texture_lab_names_its_quantity_at_the_inspected_pixel() {
     use egui_kittest::kittest::Queryable;
-    let path = crate::support::repo().join("lessons/14-mipmaps.toml");
-    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    crate::app::go_to_last_step(&mut h);
-    h.run_steps(4);
-    h.get_by_label("Inspect the first wrong pixel").click();
-    h.run_steps(6);
-    let said = h
-        .state()
-        .session
-        .exercise
-        .findings
-        .sentences(pipelens::vocabulary::Lang::En)
-        .join(" ");
+    let (h, said) = starter_inspected("14-mipmaps");
     assert!(
         said.contains("your `level_of_detail()` (line 13) gives λ = 0.000; pipelens' λ there is"),
         "{said}"
@@ -390,25 +378,13 @@ fn a_texture_lab_names_its_quantity_at_the_inspected_pixel() {
 #[test]
 fn an_empty_pixel_of_the_students_inside_test_is_not_blamed_on_the_depth_test() {
     use egui_kittest::kittest::Queryable;
-    let path = crate::support::repo().join("lessons/08-antialiasing.toml");
-    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    crate::app::go_to_last_step(&mut h);
-    h.run_steps(4);
-    h.get_by_label("Inspect the first wrong pixel").click();
-    h.run_steps(6);
+    let (h, said) = starter_inspected("08-antialiasing");
     assert!(
         h.query_by_label_contains("Your inside() covers none of these fragments' samples")
             .is_some()
     );
     assert!(h.query_by_label_contains("failed the depth test").is_none());
     // The card's sample names its triangle as the Inspector numbers the fragments.
-    let said = h
-        .state()
-        .session
-        .exercise
-        .findings
-        .sentences(pipelens::vocabulary::Lang::En)
-        .join(" ");
     let number: String = said
         .split("against triangle ")
         .nth(1)
@@ -421,4 +397,29 @@ fn an_empty_pixel_of_the_students_inside_test_is_not_blamed_on_the_depth_test() 
             .is_some(),
         "{said}"
     );
+}
+
+/// Lesson `id`'s last step (its lab) with the starter as it is, after **Inspect the first wrong
+/// pixel**: the harness and the card's sentences in English.
+fn starter_inspected(
+    id: &str,
+) -> (
+    egui_kittest::Harness<'static, pipelens::app::PipelensApp>,
+    String,
+) {
+    use egui_kittest::kittest::Queryable;
+    let path = crate::support::repo().join(format!("lessons/{id}.toml"));
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    crate::app::go_to_last_step(&mut h);
+    h.run_steps(4);
+    h.get_by_label("Inspect the first wrong pixel").click();
+    h.run_steps(6);
+    let said = h
+        .state()
+        .session
+        .exercise
+        .findings
+        .sentences(pipelens::vocabulary::Lang::En)
+        .join(" ");
+    (h, said)
 }

@@ -214,39 +214,30 @@ const VERSIONS: [u32; 17] = [
 /// pipelens reads every shader alike, but the student's shader must also compile on the
 /// course's real OpenGL.
 pub(super) fn version(source: &str) -> Option<ShaderError> {
-    let mut at = 0;
-    for line in source.split_inclusive('\n') {
-        let start = at;
-        at += line.len();
-        let Some(rest) = line.trim_start().strip_prefix('#') else {
-            continue;
-        };
-        let Some(written) = rest.trim_start().strip_prefix("version") else {
-            continue;
-        };
-        let written = written.trim();
-        let mut words = written.split_whitespace();
-        let number = words.next().and_then(|n| n.parse::<u32>().ok());
-        let profile = words.next();
-        let known = number.is_some_and(|n| VERSIONS.contains(&n))
-            && matches!(profile, None | Some("core" | "compatibility" | "es"))
-            && words.next().is_none();
-        if known {
-            return None;
-        }
-        let column = line.len() - line.trim_start().len();
-        return Some(complain(
+    let span = dialect::version_directive(source)?;
+    let written = source[span.clone()]
+        .trim_start_matches('#')
+        .trim_start()
+        .strip_prefix("version")?
+        .trim();
+    let mut words = written.split_whitespace();
+    let number = words.next().and_then(|n| n.parse::<u32>().ok());
+    let profile = words.next();
+    let known = number.is_some_and(|n| VERSIONS.contains(&n))
+        && matches!(profile, None | Some("core" | "compatibility" | "es"))
+        && words.next().is_none();
+    (!known).then(|| {
+        complain(
             error_at(
                 source,
-                start + column..start + line.trim_end().len(),
+                span.start..span.start + source[span.clone()].trim_end().len(),
                 format!(
                     "GLSL has no version `{written}`: write `#version 330 core` (or 110, 120 for the old GLSL)"
                 ),
             ),
             Complaint::InvalidVersion(written.to_owned()),
-        ));
-    }
-    None
+        )
+    })
 }
 
 /// `error` with the mistake `complaint` as data.

@@ -125,6 +125,12 @@ struct Token {
     span: Range<usize>,
 }
 
+/// The `#version` directive's place in `src`, from its `#` to the end of its line, as the
+/// adaptation finds it (a directive in a comment is none).
+pub(super) fn version_directive(src: &str) -> Option<Range<usize>> {
+    top_level(src).1
+}
+
 /// Splits `src` into tokens, leaving out comments, and into top-level statements. Returns the
 /// top-level declarations (token lists ending before their `;`, with the offset just after
 /// it), and the `#version` line.
