@@ -115,15 +115,23 @@ pub fn first_mismatch(
 /// (of the same stage on the same input): a variable both assign in the same stretch of the
 /// run (before the first loop iteration, or within the same iteration), whose last values
 /// there differ — a vector of length 1 in pipelens' run that is not in the student's first.
+/// Stretches pair only where both runs loop as often; runs that loop differently (one light
+/// written out where pipelens loops over the scene's lights) compare each name's last value.
 #[must_use]
 pub fn first_difference(mine: &[TraceLine], theirs: &[TraceLine]) -> Option<Mismatch> {
+    let iterations = |run: &[TraceLine]| {
+        run.iter()
+            .filter(|l| matches!(l.step, Step::Iteration { .. }))
+            .count()
+    };
+    let alike = iterations(mine) == iterations(theirs);
     // A name written as often in both runs within a stretch is compared write by write (the
     // third `uv` with the third: a helper's argument); otherwise by its last value there.
     let (mine, theirs) = (stretches(mine), stretches(theirs));
     let reference_values: std::collections::HashMap<_, _> =
         theirs.iter().map(|(k, v)| (k, v)).collect();
     let mut paired: Vec<(usize, (String, usize, Value, Value))> = Vec::new();
-    for (key, yours) in &mine {
+    for (key, yours) in mine.iter().filter(|_| alike) {
         let Some(theirs) = reference_values.get(key) else {
             continue;
         };
@@ -159,26 +167,28 @@ pub fn first_difference(mine: &[TraceLine], theirs: &[TraceLine]) -> Option<Mism
     }
     // Nothing differs stretch by stretch (the runs loop differently, or write their values in
     // different stretches): the last value of each name both runs write — the output's at
-    // least — compared whatever the stretch.
+    // least — compared whatever the stretch, the student's first-computed first (a light
+    // vector off before the sum it feeds).
     let last = |values: &Stretches| {
-        let mut out: Vec<(String, (usize, Value))> = Vec::new();
+        let mut out: Vec<(String, (usize, usize, Value))> = Vec::new();
         for ((_, name), all) in values {
-            let Some((_, line, value)) = all.last() else {
+            let Some((at, line, value)) = all.last() else {
                 continue;
             };
-            let v = (*line, value.clone());
+            let v = (*at, *line, value.clone());
             match out.iter_mut().find(|(n, _)| n == name) {
                 Some((_, old)) => *old = v,
                 None => out.push((name.clone(), v)),
             }
         }
+        out.sort_by_key(|(_, (at, ..))| *at);
         out
     };
     let theirs_last: std::collections::HashMap<_, _> = last(&theirs).into_iter().collect();
     last(&mine)
         .into_iter()
-        .find_map(|(name, (line, yours))| {
-            let (_, theirs) = theirs_last.get(&name)?;
+        .find_map(|(name, (_, line, yours))| {
+            let (.., theirs) = theirs_last.get(&name)?;
             (!yours.agrees(theirs)).then(|| (name, line, yours, theirs.clone()))
         })
         .map(|m| mismatch(&m))
