@@ -426,4 +426,66 @@ float cone(vec3 axis, vec3 l, float cutoff_cos, float e) {
     if (d > 0.0) {
         L += kd * v_color * light_color * d;
     }", Right),
+    // 24-shader-programs: Lab: Gouraud shading in the vertex shader.
+    ("24-shader-programs", "Lab: Gouraud shading in the vertex shader", "    vec3 l = normalize(light_pos - p);
+    vec3 r = reflect(-l, n);
+    lit += kd * c * light_color * max(dot(n, l), 0.0);
+    if (dot(n, l) > 0.0) {
+        specular += ks * light_color * pow(max(dot(r, v), 0.0), shininess);
+    }", Wrong(&["Not yet", "your vertex shader's `specular`"])),
+    ("24-shader-programs", "Lab: Gouraud shading in the vertex shader", "    vec3 l = normalize(light_pos - p);
+    vec3 h = normalize(l + v);
+    lit += kd * c * light_color * dot(n, l);
+    if (dot(n, l) > 0.0) {
+        specular += ks * light_color * pow(max(dot(n, h), 0.0), shininess);
+    }", Wrong(&["Not yet", "your vertex shader's `lit`"])),
+    ("24-shader-programs", "Lab: Gouraud shading in the vertex shader", "    vec3 l = normalize(p - light_pos);
+    vec3 h = normalize(l + v);
+    lit += kd * c * light_color * max(dot(n, l), 0.0);
+    if (dot(n, l) > 0.0) {
+        specular += ks * light_color * pow(max(dot(n, h), 0.0), shininess);
+    }", Wrong(&["Not yet", "your vertex shader's `l`"])),
+    ("24-shader-programs", "Lab: Gouraud shading in the vertex shader", "    vec3 l = normalize(light_pos - p);
+    vec3 h = l + v;
+    lit += kd * c * light_color * max(dot(n, l), 0.0);
+    if (dot(n, l) > 0.0) {
+        specular += ks * light_color * pow(max(dot(n, h), 0.0), shininess);
+    }", Wrong(&["Not yet", "your vertex shader's `h`", "is it normalized?"])),
+    ("24-shader-programs", "Lab: Gouraud shading in the vertex shader", "    vec3 l = normalize(light_pos - p);
+    vec3 h = normalize(l + v);
+    lit = kd * c * light_color * max(dot(n, l), 0.0);
+    if (dot(n, l) > 0.0) {
+        specular += ks * light_color * pow(max(dot(n, h), 0.0), shininess);
+    }", Wrong(&["Not yet", "your vertex shader's `lit`"])),
+    ("24-shader-programs", "Lab: Gouraud shading in the vertex shader", "    vec3 l = normalize(light_pos - p);
+    vec3 h = normalize(l + v);
+    lit += kd * c * light_color * max(dot(n, l), 0.0);
+    if (dot(n, l) > 0.0) {
+        specular += ks * c * light_color * pow(max(dot(n, h), 0.0), shininess);
+    }", Wrong(&["Not yet", "your vertex shader's `specular`"])),
+    ("24-shader-programs", "Lab: Gouraud shading in the vertex shader", "float blinn_phong(vec3 n, vec3 l, vec3 v, float p) {
+    float d = max(dot(n, l), 0.0);
+    return d > 0.0 ? pow(max(dot(n, normalize(l + v)), 0.0), p) : 0.0;
+}
+---
+    vec3 to_light = normalize(light_pos - p);
+    lit += kd * c * light_color * max(dot(n, to_light), 0.0);
+    specular += ks * light_color * blinn_phong(n, to_light, v, shininess);", Right),
+    ("24-shader-programs", "Lab: Gouraud shading in the vertex shader", "uniform Light lights[MAX_LIGHTS];
+uniform int light_count;
+---
+    for (int i = 0; i < light_count; i++) {
+        if (lights[i].kind == LIGHT_POINT) {
+            vec3 l = normalize(lights[i].position - p);
+            float d = dot(n, l);
+            lit += kd * c * lights[i].intensity * max(d, 0.0);
+            if (d > 0.0) {
+                specular += ks * lights[i].intensity * pow(max(dot(n, normalize(l + v)), 0.0), shininess);
+            }
+        }
+    }", Right),
+    ("24-shader-programs", "Lab: Gouraud shading in the vertex shader", "    vec3 l = normalize(light_pos - p);
+    float nl = clamp(dot(l, n), 0.0, 1.0);
+    lit = lit + nl * kd * c * light_color;
+    specular += nl > 0.0 ? ks * light_color * pow(max(dot(n, normalize(v + l)), 0.0), shininess) : vec3(0.0);", Right),
 ];

@@ -216,6 +216,17 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
     ),
     (
         "24-shader-programs",
+        "Lab: Gouraud shading in the vertex shader",
+        "    // TODO: add this vertex's diffuse term to lit, and its specular term to specular where n·l > 0.",
+        "    vec3 l = normalize(light_pos - p);
+    vec3 h = normalize(l + v);
+    lit += kd * c * light_color * max(dot(n, l), 0.0);
+    if (dot(n, l) > 0.0) {
+        specular += ks * light_color * pow(max(dot(n, h), 0.0), shininess);
+    }",
+    ),
+    (
+        "24-shader-programs",
         "Lab: the diffuse term",
         "    // TODO: the diffuse term k_d·c·I·max(n·l, 0), added to L.",
         "    L += kd * v_color * light_color * max(dot(n, l), 0.0);",

@@ -508,3 +508,33 @@ fn the_lab_template_fails_as_written_and_passes_when_done() {
     let d = compared(&spec, e.tolerance);
     assert!(d.passed(), "{} of {} pixels", d.matching, d.total);
 }
+
+/// The shader panel opens on the stage a step is about: lesson 24's vertex-shader step (its own
+/// vertex shader beside pipelens' Blinn-Phong) and its Gouraud lab (both shaders its own, the
+/// TODO in the vertex shader) show the vertex shader's source; the diffuse lab its fragment's.
+#[test]
+fn the_shader_panel_opens_on_the_stage_the_step_is_about() {
+    use egui_kittest::kittest::Queryable;
+    let path = crate::support::repo().join("lessons/24-shader-programs.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    h.state_mut().panels.shader = true;
+    for (title, shown) in [
+        (
+            "The vertex shader: a program per vertex",
+            "gl_Position = projection",
+        ),
+        (
+            "Lab: Gouraud shading in the vertex shader",
+            "v_specular = specular;",
+        ),
+        ("Lab: the diffuse term", "// TODO: the diffuse term"),
+    ] {
+        crate::app::go_to_step_titled(&mut h, title);
+        h.run_steps(4);
+        let source = h
+            .get_by_role(egui::accesskit::Role::MultilineTextInput)
+            .value()
+            .unwrap_or_default();
+        assert!(source.contains(shown), "{title}: the panel shows {source}");
+    }
+}

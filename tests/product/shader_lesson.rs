@@ -244,7 +244,7 @@ fn lesson_24_s_blinn_phong_is_the_course_s_and_phong_s_highlight_is_smaller() {
     else {
         panic!("lesson 24 loads")
     };
-    for k in [0, 6] {
+    for k in [0, 6, 7] {
         let spec = lesson.spec_at(k);
         let mine = pipeline::render(&spec.scene, &spec.settings).expect("renders");
         let mut own = spec.scene.clone();

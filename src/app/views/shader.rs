@@ -180,12 +180,14 @@ impl ShaderEditor {
         self.errors.clear();
         self.shaders_in_use = true;
         // Open on the stage the step wrote: a vertex shader of its own beside pipelens'
-        // fragment stage (a matrix lab) is on the vertex tab.
+        // fragment stage (a matrix lab) is on the vertex tab, and so is a lab whose TODO is in
+        // its vertex shader only (Gouraud shading).
         if matches!(self.tab, Tab::Shader(_)) {
             let own = |source: &str, shipped: &[&str]| shipped.contains(&source);
             let vertex_shipped = own(&self.vertex, &shader::SHIPPED_VERTEX);
             let fragment_shipped = own(&self.fragment, &shader::SHIPPED_FRAGMENT);
-            self.tab = Tab::Shader(if !vertex_shipped && fragment_shipped {
+            let todo_in_vertex = self.vertex.contains("TODO") && !self.fragment.contains("TODO");
+            self.tab = Tab::Shader(if (!vertex_shipped && fragment_shipped) || todo_in_vertex {
                 Stage::Vertex
             } else {
                 Stage::Fragment
