@@ -122,49 +122,12 @@ pub fn names(text: &str) -> std::collections::BTreeSet<String> {
 
 /// The identifiers and punctuation of GLSL source with their lines, comments left out.
 fn tokens(text: &str) -> Vec<(String, usize)> {
-    let mut out = Vec::new();
-    let mut chars = text.chars().peekable();
-    let mut line = 1;
-    while let Some(c) = chars.next() {
-        match c {
-            '\n' => line += 1,
-            '/' if chars.peek() == Some(&'/') => {
-                for c in chars.by_ref() {
-                    if c == '\n' {
-                        line += 1;
-                        break;
-                    }
-                }
-            }
-            '/' if chars.peek() == Some(&'*') => {
-                chars.next();
-                let mut star = false;
-                for c in chars.by_ref() {
-                    if c == '\n' {
-                        line += 1;
-                    }
-                    if star && c == '/' {
-                        break;
-                    }
-                    star = c == '*';
-                }
-            }
-            c if c.is_ascii_alphabetic() || c == '_' => {
-                let mut word = String::from(c);
-                while let Some(&n) = chars.peek() {
-                    if !(n.is_ascii_alphanumeric() || n == '_') {
-                        break;
-                    }
-                    word.push(n);
-                    chars.next();
-                }
-                out.push((word, line));
-            }
-            c if c.is_whitespace() => {}
-            c => out.push((c.to_string(), line)),
-        }
-    }
-    out
+    use pipeline::shader::lexeme::{Kind, lex};
+    lex(text)
+        .into_iter()
+        .filter(|l| matches!(l.kind, Kind::Word | Kind::Punctuation))
+        .map(|l| (text[l.span].to_owned(), l.line))
+        .collect()
 }
 
 #[cfg(test)]

@@ -19,6 +19,7 @@ pub mod dialect;
 mod emitted;
 pub mod hook;
 pub mod interface;
+pub mod lexeme;
 pub mod link;
 mod lowering;
 mod machine;
