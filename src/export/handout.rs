@@ -7,6 +7,7 @@ use std::fmt::Write as _;
 
 use base64::Engine as _;
 use pipeline::capture::Matrices;
+use pipeline::scene::StudentCode;
 use pipeline::transform::NamedMatrix;
 
 use crate::lesson::Lesson;
@@ -69,7 +70,7 @@ fn data_url(mime: &str, bytes: &[u8]) -> String {
 }
 
 /// Escapes text for HTML.
-fn esc(s: &str) -> String {
+pub(super) fn esc(s: &str) -> String {
     s.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
@@ -204,9 +205,10 @@ details{margin-top:.4em} .key{display:inline-block;background:#8a3b00;color:#fff
 @media print{
 @page{size:A4;margin:14mm}
 body{max-width:none;margin:0;font-size:10.5pt}
-section{break-inside:avoid;page-break-inside:avoid;margin-top:1em}
-h2{break-after:avoid}
-figure,.question,.film{break-inside:avoid} .question{break-before:avoid}
+section{margin-top:1em}
+h2,p.listing{break-after:avoid}
+figure,.question,.film,table.src tr{break-inside:avoid} .question{break-before:avoid}
+.question.exercise{break-inside:auto} p.ui{break-after:avoid}
 figure.m{margin:.3em .5em .3em 0;font-size:8pt} figure.m figcaption{max-width:42mm}
 .screen{display:none}
 img{max-height:100mm;width:auto}
@@ -273,9 +275,10 @@ pub fn html(lesson: &Lesson, pages: &[StepPage], lang: Lang, answers: bool) -> S
     let title = esc(lesson.title.get(lang));
     format!(
         "<!doctype html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\">\
-         <meta name=\"viewport\" content=\"width=device-width\"><title>{title}</title>\n<style>\n{}{STYLE}</style></head><body>\n{h}",
+         <meta name=\"viewport\" content=\"width=device-width\"><title>{title}</title>\n<style>\n{}{STYLE}{}</style></head><body>\n{h}",
         if lang == Lang::Zh { "zh-CN" } else { "en" },
-        cjk_font_face(lang, &format!("{title}{h}"))
+        cjk_font_face(lang, &format!("{title}{h}")),
+        super::listing::STYLE
     )
 }
 
@@ -348,6 +351,9 @@ fn step_html(
         }
         h.push_str("</div>\n");
     }
+    if let Some(code) = &step.shader {
+        h.push_str(&shaders_html(lesson, page.index, code, lang));
+    }
     if let Some(e) = &step.exercise {
         h.push_str(&exercise_html(e, lang));
     }
@@ -383,37 +389,97 @@ fn step_html(
     h.push_str("</section>\n");
 }
 
+/// The files of `code` a listing prints, named as the shader panel's Save names them:
+/// pipelens' own shipped shaders are not repeated.
+fn own_files(code: &StudentCode) -> Vec<(String, &str)> {
+    use pipeline::shader::{SHIPPED_FRAGMENT, SHIPPED_VERTEX};
+    crate::lesson::forbid::sources(code)
+        .into_iter()
+        .filter(|(file, source)| match file.as_str() {
+            "shader.vert" => !SHIPPED_VERTEX.contains(source),
+            "shader.frag" => !SHIPPED_FRAGMENT.contains(source),
+            _ => true,
+        })
+        .collect()
+}
+
+/// The lines (from 1) of `source` whose code `before` does not have, blank lines aside: a
+/// step's edit of the shader the step before ran. A line's code is its text before a `//`
+/// comment (a comment alone on its line is its code), so a comment dropped from a line the
+/// edit did not touch does not mark it.
+fn changed_lines(source: &str, before: &str) -> Vec<usize> {
+    let code = |line: &str| {
+        let line = line.trim();
+        match line.split_once("//") {
+            Some((code, _)) if !code.trim().is_empty() => code.trim().to_owned(),
+            _ => line.to_owned(),
+        }
+    };
+    let old: std::collections::HashSet<String> = before.lines().map(code).collect();
+    source
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty() && !old.contains(&code(l)))
+        .map(|(i, _)| i + 1)
+        .collect()
+}
+
+/// The shaders step `k` runs of its own (its `shader`), each a listing under its file name, the
+/// lines it changed from the shader of the same file the step before ran on yellow.
+fn shaders_html(lesson: &Lesson, k: usize, code: &StudentCode, lang: Lang) -> String {
+    let files = own_files(code);
+    if files.is_empty() {
+        return String::new();
+    }
+    let before = k.checked_sub(1).map(|j| lesson.spec_at(j).scene);
+    let before_files = before.as_ref().map_or_else(Vec::new, |scene| {
+        crate::lesson::forbid::files(
+            scene.objects.iter().find_map(|o| o.shader.as_ref()),
+            |kind| scene.hook(kind),
+        )
+    });
+    let mut h = format!(
+        "<p class=\"listing ui\">{}</p>",
+        lang.tr(
+            "The shaders this step runs (on yellow: the lines changed from the step before):",
+            "本步骤运行的着色器（黄底：与上一步相比改动的行）："
+        )
+    );
+    for (file, source) in files {
+        let marked = before_files
+            .iter()
+            .find(|(f, _)| *f == file)
+            .map_or_else(Vec::new, |(_, old)| changed_lines(source, old));
+        let _ = write!(
+            h,
+            "<p class=\"listing\"><code>{file}</code></p>{}",
+            super::listing::html(source, &marked)
+        );
+    }
+    h
+}
+
 /// An exercise on paper: the task, and the starter code the student completes (the stages the
-/// lesson wrote; pipelens' own are not repeated).
+/// lesson wrote; pipelens' own are not repeated), its TODO lines on yellow.
 fn exercise_html(e: &crate::lesson::answer::Exercise, lang: Lang) -> String {
-    use pipeline::shader::{BUILTIN_FRAGMENT, BUILTIN_VERTEX};
     let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
     let mut h = format!(
-        "<div class=\"question\"><b class=\"ui\">{}</b> {}",
+        "<div class=\"question exercise\"><b class=\"ui\">{}</b> {}",
         t("Exercise:", "练习："),
         typeset(&notation::parse_paragraph(e.task.get(lang)))
     );
-    let mut sources: Vec<&str> = Vec::new();
-    if let Some(shader) = &e.starter.shader {
-        let p = &shader.programs;
-        sources.extend(
-            [
-                (p.vertex.source.as_str(), BUILTIN_VERTEX),
-                (p.fragment.source.as_str(), BUILTIN_FRAGMENT),
-            ]
-            .into_iter()
-            .filter(|(source, builtin)| source != builtin)
-            .map(|(source, _)| source),
+    for (file, source) in own_files(&e.starter) {
+        let todo: Vec<usize> = source
+            .lines()
+            .enumerate()
+            .filter(|(_, l)| l.contains("TODO"))
+            .map(|(i, _)| i + 1)
+            .collect();
+        let _ = write!(
+            h,
+            "<p class=\"listing\"><code>{file}</code></p>{}",
+            super::listing::html(source, &todo)
         );
-    }
-    sources.extend(
-        pipeline::shader::HookKind::ALL
-            .into_iter()
-            .filter_map(|kind| e.starter.hook(kind))
-            .map(|hook| hook.source.as_str()),
-    );
-    for source in sources {
-        let _ = write!(h, "<pre class=\"code\">{}</pre>", esc(source.trim()));
     }
     h.push_str("</div>\n");
     h

@@ -7,6 +7,7 @@ mod font;
 mod handout;
 mod json;
 pub mod lesson;
+mod listing;
 mod picture;
 mod slides;
 pub mod text;

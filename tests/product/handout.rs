@@ -445,3 +445,79 @@ fn a_wide_picture_spans_the_slide_with_the_words_under_it() {
     let share = full as f64 / f64::from(above_footer - below_title);
     assert!(share > 0.7, "rows with content under the title: {share:.2}");
 }
+
+/// The text of each marked (yellow) row of the listings in `section`, tags left out.
+fn marked_rows(section: &str) -> Vec<String> {
+    section
+        .split("<tr class=\"m\">")
+        .skip(1)
+        .map(|row| {
+            let row = &row[..row.find("</tr>").unwrap_or(row.len())];
+            let mut text = String::new();
+            let mut in_tag = false;
+            for c in row.chars() {
+                match c {
+                    '<' => in_tag = true,
+                    '>' => in_tag = false,
+                    c if !in_tag => text.push(c),
+                    _ => {}
+                }
+            }
+            text.replace("&lt;", "<").replace("&gt;", ">")
+        })
+        .collect()
+}
+
+/// Lesson 24's handout prints the shaders each step runs: the rim step's listing marks the
+/// lines its edit added (and not the lines it kept), the vertex-shader step prints its vertex
+/// shader and not pipelens' own fragment shader beside it, a lab its starter with the TODO
+/// marked.
+#[test]
+fn a_shader_step_prints_its_code_with_its_edit_marked() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let lesson = crate::support::repo().join("lessons/24-shader-programs.toml");
+    let out = dir.path().join("h");
+    let o = pipelens(
+        dir.path(),
+        &[
+            "export",
+            lesson.to_str().expect("utf-8"),
+            "--out",
+            out.to_str().expect("utf-8"),
+            "--size",
+            "160x120",
+        ],
+    );
+    assert!(o.status.success(), "{}", text(&o));
+    let html = std::fs::read_to_string(out.join("index.html")).expect("index.html");
+    let section = |n: usize| {
+        let start = html
+            .find(&format!("<section id=\"step-{n}\">"))
+            .unwrap_or_else(|| panic!("step {n}"));
+        let end = html[start..].find("</section>").expect("its end") + start;
+        html[start..end].to_owned()
+    };
+    let rim = marked_rows(&section(4));
+    assert!(
+        rim.iter().any(|r| r.contains("float rim = ")),
+        "the rim's line is marked: {rim:?}"
+    );
+    assert!(
+        !rim.iter().any(|r| r.contains("vec3 n = normalize(w_nrm);")),
+        "a kept line is not: {rim:?}"
+    );
+    let vertex = section(8);
+    assert!(vertex.contains("<code>shader.vert</code>"));
+    assert!(
+        !vertex.contains("<code>shader.frag</code>"),
+        "pipelens' own is not repeated"
+    );
+    assert!(vertex.contains("gl_Position"));
+    let lab = marked_rows(&section(9));
+    // Line 29 of the starter (counted in the lesson file), and only it.
+    assert_eq!(
+        lab,
+        ["29    // TODO: the diffuse term k_d·c·I·max(n·l, 0), added to L."],
+        "the lab's TODO is marked"
+    );
+}
