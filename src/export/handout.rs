@@ -6,7 +6,7 @@
 use std::fmt::Write as _;
 
 use base64::Engine as _;
-use pipeline::capture::Matrices;
+use pipeline::capture::{FragmentTrace, Matrices};
 use pipeline::scene::StudentCode;
 use pipeline::transform::NamedMatrix;
 
@@ -59,6 +59,9 @@ pub struct StepPage {
     pub subject: Vec<bool>,
     /// The stage it shows.
     pub stage: Stage,
+    /// The debugger's run at its inspected pixel: the pixel and each fragment's run there, when
+    /// shaders ran on it.
+    pub trace: Option<((u32, u32), Vec<FragmentTrace>)>,
 }
 
 /// A data URL of `bytes` of MIME type `mime`.
@@ -227,8 +230,12 @@ fn cjk_font_face(lang: Lang, text: &str) -> String {
             // A font that cannot be cut is embedded whole: larger, and still Chinese.
             let font = super::font::cjk_subset(text)
                 .unwrap_or_else(|_| crate::vocabulary::cjk_font().to_vec());
+            // For Chinese characters and punctuation only (Latin text keeps the reader's own
+            // sans-serif and monospace): a listing's font list names it first, so that headless
+            // Chromium does not draw the first Chinese run of a listing as boxes, as it did with
+            // the font as a fallback after the monospace one.
             format!(
-                "@font-face{{font-family:'pipelens CJK';src:url({}) format('opentype')}}\n",
+                "@font-face{{font-family:'pipelens CJK';src:url({}) format('opentype');unicode-range:U+2000-206F,U+2E80-9FFF,U+F900-FFEF}}\n",
                 data_url("font/otf", &font)
             )
         }
@@ -354,6 +361,9 @@ fn step_html(
     if let Some(code) = &step.shader {
         h.push_str(&shaders_html(lesson, page.index, code, lang));
     }
+    if let Some((pixel, fragments)) = &page.trace {
+        h.push_str(&trace_html(*pixel, fragments, lang));
+    }
     if let Some(e) = &step.exercise {
         h.push_str(&exercise_html(e, lang));
     }
@@ -455,6 +465,58 @@ fn shaders_html(lesson: &Lesson, k: usize, code: &StudentCode, lang: Lang) -> St
             "<p class=\"listing\"><code>{file}</code></p>{}",
             super::listing::html(source, &marked)
         );
+    }
+    h
+}
+
+/// The debugger at the step's pixel on paper: each fragment's inputs, its run statement by
+/// statement (line and words, branches and loop iterations among them), and what it wrote.
+fn trace_html((x, y): (u32, u32), fragments: &[FragmentTrace], lang: Lang) -> String {
+    let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
+    let mut h = String::new();
+    for (k, f) in fragments.iter().enumerate() {
+        let _ = write!(
+            h,
+            "<p class=\"listing ui\">{} ({x}, {y}) · {} {} · {} {}</p><table class=\"src\">",
+            t("The debugger at pixel", "调试器：像素"),
+            t("fragment", "片元"),
+            k + 1,
+            t("triangle", "三角形"),
+            f.primitive
+        );
+        let row = |h: &mut String, n: &str, text: &str| {
+            let _ = write!(
+                h,
+                "<tr><td class=\"n\">{n}</td><td class=\"l\">{}</td></tr>",
+                esc(text)
+            );
+        };
+        // Each input under GLSL's own word for it (no Chinese in the narrow number column:
+        // headless Chromium drew it there as boxes).
+        for (name, value) in &f.inputs {
+            row(&mut h, "in", &format!("{name} = {value}"));
+        }
+        for line in &f.trace {
+            row(
+                &mut h,
+                &line.line.to_string(),
+                &crate::vocabulary::trace::words(line, lang),
+            );
+        }
+        let out = f.output.map_or_else(
+            || t("discarded", "被丢弃").to_owned(),
+            |c| {
+                format!(
+                    "vec4({}, {}, {}, {})",
+                    num(c[0]),
+                    num(c[1]),
+                    num(c[2]),
+                    num(c[3])
+                )
+            },
+        );
+        row(&mut h, "→", &out);
+        h.push_str("</table>");
     }
     h
 }

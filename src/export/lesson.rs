@@ -191,9 +191,18 @@ fn build_step(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<BuiltSte
             m.name = format!("M_model({})", spec.label(object, opts.lang));
         }
     }
+    // The debugger's run at the step's own pixel (or the one asked for), where shaders ran.
+    let pixel = capture.settings.capture.pixel;
+    let trace = capture
+        .shaders
+        .as_ref()
+        .filter(|_| lesson.steps[k].pixel.is_some() || opts.pixel.is_some())
+        .map(|s| s.pixel.clone())
+        .unwrap_or_default();
     let page = StepPage {
         index: k,
         picture: compact_image(&print)?,
+        trace: pixel.map(|p| (p, trace)).filter(|(_, t)| !t.is_empty()),
         animated,
         subject: crate::spaces::subject(
             &capture,
@@ -265,15 +274,14 @@ fn spec_of(lesson: &Lesson, k: usize, opts: &LessonExport, t: Option<f32>) -> Re
     if lesson.steps[k].exercise.is_some() {
         spec.scene.clear_code();
     }
-    // The pixel `capture.json` describes: the frame records its fragment shaders' runs there.
-    if opts.data {
-        // `--pixel`, else the step's own inspected pixel, when it is inside the image.
-        let (w, h) = (spec.settings.width, spec.settings.height);
-        spec.settings.capture.pixel = opts
-            .pixel
-            .or(lesson.steps[k].pixel)
-            .filter(|&(x, y)| x < w && y < h);
-    }
+    // The pixel `capture.json` describes and the handout's debugger prints: the frame records
+    // its fragment shaders' runs there. `--pixel`, else the step's own inspected pixel, when it
+    // is inside the image.
+    let (w, h) = (spec.settings.width, spec.settings.height);
+    spec.settings.capture.pixel = opts
+        .pixel
+        .or(lesson.steps[k].pixel)
+        .filter(|&(x, y)| x < w && y < h);
     if let Some(p) = spec.settings.problems().first() {
         anyhow::bail!("{p}");
     }

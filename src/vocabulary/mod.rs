@@ -14,6 +14,7 @@ pub mod notation;
 mod numbers;
 pub mod profile;
 mod stage;
+pub mod trace;
 
 pub use buffers::{buffer_name, gain_note};
 pub use comparison::{Comparison, variant_label};

@@ -469,9 +469,9 @@ fn marked_rows(section: &str) -> Vec<String> {
 }
 
 /// Lesson 24's handout prints the shaders each step runs: the rim step's listing marks the
-/// lines its edit added (and not the lines it kept), the vertex-shader step prints its vertex
-/// shader and not pipelens' own fragment shader beside it, a lab its starter with the TODO
-/// marked.
+/// lines its edit added (and not the lines it kept), the debugger's step the run at its pixel,
+/// the vertex-shader step its vertex shader and not pipelens' own fragment shader beside it, a
+/// lab its starter with the TODO marked.
 #[test]
 fn a_shader_step_prints_its_code_with_its_edit_marked() {
     let dir = tempfile::tempdir().expect("temp dir");
@@ -484,8 +484,6 @@ fn a_shader_step_prints_its_code_with_its_edit_marked() {
             lesson.to_str().expect("utf-8"),
             "--out",
             out.to_str().expect("utf-8"),
-            "--size",
-            "160x120",
         ],
     );
     assert!(o.status.success(), "{}", text(&o));
@@ -505,6 +503,23 @@ fn a_shader_step_prints_its_code_with_its_edit_marked() {
     assert!(
         !rim.iter().any(|r| r.contains("vec3 n = normalize(w_nrm);")),
         "a kept line is not: {rim:?}"
+    );
+    // The debugger's step prints its pixel's run: the inputs, each statement, the branch.
+    let debugger = section(7);
+    assert!(
+        debugger.contains("The debugger at pixel ("),
+        "no run printed"
+    );
+    for row in [
+        "<td class=\"n\">in</td><td class=\"l\">w_nrm = vec3(",
+        "if: true → then",
+        "color = vec4(",
+    ] {
+        assert!(debugger.contains(row), "the run lacks {row:?}");
+    }
+    assert!(
+        !section(6).contains("The debugger at pixel"),
+        "a step with no pixel has no run"
     );
     let vertex = section(8);
     assert!(vertex.contains("<code>shader.vert</code>"));

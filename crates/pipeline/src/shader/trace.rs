@@ -13,6 +13,9 @@ pub struct TraceLine {
     pub line: usize,
     /// What happened: `n = vec3(0.000, 0.707, 0.707)`, `if: true → then`, `loop: iteration 3`.
     pub text: String,
+    /// The value written or returned as GLSL writes it (`vec3(0.000, 0.707, 0.707)`), for words
+    /// in another language; `None` for a step that writes none.
+    pub value: Option<String>,
     /// What happened, as data: what a program compares (a lab's check), where the text is what
     /// a person reads.
     pub step: Step,
@@ -117,10 +120,18 @@ impl Program {
                     ty: glsl_type(&self.module, ty),
                     numbers: scalars(&self.module, ty, bits),
                 };
+                let shown = match e {
+                    Event::Assign { ty, bits, .. }
+                    | Event::Return {
+                        value: Some((ty, bits)),
+                        ..
+                    } => Some(self.format_value(*ty, bits)),
+                    _ => None,
+                };
                 let (at, text, step) = match e {
                     Event::Assign { at, name, ty, bits } => (
                         *at,
-                        format!("{name} = {}", self.format_value(*ty, bits)),
+                        format!("{name} = {}", shown.as_deref().unwrap_or_default()),
                         Step::Assign {
                             name: name.clone(),
                             value: value(*ty, bits),
@@ -144,8 +155,8 @@ impl Program {
                     Event::Return { at, name, value: v } => (
                         *at,
                         match v {
-                            Some((ty, bits)) => {
-                                format!("{name}() returns {}", self.format_value(*ty, bits))
+                            Some(_) => {
+                                format!("{name}() returns {}", shown.as_deref().unwrap_or_default())
                             }
                             None => format!("return from {name}()"),
                         },
@@ -163,6 +174,7 @@ impl Program {
                 TraceLine {
                     line: line_column(&self.source, at).0,
                     text,
+                    value: shown,
                     step,
                 }
             })

@@ -163,13 +163,14 @@ fn run(ui: &mut Ui, trace: &[TraceLine], lang: Lang) {
     for line in trace {
         ui.horizontal_wrapped(|ui| {
             ui.monospace(format!("{} {:>3}", lang.tr("line", "行"), line.line));
-            let text = if not_finite(&line.text) {
+            let words = crate::vocabulary::trace::words(line, lang);
+            let text = if not_finite(&words) {
                 // The statement where a value stopped being a number.
-                RichText::new(format!("{}   {NOT_FINITE_MARK}", line.text))
+                RichText::new(format!("{words}   {NOT_FINITE_MARK}"))
                     .monospace()
                     .color(ui.visuals().error_fg_color)
             } else {
-                RichText::new(&line.text).monospace()
+                RichText::new(words).monospace()
             };
             ui.add(egui::Label::new(text).wrap());
         });

@@ -1,0 +1,90 @@
+//! A shader's run in words, in the interface's language: each line of a trace ([`TraceLine`])
+//! as the inspector, the handout and the slides write it. GLSL stays GLSL (`n = vec3(…)`,
+//! `if`, `discard`); the words around it are translated.
+
+use pipeline::shader::{Step, TraceLine};
+
+use super::Lang;
+
+/// What `line` did, in `lang`: `n = vec3(0.000, 0.707, 0.707)`; `if: true → then` or
+/// `if：条件成立 → then`; `loop: iteration 3` or `循环：第 3 次迭代`; a call, a return with its
+/// value, a discard.
+#[must_use]
+pub fn words(line: &TraceLine, lang: Lang) -> String {
+    if lang == Lang::En {
+        return line.text.clone();
+    }
+    let value = line.value.as_deref().unwrap_or_default();
+    match &line.step {
+        Step::Assign { name, .. } => format!("{name} = {value}"),
+        Step::Branch { taken: true } => "if：条件成立 → then".to_owned(),
+        Step::Branch { taken: false } => "if：条件不成立 → else".to_owned(),
+        Step::Iteration { k } => format!("循环：第 {k} 次迭代"),
+        Step::Call { name } => format!("调用 {name}()"),
+        Step::Return {
+            name,
+            value: Some(_),
+        } => format!("{name}() 返回 {value}"),
+        Step::Return { name, value: None } => format!("从 {name}() 返回"),
+        Step::Discard => "discard：丢弃这个片元".to_owned(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use pipeline::shader::Value;
+
+    /// Each kind of step in Chinese holds no English word but GLSL's, and in English is the
+    /// trace's own text.
+    #[test]
+    fn each_step_is_worded_in_either_language() {
+        let line = |step: Step, text: &str, value: Option<&str>| TraceLine {
+            line: 3,
+            text: text.to_owned(),
+            value: value.map(str::to_owned),
+            step,
+        };
+        let v = Value {
+            ty: "float".to_owned(),
+            numbers: vec![0.5],
+        };
+        let lines = [
+            line(
+                Step::Assign {
+                    name: "d".into(),
+                    value: v.clone(),
+                },
+                "d = 0.500",
+                Some("0.500"),
+            ),
+            line(Step::Branch { taken: false }, "if: false → else", None),
+            line(Step::Iteration { k: 2 }, "loop: iteration 2", None),
+            line(Step::Call { name: "f".into() }, "call f()", None),
+            line(
+                Step::Return {
+                    name: "f".into(),
+                    value: Some(v),
+                },
+                "f() returns 0.500",
+                Some("0.500"),
+            ),
+            line(Step::Discard, "discard: the fragment is thrown away", None),
+        ];
+        let zh: Vec<String> = lines.iter().map(|l| words(l, Lang::Zh)).collect();
+        assert_eq!(
+            zh,
+            [
+                "d = 0.500",
+                "if：条件不成立 → else",
+                "循环：第 2 次迭代",
+                "调用 f()",
+                "f() 返回 0.500",
+                "discard：丢弃这个片元"
+            ]
+        );
+        for l in &lines {
+            assert_eq!(words(l, Lang::En), l.text);
+        }
+    }
+}
