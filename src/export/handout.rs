@@ -62,6 +62,8 @@ pub struct StepPage {
     /// The debugger's run at its inspected pixel: the pixel and each fragment's run there, when
     /// shaders ran on it.
     pub trace: Option<((u32, u32), Vec<FragmentTrace>)>,
+    /// The legend of the picture's drawings, printed under it.
+    pub legend: Vec<String>,
 }
 
 /// A data URL of `bytes` of MIME type `mime`.
@@ -308,16 +310,18 @@ fn step_html(
         body = markdown(step.narration.get(lang))
     );
     let target = if step.exercise.is_some() {
-        t(
-            " — pipelens' own, what your code must draw",
-            "——pipelens 自带的结果：你的代码要画出的画面",
-        )
+        format!("{}{}", t(" — ", "——"), lab_target(lang))
     } else {
-        ""
+        String::new()
     };
+    let legend: String = page
+        .legend
+        .iter()
+        .map(|l| format!("<br>{}", esc(l)))
+        .collect();
     let _ = writeln!(
         h,
-        "<figure><img src=\"{}\" alt=\"{title}\"><figcaption class=\"ui\">{}{}{target}</figcaption></figure>",
+        "<figure><img src=\"{}\" alt=\"{title}\"><figcaption class=\"ui\">{}{}{target}{legend}</figcaption></figure>",
         page.picture.url(),
         t("Stage: ", "阶段："),
         page.stage.name(lang)
@@ -368,86 +372,58 @@ fn step_html(
         h.push_str(&exercise_html(e, lang));
     }
     if let Some(q) = &step.question {
-        let _ = write!(
-            h,
-            "<div class=\"question\"><b class=\"ui\">{}</b> {}",
-            t("Question:", "思考题："),
-            typeset(&notation::parse_paragraph(q.get(lang)))
-        );
-        if let Some(e) = &step.expect {
-            h.push_str(&fill_in(e, answers, lang));
-        }
-        if let Some(a) = &step.answer {
-            if answers {
-                let _ = write!(
-                    h,
-                    "<div class=\"answer\"><b class=\"ui\">{}</b>{}</div>",
-                    t("Answer:", "答案："),
-                    markdown(a.get(lang))
-                );
-            } else {
-                let _ = write!(
-                    h,
-                    "<details class=\"screen\"><summary class=\"ui\">{}</summary>{}</details>",
-                    t("Show the answer", "显示答案"),
-                    markdown(a.get(lang))
-                );
-            }
-        }
-        h.push_str("</div>\n");
+        h.push_str(&question_html(step, q, lang, answers));
     }
     h.push_str("</section>\n");
 }
 
-/// The files of `code` a listing prints, named as the shader panel's Save names them:
-/// pipelens' own shipped shaders are not repeated.
-fn own_files(code: &StudentCode) -> Vec<(String, &str)> {
-    use pipeline::shader::{SHIPPED_FRAGMENT, SHIPPED_VERTEX};
-    crate::lesson::forbid::sources(code)
-        .into_iter()
-        .filter(|(file, source)| match file.as_str() {
-            "shader.vert" => !SHIPPED_VERTEX.contains(source),
-            "shader.frag" => !SHIPPED_FRAGMENT.contains(source),
-            _ => true,
-        })
-        .collect()
-}
-
-/// The lines (from 1) of `source` whose code `before` does not have, blank lines aside: a
-/// step's edit of the shader the step before ran. A line's code is its text before a `//`
-/// comment (a comment alone on its line is its code), so a comment dropped from a line the
-/// edit did not touch does not mark it.
-fn changed_lines(source: &str, before: &str) -> Vec<usize> {
-    let code = |line: &str| {
-        let line = line.trim();
-        match line.split_once("//") {
-            Some((code, _)) if !code.trim().is_empty() => code.trim().to_owned(),
-            _ => line.to_owned(),
+/// A step's question, its blanks for a typed answer, and its answer (printed in a teacher's
+/// key, else folded on screen and left out of print).
+fn question_html(
+    step: &crate::lesson::script::Step,
+    q: &crate::vocabulary::Text,
+    lang: Lang,
+    answers: bool,
+) -> String {
+    let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
+    let mut h = String::new();
+    let _ = write!(
+        h,
+        "<div class=\"question\"><b class=\"ui\">{}</b> {}",
+        t("Question:", "思考题："),
+        typeset(&notation::parse_paragraph(q.get(lang)))
+    );
+    if let Some(e) = &step.expect {
+        h.push_str(&fill_in(e, answers, lang));
+    }
+    if let Some(a) = &step.answer {
+        if answers {
+            let _ = write!(
+                h,
+                "<div class=\"answer\"><b class=\"ui\">{}</b>{}</div>",
+                t("Answer:", "答案："),
+                markdown(a.get(lang))
+            );
+        } else {
+            let _ = write!(
+                h,
+                "<details class=\"screen\"><summary class=\"ui\">{}</summary>{}</details>",
+                t("Show the answer", "显示答案"),
+                markdown(a.get(lang))
+            );
         }
-    };
-    let old: std::collections::HashSet<String> = before.lines().map(code).collect();
-    source
-        .lines()
-        .enumerate()
-        .filter(|(_, l)| !l.trim().is_empty() && !old.contains(&code(l)))
-        .map(|(i, _)| i + 1)
-        .collect()
+    }
+    h.push_str("</div>\n");
+    h
 }
 
 /// The shaders step `k` runs of its own (its `shader`), each a listing under its file name, the
 /// lines it changed from the shader of the same file the step before ran on yellow.
 fn shaders_html(lesson: &Lesson, k: usize, code: &StudentCode, lang: Lang) -> String {
-    let files = own_files(code);
+    let files = super::listing::step_edits(lesson, k, code);
     if files.is_empty() {
         return String::new();
     }
-    let before = k.checked_sub(1).map(|j| lesson.spec_at(j).scene);
-    let before_files = before.as_ref().map_or_else(Vec::new, |scene| {
-        crate::lesson::forbid::files(
-            scene.objects.iter().find_map(|o| o.shader.as_ref()),
-            |kind| scene.hook(kind),
-        )
-    });
     let mut h = format!(
         "<p class=\"listing ui\">{}</p>",
         lang.tr(
@@ -455,11 +431,7 @@ fn shaders_html(lesson: &Lesson, k: usize, code: &StudentCode, lang: Lang) -> St
             "本步骤运行的着色器（黄底：与上一步相比改动的行）："
         )
     );
-    for (file, source) in files {
-        let marked = before_files
-            .iter()
-            .find(|(f, _)| *f == file)
-            .map_or_else(Vec::new, |(_, old)| changed_lines(source, old));
+    for (file, source, marked) in files {
         let _ = write!(
             h,
             "<p class=\"listing\"><code>{file}</code></p>{}",
@@ -467,6 +439,14 @@ fn shaders_html(lesson: &Lesson, k: usize, code: &StudentCode, lang: Lang) -> St
         );
     }
     h
+}
+
+/// What a lab's picture is: pipelens' own frame, which the student's code must draw.
+pub(super) fn lab_target(lang: Lang) -> &'static str {
+    lang.tr(
+        "pipelens' own, what your code must draw",
+        "pipelens 自带的结果：你的代码要画出的画面",
+    )
 }
 
 /// The debugger at the step's pixel on paper: each fragment's inputs, its run statement by
@@ -530,13 +510,7 @@ fn exercise_html(e: &crate::lesson::answer::Exercise, lang: Lang) -> String {
         t("Exercise:", "练习："),
         typeset(&notation::parse_paragraph(e.task.get(lang)))
     );
-    for (file, source) in own_files(&e.starter) {
-        let todo: Vec<usize> = source
-            .lines()
-            .enumerate()
-            .filter(|(_, l)| l.contains("TODO"))
-            .map(|(i, _)| i + 1)
-            .collect();
+    for (file, source, todo) in super::listing::starter_todos(&e.starter) {
         let _ = write!(
             h,
             "<p class=\"listing\"><code>{file}</code></p>{}",

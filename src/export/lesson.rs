@@ -164,8 +164,10 @@ fn build_step(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<BuiltSte
     } = draw(lesson, k, opts, None)?;
     let animated = animation(lesson, k, opts)?;
     let mut folders = Vec::new();
+    let legend = super::picture::legend(lesson, k, &capture, opts.lang);
     if opts.slides {
-        let slide = super::slides::slide(lesson, k, &picture, opts.lang);
+        let extras = slide_extras(lesson, k, &capture, legend.clone(), opts.lang);
+        let slide = super::slides::slide(lesson, k, &picture, &extras, opts.lang);
         let file = ExportFile {
             name: format!("{}.png", step_dir(k)),
             description: format!("slide of step {}", k + 1),
@@ -203,6 +205,7 @@ fn build_step(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<BuiltSte
         index: k,
         picture: compact_image(&print)?,
         trace: pixel.map(|p| (p, trace)).filter(|(_, t)| !t.is_empty()),
+        legend,
         animated,
         subject: crate::spaces::subject(
             &capture,
@@ -214,6 +217,92 @@ fn build_step(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<BuiltSte
         stage: lesson.stage_at(k),
     };
     Ok((page, folders))
+}
+
+/// What step `k`'s slide shows besides its picture and words: the picture's `legend`; for a lab,
+/// what the picture is, the task and the starter's TODO lines; else the debugger's run at the
+/// step's pixel, or the lines of its own shaders its edit changed (the start of `main()` where
+/// nothing came before).
+fn slide_extras(
+    lesson: &Lesson,
+    k: usize,
+    capture: &FrameCapture,
+    legend: Vec<String>,
+    lang: Lang,
+) -> super::slides::Extras {
+    use super::listing::{focus, starter_todos, step_edits};
+    let step = &lesson.steps[k];
+    let mut extras = super::slides::Extras {
+        legend,
+        ..Default::default()
+    };
+    if let Some(e) = &step.exercise {
+        extras.caption = Some(super::handout::lab_target(lang).to_owned());
+        extras.task = Some(format!(
+            "{} {}",
+            lang.tr("Exercise:", "练习："),
+            e.task.get(lang)
+        ));
+        extras.code = starter_todos(&e.starter)
+            .into_iter()
+            .find(|(.., todo)| !todo.is_empty())
+            .map(|(file, source, todo)| (file, focus(source, &todo, 3, 10)));
+        return extras;
+    }
+    let run = capture
+        .shaders
+        .as_ref()
+        .filter(|_| step.pixel.is_some())
+        .and_then(|s| s.pixel.first());
+    if let (Some(f), Some((x, y))) = (run, capture.settings.capture.pixel) {
+        let mut rows: Vec<super::listing::Row> = f
+            .trace
+            .iter()
+            .map(|l| {
+                let words = crate::vocabulary::trace::words(l, lang);
+                (
+                    l.line.to_string(),
+                    words,
+                    matches!(l.step, pipeline::shader::Step::Branch { .. }),
+                )
+            })
+            .collect();
+        if rows.len() > 10 {
+            rows.drain(9..rows.len() - 1);
+        }
+        let heading = format!(
+            "{} ({x}, {y})",
+            lang.tr("The debugger at pixel", "调试器：像素")
+        );
+        extras.code = Some((heading, rows));
+        return extras;
+    }
+    if let Some(code) = &step.shader {
+        extras.code =
+            step_edits(lesson, k, code)
+                .into_iter()
+                .next()
+                .map(|(file, source, marked)| {
+                    let rows = if marked.is_empty() {
+                        let main = source.lines().position(|l| l.starts_with("void main"));
+                        focus(source, &main.map(|m| vec![m + 1]).unwrap_or_default(), 0, 1)
+                            .into_iter()
+                            .chain(
+                                source
+                                    .lines()
+                                    .enumerate()
+                                    .skip(main.map_or(usize::MAX, |m| m + 1))
+                                    .take(7)
+                                    .map(|(i, l)| ((i + 1).to_string(), l.to_owned(), false)),
+                            )
+                            .collect()
+                    } else {
+                        focus(source, &marked, 1, 12)
+                    };
+                    (file, rows)
+                });
+    }
+    extras
 }
 
 /// A step rendered and drawn: its scene, its capture, the compared settings' captures and

@@ -148,6 +148,130 @@ pub fn html(source: &str, marked: &[usize]) -> String {
     h
 }
 
+/// The files of `code` a listing prints, named as the shader panel's Save names them:
+/// pipelens' own shipped shaders are not repeated.
+pub(super) fn own_files(code: &pipeline::scene::StudentCode) -> Vec<(String, &str)> {
+    let files = crate::lesson::forbid::sources(code);
+    files.into_iter().filter(|(f, s)| !shipped(f, s)).collect()
+}
+
+/// Whether `source`, saved as `file`, is one of pipelens' own shipped shaders.
+fn shipped(file: &str, source: &str) -> bool {
+    use pipeline::shader::{SHIPPED_FRAGMENT, SHIPPED_VERTEX};
+    match file {
+        "shader.vert" => SHIPPED_VERTEX.contains(&source),
+        "shader.frag" => SHIPPED_FRAGMENT.contains(&source),
+        _ => false,
+    }
+}
+
+/// The lines (from 1) of `source` whose code `before` does not have, blank lines aside: a
+/// step's edit of the shader the step before ran. A line's code is its text before a `//`
+/// comment (a comment alone on its line is its code), so a comment dropped from a line the
+/// edit did not touch does not mark it.
+pub(super) fn changed_lines(source: &str, before: &str) -> Vec<usize> {
+    let code = |line: &str| {
+        let line = line.trim();
+        match line.split_once("//") {
+            Some((code, _)) if !code.trim().is_empty() => code.trim().to_owned(),
+            _ => line.to_owned(),
+        }
+    };
+    let old: std::collections::HashSet<String> = before.lines().map(code).collect();
+    source
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty() && !old.contains(&code(l)))
+        .map(|(i, _)| i + 1)
+        .collect()
+}
+
+/// Step `k`'s own shaders (its `shader`: `code`), each with its file name and the lines it
+/// changed from the shader of the same file the step before ran.
+pub(super) fn step_edits<'a>(
+    lesson: &crate::lesson::Lesson,
+    k: usize,
+    code: &'a pipeline::scene::StudentCode,
+) -> Vec<(String, &'a str, Vec<usize>)> {
+    let files = own_files(code);
+    if files.is_empty() {
+        return Vec::new();
+    }
+    let before = k.checked_sub(1).map(|j| lesson.spec_at(j).scene);
+    // An edit is of the step before's own code: pipelens' shipped shaders are no edit's start.
+    let before_files = before.as_ref().map_or_else(Vec::new, |scene| {
+        let shader = scene.objects.iter().find_map(|o| o.shader.as_ref());
+        let files = crate::lesson::forbid::files(shader, |kind| scene.hook(kind));
+        files.into_iter().filter(|(f, s)| !shipped(f, s)).collect()
+    });
+    files
+        .into_iter()
+        .map(|(file, source)| {
+            let marked = before_files
+                .iter()
+                .find(|(f, _)| *f == file)
+                .map_or_else(Vec::new, |(_, old)| changed_lines(source, old));
+            (file, source, marked)
+        })
+        .collect()
+}
+
+/// A lab's starter files (pipelens' own shipped shaders aside), each with its file name and
+/// the lines that say TODO.
+pub(super) fn starter_todos(
+    starter: &pipeline::scene::StudentCode,
+) -> Vec<(String, &str, Vec<usize>)> {
+    own_files(starter)
+        .into_iter()
+        .map(|(file, source)| {
+            let todo = source
+                .lines()
+                .enumerate()
+                .filter(|(_, l)| l.contains("TODO"))
+                .map(|(i, _)| i + 1)
+                .collect();
+            (file, source, todo)
+        })
+        .collect()
+}
+
+/// A row of a slide's code panel: the line's number (empty for a gap), its text, and whether
+/// it is marked.
+pub type Row = (String, String, bool);
+
+/// The lines of `source` a slide shows: each marked line (from 1) with `context` lines around
+/// it, at most `max` in all, as `(line, text, marked)`; a gap between two stretches is a row
+/// with no number and `…`.
+#[must_use]
+pub(super) fn focus(
+    source: &str,
+    marked: &[usize],
+    context: usize,
+    max: usize,
+) -> Vec<(String, String, bool)> {
+    let lines: Vec<&str> = source.lines().collect();
+    let shown = |i: usize| {
+        marked
+            .iter()
+            .any(|&m| i + 1 + context >= m && i < m + context)
+    };
+    let mut out = Vec::new();
+    let mut last: Option<usize> = None;
+    for (i, text) in lines.iter().enumerate().filter(|(i, _)| shown(*i)) {
+        if last.is_some_and(|l| i > l + 1) {
+            out.push((String::new(), "…".to_owned(), false));
+        }
+        out.push((
+            (i + 1).to_string(),
+            (*text).to_owned(),
+            marked.contains(&(i + 1)),
+        ));
+        last = Some(i);
+    }
+    out.truncate(max);
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -134,6 +134,19 @@ pub fn step_picture(
     Ok(above(&picture, &chart))
 }
 
+/// The legend of step `k`'s drawings that its picture leaves to the page or slide around it
+/// (drawn there at their own size, clear of the subject): the lighting vectors' names, when
+/// the step's inspected pixel draws them.
+#[must_use]
+pub fn legend(lesson: &Lesson, k: usize, capture: &FrameCapture, lang: Lang) -> Vec<String> {
+    let (w, h) = (capture.width(), capture.height());
+    lesson.steps[k]
+        .pixel
+        .filter(|&(x, y)| x < w && y < h && !capture.lighting_arrows(x, y).is_empty())
+        .map(|_| lighting_legend(lang).map(str::to_owned).to_vec())
+        .unwrap_or_default()
+}
+
 /// The size of a geometry stage's picture.
 const SPACE_PICTURE: (u32, u32) = (800, 600);
 
@@ -376,9 +389,6 @@ fn buffer_with_shapes(
         let [r, g, b, _] = a.color;
         text::draw(&mut img, at[0] - 5.0, at[1] + 7.0, 20.0, [r, g, b], a.name);
     }
-    if !arrows.is_empty() {
-        legend(&mut img, &lighting_legend(lang));
-    }
     for l in &capture.labels {
         centred_label(&mut img, l.image[0] * z, l.image[1] * z, &l.text);
     }
@@ -440,28 +450,6 @@ fn sample_dots(capture: &FrameCapture, zoom: f32) -> Vec<Shape> {
         }
     }
     dots
-}
-
-/// Lines of text on a dark box at the top-left.
-fn legend(img: &mut RgbaImage, lines: &[&str]) {
-    let size = 17.0;
-    let w = lines
-        .iter()
-        .map(|l| text::width(l, size))
-        .fold(0.0, f32::max) as u32
-        + 16;
-    let h = lines.len() as u32 * 24 + 10;
-    darken(img, 8, 8, w, h);
-    for (i, l) in lines.iter().enumerate() {
-        text::draw(
-            img,
-            16.0,
-            8.0 + 24.0 * (i as f32 + 1.0),
-            size,
-            [255, 255, 255],
-            l,
-        );
-    }
 }
 
 /// Darkens a rectangle to 30 % (a box behind words over a picture).

@@ -74,12 +74,17 @@ impl Script {
 
 /// The font that has `c`, and its glyph.
 fn glyph_of(fonts: &[FontRef<'static>], c: char) -> (usize, ab_glyph::GlyphId) {
-    fonts
+    glyph_in(fonts, [0, 1, 2], c)
+}
+
+/// The first font in `order` (indices into `fonts`) that has `c`, and its glyph; the first
+/// font's `.notdef` when none has it.
+fn glyph_in(fonts: &[FontRef<'static>], order: [usize; 3], c: char) -> (usize, ab_glyph::GlyphId) {
+    order
         .iter()
-        .enumerate()
-        .map(|(i, f)| (i, f.glyph_id(c)))
+        .map(|&i| (i, fonts[i].glyph_id(c)))
         .find(|(_, g)| g.0 != 0)
-        .unwrap_or((0, fonts[0].glyph_id(c)))
+        .unwrap_or((order[0], fonts[order[0]].glyph_id(c)))
 }
 
 /// Whether the embedded fonts have a glyph for `c` (whitespace needs none).
@@ -91,10 +96,22 @@ pub fn covers(c: char) -> bool {
 /// The width of `text` at `size` pixels.
 #[must_use]
 pub fn width(text: &str, size: f32) -> f32 {
+    width_in(text, size, [0, 1, 2])
+}
+
+/// The width of source code at `size` pixels, as [`draw_code`] draws it.
+#[must_use]
+pub fn code_width(text: &str, size: f32) -> f32 {
+    width_in(text, size, [1, 0, 2])
+}
+
+/// The width of `text` at `size` pixels, each character from the first font of `order` that
+/// has it.
+fn width_in(text: &str, size: f32, order: [usize; 3]) -> f32 {
     let fonts = fonts();
     text.chars()
         .map(|c| {
-            let (f, g) = glyph_of(fonts, c);
+            let (f, g) = glyph_in(fonts, order, c);
             fonts[f].as_scaled(PxScale::from(size)).h_advance(g)
         })
         .sum()
@@ -102,11 +119,36 @@ pub fn width(text: &str, size: f32) -> f32 {
 
 /// Draws `text` with its baseline at `y`, starting at `x`; returns the x after it.
 pub fn draw(img: &mut RgbaImage, x: f32, y: f32, size: f32, color: [u8; 3], text: &str) -> f32 {
+    draw_in(img, (x, y, size), color, text, [0, 1, 2])
+}
+
+/// Draws source code as [`draw`] draws text, in the monospace font (Hack) where it has the
+/// glyph, so columns line up; returns the x after it.
+pub fn draw_code(
+    img: &mut RgbaImage,
+    x: f32,
+    y: f32,
+    size: f32,
+    color: [u8; 3],
+    text: &str,
+) -> f32 {
+    draw_in(img, (x, y, size), color, text, [1, 0, 2])
+}
+
+/// Draws `text` at `(x, baseline y, size)` with each character from the first font of `order`
+/// that has it.
+fn draw_in(
+    img: &mut RgbaImage,
+    (x, y, size): (f32, f32, f32),
+    color: [u8; 3],
+    text: &str,
+    order: [usize; 3],
+) -> f32 {
     let fonts = fonts();
     let scale = PxScale::from(size);
     let mut pen = x;
     for c in text.chars() {
-        let (f, id) = glyph_of(fonts, c);
+        let (f, id) = glyph_in(fonts, order, c);
         let font = &fonts[f];
         let glyph = id.with_scale_and_position(scale, ab_glyph::point(pen, y));
         pen += font.as_scaled(scale).h_advance(id);

@@ -536,3 +536,75 @@ fn a_shader_step_prints_its_code_with_its_edit_marked() {
         "the lab's TODO is marked"
     );
 }
+
+/// Pixels of `img` of exactly `rgb`.
+fn exactly(img: &RgbaImage, rgb: [u8; 3]) -> usize {
+    img.pixels().filter(|p| p.0[..3] == rgb).count()
+}
+
+/// A shader step's slide shows the code it is about beside its picture: the debugger's step its
+/// run with the branch marked, a lab its starter's TODO (marked) under the words, and the
+/// lighting legend at the slide's size in the words' column, not over the picture (the
+/// picture's top-left keeps the scene's background); a step with no code has no panel.
+#[test]
+fn a_shader_slide_shows_its_code_beside_the_picture() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let slide = |lesson: &str, step: &str| {
+        let out = dir.path().join(format!("{lesson}-{step}"));
+        let path = crate::support::repo().join(format!("lessons/{lesson}.toml"));
+        let o = pipelens(
+            dir.path(),
+            &[
+                "export",
+                path.to_str().expect("utf-8"),
+                "--out",
+                out.to_str().expect("utf-8"),
+                "--slides",
+                "--step",
+                step,
+            ],
+        );
+        assert!(o.status.success(), "{}", text(&o));
+        let n: usize = step.parse().expect("a number");
+        image::open(out.join(format!("slides/step-{n:02}.png")))
+            .expect("the slide")
+            .to_rgba8()
+    };
+    // The panel's ground and a marked row's (slides.rs), from their own constants.
+    let (ground, marked) = ([34, 37, 43], [70, 62, 36]);
+    for (step, what) in [("7", "the debugger's run"), ("9", "the lab's starter")] {
+        let s = slide("24-shader-programs", step);
+        assert!(
+            exactly(&s, ground) > 20_000,
+            "step {step}: no panel for {what}"
+        );
+        assert!(
+            exactly(&s, marked) > 5_000,
+            "step {step}: nothing marked in {what}"
+        );
+        // The code is in the right-hand column, beside the picture (which ends near x = 1208).
+        let left_of_column = (0..1080)
+            .flat_map(|y| (0..1200).map(move |x| (x, y)))
+            .filter(|&(x, y)| s.get_pixel(x, y).0[..3] == ground)
+            .count();
+        assert_eq!(
+            left_of_column, 0,
+            "step {step}: the panel covers the picture"
+        );
+    }
+    let debugger = slide("24-shader-programs", "7");
+    // The picture's top-left (slide 48..400 × 130..230) is the scene's dark ground: no legend
+    // box magnified over it.
+    let bright = (130..230)
+        .flat_map(|y| (48..400).map(move |x| (x, y)))
+        .filter(|&(x, y)| debugger.get_pixel(x, y).0[..3].iter().any(|&c| c > 120))
+        .count();
+    assert_eq!(bright, 0, "the legend is drawn over the picture");
+    // (A few of its picture's pixels may have the panel's colour by chance; a panel has
+    // tens of thousands.)
+    let plain = slide("04-orthographic", "1");
+    assert!(
+        exactly(&plain, ground) < 1_000,
+        "a step with no code has a code panel"
+    );
+}
