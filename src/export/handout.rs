@@ -11,6 +11,7 @@ use pipeline::scene::StudentCode;
 use pipeline::transform::NamedMatrix;
 
 use crate::lesson::Lesson;
+use crate::vocabulary::glsl::localize;
 use crate::vocabulary::notation::{self, Node};
 use crate::vocabulary::{Lang, Stage, num};
 
@@ -369,7 +370,7 @@ fn step_html(
         h.push_str(&trace_html(*pixel, fragments, lang));
     }
     if let Some(e) = &step.exercise {
-        h.push_str(&exercise_html(e, lang));
+        h.push_str(&exercise_html(e, &lesson.comments, lang));
     }
     if let Some(q) = &step.question {
         h.push_str(&question_html(step, q, lang, answers));
@@ -435,7 +436,7 @@ fn shaders_html(lesson: &Lesson, k: usize, code: &StudentCode, lang: Lang) -> St
         let _ = write!(
             h,
             "<p class=\"listing\"><code>{file}</code></p>{}",
-            super::listing::html(source, &marked)
+            super::listing::html(&localize(source, lang, &lesson.comments), &marked)
         );
     }
     h
@@ -503,7 +504,11 @@ fn trace_html((x, y): (u32, u32), fragments: &[FragmentTrace], lang: Lang) -> St
 
 /// An exercise on paper: the task, and the starter code the student completes (the stages the
 /// lesson wrote; pipelens' own are not repeated), its TODO lines on yellow.
-fn exercise_html(e: &crate::lesson::answer::Exercise, lang: Lang) -> String {
+fn exercise_html(
+    e: &crate::lesson::answer::Exercise,
+    comments: &std::collections::BTreeMap<String, String>,
+    lang: Lang,
+) -> String {
     let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
     let mut h = format!(
         "<div class=\"question exercise\"><b class=\"ui\">{}</b> {}",
@@ -514,7 +519,7 @@ fn exercise_html(e: &crate::lesson::answer::Exercise, lang: Lang) -> String {
         let _ = write!(
             h,
             "<p class=\"listing\"><code>{file}</code></p>{}",
-            super::listing::html(source, &todo)
+            super::listing::html(&localize(source, lang, comments), &todo)
         );
     }
     h.push_str("</div>\n");

@@ -232,6 +232,7 @@ fn slide_extras(
 ) -> super::slides::Extras {
     use super::listing::{focus, starter_todos, step_edits};
     let step = &lesson.steps[k];
+    let local = |source: &str| crate::vocabulary::glsl::localize(source, lang, &lesson.comments);
     let mut extras = super::slides::Extras {
         legend,
         ..Default::default()
@@ -246,7 +247,7 @@ fn slide_extras(
         extras.code = starter_todos(&e.starter)
             .into_iter()
             .find(|(.., todo)| !todo.is_empty())
-            .map(|(file, source, todo)| (file, focus(source, &todo, 3, 10)));
+            .map(|(file, source, todo)| (file, focus(&local(source), &todo, 3, 10)));
         return extras;
     }
     let run = capture
@@ -283,6 +284,7 @@ fn slide_extras(
                 .into_iter()
                 .next()
                 .map(|(file, source, marked)| {
+                    let source = &local(source);
                     let rows = if marked.is_empty() {
                         let main = source.lines().position(|l| l.starts_with("void main"));
                         focus(source, &main.map(|m| vec![m + 1]).unwrap_or_default(), 0, 1)

@@ -222,7 +222,7 @@ fn scene_sources(scene: &Scene) -> Vec<(String, &str)> {
 }
 
 /// Whether the student's vertex and fragment shaders are theirs to write: the starter says
-/// TODO there, or the student's source differs from the starter's (a stage the starter does not
+/// TODO there, or the student's code differs from the starter's (comments aside) (a stage the starter does not
 /// give is the student's when they wrote one).
 fn changed_stages(scene: &Scene, starter: &pipeline::scene::StudentCode) -> (bool, bool) {
     let Some(mine) = scene.objects.iter().find_map(|o| o.shader.as_ref()) else {
@@ -232,9 +232,11 @@ fn changed_stages(scene: &Scene, starter: &pipeline::scene::StudentCode) -> (boo
         return (true, true);
     };
     let (m, g) = (&mine.programs, &given.programs);
+    // The starter's code under comments in another language is still the starter.
+    let changed = |a: &str, b: &str| !pipeline::shader::lexeme::same_code(a, b);
     (
-        g.vertex.source.contains("TODO") || m.vertex.source != g.vertex.source,
-        g.fragment.source.contains("TODO") || m.fragment.source != g.fragment.source,
+        g.vertex.source.contains("TODO") || changed(&m.vertex.source, &g.vertex.source),
+        g.fragment.source.contains("TODO") || changed(&m.fragment.source, &g.fragment.source),
     )
 }
 

@@ -85,7 +85,10 @@ pub fn find(
         return None;
     }
     for (file, text) in sources {
-        if starter.iter().any(|(f, t)| f == file && t == text) {
+        if starter
+            .iter()
+            .any(|(f, t)| f == file && pipeline::shader::lexeme::same_code(t, text))
+        {
             continue;
         }
         let tokens = tokens(text);

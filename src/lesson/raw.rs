@@ -336,6 +336,17 @@ pub struct RawLessonFile {
     pub scene: Spanned<RawScene>,
     #[serde(default)]
     pub steps: Vec<Spanned<RawStep>>,
+    /// `[comments.zh]`: the Chinese of the comments of the lesson's GLSL, by their English.
+    #[serde(default)]
+    pub comments: RawComments,
+}
+
+/// `[comments]`: a lesson's GLSL comments in another language, `zh = { "English" = "中文" }`.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawComments {
+    #[serde(default)]
+    pub zh: std::collections::BTreeMap<String, String>,
 }
 
 /// `[lesson]`: what the lesson is called and what it needs first.

@@ -143,6 +143,8 @@ pub struct Lesson {
     pub steps: Vec<Step>,
     /// What loads but is probably a mistake (an `id` that differs from the file's name).
     pub warnings: Vec<super::Diagnostic>,
+    /// The Chinese of the comments of its GLSL, by their English (`[comments.zh]`).
+    pub comments: std::collections::BTreeMap<String, String>,
 }
 
 impl Lesson {
@@ -290,6 +292,7 @@ pub fn parse_lesson(text: &str, file: &str, base: &Path) -> Result<Lesson, Diagn
     }
     Ok(Lesson {
         warnings,
+        comments: raw.comments.zh,
         id,
         title,
         summary,

@@ -8,6 +8,7 @@ mod comparison;
 pub mod compile;
 mod explain;
 mod formulas;
+pub mod glsl;
 mod lang;
 mod names;
 pub mod notation;

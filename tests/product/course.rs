@@ -133,3 +133,46 @@ fn texts(lesson: &pipelens::lesson::Lesson) -> Vec<&pipelens::vocabulary::Text> 
     }
     texts
 }
+
+/// Every comment of the GLSL a lesson shows — a step's shaders and a lab's starter — reads in
+/// Chinese in the Chinese interface: each has its Chinese in the lesson's `[comments.zh]` or in
+/// pipelens' own table; and each entry of `[comments.zh]` is a comment the lesson has (none
+/// left over from an edit).
+#[test]
+fn every_glsl_comment_a_lesson_shows_has_its_chinese() {
+    use pipelens::vocabulary::glsl::untranslated;
+    let mut faults = Vec::new();
+    for path in lesson_files() {
+        let Document::Lesson(lesson) = load_file(&path).unwrap_or_else(|e| panic!("{e}")) else {
+            panic!("{} is not a lesson", path.display());
+        };
+        let name = &lesson.id;
+        let mut sources: Vec<String> = Vec::new();
+        for step in &lesson.steps {
+            let codes = step
+                .shader
+                .iter()
+                .chain(step.exercise.as_ref().map(|e| &e.starter));
+            for code in codes {
+                sources.extend(
+                    pipelens::lesson::forbid::sources(code)
+                        .into_iter()
+                        .map(|(_, s)| s.to_owned()),
+                );
+            }
+        }
+        for source in &sources {
+            for words in untranslated(source, &lesson.comments) {
+                faults.push(format!("{name}: no Chinese for {words:?}"));
+            }
+        }
+        for english in lesson.comments.keys() {
+            if !sources.iter().any(|s| s.contains(english.as_str())) {
+                faults.push(format!(
+                    "{name}: [comments.zh] has {english:?}, in no comment"
+                ));
+            }
+        }
+    }
+    assert!(faults.is_empty(), "{}", faults.join("\n"));
+}

@@ -5,6 +5,7 @@
 use std::sync::Arc;
 
 use pipelens::lesson::Document;
+use pipelens::vocabulary::Lang;
 use pipeline::scene::ObjectShader;
 
 use crate::support::lesson_files;
@@ -537,4 +538,53 @@ fn the_shader_panel_opens_on_the_stage_the_step_is_about() {
             .unwrap_or_default();
         assert!(source.contains(shown), "{title}: the panel shows {source}");
     }
+}
+
+/// In the Chinese interface the shader panel shows a lab's starter with its comments in
+/// Chinese (the code as it was), and the starter so shown is still the starter: the lab's
+/// check compares the same stages and finds the same first value as in English.
+#[test]
+fn a_lab_s_starter_reads_in_chinese_and_is_still_the_starter() {
+    use egui_kittest::kittest::Queryable;
+    use pipelens::app::session::Command;
+    let path = crate::support::repo().join("lessons/24-shader-programs.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    h.state_mut().panels.shader = true;
+    h.state_mut().session.apply(Command::SetLang(Lang::Zh));
+    crate::app::go_to_step_titled(&mut h, "Lab: Gouraud shading in the vertex shader");
+    h.run_steps(4);
+    let source = h
+        .get_by_role(egui::accesskit::Role::MultilineTextInput)
+        .value()
+        .unwrap_or_default();
+    assert!(
+        source.contains("// TODO：把这个顶点的漫反射项加到 lit 上"),
+        "the TODO in Chinese: {source}"
+    );
+    assert!(
+        source.contains("vec3 lit = ka * c * ambient_light;"),
+        "the code as it was"
+    );
+    // Applied as shown (one space typed and taken back), the lab says what it said before.
+    let lesson = crate::app::lesson_of(&h);
+    let k = crate::app::step_of(&h);
+    let hand_in = |text: &str| {
+        let mut code = pipelens::lab::submission::Code::default();
+        code.take("shader.vert", text.to_owned());
+        pipelens::lab::submission::grade(&lesson, k, &code, Lang::En).sentences
+    };
+    let english = lesson.steps[k]
+        .exercise
+        .as_ref()
+        .and_then(|e| e.starter.shader.as_ref())
+        .map(|s| s.programs.vertex.source.clone())
+        .expect("a vertex starter");
+    assert_eq!(hand_in(&source), hand_in(&english));
+    assert!(
+        hand_in(&source)
+            .join(" ")
+            .contains("your vertex shader's `lit`"),
+        "{:?}",
+        hand_in(&source)
+    );
 }

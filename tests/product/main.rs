@@ -23,5 +23,6 @@ mod observer;
 mod record;
 mod reference;
 mod scene_file;
+mod shader_handout;
 mod shader_lesson;
 mod support;

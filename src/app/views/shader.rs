@@ -59,10 +59,12 @@ pub struct HookEdit {
 }
 
 impl HookEdit {
-    fn new(kind: HookKind, source: String) -> Self {
+    /// The function `kind` as the scene runs it (`running`), shown as `source` (its comments
+    /// in the interface's language).
+    fn new(kind: HookKind, running: &str, source: String) -> Self {
         Self {
             kind,
-            shown: source.clone(),
+            shown: running.to_owned(),
             source,
             errors: Vec::new(),
         }
@@ -126,7 +128,7 @@ impl ShaderEditor {
         match self.hooks.iter_mut().find(|h| h.kind == kind) {
             Some(h) => h.source = source,
             None => {
-                let mut h = HookEdit::new(kind, source);
+                let mut h = HookEdit::new(kind, &source, source.clone());
                 // Not yet what the scene runs: `load` must not take it back.
                 h.shown = String::new();
                 self.hooks.push(h);
@@ -135,9 +137,16 @@ impl ShaderEditor {
         }
     }
 
-    /// Takes the scene's own code (its first object's) when it is not the code shown.
+    /// Takes the scene's own code (its first object's) when it is not the code shown, its
+    /// comments in the interface's language.
     pub(crate) fn load(&mut self, session: &Session) {
         let objects = &session.spec.scene.objects;
+        let none = std::collections::BTreeMap::new();
+        let table = session
+            .lesson
+            .as_ref()
+            .map_or(&none, |p| &p.lesson.comments);
+        let local = |source: &str| crate::vocabulary::glsl::localize(source, session.lang, table);
         for kind in HookKind::ALL {
             let running = session.spec.scene.hook(kind).map(|h| h.source.clone());
             let at = self.hooks.iter().position(|h| h.kind == kind);
@@ -150,11 +159,12 @@ impl ShaderEditor {
                     }
                 }
                 (Some(source), Some(k)) if self.hooks[k].shown != source => {
-                    self.hooks[k] = HookEdit::new(kind, source);
+                    self.hooks[k] = HookEdit::new(kind, &source, local(&source));
                     self.tab = Tab::Hook(kind);
                 }
                 (Some(source), None) => {
-                    self.hooks.push(HookEdit::new(kind, source));
+                    self.hooks
+                        .push(HookEdit::new(kind, &source, local(&source)));
                     self.hooks.sort_by_key(|h| h.kind as u8);
                     self.tab = Tab::Hook(kind);
                 }
@@ -175,8 +185,8 @@ impl ShaderEditor {
         {
             return;
         }
-        self.vertex.clone_from(&sh.programs.vertex.source);
-        self.fragment.clone_from(&sh.programs.fragment.source);
+        self.vertex = local(&sh.programs.vertex.source);
+        self.fragment = local(&sh.programs.fragment.source);
         self.errors.clear();
         self.shaders_in_use = true;
         // Open on the stage the step wrote: a vertex shader of its own beside pipelens'
@@ -234,8 +244,10 @@ pub fn ui(
             let (vertex, fragment) = subject
                 .and_then(|o| shader::builtin_sources(s.shading, s.reflection, o.surface()))
                 .unwrap_or((BUILTIN_VERTEX, BUILTIN_FRAGMENT));
-            editor.vertex = vertex.to_owned();
-            editor.fragment = fragment.to_owned();
+            let none = std::collections::BTreeMap::new();
+            let local = |s| crate::vocabulary::glsl::localize(s, session.lang, &none);
+            editor.vertex = local(vertex);
+            editor.fragment = local(fragment);
             editor.shaders_in_use = true;
             apply = true;
         }

@@ -81,6 +81,41 @@ pub fn lex(src: &str) -> Vec<Lexeme> {
     out
 }
 
+/// Whether `a` and `b` are the same code: the same lexemes but for comments and spacing (a
+/// starter shown with its comments in another language is still the starter).
+#[must_use]
+pub fn same_code(a: &str, b: &str) -> bool {
+    let code = |src: &str| -> Vec<String> {
+        lex(src)
+            .into_iter()
+            .filter(|l| !matches!(l.kind, Kind::Comment | Kind::Space))
+            .map(|l| src[l.span].to_owned())
+            .collect()
+    };
+    code(a) == code(b)
+}
+
+/// `src` with each `//` comment whose words `words` gives other words for rewritten: the
+/// comment's words are its text after `//` and its leading spaces, trimmed; the spaces stay, so
+/// a comment's indent under the one above it is kept. The code and the line count are unchanged.
+#[must_use]
+pub fn map_comments(src: &str, words: impl Fn(&str) -> Option<String>) -> String {
+    let mut out = String::with_capacity(src.len());
+    for l in lex(src) {
+        let text = &src[l.span];
+        let body = text.strip_prefix("//").filter(|_| l.kind == Kind::Comment);
+        let other = body.and_then(|b| {
+            let trimmed = b.trim();
+            let lead = &b[..b.len() - b.trim_start().len()];
+            words(trimmed)
+                .filter(|w| !w.contains('\n'))
+                .map(|w| format!("//{lead}{w}"))
+        });
+        out.push_str(other.as_deref().unwrap_or(text));
+    }
+    out
+}
+
 /// Where the number starting at `i` ends: digits, a point, letters (a suffix, hex digits, an
 /// exponent's `e`) and an exponent's sign.
 fn number_end(bytes: &[u8], mut i: usize) -> usize {
@@ -134,6 +169,22 @@ mod tests {
                 (";", Kind::Punctuation, 4),
             ]
         );
+    }
+
+    /// A comment's words are replaced where another text is given, its indent kept; the code
+    /// is untouched and the same code is recognised under either comments.
+    #[test]
+    fn comments_are_rewritten_and_the_code_is_the_same() {
+        let src = "// one\n//   two, indented\nfloat x = 1.0; // three\n// four\n";
+        let other = map_comments(src, |w| match w {
+            "one" => Some("一".to_owned()),
+            "two, indented" => Some("二".to_owned()),
+            "three" => Some("三".to_owned()),
+            _ => None,
+        });
+        assert_eq!(other, "// 一\n//   二\nfloat x = 1.0; // 三\n// four\n");
+        assert!(same_code(src, &other));
+        assert!(!same_code(src, "float x = 2.0;"));
     }
 
     /// `#` is a directive only at the start of a line; `a.x` is a word, a point and a word;
