@@ -372,7 +372,11 @@ impl Session {
         got
     }
 
-    fn receive(&mut self, generation: u64, result: Result<Rendered, String>) -> bool {
+    fn receive(
+        &mut self,
+        generation: u64,
+        result: Result<Rendered, pipeline::RenderError>,
+    ) -> bool {
         if generation < self.shown_generation {
             return false;
         }
@@ -401,7 +405,7 @@ impl Session {
                     self.selection.pixel = None;
                 }
             }
-            Err(e) => self.error = Some(e),
+            Err(e) => self.error = Some(crate::vocabulary::run::render_error(&e, self.lang)),
         }
         true
     }

@@ -63,7 +63,7 @@ pub struct Done {
     /// The job's generation.
     pub generation: u64,
     /// The captures, or why the scene cannot be rendered.
-    pub result: Result<Rendered, String>,
+    pub result: Result<Rendered, pipeline::RenderError>,
 }
 
 /// Captures no longer shown, whose storage the next renders write into (a capture is tens of
@@ -107,7 +107,6 @@ impl Job {
     pub fn run(self, spares: &mut Spares) -> Done {
         let result =
             pipeline::render_reusing(&self.spec.scene, &self.spec.settings, spares.capture.take())
-                .map_err(|e| e.to_string())
                 .map(|(capture, times)| {
                     let observer = self.observer.and_then(|(camera, aspect)| {
                         let draft;

@@ -306,7 +306,7 @@ pub fn reference_scene(scene: &Scene, settings: &RenderSettings) -> Scene {
 /// # Errors
 /// Either frame's render error (a run-time error of the student's shader: an endless loop, an
 /// index out of range), worded as the status line words it.
-pub fn check(spec: &SceneSpec, exercise: &Exercise) -> Result<Findings, String> {
+pub fn check(spec: &SceneSpec, exercise: &Exercise) -> Result<Findings, pipeline::RenderError> {
     let (tolerance, rules) = (exercise.tolerance, Rules::of(exercise));
     let reference = reference_scene(&spec.scene, &spec.settings);
     let draw = |scene: &Scene, pixel: Option<(u32, u32)>| {
@@ -314,7 +314,7 @@ pub fn check(spec: &SceneSpec, exercise: &Exercise) -> Result<Findings, String> 
             capture: Capture::COLOR.with_pixel(pixel),
             ..spec.settings
         };
-        pipeline::render(scene, &settings).map_err(|e| e.to_string())
+        pipeline::render(scene, &settings)
     };
     let (mine, theirs) = (draw(&spec.scene, None)?, draw(&reference, None)?);
     let findings = Findings::between(&spec.scene, (&mine, &theirs), tolerance, rules);

@@ -128,7 +128,10 @@ pub fn grade(lesson: &Lesson, k: usize, code: &Code, lang: Lang) -> Grade {
         },
         Err(e) => Grade::failed(match lang {
             Lang::En => format!("It compiles, but its run stopped: {e}"),
-            Lang::Zh => format!("可以编译，但运行中止：{e}"),
+            Lang::Zh => format!(
+                "可以编译，但运行中止：{}",
+                crate::vocabulary::run::render_error(&e, lang)
+            ),
         }),
     }
 }

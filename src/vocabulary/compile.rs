@@ -149,7 +149,7 @@ fn form(c: &Complaint, lang: Lang) -> Option<String> {
             format!("pipelens does not run this form of GLSL yet ({what})"),
             format!("pipelens 还不能运行这种 GLSL 写法（{what}）"),
         ),
-        _ => return own(c, lang),
+        _ => return own(c, lang).or_else(|| super::run::fault(c, lang)),
     })
 }
 

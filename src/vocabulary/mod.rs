@@ -14,6 +14,7 @@ mod names;
 pub mod notation;
 mod numbers;
 pub mod profile;
+pub mod run;
 mod stage;
 pub mod trace;
 

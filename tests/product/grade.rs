@@ -329,3 +329,52 @@ fn bench_grade_times_a_class() {
     assert!(stdout.contains("graded 5 in"), "{stdout}");
     assert!(stdout.contains(", 2 passed"), "{stdout}");
 }
+
+/// A hand-in whose run stops is told so in the grader's language: in Chinese, the loop's line,
+/// the object and the endless loop in Chinese, and none of the core's English.
+#[test]
+fn a_run_that_stops_is_said_in_chinese() {
+    use pipelens::lesson::Document;
+    use pipelens::vocabulary::Lang;
+    let path = crate::support::repo().join("lessons/24-shader-programs.toml");
+    let Ok(Document::Lesson(lesson)) = pipelens::lesson::load_file(&path) else {
+        panic!("lesson 24 loads");
+    };
+    let k = lesson
+        .steps
+        .iter()
+        .position(|s| s.title.en == "Lab: the diffuse term")
+        .expect("the diffuse lab");
+    let starter = lesson.steps[k]
+        .exercise
+        .as_ref()
+        .and_then(|e| e.starter.shader.as_ref())
+        .map(|s| s.programs.fragment.source.clone())
+        .expect("a fragment starter");
+    let todo = "    // TODO: the diffuse term k_d·c·I·max(n·l, 0), added to L.";
+    assert!(starter.contains(todo));
+    // The loop is on the TODO's line (29), the first line of the replacement.
+    let endless = starter.replace(todo, "    float d = 0.0; while (d < 1.0) { d *= 2.0; }");
+    let mut code = pipelens::lab::submission::Code::default();
+    code.take("shader.frag", endless);
+    let zh = pipelens::lab::submission::grade(&lesson, k, &code, Lang::Zh);
+    assert!(!zh.passed);
+    let said = zh.sentences.join(" ");
+    for words in [
+        "运行中止",
+        "物体 sphere 的片元着色器",
+        "第 29 行",
+        "循环执行超过了",
+    ] {
+        assert!(said.contains(words), "{said:?} lacks {words:?}");
+    }
+    for english in ["the scene", "loop ran", "shader of", "line "] {
+        assert!(!said.contains(english), "English {english:?} in {said:?}");
+    }
+    let en = pipelens::lab::submission::grade(&lesson, k, &code, Lang::En);
+    assert!(
+        en.sentences.join(" ").contains("an endless loop?"),
+        "{:?}",
+        en.sentences
+    );
+}

@@ -42,4 +42,6 @@ pub mod texture;
 pub mod transform;
 pub mod vertex;
 
-pub use render::{RenderError, StageTimes, render, render_reusing, render_timed, trace_vertex};
+pub use render::{
+    CodePart, RenderError, StageTimes, render, render_reusing, render_timed, trace_vertex,
+};

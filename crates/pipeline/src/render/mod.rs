@@ -40,6 +40,42 @@ pub enum RenderError {
     /// The scene or the settings are invalid; each problem as a sentence.
     #[error("the scene cannot be drawn: {}", .0.join("; "))]
     Invalid(Vec<String>),
+    /// The student's code stopped while it ran on an object (an endless loop, an index out of
+    /// range, …): which code, the object, and the message at its line (its complaint as data,
+    /// for the interface to say in its language).
+    #[error("the scene cannot be drawn: {} of {object}, {error}", part.name())]
+    Code {
+        /// Which code.
+        part: CodePart,
+        /// The object it ran on.
+        object: String,
+        /// What stopped it, where (boxed: a frame's `Result` stays small).
+        error: Box<crate::shader::ShaderError>,
+    },
+}
+
+/// Which of the student's code a [`RenderError::Code`] is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CodePart {
+    /// A vertex or fragment shader.
+    Shader(crate::shader::Stage),
+    /// The rasterizer's `inside()`.
+    Inside,
+    /// The depth test's `depth_test()`.
+    DepthTest,
+}
+
+impl CodePart {
+    /// Its name in English: `fragment shader`, `inside test`, `depth test`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Shader(crate::shader::Stage::Vertex) => "vertex shader",
+            Self::Shader(crate::shader::Stage::Fragment) => "fragment shader",
+            Self::Inside => "inside test",
+            Self::DepthTest => "depth test",
+        }
+    }
 }
 
 /// Wall-clock time spent in each stage of one frame.
@@ -372,8 +408,10 @@ fn rasterize_with_hooks(
     samples: &mut SampleBuffers,
 ) -> Result<Vec<RasterCounts>, RenderError> {
     let pixels = |v: i64| (v as f64 / crate::raster::ONE as f64) as f32;
-    let failed = |what: &str, object: &crate::scene::Object, e: crate::shader::ShaderError| {
-        RenderError::Invalid(vec![format!("{what} of {}, {e}", object.name)])
+    let failed = |part: CodePart, object: &crate::scene::Object, error| RenderError::Code {
+        part,
+        object: object.name.clone(),
+        error: Box::new(error),
     };
     let mut counts = Vec::with_capacity(triangles.len());
     for (i, tri) in triangles.iter().enumerate() {
@@ -396,7 +434,7 @@ fn rasterize_with_hooks(
                     [pixels(f.x), pixels(f.y)]
                 });
                 let answers = test.covers(&points, corners);
-                Some(answers.map_err(|e| failed("inside test", object, e))?)
+                Some(answers.map_err(|e| failed(CodePart::Inside, object, e))?)
             }
             None => None,
         };
@@ -410,7 +448,7 @@ fn rasterize_with_hooks(
         let stored: Vec<f32> = covered.iter().map(|&(s, _)| samples.depth[s]).collect();
         let passes = test
             .passes(&z, &stored)
-            .map_err(|e| failed("depth test", object, e))?;
+            .map_err(|e| failed(CodePart::DepthTest, object, e))?;
         counts.push(samples.write_samples(&covered, &passes, i as u32));
     }
     Ok(counts)

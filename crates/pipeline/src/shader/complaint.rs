@@ -123,6 +123,34 @@ pub enum Complaint {
     /// A pipeline function (`inside`, `depth_test`, …) not defined with the signature pipelens
     /// calls.
     HookSignature(String),
+    /// At run time: a loop ran more than the budget's steps (an endless loop?).
+    EndlessLoop {
+        /// The budget, in steps.
+        budget: u32,
+    },
+    /// At run time: an index outside an array.
+    IndexOutOfRange {
+        /// The index.
+        index: i64,
+        /// The last index there is.
+        last: u32,
+        /// The array, where it has a name.
+        name: Option<String>,
+    },
+    /// At run time: a `texelFetch` outside its texture's level.
+    TexelOutside {
+        /// The texel's column.
+        i: i32,
+        /// Its row.
+        j: i32,
+        /// The level.
+        level: i32,
+    },
+    /// At run time: an integer divided by zero (`%`: its remainder).
+    DivisionByZero {
+        /// Whether it was `%`.
+        remainder: bool,
+    },
     /// Anything else: the English message says it.
     #[default]
     Other,

@@ -373,7 +373,10 @@ impl Program {
     /// A [`RunError`] as a message at its line.
     #[must_use]
     pub fn run_error(&self, e: &RunError) -> ShaderError {
-        error_at(&self.source, e.at..e.at, e.message.clone())
+        ShaderError {
+            complaint: e.complaint.clone(),
+            ..error_at(&self.source, e.at..e.at, e.message.clone())
+        }
     }
 
     /// A message at the declaration of `name` (or at `main` when it has none).

@@ -150,11 +150,11 @@ fn textures<'a>(
 }
 
 fn shader_error(stage: shader::Stage, object: &Object, e: &shader::ShaderError) -> RenderError {
-    RenderError::Invalid(vec![format!(
-        "{} shader of {}, {e}",
-        stage.name(),
-        object.name
-    )])
+    RenderError::Code {
+        part: super::CodePart::Shader(stage),
+        object: object.name.clone(),
+        error: Box::new(e.clone()),
+    }
 }
 
 /// Runs each object's vertex shader over its mesh's vertices, 64 a batch, from the mesh's own

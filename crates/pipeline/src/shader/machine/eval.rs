@@ -9,6 +9,7 @@ use naga::{RelationalFunction, UnaryOperator};
 use super::super::code::{Function, Kind, Level, Op, Place, Reg, Root, Shape};
 use super::super::ops;
 use super::{Bindings, LANES, Machine, Res, RunError, bit, masked_copy};
+use crate::shader::Complaint;
 
 impl Machine<'_> {
     pub(super) fn store(
@@ -84,7 +85,11 @@ impl Machine<'_> {
         let dst = f.regs[e];
         let n = self.n;
         let at = f.spans[e];
-        let err = |message: String| RunError { at, message };
+        let err = |message: String, complaint: Complaint| RunError {
+            at,
+            message,
+            complaint,
+        };
         match &f.ops[e] {
             Op::None => {}
             Op::Const(v) => {
@@ -179,10 +184,14 @@ impl Machine<'_> {
                             };
                             let i = if i < 0 || i >= i64::from(*count) {
                                 if live & bit(l) != 0 {
-                                    return Err(err(format!(
-                                        "index {i} is out of range (0 to {})",
-                                        count - 1
-                                    )));
+                                    return Err(err(
+                                        format!("index {i} is out of range (0 to {})", count - 1),
+                                        Complaint::IndexOutOfRange {
+                                            index: i,
+                                            last: count - 1,
+                                            name: None,
+                                        },
+                                    ));
                                 }
                                 0
                             } else {
@@ -232,7 +241,10 @@ impl Machine<'_> {
                                         &mut out[k as usize * LANES..][..n],
                                         live,
                                     )
-                                    .map_err(|m| err(m.to_owned()))?;
+                                    .map_err(|m| {
+                                        let remainder = m.contains('%');
+                                        err(m.to_owned(), Complaint::DivisionByZero { remainder })
+                                    })?;
                                 }
                             }
                             // Matrices have at most four rows and columns: each dot
@@ -326,7 +338,7 @@ impl Machine<'_> {
                         rows,
                     } => {
                         ops::math(*fun, *kind, args, *rows, &|r, c| row(r, c), out, dst.n, n)
-                            .map_err(err)?;
+                            .map_err(|m| err(m, Complaint::Other))?;
                     }
                     Op::As {
                         a,
@@ -412,9 +424,12 @@ impl Machine<'_> {
                                     .extend(1.0)
                                 }
                                 Some(_) if live & bit(l) != 0 => {
-                                    return Err(err(format!(
-                                        "texelFetch at ({i}, {j}) level {k} is outside the texture"
-                                    )));
+                                    return Err(err(
+                                        format!(
+                                            "texelFetch at ({i}, {j}) level {k} is outside the texture"
+                                        ),
+                                        Complaint::TexelOutside { i, j, level: k },
+                                    ));
                                 }
                                 _ => glam::Vec4::ZERO,
                             };

@@ -24,8 +24,10 @@ pub const LANES: usize = 64;
 pub struct RunError {
     /// Where (bytes of the student's source).
     pub at: usize,
-    /// What happened, as a sentence.
+    /// What happened, as a sentence (English).
     pub message: String,
+    /// What happened, as data, for the interface to say in its language.
+    pub complaint: crate::shader::Complaint,
 }
 
 /// What the traced lane did at one statement. `at` is always the statement's place in the
@@ -386,6 +388,9 @@ impl<'c> Machine<'c> {
                                             "the loop ran more than {} steps (an endless loop?)",
                                             self.budget
                                         ),
+                                        complaint: crate::shader::Complaint::EndlessLoop {
+                                            budget: self.budget,
+                                        },
                                     });
                                 }
                             }
@@ -546,6 +551,11 @@ impl<'c> Machine<'c> {
                     place.name,
                     count - 1
                 ),
+                complaint: crate::shader::Complaint::IndexOutOfRange {
+                    index: i,
+                    last: count - 1,
+                    name: Some(place.name.clone()),
+                },
             }),
         }
     }
