@@ -195,16 +195,7 @@ fn every_lesson_exports_a_handout() {
             );
             assert!(o.status.success(), "{}", crate::support::text(&o));
             let html = std::fs::read_to_string(out.join("index.html")).expect("index.html");
-            let mut words = String::with_capacity(html.len());
-            let mut in_tag = false;
-            for c in html.chars() {
-                match c {
-                    '<' => in_tag = true,
-                    '>' => in_tag = false,
-                    c if !in_tag => words.push(c),
-                    _ => {}
-                }
-            }
+            let words = crate::support::without_tags(&html);
             for (k, step) in lesson.steps.iter().enumerate() {
                 let title = if lang == "zh" {
                     &step.title.zh

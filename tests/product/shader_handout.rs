@@ -13,17 +13,9 @@ fn marked_rows(section: &str) -> Vec<String> {
         .skip(1)
         .map(|row| {
             let row = &row[..row.find("</tr>").unwrap_or(row.len())];
-            let mut text = String::new();
-            let mut in_tag = false;
-            for c in row.chars() {
-                match c {
-                    '<' => in_tag = true,
-                    '>' => in_tag = false,
-                    c if !in_tag => text.push(c),
-                    _ => {}
-                }
-            }
-            text.replace("&lt;", "<").replace("&gt;", ">")
+            crate::support::without_tags(row)
+                .replace("&lt;", "<")
+                .replace("&gt;", ">")
         })
         .collect()
 }

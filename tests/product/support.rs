@@ -85,3 +85,18 @@ pub fn lesson(id: &str) -> pipelens::lesson::Lesson {
         Err(e) => panic!("{e}"),
     }
 }
+
+/// The text of HTML: its tags left out (entities as written).
+pub fn without_tags(html: &str) -> String {
+    let mut text = String::with_capacity(html.len());
+    let mut in_tag = false;
+    for c in html.chars() {
+        match c {
+            '<' => in_tag = true,
+            '>' => in_tag = false,
+            c if !in_tag => text.push(c),
+            _ => {}
+        }
+    }
+    text
+}
