@@ -20,6 +20,10 @@ pub fn words(line: &TraceLine, lang: Lang) -> String {
         Step::Branch { taken: true } => "if：条件成立 → then".to_owned(),
         Step::Branch { taken: false } => "if：条件不成立 → else".to_owned(),
         Step::Iteration { k } => format!("循环：第 {k} 次迭代"),
+        Step::LoopTest { holds: true } => "循环条件：成立 → 再迭代一次".to_owned(),
+        Step::LoopTest { holds: false } => "循环条件：不成立 → 循环结束".to_owned(),
+        Step::Break => "break：跳出循环".to_owned(),
+        Step::Continue => "continue：进入下一次迭代".to_owned(),
         Step::Call { name } => format!("调用 {name}()"),
         Step::Return {
             name,
@@ -70,6 +74,13 @@ mod tests {
                 Some("0.500"),
             ),
             line(Step::Discard, "discard: the fragment is thrown away", None),
+            line(
+                Step::LoopTest { holds: false },
+                "loop condition: false → the loop ends",
+                None,
+            ),
+            line(Step::Break, "break: the loop ends", None),
+            line(Step::Continue, "continue: on to the next iteration", None),
         ];
         let zh: Vec<String> = lines.iter().map(|l| words(l, Lang::Zh)).collect();
         assert_eq!(
@@ -80,7 +91,10 @@ mod tests {
                 "循环：第 2 次迭代",
                 "调用 f()",
                 "f() 返回 0.500",
-                "discard：丢弃这个片元"
+                "discard：丢弃这个片元",
+                "循环条件：不成立 → 循环结束",
+                "break：跳出循环",
+                "continue：进入下一次迭代"
             ]
         );
         for l in &lines {

@@ -188,12 +188,14 @@ pub enum Stmt {
     Emit(std::ops::Range<u32>),
     /// A nested block.
     Block(Vec<Stmt>),
-    /// `if`.
+    /// `if`; `loop_test` when naga made it for a `for` or `while` condition (`if (!cond)
+    /// break;`): the trace says the loop's condition, not an `if` the student did not write.
     If {
         at: usize,
         c: u32,
         accept: Vec<Stmt>,
         reject: Vec<Stmt>,
+        loop_test: bool,
     },
     /// `switch` on an integer: the cases (None = default), their bodies, and fall-through.
     Switch {
@@ -208,10 +210,10 @@ pub enum Stmt {
         continuing: Vec<Stmt>,
         break_if: Option<u32>,
     },
-    /// `break`.
-    Break,
-    /// `continue`.
-    Continue,
+    /// `break`, at its place (`None`: one naga made for a loop's condition).
+    Break { at: Option<usize> },
+    /// `continue`, at its place.
+    Continue { at: usize },
     /// `return`, with the value's register.
     Return { at: usize, value: Option<Reg> },
     /// `discard`.

@@ -37,6 +37,15 @@ pub enum Step {
         /// Whether its condition held.
         taken: bool,
     },
+    /// A `for` or `while` loop tested its condition.
+    LoopTest {
+        /// Whether it held: another iteration (else the loop ends).
+        holds: bool,
+    },
+    /// A `break` left the loop.
+    Break,
+    /// A `continue` went on to the loop's next iteration.
+    Continue,
     /// A loop began iteration `k` (from 1).
     Iteration {
         /// Which.
@@ -141,6 +150,21 @@ impl Program {
                         *at,
                         format!("if: {taken} → {}", if *taken { "then" } else { "else" }),
                         Step::Branch { taken: *taken },
+                    ),
+                    Event::LoopTest { at, holds } => (
+                        *at,
+                        if *holds {
+                            "loop condition: true → another iteration".to_owned()
+                        } else {
+                            "loop condition: false → the loop ends".to_owned()
+                        },
+                        Step::LoopTest { holds: *holds },
+                    ),
+                    Event::Break { at } => (*at, "break: the loop ends".to_owned(), Step::Break),
+                    Event::Continue { at } => (
+                        *at,
+                        "continue: on to the next iteration".to_owned(),
+                        Step::Continue,
                     ),
                     Event::Iteration { at, k } => (
                         *at,

@@ -479,6 +479,10 @@ impl<'m> Translator<'m> {
                     c: reg(condition).at,
                     accept: self.block(f, fi, accept, func, at)?,
                     reject: self.block(f, fi, reject, func, at)?,
+                    // naga's `if (!cond) break;` for a loop's condition has no place of its own.
+                    loop_test: !span.is_defined()
+                        && reject.is_empty()
+                        && matches!(accept.iter().next(), Some(Statement::Break)),
                 },
                 Statement::Switch {
                     selector,
@@ -509,8 +513,10 @@ impl<'m> Translator<'m> {
                     continuing: self.block(f, fi, continuing, func, at)?,
                     break_if: break_if.map(|b| reg(b).at),
                 },
-                Statement::Break => Stmt::Break,
-                Statement::Continue => Stmt::Continue,
+                Statement::Break => Stmt::Break {
+                    at: span.is_defined().then_some(at),
+                },
+                Statement::Continue => Stmt::Continue { at },
                 Statement::Return { value } => Stmt::Return {
                     at,
                     value: value.map(reg),

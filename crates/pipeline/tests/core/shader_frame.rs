@@ -13,6 +13,7 @@ use pipeline::raster::Samples;
 use pipeline::scene::{ColorSource, Object, ObjectShader, Scene};
 use pipeline::settings::RenderSettings;
 use pipeline::shade::{Frequency, Reflection};
+use pipeline::shader::{Step, Value};
 use pipeline::texture::{Mipmap, Sampler, Texture};
 
 use crate::support::render;
@@ -334,7 +335,6 @@ fn the_inspected_pixel_keeps_its_fragment_shaders_run() {
 /// `m` is the 2×2 matrix with columns (h, 2) = (0.5, 2) and (3, 4), the `if` takes its arm.
 #[test]
 fn the_trace_holds_each_value_as_numbers_and_a_functions_return() {
-    use pipeline::shader::{Step, Value};
     let fs = "#version 330 core\nout vec4 color;\nfloat twice(float x) {\n  return 2.0 * x;\n}\nvoid main() {\n  float h = twice(0.25);\n  mat2 m = mat2(h, 2.0, 3.0, 4.0);\n  bool big = h > 0.4;\n  if (big) {\n    h = 1.0;\n  }\n  color = vec4(h, m[1][0], 0.0, 1.0);\n}\n";
     let mut s = settings();
     s.capture.pixel = Some((80, 60));
@@ -392,14 +392,57 @@ fn a_loops_condition_is_traced_on_the_loops_line() {
         "{:#?}",
         frag.trace
     );
+    // i = 0, 1, 2: `i < 3` holds; i = 3: it does not — four tests on the `for` line, read as the
+    // loop's condition (not as an `if` the student did not write).
+    let tests: Vec<(usize, &Step)> = frag
+        .trace
+        .iter()
+        .filter(|t| matches!(t.step, Step::LoopTest { .. } | Step::Branch { .. }))
+        .map(|t| (t.line, &t.step))
+        .collect();
+    let holds = |h| Step::LoopTest { holds: h };
+    assert_eq!(
+        tests,
+        [
+            (5, &holds(true)),
+            (5, &holds(true)),
+            (5, &holds(true)),
+            (5, &holds(false))
+        ],
+        "{:#?}",
+        frag.trace
+    );
     assert!(
         frag.trace
             .iter()
-            .any(|t| t.line == 5 && t.text.starts_with("if: ")),
-        "the condition is on the `for` line: {:#?}",
-        frag.trace
+            .any(|t| t.text == "loop condition: false → the loop ends")
     );
     assert_eq!(frag.output.expect("drawn")[0], 0.75);
+}
+
+/// `continue` and `break` are named at their lines, after the `if` that chose them; the loop
+/// test is the `while`'s condition.
+#[test]
+fn break_and_continue_are_named_in_the_trace() {
+    let fs = "#version 330 core\nout vec4 color;\nvoid main() {\n  int i = 0;\n  float s = 0.0;\n  while (i < 10) {\n    i += 1;\n    if (i == 2) continue;\n    if (i == 3) break;\n    s += 0.25;\n  }\n  color = vec4(s);\n}\n";
+    let mut s = settings();
+    s.capture.pixel = Some((80, 60));
+    let f = render(&with_shaders(sphere_scene(false), None, Some(fs)), &s);
+    let frag = &f.shaders.as_ref().expect("a record").pixel[0];
+    let at = |step: &Step| {
+        frag.trace
+            .iter()
+            .filter(|t| &t.step == step)
+            .map(|t| t.line)
+            .collect::<Vec<_>>()
+    };
+    // i = 1: s = 0.25; i = 2: continue (line 8); i = 3: break (line 9). The `while` tests its
+    // condition on line 6 three times, each holding: the loop ends by the break.
+    assert_eq!(at(&Step::Continue), [8], "{:#?}", frag.trace);
+    assert_eq!(at(&Step::Break), [9], "{:#?}", frag.trace);
+    assert_eq!(at(&Step::LoopTest { holds: true }), [6, 6, 6]);
+    assert!(at(&Step::LoopTest { holds: false }).is_empty());
+    assert_eq!(frag.output.expect("drawn")[0], 0.25);
 }
 
 /// A vertex shader's `gl_Position` is the table's clip position, and a `vec3` attribute read

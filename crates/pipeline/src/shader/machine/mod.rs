@@ -15,72 +15,12 @@ use super::code::{Code, Place, Reg, Root, Stmt};
 use crate::texture::{Sampler, Texture};
 
 mod eval;
+mod events;
+
+pub use events::{Event, RunError};
 
 /// The most invocations one batch runs (16 quads).
 pub const LANES: usize = 64;
-
-/// A failure of one run, at its place in the student's source (bytes).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct RunError {
-    /// Where (bytes of the student's source).
-    pub at: usize,
-    /// What happened, as a sentence (English).
-    pub message: String,
-    /// What happened, as data, for the interface to say in its language.
-    pub complaint: crate::shader::Complaint,
-}
-
-/// What the traced lane did at one statement. `at` is always the statement's place in the
-/// student's source (bytes).
-#[derive(Clone, Debug, PartialEq)]
-pub enum Event {
-    /// A variable was written.
-    Assign {
-        /// Where.
-        at: usize,
-        /// The variable's name.
-        name: String,
-        /// Its type.
-        ty: naga::Handle<naga::Type>,
-        /// Its whole new value.
-        bits: Vec<u32>,
-    },
-    /// An `if`.
-    Branch {
-        /// Where.
-        at: usize,
-        /// Whether its condition held.
-        taken: bool,
-    },
-    /// A loop began an iteration.
-    Iteration {
-        /// Where.
-        at: usize,
-        /// Which, from 1.
-        k: u32,
-    },
-    /// A function was called.
-    Call {
-        /// Where.
-        at: usize,
-        /// The function.
-        name: String,
-    },
-    /// A function returned (not the entry point).
-    Return {
-        /// Where.
-        at: usize,
-        /// The function.
-        name: String,
-        /// What it returned, with its type (none for a `void` function).
-        value: Option<(naga::Handle<naga::Type>, Vec<u32>)>,
-    },
-    /// The fragment was discarded.
-    Discard {
-        /// Where.
-        at: usize,
-    },
-}
 
 /// The textures and sampler a run reads.
 #[derive(Clone, Copy)]
@@ -299,12 +239,21 @@ impl<'c> Machine<'c> {
                     c,
                     accept,
                     reject,
+                    loop_test,
                 } => {
                     let cond = self.lanes_true(fi, *c);
                     let (yes, no) = (mask & cond, mask & !cond);
-                    self.event(fi, mask, |_, l| Event::Branch {
-                        at: *at,
-                        taken: yes & bit(l) != 0,
+                    self.event(fi, mask, |_, l| {
+                        let taken = yes & bit(l) != 0;
+                        if *loop_test {
+                            // `if (!cond) break;`: taken is the condition failing.
+                            Event::LoopTest {
+                                at: *at,
+                                holds: !taken,
+                            }
+                        } else {
+                            Event::Branch { at: *at, taken }
+                        }
                     });
                     let a = if yes != 0 {
                         self.block(fi, accept, yes, live, flow, b)?
@@ -417,11 +366,15 @@ impl<'c> Machine<'c> {
                     flow.cont = outer_cont;
                     mask = left;
                 }
-                Stmt::Break => {
+                Stmt::Break { at } => {
+                    if let Some(at) = *at {
+                        self.event(fi, mask, |_, _| Event::Break { at });
+                    }
                     flow.brk |= mask;
                     mask = 0;
                 }
-                Stmt::Continue => {
+                Stmt::Continue { at } => {
+                    self.event(fi, mask, |_, _| Event::Continue { at: *at });
                     flow.cont |= mask;
                     mask = 0;
                 }
