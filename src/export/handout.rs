@@ -418,6 +418,20 @@ fn question_html(
     h
 }
 
+/// One file's listing under its name, its comments in `lang` (from the lesson's `comments`),
+/// the `marked` lines on yellow.
+fn file_listing(
+    file: &str,
+    source: &str,
+    marked: &[usize],
+    (lang, comments): (Lang, &std::collections::BTreeMap<String, String>),
+) -> String {
+    format!(
+        "<p class=\"listing\"><code>{file}</code></p>{}",
+        super::listing::html(&localize(source, lang, comments), marked)
+    )
+}
+
 /// The shaders step `k` runs of its own (its `shader`), each a listing under its file name, the
 /// lines it changed from the shader of the same file the step before ran on yellow.
 fn shaders_html(lesson: &Lesson, k: usize, code: &StudentCode, lang: Lang) -> String {
@@ -433,11 +447,12 @@ fn shaders_html(lesson: &Lesson, k: usize, code: &StudentCode, lang: Lang) -> St
         )
     );
     for (file, source, marked) in files {
-        let _ = write!(
-            h,
-            "<p class=\"listing\"><code>{file}</code></p>{}",
-            super::listing::html(&localize(source, lang, &lesson.comments), &marked)
-        );
+        h.push_str(&file_listing(
+            &file,
+            source,
+            &marked,
+            (lang, &lesson.comments),
+        ));
     }
     h
 }
@@ -516,11 +531,7 @@ fn exercise_html(
         typeset(&notation::parse_paragraph(e.task.get(lang)))
     );
     for (file, source, todo) in super::listing::starter_todos(&e.starter) {
-        let _ = write!(
-            h,
-            "<p class=\"listing\"><code>{file}</code></p>{}",
-            super::listing::html(&localize(source, lang, comments), &todo)
-        );
+        h.push_str(&file_listing(&file, source, &todo, (lang, comments)));
     }
     h.push_str("</div>\n");
     h

@@ -286,18 +286,17 @@ fn slide_extras(
                 .map(|(file, source, marked)| {
                     let source = &local(source);
                     let rows = if marked.is_empty() {
+                        // `void main()` (marked) and the seven lines after it.
                         let main = source.lines().position(|l| l.starts_with("void main"));
-                        focus(source, &main.map(|m| vec![m + 1]).unwrap_or_default(), 0, 1)
-                            .into_iter()
-                            .chain(
-                                source
-                                    .lines()
-                                    .enumerate()
-                                    .skip(main.map_or(usize::MAX, |m| m + 1))
-                                    .take(7)
-                                    .map(|(i, l)| ((i + 1).to_string(), l.to_owned(), false)),
-                            )
-                            .collect()
+                        main.map_or_else(Vec::new, |m| {
+                            source
+                                .lines()
+                                .enumerate()
+                                .skip(m)
+                                .take(8)
+                                .map(|(i, l)| ((i + 1).to_string(), l.to_owned(), i == m))
+                                .collect()
+                        })
                     } else {
                         focus(source, &marked, 1, 12)
                     };

@@ -85,14 +85,13 @@ pub fn lex(src: &str) -> Vec<Lexeme> {
 /// starter shown with its comments in another language is still the starter).
 #[must_use]
 pub fn same_code(a: &str, b: &str) -> bool {
-    let code = |src: &str| -> Vec<String> {
+    fn code(src: &str) -> impl Iterator<Item = &str> {
         lex(src)
             .into_iter()
             .filter(|l| !matches!(l.kind, Kind::Comment | Kind::Space))
-            .map(|l| src[l.span].to_owned())
-            .collect()
-    };
-    code(a) == code(b)
+            .map(move |l| &src[l.span])
+    }
+    code(a).eq(code(b))
 }
 
 /// `src` with each `//` comment whose words `words` gives other words for rewritten: the

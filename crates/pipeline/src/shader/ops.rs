@@ -29,6 +29,25 @@ fn zipf(x: &[u32], y: &[u32], out: &mut [u32], g: impl Fn(f32, f32) -> f32) {
     zip(x, y, out, |a, b| g(f(a), f(b)).to_bits());
 }
 
+/// An integer division (`remainder`: `%`) by zero in a live lane.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DivisionByZero {
+    /// Whether it was `%`.
+    pub remainder: bool,
+}
+
+impl DivisionByZero {
+    /// The sentence (English).
+    #[must_use]
+    pub fn message(self) -> &'static str {
+        if self.remainder {
+            "integer remainder (%) by zero"
+        } else {
+            "integer division by zero"
+        }
+    }
+}
+
 /// A binary operator on one component row; `live` lanes report integer division by zero.
 ///
 /// # Errors
@@ -40,7 +59,7 @@ pub fn binary(
     y: &[u32],
     out: &mut [u32],
     live: u64,
-) -> Result<(), &'static str> {
+) -> Result<(), DivisionByZero> {
     let cmp = |out: &mut [u32], o: fn(std::cmp::Ordering) -> bool| match kind {
         Kind::F => zip(x, y, out, |a, b| {
             u32::from(f(a).partial_cmp(&f(b)).is_some_and(o))
@@ -53,10 +72,8 @@ pub fn binary(
             .enumerate()
             .any(|(l, &b)| b == 0 && live & (1 << l) != 0)
     {
-        return Err(if op == B::Divide {
-            "integer division by zero"
-        } else {
-            "integer remainder (%) by zero"
+        return Err(DivisionByZero {
+            remainder: op == B::Modulo,
         });
     }
     match (op, kind) {

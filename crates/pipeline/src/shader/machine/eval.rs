@@ -241,9 +241,13 @@ impl Machine<'_> {
                                         &mut out[k as usize * LANES..][..n],
                                         live,
                                     )
-                                    .map_err(|m| {
-                                        let remainder = m.contains('%');
-                                        err(m.to_owned(), Complaint::DivisionByZero { remainder })
+                                    .map_err(|d| {
+                                        err(
+                                            d.message().to_owned(),
+                                            Complaint::DivisionByZero {
+                                                remainder: d.remainder,
+                                            },
+                                        )
                                     })?;
                                 }
                             }
