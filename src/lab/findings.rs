@@ -25,7 +25,8 @@ pub struct Mismatch {
     pub yours: String,
     /// pipelens' value.
     pub theirs: String,
-    /// For a vector: its length in each run (a normal not normalized shows here).
+    /// For a vector that points pipelens' way: its length in each run (a normal not
+    /// normalized shows here).
     pub lengths: Option<(f64, f64)>,
     /// Where the runs were compared: the vertex shader's at this row of the vertex table (a
     /// corner of the first wrong pixel's triangle), or `None` for the fragment shader's at the
@@ -69,6 +70,19 @@ pub fn unnormalized(lengths: Option<(f64, f64)>) -> Option<f64> {
     lengths
         .filter(|(yours, theirs)| (theirs - 1.0).abs() < 1e-4 && (yours - 1.0).abs() > 2e-4)
         .map(|(yours, _)| yours)
+}
+
+/// The lengths `(yours, pipelens')` of two vectors that point the same way (within about
+/// 2.5°): a vector that differs from pipelens' by its length alone. `None` for other values.
+fn lengths_along(yours: &Value, theirs: &Value) -> Option<(f64, f64)> {
+    let (a, b) = (yours.length()?, theirs.length()?);
+    let dot: f64 = yours
+        .numbers
+        .iter()
+        .zip(&theirs.numbers)
+        .map(|(x, y)| x * y)
+        .sum();
+    (a > 0.0 && b > 0.0 && dot / (a * b) > 0.999).then_some((a, b))
 }
 
 /// A run's values by stretch: the stretch (how many loop iterations began before it), the name
@@ -151,7 +165,7 @@ pub fn first_difference(mine: &[TraceLine], theirs: &[TraceLine]) -> Option<Mism
         Mismatch {
             name: name.clone(),
             line: *line,
-            lengths: yours.length().zip(theirs.length()),
+            lengths: lengths_along(yours, theirs),
             yours: y,
             theirs: t,
             vertex: None,
@@ -161,7 +175,7 @@ pub fn first_difference(mine: &[TraceLine], theirs: &[TraceLine]) -> Option<Mism
     // unnormalized — says more than the first value it puts off, however small the gap.
     let unit = paired
         .iter()
-        .find(|(_, _, yours, theirs)| unnormalized(yours.length().zip(theirs.length())).is_some());
+        .find(|(_, _, yours, theirs)| unnormalized(lengths_along(yours, theirs)).is_some());
     if let Some(m) = unit.or_else(|| paired.iter().find(|(_, _, y, t)| !y.agrees(t))) {
         return Some(mismatch(m));
     }

@@ -182,9 +182,14 @@ fn own(c: &Complaint, lang: Lang) -> Option<String> {
                 .replace("MAX_LIGHTS", &interface::MAX_LIGHTS.to_string()))
         ),
         C::UnknownTexture { name, suggestion } => format!(
-            "pipelens 不绑定名为 `{name}` 的纹理{}；物体的纹理是 `uniform sampler2D tex;`，凹凸或法线贴图是 `uniform sampler2D detail;`",
+            "pipelens 不绑定名为 `{name}` 的纹理{}；物体的纹理是 `uniform sampler2D tex;`，凹凸或法线贴图是 `uniform sampler2D detail;`，它所反射的立方体贴图是 `uniform samplerCube environment;`",
             meant(suggestion)
         ),
+        C::TextureType {
+            name,
+            written,
+            expected,
+        } => format!("pipelens 把 `{name}` 绑定为 {expected}，这里却声明为 {written}"),
         C::UnknownAttribute { name, suggestion } => format!(
             "pipelens 不提供名为 `{name}` 的顶点属性{}；它提供的属性：{}",
             meant(suggestion),

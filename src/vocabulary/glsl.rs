@@ -222,6 +222,36 @@ const SHIPPED: &[(&str, &str)] = &[
     ),
     ("k_h·k_n", "k_h·k_n"),
     (
+        "pipelens' per-pixel Blinn-Phong lighting of a mirror (environment mapping), as a shader:",
+        "pipelens 对镜面物体的逐像素 Blinn-Phong 光照（环境映射），写成着色器：",
+    ),
+    (
+        "L = (1 − k)·(ambient + diffuse) + specular + k·env(r),   r = 2(n·v)n − v = reflect(−v, n)",
+        "L = (1 − k)·(环境光 + 漫反射) + 高光 + k·env(r)，   r = 2(n·v)n − v = reflect(−v, n)",
+    ),
+    (
+        "with ambient = Σ k_a·c·I_a, diffuse = Σ f_att·f_spot·k_d·c·I·max(n·l, 0),",
+        "其中 环境光 = Σ k_a·c·I_a，漫反射 = Σ f_att·f_spot·k_d·c·I·max(n·l, 0)，",
+    ),
+    (
+        "specular = Σ f_att·f_spot·k_s·I·max(n·h, 0)^p, env(r) the cube map seen in direction r and",
+        "高光 = Σ f_att·f_spot·k_s·I·max(n·h, 0)^p，env(r) 是沿方向 r 看到的立方体贴图，",
+    ),
+    (
+        "k the reflectivity: a mirror shows k of what it reflects and keeps 1 − k of its own light.",
+        "k 是反射率：镜面显示所反射内容的 k 倍，并保留自身光照的 1 − k 倍。",
+    ),
+    (
+        "the surroundings: +x, −x, +y, −y, +z, −z",
+        "周围环境：+x、−x、+y、−y、+z、−z 六个面",
+    ),
+    ("k", "k"),
+    (
+        "the mirror direction 2(n·v)n − v",
+        "镜面反射方向 2(n·v)n − v",
+    ),
+    ("env(r)", "env(r)"),
+    (
         "the height or normal map: bilinear, repeating, level 0",
         "高度图或法线贴图：双线性、重复、第 0 层",
     ),

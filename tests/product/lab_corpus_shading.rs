@@ -332,6 +332,34 @@ float cone(vec3 axis, vec3 l, float cutoff_cos, float e) {
     p.x += lifted * normal.x;
     p.y += lifted * normal.y;
     p.z += lifted * normal.z;", Right),
+    // 15-surface-detail: Lab: a mirror in a fragment shader. GLSL's reflect(I, n) takes I from
+    // the eye: reflect(v, n) mirrors the wrong way; a direction need not be unit long.
+    ("15-surface-detail", "Lab: a mirror in a fragment shader", "    vec3 r = reflect(v, n);
+    float k = reflectivity;
+    color = vec4((1.0 - k) * own + specular + k * texture(environment, r).rgb, 1.0);", Wrong(&["Not yet", "your `r`"])),
+    ("15-surface-detail", "Lab: a mirror in a fragment shader", "    vec3 r = reflect(-eye, n);
+    float k = reflectivity;
+    color = vec4((1.0 - k) * own + specular + k * texture(environment, r).rgb, 1.0);", Wrong(&["Not yet", "your `r`"])),
+    ("15-surface-detail", "Lab: a mirror in a fragment shader", "    vec3 r = refract(-v, n, 1.0 / 1.5);
+    float k = reflectivity;
+    color = vec4((1.0 - k) * own + specular + k * texture(environment, r).rgb, 1.0);", Wrong(&["Not yet", "your `r`"])),
+    ("15-surface-detail", "Lab: a mirror in a fragment shader", "    vec3 r = reflect(-v, n);
+    color = vec4(own + specular + reflectivity * texture(environment, r).rgb, 1.0);", Wrong(&["Not yet", "your `color`"])),
+    ("15-surface-detail", "Lab: a mirror in a fragment shader", "    vec3 r = reflect(-v, n);
+    color = vec4(mix(own + specular, texture(environment, r).rgb, reflectivity), 1.0);", Wrong(&["Not yet", "your `color`"])),
+    ("15-surface-detail", "Lab: a mirror in a fragment shader", "    float k = reflectivity;
+    color = vec4((1.0 - k) * own + specular + k * texture(environment, n).rgb, 1.0);", Wrong(&["Not yet", "your `color`"])),
+    ("15-surface-detail", "Lab: a mirror in a fragment shader", "    vec3 r = 2.0 * dot(n, v) * n - v;
+    vec3 env = texture(environment, r).rgb;
+    color = vec4(own * (1.0 - reflectivity) + env * reflectivity + specular, 1.0);", Right),
+    ("15-surface-detail", "Lab: a mirror in a fragment shader", "    vec3 seen = texture(environment, reflect(w_pos - eye, n)).rgb;
+    color = vec4(mix(own, seen, reflectivity) + specular, 1.0);", Right),
+    ("15-surface-detail", "Lab: a mirror in a fragment shader", "vec3 mirrored(vec3 towards_eye, vec3 normal) {
+    return normalize(2.0 * dot(normal, towards_eye) * normal - towards_eye);
+}
+---
+    color = vec4(own + specular, 1.0);
+    color.rgb += reflectivity * (texture(environment, mirrored(v, n)).rgb - own);", Right),
     // 16-planar-shadows: Lab: the shadow matrix.
     ("16-planar-shadows", "Lab: the shadow matrix", "    to_light[3] = vec4(light, 1.0);
     project[1][3] = -1.0 / light.y;

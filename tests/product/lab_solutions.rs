@@ -157,6 +157,16 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
         "    vec3 p = position + normal * (displacement_scale * height(uv));",
     ),
     (
+        "15-surface-detail",
+        "Lab: a mirror in a fragment shader",
+        "    // TODO: look the surroundings up in the mirror direction r and mix them in with
+    // k = reflectivity. (As written: the ball is lit, but it reflects nothing.)
+    color = vec4(own + specular, 1.0);",
+        "    vec3 r = reflect(-v, n);
+    float k = reflectivity;
+    color = vec4((1.0 - k) * own + specular + k * texture(environment, r).rgb, 1.0);",
+    ),
+    (
         "16-planar-shadows",
         "Lab: the shadow matrix",
         "    // TODO: T(−l), P and T(l). (As written: three identities, so the shadow is the object.)",

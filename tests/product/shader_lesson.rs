@@ -155,7 +155,9 @@ fn not_modelled(spec: &pipelens::lesson::SceneSpec) -> Option<&'static str> {
         .iter()
         .all(|o| pipeline::shader::builtin_sources(s.shading, s.reflection, o.surface()).is_none())
     {
-        Some("r·v with Gouraud, flat or a bump map, or a mirror: no shipped shader pair")
+        Some(
+            "r·v with Gouraud, flat or a bump map, or a bump-mapped mirror: no shipped shader pair",
+        )
     } else {
         None
     }
@@ -179,13 +181,16 @@ fn pipelens_own_shading_as_glsl_gives_the_built_in_pixels_on_the_lessons_scenes(
             spec.settings.width = spec.settings.width.min(160);
             spec.settings.height = spec.settings.height.min(100);
             // Mip-mapped lookups included: both paths take λ from the 2×2 quad's derivatives.
-            // An object no shipped pair models (a mirror) is taken out of both pictures.
+            // An object no shipped pair models is taken out of both pictures.
             let (shading, reflection) = (spec.settings.shading, spec.settings.reflection);
             spec.scene.objects.retain(|o| {
                 let modelled =
                     pipeline::shader::builtin_sources(shading, reflection, o.surface()).is_some();
                 if !modelled {
-                    left_out.push(format!("{case}: object {} (a mirror) taken out", o.name));
+                    left_out.push(format!(
+                        "{case}: object {} taken out (no shipped pair)",
+                        o.name
+                    ));
                 }
                 modelled
             });

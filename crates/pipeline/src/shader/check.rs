@@ -153,8 +153,25 @@ fn uniform_declaration(
 
 /// A texture's declaration: one pipelens binds.
 fn texture_declaration(source: &str, d: &dialect::Declaration) -> Option<ShaderError> {
-    if interface::texture_slot(&d.name).is_some() {
-        return None;
+    if let Some(slot) = interface::texture_slot(&d.name) {
+        let expected = slot.sampler();
+        return (d.type_name != expected).then(|| {
+            complain(
+                error_at(
+                    source,
+                    d.name_span.clone(),
+                    format!(
+                        "pipelens binds `{}` as a {expected}, declared here as {}",
+                        d.name, d.type_name
+                    ),
+                ),
+                Complaint::TextureType {
+                    name: d.name.clone(),
+                    written: d.type_name.clone(),
+                    expected,
+                },
+            )
+        });
     }
     let known = interface::TEXTURES.map(|(n, _)| n);
     Some(complain(
@@ -162,7 +179,7 @@ fn texture_declaration(source: &str, d: &dialect::Declaration) -> Option<ShaderE
             source,
             d.name_span.clone(),
             format!(
-                "pipelens binds no texture called `{}`{}; the object's texture is `uniform sampler2D tex;`, its bump or normal map `uniform sampler2D detail;`",
+                "pipelens binds no texture called `{}`{}; the object's texture is `uniform sampler2D tex;`, its bump or normal map `uniform sampler2D detail;`, the cube map it mirrors `uniform samplerCube environment;`",
                 d.name,
                 did_you_mean(&d.name, &known)
             ),

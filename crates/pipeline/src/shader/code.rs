@@ -171,6 +171,9 @@ pub enum Op {
         coordinate: Reg,
         level: Level,
     },
+    /// `texture(s, r)` of a `samplerCube`: the cube map in direction `r`, a vec4 (any level
+    /// asked for reads the one level a cube map has).
+    SampleCube { texture: u32, direction: Reg },
     /// `texelFetch(s, ij, level)`: a vec4.
     Fetch {
         texture: u32,

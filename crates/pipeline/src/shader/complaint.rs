@@ -80,6 +80,16 @@ pub enum Complaint {
         /// The type declared.
         written: String,
     },
+    /// A texture pipelens binds, declared with the other sampler type (`sampler2D` for a cube
+    /// map, `samplerCube` for a 2D texture).
+    TextureType {
+        /// The texture.
+        name: String,
+        /// The sampler type declared.
+        written: String,
+        /// The sampler type pipelens binds it as.
+        expected: &'static str,
+    },
     /// A texture pipelens does not bind (it binds `tex` and `detail`).
     UnknownTexture {
         /// The name declared.

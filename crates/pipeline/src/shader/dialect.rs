@@ -10,8 +10,9 @@
 //!   *preamble* (pipelens' `Light` type and constants, then what the student declared).
 //! - `uniform T name;` keeps its place with `uniform` (and any `layout(…)`) blanked: a plain
 //!   global that [`super::run`] fills from the scene before each run, by name.
-//! - `uniform sampler2D name;` is blanked and declared in the preamble as a texture and a
-//!   sampler, with `#define name sampler2D(texture, sampler)` so that `texture(name, uv)` reads.
+//! - `uniform sampler2D name;` (or `samplerCube`) is blanked and declared in the preamble as a
+//!   texture and a sampler, with `#define name sampler2D(texture, sampler)` so that
+//!   `texture(name, uv)` reads.
 //! - `in`/`out`/`attribute`/`varying` declarations are blanked and declared again in the
 //!   preamble with a location (vertex attributes at their fixed locations, see
 //!   [`super::interface`]).
@@ -45,7 +46,7 @@ pub struct Adapted {
 pub enum Storage {
     /// `uniform` (not a sampler).
     Uniform,
-    /// `uniform sampler2D`.
+    /// `uniform sampler2D` or `uniform samplerCube`.
     Texture,
     /// `in` (or `attribute`, or `varying` in a fragment shader).
     Input,
@@ -82,6 +83,15 @@ pub const LIGHT_DECLARATIONS: &str = "struct Light { int kind; vec3 position; ve
 vec3 intensity; vec3 attenuation; float cutoff_cos; float exponent; };\n\
 const int LIGHT_AMBIENT = 0; const int LIGHT_POINT = 1; const int LIGHT_DIRECTIONAL = 2; \
 const int LIGHT_SPOT = 3; const int MAX_LIGHTS = 8;\n";
+
+/// The combined samplers a student may declare, with the separate texture type naga reads
+/// behind each: a 2D texture, and a cube map looked up by direction.
+const SAMPLERS: [(&str, &str); 2] = [("sampler2D", "texture2D"), ("samplerCube", "textureCube")];
+
+/// The sampler type `name` and its texture type, if it is one pipelens binds.
+fn sampler_kind(name: &str) -> Option<(&'static str, &'static str)> {
+    SAMPLERS.iter().copied().find(|(s, _)| *s == name)
+}
 
 /// Prefix of the names pipelens gives the texture and sampler behind a `sampler2D`.
 pub const TEXTURE_PREFIX: &str = "pl_texture_";
@@ -314,9 +324,9 @@ pub fn adapt(src: &str, stage: Stage) -> Result<Adapted, Vec<DialectError>> {
                 continue;
             }
             let names = declared_names(after, &span, &mut errors);
-            if names.first().is_some_and(|(ty, _)| ty.text == "sampler2D") {
+            if let Some(kind) = names.first().and_then(|(ty, _)| sampler_kind(&ty.text)) {
                 for (_, name) in &names {
-                    declarations.push(preamble.texture(name, &span));
+                    declarations.push(preamble.texture(kind, name, &span));
                 }
                 blanks.push(span.clone());
             } else {
@@ -497,15 +507,16 @@ impl Preamble {
         self.pieces.push((start..self.text.len(), stands_for));
     }
 
-    /// `uniform sampler2D name;` as a texture, a sampler and the define that joins them.
-    fn texture(&mut self, name: &Token, span: &Range<usize>) -> Declaration {
-        let (b, n) = (2 * self.textures, &name.text);
+    /// `uniform sampler2D name;` (or `samplerCube`) as a texture, a sampler and the define that
+    /// joins them.
+    fn texture(&mut self, kind: (&str, &str), name: &Token, span: &Range<usize>) -> Declaration {
+        let (b, n, (sampler, texture)) = (2 * self.textures, &name.text, kind);
         self.textures += 1;
         self.push_generated(
             &format!(
-                "layout(set = 1, binding = {b}) uniform texture2D {TEXTURE_PREFIX}{n};\n\
+                "layout(set = 1, binding = {b}) uniform {texture} {TEXTURE_PREFIX}{n};\n\
                  layout(set = 1, binding = {}) uniform sampler {SAMPLER_PREFIX}{n};\n\
-                 #define {n} sampler2D({TEXTURE_PREFIX}{n}, {SAMPLER_PREFIX}{n})\n",
+                 #define {n} {sampler}({TEXTURE_PREFIX}{n}, {SAMPLER_PREFIX}{n})\n",
                 b + 1
             ),
             span.clone(),
@@ -513,7 +524,7 @@ impl Preamble {
         Declaration {
             storage: Storage::Texture,
             name: n.clone(),
-            type_name: "sampler2D".to_owned(),
+            type_name: sampler.to_owned(),
             span: span.clone(),
             name_span: name.span.clone(),
         }

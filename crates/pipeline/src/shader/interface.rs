@@ -71,7 +71,7 @@ pub struct UniformSpec {
 }
 
 /// Every uniform pipelens sets. A shader declares those it uses (`uniform mat4 model;`).
-pub const UNIFORMS: [UniformSpec; 32] = [
+pub const UNIFORMS: [UniformSpec; 33] = [
     UniformSpec {
         names: &["model", "M"],
         glsl: "mat4",
@@ -173,6 +173,11 @@ pub const UNIFORMS: [UniformSpec; 32] = [
         meaning: "k of displacement mapping p' = p + k·h(u, v)·n (0 without a displacement map)",
     },
     UniformSpec {
+        names: &["reflectivity"],
+        glsl: "float",
+        meaning: "k of environment mapping: (1 − k)·(ambient + diffuse) + specular + k·env(r), r = reflect(−v, n) (0 without an environment)",
+    },
+    UniformSpec {
         names: &["time"],
         glsl: "float",
         meaning: "seconds into the step's animation",
@@ -251,16 +256,34 @@ pub enum TextureSlot {
     /// The object's displacement (height) map, sampled as the built-in displacement reads it:
     /// bilinear, repeating, level 0.
     Displacement,
+    /// The cube map the object mirrors (`uniform samplerCube environment;`), looked up by
+    /// direction as the built-in environment mapping reads it.
+    Environment,
 }
 
-/// The texture names pipelens binds (`uniform sampler2D tex;`), and what each holds.
-pub const TEXTURES: [(&str, TextureSlot); 6] = [
+impl TextureSlot {
+    /// The sampler type a shader declares it with: `sampler2D`, or `samplerCube` for the
+    /// environment.
+    #[must_use]
+    pub fn sampler(self) -> &'static str {
+        match self {
+            Self::Environment => "samplerCube",
+            _ => "sampler2D",
+        }
+    }
+}
+
+/// The texture names pipelens binds (`uniform sampler2D tex;`, `uniform samplerCube
+/// environment;`), and what each holds.
+pub const TEXTURES: [(&str, TextureSlot); 8] = [
     ("tex", TextureSlot::Surface),
     ("texture0", TextureSlot::Surface),
     ("detail", TextureSlot::Detail),
     ("normal_map", TextureSlot::Detail),
     ("height_map", TextureSlot::Detail),
     ("displacement", TextureSlot::Displacement),
+    ("environment", TextureSlot::Environment),
+    ("skybox", TextureSlot::Environment),
 ];
 
 /// The texture called `name`, if pipelens binds one.
@@ -294,6 +317,8 @@ pub struct Uniforms {
     pub bump_strength: f32,
     /// `displacement_scale`, k of `p' = p + k·h(u, v)·n` (0 without a displacement map).
     pub displacement_scale: f32,
+    /// `reflectivity`, k of environment mapping (0 without an environment).
+    pub reflectivity: f32,
     /// Seconds into the step's animation.
     pub time: f32,
     /// The viewport's size in pixels.
@@ -322,6 +347,7 @@ impl Default for Uniforms {
             detail_kind: 0,
             bump_strength: 0.0,
             displacement_scale: 0.0,
+            reflectivity: 0.0,
             time: 0.0,
             resolution: Vec2::ONE,
             lens: [90.0, 1.0, 1.0, 10.0],
@@ -395,6 +421,7 @@ impl Uniforms {
             "detail_kind" => vec![self.detail_kind as u32],
             "bump_strength" => floats(&[self.bump_strength]),
             "displacement_scale" => floats(&[self.displacement_scale]),
+            "reflectivity" => floats(&[self.reflectivity]),
             "fovy" => floats(&self.lens[0..1]),
             "aspect" => floats(&self.lens[1..2]),
             "near" => floats(&self.lens[2..3]),

@@ -36,17 +36,21 @@ pub const BUILTIN_FLAT_FRAGMENT: &str = include_str!("builtin/flat.frag");
 /// pipelens' per-pixel Blinn-Phong lighting with a bump or normal map, as GLSL.
 pub const BUILTIN_NORMAL_MAPPED_FRAGMENT: &str = include_str!("builtin/normal_mapped.frag");
 
+/// pipelens' per-pixel Blinn-Phong lighting of a mirror (environment mapping), as GLSL.
+pub const BUILTIN_MIRROR_FRAGMENT: &str = include_str!("builtin/mirror.frag");
+
 /// pipelens' shipped vertex shaders.
 pub const SHIPPED_VERTEX: [&str; 3] = [BUILTIN_VERTEX, BUILTIN_GOURAUD_VERTEX, BUILTIN_FLAT_VERTEX];
 
 /// pipelens' shipped fragment shaders.
-pub const SHIPPED_FRAGMENT: [&str; 6] = [
+pub const SHIPPED_FRAGMENT: [&str; 7] = [
     BUILTIN_FRAGMENT,
     BUILTIN_PHONG_FRAGMENT,
     BUILTIN_UNLIT_FRAGMENT,
     BUILTIN_GOURAUD_FRAGMENT,
     BUILTIN_FLAT_FRAGMENT,
     BUILTIN_NORMAL_MAPPED_FRAGMENT,
+    BUILTIN_MIRROR_FRAGMENT,
 ];
 
 /// What of an object decides which of pipelens' shipped shader pairs draws it.
@@ -62,10 +66,10 @@ pub struct Surface {
 
 /// The GLSL of pipelens' own shading of a `surface` with `shading` and `reflection`, `(vertex,
 /// fragment)`: running it gives the built-in pixels. An object the lights do not reach is
-/// drawn unlit; a bump or normal map takes normal_mapped.frag. `None` where no shipped pair
-/// models the built-in path: Gouraud or flat shading with Phong's `r·v` (change `n·h` in
-/// gouraud.vert or flat.frag), a surface detail with `r·v`, and a mirror's environment lookup
-/// (pipelens binds no cube map).
+/// drawn unlit; a bump or normal map takes normal_mapped.frag, a mirror mirror.frag. `None`
+/// where no shipped pair models the built-in path: Gouraud or flat shading with Phong's `r·v`
+/// (change `n·h` in gouraud.vert or flat.frag), a surface detail with `r·v`, and a mirror
+/// lit with `r·v` or with a bump map.
 #[must_use]
 pub fn builtin_sources(
     shading: crate::shade::Frequency,
@@ -82,6 +86,9 @@ pub fn builtin_sources(
         (Frequency::Unlit, _) => Some((BUILTIN_VERTEX, BUILTIN_UNLIT_FRAGMENT)),
         _ if !lit => Some((BUILTIN_VERTEX, BUILTIN_UNLIT_FRAGMENT)),
         (_, Reflection::Phong) if detail && shading == Frequency::Phong => None,
+        (Frequency::Phong, Reflection::BlinnPhong) if mirror && !detail => {
+            Some((BUILTIN_VERTEX, BUILTIN_MIRROR_FRAGMENT))
+        }
         (Frequency::Phong, _) if mirror => None,
         (Frequency::Phong, Reflection::BlinnPhong) if detail => {
             Some((BUILTIN_VERTEX, BUILTIN_NORMAL_MAPPED_FRAGMENT))

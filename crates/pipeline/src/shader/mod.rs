@@ -40,11 +40,11 @@ pub use hook::{
 pub use interface::Uniforms;
 pub use link::{
     BUILTIN_FLAT_FRAGMENT, BUILTIN_FLAT_VERTEX, BUILTIN_FRAGMENT, BUILTIN_GOURAUD_FRAGMENT,
-    BUILTIN_GOURAUD_VERTEX, BUILTIN_NORMAL_MAPPED_FRAGMENT, BUILTIN_PHONG_FRAGMENT,
-    BUILTIN_UNLIT_FRAGMENT, BUILTIN_VERTEX, Link, Programs, SHIPPED_FRAGMENT, SHIPPED_VERTEX,
-    StageError, Surface, builtin_programs, builtin_sources, link,
+    BUILTIN_GOURAUD_VERTEX, BUILTIN_MIRROR_FRAGMENT, BUILTIN_NORMAL_MAPPED_FRAGMENT,
+    BUILTIN_PHONG_FRAGMENT, BUILTIN_UNLIT_FRAGMENT, BUILTIN_VERTEX, Link, Programs,
+    SHIPPED_FRAGMENT, SHIPPED_VERTEX, StageError, Surface, builtin_programs, builtin_sources, link,
 };
-pub use machine::{Bindings, Event, LANES, Machine, RunError};
+pub use machine::{Bindings, Bound, Event, LANES, Machine, RunError};
 pub use trace::{Step, Trace, TraceLine, Value, float_text, glsl_type};
 
 /// Which programmable stage a shader is.

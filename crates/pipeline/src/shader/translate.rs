@@ -222,6 +222,20 @@ impl<'m> Translator<'m> {
         }
     }
 
+    /// Whether `image` is a cube map's texture (`samplerCube`).
+    fn is_cube(&self, f: &naga::Function, image: Handle<Expression>) -> bool {
+        match f.expressions[image] {
+            Expression::GlobalVariable(g) => matches!(
+                self.module.types[self.module.global_variables[g].ty].inner,
+                naga::TypeInner::Image {
+                    dim: naga::ImageDimension::Cube,
+                    ..
+                }
+            ),
+            _ => false,
+        }
+    }
+
     fn texture_slot(&self, f: &naga::Function, image: Handle<Expression>) -> Result<u32, String> {
         match f.expressions[image] {
             Expression::GlobalVariable(g) => self
@@ -230,7 +244,10 @@ impl<'m> Translator<'m> {
                 .find(|(h, _)| *h == g)
                 .map(|(_, s)| *s)
                 .ok_or_else(|| "a texture pipelens does not bind".to_owned()),
-            _ => Err("a texture passed to a function: use the `sampler2D` by its name".to_owned()),
+            _ => Err(
+                "a texture passed to a function: use the `sampler2D` (or `samplerCube`) by its name"
+                    .to_owned(),
+            ),
         }
     }
 
@@ -400,6 +417,17 @@ impl<'m> Translator<'m> {
                 from: kind_of(ty(expr)),
                 to: Kind::of(kind),
                 convert: convert.is_some(),
+            },
+            Expression::ImageSample {
+                image,
+                coordinate,
+                gather: None,
+                depth_ref: None,
+                array_index: None,
+                ..
+            } if self.is_cube(f, image) => Op::SampleCube {
+                texture: self.texture_slot(f, image)?,
+                direction: reg(coordinate),
             },
             Expression::ImageSample {
                 image,

@@ -272,3 +272,76 @@ fn the_bumps_normal_map_matches_bump_mapping_the_bumps() {
         "{apart} of {covered} pixels differ by more than 0.15 rad"
     );
 }
+
+/// A shader's `uniform samplerCube environment;` reads the cube map by direction: with a colour
+/// of its own on each face, the direction's major axis picks the colour (OpenGL's cube map
+/// table: +x, −x, +y, −y, +z, −z), whatever the direction's length. Declared as the other
+/// sampler type, pipelens' texture is an error that says which type it binds.
+#[test]
+fn a_shader_s_sampler_cube_reads_the_face_a_direction_points_at() {
+    use pipeline::shader::{self, Bindings, Bound, LANES, Stage, Uniforms};
+    use pipeline::texture::CubeMap;
+    let src = "#version 330 core\nuniform samplerCube environment;\nin vec3 d;\nout vec4 color;\nvoid main() { color = texture(environment, d); }\n";
+    let p = shader::compile(Stage::Fragment, src).expect("compiles");
+    let colors = [
+        Vec3::new(1.0, 0.0, 0.0),
+        Vec3::new(0.0, 1.0, 0.0),
+        Vec3::new(0.0, 0.0, 1.0),
+        Vec3::new(1.0, 1.0, 0.0),
+        Vec3::new(0.0, 1.0, 1.0),
+        Vec3::new(1.0, 0.0, 1.0),
+    ];
+    let cube = CubeMap {
+        faces: colors.map(|c| Level {
+            width: 2,
+            height: 2,
+            texels: vec![c; 4],
+        }),
+    };
+    // One direction towards each face, in face order, of assorted lengths.
+    let dirs = [
+        Vec3::new(2.0, 0.5, -0.3),
+        Vec3::new(-3.0, 1.0, 1.0),
+        Vec3::new(0.1, 5.0, 0.2),
+        Vec3::new(0.2, -0.4, 0.1),
+        Vec3::new(0.0, 0.0, 0.01),
+        Vec3::new(0.3, 0.2, -0.9),
+    ];
+    let mut rows = vec![0u32; 3 * LANES];
+    for (l, d) in dirs.iter().enumerate() {
+        for (c, x) in d.to_array().iter().enumerate() {
+            rows[c * LANES + l] = x.to_bits();
+        }
+    }
+    let mut m = p.machine();
+    p.set_uniforms(&mut m, &Uniforms::default());
+    let bound = [Some(Bound::Cube(&cube))];
+    m.run(&[&rows], dirs.len(), 0b11_1111, &Bindings { textures: &bound })
+        .expect("runs");
+    let out = m.result();
+    for (l, want) in colors.iter().enumerate() {
+        let got = Vec3::new(
+            f32::from_bits(out[l]),
+            f32::from_bits(out[LANES + l]),
+            f32::from_bits(out[2 * LANES + l]),
+        );
+        assert_eq!(got, *want, "direction {:?}", dirs[l]);
+    }
+    for (src, says) in [
+        (
+            "#version 330 core\nuniform sampler2D environment;\nout vec4 color;\nvoid main() { color = vec4(1.0); }\n",
+            "pipelens binds `environment` as a samplerCube, declared here as sampler2D",
+        ),
+        (
+            "#version 330 core\nuniform samplerCube tex;\nout vec4 color;\nvoid main() { color = vec4(1.0); }\n",
+            "pipelens binds `tex` as a sampler2D, declared here as samplerCube",
+        ),
+    ] {
+        let Err(errors) = shader::compile(Stage::Fragment, src) else {
+            panic!("compiled:\n{src}");
+        };
+        let text: Vec<String> = errors.iter().map(ToString::to_string).collect();
+        assert!(text.iter().any(|e| e.contains(says)), "{text:?}");
+        assert!(text.iter().any(|e| e.starts_with("line 2,")), "at line 2: {text:?}");
+    }
+}

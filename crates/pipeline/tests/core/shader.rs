@@ -61,7 +61,7 @@ fn run(
     program.set_uniforms(&mut m, uniforms);
     let bound: Vec<_> = textures
         .iter()
-        .map(|t| t.map(|t| (t, Sampler::default())))
+        .map(|t| t.map(|t| pipeline::shader::Bound::Image(t, Sampler::default())))
         .collect();
     let killed = m
         .run(&inputs, n, u64::MAX, &Bindings { textures: &bound })

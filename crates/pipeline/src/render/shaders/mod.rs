@@ -101,6 +101,7 @@ fn uniforms(
             Some(d) if !o.mesh.uvs.is_empty() => d.scale,
             _ => 0.0,
         },
+        reflectivity: o.environment.as_ref().map_or(0.0, |e| e.reflectivity),
         time,
         resolution: glam::Vec2::new(settings.width as f32, settings.height as f32),
         lens: lens(&scene.projection, settings),
@@ -119,33 +120,35 @@ fn lens(projection: &crate::camera::Projection, settings: &RenderSettings) -> [f
     [fovy, (r - l) / (t - b), near, far]
 }
 
-/// The textures a program's `sampler2D`s read and how each is sampled: the object's texture
-/// with `surface` (the settings' sampler), its bump or normal map as the built-in bump mapping
-/// reads it and its displacement map as the built-in displacement does (both bilinear,
-/// repeating, level 0). Nothing without texture coordinates.
+/// The textures a program's samplers read and how each is sampled: the object's texture with
+/// `surface` (the settings' sampler), its bump or normal map as the built-in bump mapping reads
+/// it and its displacement map as the built-in displacement does (both bilinear, repeating,
+/// level 0) — nothing of those without texture coordinates — and the cube map it mirrors.
 fn textures<'a>(
     program: &shader::Program,
     object: &'a Object,
     surface: crate::texture::Sampler,
-) -> Vec<Option<(&'a crate::texture::Texture, crate::texture::Sampler)>> {
+) -> Vec<Option<shader::Bound<'a>>> {
     use crate::texture::SurfaceDetail;
+    use shader::Bound;
     let has_uvs = !object.mesh.uvs.is_empty();
     program
         .textures
         .iter()
         .map(|name| match shader::interface::texture_slot(name)? {
-            TextureSlot::Surface => Some((object.texture.as_deref()?, surface)),
+            TextureSlot::Environment => Some(Bound::Cube(&object.environment.as_ref()?.cube)),
+            _ if !has_uvs => None,
+            TextureSlot::Surface => Some(Bound::Image(object.texture.as_deref()?, surface)),
             TextureSlot::Detail => match object.detail.as_ref()? {
                 SurfaceDetail::Bump { height: t, .. } | SurfaceDetail::Normal(t) => {
-                    Some((&**t, SurfaceDetail::MAP_SAMPLER))
+                    Some(Bound::Image(t, SurfaceDetail::MAP_SAMPLER))
                 }
             },
             TextureSlot::Displacement => object
                 .displacement
                 .as_ref()
-                .map(|d| (&*d.height, SurfaceDetail::MAP_SAMPLER)),
+                .map(|d| Bound::Image(&d.height, SurfaceDetail::MAP_SAMPLER)),
         })
-        .map(|bound| bound.filter(|_| has_uvs))
         .collect()
 }
 

@@ -401,6 +401,20 @@ impl Machine<'_> {
                             }
                         }
                     }
+                    Op::SampleCube { texture, direction } => {
+                        let cube = b.cube(*texture);
+                        for l in 0..n {
+                            let d = Vec3::new(
+                                f32::from_bits(row(direction.at, 0)[l]),
+                                f32::from_bits(row(direction.at, 1)[l]),
+                                f32::from_bits(row(direction.at, 2)[l]),
+                            );
+                            let color = cube.map_or(Vec3::ZERO, |c| c.sample(d));
+                            for (k, v) in color.extend(1.0).to_array().iter().enumerate() {
+                                out[k * LANES + l] = v.to_bits();
+                            }
+                        }
+                    }
                     Op::Fetch {
                         texture,
                         coordinate,
@@ -444,10 +458,12 @@ impl Machine<'_> {
                     }
                     Op::Size { texture, level } => {
                         let t = b.bound(*texture).map(|(t, _)| t);
+                        let face = b.cube(*texture).map(|c| &c.faces[0]);
                         for l in 0..n {
                             let k = level.map_or(0, |r| row(r, 0)[l] as usize);
                             let (w, h) = t
                                 .and_then(|t| t.levels.get(k))
+                                .or(face.filter(|_| k == 0))
                                 .map_or((0, 0), |lv| (lv.width, lv.height));
                             out[l] = w;
                             out[LANES + l] = h;

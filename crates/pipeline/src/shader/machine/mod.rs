@@ -12,7 +12,7 @@
 //! iterations in one invocation.
 
 use super::code::{Code, Place, Reg, Root, Stmt};
-use crate::texture::{Sampler, Texture};
+use crate::texture::{CubeMap, Sampler, Texture};
 
 mod eval;
 mod events;
@@ -22,19 +22,41 @@ pub use events::{Event, RunError};
 /// The most invocations one batch runs (16 quads).
 pub const LANES: usize = 64;
 
+/// What a texture slot holds.
+#[derive(Clone, Copy)]
+pub enum Bound<'a> {
+    /// A 2D texture (`sampler2D`) and how it is sampled.
+    Image(&'a Texture, Sampler),
+    /// A cube map (`samplerCube`), looked up by direction: bilinear within the face the
+    /// direction falls on, one level ([`CubeMap::sample`]).
+    Cube(&'a CubeMap),
+}
+
 /// The textures and sampler a run reads.
 #[derive(Clone, Copy)]
 pub struct Bindings<'a> {
-    /// The texture in each slot and how it is sampled (`None`: nothing bound; lookups return
+    /// What each slot holds (`None`: nothing bound, or not of the slot's kind; lookups return
     /// black).
-    pub textures: &'a [Option<(&'a Texture, Sampler)>],
+    pub textures: &'a [Option<Bound<'a>>],
 }
 
 impl<'a> Bindings<'a> {
-    /// The texture in slot `slot` and its sampler, if one is bound.
+    /// The 2D texture in slot `slot` and its sampler, if one is bound.
     #[must_use]
     pub fn bound(&self, slot: u32) -> Option<(&'a Texture, Sampler)> {
-        self.textures.get(slot as usize).copied().flatten()
+        match self.textures.get(slot as usize).copied().flatten()? {
+            Bound::Image(t, s) => Some((t, s)),
+            Bound::Cube(_) => None,
+        }
+    }
+
+    /// The cube map in slot `slot`, if one is bound.
+    #[must_use]
+    pub fn cube(&self, slot: u32) -> Option<&'a CubeMap> {
+        match self.textures.get(slot as usize).copied().flatten()? {
+            Bound::Cube(c) => Some(c),
+            Bound::Image(..) => None,
+        }
     }
 }
 
