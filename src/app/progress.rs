@@ -44,6 +44,9 @@ pub struct LessonProgress {
     /// The shadow matrix the student last ran in each exercise step that has one.
     #[serde(default)]
     pub shadow_matrix: BTreeMap<usize, String>,
+    /// The Bézier patch point the student last ran in each exercise step that has one.
+    #[serde(default)]
+    pub bezier_patch: BTreeMap<usize, String>,
 }
 
 impl LessonProgress {
@@ -54,6 +57,7 @@ impl LessonProgress {
             HookKind::DepthTest => &self.depth_test,
             HookKind::Curve => &self.curve,
             HookKind::ShadowMatrix => &self.shadow_matrix,
+            HookKind::Patch => &self.bezier_patch,
         }
     }
 
@@ -64,6 +68,7 @@ impl LessonProgress {
             HookKind::DepthTest => &mut self.depth_test,
             HookKind::Curve => &mut self.curve,
             HookKind::ShadowMatrix => &mut self.shadow_matrix,
+            HookKind::Patch => &mut self.bezier_patch,
         }
     }
 }

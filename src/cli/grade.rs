@@ -216,7 +216,8 @@ impl Unreadable {
                 format!("{name} 是指向作业文件夹之外的链接：未读取")
             }
             (Self::Nothing, Lang::En) => format!(
-                "{at} holds no shader.vert, shader.frag or function file (inside.glsl, depth_test.glsl, de_casteljau.glsl, shadow_matrix.glsl)"
+                "{at} holds no shader.vert, shader.frag or function file ({})",
+                function_files(", ")
             ),
             (Self::NotWork(why), Lang::En) => format!("{at}: {why}"),
             (Self::NotWork(why), Lang::Zh) => format!("{at}：不是 pipelens 写的作业文件（{why}）"),
@@ -227,10 +228,18 @@ impl Unreadable {
             (Self::NoWorkAt(n), Lang::En) => format!("{at} holds no code for step {n}"),
             (Self::NoWorkAt(n), Lang::Zh) => format!("{at} 中没有第 {n} 步的代码"),
             (Self::Nothing, Lang::Zh) => format!(
-                "{at} 中没有 shader.vert、shader.frag 或函数文件（inside.glsl、depth_test.glsl、de_casteljau.glsl、shadow_matrix.glsl）"
+                "{at} 中没有 shader.vert、shader.frag 或函数文件（{}）",
+                function_files("、")
             ),
         }
     }
+}
+
+/// The files a hand-in's functions are read from, `inside.glsl` …, joined by `sep`.
+fn function_files(sep: &str) -> String {
+    pipeline::shader::HookKind::ALL
+        .map(|k| format!("{}.glsl", k.key()))
+        .join(sep)
 }
 
 /// A hand-in's code for step `k` (from 0) of lesson `lesson`: a folder as the shader panel's

@@ -7,7 +7,7 @@ use pipeline::capture::FrameCapture;
 use pipeline::scene::Scene;
 use pipeline::shader::{HookKind, Step, TraceLine, Value};
 
-/// How far (in the curve's units) a student's curve point may be from pipelens' `b(t)` and
+/// How far (in the curve's units) a student's curve (or patch) point may be from pipelens' `b(t)` and
 /// still match: far below a pixel of the lesson's view (3 units across 720 pixels), far above
 /// the rounding of a correct construction in `f32`.
 pub const CURVE_TOLERANCE: f32 = 1e-4;

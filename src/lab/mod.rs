@@ -274,15 +274,23 @@ fn traced(frame: &FrameCapture) -> &[pipeline::capture::FragmentTrace] {
 }
 
 /// The student's de Casteljau against pipelens' curve, when an object runs one on a Bézier
-/// curve (`None` also when it stops with a run-time error).
+/// curve, or the student's `bezier_patch` against pipelens' surface, when an object runs one on
+/// a Bézier patch (`None` also when it stops with a run-time error).
 fn curve_difference(scene: &Scene) -> Option<CurveDifference> {
-    scene.objects.iter().find_map(|o| {
-        let hook = o.curve.as_ref()?;
-        let Some(pipeline::mesh::BuiltinMesh::Bezier { points, .. }) = o.builtin else {
-            return None;
-        };
-        hook.curve_difference(points, CURVE_TOLERANCE).ok()
-    })
+    use pipeline::mesh::BuiltinMesh;
+    scene
+        .objects
+        .iter()
+        .find_map(|o| match (&o.builtin, &o.curve, &o.patch) {
+            (Some(BuiltinMesh::Bezier { points, .. }), Some(hook), _) => {
+                hook.curve_difference(*points, CURVE_TOLERANCE).ok()
+            }
+            (Some(BuiltinMesh::BezierPatch { heights, .. }), _, Some(hook)) => {
+                let rows = pipeline::mesh::patch::control_points(heights);
+                hook.patch_difference(&rows, CURVE_TOLERANCE).ok()
+            }
+            _ => None,
+        })
 }
 
 /// The reference a lab's frame is compared with: the scene without the student's code —

@@ -1,6 +1,6 @@
 //! A student's hand-in for a lab step, as the shader panel's **Save** writes it — `shader.vert`,
-//! `shader.frag`, and `inside.glsl`, `depth_test.glsl`, `de_casteljau.glsl` or
-//! `shadow_matrix.glsl` for the functions a step runs — put in place of the step's starter and
+//! `shader.frag`, and `inside.glsl`, `depth_test.glsl`, `de_casteljau.glsl`, `shadow_matrix.glsl`
+//! or `bezier_patch.glsl` for the functions a step runs — put in place of the step's starter and
 //! checked as the app checks it. What the student did not hand in stays the starter's.
 
 use std::sync::Arc;

@@ -190,50 +190,68 @@ pub fn matrix_words(m: &MatrixMismatch, lang: Lang) -> String {
     }
 }
 
-/// The verdict on a curve in words: passed, or how many points are off, by how much, and the
-/// first one with both values.
+/// The verdict on a curve (or a Bézier patch's surface) in words: passed, or how many points
+/// are off, by how much, and the first one with both values.
 #[must_use]
 pub fn curve_verdict(c: &CurveDifference, lang: Lang) -> String {
+    use pipeline::shader::At;
     let tolerance = format!("{:e}", c.tolerance);
+    let surface = c.surface;
+    let (b, what) = match (surface, lang) {
+        (false, Lang::En) => ("b(t)", "curve"),
+        (true, Lang::En) => ("b(u, v)", "surface"),
+        (false, Lang::Zh) => ("b(t)", "曲线"),
+        (true, Lang::Zh) => ("b(u, v)", "曲面"),
+    };
     if c.passed() {
         return match lang {
             Lang::En => format!(
-                "Passed: all {} points of your curve lie within {tolerance} of pipelens' b(t).",
+                "Passed: all {} points of your {what} lie within {tolerance} of pipelens' {b}.",
                 c.total
             ),
             Lang::Zh => format!(
-                "通过：你的曲线的全部 {} 个点与 pipelens 的 b(t) 相差都不超过 {tolerance}。",
+                "通过：你的{what}的全部 {} 个点与 pipelens 的 {b} 相差都不超过 {tolerance}。",
                 c.total
             ),
         };
     }
-    let point = |p: glam::Vec2| format!("({:.4}, {:.4})", p.x, p.y);
+    let point = |p: glam::Vec3| {
+        if surface {
+            format!("({:.4}, {:.4}, {:.4})", p.x, p.y, p.z)
+        } else {
+            format!("({:.4}, {:.4})", p.x, p.y)
+        }
+    };
     let largest = if c.largest.is_finite() {
         format!("{:.4}", c.largest)
     } else {
         "∞".to_owned()
     };
-    let first = c
-        .first
-        .map_or_else(String::new, |(t, mine, theirs)| match lang {
+    let first = c.first.map_or_else(String::new, |(at, mine, theirs)| {
+        let at = match at {
+            At::T(t) => format!("t = {t:.4}"),
+            At::Uv(uv) => format!("(u, v) = ({:.4}, {:.4})", uv.x, uv.y),
+        };
+        match lang {
             Lang::En => format!(
-                " The first, t = {t:.4}: yours {}, pipelens' {}.",
+                " The first, {at}: yours {}, pipelens' {}.",
                 point(mine),
                 point(theirs)
             ),
             Lang::Zh => format!(
-                "第一个在 t = {t:.4}：你的 {}，pipelens 的 {}。",
+                "第一个在 {at}：你的 {}，pipelens 的 {}。",
                 point(mine),
                 point(theirs)
             ),
-        });
+        }
+    });
     match lang {
         Lang::En => format!(
-            "Not yet: {} of {} curve points lie within {tolerance} of pipelens' b(t) (the farthest is {largest} away).{first}",
+            "Not yet: {} of {} {what} points lie within {tolerance} of pipelens' {b} (the farthest is {largest} away).{first}",
             c.matching, c.total
         ),
         Lang::Zh => format!(
-            "还没有通过：{} 个曲线点中 {} 个与 pipelens 的 b(t) 相差不超过 {tolerance}（最远相差 {largest}）。{first}",
+            "还没有通过：{} 个{what}点中 {} 个与 pipelens 的 {b} 相差不超过 {tolerance}（最远相差 {largest}）。{first}",
             c.total, c.matching
         ),
     }

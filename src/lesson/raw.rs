@@ -56,6 +56,8 @@ pub struct RawShader {
     pub de_casteljau: Option<Spanned<String>>,
     /// `mat4 shadow_matrix(vec3 light)`, the planar shadow's projection onto `y = 0`.
     pub shadow_matrix: Option<Spanned<String>>,
+    /// `vec3 bezier_patch(vec3 p[16], float u, float v)`, a Bézier patch's surface point.
+    pub bezier_patch: Option<Spanned<String>>,
 }
 
 /// One `[[scene.figures]]` entry: an articulated model and its joint angles in degrees.

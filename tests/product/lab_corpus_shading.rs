@@ -425,6 +425,49 @@ float cone(vec3 axis, vec3 l, float cutoff_cos, float e) {
         }
     }
     return q[0];", Right),
+    // 19-bezier-surfaces: Lab: the patch by de Casteljau. The tensor product allows either
+    // order (rows in u then v, or columns in v then u) and the Bernstein form.
+    ("19-bezier-surfaces", "Lab: the patch by de Casteljau", "    vec3 q[4];
+    for (int i = 0; i < 4; i++) {
+        q[i] = de_casteljau(p[4 * i], p[4 * i + 1], p[4 * i + 2], p[4 * i + 3], v);
+    }
+    return de_casteljau(q[0], q[1], q[2], q[3], u);", Wrong(&["Not yet", "surface points", "The first, (u, v) ="])),
+    ("19-bezier-surfaces", "Lab: the patch by de Casteljau", "    return mix(mix(p[0], p[3], u), mix(p[12], p[15], u), v);", Wrong(&["Not yet", "surface points", "The first, (u, v) ="])),
+    ("19-bezier-surfaces", "Lab: the patch by de Casteljau", "    return de_casteljau(p[0], p[1], p[2], p[3], u);", Wrong(&["Not yet", "surface points", "The first, (u, v) ="])),
+    ("19-bezier-surfaces", "Lab: the patch by de Casteljau", "    vec3 q0 = de_casteljau(p[0], p[1], p[2], p[3], u);
+    vec3 q3 = de_casteljau(p[12], p[13], p[14], p[15], u);
+    return mix(q0, q3, v);", Wrong(&["Not yet", "surface points", "The first, (u, v) ="])),
+    ("19-bezier-surfaces", "Lab: the patch by de Casteljau", "    vec3 q[4];
+    for (int i = 0; i < 4; i++) {
+        q[i] = de_casteljau(p[3 * i], p[3 * i + 1], p[3 * i + 2], p[3 * i + 3], u);
+    }
+    return de_casteljau(q[0], q[1], q[2], q[3], v);", Wrong(&["Not yet", "surface points", "The first, (u, v) ="])),
+    ("19-bezier-surfaces", "Lab: the patch by de Casteljau", "    vec3 q[4];
+    for (int i = 0; i < 3; i++) {
+        q[i] = de_casteljau(p[4 * i], p[4 * i + 1], p[4 * i + 2], p[4 * i + 3], u);
+    }
+    return de_casteljau(q[0], q[1], q[2], q[3], v);", Wrong(&["Not yet", "surface points", "The first, (u, v) ="])),
+    ("19-bezier-surfaces", "Lab: the patch by de Casteljau", "    vec3 q[4];
+    for (int i = 0; i < 4; i++) {
+        q[i] = de_casteljau(p[4 * i], p[4 * i + 1], p[4 * i + 2], p[4 * i + 3], u);
+    }
+    return de_casteljau(q[0], q[1], q[2], q[3], v);", Right),
+    ("19-bezier-surfaces", "Lab: the patch by de Casteljau", "    vec3 c[4];
+    for (int j = 0; j < 4; j++) {
+        c[j] = de_casteljau(p[j], p[4 + j], p[8 + j], p[12 + j], v);
+    }
+    return de_casteljau(c[0], c[1], c[2], c[3], u);", Right),
+    ("19-bezier-surfaces", "Lab: the patch by de Casteljau", "    float bu[4] = float[4]((1.0 - u) * (1.0 - u) * (1.0 - u), 3.0 * u * (1.0 - u) * (1.0 - u),
+                           3.0 * u * u * (1.0 - u), u * u * u);
+    float bv[4] = float[4]((1.0 - v) * (1.0 - v) * (1.0 - v), 3.0 * v * (1.0 - v) * (1.0 - v),
+                           3.0 * v * v * (1.0 - v), v * v * v);
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < 4; i++) {
+        for (int j = 0; j < 4; j++) {
+            sum += bv[i] * bu[j] * p[4 * i + j];
+        }
+    }
+    return sum;", Right),
     // 24-shader-programs: Lab: the texture as k_d's colour.
     ("24-shader-programs", "Lab: the texture as k_d's colour", "    vec3 c = texture(tex, v_uv.yx).rgb;", Wrong(&["Not yet", "your `c`", "between texels"])),
     ("24-shader-programs", "Lab: the texture as k_d's colour", "    vec3 c = texture(tex, vec2(v_uv.x, 1.0 - v_uv.y)).rgb;", Wrong(&["Not yet", "your `c`", "between texels"])),

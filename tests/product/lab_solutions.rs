@@ -167,6 +167,17 @@ pub(crate) const SOLUTIONS: &[(&str, &str, &str, &str)] = &[
     color = vec4((1.0 - k) * own + specular + k * texture(environment, r).rgb, 1.0);",
     ),
     (
+        "19-bezier-surfaces",
+        "Lab: the patch by de Casteljau",
+        "    // TODO: Q_0 … Q_3 at u, then their curve at v. (As written: the corner P00 for every (u, v).)
+    return p[0];",
+        "    vec3 q0 = de_casteljau(p[0], p[1], p[2], p[3], u);
+    vec3 q1 = de_casteljau(p[4], p[5], p[6], p[7], u);
+    vec3 q2 = de_casteljau(p[8], p[9], p[10], p[11], u);
+    vec3 q3 = de_casteljau(p[12], p[13], p[14], p[15], u);
+    return de_casteljau(q0, q1, q2, q3, v);",
+    ),
+    (
         "16-planar-shadows",
         "Lab: the shadow matrix",
         "    // TODO: T(−l), P and T(l). (As written: three identities, so the shadow is the object.)",

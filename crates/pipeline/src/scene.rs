@@ -86,6 +86,9 @@ pub struct Object {
     /// The student's shadow matrix: the shadow pass projects this object's shadow with it, not
     /// with pipelens' own (see [`crate::shader::hook`]).
     pub shadow_matrix: Option<crate::shader::Hook>,
+    /// The student's Bézier patch point: a `bezier_patch` object's surface takes its points
+    /// from it, not from pipelens' own (see [`crate::shader::hook`]).
+    pub patch: Option<crate::shader::Hook>,
 }
 
 /// An object's shaders and the time their `time` uniform reads.
@@ -98,8 +101,9 @@ pub struct ObjectShader {
 }
 
 /// The code a student gives a scene: shaders for its objects, an inside test and a depth test
-/// for its rasterizer, de Casteljau for a Bézier curve (a lesson's `shader = { vertex, fragment,
-/// inside, depth_test, de_casteljau, shadow_matrix }`).
+/// for its rasterizer, de Casteljau for a Bézier curve, a shadow matrix, a Bézier patch's point
+/// (a lesson's `shader = { vertex, fragment, inside, depth_test, de_casteljau, shadow_matrix,
+/// bezier_patch }`).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct StudentCode {
     /// The vertex and fragment shaders (`None`: pipelens' own stages).
@@ -112,6 +116,8 @@ pub struct StudentCode {
     pub curve: Option<crate::shader::Hook>,
     /// The planar shadow's projection (`None`: pipelens' own).
     pub shadow_matrix: Option<crate::shader::Hook>,
+    /// A Bézier patch's point (`None`: pipelens' own).
+    pub patch: Option<crate::shader::Hook>,
 }
 
 /// Where an object or the student's code keeps its function of each kind.
@@ -127,6 +133,7 @@ macro_rules! hook_slots {
                     HookKind::DepthTest => self.depth_test.as_ref(),
                     HookKind::Curve => self.curve.as_ref(),
                     HookKind::ShadowMatrix => self.shadow_matrix.as_ref(),
+                    HookKind::Patch => self.patch.as_ref(),
                 }
             }
 
@@ -141,6 +148,7 @@ macro_rules! hook_slots {
                     HookKind::DepthTest => &mut self.depth_test,
                     HookKind::Curve => &mut self.curve,
                     HookKind::ShadowMatrix => &mut self.shadow_matrix,
+                    HookKind::Patch => &mut self.patch,
                 }
             }
         }
@@ -188,6 +196,7 @@ impl Object {
             depth_test: None,
             curve: None,
             shadow_matrix: None,
+            patch: None,
         }
     }
 
@@ -352,6 +361,7 @@ impl Scene {
             &code.depth_test,
             &code.curve,
             &code.shadow_matrix,
+            &code.patch,
         ]
         .into_iter()
         .flatten()

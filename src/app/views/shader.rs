@@ -339,6 +339,10 @@ fn hook_tip(kind: HookKind, lang: Lang) -> String {
             "The shadow pass calls it once a frame: light the point light, relative to the plane the shadow falls on, which it takes to be y = 0. Every shadow object is drawn with it in place of pipelens' M_shadow = T(l)·M_p·T(−l); any positive multiple casts the same shadow.",
             "阴影绘制每帧调用它一次：light 是点光源相对于接收阴影的平面的位置，平面取为 y = 0。每个阴影物体都用它代替 pipelens 的 M_shadow = T(l)·M_p·T(−l) 绘制；它的任何正倍数投下同样的阴影。",
         ),
+        HookKind::Patch => lang.tr(
+            "A Bézier patch's drawing calls it for every vertex of its surface grid (25 × 25 values of (u, v) from 0 to 1): p[4i + j] the control point P_ij, row i along v, column j along u. It replaces pipelens' own b(u, v) = Σ Σ B_i³(v)·B_j³(u)·P_ij; the surface keeps pipelens' exact normals.",
+            "贝塞尔曲面片的绘制对曲面网格的每个顶点调用它（(u, v) 在 0 到 1 之间取 25 × 25 个值）：p[4i + j] 是控制点 P_ij，第 i 行沿 v，第 j 列沿 u。它代替 pipelens 自己的 b(u, v) = Σ Σ B_i³(v)·B_j³(u)·P_ij；曲面仍用 pipelens 的精确法线。",
+        ),
     };
     format!("{}\n{what}", kind.signature())
 }
@@ -350,6 +354,7 @@ fn hook_label(kind: HookKind, lang: Lang) -> &'static str {
         HookKind::DepthTest => lang.tr("Depth test", "深度测试 depth_test"),
         HookKind::Curve => lang.tr("de Casteljau", "de Casteljau 算法"),
         HookKind::ShadowMatrix => lang.tr("Shadow matrix", "阴影矩阵 shadow_matrix"),
+        HookKind::Patch => lang.tr("Bézier patch", "贝塞尔曲面片 bezier_patch"),
     }
 }
 

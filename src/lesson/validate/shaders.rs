@@ -68,8 +68,9 @@ pub(in crate::lesson) fn shader(
         && r.depth_test.is_none()
         && r.de_casteljau.is_none()
         && r.shadow_matrix.is_none()
+        && r.bezier_patch.is_none()
     {
-        c.error(raw.span(), "`shader` needs a `vertex` or a `fragment` shader (a file such as \"toon.frag\", or the GLSL itself), or an `inside`, `depth_test`, `de_casteljau` or `shadow_matrix` function");
+        c.error(raw.span(), "`shader` needs a `vertex` or a `fragment` shader (a file such as \"toon.frag\", or the GLSL itself), or an `inside`, `depth_test`, `de_casteljau`, `shadow_matrix` or `bezier_patch` function");
         return None;
     }
     let vertex = r.vertex.as_ref().map(|v| source(c, v, base));
@@ -78,6 +79,7 @@ pub(in crate::lesson) fn shader(
     let depth_test = r.depth_test.as_ref().map(|v| source(c, v, base));
     let curve = r.de_casteljau.as_ref().map(|v| source(c, v, base));
     let shadow_matrix = r.shadow_matrix.as_ref().map(|v| source(c, v, base));
+    let patch = r.bezier_patch.as_ref().map(|v| source(c, v, base));
     // A stage that named a missing file has its diagnostic already.
     if [
         &vertex,
@@ -86,6 +88,7 @@ pub(in crate::lesson) fn shader(
         &depth_test,
         &curve,
         &shadow_matrix,
+        &patch,
     ]
     .iter()
     .any(|s| matches!(s, Some(None)))
@@ -139,12 +142,14 @@ pub(in crate::lesson) fn shader(
     let depth_test = hook(HookKind::DepthTest, depth_test.flatten());
     let curve = hook(HookKind::Curve, curve.flatten());
     let shadow_matrix = hook(HookKind::ShadowMatrix, shadow_matrix.flatten());
+    let patch = hook(HookKind::Patch, patch.flatten());
     ok.then_some(StudentCode {
         shader,
         inside,
         depth_test,
         curve,
         shadow_matrix,
+        patch,
     })
 }
 
@@ -155,6 +160,7 @@ fn hook_name(kind: HookKind) -> &'static str {
         HookKind::DepthTest => "depth test",
         HookKind::Curve => "de Casteljau",
         HookKind::ShadowMatrix => "shadow matrix",
+        HookKind::Patch => "Bézier patch",
     }
 }
 

@@ -25,19 +25,55 @@ pub fn control_points(heights: &[[f32; 4]; 4]) -> [[Vec3; 4]; 4] {
     std::array::from_fn(|i| std::array::from_fn(|j| Vec3::new(at(j), heights[i][j], at(i))))
 }
 
+/// The `(u, v)` of the surface grid's vertices, row by row (v), each row along u: 25 × 25.
+#[must_use]
+pub fn patch_parameters() -> Vec<Vec2> {
+    (0..=GRID)
+        .flat_map(|a| (0..=GRID).map(move |c| Vec2::new(c as f32, a as f32) / GRID as f32))
+        .collect()
+}
+
+/// Where a patch's drawing takes its surface points: the points of the patch with control
+/// points `rows` at the given `(u, v)`s, or why there are none.
+pub type PatchPoints<'a> = dyn Fn(&[[Vec3; 4]; 4], &[Vec2]) -> Result<Vec<Vec3>, String> + 'a;
+
 /// Builds the patch: the surface `b(u, v)` on a 24×24 grid with its exact normals, the control
 /// net (white bars, a cube at each control point) and, as `levels` asks, the construction at
 /// `(u, v)`: 1 adds each row's curve in u and its point `Q_i` (green); 2 adds the curve in v
 /// through the `Q_i`, its control polygon (blue) and `b(u, v)` (yellow), labelled.
 #[must_use]
 pub fn patch_mesh(heights: &[[f32; 4]; 4], u: f32, v: f32, levels: u8) -> Mesh {
+    let own = |rows: &[[Vec3; 4]; 4], uvs: &[Vec2]| {
+        Ok(uvs
+            .iter()
+            .map(|uv| bezier::patch_point(rows, uv.x, uv.y).1)
+            .collect())
+    };
+    match patch_mesh_from(heights, u, v, levels, &own) {
+        Ok(m) => m,
+        Err(never) => unreachable!("pipelens' own points: {never}"),
+    }
+}
+
+/// [`patch_mesh`] with the surface's points (and the construction's `b(u, v)`) from `points`:
+/// the student's `bezier_patch`, say. The normals stay the patch's exact ones.
+///
+/// # Errors
+/// Why `points` gave none (a run-time error of the student's function).
+pub fn patch_mesh_from(
+    heights: &[[f32; 4]; 4],
+    u: f32,
+    v: f32,
+    levels: u8,
+    points: &PatchPoints<'_>,
+) -> Result<Mesh, String> {
     let (u, v) = (u.clamp(0.0, 1.0), v.clamp(0.0, 1.0));
     let rows = control_points(heights);
     let mut m = Mesh {
         name: "bezier_patch".into(),
         ..Mesh::default()
     };
-    surface(&mut m, &rows);
+    surface(&mut m, &rows, &points(&rows, &patch_parameters())?);
     for i in 0..4 {
         for j in 0..4 {
             cube(&mut m, rows[i][j], 0.05, NET);
@@ -60,7 +96,11 @@ pub fn patch_mesh(heights: &[[f32; 4]; 4], u: f32, v: f32, levels: u8) -> Mesh {
             text: text.into(),
         });
     }
-    let (q, b, _) = bezier::patch_point(&rows, u, v);
+    let (q, _, _) = bezier::patch_point(&rows, u, v);
+    let b = points(&rows, &[Vec2::new(u, v)])?
+        .first()
+        .copied()
+        .unwrap_or(Vec3::ZERO);
     if levels >= 1 {
         for (row, qi) in rows.iter().zip(q) {
             curve(&mut m, row, 0.01, ROWS);
@@ -78,21 +118,19 @@ pub fn patch_mesh(heights: &[[f32; 4]; 4], u: f32, v: f32, levels: u8) -> Mesh {
             text: format!("b(u, v), u = {u:.2}, v = {v:.2}"),
         });
     }
-    m
+    Ok(m)
 }
 
-/// The surface on a grid, each vertex with the patch's exact normal.
-fn surface(m: &mut Mesh, rows: &[[Vec3; 4]; 4]) {
+/// The surface on a grid: the vertex at [`patch_parameters`]' `k`-th `(u, v)` at `points[k]`,
+/// with the patch's exact normal there.
+fn surface(m: &mut Mesh, rows: &[[Vec3; 4]; 4], points: &[Vec3]) {
     let base = m.positions.len() as u32;
-    for a in 0..=GRID {
-        for c in 0..=GRID {
-            let (u, v) = (c as f32 / GRID as f32, a as f32 / GRID as f32);
-            let (_, p, n) = bezier::patch_point(rows, u, v);
-            m.positions.push(p);
-            m.normals.push(n);
-            m.uvs.push(Vec2::new(u, v));
-            m.colors.push(SURFACE);
-        }
+    for (uv, &p) in patch_parameters().into_iter().zip(points) {
+        let (_, _, n) = bezier::patch_point(rows, uv.x, uv.y);
+        m.positions.push(p);
+        m.normals.push(n);
+        m.uvs.push(uv);
+        m.colors.push(SURFACE);
     }
     let w = GRID as u32 + 1;
     for a in 0..GRID as u32 {

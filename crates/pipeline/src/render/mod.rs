@@ -158,26 +158,48 @@ pub fn render_reusing(
 }
 
 /// The scene with each Bézier curve that carries the student's de Casteljau drawn from the
-/// student's curve points; `None` when no object carries one.
+/// student's curve points, and each Bézier patch that carries the student's `bezier_patch` from
+/// the student's surface points; `None` when no object carries either.
 ///
 /// # Errors
 /// A run-time error of the student's function.
 fn with_student_curves(scene: &Scene) -> Result<Option<Scene>, RenderError> {
     use crate::mesh::BuiltinMesh;
-    if !scene.objects.iter().any(|o| o.curve.is_some()) {
+    if !scene
+        .objects
+        .iter()
+        .any(|o| o.curve.is_some() || o.patch.is_some())
+    {
         return Ok(None);
     }
     let mut drawn = scene.clone();
     for o in &mut drawn.objects {
-        let Some(hook) = o.curve.take() else {
-            continue;
+        let mesh = match (o.curve.take(), o.patch.take(), &o.builtin) {
+            (Some(hook), _, Some(BuiltinMesh::Bezier { points, t, levels })) => {
+                let curve = |ts: &[f32]| hook.curve_points(*points, ts).map_err(|e| e.to_string());
+                crate::mesh::construction_mesh_from(*points, *t, *levels, &curve).map_err(|e| {
+                    RenderError::Invalid(vec![format!("de Casteljau of {}, {e}", o.name)])
+                })?
+            }
+            (
+                _,
+                Some(hook),
+                Some(BuiltinMesh::BezierPatch {
+                    heights,
+                    u,
+                    v,
+                    levels,
+                }),
+            ) => {
+                let points = |rows: &[[glam::Vec3; 4]; 4], uvs: &[glam::Vec2]| {
+                    hook.patch_points(rows, uvs).map_err(|e| e.to_string())
+                };
+                crate::mesh::patch::patch_mesh_from(heights, *u, *v, *levels, &points).map_err(
+                    |e| RenderError::Invalid(vec![format!("bezier_patch of {}, {e}", o.name)]),
+                )?
+            }
+            _ => continue,
         };
-        let Some(BuiltinMesh::Bezier { points, t, levels }) = o.builtin else {
-            continue;
-        };
-        let curve = |ts: &[f32]| hook.curve_points(points, ts).map_err(|e| e.to_string());
-        let mesh = crate::mesh::construction_mesh_from(points, t, levels, &curve)
-            .map_err(|e| RenderError::Invalid(vec![format!("de Casteljau of {}, {e}", o.name)]))?;
         o.mesh = std::sync::Arc::new(mesh);
     }
     Ok(Some(drawn))

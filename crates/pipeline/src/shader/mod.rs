@@ -34,8 +34,8 @@ use naga::{Binding, BuiltIn, Interpolation, TypeInner};
 
 pub use complaint::Complaint;
 pub use hook::{
-    CURVE_SIGNATURE, CurveDifference, DEPTH_SIGNATURE, Hook, HookKind, INSIDE_SIGNATURE,
-    InsideTest, compile_hook, compile_inside,
+    At, CURVE_SIGNATURE, CurveDifference, DEPTH_SIGNATURE, Hook, HookKind, INSIDE_SIGNATURE,
+    InsideTest, PATCH_SIGNATURE, compile_hook, compile_inside,
 };
 pub use interface::Uniforms;
 pub use link::{

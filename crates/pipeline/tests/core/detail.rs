@@ -316,8 +316,13 @@ fn a_shader_s_sampler_cube_reads_the_face_a_direction_points_at() {
     let mut m = p.machine();
     p.set_uniforms(&mut m, &Uniforms::default());
     let bound = [Some(Bound::Cube(&cube))];
-    m.run(&[&rows], dirs.len(), 0b11_1111, &Bindings { textures: &bound })
-        .expect("runs");
+    m.run(
+        &[&rows],
+        dirs.len(),
+        0b11_1111,
+        &Bindings { textures: &bound },
+    )
+    .expect("runs");
     let out = m.result();
     for (l, want) in colors.iter().enumerate() {
         let got = Vec3::new(
@@ -342,6 +347,9 @@ fn a_shader_s_sampler_cube_reads_the_face_a_direction_points_at() {
         };
         let text: Vec<String> = errors.iter().map(ToString::to_string).collect();
         assert!(text.iter().any(|e| e.contains(says)), "{text:?}");
-        assert!(text.iter().any(|e| e.starts_with("line 2,")), "at line 2: {text:?}");
+        assert!(
+            text.iter().any(|e| e.starts_with("line 2,")),
+            "at line 2: {text:?}"
+        );
     }
 }

@@ -217,7 +217,10 @@ fn de_casteljau_in_glsl_draws_pipelens_curve_and_a_straight_line_does_not() {
     assert!(!d.passed());
     // The ends agree (b(0) = P0, b(1) = P3); the first point off is the second.
     assert_eq!(d.matching, 2);
-    assert_eq!(d.first.map(|f| f.0), Some(1.0 / 160.0));
+    assert_eq!(
+        d.first.map(|f| f.0),
+        Some(pipeline::shader::At::T(1.0 / 160.0))
+    );
 
     // The frame: the curve object drawn with the student's points, pixel for pixel.
     let curve = BuiltinMesh::Bezier {
@@ -273,6 +276,111 @@ fn a_shadow_matrix_in_glsl_is_angels() {
             "{light}: {mine} against {theirs}"
         );
     }
+}
+
+/// A Bézier patch by de Casteljau in u, then in v, written in GLSL (lesson 19's lab).
+const PATCH: &str = "vec3 curve(vec3 a, vec3 b, vec3 c, vec3 d, float t) {
+    vec3 ab = mix(a, b, t);
+    vec3 bc = mix(b, c, t);
+    vec3 cd = mix(c, d, t);
+    return mix(mix(ab, bc, t), mix(bc, cd, t), t);
+}
+vec3 bezier_patch(vec3 p[16], float u, float v) {
+    vec3 q[4];
+    for (int i = 0; i < 4; i++) {
+        q[i] = curve(p[4 * i], p[4 * i + 1], p[4 * i + 2], p[4 * i + 3], u);
+    }
+    return curve(q[0], q[1], q[2], q[3], v);
+}";
+
+/// The student's patch is pipelens' `b(u, v)` at every grid vertex and at points worked out by
+/// hand; a patch with u and v swapped is not, and its frame differs; a function that divides by
+/// zero draws (NaN vertices are dropped) and is reported, not a panic.
+#[test]
+fn a_bezier_patch_in_glsl_is_pipelens_surface() {
+    use glam::Vec3;
+    use pipeline::mesh::BuiltinMesh;
+    use pipeline::mesh::patch::control_points;
+    use pipeline::shader::{At, HookKind, compile_hook};
+    let heights = [
+        [0.0, 0.3, 0.3, 0.0],
+        [0.2, 1.2, 0.8, 0.1],
+        [0.1, 0.9, 1.1, 0.2],
+        [0.0, 0.2, 0.3, 0.0],
+    ];
+    let rows = control_points(&heights);
+    let hook = compile_hook(HookKind::Patch, PATCH).expect("compiles");
+    let d = hook.patch_difference(&rows, 1e-5).expect("runs");
+    assert!(d.passed() && d.surface, "{d:?}");
+    assert_eq!(d.total, 25 * 25);
+    // By hand. b(1/24, 0) is on row 0 (heights 0, 0.3, 0.3, 0, x evenly spaced from −1.2 to
+    // 1.2): x = −1.2 + 2.4/24 = −1.1, y = 0.9·t·(1 − t) = 0.9·(1/24)·(23/24).
+    // b(½, ½): the weights B³(½) = (1, 3, 3, 1)/8 in each direction: rows give 0.225, 0.7875,
+    // 0.7875, 0.1875, and those give 0.6421875; x = z = 0 by symmetry.
+    let got = hook
+        .patch_points(&rows, &[Vec2::new(1.0 / 24.0, 0.0), Vec2::splat(0.5)])
+        .expect("runs");
+    let want = [
+        Vec3::new(-1.1, 0.9 * (1.0 / 24.0) * (23.0 / 24.0), -1.2),
+        Vec3::new(0.0, 0.642_187_5, 0.0),
+    ];
+    for (g, w) in got.iter().zip(want) {
+        assert!(g.distance(w) < 1e-6, "{g} != {w}");
+    }
+
+    let swapped = PATCH.replace(
+        "u);\n    }\n    return curve(q[0], q[1], q[2], q[3], v);",
+        "v);\n    }\n    return curve(q[0], q[1], q[2], q[3], u);",
+    );
+    assert_ne!(swapped, PATCH);
+    let swapped = compile_hook(HookKind::Patch, &swapped).expect("compiles");
+    let d = swapped.patch_difference(&rows, 1e-5).expect("runs");
+    assert!(!d.passed());
+    // The first row (v = 0) of the grid: b(1/24, 0) is the first point off (b(0, 0) = P00
+    // either way).
+    assert_eq!(
+        d.first.map(|f| f.0),
+        Some(At::Uv(Vec2::new(1.0 / 24.0, 0.0)))
+    );
+
+    // The frame: the patch drawn with the student's points.
+    let patch = BuiltinMesh::BezierPatch {
+        heights,
+        u: 0.5,
+        v: 0.5,
+        levels: 0,
+    };
+    let mut object = pipeline::scene::Object::new("patch", patch.build());
+    object.builtin = Some(patch);
+    let (mut scene, mut settings) = pixel_scene(64, 48, &[]);
+    settings.depth_test = pipeline::raster::DepthTest::Less;
+    settings.shading = pipeline::shade::Frequency::Phong;
+    scene.lights = vec![pipeline::light::Light::Directional {
+        direction: Vec3::new(-0.3, -1.0, -0.5),
+        intensity: Vec3::ONE,
+    }];
+    scene.camera.eye = Vec3::new(1.8, 4.4, 3.3);
+    scene.camera.at = Vec3::ZERO;
+    scene.projection = pipeline::camera::Projection::Ortho {
+        left: -2.0,
+        right: 2.0,
+        bottom: -1.5,
+        top: 1.5,
+        near: 0.1,
+        far: 20.0,
+    };
+    scene.objects = vec![object];
+    let own = render(&scene, &settings);
+    scene.objects[0].patch = Some(swapped);
+    let wrong = render(&scene, &settings);
+    assert!(own.difference(&wrong, 1.0).is_some_and(|d| !d.passed()));
+    scene.objects[0].patch = Some(hook);
+    let mine = render(&scene, &settings);
+    assert!(own.difference(&mine, 1.0).is_some_and(|d| d.passed()));
+    let nan = "vec3 bezier_patch(vec3 p[16], float u, float v) {\n    return p[0] / (u - u);\n}\n";
+    scene.objects[0].patch = Some(compile_hook(HookKind::Patch, nan).expect("compiles"));
+    let drawn = pipeline::render(&scene, &settings).expect("NaN points draw nothing, no panic");
+    assert!(own.difference(&drawn, 1.0).is_some_and(|d| !d.passed()));
 }
 
 /// A local initialised with a constant vector or matrix holds it from the function's start (the

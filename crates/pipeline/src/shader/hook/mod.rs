@@ -37,6 +37,18 @@
 //! and those up to the construction's `t`), the control points in the object's plane; it
 //! replaces pipelens' own curve point `b(t) = Σ B_i³(t)·P_i`.
 //!
+//! A bicubic Bézier patch's point (GAMES101 lecture 12: de Casteljau in u, then in v),
+//! [`HookKind::Patch`]:
+//!
+//! ```glsl
+//! vec3 bezier_patch(vec3 p[16], float u, float v)
+//! ```
+//!
+//! called for every vertex of the surface grid a `bezier_patch` object draws (25 × 25 values of
+//! `(u, v)`, and the construction's point), `p[4i + j]` the control point `P_ij` (row `i` along
+//! v, column `j` along u); it replaces pipelens' own point `b(u, v) = Σ Σ B_i³(v)·B_j³(u)·P_ij`.
+//! The surface keeps pipelens' exact normals: the function places the points.
+//!
 //! The planar shadow matrix (Angel's shadow projection), [`HookKind::ShadowMatrix`]:
 //!
 //! ```glsl
@@ -53,6 +65,10 @@
 
 use std::sync::Arc;
 
+mod compare;
+
+pub use compare::{At, CurveDifference};
+
 use super::{Bindings, LANES, Program, ShaderError, Stage, compile};
 
 /// The signature the rasterizer calls for the inside test, as the student writes it.
@@ -63,6 +79,9 @@ pub const DEPTH_SIGNATURE: &str = "bool depth_test(float z, float stored)";
 
 /// The signature a Bézier curve's drawing calls for each curve point, as the student writes it.
 pub const CURVE_SIGNATURE: &str = "vec2 de_casteljau(vec2 p0, vec2 p1, vec2 p2, vec2 p3, float t)";
+
+/// The signature a Bézier patch's drawing calls for each surface point, as the student writes it.
+pub const PATCH_SIGNATURE: &str = "vec3 bezier_patch(vec3 p[16], float u, float v)";
 
 /// The signature the shadow pass calls for its projection, as the student writes it.
 pub const SHADOW_SIGNATURE: &str = "mat4 shadow_matrix(vec3 light)";
@@ -78,15 +97,18 @@ pub enum HookKind {
     Curve,
     /// `mat4 shadow_matrix(vec3 light)`: the planar shadow's projection onto `y = 0`.
     ShadowMatrix,
+    /// `vec3 bezier_patch(vec3 p[16], float u, float v)`: a Bézier patch's point.
+    Patch,
 }
 
 impl HookKind {
     /// Every kind, in the order the shader panel shows their tabs.
-    pub const ALL: [Self; 4] = [
+    pub const ALL: [Self; 5] = [
         Self::Inside,
         Self::DepthTest,
         Self::Curve,
         Self::ShadowMatrix,
+        Self::Patch,
     ];
 
     /// The signature the pipeline calls.
@@ -97,6 +119,7 @@ impl HookKind {
             Self::DepthTest => DEPTH_SIGNATURE,
             Self::Curve => CURVE_SIGNATURE,
             Self::ShadowMatrix => SHADOW_SIGNATURE,
+            Self::Patch => PATCH_SIGNATURE,
         }
     }
 
@@ -108,6 +131,7 @@ impl HookKind {
             Self::DepthTest => "depth_test",
             Self::Curve => "de_casteljau",
             Self::ShadowMatrix => "shadow_matrix",
+            Self::Patch => "bezier_patch",
         }
     }
 
@@ -118,6 +142,10 @@ impl HookKind {
             Self::DepthTest => ("the rasterizer", "for every sample a triangle covers"),
             Self::Curve => ("a Bézier curve's drawing", "for every point of the curve"),
             Self::ShadowMatrix => ("the shadow pass", "once a frame, for the plane y = 0"),
+            Self::Patch => (
+                "a Bézier patch's drawing",
+                "for every vertex of the surface grid",
+            ),
         }
     }
 
@@ -134,6 +162,25 @@ impl HookKind {
                 "pipelens_t",
             ],
             Self::ShadowMatrix => &["pipelens_light", "pipelens_column"],
+            Self::Patch => &[
+                "pipelens_p0",
+                "pipelens_p1",
+                "pipelens_p2",
+                "pipelens_p3",
+                "pipelens_p4",
+                "pipelens_p5",
+                "pipelens_p6",
+                "pipelens_p7",
+                "pipelens_p8",
+                "pipelens_p9",
+                "pipelens_p10",
+                "pipelens_p11",
+                "pipelens_p12",
+                "pipelens_p13",
+                "pipelens_p14",
+                "pipelens_p15",
+                "pipelens_uv",
+            ],
         }
     }
 
@@ -188,6 +235,35 @@ void main() {
 }
 "
             }
+            Self::Patch => {
+                "
+in vec3 pipelens_p0;
+in vec3 pipelens_p1;
+in vec3 pipelens_p2;
+in vec3 pipelens_p3;
+in vec3 pipelens_p4;
+in vec3 pipelens_p5;
+in vec3 pipelens_p6;
+in vec3 pipelens_p7;
+in vec3 pipelens_p8;
+in vec3 pipelens_p9;
+in vec3 pipelens_p10;
+in vec3 pipelens_p11;
+in vec3 pipelens_p12;
+in vec3 pipelens_p13;
+in vec3 pipelens_p14;
+in vec3 pipelens_p15;
+in vec2 pipelens_uv;
+out vec4 pipelens_answer;
+void main() {
+    vec3 p[16] = vec3[16](pipelens_p0, pipelens_p1, pipelens_p2, pipelens_p3,
+                          pipelens_p4, pipelens_p5, pipelens_p6, pipelens_p7,
+                          pipelens_p8, pipelens_p9, pipelens_p10, pipelens_p11,
+                          pipelens_p12, pipelens_p13, pipelens_p14, pipelens_p15);
+    pipelens_answer = vec4(bezier_patch(p, pipelens_uv.x, pipelens_uv.y), 1.0);
+}
+"
+            }
         }
     }
 }
@@ -205,29 +281,6 @@ pub struct Hook {
 
 /// The student's inside test.
 pub type InsideTest = Hook;
-
-/// A student's curve compared with pipelens' own, point by point.
-#[derive(Clone, Debug, PartialEq)]
-pub struct CurveDifference {
-    /// Points within the tolerance of pipelens'.
-    pub matching: usize,
-    /// Points compared.
-    pub total: usize,
-    /// The largest distance from pipelens' point.
-    pub largest: f32,
-    /// The first point that does not match: `t`, the student's point and pipelens'.
-    pub first: Option<(f32, glam::Vec2, glam::Vec2)>,
-    /// The tolerance used.
-    pub tolerance: f32,
-}
-
-impl CurveDifference {
-    /// Whether every point matches.
-    #[must_use]
-    pub fn passed(&self) -> bool {
-        self.matching == self.total
-    }
-}
 
 impl PartialEq for Hook {
     /// Two tests are the same when their sources are.
@@ -354,27 +407,62 @@ impl Hook {
         tolerance: f32,
     ) -> Result<CurveDifference, ShaderError> {
         let ts = crate::mesh::curve_parameters(1.0);
-        let mine = self.curve_points(points, &ts)?;
-        let mut d = CurveDifference {
-            matching: 0,
-            total: ts.len(),
-            largest: 0.0,
-            first: None,
-            tolerance,
-        };
-        for (&t, &p) in ts.iter().zip(&mine) {
-            let reference = crate::bezier::point(&points, t);
-            // NaN (a division by zero, say) is never within the tolerance.
-            let off = p.distance(reference);
-            let off = if off.is_nan() { f32::INFINITY } else { off };
-            d.largest = d.largest.max(off);
-            if off <= tolerance {
-                d.matching += 1;
-            } else if d.first.is_none() {
-                d.first = Some((t, p, reference));
+        let flat = |p: glam::Vec2| p.extend(0.0);
+        let mine: Vec<_> = self
+            .curve_points(points, &ts)?
+            .into_iter()
+            .map(flat)
+            .collect();
+        let reference: Vec<_> = ts
+            .iter()
+            .map(|&t| flat(crate::bezier::point(&points, t)))
+            .collect();
+        let at: Vec<At> = ts.iter().map(|&t| At::T(t)).collect();
+        Ok(CurveDifference::between(&at, &mine, &reference, tolerance))
+    }
+
+    /// The patch's point at each of `uvs`, the control points `rows` (`rows[i][j]` = `P_ij`),
+    /// in batches.
+    ///
+    /// # Errors
+    /// A run-time error, at its line in the student's source.
+    pub fn patch_points(
+        &self,
+        rows: &[[glam::Vec3; 4]; 4],
+        uvs: &[glam::Vec2],
+    ) -> Result<Vec<glam::Vec3>, ShaderError> {
+        let answers = self.answers(uvs.len(), |k| {
+            let mut args = [[0.0; 3]; 17];
+            for (arg, p) in args.iter_mut().zip(rows.iter().flatten()) {
+                *arg = p.to_array();
             }
-        }
-        Ok(d)
+            args[16] = [uvs[k].x, uvs[k].y, 0.0];
+            args
+        })?;
+        Ok(answers
+            .iter()
+            .map(|v| glam::Vec3::new(v[0], v[1], v[2]))
+            .collect())
+    }
+
+    /// The student's patch against pipelens' own `b(u, v)` at the surface grid's vertices: a
+    /// point matches when it is within `tolerance` of pipelens' point.
+    ///
+    /// # Errors
+    /// A run-time error, at its line in the student's source.
+    pub fn patch_difference(
+        &self,
+        rows: &[[glam::Vec3; 4]; 4],
+        tolerance: f32,
+    ) -> Result<CurveDifference, ShaderError> {
+        let uvs = crate::mesh::patch::patch_parameters();
+        let mine = self.patch_points(rows, &uvs)?;
+        let reference: Vec<_> = uvs
+            .iter()
+            .map(|uv| crate::bezier::patch_point(rows, uv.x, uv.y).1)
+            .collect();
+        let at: Vec<At> = uvs.iter().map(|&uv| At::Uv(uv)).collect();
+        Ok(CurveDifference::between(&at, &mine, &reference, tolerance))
     }
 
     /// The student's shadow matrix for the point light `light` (relative to the plane `y = 0`):
@@ -393,12 +481,12 @@ impl Hook {
     }
 
     /// The function's answer (the caller's output, four components) for `n` calls, call `k`'s
-    /// arguments `args(k)` (each of one to three floats, in the signature's order), 64 calls a
-    /// batch.
-    fn answers(
+    /// arguments `args(k)` (each of one to three floats, in the caller's inputs' order), 64
+    /// calls a batch.
+    fn answers<const N: usize>(
         &self,
         n: usize,
-        args: impl Fn(usize) -> [[f32; 3]; 5],
+        args: impl Fn(usize) -> [[f32; 3]; N],
     ) -> Result<Vec<[f32; 4]>, ShaderError> {
         let program = &*self.program;
         let mut machine = program.machine();
