@@ -28,6 +28,16 @@ COVERAGE_MAX = 0          # differing pixels allowed (1 and 4 samples: the same 
 DEPTH_MAX = 1e-5          # |Δz_w|, float on both sides
 COLOR_TOL = 2 / 255       # per channel
 COLOR_SHARE = 0.999       # share of covered pixels within COLOR_TOL
+# A mirror (mirror.frag) magnifies the renderers' last-bit differences of the interpolated
+# normal: the room's grid lines are about a texel wide, so a reflected direction off by 1e-3
+# moves a pixel's lookup across a line's edge. Measured on Spot at pixel (366, 135): pipelens'
+# colour is GL's cube map formula applied to its own r with the exported faces to 1/255
+# (0.915, 0.880, 0.708); r moved by 1e-3 gives (0.900, 0.848, 0.601), llvmpipe has
+# (0.894, 0.835, 0.557). So the mirror cases are held to the same 2/255 on 97% of covered
+# pixels (97.8–99.0% measured) and to a mean difference under 1/255 — a face swapped, mirrored
+# or turned would miss both by far.
+COLOR_SHARE_MIRROR = 0.97
+COLOR_MEAN_MIRROR = 1.0   # in 8-bit steps
 
 MEAN_DEPTH_FS = """#version 330
 uniform sampler2DMS depth_ms; uniform int samples;
@@ -52,6 +62,8 @@ def scene_toml(mesh, texture, size, samples, ka, shaders=None):
            f"material = {{ ka = {ka}, kd = {1.0 if texture else 0.7}, ks = 0.5, shininess = 64 }}"]
     if texture:
         obj.append(f'texture = "{texture}"')
+    if is_mirror(shaders):
+        obj.append('environment = { cube = "room", reflectivity = 1.0 }')
     if shaders:
         obj.append(f'shader = {{ vertex = "{shaders[0]}", fragment = "{shaders[1]}" }}')
     return f"""[scene.camera]
@@ -78,6 +90,11 @@ kind = "point"
 position = [4.0, 4.0, 4.0]
 [[scene.objects]]
 """ + "\n".join(obj) + "\n"
+
+
+def is_mirror(shaders):
+    """Whether the case's fragment shader reads the cube map (mirror.frag)."""
+    return bool(shaders) and os.path.basename(shaders[1]) == "mirror.frag"
 
 
 def fit_f32(p):
@@ -117,8 +134,9 @@ class Peer:
             self.programs[shaders] = self.ctx.program(vertex_shader=vs, fragment_shader=fs)
         return self.programs[shaders]
 
-    def draw(self, obj, texture, size, samples, model, view, proj, ka, shaders=None):
-        """Colour (h×w×3 uint8, image rows), mean sample depth and covered samples (h×w)."""
+    def draw(self, obj, texture, size, samples, model, view, proj, ka, shaders=None, cube=None):
+        """Colour (h×w×3 uint8, image rows), mean sample depth and covered samples (h×w).
+        `cube`: the folder of pipelens' export whose cube0_+x.png … the mirror reflects."""
         gl, ctx = self.gl, self.ctx
         prog = self.program(shaders)
         w, h = size
@@ -144,6 +162,18 @@ class Peer:
             tex = ctx.texture(img.size, 4, img.tobytes())
             tex.build_mipmaps(); tex.filter = (gl.LINEAR_MIPMAP_LINEAR, gl.LINEAR)
             tex.use(0); put("tex", 0)
+        bound = []
+        if cube:
+            # The faces in GL's order +x, −x, +y, −y, +z, −z, each image's top row first: the
+            # layout glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + i) takes (tc = −y on the
+            # side faces). Bilinear, no mipmaps, clamped at each face's edges.
+            faces = [Image.open(os.path.join(cube, f"cube0_{f}.png")).convert("RGBA")
+                     for f in ("+x", "-x", "+y", "-y", "+z", "-z")]
+            cube_tex = ctx.texture_cube(faces[0].size, 4, b"".join(f.tobytes() for f in faces))
+            sampler = ctx.sampler(texture=cube_tex, filter=(gl.LINEAR, gl.LINEAR),
+                                  repeat_x=False, repeat_y=False, repeat_z=False)
+            sampler.use(1); cube_tex.use(1); put("environment", 1)
+            bound = [sampler, cube_tex]
         # An attribute the shader does not read is left out of the layout (skip_errors).
         vao = ctx.vertex_array(prog, [(vbo, "3f 3f 2f", "in_pos", "in_nrm", "in_uv")], skip_errors=True)
         n = max(samples, 1)
@@ -169,7 +199,7 @@ class Peer:
             z = np.frombuffer(fbo.read(components=1, attachment=-1, dtype="f4"), np.float32).reshape(h, w)
             covered = (z < 1.0).astype(np.int32)
         ctx.finish()
-        for o in (fbo, color, depth, vao):
+        for o in (fbo, color, depth, vao, *bound):
             o.release()
         return rgb[::-1], z[::-1], covered[::-1]
 
@@ -201,7 +231,8 @@ def run_case(pipelens, peer, work, case, size, samples):
     cap = json.load(open(os.path.join(out, "capture.json")))
     model = matrix(cap, "models")
     view, proj = matrix(cap, "view"), matrix(cap, "projection")
-    rgb_p, z_p, cov_p = peer.draw(mesh, texture, size, samples, model, view, proj, ka, shaders)
+    rgb_p, z_p, cov_p = peer.draw(mesh, texture, size, samples, model, view, proj, ka, shaders,
+                                  cube=out if is_mirror(shaders) else None)
     rgb_l = np.asarray(Image.open(os.path.join(out, "color.png")).convert("RGB"))
     z_l = read_pfm(os.path.join(out, "depth.pfm"))
     cov_l = np.rint(np.asarray(Image.open(os.path.join(out, "coverage.png")).convert("L"), dtype=np.float64)
@@ -213,10 +244,15 @@ def run_case(pipelens, peer, work, case, size, samples):
     depth_max = float(dz.max()) if dz.size else 0.0
     dc = np.abs(rgb_l.astype(np.int32) - rgb_p.astype(np.int32)).max(axis=2)[cov_l.astype(bool) | cov_p.astype(bool)]
     share = float((dc <= 2).mean()) if dc.size else 1.0
-    ok = coverage_diff <= COVERAGE_MAX and depth_max <= DEPTH_MAX and share >= COLOR_SHARE
+    mean = float(dc.mean()) if dc.size else 0.0
+    if is_mirror(shaders):
+        colour_ok = share >= COLOR_SHARE_MIRROR and mean <= COLOR_MEAN_MIRROR
+    else:
+        colour_ok = share >= COLOR_SHARE
+    ok = coverage_diff <= COVERAGE_MAX and depth_max <= DEPTH_MAX and colour_ok
     return dict(case=name, size=f"{size[0]}×{size[1]}", samples=samples, covered=int(both.sum()),
                 coverage_diff=coverage_diff, depth_max=depth_max, color_share=share,
-                color_max=int(dc.max()) if dc.size else 0, ok=ok)
+                color_max=int(dc.max()) if dc.size else 0, color_mean=mean, ok=ok)
 
 
 def main():
@@ -246,7 +282,8 @@ def main():
                               ("toon.frag", "toon", (bunny, spot)),
                               ("textured.frag", "texture() minified", (spot,)),
                               ("qualifiers.frag", "noperspective/flat", (bunny, spot)),
-                              ("checker.frag", "checker discard", (bunny, spot))):
+                              ("checker.frag", "checker discard", (bunny, spot)),
+                              ("mirror.frag", "mirror samplerCube", (bunny, spot))):
         pair = (os.path.join(here, "qualifiers.vert"), os.path.join(here, fs)) if fs == "qualifiers.frag" else lit(fs)
         for mesh in meshes:
             texture = spot_tex if fs == "textured.frag" else None
@@ -272,8 +309,9 @@ def compare(a, peer, work, cases, shader_cases):
     rows = []
     print(f"pipelens vs {peer.renderer}; bounds: coverage differing pixels ≤ {COVERAGE_MAX}, "
           f"|Δz_w| ≤ {DEPTH_MAX:g} (pixels whose samples are all covered), "
-          f"colour within 2/255 on ≥ {COLOR_SHARE:.1%} of covered pixels")
-    head = f"| {'case':<34} | {'size':>9} | samples | covered px | coverage ≠ | max Δz_w    | colour ≤ 2/255 | max Δ | |"
+          f"colour within 2/255 on ≥ {COLOR_SHARE:.1%} of covered pixels (a mirror: on "
+          f"≥ {COLOR_SHARE_MIRROR:.0%}, mean Δ ≤ {COLOR_MEAN_MIRROR:g}/255)")
+    head = f"| {'case':<34} | {'size':>9} | samples | covered px | coverage ≠ | max Δz_w    | colour ≤ 2/255 | max Δ | mean Δ | |"
     print(head); print("|" + "|".join("-" * (len(c)) for c in head.split("|")[1:-1]) + "|")
     runs = [(c, size, samples) for c in cases for size in ((800, 600), (1280, 720)) for samples in (1, 4)]
     runs += [(c, size, samples) for c in shader_cases for size, samples in (((800, 600), 1), ((1280, 720), 4))]
@@ -284,7 +322,7 @@ def compare(a, peer, work, cases, shader_cases):
         rows.append(r)
         print(f"| {r['case']:<34} | {r['size']:>9} | {r['samples']:>7} | {r['covered']:>10} | "
               f"{r['coverage_diff']:>10} | {r['depth_max']:>11.2e} | {r['color_share']:>14.4%} | "
-              f"{r['color_max']:>5} | {'ok' if r['ok'] else 'FAIL'} |", flush=True)
+              f"{r['color_max']:>5} | {r['color_mean']:>6.3f} | {'ok' if r['ok'] else 'FAIL'} |", flush=True)
     failed = [r for r in rows if not r["ok"]]
     if failed:
         print(f"reference check FAILED: {len(failed)} of {len(rows)} cases miss a bound"

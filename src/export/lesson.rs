@@ -561,7 +561,7 @@ fn data_files(
     };
     let (mut files, textures): (Vec<_>, Vec<_>) = encode_capture(capture, &export)?
         .into_iter()
-        .partition(|f| !f.name.starts_with("texture"));
+        .partition(|f| !(f.name.starts_with("texture") || f.name.starts_with("cube")));
     for (label, cap) in variants {
         files.push(ExportFile {
             name: format!("compare_{}.png", slug(label)),

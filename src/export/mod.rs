@@ -108,6 +108,18 @@ pub fn encode_capture(capture: &FrameCapture, opts: &ExportOptions) -> Result<Ve
             });
         }
     }
+    for (k, (object, cube)) in capture.cubes.iter().enumerate() {
+        for (face, name) in cube.faces.iter().zip(pipeline::texture::CubeMap::FACES) {
+            files.push(ExportFile {
+                name: format!("cube{k}_{name}.png"),
+                description: format!(
+                    "face {name} ({}×{}) of the cube map `{object}` mirrors, as seen from the cube's centre with +y up (top row first): in this order OpenGL's glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + i, …) takes it",
+                    face.width, face.height
+                ),
+                bytes: png_rgba(&face.image())?,
+            });
+        }
+    }
     let d16 = capture.depth16();
     let mut bytes = Vec::new();
     // `write_image` takes the samples in native byte order and writes PNG's big-endian itself.

@@ -194,6 +194,8 @@ pub struct FrameCapture {
     pub face_shading: Vec<crate::shade::ShadeTerms>,
     /// The textures the frame read, by object name (their mip pyramids can be shown and exported).
     pub textures: Vec<(String, std::sync::Arc<crate::texture::Texture>)>,
+    /// The cube maps the frame's mirrors reflect, by object name.
+    pub cubes: Vec<(String, std::sync::Arc<crate::texture::CubeMap>)>,
     /// The figures' traversal with the matrix stack (push, visit with the composite, pop).
     pub hierarchy: Vec<crate::hierarchy::Step>,
     /// One record per input triangle.

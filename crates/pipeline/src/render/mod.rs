@@ -28,7 +28,7 @@ use self::assembly::{assemble_and_clip, light_faces};
 use self::resolve::{ResolveContext, resolve};
 use crate::capture::{FrameCapture, Matrices, ObjectSummary, PixelBuffers, PrimitiveRecord};
 use crate::raster::{RasterCounts, RasterTriangle, SampleBuffers};
-use crate::scene::Scene;
+use crate::scene::{Object, Scene};
 use crate::settings::RenderSettings;
 use crate::shade::{Frequency, ShadeTerms};
 use crate::transform::{self, NamedMatrix};
@@ -334,15 +334,8 @@ fn render_stages(
         vertex_shading,
         face_shading,
         hierarchy: Vec::new(),
-        textures: scene
-            .objects
-            .iter()
-            .filter_map(|o| {
-                o.texture
-                    .as_ref()
-                    .map(|t| (o.name.clone(), std::sync::Arc::clone(t)))
-            })
-            .collect(),
+        textures: by_object(scene, |o| o.texture.clone()),
+        cubes: by_object(scene, |o| o.environment.as_ref().map(|e| e.cube.clone())),
         primitives,
         triangles,
         samples,
@@ -351,6 +344,16 @@ fn render_stages(
         shaders,
     };
     Ok((capture, times))
+}
+
+/// What `of` finds on each object that has it, with the object's name: the textures and the
+/// cube maps a frame read.
+fn by_object<T>(scene: &Scene, of: impl Fn(&Object) -> Option<T>) -> Vec<(String, T)> {
+    scene
+        .objects
+        .iter()
+        .filter_map(|o| of(o).map(|t| (o.name.clone(), t)))
+        .collect()
 }
 
 /// What the capture says of each object: its name, mesh, size, material and surface.

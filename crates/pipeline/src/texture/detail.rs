@@ -113,6 +113,9 @@ pub struct CubeMap {
 }
 
 impl CubeMap {
+    /// The faces' names, in order.
+    pub const FACES: [&'static str; 6] = ["+x", "-x", "+y", "-y", "+z", "-z"];
+
     /// The face and `(s, t)` a direction falls on.
     #[must_use]
     pub fn face_coords(d: Vec3) -> (usize, Vec2) {

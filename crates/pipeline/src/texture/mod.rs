@@ -87,6 +87,18 @@ pub struct Level {
 }
 
 impl Level {
+    /// The level as an image, top row first: image row `r` is texel row `height − 1 − r`
+    /// (texels are stored bottom row first, v up), each channel rounded to 8 bits.
+    #[must_use]
+    pub fn image(&self) -> RgbaImage {
+        let grid = crate::grid::Grid::new(self.width, self.height);
+        RgbaImage::from_fn(self.width, self.height, |x, r| {
+            let c = self.texels[(grid.row(r) * self.width + x) as usize];
+            let b = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as u8;
+            Rgba([b(c.x), b(c.y), b(c.z), 255])
+        })
+    }
+
     /// `(width, height)` as a vector, to turn uv into texels.
     #[must_use]
     pub fn size(&self) -> Vec2 {
@@ -482,16 +494,9 @@ impl Texture {
     /// Level `k` as an image (top row first), for display and export.
     #[must_use]
     pub fn level_image(&self, k: usize) -> RgbaImage {
-        let Some(l) = self.levels.get(k.min(self.levels.len().saturating_sub(1))) else {
-            return RgbaImage::new(1, 1);
-        };
-        // Texels are stored bottom row first (v up): image row `r` is texel row `h − 1 − r`.
-        let grid = crate::grid::Grid::new(l.width, l.height);
-        RgbaImage::from_fn(l.width, l.height, |x, r| {
-            let c = l.texels[(grid.row(r) * l.width + x) as usize];
-            let b = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as u8;
-            Rgba([b(c.x), b(c.y), b(c.z), 255])
-        })
+        self.levels
+            .get(k.min(self.levels.len().saturating_sub(1)))
+            .map_or_else(|| RgbaImage::new(1, 1), Level::image)
     }
 }
 
