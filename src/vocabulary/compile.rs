@@ -149,6 +149,20 @@ fn form(c: &Complaint, lang: Lang) -> Option<String> {
             format!("pipelens does not run this form of GLSL yet ({what})"),
             format!("pipelens 还不能运行这种 GLSL 写法（{what}）"),
         ),
+        C::NotRunYet(name) => t(
+            format!("pipelens does not run `{name}` yet"),
+            format!("pipelens 还不能运行 `{name}`"),
+        ),
+        C::Recursion(name) => t(
+            format!("GLSL does not allow recursion: `{name}` calls itself"),
+            format!("GLSL 不允许递归：`{name}` 调用了它自己"),
+        ),
+        C::DefinedBelow(name) => t(
+            format!(
+                "`{name}` is called before it is defined: move its definition above, or declare it above (its first line ending in `;`)"
+            ),
+            format!("`{name}` 在定义之前就被调用了：把它的定义移到上面，或在上面先声明它（写出它的第一行并以 `;` 结尾）"),
+        ),
         _ => return own(c, lang).or_else(|| super::run::fault(c, lang)),
     })
 }
@@ -309,6 +323,9 @@ mod tests {
             Complaint::ReturnType,
             Complaint::IntegerOverflow,
             Complaint::NotImplemented("x".into()),
+            Complaint::NotRunYet("modf".into()),
+            Complaint::Recursion("depth".into()),
+            Complaint::DefinedBelow("shade".into()),
         ];
         assert!(all.len() >= 20);
         for c in &all {

@@ -52,6 +52,11 @@ pub(super) fn validation_message(e: &naga::valid::ValidationError) -> String {
                 an int needs float(i)"
             .to_owned();
     }
+    if inner.contains("expression None does not match") {
+        return "this function is declared to return a value but can end without `return`: \
+                every path through it must end in `return …;`"
+            .to_owned();
+    }
     if inner.contains("InvalidReturnType") || inner.contains("return type") {
         return format!(
             "the returned value's type is not the function's return type ({})",
@@ -255,6 +260,45 @@ pub(super) fn version(source: &str) -> Option<ShaderError> {
             Complaint::InvalidVersion(written.to_owned()),
         )
     })
+}
+
+/// The built-in functions naga reads but does not honour (it drops `texelFetchOffset`'s
+/// offset): each call refused at its name, not drawn without its argument.
+///
+/// # Errors
+/// Each such call.
+pub(super) fn dropped_arguments(source: &str) -> Result<(), Vec<ShaderError>> {
+    use super::lexeme::{Kind, lex};
+    const DROPPED: [&str; 1] = ["texelFetchOffset"];
+    let lexemes = lex(source);
+    let errors = lexemes
+        .iter()
+        .enumerate()
+        .filter(|(k, l)| {
+            l.kind == Kind::Word
+                && DROPPED.contains(&&source[l.span.clone()])
+                && lexemes[k + 1..]
+                    .iter()
+                    .find(|n| !matches!(n.kind, Kind::Space | Kind::Comment))
+                    .is_some_and(|n| &source[n.span.clone()] == "(")
+        })
+        .map(|(_, l)| {
+            let name = &source[l.span.clone()];
+            complain(
+                error_at(
+                    source,
+                    l.span.clone(),
+                    format!("pipelens does not run `{name}` yet"),
+                ),
+                Complaint::NotRunYet(name.to_owned()),
+            )
+        })
+        .collect::<Vec<_>>();
+    if errors.is_empty() {
+        Ok(())
+    } else {
+        Err(errors)
+    }
 }
 
 /// `error` with the mistake `complaint` as data.

@@ -281,6 +281,38 @@ pub struct Unsupported {
     pub at: usize,
     /// What.
     pub what: String,
+    /// The built-in function pipelens does not run, as GLSL spells it, when that is what it is.
+    pub function: Option<String>,
+}
+
+/// Why an expression cannot be translated: the words, and the built-in function pipelens does
+/// not run when that is the reason.
+#[derive(Clone, Debug)]
+pub struct OpError {
+    /// What.
+    pub what: String,
+    /// The built-in function, as GLSL spells it.
+    pub function: Option<String>,
+}
+
+impl From<String> for OpError {
+    fn from(what: String) -> Self {
+        Self {
+            what,
+            function: None,
+        }
+    }
+}
+
+impl OpError {
+    /// The built-in function `name` (as GLSL spells it), which pipelens does not run yet.
+    #[must_use]
+    pub fn not_run(name: &str) -> Self {
+        Self {
+            what: format!("pipelens does not run `{name}` yet"),
+            function: Some(name.to_owned()),
+        }
+    }
 }
 
 /// Components of a type.

@@ -65,6 +65,12 @@ pub enum Complaint {
     IntegerOverflow,
     /// A form naga's front end does not take yet.
     NotImplemented(String),
+    /// A built-in function of GLSL that pipelens does not run yet (as GLSL spells it).
+    NotRunYet(String),
+    /// A function that calls itself (GLSL allows no recursion).
+    Recursion(String),
+    /// A function called above its definition, with no prototype before the call.
+    DefinedBelow(String),
     /// pipelens' own checks: a uniform pipelens does not set, with the nearest name it sets.
     UnknownUniform {
         /// The name declared.

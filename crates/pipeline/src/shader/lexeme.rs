@@ -94,6 +94,34 @@ pub fn same_code(a: &str, b: &str) -> bool {
     code(a).eq(code(b))
 }
 
+/// Where `src` defines (or declares) the function `name` at its top level: the offset of the
+/// name in `T name(`, a type word before it, outside every brace.
+#[must_use]
+pub fn definition(src: &str, name: &str) -> Option<usize> {
+    let code: Vec<Lexeme> = lex(src)
+        .into_iter()
+        .filter(|l| !matches!(l.kind, Kind::Comment | Kind::Space))
+        .collect();
+    let text = |l: &Lexeme| &src[l.span.clone()];
+    let mut depth = 0i32;
+    for (k, l) in code.iter().enumerate() {
+        match text(l) {
+            "{" => depth += 1,
+            "}" => depth -= 1,
+            word if depth == 0 && word == name && l.kind == Kind::Word => {
+                let typed = k > 0
+                    && code[k - 1].kind == Kind::Word
+                    && !matches!(text(&code[k - 1]), "return" | "else");
+                if typed && code.get(k + 1).is_some_and(|n| text(n) == "(") {
+                    return Some(l.span.start);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
 /// `src` with each `//` comment whose words `words` gives other words for rewritten: the
 /// comment's words are its text after `//` and its leading spaces, trimmed; the spaces stay, so
 /// a comment's indent under the one above it is kept. The code and the line count are unchanged.

@@ -10,6 +10,10 @@
 //!
 //! Each rewrite is an [`Edit`], so that a message about the rewritten text maps back to the
 //! student's (see [`super::dialect::Adapted::original_offset`]).
+//!
+//! GLSL 1.20's texture functions (`texture2D(s, uv)`, which drivers still take in `#version 330
+//! core`) are renamed to GLSL 1.30's (`texture`), padded to the same length: naga would read
+//! `texture2D(…)` as a constructor of its own `texture2D` type.
 
 use std::ops::Range;
 
@@ -209,6 +213,42 @@ fn indexed_start(b: &[u8], close: usize) -> Option<usize> {
         }
         return Some(at);
     }
+}
+
+/// GLSL 1.20's texture functions, which GLSL 1.30 renamed (OpenGL drivers still take the old
+/// names), and the names naga reads: `texture2D(s, uv)` is `texture(s, uv)`.
+const LEGACY_TEXTURE: [(&str, &str); 6] = [
+    ("texture2D", "texture"),
+    ("texture2DLod", "textureLod"),
+    ("texture2DProj", "textureProj"),
+    ("texture2DProjLod", "textureProjLod"),
+    ("textureCube", "texture"),
+    ("textureCubeLod", "textureLod"),
+];
+
+/// `src` with each call of a GLSL 1.20 texture function renamed to its GLSL 1.30 name, padded
+/// with spaces to the old name's length so that every byte keeps its offset (naga would read
+/// `texture2D(…)` as a constructor of its `texture2D` type).
+pub(super) fn legacy_texture_calls(src: &str) -> String {
+    use super::lexeme::{Kind, lex};
+    let lexemes = lex(src);
+    let mut out = src.to_owned();
+    for (k, l) in lexemes.iter().enumerate() {
+        let Some(&(old, new)) = LEGACY_TEXTURE
+            .iter()
+            .find(|(old, _)| src[l.span.clone()] == **old)
+        else {
+            continue;
+        };
+        let call = lexemes[k + 1..]
+            .iter()
+            .find(|n| !matches!(n.kind, Kind::Space | Kind::Comment))
+            .is_some_and(|n| &src[n.span.clone()] == "(");
+        if l.kind == Kind::Word && call {
+            out.replace_range(l.span.clone(), &format!("{new:<width$}", width = old.len()));
+        }
+    }
+    out
 }
 
 #[cfg(test)]

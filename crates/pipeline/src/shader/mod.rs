@@ -17,6 +17,7 @@ mod code;
 pub mod complaint;
 pub mod dialect;
 mod emitted;
+pub mod glsl330;
 pub mod hook;
 pub mod interface;
 pub mod lexeme;
@@ -180,15 +181,51 @@ fn parse_errors(
                 .meta
                 .to_range()
                 .map_or(0..0, |r| adapted.original_range(r));
-            let (complaint, at) = complaint::of_parse(&err.kind, source, span);
-            let mut e = error_at(source, at, check::plain(&err.kind.to_string()));
+            let (mut complaint, at) = complaint::of_parse(&err.kind, source, span);
+            let mut e = error_at(source, at.clone(), check::plain(&err.kind.to_string()));
             if complaint == Complaint::MissingSemicolon {
                 e.message = "a `;` is missing at the end of this line".to_owned();
+            }
+            // naga knows a function once its body is read: a call inside the body, or above
+            // the definition, is an unknown function to it.
+            if let Complaint::UnknownFunction(name) = &complaint
+                && glsl330::FUNCTIONS.contains(&name.as_str())
+            {
+                e.message = format!("pipelens does not run `{name}` yet");
+                complaint = Complaint::NotRunYet(name.clone());
+            } else if let Complaint::UnknownFunction(name) = &complaint
+                && let Some(def) = lexeme::definition(source, name)
+            {
+                let name = name.clone();
+                (e.message, complaint) = if at.start > def {
+                    (
+                        format!("GLSL does not allow recursion: `{name}` calls itself"),
+                        Complaint::Recursion(name),
+                    )
+                } else {
+                    (
+                        format!(
+                            "`{name}` is called before it is defined: move its definition above, or declare it above (its first line ending in `;`)"
+                        ),
+                        Complaint::DefinedBelow(name),
+                    )
+                };
             }
             e.complaint = complaint;
             e
         })
         .collect()
+}
+
+/// What the translation could not do, as a message at its place: `%` on floats, a built-in
+/// pipelens does not run yet, or the form it met.
+fn unsupported(source: &str, u: code::Unsupported) -> ShaderError {
+    let complaint = if u.what == translate::FLOAT_MODULO {
+        Complaint::FloatModulo
+    } else {
+        u.function.map_or(Complaint::Other, Complaint::NotRunYet)
+    };
+    check::complain(error_at(source, u.at..u.at, u.what), complaint)
 }
 
 /// Compiles the student's GLSL for `stage`.
@@ -201,6 +238,7 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
     if let Some(e) = check::version(source) {
         return Err(vec![e]);
     }
+    check::dropped_arguments(source)?;
     let adapted = dialect::adapt(source, stage).map_err(|errs| {
         errs.into_iter()
             .map(|e| error_at(source, e.span, e.message))
@@ -259,12 +297,7 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
         match translate::Translator::translate(&module, &info, &adapted, &is_uniform, &texture) {
             Ok(c) => c,
             Err(u) => {
-                let float_modulo = u.what == translate::FLOAT_MODULO;
-                let mut e = error_at(source, u.at..u.at, u.what);
-                if float_modulo {
-                    e.complaint = Complaint::FloatModulo;
-                }
-                errors.push(e);
+                errors.push(unsupported(source, u));
                 return Err(errors);
             }
         };

@@ -535,3 +535,28 @@ pub fn math<'a>(
     }
     Ok(())
 }
+
+/// A math function as GLSL spells it: naga's `Modf` is `modf`, `Outer` `outerProduct`.
+pub(super) fn glsl_name(fun: naga::MathFunction) -> String {
+    use naga::MathFunction as M;
+    match fun {
+        M::Outer => "outerProduct".to_owned(),
+        M::CountOneBits => "bitCount".to_owned(),
+        M::ExtractBits => "bitfieldExtract".to_owned(),
+        M::InsertBits => "bitfieldInsert".to_owned(),
+        M::ReverseBits => "bitfieldReverse".to_owned(),
+        M::FirstTrailingBit => "findLSB".to_owned(),
+        M::FirstLeadingBit => "findMSB".to_owned(),
+        M::Pack2x16float => "packHalf2x16".to_owned(),
+        M::Unpack2x16float => "unpackHalf2x16".to_owned(),
+        M::Pack2x16unorm => "packUnorm2x16".to_owned(),
+        M::Unpack2x16unorm => "unpackUnorm2x16".to_owned(),
+        M::Pack2x16snorm => "packSnorm2x16".to_owned(),
+        M::Unpack2x16snorm => "unpackSnorm2x16".to_owned(),
+        M::Pack4x8unorm => "packUnorm4x8".to_owned(),
+        M::Unpack4x8unorm => "unpackUnorm4x8".to_owned(),
+        M::Pack4x8snorm => "packSnorm4x8".to_owned(),
+        M::Unpack4x8snorm => "unpackSnorm4x8".to_owned(),
+        other => format!("{other:?}").to_lowercase(),
+    }
+}

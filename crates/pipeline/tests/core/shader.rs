@@ -48,7 +48,7 @@ fn pack(values: &[Vec<Vec<f32>>]) -> Vec<Vec<u32>> {
 
 /// Runs `program` over the lanes of `values` (all live); returns each lane's result components
 /// as floats and the discarded lanes.
-fn run(
+pub(crate) fn run(
     program: &Program,
     uniforms: &Uniforms,
     values: &[Vec<Vec<f32>>],

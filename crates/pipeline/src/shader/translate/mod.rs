@@ -2,11 +2,13 @@
 //! expression by expression, pointers followed to their places, constants evaluated, and every
 //! operation checked to be one the machine runs.
 
+mod texture;
+
 use naga::valid::{FunctionInfo, ModuleInfo};
 use naga::{AddressSpace, BinaryOperator, Expression, Handle, Module, Statement, TypeInner};
 
 use super::code::{
-    Code, Function, Kind, Level, Op, Place, Reg, Root, Shape, Stmt, Unsupported, components,
+    Code, Function, Kind, Op, OpError, Place, Reg, Root, Shape, Stmt, Unsupported, components,
     const_value, element_count, kind_of, literal, member,
 };
 use super::dialect::Adapted;
@@ -68,8 +70,11 @@ impl<'m> Translator<'m> {
                     let at = t.code.private_width;
                     t.code.private_width += n;
                     if let Some(init) = g.init {
-                        let v = const_value(module, init)
-                            .map_err(|what| Unsupported { at: 0, what })?;
+                        let v = const_value(module, init).map_err(|what| Unsupported {
+                            at: 0,
+                            what,
+                            function: None,
+                        })?;
                         t.code.private_init.push((at, v));
                     }
                     Some((Root::Private, Reg { at, n }))
@@ -82,6 +87,7 @@ impl<'m> Translator<'m> {
             t.code.functions.push(func);
         }
         let ep = module.entry_points.first().ok_or(Unsupported {
+            function: None,
             at: 0,
             what: "no `main`".to_owned(),
         })?;
@@ -146,9 +152,10 @@ impl<'m> Translator<'m> {
         let mut args = vec![Reg::default(); f.arguments.len()];
         for (h, e) in f.expressions.iter() {
             let span = f.expressions.get_span(h);
-            let op = self.op(f, fi, e, &func).map_err(|what| Unsupported {
+            let op = self.op(f, fi, e, &func).map_err(|e| Unsupported {
                 at: self.at(span),
-                what,
+                what: e.what,
+                function: e.function,
             })?;
             if let Expression::FunctionArgument(i) = *e {
                 args[i as usize] = func.regs[h.index()];
@@ -222,35 +229,6 @@ impl<'m> Translator<'m> {
         }
     }
 
-    /// Whether `image` is a cube map's texture (`samplerCube`).
-    fn is_cube(&self, f: &naga::Function, image: Handle<Expression>) -> bool {
-        match f.expressions[image] {
-            Expression::GlobalVariable(g) => matches!(
-                self.module.types[self.module.global_variables[g].ty].inner,
-                naga::TypeInner::Image {
-                    dim: naga::ImageDimension::Cube,
-                    ..
-                }
-            ),
-            _ => false,
-        }
-    }
-
-    fn texture_slot(&self, f: &naga::Function, image: Handle<Expression>) -> Result<u32, String> {
-        match f.expressions[image] {
-            Expression::GlobalVariable(g) => self
-                .textures
-                .iter()
-                .find(|(h, _)| *h == g)
-                .map(|(_, s)| *s)
-                .ok_or_else(|| "a texture pipelens does not bind".to_owned()),
-            _ => Err(
-                "a texture passed to a function: use the `sampler2D` (or `samplerCube`) by its name"
-                    .to_owned(),
-            ),
-        }
-    }
-
     #[allow(clippy::too_many_lines)]
     fn op(
         &self,
@@ -258,7 +236,7 @@ impl<'m> Translator<'m> {
         fi: &FunctionInfo,
         e: &Expression,
         func: &Function,
-    ) -> Result<Op, String> {
+    ) -> Result<Op, OpError> {
         let module = self.module;
         let ty = |h: Handle<Expression>| fi[h].ty.inner_with(&module.types);
         let reg = |h: Handle<Expression>| func.regs[h.index()];
@@ -351,7 +329,7 @@ impl<'m> Translator<'m> {
                 // naga reads `%` on floats (WGSL has it); GLSL does not, and a real OpenGL
                 // refuses the shader (its `mod` is naga's floor form, never this operator).
                 if op == BinaryOperator::Modulo && kind_of(lt) == Kind::F {
-                    return Err(FLOAT_MODULO.to_owned());
+                    return Err(FLOAT_MODULO.to_owned().into());
                 }
                 Op::Binary {
                     op,
@@ -387,9 +365,7 @@ impl<'m> Translator<'m> {
                 arg3,
             } => {
                 if !super::ops::supported(fun) {
-                    return Err(format!(
-                        "`{fun:?}` is a built-in function pipelens does not run yet"
-                    ));
+                    return Err(OpError::not_run(&super::ops::glsl_name(fun)));
                 }
                 let args = [Some(arg), arg1, arg2, arg3]
                     .into_iter()
@@ -418,59 +394,15 @@ impl<'m> Translator<'m> {
                 to: Kind::of(kind),
                 convert: convert.is_some(),
             },
-            Expression::ImageSample {
-                image,
-                coordinate,
-                gather: None,
-                depth_ref: None,
-                array_index: None,
-                ..
-            } if self.is_cube(f, image) => Op::SampleCube {
-                texture: self.texture_slot(f, image)?,
-                direction: reg(coordinate),
-            },
-            Expression::ImageSample {
-                image,
-                coordinate,
-                level,
-                gather: None,
-                depth_ref: None,
-                array_index: None,
-                ..
-            } => Op::Sample {
-                texture: self.texture_slot(f, image)?,
-                coordinate: reg(coordinate),
-                level: match level {
-                    naga::SampleLevel::Auto => Level::Auto,
-                    naga::SampleLevel::Zero => Level::Zero,
-                    naga::SampleLevel::Exact(l) => Level::Exact(reg(l).at),
-                    naga::SampleLevel::Bias(b) => Level::Bias(reg(b).at),
-                    naga::SampleLevel::Gradient { .. } => return Err("textureGrad".to_owned()),
-                },
-            },
-            Expression::ImageLoad {
-                image,
-                coordinate,
-                level,
-                array_index: None,
-                sample: None,
-            } => Op::Fetch {
-                texture: self.texture_slot(f, image)?,
-                coordinate: reg(coordinate),
-                level: level.map(|l| reg(l).at),
-            },
-            Expression::ImageQuery {
-                image,
-                query: naga::ImageQuery::Size { level },
-            } => Op::Size {
-                texture: self.texture_slot(f, image)?,
-                level: level.map(|l| reg(l).at),
-            },
+            Expression::ImageSample { .. }
+            | Expression::ImageLoad { .. }
+            | Expression::ImageQuery { .. } => self.texture_op(f, e, &reg)?,
             ref other => {
                 return Err(format!(
                     "an operation pipelens does not run yet ({})",
                     describe(other)
-                ));
+                )
+                .into());
             }
         })
     }
@@ -493,7 +425,11 @@ impl<'m> Translator<'m> {
             } else {
                 around
             };
-            let err = |what: String| Unsupported { at, what };
+            let err = |what: String| Unsupported {
+                at,
+                what,
+                function: None,
+            };
             let reg = |h: Handle<Expression>| func.regs[h.index()];
             out.push(match *s {
                 Statement::Emit(ref range) => Stmt::Emit(range.index_range()),
