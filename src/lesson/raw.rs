@@ -164,6 +164,8 @@ pub struct RawRender {
     pub lod_bias: Option<Spanned<f64>>,
     pub per_sample_shading: Option<bool>,
     pub background: Option<RawVec3>,
+    /// The loop iterations a shader invocation may run (an endless loop stops there).
+    pub max_steps: Option<Spanned<i64>>,
 }
 
 /// One `[[scene.objects]]` entry.

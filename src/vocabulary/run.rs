@@ -16,7 +16,9 @@ pub fn fault(c: &Complaint, lang: Lang) -> Option<String> {
         return None;
     }
     Some(match c {
-        C::EndlessLoop { budget } => format!("循环执行超过了 {budget} 步（是不是死循环？）"),
+        C::EndlessLoop { budget } => format!(
+            "循环执行超过了 {budget} 步（是不是死循环？如果它本来就要运行更久，请在 [scene.render] 中用 `max_steps` 提高上限）"
+        ),
         C::IndexOutOfRange {
             index,
             last,

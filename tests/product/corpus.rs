@@ -57,6 +57,12 @@ const LESSONS: &[(&str, usize, usize, &str)] = &[
     ("zero-viewport", 2, 9, "from 1 to 16384, got 0"),
     ("huge-viewport", 2, 9, "from 1 to 16384, got 100000"),
     ("samples-3", 2, 11, "`samples` must be 1, 4, 8 or 16, got 3"),
+    (
+        "max-steps-zero",
+        2,
+        13,
+        "`max_steps` must be a whole number of loop iterations from 1 to 16777216, got 0",
+    ),
     ("nan-value", 2, 8, "`fovy` must be a finite number, got NaN"),
     (
         "infinite-value",

@@ -58,6 +58,11 @@ pub(crate) const MISTAKES: &[(&str, &str, &str)] = &[
         "1, 4, 8 or 16",
     ),
     (
+        "set = { \"render.max_steps\" = 1.5 }",
+        "\"render",
+        "whole number of loop iterations",
+    ),
+    (
         "set = { \"render.shading\" = \"phog\" }",
         "\"render",
         "\"phong\"",

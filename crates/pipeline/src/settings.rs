@@ -46,7 +46,17 @@ pub struct RenderSettings {
     pub background: Vec3,
     /// Which per-pixel buffers to keep ([`Capture::FULL`]: all of them).
     pub capture: Capture,
+    /// The loop iterations one shader invocation may run before the run stops as an endless
+    /// loop (`max_steps` of `[scene.render]`; [`DEFAULT_MAX_STEPS`] unless a lesson raises it).
+    pub max_steps: u32,
 }
+
+/// The loop iterations a shader invocation may run unless the lesson says otherwise.
+pub const DEFAULT_MAX_STEPS: u32 = 1 << 16;
+
+/// The most `max_steps` a lesson may ask for: a run of that many iterations per pixel takes
+/// minutes, not forever.
+pub const MAX_MAX_STEPS: u32 = 1 << 24;
 
 impl Default for RenderSettings {
     fn default() -> Self {
@@ -64,6 +74,7 @@ impl Default for RenderSettings {
             coarse_shading: false,
             background: Vec3::new(0.08, 0.09, 0.11),
             capture: Capture::FULL,
+            max_steps: DEFAULT_MAX_STEPS,
         }
     }
 }

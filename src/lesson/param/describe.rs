@@ -36,6 +36,7 @@ pub fn describe(spec: &SceneSpec, name: &str, lang: crate::vocabulary::Lang) -> 
             "shininess" => "高光指数",
             "normals" => "法线",
             "lod_bias" => "mip 偏移",
+            "max_steps" => "循环步数上限",
             "samples" => "采样数",
             "anisotropy" => "各向异性",
             other => return other.to_owned(),

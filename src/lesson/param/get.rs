@@ -111,6 +111,7 @@ fn render(spec: &SceneSpec, key: &str) -> Option<Value> {
         "wrap" => named(WRAP, &s.sampler.wrap),
         "anisotropy" => Some(Value::Number(s.sampler.anisotropy as f32)),
         "lod_bias" => Some(Value::Number(s.sampler.lod_bias)),
+        "max_steps" => Some(Value::Number(s.max_steps as f32)),
         _ => None,
     }
 }

@@ -17,6 +17,7 @@ pub use get::{differences, get};
 use glam::Vec3;
 use pipeline::camera::Projection;
 use pipeline::raster::Samples;
+use pipeline::settings::MAX_MAX_STEPS;
 
 use super::SceneSpec;
 use super::validate::{CULL, DEPTH_TEST, FILTER, MIPMAP, REFLECTION, SHADING, WRAP};
@@ -444,6 +445,16 @@ fn render(spec: &mut SceneSpec, key: &str, v: &Value) -> Result<(), Problem> {
             s.sampler.anisotropy = n.round() as u32;
         }
         "lod_bias" => s.sampler.lod_bias = number(v)?,
+        "max_steps" => {
+            let n = number(v)?;
+            if n.fract() != 0.0 || !(1.0..=MAX_MAX_STEPS as f32).contains(&n) {
+                return Err(format!(
+                    "expected a whole number of loop iterations from 1 to {MAX_MAX_STEPS}, got {n}"
+                )
+                .into());
+            }
+            s.max_steps = n as u32;
+        }
         _ => return Err(Problem::Unknown),
     }
     Ok(())

@@ -3,7 +3,7 @@
 
 use pipeline::camera::Projection;
 use pipeline::raster::Samples;
-use pipeline::settings::{MAX_VIEWPORT_SIDE, RenderSettings};
+use pipeline::settings::{MAX_MAX_STEPS, MAX_VIEWPORT_SIDE, RenderSettings};
 use toml::Spanned;
 
 use super::{CULL, Checker, DEPTH_TEST, FILTER, MIPMAP, REFLECTION, SHADING, WRAP};
@@ -43,6 +43,18 @@ pub(super) fn render(c: &mut Checker<'_>, r: &Spanned<RawRender>) -> RenderSetti
     }
     render_modes(c, raw, &mut s);
     sampler(c, raw, &mut s);
+    if let Some(v) = &raw.max_steps {
+        match u32::try_from(*v.get_ref()) {
+            Ok(n) if (1..=MAX_MAX_STEPS).contains(&n) => s.max_steps = n,
+            _ => c.error(
+                v.span(),
+                format!(
+                    "`max_steps` must be a whole number of loop iterations from 1 to {MAX_MAX_STEPS}, got {}",
+                    v.get_ref()
+                ),
+            ),
+        }
+    }
     if let Some(v) = &raw.background
         && let Some(bg) = c.vec3("background", v)
     {

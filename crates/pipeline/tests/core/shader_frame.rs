@@ -297,6 +297,39 @@ fn a_run_time_error_in_a_frame_is_a_message_with_its_line() {
     );
 }
 
+/// A valid loop longer than the default budget (70 000 iterations > 65 536) stops as "an endless
+/// loop?" with the way to raise the limit; with `max_steps` raised the frame is drawn, the loop's
+/// count in every pixel. The vertex shader's loops keep the same budget.
+#[test]
+fn a_long_loop_runs_when_max_steps_allows_it() {
+    use pipeline::shader::Complaint;
+    let fs = "#version 330 core\nout vec4 color;\nvoid main() {\n  int k = 0;\n  for (int i = 0; i < 70000; i++) {\n    k += 1;\n  }\n  color = vec4(float(k) / 70000.0, 0.0, 0.0, 1.0);\n}\n";
+    let scene = with_shaders(sphere_scene(false), None, Some(fs));
+    let mut s = settings();
+    assert_eq!(s.max_steps, 65_536);
+    let e = pipeline::render(&scene, &s).expect_err("over the default budget");
+    let pipeline::RenderError::Code { error, .. } = &e else {
+        panic!("{e}");
+    };
+    assert_eq!(error.complaint, Complaint::EndlessLoop { budget: 65_536 });
+    assert!(
+        e.to_string().contains("`max_steps` under [scene.render]"),
+        "{e}"
+    );
+    s.max_steps = 70_001;
+    let f = render(&scene, &s);
+    let lit = f.pixels.color.iter().filter(|c| c[0] == 1.0).count();
+    let covered = f.pixels.coverage.iter().filter(|&&c| c > 0).count();
+    assert!(covered > 0 && lit == covered, "{lit} of {covered}");
+    let vs = "#version 330 core\nuniform mat4 mvp;\nin vec3 position;\nvoid main() {\n  float y = 0.0;\n  for (int i = 0; i < 70000; i++) {\n    y += 0.0;\n  }\n  gl_Position = mvp * vec4(position + vec3(0.0, y, 0.0), 1.0);\n}\n";
+    let red = "#version 330 core\nout vec4 color;\nvoid main() {\n  color = vec4(1.0, 0.0, 0.0, 1.0);\n}\n";
+    let scene = with_shaders(sphere_scene(false), Some(vs), Some(red));
+    s.max_steps = 65_536;
+    assert!(pipeline::render(&scene, &s).is_err());
+    s.max_steps = 70_001;
+    render(&scene, &s);
+}
+
 #[test]
 fn the_inspected_pixel_keeps_its_fragment_shaders_run() {
     let fs = "#version 330 core\nin vec3 w_nrm;\nout vec4 color;\nvoid main() {\n  vec3 n = normalize(w_nrm);\n  float k = n.z > 0.5 ? 1.0 : 0.25;\n  color = vec4(n * 0.5 + 0.5, k);\n}\n";

@@ -220,6 +220,7 @@ impl FragmentShading<'_> {
         let fs = &sh.programs.fragment;
         let m = machines[object].get_or_insert_with(|| {
             let mut m = fs.machine();
+            m.budget = ctx.settings.max_steps;
             if let Some(u) = &self.uniforms[object] {
                 fs.set_uniforms(&mut m, u);
             }
@@ -310,6 +311,7 @@ impl FragmentShading<'_> {
         };
         let fs = &sh.programs.fragment;
         let mut m = fs.machine();
+        m.budget = ctx.settings.max_steps;
         if let Some(u) = &self.uniforms[object] {
             fs.set_uniforms(&mut m, u);
         }

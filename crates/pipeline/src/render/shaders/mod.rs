@@ -190,6 +190,7 @@ pub(super) fn vertex_shaders(
         out.push(Some(run_vertex_shader(
             &sh.programs,
             object,
+            settings.max_steps,
             &u,
             start,
             values,
@@ -260,6 +261,7 @@ pub fn trace_vertex(
     let vs = &sh.programs.vertex;
     let u = uniforms(scene, &capture.settings, &capture.matrices, i, sh.time);
     let mut m = vs.machine();
+    m.budget = capture.settings.max_steps;
     vs.set_uniforms(&mut m, &u);
     let inputs: Vec<Vec<u32>> = vs
         .inputs
@@ -385,10 +387,11 @@ fn write_inputs(
 
 /// One object's vertex shader over its mesh: every output of every vertex, its `gl_Position`
 /// checked to be finite, in `values` (a buffer to reuse). `first` is the object's first row in
-/// the vertex table.
+/// the vertex table; a vertex's loops may run `max_steps` iterations.
 fn run_vertex_shader(
     programs: &Programs,
     object: &Object,
+    max_steps: u32,
     u: &Uniforms,
     first: usize,
     mut values: Vec<f32>,
@@ -412,6 +415,7 @@ fn run_vertex_shader(
         .try_for_each_init(
             || {
                 let mut m = vs.machine();
+                m.budget = max_steps;
                 vs.set_uniforms(&mut m, u);
                 let rows: Vec<Vec<u32>> = vs
                     .inputs

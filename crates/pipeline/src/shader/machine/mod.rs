@@ -115,7 +115,7 @@ impl<'c> Machine<'c> {
             uniforms: vec![0; code.uniform_width as usize],
             n: 0,
             steps: [0; LANES],
-            budget: 1 << 16,
+            budget: crate::settings::DEFAULT_MAX_STEPS,
             killed: 0,
             trace: None,
             invariants_ready: false,
@@ -356,7 +356,7 @@ impl<'c> Machine<'c> {
                                     return Err(RunError {
                                         at: *at,
                                         message: format!(
-                                            "the loop ran more than {} steps (an endless loop?)",
+                                            "the loop ran more than {} steps (an endless loop? If it is meant to run longer, raise the limit with `max_steps` under [scene.render])",
                                             self.budget
                                         ),
                                         complaint: crate::shader::Complaint::EndlessLoop {
