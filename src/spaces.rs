@@ -161,12 +161,17 @@ pub fn framing(centre: Vec3, radius: f32, yaw: f32, pitch: f32, aspect: f32) -> 
 }
 
 /// The fates a triangle can meet, in the legend's order: colour, English name, Chinese name.
-pub const FATES: [([u8; 3], &str, &str); 5] = [
+pub const FATES: [([u8; 3], &str, &str); 6] = [
     ([220, 220, 220], "drawn", "绘制"),
     ([255, 120, 200], "clipped", "被裁剪"),
     ([90, 90, 90], "outside", "在视见体外"),
     ([70, 90, 150], "culled", "被剔除"),
     ([255, 0, 0], "degenerate", "退化"),
+    (
+        [255, 160, 0],
+        "not finite (NaN or ∞)",
+        "非有限值（NaN 或 ∞）",
+    ),
 ];
 
 /// Where a fate stands in [`FATES`].
@@ -179,6 +184,7 @@ pub fn fate_index(f: &pipeline::capture::Fate) -> usize {
         Fate::Outside { .. } => 2,
         Fate::Culled { .. } => 3,
         Fate::Degenerate => 4,
+        Fate::NotFinite => 5,
     }
 }
 

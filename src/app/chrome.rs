@@ -324,7 +324,7 @@ impl PipelensApp {
                         ms(t.resolve),
                     ));
                     if let Some(s) = &c.shaders {
-                        shader_counts(ui, s, lang);
+                        shader_counts(ui, s, c.not_finite_primitives(), lang);
                     }
                 }
                 if self.session.rendering() {
@@ -487,9 +487,31 @@ impl PipelensApp {
     }
 }
 
-/// What the shaders did this frame, in the status line: fragments run, fragments discarded, and
-/// pixels whose colour came out NaN or infinite (drawn black; the inspector marks the value).
-fn shader_counts(ui: &mut egui::Ui, s: &pipeline::capture::ShaderRecord, lang: Lang) {
+/// What the shaders did this frame, in the status line: triangles dropped for a `gl_Position`
+/// that is not finite, fragments run, fragments discarded, and pixels whose colour came out NaN
+/// or infinite (drawn black; the inspector marks the value).
+fn shader_counts(
+    ui: &mut egui::Ui,
+    s: &pipeline::capture::ShaderRecord,
+    dropped: usize,
+    lang: Lang,
+) {
+    if dropped > 0 {
+        ui.label(
+            RichText::new(format!(
+                "· {dropped} {}",
+                lang.tr(
+                    "triangles dropped: gl_Position NaN or ∞",
+                    "个三角形被丢弃：gl_Position 为 NaN 或 ∞"
+                )
+            ))
+            .color(Color32::LIGHT_RED),
+        )
+        .on_hover_text(lang.tr(
+            "A vertex shader wrote a gl_Position that is not a finite number (a division by zero, normalize(vec3(0.0))): nothing can be drawn from it, so its triangles are dropped before clipping. The Vertices tab shows the vertex's run.",
+            "顶点着色器写出的 gl_Position 不是有限数（除以零、normalize(vec3(0.0))）：无法据此绘制，所以它的三角形在裁剪之前就被丢弃。顶点表标签页显示该顶点的运行过程。",
+        ));
+    }
     ui.label(format!(
         "· {} {} · {} {}",
         s.fragments,

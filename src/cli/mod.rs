@@ -493,6 +493,9 @@ fn export(
         spec.settings.capture.pixel = opts.pixel;
     }
     let capture = pipeline::render(&spec.scene, &spec.settings)?;
+    for w in capture.not_finite_warnings() {
+        eprintln!("pipelens: warning: {w}");
+    }
     let mut files = crate::export::encode_capture(&capture, opts)?;
     if let Some(line) = profile {
         files.push(profile_file(&spec, &capture, line)?);

@@ -87,7 +87,7 @@ mod tests {
         };
         assert_eq!(
             render_error(&e, Lang::Zh),
-            "无法绘制场景：物体 sphere 的片元着色器，第 12 行第 5 列：循环执行超过了 65536 步（是不是死循环？）"
+            "无法绘制场景：物体 sphere 的片元着色器，第 12 行第 5 列：循环执行超过了 65536 步（是不是死循环？如果它本来就要运行更久，请在 [scene.render] 中用 `max_steps` 提高上限）"
         );
         assert_eq!(
             render_error(&e, Lang::En),

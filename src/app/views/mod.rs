@@ -323,12 +323,12 @@ pub fn fate_color(f: &pipeline::capture::Fate) -> Color32 {
 
 /// The fates a triangle can meet, in the legend's order: colour, English name, Chinese name
 /// (`spaces::FATES`, the colours as egui's).
-pub const FATES: [(Color32, &str, &str); 5] = {
+pub const FATES: [(Color32, &str, &str); crate::spaces::FATES.len()] = {
     const fn fate(k: usize) -> (Color32, &'static str, &'static str) {
         let f = crate::spaces::FATES[k];
         (Color32::from_rgb(f.0[0], f.0[1], f.0[2]), f.1, f.2)
     }
-    [fate(0), fate(1), fate(2), fate(3), fate(4)]
+    [fate(0), fate(1), fate(2), fate(3), fate(4), fate(5)]
 };
 
 pub use crate::spaces::fate_index;

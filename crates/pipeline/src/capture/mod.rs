@@ -68,6 +68,9 @@ pub enum Fate {
     },
     /// No area on screen after snapping to the sub-pixel grid: nothing to rasterize.
     Degenerate,
+    /// A corner's clip coordinates are not finite (NaN or ∞, from a vertex shader's
+    /// `gl_Position`): dropped before clipping, as nothing can be drawn from them.
+    NotFinite,
 }
 
 /// The record of one primitive.
@@ -272,6 +275,38 @@ pub struct VertexResults {
     pub stride: u32,
     /// Every vertex's outputs, in the shader's output order.
     pub values: Vec<f32>,
+}
+
+impl FrameCapture {
+    /// Primitives dropped because a corner's `gl_Position` was not finite
+    /// ([`Fate::NotFinite`]).
+    #[must_use]
+    pub fn not_finite_primitives(&self) -> usize {
+        self.primitives
+            .iter()
+            .filter(|p| p.fate == Fate::NotFinite)
+            .count()
+    }
+
+    /// What of the frame is not a number, in words, for the command line: triangles dropped
+    /// for a `gl_Position` that is NaN or ∞, pixels whose shader colour was (drawn black).
+    #[must_use]
+    pub fn not_finite_warnings(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        let dropped = self.not_finite_primitives();
+        if dropped > 0 {
+            out.push(format!(
+                "{dropped} triangle(s) dropped: a vertex shader's gl_Position was NaN or infinite (their fate in capture.json is \"NotFinite\")"
+            ));
+        }
+        if let Some(s) = self.shaders.as_ref().filter(|s| s.not_finite > 0) {
+            out.push(format!(
+                "{} pixel(s) NaN or infinite (drawn black): a fragment shader's colour was not a finite number",
+                s.not_finite
+            ));
+        }
+        out
+    }
 }
 
 impl FrameCapture {

@@ -239,6 +239,17 @@ fn assemble_one(
         bary: corners[k],
     });
     let start = triangles.count as u32;
+    if input.iter().any(|v| !v.clip.is_finite()) {
+        return PrimitiveRecord {
+            id,
+            object,
+            vertices: rows,
+            fate: Fate::NotFinite,
+            clipped_polygon: None,
+            triangles: [start, start],
+            counts: RasterCounts::default(),
+        };
+    }
     let outcome = clip::clip_triangle(input);
     let polygon: &[ClipVertex] = match &outcome {
         ClipOutcome::Inside => &input,

@@ -330,6 +330,41 @@ fn a_long_loop_runs_when_max_steps_allows_it() {
     render(&scene, &s);
 }
 
+/// A vertex shader whose `gl_Position` is infinite for some vertices (a division by zero made at
+/// run time) does not stop the frame: the triangles with such a corner are dropped before
+/// clipping ([`Fate::NotFinite`]), counted and said; the others are drawn.
+#[test]
+fn a_gl_position_that_is_not_finite_drops_its_triangles_not_the_frame() {
+    use pipeline::capture::Fate;
+    let vs = "#version 330 core\nuniform mat4 mvp;\nin vec3 position;\nvoid main() {\n  gl_Position = mvp * vec4(position, 1.0);\n  if (position.x > 0.5) {\n    gl_Position.w = 1.0 / (position.x - position.x);\n  }\n}\n";
+    let red = "#version 330 core\nout vec4 color;\nvoid main() {\n  color = vec4(1.0, 0.0, 0.0, 1.0);\n}\n";
+    let scene = with_shaders(sphere_scene(false), Some(vs), Some(red));
+    let f = render(&scene, &settings());
+    // By the mesh: the triangles with a corner at x > 0.5, and only those, are dropped.
+    let mesh = &scene.objects[0].mesh;
+    let far_right = |p: &pipeline::capture::PrimitiveRecord| {
+        mesh.indices[p.id as usize]
+            .iter()
+            .any(|&i| mesh.positions[i as usize].x > 0.5)
+    };
+    let dropped = f.primitives.iter().filter(|p| p.fate == Fate::NotFinite);
+    assert!(dropped.clone().all(far_right));
+    let expected = f.primitives.iter().filter(|p| far_right(p)).count();
+    assert!(expected > 0);
+    assert_eq!(f.not_finite_primitives(), expected);
+    assert_eq!(dropped.count(), expected);
+    assert!(
+        f.pixels.coverage.iter().any(|&c| c > 0),
+        "the rest is drawn"
+    );
+    let words = f.not_finite_warnings();
+    assert_eq!(words.len(), 1, "{words:?}");
+    assert!(
+        words[0].starts_with(&format!("{expected} triangle(s) dropped")),
+        "{words:?}"
+    );
+}
+
 #[test]
 fn the_inspected_pixel_keeps_its_fragment_shaders_run() {
     let fs = "#version 330 core\nin vec3 w_nrm;\nout vec4 color;\nvoid main() {\n  vec3 n = normalize(w_nrm);\n  float k = n.z > 0.5 ? 1.0 : 0.25;\n  color = vec4(n * 0.5 + 0.5, k);\n}\n";
