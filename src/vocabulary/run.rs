@@ -52,10 +52,9 @@ pub fn render_error(e: &RenderError, lang: Lang) -> String {
             Lang::Zh,
         ) => {
             let part = match part {
-                CodePart::Shader(pipeline::shader::Stage::Vertex) => "顶点着色器",
-                CodePart::Shader(pipeline::shader::Stage::Fragment) => "片元着色器",
-                CodePart::Inside => "inside 测试",
-                CodePart::DepthTest => "深度测试",
+                CodePart::Shader(pipeline::shader::Stage::Vertex) => "顶点着色器".to_owned(),
+                CodePart::Shader(pipeline::shader::Stage::Fragment) => "片元着色器".to_owned(),
+                CodePart::Function(kind) => format!("函数 {}", kind.key()),
             };
             format!(
                 "无法绘制场景：物体 {object} 的{part}，{}",
@@ -92,6 +91,21 @@ mod tests {
         assert_eq!(
             render_error(&e, Lang::En),
             "the scene cannot be drawn: fragment shader of sphere, line 12, column 5: the loop ran more than 65536 steps (an endless loop?)"
+        );
+        // A function the pipeline calls is named by its GLSL name in Chinese too.
+        let RenderError::Code { error, .. } = e else {
+            unreachable!()
+        };
+        let e = RenderError::Code {
+            part: CodePart::Function(pipeline::shader::HookKind::Curve),
+            object: "curve".to_owned(),
+            error,
+        };
+        assert!(
+            render_error(&e, Lang::Zh)
+                .starts_with("无法绘制场景：物体 curve 的函数 de_casteljau，第 12 行第 5 列："),
+            "{}",
+            render_error(&e, Lang::Zh)
         );
     }
 }

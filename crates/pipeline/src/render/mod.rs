@@ -16,6 +16,7 @@ mod pixel_samples;
 mod resolve;
 mod runs;
 mod shaders;
+mod student;
 pub use shaders::trace_vertex;
 
 use std::time::Duration;
@@ -31,6 +32,7 @@ use crate::raster::{RasterCounts, RasterTriangle, SampleBuffers};
 use crate::scene::{Object, Scene};
 use crate::settings::RenderSettings;
 use crate::shade::{Frequency, ShadeTerms};
+use crate::shader::HookKind;
 use crate::transform::{self, NamedMatrix};
 use crate::vertex::{self, VertexMatrices, VertexRecord};
 
@@ -59,21 +61,25 @@ pub enum RenderError {
 pub enum CodePart {
     /// A vertex or fragment shader.
     Shader(crate::shader::Stage),
-    /// The rasterizer's `inside()`.
-    Inside,
-    /// The depth test's `depth_test()`.
-    DepthTest,
+    /// A function the pipeline calls: the rasterizer's `inside()`, the depth test, a Bézier
+    /// curve's or patch's point, the shadow matrix.
+    Function(crate::shader::HookKind),
 }
 
 impl CodePart {
-    /// Its name in English: `fragment shader`, `inside test`, `depth test`.
+    /// Its name in English: `fragment shader`, `inside`, `de_casteljau`.
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
             Self::Shader(crate::shader::Stage::Vertex) => "vertex shader",
             Self::Shader(crate::shader::Stage::Fragment) => "fragment shader",
-            Self::Inside => "inside test",
-            Self::DepthTest => "depth test",
+            Self::Function(kind) => match kind {
+                crate::shader::HookKind::Inside => "inside test",
+                crate::shader::HookKind::DepthTest => "depth test",
+                crate::shader::HookKind::Curve => "de_casteljau()",
+                crate::shader::HookKind::ShadowMatrix => "shadow_matrix()",
+                crate::shader::HookKind::Patch => "bezier_patch()",
+            },
         }
     }
 }
@@ -134,10 +140,10 @@ pub fn render_reusing(
     if !problems.is_empty() {
         return Err(RenderError::Invalid(problems));
     }
-    if let Some(drawn) = with_student_curves(scene)? {
+    if let Some(drawn) = student::with_student_curves(scene)? {
         return render_reusing(&drawn, settings, spare);
     }
-    if let Some(drawn) = with_student_shadow(scene)? {
+    if let Some(drawn) = student::with_student_shadow(scene)? {
         return render_reusing(&drawn, settings, spare);
     }
     if scene.shadow.is_some() || !scene.figures.is_empty() {
@@ -155,86 +161,6 @@ pub fn render_reusing(
         });
     }
     render_stages(scene, settings, spare)
-}
-
-/// The scene with each Bézier curve that carries the student's de Casteljau drawn from the
-/// student's curve points, and each Bézier patch that carries the student's `bezier_patch` from
-/// the student's surface points; `None` when no object carries either.
-///
-/// # Errors
-/// A run-time error of the student's function.
-fn with_student_curves(scene: &Scene) -> Result<Option<Scene>, RenderError> {
-    use crate::mesh::BuiltinMesh;
-    if !scene
-        .objects
-        .iter()
-        .any(|o| o.curve.is_some() || o.patch.is_some())
-    {
-        return Ok(None);
-    }
-    let mut drawn = scene.clone();
-    for o in &mut drawn.objects {
-        let mesh = match (o.curve.take(), o.patch.take(), &o.builtin) {
-            (Some(hook), _, Some(BuiltinMesh::Bezier { points, t, levels })) => {
-                let curve = |ts: &[f32]| hook.curve_points(*points, ts).map_err(|e| e.to_string());
-                crate::mesh::construction_mesh_from(*points, *t, *levels, &curve).map_err(|e| {
-                    RenderError::Invalid(vec![format!("de Casteljau of {}, {e}", o.name)])
-                })?
-            }
-            (
-                _,
-                Some(hook),
-                Some(BuiltinMesh::BezierPatch {
-                    heights,
-                    u,
-                    v,
-                    levels,
-                }),
-            ) => {
-                let points = |rows: &[[glam::Vec3; 4]; 4], uvs: &[glam::Vec2]| {
-                    hook.patch_points(rows, uvs).map_err(|e| e.to_string())
-                };
-                crate::mesh::patch::patch_mesh_from(heights, *u, *v, *levels, &points).map_err(
-                    |e| RenderError::Invalid(vec![format!("bezier_patch of {}, {e}", o.name)]),
-                )?
-            }
-            _ => continue,
-        };
-        o.mesh = std::sync::Arc::new(mesh);
-    }
-    Ok(Some(drawn))
-}
-
-/// The scene with its planar shadow projected by the student's `shadow_matrix` (called once,
-/// for the light relative to the plane); `None` when the scene has no shadow, no object carries
-/// the function, or its matrix is already in place.
-///
-/// # Errors
-/// A run-time error of the student's function, or a matrix that is not finite.
-fn with_student_shadow(scene: &Scene) -> Result<Option<Scene>, RenderError> {
-    let Some(shadow) = scene.shadow.filter(|s| s.yours.is_none()) else {
-        return Ok(None);
-    };
-    let Some(hook) = scene.hook(crate::shader::HookKind::ShadowMatrix) else {
-        return Ok(None);
-    };
-    let light = shadow.light_over_plane();
-    let m = hook
-        .shadow_matrix(light)
-        .map_err(|e| RenderError::Invalid(vec![format!("shadow_matrix, {e}")]))?;
-    if !m.is_finite() {
-        return Err(RenderError::Invalid(vec![format!(
-            "shadow_matrix(vec3({}, {}, {})) returned a matrix that is not finite (a division by \
-             zero?): {m}",
-            light.x, light.y, light.z
-        )]));
-    }
-    let mut drawn = scene.clone();
-    drawn.shadow = Some(crate::scene::PlanarShadow {
-        yours: Some(m),
-        ..shadow
-    });
-    Ok(Some(drawn))
 }
 
 /// The stages, in order, over a scene whose figures and shadows are already plain objects.
@@ -459,7 +385,7 @@ fn rasterize_with_hooks(
                     [pixels(f.x), pixels(f.y)]
                 });
                 let answers = test.covers(&points, corners);
-                Some(answers.map_err(|e| failed(CodePart::Inside, object, e))?)
+                Some(answers.map_err(|e| failed(CodePart::Function(HookKind::Inside), object, e))?)
             }
             None => None,
         };
@@ -473,7 +399,7 @@ fn rasterize_with_hooks(
         let stored: Vec<f32> = covered.iter().map(|&(s, _)| samples.depth[s]).collect();
         let passes = test
             .passes(&z, &stored)
-            .map_err(|e| failed(CodePart::DepthTest, object, e))?;
+            .map_err(|e| failed(CodePart::Function(HookKind::DepthTest), object, e))?;
         counts.push(samples.write_samples(&covered, &passes, i as u32));
     }
     Ok(counts)

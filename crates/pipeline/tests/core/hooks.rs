@@ -250,6 +250,39 @@ fn de_casteljau_in_glsl_draws_pipelens_curve_and_a_straight_line_does_not() {
     assert!(own.difference(&mine, 1.0).is_some_and(|d| d.passed()));
 }
 
+/// A pipeline function that stops at run time (here an endless de Casteljau) is the frame's
+/// error as data: which function, on which object, the complaint at its line.
+#[test]
+fn a_pipeline_function_that_stops_is_named_as_the_frame_s_error() {
+    use pipeline::mesh::BuiltinMesh;
+    use pipeline::shader::{Complaint, HookKind, compile_hook};
+    let endless = "vec2 de_casteljau(vec2 p0, vec2 p1, vec2 p2, vec2 p3, float t) {\n    float x = 0.0;\n    while (x >= 0.0) {\n        x += 1.0;\n    }\n    return p0;\n}\n";
+    let curve = BuiltinMesh::Bezier {
+        points: [Vec2::ZERO, Vec2::X, Vec2::ONE, Vec2::Y],
+        t: 1.0,
+        levels: 0,
+    };
+    let mut object = pipeline::scene::Object::new("curve", curve.build());
+    object.builtin = Some(curve);
+    object.curve = Some(compile_hook(HookKind::Curve, endless).expect("compiles"));
+    let (mut scene, settings) = pixel_scene(16, 16, &[]);
+    scene.objects = vec![object];
+    let e = pipeline::render(&scene, &settings).expect_err("stops");
+    let pipeline::RenderError::Code {
+        part,
+        object,
+        error,
+    } = &e
+    else {
+        panic!("{e}");
+    };
+    assert_eq!(*part, pipeline::CodePart::Function(HookKind::Curve));
+    assert_eq!(object, "curve");
+    assert_eq!(error.complaint, Complaint::EndlessLoop { budget: 65_536 });
+    assert_eq!(error.line, 3, "{error:?}");
+    assert!(e.to_string().contains("de_casteljau() of curve"), "{e}");
+}
+
 /// Angel's shadow matrix written in GLSL (T(l)·P·T(−l), P the identity with last row
 /// (0, −1/y_l, 0, 0)) is pipelens' own, entry by entry.
 const SHADOW: &str = "mat4 shadow_matrix(vec3 light) {
