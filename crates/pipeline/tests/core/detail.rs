@@ -148,6 +148,17 @@ fn displacement_moves_each_vertex_along_its_normal_by_the_height() {
     );
 }
 
+/// A cube map whose faces (+x, −x, +y, −y, +z, −z) are each one colour, 2 × 2 texels.
+fn constant_faces(colors: [Vec3; 6]) -> pipeline::texture::CubeMap {
+    pipeline::texture::CubeMap {
+        faces: colors.map(|c| Level {
+            width: 2,
+            height: 2,
+            texels: vec![c; 4],
+        }),
+    }
+}
+
 #[test]
 fn cube_map_faces_and_a_mirror_sphere() {
     use pipeline::light::Light;
@@ -170,13 +181,7 @@ fn cube_map_faces_and_a_mirror_sphere() {
         Vec3::new(1.0, 1.0, 0.0),
         Vec3::new(0.0, 1.0, 1.0),
     ];
-    let cube = CubeMap {
-        faces: colors.map(|c| Level {
-            width: 2,
-            height: 2,
-            texels: vec![c; 4],
-        }),
-    };
+    let cube = constant_faces(colors);
     let mut sphere = Object::new(
         "mirror",
         BuiltinMesh::UvSphere {
@@ -280,7 +285,6 @@ fn the_bumps_normal_map_matches_bump_mapping_the_bumps() {
 #[test]
 fn a_shader_s_sampler_cube_reads_the_face_a_direction_points_at() {
     use pipeline::shader::{self, Bindings, Bound, LANES, Stage, Uniforms};
-    use pipeline::texture::CubeMap;
     let src = "#version 330 core\nuniform samplerCube environment;\nin vec3 d;\nout vec4 color;\nvoid main() { color = texture(environment, d); }\n";
     let p = shader::compile(Stage::Fragment, src).expect("compiles");
     let colors = [
@@ -291,13 +295,7 @@ fn a_shader_s_sampler_cube_reads_the_face_a_direction_points_at() {
         Vec3::new(0.0, 1.0, 1.0),
         Vec3::new(1.0, 0.0, 1.0),
     ];
-    let cube = CubeMap {
-        faces: colors.map(|c| Level {
-            width: 2,
-            height: 2,
-            texels: vec![c; 4],
-        }),
-    };
+    let cube = constant_faces(colors);
     // One direction towards each face, in face order, of assorted lengths.
     let dirs = [
         Vec3::new(2.0, 0.5, -0.3),
