@@ -215,7 +215,7 @@ fn render_stages(
     )?;
     times.raster = t.elapsed();
     // Fragments a shader discards are taken out of the depth test, layer by layer.
-    let mut peeled = 0;
+    let mut peeled = shaders::Peeled::default();
     if let Some(results) = &vertex_results {
         let frame = shaders::Frame {
             scene,

@@ -248,6 +248,7 @@ fn behind_a_discarded_fragment_the_next_surface_shows() {
         programs: Arc::new(programs),
         time: 0.0,
     });
+    let square_again = square.clone();
     scene.objects.push(square);
     let with_holes = render(&scene, &settings());
     scene.objects.pop();
@@ -282,6 +283,31 @@ fn behind_a_discarded_fragment_the_next_surface_shows() {
     assert!(
         reds > 1000 && sphere_seen > 1000,
         "{reds} red pixels, {sphere_seen} of the sphere"
+    );
+    // Inspected where the square's fragment was discarded and the sphere (no shader) shows:
+    // the pixel's record keeps the discarded fragment's run, ending at its `discard`.
+    let (w, h) = (with_holes.width() as usize, with_holes.height() as usize);
+    let hole = (0..w * h)
+        .find(|&i| {
+            let (x, row) = (i % w, i / w);
+            let in_square = (w / 3..2 * w / 3).contains(&x) && (h / 3..2 * h / 3).contains(&row);
+            in_square
+                && with_holes.pixels.color[i] != red
+                && sphere_alone.pixels.color[i] != with_holes.settings.background.to_array()
+        })
+        .expect("a hole of the square over the sphere");
+    let mut s = settings();
+    s.capture.pixel = Some(((hole % w) as u32, (h - 1 - hole / w) as u32));
+    scene.objects.push(square_again);
+    let f = render(&scene, &s);
+    let runs = &f.shaders.as_ref().expect("a shader record").pixel;
+    assert_eq!(runs.len(), 1, "{runs:#?}");
+    assert_eq!(runs[0].output, None);
+    assert_eq!(
+        runs[0].trace.last().map(|l| &l.step),
+        Some(&pipeline::shader::Step::Discard),
+        "{:#?}",
+        runs[0].trace
     );
 }
 

@@ -28,8 +28,19 @@ fn may_discard(frame: &Frame<'_>) -> bool {
     })
 }
 
+/// What peeling took out: how many fragments were discarded, and the runs of those at the
+/// inspected pixel (front first), each ending at the `discard` that took it out.
+#[derive(Default)]
+pub(in crate::render) struct Peeled {
+    /// Fragments discarded.
+    pub(in crate::render) fragments: u64,
+    /// The inspected pixel's discarded fragments' runs, in the order they were peeled.
+    pub(in crate::render) traces: Vec<crate::capture::FragmentTrace>,
+}
+
 /// Takes every fragment the shaders discard out of `samples`, rasterizing the pixels they
-/// covered again without them. Returns how many fragments were discarded.
+/// covered again without them. Returns how many fragments were discarded, with the runs of
+/// those at the inspected pixel.
 ///
 /// # Errors
 /// A run-time error of a fragment shader.
@@ -37,10 +48,11 @@ pub(in crate::render) fn peel_discarded(
     frame: &Frame<'_>,
     results: &[Option<VertexResults>],
     samples: &mut SampleBuffers,
-) -> Result<u64, RenderError> {
+) -> Result<Peeled, RenderError> {
     if !may_discard(frame) {
-        return Ok(0);
+        return Ok(Peeled::default());
     }
+    let mut traces = Vec::new();
     let settings = frame.settings;
     let n = settings.width as usize * settings.height as usize;
     let mut discarded: HashSet<(u32, u32)> = HashSet::new();
@@ -58,6 +70,9 @@ pub(in crate::render) fn peel_discarded(
             face_shading: frame.face_shading,
         };
         let counts = fragment_shaders(&ctx, frame.matrices, results, &mut scratch)?;
+        // The inspected pixel's fragments this layer discarded (no output): the final frame
+        // no longer has them, so their runs are kept from here.
+        traces.extend(counts.pixel.into_iter().filter(|t| t.output.is_none()));
         let fresh: Vec<(u32, u32)> = counts
             .discards
             .into_iter()
@@ -72,7 +87,10 @@ pub(in crate::render) fn peel_discarded(
         }
         rasterize_again(samples, frame.triangles, &again, &discarded, settings);
     }
-    Ok(discarded.len() as u64)
+    Ok(Peeled {
+        fragments: discarded.len() as u64,
+        traces,
+    })
 }
 
 /// Clears the pixels marked in `again` and rasterizes them again, in draw order, leaving out

@@ -19,7 +19,7 @@ use rayon::prelude::*;
 mod discard;
 mod fragment;
 
-pub(in crate::render) use discard::peel_discarded;
+pub(in crate::render) use discard::{Peeled, peel_discarded};
 pub(in crate::render) use fragment::fragment_shaders;
 
 use super::RenderError;
@@ -33,7 +33,8 @@ use crate::vertex::{self, VertexRecord};
 
 /// The fragment stage over a resolved frame: the shaders' colours written into `color`, and
 /// the record of what the shaders did (`None` when no object has shaders). `peeled` fragments
-/// were discarded before the resolve.
+/// were discarded before the resolve: the inspected pixel's runs list theirs first, nearest
+/// first, each ending at its `discard`.
 ///
 /// # Errors
 /// A run-time error of a fragment shader.
@@ -42,18 +43,20 @@ pub(in crate::render) fn record(
     matrices: &Matrices,
     vertex_results: Option<Vec<Option<VertexResults>>>,
     color: &mut [[f32; 3]],
-    peeled: u64,
+    peeled: Peeled,
 ) -> Result<Option<ShaderRecord>, RenderError> {
     let Some(results) = vertex_results else {
         return Ok(None);
     };
     let counts = fragment_shaders(ctx, matrices, &results, color)?;
+    let mut pixel = peeled.traces;
+    pixel.extend(counts.pixel);
     Ok(Some(ShaderRecord {
         vertex_results: results,
         fragments: counts.fragments,
-        discarded: counts.discarded + peeled,
+        discarded: counts.discarded + peeled.fragments,
         not_finite: counts.not_finite,
-        pixel: counts.pixel,
+        pixel,
     }))
 }
 
