@@ -268,28 +268,14 @@ pub(super) fn version(source: &str) -> Option<ShaderError> {
 /// # Errors
 /// Each such call.
 pub(super) fn dropped_arguments(source: &str) -> Result<(), Vec<ShaderError>> {
-    use super::lexeme::{Kind, lex};
     const DROPPED: [&str; 1] = ["texelFetchOffset"];
-    let lexemes = lex(source);
-    let errors = lexemes
-        .iter()
-        .enumerate()
-        .filter(|(k, l)| {
-            l.kind == Kind::Word
-                && DROPPED.contains(&&source[l.span.clone()])
-                && lexemes[k + 1..]
-                    .iter()
-                    .find(|n| !matches!(n.kind, Kind::Space | Kind::Comment))
-                    .is_some_and(|n| &source[n.span.clone()] == "(")
-        })
-        .map(|(_, l)| {
+    let errors = super::lexeme::calls(source)
+        .into_iter()
+        .filter(|l| DROPPED.contains(&&source[l.span.clone()]))
+        .map(|l| {
             let name = &source[l.span.clone()];
             complain(
-                error_at(
-                    source,
-                    l.span.clone(),
-                    format!("pipelens does not run `{name}` yet"),
-                ),
+                error_at(source, l.span.clone(), super::code::not_run(name)),
                 Complaint::NotRunYet(name.to_owned()),
             )
         })

@@ -309,10 +309,16 @@ impl OpError {
     #[must_use]
     pub fn not_run(name: &str) -> Self {
         Self {
-            what: format!("pipelens does not run `{name}` yet"),
+            what: not_run(name),
             function: Some(name.to_owned()),
         }
     }
+}
+
+/// What a built-in pipelens does not run yet is told: "pipelens does not run `modf` yet".
+#[must_use]
+pub fn not_run(name: &str) -> String {
+    format!("pipelens does not run `{name}` yet")
 }
 
 /// Components of a type.

@@ -94,6 +94,25 @@ pub fn same_code(a: &str, b: &str) -> bool {
     code(a).eq(code(b))
 }
 
+/// The words of `src` that are called: each followed, past spaces and comments, by `(` (a
+/// function's name at its call or definition, a constructor's type).
+#[must_use]
+pub fn calls(src: &str) -> Vec<Lexeme> {
+    let lexemes = lex(src);
+    lexemes
+        .iter()
+        .enumerate()
+        .filter(|(k, l)| {
+            l.kind == Kind::Word
+                && lexemes[k + 1..]
+                    .iter()
+                    .find(|n| !matches!(n.kind, Kind::Space | Kind::Comment))
+                    .is_some_and(|n| &src[n.span.clone()] == "(")
+        })
+        .map(|(_, l)| l.clone())
+        .collect()
+}
+
 /// Where `src` defines (or declares) the function `name` at its top level: the offset of the
 /// name in `T name(`, a type word before it, outside every brace.
 #[must_use]

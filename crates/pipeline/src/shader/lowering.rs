@@ -230,22 +230,13 @@ const LEGACY_TEXTURE: [(&str, &str); 6] = [
 /// with spaces to the old name's length so that every byte keeps its offset (naga would read
 /// `texture2D(…)` as a constructor of its `texture2D` type).
 pub(super) fn legacy_texture_calls(src: &str) -> String {
-    use super::lexeme::{Kind, lex};
-    let lexemes = lex(src);
     let mut out = src.to_owned();
-    for (k, l) in lexemes.iter().enumerate() {
-        let Some(&(old, new)) = LEGACY_TEXTURE
+    for l in super::lexeme::calls(src) {
+        if let Some(&(old, new)) = LEGACY_TEXTURE
             .iter()
             .find(|(old, _)| src[l.span.clone()] == **old)
-        else {
-            continue;
-        };
-        let call = lexemes[k + 1..]
-            .iter()
-            .find(|n| !matches!(n.kind, Kind::Space | Kind::Comment))
-            .is_some_and(|n| &src[n.span.clone()] == "(");
-        if l.kind == Kind::Word && call {
-            out.replace_range(l.span.clone(), &format!("{new:<width$}", width = old.len()));
+        {
+            out.replace_range(l.span, &format!("{new:<width$}", width = old.len()));
         }
     }
     out

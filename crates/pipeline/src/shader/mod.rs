@@ -191,7 +191,7 @@ fn parse_errors(
             if let Complaint::UnknownFunction(name) = &complaint
                 && glsl330::FUNCTIONS.contains(&name.as_str())
             {
-                e.message = format!("pipelens does not run `{name}` yet");
+                e.message = code::not_run(name);
                 complaint = Complaint::NotRunYet(name.clone());
             } else if let Complaint::UnknownFunction(name) = &complaint
                 && let Some(def) = lexeme::definition(source, name)
