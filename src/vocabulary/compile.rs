@@ -153,6 +153,12 @@ fn form(c: &Complaint, lang: Lang) -> Option<String> {
             format!("pipelens does not run `{name}` yet"),
             format!("pipelens 还不能运行 `{name}`"),
         ),
+        C::SamplerParameter(ty) => t(
+            format!(
+                "pipelens does not pass a `{ty}` as a parameter yet: read the uniform by its name inside the function"
+            ),
+            format!("pipelens 还不能把 `{ty}` 作为参数传递：请在函数里直接用名字读取这个 uniform"),
+        ),
         C::Recursion(name) => t(
             format!("GLSL does not allow recursion: `{name}` calls itself"),
             format!("GLSL 不允许递归：`{name}` 调用了它自己"),
@@ -324,6 +330,7 @@ mod tests {
             Complaint::IntegerOverflow,
             Complaint::NotImplemented("x".into()),
             Complaint::NotRunYet("modf".into()),
+            Complaint::SamplerParameter("sampler2D".into()),
             Complaint::Recursion("depth".into()),
             Complaint::DefinedBelow("shade".into()),
         ];

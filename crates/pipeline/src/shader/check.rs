@@ -287,6 +287,53 @@ pub(super) fn dropped_arguments(source: &str) -> Result<(), Vec<ShaderError>> {
     }
 }
 
+/// A sampler declared as a function's parameter (`vec4 look(sampler2D s, vec2 uv)`): valid
+/// GLSL, which pipelens does not pass yet (it binds each texture by its uniform's name), said
+/// at the type rather than naga's "Expected RightParen".
+///
+/// # Errors
+/// Each such parameter.
+pub(super) fn sampler_parameters(source: &str) -> Result<(), Vec<ShaderError>> {
+    use super::lexeme::{Kind, lex};
+    const SAMPLERS: [&str; 6] = [
+        "sampler1D",
+        "sampler2D",
+        "sampler3D",
+        "samplerCube",
+        "sampler2DShadow",
+        "sampler2DArray",
+    ];
+    let (mut braces, mut parens) = (0i32, 0i32);
+    let mut errors = Vec::new();
+    for l in lex(source) {
+        let text = &source[l.span.clone()];
+        match text {
+            "{" => braces += 1,
+            "}" => braces -= 1,
+            "(" => parens += 1,
+            ")" => parens -= 1,
+            ty if braces == 0 && parens > 0 && l.kind == Kind::Word && SAMPLERS.contains(&ty) => {
+                errors.push(complain(
+                    error_at(
+                        source,
+                        l.span.clone(),
+                        format!(
+                            "pipelens does not pass a `{ty}` as a parameter yet: read the uniform by its name inside the function"
+                        ),
+                    ),
+                    Complaint::SamplerParameter(ty.to_owned()),
+                ));
+            }
+            _ => {}
+        }
+    }
+    if errors.is_empty() {
+        Ok(())
+    } else {
+        Err(errors)
+    }
+}
+
 /// `error` with the mistake `complaint` as data.
 pub(super) fn complain(mut error: ShaderError, complaint: Complaint) -> ShaderError {
     error.complaint = complaint;

@@ -97,6 +97,9 @@ pub enum Level {
     Bias(u32),
     /// Level 0.
     Zero,
+    /// From the derivatives given (`textureGrad(s, uv, dPdx, dPdy)`): the registers of
+    /// `∂uv/∂x` and `∂uv/∂y`, which take the quad's differences' place.
+    Gradient { x: u32, y: u32 },
 }
 
 /// One expression's operation; its result goes to the expression's register.
@@ -165,11 +168,13 @@ pub enum Op {
         to: Kind,
         convert: bool,
     },
-    /// `texture(s, uv)` and its kin: a vec4.
+    /// `texture(s, uv)` and its kin: a vec4. `offset`: the register of the `ivec2` texel
+    /// offset of `textureOffset` and its kin.
     Sample {
         texture: u32,
         coordinate: Reg,
         level: Level,
+        offset: Option<u32>,
     },
     /// `texture(s, r)` of a `samplerCube`: the cube map in direction `r`, a vec4 (any level
     /// asked for reads the one level a cube map has).
@@ -223,13 +228,45 @@ pub enum Stmt {
     Kill { at: usize },
     /// `*place = value`.
     Store { at: usize, place: Place, value: u32 },
-    /// A call: the function, its arguments' registers, the result's register.
+    /// A call: the function, its arguments, the result's register.
     Call {
         at: usize,
         function: usize,
-        args: Vec<Reg>,
+        args: Vec<Argument>,
         result: Option<Reg>,
     },
+}
+
+/// What a call passes for one parameter.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Argument {
+    /// An `in` parameter's value: the register it is copied from.
+    Value(Reg),
+    /// An `out` or `inout` parameter's variable (GLSL 3.30 §6.1.1): copied into the callee's
+    /// parameter when the call starts (naga writes `out`'s as a fresh spill variable, so its
+    /// value is undefined there as GLSL says), and back to this place when it returns, in
+    /// the lanes that made the call.
+    Ref(Place),
+}
+
+/// Where a function keeps one parameter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Parameter {
+    /// An `in` parameter: a register.
+    Value(Reg),
+    /// An `out` or `inout` parameter: its own components among the function's locals, which
+    /// the body reads and writes as a variable and the call copies in and back.
+    Ref(Reg),
+}
+
+impl Parameter {
+    /// Its components (a register or locals).
+    #[must_use]
+    pub fn reg(self) -> Reg {
+        match self {
+            Self::Value(r) | Self::Ref(r) => r,
+        }
+    }
 }
 
 /// One function in register form.
@@ -249,10 +286,10 @@ pub struct Function {
     pub width: u32,
     /// Local variables: first component, size, and the register of their initial value.
     pub locals: Vec<(Reg, Option<u32>)>,
-    /// Components of all locals.
+    /// Components of all locals, the `out` and `inout` parameters' after the variables'.
     pub locals_width: u32,
-    /// The arguments' registers.
-    pub args: Vec<Reg>,
+    /// Where each parameter is kept.
+    pub args: Vec<Parameter>,
     /// The type it returns (`None`: `void`).
     pub result: Option<naga::Handle<naga::Type>>,
     /// The body.

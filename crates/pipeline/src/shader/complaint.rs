@@ -67,6 +67,9 @@ pub enum Complaint {
     NotImplemented(String),
     /// A built-in function of GLSL that pipelens does not run yet (as GLSL spells it).
     NotRunYet(String),
+    /// A sampler (`sampler2D`, as GLSL spells its type) declared as a function's parameter,
+    /// which pipelens does not pass yet.
+    SamplerParameter(String),
     /// A function that calls itself (GLSL allows no recursion).
     Recursion(String),
     /// A function called above its definition, with no prototype before the call.

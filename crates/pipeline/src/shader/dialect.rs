@@ -392,6 +392,7 @@ fn assemble(
     }
     // Blanking replaces whole declarations and ASCII keywords, so the text stays UTF-8.
     let student = super::lowering::legacy_texture_calls(&String::from_utf8_lossy(&student));
+    let student = super::lowering::parameter_qualifiers(&student);
     // Valid GLSL naga refuses, rewritten (stores through a swizzle of an indexed value).
     let (student, edits) = super::lowering::swizzle_stores(&student);
     let preamble_len = preamble.text.len();

@@ -14,6 +14,9 @@
 //! GLSL 1.20's texture functions (`texture2D(s, uv)`, which drivers still take in `#version 330
 //! core`) are renamed to GLSL 1.30's (`texture`), padded to the same length: naga would read
 //! `texture2D(…)` as a constructor of its own `texture2D` type.
+//!
+//! A parameter's qualifiers naga refuses (`const in float v`, `in highp float v`) are blanked to
+//! the form it reads (`const float v`), each byte kept in its place.
 
 use std::ops::Range;
 
@@ -237,6 +240,43 @@ pub(super) fn legacy_texture_calls(src: &str) -> String {
             .find(|(old, _)| src[l.span.clone()] == **old)
         {
             out.replace_range(l.span, &format!("{new:<width$}", width = old.len()));
+        }
+    }
+    out
+}
+
+/// The words blanked in a function's parameter list, which naga's front end refuses there:
+/// GLSL's precision qualifiers (no effect in desktop GLSL 3.30, §4.5.2).
+const PRECISION: [&str; 3] = ["highp", "mediump", "lowp"];
+
+/// `src` with the parameter qualifiers naga refuses blanked, each byte kept in its place:
+/// `const in float v` and `in const float v` become `const float v` (the same read-only `in`
+/// parameter, GLSL 3.30 §6.1.1), and a precision qualifier (`in highp float v`) is dropped. A
+/// parameter list is a parenthesis outside every brace: a function's header.
+pub(super) fn parameter_qualifiers(src: &str) -> String {
+    use super::lexeme::{Kind, lex};
+    let code: Vec<_> = lex(src)
+        .into_iter()
+        .filter(|l| !matches!(l.kind, Kind::Comment | Kind::Space))
+        .collect();
+    let text = |k: usize| code.get(k).map_or("", |l| &src[l.span.clone()]);
+    let mut out = src.to_owned();
+    let (mut braces, mut parens) = (0i32, 0i32);
+    for (k, l) in code.iter().enumerate() {
+        match text(k) {
+            "{" => braces += 1,
+            "}" => braces -= 1,
+            "(" => parens += 1,
+            ")" => parens -= 1,
+            word if braces == 0 && parens > 0 && l.kind == Kind::Word => {
+                let blank = PRECISION.contains(&word)
+                    || (word == "in"
+                        && (text(k + 1) == "const" || text(k.wrapping_sub(1)) == "const"));
+                if blank {
+                    out.replace_range(l.span.clone(), &" ".repeat(l.span.len()));
+                }
+            }
+            _ => {}
         }
     }
     out

@@ -239,6 +239,7 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
         return Err(vec![e]);
     }
     check::dropped_arguments(source)?;
+    check::sampler_parameters(source)?;
     let adapted = dialect::adapt(source, stage).map_err(|errs| {
         errs.into_iter()
             .map(|e| error_at(source, e.span, e.message))

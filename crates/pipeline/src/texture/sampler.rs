@@ -2,7 +2,7 @@
 //! `λ = log₂ L + bias` from the screen derivatives of uv, nearest-level and trilinear
 //! minification, and anisotropic filtering along the footprint's major axis.
 
-use glam::{Vec2, Vec3};
+use glam::{IVec2, Vec2, Vec3};
 use serde::Serialize;
 
 use super::{Texture, Wrap};
@@ -129,7 +129,7 @@ impl Texture {
     pub fn sample_level0(&self, uv: Vec2, s: &Sampler) -> Lookup {
         debug_assert!(!s.uses_footprint());
         Lookup {
-            color: self.sample_lod(uv, f32::NEG_INFINITY, s).0,
+            color: self.sample_lod(uv, f32::NEG_INFINITY, s, IVec2::ZERO).0,
             lod: f32::NEG_INFINITY,
             taps: 1,
             ..Lookup::default()
@@ -139,6 +139,22 @@ impl Texture {
     /// Samples at `uv` with the given screen derivatives of `uv`.
     #[must_use]
     pub fn sample(&self, uv: Vec2, duv_dx: Vec2, duv_dy: Vec2, s: &Sampler) -> Lookup {
+        self.sample_shifted(uv, duv_dx, duv_dy, s, IVec2::ZERO)
+    }
+
+    /// [`Self::sample`] with GLSL's texel offset (`textureOffset`, `textureGradOffset`): each
+    /// level `k` read is read `offset` of its own texels away, `u = s·w_k + δu`,
+    /// `v = t·h_k + δv` (GLSL 3.30 §8.9, OpenGL 3.3 §3.8.11). A range query beyond the pyramid
+    /// (ripmap, summed-area table, EWA: no GLSL sampler has them) takes no offset.
+    #[must_use]
+    pub fn sample_shifted(
+        &self,
+        uv: Vec2,
+        duv_dx: Vec2,
+        duv_dy: Vec2,
+        s: &Sampler,
+        offset: IVec2,
+    ) -> Lookup {
         if s.mipmap.beyond_the_pyramid() {
             return self.sample_beyond(uv, duv_dx, duv_dy, s);
         }
@@ -159,12 +175,12 @@ impl Texture {
         };
         let mut sum = Vec3::ZERO;
         for k in 0..taps {
-            let offset = if taps > 1 {
+            let tap = if taps > 1 {
                 (k as f32 + 0.5) / taps as f32 - 0.5
             } else {
                 0.0
             };
-            let (c, level, blend) = self.sample_lod(uv + axis * offset, lod, s);
+            let (c, level, blend) = self.sample_lod(uv + axis * tap, lod, s, offset);
             sum += c;
             (out.level, out.level_blend) = (level, blend);
         }
@@ -197,11 +213,25 @@ impl Texture {
         out
     }
 
-    /// One isotropic lookup at level of detail `lod`: returns the colour, the finer level read
+    /// One isotropic lookup at level of detail `lod`, each level read `offset` of its own
+    /// texels away (see [`Self::sample_shifted`]): returns the colour, the finer level read
     /// and the blend weight of the next one.
-    pub(crate) fn sample_lod(&self, uv: Vec2, lod: f32, s: &Sampler) -> (Vec3, u32, f32) {
+    pub(crate) fn sample_lod(
+        &self,
+        uv: Vec2,
+        lod: f32,
+        s: &Sampler,
+        offset: IVec2,
+    ) -> (Vec3, u32, f32) {
         let max = (self.levels.len() - 1) as f32;
-        let read = |k: usize| self.read_level(k, uv, s.filter, s.wrap);
+        let read = |k: usize| {
+            let at = if offset == IVec2::ZERO {
+                uv
+            } else {
+                uv + offset.as_vec2() / self.levels[k].size()
+            };
+            self.read_level(k, at, s.filter, s.wrap)
+        };
         match s.mipmap {
             _ if lod <= 0.0 => (read(0), 0, 0.0),
             Mipmap::None => (read(0), 0, 0.0),

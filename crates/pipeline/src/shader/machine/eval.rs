@@ -3,7 +3,7 @@
 //! uniform at a fixed place) evaluated once per uniform set. Errors (an index out of range, an
 //! integer division by zero) count only in live lanes.
 
-use glam::{Vec2, Vec3};
+use glam::{IVec2, Vec2, Vec3};
 use naga::{RelationalFunction, UnaryOperator};
 
 use super::super::code::{Function, Kind, Level, Op, Place, Reg, Root, Shape};
@@ -364,15 +364,14 @@ impl Machine<'_> {
                         texture,
                         coordinate,
                         level,
+                        offset,
                     } => {
                         let bound = b.bound(*texture);
-                        let uv = |l: usize| {
-                            Vec2::new(
-                                f32::from_bits(row(coordinate.at, 0)[l]),
-                                f32::from_bits(row(coordinate.at, 1)[l]),
-                            )
-                        };
+                        let uv = |l: usize| vec2_at(&row, coordinate.at, l);
                         for l in 0..n {
+                            let shift = offset.map_or(IVec2::ZERO, |o| {
+                                IVec2::new(row(o, 0)[l] as i32, row(o, 1)[l] as i32)
+                            });
                             let color = match (bound, level) {
                                 (None, _) => Vec3::ZERO,
                                 (Some((t, sampler)), Level::Auto | Level::Bias(_)) => {
@@ -386,14 +385,18 @@ impl Machine<'_> {
                                     if let Level::Bias(r) = level {
                                         s.lod_bias += f32::from_bits(row(*r, 0)[l]);
                                     }
-                                    t.sample(uv(l), dx, dy, &s).color
+                                    t.sample_shifted(uv(l), dx, dy, &s, shift).color
+                                }
+                                (Some((t, sampler)), Level::Gradient { x, y }) => {
+                                    let (dx, dy) = (vec2_at(&row, *x, l), vec2_at(&row, *y, l));
+                                    t.sample_shifted(uv(l), dx, dy, &sampler, shift).color
                                 }
                                 (Some((t, sampler)), Level::Exact(r)) => {
-                                    t.sample_lod(uv(l), f32::from_bits(row(*r, 0)[l]), &sampler)
-                                        .0
+                                    let lod = f32::from_bits(row(*r, 0)[l]);
+                                    t.sample_lod(uv(l), lod, &sampler, shift).0
                                 }
                                 (Some((t, sampler)), Level::Zero) => {
-                                    t.sample_lod(uv(l), 0.0, &sampler).0
+                                    t.sample_lod(uv(l), 0.0, &sampler, shift).0
                                 }
                             };
                             for (k, v) in color.extend(1.0).to_array().iter().enumerate() {
@@ -481,4 +484,9 @@ impl Machine<'_> {
 /// run until the uniforms change.
 pub(super) fn is_fixed_uniform_load(op: &Op) -> bool {
     matches!(op, Op::Load(p) if p.root == Root::Uniform && p.dynamic.is_empty())
+}
+
+/// Lane `l` of the vec2 at register `r`, its rows given by `row(register, component)`.
+fn vec2_at<'a>(row: &impl Fn(u32, u32) -> &'a [u32], r: u32, l: usize) -> Vec2 {
+    Vec2::new(f32::from_bits(row(r, 0)[l]), f32::from_bits(row(r, 1)[l]))
 }

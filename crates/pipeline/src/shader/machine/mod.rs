@@ -11,7 +11,7 @@
 //! A step budget stops endless loops: each lane may run at most [`Machine::budget`] loop
 //! iterations in one invocation.
 
-use super::code::{Code, Place, Reg, Root, Stmt};
+use super::code::{Argument, Code, Parameter, Place, Reg, Root, Stmt};
 use crate::texture::{CubeMap, Sampler, Texture};
 
 mod eval;
@@ -172,6 +172,7 @@ impl<'c> Machine<'c> {
         let entry = code.functions.len() - 1;
         let f = &code.functions[entry];
         for (arg, input) in f.args.iter().zip(inputs) {
+            let arg = arg.reg();
             let r = arg.at as usize * LANES..(arg.at + arg.n) as usize * LANES;
             self.regs[entry][r].copy_from_slice(&input[..arg.n as usize * LANES]);
         }
@@ -456,15 +457,7 @@ impl<'c> Machine<'c> {
                         at: *at,
                         name: callee.name.clone(),
                     });
-                    // A callee is never the caller (GLSL has no recursion): its registers are
-                    // another function's, taken out while the arguments are copied in.
-                    let caller = std::mem::take(&mut self.regs[fi]);
-                    for (arg, src) in callee.args.iter().zip(args) {
-                        let (s, d) = (src.at as usize * LANES, arg.at as usize * LANES);
-                        let len = arg.n as usize * LANES;
-                        self.regs[*function][d..d + len].copy_from_slice(&caller[s..s + len]);
-                    }
-                    self.regs[fi] = caller;
+                    self.pass_arguments(fi, *function, args, mask, live, *at)?;
                     self.call(*function, mask, live, b)?;
                     if let Some(r) = result {
                         let len = r.n as usize * LANES;
@@ -474,10 +467,95 @@ impl<'c> Machine<'c> {
                         self.returns[*function] = ret;
                     }
                     mask &= !self.killed;
+                    self.return_arguments(fi, *function, args, mask, live, *at)?;
                 }
             }
         }
         Ok(mask)
+    }
+
+    /// Copies a call's arguments into the callee `to`: an `in` value into its register, an
+    /// `inout` (or `out`) variable into its parameter's locals, lane by lane in `mask`.
+    fn pass_arguments(
+        &mut self,
+        fi: usize,
+        to: usize,
+        args: &[Argument],
+        mask: u64,
+        live: u64,
+        at: usize,
+    ) -> Res<()> {
+        let callee = &self.code.functions[to];
+        // A callee is never the caller (GLSL has no recursion): its storage is another
+        // function's, taken out while the arguments are copied in.
+        let mut regs = std::mem::take(&mut self.regs[to]);
+        let mut locals = std::mem::take(&mut self.locals[to]);
+        let copied = (|| {
+            for (param, arg) in callee.args.iter().zip(args) {
+                match (*param, arg) {
+                    (Parameter::Value(d), Argument::Value(src)) => {
+                        let (s, d) = (src.at as usize * LANES, d.at as usize * LANES);
+                        let len = src.n as usize * LANES;
+                        regs[d..d + len].copy_from_slice(&self.regs[fi][s..s + len]);
+                    }
+                    (Parameter::Ref(d), Argument::Ref(place)) => {
+                        let storage = self.storage(fi, place.root);
+                        for l in (0..self.n).filter(|&l| mask & bit(l) != 0) {
+                            let o = self.offset_checked(fi, place, l, live & bit(l) != 0, at)?;
+                            for c in 0..d.n as usize {
+                                locals[(d.at as usize + c) * LANES + l] =
+                                    storage[(o as usize + c) * LANES + l];
+                            }
+                        }
+                    }
+                    _ => {}
+                }
+            }
+            Ok(())
+        })();
+        self.regs[to] = regs;
+        self.locals[to] = locals;
+        copied
+    }
+
+    /// Copies the callee's `out` and `inout` parameters back to the caller's variables in the
+    /// lanes of `mask` (those that made the call and were not discarded), each an assignment
+    /// in the trace at the call's place.
+    fn return_arguments(
+        &mut self,
+        fi: usize,
+        from: usize,
+        args: &[Argument],
+        mask: u64,
+        live: u64,
+        at: usize,
+    ) -> Res<()> {
+        let callee = &self.code.functions[from];
+        for (param, arg) in callee.args.iter().zip(args) {
+            let (Parameter::Ref(src), Argument::Ref(place)) = (*param, arg) else {
+                continue;
+            };
+            for l in (0..self.n).filter(|&l| mask & bit(l) != 0) {
+                let o = self.offset_checked(fi, place, l, live & bit(l) != 0, at)?;
+                for c in 0..src.n as usize {
+                    let v = self.locals[from][(src.at as usize + c) * LANES + l];
+                    let storage = match place.root {
+                        Root::Local => &mut self.locals[fi],
+                        _ => &mut self.privates,
+                    };
+                    storage[(o as usize + c) * LANES + l] = v;
+                }
+            }
+            if self.traced(mask) && !place.name.is_empty() {
+                self.event(fi, mask, |m, l| Event::Assign {
+                    at,
+                    name: place.name.clone(),
+                    ty: place.ty,
+                    bits: m.read_whole(fi, place, l),
+                });
+            }
+        }
+        Ok(())
     }
 
     /// The lanes whose bool at register row `c` is true.

@@ -8,8 +8,8 @@ use naga::valid::{FunctionInfo, ModuleInfo};
 use naga::{AddressSpace, BinaryOperator, Expression, Handle, Module, Statement, TypeInner};
 
 use super::code::{
-    Code, Function, Kind, Op, OpError, Place, Reg, Root, Shape, Stmt, Unsupported, components,
-    const_value, element_count, kind_of, literal, member,
+    Argument, Code, Function, Kind, Op, OpError, Parameter, Place, Reg, Root, Shape, Stmt,
+    Unsupported, components, const_value, element_count, kind_of, literal, member,
 };
 use super::dialect::Adapted;
 use super::emitted::{mark_constant, mark_emitted};
@@ -127,6 +127,24 @@ impl<'m> Translator<'m> {
             ));
             locals_width += n;
         }
+        // An `out` or `inout` parameter is a pointer naga's body reads and writes through: it
+        // gets components of its own after the locals, which the call fills and empties.
+        let args = f
+            .arguments
+            .iter()
+            .map(|a| match module.types[a.ty].inner {
+                TypeInner::Pointer { base, .. } => {
+                    let n = components(module, &module.types[base].inner);
+                    let reg = Reg {
+                        at: locals_width,
+                        n,
+                    };
+                    locals_width += n;
+                    Parameter::Ref(reg)
+                }
+                _ => Parameter::Value(Reg::default()),
+            })
+            .collect();
         let mut emitted = vec![false; f.expressions.len()];
         mark_emitted(&f.body, &mut emitted);
         // A local's initial value is a constant expression the function's entry copies, before
@@ -145,11 +163,10 @@ impl<'m> Translator<'m> {
             width,
             locals,
             locals_width,
-            args: Vec::new(),
+            args,
             result: f.result.as_ref().map(|r| r.ty),
             body: Vec::new(),
         };
-        let mut args = vec![Reg::default(); f.arguments.len()];
         for (h, e) in f.expressions.iter() {
             let span = f.expressions.get_span(h);
             let op = self.op(f, fi, e, &func).map_err(|e| Unsupported {
@@ -157,8 +174,10 @@ impl<'m> Translator<'m> {
                 what: e.what,
                 function: e.function,
             })?;
-            if let Expression::FunctionArgument(i) = *e {
-                args[i as usize] = func.regs[h.index()];
+            if let Expression::FunctionArgument(i) = *e
+                && let Parameter::Value(reg) = &mut func.args[i as usize]
+            {
+                *reg = func.regs[h.index()];
             }
             if !emitted[h.index()] && !matches!(op, Op::None) {
                 func.pre.push(h.index() as u32);
@@ -166,7 +185,6 @@ impl<'m> Translator<'m> {
             func.ops.push(op);
             func.spans.push(self.at(span));
         }
-        func.args = args;
         func.body = self.block(f, fi, &f.body, &func, 0)?;
         Ok(func)
     }
@@ -224,6 +242,24 @@ impl<'m> Translator<'m> {
                     .push((func.regs[index.index()].at, n, element_count(pointee)));
                 p.n = n;
                 Ok(p)
+            }
+            Expression::FunctionArgument(i) => {
+                let Parameter::Ref(reg) = func.args[i as usize] else {
+                    return Err("a parameter used as a variable".to_owned());
+                };
+                let param = &f.arguments[i as usize];
+                let TypeInner::Pointer { base, .. } = module.types[param.ty].inner else {
+                    return Err("a parameter used as a variable".to_owned());
+                };
+                Ok(Place {
+                    root: Root::Local,
+                    at: reg.at,
+                    dynamic: Vec::new(),
+                    n: reg.n,
+                    name: param.name.clone().unwrap_or_default(),
+                    whole: reg,
+                    ty: base,
+                })
             }
             ref other => Err(format!("a pointer pipelens cannot follow ({other:?})")),
         }
@@ -498,7 +534,15 @@ impl<'m> Translator<'m> {
                 } => Stmt::Call {
                     at,
                     function: function.index(),
-                    args: arguments.iter().map(|&a| reg(a)).collect(),
+                    args: arguments
+                        .iter()
+                        .map(|&a| match *fi[a].ty.inner_with(&self.module.types) {
+                            TypeInner::Pointer { .. } | TypeInner::ValuePointer { .. } => {
+                                self.place(f, fi, a, func).map(Argument::Ref).map_err(err)
+                            }
+                            _ => Ok(Argument::Value(reg(a))),
+                        })
+                        .collect::<Result<_, _>>()?,
                     result: result.map(reg),
                 },
                 Statement::ControlBarrier(_) | Statement::MemoryBarrier(_) => continue,

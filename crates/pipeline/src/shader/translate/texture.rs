@@ -1,5 +1,6 @@
-//! The texture lookups of naga's IR in register form: `texture`, `textureLod` and their kin on
-//! a `sampler2D`, `texture` on a `samplerCube`, `texelFetch`, `textureSize`.
+//! The texture lookups of naga's IR in register form: `texture`, `textureLod`, `textureGrad`,
+//! `textureProj` and their `*Offset` kin on a `sampler2D`, `texture` on a `samplerCube`,
+//! `texelFetch`, `textureSize`.
 
 use naga::{Expression, Handle};
 
@@ -46,24 +47,12 @@ impl Translator<'_> {
     ) -> Result<Op, OpError> {
         Ok(match *e {
             Expression::ImageSample {
-                offset: Some(_),
-                level,
-                ..
-            } => {
-                // naga reads the offset; the machine does not apply it yet, and ignoring it
-                // would draw the lookup without its shift.
-                return Err(OpError::not_run(match level {
-                    naga::SampleLevel::Exact(_) | naga::SampleLevel::Zero => "textureLodOffset",
-                    naga::SampleLevel::Gradient { .. } => "textureGradOffset",
-                    _ => "textureOffset",
-                }));
-            }
-            Expression::ImageSample {
                 image,
                 coordinate,
                 gather: None,
                 depth_ref: None,
                 array_index: None,
+                offset: None,
                 ..
             } if self.is_cube(f, image) => Op::SampleCube {
                 texture: self.texture_slot(f, image)?,
@@ -73,6 +62,7 @@ impl Translator<'_> {
                 image,
                 coordinate,
                 level,
+                offset,
                 gather: None,
                 depth_ref: None,
                 array_index: None,
@@ -85,10 +75,12 @@ impl Translator<'_> {
                     naga::SampleLevel::Zero => Level::Zero,
                     naga::SampleLevel::Exact(l) => Level::Exact(reg(l).at),
                     naga::SampleLevel::Bias(b) => Level::Bias(reg(b).at),
-                    naga::SampleLevel::Gradient { .. } => {
-                        return Err(OpError::not_run("textureGrad"));
-                    }
+                    naga::SampleLevel::Gradient { x, y } => Level::Gradient {
+                        x: reg(x).at,
+                        y: reg(y).at,
+                    },
                 },
+                offset: offset.map(|o| reg(o).at),
             },
             Expression::ImageLoad {
                 image,
