@@ -38,6 +38,17 @@ COLOR_SHARE = 0.999       # share of covered pixels within COLOR_TOL
 # or turned would miss both by far.
 COLOR_SHARE_MIRROR = 0.97
 COLOR_MEAN_MIRROR = 1.0   # in 8-bit steps
+# textureOffset (implicit level of detail) and textureGrad (explicit derivatives) take another
+# path through llvmpipe's sampler than texture(): there it approximates ρ by the largest
+# absolute derivative, max(|∂u/∂x|, |∂u/∂y|, |∂v/∂x|, |∂v/∂y|)·size (gallivm's rho "approx",
+# which OpenGL 3.3 §3.8.11 allows), where pipelens takes the exact lengths of the two
+# footprint axes. The level differs by a fraction near the texture's edges: measured 99.43–99.71%
+# of covered pixels within 2/255, max Δ 6–9, mean 0.14–0.16. The same cases with each offset
+# applied in level 0's texels give 89.7%, max 185; with the offset's y flipped, 83%, max 95. So
+# these are held to 2/255 on 99% and a mean under 0.5/255.
+COLOR_SHARE_APPROX_RHO = 0.99
+COLOR_MEAN_APPROX_RHO = 0.5
+APPROX_RHO = {"texture_offset.frag", "texture_grad.frag"}
 
 MEAN_DEPTH_FS = """#version 330
 uniform sampler2DMS depth_ms; uniform int samples;
@@ -151,6 +162,9 @@ class Peer:
                 else:
                     prog[name].value = value
         put("mvp", raw=(proj @ view @ model).T.astype("f4").tobytes())
+        put("view", raw=view.T.astype("f4").tobytes())
+        put("projection", raw=proj.T.astype("f4").tobytes())
+        put("model_view", raw=(view @ model).T.astype("f4").tobytes())
         put("model", raw=model.T.astype("f4").tobytes())
         put("normal_matrix", raw=np.linalg.inv(model[:3, :3]).astype("f4").tobytes())
         put("eye", tuple(eye)); put("light_pos", (4.0, 4.0, 4.0)); put("light_color", (1.0, 1.0, 1.0))
@@ -247,6 +261,8 @@ def run_case(pipelens, peer, work, case, size, samples):
     mean = float(dc.mean()) if dc.size else 0.0
     if is_mirror(shaders):
         colour_ok = share >= COLOR_SHARE_MIRROR and mean <= COLOR_MEAN_MIRROR
+    elif shaders and os.path.basename(shaders[1]) in APPROX_RHO:
+        colour_ok = share >= COLOR_SHARE_APPROX_RHO and mean <= COLOR_MEAN_APPROX_RHO
     else:
         colour_ok = share >= COLOR_SHARE
     ok = coverage_diff <= COVERAGE_MAX and depth_max <= DEPTH_MAX and colour_ok
@@ -273,20 +289,41 @@ def main():
         ("A2 two triangles", os.path.join(os.path.abspath(a.data), "scenes/games101_a2_two_triangles.obj"), None, None),
     ]
     # The same GLSL files in both renderers (scripts/reference/shaders): pipelens reads them from
-    # its scene file, the peer compiles them with Mesa.
+    # its scene file, the peer compiles them with Mesa. Each: vertex shader, fragment shader,
+    # label, meshes; a fragment shader that reads `tex` gets Spot's texture.
     here = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shaders")
-    lit = lambda fs: (os.path.join(here, "lit.vert"), os.path.join(here, fs))
+    both, spot_only = (bunny, spot), (spot,)
+    textured = {"textured.frag", "texture_offset.frag", "texture_grad.frag", "texel_fetch.frag",
+                "lod_bias.frag"}
+    glsl = [("lit.vert", "blinn_phong.frag", "Blinn-Phong", both),
+            ("lit.vert", "phong.frag", "Phong r·v", both),
+            ("lit.vert", "toon.frag", "toon", both),
+            ("lit.vert", "textured.frag", "texture() minified", spot_only),
+            ("qualifiers.vert", "qualifiers.frag", "noperspective/flat", both),
+            ("lit.vert", "checker.frag", "checker discard", both),
+            ("lit.vert", "mirror.frag", "mirror samplerCube", both),
+            ("lit.vert", "out_params.frag", "out/inout parameters", spot_only),
+            ("lit.vert", "texture_offset.frag", "textureOffset/Proj", spot_only),
+            ("lit.vert", "texture_grad.frag", "textureGrad(Offset)", spot_only),
+            ("lit.vert", "texel_fetch.frag", "texelFetch, textureSize", spot_only),
+            ("lit.vert", "lod_bias.frag", "bias, textureLod", spot_only),
+            ("lit.vert", "integers.frag", "integer and bit ops", spot_only),
+            ("lit.vert", "switch.frag", "switch, fall-through", spot_only),
+            ("lit.vert", "lights.frag", "array of light structs", spot_only),
+            ("lit.vert", "fwidth_grid.frag", "fwidth grid lines", spot_only),
+            ("lit.vert", "matrices.frag", "matrix functions", spot_only),
+            ("lit.vert", "loops.frag", "while, do-while, nested", spot_only),
+            ("lit.vert", "functions.frag", "prototypes, overloads", spot_only),
+            ("lit.vert", "common.frag", "common built-ins", spot_only),
+            ("lit.vert", "arrays.frag", "arrays indexed at run time", spot_only),
+            ("lit.vert", "vectors.frag", "vector relational", spot_only),
+            ("displace.vert", "blinn_phong.frag", "displacing vertex shader", both),
+            ("eye_space.vert", "eye_space.frag", "eye-space Phong", spot_only)]
     shader_cases = []
-    for fs, label, meshes in (("blinn_phong.frag", "Blinn-Phong", (bunny, spot)),
-                              ("phong.frag", "Phong r·v", (bunny, spot)),
-                              ("toon.frag", "toon", (bunny, spot)),
-                              ("textured.frag", "texture() minified", (spot,)),
-                              ("qualifiers.frag", "noperspective/flat", (bunny, spot)),
-                              ("checker.frag", "checker discard", (bunny, spot)),
-                              ("mirror.frag", "mirror samplerCube", (bunny, spot))):
-        pair = (os.path.join(here, "qualifiers.vert"), os.path.join(here, fs)) if fs == "qualifiers.frag" else lit(fs)
+    for vs, fs, label, meshes in glsl:
+        pair = (os.path.join(here, vs), os.path.join(here, fs))
         for mesh in meshes:
-            texture = spot_tex if fs == "textured.frag" else None
+            texture = spot_tex if fs in textured else None
             shader_cases.append((f"GLSL {label}, {'bunny' if mesh == bunny else 'Spot'}", mesh, texture, pair))
     for _, mesh, tex, _ in cases:
         for f in (mesh, tex):
@@ -311,7 +348,7 @@ def compare(a, peer, work, cases, shader_cases):
           f"|Δz_w| ≤ {DEPTH_MAX:g} (pixels whose samples are all covered), "
           f"colour within 2/255 on ≥ {COLOR_SHARE:.1%} of covered pixels (a mirror: on "
           f"≥ {COLOR_SHARE_MIRROR:.0%}, mean Δ ≤ {COLOR_MEAN_MIRROR:g}/255)")
-    head = f"| {'case':<34} | {'size':>9} | samples | covered px | coverage ≠ | max Δz_w    | colour ≤ 2/255 | max Δ | mean Δ | |"
+    head = f"| {'case':<40} | {'size':>9} | samples | covered px | coverage ≠ | max Δz_w    | colour ≤ 2/255 | max Δ | mean Δ | |"
     print(head); print("|" + "|".join("-" * (len(c)) for c in head.split("|")[1:-1]) + "|")
     runs = [(c, size, samples) for c in cases for size in ((800, 600), (1280, 720)) for samples in (1, 4)]
     runs += [(c, size, samples) for c in shader_cases for size, samples in (((800, 600), 1), ((1280, 720), 4))]
@@ -320,7 +357,7 @@ def compare(a, peer, work, cases, shader_cases):
     for case, size, samples in runs:
         r = run_case(a.pipelens, peer, work, case, size, samples)
         rows.append(r)
-        print(f"| {r['case']:<34} | {r['size']:>9} | {r['samples']:>7} | {r['covered']:>10} | "
+        print(f"| {r['case']:<40} | {r['size']:>9} | {r['samples']:>7} | {r['covered']:>10} | "
               f"{r['coverage_diff']:>10} | {r['depth_max']:>11.2e} | {r['color_share']:>14.4%} | "
               f"{r['color_max']:>5} | {r['color_mean']:>6.3f} | {'ok' if r['ok'] else 'FAIL'} |", flush=True)
     failed = [r for r in rows if not r["ok"]]

@@ -173,6 +173,10 @@ pub fn remark(r: &Remark, l: Lang) -> String {
                 "像素 {samples} 个采样点的平均；其中 {covered} 个属于该图元，其余保留各自的颜色或背景色"
             ),
         },
+        Remark::Clamped => s(
+            "the colour buffer keeps each sample's colour clamped to [0, 1]",
+            "颜色缓冲把每个采样点的颜色截断到 [0, 1] 再保存",
+        ),
         Remark::Bytes => s("the 8-bit colour in the image", "图像中的 8 位颜色"),
     }
 }

@@ -105,7 +105,8 @@ pub(crate) fn scene() -> Scene {
     }
 }
 
-/// Asserts that the frame's buffers hold `want` at pixel `i`: its colour, depth, owner,
+/// Asserts that the frame's buffers hold `want` at pixel `i`: its colour (as the buffer
+/// stores it, clamped), depth, owner,
 /// coverage and primitive, and, when every buffer is kept, its texture coordinates and
 /// (as half floats) its normal.
 pub(crate) fn assert_kept(
@@ -117,7 +118,12 @@ pub(crate) fn assert_kept(
 ) {
     assert_eq!(
         (px.color[i], px.depth[i], px.owner[i], px.coverage[i]),
-        (want.color, want.depth, want.owner, want.coverage),
+        (
+            super::stored_color(Vec3::from(want.color)).to_array(),
+            want.depth,
+            want.owner,
+            want.coverage
+        ),
         "setting {at}"
     );
     assert_eq!(px.primitive[i], want.primitive, "setting {at}");

@@ -274,6 +274,16 @@ fn render_stages(
 
 /// What `of` finds on each object that has it, with the object's name: the textures and the
 /// cube maps a frame read.
+/// What a sample of the colour buffer keeps of a fragment's colour: each channel clamped to
+/// [0, 1], as a fixed-point colour buffer stores it (OpenGL 3.3 §4.1.8: colours are clamped
+/// before they are written to a fixed-point buffer). Multisampling averages the samples *after*
+/// this, so a pixel on an edge whose fragment is brighter than white resolves to
+/// `covered/samples`·white, not more.
+#[must_use]
+pub(super) fn stored_color(c: glam::Vec3) -> glam::Vec3 {
+    c.clamp(glam::Vec3::ZERO, glam::Vec3::ONE)
+}
+
 fn by_object<T>(scene: &Scene, of: impl Fn(&Object) -> Option<T>) -> Vec<(String, T)> {
     scene
         .objects

@@ -236,7 +236,7 @@ impl RowOut<'_> {
         self.depth[x] = r.depth;
         self.primitive[x] = r.primitive;
         self.owner[x] = r.owner;
-        self.color[x] = r.color;
+        self.color[x] = super::stored_color(glam::Vec3::from(r.color)).to_array();
         if self.shading.is_some() {
             s.lit.push(Stored::given(terms.is_some()));
             if let Some(t) = terms {
@@ -578,7 +578,7 @@ impl ResolveContext<'_> {
                 (centre, tris.iter().filter(|&&u| u == t).count() as f32)
             };
             let (color, terms, texel) = self.shade_at(tri, at);
-            sum += color * weight;
+            sum += super::stored_color(color) * weight;
             if tri.primitive == owner.primitive && out.terms.is_none() && out.texture.is_none() {
                 out.terms = terms;
                 out.texture = texel;

@@ -239,7 +239,7 @@ impl ResolveContext<'_> {
             } else {
                 let mut sum = self.settings.background * 0.0;
                 for g in first..f {
-                    sum += color(g) * f32::from(run.weight[g]);
+                    sum += super::stored_color(color(g)) * f32::from(run.weight[g]);
                 }
                 let kept = (first..f)
                     .find(|&g| tri(g).primitive == primitive)

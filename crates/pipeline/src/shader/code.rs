@@ -274,6 +274,9 @@ impl Parameter {
 pub struct Function {
     /// Its name (`main`, the student's helpers).
     pub name: String,
+    /// Whether pipelens wrote it (a built-in naga lacks, [`super::glsl330::WRITTEN_IN_GLSL`]):
+    /// its steps are not the student's, so the trace shows none of them.
+    pub builtin: bool,
     /// The operation of each expression, in order.
     pub ops: Vec<Op>,
     /// The register of each expression.

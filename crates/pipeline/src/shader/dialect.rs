@@ -35,6 +35,9 @@ pub struct Adapted {
     pub preamble_len: usize,
     /// The rewrites of the student's text after the preamble.
     edits: Vec<super::lowering::Edit>,
+    /// The insertions made after naga first read the text ([`super::modulo`]), in the text
+    /// after the preamble, applied after [`Self::edits`].
+    pub(super) splats: Vec<super::lowering::Edit>,
     /// For each piece of the preamble, the student's text it stands for.
     pieces: Vec<(Range<usize>, Range<usize>)>,
     /// The declarations the student wrote, in order.
@@ -105,7 +108,8 @@ impl Adapted {
     #[must_use]
     pub fn original_offset(&self, at: usize) -> usize {
         if at >= self.preamble_len {
-            return super::lowering::before_edits(&self.edits, at - self.preamble_len);
+            let at = super::lowering::before_edits(&self.splats, at - self.preamble_len);
+            return super::lowering::before_edits(&self.edits, at);
         }
         self.pieces
             .iter()
@@ -368,6 +372,9 @@ pub fn adapt(src: &str, stage: Stage) -> Result<Adapted, Vec<DialectError>> {
             0..0,
         );
     }
+    for glsl in super::glsl330::written_in_glsl(src) {
+        preamble.push_generated(glsl, 0..0);
+    }
     if !errors.is_empty() {
         return Err(errors);
     }
@@ -400,6 +407,7 @@ fn assemble(
         text: preamble.text + &student,
         preamble_len,
         edits,
+        splats: Vec::new(),
         pieces: preamble.pieces,
         declarations,
     }

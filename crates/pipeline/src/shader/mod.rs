@@ -24,6 +24,7 @@ pub mod lexeme;
 pub mod link;
 mod lowering;
 mod machine;
+mod modulo;
 mod ops;
 mod trace;
 mod translate;
@@ -240,7 +241,7 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
     }
     check::dropped_arguments(source)?;
     check::sampler_parameters(source)?;
-    let adapted = dialect::adapt(source, stage).map_err(|errs| {
+    let mut adapted = dialect::adapt(source, stage).map_err(|errs| {
         errs.into_iter()
             .map(|e| error_at(source, e.span, e.message))
             .collect::<Vec<_>>()
@@ -253,6 +254,7 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
     let module = frontend
         .parse(&options, &adapted.text)
         .map_err(|e| parse_errors(&e, source, &adapted))?;
+    let module = modulo::read_again_splatted(module, &mut adapted, &options);
     let info = naga::valid::Validator::new(
         naga::valid::ValidationFlags::all(),
         naga::valid::Capabilities::default(),

@@ -126,6 +126,8 @@ fn the_derivation_arrives_at_the_colour_the_render_made() {
             intensity: Vec3::splat(0.3),
         },
     );
+    // Pixels brighter than white (this light's highlight) say that the buffer clamps them.
+    let mut clamped = 0;
     for textured in [true, false] {
         if !textured {
             scene.objects[0].texture = None;
@@ -149,14 +151,19 @@ fn the_derivation_arrives_at_the_colour_the_render_made() {
                     }
                     explained += 1;
                     // The derivation recomputes with the render's own functions from the
-                    // capture; it lands on the stored colour (the normal it starts from is
-                    // interpolated at 32 bits, the render's too).
+                    // capture; it lands on the stored colour, clamped to [0, 1] as the colour
+                    // buffer keeps it (the normal it starts from is interpolated at 32 bits,
+                    // the render's too).
+                    let stored = e.shaded.clamp(Vec3::ZERO, Vec3::ONE);
                     assert!(
-                        (e.shaded - e.color).abs().max_element() < 1e-4,
+                        (stored - e.color).abs().max_element() < 1e-4,
                         "{shading:?} textured {textured} at ({x}, {y}): {} vs {}",
                         e.shaded,
                         e.color
                     );
+                    let says_clamped = e.lines.iter().any(|l| l.formula == "c_s = clamp(c, 0, 1)");
+                    assert_eq!(says_clamped, stored != e.shaded, "at ({x}, {y})");
+                    clamped += usize::from(says_clamped);
                     assert_eq!(e.texture.is_some(), textured);
                     assert_eq!(e.lighting.is_some(), shading != Frequency::Unlit);
                 }
@@ -164,4 +171,5 @@ fn the_derivation_arrives_at_the_colour_the_render_made() {
             assert!(explained > 20, "{shading:?}: {explained} pixels explained");
         }
     }
+    assert!(clamped > 0, "no explained pixel passes white");
 }

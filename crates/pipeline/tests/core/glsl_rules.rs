@@ -95,8 +95,7 @@ fn glsl_1_20_texture_calls_run_as_their_1_30_names() {
 }
 
 /// A built-in pipelens does not honour is refused at its name, never run without its argument:
-/// `texelFetchOffset`'s offset (naga's front end drops it), GLSL 3.30's `modf` and
-/// `matrixCompMult` (naga's front end does not know them).
+/// `texelFetchOffset`'s offset (naga's front end drops it).
 #[test]
 fn a_built_in_pipelens_does_not_run_is_refused_at_its_name() {
     use shader::Complaint;
@@ -116,25 +115,72 @@ fn a_built_in_pipelens_does_not_run_is_refused_at_its_name() {
     // `    color = ` is 12 characters: the name starts at column 13.
     assert_eq!((e[0].line, e[0].column), (5, 13), "{name}: {e:?}");
     assert_eq!(e[0].message, format!("pipelens does not run `{name}` yet"));
-    // Built-ins of GLSL 3.30 naga does not know, refused by name, not as a misspelling.
-    for (call, name) in [
-        ("modf(1.5, whole)", "modf"),
-        (
-            "matrixCompMult(mat2(1.0), mat2(2.0))[0].x",
-            "matrixCompMult",
-        ),
-    ] {
-        let src = format!(
-            "#version 330 core\nout vec4 color;\nvoid main() {{\n    float whole;\n    float part = {call};\n    color = vec4(part);\n}}\n"
-        );
-        let e = errors(Stage::Fragment, &src);
-        assert_eq!(
-            e[0].complaint,
-            Complaint::NotRunYet(name.to_owned()),
-            "{e:?}"
-        );
-        assert_eq!((e[0].line, e[0].column), (5, 18), "{e:?}");
+}
+
+/// GLSL 3.30's `modf` and `matrixCompMult`, which naga's front end does not know, run as
+/// pipelens wrote them in GLSL (§8.3: modf's parts both take x's sign; §8.5: component by
+/// component); the trace shows the student's steps and the call's results, none of the
+/// built-in's own.
+#[test]
+fn modf_and_matrix_comp_mult_run_and_their_insides_stay_out_of_the_trace() {
+    use pipeline::shader::{Bindings, LANES, Uniforms};
+    let src = "#version 330 core
+in float x;
+out vec4 color;
+void main() {
+    float whole;
+    float part = modf(x, whole);
+    vec3 wholes;
+    vec3 parts = modf(vec3(x, -x, 2.0 * x), wholes);
+    mat2 m = matrixCompMult(mat2(x, 2.0, 3.0, 4.0), mat2(5.0, 6.0, 7.0, x));
+    color = vec4(whole + part * 10.0, wholes.y + parts.y * 10.0, m[0][0], m[1][1] + m[1][0]);
+}
+";
+    let p = compile(Stage::Fragment, src);
+    let xs: Vec<Vec<f32>> = [2.75f32, -1.25, 0.5, -3.0]
+        .iter()
+        .map(|&x| vec![x])
+        .collect();
+    let (out, _) =
+        crate::shader::run(&p, &Uniforms::default(), std::slice::from_ref(&xs), &[]).expect("runs");
+    for (o, x) in out.iter().zip(&xs) {
+        let x = x[0];
+        // modf(2.75) = 0.75, whole 2; modf(−1.25) = −0.25, whole −1 (both x's sign).
+        let (w, f) = (x.trunc(), x - x.trunc());
+        let (wy, fy) = ((-x).trunc(), -x - (-x).trunc());
+        let want = [w + f * 10.0, wy + fy * 10.0, x * 5.0, x * 4.0 + 3.0 * 7.0];
+        for (g, w) in o.iter().zip(want) {
+            assert!((g - w).abs() < 1e-5, "x = {x}: {o:?} != {want:?}");
+        }
     }
+    // Lane 1 (x = −1.25): the trace names the student's writes, at their lines, and no step
+    // of the built-ins (no call, no `i = trunc(x)`).
+    let rows: Vec<Vec<u32>> = vec![
+        (0..LANES)
+            .map(|l| if l == 1 { (-1.25f32).to_bits() } else { 0 })
+            .collect(),
+    ];
+    let inputs: Vec<&[u32]> = rows.iter().map(Vec::as_slice).collect();
+    let mut m = p.machine();
+    m.trace_lane(Some(1));
+    m.run(&inputs, 4, u64::MAX, &Bindings { textures: &[] })
+        .expect("runs");
+    let text: Vec<String> = p
+        .describe(&m.take_trace())
+        .iter()
+        .map(|t| format!("{}: {}", t.line, t.text))
+        .collect();
+    for want in ["6: whole = -1.000", "6: part = -0.250", "9: m = "] {
+        assert!(
+            text.iter().any(|t| t.starts_with(want)),
+            "no `{want}` in {text:#?}"
+        );
+    }
+    assert!(
+        text.iter()
+            .all(|t| !t.starts_with("1:") && !t.contains("modf") && !t.contains("matrixCompMult")),
+        "{text:#?}"
+    );
 }
 
 /// GLSL allows no recursion, and a function must be declared above its first call: naga reads
@@ -167,4 +213,55 @@ fn recursion_a_call_above_the_definition_and_a_missing_return_are_said_as_such()
     let e = errors(Stage::Fragment, no_return);
     assert_eq!(e[0].complaint, Complaint::ReturnType);
     assert!(e[0].message.contains("can end without `return`"), "{e:?}");
+}
+
+/// `%` between an integer vector and a scalar applies the scalar to each component (GLSL 3.30
+/// §5.9); naga's front end leaves it unsplatted, so pipelens rewrites it and a message after it
+/// still points at the student's column.
+#[test]
+fn an_integer_vector_modulo_a_scalar_runs_component_by_component() {
+    use pipeline::shader::Uniforms;
+    let src = "#version 330 core\nin float x;\nout vec4 color;\nvoid main() {\n    ivec2 p = ivec2(int(x) + 17, 3 * int(x) + 5);\n    ivec2 m = p % 4;\n    uvec3 q = 50u % uvec3(uint(x) + 3u, 7u, 9u);\n    color = vec4(vec2(m), float(q.x), float(q.y + q.z));\n}\n";
+    let xs: Vec<Vec<f32>> = (0..4).map(|l| vec![l as f32 * 3.0]).collect();
+    let (out, _) = crate::shader::run(
+        &compile(Stage::Fragment, src),
+        &Uniforms::default(),
+        &[xs],
+        &[],
+    )
+    .expect("runs");
+    for (l, o) in out.iter().enumerate() {
+        let x = l as i32 * 3;
+        let want = [
+            ((x + 17) % 4) as f32,
+            ((3 * x + 5) % 4) as f32,
+            (50 % (x + 3)) as f32,
+            (50 % 7 + 50 % 9) as f32,
+        ];
+        assert_eq!(o, &want.to_vec(), "lane {l} (x = {x})");
+    }
+    // A mistake naga's second reading finds (a float `%`, refused with GLSL's reason) is where
+    // the same mistake is in the same source with `& 3` for `% 4` (nothing rewritten), on the
+    // rewritten line and on the line below.
+    let shader = |lines: &str| {
+        format!(
+            "#version 330 core\nout vec4 color;\nvoid main() {{\n{lines}\n    color = vec4(vec2(m), f, 1.0);\n}}\n"
+        )
+    };
+    for (lines, line) in [
+        (
+            "    ivec2 m = ivec2(gl_FragCoord.xy) % 4; float f = gl_FragCoord.x % 2.0;",
+            4,
+        ),
+        (
+            "    ivec2 m = ivec2(gl_FragCoord.xy) % 4;\n    float f = gl_FragCoord.x % 2.0;",
+            5,
+        ),
+    ] {
+        let e = errors(Stage::Fragment, &shader(lines));
+        let plain = errors(Stage::Fragment, &shader(&lines.replace("% 4", "& 3")));
+        assert_eq!(e[0].complaint, shader::Complaint::FloatModulo, "{e:?}");
+        assert_eq!(e[0].line, line, "{e:?}");
+        assert_eq!((e[0].line, e[0].column), (plain[0].line, plain[0].column));
+    }
 }

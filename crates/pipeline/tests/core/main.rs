@@ -5,6 +5,7 @@ mod beyond;
 mod bezier;
 mod capture;
 mod clip;
+mod colour_buffer;
 mod detail;
 mod explain;
 mod frame;

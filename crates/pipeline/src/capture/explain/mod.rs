@@ -175,6 +175,8 @@ pub enum Remark {
         /// Samples per pixel.
         samples: usize,
     },
+    /// A colour past [0, 1] clamped, as the colour buffer stores each sample.
+    Clamped,
     /// The 8-bit colour written to the image.
     Bytes,
 }
@@ -486,7 +488,18 @@ impl FrameCapture {
             );
             lines.note(Remark::Sum);
         }
-        if covered < samples || (color - shaded).abs().max_element() > 1e-4 {
+        // The colour buffer keeps each sample clamped to [0, 1] (OpenGL 3.3 §4.1.8).
+        let stored = shaded.clamp(Vec3::ZERO, Vec3::ONE);
+        if stored != shaded {
+            lines.add(
+                Section::Colour,
+                "c_s = clamp(c, 0, 1)",
+                String::new(),
+                v3(stored),
+            );
+            lines.note(Remark::Clamped);
+        }
+        if covered < samples || (color - stored).abs().max_element() > 1e-4 {
             lines.add(
                 Section::Colour,
                 "c_pixel = Σ_s c_s/S",

@@ -288,7 +288,7 @@ impl FragmentShading<'_> {
                         Vec3::ZERO
                     }
                 };
-                acc[i] += color * f32::from(k);
+                acc[i] += super::super::stored_color(color) * f32::from(k);
                 shaded[i] += k;
             }
         }

@@ -11,9 +11,10 @@
 //! A step budget stops endless loops: each lane may run at most [`Machine::budget`] loop
 //! iterations in one invocation.
 
-use super::code::{Argument, Code, Parameter, Place, Reg, Root, Stmt};
+use super::code::{Code, Place, Reg, Root, Stmt};
 use crate::texture::{CubeMap, Sampler, Texture};
 
+mod call;
 mod eval;
 mod events;
 
@@ -221,9 +222,10 @@ impl<'c> Machine<'c> {
     }
 
     /// Records an event of the traced lane, if it is in `mask` and function `fi` is the
-    /// student's (the entry point naga wraps around `main` copies inputs and outputs only).
+    /// student's (the entry point naga wraps around `main` copies inputs and outputs only; a
+    /// built-in pipelens wrote in GLSL is not the student's either).
     fn event(&mut self, fi: usize, mask: u64, e: impl FnOnce(&Self, usize) -> Event) {
-        if fi + 1 == self.code.functions.len() {
+        if fi + 1 == self.code.functions.len() || self.code.functions[fi].builtin {
             return;
         }
         if let Some(&(l, _)) = self.trace.as_ref().filter(|(l, _)| mask & bit(*l) != 0) {
@@ -453,10 +455,12 @@ impl<'c> Machine<'c> {
                     result,
                 } => {
                     let callee = &code.functions[*function];
-                    self.event(fi, mask, |_, _| Event::Call {
-                        at: *at,
-                        name: callee.name.clone(),
-                    });
+                    if !callee.builtin {
+                        self.event(fi, mask, |_, _| Event::Call {
+                            at: *at,
+                            name: callee.name.clone(),
+                        });
+                    }
                     self.pass_arguments(fi, *function, args, mask, live, *at)?;
                     self.call(*function, mask, live, b)?;
                     if let Some(r) = result {
@@ -472,90 +476,6 @@ impl<'c> Machine<'c> {
             }
         }
         Ok(mask)
-    }
-
-    /// Copies a call's arguments into the callee `to`: an `in` value into its register, an
-    /// `inout` (or `out`) variable into its parameter's locals, lane by lane in `mask`.
-    fn pass_arguments(
-        &mut self,
-        fi: usize,
-        to: usize,
-        args: &[Argument],
-        mask: u64,
-        live: u64,
-        at: usize,
-    ) -> Res<()> {
-        let callee = &self.code.functions[to];
-        // A callee is never the caller (GLSL has no recursion): its storage is another
-        // function's, taken out while the arguments are copied in.
-        let mut regs = std::mem::take(&mut self.regs[to]);
-        let mut locals = std::mem::take(&mut self.locals[to]);
-        let copied = (|| {
-            for (param, arg) in callee.args.iter().zip(args) {
-                match (*param, arg) {
-                    (Parameter::Value(d), Argument::Value(src)) => {
-                        let (s, d) = (src.at as usize * LANES, d.at as usize * LANES);
-                        let len = src.n as usize * LANES;
-                        regs[d..d + len].copy_from_slice(&self.regs[fi][s..s + len]);
-                    }
-                    (Parameter::Ref(d), Argument::Ref(place)) => {
-                        let storage = self.storage(fi, place.root);
-                        for l in (0..self.n).filter(|&l| mask & bit(l) != 0) {
-                            let o = self.offset_checked(fi, place, l, live & bit(l) != 0, at)?;
-                            for c in 0..d.n as usize {
-                                locals[(d.at as usize + c) * LANES + l] =
-                                    storage[(o as usize + c) * LANES + l];
-                            }
-                        }
-                    }
-                    _ => {}
-                }
-            }
-            Ok(())
-        })();
-        self.regs[to] = regs;
-        self.locals[to] = locals;
-        copied
-    }
-
-    /// Copies the callee's `out` and `inout` parameters back to the caller's variables in the
-    /// lanes of `mask` (those that made the call and were not discarded), each an assignment
-    /// in the trace at the call's place.
-    fn return_arguments(
-        &mut self,
-        fi: usize,
-        from: usize,
-        args: &[Argument],
-        mask: u64,
-        live: u64,
-        at: usize,
-    ) -> Res<()> {
-        let callee = &self.code.functions[from];
-        for (param, arg) in callee.args.iter().zip(args) {
-            let (Parameter::Ref(src), Argument::Ref(place)) = (*param, arg) else {
-                continue;
-            };
-            for l in (0..self.n).filter(|&l| mask & bit(l) != 0) {
-                let o = self.offset_checked(fi, place, l, live & bit(l) != 0, at)?;
-                for c in 0..src.n as usize {
-                    let v = self.locals[from][(src.at as usize + c) * LANES + l];
-                    let storage = match place.root {
-                        Root::Local => &mut self.locals[fi],
-                        _ => &mut self.privates,
-                    };
-                    storage[(o as usize + c) * LANES + l] = v;
-                }
-            }
-            if self.traced(mask) && !place.name.is_empty() {
-                self.event(fi, mask, |m, l| Event::Assign {
-                    at,
-                    name: place.name.clone(),
-                    ty: place.ty,
-                    bits: m.read_whole(fi, place, l),
-                });
-            }
-        }
-        Ok(())
     }
 
     /// The lanes whose bool at register row `c` is true.

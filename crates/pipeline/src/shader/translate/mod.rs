@@ -83,7 +83,13 @@ impl<'m> Translator<'m> {
             t.code.globals.push(slot);
         }
         for (h, f) in module.functions.iter() {
-            let func = t.function(f, &info[h])?;
+            let mut func = t.function(f, &info[h])?;
+            // A function in the preamble is one pipelens wrote.
+            func.builtin = module
+                .functions
+                .get_span(h)
+                .to_range()
+                .is_some_and(|r| r.start < adapted.preamble_len);
             t.code.functions.push(func);
         }
         let ep = module.entry_points.first().ok_or(Unsupported {
@@ -156,6 +162,7 @@ impl<'m> Translator<'m> {
         }
         let mut func = Function {
             name: f.name.clone().unwrap_or_else(|| "main".to_owned()),
+            builtin: false,
             ops: Vec::with_capacity(f.expressions.len()),
             regs,
             spans: Vec::with_capacity(f.expressions.len()),
