@@ -262,13 +262,25 @@ pub(super) fn version(source: &str) -> Option<ShaderError> {
     })
 }
 
-/// The built-in functions naga reads but does not honour (it drops `texelFetchOffset`'s
-/// offset): each call refused at its name, not drawn without its argument.
+/// The built-in functions naga misreads, each call refused at its name: `texelFetchOffset`,
+/// whose offset naga drops (it would be drawn without it), and GLSL 1.20's 1D and 3D lookups,
+/// which naga reads as constructors of its `texture1D` and `texture3D` types ("Too many
+/// arguments") — pipelens binds no 1D or 3D texture.
 ///
 /// # Errors
 /// Each such call.
 pub(super) fn dropped_arguments(source: &str) -> Result<(), Vec<ShaderError>> {
-    const DROPPED: [&str; 1] = ["texelFetchOffset"];
+    const DROPPED: [&str; 9] = [
+        "texelFetchOffset",
+        "texture1D",
+        "texture1DProj",
+        "texture1DLod",
+        "texture1DProjLod",
+        "texture3D",
+        "texture3DProj",
+        "texture3DLod",
+        "texture3DProjLod",
+    ];
     let errors = super::lexeme::calls(source)
         .into_iter()
         .filter(|l| DROPPED.contains(&&source[l.span.clone()]))

@@ -3,6 +3,7 @@
 
 mod beyond;
 mod bezier;
+mod builtin_list;
 mod capture;
 mod clip;
 mod colour_buffer;
