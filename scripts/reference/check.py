@@ -8,9 +8,8 @@ For every case (mesh, texture, size, samples) it
 2. renders the same mesh on llvmpipe with the model, view and projection matrices of pipelens'
    own capture.json, the peer's own OBJ reader and its own vertex normals (the plain average of
    the unit face normals around each position), and its shaders (render.py's VS and FS) — or, in
-   the GLSL cases, the very shader files pipelens ran (scripts/reference/shaders: Blinn-Phong,
-   Phong with r·v, toon, texture() minified, noperspective/flat, a checkerboard with discard),
-   compiled by Mesa, their uniforms set by name;
+   the GLSL cases, the very shader files pipelens ran (the 27 files of scripts/reference/shaders,
+   listed in `main`), compiled by Mesa, their uniforms set by name;
 3. compares: coverage (samples covered per pixel), window depth (the mean of the pixel's sample
    depths, as pipelens resolves it) and colour.
 

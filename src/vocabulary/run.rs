@@ -48,6 +48,7 @@ pub fn render_error(e: &RenderError, lang: Lang) -> String {
                 part,
                 object,
                 error,
+                file,
             },
             Lang::Zh,
         ) => {
@@ -56,8 +57,12 @@ pub fn render_error(e: &RenderError, lang: Lang) -> String {
                 CodePart::Shader(pipeline::shader::Stage::Fragment) => "片元着色器".to_owned(),
                 CodePart::Function(kind) => format!("函数 {}", kind.key()),
             };
+            let file = file
+                .as_deref()
+                .map(|f| format!("{f}，"))
+                .unwrap_or_default();
             format!(
-                "无法绘制场景：物体 {object} 的{part}，{}",
+                "无法绘制场景：物体 {object} 的{part}，{file}{}",
                 super::compile::message(error, lang)
             )
         }
@@ -83,6 +88,7 @@ mod tests {
             part: CodePart::Shader(pipeline::shader::Stage::Fragment),
             object: "sphere".to_owned(),
             error: Box::new(error),
+            file: None,
         };
         assert_eq!(
             render_error(&e, Lang::Zh),
@@ -100,12 +106,37 @@ mod tests {
             part: CodePart::Function(pipeline::shader::HookKind::Curve),
             object: "curve".to_owned(),
             error,
+            file: None,
         };
         assert!(
             render_error(&e, Lang::Zh)
                 .starts_with("无法绘制场景：物体 curve 的函数 de_casteljau，第 12 行第 5 列："),
             "{}",
             render_error(&e, Lang::Zh)
+        );
+        // Code written in a lesson (or a shader file) names the file before its line.
+        let RenderError::Code { error, .. } = e else {
+            unreachable!()
+        };
+        let e = RenderError::Code {
+            part: CodePart::Shader(pipeline::shader::Stage::Fragment),
+            object: "sphere".to_owned(),
+            error,
+            file: Some("lessons/24-shader-programs.toml".to_owned()),
+        };
+        assert!(
+            render_error(&e, Lang::Zh).starts_with(
+                "无法绘制场景：物体 sphere 的片元着色器，lessons/24-shader-programs.toml，第 12 行第 5 列："
+            ),
+            "{}",
+            render_error(&e, Lang::Zh)
+        );
+        assert!(
+            render_error(&e, Lang::En).starts_with(
+                "the scene cannot be drawn: fragment shader of sphere, lessons/24-shader-programs.toml, line 12, column 5: "
+            ),
+            "{}",
+            render_error(&e, Lang::En)
         );
     }
 }

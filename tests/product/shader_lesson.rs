@@ -292,3 +292,82 @@ fn lesson_24_s_blinn_phong_is_the_course_s_and_phong_s_highlight_is_smaller() {
         "Phong's highlight ({phong} px) is not clearly smaller than Blinn-Phong's ({blinn} px)"
     );
 }
+
+/// A run-time error of a shader written in a scene file, or in a shader file beside it, names
+/// that file and its line and column there — the place the teacher edits — not the shader's
+/// own line 1, 2, 3 (the same source compiled alone gives the shader's own place).
+#[test]
+fn a_run_time_error_names_the_file_and_line_where_the_glsl_is_written() {
+    use pipeline::RenderError;
+    let glsl = "#version 330 core\nout vec4 color;\nvoid main() {\n    float a[2] = float[2](0.0, 1.0);\n    int i = int(gl_FragCoord.x) + 5;\n    color = vec4(a[i]);\n}\n";
+    // Alone: the shader's own line and column.
+    let alone = pipeline::shader::link(None, Some(glsl)).expect("links");
+    let settings = pipeline::settings::RenderSettings {
+        width: 32,
+        height: 24,
+        ..pipeline::settings::RenderSettings::default()
+    };
+    let error_of = |scene: &pipeline::scene::Scene| match pipeline::render(scene, &settings) {
+        Err(e @ RenderError::Code { .. }) => {
+            let words = e.to_string();
+            let RenderError::Code { error, file, .. } = e else {
+                unreachable!()
+            };
+            (*error, file, words)
+        }
+        other => panic!("expected a run-time error, got {:?}", other.map(|_| ())),
+    };
+    let dir = tempfile::tempdir().expect("temp dir");
+    let object = "[[scene.objects]]\nmesh = \"cube\"\n";
+    // Inline: the GLSL starts on line 4 of the scene file (TOML drops the newline after ''').
+    let scene = format!("{object}shader = {{ fragment = '''\n{glsl}''' }}\n");
+    let spec = pipelens::lesson::parse_scene(&scene, "t.toml", dir.path()).expect("valid");
+    let mut own = spec.scene.clone();
+    own.objects[0].shader = Some(pipeline::scene::ObjectShader {
+        programs: std::sync::Arc::new(alone),
+        time: 0.0,
+    });
+    let (own, file, _) = error_of(&own);
+    assert!(own.message.contains("out of range"), "{own}");
+    assert_eq!(file, None);
+    let (placed, file, words) = error_of(&spec.scene);
+    assert_eq!(file.as_deref(), Some("t.toml"));
+    assert_eq!((placed.line, placed.column), (own.line + 3, own.column));
+    assert_eq!(placed.message, own.message);
+    assert!(
+        words.contains(&format!(
+            "t.toml, line {}, column {}: ",
+            own.line + 3,
+            own.column
+        )),
+        "{words}"
+    );
+    // From a file beside the scene: that file's own line and column, and its name.
+    std::fs::write(dir.path().join("index.frag"), glsl).expect("write");
+    let scene = format!("{object}shader = {{ fragment = \"index.frag\" }}\n");
+    let spec = pipelens::lesson::parse_scene(&scene, "t.toml", dir.path()).expect("valid");
+    let (placed, file, words) = error_of(&spec.scene);
+    assert!(
+        file.as_deref().is_some_and(|f| f.ends_with("index.frag")),
+        "{words}"
+    );
+    assert_eq!((placed.line, placed.column), (own.line, own.column));
+    // A source that starts after the key on its line keeps its first line's column shift.
+    let origin = pipeline::shader::Origin {
+        file: "l.toml".into(),
+        line: 7,
+        column: 24,
+    };
+    let on_first = origin.place(pipeline::shader::ShaderError {
+        line: 1,
+        column: 3,
+        ..own.clone()
+    });
+    assert_eq!((on_first.line, on_first.column), (7, 26));
+    let below = origin.place(pipeline::shader::ShaderError {
+        line: 2,
+        column: 3,
+        ..own
+    });
+    assert_eq!((below.line, below.column), (8, 3));
+}

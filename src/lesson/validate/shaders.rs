@@ -105,7 +105,9 @@ pub(in crate::lesson) fn shader(
             fragment.as_ref().map(|f| f.0.as_str()),
         ) {
             Ok(programs) => Some(ObjectShader {
-                programs: Arc::new(programs),
+                programs: Arc::new(
+                    programs.placed(placed(c, vertex.as_ref()), placed(c, fragment.as_ref())),
+                ),
                 time: 0.0,
             }),
             Err(errors) => {
@@ -162,6 +164,20 @@ fn hook_name(kind: HookKind) -> &'static str {
         HookKind::ShadowMatrix => "shadow matrix",
         HookKind::Patch => "Bézier patch",
     }
+}
+
+/// Where a stage's source stands, for its run-time errors: a shader file from its start, GLSL
+/// in the lesson at its first character there (none where the lesson's text escapes it).
+fn placed(c: &Checker<'_>, given: Option<&(String, Origin)>) -> Option<pipeline::shader::Origin> {
+    let (file, line, column) = match given? {
+        (_, Origin::File(name)) => (name.clone(), 1, 1),
+        (_, Origin::Inline(Some(at), _)) => {
+            let d = Diagnostic::at(c.file, c.text, *at..*at, "");
+            (c.file.to_owned(), d.line, d.column)
+        }
+        (_, Origin::Inline(None, _)) => return None,
+    };
+    Some(pipeline::shader::Origin { file, line, column })
 }
 
 /// A shader's message where its source is: in its file, at its place in the lesson, or at the

@@ -45,7 +45,7 @@ pub enum RenderError {
     /// The student's code stopped while it ran on an object (an endless loop, an index out of
     /// range, …): which code, the object, and the message at its line (its complaint as data,
     /// for the interface to say in its language).
-    #[error("the scene cannot be drawn: {} of {object}, {error}", part.name())]
+    #[error("the scene cannot be drawn: {} of {object}, {}{error}", part.name(), file.as_deref().map(|f| format!("{f}, ")).unwrap_or_default())]
     Code {
         /// Which code.
         part: CodePart,
@@ -53,6 +53,9 @@ pub enum RenderError {
         object: String,
         /// What stopped it, where (boxed: a frame's `Result` stays small).
         error: Box<crate::shader::ShaderError>,
+        /// The file the error's line and column are in, when the code stands in one (a shader
+        /// file, or a lesson's inline GLSL: [`crate::shader::Origin`]).
+        file: Option<String>,
     },
 }
 
@@ -373,6 +376,7 @@ fn rasterize_with_hooks(
         part,
         object: object.name.clone(),
         error: Box::new(error),
+        file: None,
     };
     let mut counts = Vec::with_capacity(triangles.len());
     for (i, tri) in triangles.iter().enumerate() {

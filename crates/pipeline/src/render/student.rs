@@ -36,6 +36,7 @@ pub(super) fn with_student_curves(scene: &Scene) -> Result<Option<Scene>, Render
                 part: CodePart::Function(kind),
                 object: o.name.clone(),
                 error: Box::new(error),
+                file: None,
             },
             None => RenderError::Invalid(vec![format!("{} of {}, {words}", kind.key(), o.name)]),
         };
@@ -91,6 +92,7 @@ pub(super) fn with_student_shadow(scene: &Scene) -> Result<Option<Scene>, Render
             part: CodePart::Function(kind),
             object: holder.name.clone(),
             error: Box::new(e),
+            file: None,
         })?;
     if !m.is_finite() {
         return Err(RenderError::Invalid(vec![format!(

@@ -129,6 +129,25 @@ pub struct Programs {
     pub position: u32,
 }
 
+impl Programs {
+    /// These programs with each stage's source placed in its file (see [`super::Origin`]), so
+    /// that a run-time error names the file and the line there.
+    #[must_use]
+    pub fn placed(
+        mut self,
+        vertex: Option<super::Origin>,
+        fragment: Option<super::Origin>,
+    ) -> Self {
+        if vertex.is_some() {
+            Arc::make_mut(&mut self.vertex).origin = vertex;
+        }
+        if fragment.is_some() {
+            Arc::make_mut(&mut self.fragment).origin = fragment;
+        }
+        self
+    }
+}
+
 impl PartialEq for Programs {
     /// Two programs are the same when their sources are.
     fn eq(&self, other: &Self) -> bool {

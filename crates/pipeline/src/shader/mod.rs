@@ -95,6 +95,33 @@ impl fmt::Display for ShaderError {
     }
 }
 
+/// Where a shader's source stands in a file: a shader file (from its first line and column), or
+/// a lesson whose text holds the GLSL (`fragment = """…"""`), from the line and column of the
+/// source's first character there.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Origin {
+    /// The file's name as the lesson's messages write it.
+    pub file: String,
+    /// The line of the source's first character in the file, from 1.
+    pub line: usize,
+    /// Its column, from 1 (in characters).
+    pub column: usize,
+}
+
+impl Origin {
+    /// `e`, its line and column moved from the source's own to the file's: the source's line 1
+    /// starts at this column, its later lines at the file's column 1. (The file's name goes
+    /// with it where the error is said: [`crate::RenderError::Code`]'s `file`.)
+    #[must_use]
+    pub fn place(&self, mut e: ShaderError) -> ShaderError {
+        if e.line == 1 {
+            e.column += self.column - 1;
+        }
+        e.line += self.line - 1;
+        e
+    }
+}
+
 /// Line and column (from 1, the column in characters) of byte `at` of `src`.
 #[must_use]
 pub fn line_column(src: &str, at: usize) -> (usize, usize) {
@@ -166,6 +193,10 @@ pub struct Program {
     pub textures: Vec<String>,
     /// The declarations the student wrote (uniforms, textures, inputs, outputs).
     pub declarations: Vec<dialect::Declaration>,
+    /// Where the source stands in a file, so that a run-time error is at its line there
+    /// ([`Self::run_error`]) and names the file; `None` for a source of its own (the shader
+    /// panel's).
+    pub origin: Option<Origin>,
 }
 
 /// naga's parse errors at the student's lines, each with its complaint (a missing `;` at the
@@ -330,6 +361,7 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
         uniforms,
         textures,
         declarations: adapted.declarations.clone(),
+        origin: None,
     })
 }
 
@@ -409,9 +441,13 @@ impl Program {
     /// A [`RunError`] as a message at its line.
     #[must_use]
     pub fn run_error(&self, e: &RunError) -> ShaderError {
-        ShaderError {
+        let error = ShaderError {
             complaint: e.complaint.clone(),
             ..error_at(&self.source, e.at..e.at, e.message.clone())
+        };
+        match &self.origin {
+            Some(origin) => origin.place(error),
+            None => error,
         }
     }
 

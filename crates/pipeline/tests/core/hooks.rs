@@ -272,6 +272,7 @@ fn a_pipeline_function_that_stops_is_named_as_the_frame_s_error() {
         part,
         object,
         error,
+        ..
     } = &e
     else {
         panic!("{e}");

@@ -250,7 +250,7 @@ impl FragmentShading<'_> {
         let bindings = Bindings { textures: &tex };
         let killed = m
             .run(&refs, n, live, &bindings)
-            .map_err(|e| shader_error(shader::Stage::Fragment, o, &fs.run_error(&e)))?;
+            .map_err(|e| shader_error(fs, o, &e))?;
         let result = m.result();
         let mut counts = FragmentCounts::default();
         let background = ctx.settings.background;
@@ -337,7 +337,7 @@ impl FragmentShading<'_> {
         m.trace_lane(Some(j));
         let killed = m
             .run(&refs, 4, live, &bindings)
-            .map_err(|e| shader_error(shader::Stage::Fragment, o, &fs.run_error(&e)))?;
+            .map_err(|e| shader_error(fs, o, &e))?;
         let events = m.take_trace();
         let r = m.result();
         let output = (killed & (1 << j) == 0).then(|| {

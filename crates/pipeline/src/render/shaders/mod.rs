@@ -155,11 +155,14 @@ fn textures<'a>(
         .collect()
 }
 
-fn shader_error(stage: shader::Stage, object: &Object, e: &shader::ShaderError) -> RenderError {
+/// `program`'s run-time error `e` on `object`, at its place — in the file the source stands in,
+/// named, when it stands in one.
+fn shader_error(program: &shader::Program, object: &Object, e: &shader::RunError) -> RenderError {
     RenderError::Code {
-        part: super::CodePart::Shader(stage),
+        part: super::CodePart::Shader(program.stage),
         object: object.name.clone(),
-        error: Box::new(e.clone()),
+        error: Box::new(program.run_error(e)),
+        file: program.origin.as_ref().map(|o| o.file.clone()),
     }
 }
 
@@ -281,7 +284,7 @@ pub fn trace_vertex(
     let bindings = Bindings { textures: &tex };
     m.trace_lane(Some(0));
     m.run(&refs, 1, 1, &bindings)
-        .map_err(|e| shader_error(shader::Stage::Vertex, object, &vs.run_error(&e)))?;
+        .map_err(|e| shader_error(vs, object, &e))?;
     let events = m.take_trace();
     let result = m.result();
     let mut at = 0usize;
@@ -439,7 +442,7 @@ fn run_vertex_shader(
                 let bindings = Bindings { textures: &tex };
                 let live = if n == LANES { u64::MAX } else { (1 << n) - 1 };
                 m.run(&refs, n, live, &bindings)
-                    .map_err(|e| shader_error(shader::Stage::Vertex, object, &vs.run_error(&e)))?;
+                    .map_err(|e| shader_error(vs, object, &e))?;
                 let result = m.result();
                 for (l, out) in results.chunks_exact_mut(stride).enumerate() {
                     for (c, v) in out.iter_mut().enumerate() {
