@@ -123,7 +123,7 @@ fn a_built_in_pipelens_does_not_run_is_refused_at_its_name() {
 /// built-in's own.
 #[test]
 fn modf_and_matrix_comp_mult_run_and_their_insides_stay_out_of_the_trace() {
-    use pipeline::shader::{Bindings, LANES, Uniforms};
+    use pipeline::shader::Uniforms;
     let src = "#version 330 core
 in float x;
 out vec4 color;
@@ -155,21 +155,7 @@ void main() {
     }
     // Lane 1 (x = −1.25): the trace names the student's writes, at their lines, and no step
     // of the built-ins (no call, no `i = trunc(x)`).
-    let rows: Vec<Vec<u32>> = vec![
-        (0..LANES)
-            .map(|l| if l == 1 { (-1.25f32).to_bits() } else { 0 })
-            .collect(),
-    ];
-    let inputs: Vec<&[u32]> = rows.iter().map(Vec::as_slice).collect();
-    let mut m = p.machine();
-    m.trace_lane(Some(1));
-    m.run(&inputs, 4, u64::MAX, &Bindings { textures: &[] })
-        .expect("runs");
-    let text: Vec<String> = p
-        .describe(&m.take_trace())
-        .iter()
-        .map(|t| format!("{}: {}", t.line, t.text))
-        .collect();
+    let text = crate::shader::traced_lane_1(&p, -1.25);
     for want in ["6: whole = -1.000", "6: part = -0.250", "9: m = "] {
         assert!(
             text.iter().any(|t| t.starts_with(want)),

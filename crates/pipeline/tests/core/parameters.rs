@@ -116,7 +116,6 @@ void main() {
 
 #[test]
 fn the_trace_shows_the_callees_writes_and_the_copies_back_at_the_call() {
-    use pipeline::shader::Bindings;
     let src = "#version 330 core
 in float x;
 out vec4 color;
@@ -133,21 +132,7 @@ void main() {
 ";
     let p = compile(Stage::Fragment, src);
     // Lane 1: x = −0.25, so whole = −1 and part = 0.75.
-    let rows: Vec<Vec<u32>> = vec![
-        (0..pipeline::shader::LANES)
-            .map(|l| if l == 1 { (-0.25f32).to_bits() } else { 0 })
-            .collect(),
-    ];
-    let inputs: Vec<&[u32]> = rows.iter().map(Vec::as_slice).collect();
-    let mut m = p.machine();
-    m.trace_lane(Some(1));
-    m.run(&inputs, 4, u64::MAX, &Bindings { textures: &[] })
-        .expect("runs");
-    let text: Vec<String> = p
-        .describe(&m.take_trace())
-        .iter()
-        .map(|t| format!("{}: {}", t.line, t.text))
-        .collect();
+    let text = crate::shader::traced_lane_1(&p, -0.25);
     let at = |s: &str| text.iter().position(|t| t == s);
     let order = [
         "5: whole = -1.000",

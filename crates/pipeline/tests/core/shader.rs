@@ -77,6 +77,26 @@ pub(crate) fn run(
     Ok((out, killed))
 }
 
+/// The trace of lane 1 of a one-input program whose input is `x` there (0 in lanes 0, 2, 3),
+/// as `line: text` lines.
+pub(crate) fn traced_lane_1(program: &Program, x: f32) -> Vec<String> {
+    let rows: Vec<Vec<u32>> = vec![
+        (0..LANES)
+            .map(|l| if l == 1 { x.to_bits() } else { 0 })
+            .collect(),
+    ];
+    let inputs: Vec<&[u32]> = rows.iter().map(Vec::as_slice).collect();
+    let mut m = program.machine();
+    m.trace_lane(Some(1));
+    m.run(&inputs, 4, u64::MAX, &Bindings { textures: &[] })
+        .expect("runs");
+    program
+        .describe(&m.take_trace())
+        .iter()
+        .map(|t| format!("{}: {}", t.line, t.text))
+        .collect()
+}
+
 fn close(a: &[f32], b: &[f32]) -> bool {
     a.len() == b.len()
         && a.iter()
@@ -501,17 +521,7 @@ fn a_missing_output_and_an_unknown_uniform_are_explained() {
 fn the_trace_shows_each_assignment_branch_and_iteration_of_one_lane() {
     let src = "#version 330 core\nin float x;\nout vec4 color;\nvoid main() {\n  vec3 n = normalize(vec3(x, 0.0, 1.0));\n  float s = 0.0;\n  for (int i = 0; i < 2; i++) {\n    s += n.z;\n  }\n  if (s > 1.0) {\n    s = 1.0;\n  }\n  color = vec4(s);\n}\n";
     let p = compile(Stage::Fragment, src);
-    let rows = pack(&[vec![vec![0.0], vec![1.0], vec![0.0], vec![0.0]]]);
-    let inputs: Vec<&[u32]> = rows.iter().map(Vec::as_slice).collect();
-    let mut m = p.machine();
-    m.trace_lane(Some(1));
-    m.run(&inputs, 4, u64::MAX, &Bindings { textures: &[] })
-        .expect("runs");
-    let trace = p.describe(&m.take_trace());
-    let text: Vec<String> = trace
-        .iter()
-        .map(|t| format!("{}: {}", t.line, t.text))
-        .collect();
+    let text = traced_lane_1(&p, 1.0);
     let has = |s: &str| text.iter().any(|t| t == s);
     assert!(has("5: n = vec3(0.707, 0.000, 0.707)"), "{text:#?}");
     assert!(
