@@ -134,9 +134,11 @@ void main() {
     // Lane 1: x = −0.25, so whole = −1 and part = 0.75.
     let text = crate::shader::traced_lane_1(&p, -0.25);
     let at = |s: &str| text.iter().position(|t| t == s);
+    // The `void` function's return is at its closing brace (line 7), not at line 1.
     let order = [
         "5: whole = -1.000",
         "6: part = 0.750",
+        "7: return from split()",
         "11: w = -1.000",
         "11: p = 0.750",
     ]

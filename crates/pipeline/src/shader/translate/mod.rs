@@ -24,6 +24,9 @@ pub struct Translator<'m> {
     code: Code,
     /// Names of the textures, in binding order, as globals.
     textures: Vec<(Handle<naga::GlobalVariable>, u32)>,
+    /// The place of the closing brace of the function being translated: where the `return`
+    /// naga writes at the end of a `void` function is (it has no place of its own).
+    end: std::cell::Cell<usize>,
 }
 
 impl<'m> Translator<'m> {
@@ -50,6 +53,7 @@ impl<'m> Translator<'m> {
                 private_init: Vec::new(),
             },
             textures: Vec::new(),
+            end: std::cell::Cell::new(0),
         };
         for (h, g) in module.global_variables.iter() {
             let n = components(module, &module.types[g.ty].inner);
@@ -83,6 +87,8 @@ impl<'m> Translator<'m> {
             t.code.globals.push(slot);
         }
         for (h, f) in module.functions.iter() {
+            let start = module.functions.get_span(h).to_range().map(|r| r.start);
+            t.end.set(start.map_or(0, |s| closing_brace(adapted, s)));
             let mut func = t.function(f, &info[h])?;
             // A function in the preamble is one pipelens wrote.
             func.builtin = module
@@ -450,6 +456,26 @@ impl<'m> Translator<'m> {
         })
     }
 
+    /// A call's arguments: an `in` parameter's value by its register, an `out` or `inout`
+    /// parameter's variable by its place.
+    fn arguments(
+        &self,
+        f: &naga::Function,
+        fi: &FunctionInfo,
+        arguments: &[Handle<Expression>],
+        func: &Function,
+    ) -> Result<Vec<Argument>, String> {
+        arguments
+            .iter()
+            .map(|&a| match *fi[a].ty.inner_with(&self.module.types) {
+                TypeInner::Pointer { .. } | TypeInner::ValuePointer { .. } => {
+                    self.place(f, fi, a, func).map(Argument::Ref)
+                }
+                _ => Ok(Argument::Value(func.regs[a.index()])),
+            })
+            .collect()
+    }
+
     /// A block's statements. One naga made up without a place of its own (the `if (!cond)
     /// break;` it writes for a `for` or `while` condition) takes `around`, the place of the
     /// statement that holds the block, so the trace names the loop's line, not line 1.
@@ -525,7 +551,11 @@ impl<'m> Translator<'m> {
                 },
                 Statement::Continue => Stmt::Continue { at },
                 Statement::Return { value } => Stmt::Return {
-                    at,
+                    at: if span.is_defined() {
+                        at
+                    } else {
+                        self.end.get()
+                    },
                     value: value.map(reg),
                 },
                 Statement::Kill => Stmt::Kill { at },
@@ -541,15 +571,7 @@ impl<'m> Translator<'m> {
                 } => Stmt::Call {
                     at,
                     function: function.index(),
-                    args: arguments
-                        .iter()
-                        .map(|&a| match *fi[a].ty.inner_with(&self.module.types) {
-                            TypeInner::Pointer { .. } | TypeInner::ValuePointer { .. } => {
-                                self.place(f, fi, a, func).map(Argument::Ref).map_err(err)
-                            }
-                            _ => Ok(Argument::Value(reg(a))),
-                        })
-                        .collect::<Result<_, _>>()?,
+                    args: self.arguments(f, fi, arguments, func).map_err(err)?,
                     result: result.map(reg),
                 },
                 Statement::ControlBarrier(_) | Statement::MemoryBarrier(_) => continue,
@@ -563,6 +585,22 @@ impl<'m> Translator<'m> {
         }
         Ok(out)
     }
+}
+
+/// The student's offset of the `}` that closes the function whose header starts at `start`
+/// (naga's offset): the brace that balances the first `{` after it, comments skipped.
+fn closing_brace(adapted: &Adapted, start: usize) -> usize {
+    let text = adapted.text.get(start..).unwrap_or_default();
+    let mut depth = 0;
+    for l in super::lexeme::lex(text) {
+        match &text[l.span.clone()] {
+            "{" => depth += 1,
+            "}" if depth == 1 => return adapted.original_offset(start + l.span.start),
+            "}" => depth -= 1,
+            _ => {}
+        }
+    }
+    adapted.original_offset(start)
 }
 
 /// The first word of an IR node's debug form: `Atomic`, `ImageStore`.
