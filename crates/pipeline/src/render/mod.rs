@@ -143,10 +143,10 @@ pub fn render_reusing(
     if !problems.is_empty() {
         return Err(RenderError::Invalid(problems));
     }
-    if let Some(drawn) = student::with_student_curves(scene)? {
+    if let Some(drawn) = student::with_student_curves(scene, settings.max_steps)? {
         return render_reusing(&drawn, settings, spare);
     }
-    if let Some(drawn) = student::with_student_shadow(scene)? {
+    if let Some(drawn) = student::with_student_shadow(scene, settings.max_steps)? {
         return render_reusing(&drawn, settings, spare);
     }
     if scene.shadow.is_some() || !scene.figures.is_empty() {
@@ -378,16 +378,28 @@ fn rasterize_with_hooks(
         error: Box::new(error),
         file: None,
     };
+    // Each object's inside and depth tests, their calls allowed the frame's loop budget.
+    let budgeted =
+        |h: &Option<crate::shader::Hook>| h.as_ref().map(|h| h.within(settings.max_steps));
+    let tests: Vec<_> = scene
+        .objects
+        .iter()
+        .map(|o| (budgeted(&o.inside), budgeted(&o.depth_test)))
+        .collect();
     let mut counts = Vec::with_capacity(triangles.len());
     for (i, tri) in triangles.iter().enumerate() {
-        let Some(object) = primitives
-            .get(tri.primitive as usize)
-            .and_then(|p| scene.objects.get(p.object as usize))
+        let Some((object, (inside_test, depth_test))) =
+            primitives.get(tri.primitive as usize).and_then(|p| {
+                Some((
+                    scene.objects.get(p.object as usize)?,
+                    &tests[p.object as usize],
+                ))
+            })
         else {
             counts.push(samples.rasterize_reference(tri, i as u32, settings.depth_test));
             continue;
         };
-        let inside = match &object.inside {
+        let inside = match inside_test {
             Some(test) => {
                 let points: Vec<[f32; 2]> = samples
                     .box_samples(tri)
@@ -404,7 +416,7 @@ fn rasterize_with_hooks(
             None => None,
         };
         let covers = |k: usize, p| inside.as_ref().map_or_else(|| tri.covers(p), |a| a[k]);
-        let Some(test) = &object.depth_test else {
+        let Some(test) = depth_test else {
             counts.push(samples.rasterize_where(tri, i as u32, settings.depth_test, covers));
             continue;
         };

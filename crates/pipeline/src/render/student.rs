@@ -12,7 +12,10 @@ use crate::shader::HookKind;
 ///
 /// # Errors
 /// A run-time error of the student's function.
-pub(super) fn with_student_curves(scene: &Scene) -> Result<Option<Scene>, RenderError> {
+pub(super) fn with_student_curves(
+    scene: &Scene,
+    budget: u32,
+) -> Result<Option<Scene>, RenderError> {
     use crate::mesh::BuiltinMesh;
     if !scene
         .objects
@@ -40,7 +43,8 @@ pub(super) fn with_student_curves(scene: &Scene) -> Result<Option<Scene>, Render
             },
             None => RenderError::Invalid(vec![format!("{} of {}, {words}", kind.key(), o.name)]),
         };
-        let mesh = match (o.curve.take(), o.patch.take(), &o.builtin) {
+        let within = |h: Option<crate::shader::Hook>| h.map(|h| h.within(budget));
+        let mesh = match (within(o.curve.take()), within(o.patch.take()), &o.builtin) {
             (Some(hook), _, Some(BuiltinMesh::Bezier { points, t, levels })) => {
                 let curve = |ts: &[f32]| hook.curve_points(*points, ts).map_err(keep);
                 crate::mesh::construction_mesh_from(*points, *t, *levels, &curve)
@@ -75,7 +79,10 @@ pub(super) fn with_student_curves(scene: &Scene) -> Result<Option<Scene>, Render
 ///
 /// # Errors
 /// A run-time error of the student's function, or a matrix that is not finite.
-pub(super) fn with_student_shadow(scene: &Scene) -> Result<Option<Scene>, RenderError> {
+pub(super) fn with_student_shadow(
+    scene: &Scene,
+    budget: u32,
+) -> Result<Option<Scene>, RenderError> {
     let Some(shadow) = scene.shadow.filter(|s| s.yours.is_none()) else {
         return Ok(None);
     };
@@ -87,6 +94,7 @@ pub(super) fn with_student_shadow(scene: &Scene) -> Result<Option<Scene>, Render
     let m = holder
         .hook(kind)
         .expect("found above")
+        .within(budget)
         .shadow_matrix(light)
         .map_err(|e| RenderError::Code {
             part: CodePart::Function(kind),

@@ -284,6 +284,39 @@ fn a_pipeline_function_that_stops_is_named_as_the_frame_s_error() {
     assert!(e.to_string().contains("de_casteljau() of curve"), "{e}");
 }
 
+/// The frame's loop budget (`max_steps`) holds for the pipeline functions too: an inside test
+/// whose loop runs 70 000 times per call stops at the default 65 536 and runs when the lesson
+/// allows more, giving the triangle's own coverage.
+#[test]
+fn a_pipeline_functions_loop_runs_as_long_as_max_steps_allows() {
+    use pipeline::shader::{Complaint, HookKind, compile_hook};
+    // 70 000 halvings of a counter that ends where it began: the edge function's sign, slowly.
+    let slow = "bool inside(vec2 p, vec2 a, vec2 b, vec2 c) {\n    float k = 0.0;\n    for (int i = 0; i < 70000; i++) {\n        k += 1.0;\n    }\n    float e0 = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);\n    float e1 = (c.x - b.x) * (p.y - b.y) - (c.y - b.y) * (p.x - b.x);\n    float e2 = (a.x - c.x) * (p.y - c.y) - (a.y - c.y) * (p.x - c.x);\n    bool pos = e0 >= 0.0 && e1 >= 0.0 && e2 >= 0.0;\n    bool neg = e0 <= 0.0 && e1 <= 0.0 && e2 <= 0.0;\n    return k == 70000.0 && (pos || neg);\n}\n";
+    let triangle = [
+        Vec2::new(1.0, 1.0),
+        Vec2::new(7.0, 2.0),
+        Vec2::new(3.0, 7.0),
+    ];
+    let (mut scene, settings) = pixel_scene(8, 8, &[triangle]);
+    let own = render(&scene, &settings);
+    scene.objects[0].inside = Some(compile_hook(HookKind::Inside, slow).expect("compiles"));
+    let e = pipeline::render(&scene, &settings).expect_err("past the default budget");
+    let pipeline::RenderError::Code { error, .. } = &e else {
+        panic!("{e}");
+    };
+    assert_eq!(error.complaint, Complaint::EndlessLoop { budget: 65_536 });
+    let allowed = pipeline::settings::RenderSettings {
+        max_steps: 100_000,
+        ..settings
+    };
+    let mine = render(&scene, &allowed);
+    assert!(
+        mine.pixels.coverage.iter().any(|&c| c > 0),
+        "the triangle is drawn"
+    );
+    assert_eq!(own.pixels.coverage, mine.pixels.coverage);
+}
+
 /// Angel's shadow matrix written in GLSL (T(l)·P·T(−l), P the identity with last row
 /// (0, −1/y_l, 0, 0)) is pipelens' own, entry by entry.
 const SHADOW: &str = "mat4 shadow_matrix(vec3 light) {

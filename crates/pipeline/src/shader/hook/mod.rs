@@ -277,6 +277,20 @@ pub struct Hook {
     pub program: Arc<Program>,
     /// The student's source alone.
     pub source: String,
+    /// The loop iterations one call may run ([`crate::settings::RenderSettings::max_steps`]
+    /// of the frame that calls it; the default until then).
+    pub budget: u32,
+}
+
+impl Hook {
+    /// This function, its calls allowed `budget` loop iterations each.
+    #[must_use]
+    pub fn within(&self, budget: u32) -> Self {
+        Self {
+            budget,
+            ..self.clone()
+        }
+    }
 }
 
 /// The student's inside test.
@@ -338,6 +352,7 @@ pub fn compile_hook(kind: HookKind, source: &str) -> Result<Hook, Vec<ShaderErro
         kind,
         program: Arc::new(program),
         source: source.to_owned(),
+        budget: crate::settings::DEFAULT_MAX_STEPS,
     })
 }
 
@@ -490,6 +505,7 @@ impl Hook {
     ) -> Result<Vec<[f32; 4]>, ShaderError> {
         let program = &*self.program;
         let mut machine = program.machine();
+        machine.budget = self.budget;
         let bindings = Bindings { textures: &[] };
         let names = self.kind.inputs();
         // The entry point's inputs in its order: which argument each is, and its components.

@@ -2,14 +2,15 @@
 //! expression by expression, pointers followed to their places, constants evaluated, and every
 //! operation checked to be one the machine runs.
 
+mod statements;
 mod texture;
 
 use naga::valid::{FunctionInfo, ModuleInfo};
-use naga::{AddressSpace, BinaryOperator, Expression, Handle, Module, Statement, TypeInner};
+use naga::{AddressSpace, BinaryOperator, Expression, Handle, Module, TypeInner};
 
 use super::code::{
-    Argument, Code, Function, Kind, Op, OpError, Parameter, Place, Reg, Root, Shape, Stmt,
-    Unsupported, components, const_value, element_count, kind_of, literal, member,
+    Code, Function, Kind, Op, OpError, Parameter, Place, Reg, Root, Shape, Unsupported, components,
+    const_value, element_count, kind_of, literal, member,
 };
 use super::dialect::Adapted;
 use super::emitted::{mark_constant, mark_emitted};
@@ -454,136 +455,6 @@ impl<'m> Translator<'m> {
                 .into());
             }
         })
-    }
-
-    /// A call's arguments: an `in` parameter's value by its register, an `out` or `inout`
-    /// parameter's variable by its place.
-    fn arguments(
-        &self,
-        f: &naga::Function,
-        fi: &FunctionInfo,
-        arguments: &[Handle<Expression>],
-        func: &Function,
-    ) -> Result<Vec<Argument>, String> {
-        arguments
-            .iter()
-            .map(|&a| match *fi[a].ty.inner_with(&self.module.types) {
-                TypeInner::Pointer { .. } | TypeInner::ValuePointer { .. } => {
-                    self.place(f, fi, a, func).map(Argument::Ref)
-                }
-                _ => Ok(Argument::Value(func.regs[a.index()])),
-            })
-            .collect()
-    }
-
-    /// A block's statements. One naga made up without a place of its own (the `if (!cond)
-    /// break;` it writes for a `for` or `while` condition) takes `around`, the place of the
-    /// statement that holds the block, so the trace names the loop's line, not line 1.
-    fn block(
-        &self,
-        f: &naga::Function,
-        fi: &FunctionInfo,
-        block: &naga::Block,
-        func: &Function,
-        around: usize,
-    ) -> Result<Vec<Stmt>, Unsupported> {
-        let mut out = Vec::with_capacity(block.len());
-        for (s, span) in block.span_iter() {
-            let at = if span.is_defined() {
-                self.at(*span)
-            } else {
-                around
-            };
-            let err = |what: String| Unsupported {
-                at,
-                what,
-                function: None,
-            };
-            let reg = |h: Handle<Expression>| func.regs[h.index()];
-            out.push(match *s {
-                Statement::Emit(ref range) => Stmt::Emit(range.index_range()),
-                Statement::Block(ref b) => Stmt::Block(self.block(f, fi, b, func, at)?),
-                Statement::If {
-                    condition,
-                    ref accept,
-                    ref reject,
-                } => Stmt::If {
-                    at,
-                    c: reg(condition).at,
-                    accept: self.block(f, fi, accept, func, at)?,
-                    reject: self.block(f, fi, reject, func, at)?,
-                    // naga's `if (!cond) break;` for a loop's condition has no place of its own.
-                    loop_test: !span.is_defined()
-                        && reject.is_empty()
-                        && matches!(accept.iter().next(), Some(Statement::Break)),
-                },
-                Statement::Switch {
-                    selector,
-                    ref cases,
-                } => {
-                    let mut cs = Vec::new();
-                    for c in cases {
-                        let value = match c.value {
-                            naga::SwitchValue::I32(v) => Some(i64::from(v)),
-                            naga::SwitchValue::U32(v) => Some(i64::from(v)),
-                            naga::SwitchValue::Default => None,
-                        };
-                        cs.push((value, self.block(f, fi, &c.body, func, at)?, c.fall_through));
-                    }
-                    Stmt::Switch {
-                        at,
-                        selector: reg(selector).at,
-                        cases: cs,
-                    }
-                }
-                Statement::Loop {
-                    ref body,
-                    ref continuing,
-                    break_if,
-                } => Stmt::Loop {
-                    at,
-                    body: self.block(f, fi, body, func, at)?,
-                    continuing: self.block(f, fi, continuing, func, at)?,
-                    break_if: break_if.map(|b| reg(b).at),
-                },
-                Statement::Break => Stmt::Break {
-                    at: span.is_defined().then_some(at),
-                },
-                Statement::Continue => Stmt::Continue { at },
-                Statement::Return { value } => Stmt::Return {
-                    at: if span.is_defined() {
-                        at
-                    } else {
-                        self.end.get()
-                    },
-                    value: value.map(reg),
-                },
-                Statement::Kill => Stmt::Kill { at },
-                Statement::Store { pointer, value } => Stmt::Store {
-                    at,
-                    place: self.place(f, fi, pointer, func).map_err(err)?,
-                    value: reg(value).at,
-                },
-                Statement::Call {
-                    function,
-                    ref arguments,
-                    result,
-                } => Stmt::Call {
-                    at,
-                    function: function.index(),
-                    args: self.arguments(f, fi, arguments, func).map_err(err)?,
-                    result: result.map(reg),
-                },
-                Statement::ControlBarrier(_) | Statement::MemoryBarrier(_) => continue,
-                ref other => {
-                    return Err(err(format!(
-                        "a statement pipelens does not run ({})",
-                        describe(other)
-                    )));
-                }
-            });
-        }
-        Ok(out)
     }
 }
 
