@@ -68,6 +68,7 @@ impl PipelensApp {
         self.export_result = Some(rx);
         std::thread::spawn(move || {
             let r = crate::export::lesson::export_lesson(&lesson, &opts, &mut |_, _, _| {})
+                .map(|e| e.written)
                 .map_err(|e| format!("{e:#}"));
             let _ = tx.send(r);
         });

@@ -446,13 +446,16 @@ fn export_lesson(
     opts: &crate::export::lesson::LessonExport,
 ) -> Result<ExitCode> {
     let bar = Progress::new();
-    let written = crate::export::lesson::export_lesson(lesson, opts, &mut |done, all, what| {
+    let exported = crate::export::lesson::export_lesson(lesson, opts, &mut |done, all, what| {
         bar.show(done, all, what);
     })?;
     drop(bar);
+    for w in &exported.warnings {
+        eprintln!("pipelens: warning: {w}");
+    }
     say!(
         "Exported {} files of lesson {} to {}; open {}",
-        written.len(),
+        exported.written.len(),
         lesson.id,
         opts.out.display(),
         opts.out.join("index.html").display()

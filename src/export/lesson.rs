@@ -55,8 +55,18 @@ fn step_dir(k: usize) -> String {
     format!("step-{:02}", k + 1)
 }
 
-/// Exports `lesson`; returns every path written. `progress` is told how many parts of how
-/// many are done and which was done last.
+/// What a lesson's export wrote, and what it warns of.
+#[derive(Debug, Default)]
+pub struct Exported {
+    /// Every path written.
+    pub written: Vec<PathBuf>,
+    /// A step's frame drawn with something a reader should know, `step 3: …`: triangles
+    /// dropped for a `gl_Position` that is not finite, pixels whose colour was not.
+    pub warnings: Vec<String>,
+}
+
+/// Exports `lesson`; returns every path written and each step's warnings. `progress` is told
+/// how many parts of how many are done and which was done last.
 ///
 /// # Errors
 /// A step out of range, a render or an encoding that fails, a folder that cannot be written.
@@ -64,13 +74,15 @@ pub fn export_lesson(
     lesson: &Lesson,
     opts: &LessonExport,
     progress: &mut (dyn FnMut(usize, usize, &str) + Send),
-) -> Result<Vec<PathBuf>> {
+) -> Result<Exported> {
     let (steps, built) = build_steps(lesson, opts, progress)?;
     let mut written = Vec::new();
+    let mut warnings = Vec::new();
     let mut pages = Vec::new();
     let mut textures_written = false;
     for b in built {
-        let (page, folders) = b?;
+        let (page, folders, warned) = b?;
+        warnings.extend(warned);
         for (folder, files) in folders {
             if folder == "textures" && std::mem::replace(&mut textures_written, true) {
                 continue;
@@ -91,7 +103,7 @@ pub fn export_lesson(
         .with_context(|| format!("cannot create the folder {}", opts.out.display()))?;
     super::write_atomically(&target, html.as_bytes())?;
     written.push(target);
-    Ok(written)
+    Ok(Exported { written, warnings })
 }
 
 /// The handout alone, as one self-contained HTML text (every image in it), written nowhere: what
@@ -108,7 +120,7 @@ pub fn handout_html(lesson: &Lesson, opts: &LessonExport) -> Result<String> {
     let (_, built) = build_steps(lesson, &opts, &mut |_, _, _| {})?;
     let pages = built
         .into_iter()
-        .map(|b| b.map(|(page, _)| page))
+        .map(|b| b.map(|(page, _, _)| page))
         .collect::<Result<Vec<_>>>()?;
     Ok(handout::html(lesson, &pages, opts.lang, opts.answers))
 }
@@ -150,8 +162,9 @@ fn build_steps(
     Ok((steps.len(), built))
 }
 
-/// A step's page of the handout, and the files it adds by folder (its slide, its data).
-type BuiltStep = (StepPage, Vec<(String, Vec<ExportFile>)>);
+/// A step's page of the handout, the files it adds by folder (its slide, its data), and its
+/// frame's warnings.
+type BuiltStep = (StepPage, Vec<(String, Vec<ExportFile>)>, Vec<String>);
 
 /// Step `k`'s page of the handout, and the files it adds (by folder): its slide, its data.
 fn build_step(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<BuiltStep> {
@@ -216,7 +229,12 @@ fn build_step(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<BuiltSte
         matrices,
         stage: lesson.stage_at(k),
     };
-    Ok((page, folders))
+    let warnings = capture
+        .not_finite_warnings()
+        .into_iter()
+        .map(|w| format!("step {}: {w}", k + 1))
+        .collect();
+    Ok((page, folders, warnings))
 }
 
 /// What step `k`'s slide shows besides its picture and words: the picture's `legend`; for a lab,

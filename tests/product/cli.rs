@@ -526,3 +526,34 @@ fn depth_pfm_holds_the_captures_float_depth_exactly() {
     }
     assert!(distinct.len() > 50, "a scene with many depths");
 }
+
+/// A lesson's export says on stderr which step's frame dropped triangles for a `gl_Position`
+/// that is not finite, and how many — the step, not only the frame — and writes the rest.
+#[test]
+fn a_lesson_export_warns_of_each_steps_not_finite_positions() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let vertex = "#version 330 core\nuniform mat4 mvp;\nin vec3 position;\nvoid main() {\n    gl_Position = mvp * vec4(position, 1.0);\n    if (position.x > 0.5) {\n        gl_Position.w = 1.0 / (position.x - position.x);\n    }\n}\n";
+    let red = "#version 330 core\nout vec4 color;\nvoid main() {\n    color = vec4(1.0, 0.0, 0.0, 1.0);\n}\n";
+    let lesson = format!(
+        "[lesson]\nid = \"nan\"\ntitle = {{ en = \"NaN\", zh = \"NaN\" }}\nsummary = {{ en = \"A position that is not a number.\", zh = \"不是数的位置。\" }}\n\n\
+         [[scene.objects]]\nname = \"sphere\"\nmesh = {{ builtin = \"uv_sphere\", segments = 16, rings = 8 }}\n\n\
+         [[steps]]\ntitle = {{ en = \"Plain\", zh = \"普通\" }}\nnarration = {{ en = \"The sphere.\", zh = \"球。\" }}\n\n\
+         [[steps]]\ntitle = {{ en = \"Dropped\", zh = \"丢弃\" }}\nnarration = {{ en = \"Its right side is gone.\", zh = \"右侧没有了。\" }}\n\
+         shader.vertex = '''\n{vertex}'''\nshader.fragment = '''\n{red}'''\n"
+    );
+    std::fs::write(dir.path().join("nan.toml"), lesson).expect("write");
+    let out = dir.path().join("out");
+    let o = pipelens(
+        dir.path(),
+        &["export", "nan.toml", "--out", out.to_str().expect("utf-8")],
+    );
+    let said = text(&o);
+    assert!(o.status.success(), "{said}");
+    assert!(out.join("index.html").exists(), "{said}");
+    let warnings: Vec<&str> = said.lines().filter(|l| l.contains("warning:")).collect();
+    assert_eq!(warnings.len(), 1, "{said}");
+    assert!(
+        warnings[0].contains("step 2: ") && warnings[0].contains("triangle(s) dropped"),
+        "{said}"
+    );
+}
