@@ -11,6 +11,7 @@ use image::RgbaImage;
 use pipeline::capture::FrameCapture;
 use rayon::prelude::*;
 
+use super::filmstrip;
 use super::handout::{self, Animated, Frame, StepPage};
 use super::picture::{Palette, Rendered, step_picture};
 use super::{ExportFile, ExportOptions, encode_capture, png_rgba, profile_csv, write_files};
@@ -47,8 +48,6 @@ pub struct LessonExport {
 /// The moments of an animated step drawn for its GIF (screens), from its start to its end;
 /// every other one makes the filmstrip (paper), 5 frames.
 const GIF_FRAMES: usize = 9;
-/// The width of a filmstrip frame and a GIF frame.
-const FRAME_WIDTH: u32 = 360;
 
 /// The folder name of step `k` (0-based): `step-01`, `step-02`…
 fn step_dir(k: usize) -> String {
@@ -436,7 +435,7 @@ fn animation(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<Option<An
             values.push("…".to_owned());
         }
         let caption = values.join(", ");
-        Ok((small(&picture), caption))
+        Ok((filmstrip::small(&picture), caption))
     };
     let mut filmstrip = Vec::new();
     let mut gif_frames = Vec::new();
@@ -448,7 +447,7 @@ fn animation(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<Option<An
                 caption: caption.clone(),
             });
         }
-        caption_on(&mut image, &caption);
+        filmstrip::caption_on(&mut image, &caption);
         gif_frames.push(image);
     }
     // Forth and back, as the lesson plays by default.
@@ -461,7 +460,7 @@ fn animation(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<Option<An
     let delay = (longest * 1000.0 / (GIF_FRAMES - 1) as f32).round() as u32;
     Ok(Some(Animated {
         filmstrip,
-        gif: gif(&gif_frames, delay)?,
+        gif: filmstrip::gif(&gif_frames, delay)?,
     }))
 }
 
@@ -497,56 +496,6 @@ fn shown(v: &Value) -> String {
         }
         other => other.to_string(),
     }
-}
-
-/// A picture scaled to a filmstrip frame's width.
-fn small(img: &RgbaImage) -> RgbaImage {
-    if img.width() <= FRAME_WIDTH {
-        return img.clone();
-    }
-    let h = (img.height() as f32 * FRAME_WIDTH as f32 / img.width() as f32).round() as u32;
-    image::imageops::resize(
-        img,
-        FRAME_WIDTH,
-        h.max(1),
-        image::imageops::FilterType::Triangle,
-    )
-}
-
-/// The caption drawn on a dark band at the bottom of a GIF frame (a GIF has no caption of its
-/// own).
-fn caption_on(img: &mut RgbaImage, caption: &str) {
-    let band = 30.min(img.height());
-    let y = img.height() - band;
-    super::text::fill(img, 0, y, img.width(), band, [20, 20, 20]);
-    super::text::draw(
-        img,
-        8.0,
-        (img.height() - 9) as f32,
-        18.0,
-        [255, 220, 120],
-        caption,
-    );
-}
-
-/// An endlessly looping GIF of `frames`, `delay_ms` apart.
-fn gif(frames: &[RgbaImage], delay_ms: u32) -> Result<Vec<u8>> {
-    use image::codecs::gif::{GifEncoder, Repeat};
-    let mut bytes = Vec::new();
-    {
-        let mut enc = GifEncoder::new_with_speed(&mut bytes, 20);
-        enc.set_repeat(Repeat::Infinite).context("encoding a GIF")?;
-        for f in frames {
-            let frame = image::Frame::from_parts(
-                f.clone(),
-                0,
-                0,
-                image::Delay::from_numer_denom_ms(delay_ms, 1),
-            );
-            enc.encode_frame(frame).context("encoding a GIF")?;
-        }
-    }
-    Ok(bytes)
 }
 
 /// With `--data`: step `k`'s buffers, `capture.json` (with the step's pixel), the compared

@@ -3,6 +3,7 @@
 //! written to a temporary name beside its target and renamed, so a file is either whole or absent.
 
 mod chart;
+mod filmstrip;
 mod font;
 mod handout;
 mod json;
