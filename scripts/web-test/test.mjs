@@ -276,7 +276,8 @@ if (await waitForTitle(ans, /^pipelens — 14-mipmaps — step 3\/6$/, "the mipm
     await ans.waitForTimeout(1500);
     await ans.screenshot({ path: `${out}/typed-answer-${typed}.png` });
   }
-  await ans.waitForTimeout(7000);
+  // Saved within seconds (eframe's auto-save, 5 s here): waited for, up to 30 s, not slept.
+  await until(ans, () => /answered:\[3\]/.test(JSON.stringify(Object.entries(localStorage))), null, 30_000);
   const kept = await ans.evaluate(() => JSON.stringify(Object.entries(localStorage)));
   check(/answered:\[3\]/.test(kept), `the right answer is kept in local storage (${kept.slice(0, 160)})`);
   await ans.reload();
@@ -318,6 +319,7 @@ if (await waitForTitle(lab, /^pipelens — 07-rasterization — step 6\/6$/, "th
   await lab.keyboard.type(solution, { delay: 5 });
   await lab.waitForTimeout(8000);
   await lab.screenshot({ path: `${out}/lab-inside-passed.png` });
+  await until(lab, () => /passed:\[6\]/.test(JSON.stringify(Object.entries(localStorage))), null, 30_000);
   const kept = await lab.evaluate(() => JSON.stringify(Object.entries(localStorage)));
   check(/passed:\[6\]/.test(kept) && /inside:\{6:/.test(kept), `the lab passes and its code is kept (${kept.slice(0, 200)})`);
   await lab.reload();
