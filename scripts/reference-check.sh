@@ -3,8 +3,8 @@
 #
 # Renders the bunny, Spot (plain and textured, trilinear), the cow and the GAMES101 assignment-2
 # scene at 800×600 and 1280×720 with 1 and 4 samples, in pipelens (`pipelens export`) and in
-# llvmpipe with the matrices of pipelens' own capture.json; then the 27 GLSL files of
-# scripts/reference/shaders (a mirror's samplerCube, out/inout parameters, the offset and grad
+# llvmpipe with the matrices of pipelens' own capture.json; then the 28 GLSL files of
+# scripts/reference/shaders (a mirror's samplerCube, out/inout parameters, sampler2D parameters, the offset and grad
 # lookups, integer ops, switch, structs, loops, a displacing vertex shader, …) on Spot and some on
 # the bunny, the same source run by pipelens' interpreter and compiled by Mesa. It prints a table: coverage
 # (identical), window depth (within 1e-5), colour (within 2/255 on ≥ 99.9 % of covered pixels).

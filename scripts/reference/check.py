@@ -8,7 +8,7 @@ For every case (mesh, texture, size, samples) it
 2. renders the same mesh on llvmpipe with the model, view and projection matrices of pipelens'
    own capture.json, the peer's own OBJ reader and its own vertex normals (the plain average of
    the unit face normals around each position), and its shaders (render.py's VS and FS) — or, in
-   the GLSL cases, the very shader files pipelens ran (the 27 files of scripts/reference/shaders,
+   the GLSL cases, the very shader files pipelens ran (the 28 files of scripts/reference/shaders,
    listed in `main`), compiled by Mesa, their uniforms set by name;
 3. compares: coverage (samples covered per pixel), window depth (the mean of the pixel's sample
    depths, as pipelens resolves it) and colour.
@@ -293,7 +293,7 @@ def main():
     here = os.path.join(os.path.dirname(os.path.abspath(__file__)), "shaders")
     both, spot_only = (bunny, spot), (spot,)
     textured = {"textured.frag", "texture_offset.frag", "texture_grad.frag", "texel_fetch.frag",
-                "lod_bias.frag"}
+                "lod_bias.frag", "sampler_parameters.frag"}
     glsl = [("lit.vert", "blinn_phong.frag", "Blinn-Phong", both),
             ("lit.vert", "phong.frag", "Phong r·v", both),
             ("lit.vert", "toon.frag", "toon", both),
@@ -306,6 +306,7 @@ def main():
             ("lit.vert", "texture_grad.frag", "textureGrad(Offset)", spot_only),
             ("lit.vert", "texel_fetch.frag", "texelFetch, textureSize", spot_only),
             ("lit.vert", "lod_bias.frag", "bias, textureLod", spot_only),
+            ("lit.vert", "sampler_parameters.frag", "sampler2D parameters", spot_only),
             ("lit.vert", "integers.frag", "integer and bit ops", spot_only),
             ("lit.vert", "switch.frag", "switch, fall-through", spot_only),
             ("lit.vert", "lights.frag", "array of light structs", spot_only),

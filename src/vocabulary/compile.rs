@@ -155,9 +155,9 @@ fn form(c: &Complaint, lang: Lang) -> Option<String> {
         ),
         C::SamplerParameter(ty) => t(
             format!(
-                "pipelens does not pass a `{ty}` as a parameter yet: read the uniform by its name inside the function"
+                "pipelens passes only a `sampler2D` or a `samplerCube` to a function: it binds no `{ty}`"
             ),
-            format!("pipelens 还不能把 `{ty}` 作为参数传递：请在函数里直接用名字读取这个 uniform"),
+            format!("pipelens 只能把 `sampler2D` 或 `samplerCube` 传给函数：它不绑定 `{ty}` 类型的纹理"),
         ),
         C::Recursion(name) => t(
             format!("GLSL does not allow recursion: `{name}` calls itself"),
@@ -168,6 +168,12 @@ fn form(c: &Complaint, lang: Lang) -> Option<String> {
                 "`{name}` is called before it is defined: move its definition above, or declare it above (its first line ending in `;`)"
             ),
             format!("`{name}` 在定义之前就被调用了：把它的定义移到上面，或在上面先声明它（写出它的第一行并以 `;` 结尾）"),
+        ),
+        C::ArgumentTypes { name, parameters } => t(
+            format!(
+                "the arguments do not match the parameters of `{name}` {parameters}: check each argument's type"
+            ),
+            format!("实参与 `{name}` 的形参 {parameters} 不相符：请检查每个实参的类型"),
         ),
         _ => return own(c, lang).or_else(|| super::run::fault(c, lang)),
     })
@@ -330,9 +336,13 @@ mod tests {
             Complaint::IntegerOverflow,
             Complaint::NotImplemented("x".into()),
             Complaint::NotRunYet("modf".into()),
-            Complaint::SamplerParameter("sampler2D".into()),
+            Complaint::SamplerParameter("sampler3D".into()),
             Complaint::Recursion("depth".into()),
             Complaint::DefinedBelow("shade".into()),
+            Complaint::ArgumentTypes {
+                name: "look".into(),
+                parameters: "(sampler2D s, vec2 at)".into(),
+            },
         ];
         assert!(all.len() >= 20);
         for c in &all {

@@ -299,21 +299,23 @@ pub(super) fn dropped_arguments(source: &str) -> Result<(), Vec<ShaderError>> {
     }
 }
 
-/// A sampler declared as a function's parameter (`vec4 look(sampler2D s, vec2 uv)`): valid
-/// GLSL, which pipelens does not pass yet (it binds each texture by its uniform's name), said
-/// at the type rather than naga's "Expected RightParen".
+/// A sampler of a kind pipelens does not bind declared as a function's parameter (`vec4
+/// look(sampler3D s, vec3 r)`): valid GLSL, said at the type rather than naga's "Expected
+/// RightParen". A `sampler2D` or `samplerCube` parameter runs (see `sampler_arguments`).
 ///
 /// # Errors
 /// Each such parameter.
 pub(super) fn sampler_parameters(source: &str) -> Result<(), Vec<ShaderError>> {
     use super::lexeme::{Kind, lex};
-    const SAMPLERS: [&str; 6] = [
+    const SAMPLERS: [&str; 8] = [
         "sampler1D",
-        "sampler2D",
         "sampler3D",
-        "samplerCube",
+        "sampler1DShadow",
         "sampler2DShadow",
+        "samplerCubeShadow",
+        "sampler1DArray",
         "sampler2DArray",
+        "sampler2DRect",
     ];
     let (mut braces, mut parens) = (0i32, 0i32);
     let mut errors = Vec::new();
@@ -330,7 +332,7 @@ pub(super) fn sampler_parameters(source: &str) -> Result<(), Vec<ShaderError>> {
                         source,
                         l.span.clone(),
                         format!(
-                            "pipelens does not pass a `{ty}` as a parameter yet: read the uniform by its name inside the function"
+                            "pipelens passes only a `sampler2D` or a `samplerCube` to a function: it binds no `{ty}`"
                         ),
                     ),
                     Complaint::SamplerParameter(ty.to_owned()),

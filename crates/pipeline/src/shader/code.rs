@@ -168,8 +168,10 @@ pub enum Op {
         to: Kind,
         convert: bool,
     },
-    /// `texture(s, uv)` and its kin: a vec4. `offset`: the register of the `ivec2` texel
-    /// offset of `textureOffset` and its kin.
+    /// `texture(s, uv)` and its kin: a vec4. `texture`: the register that holds the texture's
+    /// slot (a uniform's, or one passed to the function: the same in every lane); `offset`:
+    /// the register of the `ivec2` texel offset of `textureOffset` and its kin. The texture of
+    /// the other texture operations is a register too.
     Sample {
         texture: u32,
         coordinate: Reg,
@@ -376,6 +378,8 @@ pub fn components(module: &Module, inner: &TypeInner) -> u32 {
             .iter()
             .map(|m| components(module, &module.types[m.ty].inner))
             .sum(),
+        // A texture is passed as a value: its slot ([`Op::Sample`]).
+        TypeInner::Image { .. } => 1,
         _ => 0,
     }
 }

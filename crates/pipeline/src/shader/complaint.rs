@@ -67,13 +67,21 @@ pub enum Complaint {
     NotImplemented(String),
     /// A built-in function of GLSL that pipelens does not run yet (as GLSL spells it).
     NotRunYet(String),
-    /// A sampler (`sampler2D`, as GLSL spells its type) declared as a function's parameter,
-    /// which pipelens does not pass yet.
+    /// A sampler pipelens does not bind (`sampler3D`, as GLSL spells its type) declared as a
+    /// function's parameter.
     SamplerParameter(String),
     /// A function that calls itself (GLSL allows no recursion).
     Recursion(String),
     /// A function called above its definition, with no prototype before the call.
     DefinedBelow(String),
+    /// A call of a function defined above whose arguments' types match none of its
+    /// definitions: the function's name and its parameter list as the student wrote it.
+    ArgumentTypes {
+        /// The function called.
+        name: String,
+        /// Its parameters, `(sampler2D s, vec2 at)`.
+        parameters: String,
+    },
     /// pipelens' own checks: a uniform pipelens does not set, with the nearest name it sets.
     UnknownUniform {
         /// The name declared.

@@ -33,8 +33,9 @@ pub struct Adapted {
     /// Length in bytes of the preamble: student byte `b` is at `preamble_len + b`, but for the
     /// forms rewritten for naga ([`super::lowering`]).
     pub preamble_len: usize,
-    /// The rewrites of the student's text after the preamble.
-    edits: Vec<super::lowering::Edit>,
+    /// The rewrites of the student's text after the preamble, pass by pass in the order they
+    /// were made (each pass's edits in the text the pass before it wrote).
+    edits: Vec<Vec<super::lowering::Edit>>,
     /// The insertions made after naga first read the text ([`super::modulo`]), in the text
     /// after the preamble, applied after [`Self::edits`].
     pub(super) splats: Vec<super::lowering::Edit>,
@@ -89,7 +90,8 @@ const int LIGHT_SPOT = 3; const int MAX_LIGHTS = 8;\n";
 
 /// The combined samplers a student may declare, with the separate texture type naga reads
 /// behind each: a 2D texture, and a cube map looked up by direction.
-const SAMPLERS: [(&str, &str); 2] = [("sampler2D", "texture2D"), ("samplerCube", "textureCube")];
+pub(super) const SAMPLERS: [(&str, &str); 2] =
+    [("sampler2D", "texture2D"), ("samplerCube", "textureCube")];
 
 /// The sampler type `name` and its texture type, if it is one pipelens binds.
 fn sampler_kind(name: &str) -> Option<(&'static str, &'static str)> {
@@ -109,7 +111,11 @@ impl Adapted {
     pub fn original_offset(&self, at: usize) -> usize {
         if at >= self.preamble_len {
             let at = super::lowering::before_edits(&self.splats, at - self.preamble_len);
-            return super::lowering::before_edits(&self.edits, at);
+            return self
+                .edits
+                .iter()
+                .rev()
+                .fold(at, |at, pass| super::lowering::before_edits(pass, at));
         }
         self.pieces
             .iter()
@@ -375,6 +381,15 @@ pub fn adapt(src: &str, stage: Stage) -> Result<Adapted, Vec<DialectError>> {
     for glsl in super::glsl330::written_in_glsl(src) {
         preamble.push_generated(glsl, 0..0);
     }
+    if super::sampler_arguments::any(src) {
+        preamble.push_generated(
+            &format!(
+                "layout(set = 2, binding = 0) uniform sampler {};\n",
+                super::sampler_arguments::PARAMETER_SAMPLER
+            ),
+            0..0,
+        );
+    }
     if !errors.is_empty() {
         return Err(errors);
     }
@@ -400,13 +415,20 @@ fn assemble(
     // Blanking replaces whole declarations and ASCII keywords, so the text stays UTF-8.
     let student = super::lowering::legacy_texture_calls(&String::from_utf8_lossy(&student));
     let student = super::lowering::parameter_qualifiers(&student);
-    // Valid GLSL naga refuses, rewritten (stores through a swizzle of an indexed value).
-    let (student, edits) = super::lowering::swizzle_stores(&student);
+    // Valid GLSL naga refuses, rewritten: samplers passed to functions, stores through a
+    // swizzle of an indexed value.
+    let textures: Vec<String> = declarations
+        .iter()
+        .filter(|d| d.storage == Storage::Texture)
+        .map(|d| d.name.clone())
+        .collect();
+    let (student, passed) = super::sampler_arguments::rewrite(&student, &textures);
+    let (student, swizzled) = super::lowering::swizzle_stores(&student);
     let preamble_len = preamble.text.len();
     Adapted {
         text: preamble.text + &student,
         preamble_len,
-        edits,
+        edits: vec![passed, swizzled],
         splats: Vec::new(),
         pieces: preamble.pieces,
         declarations,

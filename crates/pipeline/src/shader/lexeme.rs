@@ -141,6 +141,48 @@ pub fn definition(src: &str, name: &str) -> Option<usize> {
     None
 }
 
+/// The function whose body holds offset `at` of `src`: the name before the parameter list
+/// that the body's `{` follows, at the top level.
+#[must_use]
+pub fn enclosing_function(src: &str, at: usize) -> Option<&str> {
+    let code: Vec<Lexeme> = lex(src)
+        .into_iter()
+        .filter(|l| !matches!(l.kind, Kind::Comment | Kind::Space))
+        .collect();
+    let (mut depth, mut named, mut current) = (0i32, None, None);
+    for (k, l) in code.iter().enumerate() {
+        if l.span.start >= at {
+            return current.filter(|_| depth > 0);
+        }
+        match &src[l.span.clone()] {
+            "(" if depth == 0 && k > 0 && code[k - 1].kind == Kind::Word => {
+                named = Some(&src[code[k - 1].span.clone()]);
+            }
+            "{" => {
+                if depth == 0 {
+                    current = named;
+                }
+                depth += 1;
+            }
+            "}" => depth -= 1,
+            _ => {}
+        }
+    }
+    None
+}
+
+/// The parameter list of the function whose name is at offset `name` of `src`, from `(` to
+/// `)`, its spaces and line breaks each one space.
+#[must_use]
+pub fn parameter_list(src: &str, name: usize) -> String {
+    let open = src[name..].find('(').map_or(src.len(), |o| name + o);
+    let close = src[open..].find(')').map_or(src.len(), |c| open + c + 1);
+    src[open..close]
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
 /// `src` with each `//` comment whose words `words` gives other words for rewritten: the
 /// comment's words are its text after `//` and its leading spaces, trimmed; the spaces stay, so
 /// a comment's indent under the one above it is kept. The code and the line count are unchanged.

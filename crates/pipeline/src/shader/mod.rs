@@ -26,6 +26,7 @@ mod lowering;
 mod machine;
 mod modulo;
 mod ops;
+mod sampler_arguments;
 mod trace;
 mod translate;
 
@@ -229,10 +230,21 @@ fn parse_errors(
                 && let Some(def) = lexeme::definition(source, name)
             {
                 let name = name.clone();
-                (e.message, complaint) = if at.start > def {
+                (e.message, complaint) = if lexeme::enclosing_function(source, at.start)
+                    == Some(name.as_str())
+                {
                     (
                         format!("GLSL does not allow recursion: `{name}` calls itself"),
                         Complaint::Recursion(name),
+                    )
+                } else if at.start > def {
+                    // Defined above and called from elsewhere: no overload takes these types.
+                    let parameters = lexeme::parameter_list(source, def);
+                    (
+                        format!(
+                            "the arguments do not match the parameters of `{name}` {parameters}: check each argument's type"
+                        ),
+                        Complaint::ArgumentTypes { name, parameters },
                     )
                 } else {
                     (

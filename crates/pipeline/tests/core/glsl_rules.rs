@@ -195,6 +195,21 @@ fn recursion_a_call_above_the_definition_and_a_missing_return_are_said_as_such()
             "out vec4 color;\nfloat shade(float x);\n",
         ),
     );
+    // Defined above, called from `main` with a vec2 where it takes a float: neither.
+    let mismatched = "#version 330 core\nout vec4 color;\nfloat shade(float x) {\n    return x * x;\n}\nvoid main() {\n    color = vec4(shade(vec2(0.5)));\n}\n";
+    let e = errors(Stage::Fragment, mismatched);
+    assert_eq!(
+        e[0].complaint,
+        Complaint::ArgumentTypes {
+            name: "shade".to_owned(),
+            parameters: "(float x)".to_owned()
+        }
+    );
+    assert_eq!(e[0].line, 7, "{e:?}");
+    assert_eq!(
+        e[0].message,
+        "the arguments do not match the parameters of `shade` (float x): check each argument's type"
+    );
     let no_return = "#version 330 core\nout vec4 color;\nfloat f(float x) {\n    if (x > 0.0) {\n        return 1.0;\n    }\n}\nvoid main() {\n    color = vec4(f(1.0));\n}\n";
     let e = errors(Stage::Fragment, no_return);
     assert_eq!(e[0].complaint, Complaint::ReturnType);

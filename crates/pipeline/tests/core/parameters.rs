@@ -169,16 +169,44 @@ fn const_in_and_precision_qualifiers_on_parameters_are_read() {
 }
 
 #[test]
-fn a_sampler_parameter_is_refused_at_its_type_with_what_to_do() {
+fn a_sampler_pipelens_does_not_bind_is_refused_as_a_parameter_at_its_type() {
     use pipeline::shader::Complaint;
-    let src = "#version 330 core\nuniform sampler2D tex;\nin vec2 uv;\nout vec4 color;\nvec4 look(sampler2D s, vec2 at) {\n    return texture(s, at);\n}\nvoid main() {\n    color = look(tex, uv);\n}\n";
+    let src = "#version 330 core\nin vec3 uvw;\nout vec4 color;\nvec4 look(sampler3D s, vec3 at) {\n    return texture(s, at);\n}\nvoid main() {\n    color = vec4(uvw, 1.0);\n}\n";
     let e = crate::shader::errors(Stage::Fragment, src);
     assert_eq!(e.len(), 1, "{e:?}");
     assert_eq!(
         e[0].complaint,
-        Complaint::SamplerParameter("sampler2D".into())
+        Complaint::SamplerParameter("sampler3D".into())
     );
-    // `vec4 look(` is 10 characters: the type starts at column 11 of line 5.
-    assert_eq!((e[0].line, e[0].column), (5, 11));
-    assert!(e[0].message.contains("by its name"), "{}", e[0].message);
+    // `vec4 look(` is 10 characters: the type starts at column 11 of line 4.
+    assert_eq!((e[0].line, e[0].column), (4, 11));
+    assert!(
+        e[0].message.contains("only a `sampler2D`"),
+        "{}",
+        e[0].message
+    );
+}
+
+#[test]
+fn a_mistake_in_a_function_that_takes_a_sampler_is_placed_in_the_students_text() {
+    // The sampler's uses are rewritten for naga (`texture(sampler2D(s, …), at)`); the unknown
+    // name after one is still at its own column: `    return texture(s, at) * ` is 28 bytes.
+    let src = "#version 330 core\nuniform sampler2D tex;\nin vec2 uv;\nout vec4 color;\nvec4 look(sampler2D s, vec2 at) {\n    return texture(s, at) * nope;\n}\nvoid main() {\n    color = look(tex, uv);\n}\n";
+    let e = crate::shader::errors(Stage::Fragment, src);
+    assert_eq!((e[0].line, e[0].column), (6, 29), "{e:?}");
+    assert!(e[0].message.contains("nope"), "{}", e[0].message);
+    // A value where the sampler goes: refused at the call's line, with the parameters to
+    // compare with (not "recursion", as it once read).
+    let src = src
+        .replace(" * nope", "")
+        .replace("look(tex, uv)", "look(uv, uv)");
+    let e = crate::shader::errors(Stage::Fragment, &src);
+    assert_eq!(e[0].line, 9, "{e:?}");
+    assert_eq!(
+        e[0].complaint,
+        pipeline::shader::Complaint::ArgumentTypes {
+            name: "look".into(),
+            parameters: "(sampler2D s, vec2 at)".into()
+        }
+    );
 }

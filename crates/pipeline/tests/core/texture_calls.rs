@@ -184,3 +184,62 @@ fn texture_proj_divides_by_the_last_coordinate() {
     let want = [texel0(2, 5), texel0(3, 5), texel0(2, 6), texel0(3, 6)];
     assert_texels(&got, &want, "textureProjOffset");
 }
+
+/// The second texture of the sampler-parameter test: texel (i, j) = (0, 0, (8·i + j)/64).
+fn ramp() -> Texture {
+    let texels = (0..8)
+        .flat_map(|j| (0..8).map(move |i| Vec3::new(0.0, 0.0, (8 * i + j) as f32 / 64.0)))
+        .collect();
+    Texture::from_level(
+        "ramp",
+        Level {
+            width: 8,
+            height: 8,
+            texels,
+        },
+    )
+}
+
+#[test]
+fn a_sampler_passed_to_a_function_reads_the_texture_each_call_passes() {
+    // `through(a, b, at)` = look(a) + 2·look(b) + (0, 0, 0, width of b): called with the two
+    // textures one way round, then the other, passing each on to `look`.
+    let src = "#version 330 core\nuniform sampler2D tex;\nuniform sampler2D detail;\nin vec2 uv;\nout vec4 color;\n\
+               vec4 look(sampler2D s, vec2 at) {\n    return texture(s, at);\n}\n\
+               vec4 through(sampler2D a, sampler2D b, vec2 at) {\n    return look(a, at) + 2.0 * look(b, at) + vec4(0.0, 0.0, 0.0, float(textureSize(b, 0).x));\n}\n\
+               void main() {\n    color = CALL;\n}\n";
+    let (squares, ramp) = (squares(), ramp());
+    let lanes = quad(3, 5);
+    let cells = [(3, 5), (4, 5), (3, 6), (4, 6)];
+    for swapped in [false, true] {
+        let call = if swapped {
+            "through(detail, tex, uv)"
+        } else {
+            "through(tex, detail, uv)"
+        };
+        let got = run(
+            &compile(Stage::Fragment, &src.replace("CALL", call)),
+            &Uniforms::default(),
+            std::slice::from_ref(&lanes),
+            &[Some(&squares), Some(&ramp)],
+        )
+        .expect("runs")
+        .0;
+        // At the centres of level 0's texels (λ = 0): the texels themselves. Each alpha is 1.
+        let (k_tex, k_detail) = if swapped { (2.0, 1.0) } else { (1.0, 2.0) };
+        for (l, &(i, j)) in cells.iter().enumerate() {
+            let want = [
+                k_tex * r0(i),
+                k_tex * r0(j),
+                k_detail * (8 * i + j) as f32 / 64.0,
+                1.0 + 2.0 + 8.0,
+            ];
+            let near = got[l].iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-5);
+            assert!(
+                near,
+                "swapped {swapped}, lane {l}: {:?} != {want:?}",
+                got[l]
+            );
+        }
+    }
+}

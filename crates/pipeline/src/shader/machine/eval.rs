@@ -366,7 +366,7 @@ impl Machine<'_> {
                         level,
                         offset,
                     } => {
-                        let bound = b.bound(*texture);
+                        let bound = b.bound(row(*texture, 0)[0]);
                         let uv = |l: usize| vec2_at(&row, coordinate.at, l);
                         for l in 0..n {
                             let shift = offset.map_or(IVec2::ZERO, |o| {
@@ -405,7 +405,7 @@ impl Machine<'_> {
                         }
                     }
                     Op::SampleCube { texture, direction } => {
-                        let cube = b.cube(*texture);
+                        let cube = b.cube(row(*texture, 0)[0]);
                         for l in 0..n {
                             let d = Vec3::new(
                                 f32::from_bits(row(direction.at, 0)[l]),
@@ -423,7 +423,7 @@ impl Machine<'_> {
                         coordinate,
                         level,
                     } => {
-                        let t = b.bound(*texture).map(|(t, _)| t);
+                        let t = b.bound(row(*texture, 0)[0]).map(|(t, _)| t);
                         for l in 0..n {
                             let (i, j) = (
                                 row(coordinate.at, 0)[l] as i32,
@@ -460,8 +460,9 @@ impl Machine<'_> {
                         }
                     }
                     Op::Size { texture, level } => {
-                        let t = b.bound(*texture).map(|(t, _)| t);
-                        let face = b.cube(*texture).map(|c| &c.faces[0]);
+                        let slot = row(*texture, 0)[0];
+                        let t = b.bound(slot).map(|(t, _)| t);
+                        let face = b.cube(slot).map(|c| &c.faces[0]);
                         for l in 0..n {
                             let k = level.map_or(0, |r| row(r, 0)[l] as usize);
                             let (w, h) = t

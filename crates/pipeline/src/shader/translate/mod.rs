@@ -334,8 +334,11 @@ impl<'m> Translator<'m> {
                     }
                 }
             },
+            // A texture's value is its slot, which a call passes on.
+            Expression::GlobalVariable(g) => self
+                .texture_value(g)
+                .map_or(Op::None, |slot| Op::Const(vec![slot])),
             Expression::FunctionArgument(_)
-            | Expression::GlobalVariable(_)
             | Expression::LocalVariable(_)
             | Expression::CallResult(_) => Op::None,
             Expression::Load { pointer } => Op::Load(self.place(f, fi, pointer, func)?),
@@ -446,7 +449,7 @@ impl<'m> Translator<'m> {
             },
             Expression::ImageSample { .. }
             | Expression::ImageLoad { .. }
-            | Expression::ImageQuery { .. } => self.texture_op(f, e, &reg)?,
+            | Expression::ImageQuery { .. } => self.texture_op(f, fi, e, &reg)?,
             ref other => {
                 return Err(format!(
                     "an operation pipelens does not run yet ({})",

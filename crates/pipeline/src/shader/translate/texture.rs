@@ -2,6 +2,7 @@
 //! `textureProj` and their `*Offset` kin on a `sampler2D`, `texture` on a `samplerCube`,
 //! `texelFetch`, `textureSize`.
 
+use naga::valid::FunctionInfo;
 use naga::{Expression, Handle};
 
 use super::super::code::{Level, Op, OpError, Reg};
@@ -9,32 +10,40 @@ use super::Translator;
 
 impl Translator<'_> {
     /// Whether `image` is a cube map's texture (`samplerCube`).
-    fn is_cube(&self, f: &naga::Function, image: Handle<Expression>) -> bool {
+    fn is_cube(
+        fi: &FunctionInfo,
+        types: &naga::UniqueArena<naga::Type>,
+        image: Handle<Expression>,
+    ) -> bool {
+        matches!(
+            fi[image].ty.inner_with(types),
+            naga::TypeInner::Image {
+                dim: naga::ImageDimension::Cube,
+                ..
+            }
+        )
+    }
+
+    /// The register that holds the slot of the texture `image`: a uniform's (set by
+    /// [`Self::texture_value`]), or a texture passed to the function.
+    fn texture_register(
+        &self,
+        f: &naga::Function,
+        image: Handle<Expression>,
+        reg: &dyn Fn(Handle<Expression>) -> Reg,
+    ) -> Result<u32, String> {
         match f.expressions[image] {
-            Expression::GlobalVariable(g) => matches!(
-                self.module.types[self.module.global_variables[g].ty].inner,
-                naga::TypeInner::Image {
-                    dim: naga::ImageDimension::Cube,
-                    ..
-                }
-            ),
-            _ => false,
+            Expression::GlobalVariable(g) if self.texture_value(g).is_none() => {
+                Err("a texture pipelens does not bind".to_owned())
+            }
+            Expression::GlobalVariable(_) | Expression::FunctionArgument(_) => Ok(reg(image).at),
+            _ => Err("a texture chosen at run time: name the `sampler2D` itself".to_owned()),
         }
     }
 
-    fn texture_slot(&self, f: &naga::Function, image: Handle<Expression>) -> Result<u32, String> {
-        match f.expressions[image] {
-            Expression::GlobalVariable(g) => self
-                .textures
-                .iter()
-                .find(|(h, _)| *h == g)
-                .map(|(_, s)| *s)
-                .ok_or_else(|| "a texture pipelens does not bind".to_owned()),
-            _ => Err(
-                "a texture passed to a function: use the `sampler2D` (or `samplerCube`) by its name"
-                    .to_owned(),
-            ),
-        }
+    /// The value of the texture global `g`, its slot, when pipelens binds it.
+    pub(super) fn texture_value(&self, g: Handle<naga::GlobalVariable>) -> Option<u32> {
+        self.textures.iter().find(|(h, _)| *h == g).map(|(_, s)| *s)
     }
 
     /// The lookup `e` (an `ImageSample`, `ImageLoad` or `ImageQuery`), its operands' registers
@@ -42,6 +51,7 @@ impl Translator<'_> {
     pub(super) fn texture_op(
         &self,
         f: &naga::Function,
+        fi: &FunctionInfo,
         e: &Expression,
         reg: &dyn Fn(Handle<Expression>) -> Reg,
     ) -> Result<Op, OpError> {
@@ -54,8 +64,8 @@ impl Translator<'_> {
                 array_index: None,
                 offset: None,
                 ..
-            } if self.is_cube(f, image) => Op::SampleCube {
-                texture: self.texture_slot(f, image)?,
+            } if Self::is_cube(fi, &self.module.types, image) => Op::SampleCube {
+                texture: self.texture_register(f, image, reg)?,
                 direction: reg(coordinate),
             },
             Expression::ImageSample {
@@ -68,7 +78,7 @@ impl Translator<'_> {
                 array_index: None,
                 ..
             } => Op::Sample {
-                texture: self.texture_slot(f, image)?,
+                texture: self.texture_register(f, image, reg)?,
                 coordinate: reg(coordinate),
                 level: match level {
                     naga::SampleLevel::Auto => Level::Auto,
@@ -89,7 +99,7 @@ impl Translator<'_> {
                 array_index: None,
                 sample: None,
             } => Op::Fetch {
-                texture: self.texture_slot(f, image)?,
+                texture: self.texture_register(f, image, reg)?,
                 coordinate: reg(coordinate),
                 level: level.map(|l| reg(l).at),
             },
@@ -97,7 +107,7 @@ impl Translator<'_> {
                 image,
                 query: naga::ImageQuery::Size { level },
             } => Op::Size {
-                texture: self.texture_slot(f, image)?,
+                texture: self.texture_register(f, image, reg)?,
                 level: level.map(|l| reg(l).at),
             },
             ref other => {
