@@ -206,9 +206,9 @@ impl Projection {
         }
     }
 
-    /// What is wrong with these parameters, if anything (each as a sentence).
+    /// What is wrong with these parameters, if anything.
     #[must_use]
-    pub fn problems(&self) -> Vec<String> {
+    pub fn problems(&self) -> Vec<ProjectionProblem> {
         let mut out = Vec::new();
         let [l, r, b, t, near, far] = self.bounds(1.0);
         if let Self::Perspective {
@@ -216,41 +216,74 @@ impl Projection {
         } = *self
         {
             if !(fovy_deg > 0.0 && fovy_deg < 180.0) {
-                out.push(format!(
-                    "fovy must be between 0° and 180° (exclusive), got {fovy_deg}"
-                ));
+                out.push(ProjectionProblem::Fovy(fovy_deg));
             }
             if let Some(a) = aspect
                 && !(a > 0.0 && a.is_finite())
             {
-                out.push(format!("aspect must be a positive number, got {a}"));
+                out.push(ProjectionProblem::Aspect(a));
             }
         } else {
             if !(l < r) {
-                out.push(format!(
-                    "left must be less than right, got left = {l}, right = {r}"
-                ));
+                out.push(ProjectionProblem::LeftRight { left: l, right: r });
             }
             if !(b < t) {
-                out.push(format!(
-                    "bottom must be less than top, got bottom = {b}, top = {t}"
-                ));
+                out.push(ProjectionProblem::BottomTop { bottom: b, top: t });
             }
         }
         if self.is_perspective() && !(near > 0.0) {
-            out.push(format!(
-                "near must be positive for a perspective projection (it is a distance in front of \
-                 the eye), got {near}"
-            ));
+            out.push(ProjectionProblem::Near(near));
         }
         if !(far > near) {
-            out.push(format!(
-                "far must be greater than near, got near = {near}, far = {far}"
-            ));
+            out.push(ProjectionProblem::FarNear { near, far });
         }
         if [l, r, b, t, near, far].iter().any(|v| !v.is_finite()) {
-            out.push("every projection parameter must be a finite number".to_owned());
+            out.push(ProjectionProblem::NotFinite);
         }
         out
     }
+}
+
+/// What is wrong with a projection's parameters, as data for the interface to say in its
+/// language; its English sentence is its `Display`.
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+pub enum ProjectionProblem {
+    /// `fovy` outside (0°, 180°).
+    #[error("fovy must be between 0° and 180° (exclusive), got {0}")]
+    Fovy(f32),
+    /// An `aspect` that is not a positive number.
+    #[error("aspect must be a positive number, got {0}")]
+    Aspect(f32),
+    /// `left ≥ right` (a frustum or ortho box).
+    #[error("left must be less than right, got left = {left}, right = {right}")]
+    LeftRight {
+        /// `left`.
+        left: f32,
+        /// `right`.
+        right: f32,
+    },
+    /// `bottom ≥ top`.
+    #[error("bottom must be less than top, got bottom = {bottom}, top = {top}")]
+    BottomTop {
+        /// `bottom`.
+        bottom: f32,
+        /// `top`.
+        top: f32,
+    },
+    /// A perspective projection's `near ≤ 0`.
+    #[error(
+        "near must be positive for a perspective projection (it is a distance in front of the eye), got {0}"
+    )]
+    Near(f32),
+    /// `far ≤ near`.
+    #[error("far must be greater than near, got near = {near}, far = {far}")]
+    FarNear {
+        /// `near`.
+        near: f32,
+        /// `far`.
+        far: f32,
+    },
+    /// A parameter that is NaN or infinite.
+    #[error("every projection parameter must be a finite number")]
+    NotFinite,
 }

@@ -485,27 +485,58 @@ impl Scene {
         .with_factors(gt.factors))
     }
 
-    /// Every problem with the scene and settings, as sentences; empty when it can be drawn.
+    /// Every problem with the scene and settings; empty when it can be drawn.
     #[must_use]
-    pub fn problems(&self, settings: &RenderSettings) -> Vec<String> {
-        let mut out = settings.problems();
-        out.extend(self.projection.problems());
+    pub fn problems(&self, settings: &RenderSettings) -> Vec<SceneProblem> {
+        let mut out: Vec<SceneProblem> = (settings.problems().into_iter())
+            .map(SceneProblem::Settings)
+            .collect();
+        out.extend(
+            self.projection
+                .problems()
+                .into_iter()
+                .map(SceneProblem::Projection),
+        );
         let Camera { eye, at, up } = self.camera;
         if !(eye.is_finite() && at.is_finite() && up.is_finite()) {
-            out.push("the camera's eye, at and up must be finite".to_owned());
+            out.push(SceneProblem::CameraNotFinite);
         } else if let Err(e) = transform::camera_frame(eye, at, up) {
-            out.push(e.to_string());
+            out.push(SceneProblem::Camera(e));
         }
         for o in &self.objects {
             if !(o.translate.is_finite() && o.rotate_deg.is_finite() && o.scale.is_finite()) {
-                out.push(format!("object `{}`: its transform must be finite", o.name));
+                out.push(SceneProblem::ObjectTransform(o.name.clone()));
             }
             if let ColorSource::Uniform(c) = o.color
                 && !c.is_finite()
             {
-                out.push(format!("object `{}`: its colour must be finite", o.name));
+                out.push(SceneProblem::ObjectColour(o.name.clone()));
             }
         }
         out
     }
+}
+
+/// What keeps a scene from being drawn, as data for the interface to say in its language; its
+/// English sentence is its `Display`.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum SceneProblem {
+    /// A problem with the render settings.
+    #[error(transparent)]
+    Settings(#[from] crate::settings::SettingsProblem),
+    /// A problem with the projection's parameters.
+    #[error(transparent)]
+    Projection(#[from] crate::camera::ProjectionProblem),
+    /// The camera's eye, at or up is NaN or infinite.
+    #[error("the camera's eye, at and up must be finite")]
+    CameraNotFinite,
+    /// The camera's frame is undefined (eye = at, or up along the view direction).
+    #[error(transparent)]
+    Camera(#[from] TransformError),
+    /// An object's translation, rotation or scale is NaN or infinite.
+    #[error("object `{0}`: its transform must be finite")]
+    ObjectTransform(String),
+    /// An object's colour is NaN or infinite.
+    #[error("object `{0}`: its colour must be finite")]
+    ObjectColour(String),
 }

@@ -108,36 +108,64 @@ impl RenderSettings {
 
     /// Why a capture at these settings would take too much memory, if it would.
     #[must_use]
-    pub fn capture_problem(&self) -> Option<String> {
+    pub fn capture_problem(&self) -> Option<SettingsProblem> {
         let bytes = self.capture_bytes();
-        (bytes > MAX_CAPTURE_BYTES).then(|| {
-            format!(
-                "{}×{} pixels × {} samples needs about {} MB for a capture, more than the {} MB \
-                 allowed; lower the size or the sample count",
-                self.width,
-                self.height,
-                self.samples.count(),
-                bytes >> 20,
-                MAX_CAPTURE_BYTES >> 20
-            )
+        (bytes > MAX_CAPTURE_BYTES).then_some(SettingsProblem::CaptureTooLarge {
+            width: self.width,
+            height: self.height,
+            samples: self.samples.count() as u32,
+            megabytes: bytes >> 20,
         })
     }
 
     /// What is wrong with these settings, if anything.
     #[must_use]
-    pub fn problems(&self) -> Vec<String> {
+    pub fn problems(&self) -> Vec<SettingsProblem> {
         let mut out = Vec::new();
-        for (name, v) in [("width", self.width), ("height", self.height)] {
+        for (height, v) in [(false, self.width), (true, self.height)] {
             if v == 0 || v > MAX_VIEWPORT_SIDE {
-                out.push(format!(
-                    "the viewport {name} must be between 1 and {MAX_VIEWPORT_SIDE} pixels, got {v}"
-                ));
+                out.push(SettingsProblem::ViewportSide { height, got: v });
             }
         }
         out.extend(self.capture_problem());
         if !self.background.is_finite() {
-            out.push("the background colour must be finite".to_owned());
+            out.push(SettingsProblem::Background);
         }
         out
     }
+}
+
+/// What is wrong with the render settings, as data for the interface to say in its language;
+/// its English sentence is its `Display`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum SettingsProblem {
+    /// The viewport's width (or height) is 0 or past [`MAX_VIEWPORT_SIDE`].
+    #[error(
+        "the viewport {} must be between 1 and {MAX_VIEWPORT_SIDE} pixels, got {got}",
+        if *height { "height" } else { "width" }
+    )]
+    ViewportSide {
+        /// The height (`false`: the width).
+        height: bool,
+        /// The size asked for.
+        got: u32,
+    },
+    /// A capture past [`MAX_CAPTURE_BYTES`].
+    #[error(
+        "{width}×{height} pixels × {samples} samples needs about {megabytes} MB for a capture, more than the {} MB allowed; lower the size or the sample count",
+        MAX_CAPTURE_BYTES >> 20
+    )]
+    CaptureTooLarge {
+        /// Viewport width.
+        width: u32,
+        /// Viewport height.
+        height: u32,
+        /// Samples per pixel.
+        samples: u32,
+        /// The capture's size in MiB.
+        megabytes: u64,
+    },
+    /// A background colour that is NaN or infinite.
+    #[error("the background colour must be finite")]
+    Background,
 }

@@ -39,7 +39,7 @@ pub(super) fn render(c: &mut Checker<'_>, r: &Spanned<RawRender>) -> RenderSetti
         }
     }
     if let Some(p) = s.capture_problem() {
-        c.error(r.span(), p);
+        c.error(r.span(), p.to_string());
     }
     render_modes(c, raw, &mut s);
     sampler(c, raw, &mut s);
@@ -191,16 +191,20 @@ pub(super) fn projection(c: &mut Checker<'_>, p: &Spanned<RawProjection>) -> Pro
 fn report_ranges(c: &mut Checker<'_>, p: &Spanned<RawProjection>, projection: &Projection) {
     let raw = p.get_ref();
     for problem in projection.problems() {
-        let value = match problem.split_whitespace().next().unwrap_or("") {
-            "fovy" => &raw.fovy,
-            "aspect" => &raw.aspect,
-            "near" => &raw.near,
-            "far" => &raw.far,
-            "left" => &raw.left,
-            "bottom" => &raw.bottom,
-            _ => &None,
+        use pipeline::camera::ProjectionProblem as P;
+        let value = match problem {
+            P::Fovy(_) => &raw.fovy,
+            P::Aspect(_) => &raw.aspect,
+            P::Near(_) => &raw.near,
+            P::FarNear { .. } => &raw.far,
+            P::LeftRight { .. } => &raw.left,
+            P::BottomTop { .. } => &raw.bottom,
+            P::NotFinite => &None,
         };
-        c.error(value.as_ref().map_or(p.span(), Spanned::span), problem);
+        c.error(
+            value.as_ref().map_or(p.span(), Spanned::span),
+            problem.to_string(),
+        );
     }
 }
 

@@ -365,12 +365,12 @@ const WHOLE_CURVE: Vec3 = Vec3::new(0.55, 0.32, 0.3);
 /// interpolated point (one level) or beside `b(t)` (all three).
 #[must_use]
 pub fn construction_mesh(points: [Vec2; 4], t: f32, levels: u8) -> Mesh {
-    let own = |ts: &[f32]| -> Result<Vec<Vec2>, String> {
+    let own = |ts: &[f32]| -> Result<Vec<Vec2>, std::convert::Infallible> {
         Ok(ts.iter().map(|&t| bezier::point(&points, t)).collect())
     };
     match construction_mesh_from(points, t, levels, &own) {
         Ok(m) => m,
-        Err(e) => unreachable!("pipelens' own curve points cannot fail: {e}"),
+        Err(never) => match never {},
     }
 }
 
@@ -383,20 +383,20 @@ pub fn curve_parameters(upto: f32) -> Vec<f32> {
 }
 
 /// Where a construction takes its curve's points: the points at the given parameters, or why
-/// there are none.
-pub type CurvePoints<'a> = dyn Fn(&[f32]) -> Result<Vec<Vec2>, String> + 'a;
+/// there are none (`E`: a run-time error of the student's function, say).
+pub type CurvePoints<'a, E> = dyn Fn(&[f32]) -> Result<Vec<Vec2>, E> + 'a;
 
 /// [`construction_mesh`] with the curve's points from `curve` (the points at the given `t`s):
 /// the student's de Casteljau, say.
 ///
 /// # Errors
 /// What `curve` returned.
-pub fn construction_mesh_from(
+pub fn construction_mesh_from<E>(
     points: [Vec2; 4],
     t: f32,
     levels: u8,
-    curve: &CurvePoints<'_>,
-) -> Result<Mesh, String> {
+    curve: &CurvePoints<'_, E>,
+) -> Result<Mesh, E> {
     let t = t.clamp(0.0, 1.0);
     let drawn = usize::from(levels.min(3));
     let mut m = Mesh {

@@ -34,8 +34,8 @@ pub fn patch_parameters() -> Vec<Vec2> {
 }
 
 /// Where a patch's drawing takes its surface points: the points of the patch with control
-/// points `rows` at the given `(u, v)`s, or why there are none.
-pub type PatchPoints<'a> = dyn Fn(&[[Vec3; 4]; 4], &[Vec2]) -> Result<Vec<Vec3>, String> + 'a;
+/// points `rows` at the given `(u, v)`s, or why there are none (`E`).
+pub type PatchPoints<'a, E> = dyn Fn(&[[Vec3; 4]; 4], &[Vec2]) -> Result<Vec<Vec3>, E> + 'a;
 
 /// Builds the patch: the surface `b(u, v)` on a 24×24 grid with its exact normals, the control
 /// net (white bars, a cube at each control point) and, as `levels` asks, the construction at
@@ -43,7 +43,7 @@ pub type PatchPoints<'a> = dyn Fn(&[[Vec3; 4]; 4], &[Vec2]) -> Result<Vec<Vec3>,
 /// through the `Q_i`, its control polygon (blue) and `b(u, v)` (yellow), labelled.
 #[must_use]
 pub fn patch_mesh(heights: &[[f32; 4]; 4], u: f32, v: f32, levels: u8) -> Mesh {
-    let own = |rows: &[[Vec3; 4]; 4], uvs: &[Vec2]| {
+    let own = |rows: &[[Vec3; 4]; 4], uvs: &[Vec2]| -> Result<_, std::convert::Infallible> {
         Ok(uvs
             .iter()
             .map(|uv| bezier::patch_point(rows, uv.x, uv.y).1)
@@ -51,7 +51,7 @@ pub fn patch_mesh(heights: &[[f32; 4]; 4], u: f32, v: f32, levels: u8) -> Mesh {
     };
     match patch_mesh_from(heights, u, v, levels, &own) {
         Ok(m) => m,
-        Err(never) => unreachable!("pipelens' own points: {never}"),
+        Err(never) => match never {},
     }
 }
 
@@ -60,13 +60,13 @@ pub fn patch_mesh(heights: &[[f32; 4]; 4], u: f32, v: f32, levels: u8) -> Mesh {
 ///
 /// # Errors
 /// Why `points` gave none (a run-time error of the student's function).
-pub fn patch_mesh_from(
+pub fn patch_mesh_from<E>(
     heights: &[[f32; 4]; 4],
     u: f32,
     v: f32,
     levels: u8,
-    points: &PatchPoints<'_>,
-) -> Result<Mesh, String> {
+    points: &PatchPoints<'_, E>,
+) -> Result<Mesh, E> {
     let (u, v) = (u.clamp(0.0, 1.0), v.clamp(0.0, 1.0));
     let rows = control_points(heights);
     let mut m = Mesh {

@@ -39,9 +39,20 @@ use crate::vertex::{self, VertexMatrices, VertexRecord};
 /// Why a frame cannot be rendered.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum RenderError {
-    /// The scene or the settings are invalid; each problem as a sentence.
-    #[error("the scene cannot be drawn: {}", .0.join("; "))]
-    Invalid(Vec<String>),
+    /// The scene or the settings are invalid: each problem.
+    #[error("the scene cannot be drawn: {}", .0.iter().map(ToString::to_string).collect::<Vec<_>>().join("; "))]
+    Invalid(Vec<crate::scene::SceneProblem>),
+    /// The student's `shadow_matrix(light)` returned a matrix with a NaN or infinite entry.
+    #[error(
+        "the scene cannot be drawn: shadow_matrix(vec3({}, {}, {})) returned a matrix that is not finite (a division by zero?): {matrix}",
+        light.x, light.y, light.z
+    )]
+    ShadowMatrix {
+        /// The light relative to the plane it was called with.
+        light: glam::Vec3,
+        /// What it returned.
+        matrix: glam::Mat4,
+    },
     /// The student's code stopped while it ran on an object (an endless loop, an index out of
     /// range, …): which code, the object, and the message at its line (its complaint as data,
     /// for the interface to say in its language).
@@ -521,7 +532,7 @@ fn vertex_stage(
 fn frame_matrices(scene: &Scene, settings: &RenderSettings) -> Result<Matrices, RenderError> {
     let view = scene
         .view_matrix()
-        .map_err(|e| RenderError::Invalid(vec![e.to_string()]))?;
+        .map_err(|e| RenderError::Invalid(vec![e.into()]))?;
     let aspect = settings.aspect();
     Ok(Matrices {
         models: scene.objects.iter().map(|o| o.model_matrix()).collect(),

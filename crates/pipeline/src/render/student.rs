@@ -26,29 +26,21 @@ pub(super) fn with_student_curves(
     }
     let mut drawn = scene.clone();
     for o in &mut drawn.objects {
-        // The meshes take a point function that fails with words; the run's error as data is
-        // kept aside, for the interface to say in its language.
-        let stopped = std::cell::RefCell::new(None);
-        let keep = |e: crate::shader::ShaderError| {
-            let words = e.to_string();
-            *stopped.borrow_mut() = Some(e);
-            words
-        };
-        let failed = |kind, words: String| match stopped.borrow_mut().take() {
-            Some(error) => RenderError::Code {
+        let failed = |kind| {
+            let object = o.name.clone();
+            move |error| RenderError::Code {
                 part: CodePart::Function(kind),
-                object: o.name.clone(),
+                object,
                 error: Box::new(error),
                 file: None,
-            },
-            None => RenderError::Invalid(vec![format!("{} of {}, {words}", kind.key(), o.name)]),
+            }
         };
         let within = |h: Option<crate::shader::Hook>| h.map(|h| h.within(budget));
         let mesh = match (within(o.curve.take()), within(o.patch.take()), &o.builtin) {
             (Some(hook), _, Some(BuiltinMesh::Bezier { points, t, levels })) => {
-                let curve = |ts: &[f32]| hook.curve_points(*points, ts).map_err(keep);
+                let curve = |ts: &[f32]| hook.curve_points(*points, ts);
                 crate::mesh::construction_mesh_from(*points, *t, *levels, &curve)
-                    .map_err(|w| failed(HookKind::Curve, w))?
+                    .map_err(failed(HookKind::Curve))?
             }
             (
                 _,
@@ -60,11 +52,10 @@ pub(super) fn with_student_curves(
                     levels,
                 }),
             ) => {
-                let points = |rows: &[[glam::Vec3; 4]; 4], uvs: &[glam::Vec2]| {
-                    hook.patch_points(rows, uvs).map_err(keep)
-                };
+                let points =
+                    |rows: &[[glam::Vec3; 4]; 4], uvs: &[glam::Vec2]| hook.patch_points(rows, uvs);
                 crate::mesh::patch::patch_mesh_from(heights, *u, *v, *levels, &points)
-                    .map_err(|w| failed(HookKind::Patch, w))?
+                    .map_err(failed(HookKind::Patch))?
             }
             _ => continue,
         };
@@ -103,11 +94,7 @@ pub(super) fn with_student_shadow(
             file: None,
         })?;
     if !m.is_finite() {
-        return Err(RenderError::Invalid(vec![format!(
-            "shadow_matrix(vec3({}, {}, {})) returned a matrix that is not finite (a division by \
-             zero?): {m}",
-            light.x, light.y, light.z
-        )]));
+        return Err(RenderError::ShadowMatrix { light, matrix: m });
     }
     let mut drawn = scene.clone();
     drawn.shadow = Some(crate::scene::PlanarShadow {

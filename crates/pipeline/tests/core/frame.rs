@@ -439,8 +439,19 @@ fn the_capture_size_is_bounded_by_its_memory() {
     let p = too_big
         .capture_problem()
         .expect("8K with 16 samples does not");
+    // 8192·4320 pixels × (85 + 16·8) bytes = 7 537 950 720 bytes, 7188 MiB.
+    assert_eq!(
+        p,
+        pipeline::settings::SettingsProblem::CaptureTooLarge {
+            width: 8192,
+            height: 4320,
+            samples: 16,
+            megabytes: 7188
+        }
+    );
     assert!(
-        p.contains("8192×4320 pixels × 16 samples needs about"),
+        p.to_string()
+            .starts_with("8192×4320 pixels × 16 samples needs about 7188 MB for a capture"),
         "{p}"
     );
 }

@@ -286,7 +286,10 @@ fn render(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lang: Lang) {
         );
     });
     if let Some(problem) = s.capture_problem() {
-        ui.colored_label(egui::Color32::LIGHT_RED, problem);
+        ui.colored_label(
+            egui::Color32::LIGHT_RED,
+            crate::vocabulary::run::settings_problem(&problem, lang),
+        );
     }
     ui.horizontal(|ui| {
         ui.label(lang.tr("samples per pixel", "每像素采样数"));
