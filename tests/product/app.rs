@@ -10,6 +10,7 @@ mod classroom;
 mod export;
 mod framing;
 mod library;
+mod params;
 mod phone;
 mod recording;
 mod steps;

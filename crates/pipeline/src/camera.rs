@@ -89,7 +89,108 @@ impl Default for Projection {
     }
 }
 
+/// The three kinds of projection the course names, as a lesson file spells them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ProjectionKind {
+    /// `Perspective(fovy, aspect, near, far)`.
+    Perspective,
+    /// `Frustum(l, r, b, t, near, far)`.
+    Frustum,
+    /// `Ortho(l, r, b, t, near, far)`.
+    Ortho,
+}
+
+impl ProjectionKind {
+    /// Every kind, in the order the interface lists them.
+    pub const ALL: [Self; 3] = [Self::Perspective, Self::Frustum, Self::Ortho];
+
+    /// The word a lesson file writes for it (`projection.kind = "ortho"`).
+    #[must_use]
+    pub fn key(self) -> &'static str {
+        match self {
+            Self::Perspective => "perspective",
+            Self::Frustum => "frustum",
+            Self::Ortho => "ortho",
+        }
+    }
+}
+
 impl Projection {
+    /// Its kind.
+    #[must_use]
+    pub fn kind(&self) -> ProjectionKind {
+        match self {
+            Self::Perspective { .. } => ProjectionKind::Perspective,
+            Self::Frustum { .. } => ProjectionKind::Frustum,
+            Self::Ortho { .. } => ProjectionKind::Ortho,
+        }
+    }
+
+    /// The projection of `kind` whose view volume is this one's, as near as `kind` can make it
+    /// — what switching the kind in the panel or with a lesson's `projection.kind` does.
+    ///
+    /// - The same kind: unchanged.
+    /// - Perspective ↔ frustum: the near rectangle `[l, r] × [b, t]` at `near` is kept. A
+    ///   frustum keeps it exactly; a perspective is centred, so it takes the rectangle's size:
+    ///   `fovy = 2·atan((t − b) / (2·near))`, `aspect = (r − l) / (t − b)` (left unset when it
+    ///   is the viewport's, so it goes on following the window).
+    /// - To or from ortho: the box is the frustum's cross-section at the distance `focus` of
+    ///   what the camera looks at (`|eye − at|`), so that plane keeps its size on screen: box =
+    ///   rectangle · focus / near, and back, rectangle = box · near / focus. An ortho box whose
+    ///   near face is at or behind the eye becomes a perspective with `near = focus / 10`.
+    #[must_use]
+    pub fn with_kind(&self, kind: ProjectionKind, viewport_aspect: f32, focus: f32) -> Self {
+        if kind == self.kind() {
+            return *self;
+        }
+        let [l, r, b, t, near, far] = self.bounds(viewport_aspect);
+        let focus = if focus > 0.0 && focus.is_finite() {
+            focus
+        } else {
+            near.abs().max(1.0)
+        };
+        // The near rectangle of a perspective or frustum, at `near`.
+        let (rect, near) = match self.kind() {
+            ProjectionKind::Ortho => {
+                let near = if near > 0.0 { near } else { focus / 10.0 };
+                ([l, r, b, t].map(|v| v * near / focus), near)
+            }
+            _ => ([l, r, b, t], near),
+        };
+        let [left, right, bottom, top] = rect;
+        match kind {
+            ProjectionKind::Perspective => {
+                let aspect = (right - left) / (top - bottom);
+                Self::Perspective {
+                    fovy_deg: (2.0 * ((top - bottom) / (2.0 * near)).atan()).to_degrees(),
+                    aspect: ((aspect - viewport_aspect).abs() > 1e-5 * viewport_aspect)
+                        .then_some(aspect),
+                    near,
+                    far,
+                }
+            }
+            ProjectionKind::Frustum => Self::Frustum {
+                left,
+                right,
+                bottom,
+                top,
+                near,
+                far,
+            },
+            ProjectionKind::Ortho => {
+                let [left, right, bottom, top] = rect.map(|v| v * focus / near);
+                Self::Ortho {
+                    left,
+                    right,
+                    bottom,
+                    top,
+                    near,
+                    far,
+                }
+            }
+        }
+    }
+
     /// The view volume `[l, r, b, t, near, far]` for a viewport of the given aspect ratio.
     #[must_use]
     pub fn bounds(&self, viewport_aspect: f32) -> [f32; 6] {

@@ -15,7 +15,7 @@ pub use describe::describe;
 pub use get::{differences, get};
 
 use glam::Vec3;
-use pipeline::camera::Projection;
+use pipeline::camera::{Projection, ProjectionKind};
 use pipeline::raster::Samples;
 use pipeline::settings::MAX_MAX_STEPS;
 
@@ -300,17 +300,14 @@ fn set(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Problem> {
             *slot = vec3(v)?;
         }
         ["projection", "kind"] => {
-            let kind = choice(v, &[("perspective", 0), ("frustum", 1), ("ortho", 2)])?;
-            let now = match spec.scene.projection {
-                Projection::Perspective { .. } => 0,
-                Projection::Frustum { .. } => 1,
-                Projection::Ortho { .. } => 2,
-            };
-            // The same kind again changes nothing (a perspective keeps its aspect unset).
-            if kind != now {
-                spec.scene.projection =
-                    projection_kind(&spec.scene.projection, kind, spec.settings.aspect());
-            }
+            let kinds = ProjectionKind::ALL.map(|k| (k.key(), k));
+            let kind = choice(v, &kinds)?;
+            let camera = &spec.scene.camera;
+            spec.scene.projection = spec.scene.projection.with_kind(
+                kind,
+                spec.settings.aspect(),
+                camera.eye.distance(camera.at),
+            );
         }
         ["projection", p] => projection(&mut spec.scene.projection, p, v)?,
         ["render", p] => render(spec, p, v)?,
@@ -349,38 +346,6 @@ fn set(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Problem> {
         _ => return Err(Problem::Unknown),
     }
     Ok(())
-}
-
-/// The same view volume as another kind of projection (0 perspective, 1 frustum, 2 ortho): its
-/// near rectangle `[l, r] × [b, t]` kept; a perspective is symmetric, so an off-centre frustum
-/// becomes the symmetric one of the same size, `fovy = 2·atan((t − b)/(2n))`,
-/// `aspect = (r − l)/(t − b)`.
-fn projection_kind(p: &Projection, kind: u8, viewport_aspect: f32) -> Projection {
-    let [left, right, bottom, top, near, far] = p.bounds(viewport_aspect);
-    match kind {
-        0 => Projection::Perspective {
-            fovy_deg: (2.0 * ((top - bottom) / (2.0 * near)).atan()).to_degrees(),
-            aspect: Some((right - left) / (top - bottom)),
-            near,
-            far,
-        },
-        1 => Projection::Frustum {
-            left,
-            right,
-            bottom,
-            top,
-            near,
-            far,
-        },
-        _ => Projection::Ortho {
-            left,
-            right,
-            bottom,
-            top,
-            near,
-            far,
-        },
-    }
 }
 
 fn projection(p: &mut Projection, key: &str, v: &Value) -> Result<(), Problem> {

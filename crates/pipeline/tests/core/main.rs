@@ -4,6 +4,7 @@
 mod beyond;
 mod bezier;
 mod builtin_list;
+mod camera;
 mod capture;
 mod clip;
 mod colour_buffer;

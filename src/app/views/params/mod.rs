@@ -4,7 +4,7 @@
 
 use egui::{DragValue, RichText, Slider, Ui};
 use glam::Vec3;
-use pipeline::camera::Projection;
+use pipeline::camera::{Projection, ProjectionKind};
 use pipeline::raster::{CullMode, DepthTest, Samples};
 use pipeline::settings::MAX_VIEWPORT_SIDE;
 use pipeline::shade::{Frequency, Reflection};
@@ -52,6 +52,8 @@ pub fn ui(ui: &mut Ui, session: &Session) -> Option<Command> {
             vec3_edit(ui, lang.tr("up", "上方向"), &mut c.up, 0.02, tip);
         });
         egui::CollapsingHeader::new(RichText::new(lang.tr("Projection", "投影")).strong()).default_open(true).show(ui, |ui| {
+            let (aspect, focus) = (spec.settings.aspect(), spec.scene.camera.eye.distance(spec.scene.camera.at));
+            projection_kind(ui, &mut spec.scene.projection, aspect, focus, lang);
             projection(ui, &mut spec.scene.projection, lang);
         });
         egui::CollapsingHeader::new(RichText::new(lang.tr("Rasterizer settings", "光栅化设置")).strong()).default_open(true).show(ui, |ui| {
@@ -139,57 +141,30 @@ fn axis_angle(ui: &mut Ui, label: &str, axis: &mut Vec3, degrees: &mut f32, tip:
     });
 }
 
-/// The projection's kind; switching keeps the view volume's near rectangle and depth range.
-fn projection_kind(ui: &mut Ui, p: &mut Projection, lang: Lang) {
-    let kind = match p {
-        Projection::Perspective { .. } => 0,
-        Projection::Frustum { .. } => 1,
-        Projection::Ortho { .. } => 2,
+/// The projection's kind; switching keeps the view volume as near as the new kind can
+/// ([`Projection::with_kind`], as a lesson's `projection.kind` does): a viewport of `aspect`,
+/// the camera `focus` from what it looks at.
+fn projection_kind(ui: &mut Ui, p: &mut Projection, aspect: f32, focus: f32, lang: Lang) {
+    let name = |k: ProjectionKind| match k {
+        ProjectionKind::Perspective => lang.tr("Perspective", "透视 Perspective"),
+        ProjectionKind::Frustum => lang.tr("Frustum", "视见体 Frustum"),
+        ProjectionKind::Ortho => lang.tr("Ortho", "正交 Ortho"),
     };
-    let names = [
-        lang.tr("Perspective", "透视 Perspective"),
-        lang.tr("Frustum", "视见体 Frustum"),
-        lang.tr("Ortho", "正交 Ortho"),
-    ];
+    let kind = p.kind();
     let mut choice = kind;
     egui::ComboBox::new("projection-kind", lang.tr("projection", "投影"))
-        .selected_text(names[kind])
+        .selected_text(name(kind))
         .show_ui(ui, |ui| {
-            for (i, n) in names.iter().enumerate() {
-                ui.selectable_value(&mut choice, i, *n);
+            for k in ProjectionKind::ALL {
+                ui.selectable_value(&mut choice, k, name(k));
             }
         });
     if choice != kind {
-        let [l, r, b, t, near, far] = p.bounds(1.0);
-        *p = match choice {
-            0 => Projection::Perspective {
-                fovy_deg: 45.0,
-                aspect: None,
-                near,
-                far,
-            },
-            1 => Projection::Frustum {
-                left: l,
-                right: r,
-                bottom: b,
-                top: t,
-                near,
-                far,
-            },
-            _ => Projection::Ortho {
-                left: l * 4.0,
-                right: r * 4.0,
-                bottom: b * 4.0,
-                top: t * 4.0,
-                near,
-                far,
-            },
-        };
+        *p = p.with_kind(choice, aspect, focus);
     }
 }
 
 fn projection(ui: &mut Ui, p: &mut Projection, lang: Lang) {
-    projection_kind(ui, p, lang);
     match p {
         Projection::Perspective {
             fovy_deg,
