@@ -150,6 +150,23 @@ fn the_product_s_modules_form_no_cycle_and_only_the_top_uses_the_app() {
     );
 }
 
+/// The GLSL engine is a crate of its own, below the pipeline: it knows neither the pipeline nor
+/// a GUI, and its modules form no cycle.
+#[test]
+fn the_glsl_engine_stands_alone() {
+    let deps = dependencies(&repo().join("crates/glsl/src"));
+    assert!(deps.len() > 10, "the engine's modules were found: {deps:?}");
+    assert_eq!(cycle(&deps), None, "the engine's modules: {deps:#?}");
+    let manifest = std::fs::read_to_string(repo().join("crates/glsl/Cargo.toml"))
+        .expect("the engine's manifest");
+    for above in ["pipeline", "egui", "eframe", "winit", "image"] {
+        assert!(
+            !manifest.contains(&format!("\n{above}")),
+            "the engine depends on {above}"
+        );
+    }
+}
+
 #[test]
 fn the_core_knows_no_gui() {
     let manifest = std::fs::read_to_string(repo().join("crates/pipeline/Cargo.toml"))
@@ -164,6 +181,7 @@ fn a_source_file_over_600_lines_says_why_at_its_top() {
     let mut long = Vec::new();
     for dir in [
         "src",
+        "crates/glsl/src",
         "crates/pipeline/src",
         "tests",
         "crates/pipeline/tests",

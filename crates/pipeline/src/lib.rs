@@ -14,7 +14,7 @@
 //! | [`camera`], [`light`] | the camera and projection; lights and materials |
 //! | [`raster`] | edge functions, top-left rule, sample patterns, the z-buffer and depth test |
 //! | [`shade`] | Phong / Blinn-Phong terms, attenuation, shading frequencies |
-//! | [`shader`] | the student's GLSL: adapted, parsed and validated by naga, run on the CPU |
+//! | [`shader`] | the student's GLSL: the engine crate `pipelens-glsl` (adapted, parsed and validated by naga, run on the CPU), with the uniforms' values, the textures bound, pipelens' shading modes and the student's pipeline functions |
 //! | [`buffers`], [`settings`] | which per-pixel buffers there are and are kept; the render settings |
 //! | [`hierarchy`], [`scene`] | articulated figures; what is drawn |
 //! | [`vertex`], [`clip`] | model → world → eye → clip → NDC → window per vertex; clipping |

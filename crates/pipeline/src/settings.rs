@@ -51,8 +51,9 @@ pub struct RenderSettings {
     pub max_steps: u32,
 }
 
-/// The loop iterations a shader invocation may run unless the lesson says otherwise.
-pub const DEFAULT_MAX_STEPS: u32 = 1 << 16;
+/// The loop iterations a shader invocation may run unless the lesson says otherwise (the GLSL
+/// engine's own default).
+pub use pipelens_glsl::DEFAULT_MAX_STEPS;
 
 /// The most `max_steps` a lesson may ask for: a run of that many iterations per pixel takes
 /// minutes, not forever.

@@ -27,7 +27,9 @@ use serde::Serialize;
 use crate::light::{Light, Material};
 
 pub mod lanes;
-pub mod power;
+/// `x^y` eight lanes at a time, the same for the specular term and the student's `pow`: the GLSL
+/// engine's, so that a shader and the built-in path agree bit for bit.
+pub use pipelens_glsl::power;
 
 /// Which specular term.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]

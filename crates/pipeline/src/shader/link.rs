@@ -225,7 +225,7 @@ pub fn link(vertex: Option<&str>, fragment: Option<&str>) -> Result<Programs, Ve
             }
             Some((o, _)) => errors.push(StageError {
                 stage: Stage::Fragment,
-                error: super::check::complain(
+                error: super::complain(
                     fs.error_at_name(
                         &input.name,
                         format!(
@@ -245,7 +245,7 @@ pub fn link(vertex: Option<&str>, fragment: Option<&str>) -> Result<Programs, Ve
                     vs.outputs.iter().filter(|o| o.builtin.is_none()).map(|o| o.name.as_str()).collect();
                 errors.push(StageError {
                     stage: Stage::Fragment,
-                    error: super::check::complain(
+                    error: super::complain(
                         fs.error_at_name(
                             &input.name,
                             format!(

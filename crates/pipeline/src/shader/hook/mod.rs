@@ -331,7 +331,7 @@ pub fn compile_hook(kind: HookKind, source: &str) -> Result<Hook, Vec<ShaderErro
             .collect();
         if mine.len() < errors.len() || mine.is_empty() {
             // What went wrong is in the caller: the function it calls is not there as written.
-            mine.push(super::check::complain(
+            mine.push(super::complain(
                 super::error_at(
                     source,
                     0..0,

@@ -8,8 +8,8 @@ use naga::{RelationalFunction, UnaryOperator};
 
 use super::super::code::{Function, Kind, Level, Op, Place, Reg, Root, Shape};
 use super::super::ops;
-use super::{Bindings, LANES, Machine, Res, RunError, bit, masked_copy};
-use crate::shader::Complaint;
+use super::{LANES, Machine, Res, RunError, Texel, Textures, bit, masked_copy};
+use crate::Complaint;
 
 impl Machine<'_> {
     pub(super) fn store(
@@ -60,7 +60,7 @@ impl Machine<'_> {
     }
 
     /// Evaluates the invariant expressions (see `invariants_ready`) over all lanes.
-    pub(super) fn prepare_invariants(&mut self, b: &Bindings<'_>) -> Res<()> {
+    pub(super) fn prepare_invariants(&mut self, b: &dyn Textures) -> Res<()> {
         let code = self.code;
         let n = std::mem::replace(&mut self.n, LANES);
         for (fi, f) in code.functions.iter().enumerate() {
@@ -79,7 +79,7 @@ impl Machine<'_> {
     }
 
     #[allow(clippy::too_many_lines)]
-    pub(super) fn eval(&mut self, fi: usize, e: usize, live: u64, b: &Bindings<'_>) -> Res<()> {
+    pub(super) fn eval(&mut self, fi: usize, e: usize, live: u64, b: &dyn Textures) -> Res<()> {
         let code = self.code;
         let f: &Function = &code.functions[fi];
         let dst = f.regs[e];
@@ -366,53 +366,51 @@ impl Machine<'_> {
                         level,
                         offset,
                     } => {
-                        let bound = b.bound(row(*texture, 0)[0]);
+                        let slot = row(*texture, 0)[0];
                         let uv = |l: usize| vec2_at(&row, coordinate.at, l);
                         for l in 0..n {
                             let shift = offset.map_or(IVec2::ZERO, |o| {
                                 IVec2::new(row(o, 0)[l] as i32, row(o, 1)[l] as i32)
                             });
-                            let color = match (bound, level) {
-                                (None, _) => Vec3::ZERO,
-                                (Some((t, sampler)), Level::Auto | Level::Bias(_)) => {
+                            let color = match level {
+                                Level::Auto | Level::Bias(_) => {
                                     let q = l & !3;
                                     let (dx, dy) = if q + 3 < n {
                                         (uv(q + 1) - uv(q), uv(q + 2) - uv(q))
                                     } else {
                                         (Vec2::ZERO, Vec2::ZERO)
                                     };
-                                    let mut s = sampler;
-                                    if let Level::Bias(r) = level {
-                                        s.lod_bias += f32::from_bits(row(*r, 0)[l]);
-                                    }
-                                    t.sample_shifted(uv(l), dx, dy, &s, shift).color
+                                    let bias = match level {
+                                        Level::Bias(r) => f32::from_bits(row(*r, 0)[l]),
+                                        _ => 0.0,
+                                    };
+                                    b.sample(slot, uv(l), dx, dy, bias, shift)
                                 }
-                                (Some((t, sampler)), Level::Gradient { x, y }) => {
+                                Level::Gradient { x, y } => {
                                     let (dx, dy) = (vec2_at(&row, *x, l), vec2_at(&row, *y, l));
-                                    t.sample_shifted(uv(l), dx, dy, &sampler, shift).color
+                                    b.sample(slot, uv(l), dx, dy, 0.0, shift)
                                 }
-                                (Some((t, sampler)), Level::Exact(r)) => {
+                                Level::Exact(r) => {
                                     let lod = f32::from_bits(row(*r, 0)[l]);
-                                    t.sample_lod(uv(l), lod, &sampler, shift).0
+                                    b.sample_lod(slot, uv(l), lod, shift)
                                 }
-                                (Some((t, sampler)), Level::Zero) => {
-                                    t.sample_lod(uv(l), 0.0, &sampler, shift).0
-                                }
-                            };
+                                Level::Zero => b.sample_lod(slot, uv(l), 0.0, shift),
+                            }
+                            .unwrap_or(Vec3::ZERO);
                             for (k, v) in color.extend(1.0).to_array().iter().enumerate() {
                                 out[k * LANES + l] = v.to_bits();
                             }
                         }
                     }
                     Op::SampleCube { texture, direction } => {
-                        let cube = b.cube(row(*texture, 0)[0]);
+                        let slot = row(*texture, 0)[0];
                         for l in 0..n {
                             let d = Vec3::new(
                                 f32::from_bits(row(direction.at, 0)[l]),
                                 f32::from_bits(row(direction.at, 1)[l]),
                                 f32::from_bits(row(direction.at, 2)[l]),
                             );
-                            let color = cube.map_or(Vec3::ZERO, |c| c.sample(d));
+                            let color = b.sample_cube(slot, d).unwrap_or(Vec3::ZERO);
                             for (k, v) in color.extend(1.0).to_array().iter().enumerate() {
                                 out[k * LANES + l] = v.to_bits();
                             }
@@ -423,28 +421,16 @@ impl Machine<'_> {
                         coordinate,
                         level,
                     } => {
-                        let t = b.bound(row(*texture, 0)[0]).map(|(t, _)| t);
+                        let slot = row(*texture, 0)[0];
                         for l in 0..n {
                             let (i, j) = (
                                 row(coordinate.at, 0)[l] as i32,
                                 row(coordinate.at, 1)[l] as i32,
                             );
                             let k = level.map_or(0, |r| row(r, 0)[l] as i32);
-                            let texel = match t
-                                .and_then(|t| usize::try_from(k).ok().and_then(|k| t.levels.get(k)))
-                            {
-                                Some(lv)
-                                    if (0..lv.width as i32).contains(&i)
-                                        && (0..lv.height as i32).contains(&j) =>
-                                {
-                                    lv.texel(
-                                        i64::from(i),
-                                        i64::from(j),
-                                        crate::texture::Wrap::Clamp,
-                                    )
-                                    .extend(1.0)
-                                }
-                                Some(_) if live & bit(l) != 0 => {
+                            let texel = match b.texel(slot, k, i, j) {
+                                Texel::At(c) => c.extend(1.0),
+                                Texel::Outside if live & bit(l) != 0 => {
                                     return Err(err(
                                         format!(
                                             "texelFetch at ({i}, {j}) level {k} is outside the texture"
@@ -461,14 +447,9 @@ impl Machine<'_> {
                     }
                     Op::Size { texture, level } => {
                         let slot = row(*texture, 0)[0];
-                        let t = b.bound(slot).map(|(t, _)| t);
-                        let face = b.cube(slot).map(|c| &c.faces[0]);
                         for l in 0..n {
                             let k = level.map_or(0, |r| row(r, 0)[l] as usize);
-                            let (w, h) = t
-                                .and_then(|t| t.levels.get(k))
-                                .or(face.filter(|_| k == 0))
-                                .map_or((0, 0), |lv| (lv.width, lv.height));
+                            let (w, h) = b.size(slot, k);
                             out[l] = w;
                             out[LANES + l] = h;
                         }

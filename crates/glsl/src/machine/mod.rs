@@ -11,8 +11,9 @@
 //! A step budget stops endless loops: each lane may run at most [`Machine::budget`] loop
 //! iterations in one invocation.
 
+use glam::{IVec2, Vec2, Vec3};
+
 use super::code::{Code, Place, Reg, Root, Stmt};
-use crate::texture::{CubeMap, Sampler, Texture};
 
 mod call;
 mod eval;
@@ -23,41 +24,64 @@ pub use events::{Event, RunError};
 /// The most invocations one batch runs (16 quads).
 pub const LANES: usize = 64;
 
-/// What a texture slot holds.
-#[derive(Clone, Copy)]
-pub enum Bound<'a> {
-    /// A 2D texture (`sampler2D`) and how it is sampled.
-    Image(&'a Texture, Sampler),
-    /// A cube map (`samplerCube`), looked up by direction: bilinear within the face the
-    /// direction falls on, one level ([`CubeMap::sample`]).
-    Cube(&'a CubeMap),
+/// The loop iterations one invocation may run before the machine calls it an endless loop,
+/// unless its host allows more ([`Machine::budget`]).
+pub const DEFAULT_MAX_STEPS: u32 = 1 << 16;
+
+/// What `texelFetch` finds at an address.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Texel {
+    /// The texel's colour.
+    At(glam::Vec3),
+    /// The address lies outside the level (or the level outside the texture): a run-time error.
+    Outside,
+    /// Nothing is bound there, or the texture has no such level: black.
+    Unbound,
 }
 
-/// The textures and sampler a run reads.
-#[derive(Clone, Copy)]
-pub struct Bindings<'a> {
-    /// What each slot holds (`None`: nothing bound, or not of the slot's kind; lookups return
-    /// black).
-    pub textures: &'a [Option<Bound<'a>>],
+/// The textures a run reads, bound by slot (the order the shader declared its samplers in) by
+/// the engine's host. A lookup in a slot with nothing of its kind bound reads black. The sampler
+/// state (filter, mipmaps, wrap, bias, anisotropy) is the host's, bound with the texture.
+pub trait Textures {
+    /// `texture(s, uv)` and its kin on the 2D texture in `slot`, the level of detail from the
+    /// footprint's derivatives `dx`, `dy` (in uv a pixel) and the extra `bias`, each level's
+    /// read moved by `offset` texels of that level.
+    fn sample(
+        &self,
+        slot: u32,
+        uv: Vec2,
+        dx: Vec2,
+        dy: Vec2,
+        bias: f32,
+        offset: IVec2,
+    ) -> Option<Vec3>;
+    /// `textureLod(s, uv, lod)`: the level of detail given.
+    fn sample_lod(&self, slot: u32, uv: Vec2, lod: f32, offset: IVec2) -> Option<Vec3>;
+    /// `texture(s, r)` of the cube map in `slot`, by direction.
+    fn sample_cube(&self, slot: u32, direction: Vec3) -> Option<Vec3>;
+    /// `texelFetch(s, ij, level)`: the texel at the integer address.
+    fn texel(&self, slot: u32, level: i32, i: i32, j: i32) -> Texel;
+    /// `textureSize(s, level)`: the level's width and height, (0, 0) past the last level or
+    /// with nothing bound (a cube map has one level, its face's).
+    fn size(&self, slot: u32, level: usize) -> (u32, u32);
 }
 
-impl<'a> Bindings<'a> {
-    /// The 2D texture in slot `slot` and its sampler, if one is bound.
-    #[must_use]
-    pub fn bound(&self, slot: u32) -> Option<(&'a Texture, Sampler)> {
-        match self.textures.get(slot as usize).copied().flatten()? {
-            Bound::Image(t, s) => Some((t, s)),
-            Bound::Cube(_) => None,
-        }
+/// No textures: every lookup reads black (a program that declares none).
+impl Textures for () {
+    fn sample(&self, _: u32, _: Vec2, _: Vec2, _: Vec2, _: f32, _: IVec2) -> Option<Vec3> {
+        None
     }
-
-    /// The cube map in slot `slot`, if one is bound.
-    #[must_use]
-    pub fn cube(&self, slot: u32) -> Option<&'a CubeMap> {
-        match self.textures.get(slot as usize).copied().flatten()? {
-            Bound::Cube(c) => Some(c),
-            Bound::Image(..) => None,
-        }
+    fn sample_lod(&self, _: u32, _: Vec2, _: f32, _: IVec2) -> Option<Vec3> {
+        None
+    }
+    fn sample_cube(&self, _: u32, _: Vec3) -> Option<Vec3> {
+        None
+    }
+    fn texel(&self, _: u32, _: i32, _: i32, _: i32) -> Texel {
+        Texel::Unbound
+    }
+    fn size(&self, _: u32, _: usize) -> (u32, u32) {
+        (0, 0)
     }
 }
 
@@ -116,7 +140,7 @@ impl<'c> Machine<'c> {
             uniforms: vec![0; code.uniform_width as usize],
             n: 0,
             steps: [0; LANES],
-            budget: crate::settings::DEFAULT_MAX_STEPS,
+            budget: DEFAULT_MAX_STEPS,
             killed: 0,
             trace: None,
             invariants_ready: false,
@@ -155,7 +179,7 @@ impl<'c> Machine<'c> {
         inputs: &[&[u32]],
         n: usize,
         live: u64,
-        bindings: &Bindings<'_>,
+        bindings: &dyn Textures,
     ) -> Res<u64> {
         self.n = n.min(LANES);
         self.steps = [0; LANES];
@@ -192,7 +216,7 @@ impl<'c> Machine<'c> {
         &self.returns[self.code.functions.len() - 1]
     }
 
-    fn call(&mut self, fi: usize, mask: u64, live: u64, b: &Bindings<'_>) -> Res<()> {
+    fn call(&mut self, fi: usize, mask: u64, live: u64, b: &dyn Textures) -> Res<()> {
         let code = self.code;
         let f = &code.functions[fi];
         // The constants (`pre`) were evaluated once, by `prepare_invariants`.
@@ -244,7 +268,7 @@ impl<'c> Machine<'c> {
         mut mask: u64,
         live: u64,
         flow: &mut Flow,
-        b: &Bindings<'_>,
+        b: &dyn Textures,
     ) -> Res<u64> {
         let code = self.code;
         let f = &code.functions[fi];
@@ -362,7 +386,7 @@ impl<'c> Machine<'c> {
                                             "the loop ran more than {} steps (an endless loop? If it is meant to run longer, raise the limit with `max_steps` under [scene.render])",
                                             self.budget
                                         ),
-                                        complaint: crate::shader::Complaint::EndlessLoop {
+                                        complaint: crate::Complaint::EndlessLoop {
                                             budget: self.budget,
                                         },
                                     });
@@ -524,7 +548,7 @@ impl<'c> Machine<'c> {
                     place.name,
                     count - 1
                 ),
-                complaint: crate::shader::Complaint::IndexOutOfRange {
+                complaint: crate::Complaint::IndexOutOfRange {
                     index: i,
                     last: count - 1,
                     name: Some(place.name.clone()),

@@ -349,7 +349,8 @@ pub(super) fn sampler_parameters(source: &str) -> Result<(), Vec<ShaderError>> {
 }
 
 /// `error` with the mistake `complaint` as data.
-pub(super) fn complain(mut error: ShaderError, complaint: Complaint) -> ShaderError {
+#[must_use]
+pub fn complain(mut error: ShaderError, complaint: Complaint) -> ShaderError {
     error.complaint = complaint;
     error
 }

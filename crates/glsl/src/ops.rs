@@ -6,7 +6,7 @@ use glam::{Mat2, Mat3, Mat4};
 use naga::{BinaryOperator as B, DerivativeAxis, MathFunction as M};
 
 use super::code::{Kind, Reg};
-use crate::shade::power;
+use crate::power;
 
 fn f(x: u32) -> f32 {
     f32::from_bits(x)
