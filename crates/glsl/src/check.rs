@@ -4,7 +4,11 @@
 
 use std::ops::Range;
 
-use super::{Complaint, ShaderError, Stage, code, dialect, error_at, interface, trace::glsl_type};
+use crate::complaint::Complaint;
+use crate::error::{ShaderError, error_at};
+use crate::program::Stage;
+use crate::trace::glsl_type;
+use crate::{code, dialect, interface};
 
 /// naga's words for a student: handles such as `[7]` and `naga::ir::` paths left out.
 pub(super) fn plain(message: &str) -> String {

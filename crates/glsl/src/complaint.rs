@@ -3,7 +3,7 @@
 //! token after it. A [`Complaint`] names the mistake (a `;` missing at the end of line 20, a
 //! name not declared, two types an operator cannot combine) so that the interface can say it as
 //! a sentence in its own language (`vocabulary::compile` in the app); the English `message` of
-//! [`super::ShaderError`] stays beside it for whatever no complaint covers.
+//! [`crate::ShaderError`] stays beside it for whatever no complaint covers.
 
 use std::ops::Range;
 

@@ -123,8 +123,8 @@ pub fn binary(
 /// The terms are added in order, `((0 + a_0·b_0) + a_1·b_1) + …`, a term over all lanes at a
 /// time (rows cut to the lanes, so the loop runs over plain arrays).
 pub fn dot_rows(terms: &[(&[u32], &[u32])], out: &mut [u32]) {
-    let n = out.len().min(super::LANES);
-    let mut sum = [0f32; super::LANES];
+    let n = out.len().min(crate::machine::LANES);
+    let mut sum = [0f32; crate::machine::LANES];
     for (a, b) in terms {
         let (a, b) = (&a[..n], &b[..n]);
         for ((s, &x), &y) in sum[..n].iter_mut().zip(a).zip(b) {

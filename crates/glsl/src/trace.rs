@@ -4,7 +4,10 @@
 
 use naga::TypeInner;
 
-use super::{Event, Program, code, line_column};
+use crate::code;
+use crate::error::line_column;
+use crate::machine::Event;
+use crate::program::Program;
 
 /// One line of a trace: where, what happened, and the same in words with the values.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]

@@ -25,7 +25,7 @@ use std::ops::Range;
 
 mod preamble;
 
-use super::Stage;
+use crate::program::Stage;
 use preamble::Preamble;
 
 /// The student's source adapted for naga, with the map back to the student's text.

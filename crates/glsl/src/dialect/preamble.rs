@@ -5,8 +5,8 @@
 
 use std::ops::Range;
 
-use super::super::Stage;
 use super::{Declaration, LIGHT_DECLARATIONS, SAMPLER_PREFIX, Storage, TEXTURE_PREFIX, Token};
+use crate::program::Stage;
 
 /// The preamble as it is built, with what each of its pieces stands for.
 pub(super) struct Preamble {

@@ -9,7 +9,7 @@ use naga::{RelationalFunction, UnaryOperator};
 use super::super::code::{Function, Kind, Level, Op, Place, Reg, Root, Shape};
 use super::super::ops;
 use super::{LANES, Machine, Res, RunError, Texel, Textures, bit, masked_copy};
-use crate::Complaint;
+use crate::complaint::Complaint;
 
 impl Machine<'_> {
     pub(super) fn store(

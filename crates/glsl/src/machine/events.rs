@@ -9,7 +9,7 @@ pub struct RunError {
     /// What happened, as a sentence (English).
     pub message: String,
     /// What happened, as data, for the interface to say in its language.
-    pub complaint: crate::Complaint,
+    pub complaint: crate::complaint::Complaint,
 }
 
 /// What the traced lane did at one statement. `at` is always the statement's place in the

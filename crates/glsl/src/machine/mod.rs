@@ -386,7 +386,7 @@ impl<'c> Machine<'c> {
                                             "the loop ran more than {} steps (an endless loop? If it is meant to run longer, raise the limit with `max_steps` under [scene.render])",
                                             self.budget
                                         ),
-                                        complaint: crate::Complaint::EndlessLoop {
+                                        complaint: crate::complaint::Complaint::EndlessLoop {
                                             budget: self.budget,
                                         },
                                     });
@@ -548,7 +548,7 @@ impl<'c> Machine<'c> {
                     place.name,
                     count - 1
                 ),
-                complaint: crate::Complaint::IndexOutOfRange {
+                complaint: crate::complaint::Complaint::IndexOutOfRange {
                     index: i,
                     last: count - 1,
                     name: Some(place.name.clone()),
