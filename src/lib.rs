@@ -10,7 +10,7 @@
 //!   words, for the app and `pipelens grade`;
 //! - [`app`]: the desktop app;
 //! - [`cli`]: the command line, which opens the app or exports, checks and benchmarks
-//!   ([`bench`]).
+//!   ([`bench`](mod@bench)).
 
 pub mod app;
 #[cfg(not(target_arch = "wasm32"))]

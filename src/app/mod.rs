@@ -465,7 +465,7 @@ impl eframe::App for PipelensApp {
     }
 
     /// Keeps the student's progress (eframe calls this on closing and every
-    /// [`Self::auto_save_interval`]).
+    /// [`eframe::App::auto_save_interval`]).
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         self.session.progress.save(storage);
         self.saved_progress.clone_from(&self.session.progress);

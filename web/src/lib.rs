@@ -3,7 +3,7 @@
 //! memory, a rayon pool on Web Workers through `wasm-bindgen-rayon`) — and writes `dist/` (the
 //! page, both builds and their JavaScript glue, the service worker). The page picks the threaded
 //! build where it is cross-origin isolated, starts its pool (`initThreadPool`), then calls
-//! [`start`]. If that fails, the page says why instead of staying blank. On the desktop the
+//! `start` (wasm32 only). If that fails, the page says why instead of staying blank. On the desktop the
 //! crate is empty: the app is the `pipelens` binary.
 
 /// The rayon pool on Web Workers: the page awaits `initThreadPool(n)` before `start`.

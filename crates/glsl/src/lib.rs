@@ -4,9 +4,9 @@
 //!
 //! A shader is GLSL as an OpenGL course writes it (`#version 330 core`, plain `uniform`s,
 //! `uniform sampler2D tex;`, `in`/`out` without locations; GLSL 1.x's `attribute`, `varying`
-//! and `gl_FragColor` too). [`compile`] adapts it to the GLSL naga reads ([`dialect`]), has naga
+//! and `gl_FragColor` too). [`compile()`] adapts it to the GLSL naga reads ([`dialect`]), has naga
 //! parse and validate it, checks it against what pipelens provides ([`interface`]), and
-//! translates naga's IR once into a register form ([`code`]). A [`Program`] then runs on the
+//! translates naga's IR once into a register form (the `code` module). A [`Program`] then runs on the
 //! CPU over batches of invocations ([`Machine`]), reading the textures its host binds
 //! ([`Textures`]), and can record what one invocation did, statement by statement ([`Trace`]).
 //!

@@ -2,7 +2,7 @@
 //! what every stage does, so that it can be shown, exported and tested.
 //!
 //! Data flows one way: a [`Scene`](scene::Scene) and [`RenderSettings`](settings::RenderSettings)
-//! go into [`render`], which returns a [`FrameCapture`](capture::FrameCapture). The modules are
+//! go into [`render()`], which returns a [`FrameCapture`](capture::FrameCapture). The modules are
 //! listed in the order data flows through them; each uses only those above it:
 //!
 //! | module | stage |
@@ -20,7 +20,7 @@
 //! | [`vertex`], [`clip`] | model → world → eye → clip → NDC → window per vertex; clipping |
 //! | [`overlay`] | 2-D shapes over the images |
 //! | [`capture`] | the record of a frame and its images |
-//! | `render` | the stages in order ([`render`]) |
+//! | `render` | the stages in order ([`render()`]) |
 
 pub mod bezier;
 pub mod buffers;

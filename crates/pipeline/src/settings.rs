@@ -99,7 +99,7 @@ impl RenderSettings {
 
     /// The memory the per-pixel and per-sample buffers of a capture at these settings take, at
     /// most: `W·H·B + W·H·S·8` bytes with `B` the selection's bytes a pixel (85 for a full
-    /// capture, see [`CAPTURE_BYTES_PER_PIXEL`]).
+    /// capture, see [`CAPTURE_BYTES_PER_PIXEL`](crate::buffers::CAPTURE_BYTES_PER_PIXEL)).
     #[must_use]
     pub fn capture_bytes(&self) -> u64 {
         let pixels = u64::from(self.width) * u64::from(self.height);

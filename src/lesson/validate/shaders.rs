@@ -1,6 +1,6 @@
 //! `shader = { vertex = "x.vert", fragment = "x.frag", inside = "inside.glsl" }` for the scene
 //! or an object: each stage (and the rasterizer's inside test) a GLSL file beside the lesson, or
-//! the GLSL itself written in the lesson; linked by [`pipeline::shader::link`] (the inside test
+//! the GLSL itself written in the lesson; linked by [`pipeline::shader::link()`] (the inside test
 //! compiled by [`pipeline::shader::compile_inside`]), every message at its line and column in the
 //! file it is in.
 

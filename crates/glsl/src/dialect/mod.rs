@@ -9,7 +9,7 @@
 //! - `#version …` becomes blanks; the adapted source starts with `#version 450 core` and a
 //!   *preamble* (pipelens' `Light` type and constants, then what the student declared).
 //! - `uniform T name;` keeps its place with `uniform` (and any `layout(…)`) blanked: a plain
-//!   global that [`super::run`] fills from the scene before each run, by name.
+//!   global that the host fills before each run, by name ([`crate::Program::set_uniforms`]).
 //! - `uniform sampler2D name;` (or `samplerCube`) is blanked and declared in the preamble as a
 //!   texture and a sampler, with `#define name sampler2D(texture, sampler)` so that
 //!   `texture(name, uv)` reads.
@@ -34,7 +34,7 @@ pub struct Adapted {
     /// What naga reads: the preamble, then the student's text with declarations blanked.
     pub text: String,
     /// Length in bytes of the preamble: student byte `b` is at `preamble_len + b`, but for the
-    /// forms rewritten for naga ([`super::lowering`]).
+    /// forms rewritten for naga (the `lowering` module).
     pub preamble_len: usize,
     /// The rewrites of the student's text after the preamble, pass by pass in the order they
     /// were made (each pass's edits in the text the pass before it wrote).

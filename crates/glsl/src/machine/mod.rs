@@ -147,7 +147,7 @@ impl<'c> Machine<'c> {
         }
     }
 
-    /// Sets the uniform at `reg` (see [`Code::globals`]).
+    /// Sets the uniform at `reg` (where the program keeps it: `Program::uniforms`).
     pub fn set_uniform(&mut self, reg: Reg, bits: &[u32]) {
         let r = reg.at as usize..(reg.at + reg.n) as usize;
         self.uniforms[r].copy_from_slice(&bits[..reg.n as usize]);

@@ -9,7 +9,7 @@ use serde::Serialize;
 
 /// Per-pixel buffers, top image row first (`index = row·width + column`).
 ///
-/// Where `coverage` is 0 (the background) `primitive` and `owner` are [`NONE`], the lighting
+/// Where `coverage` is 0 (the background) `primitive` and `owner` are [`NONE`](crate::raster::NONE), the lighting
 /// buffers hold zeros and the texturing buffers no lookup ([`NO_LOOKUP`]), and the colour and
 /// depth are the background's ([`Self::background`]). The resolve relies on it when it renders
 /// into the storage of the frame before: a background pixel's primitive, owner and terms are
@@ -23,11 +23,12 @@ pub struct PixelBuffers {
     /// clear depth); with one sample, the depth at the pixel centre.
     pub depth: Vec<f32>,
     /// The primitive that owns most of the pixel's samples (ties: the earliest sample), or
-    /// [`NONE`].
+    /// [`NONE`](crate::raster::NONE).
     pub primitive: Vec<u32>,
     /// The raster triangle of that primitive seen at the pixel (an index into
-    /// [`FrameCapture::triangles`]), or [`NONE`]. The barycentric weights at the pixel centre
-    /// are a function of it ([`FrameCapture::barycentrics`]), so they are derived, not stored.
+    /// [`FrameCapture::triangles`](super::FrameCapture::triangles)), or [`NONE`](crate::raster::NONE).
+    /// The barycentric weights at the pixel centre are a function of it
+    /// ([`FrameCapture::barycentrics`](super::FrameCapture::barycentrics)), so they are derived, not stored.
     pub owner: Vec<u32>,
     /// The resolved colour: each sample takes the colour of its triangle evaluated once at the
     /// pixel centre (multisampling shades once per pixel), uncovered samples the background;

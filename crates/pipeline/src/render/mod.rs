@@ -5,7 +5,7 @@
 //!
 //! The order and the vertex stage's call are here; primitive assembly, clipping, division,
 //! viewport, setup and flat shading's face lighting in [`assembly`]; the resolve of samples to
-//! pixels (colour, lighting terms, texture lookups) in [`resolve`].
+//! pixels (colour, lighting terms, texture lookups) in [`resolve`](mod@resolve).
 
 mod assembly;
 mod coarse;

@@ -1,7 +1,7 @@
 //! Shaders the student writes, in the pipeline: the GLSL engine ([`pipelens_glsl`], re-exported
 //! here whole) and what the pipeline adds to it — the uniforms' values for one object
 //! ([`Uniforms`]), the textures bound per slot ([`Bindings`]), pipelens' own shading modes
-//! shipped as GLSL and a vertex and a fragment shader linked by their varyings ([`link`]), and
+//! shipped as GLSL and a vertex and a fragment shader linked by their varyings ([`link`](mod@link)), and
 //! the functions the pipeline calls in place of its own, written by the student ([`hook`]).
 
 mod bindings;
