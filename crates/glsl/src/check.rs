@@ -500,16 +500,14 @@ pub(super) fn collect_stores(stmts: &[code::Stmt], out: &mut Vec<(usize, code::R
         match s {
             Stmt::Store { at, place, .. } => out.push((*at, place.root, place.name.clone())),
             Stmt::Block(b) => collect_stores(b, out),
-            Stmt::If { accept, reject, .. } => {
-                collect_stores(accept, out);
-                collect_stores(reject, out);
+            Stmt::If(i) => {
+                collect_stores(&i.accept, out);
+                collect_stores(&i.reject, out);
             }
-            Stmt::Switch { cases, .. } => cases.iter().for_each(|(_, b, _)| collect_stores(b, out)),
-            Stmt::Loop {
-                body, continuing, ..
-            } => {
-                collect_stores(body, out);
-                collect_stores(continuing, out);
+            Stmt::Switch(s) => s.cases.iter().for_each(|(_, b, _)| collect_stores(b, out)),
+            Stmt::Loop(l) => {
+                collect_stores(&l.body, out);
+                collect_stores(&l.continuing, out);
             }
             _ => {}
         }

@@ -191,6 +191,61 @@ pub enum Op {
     Size { texture: u32, level: Option<u32> },
 }
 
+impl Op {
+    /// The first register of each operand the operation reads (the registers a place's dynamic
+    /// indices are in, for a load). Each is an expression naga's arena holds before this one,
+    /// so each lies below the operation's own register: the machine splits the register file
+    /// there, reading below and writing above (`machine::eval`).
+    #[must_use]
+    pub fn reads(&self) -> Vec<u32> {
+        let level = |l: &Level| match *l {
+            Level::Exact(r) | Level::Bias(r) => vec![r],
+            Level::Gradient { x, y } => vec![x, y],
+            Level::Auto | Level::Zero => Vec::new(),
+        };
+        match self {
+            Self::None | Self::Const(_) => Vec::new(),
+            Self::Compose(parts) => parts.iter().map(|r| r.at).collect(),
+            Self::Copy { from, .. } | Self::Splat { from, .. } | Self::Swizzle { from, .. } => {
+                vec![*from]
+            }
+            Self::Index { base, index, .. } => vec![*base, *index],
+            Self::Load(p) => p.dynamic.iter().map(|d| d.0).collect(),
+            Self::Unary { a, .. }
+            | Self::Derivative { a, .. }
+            | Self::Relational { a, .. }
+            | Self::As { a, .. } => vec![a.at],
+            Self::Binary { a, b, .. } => vec![a.at, b.at],
+            Self::Select { c, a, b } => vec![c.at, a.at, b.at],
+            Self::Math { args, .. } => args.iter().map(|r| r.at).collect(),
+            Self::Sample {
+                texture,
+                coordinate,
+                level: l,
+                offset,
+            } => [
+                vec![*texture, coordinate.at],
+                level(l),
+                offset.iter().copied().collect(),
+            ]
+            .concat(),
+            Self::SampleCube { texture, direction } => vec![*texture, direction.at],
+            Self::Fetch {
+                texture,
+                coordinate,
+                level,
+            } => [
+                vec![*texture, coordinate.at],
+                level.iter().copied().collect(),
+            ]
+            .concat(),
+            Self::Size { texture, level } => {
+                [vec![*texture], level.iter().copied().collect()].concat()
+            }
+        }
+    }
+}
+
 /// A statement in register form; `at` is its place in the student's source (bytes).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Stmt {
@@ -198,28 +253,12 @@ pub enum Stmt {
     Emit(std::ops::Range<u32>),
     /// A nested block.
     Block(Vec<Stmt>),
-    /// `if`; `loop_test` when naga made it for a `for` or `while` condition (`if (!cond)
-    /// break;`): the trace says the loop's condition, not an `if` the student did not write.
-    If {
-        at: usize,
-        c: u32,
-        accept: Vec<Stmt>,
-        reject: Vec<Stmt>,
-        loop_test: bool,
-    },
-    /// `switch` on an integer: the cases (None = default), their bodies, and fall-through.
-    Switch {
-        at: usize,
-        selector: u32,
-        cases: Vec<(Option<i64>, Vec<Stmt>, bool)>,
-    },
-    /// A loop: body, continuing, and the register of `break if`.
-    Loop {
-        at: usize,
-        body: Vec<Stmt>,
-        continuing: Vec<Stmt>,
-        break_if: Option<u32>,
-    },
+    /// `if`.
+    If(If),
+    /// `switch` on an integer.
+    Switch(Switch),
+    /// A loop.
+    Loop(Loop),
     /// `break`, at its place (`None`: one naga made for a loop's condition).
     Break { at: Option<usize> },
     /// `continue`, at its place.
@@ -230,13 +269,62 @@ pub enum Stmt {
     Kill { at: usize },
     /// `*place = value`.
     Store { at: usize, place: Place, value: u32 },
-    /// A call: the function, its arguments, the result's register.
-    Call {
-        at: usize,
-        function: usize,
-        args: Vec<Argument>,
-        result: Option<Reg>,
-    },
+    /// A call.
+    Call(Call),
+}
+
+/// `if`; `loop_test` when naga made it for a `for` or `while` condition (`if (!cond)
+/// break;`): the trace says the loop's condition, not an `if` the student did not write.
+#[derive(Clone, Debug, PartialEq)]
+pub struct If {
+    /// Its place in the student's source.
+    pub at: usize,
+    /// The register of the condition.
+    pub c: u32,
+    /// The statements where it holds.
+    pub accept: Vec<Stmt>,
+    /// The statements where it does not.
+    pub reject: Vec<Stmt>,
+    /// Whether naga made it for a loop's condition.
+    pub loop_test: bool,
+}
+
+/// `switch` on an integer: the cases (None = default), their bodies, and fall-through.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Switch {
+    /// Its place in the student's source.
+    pub at: usize,
+    /// The register of the selector.
+    pub selector: u32,
+    /// Each case: its value (`None`: `default`), its body, whether it falls through.
+    pub cases: Vec<(Option<i64>, Vec<Stmt>, bool)>,
+}
+
+/// A loop as naga writes every `for`, `while` and `do`: the body, the `continuing` block, and
+/// the register of `break if`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Loop {
+    /// Its place in the student's source.
+    pub at: usize,
+    /// The body.
+    pub body: Vec<Stmt>,
+    /// What runs after the body and after a `continue` (a `for`'s increment).
+    pub continuing: Vec<Stmt>,
+    /// The register of the condition that ends the loop after `continuing`.
+    pub break_if: Option<u32>,
+}
+
+/// A call: the function, its arguments, the result's register.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Call {
+    /// Its place in the student's source.
+    pub at: usize,
+    /// The callee's index among the code's functions.
+    pub function: usize,
+    /// What each parameter is passed.
+    pub args: Vec<Argument>,
+    /// The register the result goes to.
+    pub result: Option<Reg>,
 }
 
 /// What a call passes for one parameter.

@@ -190,11 +190,9 @@ impl Program {
             stmts.iter().any(|s| match s {
                 code::Stmt::Kill { .. } => true,
                 code::Stmt::Block(b) => kills(b),
-                code::Stmt::If { accept, reject, .. } => kills(accept) || kills(reject),
-                code::Stmt::Switch { cases, .. } => cases.iter().any(|(_, b, _)| kills(b)),
-                code::Stmt::Loop {
-                    body, continuing, ..
-                } => kills(body) || kills(continuing),
+                code::Stmt::If(i) => kills(&i.accept) || kills(&i.reject),
+                code::Stmt::Switch(s) => s.cases.iter().any(|(_, b, _)| kills(b)),
+                code::Stmt::Loop(l) => kills(&l.body) || kills(&l.continuing),
                 _ => false,
             })
         }

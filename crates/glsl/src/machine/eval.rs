@@ -3,12 +3,11 @@
 //! uniform at a fixed place) evaluated once per uniform set. Errors (an index out of range, an
 //! integer division by zero) count only in live lanes.
 
-use glam::{IVec2, Vec2, Vec3};
 use naga::{RelationalFunction, UnaryOperator};
 
-use super::super::code::{Function, Kind, Level, Op, Place, Reg, Root, Shape};
+use super::super::code::{Function, Kind, Op, Place, Reg, Root, Shape};
 use super::super::ops;
-use super::{LANES, Machine, Res, RunError, Texel, Textures, bit, masked_copy};
+use super::{LANES, Machine, Res, RunError, Textures, bit, masked_copy};
 use crate::complaint::Complaint;
 
 impl Machine<'_> {
@@ -140,6 +139,14 @@ impl Machine<'_> {
                 }
             }
             op => {
+                // Every operand lies below `dst` (an expression's operands come before it in
+                // naga's arena, and registers are laid out in that order): read below the
+                // split, write above it.
+                debug_assert!(
+                    op.reads().iter().all(|&r| r < dst.at),
+                    "an operand of {op:?} at or above its register {}",
+                    dst.at
+                );
                 let (src, out) = self.regs[fi].split_at_mut(dst.at as usize * LANES);
                 let row = |r: u32, c: u32| &src[(r + c) as usize * LANES..][..n];
                 let out = &mut out[..dst.n as usize * LANES];
@@ -360,99 +367,12 @@ impl Machine<'_> {
                             }
                         }
                     }
-                    Op::Sample {
-                        texture,
-                        coordinate,
-                        level,
-                        offset,
-                    } => {
-                        let slot = row(*texture, 0)[0];
-                        let uv = |l: usize| vec2_at(&row, coordinate.at, l);
-                        for l in 0..n {
-                            let shift = offset.map_or(IVec2::ZERO, |o| {
-                                IVec2::new(row(o, 0)[l] as i32, row(o, 1)[l] as i32)
-                            });
-                            let color = match level {
-                                Level::Auto | Level::Bias(_) => {
-                                    let q = l & !3;
-                                    let (dx, dy) = if q + 3 < n {
-                                        (uv(q + 1) - uv(q), uv(q + 2) - uv(q))
-                                    } else {
-                                        (Vec2::ZERO, Vec2::ZERO)
-                                    };
-                                    let bias = match level {
-                                        Level::Bias(r) => f32::from_bits(row(*r, 0)[l]),
-                                        _ => 0.0,
-                                    };
-                                    b.sample(slot, uv(l), dx, dy, bias, shift)
-                                }
-                                Level::Gradient { x, y } => {
-                                    let (dx, dy) = (vec2_at(&row, *x, l), vec2_at(&row, *y, l));
-                                    b.sample(slot, uv(l), dx, dy, 0.0, shift)
-                                }
-                                Level::Exact(r) => {
-                                    let lod = f32::from_bits(row(*r, 0)[l]);
-                                    b.sample_lod(slot, uv(l), lod, shift)
-                                }
-                                Level::Zero => b.sample_lod(slot, uv(l), 0.0, shift),
-                            }
-                            .unwrap_or(Vec3::ZERO);
-                            for (k, v) in color.extend(1.0).to_array().iter().enumerate() {
-                                out[k * LANES + l] = v.to_bits();
-                            }
-                        }
-                    }
-                    Op::SampleCube { texture, direction } => {
-                        let slot = row(*texture, 0)[0];
-                        for l in 0..n {
-                            let d = Vec3::new(
-                                f32::from_bits(row(direction.at, 0)[l]),
-                                f32::from_bits(row(direction.at, 1)[l]),
-                                f32::from_bits(row(direction.at, 2)[l]),
-                            );
-                            let color = b.sample_cube(slot, d).unwrap_or(Vec3::ZERO);
-                            for (k, v) in color.extend(1.0).to_array().iter().enumerate() {
-                                out[k * LANES + l] = v.to_bits();
-                            }
-                        }
-                    }
-                    Op::Fetch {
-                        texture,
-                        coordinate,
-                        level,
-                    } => {
-                        let slot = row(*texture, 0)[0];
-                        for l in 0..n {
-                            let (i, j) = (
-                                row(coordinate.at, 0)[l] as i32,
-                                row(coordinate.at, 1)[l] as i32,
-                            );
-                            let k = level.map_or(0, |r| row(r, 0)[l] as i32);
-                            let texel = match b.texel(slot, k, i, j) {
-                                Texel::At(c) => c.extend(1.0),
-                                Texel::Outside if live & bit(l) != 0 => {
-                                    return Err(err(
-                                        format!(
-                                            "texelFetch at ({i}, {j}) level {k} is outside the texture"
-                                        ),
-                                        Complaint::TexelOutside { i, j, level: k },
-                                    ));
-                                }
-                                _ => glam::Vec4::ZERO,
-                            };
-                            for (c, v) in texel.to_array().iter().enumerate() {
-                                out[c * LANES + l] = v.to_bits();
-                            }
-                        }
-                    }
-                    Op::Size { texture, level } => {
-                        let slot = row(*texture, 0)[0];
-                        for l in 0..n {
-                            let k = level.map_or(0, |r| row(r, 0)[l] as usize);
-                            let (w, h) = b.size(slot, k);
-                            out[l] = w;
-                            out[LANES + l] = h;
-                        }
+                    Op::Sample { .. }
+                    | Op::SampleCube { .. }
+                    | Op::Fetch { .. }
+                    | Op::Size { .. } => {
+                        super::texture::lookup(op, &row, out, n, live, b)
+                            .map_err(|(m, c)| err(m, c))?;
                     }
                     Op::None | Op::Const(_) | Op::Load(_) => {}
                 }
@@ -466,9 +386,4 @@ impl Machine<'_> {
 /// run until the uniforms change.
 pub(super) fn is_fixed_uniform_load(op: &Op) -> bool {
     matches!(op, Op::Load(p) if p.root == Root::Uniform && p.dynamic.is_empty())
-}
-
-/// Lane `l` of the vec2 at register `r`, its rows given by `row(register, component)`.
-fn vec2_at<'a>(row: &impl Fn(u32, u32) -> &'a [u32], r: u32, l: usize) -> Vec2 {
-    Vec2::new(f32::from_bits(row(r, 0)[l]), f32::from_bits(row(r, 1)[l]))
 }

@@ -13,11 +13,13 @@
 
 use glam::{IVec2, Vec2, Vec3};
 
-use super::code::{Code, Place, Reg, Root, Stmt};
+use super::code::{Code, Place, Reg, Root};
 
 mod call;
 mod eval;
 mod events;
+mod statements;
+mod texture;
 
 pub use events::{Event, RunError};
 
@@ -85,12 +87,15 @@ impl Textures for () {
     }
 }
 
-/// Control flow of the running function: lanes that broke, continued or returned.
+/// Control flow of the running function: the lanes that left the innermost loop or switch
+/// with `break`, and those that left the loop's body with `continue`. (A lane that returns
+/// needs no record: it is in no block's mask from there on.)
 #[derive(Clone, Copy, Default)]
 struct Flow {
-    brk: u64,
-    cont: u64,
-    ret: u64,
+    /// Lanes that broke out.
+    broke: u64,
+    /// Lanes that continued.
+    continued: u64,
 }
 
 /// The machine: a program's storage for one batch.
@@ -235,7 +240,12 @@ impl<'c> Machine<'c> {
             }
         }
         let mut flow = Flow::default();
-        self.block(fi, &f.body, mask, live, &mut flow, b)?;
+        let run = statements::Running {
+            fi,
+            live,
+            textures: b,
+        };
+        self.block(run, &f.body, mask, &mut flow)?;
         Ok(())
     }
 
@@ -258,248 +268,6 @@ impl<'c> Machine<'c> {
                 events.push(ev);
             }
         }
-    }
-
-    #[allow(clippy::too_many_lines, clippy::too_many_arguments)]
-    fn block(
-        &mut self,
-        fi: usize,
-        stmts: &[Stmt],
-        mut mask: u64,
-        live: u64,
-        flow: &mut Flow,
-        b: &dyn Textures,
-    ) -> Res<u64> {
-        let code = self.code;
-        let f = &code.functions[fi];
-        for s in stmts {
-            if mask == 0 {
-                break;
-            }
-            match s {
-                Stmt::Emit(r) => {
-                    for e in r.clone() {
-                        self.eval(fi, e as usize, mask & live, b)?;
-                    }
-                }
-                Stmt::Block(inner) => mask = self.block(fi, inner, mask, live, flow, b)?,
-                Stmt::If {
-                    at,
-                    c,
-                    accept,
-                    reject,
-                    loop_test,
-                } => {
-                    let cond = self.lanes_true(fi, *c);
-                    let (yes, no) = (mask & cond, mask & !cond);
-                    self.event(fi, mask, |_, l| {
-                        let taken = yes & bit(l) != 0;
-                        if *loop_test {
-                            // `if (!cond) break;`: taken is the condition failing.
-                            Event::LoopTest {
-                                at: *at,
-                                holds: !taken,
-                            }
-                        } else {
-                            Event::Branch { at: *at, taken }
-                        }
-                    });
-                    let a = if yes != 0 {
-                        self.block(fi, accept, yes, live, flow, b)?
-                    } else {
-                        0
-                    };
-                    let r = if no != 0 {
-                        self.block(fi, reject, no, live, flow, b)?
-                    } else {
-                        0
-                    };
-                    mask = a | r;
-                }
-                Stmt::Switch {
-                    selector, cases, ..
-                } => {
-                    let outer = flow.brk;
-                    flow.brk = 0;
-                    let sel = &self.regs[fi][*selector as usize * LANES..][..LANES];
-                    let mut matched = 0u64;
-                    let mut falling = 0u64;
-                    let mut after = 0u64;
-                    let default = {
-                        let mut d = mask;
-                        for (value, _, _) in cases {
-                            if let Some(v) = value {
-                                d &= !lanes_where(sel, self.n, |x| {
-                                    i64::from(x as i32) == *v || i64::from(x) == *v
-                                });
-                            }
-                        }
-                        d
-                    };
-                    for (value, body, fall_through) in cases {
-                        let hit = match value {
-                            Some(v) => {
-                                mask & lanes_where(
-                                    &self.regs[fi][*selector as usize * LANES..][..LANES],
-                                    self.n,
-                                    |x| i64::from(x as i32) == *v || i64::from(x) == *v,
-                                )
-                            }
-                            None => default,
-                        } & !matched;
-                        matched |= hit;
-                        let run = hit | falling;
-                        let out = if run != 0 {
-                            self.block(fi, body, run, live, flow, b)?
-                        } else {
-                            0
-                        };
-                        if *fall_through {
-                            falling = out;
-                        } else {
-                            after |= out;
-                            falling = 0;
-                        }
-                    }
-                    mask = after | falling | flow.brk | (mask & !matched);
-                    flow.brk = outer;
-                }
-                Stmt::Loop {
-                    at,
-                    body,
-                    continuing,
-                    break_if,
-                } => {
-                    let (outer_brk, outer_cont) = (flow.brk, flow.cont);
-                    let mut running = mask;
-                    let mut left = 0u64;
-                    let mut k = 0u32;
-                    while running != 0 {
-                        k += 1;
-                        for l in 0..self.n {
-                            if running & live & bit(l) != 0 {
-                                self.steps[l] += 1;
-                                if self.steps[l] > self.budget {
-                                    return Err(RunError {
-                                        at: *at,
-                                        message: format!(
-                                            "the loop ran more than {} steps (an endless loop? If it is meant to run longer, raise the limit with `max_steps` under [scene.render])",
-                                            self.budget
-                                        ),
-                                        complaint: crate::complaint::Complaint::EndlessLoop {
-                                            budget: self.budget,
-                                        },
-                                    });
-                                }
-                            }
-                        }
-                        self.event(fi, running, |_, _| Event::Iteration { at: *at, k });
-                        flow.brk = 0;
-                        flow.cont = 0;
-                        let mut m = self.block(fi, body, running, live, flow, b)?;
-                        m |= flow.cont;
-                        left |= flow.brk;
-                        if m != 0 {
-                            flow.brk = 0;
-                            m = self.block(fi, continuing, m, live, flow, b)?;
-                            left |= flow.brk;
-                            if let Some(c) = break_if {
-                                let stop = m & self.lanes_true(fi, *c);
-                                left |= stop;
-                                m &= !stop;
-                            }
-                        }
-                        running = m;
-                    }
-                    flow.brk = outer_brk;
-                    flow.cont = outer_cont;
-                    mask = left;
-                }
-                Stmt::Break { at } => {
-                    if let Some(at) = *at {
-                        self.event(fi, mask, |_, _| Event::Break { at });
-                    }
-                    flow.brk |= mask;
-                    mask = 0;
-                }
-                Stmt::Continue { at } => {
-                    self.event(fi, mask, |_, _| Event::Continue { at: *at });
-                    flow.cont |= mask;
-                    mask = 0;
-                }
-                Stmt::Return { at, value } => {
-                    if let Some(v) = value {
-                        let ret = &mut self.returns[fi];
-                        ret.resize(v.n as usize * LANES, 0);
-                        let regs = &self.regs[fi];
-                        for c in 0..v.n as usize {
-                            let src = &regs[(v.at as usize + c) * LANES..][..LANES];
-                            masked_copy(&mut ret[c * LANES..][..LANES], src, mask, self.n);
-                        }
-                    }
-                    // `main`'s end needs no line of its own.
-                    if fi + 1 < code.functions.len() && f.name != "main" {
-                        let name = f.name.clone();
-                        let result = f.result.zip(*value);
-                        self.event(fi, mask, |m, l| Event::Return {
-                            at: *at,
-                            name,
-                            value: result.map(|(ty, v)| {
-                                let ret = &m.returns[fi];
-                                let bits = (0..v.n as usize).map(|c| ret[c * LANES + l]).collect();
-                                (ty, bits)
-                            }),
-                        });
-                    }
-                    flow.ret |= mask;
-                    mask = 0;
-                }
-                Stmt::Kill { at } => {
-                    self.event(fi, mask, |_, _| Event::Discard { at: *at });
-                    self.killed |= mask;
-                    mask = 0;
-                }
-                Stmt::Store { at, place, value } => {
-                    self.store(fi, place, *value, mask, live)?;
-                    // naga's own temporaries (a `?:`'s result) have no name: the student's
-                    // variables do.
-                    if self.traced(mask) && !place.name.is_empty() {
-                        self.event(fi, mask, |m, l| Event::Assign {
-                            at: *at,
-                            name: place.name.clone(),
-                            ty: place.ty,
-                            bits: m.read_whole(fi, place, l),
-                        });
-                    }
-                }
-                Stmt::Call {
-                    at,
-                    function,
-                    args,
-                    result,
-                } => {
-                    let callee = &code.functions[*function];
-                    if !callee.builtin {
-                        self.event(fi, mask, |_, _| Event::Call {
-                            at: *at,
-                            name: callee.name.clone(),
-                        });
-                    }
-                    self.pass_arguments(fi, *function, args, mask, live, *at)?;
-                    self.call(*function, mask, live, b)?;
-                    if let Some(r) = result {
-                        let len = r.n as usize * LANES;
-                        let ret = std::mem::take(&mut self.returns[*function]);
-                        let d = r.at as usize * LANES;
-                        self.regs[fi][d..d + len].copy_from_slice(&ret[..len]);
-                        self.returns[*function] = ret;
-                    }
-                    mask &= !self.killed;
-                    self.return_arguments(fi, *function, args, mask, live, *at)?;
-                }
-            }
-        }
-        Ok(mask)
     }
 
     /// The lanes whose bool at register row `c` is true.

@@ -4,7 +4,7 @@
 use naga::valid::FunctionInfo;
 use naga::{Expression, Handle, Statement, TypeInner};
 
-use super::super::code::{Argument, Function, Stmt, Unsupported};
+use super::super::code::{Argument, Call, Function, If, Loop, Stmt, Switch, Unsupported};
 use super::{Translator, describe};
 
 impl Translator<'_> {
@@ -59,7 +59,7 @@ impl Translator<'_> {
                     condition,
                     ref accept,
                     ref reject,
-                } => Stmt::If {
+                } => Stmt::If(If {
                     at,
                     c: reg(condition).at,
                     accept: self.block(f, fi, accept, func, at)?,
@@ -68,7 +68,7 @@ impl Translator<'_> {
                     loop_test: !span.is_defined()
                         && reject.is_empty()
                         && matches!(accept.iter().next(), Some(Statement::Break)),
-                },
+                }),
                 Statement::Switch {
                     selector,
                     ref cases,
@@ -82,22 +82,22 @@ impl Translator<'_> {
                         };
                         cs.push((value, self.block(f, fi, &c.body, func, at)?, c.fall_through));
                     }
-                    Stmt::Switch {
+                    Stmt::Switch(Switch {
                         at,
                         selector: reg(selector).at,
                         cases: cs,
-                    }
+                    })
                 }
                 Statement::Loop {
                     ref body,
                     ref continuing,
                     break_if,
-                } => Stmt::Loop {
+                } => Stmt::Loop(Loop {
                     at,
                     body: self.block(f, fi, body, func, at)?,
                     continuing: self.block(f, fi, continuing, func, at)?,
                     break_if: break_if.map(|b| reg(b).at),
-                },
+                }),
                 Statement::Break => Stmt::Break {
                     at: span.is_defined().then_some(at),
                 },
@@ -120,12 +120,12 @@ impl Translator<'_> {
                     function,
                     ref arguments,
                     result,
-                } => Stmt::Call {
+                } => Stmt::Call(Call {
                     at,
                     function: function.index(),
                     args: self.arguments(f, fi, arguments, func).map_err(err)?,
                     result: result.map(reg),
-                },
+                }),
                 Statement::ControlBarrier(_) | Statement::MemoryBarrier(_) => continue,
                 ref other => {
                     return Err(err(format!(
