@@ -33,10 +33,12 @@ mod sampler_arguments;
 mod trace;
 mod translate;
 
+mod batch;
 mod compile;
 mod error;
 mod program;
 
+pub use batch::{Batch, Ran, first_lanes};
 pub use check::complain;
 pub use compile::compile;
 pub use complaint::Complaint;

@@ -10,7 +10,7 @@ use crate::capture::{FragmentTrace, Matrices, VertexResults};
 use crate::raster::{NONE, ONE, RasterTriangle};
 use crate::render::RenderError;
 use crate::render::resolve::ResolveContext;
-use crate::shader::{self, Bindings, Interpolate, LANES, Programs, Uniforms};
+use crate::shader::{self, Batch, Bindings, Interpolate, LANES, Programs, Uniforms};
 
 /// A fragment to shade: a triangle over a 2×2 quad, with the pixels it covers (live lanes) and
 /// how many samples of each.
@@ -126,7 +126,7 @@ impl FragmentShading<'_> {
         let mut batch_object = usize::MAX;
         let mut machines: Vec<Option<shader::Machine<'_>>> =
             self.ctx.scene.objects.iter().map(|_| None).collect();
-        let mut inputs: Vec<Vec<u32>> = Vec::new();
+        let mut inputs = Batch::default();
         let inspected = self
             .ctx
             .settings
@@ -206,7 +206,7 @@ impl FragmentShading<'_> {
         batch: &[QuadJob],
         object: usize,
         machines: &mut [Option<shader::Machine<'m>>],
-        inputs: &mut Vec<Vec<u32>>,
+        inputs: &mut Batch,
         acc: &mut [Vec3],
         shaded: &mut [u8],
         y: i64,
@@ -226,32 +226,32 @@ impl FragmentShading<'_> {
             }
             m
         });
-        let n = batch.len() * 4;
-        inputs.resize(fs.inputs.len(), Vec::new());
-        for (input, rows) in fs.inputs.iter().zip(inputs.iter_mut()) {
-            rows.clear();
-            rows.resize(input.components as usize * LANES, 0);
-        }
-        let mut live = 0u64;
+        inputs.start_for(fs, batch.len() * 4);
         for (q, job) in batch.iter().enumerate() {
             let t = &ctx.triangles[job.triangle as usize];
             for j in 0..4 {
                 let l = q * 4 + j;
                 let (px, py) = (i64::from(job.x) + (j % 2) as i64, y + (j / 2) as i64);
-                if job.samples[j] > 0 {
-                    live |= 1 << l;
+                if job.samples[j] == 0 {
+                    inputs.helper(l);
                 }
                 let centre = I64Vec2::new(px * ONE + ONE / 2, py * ONE + ONE / 2);
-                self.lane_inputs(&sh.programs, t, object, centre, (px, py), l, inputs);
+                self.lane_inputs(
+                    &sh.programs,
+                    t,
+                    object,
+                    centre,
+                    (px, py),
+                    l,
+                    inputs.rows_mut(),
+                );
             }
         }
-        let refs: Vec<&[u32]> = inputs.iter().map(Vec::as_slice).collect();
         let tex = textures(fs, o, ctx.settings.sampler);
         let bindings = Bindings { textures: &tex };
-        let killed = m
-            .run(&refs, n, live, &bindings)
+        let ran = m
+            .run_batch(inputs, &bindings)
             .map_err(|e| shader_error(fs, o, &e))?;
-        let result = m.result();
         let mut counts = FragmentCounts::default();
         let background = ctx.settings.background;
         for (q, job) in batch.iter().enumerate() {
@@ -268,7 +268,7 @@ impl FragmentShading<'_> {
                 let Some(i) = (x < w).then_some(row * w + x).filter(|&i| i < acc.len()) else {
                     continue;
                 };
-                let color = if killed & (1 << l) != 0 {
+                let color = if ran.discarded(l) {
                     counts.discarded += 1;
                     let (px, py) = (i64::from(job.x) + (j % 2) as i64, y + (j / 2) as i64);
                     if let Some(at) = self.index(px, py) {
@@ -276,11 +276,7 @@ impl FragmentShading<'_> {
                     }
                     background
                 } else {
-                    let c = Vec3::new(
-                        f32::from_bits(result[l]),
-                        f32::from_bits(result[LANES + l]),
-                        f32::from_bits(result[2 * LANES + l]),
-                    );
+                    let c = Vec3::from_array(ran.outputs::<3>(l));
                     if c.is_finite() {
                         c
                     } else {
@@ -301,7 +297,7 @@ impl FragmentShading<'_> {
         job: QuadJob,
         j: usize,
         y: i64,
-        inputs: &mut Vec<Vec<u32>>,
+        inputs: &mut Batch,
     ) -> Result<FragmentTrace, RenderError> {
         let ctx = self.ctx;
         let object = self.object_of(job.triangle);
@@ -316,33 +312,32 @@ impl FragmentShading<'_> {
             fs.set_uniforms(&mut m, u);
         }
         let t = &ctx.triangles[job.triangle as usize];
-        inputs.resize(fs.inputs.len(), Vec::new());
-        for (input, rows) in fs.inputs.iter().zip(inputs.iter_mut()) {
-            rows.clear();
-            rows.resize(input.components as usize * LANES, 0);
-        }
-        let mut live = 0u64;
+        inputs.start_for(fs, 4);
         for k in 0..4 {
             let (px, py) = (i64::from(job.x) + (k % 2) as i64, y + (k / 2) as i64);
-            if job.samples[k] > 0 {
-                live |= 1 << k;
+            if job.samples[k] == 0 {
+                inputs.helper(k);
             }
             let centre = I64Vec2::new(px * ONE + ONE / 2, py * ONE + ONE / 2);
-            self.lane_inputs(&sh.programs, t, object, centre, (px, py), k, inputs);
+            self.lane_inputs(
+                &sh.programs,
+                t,
+                object,
+                centre,
+                (px, py),
+                k,
+                inputs.rows_mut(),
+            );
         }
-        let received = super::lane_values(&fs.inputs, inputs, j);
-        let refs: Vec<&[u32]> = inputs.iter().map(Vec::as_slice).collect();
+        let received = super::lane_values(&fs.inputs, inputs.rows(), j);
         let tex = textures(fs, o, ctx.settings.sampler);
         let bindings = Bindings { textures: &tex };
         m.trace_lane(Some(j));
-        let killed = m
-            .run(&refs, 4, live, &bindings)
+        let ran = m
+            .run_batch(inputs, &bindings)
             .map_err(|e| shader_error(fs, o, &e))?;
+        let output = (!ran.discarded(j)).then(|| ran.outputs::<4>(j));
         let events = m.take_trace();
-        let r = m.result();
-        let output = (killed & (1 << j) == 0).then(|| {
-            std::array::from_fn(|c| f32::from_bits(r.get(c * LANES + j).copied().unwrap_or(0)))
-        });
         Ok(FragmentTrace {
             triangle: job.triangle,
             primitive: t.primitive,

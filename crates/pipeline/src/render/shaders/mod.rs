@@ -28,7 +28,7 @@ use crate::render::resolve::ResolveContext;
 use crate::scene::{Object, Scene};
 use crate::settings::RenderSettings;
 use crate::shader::interface::TextureSlot;
-use crate::shader::{self, Bindings, LANES, Programs, Uniforms};
+use crate::shader::{self, Batch, Bindings, LANES, Programs, Uniforms};
 use crate::vertex::{self, VertexRecord};
 
 /// The fragment stage over a resolved frame: the shaders' colours written into `color`, and
@@ -269,39 +269,34 @@ pub fn trace_vertex(
     let mut m = vs.machine();
     m.budget = capture.settings.max_steps;
     vs.set_uniforms(&mut m, &u);
-    let inputs: Vec<Vec<u32>> = vs
-        .inputs
-        .iter()
-        .map(|input| {
-            let mut rows = vec![0u32; input.components as usize * LANES];
-            let location = shader::interface::attribute_location(&input.name);
-            write_inputs(&mut rows, input, location, object, index, 1);
-            rows
-        })
-        .collect();
-    let refs: Vec<&[u32]> = inputs.iter().map(Vec::as_slice).collect();
+    let mut batch = Batch::new(vs);
+    batch.start(1);
+    for (input, rows) in vs.inputs.iter().zip(batch.rows_mut()) {
+        let location = shader::interface::attribute_location(&input.name);
+        write_inputs(rows, input, location, object, index, 1);
+    }
     let tex = textures(vs, object, crate::texture::Sampler::default());
     let bindings = Bindings { textures: &tex };
     m.trace_lane(Some(0));
-    m.run(&refs, 1, 1, &bindings)
+    let ran = m
+        .run_batch(&batch, &bindings)
         .map_err(|e| shader_error(vs, object, &e))?;
-    let events = m.take_trace();
-    let result = m.result();
     let mut at = 0usize;
     let outputs = vs
         .outputs
         .iter()
         .map(|o| {
             let n = o.components as usize;
-            let value = lane_value(&result[at * LANES..], n, 0);
+            let value = lane_value(&ran.rows()[at * LANES..], n, 0);
             at += n;
             (o.name.clone(), value)
         })
         .collect();
+    let events = m.take_trace();
     Ok(Some(VertexTrace {
         row: row as u32,
         object: object.name.clone(),
-        inputs: lane_values(&vs.inputs, &inputs, 0),
+        inputs: lane_values(&vs.inputs, batch.rows(), 0),
         trace: vs.describe(&events),
         outputs,
     }))
@@ -423,30 +418,24 @@ fn run_vertex_shader(
                 let mut m = vs.machine();
                 m.budget = max_steps;
                 vs.set_uniforms(&mut m, u);
-                let rows: Vec<Vec<u32>> = vs
-                    .inputs
-                    .iter()
-                    .map(|i| vec![0; i.components as usize * LANES])
-                    .collect();
-                (m, rows)
+                (m, Batch::new(vs))
             },
-            |(m, rows), (k, results)| {
+            |(m, batch), (k, results)| {
                 let start = k * LANES;
                 let n = (count - start).min(LANES);
+                batch.start(n);
                 for ((input, rows), location) in
-                    vs.inputs.iter().zip(rows.iter_mut()).zip(&locations)
+                    vs.inputs.iter().zip(batch.rows_mut()).zip(&locations)
                 {
                     write_inputs(rows, input, *location, object, start, n);
                 }
-                let refs: Vec<&[u32]> = rows.iter().map(Vec::as_slice).collect();
                 let bindings = Bindings { textures: &tex };
-                let live = if n == LANES { u64::MAX } else { (1 << n) - 1 };
-                m.run(&refs, n, live, &bindings)
+                let ran = m
+                    .run_batch(batch, &bindings)
                     .map_err(|e| shader_error(vs, object, &e))?;
-                let result = m.result();
                 for (l, out) in results.chunks_exact_mut(stride).enumerate() {
                     for (c, v) in out.iter_mut().enumerate() {
-                        *v = f32::from_bits(result[c * LANES + l]);
+                        *v = ran.output(c, l);
                     }
                 }
                 Ok(())

@@ -69,7 +69,7 @@ mod compare;
 
 pub use compare::{At, CurveDifference};
 
-use super::{Bindings, LANES, Program, ShaderError, Stage, compile};
+use super::{Batch, LANES, Program, ShaderError, Stage, compile};
 
 /// The signature the rasterizer calls for the inside test, as the student writes it.
 pub const INSIDE_SIGNATURE: &str = "bool inside(vec2 p, vec2 a, vec2 b, vec2 c)";
@@ -506,46 +506,29 @@ impl Hook {
         let program = &*self.program;
         let mut machine = program.machine();
         machine.budget = self.budget;
-        let bindings = Bindings { textures: &[] };
         let names = self.kind.inputs();
-        // The entry point's inputs in its order: which argument each is, and its components.
-        let which: Vec<(Option<usize>, usize)> = program
+        // The entry point's inputs in its order: which argument each is.
+        let which: Vec<Option<usize>> = program
             .inputs
             .iter()
-            .map(|v| {
-                (
-                    names.iter().position(|n| *n == v.name),
-                    v.components as usize,
-                )
-            })
+            .map(|v| names.iter().position(|n| *n == v.name))
             .collect();
-        let mut rows: Vec<Vec<u32>> = which.iter().map(|(_, c)| vec![0; c * LANES]).collect();
+        let mut batch = Batch::new(program);
         let mut out = Vec::with_capacity(n);
         for first in (0..n).step_by(LANES) {
-            let batch = (n - first).min(LANES);
-            for l in 0..batch {
+            batch.start((n - first).min(LANES));
+            for l in 0..batch.lanes() {
                 let values = args(first + l);
-                for (row, (arg, components)) in rows.iter_mut().zip(&which) {
+                for (input, arg) in which.iter().enumerate() {
                     if let Some(a) = arg {
-                        for c in 0..*components {
-                            row[c * LANES + l] = values[*a][c].to_bits();
-                        }
+                        batch.set(input, l, &values[*a]);
                     }
                 }
             }
-            let live = if batch == LANES {
-                u64::MAX
-            } else {
-                (1 << batch) - 1
-            };
-            let inputs: Vec<&[u32]> = rows.iter().map(Vec::as_slice).collect();
-            machine
-                .run(&inputs, batch, live, &bindings)
+            let ran = machine
+                .run_batch(&batch, &())
                 .map_err(|e| program.run_error(&e))?;
-            let result = machine.result();
-            out.extend(
-                (0..batch).map(|l| std::array::from_fn(|c| f32::from_bits(result[c * LANES + l]))),
-            );
+            out.extend((0..batch.lanes()).map(|l| ran.outputs::<4>(l)));
         }
         Ok(out)
     }
