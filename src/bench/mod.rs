@@ -45,9 +45,7 @@ pub fn sphere_scene(triangles: u32) -> BenchScene {
                 up: Vec3::Y,
             },
             projection: Projection::default(),
-            figures: Vec::new(),
-            shadow: None,
-            lights: Vec::new(),
+            ..Scene::default()
         },
     }
 }
@@ -83,8 +81,6 @@ pub fn lit_textured_scene() -> BenchScene {
                 up: Vec3::Y,
             },
             projection: Projection::default(),
-            figures: Vec::new(),
-            shadow: None,
             lights: vec![
                 Light::Ambient {
                     intensity: Vec3::splat(0.2),
@@ -95,6 +91,7 @@ pub fn lit_textured_scene() -> BenchScene {
                     attenuation: Vec3::new(1.0, 0.0, 0.01),
                 },
             ],
+            ..Scene::default()
         },
     }
 }
@@ -389,8 +386,7 @@ pub fn obj_scene(
                     attenuation: Vec3::X,
                 },
             ],
-            shadow: None,
-            figures: Vec::new(),
+            ..Scene::default()
         },
     })
 }

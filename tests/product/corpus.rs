@@ -374,9 +374,7 @@ fn scene_looking_at_the_origin() -> pipeline::scene::Scene {
             up: glam::Vec3::Y,
         },
         projection: pipeline::camera::Projection::default(),
-        lights: Vec::new(),
-        shadow: None,
-        figures: Vec::new(),
+        ..pipeline::scene::Scene::default()
     }
 }
 

@@ -81,8 +81,7 @@ fn spot_scene(
             point(Vec3::new(20.0, 20.0, 30.0)),
             point(Vec3::new(-20.0, 20.0, 10.0)),
         ],
-        shadow: None,
-        figures: Vec::new(),
+        ..pipeline::scene::Scene::default()
     };
     let settings = RenderSettings {
         width: 700,

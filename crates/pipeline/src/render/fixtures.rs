@@ -78,8 +78,6 @@ pub(crate) fn scene() -> Scene {
             near: 0.5,
             far: 30.0,
         },
-        figures: Vec::new(),
-        shadow: None,
         lights: vec![
             Light::Ambient {
                 intensity: Vec3::splat(0.2),
@@ -102,6 +100,7 @@ pub(crate) fn scene() -> Scene {
                 attenuation: Vec3::new(1.0, 0.1, 0.0),
             },
         ],
+        ..Scene::default()
     }
 }
 

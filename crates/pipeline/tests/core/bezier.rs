@@ -125,9 +125,7 @@ fn the_construction_draws_the_levels_asked_for_and_labels_them() {
             near: 1.0,
             far: 10.0,
         },
-        lights: Vec::new(),
-        shadow: None,
-        figures: Vec::new(),
+        ..pipeline::scene::Scene::default()
     };
     let settings = pipeline::settings::RenderSettings {
         width: 300,

@@ -24,13 +24,12 @@ pub(crate) fn lit_textured_quad(size: u32, samples: Samples) -> (Scene, RenderSe
             up: Vec3::Y,
         },
         projection: Projection::default(),
-        figures: Vec::new(),
-        shadow: None,
         lights: vec![pipeline::light::Light::Point {
             position: Vec3::new(1.0, 2.0, 3.0),
             intensity: Vec3::ONE,
             attenuation: Vec3::X,
         }],
+        ..Scene::default()
     };
     let settings = RenderSettings {
         width: size,
@@ -193,9 +192,7 @@ fn runs_of_triangles(layout: &[(usize, bool)]) -> Scene {
             up: Vec3::Y,
         },
         projection: Projection::default(),
-        figures: Vec::new(),
-        shadow: None,
-        lights: Vec::new(),
+        ..Scene::default()
     }
 }
 

@@ -39,9 +39,7 @@ fn bright_sphere() -> Scene {
             near: 0.5,
             far: 20.0,
         },
-        figures: Vec::new(),
-        shadow: None,
-        lights: Vec::new(),
+        ..Scene::default()
     }
 }
 

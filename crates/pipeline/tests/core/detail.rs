@@ -34,8 +34,7 @@ fn detailed_quad(detail: pipeline::texture::SurfaceDetail) -> pipeline::capture:
             direction: Vec3::NEG_Z,
             intensity: Vec3::ONE,
         }],
-        shadow: None,
-        figures: Vec::new(),
+        ..Scene::default()
     };
     let settings = RenderSettings {
         width: 65,
@@ -121,9 +120,7 @@ fn displacement_moves_each_vertex_along_its_normal_by_the_height() {
             up: Vec3::Y,
         },
         projection: Projection::default(),
-        lights: Vec::new(),
-        shadow: None,
-        figures: Vec::new(),
+        ..Scene::default()
     };
     let c = render(&scene, &RenderSettings::default());
     for v in &c.vertices {
@@ -211,8 +208,7 @@ fn cube_map_faces_and_a_mirror_sphere() {
         lights: vec![Light::Ambient {
             intensity: Vec3::ONE,
         }],
-        shadow: None,
-        figures: Vec::new(),
+        ..Scene::default()
     };
     let settings = RenderSettings {
         width: 65,

@@ -32,9 +32,7 @@ fn camera_scene(mesh: Mesh, size: u32) -> (Scene, RenderSettings) {
             near: 0.5,
             far: 200.0,
         },
-        figures: Vec::new(),
-        shadow: None,
-        lights: Vec::new(),
+        ..Scene::default()
     };
     let settings = RenderSettings {
         width: size,

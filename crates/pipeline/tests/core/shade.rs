@@ -203,8 +203,6 @@ fn lit_sphere(frequency: Frequency) -> pipeline::capture::FrameCapture {
             near: 0.5,
             far: 20.0,
         },
-        figures: Vec::new(),
-        shadow: None,
         lights: vec![
             Light::Ambient {
                 intensity: Vec3::splat(0.3),
@@ -214,6 +212,7 @@ fn lit_sphere(frequency: Frequency) -> pipeline::capture::FrameCapture {
                 intensity: Vec3::ONE,
             },
         ],
+        ..Scene::default()
     };
     let settings = RenderSettings {
         width: 101,
@@ -322,14 +321,13 @@ fn the_shadow_pass_projects_every_vertex_by_the_closed_form() {
             up: Vec3::Y,
         },
         projection: Projection::default(),
-        lights: Vec::new(),
-        figures: Vec::new(),
         shadow: Some(PlanarShadow {
             light,
             plane_y: 0.0,
             color: Vec3::splat(0.1),
             yours: None,
         }),
+        ..Scene::default()
     };
     let c = render(&scene, &RenderSettings::default());
     assert_eq!(c.objects.len(), 2);

@@ -52,8 +52,6 @@ fn sphere_scene(textured: bool) -> Scene {
             near: 0.5,
             far: 20.0,
         },
-        figures: Vec::new(),
-        shadow: None,
         lights: vec![
             Light::Ambient {
                 intensity: Vec3::splat(0.3),
@@ -76,6 +74,7 @@ fn sphere_scene(textured: bool) -> Scene {
                 attenuation: Vec3::X,
             },
         ],
+        ..Scene::default()
     }
 }
 

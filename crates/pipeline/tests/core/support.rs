@@ -44,9 +44,7 @@ pub fn pixel_scene(w: u32, h: u32, triangles: &[[Vec2; 3]]) -> (Scene, RenderSet
             near: 0.0,
             far: 2.0,
         },
-        figures: Vec::new(),
-        shadow: None,
-        lights: Vec::new(),
+        ..Scene::default()
     };
     let settings = RenderSettings {
         width: w,

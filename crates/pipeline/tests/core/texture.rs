@@ -125,9 +125,7 @@ fn textured_quad(d: f32, tilt: f32, sampler: Sampler) -> pipeline::capture::Fram
             near: 0.1,
             far: 100.0,
         },
-        figures: Vec::new(),
-        shadow: None,
-        lights: Vec::new(),
+        ..Scene::default()
     };
     let settings = RenderSettings {
         width: 65,
