@@ -293,3 +293,26 @@ pub const MAX_LIGHTS: usize = 8;
 
 /// The components of one `Light` record.
 pub const LIGHT_COMPONENTS: usize = 15;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The light layout is said three times — the `Light` struct and `MAX_LIGHTS` in the text
+    /// put before every shader, and these two constants — and must agree: the `lights` array
+    /// a shader declares takes `MAX_LIGHTS · LIGHT_COMPONENTS` components in the machine.
+    #[test]
+    fn the_light_layout_of_the_preamble_agrees_with_the_constants() {
+        let src = "#version 330 core\nuniform Light lights[MAX_LIGHTS];\nout vec4 color;\nvoid main() {\n    color = vec4(lights[0].position, lights[MAX_LIGHTS - 1].exponent);\n}\n";
+        let p = crate::compile(crate::Stage::Fragment, src).expect("compiles");
+        let (_, reg) = p
+            .uniforms
+            .iter()
+            .find(|(n, _)| n == "lights")
+            .expect("declared");
+        assert_eq!(reg.n as usize, MAX_LIGHTS * LIGHT_COMPONENTS);
+        // kind (1) + position, direction, intensity, attenuation (4 × 3) + cutoff_cos,
+        // exponent (2).
+        assert_eq!(LIGHT_COMPONENTS, 1 + 4 * 3 + 2);
+    }
+}

@@ -150,7 +150,10 @@ impl Uniforms {
             "resolution" => floats(&self.resolution.to_array()),
             "at" => floats(&self.at_up[0].to_array()),
             "up" => floats(&self.at_up[1].to_array()),
-            _ => floats(&[self.time]),
+            "time" => floats(&[self.time]),
+            // A row of the table with no value here: no value rather than another's (a test
+            // asks every row for one).
+            _ => return None,
         })
     }
 
@@ -206,5 +209,40 @@ impl Uniforms {
             out.extend(floats(&[cut, e]));
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use pipelens_glsl::interface::UNIFORMS;
+
+    /// Every uniform of the engine's table, by each of its names, has a value here, of as many
+    /// components as its GLSL type holds (counted from the type's name, not from the values).
+    #[test]
+    fn every_uniform_the_shader_can_declare_has_a_value_of_its_type() {
+        let u = Uniforms {
+            time: 2.5,
+            ..Uniforms::default()
+        };
+        for spec in &UNIFORMS {
+            let want = match spec.glsl {
+                "mat4" => 16,
+                "mat3" => 9,
+                "vec3" => 3,
+                "vec2" => 2,
+                "float" | "int" | "bool" => 1,
+                "Light[MAX_LIGHTS]" => MAX_LIGHTS * LIGHT_COMPONENTS,
+                other => panic!("a type this test does not count: {other}"),
+            };
+            for name in spec.names {
+                let got = u
+                    .components(name)
+                    .unwrap_or_else(|| panic!("no value for `{name}`"));
+                assert_eq!(got.len(), want, "`{name}` ({})", spec.glsl);
+            }
+        }
+        assert_eq!(u.components("time"), Some(vec![2.5f32.to_bits()]));
+        assert_eq!(u.components("no_such_uniform"), None);
     }
 }
