@@ -536,13 +536,11 @@ impl Checker<'_> {
                 if known.contains(&name.as_str()) {
                     return Some(name.clone());
                 }
-                let hint = known
-                    .iter()
-                    .map(|k| (strsim::jaro_winkler(name, k), *k))
-                    .filter(|(sim, _)| *sim >= 0.8)
-                    .max_by(|a, b| a.0.total_cmp(&b.0))
-                    .map(|(_, k)| format!("; did you mean \"{k}\"?"))
-                    .unwrap_or_default();
+                let hint = pipeline::shader::suggest::did_you_mean(
+                    name,
+                    known.iter().copied(),
+                    pipeline::shader::suggest::Quote::Value,
+                );
                 self.error(
                     n.span(),
                     format!(

@@ -5,6 +5,7 @@
 //! the mistake was made and what to write instead: the `{` that is never closed, the first
 //! place a duplicated key was given, a text that needs both languages.
 
+use pipeline::shader::suggest::{Quote, did_you_mean};
 use std::ops::Range;
 
 use super::Diagnostic;
@@ -90,15 +91,10 @@ fn with_suggestion(message: &str) -> String {
         return message.to_owned();
     };
     let candidates = expected.split('`').skip(1).step_by(2);
-    // Jaro-Winkler favours a shared beginning: `fov` → `fovy`, `shine` → `shininess`.
-    let best = candidates
-        .map(|c| (strsim::jaro_winkler(unknown, c), c))
-        .filter(|(sim, _)| *sim >= 0.8)
-        .max_by(|a, b| a.0.total_cmp(&b.0));
-    match best {
-        Some((_, c)) => format!("{message}; did you mean `{c}`?"),
-        None => message.to_owned(),
-    }
+    format!(
+        "{message}{}",
+        did_you_mean(unknown, candidates, Quote::Code)
+    )
 }
 
 /// The key written at `span`, without quotes.

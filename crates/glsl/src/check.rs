@@ -7,6 +7,7 @@ use std::ops::Range;
 use crate::complaint::Complaint;
 use crate::error::{ShaderError, error_at};
 use crate::program::Stage;
+use crate::suggest::{Quote, did_you_mean, nearest};
 use crate::trace::glsl_type;
 use crate::{code, dialect, interface};
 
@@ -126,15 +127,15 @@ fn uniform_declaration(
                 source,
                 d.name_span.clone(),
                 format!(
-                    "pipelens sets no uniform called `{}`{}; the uniforms it sets: {}",
+                    "pipelens sets no uniform called `{}`; the uniforms it sets: {}{}",
                     d.name,
-                    did_you_mean(&d.name, &known),
-                    firsts.join(", ")
+                    firsts.join(", "),
+                    did_you_mean(&d.name, known.iter().copied(), Quote::Code),
                 ),
             ),
             Complaint::UnknownUniform {
                 name: d.name.clone(),
-                suggestion: nearest(&d.name, &known).map(str::to_owned),
+                suggestion: nearest(&d.name, known.iter().copied()).map(str::to_owned),
             },
         ));
     };
@@ -188,14 +189,14 @@ fn texture_declaration(source: &str, d: &dialect::Declaration) -> Option<ShaderE
             source,
             d.name_span.clone(),
             format!(
-                "pipelens binds no texture called `{}`{}; the object's texture is `uniform sampler2D tex;`, its bump or normal map `uniform sampler2D detail;`, the cube map it mirrors `uniform samplerCube environment;`",
+                "pipelens binds no texture called `{}`; the object's texture is `uniform sampler2D tex;`, its bump or normal map `uniform sampler2D detail;`, the cube map it mirrors `uniform samplerCube environment;`{}",
                 d.name,
-                did_you_mean(&d.name, &known)
+                did_you_mean(&d.name, known.iter().copied(), Quote::Code)
             ),
         ),
         Complaint::UnknownTexture {
             name: d.name.clone(),
-            suggestion: nearest(&d.name, &known).map(str::to_owned),
+            suggestion: nearest(&d.name, known.iter().copied()).map(str::to_owned),
         },
     ))
 }
@@ -218,15 +219,15 @@ fn attribute_declaration(source: &str, d: &dialect::Declaration) -> Option<Shade
             source,
             d.name_span.clone(),
             format!(
-                "pipelens feeds no vertex attribute called `{}`{}; the attributes: {}",
+                "pipelens feeds no vertex attribute called `{}`; the attributes: {}{}",
                 d.name,
-                did_you_mean(&d.name, &names),
-                declared.join(", ")
+                declared.join(", "),
+                did_you_mean(&d.name, names.iter().copied(), Quote::Code),
             ),
         ),
         Complaint::UnknownAttribute {
             name: d.name.clone(),
-            suggestion: nearest(&d.name, &names).map(str::to_owned),
+            suggestion: nearest(&d.name, names.iter().copied()).map(str::to_owned),
         },
     ))
 }
@@ -357,39 +358,6 @@ pub(super) fn sampler_parameters(source: &str) -> Result<(), Vec<ShaderError>> {
 pub fn complain(mut error: ShaderError, complaint: Complaint) -> ShaderError {
     error.complaint = complaint;
     error
-}
-
-/// The known name nearest `name`, when one is close (at most 2 edits, or a third of its length).
-pub(super) fn nearest<'a>(name: &str, known: &[&'a str]) -> Option<&'a str> {
-    known
-        .iter()
-        .map(|k| (edit_distance(name, k), *k))
-        .filter(|(d, k)| *d <= 2.max(k.len() / 3))
-        .min()
-        .map(|(_, k)| k)
-}
-
-/// ` (did you mean `x`?)` when a known name is close to `name`.
-pub(super) fn did_you_mean(name: &str, known: &[&str]) -> String {
-    nearest(name, known).map_or_else(String::new, |k| format!(" (did you mean `{k}`?)"))
-}
-
-/// Levenshtein distance.
-pub(super) fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut cur = vec![i + 1];
-        for (j, cb) in b.iter().enumerate() {
-            cur.push(
-                (prev[j] + usize::from(ca != *cb))
-                    .min(prev[j + 1] + 1)
-                    .min(cur[j] + 1),
-            );
-        }
-        prev = cur;
-    }
-    prev[b.len()]
 }
 
 /// The GLSL spelling of a global's type.

@@ -30,6 +30,7 @@ mod modulo;
 mod ops;
 pub mod power;
 mod sampler_arguments;
+pub mod suggest;
 mod trace;
 mod translate;
 

@@ -202,12 +202,8 @@ pub fn names(spec: &SceneSpec) -> Vec<String> {
 /// The closest parameter name to `name`, if one is close.
 #[must_use]
 pub fn suggestion(spec: &SceneSpec, name: &str) -> Option<String> {
-    names(spec)
-        .into_iter()
-        .map(|n| (strsim::jaro_winkler(name, &n), n))
-        .filter(|(sim, _)| *sim >= 0.85)
-        .max_by(|a, b| a.0.total_cmp(&b.0))
-        .map(|(_, n)| n)
+    let names = names(spec);
+    pipeline::shader::suggest::nearest(name, names.iter().map(String::as_str)).map(str::to_owned)
 }
 
 fn number(v: &Value) -> Result<f32, String> {
@@ -255,7 +251,9 @@ pub fn apply(spec: &mut SceneSpec, name: &str, value: &Value) -> Result<(), Stri
     set(&mut next, name, value).map_err(|e| match e {
         Problem::Unknown => {
             let hint = suggestion(spec, name)
-                .map(|s| format!("; did you mean \"{s}\"?"))
+                .map(|s| {
+                    pipeline::shader::suggest::hint(&s, pipeline::shader::suggest::Quote::Value)
+                })
                 .unwrap_or_default();
             format!("unknown parameter \"{name}\"{hint}")
         }

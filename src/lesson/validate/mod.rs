@@ -144,27 +144,28 @@ impl<'a> Checker<'a> {
             base
         };
         let folder = std::path::absolute(here).unwrap_or_else(|_| here.to_path_buf());
-        let similar = path
+        let files = path
             .parent()
             .and_then(|dir| std::fs::read_dir(dir).ok())
             .into_iter()
             .flatten()
             .filter_map(|e| e.ok()?.file_name().into_string().ok())
+            .collect::<Vec<_>>();
+        let wanted = path
+            .file_name()
+            .map(|f| f.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        use pipeline::shader::suggest;
+        let hint = suggest::nearest(&wanted, files.iter().map(String::as_str))
             .map(|n| {
-                let wanted = path.file_name().map(|f| f.to_string_lossy().into_owned());
-                (strsim::jaro_winkler(&wanted.unwrap_or_default(), &n), n)
-            })
-            .filter(|(sim, _)| *sim >= 0.85)
-            .max_by(|a, b| a.0.total_cmp(&b.0))
-            .map(|(_, n)| {
                 let beside = Path::new(written).with_file_name(n);
-                format!("; did you mean \"{}\"?", beside.display())
+                suggest::hint(&beside.display().to_string(), suggest::Quote::Value)
             })
             .unwrap_or_default();
         self.error(
             span,
             format!(
-                "there is no file {} (paths are relative to the folder of the lesson or scene file, {}){similar}",
+                "there is no file {} (paths are relative to the folder of the lesson or scene file, {}){hint}",
                 resolved.display(),
                 folder.display()
             ),

@@ -331,12 +331,11 @@ fn builtin(
         "signal" => super::shapes::signal(c, span.clone(), t)?,
         "wheel" => super::shapes::wheel(c, span.clone(), t)?,
         other => {
-            let suggestion = BuiltinMesh::NAMES
-                .iter()
-                .min_by_key(|n| strsim::damerau_levenshtein(other, n))
-                .filter(|n| strsim::damerau_levenshtein(other, n) <= 3)
-                .map(|n| format!("; did you mean \"{n}\"?"))
-                .unwrap_or_default();
+            let suggestion = pipeline::shader::suggest::did_you_mean(
+                other,
+                BuiltinMesh::NAMES,
+                pipeline::shader::suggest::Quote::Value,
+            );
             c.error(
                 span,
                 format!(

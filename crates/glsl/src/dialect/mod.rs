@@ -276,9 +276,9 @@ fn varying_type_error(ty: &Token, storage: Storage) -> Option<DialectError> {
     Some(DialectError {
         span: ty.span.clone(),
         message: format!(
-            "`{}` is not a type an `{keyword}` can have{}: float, int, uint, vec2–4, ivec2–4, uvec2–4, mat2–4",
+            "`{}` is not a type an `{keyword}` can have: float, int, uint, vec2–4, ivec2–4, uvec2–4, mat2–4{}",
             ty.text,
-            super::check::did_you_mean(&ty.text, &VARYING_TYPES)
+            crate::suggest::did_you_mean(&ty.text, VARYING_TYPES, crate::suggest::Quote::Code)
         ),
     })
 }
