@@ -228,24 +228,7 @@ impl FragmentShading<'_> {
         });
         inputs.start_for(fs, batch.len() * 4);
         for (q, job) in batch.iter().enumerate() {
-            let t = &ctx.triangles[job.triangle as usize];
-            for j in 0..4 {
-                let l = q * 4 + j;
-                let (px, py) = (i64::from(job.x) + (j % 2) as i64, y + (j / 2) as i64);
-                if job.samples[j] == 0 {
-                    inputs.helper(l);
-                }
-                let centre = I64Vec2::new(px * ONE + ONE / 2, py * ONE + ONE / 2);
-                self.lane_inputs(
-                    &sh.programs,
-                    t,
-                    object,
-                    centre,
-                    (px, py),
-                    l,
-                    inputs.rows_mut(),
-                );
-            }
+            self.quad_inputs(&sh.programs, job, object, y, q * 4, inputs);
         }
         let tex = textures(fs, o, ctx.settings.sampler);
         let bindings = Bindings { textures: &tex };
@@ -313,22 +296,7 @@ impl FragmentShading<'_> {
         }
         let t = &ctx.triangles[job.triangle as usize];
         inputs.start_for(fs, 4);
-        for k in 0..4 {
-            let (px, py) = (i64::from(job.x) + (k % 2) as i64, y + (k / 2) as i64);
-            if job.samples[k] == 0 {
-                inputs.helper(k);
-            }
-            let centre = I64Vec2::new(px * ONE + ONE / 2, py * ONE + ONE / 2);
-            self.lane_inputs(
-                &sh.programs,
-                t,
-                object,
-                centre,
-                (px, py),
-                k,
-                inputs.rows_mut(),
-            );
-        }
+        self.quad_inputs(&sh.programs, &job, object, y, 0, inputs);
         let received = super::lane_values(&fs.inputs, inputs.rows(), j);
         let tex = textures(fs, o, ctx.settings.sampler);
         let bindings = Bindings { textures: &tex };
@@ -346,6 +314,30 @@ impl FragmentShading<'_> {
             trace: fs.describe(&events),
             output,
         })
+    }
+
+    /// Writes the fragment inputs of `job`'s quad (its top row at window row `y`) into lanes
+    /// `first..first + 4` of `inputs`, at each pixel's centre; a pixel the triangle covers no
+    /// sample of is a helper lane.
+    fn quad_inputs(
+        &self,
+        programs: &Programs,
+        job: &QuadJob,
+        object: usize,
+        y: i64,
+        first: usize,
+        inputs: &mut Batch,
+    ) {
+        let t = &self.ctx.triangles[job.triangle as usize];
+        for j in 0..4 {
+            let l = first + j;
+            let (px, py) = (i64::from(job.x) + (j % 2) as i64, y + (j / 2) as i64);
+            if job.samples[j] == 0 {
+                inputs.helper(l);
+            }
+            let centre = I64Vec2::new(px * ONE + ONE / 2, py * ONE + ONE / 2);
+            self.lane_inputs(programs, t, object, centre, (px, py), l, inputs.rows_mut());
+        }
     }
 
     /// Writes lane `l`'s fragment inputs for triangle `t` at fixed-point position `centre`
