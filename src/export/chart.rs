@@ -5,6 +5,7 @@ use anyhow::{Result, anyhow};
 use image::RgbaImage;
 use plotters::prelude::*;
 
+use super::palette::Palette;
 use crate::vocabulary::{Lang, profile};
 
 /// The family name the embedded font is registered under for plotters.
@@ -29,14 +30,14 @@ fn register_font() {
 
 /// The background, the axes' and the grid's colours: the app's dark plot on screen, dark ink
 /// on white in print.
-fn colours(palette: super::picture::Palette) -> (RGBColor, RGBColor, RGBColor) {
+fn colours(palette: Palette) -> (RGBColor, RGBColor, RGBColor) {
     match palette {
-        super::picture::Palette::Screen => (
+        Palette::Screen => (
             RGBColor(14, 14, 14),
             RGBColor(220, 220, 220),
             RGBColor(50, 50, 50),
         ),
-        super::picture::Palette::Print => (
+        Palette::Print => (
             RGBColor(255, 255, 255),
             RGBColor(30, 30, 30),
             RGBColor(215, 215, 215),
@@ -50,7 +51,7 @@ fn colours(palette: super::picture::Palette) -> (RGBColor, RGBColor, RGBColor) {
 /// When plotters cannot draw (an empty or degenerate chart area).
 pub fn profile_chart(
     curves: &[(String, Vec<[f64; 2]>)],
-    (lang, palette): (Lang, super::picture::Palette),
+    (lang, palette): (Lang, Palette),
     width: u32,
     height: u32,
 ) -> Result<RgbaImage> {

@@ -10,6 +10,7 @@ use pipeline::capture::{FragmentTrace, Matrices};
 use pipeline::scene::StudentCode;
 use pipeline::transform::NamedMatrix;
 
+use super::html;
 use crate::lesson::Lesson;
 use crate::vocabulary::glsl::localize;
 use crate::vocabulary::notation::{self, Node};
@@ -75,14 +76,6 @@ fn data_url(mime: &str, bytes: &[u8]) -> String {
     )
 }
 
-/// Escapes text for HTML.
-pub(super) fn esc(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
-}
-
 /// Typeset notation ([`notation`]) as HTML, as the app lays it out: scripts as `<sub>` and
 /// `<sup>`, a fraction's parts stacked over a bar, code in monospace, a narration's formula
 /// highlighted.
@@ -90,9 +83,9 @@ fn typeset(nodes: &[Node]) -> String {
     let mut s = String::new();
     for n in nodes {
         match n {
-            Node::Text(t) => s.push_str(&esc(t)),
+            Node::Text(t) => s.push_str(&html::esc(t)),
             Node::Code(t) => {
-                let _ = write!(s, "<code>{}</code>", esc(t));
+                let _ = write!(s, "<code>{}</code>", html::esc(t));
             }
             Node::Script { base, sub, sup } => {
                 s.push_str(&typeset(base));
@@ -273,7 +266,7 @@ pub fn html(lesson: &Lesson, pages: &[StepPage], lang: Lang, answers: bool) -> S
             h,
             "<p class=\"summary\"><span class=\"ui\">{}</span>: {}</p>",
             t("Before this lesson", "先修课"),
-            esc(&lesson.prerequisites.join(", "))
+            html::esc(&lesson.prerequisites.join(", "))
         );
     }
     let mut before: Option<&Matrices> = None;
@@ -282,7 +275,7 @@ pub fn html(lesson: &Lesson, pages: &[StepPage], lang: Lang, answers: bool) -> S
         before = Some(&page.matrices);
     }
     h.push_str("</body></html>\n");
-    let title = esc(lesson.title.get(lang));
+    let title = html::esc(lesson.title.get(lang));
     format!(
         "<!doctype html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\">\
          <meta name=\"viewport\" content=\"width=device-width\"><title>{title}</title>\n<style>\n{}{STYLE}{}</style></head><body>\n{h}",
@@ -302,7 +295,7 @@ fn step_html(
 ) {
     let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
     let step = &lesson.steps[page.index];
-    let title = esc(step.title.get(lang));
+    let title = html::esc(step.title.get(lang));
     let _ = write!(
         h,
         "<section id=\"step-{n}\"><h2>{n}. {heading}</h2>\n{body}",
@@ -318,7 +311,7 @@ fn step_html(
     let legend: String = page
         .legend
         .iter()
-        .map(|l| format!("<br>{}", esc(l)))
+        .map(|l| format!("<br>{}", html::esc(l)))
         .collect();
     let _ = writeln!(
         h,
@@ -350,7 +343,7 @@ fn step_html(
                 h,
                 "<figure><img src=\"{}\" alt=\"{c}\"><figcaption>{c}</figcaption></figure>",
                 f.image.url(),
-                c = esc(&f.caption)
+                c = html::esc(&f.caption)
             );
         }
         h.push_str("</div>\n");
@@ -484,7 +477,7 @@ fn trace_html((x, y): (u32, u32), fragments: &[FragmentTrace], lang: Lang) -> St
             let _ = write!(
                 h,
                 "<tr><td class=\"n\">{n}</td><td class=\"l\">{}</td></tr>",
-                esc(text)
+                html::esc(text)
             );
         };
         // Each input under GLSL's own word for it (no Chinese in the narrow number column:

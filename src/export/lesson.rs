@@ -13,7 +13,8 @@ use rayon::prelude::*;
 
 use super::filmstrip;
 use super::handout::{self, Animated, Frame, StepPage};
-use super::picture::{Palette, Rendered, step_picture};
+use super::palette::Palette;
+use super::picture::{Rendered, step_picture};
 use super::{ExportFile, ExportOptions, encode_capture, png_rgba, profile_csv, write_files};
 use crate::lesson::param::Value;
 use crate::lesson::{Lesson, SceneSpec};

@@ -117,10 +117,10 @@ pub fn html(source: &str, marked: &[usize]) -> String {
                     let _ = write!(
                         line,
                         "<span class=\"{c}\">{}</span>",
-                        super::handout::esc(part)
+                        super::html::esc(part)
                     );
                 }
-                _ => line.push_str(&super::handout::esc(part)),
+                _ => line.push_str(&super::html::esc(part)),
             }
         }
     }

@@ -11,6 +11,7 @@ use pipeline::buffers::BufferKind;
 use pipeline::capture::FrameCapture;
 use pipeline::overlay::{OverlayKind, Shape};
 
+use super::palette::Palette;
 use super::text;
 use crate::lesson::script::{Layout, Overlay};
 use crate::lesson::{Lesson, SceneSpec};
@@ -34,17 +35,6 @@ const SELECTED: [u8; 4] = [255, 215, 0, 255];
 const MAX_SHAPES: usize = 20_000;
 /// The width a buffer is magnified towards (by a whole factor, so pixels stay square).
 const TARGET_WIDTH: u32 = 640;
-
-/// The colours of the drawn (not rendered) pictures: the app's dark ones for the screen and
-/// slides, dark ink on white for print (a handout), which would otherwise print black
-/// rectangles. Rendered buffers are the same in both.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Palette {
-    /// As the app draws them.
-    Screen,
-    /// On paper.
-    Print,
-}
 
 /// Step `k`'s picture, its drawings in `palette`.
 ///
@@ -162,7 +152,7 @@ fn space_picture(
     (lang, palette): (Lang, Palette),
 ) -> Option<RgbaImage> {
     let print = palette == Palette::Print;
-    let ink = |rgb: [u8; 3], a: u8| ink(palette, rgb, a);
+    let ink = |rgb: [u8; 3], a: u8| palette.ink(rgb, a);
     let subject = spaces::subject(capture, focus, vertex, space);
     let (centre, radius) = spaces::bounds(capture, [space, space], &subject)?;
     let (w, h) = SPACE_PICTURE;
@@ -257,17 +247,6 @@ fn space_picture(
         spaces::space_name(space, lang),
         palette,
     )
-}
-
-/// On white, the colours the app draws on black are darkened to read as well.
-fn ink(palette: Palette, [r, g, b]: [u8; 3], a: u8) -> [u8; 4] {
-    match palette {
-        Palette::Screen => [r, g, b, a],
-        Palette::Print => {
-            let dark = |c: u8| (f32::from(c) * 0.62) as u8;
-            [dark(r), dark(g), dark(b), a]
-        }
-    }
 }
 
 /// A `w`×`h` drawing: `shapes` on the palette's ground, the axes' `labels` and the `title`

@@ -1,6 +1,8 @@
 //! A shader's compile messages as sentences in the interface's language: the mistake the core
 //! read from naga's message ([`Complaint`]) said plainly at the student's line, and naga's own
-//! wording only where no sentence covers it.
+//! wording only where no sentence covers it; the code that stopped while it ran (an endless loop,
+//! an index out of range, a `texelFetch` outside its texture, a division by zero) too, since the
+//! engine reports it as a complaint at its line.
 
 use pipeline::shader::{Complaint, ShaderError, interface};
 
@@ -175,7 +177,35 @@ fn form(c: &Complaint, lang: Lang) -> Option<String> {
             ),
             format!("实参与 `{name}` 的形参 {parameters} 不相符：请检查每个实参的类型"),
         ),
-        _ => return own(c, lang).or_else(|| super::run::fault(c, lang)),
+        _ => return own(c, lang).or_else(|| fault(c, lang)),
+    })
+}
+
+/// The sentence for a run-time complaint in Chinese (`None` in English, where the core's
+/// message says it, and for a complaint that is not a run-time one).
+fn fault(c: &Complaint, lang: Lang) -> Option<String> {
+    use Complaint as C;
+    if lang == Lang::En {
+        return None;
+    }
+    Some(match c {
+        C::EndlessLoop { budget } => format!(
+            "循环执行超过了 {budget} 步（是不是死循环？如果它本来就要运行更久，请在 [scene.render] 中用 `max_steps` 提高上限）"
+        ),
+        C::IndexOutOfRange {
+            index,
+            last,
+            name: Some(name),
+        } => format!("下标 {index} 越界：`{name}` 的下标只能是 0 到 {last}"),
+        C::IndexOutOfRange { index, last, .. } => {
+            format!("下标 {index} 越界（只能是 0 到 {last}）")
+        }
+        C::TexelOutside { i, j, level } => {
+            format!("texelFetch 读取的 ({i}, {j})（第 {level} 层）在纹理之外")
+        }
+        C::DivisionByZero { remainder: false } => "整数除以零".to_owned(),
+        C::DivisionByZero { remainder: true } => "整数对零取余（%）".to_owned(),
+        _ => return None,
     })
 }
 

@@ -5,40 +5,10 @@
 use pipeline::camera::ProjectionProblem;
 use pipeline::scene::SceneProblem;
 use pipeline::settings::{MAX_CAPTURE_BYTES, MAX_VIEWPORT_SIDE, SettingsProblem};
-use pipeline::shader::Complaint;
 use pipeline::transform::TransformError;
 use pipeline::{CodePart, RenderError};
 
 use super::Lang;
-
-/// The sentence for a run-time complaint in Chinese (`None` in English, where the core's
-/// message says it, and for a complaint that is not a run-time one).
-#[must_use]
-pub fn fault(c: &Complaint, lang: Lang) -> Option<String> {
-    use Complaint as C;
-    if lang == Lang::En {
-        return None;
-    }
-    Some(match c {
-        C::EndlessLoop { budget } => format!(
-            "循环执行超过了 {budget} 步（是不是死循环？如果它本来就要运行更久，请在 [scene.render] 中用 `max_steps` 提高上限）"
-        ),
-        C::IndexOutOfRange {
-            index,
-            last,
-            name: Some(name),
-        } => format!("下标 {index} 越界：`{name}` 的下标只能是 0 到 {last}"),
-        C::IndexOutOfRange { index, last, .. } => {
-            format!("下标 {index} 越界（只能是 0 到 {last}）")
-        }
-        C::TexelOutside { i, j, level } => {
-            format!("texelFetch 读取的 ({i}, {j})（第 {level} 层）在纹理之外")
-        }
-        C::DivisionByZero { remainder: false } => "整数除以零".to_owned(),
-        C::DivisionByZero { remainder: true } => "整数对零取余（%）".to_owned(),
-        _ => return None,
-    })
-}
 
 /// Why the frame could not be drawn, in `lang`: the code that stopped, the object it ran on,
 /// and its message at its line in the interface's language; a problem of the scene or the
@@ -157,6 +127,8 @@ pub fn projection_problem(p: &ProjectionProblem, lang: Lang) -> String {
 
 #[cfg(test)]
 mod tests {
+    use pipeline::shader::Complaint;
+
     use super::*;
 
     /// A loop past its budget in a fragment shader, said in Chinese with its line, its object

@@ -2,11 +2,9 @@
 //! words said plainly, the uniforms, textures and attributes pipelens provides (with "did you
 //! mean"), uniforms never assigned, outputs always written.
 
-use std::ops::Range;
-
 use crate::complaint::Complaint;
-use crate::error::{ShaderError, error_at};
-use crate::program::Stage;
+use crate::error::{ShaderError, error_at, main_span};
+use crate::stage::Stage;
 use crate::suggest::{Quote, did_you_mean, nearest};
 use crate::trace::glsl_type;
 use crate::{code, dialect, interface};
@@ -450,11 +448,6 @@ pub(super) fn check_writes(
 /// What a vertex shader without `gl_Position` is told.
 pub(super) const NO_POSITION: &str = "the vertex shader never writes `gl_Position` (the clip-space position): \
                            add `gl_Position = mvp * vec4(position, 1.0);`";
-
-/// Where `void main` is, for messages about the whole shader.
-pub(super) fn main_span(source: &str) -> Range<usize> {
-    source.find("main").map_or(0..0, |i| i..i + 4)
-}
 
 pub(super) fn stores_into(stmts: &[code::Stmt], name: &str) -> bool {
     let mut s = Vec::new();

@@ -4,7 +4,8 @@
 
 use crate::complaint::{self, Complaint};
 use crate::error::{ShaderError, error_at};
-use crate::program::{Program, Stage, interface_of};
+use crate::program::{Program, interface_of};
+use crate::stage::Stage;
 use crate::{check, code, dialect, glsl330, lexeme, modulo, translate};
 
 /// naga's parse errors at the student's lines, each with its complaint (a missing `;` at the
@@ -119,7 +120,7 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
         let message = check::validation_message(e.as_inner());
         if message.contains("builtin(position)") {
             return vec![check::complain(
-                error_at(source, check::main_span(source), check::NO_POSITION),
+                error_at(source, crate::error::main_span(source), check::NO_POSITION),
                 Complaint::NoPosition,
             )];
         }

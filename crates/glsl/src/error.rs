@@ -85,3 +85,8 @@ pub fn error_at(src: &str, span: Range<usize>, message: impl Into<String>) -> Sh
         complaint: Complaint::Other,
     }
 }
+
+/// Where `void main` is, for messages about the whole shader.
+pub(crate) fn main_span(source: &str) -> Range<usize> {
+    source.find("main").map_or(0..0, |i| i..i + 4)
+}

@@ -30,6 +30,7 @@ mod modulo;
 mod ops;
 pub mod power;
 mod sampler_arguments;
+mod stage;
 pub mod suggest;
 mod trace;
 mod translate;

@@ -3,29 +3,11 @@
 
 use naga::{Binding, BuiltIn, Interpolation, TypeInner};
 
+use crate::error::main_span;
 use crate::error::{Origin, ShaderError, error_at};
 use crate::machine::{Machine, RunError};
-use crate::{check, code, dialect};
-
-/// Which programmable stage a shader is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Stage {
-    /// Runs once per vertex: writes `gl_Position` and the varyings.
-    Vertex,
-    /// Runs once per fragment: writes the colour, or discards.
-    Fragment,
-}
-
-impl Stage {
-    /// "vertex" or "fragment".
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Vertex => "vertex",
-            Self::Fragment => "fragment",
-        }
-    }
-}
+pub use crate::stage::Stage;
+use crate::{code, dialect};
 
 /// How a varying is interpolated across a triangle (GLSL's qualifiers).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -179,7 +161,7 @@ impl Program {
             .declarations
             .iter()
             .find(|d| d.name == name)
-            .map_or_else(|| check::main_span(&self.source), |d| d.name_span.clone());
+            .map_or_else(|| main_span(&self.source), |d| d.name_span.clone());
         error_at(&self.source, span, message)
     }
 

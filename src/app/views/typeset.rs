@@ -336,6 +336,12 @@ pub fn paragraph(ui: &mut Ui, text: &str, style: &Style) -> Response {
     response
 }
 
+/// A note in smaller type, legible (not greyed out).
+pub fn note(ui: &mut Ui, text: &str) {
+    let style = Style::body(ui);
+    paragraph(ui, text, &style.sized(style.size * 0.9));
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

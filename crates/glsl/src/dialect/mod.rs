@@ -23,10 +23,20 @@
 
 use std::ops::Range;
 
+mod declaration;
+mod names;
 mod preamble;
+mod scan;
 
-use crate::program::Stage;
+pub use declaration::{Declaration, Storage};
+pub(crate) use names::SAMPLERS;
+pub use names::{FRAG_COLOR, LIGHT_DECLARATIONS, SAMPLER_PREFIX, TEXTURE_PREFIX};
+pub(crate) use scan::version_directive;
+
+use crate::stage::Stage;
+use names::sampler_kind;
 use preamble::Preamble;
+use scan::{Token, top_level};
 
 /// The student's source adapted for naga, with the map back to the student's text.
 #[derive(Clone, Debug)]
@@ -48,34 +58,6 @@ pub struct Adapted {
     pub declarations: Vec<Declaration>,
 }
 
-/// What a top-level declaration of the student's declares.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Storage {
-    /// `uniform` (not a sampler).
-    Uniform,
-    /// `uniform sampler2D` or `uniform samplerCube`.
-    Texture,
-    /// `in` (or `attribute`, or `varying` in a fragment shader).
-    Input,
-    /// `out` (or `varying` in a vertex shader).
-    Output,
-}
-
-/// One name a student's declaration declares (`in vec3 a, b;` declares two).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Declaration {
-    /// How it is stored.
-    pub storage: Storage,
-    /// The name as written.
-    pub name: String,
-    /// The type as written (`vec3`, `Light`), without array brackets.
-    pub type_name: String,
-    /// Where the whole declaration is in the student's text (bytes).
-    pub span: Range<usize>,
-    /// Where the name is in the student's text (bytes).
-    pub name_span: Range<usize>,
-}
-
 /// A mistake in the student's declarations found before naga reads the source.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct DialectError {
@@ -84,29 +66,6 @@ pub struct DialectError {
     /// What is wrong, as a sentence.
     pub message: String,
 }
-
-/// The preamble every shader starts with: pipelens' light type and its kinds.
-pub const LIGHT_DECLARATIONS: &str = "struct Light { int kind; vec3 position; vec3 direction; \
-vec3 intensity; vec3 attenuation; float cutoff_cos; float exponent; };\n\
-const int LIGHT_AMBIENT = 0; const int LIGHT_POINT = 1; const int LIGHT_DIRECTIONAL = 2; \
-const int LIGHT_SPOT = 3; const int MAX_LIGHTS = 8;\n";
-
-/// The combined samplers a student may declare, with the separate texture type naga reads
-/// behind each: a 2D texture, and a cube map looked up by direction.
-pub(super) const SAMPLERS: [(&str, &str); 2] =
-    [("sampler2D", "texture2D"), ("samplerCube", "textureCube")];
-
-/// The sampler type `name` and its texture type, if it is one pipelens binds.
-fn sampler_kind(name: &str) -> Option<(&'static str, &'static str)> {
-    SAMPLERS.iter().copied().find(|(s, _)| *s == name)
-}
-
-/// Prefix of the names pipelens gives the texture and sampler behind a `sampler2D`.
-pub const TEXTURE_PREFIX: &str = "pl_texture_";
-/// See [`TEXTURE_PREFIX`].
-pub const SAMPLER_PREFIX: &str = "pl_sampler_";
-/// The output a GLSL 1.x fragment shader's `gl_FragColor` becomes.
-pub const FRAG_COLOR: &str = "pl_FragColor";
 
 impl Adapted {
     /// The student's byte offset that naga's offset `at` (in [`Self::text`]) stands for.
@@ -136,124 +95,6 @@ impl Adapted {
         }
         start..self.original_offset(span.end.max(span.start)).max(start)
     }
-}
-
-/// A top-level statement's tokens, with the offset just after its `;`.
-type Statement = (Vec<Token>, usize);
-
-/// A token of the light scan: a word, or one character of punctuation.
-#[derive(Clone, Debug)]
-struct Token {
-    text: String,
-    span: Range<usize>,
-}
-
-/// The `#version` directive's place in `src`, from its `#` to the end of its line, as the
-/// adaptation finds it (a directive in a comment is none).
-pub(super) fn version_directive(src: &str) -> Option<Range<usize>> {
-    top_level(src).1
-}
-
-/// Splits `src` into tokens, leaving out comments, and into top-level statements. Returns the
-/// top-level declarations (token lists ending before their `;`, with the offset just after
-/// it), and the `#version` line.
-fn top_level(src: &str) -> (Vec<Statement>, Option<Range<usize>>) {
-    let bytes = src.as_bytes();
-    let mut statements = Vec::new();
-    let mut current: Vec<Token> = Vec::new();
-    let mut version = None;
-    let (mut depth, mut i, mut at_line_start) = (0usize, 0usize, true);
-    // Whether the current top-level statement opened a body (a function, a struct, a block).
-    let mut opened_body = false;
-    while i < bytes.len() {
-        let c = bytes[i];
-        if c == b'\n' {
-            at_line_start = true;
-            i += 1;
-            continue;
-        }
-        if c.is_ascii_whitespace() {
-            i += 1;
-            continue;
-        }
-        if src[i..].starts_with("//") {
-            i = src[i..].find('\n').map_or(bytes.len(), |n| i + n);
-            continue;
-        }
-        if src[i..].starts_with("/*") {
-            i = src[i + 2..]
-                .find("*/")
-                .map_or(bytes.len(), |n| i + 2 + n + 2);
-            continue;
-        }
-        if c == b'#' && at_line_start {
-            // A preprocessor line, with its `\` continuations.
-            let start = i;
-            while i < bytes.len() && !(bytes[i] == b'\n' && bytes[i - 1] != b'\\') {
-                i += 1;
-            }
-            let line = src[start..i].trim_end_matches('\r');
-            if line
-                .trim_start_matches('#')
-                .trim_start()
-                .starts_with("version")
-            {
-                version = Some(start..start + line.len());
-            }
-            continue;
-        }
-        at_line_start = false;
-        if c.is_ascii_alphanumeric() || c == b'_' || c == b'.' {
-            let start = i;
-            while i < bytes.len()
-                && (bytes[i].is_ascii_alphanumeric() || matches!(bytes[i], b'_' | b'.'))
-            {
-                i += 1;
-            }
-            if depth == 0 && !opened_body {
-                current.push(Token {
-                    text: src[start..i].to_owned(),
-                    span: start..i,
-                });
-            }
-            continue;
-        }
-        let ch = src[i..].chars().next().map_or(1, char::len_utf8);
-        match c {
-            b'{' => {
-                if depth == 0 && !opened_body {
-                    current.push(Token {
-                        text: "{".to_owned(),
-                        span: i..i + 1,
-                    });
-                    opened_body = true;
-                }
-                depth += 1;
-            }
-            b'}' => {
-                depth = depth.saturating_sub(1);
-                // A function's body ends its statement; a struct's or block's ends at `;`.
-                if depth == 0 && current.iter().any(|t| t.text == "(") {
-                    current.clear();
-                    opened_body = false;
-                }
-            }
-            b';' if depth == 0 => {
-                // A struct's or block's body was skipped: its tokens end at its `{`.
-                statements.push((std::mem::take(&mut current), i + 1));
-                opened_body = false;
-            }
-            _ if depth == 0 && !opened_body => {
-                current.push(Token {
-                    text: src[i..i + ch].to_owned(),
-                    span: i..i + ch,
-                });
-            }
-            _ => {}
-        }
-        i += ch;
-    }
-    (statements, version)
 }
 
 /// The types an `in` or `out` may have.

@@ -5,8 +5,10 @@
 
 use std::ops::Range;
 
-use super::{Declaration, LIGHT_DECLARATIONS, SAMPLER_PREFIX, Storage, TEXTURE_PREFIX, Token};
-use crate::program::Stage;
+use super::declaration::{Declaration, Storage};
+use super::names::{LIGHT_DECLARATIONS, SAMPLER_PREFIX, TEXTURE_PREFIX};
+use super::scan::Token;
+use crate::stage::Stage;
 
 /// The preamble as it is built, with what each of its pieces stands for.
 pub(super) struct Preamble {

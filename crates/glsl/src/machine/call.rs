@@ -1,8 +1,10 @@
 //! A call's arguments: `in` values copied into the callee's registers, `out` and `inout`
 //! variables copied into its parameters and, when it returns, back (GLSL 3.30 §6.1.1).
 
-use super::super::code::{Argument, Parameter, Root};
-use super::{Event, LANES, Machine, Res, bit};
+use super::events::Event;
+use super::lanes::{LANES, bit};
+use super::run::{Machine, Res};
+use crate::code::{Argument, Parameter, Root};
 
 impl Machine<'_> {
     /// Copies a call's arguments into the callee `to`: an `in` value into its register, an

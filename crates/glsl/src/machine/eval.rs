@@ -5,10 +5,13 @@
 
 use naga::{RelationalFunction, UnaryOperator};
 
-use super::super::code::{Function, Kind, Op, Place, Reg, Root, Shape};
-use super::super::ops;
-use super::{LANES, Machine, Res, RunError, Textures, bit, masked_copy};
+use super::events::RunError;
+use super::lanes::{LANES, bit, masked_copy};
+use super::run::{Machine, Res};
+use super::textures::Textures;
+use crate::code::{Function, Kind, Op, Place, Reg, Root, Shape};
 use crate::complaint::Complaint;
+use crate::ops;
 
 impl Machine<'_> {
     pub(super) fn store(

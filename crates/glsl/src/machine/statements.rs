@@ -3,21 +3,11 @@
 //! `if` joins its branches' lanes, a loop hands on those that left it; `break` and `continue`
 //! take theirs out and record them in `Flow`, `return` and `discard` take theirs out).
 
-use super::{Event, Flow, LANES, Machine, Res, RunError, Textures, bit, lanes_where, masked_copy};
+use super::events::{Event, RunError};
+use super::lanes::{LANES, bit, lanes_where, masked_copy};
+use super::run::{Flow, Machine, Res, Running};
 use crate::code::{Call, If, Loop, Reg, Stmt, Switch};
 use crate::complaint::Complaint;
-
-/// What every statement of a running function shares: which function, the lanes that are
-/// invocations (not a quad's helpers), and the textures.
-#[derive(Clone, Copy)]
-pub(super) struct Running<'b> {
-    /// The function's index.
-    pub fi: usize,
-    /// The lanes whose writes and errors count.
-    pub live: u64,
-    /// The host's textures.
-    pub textures: &'b dyn Textures,
-}
 
 impl Machine<'_> {
     /// Runs `stmts` in the lanes of `mask`; the lanes that reach the block's end.

@@ -6,8 +6,9 @@
 
 use glam::{IVec2, Vec2, Vec3};
 
-use super::super::code::{Level, Op};
-use super::{LANES, Texel, Textures, bit};
+use super::lanes::{LANES, bit};
+use super::textures::{Texel, Textures};
+use crate::code::{Level, Op};
 use crate::complaint::Complaint;
 
 /// Runs the lookup `op` over lanes `0..n`, its operands' rows given by `row(register,

@@ -4,8 +4,8 @@
 use naga::valid::FunctionInfo;
 use naga::{Expression, Handle, Statement, TypeInner};
 
-use super::super::code::{Argument, Call, Function, If, Loop, Stmt, Switch, Unsupported};
-use super::{Translator, describe};
+use super::translator::{Translator, describe};
+use crate::code::{Argument, Call, Function, If, Loop, Stmt, Switch, Unsupported};
 
 impl Translator<'_> {
     /// A call's arguments: an `in` parameter's value by its register, an `out` or `inout`

@@ -5,8 +5,8 @@
 use naga::valid::FunctionInfo;
 use naga::{Expression, Handle};
 
-use super::super::code::{Level, Op, OpError, Reg};
-use super::Translator;
+use super::translator::Translator;
+use crate::code::{Level, Op, OpError, Reg};
 
 impl Translator<'_> {
     /// Whether `image` is a cube map's texture (`samplerCube`).
@@ -113,7 +113,7 @@ impl Translator<'_> {
             ref other => {
                 return Err(format!(
                     "a texture operation pipelens does not run yet ({})",
-                    super::describe(other)
+                    super::translator::describe(other)
                 )
                 .into());
             }

@@ -5,6 +5,7 @@
 //! colours share the index. Triangles are counter-clockwise seen from outside (their front face).
 
 mod builtin;
+mod drawing;
 pub mod implicit;
 mod obj;
 pub mod patch;

@@ -9,7 +9,7 @@ use rustfft::FftPlanner;
 use rustfft::num_complex::Complex;
 use serde::Serialize;
 
-use super::builtin::{polyline, quad, square};
+use super::drawing::{polyline, quad, square};
 use super::{Mesh, MeshLabel};
 
 const AXIS: Vec3 = Vec3::new(0.45, 0.47, 0.52);

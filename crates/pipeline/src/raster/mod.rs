@@ -27,11 +27,12 @@
 //! buffers (the z-buffer), the depth test and rasterizing into them in [`zbuffer`].
 
 mod cleared;
+mod covered;
 mod samples;
 mod student;
 mod zbuffer;
 
-pub(crate) use cleared::CoveredRows;
+pub(crate) use covered::CoveredRows;
 pub use samples::*;
 pub use zbuffer::*;
 

@@ -6,7 +6,7 @@ use glam::I64Vec2;
 use serde::Serialize;
 use wide::i64x4;
 
-use super::cleared::Covered;
+use super::covered::Covered;
 use super::{ONE, RasterTriangle, Samples};
 
 /// The depth test: a fragment is kept when `compare(fragment_depth, stored_depth)` holds.

@@ -31,7 +31,7 @@ pub fn ui(ui: &mut Ui, session: &Session, capture: &FrameCapture) {
         Teaching::Projection => projection(ui, capture, lang, true),
         _ => {
             matrix(ui, &m.viewport, lang, "focused-viewport", true);
-            note(
+            typeset::note(
                 ui,
                 lang.tr(
                     "GAMES101's M_viewport maps x and y the same way and leaves z unchanged; OpenGL (and pipelens) also maps z from [−1, 1] to z_w ∈ [0, 1]. (The notes label this matrix M_{persp→ortho} by mistake.)",
@@ -83,18 +83,12 @@ fn object_caption(ui: &mut Ui, session: &Session, capture: &FrameCapture, k: usi
     }
 }
 
-/// A note in smaller type, legible (not greyed out).
-pub(super) fn note(ui: &mut Ui, text: &str) {
-    let style = typeset::Style::body(ui);
-    typeset::paragraph(ui, text, &style.sized(style.size * 0.9));
-}
-
 /// The projection in OpenGL's form, then GAMES101's, and how they relate.
 fn projection(ui: &mut Ui, capture: &FrameCapture, lang: Lang, open: bool) {
     let m = &capture.matrices;
     matrix(ui, &m.projection, lang, "projection", open);
     ui.add_space(6.0);
-    note(
+    typeset::note(
         ui,
         lang.tr(
             "The same projection in GAMES101's terms (n = −near, f = −far):",
@@ -102,7 +96,7 @@ fn projection(ui: &mut Ui, capture: &FrameCapture, lang: Lang, open: bool) {
         ),
     );
     matrix(ui, &m.projection_games101, lang, "games101", open);
-    note(
+    typeset::note(
         ui,
         if capture.projection.is_perspective() {
             lang.tr(

@@ -4,7 +4,6 @@
 
 use egui::{RichText, Ui};
 
-use super::matrices::note;
 use crate::app::session::Session;
 use crate::app::views::typeset;
 
@@ -57,7 +56,7 @@ fn axis_forms(ui: &mut Ui, session: &Session, k: usize) {
             "R(n, θ) = cos θ·I + (1 − cos θ)·n·n^T + sin θ·N",
             &style,
         );
-        note(
+        typeset::note(
             ui,
             &format!(
                 "{} n = ({:.3}, {:.3}, {:.3}), θ = {degrees:.1}°",
@@ -76,7 +75,7 @@ fn axis_forms(ui: &mut Ui, session: &Session, k: usize) {
         ui.add_space(4.0);
         let q = glam::Quat::from_axis_angle(n, theta);
         typeset::formula(ui, "q = (cos(θ/2), sin(θ/2)·n), v′ = q·v·q^(−1)", &style);
-        note(
+        typeset::note(
             ui,
             &format!(
                 "q = ({:.3}, {:.3}, {:.3}, {:.3}) {}",
@@ -92,7 +91,7 @@ fn axis_forms(ui: &mut Ui, session: &Session, k: usize) {
         );
         crate::app::views::matrix_grid(ui, &glam::Mat4::from_quat(q), "quaternion");
         let half = glam::Quat::IDENTITY.slerp(q, 0.5);
-        note(
+        typeset::note(
             ui,
             &format!(
                 "slerp(1, q, ½) = ({:.3}, {:.3}, {:.3}, {:.3}): {}",
@@ -146,7 +145,7 @@ fn slerp_forms(
             "slerp(q₀, q₁, t) = [sin((1 − t)Ω)·q₀ + sin(tΩ)·q₁]/(sin Ω), cos Ω = q₀·q₁",
             &style,
         );
-        note(
+        typeset::note(
             ui,
             &format!(
                 "q₀ = {} ({degrees:.1}°, {})",
@@ -154,7 +153,7 @@ fn slerp_forms(
                 lang.tr("the first axis", "第一个轴"),
             ),
         );
-        note(
+        typeset::note(
             ui,
             &format!(
                 "q₁ = {} ({:.1}°, {})",
@@ -172,7 +171,7 @@ fn slerp_forms(
         } else {
             ""
         };
-        note(
+        typeset::note(
             ui,
             &format!(
                 "q₀·q₁ = {dot:.3}{flip}; Ω = {:.1}°, {} 2Ω = {:.1}°",
@@ -181,7 +180,7 @@ fn slerp_forms(
                 2.0 * arc.omega.to_degrees()
             ),
         );
-        note(
+        typeset::note(
             ui,
             &format!(
                 "t = {:.2}: {} {a:.3}, {b:.3}",
@@ -189,7 +188,7 @@ fn slerp_forms(
                 lang.tr("weights", "权重"),
             ),
         );
-        note(
+        typeset::note(
             ui,
             &format!(
                 "slerp = {} = {angle:.1}° {} ({:.3}, {:.3}, {:.3})",
