@@ -12,14 +12,6 @@ use super::PipelensApp;
 use super::session::Command;
 use crate::vocabulary::{Lang, Stage};
 
-/// Whether the window is too small for the desktop's bar and card: narrower than 700 points
-/// (a phone or a tablet in portrait) or lower than 480 (a phone in landscape).
-#[must_use]
-pub fn is_compact(ctx: &Context) -> bool {
-    let r = ctx.content_rect();
-    r.width() < 700.0 || r.height() < 480.0
-}
-
 /// The least a swipe moves across (points), and how much more across than down it goes.
 const SWIPE: f32 = 60.0;
 

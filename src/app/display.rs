@@ -40,27 +40,6 @@ pub fn size(image: (u32, u32), view: [u32; 2]) -> Option<(u32, u32)> {
     (s.is_finite() && s >= LEAST_SCALE).then(|| ((w * s).round() as u32, (h * s).round() as u32))
 }
 
-/// What the next job renders at the view's resolution for `session`, if anything: the buffer
-/// shown and the size. Not while a parameter is dragged or an animation plays (the frames must
-/// keep up; the finer picture follows when they stop), nor beside
-/// a comparison, nor when the student's shaders run (interpreted, each pixel traced: the lesson's
-/// pixels are the ones the exercise compares).
-#[must_use]
-pub fn job(session: &crate::app::session::Session) -> Option<(BufferKind, (u32, u32))> {
-    let sel = &session.selection;
-    let settings = &session.spec.settings;
-    let playing = session.lesson.as_ref().is_some_and(|p| p.playing);
-    let shown = wanted(sel.stage, sel.buffer)
-        && !session.drafting
-        && !playing
-        && sel.comparison.is_none()
-        && !session.spec.scene.has_shaders();
-    shown
-        .then(|| size((settings.width, settings.height), session.view_pixels?))
-        .flatten()
-        .map(|s| (sel.buffer, s))
-}
-
 /// The finer render on screen, and what the latest job asked for (a render that could not be
 /// made is not asked for again until the view asks for something else).
 #[derive(Clone, Debug, Default)]
@@ -69,19 +48,6 @@ pub struct Fine {
     pub capture: Option<Arc<FrameCapture>>,
     /// What the latest job asked for.
     pub asked: Option<(BufferKind, (u32, u32))>,
-}
-
-/// Whether the view now asks for a finer render the latest job did not: another buffer, or a
-/// size more than 5 % wider or narrower (a window being resized does not render every frame).
-#[must_use]
-pub fn missing(session: &crate::app::session::Session) -> bool {
-    match (job(session), session.display.asked) {
-        (Some((b, size)), Some((asked_b, asked))) => {
-            b != asked_b || size.0.abs_diff(asked.0) * 20 > asked.0
-        }
-        (Some(_), None) => true,
-        (None, _) => false,
-    }
 }
 
 /// `spec` rendered at `size`, keeping only `buffer`; `None` when it cannot be rendered (the

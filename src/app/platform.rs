@@ -1,5 +1,5 @@
-//! What differs between the desktop and the browser, and only that: how the app starts (a
-//! native window, or a canvas in a page), how a dropped file's bytes are read (at once, or in
+//! What differs between the desktop and the browser once the app runs, and only that (how it
+//! starts is `start.rs`): how a dropped file's bytes are read (at once, or in
 //! the background as browsers require), and where the title goes (the window's, or the tab's:
 //! `document.title`), and how the render thread is woken. Everything else runs the same. In a
 //! page that is cross-origin isolated, the threaded build's rayon pool runs on Web Workers over
@@ -207,42 +207,11 @@ pub fn unsaved(key: &std::path::Path) -> Option<String> {
     }
 }
 
-/// Opens the window on `doc` and runs until it is closed.
-///
-/// # Errors
-/// When no window can be opened (no display, no OpenGL).
-#[cfg(not(target_arch = "wasm32"))]
-pub fn run(
-    doc: crate::lesson::Document,
-    source: String,
-    path: Option<std::path::PathBuf>,
-    start: super::Start,
-) -> anyhow::Result<()> {
-    let options = eframe::NativeOptions {
-        viewport: egui::ViewportBuilder::default()
-            .with_title("pipelens")
-            .with_inner_size([1366.0, 768.0])
-            .with_min_inner_size([320.0, 320.0]),
-        // The app's storage keeps the student's progress, not the window's place.
-        persist_window: false,
-        ..Default::default()
-    };
-    eframe::run_native(
-        "pipelens",
-        options,
-        Box::new(move |cc| Ok(Box::new(super::create(cc, doc, &source, path, start)))),
-    )
-    .map_err(|e| {
-        anyhow::anyhow!(
-            "cannot open the window: {e}\n(with no display, `pipelens export --out DIR` renders and writes every stage headless)"
-        )
-    })
-}
-
 /// The rayon pool's threads the page started (`start`'s `threads`): 0 in the single-threaded
 /// build, or where the page is not cross-origin isolated.
 #[cfg(target_arch = "wasm32")]
-static POOL_THREADS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+pub(super) static POOL_THREADS: std::sync::atomic::AtomicUsize =
+    std::sync::atomic::AtomicUsize::new(0);
 
 /// Whether a page's render worker may run beside its UI thread: only when the page's rayon pool
 /// runs on Web Workers (the worker is then one of them, see `worker::spawn`).
@@ -284,61 +253,4 @@ pub fn waker(ctx: &egui::Context) -> impl Fn() + Send + 'static {
         let ctx = ctx.clone();
         move || ctx.request_repaint()
     }
-}
-
-/// Starts the app in the page's `canvas` on the built-in tour, in the language the page asks for
-/// (`?lang=zh`), on a step if it names one (`&step=3`, counted from 1). `threads` is the size of
-/// the rayon pool the page started on Web Workers (`initThreadPool`), 0 when it has none.
-///
-/// # Errors
-/// When the canvas has no WebGL2 or the app cannot start.
-#[cfg(target_arch = "wasm32")]
-pub async fn start(
-    canvas: web_sys::HtmlCanvasElement,
-    threads: usize,
-) -> Result<(), wasm_bindgen::JsValue> {
-    POOL_THREADS.store(threads, std::sync::atomic::Ordering::Relaxed);
-    let query = web_sys::window()
-        .and_then(|w| w.location().search().ok())
-        .unwrap_or_default();
-    let value = |key: &str| {
-        query
-            .trim_start_matches('?')
-            .split('&')
-            .find_map(|kv| kv.strip_prefix(key)?.strip_prefix('='))
-            .map(str::to_owned)
-    };
-    let lang = match value("lang").as_deref() {
-        Some("zh") => crate::vocabulary::Lang::Zh,
-        _ => crate::vocabulary::Lang::En,
-    };
-    let lesson_file = value("lesson");
-    let doc = lesson_file
-        .as_deref()
-        .and_then(|f| crate::lesson::library::lesson(&format!("{f}.toml")).ok())
-        .map_or_else(crate::lesson::default_lesson, Ok)
-        .map_err(|d| wasm_bindgen::JsValue::from_str(&d.to_string()))?;
-    let source = format!("lessons/{}.toml (built in)", doc.id);
-    let start = super::Start {
-        lang,
-        step: value("step")
-            .and_then(|s| s.parse::<usize>().ok())
-            .map(|k| k.saturating_sub(1)),
-        ..Default::default()
-    };
-    eframe::WebRunner::new()
-        .start(
-            canvas,
-            eframe::WebOptions::default(),
-            Box::new(move |cc| {
-                Ok(Box::new(super::create(
-                    cc,
-                    crate::lesson::Document::Lesson(Box::new(doc)),
-                    &source,
-                    None,
-                    start,
-                )))
-            }),
-        )
-        .await
 }

@@ -4,59 +4,9 @@
 
 use std::path::PathBuf;
 
-use web_time::Instant;
-
 use super::PipelensApp;
 use super::session::Command;
-
-/// A file watched for changes.
-pub(super) struct Watched {
-    path: PathBuf,
-    modified: Option<std::time::SystemTime>,
-    checked: Instant,
-}
-
-impl Watched {
-    /// The file watched.
-    pub(super) fn path(&self) -> &std::path::Path {
-        &self.path
-    }
-
-    /// The latest change to `path` or to a shader file (`.vert`, `.frag`, …) in its folder or
-    /// a folder within it: a lesson reads its shaders from there.
-    fn modified(path: &std::path::Path) -> Option<std::time::SystemTime> {
-        let stamp = |p: &std::path::Path| std::fs::metadata(p).and_then(|m| m.modified()).ok();
-        let is_shader = |p: &std::path::Path| {
-            let name = p.to_string_lossy();
-            crate::lesson::SHADER_FILE_ENDINGS
-                .iter()
-                .any(|e| name.ends_with(e))
-        };
-        let entries = |dir: &std::path::Path| {
-            std::fs::read_dir(dir)
-                .into_iter()
-                .flatten()
-                .filter_map(|e| e.ok().map(|e| e.path()))
-                .collect::<Vec<_>>()
-        };
-        let folder = path
-            .parent()
-            .filter(|p| !p.as_os_str().is_empty())
-            .unwrap_or(std::path::Path::new("."));
-        let mut latest = stamp(path);
-        for entry in entries(folder) {
-            let inner = if entry.is_dir() {
-                entries(&entry)
-            } else {
-                vec![entry]
-            };
-            for p in inner.iter().filter(|p| is_shader(p)) {
-                latest = latest.max(stamp(p));
-            }
-        }
-        latest
-    }
-}
+use super::watched::Watched;
 
 impl PipelensApp {
     /// Watches `path` (the file the session was loaded from): when it changes on disk, it is
@@ -69,11 +19,7 @@ impl PipelensApp {
 
     /// Starts watching `path` in place of any file watched before.
     pub(super) fn watch(&mut self, path: PathBuf) {
-        self.watched = Some(Watched {
-            modified: Watched::modified(&path),
-            path,
-            checked: Instant::now(),
-        });
+        self.watched = Some(Watched::new(path));
     }
 
     /// Checks the watched file about twice a second and reloads it when it changed.
@@ -82,26 +28,20 @@ impl PipelensApp {
             return;
         };
         ctx.request_repaint_after(std::time::Duration::from_millis(500));
-        if w.checked.elapsed() < std::time::Duration::from_millis(400) {
+        if !w.changed() {
             return;
         }
-        w.checked = Instant::now();
-        let now = Watched::modified(&w.path);
-        if now == w.modified {
-            return;
-        }
-        w.modified = now;
         // A lesson being edited with unsaved changes is not replaced: the editor says the file
         // changed, and a save asks before overwriting it.
         if let Some(doc) = &mut self.editor.doc
-            && doc.file.as_deref() == Some(w.path.as_path())
-            && let Ok(text) = std::fs::read_to_string(&w.path)
+            && doc.file.as_deref() == Some(w.path())
+            && let Ok(text) = std::fs::read_to_string(w.path())
             && !doc.changed_on_disk(&text)
         {
             self.editor.open = true;
             return;
         }
-        let loaded = crate::lesson::load_file(&w.path);
+        let loaded = crate::lesson::load_file(w.path());
         self.commands.extend(match loaded {
             Ok(crate::lesson::Document::Lesson(l)) => vec![Command::ReloadLesson(l)],
             Ok(crate::lesson::Document::Scene(s)) => {

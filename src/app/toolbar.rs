@@ -19,7 +19,7 @@ impl PipelensApp {
     ) {
         let sel = self.session.selection.clone();
         let lang = self.session.lang;
-        if super::compact::is_compact(ui.ctx()) {
+        if super::window_size::is_compact(ui.ctx()) {
             ui.horizontal(|ui| {
                 style::chrome_style(ui);
                 ui.menu_button(lang.tr("View ▾", "视图 ▾"), |ui| {

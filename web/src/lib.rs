@@ -33,7 +33,7 @@ mod web {
                 );
                 return;
             };
-            if let Err(e) = pipelens::app::platform::start(canvas, threads).await {
+            if let Err(e) = pipelens::app::start(canvas, threads).await {
                 let message = e.as_string().unwrap_or_else(|| format!("{e:?}"));
                 show_error(document.as_ref(), &message);
             }

@@ -304,7 +304,7 @@ pub(super) fn dropped_arguments(source: &str) -> Result<(), Vec<ShaderError>> {
 
 /// A sampler of a kind pipelens does not bind declared as a function's parameter (`vec4
 /// look(sampler3D s, vec3 r)`): valid GLSL, said at the type rather than naga's "Expected
-/// RightParen". A `sampler2D` or `samplerCube` parameter runs (see `sampler_arguments`).
+/// RightParen". A `sampler2D` or `samplerCube` parameter runs (see `dialect/sampler_arguments.rs`).
 ///
 /// # Errors
 /// Each such parameter.

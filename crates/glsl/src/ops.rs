@@ -123,8 +123,8 @@ pub fn binary(
 /// The terms are added in order, `((0 + a_0·b_0) + a_1·b_1) + …`, a term over all lanes at a
 /// time (rows cut to the lanes, so the loop runs over plain arrays).
 pub fn dot_rows(terms: &[(&[u32], &[u32])], out: &mut [u32]) {
-    let n = out.len().min(crate::machine::LANES);
-    let mut sum = [0f32; crate::machine::LANES];
+    let n = out.len().min(crate::lanes::LANES);
+    let mut sum = [0f32; crate::lanes::LANES];
     for (a, b) in terms {
         let (a, b) = (&a[..n], &b[..n]);
         for ((s, &x), &y) in sum[..n].iter_mut().zip(a).zip(b) {
@@ -256,7 +256,7 @@ pub fn math<'a>(
         row(r.at, if r.n == 1 { 0 } else { c })
     };
     let a0 = args[0];
-    let stride = super::machine::LANES;
+    let stride = crate::lanes::LANES;
     // Component by component, floats.
     let each1 = |out: &mut [u32], g: &dyn Fn(f32) -> f32| {
         for c in 0..width {

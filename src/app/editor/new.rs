@@ -112,7 +112,7 @@ impl NewLesson {
                 });
         }
         // A page cannot read a mesh from a path: the browser has the other two.
-        if super::super::platform::WRITES_FILES {
+        if crate::app::platform::WRITES_FILES {
             ui.radio_value(
                 &mut self.from,
                 From::Mesh,
@@ -130,7 +130,7 @@ impl NewLesson {
             );
         }
         ui.horizontal(|ui| {
-            ui.label(if super::super::platform::WRITES_FILES {
+            ui.label(if crate::app::platform::WRITES_FILES {
                 lang.tr("Write it to:", "写入：")
             } else {
                 lang.tr("Name:", "名称：")
@@ -166,7 +166,7 @@ impl NewLesson {
                 start::from_mesh(&file, &super::file::mesh_from(&file, mesh))?
             }
         };
-        let (doc, file) = if super::super::platform::WRITES_FILES {
+        let (doc, file) = if crate::app::platform::WRITES_FILES {
             if file.exists() {
                 return Err(format!(
                     "{} exists already: choose another name (it was left as it is)",
@@ -220,7 +220,7 @@ fn first_step(session: &Session) -> Result<lesson::Step, String> {
 /// `my-lesson.toml` in the folder the app was started in (a name only in the browser).
 fn default_path() -> String {
     let name = "my-lesson.toml";
-    if super::super::platform::WRITES_FILES {
+    if crate::app::platform::WRITES_FILES {
         std::env::current_dir()
             .map_or_else(|_| name.to_owned(), |d| d.join(name).display().to_string())
     } else {

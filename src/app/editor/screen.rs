@@ -4,7 +4,8 @@
 
 use egui::RichText;
 
-use super::{Editor, words};
+use super::window::Editor;
+use super::words;
 use crate::app::session::{Command, Session};
 use crate::lesson::param;
 use crate::vocabulary::Lang;

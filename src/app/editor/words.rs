@@ -5,7 +5,7 @@
 
 use egui::RichText;
 
-use super::Editor;
+use super::window::Editor;
 use crate::app::session::{Command, Session};
 use crate::app::views::lesson::{card_style, narration};
 use crate::lesson::edit::Words;

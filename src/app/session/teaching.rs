@@ -1,6 +1,6 @@
 //! What the stage and the step teach: the matrix or the pixel the inspector opens on.
 
-use super::Session;
+use super::state::Session;
 use crate::vocabulary::Stage;
 
 /// What the stage and the step teach, that the inspector opens on.

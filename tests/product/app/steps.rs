@@ -329,10 +329,7 @@ fn a_shading_stage_shows_its_picture_at_the_views_resolution() {
     );
     let s = &mut h.state_mut().session;
     s.drafting = true;
-    assert!(
-        pipelens::app::display::job(s).is_none(),
-        "a draft keeps up with the hand"
-    );
+    assert!(s.fine_job().is_none(), "a draft keeps up with the hand");
 }
 
 /// A lab's reference is shown in the buffer the student's frame is shown in (issue: the buffer

@@ -26,10 +26,10 @@ use std::ops::Range;
 mod declaration;
 mod names;
 mod preamble;
+mod sampler_arguments;
 mod scan;
 
 pub use declaration::{Declaration, Storage};
-pub(crate) use names::SAMPLERS;
 pub use names::{FRAG_COLOR, LIGHT_DECLARATIONS, SAMPLER_PREFIX, TEXTURE_PREFIX};
 pub(crate) use scan::version_directive;
 
@@ -225,11 +225,11 @@ pub fn adapt(src: &str, stage: Stage) -> Result<Adapted, Vec<DialectError>> {
     for glsl in super::glsl330::written_in_glsl(src) {
         preamble.push_generated(glsl, 0..0);
     }
-    if super::sampler_arguments::any(src) {
+    if sampler_arguments::any(src) {
         preamble.push_generated(
             &format!(
                 "layout(set = 2, binding = 0) uniform sampler {};\n",
-                super::sampler_arguments::PARAMETER_SAMPLER
+                sampler_arguments::PARAMETER_SAMPLER
             ),
             0..0,
         );
@@ -266,7 +266,7 @@ fn assemble(
         .filter(|d| d.storage == Storage::Texture)
         .map(|d| d.name.clone())
         .collect();
-    let (student, passed) = super::sampler_arguments::rewrite(&student, &textures);
+    let (student, passed) = sampler_arguments::rewrite(&student, &textures);
     let (student, swizzled) = super::lowering::swizzle_stores(&student);
     let preamble_len = preamble.text.len();
     Adapted {

@@ -10,7 +10,7 @@ const int LIGHT_SPOT = 3; const int MAX_LIGHTS = 8;\n";
 
 /// The combined samplers a student may declare, with the separate texture type naga reads
 /// behind each: a 2D texture, and a cube map looked up by direction.
-pub(crate) const SAMPLERS: [(&str, &str); 2] =
+pub(super) const SAMPLERS: [(&str, &str); 2] =
     [("sampler2D", "texture2D"), ("samplerCube", "textureCube")];
 
 /// The sampler type `name` and its texture type, if it is one pipelens binds.

@@ -2,9 +2,9 @@
 //! variables copied into its parameters and, when it returns, back (GLSL 3.30 §6.1.1).
 
 use super::events::Event;
-use super::lanes::{LANES, bit};
 use super::run::{Machine, Res};
 use crate::code::{Argument, Parameter, Root};
+use crate::lanes::{LANES, bit};
 
 impl Machine<'_> {
     /// Copies a call's arguments into the callee `to`: an `in` value into its register, an

@@ -6,11 +6,11 @@
 use naga::{RelationalFunction, UnaryOperator};
 
 use super::events::RunError;
-use super::lanes::{LANES, bit, masked_copy};
 use super::run::{Machine, Res};
 use super::textures::Textures;
 use crate::code::{Function, Kind, Op, Place, Reg, Root, Shape};
 use crate::complaint::Complaint;
+use crate::lanes::{LANES, bit, masked_copy};
 use crate::ops;
 
 impl Machine<'_> {

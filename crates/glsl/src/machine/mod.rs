@@ -14,13 +14,12 @@
 mod call;
 mod eval;
 mod events;
-mod lanes;
 mod run;
 mod statements;
 mod texture;
 mod textures;
 
+pub use crate::lanes::LANES;
 pub use events::{Event, RunError};
-pub use lanes::LANES;
 pub use run::{DEFAULT_MAX_STEPS, Machine};
 pub use textures::{Texel, Textures};

@@ -2,9 +2,9 @@
 //! uniforms) and the entry into the program's `main`, with its trace and its step budget.
 
 use super::events::{Event, RunError};
-use super::lanes::{LANES, bit, lanes_where};
 use super::textures::Textures;
 use crate::code::{Code, Place, Reg, Root};
+use crate::lanes::{LANES, bit, lanes_where};
 
 /// The loop iterations one invocation may run before the machine calls it an endless loop,
 /// unless its host allows more ([`Machine::budget`]).

@@ -4,10 +4,10 @@
 //! take theirs out and record them in `Flow`, `return` and `discard` take theirs out).
 
 use super::events::{Event, RunError};
-use super::lanes::{LANES, bit, lanes_where, masked_copy};
 use super::run::{Flow, Machine, Res, Running};
 use crate::code::{Call, If, Loop, Reg, Stmt, Switch};
 use crate::complaint::Complaint;
+use crate::lanes::{LANES, bit, lanes_where, masked_copy};
 
 impl Machine<'_> {
     /// Runs `stmts` in the lanes of `mask`; the lanes that reach the block's end.

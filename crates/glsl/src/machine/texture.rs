@@ -6,10 +6,10 @@
 
 use glam::{IVec2, Vec2, Vec3};
 
-use super::lanes::{LANES, bit};
 use super::textures::{Texel, Textures};
 use crate::code::{Level, Op};
 use crate::complaint::Complaint;
+use crate::lanes::{LANES, bit};
 
 /// Runs the lookup `op` over lanes `0..n`, its operands' rows given by `row(register,
 /// component)`, into `out` (component `k` of lane `l` at `k·LANES + l`).

@@ -7,9 +7,9 @@ use glam::Vec3;
 use pipeline::capture::FrameCapture;
 use pipeline::transform::{self, NamedMatrix};
 
-use super::position;
 use crate::app::session::{Session, Teaching};
 use crate::app::views::{FATES, Projector, label_with_background, palette, place_label, typeset};
+use crate::spaces::position;
 use crate::vocabulary::{Lang, Space, num, vec3, vec4};
 
 /// What the picture shows, so that the legend names only that.

@@ -14,7 +14,7 @@ use super::{
     FATES, Projector, draw_lights, fate_color, fate_index, palette, picture_font, wrapped_label,
 };
 use crate::app::session::{Command, Session};
-use crate::spaces::{between, bounds, position, space_name, volume, world_into};
+use crate::spaces::{between, bounds, space_name, volume, world_into};
 use crate::vocabulary::Space;
 
 /// The orbiting camera of the geometry views, and the picture's zoom and pan.

@@ -7,7 +7,7 @@ use egui_extras::{Column, TableBuilder};
 use pipeline::capture::FrameCapture;
 use pipeline::vertex::VertexRecord;
 
-use super::Inspector;
+use super::tabs::Inspector;
 use crate::app::session::{Command, Session};
 use crate::app::views::palette;
 use crate::vocabulary::{Lang, Space, Stage, vec3, vec4};

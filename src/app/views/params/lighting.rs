@@ -5,7 +5,7 @@ use egui::{RichText, Slider, Ui};
 use glam::Vec3;
 use pipeline::light::Light;
 
-use super::vec3_edit;
+use super::fields::vec3_edit;
 use crate::vocabulary::Lang;
 
 /// Each light's intensity (one slider for a grey light, the three channels otherwise) and where

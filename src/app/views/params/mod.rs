@@ -12,31 +12,10 @@ use pipeline::shade::{Frequency, Reflection};
 use crate::app::session::{Command, Session};
 use crate::vocabulary::Lang;
 
+mod fields;
 mod lighting;
 
-fn vec3_edit(ui: &mut Ui, label: &str, v: &mut Vec3, speed: f32, tip: &str) {
-    ui.horizontal(|ui| {
-        ui.label(label).on_hover_text(tip);
-        ui.add(
-            DragValue::new(&mut v.x)
-                .speed(speed)
-                .prefix("x ")
-                .max_decimals(3),
-        );
-        ui.add(
-            DragValue::new(&mut v.y)
-                .speed(speed)
-                .prefix("y ")
-                .max_decimals(3),
-        );
-        ui.add(
-            DragValue::new(&mut v.z)
-                .speed(speed)
-                .prefix("z ")
-                .max_decimals(3),
-        );
-    });
-}
+use fields::vec3_edit;
 
 /// Draws the parameters; returns the new scene when something changed.
 pub fn ui(ui: &mut Ui, session: &Session) -> Option<Command> {

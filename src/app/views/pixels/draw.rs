@@ -9,7 +9,7 @@ use pipeline::capture::FrameCapture;
 use pipeline::overlay::{OverlayKind, Shape};
 use pipeline::raster::{NONE, sample_offsets_image};
 
-use super::ImageViewport;
+use super::viewport::ImageViewport;
 use crate::app::session::Selection;
 use crate::app::views::palette;
 use crate::vocabulary::Lang;

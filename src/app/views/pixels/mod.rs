@@ -411,7 +411,7 @@ impl PixelView {
         let subject = self.subject(session, capture);
         // A phone's view is narrow and tall: the picture covers it (the sides cropped, the
         // subject whole and in the middle; a pinch shows the rest).
-        let placed = if crate::app::compact::is_compact(ui.ctx()) {
+        let placed = if crate::app::window_size::is_compact(ui.ctx()) {
             viewport::cover(rect, size, subject)
         } else {
             crate::app::views::room::place(rect, size, subject, card)

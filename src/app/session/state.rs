@@ -10,17 +10,15 @@ use pipeline::buffers::Capture;
 use pipeline::capture::FrameCapture;
 use pipeline::overlay::OverlayKind;
 
-pub use super::player::LessonPlayer;
-pub use super::selection::{Command, DepthView, Selection};
-use super::worker::{Job, RenderWorker, Rendered};
+use super::reference::Comparison as ExerciseComparison;
+use crate::app::display::Fine;
+use crate::app::player::LessonPlayer;
+use crate::app::selection::{Command, DepthView, Selection};
+use crate::app::worker::{Job, RenderWorker, Rendered};
 use crate::lesson::script::{Layout, Overlay};
 use crate::lesson::{Document, SceneSpec};
 use crate::observer::{Orbit, default_orbit};
 use crate::vocabulary::{Comparison, Lang, Stage};
-pub use teaching::Teaching;
-
-mod teaching;
-
 /// The state of the app.
 pub struct Session {
     /// The scene and settings being shown.
@@ -46,7 +44,7 @@ pub struct Session {
     /// The physical pixels the pixel view draws the image over.
     pub view_pixels: Option<[u32; 2]>,
     /// The buffer shown rendered at that resolution (`display`).
-    pub display: super::display::Fine,
+    pub display: Fine,
     /// What is selected.
     pub selection: Selection,
     /// The interface language.
@@ -77,10 +75,10 @@ pub struct Session {
     /// Whether the capture on screen is a draft.
     pub shown_draft: bool,
     /// What the student has done, kept across runs by the app's storage.
-    pub progress: super::progress::Progress,
+    pub progress: crate::app::progress::Progress,
     /// An exercise step's reference (pipelens' own stages) and how the student's frame
     /// compares with it.
-    pub exercise: super::exercise::Comparison,
+    pub exercise: ExerciseComparison,
 }
 
 impl Session {
@@ -112,7 +110,7 @@ impl Session {
             orbit,
             observer_aspect: None,
             view_pixels: None,
-            display: super::display::Fine::default(),
+            display: Fine::default(),
             selection: Selection::default(),
             lang: Lang::default(),
             generation,
@@ -125,8 +123,8 @@ impl Session {
             drafting: false,
             drag_from: None,
             shown_draft: false,
-            progress: super::progress::Progress::default(),
-            exercise: super::exercise::Comparison::default(),
+            progress: crate::app::progress::Progress::default(),
+            exercise: ExerciseComparison::default(),
         };
         s.request_render();
         s
@@ -282,9 +280,9 @@ impl Session {
     /// Asks for a new capture when the view needs a buffer the latest one did not keep, or the
     /// observer it did not render.
     pub fn ensure_captured(&mut self) {
-        if super::display::job(self).is_none() {
+        if self.fine_job().is_none() {
             // The finer render is not for this view (another stage, a comparison, a drag).
-            self.display = super::display::Fine::default();
+            self.display = Fine::default();
         }
         let Some(kept) = self.capture.as_ref().map(|c| c.settings.capture) else {
             return;
@@ -295,7 +293,7 @@ impl Session {
         let missing = !kept.covers(needed)
             || (shaders && needed.pixel.is_some() && kept.pixel != needed.pixel)
             || (self.observer_shown() && !self.observer_asked)
-            || super::display::missing(self)
+            || self.fine_missing()
             || self.reference_stale();
         if !self.rendering() && missing {
             self.request_render();
@@ -327,7 +325,7 @@ impl Session {
                 .observer_shown()
                 .then(|| (self.orbit.camera(), self.observer_aspect)),
             reference: self.exercise_reference(&spec),
-            display: super::display::job(self),
+            display: self.fine_job(),
             spec,
         }
     }
@@ -354,7 +352,7 @@ impl Session {
         match &self.worker {
             Some(w) => w.submit(job),
             None => {
-                let done = job.run(&mut super::worker::Spares::default());
+                let done = job.run(&mut crate::app::worker::Spares::default());
                 self.receive(done.generation, done.result);
             }
         }

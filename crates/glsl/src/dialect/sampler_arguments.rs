@@ -22,16 +22,16 @@
 use std::collections::HashMap;
 use std::ops::Range;
 
-use super::lexeme::{Kind, Lexeme, lex};
-use super::lowering::Edit;
-use crate::dialect::TEXTURE_PREFIX;
+use super::names::TEXTURE_PREFIX;
+use crate::lexeme::{Kind, Lexeme, lex};
+use crate::lowering::Edit;
 
 /// The sampler pipelens declares to join a texture parameter with (`sampler2D(s, …)`).
 pub const PARAMETER_SAMPLER: &str = "pl_parameter_sampler";
 
 /// The combined sampler types a function may take, with the texture type naga reads instead
 /// (each the same length as its sampler, so the rewrite moves nothing).
-const PASSED: [(&str, &str); 2] = crate::dialect::SAMPLERS;
+const PASSED: [(&str, &str); 2] = super::names::SAMPLERS;
 
 /// A function that takes samplers: for each, its place among the parameters and its type.
 type Takes = Vec<(usize, &'static str)>;
@@ -232,8 +232,8 @@ fn replace(src: &str, mut replacements: Vec<(Range<usize>, String)>) -> (String,
 
 #[cfg(test)]
 mod tests {
-    use super::super::lowering::before_edits;
     use super::*;
+    use crate::lowering::before_edits;
 
     #[test]
     fn a_sampler_parameter_its_uses_and_its_arguments_are_rewritten() {

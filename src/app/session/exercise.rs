@@ -12,30 +12,12 @@ use pipeline::scene::{ObjectShader, Scene};
 use pipeline::settings::RenderSettings;
 use pipeline::shader::HookKind;
 
-use super::progress::SavedCode;
-use super::session::Session;
+use super::reference::Comparison;
+use super::state::Session;
+use crate::app::progress::SavedCode;
 use crate::lab::Findings;
 use crate::lesson::SceneSpec;
 use crate::lesson::answer::Exercise;
-
-/// The reference of an exercise step and how the frame on screen compares with it.
-#[derive(Clone, Debug, Default)]
-pub struct Comparison {
-    /// pipelens' own frame of the step's scene (kept through drafts).
-    pub reference: Option<Arc<FrameCapture>>,
-    /// What the frame on screen shows against the reference (empty while either is missing or
-    /// the frame on screen is a draft).
-    pub findings: Findings,
-}
-
-impl Comparison {
-    /// Whether the exercise passed: every curve point within the tolerance where a curve is
-    /// compared, else every pixel.
-    #[must_use]
-    pub fn passed(&self) -> bool {
-        self.findings.passed()
-    }
-}
 
 impl Session {
     /// The current step's exercise, if it is one.

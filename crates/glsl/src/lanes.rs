@@ -4,12 +4,12 @@
 pub const LANES: usize = 64;
 
 /// The mask of lane `l` alone.
-pub(super) fn bit(l: usize) -> u64 {
+pub(crate) fn bit(l: usize) -> u64 {
     1 << l
 }
 
 /// The lanes among the first `n` where `f` holds.
-pub(super) fn lanes_where(row: &[u32], n: usize, f: impl Fn(u32) -> bool) -> u64 {
+pub(crate) fn lanes_where(row: &[u32], n: usize, f: impl Fn(u32) -> bool) -> u64 {
     row[..n]
         .iter()
         .enumerate()
@@ -17,7 +17,7 @@ pub(super) fn lanes_where(row: &[u32], n: usize, f: impl Fn(u32) -> bool) -> u64
 }
 
 /// Copies the lanes of `mask` from `src` to `dst`.
-pub(super) fn masked_copy(dst: &mut [u32], src: &[u32], mask: u64, n: usize) {
+pub(crate) fn masked_copy(dst: &mut [u32], src: &[u32], mask: u64, n: usize) {
     if mask.count_ones() as usize >= n {
         dst[..n].copy_from_slice(&src[..n]);
         return;

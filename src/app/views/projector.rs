@@ -1,0 +1,90 @@
+//! Drawing in 3-D with egui: a camera that projects points onto the view (it draws; it is not
+//! part of the pipeline being taught), and the lights of a scene drawn where they are.
+
+use egui::{Pos2, Rect};
+use glam::{Mat4, Vec3, Vec4};
+
+use super::palette;
+use super::words::{label_with_background, picture_font};
+use crate::vocabulary::Lang;
+
+/// A camera for drawing 3-D lines with egui: points go through `m = P·V` and the viewport of
+/// `rect`. It draws; it is not part of the pipeline being taught.
+pub struct Projector {
+    /// Projection times view.
+    pub m: Mat4,
+    /// Where on screen.
+    pub rect: Rect,
+    /// Magnification about the rect's centre, then a shift (screen points): zooming and
+    /// panning the picture as a photograph.
+    pub zoom: f32,
+    /// The shift after the magnification.
+    pub pan: egui::Vec2,
+}
+
+impl Projector {
+    /// The screen position of `p`, if it is in front of the camera.
+    #[must_use]
+    pub fn project(&self, p: Vec3) -> Option<Pos2> {
+        let c: Vec4 = self.m * p.extend(1.0);
+        if c.w <= 1e-6 || !c.is_finite() {
+            return None;
+        }
+        let n = c.truncate() / c.w;
+        let q = Pos2::new(
+            self.rect.left() + (n.x + 1.0) / 2.0 * self.rect.width(),
+            self.rect.top() + (1.0 - n.y) / 2.0 * self.rect.height(),
+        );
+        Some(self.rect.center() + (q - self.rect.center()) * self.zoom + self.pan)
+    }
+
+    /// Draws a 3-D segment.
+    pub fn line(&self, painter: &egui::Painter, a: Vec3, b: Vec3, stroke: egui::Stroke) {
+        if let (Some(pa), Some(pb)) = (self.project(a), self.project(b)) {
+            painter.line_segment([pa, pb], stroke);
+        }
+    }
+}
+
+/// The lights of a capture drawn where they are (see `Light::gizmo`), through `to_view` (world
+/// coordinates into the space drawn), in a scene centred at `centre` of about `size`; each with its
+/// label; returns whether it drew any.
+pub fn draw_lights(
+    painter: &egui::Painter,
+    cam: &Projector,
+    lights: &[pipeline::light::Light],
+    to_view: &dyn Fn(Vec3) -> Vec3,
+    (centre, size): (Vec3, f32),
+    lang: Lang,
+) -> bool {
+    use pipeline::light::Light;
+    let font = picture_font(painter.ctx(), 14.0);
+    let mut drew = false;
+    for (k, light) in lights.iter().enumerate() {
+        let Some(g) = light.gizmo(centre, size) else {
+            continue;
+        };
+        drew = true;
+        let stroke = egui::Stroke::new(2.0, palette::LIGHT);
+        for [a, b] in &g.segments {
+            cam.line(painter, to_view(*a), to_view(*b), stroke);
+        }
+        if let Some(p) = cam.project(to_view(g.label_at)) {
+            let name = match light {
+                Light::Point { .. } => lang.tr("point light", "点光源"),
+                Light::Spot { .. } => lang.tr("spotlight", "聚光灯"),
+                Light::Directional { .. } => lang.tr("directional light", "平行光"),
+                Light::Ambient { .. } => "",
+            };
+            label_with_background(
+                painter,
+                p,
+                egui::Align2::CENTER_BOTTOM,
+                &format!("{name} {k}"),
+                &font,
+                palette::LIGHT,
+            );
+        }
+    }
+    drew
+}

@@ -1,0 +1,150 @@
+//! Words drawn over pictures: their size (larger in classroom mode) and fonts, labels on a dark
+//! box placed clear of the subject, the note on a dim term's gain, and the rect a picture of a
+//! given aspect fills.
+
+use egui::{Color32, Pos2, Rect};
+
+/// How much larger the words drawn over pictures (labels, legends, cards) are than normal: 1,
+/// or 1.6 in classroom mode — the body text's size over its normal 15 points.
+#[must_use]
+pub fn picture_scale(ctx: &egui::Context) -> f32 {
+    ctx.global_style()
+        .text_styles
+        .get(&egui::TextStyle::Body)
+        .map_or(1.0, |f| f.size / 15.0)
+}
+
+/// A proportional font of `size` normal points for words drawn over a picture.
+#[must_use]
+pub fn picture_font(ctx: &egui::Context, size: f32) -> egui::FontId {
+    egui::FontId::proportional(size * picture_scale(ctx))
+}
+
+/// A monospace font of `size` normal points for numbers drawn over a picture.
+#[must_use]
+pub fn picture_mono(ctx: &egui::Context, size: f32) -> egui::FontId {
+    egui::FontId::monospace(size * picture_scale(ctx))
+}
+
+/// Says over a picture that a dim lighting term is drawn `gain` times brighter than its values
+/// (`vocabulary::gain_note`), in the accent colour at `at`; nothing when it is drawn as it is.
+pub fn draw_gain_note(
+    painter: &egui::Painter,
+    (at, align): (Pos2, egui::Align2),
+    kind: pipeline::buffers::BufferKind,
+    gain: f32,
+    lang: crate::vocabulary::Lang,
+) {
+    if let Some(note) = crate::vocabulary::gain_note(kind, gain, lang) {
+        label_with_background(
+            painter,
+            at,
+            align,
+            &note,
+            &picture_font(painter.ctx(), 15.0),
+            egui::Color32::from_rgb(255, 214, 120),
+        );
+    }
+}
+
+/// Text on a dark translucent box, legible over any picture; returns its rect.
+pub fn label_with_background(
+    painter: &egui::Painter,
+    at: Pos2,
+    align: egui::Align2,
+    text: &str,
+    font: &egui::FontId,
+    color: Color32,
+) -> Rect {
+    wrapped_label(painter, at, align, text, font, color, f32::INFINITY)
+}
+
+/// [`label_with_background`] wrapped to lines at most `width` wide.
+pub fn wrapped_label(
+    painter: &egui::Painter,
+    at: Pos2,
+    align: egui::Align2,
+    text: &str,
+    font: &egui::FontId,
+    color: Color32,
+    width: f32,
+) -> Rect {
+    let galley = painter.layout(text.to_owned(), font.clone(), color, width);
+    let rect = align.anchor_size(at, galley.size()).expand(3.0);
+    painter.rect_filled(rect, 3.0, Color32::from_black_alpha(170));
+    painter.galley(rect.min + egui::vec2(3.0, 3.0), galley, color);
+    rect
+}
+
+/// Where to put a label of `size` pointing at `anchor` so that it covers nothing in `avoid`
+/// (first the subject on screen, then the cards and legends over the picture) and stays inside
+/// `view`: the first place around the anchor, a little farther each round, that does neither;
+/// else the first such place that covers the subject but no card (the label has its own dark
+/// box: a label far from its point, with a leader line across the picture, reads worse); else
+/// the view's corner farthest from the subject that covers nothing else; else the corner
+/// farthest from the subject.
+#[must_use]
+pub fn place_label(anchor: Pos2, size: egui::Vec2, avoid: &[Rect], view: Rect) -> Rect {
+    let around = |avoid: &[Rect]| {
+        let clear = |r: &Rect| avoid.iter().all(|a| !r.intersects(*a));
+        for step in 1..=8 {
+            let d = 12.0 * step as f32;
+            for dir in [
+                egui::vec2(1.0, -1.0),
+                egui::vec2(1.0, 1.0),
+                egui::vec2(-1.0, -1.0),
+                egui::vec2(-1.0, 1.0),
+                egui::vec2(0.0, -1.0),
+                egui::vec2(0.0, 1.0),
+            ] {
+                let r = Rect::from_center_size(anchor + dir * (d + size.length() / 2.0), size);
+                if view.contains_rect(r) && clear(&r) {
+                    return Some(r);
+                }
+            }
+        }
+        None
+    };
+    if let Some(r) = around(avoid).or_else(|| around(avoid.get(1..).unwrap_or_default())) {
+        return r;
+    }
+    let subject = avoid.first().map_or(view.center(), Rect::center);
+    let mut corners: Vec<Rect> = [
+        view.left_top(),
+        view.right_top(),
+        view.left_bottom(),
+        view.right_bottom(),
+    ]
+    .into_iter()
+    .map(|corner| {
+        let r = Rect::from_center_size(corner, size);
+        r.translate(egui::vec2(
+            (view.left() - r.left()).max(0.0) - (r.right() - view.right()).max(0.0),
+            (view.top() - r.top()).max(0.0) - (r.bottom() - view.bottom()).max(0.0),
+        ))
+    })
+    .collect();
+    corners.sort_by(|a, b| {
+        b.center()
+            .distance(subject)
+            .total_cmp(&a.center().distance(subject))
+    });
+    corners
+        .iter()
+        .find(|r| avoid.iter().skip(1).all(|a| !r.intersects(*a)))
+        .or(corners.first())
+        .copied()
+        .unwrap_or(view)
+}
+
+/// The largest rectangle of `aspect` (width/height) centred in `outer`.
+#[must_use]
+pub fn fit_rect(outer: Rect, aspect: f32) -> Rect {
+    let (w, h) = (outer.width(), outer.height());
+    let size = if w / h > aspect {
+        egui::vec2(h * aspect, h)
+    } else {
+        egui::vec2(w, w / aspect)
+    };
+    Rect::from_center_size(outer.center(), size)
+}

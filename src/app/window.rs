@@ -1,0 +1,488 @@
+//! The app's window: the panels that can be hidden, the main view showing the selected stage,
+//! the observer beside or below it and the share of the window the picture gets; the frame
+//! eframe calls each time it paints.
+
+use std::{path::PathBuf, sync::mpsc::Receiver};
+
+use super::session::{Command, Session};
+use super::style::apply_style;
+use super::views::{
+    compare::CompareView, geometry::GeometryView, inspector, observer::ObserverView, params,
+    pixels::PixelView,
+};
+use super::{editor, platform, progress, views, watched, window_size};
+use crate::vocabulary::Stage;
+
+/// What the window shows around the picture. In a lesson or classroom mode the picture comes
+/// first: the narration lies over it and can be folded (N), the parameters (P) and the
+/// inspector (I) are opened when wanted; otherwise both panels are open.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Panels {
+    /// The lesson's narration card over the picture.
+    pub narration: bool,
+    /// The parameters on the left.
+    pub parameters: bool,
+    /// The inspector on the right.
+    pub inspector: bool,
+    /// The card with the stage's matrix over the geometry views.
+    pub matrix_card: bool,
+    /// The list of keyboard shortcuts (F1 or ?).
+    pub keys: bool,
+    /// The shader editor (S).
+    pub shader: bool,
+}
+
+impl Panels {
+    /// For a lesson or a classroom (`presenting`), or for exploring.
+    #[must_use]
+    pub fn for_mode(presenting: bool) -> Self {
+        Self {
+            narration: true,
+            parameters: !presenting,
+            inspector: !presenting,
+            matrix_card: true,
+            keys: false,
+            shader: false,
+        }
+    }
+}
+
+/// The app.
+pub struct PipelensApp {
+    /// State with no egui in it.
+    pub session: Session,
+    /// What is shown around the picture.
+    pub panels: Panels,
+    /// Where this frame drew the picture of the stage (the buffer, the geometry, the observer,
+    /// the compared images and their plot): what a presentation is for, measured by the tests.
+    pub picture: Vec<egui::Rect>,
+    /// Where this frame drew the step's subject, which the narration card must leave clear.
+    pub subject: Vec<egui::Rect>,
+    pub(super) pixel_view: PixelView,
+    pub(super) geometry_view: GeometryView,
+    pub(super) observer_view: ObserverView,
+    pub(super) compare_view: CompareView,
+    pub(super) exercise_view: views::exercise::ExerciseView,
+    pub(super) inspector: inspector::Inspector,
+    pub(super) shader_editor: views::shader::ShaderEditor,
+    pub(super) classroom: bool,
+    pub(super) export_dir: String,
+    pub(super) export_result: Option<Receiver<Result<Vec<PathBuf>, String>>>,
+    pub(super) export_message: Option<(bool, String)>,
+    /// Stops the export under way.
+    pub(super) export_cancel: Option<crate::export::Cancel>,
+    pub(super) commands: Vec<Command>,
+    /// The progress as last saved: when the session's differs, a frame is asked for after the
+    /// save interval, so that eframe saves it even if nothing else moves (a browser tab).
+    pub(super) saved_progress: progress::Progress,
+    /// The file shown, watched for changes (live reload): its path and last modification.
+    pub(super) watched: Option<watched::Watched>,
+    /// The "Add step" window (R).
+    /// The lesson editor (R).
+    pub(super) editor: editor::Editor,
+    /// Dropped files read in the background (in the browser).
+    pub(super) inbox: platform::Inbox,
+}
+
+impl PipelensApp {
+    /// An app on `session` (call [`setup_context`](super::setup_context) once on its egui context).
+    #[must_use]
+    pub fn new(session: Session) -> Self {
+        let presenting = session.lesson.is_some();
+        Self {
+            session,
+            panels: Panels::for_mode(presenting),
+            picture: Vec::new(),
+            subject: Vec::new(),
+            pixel_view: PixelView::default(),
+            geometry_view: GeometryView::default(),
+            observer_view: ObserverView::default(),
+            compare_view: CompareView::default(),
+            exercise_view: views::exercise::ExerciseView::default(),
+            inspector: inspector::Inspector::default(),
+            shader_editor: views::shader::ShaderEditor::default(),
+            saved_progress: progress::Progress::default(),
+            classroom: false,
+            export_dir: "pipelens-export".to_owned(),
+            export_result: None,
+            export_message: None,
+            export_cancel: None,
+            commands: Vec::new(),
+            watched: None,
+            editor: editor::Editor::default(),
+            inbox: platform::Inbox::default(),
+        }
+    }
+
+    /// Whether the app presents (a lesson is open, or classroom mode is on): the picture first.
+    #[must_use]
+    pub fn presenting(&self) -> bool {
+        self.classroom || self.session.lesson.is_some()
+    }
+
+    /// What the window (or the browser tab) is titled: `pipelens — lesson id — step k/n`, or
+    /// `pipelens — file` for a scene: a test in the browser reads where the app is from it.
+    #[must_use]
+    pub fn title(&self) -> String {
+        match &self.session.lesson {
+            Some(p) => format!(
+                "pipelens — {} — step {}/{}",
+                p.lesson.id,
+                p.step + 1,
+                p.lesson.steps.len()
+            ),
+            None => format!("pipelens — {}", self.session.source),
+        }
+    }
+
+    /// Whether classroom mode (large type, high contrast) is on.
+    #[must_use]
+    pub fn classroom(&self) -> bool {
+        self.classroom
+    }
+
+    /// Turns classroom mode on or off; turning it on folds the side panels away.
+    pub fn set_classroom(&mut self, ctx: &egui::Context, on: bool) {
+        if on == self.classroom {
+            return;
+        }
+        self.classroom = on;
+        apply_style(ctx, on);
+        let narration = self.panels.narration;
+        self.panels = Panels {
+            narration,
+            ..Panels::for_mode(self.presenting())
+        };
+    }
+
+    /// The share of `screen` the picture covers (the area of the union of [`Self::picture`]).
+    #[must_use]
+    pub fn picture_share(&self, screen: egui::Rect) -> f32 {
+        views::room::share(&self.picture, screen)
+    }
+
+    /// Draws one frame and applies the commands it produced.
+    pub fn frame(&mut self, ui: &mut egui::Ui) {
+        self.session.poll();
+        if self.session.progress != self.saved_progress {
+            ui.ctx()
+                .request_repaint_after(SAVE_INTERVAL + std::time::Duration::from_millis(500));
+        }
+        self.reload_if_changed(ui.ctx());
+        self.open_dropped(ui.ctx());
+        self.keyboard(ui.ctx());
+        self.picture.clear();
+        self.subject.clear();
+        let compact = self.bar(ui);
+        self.keys_help(ui.ctx());
+        // Presenting, the status line shows only to say what went wrong.
+        if !self.presenting() || self.session.error.is_some() {
+            self.status_bar(ui);
+        }
+        let lang = self.session.lang;
+        if self.panels.parameters {
+            egui::Panel::left("parameters")
+                .default_size(300.0)
+                .resizable(true)
+                .show(ui, |ui| {
+                    ui.heading(lang.tr("Parameters", "参数"));
+                    self.commands.extend(params::ui(ui, &self.session));
+                });
+        }
+        let capture = self.session.capture.clone();
+        if self.panels.inspector
+            && let Some(capture) = &capture
+        {
+            egui::Panel::right("inspector")
+                .default_size(400.0)
+                .resizable(true)
+                .show(ui, |ui| {
+                    self.commands.extend(inspector::ui(
+                        ui,
+                        &mut self.inspector,
+                        &self.session,
+                        capture,
+                    ));
+                });
+        }
+        if self.panels.shader {
+            egui::Panel::right("shader")
+                .default_size(520.0)
+                .resizable(true)
+                .show(ui, |ui| {
+                    ui.heading(lang.tr("Shaders (GLSL)", "着色器（GLSL）"));
+                    self.commands.extend(views::shader::ui(
+                        ui,
+                        &mut self.shader_editor,
+                        &self.session,
+                        std::path::Path::new(self.export_dir.trim()),
+                    ));
+                });
+        }
+        let narrated = self.panels.narration && self.session.lesson.is_some();
+        if compact && narrated {
+            self.narration_sheet(ui);
+        }
+        let central = egui::CentralPanel::default()
+            .show(ui, |ui| match &capture {
+                Some(capture) => self.main_view(ui, capture),
+                None => {
+                    ui.centered_and_justified(|ui| {
+                        ui.label(
+                            self.session
+                                .error
+                                .clone()
+                                .unwrap_or_else(|| lang.tr("Rendering…", "渲染中…").to_owned()),
+                        );
+                    });
+                }
+            })
+            .response
+            .rect;
+        if !narrated || compact {
+            views::room::set_narration_card(ui.ctx(), None);
+        } else {
+            let out = views::lesson::card(ui.ctx(), central, &self.session);
+            self.narrated(out);
+        }
+        self.edit_lesson(ui.ctx());
+        self.animate(ui.ctx());
+        // A parameter dragged (a slider, a number): drafts until the pointer is let go, then the
+        // full frame.
+        if !ui.ctx().input(|i| i.pointer.any_down()) {
+            self.session.set_drafting(false);
+        } else if self
+            .commands
+            .iter()
+            .any(|c| matches!(c, Command::SetSpec(_)))
+        {
+            self.session.set_drafting(true);
+        }
+        for cmd in std::mem::take(&mut self.commands) {
+            self.session.apply(cmd);
+        }
+        // A buffer or a pixel chosen that the capture shown did not keep: render it.
+        self.session.ensure_captured();
+    }
+
+    /// The bar at the top: the desktop's, or a small window's one row; whether the window is
+    /// small (see [`window_size::is_compact`]).
+    fn bar(&mut self, ui: &mut egui::Ui) -> bool {
+        let compact = window_size::is_compact(ui.ctx());
+        if compact {
+            self.compact_bar(ui);
+        } else {
+            self.top_bar(ui);
+        }
+        compact
+    }
+
+    /// What the narration (the card, or a small window's sheet) asked for.
+    pub(super) fn narrated(&mut self, out: views::lesson::CardOutput) {
+        self.commands.extend(out.commands);
+        if out.fold {
+            self.panels.narration = false;
+        }
+        if out.inspect {
+            self.panels.inspector = true;
+        }
+    }
+
+    /// The stage's toolbar (one row) and its picture below it.
+    fn main_view(
+        &mut self,
+        ui: &mut egui::Ui,
+        capture: &std::sync::Arc<pipeline::capture::FrameCapture>,
+    ) {
+        let sel = self.session.selection.clone();
+        let lang = self.session.lang;
+        if !self.presenting() {
+            views::typeset::paragraph(
+                ui,
+                sel.stage.explanation(lang),
+                &views::typeset::Style::body(ui),
+            );
+        }
+        let space = sel.stage.space();
+        self.stage_toolbar(ui, capture);
+        let observer = sel.show_observer && (space.is_some() || sel.comparison.is_none());
+        // A narration band or column leaves the views the part above or beside it.
+        let card = views::room::narration_card(ui.ctx());
+        let above = views::room::free_recorded(ui.ctx(), ui.available_rect_before_wrap(), card);
+        ui.scope_builder(egui::UiBuilder::new().max_rect(above), |ui| {
+            self.views(ui, capture, observer);
+        });
+        ui.advance_cursor_after_rect(above);
+    }
+
+    /// The compared images, or the stage's view with the observer or the exercise beside it.
+    fn views(
+        &mut self,
+        ui: &mut egui::Ui,
+        capture: &std::sync::Arc<pipeline::capture::FrameCapture>,
+        observer: bool,
+    ) {
+        let sel = self.session.selection.clone();
+        let space = sel.stage.space();
+        if sel.comparison.is_some() && space.is_none() {
+            let c = self.compare_view.ui(ui, &self.session);
+            self.commands.extend(c);
+            self.picture
+                .extend(self.compare_view.picture.iter().copied());
+            self.subject
+                .extend(self.compare_view.picture.iter().copied());
+            return;
+        }
+        let exercise = space.is_none() && self.session.current_exercise().is_some();
+        let (area, main, side) = if observer || exercise {
+            let (area, left, right) = split(
+                ui,
+                space
+                    .is_none()
+                    .then(|| capture.width() as f32 / capture.height() as f32),
+            );
+            (area, left, Some(right))
+        } else {
+            let area = ui.available_rect_before_wrap();
+            (area, area, None)
+        };
+        ui.scope_builder(egui::UiBuilder::new().max_rect(main), |ui| {
+            ui.set_clip_rect(main.intersect(ui.clip_rect()));
+            if let Some(space) = space {
+                let from = sel
+                    .stage
+                    .previous()
+                    .space()
+                    .filter(|_| sel.transition < 1.0 && sel.stage != Stage::Model);
+                let c = self.geometry_view.ui(
+                    ui,
+                    &self.session,
+                    capture,
+                    space,
+                    from,
+                    sel.transition,
+                    self.panels.matrix_card,
+                );
+                self.commands.extend(c);
+                self.picture.extend(self.geometry_view.picture);
+                self.subject.extend(self.geometry_view.subject);
+            } else {
+                let c = self.pixel_view.ui(ui, &self.session, capture);
+                self.commands.extend(c);
+                self.picture.extend(self.pixel_view.picture.iter().copied());
+                self.subject.extend(self.pixel_view.subject.iter().copied());
+            }
+        });
+        if let Some(side) = side {
+            ui.scope_builder(egui::UiBuilder::new().max_rect(side), |ui| {
+                ui.set_clip_rect(side.intersect(ui.clip_rect()));
+                if exercise {
+                    let c = self.exercise_view.ui(ui, &self.session, capture, side);
+                    self.commands.extend(c);
+                    self.picture
+                        .extend(self.exercise_view.picture.iter().copied());
+                } else {
+                    let c = self.observer_view.ui(ui, &self.session, capture);
+                    self.commands.extend(c);
+                    self.picture.extend(self.observer_view.picture);
+                }
+            });
+        }
+        ui.advance_cursor_after_rect(area);
+    }
+
+    fn animate(&mut self, ctx: &egui::Context) {
+        if self.session.lesson.as_ref().is_some_and(|p| p.playing) {
+            let dt = ctx.input(|i| i.stable_dt).min(0.1);
+            self.commands.push(Command::Tick(dt));
+            ctx.request_repaint();
+        }
+        let t = self.session.selection.transition;
+        if t < 1.0 {
+            let dt = ctx.input(|i| i.stable_dt).min(0.1);
+            self.session.selection.transition = (t + dt / 1.5).min(1.0);
+            ctx.request_repaint();
+        }
+        self.poll_export();
+        if self.export_result.is_some() || self.session.rendering() {
+            ctx.request_repaint_after(std::time::Duration::from_millis(50));
+        }
+    }
+}
+
+/// The space left in `ui` cut in two with a gap: `(all, first, second)`, beside each other, or
+/// (in a portrait space, a phone's) one over the other. With the `aspect` of the image in the
+/// first part, it is as large as the image needs to fill the other side, but no more than two
+/// thirds; the second part (the observer, which renders at any aspect) takes the rest.
+fn split(ui: &egui::Ui, aspect: Option<f32>) -> (egui::Rect, egui::Rect, egui::Rect) {
+    let area = ui.available_rect_before_wrap();
+    let gap = 8.0;
+    if area.height() > area.width() * 1.1 {
+        let height = area.height() - gap;
+        let top = aspect.map_or(height / 2.0, |a| {
+            (area.width() / a).clamp(height * 0.4, height * 0.64)
+        });
+        let first = egui::Rect::from_min_size(area.min, egui::vec2(area.width(), top));
+        let second =
+            egui::Rect::from_min_max(egui::pos2(area.left(), first.bottom() + gap), area.max);
+        return (area, first, second);
+    }
+    let width = area.width() - gap;
+    let left_width = aspect.map_or(width / 2.0, |a| {
+        (area.height() * a).clamp(width * 0.4, width * 0.64)
+    });
+    let left = egui::Rect::from_min_size(area.min, egui::vec2(left_width, area.height()));
+    let right = egui::Rect::from_min_max(egui::pos2(left.right() + gap, area.top()), area.max);
+    (area, left, right)
+}
+
+impl eframe::App for PipelensApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        self.frame(ui);
+        let ms = self.session.times.map(|t| t.total().as_secs_f64() * 1e3);
+        let share = self.picture_share(ui.ctx().content_rect());
+        platform::report(ui.ctx(), &self.title(), ms, share);
+    }
+
+    /// Keeps the student's progress (eframe calls this on closing and every
+    /// [`eframe::App::auto_save_interval`]).
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        self.session.progress.save(storage);
+        self.saved_progress.clone_from(&self.session.progress);
+    }
+
+    /// Progress is saved within seconds of an answer (a lab in a browser tab may be closed
+    /// without a goodbye).
+    fn auto_save_interval(&self) -> std::time::Duration {
+        SAVE_INTERVAL
+    }
+
+    /// Only the progress is kept: the app opens the same way every time.
+    fn persist_egui_memory(&self) -> bool {
+        false
+    }
+}
+
+/// How often eframe saves the progress (and on closing).
+const SAVE_INTERVAL: std::time::Duration = std::time::Duration::from_secs(5);
+
+impl PipelensApp {
+    /// The editor's part of a frame: a drag that ended recorded, the lesson open followed, the
+    /// window, and a lesson just made opened.
+    pub(super) fn edit_lesson(&mut self, ctx: &egui::Context) {
+        if !self.session.drafting
+            && let Some(from) = self.session.drag_from.take()
+        {
+            self.editor.dragged(&from, &self.session.spec);
+        }
+        let file = self.watched.as_ref().map(|w| w.path().to_path_buf());
+        self.editor.follow(&self.session, file.as_deref());
+        let commands = self.editor.ui(ctx, &self.session);
+        self.commands.extend(commands);
+        if let Some(made) = self.editor.made.take() {
+            self.open(made.doc, &made.source, made.file.clone());
+            self.editor
+                .adopt(&made.source, made.file.as_deref(), made.text);
+        }
+    }
+}

@@ -1,0 +1,12 @@
+//! Whether the window is small: a phone, a tablet in portrait, a phone held sideways. The app
+//! then lays itself out as `compact.rs` says.
+
+use egui::Context;
+
+/// Whether the window is too small for the desktop's bar and card: narrower than 700 points
+/// (a phone or a tablet in portrait) or lower than 480 (a phone in landscape).
+#[must_use]
+pub fn is_compact(ctx: &Context) -> bool {
+    let r = ctx.content_rect();
+    r.width() < 700.0 || r.height() < 480.0
+}
