@@ -1,13 +1,14 @@
 //! The architecture ARCHITECTURE.md describes, checked: the layers of the product, the order of
 //! the core's modules, the size of files.
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
+use crate::imports::{loops, top_level_modules};
 use crate::support::repo;
 
 /// Every `.rs` file below `dir`.
-fn rust_files(dir: &Path) -> Vec<PathBuf> {
+pub(crate) fn rust_files(dir: &Path) -> Vec<PathBuf> {
     let mut out = Vec::new();
     let mut stack = vec![dir.to_path_buf()];
     while let Some(d) = stack.pop() {
@@ -24,112 +25,59 @@ fn rust_files(dir: &Path) -> Vec<PathBuf> {
     out
 }
 
-/// The text of a source file without its comments (a comment may name a module it does not use).
-fn code(path: &Path) -> String {
-    let text = std::fs::read_to_string(path).expect("a source file");
-    text.lines()
-        .map(|l| l.split("//").next().unwrap_or(""))
-        .collect::<Vec<_>>()
-        .join("\n")
-}
-
-/// The top-level modules of a crate's `src` (a file `m.rs` or a folder `m/`), with their files.
-fn modules(src: &Path) -> BTreeMap<String, Vec<PathBuf>> {
-    let mut out = BTreeMap::new();
-    for entry in std::fs::read_dir(src).expect("src") {
-        let p = entry.expect("an entry").path();
-        let name = p
-            .file_stem()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        if p.is_dir() {
-            out.insert(name, rust_files(&p));
-        } else if name != "lib" && name != "main" && p.extension().is_some_and(|e| e == "rs") {
-            out.insert(name, vec![p]);
-        }
-    }
-    out
-}
-
-/// Which top-level modules each one names as `crate::m`.
-fn dependencies(src: &Path) -> BTreeMap<String, BTreeSet<String>> {
-    let mods = modules(src);
-    mods.iter()
-        .map(|(m, files)| {
-            let used = files
-                .iter()
-                .flat_map(|f| {
-                    let text = code(f);
-                    mods.keys()
-                        .filter(|d| *d != m && text.contains(&format!("crate::{d}")))
-                        .cloned()
-                        .collect::<Vec<_>>()
-                })
-                .collect();
-            (m.clone(), used)
-        })
-        .collect()
-}
-
-/// A cycle among the modules, if there is one (depth-first search).
-fn cycle(deps: &BTreeMap<String, BTreeSet<String>>) -> Option<Vec<String>> {
-    fn visit(
-        m: &str,
-        deps: &BTreeMap<String, BTreeSet<String>>,
-        path: &mut Vec<String>,
-        done: &mut BTreeSet<String>,
-    ) -> Option<Vec<String>> {
-        if let Some(i) = path.iter().position(|p| p == m) {
-            let mut c = path[i..].to_vec();
-            c.push(m.to_owned());
-            return Some(c);
-        }
-        if done.contains(m) {
-            return None;
-        }
-        path.push(m.to_owned());
-        for d in deps.get(m).into_iter().flatten() {
-            if let Some(c) = visit(d, deps, path, done) {
-                return Some(c);
-            }
-        }
-        path.pop();
-        done.insert(m.to_owned());
-        None
-    }
-    let mut done = BTreeSet::new();
-    deps.keys()
-        .find_map(|m| visit(m, deps, &mut Vec::new(), &mut done))
-}
-
 #[test]
-fn the_cycle_finder_finds_a_cycle() {
-    let deps: BTreeMap<String, BTreeSet<String>> = [
-        ("a", vec!["b"]),
-        ("b", vec!["c"]),
-        ("c", vec!["a"]),
-        ("d", vec![]),
-    ]
-    .into_iter()
-    .map(|(m, ds)| (m.to_owned(), ds.into_iter().map(str::to_owned).collect()))
-    .collect();
+fn the_core_s_modules_form_no_cycle() {
+    let deps = top_level_modules(&repo().join("crates/pipeline/src"));
+    assert!(deps.len() > 10, "the core's modules were found: {deps:?}");
     assert_eq!(
-        cycle(&deps),
-        Some(vec!["a".into(), "b".into(), "c".into(), "a".into()])
+        loops(&deps),
+        Vec::<Vec<String>>::new(),
+        "the core's modules: {deps:#?}"
     );
 }
 
+/// The modules a table of ARCHITECTURE.md lists, in its order, from the heading that starts
+/// with `heading` to the next one.
+fn table_order(heading: &str) -> Vec<String> {
+    let text = std::fs::read_to_string(repo().join("ARCHITECTURE.md")).expect("ARCHITECTURE.md");
+    let start = text.find(heading).expect("the table's heading");
+    let section = &text[start + heading.len()..];
+    let section = &section[..section.find("\n### ").unwrap_or(section.len())];
+    section
+        .lines()
+        .filter_map(|l| l.strip_prefix("| `"))
+        .filter_map(|l| l.split('`').next())
+        .map(|m| m.trim_end_matches(".rs").trim_end_matches('/').to_owned())
+        .collect()
+}
+
 #[test]
-fn the_core_s_modules_form_no_cycle() {
-    let deps = dependencies(&repo().join("crates/pipeline/src"));
-    assert!(deps.len() > 10, "the core's modules were found: {deps:?}");
-    assert_eq!(cycle(&deps), None, "the core's modules: {deps:#?}");
+fn each_core_module_uses_only_those_above_it_in_architecture_md() {
+    let order = table_order("### The core crate");
+    let deps = top_level_modules(&repo().join("crates/pipeline/src"));
+    let listed: BTreeSet<&String> = order.iter().collect();
+    let modules: BTreeSet<&String> = deps.keys().collect();
+    assert_eq!(
+        listed, modules,
+        "ARCHITECTURE.md lists every core module once"
+    );
+    for (i, m) in order.iter().enumerate() {
+        let below: Vec<&String> = deps[m].iter().filter(|d| !order[..i].contains(d)).collect();
+        assert!(
+            below.is_empty(),
+            "`{m}` uses {below:?}, listed below it in ARCHITECTURE.md's table"
+        );
+    }
 }
 
 #[test]
 fn the_product_s_modules_form_no_cycle_and_only_the_top_uses_the_app() {
-    let deps = dependencies(&repo().join("src"));
-    assert_eq!(cycle(&deps), None, "the product's modules: {deps:#?}");
+    let deps = top_level_modules(&repo().join("src"));
+    assert_eq!(
+        loops(&deps),
+        Vec::<Vec<String>>::new(),
+        "the product's modules: {deps:#?}"
+    );
     for below in [
         "vocabulary",
         "lesson",
@@ -154,9 +102,13 @@ fn the_product_s_modules_form_no_cycle_and_only_the_top_uses_the_app() {
 /// a GUI, and its modules form no cycle.
 #[test]
 fn the_glsl_engine_stands_alone() {
-    let deps = dependencies(&repo().join("crates/glsl/src"));
+    let deps = top_level_modules(&repo().join("crates/glsl/src"));
     assert!(deps.len() > 10, "the engine's modules were found: {deps:?}");
-    assert_eq!(cycle(&deps), None, "the engine's modules: {deps:#?}");
+    assert_eq!(
+        loops(&deps),
+        Vec::<Vec<String>>::new(),
+        "the engine's modules: {deps:#?}"
+    );
     let manifest = std::fs::read_to_string(repo().join("crates/glsl/Cargo.toml"))
         .expect("the engine's manifest");
     for above in ["pipeline", "egui", "eframe", "winit", "image"] {

@@ -11,6 +11,7 @@ mod course;
 mod edit;
 mod grade;
 mod handout;
+mod imports;
 mod lab_corpus;
 mod lab_corpus_geometry;
 mod lab_corpus_shading;
