@@ -6,6 +6,7 @@ use egui::{Color32, RichText};
 
 use super::PipelensApp;
 use super::session::Command;
+use super::shortcuts::{self, Action, MOUSE, SHORTCUTS};
 use super::views::navigator;
 use crate::vocabulary::Lang;
 
@@ -334,63 +335,10 @@ impl PipelensApp {
         });
     }
 
-    /// The keyboard shortcuts, in a window F1 (or ?) opens and closes.
+    /// The keyboard shortcuts ([`SHORTCUTS`]) and what the mouse does, in a window F1 (or ?)
+    /// opens and closes.
     pub(super) fn keys_help(&mut self, ctx: &egui::Context) {
         let lang = self.session.lang;
-        let keys: [(&str, &str, &str); 16] = [
-            (
-                "→  Page Down",
-                "next step of a lesson (next stage without one)",
-                "课程的下一步（无课程时为下一阶段）",
-            ),
-            (
-                "←  Page Up",
-                "previous step (previous stage)",
-                "上一步（上一阶段）",
-            ),
-            (
-                "Space",
-                "play or pause the step's animation (replay the transition)",
-                "播放或暂停本步动画（重放过渡）",
-            ),
-            ("N", "the narration card", "讲解卡片"),
-            ("P", "the parameters panel", "参数面板"),
-            (
-                "I",
-                "the inspector: matrices, vertices, the pixel explained",
-                "检查器：矩阵、顶点、像素解释",
-            ),
-            (
-                "M",
-                "the matrix card over the geometry",
-                "几何视图上的矩阵卡片",
-            ),
-            (
-                "C",
-                "classroom mode: large type, the picture first",
-                "课堂模式：大字号，画面优先",
-            ),
-            ("S", "the shader editor (GLSL)", "着色器编辑器（GLSL）"),
-            (
-                "R",
-                "the lesson editor: record what is on screen as steps, word, arrange, save (Ctrl+S)",
-                "课程编辑器：把屏幕内容录制为步骤，撰写文字，调整顺序，保存（Ctrl+S）",
-            ),
-            ("Ctrl Enter", "apply the shaders", "应用着色器"),
-            ("F11", "full screen", "全屏"),
-            ("Ctrl +  Ctrl −", "text size", "字号"),
-            ("F1  ?", "this list", "本列表"),
-            (
-                lang.tr("wheel, drag", "滚轮、拖动"),
-                "zoom at the cursor, pan (geometry: orbit)",
-                "以光标为中心缩放、平移（几何视图：环绕）",
-            ),
-            (
-                lang.tr("click", "单击"),
-                "select a pixel or a vertex",
-                "选择像素或顶点",
-            ),
-        ];
         let mut open = self.panels.keys;
         egui::Window::new(lang.tr("Keyboard shortcuts", "键盘快捷键"))
             .open(&mut open)
@@ -402,8 +350,21 @@ impl PipelensApp {
                     .striped(true)
                     .spacing([24.0, 6.0])
                     .show(ui, |ui| {
-                        for (key, en, zh) in keys {
-                            ui.label(RichText::new(key).monospace().strong());
+                        for s in &SHORTCUTS {
+                            ui.label(
+                                RichText::new(shortcuts::keys_written(s))
+                                    .monospace()
+                                    .strong(),
+                            );
+                            ui.label(lang.tr(s.does.0, s.does.1));
+                            ui.end_row();
+                        }
+                        for ((en_keys, zh_keys), (en, zh)) in MOUSE {
+                            ui.label(
+                                RichText::new(lang.tr(en_keys, zh_keys))
+                                    .monospace()
+                                    .strong(),
+                            );
                             ui.label(lang.tr(en, zh));
                             ui.end_row();
                         }
@@ -412,42 +373,29 @@ impl PipelensApp {
         self.panels.keys = open;
     }
 
+    /// The window's shortcuts acted on: the steps or stages, the animation, the panels, the
+    /// editors, classroom mode, full screen and the help (the lesson editor's Save, Undo and
+    /// Redo are its own, in `editor/window.rs`; the shader editor's Apply in `views/shader.rs`).
     pub(super) fn keyboard(&mut self, ctx: &egui::Context) {
-        if ctx.egui_wants_keyboard_input() {
-            return;
-        }
-        // The key's own modifiers, not those at the end of the frame: a Ctrl+S whose Ctrl is let
-        // go within the frame is still a shortcut, not S.
-        let pressed = |k: egui::Key| {
-            ctx.input(|i| {
-                i.events.iter().any(|e| {
-                    matches!(e, egui::Event::Key { key, pressed: true, modifiers, .. }
-                        if *key == k && !modifiers.ctrl && !modifiers.alt && !modifiers.command)
-                })
-            })
-        };
-        let (left, right) = (
-            pressed(egui::Key::ArrowLeft) || pressed(egui::Key::PageUp),
-            pressed(egui::Key::ArrowRight) || pressed(egui::Key::PageDown),
-        );
+        let pressed = |a: Action| shortcuts::pressed(ctx, a);
         // With a lesson the arrows (and a presenter's Page Up/Down) step it and Space plays its
         // animations; without one they move through the stages and replay the transition.
         let lesson = self.session.lesson.is_some();
-        if left {
+        if pressed(Action::Previous) {
             self.commands.push(if lesson {
                 Command::PreviousStep
             } else {
                 Command::PreviousStage
             });
         }
-        if right {
+        if pressed(Action::Next) {
             self.commands.push(if lesson {
                 Command::NextStep
             } else {
                 Command::NextStage
             });
         }
-        if pressed(egui::Key::Space) {
+        if pressed(Action::Play) {
             self.commands.push(if lesson {
                 Command::TogglePlay
             } else {
@@ -455,32 +403,24 @@ impl PipelensApp {
             });
         }
         let p = &mut self.panels;
-        if pressed(egui::Key::N) {
-            p.narration = !p.narration;
+        for (action, shown) in [
+            (Action::Narration, &mut p.narration),
+            (Action::Parameters, &mut p.parameters),
+            (Action::Inspector, &mut p.inspector),
+            (Action::MatrixCard, &mut p.matrix_card),
+            (Action::ShaderEditor, &mut p.shader),
+            (Action::Keys, &mut p.keys),
+            (Action::LessonEditor, &mut self.editor.open),
+        ] {
+            if pressed(action) {
+                *shown = !*shown;
+            }
         }
-        if pressed(egui::Key::P) {
-            p.parameters = !p.parameters;
-        }
-        if pressed(egui::Key::I) {
-            p.inspector = !p.inspector;
-        }
-        if pressed(egui::Key::M) {
-            p.matrix_card = !p.matrix_card;
-        }
-        if pressed(egui::Key::S) {
-            p.shader = !p.shader;
-        }
-        if pressed(egui::Key::R) {
-            self.editor.open = !self.editor.open;
-        }
-        if pressed(egui::Key::F1) || pressed(egui::Key::Questionmark) {
-            p.keys = !p.keys;
-        }
-        if pressed(egui::Key::C) {
+        if pressed(Action::Classroom) {
             let on = !self.classroom;
             self.set_classroom(ctx, on);
         }
-        if pressed(egui::Key::F11) {
+        if pressed(Action::FullScreen) {
             let full = ctx.input(|i| i.viewport().fullscreen.unwrap_or(false));
             ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(!full));
         }

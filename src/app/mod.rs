@@ -15,6 +15,7 @@ pub mod record;
 mod reload;
 pub mod selection;
 pub mod session;
+pub mod shortcuts;
 mod start;
 mod style;
 mod toolbar;

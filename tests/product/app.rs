@@ -553,6 +553,18 @@ fn the_keys_fold_panels_switch_classroom_mode_and_list_themselves() {
     h.run_steps(2);
     assert!(h.query_by_label("Keyboard shortcuts").is_some());
     assert!(h.query_by_label_contains("classroom mode").is_some());
+    // The help is the table the keys are read from: every row of it, and Ctrl+Shift+Z written
+    // as a reader types it.
+    for s in &pipelens::app::shortcuts::SHORTCUTS {
+        let keys = pipelens::app::shortcuts::keys_written(s);
+        assert!(h.query_by_label(&keys).is_some(), "the help lists {keys}");
+        assert!(
+            h.query_by_label(s.does.0).is_some(),
+            "the help says {}",
+            s.does.0
+        );
+    }
+    assert!(h.query_by_label("Ctrl+Shift+Z  Ctrl+Y").is_some());
     h.key_press(egui::Key::F1);
     h.run_steps(2);
     assert!(h.query_by_label("Keyboard shortcuts").is_none());

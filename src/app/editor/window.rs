@@ -213,21 +213,18 @@ impl Editor {
     }
 
     /// Ctrl+S saves; Ctrl+Z undoes and Ctrl+Shift+Z or Ctrl+Y redoes, unless a text box has the
-    /// keys (it undoes its own typing).
+    /// keys (it undoes its own typing). The keys are the shortcut table's.
     pub(super) fn shortcuts(&mut self, ctx: &Context, session: &Session, out: &mut Vec<Command>) {
-        use egui::{Key, KeyboardShortcut, Modifiers};
-        let shortcut = |m, k| ctx.input_mut(|i| i.consume_shortcut(&KeyboardShortcut::new(m, k)));
-        if shortcut(Modifiers::COMMAND, Key::S) {
+        use crate::app::shortcuts::{Action, pressed};
+        if pressed(ctx, Action::Save) {
             self.save(false);
         }
         if ctx.egui_wants_keyboard_input() {
             return;
         }
-        if shortcut(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z)
-            || shortcut(Modifiers::COMMAND, Key::Y)
-        {
+        if pressed(ctx, Action::Redo) {
             self.undo_redo(false, session, out);
-        } else if shortcut(Modifiers::COMMAND, Key::Z) {
+        } else if pressed(ctx, Action::Undo) {
             self.undo_redo(true, session, out);
         }
     }

@@ -312,7 +312,7 @@ pub fn ui(
     if edited && matches!(tab, Tab::Shader(_)) {
         editor.shaders_in_use = true;
     }
-    apply |= ui.input(|i| i.modifiers.ctrl && i.key_pressed(egui::Key::Enter));
+    apply |= crate::app::shortcuts::pressed(ui.ctx(), crate::app::shortcuts::Action::ApplyShaders);
     if edited || apply {
         editor.apply(session)
     } else {
