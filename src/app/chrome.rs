@@ -8,6 +8,7 @@ use super::PipelensApp;
 use super::session::Command;
 use super::shortcuts::{self, Action, MOUSE, SHORTCUTS};
 use super::views::navigator;
+use crate::app::command::{LessonCommand, ViewCommand};
 use crate::vocabulary::Lang;
 
 impl PipelensApp {
@@ -35,7 +36,7 @@ impl PipelensApp {
                     .on_hover_text(lang.tr("Switch the language", "切换语言"))
                     .clicked()
                 {
-                    self.commands.push(Command::SetLang(lang.other()));
+                    self.commands.push(Command::View(ViewCommand::SetLang(lang.other())));
                 }
                 if ui
                     .selectable_label(self.classroom, lang.tr("Classroom", "课堂模式"))
@@ -91,7 +92,8 @@ impl PipelensApp {
             .on_hover_text(lang.tr("Previous step (← or Page Up)", "上一步（← 或 Page Up）"))
             .clicked()
         {
-            self.commands.push(Command::PreviousStep);
+            self.commands
+                .push(Command::Lesson(LessonCommand::PreviousStep));
         }
         ui.menu_button(
             format!("{} {} / {n}", lang.tr("Step", "步骤"), k + 1),
@@ -102,7 +104,8 @@ impl PipelensApp {
                         .selectable_label(i == k, format!("{}. {}", i + 1, s.title.get(lang)))
                         .clicked()
                     {
-                        self.commands.push(Command::GoToStep(i));
+                        self.commands
+                            .push(Command::Lesson(LessonCommand::GoToStep(i)));
                         ui.close();
                     }
                 }
@@ -115,7 +118,7 @@ impl PipelensApp {
             .on_hover_text(lang.tr("Next step (→ or Page Down)", "下一步（→ 或 Page Down）"))
             .clicked()
         {
-            self.commands.push(Command::NextStep);
+            self.commands.push(Command::Lesson(LessonCommand::NextStep));
         }
         if !player.current().animate.is_empty() {
             let label = if player.playing {
@@ -131,7 +134,8 @@ impl PipelensApp {
                 ))
                 .clicked()
             {
-                self.commands.push(Command::TogglePlay);
+                self.commands
+                    .push(Command::Lesson(LessonCommand::TogglePlay));
             }
         }
     }
@@ -383,23 +387,23 @@ impl PipelensApp {
         let lesson = self.session.lesson.is_some();
         if pressed(Action::Previous) {
             self.commands.push(if lesson {
-                Command::PreviousStep
+                Command::Lesson(LessonCommand::PreviousStep)
             } else {
-                Command::PreviousStage
+                Command::View(ViewCommand::PreviousStage)
             });
         }
         if pressed(Action::Next) {
             self.commands.push(if lesson {
-                Command::NextStep
+                Command::Lesson(LessonCommand::NextStep)
             } else {
-                Command::NextStage
+                Command::View(ViewCommand::NextStage)
             });
         }
         if pressed(Action::Play) {
             self.commands.push(if lesson {
-                Command::TogglePlay
+                Command::Lesson(LessonCommand::TogglePlay)
             } else {
-                Command::PlayTransition
+                Command::View(ViewCommand::PlayTransition)
             });
         }
         let p = &mut self.panels;

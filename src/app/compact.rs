@@ -10,6 +10,7 @@ use egui::{Context, RichText};
 
 use super::PipelensApp;
 use super::session::Command;
+use crate::app::command::{LessonCommand, ViewCommand};
 use crate::vocabulary::{Lang, Stage};
 
 /// The least a swipe moves across (points), and how much more across than down it goes.
@@ -28,7 +29,8 @@ impl PipelensApp {
                     self.lessons_menu(ui, lang);
                     self.panel_toggles(ui, lang);
                     if ui.button(lang.other().name()).clicked() {
-                        self.commands.push(Command::SetLang(lang.other()));
+                        self.commands
+                            .push(Command::View(ViewCommand::SetLang(lang.other())));
                     }
                     self.export_menu(ui, lang);
                     ui.toggle_value(&mut self.panels.keys, lang.tr("Keys (?)", "快捷键（?）"));
@@ -52,7 +54,8 @@ impl PipelensApp {
                         .on_hover_text(stage.explanation(lang))
                         .clicked()
                     {
-                        self.commands.push(Command::SelectStage(stage));
+                        self.commands
+                            .push(Command::View(ViewCommand::SelectStage(stage)));
                     }
                 }
             })
@@ -126,9 +129,9 @@ fn swiped(ctx: &Context, rect: egui::Rect) -> Option<Command> {
     let d = to - from;
     (rect.contains(from) && d.x.abs() > SWIPE && d.x.abs() > 2.0 * d.y.abs()).then_some(
         if d.x < 0.0 {
-            Command::NextStep
+            Command::Lesson(LessonCommand::NextStep)
         } else {
-            Command::PreviousStep
+            Command::Lesson(LessonCommand::PreviousStep)
         },
     )
 }

@@ -3,6 +3,7 @@
 //! pipeline results itself.
 
 mod chrome;
+pub mod command;
 mod compact;
 pub mod display;
 mod editor;

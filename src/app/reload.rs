@@ -7,6 +7,7 @@ use std::path::PathBuf;
 use super::PipelensApp;
 use super::session::Command;
 use super::watched::Watched;
+use crate::app::command::{EditorCommand, SceneCommand};
 
 impl PipelensApp {
     /// Watches `path` (the file the session was loaded from): when it changes on disk, it is
@@ -43,11 +44,18 @@ impl PipelensApp {
         }
         let loaded = crate::lesson::load_file(w.path());
         self.commands.extend(match loaded {
-            Ok(crate::lesson::Document::Lesson(l)) => vec![Command::ReloadLesson(l)],
-            Ok(crate::lesson::Document::Scene(s)) => {
-                vec![Command::SetReloadError(None), Command::SetSpec(s)]
+            Ok(crate::lesson::Document::Lesson(l)) => {
+                vec![Command::Editor(EditorCommand::ReloadLesson(l))]
             }
-            Err(e) => vec![Command::SetReloadError(Some(e.to_string()))],
+            Ok(crate::lesson::Document::Scene(s)) => {
+                vec![
+                    Command::Editor(EditorCommand::SetReloadError(None)),
+                    Command::Scene(SceneCommand::SetSpec(s)),
+                ]
+            }
+            Err(e) => vec![Command::Editor(EditorCommand::SetReloadError(Some(
+                e.to_string(),
+            )))],
         });
     }
 }

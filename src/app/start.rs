@@ -9,6 +9,7 @@ use super::style::setup_context;
 use super::window::PipelensApp;
 use super::worker::RenderWorker;
 use super::{platform, progress};
+use crate::app::command::{LessonCommand, ViewCommand};
 use crate::vocabulary::{Lang, Stage};
 
 /// How the app starts: language, stage, comparison.
@@ -43,13 +44,13 @@ pub fn create(
     session.lang = start.lang;
     session.progress = progress::Progress::load(cc.storage);
     if let Some(k) = start.step {
-        session.apply(Command::GoToStep(k));
+        session.apply(Command::Lesson(LessonCommand::GoToStep(k)));
     }
     if let Some(stage) = start.stage {
-        session.apply(Command::SelectStage(stage));
+        session.apply(Command::View(ViewCommand::SelectStage(stage)));
     }
     if start.compare.is_some() {
-        session.apply(Command::SetComparison(start.compare));
+        session.apply(Command::View(ViewCommand::SetComparison(start.compare)));
     }
     setup_context(&cc.egui_ctx);
     let mut app = PipelensApp::new(session);

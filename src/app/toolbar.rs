@@ -8,6 +8,7 @@ use egui::RichText;
 use super::session::Command;
 use super::views::pixels::PixelView;
 use super::{PipelensApp, style, views};
+use crate::app::command::ViewCommand;
 
 impl PipelensApp {
     /// One row: the stage's name (its explanation on hover) and the view's controls; in a small
@@ -70,7 +71,8 @@ impl PipelensApp {
                 ))
                 .changed()
             {
-                self.commands.push(Command::ToggleObserver);
+                self.commands
+                    .push(Command::View(ViewCommand::ToggleObserver));
             }
         }
     }
@@ -94,7 +96,8 @@ impl PipelensApp {
                 "用不同设置渲染场景并并排显示，附亮度剖面曲线。",
             ));
         if choice != current {
-            self.commands.push(Command::SetComparison(choice));
+            self.commands
+                .push(Command::View(ViewCommand::SetComparison(choice)));
         }
     }
 }

@@ -11,6 +11,7 @@ use super::views::{
     pixels::PixelView,
 };
 use super::{editor, platform, progress, views, watched, window_size};
+use crate::app::command::{LessonCommand, SceneCommand};
 use crate::vocabulary::Stage;
 
 /// What the window shows around the picture. In a lesson or classroom mode the picture comes
@@ -254,7 +255,7 @@ impl PipelensApp {
         } else if self
             .commands
             .iter()
-            .any(|c| matches!(c, Command::SetSpec(_)))
+            .any(|c| matches!(c, Command::Scene(SceneCommand::SetSpec(_))))
         {
             self.session.set_drafting(true);
         }
@@ -394,7 +395,7 @@ impl PipelensApp {
     fn animate(&mut self, ctx: &egui::Context) {
         if self.session.lesson.as_ref().is_some_and(|p| p.playing) {
             let dt = ctx.input(|i| i.stable_dt).min(0.1);
-            self.commands.push(Command::Tick(dt));
+            self.commands.push(Command::Lesson(LessonCommand::Tick(dt)));
             ctx.request_repaint();
         }
         let t = self.session.selection.transition;

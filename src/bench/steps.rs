@@ -6,6 +6,7 @@
 
 use std::io::Write;
 
+use crate::app::command::LessonCommand;
 use crate::app::session::{Command, Session};
 
 /// One step's frame times: the median of `frames` on one thread and on `threads`.
@@ -61,7 +62,7 @@ pub fn run(
     )?;
     let mut rows = Vec::with_capacity(steps);
     for k in 0..steps {
-        session.apply(Command::GoToStep(k));
+        session.apply(Command::Lesson(LessonCommand::GoToStep(k)));
         let job = session.job();
         let settings = &job.spec.settings;
         let row = StepTimes {

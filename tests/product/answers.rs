@@ -5,6 +5,7 @@
 use std::collections::HashMap;
 
 use egui_kittest::kittest::Queryable;
+use pipelens::app::command::{LessonCommand, ViewCommand};
 use pipelens::app::progress::Progress;
 use pipelens::app::session::Command;
 
@@ -36,7 +37,9 @@ fn go_to_the_typed_question(h: &mut egui_kittest::Harness<'_, pipelens::app::Pip
         .iter()
         .position(|s| s.expect.is_some())
         .expect("the lesson has a question with a value");
-    h.state_mut().session.apply(Command::GoToStep(k));
+    h.state_mut()
+        .session
+        .apply(Command::Lesson(LessonCommand::GoToStep(k)));
     h.run_steps(4);
 }
 
@@ -45,10 +48,12 @@ fn type_and_check(h: &mut egui_kittest::Harness<'_, pipelens::app::PipelensApp>,
     let boxes = h.get_all_by_role(egui::accesskit::Role::TextInput).count();
     assert_eq!(boxes, cells.len(), "the field has one box per entry");
     for (i, text) in cells.iter().enumerate() {
-        h.state_mut().session.apply(Command::TypeAnswer {
-            cell: i,
-            text: (*text).to_owned(),
-        });
+        h.state_mut()
+            .session
+            .apply(Command::Lesson(LessonCommand::TypeAnswer {
+                cell: i,
+                text: (*text).to_owned(),
+            }));
     }
     h.run_steps(2);
     h.get_by_label("Check").click();
@@ -62,7 +67,9 @@ fn type_and_check(h: &mut egui_kittest::Harness<'_, pipelens::app::PipelensApp>,
 fn a_typed_matrix_is_checked_entry_by_entry_and_remembered_across_runs() {
     let path = repo().join("lessons/05-perspective.toml");
     let mut h = sized_lesson_harness(&path, [1920.0, 1080.0]);
-    h.state_mut().session.apply(Command::GoToStep(2));
+    h.state_mut()
+        .session
+        .apply(Command::Lesson(LessonCommand::GoToStep(2)));
     h.run_steps(4);
     let wrong = [
         "1", "0", "0", "0", "0", "1", "0", "0", "0", "0", "-1", "-2", "0", "0", "-1", "0",
@@ -115,7 +122,10 @@ fn a_typed_matrix_is_checked_entry_by_entry_and_remembered_across_runs() {
     assert_eq!(kept, h.state().session.progress);
     let mut again = sized_lesson_harness(&path, [1920.0, 1080.0]);
     again.state_mut().session.progress = kept;
-    again.state_mut().session.apply(Command::GoToStep(2));
+    again
+        .state_mut()
+        .session
+        .apply(Command::Lesson(LessonCommand::GoToStep(2)));
     again.run_steps(4);
     assert!(
         again
@@ -145,7 +155,9 @@ fn the_verdict_speaks_chinese_and_names_empty_cells() {
     let mut h = sized_lesson_harness(&path, [1366.0, 768.0]);
     h.state_mut()
         .session
-        .apply(Command::SetLang(pipelens::vocabulary::Lang::Zh));
+        .apply(Command::View(ViewCommand::SetLang(
+            pipelens::vocabulary::Lang::Zh,
+        )));
     go_to_the_typed_question(&mut h);
     h.get_by_label("检查").click();
     h.run_steps(3);
@@ -349,7 +361,10 @@ fn two_windows_saving_keep_each_others_progress() {
     let mut storage = Memory::default();
     let mut first = sized_lesson_harness(&path, [1366.0, 768.0]);
     let second = sized_lesson_harness(&path, [1366.0, 768.0]);
-    first.state_mut().session.apply(Command::GoToStep(1));
+    first
+        .state_mut()
+        .session
+        .apply(Command::Lesson(LessonCommand::GoToStep(1)));
     first.run_steps(3);
     type_and_check(&mut first, &["1", "1"]);
     first.state().session.progress.save(&mut storage);

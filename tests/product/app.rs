@@ -9,6 +9,7 @@ use pipelens::vocabulary::{Lang, Stage};
 mod classroom;
 mod export;
 mod framing;
+mod keys;
 mod library;
 mod params;
 mod phone;
@@ -291,7 +292,9 @@ pub(crate) fn go_to_last_step(h: &mut Harness<'_, PipelensApp>) -> usize {
         .map_or(0, |p| p.lesson.steps.len() - 1);
     h.state_mut()
         .session
-        .apply(pipelens::app::session::Command::GoToStep(last));
+        .apply(pipelens::app::session::Command::Lesson(
+            pipelens::app::session::LessonCommand::GoToStep(last),
+        ));
     h.run_steps(2);
     last
 }
@@ -307,7 +310,9 @@ pub(crate) fn go_to_step_titled(h: &mut Harness<'_, PipelensApp>, title: &str) -
         .unwrap_or_else(|| panic!("no step titled {title:?}"));
     h.state_mut()
         .session
-        .apply(pipelens::app::session::Command::GoToStep(k));
+        .apply(pipelens::app::session::Command::Lesson(
+            pipelens::app::session::LessonCommand::GoToStep(k),
+        ));
     h.run_steps(2);
     k
 }
@@ -403,11 +408,17 @@ fn every_lesson_step_draws_in_both_languages() {
         for lang in [Lang::En, Lang::Zh] {
             h.state_mut()
                 .session
-                .apply(pipelens::app::session::Command::SetLang(lang));
+                .apply(pipelens::app::session::Command::View(
+                    pipelens::app::session::ViewCommand::SetLang(lang),
+                ));
             for k in 0..n {
                 let s = &mut h.state_mut().session;
-                s.apply(pipelens::app::session::Command::GoToStep(k));
-                s.apply(pipelens::app::session::Command::ShowAnswer(true));
+                s.apply(pipelens::app::session::Command::Lesson(
+                    pipelens::app::session::LessonCommand::GoToStep(k),
+                ));
+                s.apply(pipelens::app::session::Command::Lesson(
+                    pipelens::app::session::LessonCommand::ShowAnswer(true),
+                ));
                 h.run_steps(2);
                 assert!(
                     h.state().session.error.is_none(),
@@ -467,7 +478,9 @@ fn the_picture_of_every_step_takes_most_of_the_window() {
             for k in 0..n {
                 h.state_mut()
                     .session
-                    .apply(pipelens::app::session::Command::GoToStep(k));
+                    .apply(pipelens::app::session::Command::Lesson(
+                        pipelens::app::session::LessonCommand::GoToStep(k),
+                    ));
                 h.run_steps(6);
                 let lesson_share = h.state().picture_share(screen);
                 let ctx = h.ctx.clone();
@@ -530,47 +543,6 @@ fn the_picture_of_every_step_takes_most_of_the_window() {
 }
 
 #[test]
-fn the_keys_fold_panels_switch_classroom_mode_and_list_themselves() {
-    let mut h = lesson_harness(None);
-    h.run_steps(4);
-    assert!(h.state().panels.narration);
-    h.key_press(egui::Key::N);
-    h.run_steps(2);
-    assert!(!h.state().panels.narration, "N folds the narration");
-    assert!(
-        h.query_by_label_contains("This is what the pipeline produces")
-            .is_none()
-    );
-    assert!(!h.state().classroom());
-    h.key_press(egui::Key::C);
-    h.run_steps(2);
-    assert!(h.state().classroom(), "C turns classroom mode on");
-    h.key_press(egui::Key::C);
-    h.run_steps(2);
-    assert!(!h.state().classroom());
-    assert!(h.query_by_label("Keyboard shortcuts").is_none());
-    h.key_press(egui::Key::F1);
-    h.run_steps(2);
-    assert!(h.query_by_label("Keyboard shortcuts").is_some());
-    assert!(h.query_by_label_contains("classroom mode").is_some());
-    // The help is the table the keys are read from: every row of it, and Ctrl+Shift+Z written
-    // as a reader types it.
-    for s in &pipelens::app::shortcuts::SHORTCUTS {
-        let keys = pipelens::app::shortcuts::keys_written(s);
-        assert!(h.query_by_label(&keys).is_some(), "the help lists {keys}");
-        assert!(
-            h.query_by_label(s.does.0).is_some(),
-            "the help says {}",
-            s.does.0
-        );
-    }
-    assert!(h.query_by_label("Ctrl+Shift+Z  Ctrl+Y").is_some());
-    h.key_press(egui::Key::F1);
-    h.run_steps(2);
-    assert!(h.query_by_label("Keyboard shortcuts").is_none());
-}
-
-#[test]
 fn a_step_that_asks_before_it_animates_waits_for_space() {
     let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
     let mut h = lesson_harness(Some(path));
@@ -584,7 +556,9 @@ fn a_step_that_asks_before_it_animates_waits_for_space() {
         .expect("lesson 10 has a predict-then-watch step");
     h.state_mut()
         .session
-        .apply(pipelens::app::session::Command::GoToStep(spot));
+        .apply(pipelens::app::session::Command::Lesson(
+            pipelens::app::session::LessonCommand::GoToStep(spot),
+        ));
     h.run_steps(4);
     let playing =
         |h: &Harness<'_, PipelensApp>| h.state().session.lesson.as_ref().is_some_and(|p| p.playing);

@@ -4,6 +4,7 @@
 
 use std::sync::Arc;
 
+use pipelens::app::command::{LessonCommand, SceneCommand};
 use pipelens::lesson::Document;
 use pipeline::scene::ObjectShader;
 
@@ -93,7 +94,7 @@ fn the_inside_lab_in_the_app_passes_and_keeps_the_inside_test() {
         .set_inside(&pipeline::shader::compile_inside(&solved).expect("compiles"));
     h.state_mut()
         .session
-        .apply(Command::SetSpec(Box::new(spec)));
+        .apply(Command::Scene(SceneCommand::SetSpec(Box::new(spec))));
     h.run_steps(6);
     assert!(
         h.query_by_label_contains("Passed: all 384 pixels match")
@@ -102,9 +103,13 @@ fn the_inside_lab_in_the_app_passes_and_keeps_the_inside_test() {
     let lesson = crate::app::lesson_of(&h);
     assert!(h.state().session.progress.passed(&lesson, k));
     // Away and back: the step runs the test that passed, not the starter.
-    h.state_mut().session.apply(Command::PreviousStep);
+    h.state_mut()
+        .session
+        .apply(Command::Lesson(LessonCommand::PreviousStep));
     h.run_steps(4);
-    h.state_mut().session.apply(Command::NextStep);
+    h.state_mut()
+        .session
+        .apply(Command::Lesson(LessonCommand::NextStep));
     h.run_steps(6);
     let running = h.state().session.spec.scene.objects[0]
         .inside
@@ -205,7 +210,7 @@ fn the_de_casteljau_lab_compares_the_curve_point_by_point() {
     spec.scene.set_hook(&solved);
     h.state_mut()
         .session
-        .apply(Command::SetSpec(Box::new(spec)));
+        .apply(Command::Scene(SceneCommand::SetSpec(Box::new(spec))));
     h.run_steps(6);
     assert!(
         h.query_by_label_contains("Passed: all 161 points of your curve lie within 1e-4")
@@ -251,7 +256,7 @@ fn a_mismatch_names_the_first_value_that_differs_and_an_unnormalized_normal() {
     });
     h.state_mut()
         .session
-        .apply(Command::SetSpec(Box::new(spec)));
+        .apply(Command::Scene(SceneCommand::SetSpec(Box::new(spec))));
     h.run_steps(6);
     assert!(h.query_by_label_contains("Not yet").is_some());
     h.get_by_label("Inspect the first wrong pixel").click();
@@ -273,7 +278,9 @@ fn a_matrix_lab_names_the_first_wrong_vertex_and_the_entries_off() {
     let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
     h.state_mut()
         .session
-        .apply(pipelens::app::session::Command::GoToStep(2));
+        .apply(pipelens::app::session::Command::Lesson(
+            pipelens::app::session::LessonCommand::GoToStep(2),
+        ));
     h.run_steps(6);
     assert!(
         h.query_by_label_contains("The first vertex off is row")

@@ -4,6 +4,7 @@
 
 use std::sync::Arc;
 
+use pipelens::app::command::{SceneCommand, ViewCommand};
 use pipelens::lesson::Document;
 use pipelens::vocabulary::Lang;
 use pipeline::scene::ObjectShader;
@@ -385,7 +386,7 @@ fn a_lab_in_the_app_says_not_yet_then_passed_and_keeps_the_code() {
     });
     h.state_mut()
         .session
-        .apply(Command::SetSpec(Box::new(spec)));
+        .apply(Command::Scene(SceneCommand::SetSpec(Box::new(spec))));
     h.run_steps(6);
     assert!(
         h.query_by_label_contains("Passed: all 172800 pixels match")
@@ -550,7 +551,9 @@ fn a_lab_s_starter_reads_in_chinese_and_is_still_the_starter() {
     let path = crate::support::repo().join("lessons/24-shader-programs.toml");
     let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
     h.state_mut().panels.shader = true;
-    h.state_mut().session.apply(Command::SetLang(Lang::Zh));
+    h.state_mut()
+        .session
+        .apply(Command::View(ViewCommand::SetLang(Lang::Zh)));
     crate::app::go_to_step_titled(&mut h, "Lab: Gouraud shading in the vertex shader");
     h.run_steps(4);
     let source = h

@@ -2,6 +2,7 @@
 //! parameter reads back the value `set` gives it, and the parameters that differ between two
 //! states of a scene are the `set` entries that lead from one to the other.
 
+use pipelens::app::command::{LessonCommand, SceneCommand, SelectionCommand};
 use pipelens::lesson::param::{self, Value};
 
 fn close(a: &Value, b: &Value) -> bool {
@@ -202,11 +203,13 @@ fn the_state_on_screen_is_recorded_as_a_step() {
     let path = crate::support::repo().join("lessons/17-hierarchy.toml");
     let doc = pipelens::lesson::load_file(&path).expect("the lesson loads");
     let mut s = Session::with_document(doc, "test", None);
-    s.apply(Command::GoToStep(0));
+    s.apply(Command::Lesson(LessonCommand::GoToStep(0)));
     let mut spec = s.spec.clone();
     param::apply(&mut spec, "figures.arm.base", &Value::Number(50.0)).expect("a joint");
-    s.apply(Command::SetSpec(Box::new(spec)));
-    s.apply(Command::SelectPixel(Some((120, 80))));
+    s.apply(Command::Scene(SceneCommand::SetSpec(Box::new(spec))));
+    s.apply(Command::Selection(SelectionCommand::SelectPixel(Some((
+        120, 80,
+    )))));
     let step = pipelens::app::record::recorded_step(&s).expect("a lesson is open");
     assert_eq!(step.stage, Some(pipelens::vocabulary::Stage::World));
     assert_eq!(step.layout, Layout::Observer);

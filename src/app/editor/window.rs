@@ -6,6 +6,7 @@ use egui::{Context, RichText};
 
 use super::file::Edited;
 use super::new::{self, Made, NewLesson};
+use crate::app::command::{EditorCommand, LessonCommand};
 
 use crate::app::session::{Command, Session};
 use crate::lesson::SceneSpec;
@@ -410,11 +411,11 @@ impl Editor {
         let lang = session.lang;
         let at = step.unwrap_or_else(|| session.lesson.as_ref().map_or(0, |p| p.step));
         match doc.draft.lesson() {
-            Ok(lesson) => out.push(Command::ReviseLesson {
+            Ok(lesson) => out.push(Command::Editor(EditorCommand::ReviseLesson {
                 lesson: Box::new(lesson),
                 step: at,
                 enter: true,
-            }),
+            })),
             Err(e) if refuse => {
                 doc.draft.discard_last();
                 self.said = Some(Err(format!(
@@ -471,7 +472,7 @@ impl Editor {
                     };
                     let label = format!("{mark} {:>2}  {}", k + 1, step.title.get(lang));
                     if ui.selectable_label(k == current, label).clicked() && k != current {
-                        out.push(Command::GoToStep(k));
+                        out.push(Command::Lesson(LessonCommand::GoToStep(k)));
                     }
                 }
             });

@@ -6,6 +6,7 @@
 use egui::RichText;
 
 use super::window::Editor;
+use crate::app::command::EditorCommand;
 use crate::app::session::{Command, Session};
 use crate::app::views::lesson::{card_style, narration};
 use crate::lesson::edit::Words;
@@ -83,11 +84,11 @@ impl Editor {
             step.question = optional(question);
             step.answer = optional(answer);
         }
-        out.push(Command::ReviseLesson {
+        out.push(Command::Editor(EditorCommand::ReviseLesson {
             lesson: Box::new(lesson),
             step: k,
             enter: false,
-        });
+        }));
     }
 }
 

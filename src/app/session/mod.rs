@@ -1,17 +1,21 @@
-//! The app's state with no egui (`state.rs`: the predictable step rule, the render jobs, the
-//! commands applied), what the current step teaches (`teaching.rs`), an exercise step's
-//! reference render and its code kept (`exercise.rs`), its reference and findings
-//! (`reference.rs`), and the finer render it asks of its view
-//! (`fine.rs`).
+//! The app's state with no egui: the session itself, the predictable step rule and the render
+//! jobs (`state.rs`); the commands panels return, applied kind by kind (`apply.rs`); what the
+//! current step teaches (`teaching.rs`); an exercise step's reference render and the code kept
+//! (`exercise.rs`), that reference and its findings (`reference.rs`); the finer render the
+//! session asks of its view (`fine.rs`).
 
+mod apply;
 mod exercise;
 mod fine;
 mod reference;
 mod state;
 mod teaching;
 
+pub use crate::app::command::{
+    Command, EditorCommand, LessonCommand, SceneCommand, SelectionCommand, ViewCommand,
+};
 pub use crate::app::player::LessonPlayer;
-pub use crate::app::selection::{Command, DepthView, Selection};
+pub use crate::app::selection::{DepthView, Selection};
 pub use reference::Comparison;
 pub use state::{Session, source_name};
 pub use teaching::Teaching;

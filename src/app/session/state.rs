@@ -1,5 +1,5 @@
 //! The app's state with no egui in it: the scene being taught, the latest capture, what is
-//! selected. Panels read it and return [`Command`]s; the app applies them once per frame.
+//! selected. Panels read it and return [`Command`](crate::app::command::Command)s; the app applies them once per frame.
 
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -13,12 +13,12 @@ use pipeline::overlay::OverlayKind;
 use super::reference::Comparison as ExerciseComparison;
 use crate::app::display::Fine;
 use crate::app::player::LessonPlayer;
-use crate::app::selection::{Command, DepthView, Selection};
+use crate::app::selection::{DepthView, Selection};
 use crate::app::worker::{Job, RenderWorker, Rendered};
 use crate::lesson::script::{Layout, Overlay};
 use crate::lesson::{Document, SceneSpec};
 use crate::observer::{Orbit, default_orbit};
-use crate::vocabulary::{Comparison, Lang, Stage};
+use crate::vocabulary::{Lang, Stage};
 /// The state of the app.
 pub struct Session {
     /// The scene and settings being shown.
@@ -162,7 +162,7 @@ impl Session {
     }
 
     /// Goes to step `k` (clamped): its scene, stage, layout, buffer, overlays and highlights.
-    fn enter_step(&mut self, k: usize) {
+    pub(super) fn enter_step(&mut self, k: usize) {
         let Some(player) = &mut self.lesson else {
             return;
         };
@@ -226,7 +226,7 @@ impl Session {
     }
 
     /// Moves the step's animations on by `dt` seconds.
-    fn tick(&mut self, dt: f32) {
+    pub(super) fn tick(&mut self, dt: f32) {
         let Some(player) = &mut self.lesson else {
             return;
         };
@@ -408,148 +408,7 @@ impl Session {
         true
     }
 
-    /// Applies one command.
-    pub fn apply(&mut self, cmd: Command) {
-        let stage = self.selection.stage;
-        match cmd {
-            Command::SelectStage(s) => self.go_to(s),
-            Command::NextStage => self.go_to(stage.next()),
-            Command::PreviousStage => self.go_to(stage.previous()),
-            Command::GoToStep(k) => self.enter_step(k),
-            Command::NextStep => {
-                let k = self.lesson.as_ref().map_or(0, |p| p.step + 1);
-                self.enter_step(k);
-            }
-            Command::PreviousStep => {
-                let k = self.lesson.as_ref().map_or(0, |p| p.step.saturating_sub(1));
-                self.enter_step(k);
-            }
-            Command::TogglePlay => {
-                if let Some(p) = &mut self.lesson {
-                    if !p.playing && p.current().animate.iter().all(|a| a.finished(p.time)) {
-                        p.time = 0.0;
-                    }
-                    p.playing = !p.playing && !p.current().animate.is_empty();
-                }
-            }
-            Command::Tick(dt) => self.tick(dt),
-            Command::ShowAnswer(b) => {
-                if let Some(p) = &mut self.lesson {
-                    p.show_answer = b;
-                }
-            }
-            Command::TypeAnswer { cell, text } => {
-                if let Some(p) = &mut self.lesson
-                    && let Some(e) = &p.current().expect
-                {
-                    let at = (p.step, cell, e.shape.cells());
-                    self.progress.type_cell(&p.lesson, at, text);
-                    p.verdict = None;
-                }
-            }
-            Command::CheckAnswer => {
-                if let Some(p) = &mut self.lesson {
-                    p.verdict = self.progress.check(&p.lesson, p.step);
-                }
-            }
-            Command::ReloadLesson(lesson) => {
-                let step = self.lesson.as_ref().map_or(0, |p| p.step);
-                self.revise(*lesson, step, true);
-            }
-            Command::ReviseLesson {
-                lesson,
-                step,
-                enter,
-            } => self.revise(*lesson, step, enter),
-            Command::SetReloadError(e) => self.reload_error = e,
-            _ => self.apply_selection(cmd),
-        }
-    }
-
-    /// `lesson` in place of the one playing, at its step `step`: entered (its scene, view and
-    /// selection as the step sets them) or, for a change of words only, kept as it is on screen.
-    fn revise(&mut self, lesson: crate::lesson::Lesson, step: usize, enter: bool) {
-        self.reload_error = None;
-        let step = step.min(lesson.steps.len().saturating_sub(1));
-        self.lesson = Some(LessonPlayer::new(Arc::new(lesson), step));
-        if enter {
-            self.enter_step(step);
-        }
-    }
-
-    fn apply_selection(&mut self, cmd: Command) {
-        let sel = &mut self.selection;
-        match cmd {
-            Command::SelectStage(_)
-            | Command::NextStage
-            | Command::PreviousStage
-            | Command::GoToStep(_)
-            | Command::NextStep
-            | Command::PreviousStep
-            | Command::TogglePlay
-            | Command::Tick(_)
-            | Command::ShowAnswer(_)
-            | Command::TypeAnswer { .. }
-            | Command::CheckAnswer
-            | Command::ReloadLesson(_)
-            | Command::ReviseLesson { .. }
-            | Command::SetReloadError(_) => {}
-            Command::SelectBuffer(b) => sel.buffer = b,
-            Command::ToggleOverlay(o) => {
-                if let Some(i) = sel.overlays.iter().position(|x| *x == o) {
-                    sel.overlays.remove(i);
-                } else {
-                    sel.overlays.push(o);
-                }
-            }
-            Command::ToggleSamples => sel.show_samples = !sel.show_samples,
-            Command::ToggleNormals => sel.show_normals = !sel.show_normals,
-            Command::ToggleObserver => sel.show_observer = !sel.show_observer,
-            Command::SelectVertex(v) => sel.vertex = v,
-            Command::SelectPixel(p) => sel.pixel = p,
-            Command::SetSpec(spec) => {
-                if *spec != self.spec {
-                    self.spec = *spec;
-                    self.request_render();
-                }
-            }
-            Command::SetObserverAspect(a) => {
-                let changed = self
-                    .observer_aspect
-                    .is_none_or(|old| (old / a - 1.0).abs() > 0.05);
-                if changed {
-                    self.observer_aspect = Some(a);
-                    if self.observer_shown() {
-                        self.request_render();
-                    }
-                }
-            }
-            Command::SetViewPixels(p) => self.view_pixels = Some(p),
-            Command::SetOrbit(o) => {
-                if o != self.orbit {
-                    self.orbit = o;
-                    self.request_render();
-                }
-            }
-            Command::PlayTransition => sel.transition = 0.0,
-            Command::SetLang(l) => self.lang = l,
-            Command::SetComparison(c) => {
-                if sel.comparison != c {
-                    sel.comparison = c;
-                    // The Mach band comparison is read along a line; the others on request.
-                    if sel.profile.is_none() && c == Some(Comparison::Shading) {
-                        let (w, h) = (self.spec.settings.width, self.spec.settings.height);
-                        sel.profile = Some(crate::lesson::script::middle_row(w, h));
-                    }
-                    self.request_render();
-                }
-            }
-            Command::SetProfile(p) => sel.profile = p,
-            Command::SetDepthView(d) => sel.depth_view = d,
-        }
-    }
-
-    fn go_to(&mut self, stage: Stage) {
+    pub(super) fn go_to(&mut self, stage: Stage) {
         let sel = &mut self.selection;
         if stage != sel.stage {
             let animate =

@@ -5,6 +5,7 @@
 use egui::{Color32, RichText, Ui};
 
 use super::typeset::Style;
+use crate::app::command::LessonCommand;
 use crate::app::progress::Progress;
 use crate::app::session::{Command, LessonPlayer};
 use crate::lesson::answer::{Expect, Shape, Verdict};
@@ -53,7 +54,7 @@ pub fn field(
                             "数值或算式：0.866、sqrt(3)/2、2*pi/3、1/4",
                         ));
                     if response.changed() {
-                        commands.push(Command::TypeAnswer { cell: i, text });
+                        commands.push(Command::Lesson(LessonCommand::TypeAnswer { cell: i, text }));
                     }
                     check |= response.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
                 }
@@ -73,7 +74,7 @@ pub fn field(
         }
     });
     if check {
-        commands.push(Command::CheckAnswer);
+        commands.push(Command::Lesson(LessonCommand::CheckAnswer));
     }
     if let Some(v) = &player.verdict {
         let color = if *v == Verdict::Right { RIGHT } else { NOT_YET };

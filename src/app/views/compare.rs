@@ -7,6 +7,7 @@ use egui::{Color32, Pos2, Rect, Sense, Stroke, TextureOptions, Ui, Vec2};
 use egui_plot::{Legend, Line, Plot};
 
 use super::fit_rect;
+use crate::app::command::SelectionCommand;
 use crate::app::session::{Command, Session};
 use crate::vocabulary::{profile, variant_label};
 
@@ -183,7 +184,9 @@ impl CompareView {
                 // A click is not a line: a profile needs two image pixels' length (a shorter
                 // one would plot an empty chart over half the window).
                 if (b[0] - a[0]).hypot(b[1] - a[1]) >= 2.0 {
-                    cmds.push(Command::SetProfile(Some([a[0], a[1], b[0], b[1]])));
+                    cmds.push(Command::Selection(SelectionCommand::SetProfile(Some([
+                        a[0], a[1], b[0], b[1],
+                    ]))));
                 }
             }
             if let Some(l) = session.selection.profile {

@@ -11,6 +11,7 @@ use pipeline::capture::FrameCapture;
 
 use super::typeset::{self, Style};
 use super::{BufferTexture, fit_rect, picture_font, wrapped_label};
+use crate::app::command::SelectionCommand;
 use crate::app::session::{Command, Session};
 use crate::lab::words;
 use crate::lesson::answer::Exercise;
@@ -189,8 +190,12 @@ fn picture(
         .clicked()
         .then(|| response.interact_pointer_pos())??;
     let (x, row) = ((p.x - at.left()) / s, (p.y - at.top()) / s);
-    (x >= 0.0 && row >= 0.0 && (x as u32) < w && (row as u32) < h)
-        .then(|| Command::SelectPixel(Some((x as u32, grid.row(row as u32)))))
+    (x >= 0.0 && row >= 0.0 && (x as u32) < w && (row as u32) < h).then(|| {
+        Command::Selection(SelectionCommand::SelectPixel(Some((
+            x as u32,
+            grid.row(row as u32),
+        ))))
+    })
 }
 
 /// What else the check found, each as a line: the inside or depth test sample by sample at the
@@ -297,7 +302,7 @@ pub fn card_part(
                         ))
                         .clicked()
                 {
-                    commands.push(Command::SelectVertex(Some(row)));
+                    commands.push(Command::Selection(SelectionCommand::SelectVertex(Some(row))));
                     return true;
                 }
             }
@@ -314,7 +319,7 @@ pub fn card_part(
                     ))
                     .clicked()
             {
-                commands.push(Command::SelectPixel(Some(first)));
+                commands.push(Command::Selection(SelectionCommand::SelectPixel(Some(first))));
                 return true;
             }
         }

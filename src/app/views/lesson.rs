@@ -5,6 +5,7 @@
 use egui::{Align2, Color32, Frame, RichText, Ui, Vec2};
 
 use super::typeset::{self, Style};
+use crate::app::command::LessonCommand;
 use crate::app::session::{Command, Session};
 use crate::lesson::param;
 
@@ -187,7 +188,8 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
                         lang.tr("Show the answer", "显示答案")
                     };
                     if ui.button(label).clicked() {
-                        out.commands.push(Command::ShowAnswer(!shown));
+                        out.commands
+                            .push(Command::Lesson(LessonCommand::ShowAnswer(!shown)));
                     }
                     if shown {
                         narration(ui, a.get(lang), &style);

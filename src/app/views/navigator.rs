@@ -2,6 +2,7 @@
 
 use egui::{RichText, Ui};
 
+use crate::app::command::ViewCommand;
 use crate::app::session::{Command, Session};
 use crate::vocabulary::Stage;
 
@@ -23,7 +24,7 @@ pub fn ui(ui: &mut Ui, session: &Session) -> Option<Command> {
                 .selectable_label(selected, if selected { text.strong() } else { text })
                 .on_hover_text(stage.explanation(lang));
             if r.clicked() {
-                cmd = Some(Command::SelectStage(stage));
+                cmd = Some(Command::View(ViewCommand::SelectStage(stage)));
             }
         }
     });

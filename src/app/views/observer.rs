@@ -3,6 +3,7 @@
 //! clipped geometry and the lights drawn over it (`observer::viewing_camera`, the description the
 //! exported image draws too).
 
+use crate::app::command::ViewCommand;
 use crate::app::views::picture_font;
 use egui::{Align2, Color32, Rect, Sense, Stroke, TextureOptions, Ui, Vec2};
 use pipeline::buffers::BufferKind;
@@ -33,7 +34,9 @@ impl ObserverView {
         let (outer, response) =
             ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
         if outer.height() > 0.0 {
-            cmds.push(Command::SetObserverAspect(outer.width() / outer.height()));
+            cmds.push(Command::View(ViewCommand::SetObserverAspect(
+                outer.width() / outer.height(),
+            )));
         }
         let painter = ui.painter_at(outer);
         painter.rect_filled(outer, 0.0, Color32::from_gray(18));
@@ -74,7 +77,7 @@ impl ObserverView {
             orbit.distance = (orbit.distance * (-scroll / 400.0).exp()).clamp(0.2, 1e4);
         }
         if orbit != session.orbit {
-            cmds.push(Command::SetOrbit(orbit));
+            cmds.push(Command::View(ViewCommand::SetOrbit(orbit)));
         }
         // The observer's own matrices, as its capture recorded them.
         let cam = Projector {

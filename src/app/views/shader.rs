@@ -12,6 +12,7 @@ use pipeline::shader::{
     self, BUILTIN_FRAGMENT, BUILTIN_VERTEX, HookKind, Programs, ShaderError, Stage, StageError,
 };
 
+use crate::app::command::SceneCommand;
 use crate::app::session::{Command, Session};
 use crate::vocabulary::Lang;
 
@@ -120,7 +121,7 @@ impl ShaderEditor {
             }
         }
         (self.errors.is_empty() && self.hooks.iter().all(|h| h.errors.is_empty()))
-            .then(|| Command::SetSpec(Box::new(spec)))
+            .then(|| Command::Scene(SceneCommand::SetSpec(Box::new(spec))))
     }
 
     /// Puts `source` in the tab of the function `kind` (opening it), to be applied.

@@ -22,7 +22,9 @@ fn the_classroom_card_fits_its_question_and_answer_button_at_1366() {
         for k in 0..steps {
             h.state_mut()
                 .session
-                .apply(pipelens::app::session::Command::GoToStep(k));
+                .apply(pipelens::app::session::Command::Lesson(
+                    pipelens::app::session::LessonCommand::GoToStep(k),
+                ));
             h.run_steps(8);
             let step = &h
                 .state()

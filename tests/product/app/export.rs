@@ -79,7 +79,9 @@ fn export_my_work_writes_a_file_grade_reads() {
     });
     h.state_mut()
         .session
-        .apply(pipelens::app::session::Command::SetSpec(Box::new(spec)));
+        .apply(pipelens::app::session::Command::Scene(
+            pipelens::app::session::SceneCommand::SetSpec(Box::new(spec)),
+        ));
     h.run_steps(6);
     assert!(h.query_by_label_contains("Passed: all").is_some());
     h.get_by_label("Export ▾").click();

@@ -1,5 +1,6 @@
 //! Where things go in the picture: the step's subject clear of the narration card, a label
 //! beside its point.
+use pipelens::app::command::{LessonCommand, ViewCommand};
 
 /// The narration card never covers the step's subject (issue: it hid a vertex of lesson 07's
 /// triangle at 1920×1080 in Chinese, half of lesson 17's arm in classroom mode at 1366×768,
@@ -20,7 +21,9 @@ fn the_narration_card_leaves_the_subject_clear() {
             let mut h = super::sized_lesson_harness(&path, size);
             let ctx = h.ctx.clone();
             h.state_mut().set_classroom(&ctx, classroom);
-            h.state_mut().session.apply(Command::SetLang(lang));
+            h.state_mut()
+                .session
+                .apply(Command::View(ViewCommand::SetLang(lang)));
             let steps = h
                 .state()
                 .session
@@ -28,7 +31,9 @@ fn the_narration_card_leaves_the_subject_clear() {
                 .as_ref()
                 .map_or(0, |p| p.lesson.steps.len());
             for k in 0..steps {
-                h.state_mut().session.apply(Command::GoToStep(k));
+                h.state_mut()
+                    .session
+                    .apply(Command::Lesson(LessonCommand::GoToStep(k)));
                 h.run_steps(6);
                 let card = pipelens::app::views::room::narration_card(&h.ctx)
                     .expect("a lesson shows its card");

@@ -5,6 +5,7 @@
 use egui::{Event, Modifiers, PointerButton, Pos2};
 use egui_kittest::Harness;
 use pipelens::app::PipelensApp;
+use pipelens::app::command::LessonCommand;
 use pipelens::app::session::Command;
 
 /// A finger pressed at `from`, moved to `to` and lifted.
@@ -44,7 +45,9 @@ fn on_a_phone_the_picture_takes_half_the_screen_or_more() {
             let mut h = super::sized_lesson_harness(&path, size);
             let n = super::lesson_of(&h).steps.len();
             for k in 0..n {
-                h.state_mut().session.apply(Command::GoToStep(k));
+                h.state_mut()
+                    .session
+                    .apply(Command::Lesson(LessonCommand::GoToStep(k)));
                 h.run_steps(6);
                 assert!(h.state().panels.narration, "the narration is shown");
                 let share = h.state().picture_share(screen);

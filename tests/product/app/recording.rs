@@ -7,6 +7,7 @@ use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use pipelens::app::PipelensApp;
+use pipelens::app::command::{LessonCommand, SceneCommand, SelectionCommand};
 use pipelens::app::session::Command;
 use pipelens::lesson::param::{self, Value};
 
@@ -40,7 +41,7 @@ fn drag(h: &mut Harness<'_, PipelensApp>, name: &str, value: f32) {
     s.set_drafting(true);
     let mut spec = s.spec.clone();
     param::apply(&mut spec, name, &Value::Number(value)).expect("a parameter");
-    s.apply(Command::SetSpec(Box::new(spec)));
+    s.apply(Command::Scene(SceneCommand::SetSpec(Box::new(spec))));
     h.run_steps(3);
 }
 
@@ -70,7 +71,9 @@ fn a_lesson_is_recorded_arranged_and_saved_in_the_editor() {
     drag(&mut h, "figures.arm.base", 50.0);
     h.state_mut()
         .session
-        .apply(Command::SelectPixel(Some((120, 80))));
+        .apply(Command::Selection(SelectionCommand::SelectPixel(Some((
+            120, 80,
+        )))));
     h.run_steps(2);
     assert!(
         h.query_by_label_contains("set figures.arm.base = 50")
@@ -289,7 +292,9 @@ fn a_move_that_breaks_the_lesson_is_refused_with_the_reason() {
     let (_dir, file) = copy_of("05-perspective.toml");
     let mut h = super::lesson_harness(Some(file));
     h.run_steps(2);
-    h.state_mut().session.apply(Command::GoToStep(3));
+    h.state_mut()
+        .session
+        .apply(Command::Lesson(LessonCommand::GoToStep(3)));
     h.key_press(egui::Key::R);
     h.run_steps(3);
     let before = titles(&h);

@@ -3,6 +3,7 @@
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use pipelens::app::PipelensApp;
+use pipelens::app::command::ViewCommand;
 
 use super::{go_to_last_step, lesson_harness, step_of};
 
@@ -313,7 +314,7 @@ fn a_shading_stage_shows_its_picture_at_the_views_resolution() {
     assert!((mean(&capture) - mean(&fine)).abs() < 0.02);
     h.state_mut()
         .session
-        .apply(Command::SelectStage(Stage::Raster));
+        .apply(Command::View(ViewCommand::SelectStage(Stage::Raster)));
     h.run_steps(6);
     assert!(
         h.state().session.display.capture.is_none(),
@@ -321,7 +322,7 @@ fn a_shading_stage_shows_its_picture_at_the_views_resolution() {
     );
     h.state_mut()
         .session
-        .apply(Command::SelectStage(Stage::Output));
+        .apply(Command::View(ViewCommand::SelectStage(Stage::Output)));
     h.run_steps(6);
     assert!(
         h.state().session.display.capture.is_some(),
@@ -349,7 +350,9 @@ fn a_labs_reference_is_shown_in_the_students_buffer() {
     );
     h.state_mut()
         .session
-        .apply(Command::SelectBuffer(BufferKind::Specular));
+        .apply(Command::View(ViewCommand::SelectBuffer(
+            BufferKind::Specular,
+        )));
     h.run_steps(4);
     let s = &h.state().session;
     let reference = s.exercise.reference.as_ref().expect("the reference");

@@ -13,6 +13,7 @@ use pipeline::capture::FrameCapture;
 use super::{
     FATES, Projector, draw_lights, fate_color, fate_index, palette, picture_font, wrapped_label,
 };
+use crate::app::command::{SelectionCommand, ViewCommand};
 use crate::app::session::{Command, Session};
 use crate::spaces::{between, bounds, space_name, volume, world_into};
 use crate::vocabulary::Space;
@@ -339,7 +340,7 @@ impl GeometryView {
                         ))
                         .changed()
                     {
-                        cmds.push(Command::ToggleNormals);
+                        cmds.push(Command::View(ViewCommand::ToggleNormals));
                     }
                 }
                 if animated
@@ -348,7 +349,7 @@ impl GeometryView {
                         .on_hover_text(lang.tr("Space", "空格键"))
                         .clicked()
                 {
-                    cmds.push(Command::PlayTransition);
+                    cmds.push(Command::View(ViewCommand::PlayTransition));
                 }
             })
             .response
@@ -441,5 +442,7 @@ fn pick(cam: &Projector, points: &[Option<Vec3>], pos: Pos2) -> Command {
         .enumerate()
         .filter_map(|(i, p)| p.and_then(|p| cam.project(p)).map(|s| (i, s.distance(pos))))
         .min_by(|a, b| a.1.total_cmp(&b.1));
-    Command::SelectVertex(nearest.filter(|(_, d)| *d < 12.0).map(|(i, _)| i as u32))
+    Command::Selection(SelectionCommand::SelectVertex(
+        nearest.filter(|(_, d)| *d < 12.0).map(|(i, _)| i as u32),
+    ))
 }

@@ -8,6 +8,7 @@ use pipeline::capture::FrameCapture;
 use pipeline::vertex::VertexRecord;
 
 use super::tabs::Inspector;
+use crate::app::command::SelectionCommand;
 use crate::app::session::{Command, Session};
 use crate::app::views::palette;
 use crate::vocabulary::{Lang, Space, Stage, vec3, vec4};
@@ -54,15 +55,10 @@ fn default_spaces(stage: Stage) -> Vec<Space> {
     }
 }
 
-/// Draws the table; returns the vertex clicked.
-pub fn ui(
-    ui: &mut Ui,
-    inspector: &mut Inspector,
-    session: &Session,
-    capture: &FrameCapture,
-) -> Vec<Command> {
+/// The spaces the table shows, one checkbox each (the stage's and the one before until the
+/// reader picks); the choice kept in the inspector.
+fn choose_spaces(ui: &mut Ui, inspector: &mut Inspector, session: &Session) -> Vec<Space> {
     let lang = session.lang;
-    let mut cmds = Vec::new();
     let mut spaces = inspector
         .spaces
         .clone()
@@ -82,6 +78,19 @@ pub fn ui(
             }
         }
     });
+    spaces
+}
+
+/// Draws the table; returns the vertex clicked.
+pub fn ui(
+    ui: &mut Ui,
+    inspector: &mut Inspector,
+    session: &Session,
+    capture: &FrameCapture,
+) -> Vec<Command> {
+    let lang = session.lang;
+    let mut cmds = Vec::new();
+    let spaces = choose_spaces(ui, inspector, session);
     ui.label(
         RichText::new(lang.tr(
             "Click a row to highlight the vertex in every view; click a vertex in a view to find its row.",
@@ -143,7 +152,8 @@ pub fn ui(
                         .selectable_label(is_selected, text(format!("v{i}")))
                         .clicked()
                     {
-                        cmds.push(Command::SelectVertex((!is_selected).then_some(i as u32)));
+                        let row = (!is_selected).then_some(i as u32);
+                        cmds.push(Command::Selection(SelectionCommand::SelectVertex(row)));
                     }
                 });
                 row.col(|ui| {

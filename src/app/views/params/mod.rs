@@ -9,6 +9,7 @@ use pipeline::raster::{CullMode, DepthTest, Samples};
 use pipeline::settings::MAX_VIEWPORT_SIDE;
 use pipeline::shade::{Frequency, Reflection};
 
+use crate::app::command::SceneCommand;
 use crate::app::session::{Command, Session};
 use crate::vocabulary::Lang;
 
@@ -67,7 +68,7 @@ pub fn ui(ui: &mut Ui, session: &Session) -> Option<Command> {
             }
         });
     });
-    (spec != session.spec).then(|| Command::SetSpec(Box::new(spec)))
+    (spec != session.spec).then(|| Command::Scene(SceneCommand::SetSpec(Box::new(spec))))
 }
 
 /// An object's rotation about an axis (the first orientation) and, when it has one, the second

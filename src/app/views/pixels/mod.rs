@@ -15,6 +15,7 @@ use pipeline::buffers::BufferKind;
 use pipeline::capture::FrameCapture;
 use pipeline::overlay::OverlayKind;
 
+use crate::app::command::{SelectionCommand, ViewCommand};
 use crate::app::session::{Command, Selection, Session};
 use crate::vocabulary::{Lang, buffer_name, num};
 use viewport::{ImageViewport, layout};
@@ -102,14 +103,14 @@ impl PixelView {
                             .on_hover_text(kind.mapping())
                             .clicked()
                         {
-                            cmds.push(Command::SelectBuffer(kind));
+                            cmds.push(Command::View(ViewCommand::SelectBuffer(kind)));
                         }
                     }
                 });
             for kind in OverlayKind::ALL {
                 let mut on = sel.overlays.contains(&kind);
                 if ui.checkbox(&mut on, overlay_name(kind, lang)).changed() {
-                    cmds.push(Command::ToggleOverlay(kind));
+                    cmds.push(Command::View(ViewCommand::ToggleOverlay(kind)));
                 }
             }
             let mut samples = sel.show_samples;
@@ -121,7 +122,7 @@ impl PixelView {
                 ))
                 .changed()
             {
-                cmds.push(Command::ToggleSamples);
+                cmds.push(Command::View(ViewCommand::ToggleSamples));
             }
             if sel.buffer.is_texturing() {
                 ui.checkbox(&mut self.show_pyramid, lang.tr("mip pyramid", "mipmap 金字塔"))
@@ -175,7 +176,7 @@ impl PixelView {
                 view.range = None;
             }
         });
-        (view != sel.depth_view).then_some(Command::SetDepthView(view))
+        (view != sel.depth_view).then_some(Command::View(ViewCommand::SetDepthView(view)))
     }
 
     /// The image view itself.
@@ -210,7 +211,7 @@ impl PixelView {
             (self.fitted.y * ppp).round() as u32,
         ];
         if session.view_pixels != Some(pixels) {
-            cmds.push(Command::SetViewPixels(pixels));
+            cmds.push(Command::View(ViewCommand::SetViewPixels(pixels)));
         }
         let (texture, gain) = self.textures.get(ui.ctx(), session, capture, view.zoom);
         let image = Rect::from_min_max(
@@ -551,7 +552,9 @@ fn hover_and_click(
         .clone()
         .on_hover_ui_at_pointer(|ui| pixel_tooltip(ui, capture, c, y, lang));
     if response.clicked() {
-        cmds.push(Command::SelectPixel(Some((c, y))));
+        cmds.push(Command::Selection(SelectionCommand::SelectPixel(Some((
+            c, y,
+        )))));
         let i = capture.grid().index(c, y);
         if let Some(prim) = capture.primitives.get(capture.pixels.primitive[i] as usize) {
             let click = view.to_image(pos);
@@ -566,7 +569,7 @@ fn hover_and_click(
                 };
                 d(*a).total_cmp(&d(*b))
             });
-            cmds.push(Command::SelectVertex(nearest));
+            cmds.push(Command::Selection(SelectionCommand::SelectVertex(nearest)));
         }
     }
     cmds
