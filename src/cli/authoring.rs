@@ -125,7 +125,7 @@ fn check_shader(path: &Path) -> Option<bool> {
     let kind = match extension {
         "vert" => Kind::Stage(Stage::Vertex),
         "frag" => Kind::Stage(Stage::Fragment),
-        "glsl" => match HookKind::ALL.into_iter().find(|k| k.key() == stem) {
+        "glsl" => match HookKind::from_key(stem) {
             Some(k) => Kind::Hook(k),
             None => {
                 let names: Vec<String> = HookKind::ALL

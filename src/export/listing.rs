@@ -200,7 +200,7 @@ pub(super) fn step_edits<'a>(
     let before = k.checked_sub(1).map(|j| lesson.spec_at(j).scene);
     // An edit is of the step before's own code: pipelens' shipped shaders are no edit's start.
     let before_files = before.as_ref().map_or_else(Vec::new, |scene| {
-        let shader = scene.objects.iter().find_map(|o| o.shader.as_ref());
+        let shader = scene.objects.iter().find_map(|o| o.code.shader.as_ref());
         let files = crate::lesson::forbid::files(shader, |kind| scene.hook(kind));
         files.into_iter().filter(|(f, s)| !shipped(f, s)).collect()
     });

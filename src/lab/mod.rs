@@ -216,7 +216,7 @@ pub fn criteria(scene: &Scene, tolerance: f32) -> Criteria {
 /// object's shaders and the scene's functions.
 fn scene_sources(scene: &Scene) -> Vec<(String, &str)> {
     crate::lesson::forbid::files(
-        scene.objects.iter().find_map(|o| o.shader.as_ref()),
+        scene.objects.iter().find_map(|o| o.code.shader.as_ref()),
         |kind| scene.hook(kind),
     )
 }
@@ -225,7 +225,7 @@ fn scene_sources(scene: &Scene) -> Vec<(String, &str)> {
 /// TODO there, or the student's code differs from the starter's (comments aside) (a stage the starter does not
 /// give is the student's when they wrote one).
 fn changed_stages(scene: &Scene, starter: &pipeline::scene::StudentCode) -> (bool, bool) {
-    let Some(mine) = scene.objects.iter().find_map(|o| o.shader.as_ref()) else {
+    let Some(mine) = scene.objects.iter().find_map(|o| o.code.shader.as_ref()) else {
         return (false, false);
     };
     let Some(given) = &starter.shader else {
@@ -278,10 +278,12 @@ fn traced(frame: &FrameCapture) -> &[pipeline::capture::FragmentTrace] {
 /// a Bézier patch (`None` also when it stops with a run-time error).
 fn curve_difference(scene: &Scene) -> Option<CurveDifference> {
     use pipeline::mesh::BuiltinMesh;
-    scene
-        .objects
-        .iter()
-        .find_map(|o| match (&o.builtin, &o.curve, &o.patch) {
+    scene.objects.iter().find_map(|o| {
+        match (
+            &o.builtin,
+            o.code.hooks.get(pipeline::shader::HookKind::Curve),
+            o.code.hooks.get(pipeline::shader::HookKind::Patch),
+        ) {
             (Some(BuiltinMesh::Bezier { points, .. }), Some(hook), _) => {
                 hook.curve_difference(*points, CURVE_TOLERANCE).ok()
             }
@@ -290,7 +292,8 @@ fn curve_difference(scene: &Scene) -> Option<CurveDifference> {
                 hook.patch_difference(&rows, CURVE_TOLERANCE).ok()
             }
             _ => None,
-        })
+        }
+    })
 }
 
 /// The reference a lab's frame is compared with: the scene without the student's code —

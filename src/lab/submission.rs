@@ -38,10 +38,7 @@ impl Code {
             self.vertex = Some(text);
         } else if lower.ends_with(".frag") {
             self.fragment = Some(text);
-        } else if let Some(kind) = lower
-            .strip_suffix(".glsl")
-            .and_then(|stem| HookKind::ALL.into_iter().find(|k| k.key() == stem))
-        {
+        } else if let Some(kind) = lower.strip_suffix(".glsl").and_then(HookKind::from_key) {
             self.hooks.retain(|(k, _)| *k != kind);
             self.hooks.push((kind, text));
         } else {
@@ -103,7 +100,7 @@ pub fn grade(lesson: &Lesson, k: usize, code: &Code, lang: Lang) -> Grade {
         }
     }
     for (kind, source) in &code.hooks {
-        if starter.hook(*kind).is_none() {
+        if starter.hooks.get(*kind).is_none() {
             continue;
         }
         match pipeline::shader::compile_hook(*kind, source) {

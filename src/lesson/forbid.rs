@@ -45,7 +45,7 @@ impl Shortcut {
 /// gives it: `shader.vert`, `shader.frag`, `inside.glsl`, …
 #[must_use]
 pub fn sources(code: &pipeline::scene::StudentCode) -> Vec<(String, &str)> {
-    files(code.shader.as_ref(), |kind| code.hook(kind))
+    files(code.shader.as_ref(), |kind| code.hooks.get(kind))
 }
 
 /// The sources a shader pair and a set of functions hold, named as [`sources`] names them.

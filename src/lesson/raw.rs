@@ -5,6 +5,7 @@
 // The fields are the keys of the file, documented one by one in lessons/README.md.
 #![allow(missing_docs)]
 
+use pipeline::shader::HookKind;
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -58,6 +59,21 @@ pub struct RawShader {
     pub shadow_matrix: Option<Spanned<String>>,
     /// `vec3 bezier_patch(vec3 p[16], float u, float v)`, a Bézier patch's surface point.
     pub bezier_patch: Option<Spanned<String>>,
+}
+
+impl RawShader {
+    /// The student's function of kind `kind`, under its key (`inside`, `depth_test`,
+    /// `de_casteljau`, `shadow_matrix`, `bezier_patch`: [`HookKind::key`]).
+    #[must_use]
+    pub fn hook(&self, kind: HookKind) -> Option<&Spanned<String>> {
+        match kind {
+            HookKind::Inside => self.inside.as_ref(),
+            HookKind::DepthTest => self.depth_test.as_ref(),
+            HookKind::Curve => self.de_casteljau.as_ref(),
+            HookKind::ShadowMatrix => self.shadow_matrix.as_ref(),
+            HookKind::Patch => self.bezier_patch.as_ref(),
+        }
+    }
 }
 
 /// One `[[scene.figures]]` entry: an articulated model and its joint angles in degrees.
@@ -471,4 +487,26 @@ pub enum RawValue {
     Number(f64),
     Vec3([f64; 3]),
     Name(String),
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each function's key in a lesson's `shader = { … }` is the kind's key in the core's table,
+    /// and gives that kind only.
+    #[test]
+    fn each_function_key_is_its_kinds() {
+        for kind in HookKind::ALL {
+            let text = format!("{} = \"void f() {{}}\"", kind.key());
+            let raw: RawShader = toml::from_str(&text).expect("a shader table");
+            for other in HookKind::ALL {
+                assert_eq!(
+                    raw.hook(other).is_some(),
+                    other == kind,
+                    "{text}: {other:?}"
+                );
+            }
+        }
+    }
 }

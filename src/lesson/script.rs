@@ -214,7 +214,7 @@ impl Lesson {
             .scene
             .objects
             .iter_mut()
-            .filter_map(|o| o.shader.as_mut())
+            .filter_map(|o| o.code.shader.as_mut())
         {
             shader.time = t;
         }

@@ -86,7 +86,12 @@ fn the_inside_lab_in_the_app_passes_and_keeps_the_inside_test() {
         .state()
         .session
         .current_exercise()
-        .and_then(|e| e.starter.inside.clone())
+        .and_then(|e| {
+            e.starter
+                .hooks
+                .get(pipeline::shader::HookKind::Inside)
+                .cloned()
+        })
         .expect("an inside lab");
     let solved = starter.source.replace(todo, solution);
     let mut spec = h.state().session.spec.clone();
@@ -112,8 +117,9 @@ fn the_inside_lab_in_the_app_passes_and_keeps_the_inside_test() {
         .apply(Command::Lesson(LessonCommand::NextStep));
     h.run_steps(6);
     let running = h.state().session.spec.scene.objects[0]
-        .inside
-        .as_ref()
+        .code
+        .hooks
+        .get(pipeline::shader::HookKind::Inside)
         .map(|i| i.source.clone());
     assert_eq!(running.as_deref(), Some(solved.as_str()));
     assert!(
@@ -199,7 +205,12 @@ fn the_de_casteljau_lab_compares_the_curve_point_by_point() {
         .state()
         .session
         .current_exercise()
-        .and_then(|e| e.starter.curve.clone())
+        .and_then(|e| {
+            e.starter
+                .hooks
+                .get(pipeline::shader::HookKind::Curve)
+                .cloned()
+        })
         .expect("a curve lab");
     let solved = pipeline::shader::compile_hook(
         pipeline::shader::HookKind::Curve,
@@ -318,7 +329,8 @@ fn the_shadow_lab_compares_the_matrix_up_to_a_positive_factor() {
     let e = lesson.steps[k].exercise.as_ref().expect("a lab");
     let starter = e
         .starter
-        .hook(HookKind::ShadowMatrix)
+        .hooks
+        .get(HookKind::ShadowMatrix)
         .expect("a shadow_matrix");
     let (_, _, todo, solution) = SOLUTIONS
         .iter()

@@ -94,7 +94,12 @@ fn the_first_wrong_pixel_of_every_lab_differs_and_is_the_topmost() {
             let Some(exercise) = &step.exercise else {
                 continue;
             };
-            if exercise.starter.curve.is_some() {
+            if exercise
+                .starter
+                .hooks
+                .get(pipeline::shader::HookKind::Curve)
+                .is_some()
+            {
                 continue; // compared point by point, not pixel by pixel
             }
             let name = format!("{} step {}", lesson.id, k + 1);
@@ -148,7 +153,7 @@ fn the_first_wrong_pixel_of_every_lab_differs_and_is_the_topmost() {
 pub(crate) fn checked(spec: &pipelens::lesson::SceneSpec, tolerance: f32) -> (bool, String) {
     let curve = spec.scene.objects.iter().find_map(|o| match o.builtin {
         Some(pipeline::mesh::BuiltinMesh::Bezier { points, .. }) => {
-            Some((o.curve.as_ref()?, points))
+            Some((o.code.hooks.get(pipeline::shader::HookKind::Curve)?, points))
         }
         _ => None,
     });
@@ -198,7 +203,7 @@ fn solve(
     }
     for hook in pipeline::shader::HookKind::ALL
         .into_iter()
-        .filter_map(|kind| code.hook(kind))
+        .filter_map(|kind| code.hooks.get(kind))
     {
         found |= hook.source.contains(todo);
         let solved =

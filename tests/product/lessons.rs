@@ -211,7 +211,7 @@ fn every_lesson_exports_a_handout() {
                 for hook in step.exercise.iter().flat_map(|e| {
                     pipeline::shader::HookKind::ALL
                         .into_iter()
-                        .filter_map(|kind| e.starter.hook(kind))
+                        .filter_map(|kind| e.starter.hooks.get(kind))
                 }) {
                     // The listing colours its words (the page's text, tags left out), and
                     // its comments are in the handout's language.

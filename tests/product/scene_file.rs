@@ -357,6 +357,7 @@ fn shaders_come_from_files_beside_the_scene_or_inline_and_their_mistakes_point_i
     let scene = format!("{OBJECT}shader = {{ fragment = \"half.frag\" }}\n");
     let spec = lesson::parse_scene(&scene, "t.toml", dir.path()).expect("valid");
     let sh = spec.scene.objects[0]
+        .code
         .shader
         .as_ref()
         .expect("the object's shaders");
@@ -364,7 +365,7 @@ fn shaders_come_from_files_beside_the_scene_or_inline_and_their_mistakes_point_i
     // The scene's shader applies to every object without one of its own, inline GLSL too.
     let scene = format!("[scene]\nshader = {{ fragment = '''\n{frag}''' }}\n{OBJECT}{OBJECT}");
     let spec = lesson::parse_scene(&scene, "t.toml", dir.path()).expect("valid");
-    assert!(spec.scene.objects.iter().all(|o| o.shader.is_some()));
+    assert!(spec.scene.objects.iter().all(|o| o.code.shader.is_some()));
     // A typo in the file: its own name, line and column.
     std::fs::write(
         dir.path().join("typo.frag"),

@@ -17,7 +17,7 @@ fn the_shader_lesson_runs_each_edit_and_traces_its_pixel() {
         spec.settings.samples = pipeline::raster::Samples::X1;
         spec.settings.capture.pixel = pixel;
         assert!(
-            spec.scene.objects.iter().all(|o| o.shader.is_some()),
+            spec.scene.objects.iter().all(|o| o.code.shader.is_some()),
             "step {k} runs a shader on every object"
         );
         pipeline::render(&spec.scene, &spec.settings).unwrap_or_else(|e| panic!("step {k}: {e}"))
@@ -25,6 +25,7 @@ fn the_shader_lesson_runs_each_edit_and_traces_its_pixel() {
     let source = |k: usize| {
         let spec = lesson.spec_at(k);
         spec.scene.objects[0]
+            .code
             .shader
             .as_ref()
             .expect("a shader")
@@ -145,7 +146,7 @@ fn the_selected_vertex_is_traced_through_its_vertex_shader() {
 fn not_modelled(spec: &pipelens::lesson::SceneSpec) -> Option<&'static str> {
     let s = &spec.settings;
     let objects = &spec.scene.objects;
-    if objects.iter().any(|o| o.shader.is_some()) {
+    if objects.iter().any(|o| o.code.shader.is_some()) {
         Some("the lesson runs its own shaders")
     } else if !s.perspective_correct {
         Some("affine interpolation (a shader writes `noperspective` for that)")
@@ -323,7 +324,7 @@ fn a_run_time_error_names_the_file_and_line_where_the_glsl_is_written() {
     let scene = format!("{object}shader = {{ fragment = '''\n{glsl}''' }}\n");
     let spec = pipelens::lesson::parse_scene(&scene, "t.toml", dir.path()).expect("valid");
     let mut own = spec.scene.clone();
-    own.objects[0].shader = Some(pipeline::scene::ObjectShader {
+    own.objects[0].code.shader = Some(pipeline::scene::ObjectShader {
         programs: std::sync::Arc::new(alone),
         time: 0.0,
     });

@@ -71,24 +71,12 @@ pub struct Object {
     /// How the mesh was generated, when it is built in: lets a lesson change a parameter of the
     /// shape itself (a Bézier curve's `t`) and build it again.
     pub builtin: Option<BuiltinMesh>,
-    /// Shaders the student wrote: they replace the vertex stage's transform and the shading
-    /// (see [`crate::shader`]).
-    pub shader: Option<ObjectShader>,
-    /// The student's inside test: the rasterizer asks it, not its own edge functions, which
-    /// samples this object's triangles cover (see [`crate::shader::hook`]).
-    pub inside: Option<crate::shader::InsideTest>,
-    /// The student's depth test: the rasterizer asks it, not the settings' comparison, which
-    /// covered samples of this object's triangles are written (see [`crate::shader::hook`]).
-    pub depth_test: Option<crate::shader::Hook>,
-    /// The student's de Casteljau: a Bézier curve's drawing takes its points from it, not from
-    /// pipelens' own curve (see [`crate::shader::hook`]).
-    pub curve: Option<crate::shader::Hook>,
-    /// The student's shadow matrix: the shadow pass projects this object's shadow with it, not
-    /// with pipelens' own (see [`crate::shader::hook`]).
-    pub shadow_matrix: Option<crate::shader::Hook>,
-    /// The student's Bézier patch point: a `bezier_patch` object's surface takes its points
-    /// from it, not from pipelens' own (see [`crate::shader::hook`]).
-    pub patch: Option<crate::shader::Hook>,
+    /// The code the student gave it: shaders that replace the vertex stage's transform and the
+    /// shading, and functions the pipeline calls in place of its own — the rasterizer's inside
+    /// and depth tests for this object's triangles, a Bézier curve's or patch's points, the
+    /// shadow matrix for this object's shadow (see [`crate::shader`] and
+    /// [`crate::shader::hook`]).
+    pub code: StudentCode,
 }
 
 /// An object's shaders and the time their `time` uniform reads.
@@ -108,55 +96,9 @@ pub struct ObjectShader {
 pub struct StudentCode {
     /// The vertex and fragment shaders (`None`: pipelens' own stages).
     pub shader: Option<ObjectShader>,
-    /// The inside test (`None`: pipelens' edge functions).
-    pub inside: Option<crate::shader::InsideTest>,
-    /// The depth test (`None`: the settings' comparison).
-    pub depth_test: Option<crate::shader::Hook>,
-    /// De Casteljau's curve point (`None`: pipelens' own).
-    pub curve: Option<crate::shader::Hook>,
-    /// The planar shadow's projection (`None`: pipelens' own).
-    pub shadow_matrix: Option<crate::shader::Hook>,
-    /// A Bézier patch's point (`None`: pipelens' own).
-    pub patch: Option<crate::shader::Hook>,
+    /// The functions of the pipeline the student wrote, by kind (`None`: pipelens' own).
+    pub hooks: crate::shader::Hooks,
 }
-
-/// Where an object or the student's code keeps its function of each kind.
-macro_rules! hook_slots {
-    ($t:ty) => {
-        impl $t {
-            /// The student's function of kind `kind`, if given.
-            #[must_use]
-            pub fn hook(&self, kind: crate::shader::HookKind) -> Option<&crate::shader::Hook> {
-                use crate::shader::HookKind;
-                match kind {
-                    HookKind::Inside => self.inside.as_ref(),
-                    HookKind::DepthTest => self.depth_test.as_ref(),
-                    HookKind::Curve => self.curve.as_ref(),
-                    HookKind::ShadowMatrix => self.shadow_matrix.as_ref(),
-                    HookKind::Patch => self.patch.as_ref(),
-                }
-            }
-
-            /// Where the student's function of kind `kind` is kept.
-            pub fn hook_slot(
-                &mut self,
-                kind: crate::shader::HookKind,
-            ) -> &mut Option<crate::shader::Hook> {
-                use crate::shader::HookKind;
-                match kind {
-                    HookKind::Inside => &mut self.inside,
-                    HookKind::DepthTest => &mut self.depth_test,
-                    HookKind::Curve => &mut self.curve,
-                    HookKind::ShadowMatrix => &mut self.shadow_matrix,
-                    HookKind::Patch => &mut self.patch,
-                }
-            }
-        }
-    };
-}
-
-hook_slots!(Object);
-hook_slots!(StudentCode);
 
 impl Object {
     /// What decides which of pipelens' shipped shader pairs draws this object
@@ -191,12 +133,7 @@ impl Object {
             axis_rotation: None,
             slerp: None,
             builtin: None,
-            shader: None,
-            inside: None,
-            depth_test: None,
-            curve: None,
-            shadow_matrix: None,
-            patch: None,
+            code: StudentCode::default(),
         }
     }
 
@@ -308,13 +245,13 @@ impl Scene {
     /// Whether any object runs the student's shaders.
     #[must_use]
     pub fn has_shaders(&self) -> bool {
-        self.objects.iter().any(|o| o.shader.is_some())
+        self.objects.iter().any(|o| o.code.shader.is_some())
     }
 
     /// Every object runs `shader` (a lesson step's, the shader panel's).
     pub fn set_shaders(&mut self, shader: &ObjectShader) {
         for o in &mut self.objects {
-            o.shader = Some(shader.clone());
+            o.code.shader = Some(shader.clone());
         }
     }
 
@@ -326,14 +263,14 @@ impl Scene {
     /// Every object runs the student's function `hook` (of its kind).
     pub fn set_hook(&mut self, hook: &crate::shader::Hook) {
         for o in &mut self.objects {
-            *o.hook_slot(hook.kind) = Some(hook.clone());
+            o.code.hooks.set(hook.clone());
         }
     }
 
     /// The student's function of kind `kind` the scene runs (its first object's with one).
     #[must_use]
     pub fn hook(&self, kind: crate::shader::HookKind) -> Option<&crate::shader::Hook> {
-        self.objects.iter().find_map(|o| o.hook(kind))
+        self.objects.iter().find_map(|o| o.code.hooks.get(kind))
     }
 
     /// Every object's covered samples are written where the student's `depth_test` says.
@@ -344,10 +281,7 @@ impl Scene {
     /// Every object runs pipelens' own stages again: no shaders, no functions of the student's.
     pub fn clear_code(&mut self) {
         for o in &mut self.objects {
-            o.shader = None;
-            for kind in crate::shader::HookKind::ALL {
-                *o.hook_slot(kind) = None;
-            }
+            o.code = StudentCode::default();
         }
     }
 
@@ -356,16 +290,7 @@ impl Scene {
         if let Some(shader) = &code.shader {
             self.set_shaders(shader);
         }
-        for hook in [
-            &code.inside,
-            &code.depth_test,
-            &code.curve,
-            &code.shadow_matrix,
-            &code.patch,
-        ]
-        .into_iter()
-        .flatten()
-        {
+        for hook in code.hooks.iter() {
             self.set_hook(hook);
         }
     }
@@ -389,7 +314,7 @@ impl Scene {
             else {
                 continue;
             };
-            o.shader = Some(ObjectShader {
+            o.code.shader = Some(ObjectShader {
                 programs: crate::shader::builtin_programs(vs, fs)?,
                 time: 0.0,
             });
@@ -459,7 +384,7 @@ impl Scene {
                 s.detail = None;
                 s.environment = None;
                 // Drawn in the shadow's colour, whatever shaders the object runs.
-                s.shader = None;
+                s.code.shader = None;
                 s.lit = false;
                 s.casts_shadow = false;
                 out.push(s);

@@ -89,12 +89,15 @@ impl Session {
     fn student_code(&self) -> Option<SavedCode> {
         let objects = &self.spec.scene.objects;
         let code = SavedCode {
-            shaders: objects.iter().find_map(|o| o.shader.as_ref()).map(|sh| {
-                (
-                    sh.programs.vertex.source.clone(),
-                    sh.programs.fragment.source.clone(),
-                )
-            }),
+            shaders: objects
+                .iter()
+                .find_map(|o| o.code.shader.as_ref())
+                .map(|sh| {
+                    (
+                        sh.programs.vertex.source.clone(),
+                        sh.programs.fragment.source.clone(),
+                    )
+                }),
             hooks: HookKind::ALL
                 .into_iter()
                 .filter_map(|kind| Some((kind, self.spec.scene.hook(kind)?.source.clone())))

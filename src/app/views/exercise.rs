@@ -244,12 +244,13 @@ pub fn card_part(
             .color(Color32::WHITE),
     );
     typeset::paragraph(ui, exercise.task.get(lang), style);
-    let how = if exercise.starter.curve.is_some() {
+    let writes = |kind| exercise.starter.hooks.get(kind).is_some();
+    let how = if writes(pipeline::shader::HookKind::Curve) {
         lang.tr(
             "Write your code in the Shader panel (key S): it runs as you type, and your curve is compared with pipelens' b(t), point by point.",
             "在着色器面板（S 键）中编写代码：边写边运行，你的曲线与 pipelens 的 b(t) 逐点比较。",
         )
-    } else if exercise.starter.patch.is_some() {
+    } else if writes(pipeline::shader::HookKind::Patch) {
         lang.tr(
             "Write your code in the Shader panel (key S): it runs as you type, and your surface is compared with pipelens' b(u, v), point by point.",
             "在着色器面板（S 键）中编写代码：边写边运行，你的曲面与 pipelens 的 b(u, v) 逐点比较。",

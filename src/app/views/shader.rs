@@ -172,7 +172,7 @@ impl ShaderEditor {
                 _ => {}
             }
         }
-        let Some(sh) = objects.iter().find_map(|o| o.shader.as_ref()) else {
+        let Some(sh) = objects.iter().find_map(|o| o.code.shader.as_ref()) else {
             if self.shown.take().is_some() {
                 // Back to pipelens' own shading (a step without shaders).
                 self.shaders_in_use = false;

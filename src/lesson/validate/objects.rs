@@ -103,10 +103,7 @@ pub(super) fn object(
     if let Some(sh) = &raw.shader
         && let Some(code) = super::shaders::shader(c, sh, base)
     {
-        object.shader.clone_from(&code.shader);
-        for kind in pipeline::shader::HookKind::ALL {
-            *object.hook_slot(kind) = code.hook(kind).cloned();
-        }
+        object.code = code;
     }
     Some((object, label))
 }

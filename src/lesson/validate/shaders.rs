@@ -9,7 +9,7 @@ use std::path::Path;
 use std::sync::Arc;
 
 use pipeline::scene::{ObjectShader, StudentCode};
-use pipeline::shader::{HookKind, Stage};
+use pipeline::shader::{HookKind, Hooks, Stage};
 use toml::Spanned;
 
 use super::Checker;
@@ -64,34 +64,19 @@ pub(in crate::lesson) fn shader(
     let r = raw.get_ref();
     if r.vertex.is_none()
         && r.fragment.is_none()
-        && r.inside.is_none()
-        && r.depth_test.is_none()
-        && r.de_casteljau.is_none()
-        && r.shadow_matrix.is_none()
-        && r.bezier_patch.is_none()
+        && HookKind::ALL.iter().all(|k| r.hook(*k).is_none())
     {
         c.error(raw.span(), "`shader` needs a `vertex` or a `fragment` shader (a file such as \"toon.frag\", or the GLSL itself), or an `inside`, `depth_test`, `de_casteljau`, `shadow_matrix` or `bezier_patch` function");
         return None;
     }
     let vertex = r.vertex.as_ref().map(|v| source(c, v, base));
     let fragment = r.fragment.as_ref().map(|v| source(c, v, base));
-    let inside = r.inside.as_ref().map(|v| source(c, v, base));
-    let depth_test = r.depth_test.as_ref().map(|v| source(c, v, base));
-    let curve = r.de_casteljau.as_ref().map(|v| source(c, v, base));
-    let shadow_matrix = r.shadow_matrix.as_ref().map(|v| source(c, v, base));
-    let patch = r.bezier_patch.as_ref().map(|v| source(c, v, base));
+    let functions = HookKind::ALL.map(|k| (k, r.hook(k).map(|v| source(c, v, base))));
     // A stage that named a missing file has its diagnostic already.
-    if [
-        &vertex,
-        &fragment,
-        &inside,
-        &depth_test,
-        &curve,
-        &shadow_matrix,
-        &patch,
-    ]
-    .iter()
-    .any(|s| matches!(s, Some(None)))
+    if [&vertex, &fragment]
+        .into_iter()
+        .chain(functions.iter().map(|(_, f)| f))
+        .any(|s| matches!(s, Some(None)))
     {
         return None;
     }
@@ -140,19 +125,13 @@ pub(in crate::lesson) fn shader(
             }
         }
     };
-    let inside = hook(HookKind::Inside, inside.flatten());
-    let depth_test = hook(HookKind::DepthTest, depth_test.flatten());
-    let curve = hook(HookKind::Curve, curve.flatten());
-    let shadow_matrix = hook(HookKind::ShadowMatrix, shadow_matrix.flatten());
-    let patch = hook(HookKind::Patch, patch.flatten());
-    ok.then_some(StudentCode {
-        shader,
-        inside,
-        depth_test,
-        curve,
-        shadow_matrix,
-        patch,
-    })
+    let mut hooks = Hooks::default();
+    for (kind, given) in functions {
+        if let Some(compiled) = hook(kind, given.flatten()) {
+            hooks.set(compiled);
+        }
+    }
+    ok.then_some(StudentCode { shader, hooks })
 }
 
 /// How a message names the function it is about.
@@ -211,12 +190,12 @@ fn place(
 /// object's own `shader = { … }` comes first).
 pub(in crate::lesson) fn give(objects: &mut [pipeline::scene::Object], code: &StudentCode) {
     for o in objects {
-        if o.shader.is_none() {
-            o.shader.clone_from(&code.shader);
+        if o.code.shader.is_none() {
+            o.code.shader.clone_from(&code.shader);
         }
-        for kind in HookKind::ALL {
-            if o.hook(kind).is_none() {
-                *o.hook_slot(kind) = code.hook(kind).cloned();
+        for hook in code.hooks.iter() {
+            if o.code.hooks.get(hook.kind).is_none() {
+                o.code.hooks.set(hook.clone());
             }
         }
     }

@@ -349,10 +349,10 @@ fn rasterize(
         None => SampleBuffers::new(width, height, settings.samples, clear),
     };
     let hooked;
-    let hooks = scene
-        .objects
-        .iter()
-        .any(|o| o.inside.is_some() || o.depth_test.is_some());
+    let hooks = scene.objects.iter().any(|o| {
+        o.code.hooks.get(HookKind::Inside).is_some()
+            || o.code.hooks.get(HookKind::DepthTest).is_some()
+    });
     let counts = if hooks {
         hooked = rasterize_with_hooks(scene, settings, triangles, primitives, &mut samples)?;
         &hooked[..]
@@ -390,12 +390,18 @@ fn rasterize_with_hooks(
         file: None,
     };
     // Each object's inside and depth tests, their calls allowed the frame's loop budget.
-    let budgeted =
-        |h: &Option<crate::shader::Hook>| h.as_ref().map(|h| h.within(settings.max_steps));
+    let budgeted = |o: &crate::scene::Object, kind| {
+        o.code.hooks.get(kind).map(|h| h.within(settings.max_steps))
+    };
     let tests: Vec<_> = scene
         .objects
         .iter()
-        .map(|o| (budgeted(&o.inside), budgeted(&o.depth_test)))
+        .map(|o| {
+            (
+                budgeted(o, HookKind::Inside),
+                budgeted(o, HookKind::DepthTest),
+            )
+        })
         .collect();
     let mut counts = Vec::with_capacity(triangles.len());
     for (i, tri) in triangles.iter().enumerate() {

@@ -497,7 +497,10 @@ impl ResolveContext<'_> {
     /// Whether raster triangle `t`'s object runs the student's shaders.
     pub(super) fn has_shader(&self, t: &RasterTriangle) -> bool {
         let prim = &self.primitives[t.primitive as usize];
-        self.scene.objects[prim.object as usize].shader.is_some()
+        self.scene.objects[prim.object as usize]
+            .code
+            .shader
+            .is_some()
     }
 
     /// Whether the frame keeps any pixel's lighting terms or texture lookup.

@@ -271,7 +271,7 @@ impl ResolveContext<'_> {
         let tri = |f: usize| &self.triangles[run.triangle[f] as usize];
         let object = &self.scene.objects[self.object_of(run.triangle[0]) as usize];
         // An object with shaders: no colour here, see `shade_at`.
-        let shader = object.shader.is_some();
+        let shader = object.code.shader.is_some();
         if shader && !self.keeps_terms() {
             out.color[..n].fill(Vec3::ZERO);
             out.terms[..n].fill(None);

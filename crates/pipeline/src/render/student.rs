@@ -17,11 +17,9 @@ pub(super) fn with_student_curves(
     budget: u32,
 ) -> Result<Option<Scene>, RenderError> {
     use crate::mesh::BuiltinMesh;
-    if !scene
-        .objects
-        .iter()
-        .any(|o| o.curve.is_some() || o.patch.is_some())
-    {
+    if !scene.objects.iter().any(|o| {
+        o.code.hooks.get(HookKind::Curve).is_some() || o.code.hooks.get(HookKind::Patch).is_some()
+    }) {
         return Ok(None);
     }
     let mut drawn = scene.clone();
@@ -36,7 +34,11 @@ pub(super) fn with_student_curves(
             }
         };
         let within = |h: Option<crate::shader::Hook>| h.map(|h| h.within(budget));
-        let mesh = match (within(o.curve.take()), within(o.patch.take()), &o.builtin) {
+        let mesh = match (
+            within(o.code.hooks.slot(HookKind::Curve).take()),
+            within(o.code.hooks.slot(HookKind::Patch).take()),
+            &o.builtin,
+        ) {
             (Some(hook), _, Some(BuiltinMesh::Bezier { points, t, levels })) => {
                 let curve = |ts: &[f32]| hook.curve_points(*points, ts);
                 crate::mesh::construction_mesh_from(*points, *t, *levels, &curve)
@@ -78,12 +80,18 @@ pub(super) fn with_student_shadow(
         return Ok(None);
     };
     let kind = HookKind::ShadowMatrix;
-    let Some(holder) = scene.objects.iter().find(|o| o.hook(kind).is_some()) else {
+    let Some(holder) = scene
+        .objects
+        .iter()
+        .find(|o| o.code.hooks.get(kind).is_some())
+    else {
         return Ok(None);
     };
     let light = shadow.light_over_plane();
     let m = holder
-        .hook(kind)
+        .code
+        .hooks
+        .get(kind)
         .expect("found above")
         .within(budget)
         .shadow_matrix(light)

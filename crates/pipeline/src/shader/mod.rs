@@ -11,7 +11,7 @@ mod uniforms;
 
 pub use bindings::{Bindings, Bound};
 pub use hook::{
-    At, CURVE_SIGNATURE, CurveDifference, DEPTH_SIGNATURE, Hook, HookKind, INSIDE_SIGNATURE,
+    At, CURVE_SIGNATURE, CurveDifference, DEPTH_SIGNATURE, Hook, HookKind, Hooks, INSIDE_SIGNATURE,
     InsideTest, PATCH_SIGNATURE, compile_hook, compile_inside,
 };
 pub use link::{

@@ -59,7 +59,7 @@ fn an_edge_pixel_averages_its_samples_after_each_is_clamped() {
         Some("#version 330 core\nout vec4 color;\nvoid main() {\n    color = vec4(3.0, 0.5, 2.0, 1.0);\n}\n"),
     )
     .unwrap_or_else(|e| panic!("{e:?}"));
-    student.objects[0].shader = Some(ObjectShader {
+    student.objects[0].code.shader = Some(ObjectShader {
         programs: Arc::new(programs),
         time: 0.0,
     });

@@ -242,10 +242,10 @@ fn de_casteljau_in_glsl_draws_pipelens_curve_and_a_straight_line_does_not() {
         far: 2.0,
     };
     let own = render(&scene, &settings);
-    scene.objects[0].curve = Some(line);
+    scene.objects[0].code.hooks.set(line);
     let wrong = render(&scene, &settings);
     assert!(own.difference(&wrong, 1.0).is_some_and(|d| !d.passed()));
-    scene.objects[0].curve = Some(hook);
+    scene.objects[0].code.hooks.set(hook);
     let mine = render(&scene, &settings);
     assert!(own.difference(&mine, 1.0).is_some_and(|d| d.passed()));
 }
@@ -264,7 +264,10 @@ fn a_pipeline_function_that_stops_is_named_as_the_frame_s_error() {
     };
     let mut object = pipeline::scene::Object::new("curve", curve.build());
     object.builtin = Some(curve);
-    object.curve = Some(compile_hook(HookKind::Curve, endless).expect("compiles"));
+    object
+        .code
+        .hooks
+        .set(compile_hook(HookKind::Curve, endless).expect("compiles"));
     let (mut scene, settings) = pixel_scene(16, 16, &[]);
     scene.objects = vec![object];
     let e = pipeline::render(&scene, &settings).expect_err("stops");
@@ -299,7 +302,10 @@ fn a_pipeline_functions_loop_runs_as_long_as_max_steps_allows() {
     ];
     let (mut scene, settings) = pixel_scene(8, 8, &[triangle]);
     let own = render(&scene, &settings);
-    scene.objects[0].inside = Some(compile_hook(HookKind::Inside, slow).expect("compiles"));
+    scene.objects[0]
+        .code
+        .hooks
+        .set(compile_hook(HookKind::Inside, slow).expect("compiles"));
     let e = pipeline::render(&scene, &settings).expect_err("past the default budget");
     let pipeline::RenderError::Code { error, .. } = &e else {
         panic!("{e}");
@@ -438,14 +444,17 @@ fn a_bezier_patch_in_glsl_is_pipelens_surface() {
     };
     scene.objects = vec![object];
     let own = render(&scene, &settings);
-    scene.objects[0].patch = Some(swapped);
+    scene.objects[0].code.hooks.set(swapped);
     let wrong = render(&scene, &settings);
     assert!(own.difference(&wrong, 1.0).is_some_and(|d| !d.passed()));
-    scene.objects[0].patch = Some(hook);
+    scene.objects[0].code.hooks.set(hook);
     let mine = render(&scene, &settings);
     assert!(own.difference(&mine, 1.0).is_some_and(|d| d.passed()));
     let nan = "vec3 bezier_patch(vec3 p[16], float u, float v) {\n    return p[0] / (u - u);\n}\n";
-    scene.objects[0].patch = Some(compile_hook(HookKind::Patch, nan).expect("compiles"));
+    scene.objects[0]
+        .code
+        .hooks
+        .set(compile_hook(HookKind::Patch, nan).expect("compiles"));
     let drawn = pipeline::render(&scene, &settings).expect("NaN points draw nothing, no panic");
     assert!(own.difference(&drawn, 1.0).is_some_and(|d| !d.passed()));
 }

@@ -95,7 +95,7 @@ fn settings() -> RenderSettings {
 fn with_shaders(mut scene: Scene, vertex: Option<&str>, fragment: Option<&str>) -> Scene {
     let programs = pipeline::shader::link(vertex, fragment).unwrap_or_else(|e| panic!("{e:?}"));
     for o in &mut scene.objects {
-        o.shader = Some(ObjectShader {
+        o.code.shader = Some(ObjectShader {
             programs: Arc::new(programs.clone()),
             time: 0.0,
         });
@@ -243,7 +243,7 @@ fn behind_a_discarded_fragment_the_next_surface_shows() {
     square.translate = Vec3::new(0.0, 0.0, 1.5);
     square.scale = Vec3::splat(0.8);
     let programs = pipeline::shader::link(None, Some(fs)).unwrap_or_else(|e| panic!("{e:?}"));
-    square.shader = Some(ObjectShader {
+    square.code.shader = Some(ObjectShader {
         programs: Arc::new(programs),
         time: 0.0,
     });

@@ -22,7 +22,8 @@ const LAYERS: usize = 16;
 /// Whether some object's fragment shader has a `discard`.
 fn may_discard(frame: &Frame<'_>) -> bool {
     frame.scene.objects.iter().any(|o| {
-        o.shader
+        o.code
+            .shader
             .as_ref()
             .is_some_and(|s| s.programs.fragment.can_discard())
     })

@@ -69,7 +69,8 @@ pub(in crate::render) fn fragment_shaders(
         .iter()
         .enumerate()
         .map(|(i, o)| {
-            o.shader
+            o.code
+                .shader
                 .as_ref()
                 .map(|sh| uniforms(ctx.scene, settings, matrices, i, sh.time))
         })
@@ -155,7 +156,12 @@ impl FragmentShading<'_> {
                     continue;
                 };
                 for &t in &self.ctx.samples.triangle[i * s..(i + 1) * s] {
-                    if t == NONE || self.ctx.scene.objects[self.object_of(t)].shader.is_none() {
+                    if t == NONE
+                        || self.ctx.scene.objects[self.object_of(t)]
+                            .code
+                            .shader
+                            .is_none()
+                    {
                         continue;
                     }
                     let job = match jobs.iter_mut().find(|q| q.triangle == t) {
@@ -214,7 +220,7 @@ impl FragmentShading<'_> {
     ) -> Result<FragmentCounts, RenderError> {
         let ctx = self.ctx;
         let o = &ctx.scene.objects[object];
-        let Some(sh) = &o.shader else {
+        let Some(sh) = &o.code.shader else {
             return Ok(FragmentCounts::default());
         };
         let fs = &sh.programs.fragment;
@@ -285,7 +291,7 @@ impl FragmentShading<'_> {
         let ctx = self.ctx;
         let object = self.object_of(job.triangle);
         let o = &ctx.scene.objects[object];
-        let Some(sh) = &o.shader else {
+        let Some(sh) = &o.code.shader else {
             return Ok(FragmentTrace::default());
         };
         let fs = &sh.programs.fragment;

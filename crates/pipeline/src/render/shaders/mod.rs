@@ -187,7 +187,7 @@ pub(super) fn vertex_shaders(
     for (i, object) in scene.objects.iter().enumerate() {
         let start = first;
         first += object.mesh.positions.len();
-        let Some(sh) = &object.shader else {
+        let Some(sh) = &object.code.shader else {
             out.push(None);
             continue;
         };
@@ -213,7 +213,7 @@ pub(super) fn shader_clip<'a>(
     i: usize,
 ) -> Option<vertex::ShaderClip<'a>> {
     let r = results?.get(i)?.as_ref()?;
-    let programs = &scene.objects[i].shader.as_ref()?.programs;
+    let programs = &scene.objects[i].code.shader.as_ref()?.programs;
     Some(vertex::ShaderClip {
         values: &r.values,
         stride: r.stride as usize,
@@ -260,7 +260,7 @@ pub fn trace_vertex(
     }) else {
         return Ok(None);
     };
-    let Some(sh) = &object.shader else {
+    let Some(sh) = &object.code.shader else {
         return Ok(None);
     };
     let index = row - (first - object.mesh.positions.len());

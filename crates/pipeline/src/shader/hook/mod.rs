@@ -66,207 +66,15 @@
 use std::sync::Arc;
 
 mod compare;
+mod kinds;
 
 pub use compare::{At, CurveDifference};
+pub use kinds::{
+    CURVE_SIGNATURE, DEPTH_SIGNATURE, HOOKS, HookKind, HookSpec, INSIDE_SIGNATURE, PATCH_SIGNATURE,
+    SHADOW_SIGNATURE,
+};
 
 use super::{Batch, LANES, Program, ShaderError, Stage, compile};
-
-/// The signature the rasterizer calls for the inside test, as the student writes it.
-pub const INSIDE_SIGNATURE: &str = "bool inside(vec2 p, vec2 a, vec2 b, vec2 c)";
-
-/// The signature the rasterizer calls for the depth test, as the student writes it.
-pub const DEPTH_SIGNATURE: &str = "bool depth_test(float z, float stored)";
-
-/// The signature a Bézier curve's drawing calls for each curve point, as the student writes it.
-pub const CURVE_SIGNATURE: &str = "vec2 de_casteljau(vec2 p0, vec2 p1, vec2 p2, vec2 p3, float t)";
-
-/// The signature a Bézier patch's drawing calls for each surface point, as the student writes it.
-pub const PATCH_SIGNATURE: &str = "vec3 bezier_patch(vec3 p[16], float u, float v)";
-
-/// The signature the shadow pass calls for its projection, as the student writes it.
-pub const SHADOW_SIGNATURE: &str = "mat4 shadow_matrix(vec3 light)";
-
-/// Which function of the pipeline the student writes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum HookKind {
-    /// `bool inside(vec2 p, vec2 a, vec2 b, vec2 c)`: which samples a triangle covers.
-    Inside,
-    /// `bool depth_test(float z, float stored)`: which covered samples it writes.
-    DepthTest,
-    /// `vec2 de_casteljau(vec2 p0, vec2 p1, vec2 p2, vec2 p3, float t)`: a Bézier curve's point.
-    Curve,
-    /// `mat4 shadow_matrix(vec3 light)`: the planar shadow's projection onto `y = 0`.
-    ShadowMatrix,
-    /// `vec3 bezier_patch(vec3 p[16], float u, float v)`: a Bézier patch's point.
-    Patch,
-}
-
-impl HookKind {
-    /// Every kind, in the order the shader panel shows their tabs.
-    pub const ALL: [Self; 5] = [
-        Self::Inside,
-        Self::DepthTest,
-        Self::Curve,
-        Self::ShadowMatrix,
-        Self::Patch,
-    ];
-
-    /// The signature the pipeline calls.
-    #[must_use]
-    pub fn signature(self) -> &'static str {
-        match self {
-            Self::Inside => INSIDE_SIGNATURE,
-            Self::DepthTest => DEPTH_SIGNATURE,
-            Self::Curve => CURVE_SIGNATURE,
-            Self::ShadowMatrix => SHADOW_SIGNATURE,
-            Self::Patch => PATCH_SIGNATURE,
-        }
-    }
-
-    /// Its name as the lesson's key and the messages say it: `inside`, `depth_test`.
-    #[must_use]
-    pub fn key(self) -> &'static str {
-        match self {
-            Self::Inside => "inside",
-            Self::DepthTest => "depth_test",
-            Self::Curve => "de_casteljau",
-            Self::ShadowMatrix => "shadow_matrix",
-            Self::Patch => "bezier_patch",
-        }
-    }
-
-    /// Who calls it and when, for the messages.
-    fn when(self) -> (&'static str, &'static str) {
-        match self {
-            Self::Inside => ("the rasterizer", "for every sample"),
-            Self::DepthTest => ("the rasterizer", "for every sample a triangle covers"),
-            Self::Curve => ("a Bézier curve's drawing", "for every point of the curve"),
-            Self::ShadowMatrix => ("the shadow pass", "once a frame, for the plane y = 0"),
-            Self::Patch => (
-                "a Bézier patch's drawing",
-                "for every vertex of the surface grid",
-            ),
-        }
-    }
-
-    /// The inputs pipelens passes, in the signature's order.
-    fn inputs(self) -> &'static [&'static str] {
-        match self {
-            Self::Inside => &["pipelens_p", "pipelens_a", "pipelens_b", "pipelens_c"],
-            Self::DepthTest => &["pipelens_z", "pipelens_stored"],
-            Self::Curve => &[
-                "pipelens_p0",
-                "pipelens_p1",
-                "pipelens_p2",
-                "pipelens_p3",
-                "pipelens_t",
-            ],
-            Self::ShadowMatrix => &["pipelens_light", "pipelens_column"],
-            Self::Patch => &[
-                "pipelens_p0",
-                "pipelens_p1",
-                "pipelens_p2",
-                "pipelens_p3",
-                "pipelens_p4",
-                "pipelens_p5",
-                "pipelens_p6",
-                "pipelens_p7",
-                "pipelens_p8",
-                "pipelens_p9",
-                "pipelens_p10",
-                "pipelens_p11",
-                "pipelens_p12",
-                "pipelens_p13",
-                "pipelens_p14",
-                "pipelens_p15",
-                "pipelens_uv",
-            ],
-        }
-    }
-
-    /// What pipelens appends to the student's function: its arguments as inputs, the answer
-    /// (1 true, 0 false) as the output.
-    fn caller(self) -> &'static str {
-        match self {
-            Self::Inside => {
-                "
-in vec2 pipelens_p;
-in vec2 pipelens_a;
-in vec2 pipelens_b;
-in vec2 pipelens_c;
-out vec4 pipelens_answer;
-void main() {
-    pipelens_answer = inside(pipelens_p, pipelens_a, pipelens_b, pipelens_c) ? vec4(1.0) : vec4(0.0);
-}
-"
-            }
-            Self::DepthTest => {
-                "
-in float pipelens_z;
-in float pipelens_stored;
-out vec4 pipelens_answer;
-void main() {
-    pipelens_answer = depth_test(pipelens_z, pipelens_stored) ? vec4(1.0) : vec4(0.0);
-}
-"
-            }
-            Self::Curve => {
-                "
-in vec2 pipelens_p0;
-in vec2 pipelens_p1;
-in vec2 pipelens_p2;
-in vec2 pipelens_p3;
-in float pipelens_t;
-out vec4 pipelens_answer;
-void main() {
-    pipelens_answer = vec4(de_casteljau(pipelens_p0, pipelens_p1, pipelens_p2, pipelens_p3, pipelens_t), 0.0, 1.0);
-}
-"
-            }
-            Self::ShadowMatrix => {
-                "
-in vec3 pipelens_light;
-in float pipelens_column;
-out vec4 pipelens_answer;
-void main() {
-    mat4 m = shadow_matrix(pipelens_light);
-    int c = int(pipelens_column);
-    pipelens_answer = c == 0 ? m[0] : c == 1 ? m[1] : c == 2 ? m[2] : m[3];
-}
-"
-            }
-            Self::Patch => {
-                "
-in vec3 pipelens_p0;
-in vec3 pipelens_p1;
-in vec3 pipelens_p2;
-in vec3 pipelens_p3;
-in vec3 pipelens_p4;
-in vec3 pipelens_p5;
-in vec3 pipelens_p6;
-in vec3 pipelens_p7;
-in vec3 pipelens_p8;
-in vec3 pipelens_p9;
-in vec3 pipelens_p10;
-in vec3 pipelens_p11;
-in vec3 pipelens_p12;
-in vec3 pipelens_p13;
-in vec3 pipelens_p14;
-in vec3 pipelens_p15;
-in vec2 pipelens_uv;
-out vec4 pipelens_answer;
-void main() {
-    vec3 p[16] = vec3[16](pipelens_p0, pipelens_p1, pipelens_p2, pipelens_p3,
-                          pipelens_p4, pipelens_p5, pipelens_p6, pipelens_p7,
-                          pipelens_p8, pipelens_p9, pipelens_p10, pipelens_p11,
-                          pipelens_p12, pipelens_p13, pipelens_p14, pipelens_p15);
-    pipelens_answer = vec4(bezier_patch(p, pipelens_uv.x, pipelens_uv.y), 1.0);
-}
-"
-            }
-        }
-    }
-}
 
 /// A function of the pipeline the student wrote, compiled.
 #[derive(Clone, Debug)]
@@ -296,6 +104,40 @@ impl Hook {
 /// The student's inside test.
 pub type InsideTest = Hook;
 
+/// The student's functions, one slot for each kind (`None`: pipelens' own).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Hooks([Option<Hook>; HookKind::ALL.len()]);
+
+impl Hooks {
+    /// The student's function of kind `kind`, if given.
+    #[must_use]
+    pub fn get(&self, kind: HookKind) -> Option<&Hook> {
+        self.0[kind as usize].as_ref()
+    }
+
+    /// Where the student's function of kind `kind` is kept.
+    pub fn slot(&mut self, kind: HookKind) -> &mut Option<Hook> {
+        &mut self.0[kind as usize]
+    }
+
+    /// `hook` kept in its kind's slot.
+    pub fn set(&mut self, hook: Hook) {
+        let kind = hook.kind;
+        *self.slot(kind) = Some(hook);
+    }
+
+    /// The functions given, in [`HookKind::ALL`]'s order.
+    pub fn iter(&self) -> impl Iterator<Item = &Hook> {
+        self.0.iter().flatten()
+    }
+
+    /// Whether no function is given.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.0.iter().all(Option::is_none)
+    }
+}
+
 impl PartialEq for Hook {
     /// Two tests are the same when their sources are.
     fn eq(&self, other: &Self) -> bool {
@@ -322,7 +164,7 @@ pub fn compile_hook(kind: HookKind, source: &str) -> Result<Hook, Vec<ShaderErro
         text.push('\n');
     }
     let own = text.len();
-    text.push_str(kind.caller());
+    text.push_str(kind.spec().caller);
     let program = compile(Stage::Fragment, &text).map_err(|errors| {
         let mut mine: Vec<ShaderError> = errors
             .iter()
@@ -338,9 +180,9 @@ pub fn compile_hook(kind: HookKind, source: &str) -> Result<Hook, Vec<ShaderErro
                     format!(
                         "{} calls `{}` {}: define it with exactly that signature (no `main`, no \
                          inputs or outputs of your own)",
-                        kind.when().0,
+                        kind.spec().when.0,
                         kind.signature(),
-                        kind.when().1
+                        kind.spec().when.1
                     ),
                 ),
                 super::Complaint::HookSignature(kind.signature().to_owned()),
@@ -506,7 +348,7 @@ impl Hook {
         let program = &*self.program;
         let mut machine = program.machine();
         machine.budget = self.budget;
-        let names = self.kind.inputs();
+        let names = self.kind.spec().inputs;
         // The entry point's inputs in its order: which argument each is.
         let which: Vec<Option<usize>> = program
             .inputs
