@@ -291,12 +291,73 @@ pub fn texture_slot(name: &str) -> Option<TextureSlot> {
 /// The most lights a shader sees (`MAX_LIGHTS`).
 pub const MAX_LIGHTS: usize = 8;
 
-/// The components of one `Light` record.
-pub const LIGHT_COMPONENTS: usize = 15;
+/// pipelens' `Light` record, field by field in the order its uniform stores them: the GLSL
+/// type, the name, and the components it takes (`kind`: 0 ambient, 1 point, 2 directional, 3
+/// spot; `attenuation`: a, b, c of `1/(a + b·d + c·d²)`; `cutoff_cos`: the spot's cos of its
+/// cutoff angle; `exponent`: its falloff `cos^e`).
+pub const LIGHT_FIELDS: [(&str, &str, usize); 7] = [
+    ("int", "kind", 1),
+    ("vec3", "position", 3),
+    ("vec3", "direction", 3),
+    ("vec3", "intensity", 3),
+    ("vec3", "attenuation", 3),
+    ("float", "cutoff_cos", 1),
+    ("float", "exponent", 1),
+];
+
+/// The light kinds as a shader names them, each the value of its place.
+pub const LIGHT_KINDS: [&str; 4] = [
+    "LIGHT_AMBIENT",
+    "LIGHT_POINT",
+    "LIGHT_DIRECTIONAL",
+    "LIGHT_SPOT",
+];
+
+/// The components of one `Light` record: the sum of [`LIGHT_FIELDS`]' components.
+pub const LIGHT_COMPONENTS: usize = {
+    let mut n = 0;
+    let mut i = 0;
+    while i < LIGHT_FIELDS.len() {
+        n += LIGHT_FIELDS[i].2;
+        i += 1;
+    }
+    n
+};
+
+/// The GLSL every shader starts with: the `Light` struct of [`LIGHT_FIELDS`], a constant for
+/// each of [`LIGHT_KINDS`], and `MAX_LIGHTS`; written once.
+#[must_use]
+pub fn light_declarations() -> &'static str {
+    static TEXT: std::sync::OnceLock<String> = std::sync::OnceLock::new();
+    TEXT.get_or_init(|| {
+        let fields: String = LIGHT_FIELDS
+            .iter()
+            .map(|(ty, name, _)| format!(" {ty} {name};"))
+            .collect();
+        let kinds: String = LIGHT_KINDS
+            .iter()
+            .enumerate()
+            .map(|(value, name)| format!("const int {name} = {value}; "))
+            .collect();
+        format!("struct Light {{{fields} }};\n{kinds}const int MAX_LIGHTS = {MAX_LIGHTS};\n")
+    })
+}
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The declarations a shader sees are the course's `Light` record as written by hand.
+    #[test]
+    fn the_light_declarations_are_the_record_as_written() {
+        assert_eq!(
+            light_declarations(),
+            "struct Light { int kind; vec3 position; vec3 direction; vec3 intensity; \
+             vec3 attenuation; float cutoff_cos; float exponent; };\n\
+             const int LIGHT_AMBIENT = 0; const int LIGHT_POINT = 1; \
+             const int LIGHT_DIRECTIONAL = 2; const int LIGHT_SPOT = 3; const int MAX_LIGHTS = 8;\n"
+        );
+    }
 
     /// The light layout is said three times — the `Light` struct and `MAX_LIGHTS` in the text
     /// put before every shader, and these two constants — and must agree: the `lights` array

@@ -30,7 +30,7 @@ mod sampler_arguments;
 mod scan;
 
 pub use declaration::{Declaration, Storage};
-pub use names::{FRAG_COLOR, LIGHT_DECLARATIONS, SAMPLER_PREFIX, TEXTURE_PREFIX};
+pub use names::{FRAG_COLOR, SAMPLER_PREFIX, TEXTURE_PREFIX};
 pub(crate) use scan::version_directive;
 
 use crate::stage::Stage;

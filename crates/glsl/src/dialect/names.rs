@@ -1,12 +1,6 @@
-//! The names and the text pipelens puts into a student's shader: its light type and constants,
-//! the texture and sampler behind each `sampler2D` or `samplerCube`, and the output that a GLSL
-//! 1.x `gl_FragColor` becomes.
-
-/// The preamble every shader starts with: pipelens' light type and its kinds.
-pub const LIGHT_DECLARATIONS: &str = "struct Light { int kind; vec3 position; vec3 direction; \
-vec3 intensity; vec3 attenuation; float cutoff_cos; float exponent; };\n\
-const int LIGHT_AMBIENT = 0; const int LIGHT_POINT = 1; const int LIGHT_DIRECTIONAL = 2; \
-const int LIGHT_SPOT = 3; const int MAX_LIGHTS = 8;\n";
+//! The names pipelens puts into a student's shader: the texture and sampler behind each
+//! `sampler2D` or `samplerCube`, and the output that a GLSL 1.x `gl_FragColor` becomes (its
+//! light type and constants are `interface::light_declarations`).
 
 /// The combined samplers a student may declare, with the separate texture type naga reads
 /// behind each: a 2D texture, and a cube map looked up by direction.

@@ -6,7 +6,7 @@
 use std::ops::Range;
 
 use super::declaration::{Declaration, Storage};
-use super::names::{LIGHT_DECLARATIONS, SAMPLER_PREFIX, TEXTURE_PREFIX};
+use super::names::{SAMPLER_PREFIX, TEXTURE_PREFIX};
 use super::scan::Token;
 use crate::stage::Stage;
 
@@ -28,7 +28,7 @@ impl Preamble {
             next_location: 0,
         };
         p.push_generated("#version 450 core\n", 0..0);
-        p.push_generated(LIGHT_DECLARATIONS, 0..0);
+        p.push_generated(crate::interface::light_declarations(), 0..0);
         p
     }
 
