@@ -130,12 +130,6 @@ impl Hooks {
     pub fn iter(&self) -> impl Iterator<Item = &Hook> {
         self.0.iter().flatten()
     }
-
-    /// Whether no function is given.
-    #[must_use]
-    pub fn is_empty(&self) -> bool {
-        self.0.iter().all(Option::is_none)
-    }
 }
 
 impl PartialEq for Hook {
