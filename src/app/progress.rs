@@ -21,55 +21,72 @@ pub struct Progress {
 
 /// What a student has done in one lesson. Steps are counted from 1, as the app shows them.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(from = "StoredLessonProgress")]
 pub struct LessonProgress {
     /// The steps whose typed answer was right.
     pub answered: BTreeSet<usize>,
     /// What was last typed into each step's field, cell by cell.
     pub typed: BTreeMap<usize, Vec<String>>,
     /// The exercise steps whose every pixel matched pipelens' own.
-    #[serde(default)]
     pub passed: BTreeSet<usize>,
     /// The shaders (vertex, fragment) the student last ran in each exercise step.
-    #[serde(default)]
     pub code: BTreeMap<usize, (String, String)>,
-    /// The inside test the student last ran in each exercise step that has one.
-    #[serde(default)]
-    pub inside: BTreeMap<usize, String>,
-    /// The depth test the student last ran in each exercise step that has one.
-    #[serde(default)]
-    pub depth_test: BTreeMap<usize, String>,
-    /// The de Casteljau the student last ran in each exercise step that has one.
-    #[serde(default)]
-    pub curve: BTreeMap<usize, String>,
-    /// The shadow matrix the student last ran in each exercise step that has one.
-    #[serde(default)]
-    pub shadow_matrix: BTreeMap<usize, String>,
-    /// The Bézier patch point the student last ran in each exercise step that has one.
-    #[serde(default)]
-    pub bezier_patch: BTreeMap<usize, String>,
+    /// The functions the pipeline calls (the inside test, the depth test, …) the student last
+    /// ran in each exercise step, by the function's lesson key ([`HookKind::key`]) and step. A
+    /// key this version does not know (kept by a newer one) is kept as it is.
+    pub functions: BTreeMap<String, BTreeMap<usize, String>>,
+}
+
+/// A lesson's record as storage holds it: this version's, or the first one's, which kept each
+/// kind of function in a field of its own (`inside`, `depth_test`, `curve`, `shadow_matrix`,
+/// `bezier_patch`). Read into a [`LessonProgress`]; what is written is always this version's.
+#[derive(Default, Deserialize)]
+#[serde(default)]
+struct StoredLessonProgress {
+    answered: BTreeSet<usize>,
+    typed: BTreeMap<usize, Vec<String>>,
+    passed: BTreeSet<usize>,
+    code: BTreeMap<usize, (String, String)>,
+    functions: BTreeMap<String, BTreeMap<usize, String>>,
+    // The first version's fields, frozen as it wrote them.
+    inside: BTreeMap<usize, String>,
+    depth_test: BTreeMap<usize, String>,
+    curve: BTreeMap<usize, String>,
+    shadow_matrix: BTreeMap<usize, String>,
+    bezier_patch: BTreeMap<usize, String>,
+}
+
+impl From<StoredLessonProgress> for LessonProgress {
+    fn from(s: StoredLessonProgress) -> Self {
+        let mut functions = s.functions;
+        for (kind, by_step) in [
+            (HookKind::Inside, s.inside),
+            (HookKind::DepthTest, s.depth_test),
+            (HookKind::Curve, s.curve),
+            (HookKind::ShadowMatrix, s.shadow_matrix),
+            (HookKind::Patch, s.bezier_patch),
+        ] {
+            if !by_step.is_empty() {
+                let kept = functions.entry(kind.key().to_owned()).or_default();
+                for (step, source) in by_step {
+                    kept.entry(step).or_insert(source);
+                }
+            }
+        }
+        Self {
+            answered: s.answered,
+            typed: s.typed,
+            passed: s.passed,
+            code: s.code,
+            functions,
+        }
+    }
 }
 
 impl LessonProgress {
-    /// The sources of the student's functions of kind `kind`, by step (1-based).
-    fn hooks(&self, kind: HookKind) -> &BTreeMap<usize, String> {
-        match kind {
-            HookKind::Inside => &self.inside,
-            HookKind::DepthTest => &self.depth_test,
-            HookKind::Curve => &self.curve,
-            HookKind::ShadowMatrix => &self.shadow_matrix,
-            HookKind::Patch => &self.bezier_patch,
-        }
-    }
-
-    /// [`Self::hooks`], to change.
-    fn hooks_mut(&mut self, kind: HookKind) -> &mut BTreeMap<usize, String> {
-        match kind {
-            HookKind::Inside => &mut self.inside,
-            HookKind::DepthTest => &mut self.depth_test,
-            HookKind::Curve => &mut self.curve,
-            HookKind::ShadowMatrix => &mut self.shadow_matrix,
-            HookKind::Patch => &mut self.bezier_patch,
-        }
+    /// The source of the student's function of kind `kind` last run in step `step` (1-based).
+    fn function(&self, kind: HookKind, step: usize) -> Option<&String> {
+        self.functions.get(kind.key())?.get(&step)
     }
 }
 
@@ -115,9 +132,12 @@ impl Progress {
                 .extend(theirs.typed.iter().map(|(k, v)| (*k, v.clone())));
             mine.code
                 .extend(theirs.code.iter().map(|(k, v)| (*k, v.clone())));
-            for kind in HookKind::ALL {
-                let theirs = theirs.hooks(kind).iter().map(|(k, v)| (*k, v.clone()));
-                mine.hooks_mut(kind).extend(theirs);
+            for (key, by_step) in &theirs.functions {
+                let theirs = by_step.iter().map(|(k, v)| (*k, v.clone()));
+                mine.functions
+                    .entry(key.clone())
+                    .or_default()
+                    .extend(theirs);
             }
         }
     }
@@ -187,7 +207,10 @@ impl Progress {
             l.code.insert(k + 1, shaders);
         }
         for (kind, source) in code.hooks {
-            l.hooks_mut(kind).insert(k + 1, source);
+            l.functions
+                .entry(kind.key().to_owned())
+                .or_default()
+                .insert(k + 1, source);
         }
         if passed {
             l.passed.insert(k + 1);
@@ -202,7 +225,7 @@ impl Progress {
             shaders: l.code.get(&(k + 1)).cloned(),
             hooks: HookKind::ALL
                 .into_iter()
-                .filter_map(|kind| Some((kind, l.hooks(kind).get(&(k + 1))?.clone())))
+                .filter_map(|kind| Some((kind, l.function(kind, k + 1)?.clone())))
                 .collect(),
         };
         (code != SavedCode::default()).then_some(code)

@@ -374,3 +374,49 @@ fn two_windows_saving_keep_each_others_progress() {
     let kept = Progress::load(Some(&storage));
     assert!(kept.answered(&lesson, 1), "{kept:?}");
 }
+
+/// Progress kept by the first version, which stored each kind of the student's functions in a
+/// field of its own, is read into this version's map by kind: nothing a student ran is lost.
+/// What is written back is this version's form, and a kind this version does not know (kept by
+/// a newer one) stays.
+#[test]
+fn progress_kept_by_the_first_version_is_read_and_nothing_is_lost() {
+    use pipelens::lesson::{Document, load_file};
+    use pipeline::shader::HookKind;
+    let Ok(Document::Lesson(lesson)) = load_file(&repo().join("lessons/07-rasterization.toml"))
+    else {
+        panic!("lesson 07 loads")
+    };
+    let mut storage = Memory::default();
+    // Written by hand as the first version's RON: steps 4 and 6 of lesson 07, a curve in step 2.
+    let old = r#"(lessons:{"07-rasterization":(answered:[1],typed:{1:["2"]},passed:[6],code:{},inside:{4:"bool inside4",6:"bool inside6"},depth_test:{6:"bool depth6"},curve:{2:"vec2 curve2"},shadow_matrix:{},bezier_patch:{})})"#;
+    eframe::Storage::set_string(&mut storage, Progress::KEY, old.to_owned());
+    let kept = Progress::load(Some(&storage));
+    let record = kept
+        .of("07-rasterization")
+        .expect("the lesson's record is read");
+    assert_eq!(record.functions["inside"][&4], "bool inside4");
+    assert_eq!(record.functions["depth_test"][&6], "bool depth6");
+    assert_eq!(record.functions["de_casteljau"][&2], "vec2 curve2");
+    assert!(kept.answered(&lesson, 0) && kept.passed(&lesson, 5));
+    // Step 6 (index 5) gives back both of its functions, by kind.
+    let code = kept.code(&lesson, 5).expect("step 6's code is kept");
+    assert_eq!(
+        code.hooks,
+        vec![
+            (HookKind::Inside, "bool inside6".to_owned()),
+            (HookKind::DepthTest, "bool depth6".to_owned())
+        ]
+    );
+    // A newer version's kind survives a save by this one.
+    let newer = r#"(lessons:{"07-rasterization":(answered:[],typed:{},passed:[],code:{},functions:{"a_later_kind":{3:"src"}})})"#;
+    let mut other = Memory::default();
+    eframe::Storage::set_string(&mut other, Progress::KEY, newer.to_owned());
+    kept.save(&mut other);
+    let written = eframe::Storage::get_string(&other, Progress::KEY).expect("saved");
+    assert!(!written.contains("bezier_patch"), "{written}");
+    let again = Progress::load(Some(&other));
+    let record = again.of("07-rasterization").expect("read back");
+    assert_eq!(record.functions["a_later_kind"][&3], "src");
+    assert_eq!(record.functions["inside"][&4], "bool inside4");
+}
