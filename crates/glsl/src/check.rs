@@ -7,7 +7,7 @@ use crate::error::{ShaderError, error_at, main_span};
 use crate::stage::Stage;
 use crate::suggest::{Quote, did_you_mean, nearest};
 use crate::trace::glsl_type;
-use crate::{code, dialect, interface};
+use crate::{dialect, interface, register_form};
 
 /// naga's words for a student: handles such as `[7]` and `naga::ir::` paths left out.
 pub(super) fn plain(message: &str) -> String {
@@ -290,7 +290,7 @@ pub(super) fn dropped_arguments(source: &str) -> Result<(), Vec<ShaderError>> {
         .map(|l| {
             let name = &source[l.span.clone()];
             complain(
-                error_at(source, l.span.clone(), super::code::not_run(name)),
+                error_at(source, l.span.clone(), super::register_form::not_run(name)),
                 Complaint::NotRunYet(name.to_owned()),
             )
         })
@@ -374,15 +374,15 @@ pub(super) fn check_writes(
     stage: Stage,
     adapted: &dialect::Adapted,
     module: &naga::Module,
-    code: &code::Code,
+    code: &register_form::Code,
     errors: &mut Vec<ShaderError>,
 ) {
-    let mut stores: Vec<(usize, code::Root, String)> = Vec::new();
+    let mut stores: Vec<(usize, register_form::Root, String)> = Vec::new();
     for f in &code.functions {
         collect_stores(&f.body, &mut stores);
     }
     for (at, root, name) in &stores {
-        if *root == code::Root::Uniform {
+        if *root == register_form::Root::Uniform {
             errors.push(complain(
                 error_at(
                     source,
@@ -449,14 +449,17 @@ pub(super) fn check_writes(
 pub(super) const NO_POSITION: &str = "the vertex shader never writes `gl_Position` (the clip-space position): \
                            add `gl_Position = mvp * vec4(position, 1.0);`";
 
-pub(super) fn stores_into(stmts: &[code::Stmt], name: &str) -> bool {
+pub(super) fn stores_into(stmts: &[register_form::Stmt], name: &str) -> bool {
     let mut s = Vec::new();
     collect_stores(stmts, &mut s);
     s.iter().any(|(_, _, n)| n == name)
 }
 
-pub(super) fn collect_stores(stmts: &[code::Stmt], out: &mut Vec<(usize, code::Root, String)>) {
-    use code::Stmt;
+pub(super) fn collect_stores(
+    stmts: &[register_form::Stmt],
+    out: &mut Vec<(usize, register_form::Root, String)>,
+) {
+    use register_form::Stmt;
     for s in stmts {
         match s {
             Stmt::Store { at, place, .. } => out.push((*at, place.root, place.name.clone())),

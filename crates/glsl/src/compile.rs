@@ -6,7 +6,7 @@ use crate::complaint::{self, Complaint};
 use crate::error::{ShaderError, error_at};
 use crate::program::{Program, interface_of};
 use crate::stage::Stage;
-use crate::{check, code, dialect, glsl330, lexeme, modulo, translate};
+use crate::{check, dialect, glsl330, lexeme, modulo, register_form, translate};
 
 /// naga's parse errors at the student's lines, each with its complaint (a missing `;` at the
 /// end of the line that lacks it).
@@ -32,7 +32,7 @@ fn parse_errors(
             if let Complaint::UnknownFunction(name) = &complaint
                 && glsl330::FUNCTIONS.contains(&name.as_str())
             {
-                e.message = code::not_run(name);
+                e.message = register_form::not_run(name);
                 complaint = Complaint::NotRunYet(name.clone());
             } else if let Complaint::UnknownFunction(name) = &complaint
                 && let Some(def) = lexeme::definition(source, name)
@@ -71,7 +71,7 @@ fn parse_errors(
 
 /// What the translation could not do, as a message at its place: `%` on floats, a built-in
 /// pipelens does not run yet, or the form it met.
-fn unsupported(source: &str, u: code::Unsupported) -> ShaderError {
+fn unsupported(source: &str, u: register_form::Unsupported) -> ShaderError {
     let complaint = if u.what == translate::FLOAT_MODULO {
         Complaint::FloatModulo
     } else {
@@ -166,7 +166,7 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
         .filter_map(|(h, g)| {
             let name = g.name.clone()?;
             match code.globals[h.index()] {
-                Some((code::Root::Uniform, reg)) => Some((name, reg)),
+                Some((register_form::Root::Uniform, reg)) => Some((name, reg)),
                 _ => None,
             }
         })

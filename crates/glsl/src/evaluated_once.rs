@@ -1,51 +1,27 @@
-//! Which of a function's expressions its body evaluates where they are emitted, and which are
-//! constants, evaluated once before any lane runs: those no `Emit` covers, and a local's initial
-//! value with what it is made of (naga emits `mat4(1.0)` in `mat4 m = mat4(1.0);`, but the
-//! function's entry copies it into `m` before the body runs).
+//! Which of a function's expressions are evaluated once, when the function's invariants are
+//! (before any lane runs), rather than only where its body emits them: those no `Emit` covers
+//! (naga emits no constant), and those naga's own constness tracker
+//! ([`naga::proc::ExpressionKindTracker`]) finds constant — a local's initial value among them:
+//! naga emits `mat4(1.0)` in `mat4 m = mat4(1.0);`, but the function's entry copies it into `m`
+//! before the body runs, so it must be ready then. A constant evaluated early is evaluated
+//! again where it is emitted, to the same value.
 
-use naga::{Expression, Handle, Statement};
+use naga::Statement;
+use naga::proc::ExpressionKindTracker;
 
-/// Marks constant expression `h` and the expressions it is made of as not emitted, so that they
-/// are evaluated once with the function's constants.
-pub(super) fn mark_constant(
-    expressions: &naga::Arena<Expression>,
-    h: Handle<Expression>,
-    emitted: &mut [bool],
-) {
-    emitted[h.index()] = false;
-    let operands: Vec<Handle<Expression>> = match expressions[h] {
-        Expression::Compose { ref components, .. } => components.clone(),
-        Expression::Splat { value, .. } => vec![value],
-        Expression::As { expr, .. } | Expression::Unary { expr, .. } => vec![expr],
-        Expression::Binary { left, right, .. } => vec![left, right],
-        Expression::Swizzle { vector, .. } => vec![vector],
-        Expression::AccessIndex { base, .. } => vec![base],
-        Expression::Access { base, index } => vec![base, index],
-        Expression::Select {
-            condition,
-            accept,
-            reject,
-        } => vec![condition, accept, reject],
-        Expression::Relational { argument, .. } => vec![argument],
-        Expression::Math {
-            arg,
-            arg1,
-            arg2,
-            arg3,
-            ..
-        } => [Some(arg), arg1, arg2, arg3]
-            .into_iter()
-            .flatten()
-            .collect(),
-        _ => Vec::new(),
-    };
-    for o in operands {
-        mark_constant(expressions, o, emitted);
-    }
+/// For each of `f`'s expressions (by handle index), whether it is evaluated once up front.
+pub(super) fn evaluated_once(f: &naga::Function) -> Vec<bool> {
+    let mut emitted = vec![false; f.expressions.len()];
+    mark_emitted(&f.body, &mut emitted);
+    let constness = ExpressionKindTracker::from_arena(&f.expressions);
+    f.expressions
+        .iter()
+        .map(|(h, _)| !emitted[h.index()] || constness.is_const(h))
+        .collect()
 }
 
 /// Marks every expression some `Emit` covers.
-pub(super) fn mark_emitted(block: &naga::Block, emitted: &mut [bool]) {
+fn mark_emitted(block: &naga::Block, emitted: &mut [bool]) {
     for s in block.iter() {
         match *s {
             Statement::Emit(ref r) => {

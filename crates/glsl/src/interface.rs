@@ -371,7 +371,7 @@ mod tests {
             .iter()
             .find(|(n, _)| n == "lights")
             .expect("declared");
-        assert_eq!(reg.n as usize, MAX_LIGHTS * LIGHT_COMPONENTS);
+        assert_eq!(reg.len as usize, MAX_LIGHTS * LIGHT_COMPONENTS);
         // kind (1) + position, direction, intensity, attenuation (4 × 3) + cutoff_cos,
         // exponent (2).
         assert_eq!(LIGHT_COMPONENTS, 1 + 4 * 3 + 2);

@@ -6,7 +6,7 @@
 //! `uniform sampler2D tex;`, `in`/`out` without locations; GLSL 1.x's `attribute`, `varying`
 //! and `gl_FragColor` too). [`compile()`] adapts it to the GLSL naga reads ([`dialect`]), has naga
 //! parse and validate it, checks it against what pipelens provides ([`interface`]), and
-//! translates naga's IR once into a register form (the `code` module). A [`Program`] then runs on the
+//! translates naga's IR once into a register form (the `register_form` module). A [`Program`] then runs on the
 //! CPU over batches of invocations ([`Machine`]), reading the textures its host binds
 //! ([`Textures`]), and can record what one invocation did, statement by statement ([`Trace`]).
 //!
@@ -16,11 +16,11 @@
 //! uniforms' values for an object, the textures bound per slot, pipelens' shading modes as GLSL
 //! and the pipeline functions the student writes.
 
+mod builtins;
 mod check;
-mod code;
 pub mod complaint;
 pub mod dialect;
-mod emitted;
+mod evaluated_once;
 pub mod glsl330;
 pub mod interface;
 mod lanes;
@@ -30,10 +30,12 @@ mod machine;
 mod modulo;
 mod ops;
 pub mod power;
+mod register_form;
 mod stage;
 pub mod suggest;
 mod trace;
 mod translate;
+mod type_layout;
 
 mod batch;
 mod compile;

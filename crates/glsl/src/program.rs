@@ -7,7 +7,7 @@ use crate::error::main_span;
 use crate::error::{Origin, ShaderError, error_at};
 use crate::machine::{Machine, RunError};
 pub use crate::stage::Stage;
-use crate::{code, dialect};
+use crate::{dialect, register_form};
 
 /// How a varying is interpolated across a triangle (GLSL's qualifiers).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -44,13 +44,13 @@ pub struct Program {
     pub source: String,
     pub(crate) module: naga::Module,
     /// The register form.
-    pub code: code::Code,
+    pub code: register_form::Code,
     /// The entry point's inputs, in argument order.
     pub inputs: Vec<Varying>,
     /// The entry point's outputs, in result order.
     pub outputs: Vec<Varying>,
     /// The uniforms it declared: name, and where they are in the machine's uniforms.
-    pub uniforms: Vec<(String, code::Reg)>,
+    pub uniforms: Vec<(String, register_form::Reg)>,
     /// The textures it declared, by slot.
     pub textures: Vec<String>,
     /// The declarations the student wrote (uniforms, textures, inputs, outputs).
@@ -95,7 +95,7 @@ pub(crate) fn interface_of(module: &naga::Module) -> (Vec<Varying>, Vec<Varying>
                 name,
                 location,
                 builtin,
-                components: code::components(module, &module.types[ty].inner),
+                components: crate::type_layout::components(module, &module.types[ty].inner),
                 interpolate,
             }
         };
@@ -168,13 +168,13 @@ impl Program {
     /// Whether the program has a `discard` anywhere.
     #[must_use]
     pub fn can_discard(&self) -> bool {
-        fn kills(stmts: &[code::Stmt]) -> bool {
+        fn kills(stmts: &[register_form::Stmt]) -> bool {
             stmts.iter().any(|s| match s {
-                code::Stmt::Kill { .. } => true,
-                code::Stmt::Block(b) => kills(b),
-                code::Stmt::If(i) => kills(&i.accept) || kills(&i.reject),
-                code::Stmt::Switch(s) => s.cases.iter().any(|(_, b, _)| kills(b)),
-                code::Stmt::Loop(l) => kills(&l.body) || kills(&l.continuing),
+                register_form::Stmt::Kill { .. } => true,
+                register_form::Stmt::Block(b) => kills(b),
+                register_form::Stmt::If(i) => kills(&i.accept) || kills(&i.reject),
+                register_form::Stmt::Switch(s) => s.cases.iter().any(|(_, b, _)| kills(b)),
+                register_form::Stmt::Loop(l) => kills(&l.body) || kills(&l.continuing),
                 _ => false,
             })
         }

@@ -6,30 +6,28 @@
 //! column, as GLSL stores it), a struct the sum of its members, an array its length times its
 //! element. A register of `c` components over `N` lanes is `c` rows of `N` values.
 
-use naga::{
-    BinaryOperator, Expression, Handle, Literal, MathFunction, Module, ScalarKind, TypeInner,
-};
+use naga::{BinaryOperator, Handle, MathFunction, ScalarKind};
 
 /// The kind of a scalar component.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
     /// `float`.
-    F,
+    Float,
     /// `int`.
-    I,
+    Int,
     /// `uint`.
-    U,
+    Uint,
     /// `bool` (0 or 1).
-    B,
+    Bool,
 }
 
 impl Kind {
     pub(super) fn of(kind: ScalarKind) -> Self {
         match kind {
-            ScalarKind::Float | ScalarKind::AbstractFloat => Self::F,
-            ScalarKind::Sint | ScalarKind::AbstractInt => Self::I,
-            ScalarKind::Uint => Self::U,
-            ScalarKind::Bool => Self::B,
+            ScalarKind::Float | ScalarKind::AbstractFloat => Self::Float,
+            ScalarKind::Sint | ScalarKind::AbstractInt => Self::Int,
+            ScalarKind::Uint => Self::Uint,
+            ScalarKind::Bool => Self::Bool,
         }
     }
 }
@@ -37,10 +35,10 @@ impl Kind {
 /// A register: its first component and how many it has.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Reg {
-    /// First component.
-    pub at: u32,
-    /// Number of components.
-    pub n: u32,
+    /// Its first component.
+    pub first: u32,
+    /// How many components it has.
+    pub len: u32,
 }
 
 /// What a pointer points into.
@@ -54,17 +52,17 @@ pub enum Root {
     Uniform,
 }
 
-/// A place in a variable: a static offset plus dynamic indices, `n` components long.
+/// A place in a variable: a static offset plus dynamic indices, `len` components long.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Place {
     /// Which storage.
     pub root: Root,
     /// The variable's first component plus every constant index's offset.
-    pub at: u32,
+    pub offset: u32,
     /// Dynamic indices: the index register, the stride in components, the element count.
     pub dynamic: Vec<(u32, u32, u32)>,
-    /// Components.
-    pub n: u32,
+    /// How many components it has.
+    pub len: u32,
     /// The variable's name, for traces.
     pub name: String,
     /// The variable's first component and size, for traces.
@@ -205,7 +203,7 @@ impl Op {
         };
         match self {
             Self::None | Self::Const(_) => Vec::new(),
-            Self::Compose(parts) => parts.iter().map(|r| r.at).collect(),
+            Self::Compose(parts) => parts.iter().map(|r| r.first).collect(),
             Self::Copy { from, .. } | Self::Splat { from, .. } | Self::Swizzle { from, .. } => {
                 vec![*from]
             }
@@ -214,28 +212,28 @@ impl Op {
             Self::Unary { a, .. }
             | Self::Derivative { a, .. }
             | Self::Relational { a, .. }
-            | Self::As { a, .. } => vec![a.at],
-            Self::Binary { a, b, .. } => vec![a.at, b.at],
-            Self::Select { c, a, b } => vec![c.at, a.at, b.at],
-            Self::Math { args, .. } => args.iter().map(|r| r.at).collect(),
+            | Self::As { a, .. } => vec![a.first],
+            Self::Binary { a, b, .. } => vec![a.first, b.first],
+            Self::Select { c, a, b } => vec![c.first, a.first, b.first],
+            Self::Math { args, .. } => args.iter().map(|r| r.first).collect(),
             Self::Sample {
                 texture,
                 coordinate,
                 level: l,
                 offset,
             } => [
-                vec![*texture, coordinate.at],
+                vec![*texture, coordinate.first],
                 level(l),
                 offset.iter().copied().collect(),
             ]
             .concat(),
-            Self::SampleCube { texture, direction } => vec![*texture, direction.at],
+            Self::SampleCube { texture, direction } => vec![*texture, direction.first],
             Self::Fetch {
                 texture,
                 coordinate,
                 level,
             } => [
-                vec![*texture, coordinate.at],
+                vec![*texture, coordinate.first],
                 level.iter().copied().collect(),
             ]
             .concat(),
@@ -373,7 +371,8 @@ pub struct Function {
     pub regs: Vec<Reg>,
     /// Where each expression is in the student's source (bytes), for errors.
     pub spans: Vec<usize>,
-    /// Expressions that no `Emit` covers (constants), evaluated when the function starts.
+    /// Expressions evaluated once with the invariants, before any lane runs: constants and
+    /// those no `Emit` covers (see `evaluated_once.rs`).
     pub pre: Vec<u32>,
     /// Components of all registers.
     pub width: u32,
@@ -449,113 +448,4 @@ impl OpError {
 #[must_use]
 pub fn not_run(name: &str) -> String {
     format!("pipelens does not run `{name}` yet")
-}
-
-/// Components of a type.
-pub fn components(module: &Module, inner: &TypeInner) -> u32 {
-    match *inner {
-        TypeInner::Scalar(_) | TypeInner::Atomic(_) => 1,
-        TypeInner::Vector { size, .. } => size as u32,
-        TypeInner::Matrix { columns, rows, .. } => columns as u32 * rows as u32,
-        TypeInner::Array {
-            base,
-            size: naga::ArraySize::Constant(n),
-            ..
-        } => n.get() * components(module, &module.types[base].inner),
-        TypeInner::Struct { ref members, .. } => members
-            .iter()
-            .map(|m| components(module, &module.types[m.ty].inner))
-            .sum(),
-        // A texture is passed as a value: its slot ([`Op::Sample`]).
-        TypeInner::Image { .. } => 1,
-        _ => 0,
-    }
-}
-
-/// The scalar kind of a scalar, vector or matrix type (float otherwise).
-pub fn kind_of(inner: &TypeInner) -> Kind {
-    match *inner {
-        TypeInner::Scalar(s)
-        | TypeInner::Vector { scalar: s, .. }
-        | TypeInner::Matrix { scalar: s, .. } => Kind::of(s.kind),
-        TypeInner::ValuePointer { scalar, .. } => Kind::of(scalar.kind),
-        _ => Kind::F,
-    }
-}
-
-/// The offset in components of member or element `index` of a type, and its type.
-pub(super) fn member(module: &Module, inner: &TypeInner, index: u32) -> (u32, u32) {
-    match *inner {
-        TypeInner::Vector { .. } => (index, 1),
-        TypeInner::Matrix { rows, .. } => (index * rows as u32, rows as u32),
-        TypeInner::Array { base, .. } => {
-            let n = components(module, &module.types[base].inner);
-            (index * n, n)
-        }
-        TypeInner::ValuePointer { .. } => (index, 1),
-        TypeInner::Struct { ref members, .. } => {
-            let before: u32 = members[..index as usize]
-                .iter()
-                .map(|m| components(module, &module.types[m.ty].inner))
-                .sum();
-            (
-                before,
-                components(module, &module.types[members[index as usize].ty].inner),
-            )
-        }
-        _ => (0, 1),
-    }
-}
-
-/// The type a pointer or value points to or is, and its element count (for dynamic indices).
-pub(super) fn element_count(inner: &TypeInner) -> u32 {
-    match *inner {
-        TypeInner::Vector { size, .. } => size as u32,
-        TypeInner::Matrix { columns, .. } => columns as u32,
-        TypeInner::Array {
-            size: naga::ArraySize::Constant(n),
-            ..
-        } => n.get(),
-        TypeInner::ValuePointer {
-            size: Some(size), ..
-        } => size as u32,
-        _ => 1,
-    }
-}
-
-/// Evaluates a constant expression of the module (`global_expressions`).
-pub fn const_value(module: &Module, h: Handle<Expression>) -> Result<Vec<u32>, String> {
-    let e = &module.global_expressions;
-    match e[h] {
-        Expression::Literal(l) => literal(l),
-        Expression::Constant(c) => const_value(module, module.constants[c].init),
-        Expression::ZeroValue(ty) => Ok(vec![
-            0;
-            components(module, &module.types[ty].inner) as usize
-        ]),
-        Expression::Compose { ref components, .. } => {
-            let mut out = Vec::new();
-            for &c in components {
-                out.extend(const_value(module, c)?);
-            }
-            Ok(out)
-        }
-        Expression::Splat { size, value } => Ok(const_value(module, value)?.repeat(size as usize)),
-        ref other => Err(format!(
-            "a constant expression pipelens cannot evaluate ({other:?})"
-        )),
-    }
-}
-
-pub(super) fn literal(l: Literal) -> Result<Vec<u32>, String> {
-    Ok(vec![match l {
-        Literal::F32(x) => x.to_bits(),
-        Literal::F64(x) | Literal::AbstractFloat(x) => (x as f32).to_bits(),
-        Literal::U32(x) => x,
-        Literal::I32(x) => x as u32,
-        Literal::I64(x) | Literal::AbstractInt(x) => x as i32 as u32,
-        Literal::U64(x) => x as u32,
-        Literal::Bool(b) => u32::from(b),
-        other => return Err(format!("a literal pipelens cannot hold ({other:?})")),
-    }])
 }

@@ -4,10 +4,10 @@
 
 use naga::TypeInner;
 
-use crate::code;
 use crate::error::line_column;
 use crate::machine::Event;
 use crate::program::Program;
+use crate::register_form;
 
 /// One line of a trace: where, what happened, and the same in words with the values.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
@@ -233,20 +233,23 @@ pub fn float_text(x: f32) -> String {
 /// The scalars of a value of type `ty` held in `bits`, in GLSL's order, each as a number.
 fn scalars(module: &naga::Module, ty: naga::Handle<naga::Type>, bits: &[u32]) -> Vec<f64> {
     let inner = &module.types[ty].inner;
-    let number = |k: code::Kind, b: u32| match k {
-        code::Kind::F => f64::from(f32::from_bits(b)),
-        code::Kind::I => f64::from(b as i32),
-        code::Kind::U => f64::from(b),
-        code::Kind::B => f64::from(u8::from(b != 0)),
+    let number = |k: register_form::Kind, b: u32| match k {
+        register_form::Kind::Float => f64::from(f32::from_bits(b)),
+        register_form::Kind::Int => f64::from(b as i32),
+        register_form::Kind::Uint => f64::from(b),
+        register_form::Kind::Bool => f64::from(u8::from(b != 0)),
     };
     match *inner {
         TypeInner::Scalar(_) | TypeInner::Vector { .. } => bits
             .iter()
-            .map(|&b| number(code::kind_of(inner), b))
+            .map(|&b| number(crate::type_layout::kind_of(inner), b))
             .collect(),
-        TypeInner::Matrix { .. } => bits.iter().map(|&b| number(code::Kind::F, b)).collect(),
+        TypeInner::Matrix { .. } => bits
+            .iter()
+            .map(|&b| number(register_form::Kind::Float, b))
+            .collect(),
         TypeInner::Array { base, .. } => {
-            let n = code::components(module, &module.types[base].inner) as usize;
+            let n = crate::type_layout::components(module, &module.types[base].inner) as usize;
             bits.chunks(n.max(1))
                 .flat_map(|c| scalars(module, base, c))
                 .collect()
@@ -255,7 +258,7 @@ fn scalars(module: &naga::Module, ty: naga::Handle<naga::Type>, bits: &[u32]) ->
             let mut at = 0;
             let mut out = Vec::new();
             for m in members {
-                let n = code::components(module, &module.types[m.ty].inner) as usize;
+                let n = crate::type_layout::components(module, &module.types[m.ty].inner) as usize;
                 out.extend(scalars(module, m.ty, &bits[at..(at + n).min(bits.len())]));
                 at += n;
             }
@@ -267,22 +270,22 @@ fn scalars(module: &naga::Module, ty: naga::Handle<naga::Type>, bits: &[u32]) ->
 
 fn format_value(module: &naga::Module, ty: naga::Handle<naga::Type>, bits: &[u32]) -> String {
     let name = glsl_type(module, ty);
-    let scalar = |k: code::Kind, b: u32| match k {
-        code::Kind::F => float_text(f32::from_bits(b)),
-        code::Kind::I => (b as i32).to_string(),
-        code::Kind::U => format!("{b}u"),
-        code::Kind::B => (b != 0).to_string(),
+    let scalar = |k: register_form::Kind, b: u32| match k {
+        register_form::Kind::Float => float_text(f32::from_bits(b)),
+        register_form::Kind::Int => (b as i32).to_string(),
+        register_form::Kind::Uint => format!("{b}u"),
+        register_form::Kind::Bool => (b != 0).to_string(),
     };
     let inner = &module.types[ty].inner;
     match *inner {
-        TypeInner::Scalar(_) => bits
-            .first()
-            .map_or_else(String::new, |&b| scalar(code::kind_of(inner), b)),
+        TypeInner::Scalar(_) => bits.first().map_or_else(String::new, |&b| {
+            scalar(crate::type_layout::kind_of(inner), b)
+        }),
         TypeInner::Vector { .. } => {
             format!(
                 "{name}({})",
                 bits.iter()
-                    .map(|&b| scalar(code::kind_of(inner), b))
+                    .map(|&b| scalar(crate::type_layout::kind_of(inner), b))
                     .collect::<Vec<_>>()
                     .join(", ")
             )
@@ -295,7 +298,7 @@ fn format_value(module: &naga::Module, ty: naga::Handle<naga::Type>, bits: &[u32
                         "vec{}({})",
                         rows as u32,
                         c.iter()
-                            .map(|&b| scalar(code::Kind::F, b))
+                            .map(|&b| scalar(register_form::Kind::Float, b))
                             .collect::<Vec<_>>()
                             .join(", ")
                     )
@@ -304,7 +307,7 @@ fn format_value(module: &naga::Module, ty: naga::Handle<naga::Type>, bits: &[u32
             format!("{name}({})", cols.join(", "))
         }
         TypeInner::Array { base, .. } => {
-            let n = code::components(module, &module.types[base].inner) as usize;
+            let n = crate::type_layout::components(module, &module.types[base].inner) as usize;
             let items: Vec<String> = bits
                 .chunks(n.max(1))
                 .map(|c| format_value(module, base, c))
@@ -316,7 +319,8 @@ fn format_value(module: &naga::Module, ty: naga::Handle<naga::Type>, bits: &[u32
             let items: Vec<String> = members
                 .iter()
                 .map(|m| {
-                    let n = code::components(module, &module.types[m.ty].inner) as usize;
+                    let n =
+                        crate::type_layout::components(module, &module.types[m.ty].inner) as usize;
                     let s = format!(
                         "{}: {}",
                         m.name.as_deref().unwrap_or("?"),

@@ -3,8 +3,8 @@
 
 use super::events::Event;
 use super::run::{Machine, Res};
-use crate::code::{Argument, Parameter, Root};
 use crate::lanes::{LANES, bit};
+use crate::register_form::{Argument, Parameter, Root};
 
 impl Machine<'_> {
     /// Copies a call's arguments into the callee `to`: an `in` value into its register, an
@@ -27,16 +27,16 @@ impl Machine<'_> {
             for (param, arg) in callee.args.iter().zip(args) {
                 match (*param, arg) {
                     (Parameter::Value(d), Argument::Value(src)) => {
-                        let (s, d) = (src.at as usize * LANES, d.at as usize * LANES);
-                        let len = src.n as usize * LANES;
+                        let (s, d) = (src.first as usize * LANES, d.first as usize * LANES);
+                        let len = src.len as usize * LANES;
                         regs[d..d + len].copy_from_slice(&self.regs[fi][s..s + len]);
                     }
                     (Parameter::Ref(d), Argument::Ref(place)) => {
                         let storage = self.storage(fi, place.root);
                         for l in (0..self.n).filter(|&l| mask & bit(l) != 0) {
                             let o = self.offset_checked(fi, place, l, live & bit(l) != 0, at)?;
-                            for c in 0..d.n as usize {
-                                locals[(d.at as usize + c) * LANES + l] =
+                            for c in 0..d.len as usize {
+                                locals[(d.first as usize + c) * LANES + l] =
                                     storage[(o as usize + c) * LANES + l];
                             }
                         }
@@ -70,8 +70,8 @@ impl Machine<'_> {
             };
             for l in (0..self.n).filter(|&l| mask & bit(l) != 0) {
                 let o = self.offset_checked(fi, place, l, live & bit(l) != 0, at)?;
-                for c in 0..src.n as usize {
-                    let v = self.locals[from][(src.at as usize + c) * LANES + l];
+                for c in 0..src.len as usize {
+                    let v = self.locals[from][(src.first as usize + c) * LANES + l];
                     let storage = match place.root {
                         Root::Local => &mut self.locals[fi],
                         _ => &mut self.privates,

@@ -8,10 +8,10 @@ use naga::{RelationalFunction, UnaryOperator};
 use super::events::RunError;
 use super::run::{Machine, Res};
 use super::textures::Textures;
-use crate::code::{Function, Kind, Op, Place, Reg, Root, Shape};
 use crate::complaint::Complaint;
 use crate::lanes::{LANES, bit, masked_copy};
 use crate::ops;
+use crate::register_form::{Function, Kind, Op, Place, Reg, Root, Shape};
 
 impl Machine<'_> {
     pub(super) fn store(
@@ -28,9 +28,9 @@ impl Machine<'_> {
             .copied()
             .unwrap_or(0);
         if place.dynamic.is_empty() {
-            for c in 0..place.n as usize {
+            for c in 0..place.len as usize {
                 let (dst, src) = (
-                    (place.at as usize + c) * LANES,
+                    (place.offset as usize + c) * LANES,
                     (value as usize + c) * LANES,
                 );
                 let row: [u32; LANES] = self.regs[fi][src..src + LANES]
@@ -49,7 +49,7 @@ impl Machine<'_> {
                 continue;
             }
             let o = self.offset_checked(fi, place, l, live & bit(l) != 0, at)?;
-            for c in 0..place.n as usize {
+            for c in 0..place.len as usize {
                 let v = self.regs[fi][(value as usize + c) * LANES + l];
                 let storage = match place.root {
                     Root::Local => &mut self.locals[fi],
@@ -97,7 +97,7 @@ impl Machine<'_> {
             Op::Const(v) => {
                 let regs = &mut self.regs[fi];
                 for (c, &x) in v.iter().enumerate() {
-                    regs[(dst.at as usize + c) * LANES..][..n].fill(x);
+                    regs[(dst.first as usize + c) * LANES..][..n].fill(x);
                 }
             }
             // Evaluated once over every lane by `prepare_invariants`.
@@ -121,17 +121,19 @@ impl Machine<'_> {
                     Root::Private => (&self.privates, &mut self.regs[fi]),
                     Root::Uniform => (&self.uniforms, &mut self.regs[fi]),
                 };
-                for c in 0..place.n as usize {
-                    let row = &mut regs[(dst.at as usize + c) * LANES..][..n];
+                for c in 0..place.len as usize {
+                    let row = &mut regs[(dst.first as usize + c) * LANES..][..n];
                     match (root, o.is_empty()) {
-                        (Root::Uniform, _) if o.is_empty() => row.fill(src[place.at as usize + c]),
+                        (Root::Uniform, _) if o.is_empty() => {
+                            row.fill(src[place.offset as usize + c])
+                        }
                         (Root::Uniform, _) => {
                             for (l, x) in row.iter_mut().enumerate() {
                                 *x = src[o[l] as usize + c];
                             }
                         }
                         (_, true) => {
-                            row.copy_from_slice(&src[(place.at as usize + c) * LANES..][..n])
+                            row.copy_from_slice(&src[(place.offset as usize + c) * LANES..][..n])
                         }
                         (_, false) => {
                             for (l, x) in row.iter_mut().enumerate() {
@@ -146,19 +148,19 @@ impl Machine<'_> {
                 // naga's arena, and registers are laid out in that order): read below the
                 // split, write above it.
                 debug_assert!(
-                    op.reads().iter().all(|&r| r < dst.at),
+                    op.reads().iter().all(|&r| r < dst.first),
                     "an operand of {op:?} at or above its register {}",
-                    dst.at
+                    dst.first
                 );
-                let (src, out) = self.regs[fi].split_at_mut(dst.at as usize * LANES);
+                let (src, out) = self.regs[fi].split_at_mut(dst.first as usize * LANES);
                 let row = |r: u32, c: u32| &src[(r + c) as usize * LANES..][..n];
-                let out = &mut out[..dst.n as usize * LANES];
+                let out = &mut out[..dst.len as usize * LANES];
                 match op {
                     Op::Compose(parts) => {
                         let mut c = 0;
                         for p in parts {
-                            for k in 0..p.n {
-                                out[c * LANES..][..n].copy_from_slice(row(p.at, k));
+                            for k in 0..p.len {
+                                out[c * LANES..][..n].copy_from_slice(row(p.first, k));
                                 c += 1;
                             }
                         }
@@ -187,7 +189,7 @@ impl Machine<'_> {
                     } => {
                         for l in 0..n {
                             let raw = row(*index, 0)[l];
-                            let i = if *kind == Kind::U {
+                            let i = if *kind == Kind::Uint {
                                 i64::from(raw)
                             } else {
                                 i64::from(raw as i32)
@@ -213,10 +215,10 @@ impl Machine<'_> {
                         }
                     }
                     Op::Unary { op, kind, a } => {
-                        for k in 0..a.n {
-                            let (x, y) = (row(a.at, k), &mut out[k as usize * LANES..][..n]);
+                        for k in 0..a.len {
+                            let (x, y) = (row(a.first, k), &mut out[k as usize * LANES..][..n]);
                             match (op, kind) {
-                                (UnaryOperator::Negate, Kind::F) => {
+                                (UnaryOperator::Negate, Kind::Float) => {
                                     ops::map(x, y, |v| (-f32::from_bits(v)).to_bits())
                                 }
                                 (UnaryOperator::Negate, _) => {
@@ -225,7 +227,7 @@ impl Machine<'_> {
                                 (UnaryOperator::LogicalNot, _) => {
                                     ops::map(x, y, |v| u32::from(v == 0))
                                 }
-                                (UnaryOperator::BitwiseNot, Kind::B) => {
+                                (UnaryOperator::BitwiseNot, Kind::Bool) => {
                                     ops::map(x, y, |v| u32::from(v == 0))
                                 }
                                 (UnaryOperator::BitwiseNot, _) => ops::map(x, y, |v| !v),
@@ -239,10 +241,10 @@ impl Machine<'_> {
                         b: rb,
                         shape,
                     } => {
-                        let get = |r: Reg, c: u32| row(r.at, if r.n == 1 { 0 } else { c });
+                        let get = |r: Reg, c: u32| row(r.first, if r.len == 1 { 0 } else { c });
                         match shape {
                             Shape::Each => {
-                                for k in 0..dst.n {
+                                for k in 0..dst.len {
                                     ops::binary(
                                         *op,
                                         *kind,
@@ -267,7 +269,8 @@ impl Machine<'_> {
                                 for i in 0..*r {
                                     let mut terms: [(&[u32], &[u32]); 4] = [(&[], &[]); 4];
                                     for j in 0..*c {
-                                        terms[j as usize] = (row(a.at, j * r + i), row(rb.at, j));
+                                        terms[j as usize] =
+                                            (row(a.first, j * r + i), row(rb.first, j));
                                     }
                                     ops::dot_rows(
                                         &terms[..*c as usize],
@@ -279,7 +282,8 @@ impl Machine<'_> {
                                 for j in 0..*c {
                                     let mut terms: [(&[u32], &[u32]); 4] = [(&[], &[]); 4];
                                     for i in 0..*r {
-                                        terms[i as usize] = (row(a.at, i), row(rb.at, j * r + i));
+                                        terms[i as usize] =
+                                            (row(a.first, i), row(rb.first, j * r + i));
                                     }
                                     ops::dot_rows(
                                         &terms[..*r as usize],
@@ -293,7 +297,7 @@ impl Machine<'_> {
                                         let mut terms: [(&[u32], &[u32]); 4] = [(&[], &[]); 4];
                                         for m in 0..*k {
                                             terms[m as usize] =
-                                                (row(a.at, m * r + i), row(rb.at, j * k + m));
+                                                (row(a.first, m * r + i), row(rb.first, j * k + m));
                                         }
                                         ops::dot_rows(
                                             &terms[..*k as usize],
@@ -305,20 +309,20 @@ impl Machine<'_> {
                         }
                     }
                     Op::Select { c, a, b: rb } => {
-                        for k in 0..dst.n {
-                            let cond = row(c.at, if c.n == 1 { 0 } else { k });
-                            let (x, y) = (row(a.at, k), row(rb.at, k));
+                        for k in 0..dst.len {
+                            let cond = row(c.first, if c.len == 1 { 0 } else { k });
+                            let (x, y) = (row(a.first, k), row(rb.first, k));
                             for (l, o) in out[k as usize * LANES..][..n].iter_mut().enumerate() {
                                 *o = if cond[l] != 0 { x[l] } else { y[l] };
                             }
                         }
                     }
                     Op::Derivative { axis, fine, a } => {
-                        for k in 0..a.n {
+                        for k in 0..a.len {
                             ops::derivative(
                                 *axis,
                                 *fine,
-                                row(a.at, k),
+                                row(a.first, k),
                                 &mut out[k as usize * LANES..][..n],
                             );
                         }
@@ -328,8 +332,8 @@ impl Machine<'_> {
                             let all = *fun == RelationalFunction::All;
                             for (l, o) in out[..n].iter_mut().enumerate() {
                                 let mut acc = all;
-                                for k in 0..a.n {
-                                    let v = row(a.at, k)[l] != 0;
+                                for k in 0..a.len {
+                                    let v = row(a.first, k)[l] != 0;
                                     acc = if all { acc && v } else { acc || v };
                                 }
                                 *o = u32::from(acc);
@@ -337,11 +341,15 @@ impl Machine<'_> {
                         }
                         RelationalFunction::IsNan | RelationalFunction::IsInf => {
                             let nan = *fun == RelationalFunction::IsNan;
-                            for k in 0..a.n {
-                                ops::map(row(a.at, k), &mut out[k as usize * LANES..][..n], |v| {
-                                    let x = f32::from_bits(v);
-                                    u32::from(if nan { x.is_nan() } else { x.is_infinite() })
-                                });
+                            for k in 0..a.len {
+                                ops::map(
+                                    row(a.first, k),
+                                    &mut out[k as usize * LANES..][..n],
+                                    |v| {
+                                        let x = f32::from_bits(v);
+                                        u32::from(if nan { x.is_nan() } else { x.is_infinite() })
+                                    },
+                                );
                             }
                         }
                     },
@@ -351,8 +359,17 @@ impl Machine<'_> {
                         args,
                         rows,
                     } => {
-                        ops::math(*fun, *kind, args, *rows, &|r, c| row(r, c), out, dst.n, n)
-                            .map_err(|m| err(m, Complaint::Other))?;
+                        crate::builtins::math(
+                            *fun,
+                            *kind,
+                            args,
+                            *rows,
+                            &|r, c| row(r, c),
+                            out,
+                            dst.len,
+                            n,
+                        )
+                        .map_err(|m| err(m, Complaint::Other))?;
                     }
                     Op::As {
                         a,
@@ -360,9 +377,9 @@ impl Machine<'_> {
                         to,
                         convert,
                     } => {
-                        for k in 0..a.n {
+                        for k in 0..a.len {
                             let y = &mut out[k as usize * LANES..][..n];
-                            let x = row(a.at, k);
+                            let x = row(a.first, k);
                             if *convert {
                                 ops::convert(*from, *to, x, y);
                             } else {

@@ -1,4 +1,4 @@
-//! Runs a program in register form ([`super::code`]) over a batch of up to [`LANES`]
+//! Runs a program in register form ([`super::register_form`]) over a batch of up to [`LANES`]
 //! invocations at once, as a GPU runs a warp: every expression is evaluated for all lanes, and
 //! a *mask* (one bit a lane) says which lanes a statement applies to. An `if` runs its two
 //! branches with the lanes whose condition holds and the others; a loop runs until every lane

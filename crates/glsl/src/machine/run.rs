@@ -3,8 +3,8 @@
 
 use super::events::{Event, RunError};
 use super::textures::Textures;
-use crate::code::{Code, Place, Reg, Root};
 use crate::lanes::{LANES, bit, lanes_where};
+use crate::register_form::{Code, Place, Reg, Root};
 
 /// The loop iterations one invocation may run before the machine calls it an endless loop,
 /// unless its host allows more ([`Machine::budget`]).
@@ -85,8 +85,8 @@ impl<'c> Machine<'c> {
 
     /// Sets the uniform at `reg` (where the program keeps it: `Program::uniforms`).
     pub fn set_uniform(&mut self, reg: Reg, bits: &[u32]) {
-        let r = reg.at as usize..(reg.at + reg.n) as usize;
-        self.uniforms[r].copy_from_slice(&bits[..reg.n as usize]);
+        let r = reg.first as usize..(reg.first + reg.len) as usize;
+        self.uniforms[r].copy_from_slice(&bits[..reg.len as usize]);
         self.invariants_ready = false;
     }
 
@@ -134,8 +134,8 @@ impl<'c> Machine<'c> {
         let f = &code.functions[entry];
         for (arg, input) in f.args.iter().zip(inputs) {
             let arg = arg.reg();
-            let r = arg.at as usize * LANES..(arg.at + arg.n) as usize * LANES;
-            self.regs[entry][r].copy_from_slice(&input[..arg.n as usize * LANES]);
+            let r = arg.first as usize * LANES..(arg.first + arg.len) as usize * LANES;
+            self.regs[entry][r].copy_from_slice(&input[..arg.len as usize * LANES]);
         }
         let all = if self.n == LANES {
             u64::MAX
@@ -159,8 +159,8 @@ impl<'c> Machine<'c> {
         let regs = &self.regs[fi];
         let locals = &mut self.locals[fi];
         for (reg, init) in &f.locals {
-            for c in 0..reg.n as usize {
-                let row = (reg.at as usize + c) * LANES;
+            for c in 0..reg.len as usize {
+                let row = (reg.first as usize + c) * LANES;
                 match init {
                     Some(i) => {
                         let src = (*i as usize + c) * LANES;
@@ -218,7 +218,7 @@ impl<'c> Machine<'c> {
 
     /// The first component of `place` in lane `l`, or the index that is out of range.
     pub(super) fn offset(&self, fi: usize, place: &Place, l: usize) -> Result<u32, (i64, u32)> {
-        let mut at = place.at;
+        let mut at = place.offset;
         for &(index, stride, count) in &place.dynamic {
             let i = i64::from(self.regs[fi][index as usize * LANES + l] as i32);
             if i < 0 || i >= i64::from(count) {
@@ -239,7 +239,7 @@ impl<'c> Machine<'c> {
     ) -> Res<u32> {
         match self.offset(fi, place, l) {
             Ok(o) => Ok(o),
-            Err(_) if !live => Ok(place.at),
+            Err(_) if !live => Ok(place.offset),
             Err((i, count)) => Err(RunError {
                 at,
                 message: format!(
@@ -258,7 +258,7 @@ impl<'c> Machine<'c> {
 
     pub(super) fn read_whole(&self, fi: usize, place: &Place, l: usize) -> Vec<u32> {
         let s = self.storage(fi, place.root);
-        (place.whole.at..place.whole.at + place.whole.n)
+        (place.whole.first..place.whole.first + place.whole.len)
             .map(|c| {
                 if place.root == Root::Uniform {
                     s[c as usize]

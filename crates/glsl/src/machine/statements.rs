@@ -5,9 +5,9 @@
 
 use super::events::{Event, RunError};
 use super::run::{Flow, Machine, Res, Running};
-use crate::code::{Call, If, Loop, Reg, Stmt, Switch};
 use crate::complaint::Complaint;
 use crate::lanes::{LANES, bit, lanes_where, masked_copy};
+use crate::register_form::{Call, If, Loop, Reg, Stmt, Switch};
 
 impl Machine<'_> {
     /// Runs `stmts` in the lanes of `mask`; the lanes that reach the block's end.
@@ -215,10 +215,10 @@ impl Machine<'_> {
     fn exec_return(&mut self, fi: usize, at: usize, value: Option<Reg>, mask: u64) {
         if let Some(v) = value {
             let ret = &mut self.returns[fi];
-            ret.resize(v.n as usize * LANES, 0);
+            ret.resize(v.len as usize * LANES, 0);
             let regs = &self.regs[fi];
-            for c in 0..v.n as usize {
-                let src = &regs[(v.at as usize + c) * LANES..][..LANES];
+            for c in 0..v.len as usize {
+                let src = &regs[(v.first as usize + c) * LANES..][..LANES];
                 masked_copy(&mut ret[c * LANES..][..LANES], src, mask, self.n);
             }
         }
@@ -232,7 +232,7 @@ impl Machine<'_> {
                 name,
                 value: result.map(|(ty, v)| {
                     let ret = &m.returns[fi];
-                    let bits = (0..v.n as usize).map(|c| ret[c * LANES + l]).collect();
+                    let bits = (0..v.len as usize).map(|c| ret[c * LANES + l]).collect();
                     (ty, bits)
                 }),
             });
@@ -253,9 +253,9 @@ impl Machine<'_> {
         self.pass_arguments(fi, s.function, &s.args, mask, live, s.at)?;
         self.call(s.function, mask, live, run.textures)?;
         if let Some(r) = s.result {
-            let len = r.n as usize * LANES;
+            let len = r.len as usize * LANES;
             let ret = std::mem::take(&mut self.returns[s.function]);
-            let d = r.at as usize * LANES;
+            let d = r.first as usize * LANES;
             self.regs[fi][d..d + len].copy_from_slice(&ret[..len]);
             self.returns[s.function] = ret;
         }

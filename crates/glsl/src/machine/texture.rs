@@ -7,9 +7,9 @@
 use glam::{IVec2, Vec2, Vec3};
 
 use super::textures::{Texel, Textures};
-use crate::code::{Level, Op};
 use crate::complaint::Complaint;
 use crate::lanes::{LANES, bit};
+use crate::register_form::{Level, Op};
 
 /// Runs the lookup `op` over lanes `0..n`, its operands' rows given by `row(register,
 /// component)`, into `out` (component `k` of lane `l` at `k·LANES + l`).
@@ -32,7 +32,7 @@ pub(super) fn lookup<'a>(
             offset,
         } => {
             let slot = row(*texture, 0)[0];
-            let uv = |l: usize| vec2_at(&row, coordinate.at, l);
+            let uv = |l: usize| vec2_at(&row, coordinate.first, l);
             for l in 0..n {
                 let shift = offset.map_or(IVec2::ZERO, |o| {
                     IVec2::new(row(o, 0)[l] as i32, row(o, 1)[l] as i32)
@@ -71,9 +71,9 @@ pub(super) fn lookup<'a>(
             let slot = row(*texture, 0)[0];
             for l in 0..n {
                 let d = Vec3::new(
-                    f32::from_bits(row(direction.at, 0)[l]),
-                    f32::from_bits(row(direction.at, 1)[l]),
-                    f32::from_bits(row(direction.at, 2)[l]),
+                    f32::from_bits(row(direction.first, 0)[l]),
+                    f32::from_bits(row(direction.first, 1)[l]),
+                    f32::from_bits(row(direction.first, 2)[l]),
                 );
                 let color = b.sample_cube(slot, d).unwrap_or(Vec3::ZERO);
                 for (k, v) in color.extend(1.0).to_array().iter().enumerate() {
@@ -89,8 +89,8 @@ pub(super) fn lookup<'a>(
             let slot = row(*texture, 0)[0];
             for l in 0..n {
                 let (i, j) = (
-                    row(coordinate.at, 0)[l] as i32,
-                    row(coordinate.at, 1)[l] as i32,
+                    row(coordinate.first, 0)[l] as i32,
+                    row(coordinate.first, 1)[l] as i32,
                 );
                 let k = level.map_or(0, |r| row(r, 0)[l] as i32);
                 let texel = match b.texel(slot, k, i, j) {

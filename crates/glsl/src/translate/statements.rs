@@ -5,7 +5,7 @@ use naga::valid::FunctionInfo;
 use naga::{Expression, Handle, Statement, TypeInner};
 
 use super::translator::{Translator, describe};
-use crate::code::{Argument, Call, Function, If, Loop, Stmt, Switch, Unsupported};
+use crate::register_form::{Argument, Call, Function, If, Loop, Stmt, Switch, Unsupported};
 
 impl Translator<'_> {
     /// A call's arguments: an `in` parameter's value by its register, an `out` or `inout`
@@ -61,7 +61,7 @@ impl Translator<'_> {
                     ref reject,
                 } => Stmt::If(If {
                     at,
-                    c: reg(condition).at,
+                    c: reg(condition).first,
                     accept: self.block(f, fi, accept, func, at)?,
                     reject: self.block(f, fi, reject, func, at)?,
                     // naga's `if (!cond) break;` for a loop's condition has no place of its own.
@@ -84,7 +84,7 @@ impl Translator<'_> {
                     }
                     Stmt::Switch(Switch {
                         at,
-                        selector: reg(selector).at,
+                        selector: reg(selector).first,
                         cases: cs,
                     })
                 }
@@ -96,7 +96,7 @@ impl Translator<'_> {
                     at,
                     body: self.block(f, fi, body, func, at)?,
                     continuing: self.block(f, fi, continuing, func, at)?,
-                    break_if: break_if.map(|b| reg(b).at),
+                    break_if: break_if.map(|b| reg(b).first),
                 }),
                 Statement::Break => Stmt::Break {
                     at: span.is_defined().then_some(at),
@@ -114,7 +114,7 @@ impl Translator<'_> {
                 Statement::Store { pointer, value } => Stmt::Store {
                     at,
                     place: self.place(f, fi, pointer, func).map_err(err)?,
-                    value: reg(value).at,
+                    value: reg(value).first,
                 },
                 Statement::Call {
                     function,

@@ -6,7 +6,7 @@ use naga::valid::FunctionInfo;
 use naga::{Expression, Handle};
 
 use super::translator::Translator;
-use crate::code::{Level, Op, OpError, Reg};
+use crate::register_form::{Level, Op, OpError, Reg};
 
 impl Translator<'_> {
     /// Whether `image` is a cube map's texture (`samplerCube`).
@@ -36,7 +36,7 @@ impl Translator<'_> {
             Expression::GlobalVariable(g) if self.texture_value(g).is_none() => {
                 Err("a texture pipelens does not bind".to_owned())
             }
-            Expression::GlobalVariable(_) | Expression::FunctionArgument(_) => Ok(reg(image).at),
+            Expression::GlobalVariable(_) | Expression::FunctionArgument(_) => Ok(reg(image).first),
             _ => Err("a texture chosen at run time: name the `sampler2D` itself".to_owned()),
         }
     }
@@ -83,14 +83,14 @@ impl Translator<'_> {
                 level: match level {
                     naga::SampleLevel::Auto => Level::Auto,
                     naga::SampleLevel::Zero => Level::Zero,
-                    naga::SampleLevel::Exact(l) => Level::Exact(reg(l).at),
-                    naga::SampleLevel::Bias(b) => Level::Bias(reg(b).at),
+                    naga::SampleLevel::Exact(l) => Level::Exact(reg(l).first),
+                    naga::SampleLevel::Bias(b) => Level::Bias(reg(b).first),
                     naga::SampleLevel::Gradient { x, y } => Level::Gradient {
-                        x: reg(x).at,
-                        y: reg(y).at,
+                        x: reg(x).first,
+                        y: reg(y).first,
                     },
                 },
-                offset: offset.map(|o| reg(o).at),
+                offset: offset.map(|o| reg(o).first),
             },
             Expression::ImageLoad {
                 image,
@@ -101,14 +101,14 @@ impl Translator<'_> {
             } => Op::Fetch {
                 texture: self.texture_register(f, image, reg)?,
                 coordinate: reg(coordinate),
-                level: level.map(|l| reg(l).at),
+                level: level.map(|l| reg(l).first),
             },
             Expression::ImageQuery {
                 image,
                 query: naga::ImageQuery::Size { level },
             } => Op::Size {
                 texture: self.texture_register(f, image, reg)?,
-                level: level.map(|l| reg(l).at),
+                level: level.map(|l| reg(l).first),
             },
             ref other => {
                 return Err(format!(

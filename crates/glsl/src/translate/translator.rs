@@ -5,12 +5,12 @@
 use naga::valid::{FunctionInfo, ModuleInfo};
 use naga::{AddressSpace, BinaryOperator, Expression, Handle, Module, TypeInner};
 
-use crate::code::{
-    Code, Function, Kind, Op, OpError, Parameter, Place, Reg, Root, Shape, Unsupported, components,
-    const_value, element_count, kind_of, literal, member,
-};
 use crate::dialect::Adapted;
-use crate::emitted::{mark_constant, mark_emitted};
+use crate::evaluated_once::evaluated_once;
+use crate::register_form::{
+    Code, Function, Kind, Op, OpError, Parameter, Place, Reg, Root, Shape, Unsupported,
+};
+use crate::type_layout::{components, const_value, element_count, kind_of, literal, member};
 
 /// What a `%` between floats is told (GLSL's `%` takes integers).
 pub const FLOAT_MODULO: &str = "GLSL's `%` takes whole numbers only (int, uint, ivec…): for floats write mod(a, b), a − b·floor(a/b)";
@@ -66,7 +66,7 @@ impl<'m> Translator<'m> {
                 AddressSpace::Private if is_uniform(&name) => {
                     let at = t.code.uniform_width;
                     t.code.uniform_width += n;
-                    Some((Root::Uniform, Reg { at, n }))
+                    Some((Root::Uniform, Reg { first: at, len: n }))
                 }
                 _ => {
                     let at = t.code.private_width;
@@ -79,7 +79,7 @@ impl<'m> Translator<'m> {
                         })?;
                         t.code.private_init.push((at, v));
                     }
-                    Some((Root::Private, Reg { at, n }))
+                    Some((Root::Private, Reg { first: at, len: n }))
                 }
             };
             t.code.globals.push(slot);
@@ -125,7 +125,10 @@ impl<'m> Translator<'m> {
                 TypeInner::Pointer { .. } | TypeInner::ValuePointer { .. } => 0,
                 ref inner => components(module, inner),
             };
-            regs.push(Reg { at: width, n });
+            regs.push(Reg {
+                first: width,
+                len: n,
+            });
             width += n;
         }
         let mut locals = Vec::new();
@@ -134,10 +137,10 @@ impl<'m> Translator<'m> {
             let n = components(module, &module.types[l.ty].inner);
             locals.push((
                 Reg {
-                    at: locals_width,
-                    n,
+                    first: locals_width,
+                    len: n,
                 },
-                l.init.map(|h| regs[h.index()].at),
+                l.init.map(|h| regs[h.index()].first),
             ));
             locals_width += n;
         }
@@ -150,8 +153,8 @@ impl<'m> Translator<'m> {
                 TypeInner::Pointer { base, .. } => {
                     let n = components(module, &module.types[base].inner);
                     let reg = Reg {
-                        at: locals_width,
-                        n,
+                        first: locals_width,
+                        len: n,
                     };
                     locals_width += n;
                     Parameter::Ref(reg)
@@ -159,15 +162,7 @@ impl<'m> Translator<'m> {
                 _ => Parameter::Value(Reg::default()),
             })
             .collect();
-        let mut emitted = vec![false; f.expressions.len()];
-        mark_emitted(&f.body, &mut emitted);
-        // A local's initial value is a constant expression the function's entry copies, before
-        // its body emits anything (`mat4 m = mat4(1.0);`): evaluated with the constants.
-        for (_, l) in f.local_variables.iter() {
-            if let Some(init) = l.init {
-                mark_constant(&f.expressions, init, &mut emitted);
-            }
-        }
+        let once = evaluated_once(f);
         let mut func = Function {
             name: f.name.clone().unwrap_or_else(|| "main".to_owned()),
             builtin: false,
@@ -194,7 +189,7 @@ impl<'m> Translator<'m> {
             {
                 *reg = func.regs[h.index()];
             }
-            if !emitted[h.index()] && !matches!(op, Op::None) {
+            if once[h.index()] && !matches!(op, Op::None) {
                 func.pre.push(h.index() as u32);
             }
             func.ops.push(op);
@@ -219,9 +214,9 @@ impl<'m> Translator<'m> {
                 let var = &f.local_variables[l];
                 Ok(Place {
                     root: Root::Local,
-                    at: reg.at,
+                    offset: reg.first,
                     dynamic: Vec::new(),
-                    n: reg.n,
+                    len: reg.len,
                     name: var.name.clone().unwrap_or_default(),
                     whole: reg,
                     ty: var.ty,
@@ -233,9 +228,9 @@ impl<'m> Translator<'m> {
                     .ok_or_else(|| "a texture used as a value".to_owned())?;
                 Ok(Place {
                     root,
-                    at: reg.at,
+                    offset: reg.first,
                     dynamic: Vec::new(),
-                    n: reg.n,
+                    len: reg.len,
                     name: var.name.clone().unwrap_or_default(),
                     whole: reg,
                     ty: var.ty,
@@ -245,8 +240,8 @@ impl<'m> Translator<'m> {
                 let mut p = self.place(f, fi, base, func)?;
                 let pointee = pointee(module, ty(base));
                 let (off, n) = member(module, pointee, index);
-                p.at += off;
-                p.n = n;
+                p.offset += off;
+                p.len = n;
                 Ok(p)
             }
             Expression::Access { base, index } => {
@@ -254,8 +249,8 @@ impl<'m> Translator<'m> {
                 let pointee = pointee(module, ty(base));
                 let (_, n) = member(module, pointee, 0);
                 p.dynamic
-                    .push((func.regs[index.index()].at, n, element_count(pointee)));
-                p.n = n;
+                    .push((func.regs[index.index()].first, n, element_count(pointee)));
+                p.len = n;
                 Ok(p)
             }
             Expression::FunctionArgument(i) => {
@@ -268,9 +263,9 @@ impl<'m> Translator<'m> {
                 };
                 Ok(Place {
                     root: Root::Local,
-                    at: reg.at,
+                    offset: reg.first,
                     dynamic: Vec::new(),
-                    n: reg.n,
+                    len: reg.len,
                     name: param.name.clone().unwrap_or_default(),
                     whole: reg,
                     ty: base,
@@ -301,7 +296,7 @@ impl<'m> Translator<'m> {
                 Op::Compose(components.iter().map(|&c| reg(c)).collect())
             }
             Expression::Splat { size, value } => Op::Splat {
-                from: reg(value).at,
+                from: reg(value).first,
                 n: size as u32,
             },
             Expression::Swizzle {
@@ -309,7 +304,7 @@ impl<'m> Translator<'m> {
                 vector,
                 ref pattern,
             } => Op::Swizzle {
-                from: reg(vector).at,
+                from: reg(vector).first,
                 pattern: pattern[..size as usize].iter().map(|&c| c as u32).collect(),
             },
             Expression::AccessIndex { base, index } => match *ty(base) {
@@ -317,7 +312,7 @@ impl<'m> Translator<'m> {
                 ref inner => {
                     let (off, n) = member(module, inner, index);
                     Op::Copy {
-                        from: reg(base).at + off,
+                        from: reg(base).first + off,
                         n,
                     }
                 }
@@ -327,10 +322,10 @@ impl<'m> Translator<'m> {
                 ref inner => {
                     let (_, elem) = member(module, inner, 0);
                     Op::Index {
-                        base: reg(base).at,
+                        base: reg(base).first,
                         elem,
                         count: element_count(inner),
-                        index: reg(index).at,
+                        index: reg(index).first,
                         kind: kind_of(ty(index)),
                     }
                 }
@@ -382,7 +377,7 @@ impl<'m> Translator<'m> {
                 };
                 // naga reads `%` on floats (WGSL has it); GLSL does not, and a real OpenGL
                 // refuses the shader (its `mod` is naga's floor form, never this operator).
-                if op == BinaryOperator::Modulo && kind_of(lt) == Kind::F {
+                if op == BinaryOperator::Modulo && kind_of(lt) == Kind::Float {
                     return Err(FLOAT_MODULO.to_owned().into());
                 }
                 Op::Binary {
@@ -418,8 +413,8 @@ impl<'m> Translator<'m> {
                 arg2,
                 arg3,
             } => {
-                if !crate::ops::supported(fun) {
-                    return Err(OpError::not_run(&crate::ops::glsl_name(fun)));
+                if !crate::builtins::supported(fun) {
+                    return Err(OpError::not_run(&crate::builtins::glsl_name(fun)));
                 }
                 let args = [Some(arg), arg1, arg2, arg3]
                     .into_iter()
