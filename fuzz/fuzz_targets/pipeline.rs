@@ -11,7 +11,7 @@ use pipeline::light::Light;
 use pipeline::raster::{CullMode, Samples};
 use pipeline::scene::{Object, Scene};
 use pipeline::settings::RenderSettings;
-use pipeline::shade::Frequency;
+use pipeline::lighting::Frequency;
 
 #[derive(Debug, Arbitrary)]
 struct Input {

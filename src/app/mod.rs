@@ -5,7 +5,6 @@
 mod chrome;
 pub mod command;
 mod compact;
-pub mod display;
 mod editor;
 mod export_task;
 mod library;
@@ -20,6 +19,7 @@ pub mod shortcuts;
 mod start;
 mod style;
 mod toolbar;
+pub mod view_resolution;
 pub mod views;
 mod watched;
 mod window;

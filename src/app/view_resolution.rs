@@ -43,7 +43,7 @@ pub fn size(image: (u32, u32), view: [u32; 2]) -> Option<(u32, u32)> {
 /// The finer render on screen, and what the latest job asked for (a render that could not be
 /// made is not asked for again until the view asks for something else).
 #[derive(Clone, Debug, Default)]
-pub struct Fine {
+pub struct ViewResolution {
     /// The buffer shown at the view's resolution, when the latest render made it.
     pub capture: Option<Arc<FrameCapture>>,
     /// What the latest job asked for.

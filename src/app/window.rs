@@ -159,7 +159,7 @@ impl PipelensApp {
     /// The share of `screen` the picture covers (the area of the union of [`Self::picture`]).
     #[must_use]
     pub fn picture_share(&self, screen: egui::Rect) -> f32 {
-        views::room::share(&self.picture, screen)
+        views::card_placement::share(&self.picture, screen)
     }
 
     /// Draws one frame and applies the commands it produced.
@@ -241,7 +241,7 @@ impl PipelensApp {
             .response
             .rect;
         if !narrated || compact {
-            views::room::set_narration_card(ui.ctx(), None);
+            views::card_placement::set_narration_card(ui.ctx(), None);
         } else {
             let out = views::lesson::card(ui.ctx(), central, &self.session);
             self.narrated(out);
@@ -308,8 +308,9 @@ impl PipelensApp {
         self.stage_toolbar(ui, capture);
         let observer = sel.show_observer && (space.is_some() || sel.comparison.is_none());
         // A narration band or column leaves the views the part above or beside it.
-        let card = views::room::narration_card(ui.ctx());
-        let above = views::room::free_recorded(ui.ctx(), ui.available_rect_before_wrap(), card);
+        let card = views::card_placement::narration_card(ui.ctx());
+        let above =
+            views::card_placement::free_recorded(ui.ctx(), ui.available_rect_before_wrap(), card);
         ui.scope_builder(egui::UiBuilder::new().max_rect(above), |ui| {
             self.views(ui, capture, observer);
         });

@@ -31,8 +31,8 @@ pub struct Job {
     pub variants: Vec<(String, RenderSettings)>,
     /// An exercise's reference: the same scene drawn by pipelens' own stages.
     pub reference: Option<(pipeline::scene::Scene, RenderSettings)>,
-    /// The buffer shown, to render at the view's resolution as well (`display`), and the size.
-    pub display: Option<(BufferKind, (u32, u32))>,
+    /// The buffer shown, to render at the view's resolution as well (`view_resolution`), and the size.
+    pub view_resolution: Option<(BufferKind, (u32, u32))>,
 }
 
 /// What a job produced.
@@ -51,7 +51,7 @@ pub struct Rendered {
     /// The exercise's reference, when the job asked for one and it could be rendered.
     pub reference: Option<Arc<FrameCapture>>,
     /// The buffer shown at the view's resolution, when the job asked for it.
-    pub display: Option<Arc<FrameCapture>>,
+    pub view_resolution: Option<Arc<FrameCapture>>,
     /// The buffers the scene offers (the capture keeps those the view shows; choosing another
     /// renders again).
     pub buffers: Vec<BufferKind>,
@@ -70,14 +70,14 @@ pub struct Done {
 /// megabytes: reusing it spares the system's page faults and zeroing, and the UI thread the
 /// freeing).
 #[derive(Default)]
-pub struct Spares {
+pub struct RecycledCaptures {
     /// For the viewing camera's capture.
     pub capture: Option<FrameCapture>,
     /// For the observer's.
     pub observer: Option<FrameCapture>,
 }
 
-impl Spares {
+impl RecycledCaptures {
     /// Keeps `old` for reuse when nothing else holds it (it is dropped here otherwise).
     fn keep(&mut self, old: Arc<FrameCapture>, observer: bool) {
         if let Ok(c) = Arc::try_unwrap(old) {
@@ -90,7 +90,7 @@ impl Spares {
     }
 }
 
-impl Spares {
+impl RecycledCaptures {
     /// Keeps a finished job's captures for the next job to write into, as the app hands back
     /// the frames it no longer shows.
     pub fn reuse(&mut self, rendered: Rendered) {
@@ -104,7 +104,7 @@ impl Spares {
 impl Job {
     /// Renders the job on this thread, into the storage of `spares` when it has some.
     #[must_use]
-    pub fn run(self, spares: &mut Spares) -> Done {
+    pub fn run(self, spares: &mut RecycledCaptures) -> Done {
         let result =
             pipeline::render_reusing(&self.spec.scene, &self.spec.settings, spares.capture.take())
                 .map(|(capture, times)| {
@@ -133,12 +133,12 @@ impl Job {
                     let reference = self.reference.as_ref().and_then(|(scene, settings)| {
                         pipeline::render(scene, settings).ok().map(Arc::new)
                     });
-                    let display = self.display.and_then(|(buffer, size)| {
-                        crate::app::display::render(&self.spec, buffer, size).map(Arc::new)
+                    let view_resolution = self.view_resolution.and_then(|(buffer, size)| {
+                        crate::app::view_resolution::render(&self.spec, buffer, size).map(Arc::new)
                     });
                     Rendered {
                         reference,
-                        display,
+                        view_resolution,
                         draft: self.draft,
                         buffers: BufferKind::ALL
                             .into_iter()
@@ -194,7 +194,7 @@ impl RenderWorker {
         let handle = Arc::clone(&thread);
         spawn(move || {
             let _ = handle.set(std::thread::current());
-            let mut spares = Spares::default();
+            let mut spares = RecycledCaptures::default();
             loop {
                 // Take every message waiting, keeping the newest job: the ones behind it are
                 // stale.

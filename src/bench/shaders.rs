@@ -4,9 +4,9 @@
 use std::time::Duration;
 
 use pipeline::buffers::Capture;
+use pipeline::lighting::Frequency;
 use pipeline::scene::Scene;
 use pipeline::settings::RenderSettings;
-use pipeline::shade::Frequency;
 
 use super::{lit_textured_scene, measure, sphere_scene};
 

@@ -71,3 +71,23 @@ impl FromStr for Size {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Size;
+
+    #[test]
+    fn sizes_parse_and_reject() {
+        assert_eq!(
+            "640x480".parse::<Size>(),
+            Ok(Size {
+                width: 640,
+                height: 480
+            })
+        );
+        assert_eq!("1280×720".parse::<Size>().map(|s| s.width), Ok(1280));
+        for bad in ["640", "0x10", "10x0", "100000x100000", "axb", "-5x5"] {
+            assert!(bad.parse::<Size>().is_err(), "{bad} should be rejected");
+        }
+    }
+}

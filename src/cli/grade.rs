@@ -59,7 +59,7 @@ pub fn run(req: &GradeRequest) -> Result<()> {
             req.submissions.len()
         );
     }
-    let bar = super::Progress::new();
+    let bar = super::export::Progress::new();
     let jobs: Vec<(usize, usize)> = (0..req.submissions.len())
         .flat_map(|s| steps.iter().map(move |&k| (s, k)))
         .collect();

@@ -1,4 +1,6 @@
-//! The command line: `pipelens [COMMAND]`.
+//! The command line: `pipelens [COMMAND]` — its arguments (`args.rs`), a command sent to where
+//! it is done: exports (`export.rs`), `check` and `new-lesson` (`authoring.rs`), `grade`
+//! (`grade.rs`), `bench` (`bench.rs`), or the app.
 
 /// `println!` that ends the program quietly when its reader has gone (`pipelens check lessons/ |
 /// head`), where `println!` panics with "failed printing to stdout".
@@ -15,23 +17,22 @@ macro_rules! say {
 
 mod args;
 mod authoring;
+mod bench;
+mod export;
 mod grade;
 
 pub use args::Size;
 use args::{parse_line, parse_pixel, parse_stage};
+pub use export::load;
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use clap::{Parser, Subcommand};
-use pipeline::capture::FrameCapture;
-use pipeline::raster::Samples;
-use pipeline::settings::RenderSettings;
-use pipeline::shade::Frequency;
 
 use crate::export::ExportOptions;
-use crate::lesson::{self, SceneSpec};
+use crate::lesson::{self};
 
 /// pipelens — the graphics pipeline as a glass box.
 #[derive(Debug, Parser)]
@@ -261,9 +262,9 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                     slides,
                     data,
                     pixel,
-                    cancel: cancel_on_interrupt(),
+                    cancel: export::cancel_on_interrupt(),
                 };
-                return export_lesson(&l, &opts);
+                return export::export_lesson(&l, &opts);
             }
             if step.is_some() {
                 anyhow::bail!("--step applies to lessons; this is a scene file");
@@ -273,9 +274,9 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                 overlay_zoom: zoom,
                 max_records,
                 pixel,
-                cancel: cancel_on_interrupt(),
+                cancel: export::cancel_on_interrupt(),
             };
-            export(scene.as_deref(), &opts, size, samples, profile)?;
+            export::export(scene.as_deref(), &opts, size, samples, profile)?;
             Ok(ExitCode::SUCCESS)
         }
         Some(Command::Check { paths }) => Ok(authoring::check(&paths)),
@@ -302,76 +303,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
         Some(Command::NewLesson { file, lab }) => authoring::new_lesson(&file, lab),
-        Some(bench @ Command::Bench { .. }) => run_bench(bench),
-    }
-}
-
-/// `pipelens bench` in its five forms: the stages (with llvmpipe alongside on request), the
-/// handouts, the student's shaders, a lesson's steps as the app renders them, a class's lab
-/// hand-ins graded.
-fn run_bench(command: Command) -> Result<ExitCode> {
-    match command {
-        Command::Bench {
-            handouts: true,
-            data,
-            ..
-        } => {
-            let mut out = std::io::stdout().lock();
-            crate::bench::handouts::run(Path::new("lessons"), &data, &mut out)?;
-            Ok(ExitCode::SUCCESS)
-        }
-        Command::Bench {
-            shaders: true,
-            quick,
-            frames,
-            ..
-        } => {
-            let mut out = std::io::stdout().lock();
-            crate::bench::shader_rows(frames.unwrap_or(if quick { 1 } else { 5 }), &mut out)?;
-            Ok(ExitCode::SUCCESS)
-        }
-        Command::Bench {
-            grade: Some(count), ..
-        } => {
-            let mut out = std::io::stdout().lock();
-            crate::bench::grade::run(count, &mut out)?;
-            Ok(ExitCode::SUCCESS)
-        }
-        Command::Bench {
-            steps: Some(lesson),
-            quick,
-            frames,
-            ..
-        } => {
-            let mut out = std::io::stdout().lock();
-            let threads = std::thread::available_parallelism().map_or(1, usize::from);
-            let frames = frames.unwrap_or(if quick { 1 } else { 7 });
-            crate::bench::steps::run(&format!("{lesson}.toml"), frames, threads, &mut out)?;
-            Ok(ExitCode::SUCCESS)
-        }
-        Command::Bench {
-            quick,
-            frames,
-            peer_python,
-            peer_script,
-            data,
-            handouts: false,
-            shaders: false,
-            steps: None,
-            grade: None,
-        } => {
-            let mut out = std::io::stdout().lock();
-            crate::bench::run(quick, frames, &mut out)?;
-            if let Some(python) = peer_python {
-                let peer = crate::bench::Peer {
-                    python,
-                    script: peer_script,
-                };
-                crate::bench::run_against_peer(&peer, &data, quick, &mut out)?;
-            }
-            Ok(ExitCode::SUCCESS)
-        }
-        _ => anyhow::bail!("run_bench is called with a bench command"),
+        Some(bench @ Command::Bench { .. }) => bench::run(bench),
     }
 }
 
@@ -400,178 +332,4 @@ fn open_app(cli: &Cli) -> Result<ExitCode> {
     };
     crate::app::run(doc, source, cli.scene.clone(), start)?;
     Ok(ExitCode::SUCCESS)
-}
-
-/// The progress of an export: a bar on stderr when it is a terminal, nothing in a log or a
-/// pipe (where the summary printed at the end says what was written).
-struct Progress(indicatif::ProgressBar);
-
-impl Progress {
-    fn new() -> Self {
-        let bar =
-            indicatif::ProgressBar::with_draw_target(None, indicatif::ProgressDrawTarget::stderr());
-        if let Ok(style) = indicatif::ProgressStyle::with_template(
-            "{elapsed_precise} [{bar:30}] {pos}/{len} {wide_msg}",
-        ) {
-            bar.set_style(style.progress_chars("=> "));
-        }
-        Self(bar)
-    }
-
-    fn show(&self, done: usize, all: usize, what: &str) {
-        self.0.set_length(all as u64);
-        self.0.set_position(done as u64);
-        self.0.set_message(what.to_owned());
-    }
-}
-
-impl Drop for Progress {
-    fn drop(&mut self) {
-        self.0.finish_and_clear();
-    }
-}
-
-/// A cancel flag that Ctrl+C sets: the export then stops between two files, leaving whole
-/// files and no temporary ones, and says so.
-fn cancel_on_interrupt() -> crate::export::Cancel {
-    let cancel = crate::export::Cancel::default();
-    let flag = cancel.clone();
-    // Fails only if a handler is already set (never, in one command): then Ctrl+C just exits.
-    let _ = ctrlc::set_handler(move || flag.cancel());
-    cancel
-}
-
-fn export_lesson(
-    lesson: &lesson::Lesson,
-    opts: &crate::export::lesson::LessonExport,
-) -> Result<ExitCode> {
-    let bar = Progress::new();
-    let exported = crate::export::lesson::export_lesson(lesson, opts, &mut |done, all, what| {
-        bar.show(done, all, what);
-    })?;
-    drop(bar);
-    for w in &exported.warnings {
-        eprintln!("pipelens: warning: {w}");
-    }
-    say!(
-        "Exported {} files of lesson {} to {}; open {}",
-        exported.written.len(),
-        lesson.id,
-        opts.out.display(),
-        opts.out.join("index.html").display()
-    );
-    Ok(ExitCode::SUCCESS)
-}
-
-/// Loads a scene file, or the built-in scene for `None`.
-///
-/// # Errors
-/// The file's diagnostics, all of them.
-pub fn load(scene: Option<&Path>) -> Result<SceneSpec> {
-    let spec = match scene {
-        Some(p) => lesson::load_scene_file(p),
-        None => lesson::default_scene(),
-    };
-    spec.map_err(|d| anyhow::anyhow!("{d}"))
-}
-
-fn export(
-    scene: Option<&Path>,
-    opts: &ExportOptions,
-    size: Option<Size>,
-    samples: Option<u32>,
-    profile: Option<[f32; 4]>,
-) -> Result<()> {
-    let mut spec = load(scene)?;
-    if let Some(s) = size {
-        spec.settings.width = s.width;
-        spec.settings.height = s.height;
-    }
-    if let Some(n) = samples {
-        spec.settings.samples = Samples::from_count(n)
-            .with_context(|| format!("--samples must be 1, 4, 8 or 16, got {n}"))?;
-    }
-    // The inspected pixel's fragment-shader runs are recorded as the frame is drawn.
-    if opts.pixel.is_some() {
-        spec.settings.capture.pixel = opts.pixel;
-    }
-    let capture = pipeline::render(&spec.scene, &spec.settings)?;
-    for w in capture.not_finite_warnings() {
-        eprintln!("pipelens: warning: {w}");
-    }
-    let mut files = crate::export::encode_capture(&capture, opts)?;
-    if let Some(line) = profile {
-        files.push(profile_file(&spec, &capture, line)?);
-    }
-    let bar = Progress::new();
-    let written = crate::export::write_files(
-        &opts.out,
-        &files,
-        &mut |done, all, name| bar.show(done, all, name),
-        &opts.cancel,
-    )?;
-    drop(bar);
-    say!(
-        "Exported {} files ({}×{}, {} sample(s), {} primitives) to {}:",
-        written.len(),
-        spec.settings.width,
-        spec.settings.height,
-        spec.settings.samples.count(),
-        capture.primitives.len(),
-        opts.out.display()
-    );
-    for p in &written {
-        say!("  {}", p.display());
-    }
-    Ok(())
-}
-
-/// The profile along `line`: of the capture itself when unlit; of the flat, Gouraud and Phong
-/// renderings of the same scene when lit (the Mach band comparison).
-fn profile_file(
-    spec: &SceneSpec,
-    capture: &FrameCapture,
-    line: [f32; 4],
-) -> Result<crate::export::ExportFile> {
-    if spec.settings.shading == Frequency::Unlit {
-        return Ok(crate::export::profile_csv(line, &[("color", capture)]));
-    }
-    let modes = [
-        ("flat", Frequency::Flat),
-        ("gouraud", Frequency::Gouraud),
-        ("phong", Frequency::Phong),
-    ];
-    let captures = modes
-        .iter()
-        .map(|(_, f)| {
-            let settings = RenderSettings {
-                shading: *f,
-                ..spec.settings
-            };
-            pipeline::render(&spec.scene, &settings)
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    let named: Vec<(&str, &FrameCapture)> =
-        modes.iter().map(|(n, _)| *n).zip(captures.iter()).collect();
-    Ok(crate::export::profile_csv(line, &named))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::Size;
-
-    #[test]
-    fn sizes_parse_and_reject() {
-        assert_eq!(
-            "640x480".parse::<Size>(),
-            Ok(Size {
-                width: 640,
-                height: 480
-            })
-        );
-        assert_eq!("1280×720".parse::<Size>().map(|s| s.width), Ok(1280));
-        for bad in ["640", "0x10", "10x0", "100000x100000", "axb", "-5x5"] {
-            assert!(bad.parse::<Size>().is_err(), "{bad} should be rejected");
-        }
-    }
 }

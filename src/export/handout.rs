@@ -7,13 +7,11 @@ use std::fmt::Write as _;
 
 use base64::Engine as _;
 use pipeline::capture::{FragmentTrace, Matrices};
-use pipeline::scene::StudentCode;
 use pipeline::transform::NamedMatrix;
 
-use super::html;
+use super::html::{self, markdown, typeset};
 use crate::lesson::Lesson;
-use crate::vocabulary::glsl::localize;
-use crate::vocabulary::notation::{self, Node};
+use crate::vocabulary::notation;
 use crate::vocabulary::{Lang, Stage, num};
 
 /// An encoded image.
@@ -74,62 +72,6 @@ fn data_url(mime: &str, bytes: &[u8]) -> String {
         "data:{mime};base64,{}",
         base64::engine::general_purpose::STANDARD.encode(bytes)
     )
-}
-
-/// Typeset notation ([`notation`]) as HTML, as the app lays it out: scripts as `<sub>` and
-/// `<sup>`, a fraction's parts stacked over a bar, code in monospace, a narration's formula
-/// highlighted.
-fn typeset(nodes: &[Node]) -> String {
-    let mut s = String::new();
-    for n in nodes {
-        match n {
-            Node::Text(t) => s.push_str(&html::esc(t)),
-            Node::Code(t) => {
-                let _ = write!(s, "<code>{}</code>", html::esc(t));
-            }
-            Node::Script { base, sub, sup } => {
-                s.push_str(&typeset(base));
-                if let Some(x) = sub {
-                    let _ = write!(s, "<sub>{}</sub>", typeset(x));
-                }
-                if let Some(x) = sup {
-                    let _ = write!(s, "<sup>{}</sup>", typeset(x));
-                }
-            }
-            Node::Frac { num, den } => {
-                let _ = write!(
-                    s,
-                    "<span class=\"frac\"><span>{}</span><span>{}</span></span>",
-                    typeset(num),
-                    typeset(den)
-                );
-            }
-            Node::Formula(inner) => {
-                let _ = write!(s, "<strong>{}</strong>", typeset(inner));
-            }
-        }
-    }
-    s
-}
-
-/// The narration's simple markdown as HTML: paragraphs, `- ` bullets, `**formulas**`, each
-/// line typeset ([`notation::parse_paragraph`]).
-fn markdown(text: &str) -> String {
-    let mut out = String::new();
-    for paragraph in text.split("\n\n").map(str::trim).filter(|p| !p.is_empty()) {
-        let lines: Vec<&str> = paragraph.lines().map(str::trim).collect();
-        let inline = |l: &str| typeset(&notation::parse_paragraph(l));
-        if lines.iter().all(|l| l.starts_with("- ")) {
-            out.push_str("<ul>");
-            for l in lines {
-                let _ = write!(out, "<li>{}</li>", inline(&l[2..]));
-            }
-            out.push_str("</ul>\n");
-        } else {
-            let _ = writeln!(out, "<p>{}</p>", inline(&lines.join(" ")));
-        }
-    }
-    out
 }
 
 fn matrix_html(m: &NamedMatrix, lang: Lang) -> String {
@@ -304,7 +246,11 @@ fn step_html(
         body = markdown(step.narration.get(lang))
     );
     let target = if step.exercise.is_some() {
-        format!("{}{}", t(" — ", "——"), lab_target(lang))
+        format!(
+            "{}{}",
+            t(" — ", "——"),
+            super::handout_exercise::lab_target(lang)
+        )
     } else {
         String::new()
     };
@@ -357,208 +303,28 @@ fn step_html(
         h.push_str("</div>\n");
     }
     if let Some(code) = &step.shader {
-        h.push_str(&shaders_html(lesson, page.index, code, lang));
-    }
-    if let Some((pixel, fragments)) = &page.trace {
-        h.push_str(&trace_html(*pixel, fragments, lang));
-    }
-    if let Some(e) = &step.exercise {
-        h.push_str(&exercise_html(e, &lesson.comments, lang));
-    }
-    if let Some(q) = &step.question {
-        h.push_str(&question_html(step, q, lang, answers));
-    }
-    h.push_str("</section>\n");
-}
-
-/// A step's question, its blanks for a typed answer, and its answer (printed in a teacher's
-/// key, else folded on screen and left out of print).
-fn question_html(
-    step: &crate::lesson::script::Step,
-    q: &crate::vocabulary::Text,
-    lang: Lang,
-    answers: bool,
-) -> String {
-    let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
-    let mut h = String::new();
-    let _ = write!(
-        h,
-        "<div class=\"question\"><b class=\"ui\">{}</b> {}",
-        t("Question:", "思考题："),
-        typeset(&notation::parse_paragraph(q.get(lang)))
-    );
-    if let Some(e) = &step.expect {
-        h.push_str(&fill_in(e, answers, lang));
-    }
-    if let Some(a) = &step.answer {
-        if answers {
-            let _ = write!(
-                h,
-                "<div class=\"answer\"><b class=\"ui\">{}</b>{}</div>",
-                t("Answer:", "答案："),
-                markdown(a.get(lang))
-            );
-        } else {
-            let _ = write!(
-                h,
-                "<details class=\"screen\"><summary class=\"ui\">{}</summary>{}</details>",
-                t("Show the answer", "显示答案"),
-                markdown(a.get(lang))
-            );
-        }
-    }
-    h.push_str("</div>\n");
-    h
-}
-
-/// One file's listing under its name, its comments in `lang` (from the lesson's `comments`),
-/// the `marked` lines on yellow.
-fn file_listing(
-    file: &str,
-    source: &str,
-    marked: &[usize],
-    (lang, comments): (Lang, &std::collections::BTreeMap<String, String>),
-) -> String {
-    format!(
-        "<p class=\"listing\"><code>{file}</code></p>{}",
-        super::listing::html(&localize(source, lang, comments), marked)
-    )
-}
-
-/// The shaders step `k` runs of its own (its `shader`), each a listing under its file name, the
-/// lines it changed from the shader of the same file the step before ran on yellow.
-fn shaders_html(lesson: &Lesson, k: usize, code: &StudentCode, lang: Lang) -> String {
-    let files = super::listing::step_edits(lesson, k, code);
-    if files.is_empty() {
-        return String::new();
-    }
-    let mut h = format!(
-        "<p class=\"listing ui\">{}</p>",
-        lang.tr(
-            "The shaders this step runs (on yellow: the lines changed from the step before):",
-            "本步骤运行的着色器（黄底：与上一步相比改动的行）："
-        )
-    );
-    for (file, source, marked) in files {
-        h.push_str(&file_listing(
-            &file,
-            source,
-            &marked,
-            (lang, &lesson.comments),
+        h.push_str(&super::handout_exercise::shaders_html(
+            lesson, page.index, code, lang,
         ));
     }
-    h
-}
-
-/// What a lab's picture is: pipelens' own frame, which the student's code must draw.
-pub(super) fn lab_target(lang: Lang) -> &'static str {
-    lang.tr(
-        "pipelens' own, what your code must draw",
-        "pipelens 自带的结果：你的代码要画出的画面",
-    )
-}
-
-/// The debugger at the step's pixel on paper: each fragment's inputs, its run statement by
-/// statement (line and words, branches and loop iterations among them), and what it wrote.
-fn trace_html((x, y): (u32, u32), fragments: &[FragmentTrace], lang: Lang) -> String {
-    let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
-    let mut h = String::new();
-    for (k, f) in fragments.iter().enumerate() {
-        let _ = write!(
-            h,
-            "<p class=\"listing ui\">{} ({x}, {y}) · {} {} · {} {}</p><table class=\"src\">",
-            t("The debugger at pixel", "调试器：像素"),
-            t("fragment", "片元"),
-            k + 1,
-            t("triangle", "三角形"),
-            f.primitive
-        );
-        let row = |h: &mut String, n: &str, text: &str| {
-            let _ = write!(
-                h,
-                "<tr><td class=\"n\">{n}</td><td class=\"l\">{}</td></tr>",
-                html::esc(text)
-            );
-        };
-        // Each input under GLSL's own word for it (no Chinese in the narrow number column:
-        // headless Chromium drew it there as boxes).
-        for (name, value) in &f.inputs {
-            row(&mut h, "in", &format!("{name} = {value}"));
-        }
-        for line in &f.trace {
-            row(
-                &mut h,
-                &line.line.to_string(),
-                &crate::vocabulary::trace::words(line, lang),
-            );
-        }
-        let out = f.output.map_or_else(
-            || t("discarded", "被丢弃").to_owned(),
-            |c| {
-                format!(
-                    "vec4({}, {}, {}, {})",
-                    num(c[0]),
-                    num(c[1]),
-                    num(c[2]),
-                    num(c[3])
-                )
-            },
-        );
-        row(&mut h, "→", &out);
-        h.push_str("</table>");
+    if let Some((pixel, fragments)) = &page.trace {
+        h.push_str(&super::handout_exercise::trace_html(
+            *pixel, fragments, lang,
+        ));
     }
-    h
-}
-
-/// An exercise on paper: the task, and the starter code the student completes (the stages the
-/// lesson wrote; pipelens' own are not repeated), its TODO lines on yellow.
-fn exercise_html(
-    e: &crate::lesson::answer::Exercise,
-    comments: &std::collections::BTreeMap<String, String>,
-    lang: Lang,
-) -> String {
-    let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
-    let mut h = format!(
-        "<div class=\"question exercise\"><b class=\"ui\">{}</b> {}",
-        t("Exercise:", "练习："),
-        typeset(&notation::parse_paragraph(e.task.get(lang)))
-    );
-    for (file, source, todo) in super::listing::starter_todos(&e.starter) {
-        h.push_str(&file_listing(&file, source, &todo, (lang, comments)));
+    if let Some(e) = &step.exercise {
+        h.push_str(&super::handout_exercise::exercise_html(
+            e,
+            &lesson.comments,
+            lang,
+        ));
     }
-    h.push_str("</div>\n");
-    h
-}
-
-/// The boxes a question's expected value is written into on paper, one per entry (a matrix
-/// cell by cell), with the tolerance stated; in a teacher's key, filled with the value.
-fn fill_in(e: &crate::lesson::answer::Expect, answers: bool, lang: Lang) -> String {
-    let (rows, cols) = e.shape.size();
-    let tolerance = e.tolerance_words(lang);
-    let mut h = String::new();
-    let _ = write!(
-        h,
-        "<div class=\"ui\">{}</div><table class=\"fill\">",
-        match lang {
-            Lang::En => format!("Your answer (each entry within {tolerance}):"),
-            Lang::Zh => format!("你的答案（每项误差 {tolerance} 以内）："),
-        }
-    );
-    for r in 0..rows {
-        h.push_str("<tr>");
-        for c in 0..cols {
-            let v = e.values[r * cols + c];
-            let cell = if answers {
-                crate::vocabulary::short(v as f32, 4)
-            } else {
-                String::new()
-            };
-            let _ = write!(h, "<td>{cell}</td>");
-        }
-        h.push_str("</tr>");
+    if let Some(q) = &step.question {
+        h.push_str(&super::handout_exercise::question_html(
+            step, q, lang, answers,
+        ));
     }
-    h.push_str("</table>");
-    h
+    h.push_str("</section>\n");
 }
 
 #[cfg(test)]

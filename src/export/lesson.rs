@@ -15,7 +15,7 @@ use super::filmstrip;
 use super::handout::{self, Animated, Frame, StepPage};
 use super::palette::Palette;
 use super::picture::{Rendered, step_picture};
-use super::{ExportFile, ExportOptions, encode_capture, png_rgba, profile_csv, write_files};
+use super::{ExportFile, ExportOptions, png_rgba, write_files};
 use crate::lesson::param::Value;
 use crate::lesson::{Lesson, SceneSpec};
 use crate::vocabulary::Lang;
@@ -189,7 +189,15 @@ fn build_step(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<BuiltSte
         folders.push(("slides".to_owned(), vec![file]));
     }
     if opts.data {
-        let (files, textures) = data_files(lesson, k, opts, &capture, &variants)?;
+        let export = ExportOptions {
+            out: opts.out.join(step_dir(k)),
+            overlay_zoom: 0,
+            max_records: opts.max_records,
+            pixel: opts.pixel,
+            cancel: opts.cancel.clone(),
+        };
+        let (files, textures) =
+            super::lesson_data::data_files(lesson, k, export, &capture, &variants)?;
         folders.push((step_dir(k), files));
         if !textures.is_empty() {
             folders.push(("textures".to_owned(), textures));
@@ -256,7 +264,7 @@ fn slide_extras(
         ..Default::default()
     };
     if let Some(e) = &step.exercise {
-        extras.caption = Some(super::handout::lab_target(lang).to_owned());
+        extras.caption = Some(super::handout_exercise::lab_target(lang).to_owned());
         extras.task = Some(format!(
             "{} {}",
             lang.tr("Exercise:", "练习："),
@@ -497,67 +505,4 @@ fn shown(v: &Value) -> String {
         }
         other => other.to_string(),
     }
-}
-
-/// With `--data`: step `k`'s buffers, `capture.json` (with the step's pixel), the compared
-/// images and the profile; and the textures' mip levels (the same for every step).
-fn data_files(
-    lesson: &Lesson,
-    k: usize,
-    opts: &LessonExport,
-    capture: &FrameCapture,
-    variants: &[(String, FrameCapture)],
-) -> Result<(Vec<ExportFile>, Vec<ExportFile>)> {
-    let step = &lesson.steps[k];
-    if let Some((x, y)) = opts.pixel
-        && (x >= capture.width() || y >= capture.height())
-    {
-        anyhow::bail!(
-            "--pixel {x},{y} is outside step {}'s {}×{} image",
-            k + 1,
-            capture.width(),
-            capture.height()
-        );
-    }
-    let export = ExportOptions {
-        out: opts.out.join(step_dir(k)),
-        overlay_zoom: 0,
-        max_records: opts.max_records,
-        // The frame was drawn with the pixel `capture.json` describes (see `spec_of`).
-        pixel: capture.settings.capture.pixel,
-        cancel: opts.cancel.clone(),
-    };
-    let (mut files, textures): (Vec<_>, Vec<_>) = encode_capture(capture, &export)?
-        .into_iter()
-        .partition(|f| !(f.name.starts_with("texture") || f.name.starts_with("cube")));
-    for (label, cap) in variants {
-        files.push(ExportFile {
-            name: format!("compare_{}.png", slug(label)),
-            description: format!("the colour image with {label}"),
-            bytes: png_rgba(&cap.image(pipeline::buffers::BufferKind::Color))?,
-        });
-    }
-    if let Some(line) = step.profile_line(capture.width(), capture.height()) {
-        let named: Vec<(&str, &FrameCapture)> = if variants.is_empty() {
-            vec![("color", capture)]
-        } else {
-            variants.iter().map(|(l, c)| (l.as_str(), c)).collect()
-        };
-        files.push(profile_csv(line, &named));
-    }
-    Ok((files, textures))
-}
-
-fn slug(label: &str) -> String {
-    let s: String = label
-        .chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() {
-                c.to_ascii_lowercase()
-            } else {
-                '_'
-            }
-        })
-        .collect();
-    s.trim_matches('_').replace("__", "_")
 }

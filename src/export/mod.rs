@@ -3,12 +3,15 @@
 //! written to a temporary name beside its target and renamed, so a file is either whole or absent.
 
 mod chart;
+mod composing;
 mod filmstrip;
 mod font;
 mod handout;
+mod handout_exercise;
 mod html;
 mod json;
 pub mod lesson;
+mod lesson_data;
 mod listing;
 mod palette;
 mod picture;

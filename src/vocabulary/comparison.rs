@@ -1,9 +1,9 @@
 //! Settings compared side by side: flat | Gouraud | Phong (the Mach band comparison), affine |
 //! perspective-correct, 1× | 4× MSAA | 4× SSAA, nearest | bilinear | trilinear | anisotropic.
 
+use pipeline::lighting::Frequency;
 use pipeline::raster::Samples;
 use pipeline::settings::RenderSettings;
-use pipeline::shade::Frequency;
 use pipeline::texture::{Filter, Mipmap, Sampler};
 
 use super::Lang;

@@ -151,3 +151,71 @@ fn a_source_file_over_600_lines_says_why_at_its_top() {
         "over 600 lines with no `Longer than 600 lines:` reason at the top: {long:?}"
     );
 }
+
+/// Every source file names its concept in its first line, a `//!` doc comment: what it holds,
+/// in the course's words, for the reader who opens it.
+#[test]
+fn every_source_file_names_its_concept_in_its_first_line() {
+    let mut unnamed = Vec::new();
+    for dir in ["src", "crates/glsl/src", "crates/pipeline/src", "web/src"] {
+        for f in rust_files(&repo().join(dir)) {
+            let text = std::fs::read_to_string(&f).expect("a source file");
+            if !text.starts_with("//! ") {
+                unnamed.push(f.display().to_string());
+            }
+        }
+    }
+    assert!(
+        unnamed.is_empty(),
+        "files whose first line is not a `//!` line naming what they hold: {unnamed:?}"
+    );
+}
+
+/// The `.rs` file names ARCHITECTURE.md writes in backticks (`resolve.rs`, `script/read.rs`).
+fn file_names_in(text: &str) -> Vec<String> {
+    text.split('`')
+        .skip(1)
+        .step_by(2)
+        .filter(|t| {
+            t.ends_with(".rs")
+                && t.chars()
+                    .all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '/' | '.'))
+        })
+        .map(str::to_owned)
+        .collect()
+}
+
+/// A file named in ARCHITECTURE.md exists: a renamed or split file leaves no stale name there.
+#[test]
+fn every_file_architecture_md_names_exists() {
+    let text = std::fs::read_to_string(repo().join("ARCHITECTURE.md")).expect("ARCHITECTURE.md");
+    let files: Vec<String> = ["src", "crates", "web", "tests", "fuzz"]
+        .iter()
+        .flat_map(|d| rust_files(&repo().join(d)))
+        .map(|p| {
+            p.strip_prefix(repo())
+                .expect("below the repository")
+                .display()
+                .to_string()
+        })
+        .collect();
+    let names = file_names_in(&text);
+    assert!(names.len() > 100, "only {} file names read", names.len());
+    let missing: BTreeSet<&String> = names
+        .iter()
+        .filter(|n| {
+            !files
+                .iter()
+                .any(|f| f == *n || f.ends_with(&format!("/{n}")))
+        })
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "ARCHITECTURE.md names files that do not exist: {missing:?}"
+    );
+    // The reader itself: a name in code spans only, whole.
+    assert_eq!(
+        file_names_in("in `a/b.rs` and (`c.rs`), not mod.rs nor `d.rs x`"),
+        ["a/b.rs", "c.rs"]
+    );
+}

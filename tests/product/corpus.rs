@@ -358,7 +358,7 @@ fn a_million_faces_load_and_render() {
     let settings = pipeline::settings::RenderSettings {
         width: 64,
         height: 64,
-        shading: pipeline::shade::Frequency::Unlit,
+        shading: pipeline::lighting::Frequency::Unlit,
         ..Default::default()
     };
     let c = pipeline::render(&scene, &settings).expect("renders");

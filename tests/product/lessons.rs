@@ -165,7 +165,7 @@ fn later_steps_keep_earlier_settings() {
     );
     assert_eq!(
         lesson.spec_at(2).settings.shading,
-        pipeline::shade::Frequency::Flat
+        pipeline::lighting::Frequency::Flat
     );
 }
 

@@ -87,7 +87,7 @@ fn spot_scene(
         width: 700,
         height: 700,
         perspective_correct: false,
-        shading: pipeline::shade::Frequency::Phong,
+        shading: pipeline::lighting::Frequency::Phong,
         cull: pipeline::raster::CullMode::None,
         background: Vec3::ZERO,
         ..RenderSettings::default()

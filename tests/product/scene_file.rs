@@ -263,7 +263,7 @@ fn the_complete_example_in_lessons_readme_is_valid() {
     assert_eq!(spec.scene.objects.len(), 2);
     assert_eq!(spec.settings.samples.count(), 4);
     assert_eq!(spec.scene.lights.len(), 3);
-    assert_eq!(spec.settings.shading, pipeline::shade::Frequency::Phong);
+    assert_eq!(spec.settings.shading, pipeline::lighting::Frequency::Phong);
 }
 
 #[test]

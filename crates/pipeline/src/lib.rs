@@ -13,7 +13,7 @@
 //! | [`texture`] | textures and their mip pyramids, samplers, surface detail |
 //! | [`camera`], [`light`] | the camera and projection; lights and materials |
 //! | [`raster`] | edge functions, top-left rule, sample patterns, the z-buffer and depth test |
-//! | [`shade`] | Phong / Blinn-Phong terms, attenuation, shading frequencies |
+//! | [`lighting`] | Phong / Blinn-Phong terms, attenuation, shading frequencies |
 //! | [`shader`] | the student's GLSL: the engine crate `pipelens-glsl` (adapted, parsed and validated by naga, run on the CPU), with the uniforms' values, the textures bound, pipelens' shading modes and the student's pipeline functions |
 //! | [`buffers`], [`settings`] | which per-pixel buffers there are and are kept; the render settings |
 //! | [`hierarchy`], [`scene`] | articulated figures; what is drawn |
@@ -30,13 +30,13 @@ pub mod clip;
 pub mod grid;
 pub mod hierarchy;
 pub mod light;
+pub mod lighting;
 pub mod mesh;
 pub mod overlay;
 pub mod raster;
 mod render;
 pub mod scene;
 pub mod settings;
-pub mod shade;
 pub mod shader;
 pub mod texture;
 pub mod transform;

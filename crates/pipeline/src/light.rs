@@ -1,6 +1,6 @@
 //! Lights and materials of the notes (Angel, chapter on lighting; GAMES101 lecture 7): ambient,
 //! point, directional and spot lights, and the reflection coefficients `k_a`, `k_d`, `k_s` and
-//! the shininess of the Phong and Blinn-Phong models (evaluated in `shade`).
+//! the shininess of the Phong and Blinn-Phong models (evaluated in `lighting`).
 
 use glam::Vec3;
 use serde::Serialize;

@@ -11,9 +11,9 @@ use crate::buffers::BufferKind;
 use crate::camera::{Camera, Projection};
 use crate::hierarchy::{self, Figure};
 use crate::light::{Light, Material};
+use crate::lighting::Frequency;
 use crate::mesh::{BuiltinMesh, Mesh};
 use crate::settings::RenderSettings;
-use crate::shade::Frequency;
 use crate::texture::{Displacement, Environment, SurfaceDetail, Texture};
 use crate::transform::{self, NamedMatrix, TransformError};
 

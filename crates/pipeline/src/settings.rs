@@ -6,8 +6,8 @@ use glam::Vec3;
 use serde::Serialize;
 
 use crate::buffers::{CAPTURE_BYTES_PER_SAMPLE, Capture};
+use crate::lighting::{Frequency, Reflection};
 use crate::raster::{CullMode, DepthTest, Samples};
-use crate::shade::{Frequency, Reflection};
 use crate::texture::Sampler;
 
 /// How the image is produced: size, samples, culling, depth test, interpolation.

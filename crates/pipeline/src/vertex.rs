@@ -10,8 +10,8 @@ use glam::{Mat3, Mat4, Vec2, Vec3, Vec4};
 use serde::Serialize;
 
 use crate::light::Light;
+use crate::lighting::{self, Frequency, Reflection, ShadeTerms};
 use crate::scene::{ColorSource, Object};
-use crate::shade::{self, Frequency, Reflection, ShadeTerms};
 
 /// One vertex through every space, a row of the vertex table.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -144,7 +144,7 @@ pub fn transform_object(
         if !object.lit {
             return ShadeTerms::default();
         }
-        shade::shade(
+        lighting::shade(
             v.world.truncate(),
             v.normal_world,
             lighting.eye,

@@ -9,6 +9,7 @@
 //! lesson, or a mesh of one's own (`new.rs`).
 
 mod file;
+mod file_actions;
 mod new;
 mod screen;
 mod window;

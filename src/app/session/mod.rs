@@ -2,14 +2,14 @@
 //! jobs (`state.rs`); the commands panels return, applied kind by kind (`apply.rs`); what the
 //! current step teaches (`teaching.rs`); an exercise step's reference render and the code kept
 //! (`exercise.rs`), that reference and its findings (`reference.rs`); the finer render the
-//! session asks of its view (`fine.rs`).
+//! session asks of its view (`view_resolution.rs`).
 
 mod apply;
 mod exercise;
-mod fine;
 mod reference;
 mod state;
 mod teaching;
+mod view_resolution;
 
 pub use crate::app::command::{
     Command, EditorCommand, LessonCommand, SceneCommand, SelectionCommand, ViewCommand,

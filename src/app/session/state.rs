@@ -11,9 +11,9 @@ use pipeline::capture::FrameCapture;
 use pipeline::overlay::OverlayKind;
 
 use super::reference::Comparison as ExerciseComparison;
-use crate::app::display::Fine;
 use crate::app::player::LessonPlayer;
 use crate::app::selection::{DepthView, Selection};
+use crate::app::view_resolution::ViewResolution;
 use crate::app::worker::{Job, RenderWorker, Rendered};
 use crate::lesson::script::{Layout, Overlay};
 use crate::lesson::{Document, SceneSpec};
@@ -43,8 +43,8 @@ pub struct Session {
     pub observer_aspect: Option<f32>,
     /// The physical pixels the pixel view draws the image over.
     pub view_pixels: Option<[u32; 2]>,
-    /// The buffer shown rendered at that resolution (`display`).
-    pub display: Fine,
+    /// The buffer shown rendered at that resolution (`view_resolution`).
+    pub view_resolution: ViewResolution,
     /// What is selected.
     pub selection: Selection,
     /// The interface language.
@@ -110,7 +110,7 @@ impl Session {
             orbit,
             observer_aspect: None,
             view_pixels: None,
-            display: Fine::default(),
+            view_resolution: ViewResolution::default(),
             selection: Selection::default(),
             lang: Lang::default(),
             generation,
@@ -280,9 +280,9 @@ impl Session {
     /// Asks for a new capture when the view needs a buffer the latest one did not keep, or the
     /// observer it did not render.
     pub fn ensure_captured(&mut self) {
-        if self.fine_job().is_none() {
+        if self.view_resolution_job().is_none() {
             // The finer render is not for this view (another stage, a comparison, a drag).
-            self.display = Fine::default();
+            self.view_resolution = ViewResolution::default();
         }
         let Some(kept) = self.capture.as_ref().map(|c| c.settings.capture) else {
             return;
@@ -293,7 +293,7 @@ impl Session {
         let missing = !kept.covers(needed)
             || (shaders && needed.pixel.is_some() && kept.pixel != needed.pixel)
             || (self.observer_shown() && !self.observer_asked)
-            || self.fine_missing()
+            || self.view_resolution_missing()
             || self.reference_stale();
         if !self.rendering() && missing {
             self.request_render();
@@ -325,7 +325,7 @@ impl Session {
                 .observer_shown()
                 .then(|| (self.orbit.camera(), self.observer_aspect)),
             reference: self.exercise_reference(&spec),
-            display: self.fine_job(),
+            view_resolution: self.view_resolution_job(),
             spec,
         }
     }
@@ -348,11 +348,11 @@ impl Session {
         self.generation += 1;
         let job = self.job();
         self.observer_asked = job.observer.is_some();
-        self.display.asked = job.display;
+        self.view_resolution.asked = job.view_resolution;
         match &self.worker {
             Some(w) => w.submit(job),
             None => {
-                let done = job.run(&mut crate::app::worker::Spares::default());
+                let done = job.run(&mut crate::app::worker::RecycledCaptures::default());
                 self.receive(done.generation, done.result);
             }
         }
@@ -392,7 +392,7 @@ impl Session {
                 }
                 self.shown_draft = r.draft;
                 self.receive_reference(r.reference);
-                self.display.capture = r.display;
+                self.view_resolution.capture = r.view_resolution;
                 self.buffers = r.buffers;
                 self.variants = r.variants;
                 self.times = Some(r.times);

@@ -1,10 +1,10 @@
 //! The finer render a session asks for: the buffer shown rendered again at the size its view
-//! draws it (see `app/display.rs`), and whether the view now asks for one the latest job did not.
+//! draws it (see `app/view_resolution.rs`), and whether the view now asks for one the latest job did not.
 
 use pipeline::buffers::BufferKind;
 
 use super::state::Session;
-use crate::app::display::{size, wanted};
+use crate::app::view_resolution::{size, wanted};
 
 impl Session {
     /// What the next job renders at the view's resolution for this session, if anything: the buffer
@@ -13,7 +13,7 @@ impl Session {
     /// a comparison, nor when the student's shaders run (interpreted, each pixel traced: the lesson's
     /// pixels are the ones the exercise compares).
     #[must_use]
-    pub fn fine_job(&self) -> Option<(BufferKind, (u32, u32))> {
+    pub fn view_resolution_job(&self) -> Option<(BufferKind, (u32, u32))> {
         let session = self;
         let sel = &session.selection;
         let settings = &session.spec.settings;
@@ -32,8 +32,8 @@ impl Session {
     /// Whether the view now asks for a finer render the latest job did not: another buffer, or a
     /// size more than 5 % wider or narrower (a window being resized does not render every frame).
     #[must_use]
-    pub fn fine_missing(&self) -> bool {
-        match (self.fine_job(), self.display.asked) {
+    pub fn view_resolution_missing(&self) -> bool {
+        match (self.view_resolution_job(), self.view_resolution.asked) {
             (Some((b, size)), Some((asked_b, asked))) => {
                 b != asked_b || size.0.abs_diff(asked.0) * 20 > asked.0
             }

@@ -94,19 +94,19 @@ fn framed(
     with_plot: bool,
     gap: f32,
 ) -> (Vec<Rect>, Rect) {
-    let card = super::room::narration_card(ctx);
-    let (cells, images) = super::room::candidates(area, card)
+    let card = super::card_placement::narration_card(ctx);
+    let (cells, images) = super::card_placement::candidates(area, card)
         .into_iter()
         .map(|r| cells(grid(r, (n, aspect), with_plot, gap), n, gap))
         .filter(|(cells, _)| {
             cells
                 .iter()
-                .all(|c| super::room::misses(fit_rect(*c, aspect), card))
+                .all(|c| super::card_placement::misses(fit_rect(*c, aspect), card))
         })
         .max_by(|a, b| a.0[0].area().total_cmp(&b.0[0].area()))
         .unwrap_or_else(|| cells(grid(area, (n, aspect), with_plot, gap), n, gap));
     let unobstructed = grid(area, (n, aspect), with_plot, gap).1;
-    super::room::report_kept(ctx, cells[0].area() / (unobstructed.x * unobstructed.y));
+    super::card_placement::report_kept(ctx, cells[0].area() / (unobstructed.x * unobstructed.y));
     (cells, images)
 }
 
@@ -121,7 +121,7 @@ impl CompareView {
             ui.label(lang.tr("Rendering the comparison…", "正在渲染对比…"));
             return cmds;
         }
-        let card = super::room::narration_card(ui.ctx());
+        let card = super::card_placement::narration_card(ui.ctx());
         let area = ui.available_rect_before_wrap();
         let with_plot = session.selection.profile.is_some();
         let aspect = variants[0].1.width() as f32 / variants[0].1.height() as f32;
@@ -204,7 +204,7 @@ impl CompareView {
         ui.advance_cursor_after_rect(images);
         if with_plot {
             // Below the images, right of the card when the card would cover its axes.
-            let plot = super::room::right_of(
+            let plot = super::card_placement::right_of(
                 Rect::from_min_max(
                     Pos2::new(images.left(), images.bottom() + gap),
                     Pos2::new(images.right(), area.bottom()),

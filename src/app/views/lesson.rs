@@ -22,16 +22,19 @@ pub struct CardOutput {
 /// Draws the narration card at the bottom-left of the picture's area (below the stage's
 /// toolbar, as the views last laid out; `central` before they have).
 pub fn card(ctx: &egui::Context, central: egui::Rect, session: &Session) -> CardOutput {
-    let over = super::room::picture_area(ctx).unwrap_or(central);
+    let over = super::card_placement::picture_area(ctx).unwrap_or(central);
     let mut out = CardOutput {
         commands: Vec::new(),
         fold: false,
         inspect: false,
     };
     // In the corner, or a band or a column when the corner card would shrink the subject.
-    let shape = super::room::shape(ctx, over, session);
-    let (width, least, most) =
-        super::room::card_size(shape, over, super::room::content_aspect(session));
+    let shape = super::card_placement::shape(ctx, over, session);
+    let (width, least, most) = super::card_placement::card_size(
+        shape,
+        over,
+        super::card_placement::content_aspect(session),
+    );
     let shown = egui::Area::new(egui::Id::unique("narration-card"))
         .order(egui::Order::Foreground)
         .pivot(Align2::LEFT_BOTTOM)
@@ -61,7 +64,7 @@ pub fn card(ctx: &egui::Context, central: egui::Rect, session: &Session) -> Card
                     }
                 });
         });
-    super::room::set_narration_card(ctx, Some(shown.response.rect));
+    super::card_placement::set_narration_card(ctx, Some(shown.response.rect));
     out
 }
 
@@ -79,7 +82,7 @@ pub fn sheet(ui: &mut Ui, session: &Session) -> CardOutput {
 
 /// The card's type scale for the next frame, so that what it says fits without scrolling
 /// (classroom type on a 1366×768 projector): from `fit`, the text needed `needed` points of
-/// height where `room` were left. Text area grows as the square of the type size at a fixed
+/// height where `card_placement` were left. Text area grows as the square of the type size at a fixed
 /// width, so the size changes by `√(room/needed)`; it grows back only when there is a fifth
 /// to spare (no flicker between two sizes), never above the style's size nor below `least`
 /// (the normal size: below it the card scrolls instead).

@@ -3,6 +3,7 @@
 
 pub mod answer;
 mod buffer_texture;
+pub mod card_placement;
 pub mod compare;
 pub mod exercise;
 pub mod geometry;
@@ -15,8 +16,8 @@ pub mod palette;
 pub mod params;
 pub mod pixels;
 mod projector;
-pub mod room;
 pub mod shader;
+mod shader_source;
 pub mod typeset;
 mod words;
 

@@ -16,11 +16,11 @@ use std::path::Path;
 
 use glam::Vec3;
 use pipeline::camera::{Camera, Projection};
+use pipeline::lighting::{Frequency, Reflection};
 use pipeline::mesh::NormalAveraging;
 use pipeline::raster::{CullMode, DepthTest};
 use pipeline::scene::Scene;
 use pipeline::settings::RenderSettings;
-use pipeline::shade::{Frequency, Reflection};
 use pipeline::texture::{Filter, Mipmap, Wrap};
 use toml::Spanned;
 

@@ -35,7 +35,7 @@ fn the_narration_card_leaves_the_subject_clear() {
                     .session
                     .apply(Command::Lesson(LessonCommand::GoToStep(k)));
                 h.run_steps(6);
-                let card = pipelens::app::views::room::narration_card(&h.ctx)
+                let card = pipelens::app::views::card_placement::narration_card(&h.ctx)
                     .expect("a lesson shows its card");
                 for r in &h.state().subject {
                     checked += 1;

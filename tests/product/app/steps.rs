@@ -180,7 +180,7 @@ fn a_dragged_parameter_renders_drafts_then_the_full_frame_on_release() {
     {
         let c = h.state().session.capture.clone().expect("a draft");
         let (x, y) = inspected.expect("inspected");
-        let lit = c.settings.shading != pipeline::shade::Frequency::Unlit;
+        let lit = c.settings.shading != pipeline::lighting::Frequency::Unlit;
         assert!(!c.settings.capture.covers(pipeline::buffers::Capture::FULL));
         assert!(c.pixels.shading.is_none() || c.settings.capture.lighting);
         let record = c.pixel_record(x, y).expect("a record");
@@ -288,7 +288,7 @@ fn a_shading_stage_shows_its_picture_at_the_views_resolution() {
     assert_eq!(s.selection.stage, Stage::Output);
     let capture = s.capture.clone().expect("a capture");
     let fine = s
-        .display
+        .view_resolution
         .capture
         .clone()
         .expect("a finer render on the output stage");
@@ -317,7 +317,7 @@ fn a_shading_stage_shows_its_picture_at_the_views_resolution() {
         .apply(Command::View(ViewCommand::SelectStage(Stage::Raster)));
     h.run_steps(6);
     assert!(
-        h.state().session.display.capture.is_none(),
+        h.state().session.view_resolution.capture.is_none(),
         "the pixel grid is the subject"
     );
     h.state_mut()
@@ -325,12 +325,15 @@ fn a_shading_stage_shows_its_picture_at_the_views_resolution() {
         .apply(Command::View(ViewCommand::SelectStage(Stage::Output)));
     h.run_steps(6);
     assert!(
-        h.state().session.display.capture.is_some(),
+        h.state().session.view_resolution.capture.is_some(),
         "back on the output"
     );
     let s = &mut h.state_mut().session;
     s.drafting = true;
-    assert!(s.fine_job().is_none(), "a draft keeps up with the hand");
+    assert!(
+        s.view_resolution_job().is_none(),
+        "a draft keeps up with the hand"
+    );
 }
 
 /// A lab's reference is shown in the buffer the student's frame is shown in (issue: the buffer

@@ -236,7 +236,7 @@ impl FrameCapture {
         let light = self
             .lights
             .iter()
-            .find_map(|l| crate::shade::light_vector(l, position))?;
+            .find_map(|l| crate::lighting::light_vector(l, position))?;
         let view = (self.camera.eye - position).normalize_or_zero();
         Some(PixelVectors {
             position,

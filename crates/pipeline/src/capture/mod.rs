@@ -191,10 +191,10 @@ pub struct FrameCapture {
     pub vertices: Vec<VertexRecord>,
     /// The lighting at each vertex (a row per vertex-table row), with Gouraud shading; empty
     /// otherwise.
-    pub vertex_shading: Vec<crate::shade::ShadeTerms>,
+    pub vertex_shading: Vec<crate::lighting::ShadeTerms>,
     /// The lighting of each face (a row per primitive, evaluated once at its provoking vertex), with
     /// flat shading; empty otherwise.
-    pub face_shading: Vec<crate::shade::ShadeTerms>,
+    pub face_shading: Vec<crate::lighting::ShadeTerms>,
     /// The textures the frame read, by object name (their mip pyramids can be shown and exported).
     pub textures: Vec<(String, std::sync::Arc<crate::texture::Texture>)>,
     /// The cube maps the frame's mirrors reflect, by object name.

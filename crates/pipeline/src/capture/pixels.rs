@@ -94,7 +94,7 @@ impl InspectedPixel {
     pub fn new(
         index: usize,
         lit: bool,
-        terms: Option<&crate::shade::ShadeTerms>,
+        terms: Option<&crate::lighting::ShadeTerms>,
         texture: Option<&PixelTexture>,
     ) -> Self {
         let mut halves = Vec::new();
@@ -213,7 +213,7 @@ impl TextureBuffers {
     }
 }
 
-/// Per-pixel lighting terms of the owning fragment (see `shade`), top image row first, as half
+/// Per-pixel lighting terms of the owning fragment (see `lighting::shade`), top image row first, as half
 /// floats (11 significant bits, relative error ≤ 2⁻¹¹, as a GPU's RGBA16F G-buffer): read them
 /// as `f32` with [`Self::at`].
 #[derive(Clone, Debug, PartialEq, Default)]
@@ -432,7 +432,7 @@ pub struct ShadingRow<'a> {
 impl ShadingRow<'_> {
     /// Lighting terms as the row stores them, in storage order.
     #[must_use]
-    pub fn flatten(t: &crate::shade::ShadeTerms) -> [f32; LIGHTING_HALVES] {
+    pub fn flatten(t: &crate::lighting::ShadeTerms) -> [f32; LIGHTING_HALVES] {
         let mut out = [0.0; LIGHTING_HALVES];
         for (k, v) in [t.ambient, t.diffuse, t.specular, t.normal, t.reflected]
             .into_iter()

@@ -315,7 +315,7 @@ fn attenuation_lanes(abc: Vec3, d: f32x8) -> f32x8 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shade::shade;
+    use crate::lighting::shade;
 
     /// A small deterministic generator (xorshift).
     struct Rng(u64);

@@ -29,7 +29,7 @@
 mod cleared;
 mod covered;
 mod samples;
-mod student;
+mod student_functions;
 mod zbuffer;
 
 pub(crate) use covered::CoveredRows;

@@ -7,10 +7,10 @@ use rayon::prelude::*;
 
 use crate::capture::{Fate, Matrices, PrimitiveRecord};
 use crate::clip::{self, ClipOutcome, ClipVertex};
+use crate::lighting::{self, ShadeTerms};
 use crate::raster::{Corners, RasterCounts, RasterTriangle, SetupRejection, snap_xy};
 use crate::scene::Scene;
 use crate::settings::RenderSettings;
-use crate::shade::{self, ShadeTerms};
 use crate::vertex::VertexRecord;
 
 /// Primitive assembly, clipping, perspective division, viewport and triangle setup for every
@@ -361,7 +361,7 @@ pub(super) fn light_faces(
         } else {
             v[2].color
         };
-        shade::shade(
+        lighting::shade(
             p[2],
             normal,
             scene.camera.eye,

@@ -9,7 +9,7 @@
 
 use super::resolve::{BlockShade, ResolveContext, ResolvedPixel, Shaded};
 use super::runs::{Run, RunShading};
-use crate::shade::lanes::LANES;
+use crate::lighting::lanes::LANES;
 
 /// Where a pixel of a coarse run takes its shading from.
 #[derive(Clone, Copy)]
@@ -123,10 +123,10 @@ impl ResolveContext<'_> {
 #[cfg(test)]
 mod tests {
     use crate::buffers::Capture;
+    use crate::lighting::{Frequency, Reflection};
     use crate::raster::Samples;
     use crate::render::fixtures::{assert_kept, context, scene};
     use crate::settings::RenderSettings;
-    use crate::shade::{Frequency, Reflection};
 
     /// Every pixel of coarse frames at one sample, resolved with runs, equals what the
     /// per-pixel path gives it with its 2×2 block's shading so far, row pair by row pair:

@@ -10,10 +10,10 @@ use crate::buffers::Capture;
 use crate::camera::{Camera, Projection};
 use crate::capture::FrameCapture;
 use crate::light::Light;
+use crate::lighting::Frequency;
 use crate::mesh::BuiltinMesh;
 use crate::scene::{Object, Scene};
 use crate::settings::RenderSettings;
-use crate::shade::Frequency;
 use crate::texture::{CubeMap, Environment, SurfaceDetail, Texture};
 
 /// A textured floor and sphere, a mirror torus and a bump-mapped cube, under every kind of

@@ -4,7 +4,7 @@
 
 use super::resolve::ResolveContext;
 use crate::capture::{InspectedPixel, PixelTexture};
-use crate::shade::Frequency;
+use crate::lighting::Frequency;
 
 impl ResolveContext<'_> {
     /// The terms and lookup of window pixel `(x, y)`, resolved again by itself as the resolve

@@ -4,8 +4,10 @@
 //! triangle setup (culling) → rasterization with the depth test → resolve to pixels.
 //!
 //! The order and the vertex stage's call are here; primitive assembly, clipping, division,
-//! viewport, setup and flat shading's face lighting in [`assembly`]; the resolve of samples to
-//! pixels (colour, lighting terms, texture lookups) in [`resolve`](mod@resolve).
+//! viewport, setup and flat shading's face lighting in [`assembly`]; rasterization with the depth
+//! test, pipelens' own or the student's, in [`rasterization`]; the resolve of samples to pixels
+//! (colour, lighting terms, texture lookups) in [`resolve`](mod@resolve); the storage a frame is
+//! written into, a capture no longer shown, in [`storage`].
 
 mod assembly;
 mod coarse;
@@ -13,11 +15,13 @@ mod coarse;
 mod fixtures;
 mod inspected;
 mod pixel_samples;
+mod rasterization;
 mod resolve;
 mod runs;
-mod shaders;
-mod student;
-pub use shaders::trace_vertex;
+mod storage;
+mod student_geometry;
+mod student_shaders;
+pub use student_shaders::trace_vertex;
 
 use std::time::Duration;
 
@@ -26,13 +30,13 @@ use web_time::Instant;
 use serde::Serialize;
 
 use self::assembly::{assemble_and_clip, light_faces};
+use self::rasterization::rasterize;
 use self::resolve::{ResolveContext, resolve};
-use crate::capture::{FrameCapture, Matrices, ObjectSummary, PixelBuffers, PrimitiveRecord};
-use crate::raster::{RasterCounts, RasterTriangle, SampleBuffers};
+use self::storage::Storage;
+use crate::capture::{FrameCapture, Matrices, ObjectSummary};
+use crate::lighting::{Frequency, ShadeTerms};
 use crate::scene::{Object, Scene};
 use crate::settings::RenderSettings;
-use crate::shade::{Frequency, ShadeTerms};
-use crate::shader::HookKind;
 use crate::transform::{self, NamedMatrix};
 use crate::vertex::{self, VertexMatrices, VertexRecord};
 
@@ -154,10 +158,10 @@ pub fn render_reusing(
     if !problems.is_empty() {
         return Err(RenderError::Invalid(problems));
     }
-    if let Some(drawn) = student::with_student_curves(scene, settings.max_steps)? {
+    if let Some(drawn) = student_geometry::with_student_curves(scene, settings.max_steps)? {
         return render_reusing(&drawn, settings, spare);
     }
-    if let Some(drawn) = student::with_student_shadow(scene, settings.max_steps)? {
+    if let Some(drawn) = student_geometry::with_student_shadow(scene, settings.max_steps)? {
         return render_reusing(&drawn, settings, spare);
     }
     if scene.shadow.is_some() || !scene.figures.is_empty() {
@@ -191,7 +195,7 @@ fn render_stages(
     let (mut vertices, mut vertex_shading) = (storage.vertices, storage.vertex_shading);
     // The student's vertex shaders first: the table's rows take their gl_Position.
     let vertex_results =
-        shaders::vertex_shaders(scene, settings, &matrices, storage.shader_outputs)?;
+        student_shaders::vertex_shaders(scene, settings, &matrices, storage.shader_outputs)?;
     vertex_stage(
         scene,
         settings,
@@ -229,9 +233,9 @@ fn render_stages(
     )?;
     times.raster = t.elapsed();
     // Fragments a shader discards are taken out of the depth test, layer by layer.
-    let mut peeled = shaders::Peeled::default();
+    let mut peeled = student_shaders::Peeled::default();
     if let Some(results) = &vertex_results {
-        let frame = shaders::Frame {
+        let frame = student_shaders::Frame {
             scene,
             settings,
             matrices: &matrices,
@@ -241,7 +245,7 @@ fn render_stages(
             vertex_shading: &vertex_shading,
             face_shading: &face_shading,
         };
-        peeled = shaders::peel_discarded(&frame, results, &mut samples)?;
+        peeled = student_shaders::peel_discarded(&frame, results, &mut samples)?;
     }
 
     let t = Instant::now();
@@ -257,7 +261,8 @@ fn render_stages(
         face_shading: &face_shading,
     };
     let (mut pixels, covered) = resolve(&ctx, storage.pixels);
-    let shaders = shaders::record(&ctx, &matrices, vertex_results, &mut pixels.color, peeled)?;
+    let shaders =
+        student_shaders::record(&ctx, &matrices, vertex_results, &mut pixels.color, peeled)?;
     times.resolve = t.elapsed();
     // The next frame drawn into this storage clears only what this one covered.
     samples.covered.0 = Some(covered);
@@ -329,174 +334,6 @@ fn object_summaries(scene: &Scene) -> Vec<ObjectSummary> {
         .collect()
 }
 
-/// Rasterization with the depth test into the sample buffers (`spare`'s storage, cleared),
-/// and each primitive's counts: the samples its raster triangles covered and wrote.
-///
-/// # Errors
-/// A run-time error of an object's inside test (the student's `inside`).
-fn rasterize(
-    scene: &Scene,
-    settings: &RenderSettings,
-    spare: Option<SampleBuffers>,
-    triangles: &[RasterTriangle],
-    primitives: &mut [PrimitiveRecord],
-) -> Result<SampleBuffers, RenderError> {
-    use rayon::prelude::*;
-    let clear = settings.depth_test.clear_value();
-    let (width, height) = (settings.width, settings.height);
-    let mut samples = match spare {
-        Some(s) => s.cleared(width, height, settings.samples, clear),
-        None => SampleBuffers::new(width, height, settings.samples, clear),
-    };
-    let hooked;
-    let hooks = scene.objects.iter().any(|o| {
-        o.code.hooks.get(HookKind::Inside).is_some()
-            || o.code.hooks.get(HookKind::DepthTest).is_some()
-    });
-    let counts = if hooks {
-        hooked = rasterize_with_hooks(scene, settings, triangles, primitives, &mut samples)?;
-        &hooked[..]
-    } else {
-        samples.rasterize_all(triangles, settings.depth_test)
-    };
-    primitives.par_iter_mut().with_min_len(1024).for_each(|p| {
-        let own = &counts[p.triangles[0] as usize..p.triangles[1] as usize];
-        p.counts = own
-            .iter()
-            .fold(RasterCounts::default(), |a, c| RasterCounts {
-                covered: a.covered + c.covered,
-                written: a.written + c.written,
-            });
-    });
-    Ok(samples)
-}
-
-/// Rasterization where some objects carry the student's inside test or depth test: triangle
-/// after triangle, each sample of its box asked of the object's `inside` (in batches, see
-/// [`crate::shader::Hook::covers`]) or of pipelens' edge functions, each covered sample of the
-/// object's `depth_test` (see [`crate::shader::Hook::passes`]) or of the settings' comparison.
-fn rasterize_with_hooks(
-    scene: &Scene,
-    settings: &RenderSettings,
-    triangles: &[RasterTriangle],
-    primitives: &[PrimitiveRecord],
-    samples: &mut SampleBuffers,
-) -> Result<Vec<RasterCounts>, RenderError> {
-    let pixels = |v: i64| (v as f64 / crate::raster::ONE as f64) as f32;
-    let failed = |part: CodePart, object: &crate::scene::Object, error| RenderError::Code {
-        part,
-        object: object.name.clone(),
-        error: Box::new(error),
-        file: None,
-    };
-    // Each object's inside and depth tests, their calls allowed the frame's loop budget.
-    let budgeted = |o: &crate::scene::Object, kind| {
-        o.code.hooks.get(kind).map(|h| h.within(settings.max_steps))
-    };
-    let tests: Vec<_> = scene
-        .objects
-        .iter()
-        .map(|o| {
-            (
-                budgeted(o, HookKind::Inside),
-                budgeted(o, HookKind::DepthTest),
-            )
-        })
-        .collect();
-    let mut counts = Vec::with_capacity(triangles.len());
-    for (i, tri) in triangles.iter().enumerate() {
-        let Some((object, (inside_test, depth_test))) =
-            primitives.get(tri.primitive as usize).and_then(|p| {
-                Some((
-                    scene.objects.get(p.object as usize)?,
-                    &tests[p.object as usize],
-                ))
-            })
-        else {
-            counts.push(samples.rasterize_reference(tri, i as u32, settings.depth_test));
-            continue;
-        };
-        let inside = match inside_test {
-            Some(test) => {
-                let points: Vec<[f32; 2]> = samples
-                    .box_samples(tri)
-                    .iter()
-                    .map(|p| [pixels(p.x), pixels(p.y)])
-                    .collect();
-                let corners = tri.window.map(|c| {
-                    let f = crate::raster::snap_xy(c);
-                    [pixels(f.x), pixels(f.y)]
-                });
-                let answers = test.covers(&points, corners);
-                Some(answers.map_err(|e| failed(CodePart::Function(HookKind::Inside), object, e))?)
-            }
-            None => None,
-        };
-        let covers = |k: usize, p| inside.as_ref().map_or_else(|| tri.covers(p), |a| a[k]);
-        let Some(test) = depth_test else {
-            counts.push(samples.rasterize_where(tri, i as u32, settings.depth_test, covers));
-            continue;
-        };
-        let covered = samples.covered_samples(tri, covers);
-        let z: Vec<f32> = covered.iter().map(|&(_, z)| z).collect();
-        let stored: Vec<f32> = covered.iter().map(|&(s, _)| samples.depth[s]).collect();
-        let passes = test
-            .passes(&z, &stored)
-            .map_err(|e| failed(CodePart::Function(HookKind::DepthTest), object, e))?;
-        counts.push(samples.write_samples(&covered, &passes, i as u32));
-    }
-    Ok(counts)
-}
-
-/// The storage of a capture no longer needed, emptied, for the next frame to write into: a
-/// frame of a million triangles writes some 350 MB of records, and memory fresh from the system
-/// costs a page fault and a zeroing every 4 KiB (measured: half the frame) before a byte of it
-/// is written.
-#[derive(Default)]
-struct Storage {
-    vertices: Vec<VertexRecord>,
-    vertex_shading: Vec<ShadeTerms>,
-    face_shading: Vec<ShadeTerms>,
-    primitives: Vec<PrimitiveRecord>,
-    triangles: Vec<RasterTriangle>,
-    samples: Option<SampleBuffers>,
-    pixels: PixelBuffers,
-    /// The vertex shaders' output buffers, one per object that ran one.
-    shader_outputs: Vec<Vec<f32>>,
-}
-
-impl Storage {
-    fn of(spare: Option<FrameCapture>) -> Self {
-        let Some(c) = spare else {
-            return Self::default();
-        };
-        fn empty<T>(mut v: Vec<T>) -> Vec<T> {
-            v.clear();
-            v
-        }
-        Self {
-            vertices: empty(c.vertices),
-            vertex_shading: empty(c.vertex_shading),
-            face_shading: empty(c.face_shading),
-            // Written over in place, and resized, by the assembly.
-            primitives: c.primitives,
-            triangles: c.triangles,
-            samples: Some(c.samples),
-            pixels: c.pixels,
-            shader_outputs: c
-                .shaders
-                .map(|s| {
-                    s.vertex_results
-                        .into_iter()
-                        .flatten()
-                        .map(|r| r.values)
-                        .collect()
-                })
-                .unwrap_or_default(),
-        }
-    }
-}
-
 /// The vertex stage: every vertex of every object through every space, in order, with its
 /// lighting when shading is per vertex, appended to `vertices` and `vertex_shading`; an object
 /// with a vertex shader takes its clip positions from `shader_results`.
@@ -521,7 +358,7 @@ fn vertex_stage(
             lights: &scene.lights,
             eye: scene.camera.eye,
         };
-        let shader = shaders::shader_clip(scene, shader_results, i);
+        let shader = student_shaders::shader_clip(scene, shader_results, i);
         vertex::transform_object(
             object,
             i as u32,

@@ -72,11 +72,11 @@ pub struct Surface {
 /// lit with `r·v` or with a bump map.
 #[must_use]
 pub fn builtin_sources(
-    shading: crate::shade::Frequency,
-    reflection: crate::shade::Reflection,
+    shading: crate::lighting::Frequency,
+    reflection: crate::lighting::Reflection,
     surface: Surface,
 ) -> Option<(&'static str, &'static str)> {
-    use crate::shade::{Frequency, Reflection};
+    use crate::lighting::{Frequency, Reflection};
     let Surface {
         lit,
         detail,

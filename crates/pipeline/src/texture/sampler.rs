@@ -30,7 +30,7 @@ pub enum Mipmap {
     #[default]
     Linear,
     /// A ripmap level chosen for each axis of the footprint's bounding box (see
-    /// [`super::beyond`]).
+    /// [`super::ripmap_sat_ewa`]).
     Ripmap,
     /// The exact mean over the footprint's bounding box, from a summed-area table.
     SummedArea,

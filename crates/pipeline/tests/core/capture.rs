@@ -35,7 +35,7 @@ pub(crate) fn lit_textured_quad(size: u32, samples: Samples) -> (Scene, RenderSe
         width: size,
         height: size,
         samples,
-        shading: pipeline::shade::Frequency::Phong,
+        shading: pipeline::lighting::Frequency::Phong,
         ..RenderSettings::default()
     };
     (scene, settings)

@@ -13,7 +13,7 @@ use crate::texture::{grey, quad_mesh};
 /// The quad of [`textured_quad`] lit per pixel with a surface detail, facing the camera.
 fn detailed_quad(detail: pipeline::texture::SurfaceDetail) -> pipeline::capture::FrameCapture {
     use pipeline::light::Light;
-    use pipeline::shade::Frequency;
+    use pipeline::lighting::Frequency;
     let mesh = quad_mesh();
     let mut quad = Object::new("quad", mesh);
     quad.detail = Some(detail);
@@ -159,8 +159,8 @@ fn constant_faces(colors: [Vec3; 6]) -> pipeline::texture::CubeMap {
 #[test]
 fn cube_map_faces_and_a_mirror_sphere() {
     use pipeline::light::Light;
+    use pipeline::lighting::Frequency;
     use pipeline::mesh::BuiltinMesh;
-    use pipeline::shade::Frequency;
     use pipeline::texture::{CubeMap, Environment};
     // Direction → face and (s, t), by the table in the docs.
     assert_eq!(CubeMap::face_coords(Vec3::Z), (4, Vec2::new(0.5, 0.5)));

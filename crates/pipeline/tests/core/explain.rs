@@ -117,8 +117,8 @@ fn the_fill_rule_decides_samples_on_an_edge() {
 #[test]
 fn the_derivation_arrives_at_the_colour_the_render_made() {
     use pipeline::light::Light;
+    use pipeline::lighting::Frequency;
     use pipeline::raster::Samples;
-    use pipeline::shade::Frequency;
     let (mut scene, base) = crate::capture::lit_textured_quad(48, Samples::X1);
     scene.lights.insert(
         0,

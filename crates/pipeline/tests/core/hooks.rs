@@ -427,7 +427,7 @@ fn a_bezier_patch_in_glsl_is_pipelens_surface() {
     object.builtin = Some(patch);
     let (mut scene, mut settings) = pixel_scene(64, 48, &[]);
     settings.depth_test = pipeline::raster::DepthTest::Less;
-    settings.shading = pipeline::shade::Frequency::Phong;
+    settings.shading = pipeline::lighting::Frequency::Phong;
     scene.lights = vec![pipeline::light::Light::Directional {
         direction: Vec3::new(-0.3, -1.0, -0.5),
         intensity: Vec3::ONE,

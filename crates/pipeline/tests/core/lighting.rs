@@ -3,10 +3,10 @@
 use glam::Vec3;
 use pipeline::camera::{Camera, Projection};
 use pipeline::light::{Light, Material};
+use pipeline::lighting::{self, Frequency, Reflection, attenuation, spot_factor};
 use pipeline::mesh::BuiltinMesh;
 use pipeline::scene::{Object, Scene};
 use pipeline::settings::RenderSettings;
-use pipeline::shade::{self, Frequency, Reflection, attenuation, spot_factor};
 
 use crate::support::render;
 
@@ -37,7 +37,7 @@ fn one_point_each_term_by_hand() {
         },
     ];
     let eye = Vec3::new(0.0, 0.0, 5.0);
-    let blinn = shade::shade(
+    let blinn = lighting::shade(
         Vec3::ZERO,
         Vec3::Z,
         eye,
@@ -64,7 +64,7 @@ fn one_point_each_term_by_hand() {
         "sum",
     );
     // Phong: r = 2(n·l)n − l = (0, −0.6, 0.8), r·v = 0.8.
-    let phong = shade::shade(
+    let phong = lighting::shade(
         Vec3::ZERO,
         Vec3::Z,
         eye,
@@ -87,7 +87,7 @@ fn one_point_each_term_by_hand() {
         "the diffuse term does not depend on the model",
     );
     // The surface colour multiplies k_a and k_d, not k_s.
-    let red = shade::shade(
+    let red = lighting::shade(
         Vec3::ZERO,
         Vec3::Z,
         eye,
@@ -112,7 +112,7 @@ fn a_light_behind_the_surface_gives_no_diffuse_and_no_highlight() {
         intensity: Vec3::ONE,
         attenuation: Vec3::X,
     }];
-    let t = shade::shade(
+    let t = lighting::shade(
         Vec3::ZERO,
         Vec3::Z,
         Vec3::new(0.0, 0.0, 5.0),
@@ -161,7 +161,7 @@ fn attenuation_and_the_spot_cone_by_hand() {
         intensity: Vec3::ONE,
         attenuation: Vec3::Z,
     };
-    let t = shade::shade(
+    let t = lighting::shade(
         Vec3::ZERO,
         Vec3::Y,
         Vec3::new(0.0, 5.0, 0.0),

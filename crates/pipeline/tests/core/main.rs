@@ -1,7 +1,6 @@
 //! Tests of the core pipeline against independent references: the OpenGL reference pages, glam,
 //! the course notes' formulas and values computed by hand.
 
-mod beyond;
 mod bezier;
 mod builtin_list;
 mod camera;
@@ -15,12 +14,13 @@ mod glsl_rules;
 mod hierarchy;
 mod hooks;
 mod implicit;
+mod lighting;
 mod normals;
 mod parameters;
 mod properties;
 mod raster;
+mod ripmap_sat_ewa;
 mod sampling;
-mod shade;
 mod shader;
 mod shader_frame;
 mod support;

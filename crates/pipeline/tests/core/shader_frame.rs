@@ -8,11 +8,11 @@ use glam::Vec3;
 use pipeline::camera::{Camera, Projection};
 use pipeline::capture::FrameCapture;
 use pipeline::light::{Light, Material};
+use pipeline::lighting::{Frequency, Reflection};
 use pipeline::mesh::BuiltinMesh;
 use pipeline::raster::Samples;
 use pipeline::scene::{ColorSource, Object, ObjectShader, Scene};
 use pipeline::settings::RenderSettings;
-use pipeline::shade::{Frequency, Reflection};
 use pipeline::shader::{Step, Value};
 use pipeline::texture::{Mipmap, Sampler, Texture};
 

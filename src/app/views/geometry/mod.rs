@@ -253,7 +253,7 @@ impl GeometryView {
         };
         let top = card.map_or(rect.top(), |c| c.bottom()) + 8.0;
         let legend = cards::legend(&painter, (rect, top, seen), lang, stride, &shown);
-        let narration = super::room::narration_card(ui.ctx()).unwrap_or(Rect::NOTHING);
+        let narration = super::card_placement::narration_card(ui.ctx()).unwrap_or(Rect::NOTHING);
         let avoid = [
             seen,
             card.unwrap_or(Rect::NOTHING),
@@ -405,13 +405,13 @@ impl GeometryView {
 /// Where the subject's sphere (a square on the narrower side of `rect`) is framed clear of the
 /// narration card: the rect the orbiting camera's viewport maps to.
 fn clear_of_card(ctx: &egui::Context, rect: Rect) -> Rect {
-    let card = super::room::narration_card(ctx);
+    let card = super::card_placement::narration_card(ctx);
     let square = Rect::from_center_size(
         (rect.size() / 2.0).to_pos2(),
         Vec2::splat(rect.width().min(rect.height())),
     );
-    let frame = super::room::place(rect, rect.size(), square, card);
-    super::room::report_kept(ctx, frame.area() / rect.area());
+    let frame = super::card_placement::place(rect, rect.size(), square, card);
+    super::card_placement::report_kept(ctx, frame.area() / rect.area());
     frame
 }
 

@@ -5,9 +5,9 @@
 use egui::{DragValue, RichText, Slider, Ui};
 use glam::Vec3;
 use pipeline::camera::{Projection, ProjectionKind};
+use pipeline::lighting::{Frequency, Reflection};
 use pipeline::raster::{CullMode, DepthTest, Samples};
 use pipeline::settings::MAX_VIEWPORT_SIDE;
-use pipeline::shade::{Frequency, Reflection};
 
 use crate::app::command::SceneCommand;
 use crate::app::session::{Command, Session};

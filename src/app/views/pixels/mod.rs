@@ -1,23 +1,25 @@
 //! A pixel buffer as an image: zoom and pan, crisp pixels, the pixel grid, sample points and
 //! overlays when zoomed in (see [`draw`]), values under the cursor, a click to inspect a pixel;
 //! under the depth buffer the curve of window depth against distance, under a texturing buffer
-//! the mip pyramid (see [`extras`]).
+//! the mip pyramid (see [`depth_and_mips`]); the pixel under the mouse — its values, the status
+//! line, a click to inspect it — in [`hover`].
 
+mod depth_and_mips;
 mod draw;
-mod extras;
+mod hover;
 mod texture;
 mod viewport;
 
 pub use draw::draw_shape;
 
-use egui::{Color32, Pos2, Rect, RichText, Sense, Ui, Vec2};
+use egui::{Color32, Pos2, Rect, Sense, Ui, Vec2};
 use pipeline::buffers::BufferKind;
 use pipeline::capture::FrameCapture;
 use pipeline::overlay::OverlayKind;
 
-use crate::app::command::{SelectionCommand, ViewCommand};
+use crate::app::command::ViewCommand;
 use crate::app::session::{Command, Selection, Session};
-use crate::vocabulary::{Lang, buffer_name, num};
+use crate::vocabulary::{Lang, buffer_name};
 use viewport::{ImageViewport, layout};
 
 /// Zoom and pan of the pixel view, its texture caches, and where it drew the picture.
@@ -29,7 +31,7 @@ pub struct PixelView {
     /// The textures of the buffer shown: the lesson's pixels, or finer.
     textures: texture::Textures,
     /// The mip levels' textures.
-    pyramid: extras::Pyramid,
+    pyramid: depth_and_mips::Pyramid,
     /// Show the mip pyramid under a texturing buffer.
     show_pyramid: bool,
     /// The inspected pixel's record, per capture and pixel.
@@ -56,7 +58,7 @@ impl Default for PixelView {
             zoom: None,
             centre: None,
             textures: texture::Textures::default(),
-            pyramid: extras::Pyramid::default(),
+            pyramid: depth_and_mips::Pyramid::default(),
             show_pyramid: true,
             record: None,
             picture: Vec::new(),
@@ -184,13 +186,13 @@ impl PixelView {
         let sel = &session.selection;
         let lang = session.lang;
         let mut cmds = Vec::new();
-        let card = crate::app::views::room::narration_card(ui.ctx());
+        let card = crate::app::views::card_placement::narration_card(ui.ctx());
         let full = ui.available_rect_before_wrap();
         let offered = session.buffers.contains(&sel.buffer) || !sel.buffer.is_texturing();
         let wants_extra = sel.buffer == BufferKind::Depth
             || (sel.buffer.is_texturing() && self.show_pyramid && !capture.textures.is_empty());
         let (rect, extra) = layout(full, capture, wants_extra);
-        let extra = extra.map(|e| crate::app::views::room::right_of(e, card));
+        let extra = extra.map(|e| crate::app::views::card_placement::right_of(e, card));
         let response = ui.allocate_rect(rect, Sense::click_and_drag());
         self.picture.clear();
         response.widget_info(|| {
@@ -259,7 +261,7 @@ impl PixelView {
         if sel.buffer == BufferKind::MipLevel {
             draw::draw_mip_legend(&painter, rect, lang);
         }
-        status_message(&painter, rect, capture, sel.buffer, offered, lang);
+        hover::status_message(&painter, rect, capture, sel.buffer, offered, lang);
         // At the top, clear of the narration card in the bottom-left.
         let top = (
             rect.center_top() + egui::Vec2::new(0.0, 8.0),
@@ -270,7 +272,7 @@ impl PixelView {
             self.picture.push(below);
             self.subject.push(below);
             if sel.buffer == BufferKind::Depth {
-                extras::depth_curve(
+                depth_and_mips::depth_curve(
                     ui,
                     below,
                     capture,
@@ -281,7 +283,7 @@ impl PixelView {
                 self.pyramid.ui(ui, below, capture, record.as_ref(), lang);
             }
         }
-        cmds.extend(hover_and_click(&response, &view, capture, lang));
+        cmds.extend(hover::hover_and_click(&response, &view, capture, lang));
         cmds
     }
 
@@ -408,18 +410,18 @@ impl PixelView {
         let size = Vec2::new(capture.width() as f32, capture.height() as f32);
         // Until the user zooms or drags: as large as the view allows with the covered pixels
         // and the inspected one clear of the narration card.
-        let card = crate::app::views::room::narration_card(ui.ctx());
+        let card = crate::app::views::card_placement::narration_card(ui.ctx());
         let subject = self.subject(session, capture);
         // A phone's view is narrow and tall: the picture covers it (the sides cropped, the
         // subject whole and in the middle; a pinch shows the rest).
         let placed = if crate::app::window_size::is_compact(ui.ctx()) {
             viewport::cover(rect, size, subject)
         } else {
-            crate::app::views::room::place(rect, size, subject, card)
+            crate::app::views::card_placement::place(rect, size, subject, card)
         };
         let fit = placed.width() / size.x;
         self.fitted = placed.size();
-        crate::app::views::room::report_kept(
+        crate::app::views::card_placement::report_kept(
             ui.ctx(),
             placed.area() / crate::app::views::fit_rect(rect, size.x / size.y).area(),
         );
@@ -450,127 +452,4 @@ impl PixelView {
             size,
         }
     }
-}
-
-/// The values of one pixel, for the hover tooltip.
-fn pixel_tooltip(ui: &mut Ui, capture: &FrameCapture, x: u32, y: u32, lang: Lang) {
-    let i = capture.grid().index(x, y);
-    let px = &capture.pixels;
-    ui.label(RichText::new(format!("{} ({x}, {y})", lang.tr("pixel", "像素"))).strong());
-    ui.label(format!(
-        "{}: {}/{}",
-        lang.tr("coverage", "覆盖"),
-        px.coverage[i],
-        capture.settings.samples.count()
-    ));
-    ui.label(format!(
-        "{} z_w: {} ({} {})",
-        lang.tr("depth", "深度"),
-        num(px.depth[i]),
-        lang.tr("eye distance", "相机距离"),
-        num(capture.eye_depth(px.depth[i]))
-    ));
-    if let Some(bary) = capture.barycentrics(i) {
-        let (b, a) = (bary.perspective, bary.affine);
-        ui.label(format!(
-            "{}: {}",
-            lang.tr("primitive", "图元"),
-            px.primitive[i]
-        ));
-        ui.label(format!(
-            "b ({}) = ({}, {}, {})",
-            lang.tr("perspective-correct", "透视校正"),
-            num(b[0]),
-            num(b[1]),
-            num(b[2])
-        ));
-        ui.label(format!(
-            "λ ({}) = ({}, {}, {})",
-            lang.tr("affine", "仿射"),
-            num(a[0]),
-            num(a[1]),
-            num(a[2])
-        ));
-    }
-    let c = px.color[i];
-    ui.label(format!(
-        "RGB = ({}, {}, {})",
-        num(c[0]),
-        num(c[1]),
-        num(c[2])
-    ));
-    ui.label(RichText::new(lang.tr("click to inspect", "单击查看详情")).weak());
-}
-
-/// Why the image shows nothing (no texture in the scene), or that the buffer is on its way.
-fn status_message(
-    painter: &egui::Painter,
-    rect: Rect,
-    capture: &FrameCapture,
-    buffer: BufferKind,
-    offered: bool,
-    lang: Lang,
-) {
-    let text = if !offered {
-        lang.tr(
-            "No object of this scene is textured: there is no texture lookup to show.",
-            "此场景中没有物体带纹理：没有可显示的纹理查询。",
-        )
-    } else if !capture.settings.capture.keeps(buffer) {
-        // The capture shown kept only what the previous view needed; the render that keeps
-        // this buffer is under way.
-        lang.tr("rendering this buffer…", "正在渲染此缓冲…")
-    } else {
-        return;
-    };
-    crate::app::views::label_with_background(
-        painter,
-        rect.center(),
-        egui::Align2::CENTER_CENTER,
-        text,
-        &crate::app::views::picture_font(painter.ctx(), 18.0),
-        Color32::from_gray(235),
-    );
-}
-
-/// Hover: the values of the pixel under the cursor; click: inspect it, and select the vertex of
-/// its triangle nearest the click (its vertex-table row).
-fn hover_and_click(
-    response: &egui::Response,
-    view: &ImageViewport,
-    capture: &FrameCapture,
-    lang: Lang,
-) -> Vec<Command> {
-    let mut cmds = Vec::new();
-    let Some(pos) = response.hover_pos() else {
-        return cmds;
-    };
-    let Some((c, y)) = view.window_pixel(pos, capture) else {
-        return cmds;
-    };
-    response
-        .clone()
-        .on_hover_ui_at_pointer(|ui| pixel_tooltip(ui, capture, c, y, lang));
-    if response.clicked() {
-        cmds.push(Command::Selection(SelectionCommand::SelectPixel(Some((
-            c, y,
-        )))));
-        let i = capture.grid().index(c, y);
-        if let Some(prim) = capture.primitives.get(capture.pixels.primitive[i] as usize) {
-            let click = view.to_image(pos);
-            let nearest = prim.vertices.iter().copied().min_by(|a, b| {
-                let d = |r: u32| {
-                    capture.vertices[r as usize]
-                        .window
-                        .map_or(f32::INFINITY, |w| {
-                            let p = capture.window_to_image(w);
-                            (Vec2::new(p[0], p[1]) - click).length()
-                        })
-                };
-                d(*a).total_cmp(&d(*b))
-            });
-            cmds.push(Command::Selection(SelectionCommand::SelectVertex(nearest)));
-        }
-    }
-    cmds
 }

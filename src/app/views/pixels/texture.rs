@@ -1,6 +1,6 @@
 //! The textures of the buffer shown: the lesson's own pixels, or, on a stage about the shading
 //! and until the view is zoomed in to the pixel grid, the same buffer rendered at the view's
-//! resolution (`app::display`), drawn with the lesson capture's gain so that the two agree.
+//! resolution (`app::view_resolution`), drawn with the lesson capture's gain so that the two agree.
 
 use egui::TextureOptions;
 use pipeline::buffers::BufferKind;
@@ -15,7 +15,7 @@ pub(super) const GRID_ZOOM: f32 = 6.0;
 #[derive(Default)]
 pub(super) struct Textures {
     lesson: crate::app::views::BufferTexture,
-    fine: crate::app::views::BufferTexture,
+    at_view_size: crate::app::views::BufferTexture,
     gain: crate::app::views::TermGain,
 }
 
@@ -34,14 +34,14 @@ impl Textures {
         let gain = self
             .gain
             .get((generation, sel.buffer), || capture.term_gain(sel.buffer));
-        if let Some(fine) = session.display.capture.as_ref().filter(|d| {
+        if let Some(fine) = session.view_resolution.capture.as_ref().filter(|d| {
             zoom < GRID_ZOOM
-                && crate::app::display::wanted(sel.stage, sel.buffer)
+                && crate::app::view_resolution::wanted(sel.stage, sel.buffer)
                 && d.settings
                     .capture
                     .covers(pipeline::buffers::Capture::showing([sel.buffer]))
         }) {
-            let texture = self.fine.get(
+            let texture = self.at_view_size.get(
                 ctx,
                 "pixel-view-fine",
                 (generation, sel.buffer, gain),

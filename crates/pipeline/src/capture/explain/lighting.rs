@@ -1,13 +1,13 @@
 //! The lighting of the derivation, by the shading frequency: Gouraud's vertex colours
 //! interpolated, flat shading's one colour per face, or Phong shading evaluated at the pixel
-//! light by light with `shade::light_term`, as the render did it.
+//! light by light with `lighting::light_term`, as the render did it.
 
 use glam::Vec3;
 
 use super::{LightStep, LightingStep, Lines, Owner, Remark, Section, n, v3};
 use crate::capture::FrameCapture;
 use crate::light::{Light, Material};
-use crate::shade::{self, Frequency, LightTerm, Reflection, ShadeTerms};
+use crate::lighting::{self, Frequency, LightTerm, Reflection, ShadeTerms};
 
 impl FrameCapture {
     /// The lighting at the owner's centre by the shading frequency; `None` when unlit.
@@ -152,7 +152,7 @@ impl FrameCapture {
                 });
                 continue;
             }
-            let Some(t) = shade::light_term(
+            let Some(t) = lighting::light_term(
                 light,
                 o.position,
                 out.normal,

@@ -5,7 +5,7 @@
 //! lighting light by light, and the final colour.
 //!
 //! Everything is computed here, in the core, from what the capture recorded and with the same
-//! functions the render used (`RasterTriangle::uv_at`, `Texture::sample`, `shade::light_term`):
+//! functions the render used (`RasterTriangle::uv_at`, `Texture::sample`, `lighting::light_term`):
 //! a view shows the lines, it computes nothing.
 
 mod geometry;
@@ -17,8 +17,8 @@ use serde::Serialize;
 
 use super::{EdgeTest, FrameCapture, ObjectSummary, PrimitiveRecord};
 use crate::light::Light;
+use crate::lighting::{Frequency, LightTerm, Reflection, ShadeTerms};
 use crate::raster::{ONE, RasterTriangle};
-use crate::shade::{Frequency, LightTerm, Reflection, ShadeTerms};
 use crate::texture::BilinearTaps;
 use crate::vertex::VertexRecord;
 

@@ -68,8 +68,8 @@ pub(in crate::render) struct Frame<'a> {
     pub(in crate::render) triangles: &'a [crate::raster::RasterTriangle],
     pub(in crate::render) primitives: &'a [crate::capture::PrimitiveRecord],
     pub(in crate::render) vertices: &'a [VertexRecord],
-    pub(in crate::render) vertex_shading: &'a [crate::shade::ShadeTerms],
-    pub(in crate::render) face_shading: &'a [crate::shade::ShadeTerms],
+    pub(in crate::render) vertex_shading: &'a [crate::lighting::ShadeTerms],
+    pub(in crate::render) face_shading: &'a [crate::lighting::ShadeTerms],
 }
 
 /// The uniforms object `i` of `scene` is drawn with.

@@ -1,0 +1,134 @@
+//! The pixel under the mouse: its values in a tooltip, what the status line says there, and a
+//! click that inspects it.
+
+use egui::{Color32, Rect, RichText, Ui, Vec2};
+use pipeline::buffers::BufferKind;
+use pipeline::capture::FrameCapture;
+
+use super::viewport::ImageViewport;
+use crate::app::command::SelectionCommand;
+use crate::app::session::Command;
+use crate::vocabulary::{Lang, num};
+
+/// The values of one pixel, for the hover tooltip.
+fn pixel_tooltip(ui: &mut Ui, capture: &FrameCapture, x: u32, y: u32, lang: Lang) {
+    let i = capture.grid().index(x, y);
+    let px = &capture.pixels;
+    ui.label(RichText::new(format!("{} ({x}, {y})", lang.tr("pixel", "像素"))).strong());
+    ui.label(format!(
+        "{}: {}/{}",
+        lang.tr("coverage", "覆盖"),
+        px.coverage[i],
+        capture.settings.samples.count()
+    ));
+    ui.label(format!(
+        "{} z_w: {} ({} {})",
+        lang.tr("depth", "深度"),
+        num(px.depth[i]),
+        lang.tr("eye distance", "相机距离"),
+        num(capture.eye_depth(px.depth[i]))
+    ));
+    if let Some(bary) = capture.barycentrics(i) {
+        let (b, a) = (bary.perspective, bary.affine);
+        ui.label(format!(
+            "{}: {}",
+            lang.tr("primitive", "图元"),
+            px.primitive[i]
+        ));
+        ui.label(format!(
+            "b ({}) = ({}, {}, {})",
+            lang.tr("perspective-correct", "透视校正"),
+            num(b[0]),
+            num(b[1]),
+            num(b[2])
+        ));
+        ui.label(format!(
+            "λ ({}) = ({}, {}, {})",
+            lang.tr("affine", "仿射"),
+            num(a[0]),
+            num(a[1]),
+            num(a[2])
+        ));
+    }
+    let c = px.color[i];
+    ui.label(format!(
+        "RGB = ({}, {}, {})",
+        num(c[0]),
+        num(c[1]),
+        num(c[2])
+    ));
+    ui.label(RichText::new(lang.tr("click to inspect", "单击查看详情")).weak());
+}
+
+/// Why the image shows nothing (no texture in the scene), or that the buffer is on its way.
+pub(super) fn status_message(
+    painter: &egui::Painter,
+    rect: Rect,
+    capture: &FrameCapture,
+    buffer: BufferKind,
+    offered: bool,
+    lang: Lang,
+) {
+    let text = if !offered {
+        lang.tr(
+            "No object of this scene is textured: there is no texture lookup to show.",
+            "此场景中没有物体带纹理：没有可显示的纹理查询。",
+        )
+    } else if !capture.settings.capture.keeps(buffer) {
+        // The capture shown kept only what the previous view needed; the render that keeps
+        // this buffer is under way.
+        lang.tr("rendering this buffer…", "正在渲染此缓冲…")
+    } else {
+        return;
+    };
+    crate::app::views::label_with_background(
+        painter,
+        rect.center(),
+        egui::Align2::CENTER_CENTER,
+        text,
+        &crate::app::views::picture_font(painter.ctx(), 18.0),
+        Color32::from_gray(235),
+    );
+}
+
+/// Hover: the values of the pixel under the cursor; click: inspect it, and select the vertex of
+/// its triangle nearest the click (its vertex-table row).
+pub(super) fn hover_and_click(
+    response: &egui::Response,
+    view: &ImageViewport,
+    capture: &FrameCapture,
+    lang: Lang,
+) -> Vec<Command> {
+    let mut cmds = Vec::new();
+    let Some(pos) = response.hover_pos() else {
+        return cmds;
+    };
+    let Some((c, y)) = view.window_pixel(pos, capture) else {
+        return cmds;
+    };
+    response
+        .clone()
+        .on_hover_ui_at_pointer(|ui| pixel_tooltip(ui, capture, c, y, lang));
+    if response.clicked() {
+        cmds.push(Command::Selection(SelectionCommand::SelectPixel(Some((
+            c, y,
+        )))));
+        let i = capture.grid().index(c, y);
+        if let Some(prim) = capture.primitives.get(capture.pixels.primitive[i] as usize) {
+            let click = view.to_image(pos);
+            let nearest = prim.vertices.iter().copied().min_by(|a, b| {
+                let d = |r: u32| {
+                    capture.vertices[r as usize]
+                        .window
+                        .map_or(f32::INFINITY, |w| {
+                            let p = capture.window_to_image(w);
+                            (Vec2::new(p[0], p[1]) - click).length()
+                        })
+                };
+                d(*a).total_cmp(&d(*b))
+            });
+            cmds.push(Command::Selection(SelectionCommand::SelectVertex(nearest)));
+        }
+    }
+    cmds
+}

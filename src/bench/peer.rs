@@ -1,0 +1,246 @@
+//! `pipelens bench --peer-python`: pipelens and Mesa's llvmpipe (through the peer's `render.py`)
+//! drawing the same OBJ meshes the same way, in alternating rounds, their medians side by side.
+
+use glam::Vec3;
+use pipeline::buffers::Capture;
+use pipeline::camera::{Camera, Projection};
+use pipeline::lighting::Frequency;
+use pipeline::raster::Samples;
+use pipeline::scene::{Object, Scene};
+use pipeline::settings::RenderSettings;
+
+use super::{BenchScene, measure, median};
+
+/// Where the reference renderer is: Mesa's llvmpipe through `render.py` of
+/// `../shared/peers/llvmpipe/` (see its README for the set-up).
+#[derive(Clone, Debug)]
+pub struct Peer {
+    /// The Python that has moderngl (the peer's venv).
+    pub python: std::path::PathBuf,
+    /// `render.py`.
+    pub script: std::path::PathBuf,
+}
+
+/// An OBJ scene as the peer draws it with `--fit`: the mesh centred and scaled into the unit
+/// sphere, eye (0, 0, 3) looking at the origin, fovy 45°, near 0.1, far 50, a white point light
+/// at (4, 4, 4) with no attenuation, Blinn-Phong per pixel with k_a 0.05, k_d 0.7 (or the texel,
+/// bilinear), k_s 0.5, shininess 64.
+///
+/// # Errors
+/// When the mesh or the texture cannot be loaded.
+pub fn obj_scene(
+    mesh: &std::path::Path,
+    texture: Option<&std::path::Path>,
+) -> anyhow::Result<BenchScene> {
+    use pipeline::light::{Light, Material};
+    use pipeline::scene::ColorSource;
+    let mut m = pipeline::mesh::Mesh::load_obj(mesh)?;
+    // As the peer's `--fit`: centred and scaled into the unit sphere.
+    m.fit_unit_sphere();
+    let name = mesh
+        .file_name()
+        .map_or_else(|| "mesh".to_owned(), |n| n.to_string_lossy().into_owned());
+    let mut object = Object::new(&name, m);
+    object.color = ColorSource::Uniform(Vec3::ONE);
+    object.material = Material {
+        ka: Vec3::splat(0.05),
+        kd: Vec3::splat(0.7),
+        ks: Vec3::splat(0.5),
+        shininess: 64.0,
+    };
+    if let Some(t) = texture {
+        object.texture = Some(std::sync::Arc::new(pipeline::texture::Texture::load(t)?));
+    }
+    Ok(BenchScene {
+        name: format!(
+            "{name}{}",
+            if texture.is_some() { " + texture" } else { "" }
+        ),
+        scene: Scene {
+            objects: vec![object],
+            camera: Camera {
+                eye: Vec3::new(0.0, 0.0, 3.0),
+                at: Vec3::ZERO,
+                up: Vec3::Y,
+            },
+            projection: Projection::Perspective {
+                fovy_deg: 45.0,
+                aspect: None,
+                near: 0.1,
+                far: 50.0,
+            },
+            lights: vec![
+                Light::Ambient {
+                    intensity: Vec3::ONE,
+                },
+                Light::Point {
+                    position: Vec3::splat(4.0),
+                    intensity: Vec3::ONE,
+                    attenuation: Vec3::X,
+                },
+            ],
+            ..Scene::default()
+        },
+    })
+}
+
+/// The peer's median frame time (ms) for `mesh` at `size` with `samples` and `threads`.
+fn peer_frame_ms(
+    peer: &Peer,
+    mesh: &std::path::Path,
+    texture: Option<&std::path::Path>,
+    size: (u32, u32),
+    samples: u32,
+    threads: usize,
+    frames: usize,
+) -> anyhow::Result<f64> {
+    use anyhow::Context;
+    let mut cmd = std::process::Command::new(&peer.python);
+    cmd.arg(&peer.script)
+        .arg(mesh)
+        .args(["--fit", "--bench", &frames.to_string()])
+        .args(["--size", &format!("{}x{}", size.0, size.1)])
+        .args([
+            "--samples",
+            &if samples > 1 { samples } else { 0 }.to_string(),
+        ])
+        .env("LP_NUM_THREADS", threads.to_string());
+    if let Some(t) = texture {
+        cmd.arg("--texture").arg(t).args(["--filter", "linear"]);
+    }
+    let out = cmd.output().context("running the llvmpipe peer")?;
+    anyhow::ensure!(
+        out.status.success(),
+        "the peer failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    let line = text
+        .lines()
+        .rev()
+        .find(|l| l.contains("median_ms"))
+        .unwrap_or("");
+    let v: serde_json::Value = serde_json::from_str(line).context("reading the peer's output")?;
+    v["median_ms"]
+        .as_f64()
+        .context("the peer printed no median")
+}
+
+/// The bunny and the textured Spot under `data`, those that are present.
+fn peer_meshes(
+    data: &std::path::Path,
+) -> anyhow::Result<Vec<(std::path::PathBuf, Option<std::path::PathBuf>)>> {
+    let spot = data.join("models/spot");
+    let meshes: Vec<_> = [
+        (data.join("models/stanford-bunny.obj"), None),
+        (
+            spot.join("spot_triangulated_good.obj"),
+            Some(spot.join("spot_texture.png")),
+        ),
+    ]
+    .into_iter()
+    .filter(|(m, _)| m.is_file())
+    .collect();
+    anyhow::ensure!(
+        !meshes.is_empty(),
+        "no bunny or Spot under {}",
+        data.display()
+    );
+    Ok(meshes)
+}
+
+/// Runs pipelens and the peer on the shared data's meshes (when present), alternately, `rounds`
+/// times each, and prints both medians and their ratio per scene, size, samples and threads.
+///
+/// # Errors
+/// When a scene cannot be loaded or rendered, or the peer fails.
+pub fn run_against_peer(
+    peer: &Peer,
+    data: &std::path::Path,
+    quick: bool,
+    out: &mut dyn std::io::Write,
+) -> anyhow::Result<()> {
+    let meshes = peer_meshes(data)?;
+    let (frames, rounds) = if quick { (3, 1) } else { (15, 3) };
+    writeln!(
+        out,
+        "\npipelens against llvmpipe — medians of {rounds} alternating rounds of {frames} frames; \
+         pipelens with every buffer captured (all) and with the colour only (colour)\n"
+    )?;
+    writeln!(
+        out,
+        "{:<30} {:>10} {:>7} {:>7} {:>9} {:>9} {:>12} {:>9} {:>9}",
+        "scene",
+        "size",
+        "samples",
+        "threads",
+        "all ms",
+        "colour ms",
+        "llvmpipe ms",
+        "all ×",
+        "colour ×"
+    )?;
+    let sizes: &[(u32, u32)] = if quick {
+        &[(1280, 720)]
+    } else {
+        &[(960, 540), (1280, 720), (1920, 1080)]
+    };
+    for (mesh, texture) in &meshes {
+        let bench = obj_scene(mesh, texture.as_deref())?;
+        for &size in sizes {
+            for samples in [Samples::X1, Samples::X4] {
+                for threads in [1usize, 2] {
+                    let settings = RenderSettings {
+                        width: size.0,
+                        height: size.1,
+                        samples,
+                        shading: Frequency::Phong,
+                        sampler: pipeline::texture::Sampler {
+                            mipmap: pipeline::texture::Mipmap::None,
+                            ..pipeline::texture::Sampler::default()
+                        },
+                        ..RenderSettings::default()
+                    };
+                    let pool = rayon::ThreadPoolBuilder::new()
+                        .num_threads(threads)
+                        .build()?;
+                    let colour = RenderSettings {
+                        capture: Capture::COLOR,
+                        ..settings
+                    };
+                    let (mut ours, mut shown, mut theirs) = (Vec::new(), Vec::new(), Vec::new());
+                    for _ in 0..rounds {
+                        let t = pool.install(|| measure(&bench.scene, &settings, frames))?;
+                        ours.push(t.total().as_secs_f64() * 1e3);
+                        let t = pool.install(|| measure(&bench.scene, &colour, frames))?;
+                        shown.push(t.total().as_secs_f64() * 1e3);
+                        theirs.push(peer_frame_ms(
+                            peer,
+                            mesh,
+                            texture.as_deref(),
+                            size,
+                            samples.count() as u32,
+                            threads,
+                            frames,
+                        )?);
+                    }
+                    let (a, c, b) = (median(&mut ours), median(&mut shown), median(&mut theirs));
+                    writeln!(
+                        out,
+                        "{:<30} {:>10} {:>7} {:>7} {:>9.2} {:>9.2} {:>12.2} {:>8.2}× {:>8.2}×",
+                        bench.name,
+                        format!("{}×{}", size.0, size.1),
+                        samples.count(),
+                        threads,
+                        a,
+                        c,
+                        b,
+                        a / b,
+                        c / b
+                    )?;
+                }
+            }
+        }
+    }
+    Ok(())
+}
