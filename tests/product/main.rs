@@ -6,6 +6,7 @@ mod architecture;
 mod authoring;
 mod check;
 mod cli;
+mod cli_export;
 mod corpus;
 mod course;
 mod edit;
