@@ -346,6 +346,24 @@ impl Scene {
         }
     }
 
+    /// The scene with its figures and planar shadow turned into plain objects (see
+    /// [`Self::drawn_objects`]), and the figures' traversal; `None` when it has neither, so
+    /// that the same pipeline draws them all.
+    #[must_use]
+    pub fn expanded(&self) -> Option<(Self, Vec<hierarchy::Step>)> {
+        if self.shadow.is_none() && self.figures.is_empty() {
+            return None;
+        }
+        let (objects, steps) = self.drawn_objects();
+        let scene = Self {
+            objects,
+            shadow: None,
+            figures: Vec::new(),
+            ..self.clone()
+        };
+        Some((scene, steps))
+    }
+
     /// The objects drawn and the figures' traversal: the scene's own objects, then every part
     /// of every figure (depth-first, with a matrix stack), then (with a planar shadow) the shadow
     /// pass, one unlit object `shadow of …` per object that casts one.

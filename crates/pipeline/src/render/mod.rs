@@ -164,15 +164,7 @@ pub fn render_reusing(
     if let Some(drawn) = student_geometry::with_student_shadow(scene, settings.max_steps)? {
         return render_reusing(&drawn, settings, spare);
     }
-    if scene.shadow.is_some() || !scene.figures.is_empty() {
-        // Figures and the shadow pass become plain objects; the same pipeline draws them all.
-        let (objects, steps) = scene.drawn_objects();
-        let expanded = Scene {
-            objects,
-            shadow: None,
-            figures: Vec::new(),
-            ..scene.clone()
-        };
+    if let Some((expanded, steps)) = scene.expanded() {
         return render_stages(&expanded, settings, spare).map(|(mut c, t)| {
             c.hierarchy = steps;
             (c, t)

@@ -238,13 +238,8 @@ pub fn trace_vertex(
         return Ok(None);
     }
     let expanded;
-    let scene = if scene.shadow.is_some() || !scene.figures.is_empty() {
-        expanded = Scene {
-            objects: scene.drawn_objects().0,
-            shadow: None,
-            figures: Vec::new(),
-            ..scene.clone()
-        };
+    let scene = if let Some((s, _)) = scene.expanded() {
+        expanded = s;
         &expanded
     } else {
         scene
