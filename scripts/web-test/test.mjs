@@ -321,7 +321,7 @@ if (await waitForTitle(lab, /^pipelens — 07-rasterization — step 6\/6$/, "th
   await lab.screenshot({ path: `${out}/lab-inside-passed.png` });
   await until(lab, () => /passed:\[6\]/.test(JSON.stringify(Object.entries(localStorage))), null, 30_000);
   const kept = await lab.evaluate(() => JSON.stringify(Object.entries(localStorage)));
-  check(/passed:\[6\]/.test(kept) && /inside:\{6:/.test(kept), `the lab passes and its code is kept (${kept.slice(0, 200)})`);
+  check(/passed:\[6\]/.test(kept) && /functions:\{\\"inside\\":\{6:/.test(kept), `the lab passes and its code is kept (${kept.slice(0, 200)})`);
   await lab.reload();
   if (await waitForTitle(lab, /^pipelens — 07-rasterization — step 6\/6$/, "the lab reloads")) {
     await lab.waitForTimeout(3000);
