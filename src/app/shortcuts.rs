@@ -35,6 +35,22 @@ pub enum Action {
     Redo,
     /// The shader editor compiles and draws with its shaders.
     ApplyShaders,
+    /// The shader debugger: one step back.
+    StepBack,
+    /// The shader debugger: the next step, a call run whole.
+    StepOver,
+    /// The shader debugger: the next step, into a call.
+    StepInto,
+    /// The shader debugger: out of the function shown.
+    StepOut,
+    /// The shader debugger: on to the cursor's line.
+    RunToCursor,
+    /// The shader debugger: on to the next breakpoint.
+    Continue,
+    /// The shader debugger: back to the previous breakpoint.
+    ContinueBack,
+    /// The shader debugger: a breakpoint on the cursor's line, or none.
+    Breakpoint,
     /// Full screen on or off.
     FullScreen,
     /// Larger or smaller text (egui's own zoom listens for these keys).
@@ -62,9 +78,13 @@ const fn command(key: Key) -> KeyboardShortcut {
     KeyboardShortcut::new(Modifiers::COMMAND, key)
 }
 
+const fn shift(key: Key) -> KeyboardShortcut {
+    KeyboardShortcut::new(Modifiers::SHIFT, key)
+}
+
 /// Every shortcut, in the order the help lists them. Redo comes before Undo: Ctrl+Shift+Z
 /// holds Ctrl+Z's keys too, so it is asked first.
-pub const SHORTCUTS: [Shortcut; 17] = [
+pub const SHORTCUTS: [Shortcut; 25] = [
     Shortcut {
         action: Action::Next,
         keys: &[plain(Key::ArrowRight), plain(Key::PageDown)],
@@ -157,6 +177,67 @@ pub const SHORTCUTS: [Shortcut; 17] = [
         does: ("the lesson editor undoes", "课程编辑器撤销"),
     },
     Shortcut {
+        action: Action::StepOver,
+        keys: &[plain(Key::F10)],
+        does: (
+            "shader debugger: next step (a call run whole)",
+            "着色器调试器：下一步（整个执行调用）",
+        ),
+    },
+    Shortcut {
+        action: Action::StepBack,
+        keys: &[shift(Key::F10)],
+        does: ("shader debugger: one step back", "着色器调试器：后退一步"),
+    },
+    Shortcut {
+        action: Action::StepInto,
+        keys: &[plain(Key::F8)],
+        does: (
+            "shader debugger: next step, into a call",
+            "着色器调试器：下一步，进入调用",
+        ),
+    },
+    Shortcut {
+        action: Action::StepOut,
+        keys: &[shift(Key::F8)],
+        does: (
+            "shader debugger: out of this function",
+            "着色器调试器：跳出此函数",
+        ),
+    },
+    Shortcut {
+        action: Action::RunToCursor,
+        keys: &[command(Key::F10)],
+        does: (
+            "shader debugger: run to the cursor's line",
+            "着色器调试器：运行到光标所在行",
+        ),
+    },
+    Shortcut {
+        action: Action::Continue,
+        keys: &[plain(Key::F5)],
+        does: (
+            "shader debugger: on to the next breakpoint",
+            "着色器调试器：继续到下一个断点",
+        ),
+    },
+    Shortcut {
+        action: Action::ContinueBack,
+        keys: &[shift(Key::F5)],
+        does: (
+            "shader debugger: back to the previous breakpoint",
+            "着色器调试器：倒退到上一个断点",
+        ),
+    },
+    Shortcut {
+        action: Action::Breakpoint,
+        keys: &[plain(Key::F9)],
+        does: (
+            "shader debugger: a breakpoint on the cursor's line (or off); a click on a line number too",
+            "着色器调试器：在光标所在行设置或取消断点；单击行号亦可",
+        ),
+    },
+    Shortcut {
         action: Action::FullScreen,
         keys: &[plain(Key::F11)],
         does: ("full screen", "全屏"),
@@ -201,20 +282,29 @@ pub fn of(action: Action) -> &'static Shortcut {
         .expect("every action stands in the table (a test checks it)")
 }
 
+/// Whether `key` is a function key (F1 …), which types nothing into a text box.
+fn function_key(key: Key) -> bool {
+    let name = key.name();
+    name.len() > 1 && name.starts_with('F') && name[1..].chars().all(|c| c.is_ascii_digit())
+}
+
 /// Whether one of `action`'s keys was pressed this frame. A key with modifiers is consumed, so
-/// that nothing else acts on it too. A key with none counts with no Ctrl, Alt or Command held
-/// (the key's own modifiers, not those at the end of the frame: a Ctrl+S whose Ctrl is let go
-/// within the frame is still Ctrl+S, not S), and only while no text box has the keyboard.
+/// that nothing else acts on it too. A key with none counts with no Ctrl, Alt, Command or Shift
+/// held (the key's own modifiers, not those at the end of the frame: a Ctrl+S whose Ctrl is let
+/// go within the frame is still Ctrl+S, not S) — nor Shift for a function key, whose Shift+ is
+/// another action —, and, unless it is a function key, only while
+/// no text box has the keyboard: the debugger's F10 steps while the cursor is in the source.
 #[must_use]
 pub fn pressed(ctx: &Context, action: Action) -> bool {
     of(action).keys.iter().any(|k| {
         if k.modifiers.is_none() {
-            !ctx.egui_wants_keyboard_input()
+            (function_key(k.logical_key) || !ctx.egui_wants_keyboard_input())
                 && ctx.input(|i| {
                     i.events.iter().any(|e| {
                         matches!(e, egui::Event::Key { key, pressed: true, modifiers, .. }
                             if *key == k.logical_key
-                                && !modifiers.ctrl && !modifiers.alt && !modifiers.command)
+                                && !modifiers.ctrl && !modifiers.alt && !modifiers.command
+                                && !(modifiers.shift && function_key(*key)))
                     })
                 })
         } else {
@@ -273,6 +363,14 @@ mod tests {
             Action::Undo,
             Action::Redo,
             Action::ApplyShaders,
+            Action::StepBack,
+            Action::StepOver,
+            Action::StepInto,
+            Action::StepOut,
+            Action::RunToCursor,
+            Action::Continue,
+            Action::ContinueBack,
+            Action::Breakpoint,
             Action::FullScreen,
             Action::TextSize,
             Action::Keys,
@@ -296,5 +394,15 @@ mod tests {
         assert_eq!(keys_written(of(Action::Redo)), "Ctrl+Shift+Z  Ctrl+Y");
         assert_eq!(keys_written(of(Action::Keys)), "F1  ?");
         assert_eq!(keys_written(of(Action::TextSize)), "Ctrl++  Ctrl+−");
+        assert_eq!(keys_written(of(Action::StepBack)), "Shift+F10");
+        assert_eq!(keys_written(of(Action::RunToCursor)), "Ctrl+F10");
+    }
+
+    /// Only F1 … F35 are function keys: a letter or an arrow is not, though its name starts
+    /// with an F or holds digits.
+    #[test]
+    fn function_keys_are_f_and_a_number() {
+        assert!(function_key(Key::F1) && function_key(Key::F10) && function_key(Key::F35));
+        assert!(!function_key(Key::F) && !function_key(Key::Num1) && !function_key(Key::Space));
     }
 }

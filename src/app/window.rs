@@ -65,7 +65,8 @@ pub struct PipelensApp {
     pub(super) compare_view: CompareView,
     pub(super) exercise_view: views::exercise::ExerciseView,
     pub(super) inspector: inspector::Inspector,
-    pub(super) shader_editor: views::shader::ShaderEditor,
+    /// The shader panel: its sources, their messages and the debugger.
+    pub shader_editor: views::shader::ShaderEditor,
     pub(super) classroom: bool,
     pub(super) export_dir: String,
     pub(super) export_result: Option<Receiver<Result<Vec<PathBuf>, String>>>,
@@ -207,8 +208,11 @@ impl PipelensApp {
                 });
         }
         if self.panels.shader {
+            // Wide enough for an 80-column line of code where the window allows it (at
+            // 1920 points, 760 leave the picture more than half), narrower in a smaller one.
+            let wide = (ui.ctx().content_rect().width() * 0.4).clamp(520.0, 760.0);
             egui::Panel::right("shader")
-                .default_size(520.0)
+                .default_size(wide)
                 .resizable(true)
                 .show(ui, |ui| {
                     ui.heading(lang.tr("Shaders (GLSL)", "着色器（GLSL）"));

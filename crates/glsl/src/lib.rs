@@ -32,6 +32,7 @@ mod ops;
 pub mod power;
 mod register_form;
 mod stage;
+pub mod stepping;
 pub mod suggest;
 mod trace;
 mod translate;

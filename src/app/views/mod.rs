@@ -5,6 +5,7 @@ pub mod answer;
 mod buffer_texture;
 pub mod card_placement;
 pub mod compare;
+pub mod debugger;
 pub mod exercise;
 pub mod geometry;
 pub mod inspector;

@@ -45,6 +45,8 @@ pub struct ShaderEditor {
     /// The programs the sources were last taken from or applied as: when the scene's differ (a
     /// lesson step brought its own), the sources are taken from the scene again.
     shown: Option<Arc<Programs>>,
+    /// The debugger: the step shown of the run at the inspected pixel or vertex, breakpoints.
+    pub debugger: super::debugger::Debugger,
 }
 
 /// A function the pipeline calls, as the student edits it.
@@ -83,6 +85,7 @@ impl Default for ShaderEditor {
             errors: Vec::new(),
             saved: None,
             shown: None,
+            debugger: super::debugger::Debugger::default(),
         }
     }
 }
@@ -309,7 +312,15 @@ pub fn ui(
         }
     };
     let errors: Vec<(usize, &str)> = errors.iter().map(|(l, m)| (*l, m.as_str())).collect();
-    let edited = super::shader_source::code(ui, (source, &format!("{tab:?}")), &errors);
+    let marks = super::debugger::panel(ui, &mut editor.debugger, tab, session);
+    let touched = super::shader_source::code(ui, (source, &format!("{tab:?}")), &errors, &marks);
+    let edited = touched.changed;
+    if touched.cursor_line.is_some() {
+        editor.debugger.cursor_line = touched.cursor_line;
+    }
+    if let (Some(line), Tab::Shader(stage)) = (touched.gutter, tab) {
+        editor.debugger.toggle(stage, line);
+    }
     if edited && matches!(tab, Tab::Shader(_)) {
         editor.shaders_in_use = true;
     }

@@ -1,79 +1,198 @@
-//! The shader panel's source: line numbers (a line with a message marked), the text highlighted
-//! as C-like code, each message written in red at the end of its line.
+//! The shader panel's source: line numbers (a line with a message marked, a breakpoint with a
+//! dot, the debugger's step with an arrow), the text highlighted as C-like code, each message
+//! written in red at the end of its line, else the line's last step of the run (a colour with
+//! its swatch). The line numbers stay in place when the text scrolls sideways.
 
-use egui::{RichText, Ui};
+use egui::{Color32, RichText, Ui};
 
-/// The source with line numbers (a line with a message marked), highlighted as C-like code,
-/// each message written in red at the end of its line; `tab` names the tab, which keeps its own
-/// scroll position. Returns whether it was edited.
+use super::debugger::Marks;
+
+/// What the reader did in the source this frame.
+pub(super) struct Touched {
+    /// The text was edited.
+    pub changed: bool,
+    /// A line number was clicked (a breakpoint set or cleared there).
+    pub gutter: Option<usize>,
+    /// The line the text cursor is on, from 1, while the source has the keyboard.
+    pub cursor_line: Option<usize>,
+}
+
+/// The source with its line numbers, highlighted, with `errors` (`(line, message)`) and the
+/// debugger's `marks`; `tab` names the tab, which keeps its own scroll position.
 pub(super) fn code(
     ui: &mut Ui,
     (source, tab): (&mut String, &str),
     errors: &[(usize, &str)],
-) -> bool {
-    let mut changed = false;
-    egui::ScrollArea::both()
-        .id_salt("shader source")
+    marks: &Marks,
+) -> Touched {
+    let mut touched = Touched {
+        changed: false,
+        gutter: None,
+        cursor_line: None,
+    };
+    egui::ScrollArea::vertical()
+        .id_salt(("shader source", tab))
         .show(ui, |ui| {
             ui.horizontal_top(|ui| {
                 let lines = source.lines().count().max(1) + usize::from(source.ends_with('\n'));
                 let gutter: String = (1..=lines)
                     .map(|n| {
-                        if errors.iter().any(|(line, _)| *line == n) {
-                            format!("!{n:>3}\n")
+                        let dot = if marks.breakpoints.contains(&n) {
+                            '●'
                         } else {
-                            format!("{n:>4}\n")
-                        }
+                            ' '
+                        };
+                        let arrow = if marks.current == Some(n) {
+                            '▶'
+                        } else if errors.iter().any(|(line, _)| *line == n) {
+                            '!'
+                        } else {
+                            ' '
+                        };
+                        format!("{dot}{arrow}{n:>3}\n")
                     })
                     .collect();
-                ui.add(
-                    egui::Label::new(
-                        RichText::new(gutter.trim_end())
-                            .monospace()
-                            .color(ui.visuals().weak_text_color()),
+                let numbers = ui
+                    .add(
+                        egui::Label::new(
+                            RichText::new(gutter.trim_end())
+                                .monospace()
+                                .color(ui.visuals().weak_text_color()),
+                        )
+                        .selectable(false)
+                        .sense(egui::Sense::click()),
                     )
-                    .selectable(false),
-                );
-                let theme = egui_extras::syntax_highlighting::CodeTheme::from_style(ui.style());
-                // No wrapping: a source line is one line, as its number says.
-                let mut layouter = |ui: &Ui, text: &dyn egui::TextBuffer, _wrap_width: f32| {
-                    let mut job = egui_extras::syntax_highlighting::highlight(
-                        ui.ctx(),
-                        ui.style(),
-                        &theme,
-                        text.as_str(),
-                        "c",
+                    .on_hover_text(
+                        crate::app::shortcuts::of(crate::app::shortcuts::Action::Breakpoint)
+                            .does
+                            .0,
                     );
-                    job.wrap.max_width = f32::INFINITY;
-                    ui.fonts_mut(|f| f.layout_job(job))
-                };
-                // A fixed id: the messages above come and go as one types, and an id counted
-                // from the widgets before it would change with them, taking the focus away.
-                let out = egui::TextEdit::multiline(source)
-                    .id_salt(("shader source", tab))
-                    .code_editor()
-                    .desired_rows(lines.max(24))
-                    .desired_width(640.0)
-                    .lock_focus(true)
-                    .layouter(&mut layouter)
-                    .show(ui);
-                changed = out.response.changed();
-                // Without wrapping, row k of the laid-out text is source line k + 1.
-                let font = egui::TextStyle::Monospace.resolve(ui.style());
-                let color = ui.visuals().error_fg_color;
-                for (line, message) in errors {
-                    if let Some(row) = line.checked_sub(1).and_then(|k| out.galley.rows.get(k)) {
-                        let rect = row.rect().translate(out.galley_pos.to_vec2());
-                        ui.painter().text(
-                            egui::pos2(rect.max.x + 24.0, rect.center().y),
-                            egui::Align2::LEFT_CENTER,
-                            format!("◀ {message}"),
-                            font.clone(),
-                            color,
-                        );
-                    }
-                }
+                // The text scrolls sideways by itself: a long line never hides the numbers.
+                egui::ScrollArea::horizontal()
+                    .id_salt(("shader source columns", tab))
+                    .show(ui, |ui| {
+                        text(ui, (source, tab), errors, marks, &mut touched, &numbers);
+                    });
             });
         });
-    changed
+    touched
+}
+
+/// The text itself, its step highlighted, with the messages and values painted after the lines.
+fn text(
+    ui: &mut Ui,
+    (source, tab): (&mut String, &str),
+    errors: &[(usize, &str)],
+    marks: &Marks,
+    touched: &mut Touched,
+    numbers: &egui::Response,
+) {
+    let lines = source.lines().count().max(1) + usize::from(source.ends_with('\n'));
+    let theme = egui_extras::syntax_highlighting::CodeTheme::from_style(ui.style());
+    // No wrapping: a source line is one line, as its number says.
+    let mut layouter = |ui: &Ui, text: &dyn egui::TextBuffer, _wrap_width: f32| {
+        let mut job = egui_extras::syntax_highlighting::highlight(
+            ui.ctx(),
+            ui.style(),
+            &theme,
+            text.as_str(),
+            "c",
+        );
+        job.wrap.max_width = f32::INFINITY;
+        ui.fonts_mut(|f| f.layout_job(job))
+    };
+    // A fixed id: the messages above come and go as one types, and an id counted from the
+    // widgets before it would change with them, taking the focus away.
+    let out = egui::TextEdit::multiline(source)
+        .id_salt(("shader source", tab))
+        .code_editor()
+        .desired_rows(lines.max(24))
+        .desired_width(f32::INFINITY)
+        .lock_focus(true)
+        .layouter(&mut layouter)
+        .show(ui);
+    touched.changed = out.response.changed();
+    touched.cursor_line = out
+        .cursor_range
+        .map(|r| out.galley.layout_from_cursor(r.primary).row + 1);
+    // Without wrapping, row k of the laid-out text is source line k + 1.
+    let row_rect = |line: usize| {
+        line.checked_sub(1)
+            .and_then(|k| out.galley.rows.get(k))
+            .map(|row| row.rect().translate(out.galley_pos.to_vec2()))
+    };
+    if let Some(rect) = marks.current.and_then(row_rect) {
+        if marks.reveal {
+            // Up or down to the line, not sideways: the line's start is what is asked for.
+            let start = egui::Rect::from_x_y_ranges(rect.left()..=rect.left(), rect.y_range());
+            ui.scroll_to_rect(start, Some(egui::Align::Center));
+        }
+        // Over the text (the editor's own background would hide it beneath), light enough to
+        // read through, with a bar at its left edge.
+        let band = egui::Rect::from_x_y_ranges(out.response.rect.x_range(), rect.y_range());
+        let amber = Color32::from_rgb(230, 190, 60);
+        ui.painter()
+            .rect_filled(band, 0.0, amber.gamma_multiply(0.22));
+        ui.painter().rect_filled(
+            egui::Rect::from_x_y_ranges(band.left()..=band.left() + 3.0, band.y_range()),
+            0.0,
+            amber,
+        );
+    }
+    if numbers.clicked()
+        && let Some(y) = numbers.interact_pointer_pos().map(|p| p.y)
+    {
+        touched.gutter =
+            (1..=lines).find(|&l| row_rect(l).is_some_and(|r| r.y_range().contains(y)));
+    }
+    let font = egui::TextStyle::Monospace.resolve(ui.style());
+    let error_color = ui.visuals().error_fg_color;
+    let mut right = out.response.rect.right();
+    for (line, message) in errors {
+        if let Some(rect) = row_rect(*line) {
+            let painted = ui.painter().text(
+                egui::pos2(rect.max.x + 24.0, rect.center().y),
+                egui::Align2::LEFT_CENTER,
+                format!("◀ {message}"),
+                font.clone(),
+                error_color,
+            );
+            right = right.max(painted.right());
+        }
+    }
+    let value_color = ui.visuals().weak_text_color();
+    for (line, words, swatch) in &marks.beside {
+        if errors.iter().any(|(l, _)| l == line) {
+            continue;
+        }
+        let Some(rect) = row_rect(*line) else {
+            continue;
+        };
+        let mut x = rect.max.x + 24.0;
+        if let Some(c) = swatch {
+            let side = rect.height() * 0.8;
+            let square = egui::Rect::from_center_size(
+                egui::pos2(x + side / 2.0, rect.center().y),
+                egui::vec2(side, side),
+            );
+            ui.painter().rect_filled(square, 2.0, *c);
+            ui.painter().rect_stroke(
+                square,
+                2.0,
+                egui::Stroke::new(1.0, value_color),
+                egui::StrokeKind::Outside,
+            );
+            x += side + 6.0;
+        }
+        let painted = ui.painter().text(
+            egui::pos2(x, rect.center().y),
+            egui::Align2::LEFT_CENTER,
+            format!("// {words}"),
+            font.clone(),
+            value_color,
+        );
+        right = right.max(painted.right());
+    }
+    // What is painted after the lines scrolls into view sideways like the text.
+    ui.expand_to_include_x(right + 8.0);
 }

@@ -1,0 +1,470 @@
+//! The shader debugger in the shader panel: the run of the inspected fragment (or of the
+//! selected vertex) drives the source. The step shown is highlighted, each line shows the
+//! value it last wrote, colours with a swatch; the run is stepped forward and back, over, into
+//! and out of calls, to the cursor's line or to the next breakpoint (a line, and optionally
+//! which of its hits). Nothing runs again: the frame already kept the whole run, so stepping
+//! back is as cheap as stepping forward (`pipelens_glsl::stepping`).
+
+use std::collections::BTreeMap;
+
+use egui::{Color32, RichText, Ui};
+use pipeline::capture::FrameCapture;
+use pipeline::shader::stepping::{self, Breakpoint};
+use pipeline::shader::{Stage, TraceLine};
+
+use super::shader::Tab;
+use crate::app::session::Session;
+use crate::app::shortcuts::{self, Action};
+use crate::vocabulary::Lang;
+
+/// What the debugger keeps: the step shown, the breakpoints of each stage, which of the
+/// pixel's fragments it follows, the cursor's line (for "run to line").
+#[derive(Default)]
+pub struct Debugger {
+    /// The step shown, an index into the run (`None`: not stepping; the source shows each
+    /// line's value at the end of the run).
+    pub at: Option<usize>,
+    /// The breakpoints, by stage.
+    pub breakpoints: BTreeMap<StageKey, Vec<Breakpoint>>,
+    /// Which of the inspected pixel's fragments is followed (from 0).
+    pub fragment: usize,
+    /// The line the text cursor is on, from 1.
+    pub cursor_line: Option<usize>,
+    /// Why the last step did not move (the run never reaches the line …), in words.
+    pub note: Option<String>,
+}
+
+/// A stage as a key of the breakpoints' map.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum StageKey {
+    /// The vertex shader.
+    Vertex,
+    /// The fragment shader.
+    Fragment,
+}
+
+impl From<Stage> for StageKey {
+    fn from(s: Stage) -> Self {
+        match s {
+            Stage::Vertex => Self::Vertex,
+            Stage::Fragment => Self::Fragment,
+        }
+    }
+}
+
+/// A move of the step shown.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Move {
+    /// One step back.
+    Back,
+    /// The next step, into a call.
+    Into,
+    /// The next step in this function (a call run through).
+    Over,
+    /// Out of this function, to its caller's next step.
+    Out,
+    /// To the next step on the cursor's line.
+    ToCursor,
+    /// To the next breakpoint.
+    Continue,
+    /// Back to the previous breakpoint.
+    ContinueBack,
+}
+
+/// What the source shows of the run at the step shown: the line highlighted, the breakpoints,
+/// and beside each line the value it last wrote (with a swatch for a colour).
+pub struct Marks {
+    /// The line of the step shown.
+    pub current: Option<usize>,
+    /// The lines with a breakpoint.
+    pub breakpoints: Vec<usize>,
+    /// `(line, "name = value", swatch)`.
+    pub beside: Vec<(usize, String, Option<Color32>)>,
+    /// The step moved this frame: its line is scrolled into view.
+    pub reveal: bool,
+}
+
+/// A colour as egui draws it, from a value in [0, 1].
+pub fn swatch(c: [f32; 4]) -> Color32 {
+    Color32::from(egui::Rgba::from_rgba_unmultiplied(c[0], c[1], c[2], c[3]))
+}
+
+/// The run the tab shown can step: the fragment shader's at the inspected pixel (the fragment
+/// followed), or the vertex shader's at the selected vertex.
+pub fn run_of(
+    stage: Stage,
+    debugger: &mut Debugger,
+    session: &Session,
+    capture: &FrameCapture,
+) -> Option<Vec<TraceLine>> {
+    match stage {
+        Stage::Fragment => {
+            let pixel = &capture.shaders.as_ref()?.pixel;
+            debugger.fragment = debugger.fragment.min(pixel.len().saturating_sub(1));
+            pixel.get(debugger.fragment).map(|f| f.trace.clone())
+        }
+        Stage::Vertex => {
+            let row = session.selection.vertex? as usize;
+            pipeline::trace_vertex(&session.spec.scene, capture, row)
+                .ok()
+                .flatten()
+                .map(|t| t.trace)
+        }
+    }
+}
+
+impl Debugger {
+    /// Keeps the step shown inside `run` (an edit or another pixel gives another run; the
+    /// step stays where it was as far as the new run reaches).
+    pub fn follow(&mut self, run: &[TraceLine]) {
+        self.at = self.at.map(|a| a.min(run.len().saturating_sub(1)));
+        if run.is_empty() {
+            self.at = None;
+        }
+    }
+
+    /// The breakpoints of `stage`.
+    #[must_use]
+    pub fn of(&self, stage: Stage) -> &[Breakpoint] {
+        self.breakpoints
+            .get(&stage.into())
+            .map_or(&[], Vec::as_slice)
+    }
+
+    /// Sets or clears the breakpoint on `line` of `stage`.
+    pub fn toggle(&mut self, stage: Stage, line: usize) {
+        let list = self.breakpoints.entry(stage.into()).or_default();
+        match list.iter().position(|b| b.line == line) {
+            Some(k) => {
+                list.remove(k);
+            }
+            None => list.push(Breakpoint::at(line)),
+        }
+    }
+
+    /// Moves the step shown through `run` as `m` says; when it cannot, the step stays and
+    /// [`Debugger::note`] says why.
+    pub fn step(&mut self, run: &[TraceLine], stage: Stage, m: Move, lang: Lang) {
+        self.note = None;
+        if run.is_empty() {
+            return;
+        }
+        let at = self.at;
+        let here = at.unwrap_or(0);
+        let to = match (m, at) {
+            // Not yet stepping: the first move shows the first step (or the first stop).
+            (Move::Into | Move::Over, None) => Some(0),
+            (Move::Back, _) => here.checked_sub(1),
+            (Move::Into, Some(a)) => (a + 1 < run.len()).then_some(a + 1),
+            (Move::Over, Some(a)) => stepping::over(run, a),
+            (Move::Out, _) => stepping::out(run, here),
+            (Move::ToCursor, _) => self.cursor_line.and_then(|line| {
+                if at.is_none() && run[0].line == line {
+                    Some(0)
+                } else {
+                    stepping::to_line(run, here, line)
+                }
+            }),
+            (Move::Continue, _) => stepping::next_break(run, at, self.of(stage)),
+            (Move::ContinueBack, _) => stepping::previous_break(run, here, self.of(stage)),
+        };
+        match to {
+            Some(k) => self.at = Some(k),
+            None => {
+                self.note = Some(
+                    match m {
+                        Move::Back | Move::ContinueBack if at.is_none() || here == 0 => {
+                            lang.tr("This is the run's first step.", "这已是运行的第一步。")
+                        }
+                        Move::ContinueBack => lang.tr(
+                            "No breakpoint stops the run before this step.",
+                            "此步之前没有断点使运行停下。",
+                        ),
+                        Move::Continue if self.of(stage).is_empty() => lang.tr(
+                            "No breakpoint is set: click a line number, or press F9 on a line.",
+                            "尚未设置断点：单击行号，或在某行按 F9。",
+                        ),
+                        Move::Continue => lang.tr(
+                            "No breakpoint stops the rest of this run.",
+                            "运行的其余部分没有断点使它停下。",
+                        ),
+                        Move::ToCursor if self.cursor_line.is_none() => lang.tr(
+                            "Put the text cursor on a line first.",
+                            "请先把文本光标放在某一行上。",
+                        ),
+                        Move::ToCursor => lang.tr(
+                            "The rest of this run never reaches the cursor's line.",
+                            "运行的其余部分不会到达光标所在行。",
+                        ),
+                        Move::Out => lang.tr(
+                            "This step is in main: there is no caller to return to.",
+                            "此步在 main 中：没有可返回的调用者。",
+                        ),
+                        Move::Into | Move::Over | Move::Back => {
+                            lang.tr("This is the run's last step.", "这已是运行的最后一步。")
+                        }
+                    }
+                    .to_owned(),
+                );
+            }
+        }
+    }
+
+    /// What the source shows of `run` at the step shown (at its end when not stepping): beside
+    /// each line its last step in words, a colour written with its swatch.
+    #[must_use]
+    pub fn marks(&self, run: &[TraceLine], stage: Stage, lang: Lang) -> Marks {
+        let breakpoints = self.of(stage).iter().map(|b| b.line).collect();
+        let Some(last) = run.len().checked_sub(1) else {
+            return Marks {
+                current: None,
+                breakpoints,
+                beside: Vec::new(),
+                reveal: false,
+            };
+        };
+        let at = self.at.unwrap_or(last).min(last);
+        let beside = stepping::beside_lines(run, at)
+            .into_iter()
+            .map(|(line, k)| {
+                let swatch = run[k]
+                    .step
+                    .written()
+                    .and_then(|(_, v)| stepping::colour(v))
+                    .map(swatch);
+                (line, crate::vocabulary::trace::words(&run[k], lang), swatch)
+            })
+            .collect();
+        Marks {
+            current: self.at.map(|a| run[a.min(last)].line),
+            breakpoints,
+            beside,
+            reveal: false,
+        }
+    }
+}
+
+/// The keys of the debugger pressed this frame, as moves.
+#[must_use]
+pub fn keys(ctx: &egui::Context) -> Option<Move> {
+    [
+        (Action::StepBack, Move::Back),
+        (Action::StepOver, Move::Over),
+        (Action::StepInto, Move::Into),
+        (Action::StepOut, Move::Out),
+        (Action::RunToCursor, Move::ToCursor),
+        (Action::Continue, Move::Continue),
+        (Action::ContinueBack, Move::ContinueBack),
+    ]
+    .into_iter()
+    .find(|(a, _)| shortcuts::pressed(ctx, *a))
+    .map(|(_, m)| m)
+}
+
+/// The debugger's bar over the source: the moves as buttons (each with its key), where the
+/// run stands, the fragment followed, and the variables in scope at the step.
+pub fn bar(
+    ui: &mut Ui,
+    debugger: &mut Debugger,
+    run: &[TraceLine],
+    fragments: usize,
+    lang: Lang,
+) -> Option<Move> {
+    let mut pressed = None;
+    ui.horizontal_wrapped(|ui| {
+        let buttons = [
+            (Move::Back, ("← back", "← 后退"), Action::StepBack, ("step back", "后退一步")),
+            (
+                Move::Over,
+                ("→ over", "→ 跳过"),
+                Action::StepOver,
+                ("step over (a call run whole)", "单步跳过（整个执行调用）"),
+            ),
+            (
+                Move::Into,
+                ("↓ into", "↓ 进入"),
+                Action::StepInto,
+                ("step into a call", "单步进入调用"),
+            ),
+            (
+                Move::Out,
+                ("↑ out", "↑ 跳出"),
+                Action::StepOut,
+                ("step out of this function", "单步跳出此函数"),
+            ),
+            (
+                Move::ToCursor,
+                ("to cursor", "到光标"),
+                Action::RunToCursor,
+                ("run to the cursor's line", "运行到光标所在行"),
+            ),
+            (
+                Move::ContinueBack,
+                ("◀ breakpoint", "◀ 断点"),
+                Action::ContinueBack,
+                ("back to the previous breakpoint", "倒退到上一个断点"),
+            ),
+            (
+                Move::Continue,
+                ("breakpoint ▶", "断点 ▶"),
+                Action::Continue,
+                ("on to the next breakpoint", "继续到下一个断点"),
+            ),
+        ];
+        for (m, (label_en, label_zh), action, (en, zh)) in buttons {
+            let tip = format!(
+                "{} ({})",
+                lang.tr(en, zh),
+                shortcuts::keys_written(shortcuts::of(action))
+            );
+            if ui
+                .button(lang.tr(label_en, label_zh))
+                .on_hover_text(tip)
+                .clicked()
+            {
+                pressed = Some(m);
+            }
+        }
+        let position = match debugger.at {
+            Some(a) => format!(
+                "{} {} / {} · {} {}",
+                lang.tr("step", "第"),
+                a + 1,
+                run.len(),
+                lang.tr("line", "行"),
+                run[a.min(run.len() - 1)].line
+            ),
+            None => format!(
+                "{} {}",
+                run.len(),
+                lang.tr(
+                    "steps: F10 steps through them",
+                    "步：按 F10 逐步执行"
+                )
+            ),
+        };
+        ui.label(RichText::new(position).monospace());
+        if fragments > 1 {
+            ui.label(lang.tr("fragment", "片元"));
+            let mut k = debugger.fragment + 1;
+            if ui
+                .add(egui::DragValue::new(&mut k).range(1..=fragments))
+                .on_hover_text(lang.tr(
+                    "Several fragments reached this pixel (triangles meeting in it, or layers a discard peeled): which one to follow.",
+                    "有多个片元到达此像素（在此相交的三角形，或被 discard 剥离的层）：选择跟随哪一个。",
+                ))
+                .changed()
+            {
+                debugger.fragment = k - 1;
+                debugger.at = None;
+            }
+        }
+    });
+    if let Some(note) = &debugger.note {
+        ui.label(RichText::new(note).color(ui.visuals().warn_fg_color));
+    }
+    if let Some(a) = debugger.at.filter(|&a| a < run.len()) {
+        scope(ui, run, a, lang);
+    }
+    pressed
+}
+
+/// The variables of the step's function as they stand at the step, a colour with its swatch.
+fn scope(ui: &mut Ui, run: &[TraceLine], at: usize, lang: Lang) {
+    egui::CollapsingHeader::new(lang.tr("Variables at this step", "此步的变量"))
+        .id_salt("debugger scope")
+        .default_open(true)
+        .show(ui, |ui| {
+            ui.label(RichText::new(&run[at].text).monospace().strong());
+            for held in stepping::in_scope(run, at) {
+                ui.horizontal(|ui| {
+                    if let Some(c) = stepping::colour(held.value) {
+                        let (rect, _) =
+                            ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
+                        ui.painter().rect_filled(rect, 2.0, swatch(c));
+                    }
+                    ui.label(
+                        RichText::new(format!(
+                            "{} = {}   ({} {})",
+                            held.name,
+                            run[held.step].value.as_deref().unwrap_or_default(),
+                            lang.tr("line", "行"),
+                            held.line
+                        ))
+                        .monospace(),
+                    );
+                });
+            }
+        });
+}
+
+/// The debugger over the source of `tab`: its keys and bar when the tab's stage has a run to
+/// step (a hint where to click when it has none), and what the source shows of it.
+pub fn panel(ui: &mut Ui, debugger: &mut Debugger, tab: Tab, session: &Session) -> Marks {
+    let lang = session.lang;
+    let Tab::Shader(stage) = tab else {
+        return Marks {
+            current: None,
+            breakpoints: Vec::new(),
+            beside: Vec::new(),
+            reveal: false,
+        };
+    };
+    let capture = session.capture.clone();
+    let run = capture
+        .as_deref()
+        .and_then(|c| run_of(stage, debugger, session, c));
+    let Some(run) = run.filter(|r| !r.is_empty()) else {
+        if session.spec.scene.has_shaders() {
+            ui.label(
+                RichText::new(match stage {
+                    Stage::Fragment => lang.tr(
+                        "Debugger: click a pixel of the picture; its fragment's run steps here (F10).",
+                        "调试器：单击画面中的一个像素；它的片元的运行在这里逐步执行（F10）。",
+                    ),
+                    Stage::Vertex => lang.tr(
+                        "Debugger: select a vertex (a click in a geometry view, or a row of the vertex table); its run steps here (F10).",
+                        "调试器：选择一个顶点（在几何视图中单击，或在顶点表中选一行）；它的运行在这里逐步执行（F10）。",
+                    ),
+                })
+                .italics(),
+            );
+        }
+        debugger.at = None;
+        return debugger.marks(&[], stage, lang);
+    };
+    debugger.follow(&run);
+    let fragments = match stage {
+        Stage::Fragment => capture
+            .as_deref()
+            .and_then(|c| c.shaders.as_ref())
+            .map_or(0, |s| s.pixel.len()),
+        Stage::Vertex => 1,
+    };
+    let before = debugger.at;
+    if shortcuts::pressed(ui.ctx(), Action::Breakpoint) {
+        match debugger.cursor_line {
+            Some(line) => debugger.toggle(stage, line),
+            None => {
+                debugger.note = Some(
+                    lang.tr(
+                        "Put the text cursor on a line first.",
+                        "请先把文本光标放在某一行上。",
+                    )
+                    .to_owned(),
+                );
+            }
+        }
+    }
+    if let Some(m) = keys(ui.ctx()) {
+        debugger.step(&run, stage, m, lang);
+    }
+    if let Some(m) = bar(ui, debugger, &run, fragments, lang) {
+        debugger.step(&run, stage, m, lang);
+        // The bar above already showed the step before the click.
+        ui.ctx().request_repaint();
+    }
+    let mut marks = debugger.marks(&run, stage, lang);
+    marks.reveal = debugger.at != before;
+    marks
+}
