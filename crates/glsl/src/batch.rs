@@ -102,6 +102,8 @@ impl Batch {
 #[derive(Clone, Copy, Debug)]
 pub struct Ran<'m> {
     result: &'m [u32],
+    /// The invocations' globals, `LANES` values a component (what a watch reads).
+    pub(crate) privates: &'m [u32],
     /// The lanes that were discarded.
     pub killed: u64,
 }
@@ -149,6 +151,7 @@ impl Machine<'_> {
         let killed = self.run(&inputs, batch.lanes, batch.live, textures)?;
         Ok(Ran {
             result: self.result(),
+            privates: &self.privates,
             killed,
         })
     }

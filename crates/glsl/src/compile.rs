@@ -87,12 +87,22 @@ fn unsupported(source: &str, u: register_form::Unsupported) -> ShaderError {
 /// naga's parse and validation errors, a uniform, texture, attribute or output pipelens does
 /// not know, an output never written, an operation the machine does not run.
 pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> {
+    compile_with(stage, source, "")
+}
+
+/// [`compile`] with `extra`, GLSL of pipelens' own, at the end of what is put before the
+/// student's code: its functions are pipelens' (kept out of the trace).
+pub(crate) fn compile_with(
+    stage: Stage,
+    source: &str,
+    extra: &str,
+) -> Result<Program, Vec<ShaderError>> {
     if let Some(e) = check::version(source) {
         return Err(vec![e]);
     }
     check::dropped_arguments(source)?;
     check::sampler_parameters(source)?;
-    let mut adapted = dialect::adapt(source, stage).map_err(|errs| {
+    let mut adapted = dialect::adapt(source, stage, extra).map_err(|errs| {
         errs.into_iter()
             .map(|e| error_at(source, e.span, e.message))
             .collect::<Vec<_>>()
@@ -182,5 +192,6 @@ pub fn compile(stage: Stage, source: &str) -> Result<Program, Vec<ShaderError>> 
         textures,
         declarations: adapted.declarations.clone(),
         origin: None,
+        watch: None,
     })
 }

@@ -30,6 +30,7 @@ mod machine;
 mod modulo;
 mod ops;
 pub mod power;
+pub mod probe;
 mod register_form;
 mod stage;
 pub mod stepping;

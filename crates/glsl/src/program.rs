@@ -59,6 +59,8 @@ pub struct Program {
     /// ([`Self::run_error`]) and names the file; `None` for a source of its own (the shader
     /// panel's).
     pub origin: Option<Origin>,
+    /// Where a program compiled with a watch keeps what the watch saw (`crate::probe`).
+    pub watch: Option<crate::probe::WatchPlaces>,
 }
 
 /// The entry point's inputs and outputs, from naga's bindings.

@@ -127,6 +127,8 @@ impl Program {
     pub fn describe(&self, events: &[Event]) -> Trace {
         events
             .iter()
+            // A watch's own store (`crate::probe`) is pipelens', not a step of the student's.
+            .filter(|e| !matches!(e, Event::Assign { name, .. } if name == crate::probe::WATCH))
             .map(|e| {
                 let value = |ty: naga::Handle<naga::Type>, bits: &[u32]| Value {
                     ty: glsl_type(&self.module, ty),

@@ -137,8 +137,12 @@ const INTERPOLATION: [&str; 6] = [
 /// Adapts the student's `src` for naga (see the module's documentation).
 ///
 /// # Errors
+/// Adapts `src` for naga; `extra` is GLSL of pipelens' own put at the end of the preamble
+/// (a watch's declarations, `crate::probe`), empty for the student's code as written.
+///
+/// # Errors
 /// A declaration pipelens cannot adapt: a `uniform` block, an `in` or `out` it cannot read.
-pub fn adapt(src: &str, stage: Stage) -> Result<Adapted, Vec<DialectError>> {
+pub fn adapt(src: &str, stage: Stage, extra: &str) -> Result<Adapted, Vec<DialectError>> {
     let (statements, version) = top_level(src);
     let mut blanks: Vec<Range<usize>> = version.into_iter().collect();
     let mut declarations = Vec::new();
@@ -233,6 +237,9 @@ pub fn adapt(src: &str, stage: Stage) -> Result<Adapted, Vec<DialectError>> {
             ),
             0..0,
         );
+    }
+    if !extra.is_empty() {
+        preamble.push_generated(extra, 0..0);
     }
     if !errors.is_empty() {
         return Err(errors);

@@ -39,7 +39,7 @@ pub struct Machine<'c> {
     pub(super) regs: Vec<Vec<u32>>,
     pub(super) locals: Vec<Vec<u32>>,
     pub(super) returns: Vec<Vec<u32>>,
-    pub(super) privates: Vec<u32>,
+    pub(crate) privates: Vec<u32>,
     pub(super) uniforms: Vec<u32>,
     pub(super) n: usize,
     pub(super) steps: [u32; LANES],

@@ -1,0 +1,382 @@
+//! A watch: the value of an expression just after a line of the student's shader runs, in
+//! every invocation of a batch — what the debugger draws over the whole frame, and what finds
+//! the first fragment where a condition holds.
+//!
+//! The shader is compiled again with two additions that move none of the student's lines.
+//! Before their code, with the other declarations pipelens puts there: globals that keep what
+//! the watch saw (its value as a `vec4`, its type, whether the line ran) and one function per
+//! type the expression may have, which GLSL's overloading picks. At the end of the watched
+//! line, after its last statement and before any comment: the expression stored through that
+//! function. The program computes what the student's does and, in each invocation, leaves the
+//! value of the expression the last time the line ran.
+
+use std::ops::Range;
+
+use crate::batch::Ran;
+use crate::error::ShaderError;
+use crate::lexeme::{self, Kind};
+use crate::machine::LANES;
+use crate::program::Program;
+use crate::register_form::{Reg, Root};
+use crate::stage::Stage;
+
+/// The type of a watched value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum WatchKind {
+    /// `float`.
+    Float,
+    /// `vec2`.
+    Vec2,
+    /// `vec3`.
+    Vec3,
+    /// `vec4`.
+    Vec4,
+    /// `int` (or `uint`).
+    Int,
+    /// `bool`: a mask.
+    Bool,
+}
+
+impl WatchKind {
+    /// Its code in the watch's globals, as the overload for it stores it (from 1; 0: the line
+    /// never ran).
+    const ALL: [Self; 6] = [
+        Self::Float,
+        Self::Vec2,
+        Self::Vec3,
+        Self::Vec4,
+        Self::Int,
+        Self::Bool,
+    ];
+
+    /// How many of the `vec4`'s components hold the value.
+    #[must_use]
+    pub fn components(self) -> usize {
+        match self {
+            Self::Float | Self::Int | Self::Bool => 1,
+            Self::Vec2 => 2,
+            Self::Vec3 => 3,
+            Self::Vec4 => 4,
+        }
+    }
+
+    /// Its GLSL type.
+    #[must_use]
+    pub fn glsl(self) -> &'static str {
+        match self {
+            Self::Float => "float",
+            Self::Vec2 => "vec2",
+            Self::Vec3 => "vec3",
+            Self::Vec4 => "vec4",
+            Self::Int => "int",
+            Self::Bool => "bool",
+        }
+    }
+}
+
+/// The global the watch stores its value into.
+pub(crate) const WATCH: &str = "pipelens_watch";
+
+/// What pipelens puts before the student's code for a watch (one line each, for reading; the
+/// preamble is not the student's text, so its lines count for nothing).
+const DECLARATIONS: &str = "
+vec4 pipelens_watch = vec4(0.0);
+float pipelens_watch_kind = 0.0;
+vec4 pipelens_as_watch(float x) { pipelens_watch_kind = 1.0; return vec4(x, 0.0, 0.0, 0.0); }
+vec4 pipelens_as_watch(vec2 x) { pipelens_watch_kind = 2.0; return vec4(x, 0.0, 0.0); }
+vec4 pipelens_as_watch(vec3 x) { pipelens_watch_kind = 3.0; return vec4(x, 0.0); }
+vec4 pipelens_as_watch(vec4 x) { pipelens_watch_kind = 4.0; return x; }
+vec4 pipelens_as_watch(int x) { pipelens_watch_kind = 5.0; return vec4(float(x), 0.0, 0.0, 0.0); }
+vec4 pipelens_as_watch(uint x) { pipelens_watch_kind = 5.0; return vec4(float(x), 0.0, 0.0, 0.0); }
+vec4 pipelens_as_watch(bool x) { pipelens_watch_kind = 6.0; return vec4(x ? 1.0 : 0.0, 0.0, 0.0, 0.0); }
+";
+
+/// Where a watched program keeps what it saw: the value and its type's code.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct WatchPlaces {
+    value: Reg,
+    kind: Reg,
+    /// The line watched, from 1.
+    pub line: usize,
+    /// The expression watched, as typed.
+    pub expression: String,
+}
+
+/// What one invocation's watch saw.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Watched {
+    /// The value's type.
+    pub kind: WatchKind,
+    /// The value (its first [`WatchKind::components`] components; a bool is 0 or 1).
+    pub value: [f32; 4],
+}
+
+impl WatchPlaces {
+    /// What lane `lane` of `ran` saw: `None` when it never ran the line.
+    #[must_use]
+    pub fn read(&self, ran: &Ran<'_>, lane: usize) -> Option<Watched> {
+        let at = |reg: &Reg, c: u32| {
+            ran.privates
+                .get((reg.first + c) as usize * LANES + lane)
+                .map_or(0.0, |b| f32::from_bits(*b))
+        };
+        let code = at(&self.kind, 0);
+        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+        let kind = *WatchKind::ALL.get((code as usize).checked_sub(1)?)?;
+        Some(Watched {
+            kind,
+            value: std::array::from_fn(|c| at(&self.value, c as u32)),
+        })
+    }
+}
+
+/// Why a watch cannot be made.
+#[derive(Clone, Debug, PartialEq)]
+pub enum WatchError {
+    /// The source has no such line.
+    NoSuchLine(usize),
+    /// The line does not end a statement or open or close a block (its last code is not `;`,
+    /// `{` or `}`), or closes a function: the watch cannot follow it.
+    NotAfterStatement(usize),
+    /// The expression is empty.
+    Empty,
+    /// The shader with the watch does not compile: the messages on the watched line are the
+    /// expression's.
+    Compile(Vec<ShaderError>),
+}
+
+impl std::fmt::Display for WatchError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::NoSuchLine(l) => write!(f, "the shader has no line {l}"),
+            Self::NotAfterStatement(l) => write!(
+                f,
+                "line {l} does not end a statement: watch a line that ends in `;`, `{{` or `}}` inside a function"
+            ),
+            Self::Empty => write!(f, "type an expression to watch"),
+            Self::Compile(errors) => {
+                let said: Vec<String> = errors.iter().map(|e| e.message.clone()).collect();
+                write!(
+                    f,
+                    "the expression does not compile here: {}",
+                    said.join("; ")
+                )
+            }
+        }
+    }
+}
+
+impl std::error::Error for WatchError {}
+
+/// Where the watch's statement goes on `line`: after its last code lexeme, which must be `;`,
+/// `{` or `}` inside a function.
+fn insertion_point(source: &str, line: usize) -> Result<usize, WatchError> {
+    let lexemes = lexeme::lex(source);
+    if line == 0 || line > source.lines().count() {
+        return Err(WatchError::NoSuchLine(line));
+    }
+    let mut depth = 0i32;
+    let mut last: Option<(Range<usize>, i32)> = None;
+    for l in &lexemes {
+        if l.line > line {
+            break;
+        }
+        if l.kind == Kind::Punctuation {
+            match &source[l.span.clone()] {
+                "{" => depth += 1,
+                "}" => depth -= 1,
+                _ => {}
+            }
+        }
+        // A lexeme that starts on the line (a block comment from above is not the line's).
+        let code = !matches!(l.kind, Kind::Comment | Kind::Space | Kind::Directive);
+        if l.line == line && code {
+            last = Some((l.span.clone(), depth));
+        }
+    }
+    match last {
+        Some((span, depth)) if depth > 0 && matches!(&source[span.clone()], ";" | "{" | "}") => {
+            Ok(span.end)
+        }
+        _ => Err(WatchError::NotAfterStatement(line)),
+    }
+}
+
+/// `program`'s source compiled again with a watch of `expression` just after `line`.
+///
+/// # Errors
+/// A line that does not exist or ends no statement, an empty expression, or one that does not
+/// compile there (a name not in scope at the line, a type with no watch: a matrix, an array).
+pub fn watch(
+    stage: Stage,
+    source: &str,
+    line: usize,
+    expression: &str,
+) -> Result<Program, WatchError> {
+    let expression = expression.trim();
+    if expression.is_empty() {
+        return Err(WatchError::Empty);
+    }
+    let at = insertion_point(source, line)?;
+    let statement = format!(" pipelens_watch = pipelens_as_watch({expression});");
+    let watched = format!("{}{statement}{}", &source[..at], &source[at..]);
+    let mut program =
+        crate::compile::compile_with(stage, &watched, DECLARATIONS).map_err(WatchError::Compile)?;
+    let place = |name: &str| {
+        program
+            .module
+            .global_variables
+            .iter()
+            .find(|(_, g)| g.name.as_deref() == Some(name))
+            .and_then(|(h, _)| match program.code.globals[h.index()] {
+                Some((Root::Private, reg)) => Some(reg),
+                _ => None,
+            })
+    };
+    let (Some(value), Some(kind)) = (place(WATCH), place("pipelens_watch_kind")) else {
+        return Err(WatchError::NotAfterStatement(line));
+    };
+    program.watch = Some(WatchPlaces {
+        value,
+        kind,
+        line,
+        expression: expression.to_owned(),
+    });
+    Ok(program)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::batch::Batch;
+
+    /// A fragment shader whose values are worked by hand for an input `x`: `a = 2x` (line 5),
+    /// `b = a > 1` (line 6), then, where b holds, `a = a - 1` (line 8).
+    const SOURCE: &str = "#version 330 core
+in float x;
+out vec4 color;
+void main() {
+    float a = 2.0 * x;   // twice x
+    bool b = a > 1.0;
+    if (b) {
+        a = a - 1.0;
+    }
+    color = vec4(a, 0.0, 0.0, 1.0);
+}
+";
+
+    /// Runs `program` over the inputs `xs`, one lane each; what each lane's watch saw.
+    fn seen(program: &Program, xs: &[f32]) -> Vec<Option<Watched>> {
+        let mut batch = Batch::new(program);
+        batch.start(xs.len());
+        for (l, x) in xs.iter().enumerate() {
+            batch.set(0, l, &[*x]);
+        }
+        let mut m = program.machine();
+        let ran = m.run_batch(&batch, &()).expect("runs");
+        let places = program.watch.as_ref().expect("a watch");
+        (0..xs.len()).map(|l| places.read(&ran, l)).collect()
+    }
+
+    #[test]
+    fn a_float_is_watched_after_its_line_in_every_lane() {
+        let p = watch(Stage::Fragment, SOURCE, 5, "a").expect("compiles");
+        let v = seen(&p, &[0.25, 1.0]);
+        assert_eq!(
+            v[0].map(|w| (w.kind, w.value[0])),
+            Some((WatchKind::Float, 0.5))
+        );
+        assert_eq!(v[1].map(|w| w.value[0]), Some(2.0));
+    }
+
+    #[test]
+    fn a_condition_is_a_mask_and_a_line_not_run_is_none() {
+        let p = watch(Stage::Fragment, SOURCE, 6, "b && a < 3.0").expect("compiles");
+        let v = seen(&p, &[0.25, 1.0, 2.0]);
+        let holds: Vec<Option<f32>> = v.iter().map(|w| w.map(|w| w.value[0])).collect();
+        assert_eq!(holds, [Some(0.0), Some(1.0), Some(0.0)], "a = 0.5, 2, 4");
+        assert!(
+            v.iter()
+                .all(|w| w.is_none_or(|w| w.kind == WatchKind::Bool))
+        );
+        // Line 8 runs only where b holds: x = 0.25 gives a = 0.5, b false.
+        let inside = watch(Stage::Fragment, SOURCE, 8, "vec2(a, x)").expect("compiles");
+        let v = seen(&inside, &[0.25, 1.0]);
+        assert_eq!(v[0], None);
+        assert_eq!(
+            v[1].map(|w| (w.kind, [w.value[0], w.value[1]])),
+            Some((WatchKind::Vec2, [1.0, 1.0])),
+            "a = 2 − 1 after line 8"
+        );
+    }
+
+    #[test]
+    fn an_int_and_a_vector_keep_their_type() {
+        let p = watch(Stage::Fragment, SOURCE, 5, "int(a) + 1").expect("compiles");
+        assert_eq!(
+            seen(&p, &[1.0])[0].map(|w| (w.kind, w.value[0])),
+            Some((WatchKind::Int, 3.0))
+        );
+        let p = watch(Stage::Fragment, SOURCE, 10, "color").expect("compiles");
+        assert_eq!(
+            seen(&p, &[1.0])[0].map(|w| (w.kind, w.value)),
+            Some((WatchKind::Vec4, [1.0, 0.0, 0.0, 1.0]))
+        );
+    }
+
+    #[test]
+    fn the_watch_goes_before_a_comment_and_only_after_a_statement() {
+        assert_eq!(
+            insertion_point(SOURCE, 5),
+            Ok(SOURCE.find("x;   //").expect("line 5") + 2),
+            "after the `;`, before the comment"
+        );
+        assert_eq!(
+            insertion_point(SOURCE, 2),
+            Err(WatchError::NotAfterStatement(2)),
+            "a declaration outside any function"
+        );
+        assert_eq!(
+            insertion_point(SOURCE, 11),
+            Err(WatchError::NotAfterStatement(11)),
+            "main's closing brace"
+        );
+        assert_eq!(insertion_point(SOURCE, 40), Err(WatchError::NoSuchLine(40)));
+        assert!(matches!(
+            watch(Stage::Fragment, SOURCE, 5, "nope"),
+            Err(WatchError::Compile(_))
+        ));
+        assert_eq!(
+            watch(Stage::Fragment, SOURCE, 5, "  ").err(),
+            Some(WatchError::Empty)
+        );
+    }
+
+    #[test]
+    fn the_watched_program_draws_what_the_students_draws_and_traces_no_watch_call() {
+        let plain = crate::compile(Stage::Fragment, SOURCE).expect("compiles");
+        let watched = watch(Stage::Fragment, SOURCE, 6, "a").expect("compiles");
+        for x in [0.25f32, 1.0] {
+            let colour = |p: &Program, trace: bool| {
+                let mut batch = Batch::new(p);
+                batch.start(1);
+                batch.set(0, 0, &[x]);
+                let mut m = p.machine();
+                if trace {
+                    m.trace_lane(Some(0));
+                }
+                let c = m.run_batch(&batch, &()).expect("runs").outputs::<4>(0);
+                (c, p.describe(&m.take_trace()))
+            };
+            let (a, _) = colour(&plain, false);
+            let (b, trace) = colour(&watched, true);
+            assert_eq!(a, b);
+            assert!(
+                trace.iter().all(|t| !t.text.contains("pipelens_as_watch")),
+                "{trace:#?}"
+            );
+            assert!(trace.iter().all(|t| t.line <= 11));
+        }
+    }
+}
