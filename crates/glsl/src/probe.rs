@@ -134,6 +134,8 @@ impl WatchPlaces {
 /// Why a watch cannot be made.
 #[derive(Clone, Debug, PartialEq)]
 pub enum WatchError {
+    /// Nothing runs a shader of the student's: there is nothing to watch.
+    NoShader,
     /// The source has no such line.
     NoSuchLine(usize),
     /// The line does not end a statement or open or close a block (its last code is not `;`,
@@ -149,6 +151,10 @@ pub enum WatchError {
 impl std::fmt::Display for WatchError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
+            Self::NoShader => write!(
+                f,
+                "no object is drawn with shaders of your own: there is nothing to watch"
+            ),
             Self::NoSuchLine(l) => write!(f, "the shader has no line {l}"),
             Self::NotAfterStatement(l) => write!(
                 f,

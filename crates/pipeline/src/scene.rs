@@ -255,6 +255,50 @@ impl Scene {
         }
     }
 
+    /// This scene with every object's fragment shader watching `expression` just after
+    /// `line` (`Programs::watching`): the frame it draws keeps the value at every pixel
+    /// (`ShaderRecord::watch`).
+    ///
+    /// # Errors
+    /// No object has shaders, the line ends no statement, or the expression does not compile
+    /// there.
+    pub fn watching(
+        &self,
+        line: usize,
+        expression: &str,
+    ) -> Result<Self, crate::shader::probe::WatchError> {
+        if !self.has_shaders() {
+            return Err(crate::shader::probe::WatchError::NoShader);
+        }
+        let mut scene = self.clone();
+        // One compile for each program the objects share.
+        let mut made: Vec<(
+            std::sync::Arc<crate::shader::Programs>,
+            std::sync::Arc<crate::shader::Programs>,
+        )> = Vec::new();
+        for o in &mut scene.objects {
+            let Some(sh) = &mut o.code.shader else {
+                continue;
+            };
+            let watched = match made
+                .iter()
+                .find(|(from, _)| std::sync::Arc::ptr_eq(from, &sh.programs))
+            {
+                Some((_, to)) => std::sync::Arc::clone(to),
+                None => {
+                    let to = std::sync::Arc::new(sh.programs.watching(line, expression)?);
+                    made.push((
+                        std::sync::Arc::clone(&sh.programs),
+                        std::sync::Arc::clone(&to),
+                    ));
+                    to
+                }
+            };
+            sh.programs = watched;
+        }
+        Ok(scene)
+    }
+
     /// Every object's triangles are covered where the student's `inside` says.
     pub fn set_inside(&mut self, inside: &crate::shader::InsideTest) {
         self.set_hook(inside);

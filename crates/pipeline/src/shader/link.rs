@@ -148,6 +148,27 @@ impl Programs {
     }
 }
 
+impl Programs {
+    /// These programs with the fragment shader watching `expression` just after `line` (see
+    /// [`super::probe`]): the frame they draw is the same, and every fragment keeps the value.
+    ///
+    /// # Errors
+    /// A line that ends no statement, or an expression that does not compile there.
+    pub fn watching(
+        &self,
+        line: usize,
+        expression: &str,
+    ) -> Result<Self, super::probe::WatchError> {
+        let mut fragment =
+            super::probe::watch(Stage::Fragment, &self.fragment.source, line, expression)?;
+        fragment.origin.clone_from(&self.fragment.origin);
+        // Linked again: the expression may read an input the shader did not (gl_FragCoord).
+        linked(Arc::clone(&self.vertex), fragment).map_err(|e| {
+            super::probe::WatchError::Compile(e.into_iter().map(|e| e.error).collect())
+        })
+    }
+}
+
 impl PartialEq for Programs {
     /// Two programs are the same when their sources are.
     fn eq(&self, other: &Self) -> bool {
@@ -195,6 +216,14 @@ pub fn link(vertex: Option<&str>, fragment: Option<&str>) -> Result<Programs, Ve
             return Err(all);
         }
     };
+    linked(Arc::new(vs), fs)
+}
+
+/// Links two compiled shaders: each fragment input to the vertex output of its name.
+///
+/// # Errors
+/// Each fragment input no vertex output feeds, or feeds with another number of components.
+fn linked(vs: Arc<Program>, fs: Program) -> Result<Programs, Vec<StageError>> {
     let mut offsets = Vec::with_capacity(vs.outputs.len());
     let mut at = 0;
     for o in &vs.outputs {
@@ -267,7 +296,7 @@ pub fn link(vertex: Option<&str>, fragment: Option<&str>) -> Result<Programs, Ve
         return Err(errors);
     }
     Ok(Programs {
-        vertex: Arc::new(vs),
+        vertex: vs,
         fragment: Arc::new(fs),
         links,
         position,

@@ -10,6 +10,7 @@ use crate::capture::{FragmentTrace, Matrices, VertexResults};
 use crate::raster::{NONE, ONE, RasterTriangle};
 use crate::render::RenderError;
 use crate::render::resolve::ResolveContext;
+use crate::shader::probe::Watched;
 use crate::shader::{self, Batch, Bindings, Interpolate, LANES, Programs, Uniforms};
 
 /// A fragment to shade: a triangle over a 2×2 quad, with the pixels it covers (live lanes) and
@@ -32,6 +33,9 @@ pub(in crate::render) struct FragmentCounts {
     pub(in crate::render) pixel: Vec<FragmentTrace>,
     /// The fragments discarded: raster triangle and image pixel.
     pub(in crate::render) discards: Vec<(u32, u32)>,
+    /// What a watch saw (`crate::shader::probe`): image pixel, and the value of the fragment
+    /// that covers the most of its samples.
+    pub(in crate::render) watch: Vec<(usize, Watched)>,
 }
 
 impl std::ops::Add for FragmentCounts {
@@ -39,12 +43,14 @@ impl std::ops::Add for FragmentCounts {
     fn add(mut self, o: Self) -> Self {
         self.pixel.extend(o.pixel);
         self.discards.extend(o.discards);
+        self.watch.extend(o.watch);
         Self {
             fragments: self.fragments + o.fragments,
             discarded: self.discarded + o.discarded,
             not_finite: self.not_finite + o.not_finite,
             pixel: self.pixel,
             discards: self.discards,
+            watch: self.watch,
         }
     }
 }
@@ -87,9 +93,18 @@ pub(in crate::render) fn fragment_shaders(
         .map(|(k, rows)| {
             // Image rows 2k (upper) and 2k + 1 (lower): window y of the lower one is the quad's y.
             let y = (h as i64 - 2 - 2 * k as i64).max(-1);
-            shading.row_pair(rows, w, y)
+            shading.row_pair(rows, (w, 2 * k * w), y)
         })
         .try_reduce(FragmentCounts::default, |a, b| Ok(a + b))
+}
+
+/// What a row pair's batches add up, indexed like the row pair: each pixel's colour weighted
+/// by the samples shaded, those samples, and, when the shaders watch an expression, the value
+/// of the fragment covering the most samples with that count.
+struct Sums {
+    acc: Vec<Vec3>,
+    shaded: Vec<u8>,
+    watch: Option<Vec<(u8, Option<Watched>)>>,
 }
 
 struct FragmentShading<'a> {
@@ -112,16 +127,26 @@ impl FragmentShading<'_> {
     }
 
     /// Shades the quads of one row pair: `rows` is image rows 2k and 2k + 1 of the colour
-    /// buffer; `y` the window y of the lower row (−1 when the pair is a single top row).
+    /// buffer, `first` the image index of its first pixel, `w` the image's width; `y` the
+    /// window y of the lower row (−1 when the pair is a single top row).
     fn row_pair(
         &self,
         rows: &mut [[f32; 3]],
-        w: usize,
+        (w, first): (usize, usize),
         y: i64,
     ) -> Result<FragmentCounts, RenderError> {
         let s = self.ctx.settings.samples.count();
-        let mut acc = vec![Vec3::ZERO; rows.len()];
-        let mut shaded = vec![0u8; rows.len()];
+        let watching = self.ctx.scene.objects.iter().any(|o| {
+            o.code
+                .shader
+                .as_ref()
+                .is_some_and(|sh| sh.programs.fragment.watch.is_some())
+        });
+        let mut sums = Sums {
+            acc: vec![Vec3::ZERO; rows.len()],
+            shaded: vec![0u8; rows.len()],
+            watch: watching.then(|| vec![(0, None); rows.len()]),
+        };
         let mut counts = FragmentCounts::default();
         let mut batch: Vec<QuadJob> = Vec::with_capacity(LANES / 4);
         let mut batch_object = usize::MAX;
@@ -137,13 +162,12 @@ impl FragmentShading<'_> {
         let mut traced: Vec<(QuadJob, usize)> = Vec::new();
         let mut flush = |batch: &mut Vec<QuadJob>,
                          object: usize,
-                         acc: &mut [Vec3],
-                         shaded: &mut [u8],
+                         sums: &mut Sums,
                          counts: &mut FragmentCounts| {
             if batch.is_empty() {
                 return Ok(());
             }
-            let r = self.run_batch(batch, object, &mut machines, &mut inputs, acc, shaded, y, w);
+            let r = self.run_batch(batch, object, &mut machines, &mut inputs, sums, y, w);
             batch.clear();
             *counts = std::mem::take(counts) + r?;
             Ok::<(), RenderError>(())
@@ -184,28 +208,36 @@ impl FragmentShading<'_> {
             for job in jobs {
                 let object = self.object_of(job.triangle);
                 if object != batch_object || batch.len() == LANES / 4 {
-                    flush(&mut batch, batch_object, &mut acc, &mut shaded, &mut counts)?;
+                    flush(&mut batch, batch_object, &mut sums, &mut counts)?;
                     batch_object = object;
                 }
                 batch.push(job);
             }
         }
-        flush(&mut batch, batch_object, &mut acc, &mut shaded, &mut counts)?;
+        flush(&mut batch, batch_object, &mut sums, &mut counts)?;
         for (job, j) in traced {
             counts.pixel.push(self.trace(job, j, y, &mut inputs)?);
         }
         // A pixel is the average of its samples. The resolve averaged the background and the
         // objects without shaders, counting the shaded samples as zero: their share is added.
-        for ((c, a), &n) in rows.iter_mut().zip(&acc).zip(&shaded) {
+        for ((c, a), &n) in rows.iter_mut().zip(&sums.acc).zip(&sums.shaded) {
             if n > 0 {
                 *c = (Vec3::from(*c) + *a / s as f32).to_array();
             }
+        }
+        if let Some(watch) = sums.watch {
+            counts.watch.extend(
+                watch
+                    .into_iter()
+                    .enumerate()
+                    .filter_map(|(i, (_, w))| Some((first + i, w?))),
+            );
         }
         Ok(counts)
     }
 
     /// Runs one batch of quads of `object` and adds each live lane's colour, weighted by its
-    /// samples, to `acc` (indexed like the row pair), counting the samples in `shaded`.
+    /// samples, to the row pair's sums, with what a watch saw.
     #[allow(clippy::too_many_arguments)]
     fn run_batch<'m>(
         &'m self,
@@ -213,8 +245,7 @@ impl FragmentShading<'_> {
         object: usize,
         machines: &mut [Option<shader::Machine<'m>>],
         inputs: &mut Batch,
-        acc: &mut [Vec3],
-        shaded: &mut [u8],
+        sums: &mut Sums,
         y: i64,
         w: usize,
     ) -> Result<FragmentCounts, RenderError> {
@@ -254,7 +285,10 @@ impl FragmentShading<'_> {
                 // The row pair's index: upper image row first.
                 let x = job.x as usize + j % 2;
                 let row = if j / 2 == 1 { 0 } else { 1 };
-                let Some(i) = (x < w).then_some(row * w + x).filter(|&i| i < acc.len()) else {
+                let Some(i) = (x < w)
+                    .then_some(row * w + x)
+                    .filter(|&i| i < sums.acc.len())
+                else {
                     continue;
                 };
                 let color = if ran.discarded(l) {
@@ -265,6 +299,11 @@ impl FragmentShading<'_> {
                     }
                     background
                 } else {
+                    if let (Some(watch), Some(places)) = (sums.watch.as_mut(), fs.watch.as_ref())
+                        && k > watch[i].0
+                    {
+                        watch[i] = (k, places.read(&ran, l));
+                    }
                     let c = Vec3::from_array(ran.outputs::<3>(l));
                     if c.is_finite() {
                         c
@@ -273,8 +312,8 @@ impl FragmentShading<'_> {
                         Vec3::ZERO
                     }
                 };
-                acc[i] += super::super::stored_color(color) * f32::from(k);
-                shaded[i] += k;
+                sums.acc[i] += super::super::stored_color(color) * f32::from(k);
+                sums.shaded[i] += k;
             }
         }
         Ok(counts)

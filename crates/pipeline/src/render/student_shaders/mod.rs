@@ -23,7 +23,9 @@ pub(in crate::render) use discard::{Peeled, peel_discarded};
 pub(in crate::render) use fragment::fragment_shaders;
 
 use super::RenderError;
-use crate::capture::{FrameCapture, Matrices, ShaderRecord, VertexResults, VertexTrace};
+use crate::capture::{
+    FrameCapture, Matrices, ShaderRecord, VertexResults, VertexTrace, WatchPicture,
+};
 use crate::render::resolve::ResolveContext;
 use crate::scene::{Object, Scene};
 use crate::settings::RenderSettings;
@@ -51,13 +53,42 @@ pub(in crate::render) fn record(
     let counts = fragment_shaders(ctx, matrices, &results, color)?;
     let mut pixel = peeled.traces;
     pixel.extend(counts.pixel);
+    let watch = watch_picture(ctx, counts.watch, color.len());
     Ok(Some(ShaderRecord {
         vertex_results: results,
         fragments: counts.fragments,
         discarded: counts.discarded + peeled.fragments,
         not_finite: counts.not_finite,
         pixel,
+        watch,
     }))
+}
+
+/// The picture of what the watch saw (`None` when no object's fragment shader watches).
+fn watch_picture(
+    ctx: &ResolveContext<'_>,
+    seen: Vec<(usize, shader::probe::Watched)>,
+    pixels: usize,
+) -> Option<WatchPicture> {
+    let places = ctx.scene.objects.iter().find_map(|o| {
+        o.code
+            .shader
+            .as_ref()
+            .and_then(|sh| sh.programs.fragment.watch.clone())
+    })?;
+    let mut values = vec![None; pixels];
+    let mut kind = None;
+    for (i, w) in seen {
+        kind.get_or_insert(w.kind);
+        values[i] = Some(w.value);
+    }
+    Some(WatchPicture {
+        line: places.line,
+        expression: places.expression,
+        kind,
+        values,
+        width: ctx.settings.width,
+    })
 }
 
 /// What the fragment stage reads of a frame drawn so far.
