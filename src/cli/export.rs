@@ -92,7 +92,7 @@ pub(super) fn export(
     opts: &ExportOptions,
     size: Option<Size>,
     samples: Option<u32>,
-    profile: Option<[f32; 4]>,
+    (profile, watch): (Option<[f32; 4]>, Option<&(String, usize)>),
 ) -> Result<()> {
     let mut spec = load(scene)?;
     if let Some(s) = size {
@@ -107,11 +107,19 @@ pub(super) fn export(
     if opts.pixel.is_some() {
         spec.settings.capture.pixel = opts.pixel;
     }
-    let capture = pipeline::render(&spec.scene, &spec.settings)?;
+    let scene = match watch {
+        Some((expression, line)) => spec.scene.watching(*line, expression)?,
+        None => spec.scene.clone(),
+    };
+    let capture = pipeline::render(&scene, &spec.settings)?;
     for w in capture.not_finite_warnings() {
         eprintln!("pipelens: warning: {w}");
     }
     let mut files = crate::export::encode_capture(&capture, opts)?;
+    if let Some(picture) = capture.shaders.as_ref().and_then(|r| r.watch.as_ref()) {
+        files.extend(crate::export::watch_files(picture)?);
+        say_watch(picture);
+    }
     if let Some(line) = profile {
         files.push(profile_file(&spec, &capture, line)?);
     }
@@ -136,6 +144,93 @@ pub(super) fn export(
         say!("  {}", p.display());
     }
     Ok(())
+}
+
+/// Step `k` of `lesson` drawn with its fragment shader watching `expression` after `line`:
+/// the watch's files written into `out`, whole or not at all.
+///
+/// # Errors
+/// A step without shaders of its own, a watch that does not compile, a size the renderer
+/// refuses, a file that could not be written.
+pub(super) fn export_step_watch(
+    lesson: &lesson::Lesson,
+    k: usize,
+    out: &Path,
+    size: Option<Size>,
+    (expression, line): &(String, usize),
+) -> Result<()> {
+    if k >= lesson.steps.len() {
+        anyhow::bail!(
+            "--step {}: the lesson has {} steps",
+            k + 1,
+            lesson.steps.len()
+        );
+    }
+    let mut spec = lesson.spec_at(k);
+    if let Some(s) = size {
+        spec.settings.width = s.width;
+        spec.settings.height = s.height;
+    }
+    if let Some(p) = spec.settings.problems().first() {
+        anyhow::bail!("{p}");
+    }
+    let scene = spec
+        .scene
+        .watching(*line, expression)
+        .with_context(|| format!("step {}", k + 1))?;
+    let capture = pipeline::render(&scene, &spec.settings)?;
+    let picture = capture
+        .shaders
+        .as_ref()
+        .and_then(|r| r.watch.as_ref())
+        .context("the frame kept no watch")?;
+    let files = crate::export::watch_files(picture)?;
+    let written = crate::export::write_files(
+        out,
+        &files,
+        &mut |_, _, _| {},
+        &crate::export::Cancel::default(),
+    )?;
+    say_watch(picture);
+    for p in &written {
+        say!("  {}", p.display());
+    }
+    Ok(())
+}
+
+/// What a watch saw, in a line: where it ran, its type and its range.
+fn say_watch(picture: &pipeline::capture::WatchPicture) {
+    let what = format!("`{}` after line {}", picture.expression, picture.line);
+    match picture.kind {
+        None => say!("{what}: no fragment of the frame ran that line"),
+        Some(pipeline::shader::probe::WatchKind::Bool) => {
+            let holds = picture
+                .values
+                .iter()
+                .flatten()
+                .filter(|v| v[0] != 0.0)
+                .count();
+            let first = picture
+                .first_where()
+                .map(|(x, y)| format!("; the first, reading from the top, at pixel {x},{y}"))
+                .unwrap_or_default();
+            say!(
+                "{what}: holds at {holds} of the {} pixels that ran the line{first}",
+                picture.pixels_run()
+            );
+        }
+        Some(kind) => {
+            let range = picture
+                .range(0)
+                .map(|(lo, hi)| format!(", first component from {lo} to {hi}"))
+                .unwrap_or_default();
+            say!(
+                "{what}: a {} at {} pixels{range}",
+                kind.glsl(),
+                picture.pixels_run()
+            );
+        }
+    }
 }
 
 /// The profile along `line`: of the capture itself when unlit; of the flat, Gouraud and Phong

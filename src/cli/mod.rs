@@ -22,7 +22,7 @@ mod export;
 mod grade;
 
 pub use args::Size;
-use args::{parse_line, parse_pixel, parse_stage};
+use args::{parse_line, parse_pixel, parse_stage, parse_watch};
 pub use export::load;
 
 use std::path::PathBuf;
@@ -112,6 +112,11 @@ pub enum Command {
         /// capture.json, in place of the step's own pixel.
         #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
         pixel: Option<(u32, u32)>,
+        /// Also write watch.png and watch.csv: the fragment shader's expression EXPR just after
+        /// line LINE, at every pixel (as the debugger's variable picture draws it). For a
+        /// lesson, with --step: the step's shaders, and only the watch's files.
+        #[arg(long, value_name = "EXPR@LINE", value_parser = parse_watch)]
+        watch: Option<(String, usize)>,
     },
     /// Validate scene and lesson files and print every problem with file:line:column.
     Check {
@@ -233,11 +238,21 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
             answers,
             slides,
             data,
+            watch,
         }) => {
             if let Some(path) = scene.as_deref()
                 && let lesson::Document::Lesson(l) =
                     lesson::load_file(path).map_err(|d| anyhow::anyhow!("{d}"))?
             {
+                if let Some(watch) = &watch {
+                    let Some(step) = step.filter(|&s| s > 0) else {
+                        anyhow::bail!(
+                            "--watch on a lesson reads one step's shaders: add --step N (from 1)"
+                        );
+                    };
+                    export::export_step_watch(&l, step - 1, &out, size, watch)?;
+                    return Ok(ExitCode::SUCCESS);
+                }
                 if let Some((x, y)) = pixel
                     && !data
                 {
@@ -276,7 +291,13 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                 pixel,
                 cancel: export::cancel_on_interrupt(),
             };
-            export::export(scene.as_deref(), &opts, size, samples, profile)?;
+            export::export(
+                scene.as_deref(),
+                &opts,
+                size,
+                samples,
+                (profile, watch.as_ref()),
+            )?;
             Ok(ExitCode::SUCCESS)
         }
         Some(Command::Check { paths }) => Ok(authoring::check(&paths)),

@@ -17,6 +17,7 @@ mod palette;
 mod picture;
 mod slides;
 pub mod text;
+mod watch;
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -28,6 +29,7 @@ use pipeline::capture::FrameCapture;
 use pipeline::overlay::OverlayKind;
 
 pub use json::capture_json;
+pub use watch::watch_files;
 
 /// A flag that stops an export between two files (the app's Cancel button, Ctrl+C on the
 /// command line): what was written stays whole, nothing half-written is left.

@@ -7,6 +7,7 @@ mod authoring;
 mod check;
 mod cli;
 mod cli_export;
+mod cli_watch;
 mod corpus;
 mod course;
 mod edit;

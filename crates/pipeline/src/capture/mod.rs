@@ -13,11 +13,13 @@ mod explain;
 mod images;
 mod inspect;
 mod pixels;
+mod watch;
 
 pub use difference::{Criteria, Difference};
 pub use explain::*;
 pub use inspect::*;
 pub use pixels::*;
+pub use watch::{WatchPicture, WatchView, WatchedImage};
 
 use glam::{I64Vec2, Vec3};
 use half::f16;
@@ -234,24 +236,6 @@ pub struct ShaderRecord {
     /// (`Scene::watching`); written apart from `capture.json` (`pipelens export --watch`).
     #[serde(skip)]
     pub watch: Option<WatchPicture>,
-}
-
-/// An expression's value after a line of the fragment shader, at every pixel: the fragment
-/// that covers the most of the pixel's samples (the one a single-sample frame keeps), where it
-/// ran the line and was not discarded.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct WatchPicture {
-    /// The line watched, from 1.
-    pub line: usize,
-    /// The expression, as typed.
-    pub expression: String,
-    /// Its type (`None` when no fragment of the frame ran the line).
-    pub kind: Option<crate::shader::probe::WatchKind>,
-    /// The value at each pixel, image order (top row first); `None` where no fragment ran the
-    /// line.
-    pub values: Vec<Option<[f32; 4]>>,
-    /// The image's width, pixels.
-    pub width: u32,
 }
 
 /// One fragment of the inspected pixel through the fragment shader: what it received, what
