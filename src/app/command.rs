@@ -122,4 +122,6 @@ pub enum SelectionCommand {
     SelectPixel(Option<(u32, u32)>),
     /// Draw (or clear) the profile line.
     SetProfile(Option<[f32; 4]>),
+    /// Watch a fragment-shader expression after a line over the frame (or stop).
+    SetWatch(Option<(usize, String)>),
 }

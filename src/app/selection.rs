@@ -35,6 +35,9 @@ pub struct Selection {
     pub depth_view: DepthView,
     /// The objects and figures the geometry views frame (`None`: every object).
     pub focus: Option<Vec<String>>,
+    /// The fragment shader's expression watched over the frame, and the line after which it
+    /// is read (the debugger's variable picture; `Scene::watching`).
+    pub watch: Option<(usize, String)>,
 }
 
 /// How the depth buffer is drawn: window depth or eye distance, over a range.
@@ -62,6 +65,7 @@ impl Default for Selection {
             profile: None,
             depth_view: DepthView::default(),
             focus: None,
+            watch: None,
         }
     }
 }

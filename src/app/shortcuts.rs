@@ -191,7 +191,7 @@ pub const SHORTCUTS: [Shortcut; 25] = [
     },
     Shortcut {
         action: Action::StepInto,
-        keys: &[plain(Key::F8)],
+        keys: &[plain(Key::F7)],
         does: (
             "shader debugger: next step, into a call",
             "着色器调试器：下一步，进入调用",
@@ -199,7 +199,7 @@ pub const SHORTCUTS: [Shortcut; 25] = [
     },
     Shortcut {
         action: Action::StepOut,
-        keys: &[shift(Key::F8)],
+        keys: &[shift(Key::F7)],
         does: (
             "shader debugger: out of this function",
             "着色器调试器：跳出此函数",
@@ -215,7 +215,7 @@ pub const SHORTCUTS: [Shortcut; 25] = [
     },
     Shortcut {
         action: Action::Continue,
-        keys: &[plain(Key::F5)],
+        keys: &[plain(Key::F8)],
         does: (
             "shader debugger: on to the next breakpoint",
             "着色器调试器：继续到下一个断点",
@@ -223,7 +223,7 @@ pub const SHORTCUTS: [Shortcut; 25] = [
     },
     Shortcut {
         action: Action::ContinueBack,
-        keys: &[shift(Key::F5)],
+        keys: &[shift(Key::F8)],
         does: (
             "shader debugger: back to the previous breakpoint",
             "着色器调试器：倒退到上一个断点",
@@ -282,6 +282,15 @@ pub fn of(action: Action) -> &'static Shortcut {
         .expect("every action stands in the table (a test checks it)")
 }
 
+/// Whether `modifiers` leave `key` a plain press: no Ctrl, Alt or Command, nor Shift on a
+/// function key (Shift+F10 is another action; Shift on `?` is how it is typed).
+fn plain_press(modifiers: egui::Modifiers, key: Key) -> bool {
+    !(modifiers.ctrl
+        || modifiers.alt
+        || modifiers.command
+        || (modifiers.shift && function_key(key)))
+}
+
 /// Whether `key` is a function key (F1 …), which types nothing into a text box.
 fn function_key(key: Key) -> bool {
     let name = key.name();
@@ -302,9 +311,7 @@ pub fn pressed(ctx: &Context, action: Action) -> bool {
                 && ctx.input(|i| {
                     i.events.iter().any(|e| {
                         matches!(e, egui::Event::Key { key, pressed: true, modifiers, .. }
-                            if *key == k.logical_key
-                                && !modifiers.ctrl && !modifiers.alt && !modifiers.command
-                                && !(modifiers.shift && function_key(*key)))
+                            if *key == k.logical_key && plain_press(*modifiers, *key))
                     })
                 })
         } else {

@@ -146,19 +146,22 @@ pub(super) fn export(
     Ok(())
 }
 
-/// Step `k` of `lesson` drawn with its fragment shader watching `expression` after `line`:
-/// the watch's files written into `out`, whole or not at all.
+/// Step `step` (from 1) of `lesson` drawn with its fragment shader watching `expression` after
+/// `line`: the watch's files written into `out`, whole or not at all.
 ///
 /// # Errors
-/// A step without shaders of its own, a watch that does not compile, a size the renderer
-/// refuses, a file that could not be written.
+/// No step given, a step without shaders of its own, a watch that does not compile, a size the
+/// renderer refuses, a file that could not be written.
 pub(super) fn export_step_watch(
     lesson: &lesson::Lesson,
-    k: usize,
+    step: Option<usize>,
     out: &Path,
     size: Option<Size>,
     (expression, line): &(String, usize),
-) -> Result<()> {
+) -> Result<ExitCode> {
+    let Some(k) = step.and_then(|s| s.checked_sub(1)) else {
+        anyhow::bail!("--watch on a lesson reads one step's shaders: add --step N (from 1)");
+    };
     if k >= lesson.steps.len() {
         anyhow::bail!(
             "--step {}: the lesson has {} steps",
@@ -195,7 +198,7 @@ pub(super) fn export_step_watch(
     for p in &written {
         say!("  {}", p.display());
     }
-    Ok(())
+    Ok(ExitCode::SUCCESS)
 }
 
 /// What a watch saw, in a line: where it ran, its type and its range.

@@ -245,13 +245,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                     lesson::load_file(path).map_err(|d| anyhow::anyhow!("{d}"))?
             {
                 if let Some(watch) = &watch {
-                    let Some(step) = step.filter(|&s| s > 0) else {
-                        anyhow::bail!(
-                            "--watch on a lesson reads one step's shaders: add --step N (from 1)"
-                        );
-                    };
-                    export::export_step_watch(&l, step - 1, &out, size, watch)?;
-                    return Ok(ExitCode::SUCCESS);
+                    return export::export_step_watch(&l, step, &out, size, watch);
                 }
                 if let Some((x, y)) = pixel
                     && !data

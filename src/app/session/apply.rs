@@ -166,6 +166,7 @@ impl Session {
             SelectionCommand::SelectVertex(v) => sel.vertex = v,
             SelectionCommand::SelectPixel(p) => sel.pixel = p,
             SelectionCommand::SetProfile(p) => sel.profile = p,
+            SelectionCommand::SetWatch(w) => sel.watch = w,
         }
     }
 }

@@ -79,6 +79,8 @@ pub struct Session {
     /// An exercise step's reference (pipelens' own stages) and how the student's frame
     /// compares with it.
     pub exercise: ExerciseComparison,
+    /// Why the watch last asked for was dropped (the code changed and it no longer compiles).
+    pub watch_error: Option<String>,
 }
 
 impl Session {
@@ -125,6 +127,7 @@ impl Session {
             shown_draft: false,
             progress: crate::app::progress::Progress::default(),
             exercise: ExerciseComparison::default(),
+            watch_error: None,
         };
         s.request_render();
         s
@@ -292,12 +295,31 @@ impl Session {
         let shaders = self.spec.scene.has_shaders();
         let missing = !kept.covers(needed)
             || (shaders && needed.pixel.is_some() && kept.pixel != needed.pixel)
+            || self.watch_missing()
             || (self.observer_shown() && !self.observer_asked)
             || self.view_resolution_missing()
             || self.reference_stale();
         if !self.rendering() && missing {
             self.request_render();
         }
+    }
+
+    /// Whether the frame on screen lacks the watch the selection asks for, or keeps one it no
+    /// longer asks for.
+    fn watch_missing(&self) -> bool {
+        let kept = self
+            .capture
+            .as_ref()
+            .and_then(|c| c.shaders.as_ref())
+            .and_then(|r| r.watch.as_ref())
+            .map(|w| (w.line, w.expression.as_str()));
+        let asked = self
+            .selection
+            .watch
+            .as_ref()
+            .filter(|_| self.spec.scene.has_shaders())
+            .map(|(l, e)| (*l, e.as_str()));
+        kept != asked
     }
 
     /// The render the current view needs: the scene keeping what the view shows, the observer,
@@ -346,7 +368,20 @@ impl Session {
     /// Asks for a new capture of the current scene, keeping what the view shows.
     pub fn request_render(&mut self) {
         self.generation += 1;
-        let job = self.job();
+        let mut job = self.job();
+        // The watch the selection asks for, drawn into the same frame; one that no longer
+        // compiles (the code changed under it) is dropped, with why.
+        if let Some((line, expression)) = self.selection.watch.clone()
+            && job.spec.scene.has_shaders()
+        {
+            match job.spec.scene.watching(line, &expression) {
+                Ok(watched) => job.spec.scene = watched,
+                Err(e) => {
+                    self.watch_error = Some(e.to_string());
+                    self.selection.watch = None;
+                }
+            }
+        }
         self.observer_asked = job.observer.is_some();
         self.view_resolution.asked = job.view_resolution;
         match &self.worker {

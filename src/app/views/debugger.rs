@@ -13,7 +13,7 @@ use pipeline::shader::stepping::{self, Breakpoint};
 use pipeline::shader::{Stage, TraceLine};
 
 use super::shader::Tab;
-use crate::app::session::Session;
+use crate::app::session::{Command, Session};
 use crate::app::shortcuts::{self, Action};
 use crate::vocabulary::Lang;
 
@@ -32,6 +32,15 @@ pub struct Debugger {
     pub cursor_line: Option<usize>,
     /// Why the last step did not move (the run never reaches the line …), in words.
     pub note: Option<String>,
+    /// The variable picture's row.
+    pub watch: super::watch_picture::WatchPanel,
+    /// The fragment shader's breakpoints' conditions, by line.
+    pub conditions: BTreeMap<usize, String>,
+    /// A condition searched over the frame: its line and text, until its watch's frame is here.
+    pub finding: Option<(usize, String)>,
+    /// A line whose last step to show once the run of the pixel just inspected arrives (a
+    /// condition's first pixel).
+    pub show_line: Option<usize>,
 }
 
 /// A stage as a key of the breakpoints' map.
@@ -399,17 +408,44 @@ fn scope(ui: &mut Ui, run: &[TraceLine], at: usize, lang: Lang) {
 }
 
 /// The debugger over the source of `tab`: its keys and bar when the tab's stage has a run to
-/// step (a hint where to click when it has none), and what the source shows of it.
-pub fn panel(ui: &mut Ui, debugger: &mut Debugger, tab: Tab, session: &Session) -> Marks {
-    let lang = session.lang;
+/// step (a hint where to click when it has none), the fragment shader's variable picture, and
+/// what the source shows of the run; the command the picture asks for.
+pub fn panel(
+    ui: &mut Ui,
+    debugger: &mut Debugger,
+    tab: Tab,
+    session: &Session,
+) -> (Marks, Option<Command>) {
     let Tab::Shader(stage) = tab else {
-        return Marks {
+        let none = Marks {
             current: None,
             breakpoints: Vec::new(),
             beside: Vec::new(),
             reveal: false,
         };
+        return (none, None);
     };
+    let (marks, step_line) = stepped(ui, debugger, stage, session);
+    let mut command = super::breakpoints::list(ui, debugger, stage, session);
+    if stage == Stage::Fragment && session.spec.scene.has_shaders() {
+        let asked = super::watch_picture::ui(ui, &mut debugger.watch, session, step_line);
+        command = command.or(asked.command);
+        if asked.show_line.is_some() {
+            debugger.show_line = asked.show_line;
+        }
+        command = command.or_else(|| super::breakpoints::found(debugger, session));
+    }
+    (marks, command)
+}
+
+/// [`panel`]'s stepping on a shader's tab: what the source shows, and the step's line.
+fn stepped(
+    ui: &mut Ui,
+    debugger: &mut Debugger,
+    stage: Stage,
+    session: &Session,
+) -> (Marks, Option<usize>) {
+    let lang = session.lang;
     let capture = session.capture.clone();
     let run = capture
         .as_deref()
@@ -431,9 +467,18 @@ pub fn panel(ui: &mut Ui, debugger: &mut Debugger, tab: Tab, session: &Session) 
             );
         }
         debugger.at = None;
-        return debugger.marks(&[], stage, lang);
+        return (debugger.marks(&[], stage, lang), None);
     };
     debugger.follow(&run);
+    // The first pixel where a condition holds was inspected: once its run is here, show its
+    // last step on the watched line.
+    let this_pixel = capture
+        .as_deref()
+        .is_some_and(|c| c.settings.capture.pixel == session.selection.pixel);
+    if let Some(line) = debugger.show_line.filter(|_| this_pixel) {
+        debugger.show_line = None;
+        debugger.at = run.iter().rposition(|t| t.line == line);
+    }
     let fragments = match stage {
         Stage::Fragment => capture
             .as_deref()
@@ -466,5 +511,6 @@ pub fn panel(ui: &mut Ui, debugger: &mut Debugger, tab: Tab, session: &Session) 
     }
     let mut marks = debugger.marks(&run, stage, lang);
     marks.reveal = debugger.at != before;
-    marks
+    let step_line = marks.current;
+    (marks, step_line)
 }

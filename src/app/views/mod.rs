@@ -2,6 +2,7 @@
 //! none of them computes pipeline results — those come from the `FrameCapture`.
 
 pub mod answer;
+pub mod breakpoints;
 mod buffer_texture;
 pub mod card_placement;
 pub mod compare;
@@ -20,6 +21,7 @@ mod projector;
 pub mod shader;
 mod shader_source;
 pub mod typeset;
+pub mod watch_picture;
 mod words;
 
 pub use buffer_texture::{BufferTexture, TermGain};

@@ -47,6 +47,8 @@ pub struct ShaderEditor {
     shown: Option<Arc<Programs>>,
     /// The debugger: the step shown of the run at the inspected pixel or vertex, breakpoints.
     pub debugger: super::debugger::Debugger,
+    /// The student's sources before "pipelens' own" replaced them, until they edit again.
+    pub before_own: Option<(String, String)>,
 }
 
 /// A function the pipeline calls, as the student edits it.
@@ -86,6 +88,7 @@ impl Default for ShaderEditor {
             saved: None,
             shown: None,
             debugger: super::debugger::Debugger::default(),
+            before_own: None,
         }
     }
 }
@@ -211,14 +214,15 @@ impl ShaderEditor {
     }
 }
 
-/// The panel. Returns the command that applies the shaders, when they changed and compile.
-/// Save writes the sources into `save_dir` (in the browser: downloads them).
+/// The panel. Returns the command that applies the shaders, when they changed and compile,
+/// and the debugger's (a watch, a pixel inspected). Save writes the sources into `save_dir`
+/// (in the browser: downloads them).
 pub fn ui(
     ui: &mut Ui,
     editor: &mut ShaderEditor,
     session: &Session,
     save_dir: &std::path::Path,
-) -> Option<Command> {
+) -> Vec<Command> {
     let lang = session.lang;
     editor.load(session);
     let mut apply = false;
@@ -228,33 +232,7 @@ pub fn ui(
             .button(lang.tr("Apply", "应用"))
             .on_hover_text(lang.tr("Compile and draw with these shaders (Ctrl+Enter)", "编译并用这些着色器绘制（Ctrl+Enter）"))
             .clicked();
-        if ui
-            .button(lang.tr("pipelens' own", "pipelens 自带"))
-            .on_hover_text(lang.tr(
-                "Start again from pipelens' own shading for the current settings, written as GLSL (unlit; flat; Gouraud; Phong shading with n·h or r·v; a bump or normal map): it draws the same pixels. For r·v with flat or Gouraud shading or a bump map, and for a mirror, none is shipped: there, Blinn-Phong per pixel.",
-                "从 pipelens 针对当前设置的自带着色（GLSL 写成）重新开始（无光照；平面；Gouraud；Phong 着色，n·h 或 r·v；凹凸或法线贴图）：画出的像素相同。平面或 Gouraud 着色配 r·v、凹凸贴图配 r·v 以及镜面没有对应的着色器：此时用逐像素 Blinn-Phong。",
-            ))
-            .clicked()
-        {
-            let s = &session.spec.settings;
-            // One pair for every object: that of the object the lesson is about (the first
-            // with a bump or normal map, else the first the lights reach).
-            let objects = &session.spec.scene.objects;
-            let subject = objects
-                .iter()
-                .find(|o| o.detail.is_some())
-                .or_else(|| objects.iter().find(|o| o.lit))
-                .or(objects.first());
-            let (vertex, fragment) = subject
-                .and_then(|o| shader::builtin_sources(s.shading, s.reflection, o.surface()))
-                .unwrap_or((BUILTIN_VERTEX, BUILTIN_FRAGMENT));
-            let none = std::collections::BTreeMap::new();
-            let local = |s| crate::vocabulary::glsl::localize(s, session.lang, &none);
-            editor.vertex = local(vertex);
-            editor.fragment = local(fragment);
-            editor.shaders_in_use = true;
-            apply = true;
-        }
+        apply |= own_or_back(ui, editor, session);
         if ui
             .button(lang.tr("Save", "保存"))
             .on_hover_text(lang.tr(
@@ -312,7 +290,7 @@ pub fn ui(
         }
     };
     let errors: Vec<(usize, &str)> = errors.iter().map(|(l, m)| (*l, m.as_str())).collect();
-    let marks = super::debugger::panel(ui, &mut editor.debugger, tab, session);
+    let (marks, watched) = super::debugger::panel(ui, &mut editor.debugger, tab, session);
     let touched = super::shader_source::code(ui, (source, &format!("{tab:?}")), &errors, &marks);
     let edited = touched.changed;
     if touched.cursor_line.is_some() {
@@ -321,15 +299,74 @@ pub fn ui(
     if let (Some(line), Tab::Shader(stage)) = (touched.gutter, tab) {
         editor.debugger.toggle(stage, line);
     }
+    if edited {
+        // Their own edit: what "pipelens' own" replaced is no longer one click away.
+        editor.before_own = None;
+    }
     if edited && matches!(tab, Tab::Shader(_)) {
         editor.shaders_in_use = true;
     }
     apply |= crate::app::shortcuts::pressed(ui.ctx(), crate::app::shortcuts::Action::ApplyShaders);
-    if edited || apply {
+    let applied = if edited || apply {
         editor.apply(session)
     } else {
         None
+    };
+    applied.into_iter().chain(watched).collect()
+}
+
+/// "pipelens' own": the shading of the current settings as GLSL in place of the student's,
+/// their code kept one click away ("Back to your code") until they edit again. Returns
+/// whether the sources changed.
+fn own_or_back(ui: &mut Ui, editor: &mut ShaderEditor, session: &Session) -> bool {
+    let lang = session.lang;
+    if let Some((vertex, fragment)) = editor.before_own.clone()
+        && ui
+            .button(lang.tr("← Back to your code", "← 回到你的代码"))
+            .on_hover_text(lang.tr(
+                "Puts back the code you had before pipelens' own replaced it.",
+                "恢复被 pipelens 自带着色替换之前你的代码。",
+            ))
+            .clicked()
+    {
+        editor.vertex = vertex;
+        editor.fragment = fragment;
+        editor.before_own = None;
+        return true;
     }
+    if !ui
+        .button(lang.tr("pipelens' own", "pipelens 自带"))
+        .on_hover_text(lang.tr(
+            "Start again from pipelens' own shading for the current settings, written as GLSL (unlit; flat; Gouraud; Phong shading with n·h or r·v; a bump or normal map): it draws the same pixels. For r·v with flat or Gouraud shading or a bump map, and for a mirror, none is shipped: there, Blinn-Phong per pixel. Your code stays one click away (Back to your code).",
+            "从 pipelens 针对当前设置的自带着色（GLSL 写成）重新开始（无光照；平面；Gouraud；Phong 着色，n·h 或 r·v；凹凸或法线贴图）：画出的像素相同。平面或 Gouraud 着色配 r·v、凹凸贴图配 r·v 以及镜面没有对应的着色器：此时用逐像素 Blinn-Phong。你的代码仍可一键恢复（回到你的代码）。",
+        ))
+        .clicked()
+    {
+        return false;
+    }
+    let s = &session.spec.settings;
+    // One pair for every object: that of the object the lesson is about (the first with a
+    // bump or normal map, else the first the lights reach).
+    let objects = &session.spec.scene.objects;
+    let subject = objects
+        .iter()
+        .find(|o| o.detail.is_some())
+        .or_else(|| objects.iter().find(|o| o.lit))
+        .or(objects.first());
+    let (vertex, fragment) = subject
+        .and_then(|o| shader::builtin_sources(s.shading, s.reflection, o.surface()))
+        .unwrap_or((BUILTIN_VERTEX, BUILTIN_FRAGMENT));
+    let none = std::collections::BTreeMap::new();
+    let local = |s| crate::vocabulary::glsl::localize(s, session.lang, &none);
+    let (vertex, fragment) = (local(vertex), local(fragment));
+    if (vertex.as_str(), fragment.as_str()) != (editor.vertex.as_str(), editor.fragment.as_str()) {
+        editor.before_own = Some((
+            std::mem::replace(&mut editor.vertex, vertex),
+            std::mem::replace(&mut editor.fragment, fragment),
+        ));
+    }
+    editor.shaders_in_use = true;
+    true
 }
 
 /// What a function's tab says when hovered, in English and Chinese.

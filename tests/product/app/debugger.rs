@@ -89,7 +89,7 @@ fn the_debugger_steps_through_the_inspected_fragments_run() {
     press(&mut h, Modifiers::SHIFT, Key::F10);
     assert_eq!(line(&h), Some(6), "back: half_of's return");
     assert!(h.query_by_label_contains("h = 0.125   (line 5)").is_some());
-    press(&mut h, Modifiers::SHIFT, Key::F8);
+    press(&mut h, Modifiers::SHIFT, Key::F7);
     assert_eq!(line(&h), Some(10), "out: back in main");
     // Back to the call (return, h, the parameter x received on the function's line, call),
     // then into it.
@@ -97,7 +97,7 @@ fn the_debugger_steps_through_the_inspected_fragments_run() {
         press(&mut h, Modifiers::SHIFT, Key::F10);
         assert_eq!(line(&h), Some(expected));
     }
-    press(&mut h, Modifiers::NONE, Key::F8);
+    press(&mut h, Modifiers::NONE, Key::F7);
     assert_eq!(line(&h), Some(4), "into half_of: x received");
     assert!(h.query_by_label_contains("x = 0.250   (line 4)").is_some());
     // The cursor on line 12: run to it; the variables show a as the loop left it.
@@ -105,7 +105,7 @@ fn the_debugger_steps_through_the_inspected_fragments_run() {
     press(&mut h, Modifiers::COMMAND, Key::F10);
     assert_eq!(line(&h), Some(12));
     assert!(h.query_by_label_contains("a = 0.500   (line 11)").is_some());
-    // A breakpoint by a click on line 11's number; Shift+F5 runs back to its last hit, F5
+    // A breakpoint by a click on line 11's number; Shift+F8 runs back to its last hit, F8
     // from the start to its first.
     let gutter = h.get_by_label_contains("  11\n").rect();
     // 14 numbers: the source's 13 lines and the empty one after its last newline.
@@ -126,11 +126,11 @@ fn the_debugger_steps_through_the_inspected_fragments_run() {
             .collect::<Vec<_>>(),
         [11]
     );
-    press(&mut h, Modifiers::SHIFT, Key::F5);
+    press(&mut h, Modifiers::SHIFT, Key::F8);
     assert_eq!(line(&h), Some(11), "back to the loop's last step");
     let last_hit = h.state().shader_editor.debugger.at;
     h.state_mut().shader_editor.debugger.at = None;
-    press(&mut h, Modifiers::NONE, Key::F5);
+    press(&mut h, Modifiers::NONE, Key::F8);
     assert_eq!(line(&h), Some(11), "on to the loop's first step");
     assert!(h.state().shader_editor.debugger.at < last_hit);
     // Nothing before the first step: the bar says so.
@@ -140,5 +140,132 @@ fn the_debugger_steps_through_the_inspected_fragments_run() {
     assert!(
         h.query_by_label_contains("This is the run's first step.")
             .is_some()
+    );
+}
+
+/// The variable picture of a condition, typed into the watch row, finds the first fragment
+/// where it holds: lesson 24's debugger step, `dot(n, l) < 0.0` after line 22 (where
+/// `diffuse = max(dot(n, l), 0.0)`). The pixel it inspects has, by its own run's values of n
+/// and l (the trace, not the watch), n·l < 0, and the debugger shows that run at line 22 with
+/// diffuse 0.
+#[test]
+fn a_condition_over_the_frame_finds_its_first_fragment() {
+    let path = crate::support::repo().join("lessons/24-shader-programs.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    crate::app::go_to_step_titled(&mut h, "The debugger: one fragment's run");
+    h.state_mut().panels.shader = true;
+    h.run_steps(4);
+    let field = || (egui::accesskit::Role::TextInput, "Watch over the frame:");
+    h.get_by_role_and_label(field().0, field().1).focus();
+    h.run_steps(2);
+    h.get_by_role_and_label(field().0, field().1)
+        .type_text("dot(n, l) < 0.0");
+    h.state_mut().shader_editor.debugger.watch.line = 22;
+    h.run_steps(2);
+    h.get_by_label("Show").click();
+    h.run_steps(6);
+    assert_eq!(
+        h.state().session.selection.watch,
+        Some((22, "dot(n, l) < 0.0".to_owned())),
+        "{:?} {:?}",
+        h.state().shader_editor.debugger.watch.error,
+        h.state().shader_editor.debugger.watch.expression
+    );
+    assert!(h.query_by_label_contains("true (").is_some(), "the legend");
+    h.get_by_label("First where it holds ▶").click();
+    h.run_steps(8);
+    let app = h.state();
+    let capture = app.session.capture.as_ref().expect("a frame");
+    assert_eq!(capture.settings.capture.pixel, app.session.selection.pixel);
+    let run = &capture.shaders.as_ref().expect("shaders").pixel[0].trace;
+    let value = |name: &str| {
+        run.iter()
+            .rev()
+            .find_map(|t| match &t.step {
+                pipeline::shader::Step::Assign { name: n, value } if n == name => {
+                    Some(value.numbers.clone())
+                }
+                _ => None,
+            })
+            .unwrap_or_else(|| panic!("{name} in the run"))
+    };
+    let (n, l) = (value("n"), value("l"));
+    let n_dot_l: f64 = (0..3).map(|k| n[k] * l[k]).sum();
+    assert!(
+        n_dot_l < 0.0,
+        "n·l = {n_dot_l} at {:?}",
+        app.session.selection.pixel
+    );
+    assert_eq!(value("diffuse"), [0.0]);
+    let at = app
+        .shader_editor
+        .debugger
+        .at
+        .expect("the debugger shows a step");
+    assert_eq!(run[at].line, 22);
+    // The same fragment as a breakpoint's condition on line 22: diffuse = max(n·l, 0) is 0
+    // exactly where n·l ≤ 0, so the first fragment where `diffuse <= 0.0` is the same one.
+    let first = app.session.selection.pixel;
+    h.state_mut()
+        .session
+        .apply(Command::Selection(SelectionCommand::SelectPixel(Some((
+            240, 180,
+        )))));
+    h.state_mut()
+        .shader_editor
+        .debugger
+        .toggle(pipeline::shader::Stage::Fragment, 22);
+    h.run_steps(6);
+    let field = || (egui::accesskit::Role::TextInput, "where");
+    h.get_by_role_and_label(field().0, field().1).focus();
+    h.run_steps(2);
+    h.get_by_role_and_label(field().0, field().1)
+        .type_text("diffuse <= 0.0");
+    h.run_steps(2);
+    h.get_by_label("Find in the frame").click();
+    h.run_steps(10);
+    assert_eq!(h.state().session.selection.pixel, first);
+    let app = h.state();
+    let capture = app.session.capture.as_ref().expect("a frame");
+    let run = &capture.shaders.as_ref().expect("shaders").pixel[0].trace;
+    let at = app.shader_editor.debugger.at.expect("a step");
+    assert_eq!(run[at].line, 22);
+}
+
+/// "pipelens' own" replaces the student's code with the settings' shading as GLSL, and keeps
+/// theirs one click away: "Back to your code" puts it back and draws with it again.
+#[test]
+fn pipelens_own_keeps_the_students_code_one_click_away() {
+    let path = crate::support::repo().join("lessons/24-shader-programs.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    h.state_mut().panels.shader = true;
+    h.run_steps(4);
+    {
+        let app = h.state_mut();
+        app.shader_editor.fragment = SOURCE.to_owned();
+        app.shader_editor.shaders_in_use = true;
+        let applied = app.shader_editor.apply(&app.session).expect("compiles");
+        app.session.apply(applied);
+    }
+    h.run_steps(4);
+    assert!(h.query_by_label("← Back to your code").is_none());
+    h.get_by_label("pipelens' own").click();
+    h.run_steps(4);
+    assert_ne!(h.state().shader_editor.fragment, SOURCE);
+    h.get_by_label("← Back to your code").click();
+    h.run_steps(4);
+    let app = h.state();
+    assert_eq!(app.shader_editor.fragment, SOURCE);
+    let drawn = app
+        .session
+        .spec
+        .scene
+        .objects
+        .iter()
+        .find_map(|o| o.code.shader.as_ref())
+        .expect("shaders");
+    assert_eq!(
+        drawn.programs.fragment.source, SOURCE,
+        "drawn with it again"
     );
 }

@@ -19,7 +19,7 @@ pub use difference::{Criteria, Difference};
 pub use explain::*;
 pub use inspect::*;
 pub use pixels::*;
-pub use watch::{WatchPicture, WatchView, WatchedImage};
+pub use watch::{WatchPicture, WatchView, WatchedImage, ramp as watch_ramp};
 
 use glam::{I64Vec2, Vec3};
 use half::f16;

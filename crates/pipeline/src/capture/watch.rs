@@ -47,7 +47,7 @@ pub struct WatchedImage {
 
 /// Where no fragment ran the line: a checkerboard of two greys, 4 pixels a square.
 fn not_run(x: u32, y: u32) -> [u8; 4] {
-    if (x / 4 + y / 4) % 2 == 0 {
+    if (x / 4 + y / 4).is_multiple_of(2) {
         [56, 56, 56, 255]
     } else {
         [80, 80, 80, 255]

@@ -1,0 +1,288 @@
+//! The debugger's variable picture: a fragment-shader expression after a line, at every pixel
+//! of the frame (`Selection::watch`, drawn by `WatchPicture::drawn`), with its legend; the
+//! value under the mouse, a click inspecting that pixel, and for a condition the first pixel
+//! where it holds, its run shown at that line.
+
+use egui::{RichText, Ui};
+use pipeline::capture::{WatchPicture, WatchView};
+use pipeline::shader::probe::WatchKind;
+
+use crate::app::command::SelectionCommand;
+use crate::app::session::{Command, Session};
+use crate::vocabulary::{Lang, num};
+
+/// What the watch's row keeps: the expression typed, its line, how the picture is drawn.
+pub struct WatchPanel {
+    /// The expression as typed.
+    pub expression: String,
+    /// The line after which it is read, from 1.
+    pub line: usize,
+    /// How a vector is drawn: as a colour, or one component on the ramp.
+    pub view: WatchView,
+    /// Why the last Show did nothing.
+    pub error: Option<String>,
+    /// The picture's texture, with the frame and view it shows.
+    texture: Option<((usize, WatchView), egui::TextureHandle)>,
+}
+
+impl Default for WatchPanel {
+    fn default() -> Self {
+        Self {
+            expression: String::new(),
+            line: 1,
+            view: WatchView::Value,
+            error: None,
+            texture: None,
+        }
+    }
+}
+
+/// What the row asks for: a command, and, after "first where it holds", the line whose last
+/// step the debugger should show in that pixel's run.
+#[derive(Default)]
+pub struct Asked {
+    /// The command (a watch set or stopped, a pixel inspected).
+    pub command: Option<Command>,
+    /// The line to show in the run of the pixel just inspected.
+    pub show_line: Option<usize>,
+}
+
+/// The watch's row and picture. `step_line` is the line of the debugger's step (the default
+/// line to watch after).
+pub fn ui(
+    ui: &mut Ui,
+    panel: &mut WatchPanel,
+    session: &Session,
+    step_line: Option<usize>,
+) -> Asked {
+    let lang = session.lang;
+    let mut asked = Asked::default();
+    let watching = session.selection.watch.clone();
+    ui.horizontal_wrapped(|ui| {
+        let label = ui
+            .label(RichText::new(lang.tr("Watch over the frame:", "整帧监视：")).strong())
+            .on_hover_text(lang.tr(
+                "Any expression of your fragment shader, read just after the line runs, at every pixel: a number on a ramp (dark blue the least, yellow the greatest), a vector as a colour or one component, a condition where it holds. Grey checks: no fragment ran the line there.",
+                "片元着色器中的任意表达式，在该行执行之后读取，每个像素一个值：数值用色带表示（深蓝最小，黄色最大），向量显示为颜色或某一分量，条件显示其成立之处。灰色棋盘格：那里没有片元执行该行。",
+            ));
+        let field = ui.add(
+            egui::TextEdit::singleline(&mut panel.expression)
+                .id_salt("watch expression")
+                .code_editor()
+                .desired_width(220.0)
+                .hint_text(lang.tr("e.g. dot(n, l) < 0.0", "例如 dot(n, l) < 0.0")),
+        )
+        .labelled_by(label.id);
+        ui.label(lang.tr("after line", "在此行之后："));
+        ui.add(egui::DragValue::new(&mut panel.line).range(1..=9999));
+        if let Some(line) = step_line
+            && ui
+                .small_button(lang.tr("the step's", "当前步的行"))
+                .on_hover_text(lang.tr("Watch after the line of the debugger's step.", "在调试器当前步所在行之后监视。"))
+                .clicked()
+        {
+            panel.line = line;
+        }
+        let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+        if ui.button(lang.tr("Show", "显示")).clicked() || entered {
+            asked.command = show(panel, session);
+        }
+        if watching.is_some() && ui.button(lang.tr("Stop", "停止")).clicked() {
+            asked.command = Some(Command::Selection(SelectionCommand::SetWatch(None)));
+        }
+    });
+    if let Some(e) = panel.error.as_ref().or(session.watch_error.as_ref()) {
+        ui.colored_label(ui.visuals().error_fg_color, e);
+    }
+    let picture = session.capture.as_ref().and_then(|c| {
+        c.shaders
+            .as_ref()
+            .and_then(|r| r.watch.as_ref())
+            .map(|w| (c, w))
+    });
+    if let Some((capture, picture)) = picture.filter(|_| watching.is_some()) {
+        let key = (std::sync::Arc::as_ptr(capture) as usize, panel.view);
+        shown(ui, panel, picture, key, lang, &mut asked);
+    }
+    asked
+}
+
+/// Checks the watch against the scene (it compiles there) and asks for it.
+fn show(panel: &mut WatchPanel, session: &Session) -> Option<Command> {
+    let lang = session.lang;
+    let expression = panel.expression.trim().to_owned();
+    match session.spec.scene.watching(panel.line, &expression) {
+        Ok(_) => {
+            panel.error = None;
+            panel.view = WatchView::Value;
+            Some(Command::Selection(SelectionCommand::SetWatch(Some((
+                panel.line, expression,
+            )))))
+        }
+        Err(e) => {
+            panel.error = Some(format!("{} {e}", lang.tr("Cannot watch:", "无法监视：")));
+            None
+        }
+    }
+}
+
+/// The picture with its legend; hovering says the value, a click inspects the pixel.
+fn shown(
+    ui: &mut Ui,
+    panel: &mut WatchPanel,
+    picture: &WatchPicture,
+    key: (usize, WatchView),
+    lang: Lang,
+    asked: &mut Asked,
+) {
+    let Some(kind) = picture.kind else {
+        ui.label(lang.tr(
+            "No fragment of this frame ran that line.",
+            "此帧没有片元执行该行。",
+        ));
+        return;
+    };
+    let drawn = picture.drawn(panel.view);
+    legend(ui, panel, picture, kind, drawn.range, lang, asked);
+    let texture = match &panel.texture {
+        Some((k, t)) if *k == key => t.clone(),
+        _ => {
+            let size = [drawn.image.width() as usize, drawn.image.height() as usize];
+            let image = egui::ColorImage::from_rgba_unmultiplied(size, drawn.image.as_raw());
+            let t = ui
+                .ctx()
+                .load_texture("watch picture", image, egui::TextureOptions::NEAREST);
+            panel.texture = Some((key, t.clone()));
+            t
+        }
+    };
+    let (w, h) = (picture.width as f32, picture.height() as f32);
+    let scale = (ui.available_width() / w).min(240.0 / h).max(0.1);
+    let response = ui.add(
+        egui::Image::new(&texture)
+            .fit_to_exact_size(egui::vec2(w * scale, h * scale))
+            .sense(egui::Sense::click()),
+    );
+    let Some(pos) = response.hover_pos() else {
+        return;
+    };
+    let local = (pos - response.rect.min) / scale;
+    let (x, row) = (local.x.floor() as u32, local.y.floor() as u32);
+    let y = picture.height().saturating_sub(row + 1);
+    let said = match picture.at(x, y) {
+        Some(v) => value_words(kind, v),
+        None => lang
+            .tr("the line did not run here", "这里没有执行该行")
+            .to_owned(),
+    };
+    let response =
+        response.on_hover_text(format!("{} ({x}, {y}): {said}", lang.tr("pixel", "像素")));
+    if response.clicked() {
+        asked.command = Some(Command::Selection(SelectionCommand::SelectPixel(Some((
+            x, y,
+        )))));
+    }
+}
+
+/// A watched value as GLSL writes it.
+fn value_words(kind: WatchKind, v: [f32; 4]) -> String {
+    match kind {
+        WatchKind::Bool => (v[0] != 0.0).to_string(),
+        WatchKind::Float | WatchKind::Int => num(v[0]),
+        _ => {
+            let parts: Vec<String> = v.iter().take(kind.components()).map(|c| num(*c)).collect();
+            format!("{}({})", kind.glsl(), parts.join(", "))
+        }
+    }
+}
+
+/// What the colours stand for: the ramp's two ends with their values, or a condition's two
+/// colours with how many pixels each, or a vector's channels; a vector's view chosen here.
+#[allow(clippy::too_many_arguments)]
+fn legend(
+    ui: &mut Ui,
+    panel: &mut WatchPanel,
+    picture: &WatchPicture,
+    kind: WatchKind,
+    range: Option<(f32, f32)>,
+    lang: Lang,
+    asked: &mut Asked,
+) {
+    let swatch = |ui: &mut Ui, c: [u8; 4]| {
+        let (rect, _) = ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
+        ui.painter()
+            .rect_filled(rect, 2.0, egui::Color32::from_rgb(c[0], c[1], c[2]));
+    };
+    let ramp = pipeline::capture::watch_ramp;
+    ui.horizontal_wrapped(|ui| {
+        ui.label(
+            RichText::new(format!(
+                "`{}` {} {} · {}",
+                picture.expression,
+                lang.tr("after line", "在行"),
+                picture.line,
+                kind.glsl()
+            ))
+            .monospace(),
+        );
+        if kind.components() > 1 {
+            ui.selectable_value(
+                &mut panel.view,
+                WatchView::Value,
+                lang.tr("as colour", "显示为颜色"),
+            );
+            for (c, name) in ["x", "y", "z", "w"]
+                .iter()
+                .enumerate()
+                .take(kind.components())
+            {
+                ui.selectable_value(&mut panel.view, WatchView::Component(c), *name);
+            }
+        }
+    });
+    ui.horizontal_wrapped(|ui| {
+        match (kind, range) {
+            (WatchKind::Bool, _) => {
+                let holds = picture.values.iter().flatten().filter(|v| v[0] != 0.0).count();
+                swatch(ui, ramp(1.0));
+                ui.label(format!("{} ({holds})", lang.tr("true", "成立")));
+                swatch(ui, ramp(0.0));
+                ui.label(format!(
+                    "{} ({})",
+                    lang.tr("false", "不成立"),
+                    picture.pixels_run() - holds
+                ));
+                if let Some(first) = picture.first_where()
+                    && ui
+                        .button(lang.tr("First where it holds ▶", "第一个成立之处 ▶"))
+                        .on_hover_text(lang.tr(
+                            "Inspects the first pixel where it holds, reading the picture from the top, and shows its run at the watched line: a breakpoint with a condition, over the whole frame.",
+                            "检查从画面顶部读起第一个条件成立的像素，并在被监视的行显示它的运行过程：在整帧上的条件断点。",
+                        ))
+                        .clicked()
+                {
+                    asked.command =
+                        Some(Command::Selection(SelectionCommand::SelectPixel(Some(first))));
+                    asked.show_line = Some(picture.line);
+                }
+            }
+            (_, Some((lo, hi))) => {
+                swatch(ui, ramp(0.0));
+                ui.label(num(lo));
+                for k in 1..8 {
+                    swatch(ui, ramp(k as f32 / 8.0));
+                }
+                swatch(ui, ramp(1.0));
+                ui.label(num(hi));
+            }
+            _ => {
+                ui.label(lang.tr(
+                    "x → red, y → green, z → blue, each clamped to [0, 1]",
+                    "x → 红，y → 绿，z → 蓝，各自截取到 [0, 1]",
+                ));
+            }
+        }
+        swatch(ui, [68, 68, 68, 255]);
+        ui.label(lang.tr("not run", "未执行"));
+    });
+}
