@@ -103,7 +103,7 @@ impl Batch {
 pub struct Ran<'m> {
     result: &'m [u32],
     /// The invocations' globals, `LANES` values a component (what a watch reads).
-    pub(crate) privates: &'m [u32],
+    privates: &'m [u32],
     /// The lanes that were discarded.
     pub killed: u64,
 }
@@ -127,6 +127,17 @@ impl Ran<'_> {
     #[must_use]
     pub fn rows(&self) -> &[u32] {
         self.result
+    }
+
+    /// What lane `lane`'s watch saw, for a program compiled with one (`crate::probe`): `None`
+    /// where the lane never ran the watched line.
+    #[must_use]
+    pub fn watched(
+        &self,
+        places: &crate::watched::WatchPlaces,
+        lane: usize,
+    ) -> Option<crate::watched::Watched> {
+        places.read(self.privates, lane)
     }
 
     /// Whether lane `lane` was discarded.

@@ -38,6 +38,7 @@ pub mod suggest;
 mod trace;
 mod translate;
 mod type_layout;
+mod watched;
 
 mod batch;
 mod compile;

@@ -12,71 +12,13 @@
 
 use std::ops::Range;
 
-use crate::batch::Ran;
 use crate::error::ShaderError;
 use crate::lexeme::{self, Kind};
-use crate::machine::LANES;
 use crate::program::Program;
-use crate::register_form::{Reg, Root};
+use crate::register_form::Root;
 use crate::stage::Stage;
-
-/// The type of a watched value.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum WatchKind {
-    /// `float`.
-    Float,
-    /// `vec2`.
-    Vec2,
-    /// `vec3`.
-    Vec3,
-    /// `vec4`.
-    Vec4,
-    /// `int` (or `uint`).
-    Int,
-    /// `bool`: a mask.
-    Bool,
-}
-
-impl WatchKind {
-    /// Its code in the watch's globals, as the overload for it stores it (from 1; 0: the line
-    /// never ran).
-    const ALL: [Self; 6] = [
-        Self::Float,
-        Self::Vec2,
-        Self::Vec3,
-        Self::Vec4,
-        Self::Int,
-        Self::Bool,
-    ];
-
-    /// How many of the `vec4`'s components hold the value.
-    #[must_use]
-    pub fn components(self) -> usize {
-        match self {
-            Self::Float | Self::Int | Self::Bool => 1,
-            Self::Vec2 => 2,
-            Self::Vec3 => 3,
-            Self::Vec4 => 4,
-        }
-    }
-
-    /// Its GLSL type.
-    #[must_use]
-    pub fn glsl(self) -> &'static str {
-        match self {
-            Self::Float => "float",
-            Self::Vec2 => "vec2",
-            Self::Vec3 => "vec3",
-            Self::Vec4 => "vec4",
-            Self::Int => "int",
-            Self::Bool => "bool",
-        }
-    }
-}
-
-/// The global the watch stores its value into.
-pub(crate) const WATCH: &str = "pipelens_watch";
+use crate::watched::WATCH;
+pub use crate::watched::{WatchKind, WatchPlaces, Watched};
 
 /// What pipelens puts before the student's code for a watch (one line each, for reading; the
 /// preamble is not the student's text, so its lines count for nothing).
@@ -91,45 +33,6 @@ vec4 pipelens_as_watch(int x) { pipelens_watch_kind = 5.0; return vec4(float(x),
 vec4 pipelens_as_watch(uint x) { pipelens_watch_kind = 5.0; return vec4(float(x), 0.0, 0.0, 0.0); }
 vec4 pipelens_as_watch(bool x) { pipelens_watch_kind = 6.0; return vec4(x ? 1.0 : 0.0, 0.0, 0.0, 0.0); }
 ";
-
-/// Where a watched program keeps what it saw: the value and its type's code.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct WatchPlaces {
-    value: Reg,
-    kind: Reg,
-    /// The line watched, from 1.
-    pub line: usize,
-    /// The expression watched, as typed.
-    pub expression: String,
-}
-
-/// What one invocation's watch saw.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Watched {
-    /// The value's type.
-    pub kind: WatchKind,
-    /// The value (its first [`WatchKind::components`] components; a bool is 0 or 1).
-    pub value: [f32; 4],
-}
-
-impl WatchPlaces {
-    /// What lane `lane` of `ran` saw: `None` when it never ran the line.
-    #[must_use]
-    pub fn read(&self, ran: &Ran<'_>, lane: usize) -> Option<Watched> {
-        let at = |reg: &Reg, c: u32| {
-            ran.privates
-                .get((reg.first + c) as usize * LANES + lane)
-                .map_or(0.0, |b| f32::from_bits(*b))
-        };
-        let code = at(&self.kind, 0);
-        #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-        let kind = *WatchKind::ALL.get((code as usize).checked_sub(1)?)?;
-        Some(Watched {
-            kind,
-            value: std::array::from_fn(|c| at(&self.value, c as u32)),
-        })
-    }
-}
 
 /// Why a watch cannot be made.
 #[derive(Clone, Debug, PartialEq)]
@@ -243,12 +146,7 @@ pub fn watch(
     let (Some(value), Some(kind)) = (place(WATCH), place("pipelens_watch_kind")) else {
         return Err(WatchError::NotAfterStatement(line));
     };
-    program.watch = Some(WatchPlaces {
-        value,
-        kind,
-        line,
-        expression: expression.to_owned(),
-    });
+    program.watch = Some(WatchPlaces::new(value, kind, line, expression));
     Ok(program)
 }
 
@@ -282,7 +180,7 @@ void main() {
         let mut m = program.machine();
         let ran = m.run_batch(&batch, &()).expect("runs");
         let places = program.watch.as_ref().expect("a watch");
-        (0..xs.len()).map(|l| places.read(&ran, l)).collect()
+        (0..xs.len()).map(|l| ran.watched(places, l)).collect()
     }
 
     #[test]

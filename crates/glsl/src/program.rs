@@ -60,7 +60,7 @@ pub struct Program {
     /// panel's).
     pub origin: Option<Origin>,
     /// Where a program compiled with a watch keeps what the watch saw (`crate::probe`).
-    pub watch: Option<crate::probe::WatchPlaces>,
+    pub watch: Option<crate::watched::WatchPlaces>,
 }
 
 /// The entry point's inputs and outputs, from naga's bindings.

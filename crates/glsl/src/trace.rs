@@ -128,7 +128,7 @@ impl Program {
         events
             .iter()
             // A watch's own store (`crate::probe`) is pipelens', not a step of the student's.
-            .filter(|e| !matches!(e, Event::Assign { name, .. } if name == crate::probe::WATCH))
+            .filter(|e| !matches!(e, Event::Assign { name, .. } if name == crate::watched::WATCH))
             .map(|e| {
                 let value = |ty: naga::Handle<naga::Type>, bits: &[u32]| Value {
                     ty: glsl_type(&self.module, ty),

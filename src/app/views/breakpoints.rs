@@ -3,31 +3,89 @@
 //! over the whole frame — the first fragment, reading the picture from the top, where it holds
 //! after the line, inspected and shown at that line (through the variable picture's watch).
 
+use std::collections::BTreeMap;
+
 use egui::{RichText, Ui};
 use pipeline::shader::Stage;
 use pipeline::shader::probe::WatchKind;
+use pipeline::shader::stepping::Breakpoint;
 
-use super::debugger::Debugger;
+use super::watch_picture::WatchPanel;
 use crate::app::command::SelectionCommand;
 use crate::app::session::{Command, Session};
 
+/// The breakpoints of both shaders, the fragment shader's conditions, and a condition being
+/// searched over the frame.
+#[derive(Default)]
+pub struct Breakpoints {
+    /// The breakpoints, by stage.
+    pub by_stage: BTreeMap<StageKey, Vec<Breakpoint>>,
+    /// The fragment shader's breakpoints' conditions, by line.
+    pub conditions: BTreeMap<usize, String>,
+    /// A condition searched over the frame: its line and text, until its watch's frame is here.
+    pub finding: Option<(usize, String)>,
+    /// What the last search found nothing for, or could not read, in words.
+    pub note: Option<String>,
+}
+
+/// A stage as a key of the breakpoints' map.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum StageKey {
+    /// The vertex shader.
+    Vertex,
+    /// The fragment shader.
+    Fragment,
+}
+
+impl From<Stage> for StageKey {
+    fn from(s: Stage) -> Self {
+        match s {
+            Stage::Vertex => Self::Vertex,
+            Stage::Fragment => Self::Fragment,
+        }
+    }
+}
+
+impl Breakpoints {
+    /// The breakpoints of `stage`.
+    #[must_use]
+    pub fn of(&self, stage: Stage) -> &[Breakpoint] {
+        self.by_stage.get(&stage.into()).map_or(&[], Vec::as_slice)
+    }
+
+    /// Sets or clears the breakpoint on `line` of `stage`.
+    pub fn toggle(&mut self, stage: Stage, line: usize) {
+        let list = self.by_stage.entry(stage.into()).or_default();
+        match list.iter().position(|b| b.line == line) {
+            Some(k) => {
+                list.remove(k);
+            }
+            None => list.push(Breakpoint::at(line)),
+        }
+    }
+}
+
 /// The list of `stage`'s breakpoints, each editable; the command a condition's search asks
-/// for (its watch).
+/// for (its watch, shown in `watch`'s row too).
 pub fn list(
     ui: &mut Ui,
-    debugger: &mut Debugger,
+    bps: &mut Breakpoints,
+    watch: &mut WatchPanel,
     stage: Stage,
     session: &Session,
 ) -> Option<Command> {
     let lang = session.lang;
     let mut command = None;
     let mut removed = None;
-    let lines: Vec<usize> = debugger.of(stage).iter().map(|b| b.line).collect();
+    if let Some(note) = &bps.note {
+        ui.label(RichText::new(note).color(ui.visuals().warn_fg_color));
+    }
+    let lines: Vec<usize> = bps.of(stage).iter().map(|b| b.line).collect();
     for line in lines {
         ui.horizontal_wrapped(|ui| {
             ui.label(RichText::new(format!("● {} {line}", lang.tr("line", "行"))).monospace());
-            let Some(b) = debugger
-                .breakpoints
+            let Some(b) = bps
+                .by_stage
                 .get_mut(&stage.into())
                 .and_then(|l| l.iter_mut().find(|b| b.line == line))
             else {
@@ -56,7 +114,7 @@ pub fn list(
                 b.hit = (hit > 0).then_some(hit);
             }
             if stage == Stage::Fragment {
-                let condition = debugger.conditions.entry(line).or_default();
+                let condition = bps.conditions.entry(line).or_default();
                 let label = ui.label(lang.tr("where", "条件"));
                 ui.add(
                     egui::TextEdit::singleline(condition)
@@ -77,16 +135,16 @@ pub fn list(
                     let condition = condition.trim().to_owned();
                     match session.spec.scene.watching(line, &condition) {
                         Ok(_) => {
-                            debugger.note = None;
-                            debugger.watch.expression.clone_from(&condition);
-                            debugger.watch.line = line;
-                            debugger.finding = Some((line, condition.clone()));
+                            bps.note = None;
+                            watch.expression.clone_from(&condition);
+                            watch.line = line;
+                            bps.finding = Some((line, condition.clone()));
                             command = Some(Command::Selection(SelectionCommand::SetWatch(Some(
                                 (line, condition),
                             ))));
                         }
                         Err(e) => {
-                            debugger.note = Some(format!(
+                            bps.note = Some(format!(
                                 "{} {e}",
                                 lang.tr("The condition cannot be read there:", "无法在此处读取该条件：")
                             ));
@@ -104,50 +162,55 @@ pub fn list(
         });
     }
     if let Some(line) = removed {
-        debugger.toggle(stage, line);
+        bps.toggle(stage, line);
     }
     command
 }
 
 /// Once the frame with a condition's watch is here, the first pixel where it holds: the
-/// command that inspects it (and the line to show in its run), or, where it holds nowhere or
-/// is not a condition, why not.
-pub fn found(debugger: &mut Debugger, session: &Session) -> Option<Command> {
-    let (line, condition) = debugger.finding.clone()?;
+/// command that inspects it and the line to show in its run, or, where it holds nowhere or is
+/// not a condition, why not (in [`Breakpoints::note`]).
+pub fn found(bps: &mut Breakpoints, session: &Session) -> (Option<Command>, Option<usize>) {
+    let Some((line, condition)) = bps.finding.clone() else {
+        return (None, None);
+    };
     let picture = session
         .capture
         .as_ref()
         .and_then(|c| c.shaders.as_ref())
         .and_then(|r| r.watch.as_ref())
-        .filter(|w| w.line == line && w.expression == condition)?;
-    debugger.finding = None;
+        .filter(|w| w.line == line && w.expression == condition);
+    let Some(picture) = picture else {
+        return (None, None);
+    };
+    bps.finding = None;
     let lang = session.lang;
     match (picture.kind, picture.first_where()) {
-        (Some(WatchKind::Bool), Some(first)) => {
-            debugger.show_line = Some(line);
+        (Some(WatchKind::Bool), Some(first)) => (
             Some(Command::Selection(SelectionCommand::SelectPixel(Some(
                 first,
-            ))))
-        }
+            )))),
+            Some(line),
+        ),
         (Some(WatchKind::Bool), None) => {
-            debugger.note = Some(format!(
+            bps.note = Some(format!(
                 "`{condition}` {}",
                 lang.tr(
                     "holds at no fragment of this frame after that line.",
                     "在此帧中没有任何片元在该行之后成立。"
                 )
             ));
-            None
+            (None, None)
         }
         _ => {
-            debugger.note = Some(format!(
+            bps.note = Some(format!(
                 "`{condition}` {}",
                 lang.tr(
                     "is not a condition (a bool): write a comparison, such as diffuse <= 0.0.",
                     "不是条件（bool）：请写一个比较，例如 diffuse <= 0.0。"
                 )
             ));
-            None
+            (None, None)
         }
     }
 }

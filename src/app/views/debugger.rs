@@ -5,14 +5,12 @@
 //! which of its hits). Nothing runs again: the frame already kept the whole run, so stepping
 //! back is as cheap as stepping forward (`pipelens_glsl::stepping`).
 
-use std::collections::BTreeMap;
-
 use egui::{Color32, RichText, Ui};
 use pipeline::capture::FrameCapture;
-use pipeline::shader::stepping::{self, Breakpoint};
+use pipeline::shader::stepping;
 use pipeline::shader::{Stage, TraceLine};
 
-use super::shader::Tab;
+use super::shader_source::Marks;
 use crate::app::session::{Command, Session};
 use crate::app::shortcuts::{self, Action};
 use crate::vocabulary::Lang;
@@ -24,8 +22,8 @@ pub struct Debugger {
     /// The step shown, an index into the run (`None`: not stepping; the source shows each
     /// line's value at the end of the run).
     pub at: Option<usize>,
-    /// The breakpoints, by stage.
-    pub breakpoints: BTreeMap<StageKey, Vec<Breakpoint>>,
+    /// The breakpoints, by stage, with their conditions.
+    pub breakpoints: super::breakpoints::Breakpoints,
     /// Which of the inspected pixel's fragments is followed (from 0).
     pub fragment: usize,
     /// The line the text cursor is on, from 1.
@@ -34,31 +32,9 @@ pub struct Debugger {
     pub note: Option<String>,
     /// The variable picture's row.
     pub watch: super::watch_picture::WatchPanel,
-    /// The fragment shader's breakpoints' conditions, by line.
-    pub conditions: BTreeMap<usize, String>,
-    /// A condition searched over the frame: its line and text, until its watch's frame is here.
-    pub finding: Option<(usize, String)>,
     /// A line whose last step to show once the run of the pixel just inspected arrives (a
     /// condition's first pixel).
     pub show_line: Option<usize>,
-}
-
-/// A stage as a key of the breakpoints' map.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-pub enum StageKey {
-    /// The vertex shader.
-    Vertex,
-    /// The fragment shader.
-    Fragment,
-}
-
-impl From<Stage> for StageKey {
-    fn from(s: Stage) -> Self {
-        match s {
-            Stage::Vertex => Self::Vertex,
-            Stage::Fragment => Self::Fragment,
-        }
-    }
 }
 
 /// A move of the step shown.
@@ -78,19 +54,6 @@ pub enum Move {
     Continue,
     /// Back to the previous breakpoint.
     ContinueBack,
-}
-
-/// What the source shows of the run at the step shown: the line highlighted, the breakpoints,
-/// and beside each line the value it last wrote (with a swatch for a colour).
-pub struct Marks {
-    /// The line of the step shown.
-    pub current: Option<usize>,
-    /// The lines with a breakpoint.
-    pub breakpoints: Vec<usize>,
-    /// `(line, "name = value", swatch)`.
-    pub beside: Vec<(usize, String, Option<Color32>)>,
-    /// The step moved this frame: its line is scrolled into view.
-    pub reveal: bool,
 }
 
 /// A colour as egui draws it, from a value in [0, 1].
@@ -132,25 +95,6 @@ impl Debugger {
         }
     }
 
-    /// The breakpoints of `stage`.
-    #[must_use]
-    pub fn of(&self, stage: Stage) -> &[Breakpoint] {
-        self.breakpoints
-            .get(&stage.into())
-            .map_or(&[], Vec::as_slice)
-    }
-
-    /// Sets or clears the breakpoint on `line` of `stage`.
-    pub fn toggle(&mut self, stage: Stage, line: usize) {
-        let list = self.breakpoints.entry(stage.into()).or_default();
-        match list.iter().position(|b| b.line == line) {
-            Some(k) => {
-                list.remove(k);
-            }
-            None => list.push(Breakpoint::at(line)),
-        }
-    }
-
     /// Moves the step shown through `run` as `m` says; when it cannot, the step stays and
     /// [`Debugger::note`] says why.
     pub fn step(&mut self, run: &[TraceLine], stage: Stage, m: Move, lang: Lang) {
@@ -174,8 +118,10 @@ impl Debugger {
                     stepping::to_line(run, here, line)
                 }
             }),
-            (Move::Continue, _) => stepping::next_break(run, at, self.of(stage)),
-            (Move::ContinueBack, _) => stepping::previous_break(run, here, self.of(stage)),
+            (Move::Continue, _) => stepping::next_break(run, at, self.breakpoints.of(stage)),
+            (Move::ContinueBack, _) => {
+                stepping::previous_break(run, here, self.breakpoints.of(stage))
+            }
         };
         match to {
             Some(k) => self.at = Some(k),
@@ -189,7 +135,7 @@ impl Debugger {
                             "No breakpoint stops the run before this step.",
                             "此步之前没有断点使运行停下。",
                         ),
-                        Move::Continue if self.of(stage).is_empty() => lang.tr(
+                        Move::Continue if self.breakpoints.of(stage).is_empty() => lang.tr(
                             "No breakpoint is set: click a line number, or press F9 on a line.",
                             "尚未设置断点：单击行号，或在某行按 F9。",
                         ),
@@ -223,7 +169,7 @@ impl Debugger {
     /// each line its last step in words, a colour written with its swatch.
     #[must_use]
     pub fn marks(&self, run: &[TraceLine], stage: Stage, lang: Lang) -> Marks {
-        let breakpoints = self.of(stage).iter().map(|b| b.line).collect();
+        let breakpoints = self.breakpoints.of(stage).iter().map(|b| b.line).collect();
         let Some(last) = run.len().checked_sub(1) else {
             return Marks {
                 current: None,
@@ -407,16 +353,17 @@ fn scope(ui: &mut Ui, run: &[TraceLine], at: usize, lang: Lang) {
         });
 }
 
-/// The debugger over the source of `tab`: its keys and bar when the tab's stage has a run to
-/// step (a hint where to click when it has none), the fragment shader's variable picture, and
-/// what the source shows of the run; the command the picture asks for.
+/// The debugger over the source of a shader's `stage` (none: a pipeline function's tab): its
+/// keys and bar when the stage has a run to step (a hint where to click when it has none), the
+/// breakpoints, the fragment shader's variable picture, and what the source shows of the run;
+/// the command the breakpoints or the picture ask for.
 pub fn panel(
     ui: &mut Ui,
     debugger: &mut Debugger,
-    tab: Tab,
+    stage: Option<Stage>,
     session: &Session,
 ) -> (Marks, Option<Command>) {
-    let Tab::Shader(stage) = tab else {
+    let Some(stage) = stage else {
         let none = Marks {
             current: None,
             breakpoints: Vec::new(),
@@ -426,14 +373,21 @@ pub fn panel(
         return (none, None);
     };
     let (marks, step_line) = stepped(ui, debugger, stage, session);
-    let mut command = super::breakpoints::list(ui, debugger, stage, session);
+    let mut command = super::breakpoints::list(
+        ui,
+        &mut debugger.breakpoints,
+        &mut debugger.watch,
+        stage,
+        session,
+    );
     if stage == Stage::Fragment && session.spec.scene.has_shaders() {
         let asked = super::watch_picture::ui(ui, &mut debugger.watch, session, step_line);
         command = command.or(asked.command);
-        if asked.show_line.is_some() {
-            debugger.show_line = asked.show_line;
+        let (found, show_line) = super::breakpoints::found(&mut debugger.breakpoints, session);
+        command = command.or(found);
+        if let Some(line) = asked.show_line.or(show_line) {
+            debugger.show_line = Some(line);
         }
-        command = command.or_else(|| super::breakpoints::found(debugger, session));
     }
     (marks, command)
 }
@@ -489,7 +443,7 @@ fn stepped(
     let before = debugger.at;
     if shortcuts::pressed(ui.ctx(), Action::Breakpoint) {
         match debugger.cursor_line {
-            Some(line) => debugger.toggle(stage, line),
+            Some(line) => debugger.breakpoints.toggle(stage, line),
             None => {
                 debugger.note = Some(
                     lang.tr(

@@ -290,14 +290,18 @@ pub fn ui(
         }
     };
     let errors: Vec<(usize, &str)> = errors.iter().map(|(l, m)| (*l, m.as_str())).collect();
-    let (marks, watched) = super::debugger::panel(ui, &mut editor.debugger, tab, session);
+    let stage = match tab {
+        Tab::Shader(stage) => Some(stage),
+        Tab::Hook(_) => None,
+    };
+    let (marks, watched) = super::debugger::panel(ui, &mut editor.debugger, stage, session);
     let touched = super::shader_source::code(ui, (source, &format!("{tab:?}")), &errors, &marks);
     let edited = touched.changed;
     if touched.cursor_line.is_some() {
         editor.debugger.cursor_line = touched.cursor_line;
     }
     if let (Some(line), Tab::Shader(stage)) = (touched.gutter, tab) {
-        editor.debugger.toggle(stage, line);
+        editor.debugger.breakpoints.toggle(stage, line);
     }
     if edited {
         // Their own edit: what "pipelens' own" replaced is no longer one click away.

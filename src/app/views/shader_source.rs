@@ -5,7 +5,18 @@
 
 use egui::{Color32, RichText, Ui};
 
-use super::debugger::Marks;
+/// What the source shows of the run at the step shown: the line highlighted, the breakpoints,
+/// and beside each line the value it last wrote (with a swatch for a colour).
+pub struct Marks {
+    /// The line of the step shown.
+    pub current: Option<usize>,
+    /// The lines with a breakpoint.
+    pub breakpoints: Vec<usize>,
+    /// `(line, "name = value", swatch)`.
+    pub beside: Vec<(usize, String, Option<Color32>)>,
+    /// The step moved this frame: its line is scrolled into view.
+    pub reveal: bool,
+}
 
 /// What the reader did in the source this frame.
 pub(super) struct Touched {

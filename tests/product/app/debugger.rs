@@ -120,6 +120,7 @@ fn the_debugger_steps_through_the_inspected_fragments_run() {
             .shader_editor
             .debugger
             .breakpoints
+            .by_stage
             .values()
             .flatten()
             .map(|b| b.line)
@@ -214,6 +215,7 @@ fn a_condition_over_the_frame_finds_its_first_fragment() {
     h.state_mut()
         .shader_editor
         .debugger
+        .breakpoints
         .toggle(pipeline::shader::Stage::Fragment, 22);
     h.run_steps(6);
     let field = || (egui::accesskit::Role::TextInput, "where");

@@ -302,7 +302,7 @@ impl FragmentShading<'_> {
                     if let (Some(watch), Some(places)) = (sums.watch.as_mut(), fs.watch.as_ref())
                         && k > watch[i].0
                     {
-                        watch[i] = (k, places.read(&ran, l));
+                        watch[i] = (k, ran.watched(places, l));
                     }
                     let c = Vec3::from_array(ran.outputs::<3>(l));
                     if c.is_finite() {
