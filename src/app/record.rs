@@ -58,6 +58,7 @@ pub fn recorded_step(session: &Session) -> Option<Step> {
         profile: sel.profile.filter(|_| sel.comparison.is_some()),
         focus: sel.focus.clone(),
         depth_range: sel.depth_view.range,
+        watch: sel.watch.clone(),
         shader: None,
         question: None,
         expect: None,

@@ -74,6 +74,8 @@ pub struct PipelensApp {
     /// Stops the export under way.
     pub(super) export_cancel: Option<crate::export::Cancel>,
     pub(super) commands: Vec<Command>,
+    /// The step whose watch last opened the shader panel (`Session::step_entered`).
+    pub(super) watch_opened: u64,
     /// The progress as last saved: when the session's differs, a frame is asked for after the
     /// save interval, so that eframe saves it even if nothing else moves (a browser tab).
     pub(super) saved_progress: progress::Progress,
@@ -110,6 +112,7 @@ impl PipelensApp {
             export_message: None,
             export_cancel: None,
             commands: Vec::new(),
+            watch_opened: 0,
             watched: None,
             editor: editor::Editor::default(),
             inbox: platform::Inbox::default(),
@@ -176,6 +179,16 @@ impl PipelensApp {
         self.picture.clear();
         self.subject.clear();
         let compact = self.bar(ui);
+        // A step that draws a variable over the frame shows it where it is drawn: the shader
+        // panel, on the fragment shader's tab.
+        if self.watch_opened != self.session.step_entered {
+            self.watch_opened = self.session.step_entered;
+            if self.session.selection.watch.is_some() && !compact {
+                self.panels.shader = true;
+                self.shader_editor.tab =
+                    views::shader::Tab::Shader(pipeline::shader::Stage::Fragment);
+            }
+        }
         self.keys_help(ui.ctx());
         // Presenting, the status line shows only to say what went wrong.
         if !self.presenting() || self.session.error.is_some() {

@@ -26,22 +26,9 @@ pub(super) fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
     Ok((n(x)?, n(y)?))
 }
 
-/// A watch `EXPR@LINE`: an expression of the fragment shader and the line after which it is
-/// read (the last `@` separates them, so the expression may hold none).
+/// A watch `EXPR@LINE` (`probe::parse`).
 pub(super) fn parse_watch(s: &str) -> Result<(String, usize), String> {
-    let (expression, line) = s.rsplit_once('@').ok_or_else(|| {
-        format!("expected EXPR@LINE such as \"max(dot(n, l), 0.0)@22\", got \"{s}\"")
-    })?;
-    let line = line
-        .trim()
-        .parse::<usize>()
-        .ok()
-        .filter(|&l| l > 0)
-        .ok_or_else(|| format!("\"{line}\" is not a line number (from 1)"))?;
-    if expression.trim().is_empty() {
-        return Err(format!("no expression before @{line}"));
-    }
-    Ok((expression.trim().to_owned(), line))
+    pipeline::shader::probe::parse(s)
 }
 
 /// A line `X0,Y0,X1,Y1` of image pixels.

@@ -413,6 +413,9 @@ pub struct RawStep {
     pub focus: Option<Vec<Spanned<String>>>,
     /// The depth buffer's grey ramp: black at the first window depth, white at the second.
     pub depth_range: Option<Spanned<[f64; 2]>>,
+    /// The debugger's variable picture: a fragment-shader expression after a line,
+    /// `"EXPR@LINE"`.
+    pub watch: Option<Spanned<String>>,
     /// `shader = { vertex = …, fragment = … }`: every object's shaders from this step on.
     pub shader: Option<Spanned<RawShader>>,
     pub question: Option<Spanned<RawText>>,

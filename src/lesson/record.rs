@@ -138,7 +138,7 @@ pub fn step_table(step: &Step) -> Result<Table, String> {
 
 /// The keys of a step that say what is on screen — everything "Update step" rewrites from the
 /// screen; the words, the shaders, an exercise and a typed answer are not among them.
-pub const VIEW_KEYS: [&str; 12] = [
+pub const VIEW_KEYS: [&str; 13] = [
     "stage",
     "layout",
     "compare",
@@ -149,6 +149,7 @@ pub const VIEW_KEYS: [&str; 12] = [
     "vertex",
     "profile",
     "depth_range",
+    "watch",
     "set",
     "animate",
 ];
@@ -207,6 +208,9 @@ pub fn view_items(step: &Step) -> Vec<(&'static str, Item)> {
             "depth_range",
             value(r.map(number).into_iter().collect::<Array>()),
         ));
+    }
+    if let Some((line, expression)) = &step.watch {
+        items.push(("watch", value(format!("{expression}@{line}"))));
     }
     if !step.set.is_empty() {
         let mut set = InlineTable::new();

@@ -86,6 +86,9 @@ pub struct Step {
     /// The depth buffer's grey ramp `[black, white]` in window depth (`None`: the nearest and
     /// farthest depth present).
     pub depth_range: Option<[f32; 2]>,
+    /// The fragment shader's expression drawn over the frame, and the line after which it is
+    /// read (`watch = "EXPR@LINE"`; the debugger's variable picture).
+    pub watch: Option<(usize, String)>,
     /// The shaders and inside test every object runs from this step on (`None`: as the steps
     /// before left them).
     pub shader: Option<pipeline::scene::StudentCode>,

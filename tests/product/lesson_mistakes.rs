@@ -100,6 +100,16 @@ pub(crate) const MISTAKES: &[(&str, &str, &str)] = &[
         "`easing` must be one of",
     ),
     (
+        "watch = \"n.y > 0.0\"",
+        "\"n.y > 0.0\"",
+        "`watch`: expected EXPR@LINE",
+    ),
+    (
+        "watch = \"n.y > 0.0@5\"",
+        "\"n.y > 0.0@5\"",
+        "no object is drawn with shaders of your own",
+    ),
+    (
         "answr = { en = \"x\", zh = \"y\" }",
         "answr",
         "did you mean `answer`",

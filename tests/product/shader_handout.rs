@@ -73,14 +73,14 @@ fn a_shader_step_prints_its_code_with_its_edit_marked() {
         !section(6).contains("The debugger at pixel"),
         "a step with no pixel has no run"
     );
-    let vertex = section(8);
+    let vertex = section(9);
     assert!(vertex.contains("<code>shader.vert</code>"));
     assert!(
         !vertex.contains("<code>shader.frag</code>"),
         "pipelens' own is not repeated"
     );
     assert!(vertex.contains("gl_Position"));
-    let lab = marked_rows(&section(9));
+    let lab = marked_rows(&section(10));
     // Line 29 of the starter (counted in the lesson file), and only it.
     assert_eq!(
         lab,
@@ -124,7 +124,7 @@ fn a_shader_slide_shows_its_code_beside_the_picture() {
     };
     // The panel's ground and a marked row's (slides.rs), from their own constants.
     let (ground, marked) = ([34, 37, 43], [70, 62, 36]);
-    for (step, what) in [("7", "the debugger's run"), ("9", "the lab's starter")] {
+    for (step, what) in [("7", "the debugger's run"), ("10", "the lab's starter")] {
         let s = slide("24-shader-programs", step);
         assert!(
             exactly(&s, ground) > 20_000,

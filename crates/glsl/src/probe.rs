@@ -34,6 +34,27 @@ vec4 pipelens_as_watch(uint x) { pipelens_watch_kind = 5.0; return vec4(float(x)
 vec4 pipelens_as_watch(bool x) { pipelens_watch_kind = 6.0; return vec4(x ? 1.0 : 0.0, 0.0, 0.0, 0.0); }
 ";
 
+/// A watch as a lesson and the command line write it, `EXPR@LINE`: the expression and the line
+/// after which it is read (the last `@` separates them, so the expression may hold none).
+///
+/// # Errors
+/// No `@`, a line that is not a whole number from 1, or no expression before it.
+pub fn parse(s: &str) -> Result<(String, usize), String> {
+    let (expression, line) = s.rsplit_once('@').ok_or_else(|| {
+        format!("expected EXPR@LINE such as \"max(dot(n, l), 0.0)@22\", got \"{s}\"")
+    })?;
+    let line = line
+        .trim()
+        .parse::<usize>()
+        .ok()
+        .filter(|&l| l > 0)
+        .ok_or_else(|| format!("\"{line}\" is not a line number (from 1)"))?;
+    if expression.trim().is_empty() {
+        return Err(format!("no expression before @{line}"));
+    }
+    Ok((expression.trim().to_owned(), line))
+}
+
 /// Why a watch cannot be made.
 #[derive(Clone, Debug, PartialEq)]
 pub enum WatchError {
@@ -181,6 +202,14 @@ void main() {
         let ran = m.run_batch(&batch, &()).expect("runs");
         let places = program.watch.as_ref().expect("a watch");
         (0..xs.len()).map(|l| ran.watched(places, l)).collect()
+    }
+
+    #[test]
+    fn a_watch_is_written_expr_at_line() {
+        assert_eq!(parse("a@5"), Ok(("a".to_owned(), 5)));
+        assert_eq!(parse(" x.y < 0.0 @ 12"), Ok(("x.y < 0.0".to_owned(), 12)));
+        assert!(parse("a").is_err() && parse("a@0").is_err() && parse("@3").is_err());
+        assert!(parse("a@two").is_err());
     }
 
     #[test]

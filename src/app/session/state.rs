@@ -209,6 +209,7 @@ impl Session {
         sel.show_normals = overlays.contains(&Overlay::Normals);
         sel.pixel = step.pixel;
         sel.vertex = step.vertex;
+        sel.watch.clone_from(&step.watch);
         sel.focus.clone_from(&step.focus);
         // The observer frames the step's subject, as the geometry views do.
         self.orbit = crate::observer::orbit_for(

@@ -23,6 +23,8 @@ pub struct WatchPanel {
     pub error: Option<String>,
     /// The picture's texture, with the frame and view it shows.
     texture: Option<((usize, WatchView), egui::TextureHandle)>,
+    /// The watch the row last showed: one set elsewhere (a lesson's step) is copied into it.
+    synced: Option<(usize, String)>,
 }
 
 impl Default for WatchPanel {
@@ -33,6 +35,7 @@ impl Default for WatchPanel {
             view: WatchView::Value,
             error: None,
             texture: None,
+            synced: None,
         }
     }
 }
@@ -58,6 +61,13 @@ pub fn ui(
     let lang = session.lang;
     let mut asked = Asked::default();
     let watching = session.selection.watch.clone();
+    if panel.synced != watching {
+        if let Some((line, expression)) = &watching {
+            panel.line = *line;
+            panel.expression.clone_from(expression);
+        }
+        panel.synced.clone_from(&watching);
+    }
     ui.horizontal_wrapped(|ui| {
         let label = ui
             .label(RichText::new(lang.tr("Watch over the frame:", "整帧监视：")).strong())

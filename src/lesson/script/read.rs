@@ -158,6 +158,7 @@ impl Checker<'_> {
             .collect();
         let (pixel, vertex, profile) = self.targets(r, spec);
         let focus = r.focus.as_ref().map(|names| self.focus(names, spec));
+        let watch = r.watch.as_ref().and_then(|w| self.watch(w, spec));
         let depth_range = r.depth_range.as_ref().and_then(|d| {
             let [a, b] = *d.get_ref();
             if (0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b) && a < b {
@@ -185,6 +186,7 @@ impl Checker<'_> {
             profile,
             focus,
             depth_range,
+            watch,
             shader,
             question,
             expect,
@@ -310,6 +312,26 @@ impl Checker<'_> {
             }
         });
         (pixel, vertex, profile)
+    }
+
+    /// A step's watch, `"EXPR@LINE"`: read, and compiled against the fragment shaders the
+    /// scene runs at this step.
+    fn watch(&mut self, w: &Spanned<String>, spec: &SceneSpec) -> Option<(usize, String)> {
+        let parsed = pipeline::shader::probe::parse(w.get_ref())
+            .map_err(|e| format!("`watch`: {e}"))
+            .and_then(|(expression, line)| {
+                spec.scene
+                    .watching(line, &expression)
+                    .map(|_| (line, expression))
+                    .map_err(|e| format!("`watch`: {e}"))
+            });
+        match parsed {
+            Ok(w) => Some(w),
+            Err(e) => {
+                self.error(w.span(), e);
+                None
+            }
+        }
     }
 
     /// The names a step frames: each an object or a figure of the scene as the step leaves it.

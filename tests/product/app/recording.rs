@@ -308,3 +308,28 @@ fn a_move_that_breaks_the_lesson_is_refused_with_the_reason() {
     assert_eq!(h.state().session.lesson.as_ref().map(|p| p.step), Some(3));
     assert!(h.query_by_label_contains("● unsaved changes").is_none());
 }
+
+/// A watch on screen is recorded where its step stands (it reads a line of the shaders in
+/// effect there): lesson 24's debugger step, updated from the screen while the variable picture
+/// draws `dot(n, l) < 0.0` after line 22, reads back with that watch.
+#[test]
+fn a_watch_is_recorded_into_the_step_it_is_drawn_in() {
+    let (_dir, file) = copy_of("24-shader-programs.toml");
+    let mut h = super::lesson_harness(Some(file));
+    h.run_steps(2);
+    let k = super::go_to_step_titled(&mut h, "The debugger: one fragment's run");
+    assert_eq!(super::lesson_of(&h).steps[k].watch, None);
+    h.key_press(egui::Key::R);
+    h.run_steps(3);
+    let watch = (22, "dot(n, l) < 0.0".to_owned());
+    h.state_mut()
+        .session
+        .apply(Command::Selection(SelectionCommand::SetWatch(Some(
+            watch.clone(),
+        ))));
+    h.run_steps(3);
+    h.get_by_label(&format!("Update step {} from the screen", k + 1))
+        .click_accesskit();
+    h.run_steps(3);
+    assert_eq!(super::lesson_of(&h).steps[k].watch, Some(watch));
+}
