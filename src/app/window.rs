@@ -179,16 +179,7 @@ impl PipelensApp {
         self.picture.clear();
         self.subject.clear();
         let compact = self.bar(ui);
-        // A step that draws a variable over the frame shows it where it is drawn: the shader
-        // panel, on the fragment shader's tab.
-        if self.watch_opened != self.session.step_entered {
-            self.watch_opened = self.session.step_entered;
-            if self.session.selection.watch.is_some() && !compact {
-                self.panels.shader = true;
-                self.shader_editor.tab =
-                    views::shader::Tab::Shader(pipeline::shader::Stage::Fragment);
-            }
-        }
+        self.open_for_watch(compact);
         self.keys_help(ui.ctx());
         // Presenting, the status line shows only to say what went wrong.
         if !self.presenting() || self.session.error.is_some() {
@@ -293,6 +284,19 @@ impl PipelensApp {
             self.top_bar(ui);
         }
         compact
+    }
+
+    /// A step that draws a variable over the frame shows it where it is drawn: the shader
+    /// panel, on the fragment shader's tab (once, on entering the step).
+    fn open_for_watch(&mut self, compact: bool) {
+        if self.watch_opened != self.session.step_entered {
+            self.watch_opened = self.session.step_entered;
+            if self.session.selection.watch.is_some() && !compact {
+                self.panels.shader = true;
+                self.shader_editor.tab =
+                    views::shader::Tab::Shader(pipeline::shader::Stage::Fragment);
+            }
+        }
     }
 
     /// What the narration (the card, or a small window's sheet) asked for.
