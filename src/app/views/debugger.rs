@@ -176,6 +176,7 @@ impl Debugger {
                 breakpoints,
                 beside: Vec::new(),
                 reveal: false,
+                watched: None,
             };
         };
         let at = self.at.unwrap_or(last).min(last);
@@ -195,6 +196,7 @@ impl Debugger {
             breakpoints,
             beside,
             reveal: false,
+            watched: None,
         }
     }
 }
@@ -369,10 +371,14 @@ pub fn panel(
             breakpoints: Vec::new(),
             beside: Vec::new(),
             reveal: false,
+            watched: None,
         };
         return (none, None);
     };
-    let (marks, step_line) = stepped(ui, debugger, stage, session);
+    let (mut marks, step_line) = stepped(ui, debugger, stage, session);
+    if stage == Stage::Fragment {
+        marks.watched = session.selection.watch.as_ref().map(|(line, _)| *line);
+    }
     let mut command = super::breakpoints::list(
         ui,
         &mut debugger.breakpoints,

@@ -16,6 +16,8 @@ pub struct Marks {
     pub beside: Vec<(usize, String, Option<Color32>)>,
     /// The step moved this frame: its line is scrolled into view.
     pub reveal: bool,
+    /// The line after which the variable picture reads its expression (outlined).
+    pub watched: Option<usize>,
 }
 
 /// What the reader did in the source this frame.
@@ -132,24 +134,7 @@ fn text(
             .and_then(|k| out.galley.rows.get(k))
             .map(|row| row.rect().translate(out.galley_pos.to_vec2()))
     };
-    if let Some(rect) = marks.current.and_then(row_rect) {
-        if marks.reveal {
-            // Up or down to the line, not sideways: the line's start is what is asked for.
-            let start = egui::Rect::from_x_y_ranges(rect.left()..=rect.left(), rect.y_range());
-            ui.scroll_to_rect(start, Some(egui::Align::Center));
-        }
-        // Over the text (the editor's own background would hide it beneath), light enough to
-        // read through, with a bar at its left edge.
-        let band = egui::Rect::from_x_y_ranges(out.response.rect.x_range(), rect.y_range());
-        let amber = Color32::from_rgb(230, 190, 60);
-        ui.painter()
-            .rect_filled(band, 0.0, amber.gamma_multiply(0.22));
-        ui.painter().rect_filled(
-            egui::Rect::from_x_y_ranges(band.left()..=band.left() + 3.0, band.y_range()),
-            0.0,
-            amber,
-        );
-    }
+    bands(ui, marks, &row_rect, out.response.rect.x_range());
     if numbers.clicked()
         && let Some(y) = numbers.interact_pointer_pos().map(|p| p.y)
     {
@@ -206,4 +191,40 @@ fn text(
     }
     // What is painted after the lines scrolls into view sideways like the text.
     ui.expand_to_include_x(right + 8.0);
+}
+
+/// The step's line highlighted (over the text: the editor's own background would hide it
+/// beneath; light enough to read through, with a bar at its left edge) and scrolled to when it
+/// moved, and the watched line outlined; `row_rect` is a line's row on screen.
+fn bands(
+    ui: &Ui,
+    marks: &Marks,
+    row_rect: &dyn Fn(usize) -> Option<egui::Rect>,
+    x_range: egui::Rangef,
+) {
+    if let Some(rect) = marks.current.and_then(row_rect) {
+        if marks.reveal {
+            // Up or down to the line, not sideways: the line's start is what is asked for.
+            let start = egui::Rect::from_x_y_ranges(rect.left()..=rect.left(), rect.y_range());
+            ui.scroll_to_rect(start, Some(egui::Align::Center));
+        }
+        let band = egui::Rect::from_x_y_ranges(x_range, rect.y_range());
+        let amber = Color32::from_rgb(230, 190, 60);
+        ui.painter()
+            .rect_filled(band, 0.0, amber.gamma_multiply(0.22));
+        ui.painter().rect_filled(
+            egui::Rect::from_x_y_ranges(band.left()..=band.left() + 3.0, band.y_range()),
+            0.0,
+            amber,
+        );
+    }
+    if let Some(rect) = marks.watched.and_then(row_rect) {
+        let band = egui::Rect::from_x_y_ranges(x_range, rect.y_range());
+        ui.painter().rect_stroke(
+            band,
+            2.0,
+            egui::Stroke::new(1.5, Color32::from_rgb(90, 170, 220)),
+            egui::StrokeKind::Inside,
+        );
+    }
 }
