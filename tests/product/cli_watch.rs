@@ -7,6 +7,17 @@ use crate::support::{pipelens, repo, text};
 const LESSON: &str = "lessons/24-shader-programs.toml";
 const STEP: &str = "7";
 
+/// `pipelens export LESSON --step STEP --watch WATCH --out OUT`.
+fn export_watch(watch: &str, out: &std::path::Path) -> std::process::Output {
+    let out = out.to_str().expect("utf-8");
+    pipelens(
+        &repo(),
+        &[
+            "export", LESSON, "--step", STEP, "--watch", watch, "--out", out,
+        ],
+    )
+}
+
 /// `gl_FragCoord.xy` is, by GLSL's definition, the pixel's centre in window terms (y up): so
 /// every row of watch.csv holds `x + ½, y + ½` beside its pixel `x, y`, which also says the
 /// numbers are not mirrored top to bottom.
@@ -14,19 +25,7 @@ const STEP: &str = "7";
 fn every_pixel_of_the_csv_holds_its_own_window_centre() {
     let dir = tempfile::tempdir().expect("temp dir");
     let out = dir.path().join("watch");
-    let o = pipelens(
-        &repo(),
-        &[
-            "export",
-            LESSON,
-            "--step",
-            STEP,
-            "--watch",
-            "gl_FragCoord.xy@22",
-            "--out",
-            out.to_str().expect("utf-8"),
-        ],
-    );
+    let o = export_watch("gl_FragCoord.xy@22", &out);
     let said = text(&o);
     assert!(o.status.success(), "{said}");
     assert!(said.contains("a vec2 at"), "{said}");
@@ -56,21 +55,7 @@ fn every_pixel_of_the_csv_holds_its_own_window_centre() {
 fn a_condition_says_where_it_holds_and_a_bad_watch_writes_nothing() {
     let dir = tempfile::tempdir().expect("temp dir");
     let out = dir.path().join("mask");
-    let run = |watch: &str| {
-        pipelens(
-            &repo(),
-            &[
-                "export",
-                LESSON,
-                "--step",
-                STEP,
-                "--watch",
-                watch,
-                "--out",
-                out.to_str().expect("utf-8"),
-            ],
-        )
-    };
+    let run = |watch: &str| export_watch(watch, &out);
     let o = run("dot(n, l) < 0.0@22");
     let said = text(&o);
     assert!(o.status.success(), "{said}");

@@ -42,27 +42,34 @@ fn press(h: &mut egui_kittest::Harness<'_, pipelens::app::PipelensApp>, m: Modif
     h.run_steps(2);
 }
 
-#[test]
-fn the_debugger_steps_through_the_inspected_fragments_run() {
+/// Lesson 24 at 1920 × 1080 with the shader panel open, drawing with [`SOURCE`] applied as the
+/// panel applies it.
+fn drawing_the_tests_shader() -> egui_kittest::Harness<'static, pipelens::app::PipelensApp> {
     let path = crate::support::repo().join("lessons/24-shader-programs.toml");
     let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
     h.state_mut().panels.shader = true;
     h.run_steps(4);
-    {
-        let app = h.state_mut();
-        app.shader_editor.fragment = SOURCE.to_owned();
-        app.shader_editor.shaders_in_use = true;
-        let applied = app
-            .shader_editor
-            .apply(&app.session)
-            .expect("the test's shader compiles and links");
-        app.session.apply(applied);
-        // The middle of the 480 × 360 frame is on the sphere.
-        app.session
-            .apply(Command::Selection(SelectionCommand::SelectPixel(Some((
-                240, 180,
-            )))));
-    }
+    let app = h.state_mut();
+    app.shader_editor.fragment = SOURCE.to_owned();
+    app.shader_editor.shaders_in_use = true;
+    let applied = app
+        .shader_editor
+        .apply(&app.session)
+        .expect("the test's shader compiles and links");
+    app.session.apply(applied);
+    h.run_steps(4);
+    h
+}
+
+#[test]
+fn the_debugger_steps_through_the_inspected_fragments_run() {
+    let mut h = drawing_the_tests_shader();
+    // The middle of the 480 × 360 frame is on the sphere.
+    h.state_mut()
+        .session
+        .apply(Command::Selection(SelectionCommand::SelectPixel(Some((
+            240, 180,
+        )))));
     h.run_steps(6);
     assert!(
         h.query_by_label_contains("steps: F10 steps through them")
@@ -238,18 +245,7 @@ fn a_condition_over_the_frame_finds_its_first_fragment() {
 /// theirs one click away: "Back to your code" puts it back and draws with it again.
 #[test]
 fn pipelens_own_keeps_the_students_code_one_click_away() {
-    let path = crate::support::repo().join("lessons/24-shader-programs.toml");
-    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    h.state_mut().panels.shader = true;
-    h.run_steps(4);
-    {
-        let app = h.state_mut();
-        app.shader_editor.fragment = SOURCE.to_owned();
-        app.shader_editor.shaders_in_use = true;
-        let applied = app.shader_editor.apply(&app.session).expect("compiles");
-        app.session.apply(applied);
-    }
-    h.run_steps(4);
+    let mut h = drawing_the_tests_shader();
     assert!(h.query_by_label("← Back to your code").is_none());
     h.get_by_label("pipelens' own").click();
     h.run_steps(4);
