@@ -267,3 +267,28 @@ fn pipelens_own_keeps_the_students_code_one_click_away() {
         "drawn with it again"
     );
 }
+
+/// A click on the picture of a pixel stage inspects that pixel and picks no vertex (whose label
+/// would stand beside the pixel's lighting vectors): lesson 24's debugger step, its picture's
+/// middle clicked.
+#[test]
+fn a_pixel_click_picks_the_pixel_only() {
+    let path = crate::support::repo().join("lessons/24-shader-programs.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    crate::app::go_to_step_titled(&mut h, "The debugger: one fragment's run");
+    h.run_steps(4);
+    let before = h.state().session.selection.pixel;
+    let picture = *h.state().picture.first().expect("a picture");
+    let at = picture.center() + egui::vec2(-40.0, 30.0);
+    h.drag_at(at);
+    h.run_steps(1);
+    h.drop_at(at);
+    h.run_steps(3);
+    let sel = &h.state().session.selection;
+    assert!(
+        sel.pixel.is_some() && sel.pixel != before,
+        "{:?}",
+        sel.pixel
+    );
+    assert_eq!(sel.vertex, None);
+}

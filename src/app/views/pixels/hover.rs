@@ -1,7 +1,7 @@
 //! The pixel under the mouse: its values in a tooltip, what the status line says there, and a
 //! click that inspects it.
 
-use egui::{Color32, Rect, RichText, Ui, Vec2};
+use egui::{Color32, Rect, RichText, Ui};
 use pipeline::buffers::BufferKind;
 use pipeline::capture::FrameCapture;
 
@@ -91,8 +91,9 @@ pub(super) fn status_message(
     );
 }
 
-/// Hover: the values of the pixel under the cursor; click: inspect it, and select the vertex of
-/// its triangle nearest the click (its vertex-table row).
+/// Hover: the values of the pixel under the cursor; click: inspect it (only it: a vertex is
+/// picked in a geometry view or the vertex table, not by a pixel's click, whose label would
+/// stand beside the pixel's own).
 pub(super) fn hover_and_click(
     response: &egui::Response,
     view: &ImageViewport,
@@ -113,22 +114,6 @@ pub(super) fn hover_and_click(
         cmds.push(Command::Selection(SelectionCommand::SelectPixel(Some((
             c, y,
         )))));
-        let i = capture.grid().index(c, y);
-        if let Some(prim) = capture.primitives.get(capture.pixels.primitive[i] as usize) {
-            let click = view.to_image(pos);
-            let nearest = prim.vertices.iter().copied().min_by(|a, b| {
-                let d = |r: u32| {
-                    capture.vertices[r as usize]
-                        .window
-                        .map_or(f32::INFINITY, |w| {
-                            let p = capture.window_to_image(w);
-                            (Vec2::new(p[0], p[1]) - click).length()
-                        })
-                };
-                d(*a).total_cmp(&d(*b))
-            });
-            cmds.push(Command::Selection(SelectionCommand::SelectVertex(nearest)));
-        }
     }
     cmds
 }
