@@ -33,3 +33,23 @@ fn the_projection_combo_box_and_a_lessons_projection_kind_give_the_same_view_vol
         assert_eq!(got.kind().key(), key);
     }
 }
+
+/// While the student's shaders draw the picture, the shading frequency and the specular term
+/// say that they change nothing on screen (they choose what "pipelens' own" writes); without
+/// shaders of the student's, no such note.
+#[test]
+fn the_shading_choices_say_when_the_students_shaders_draw() {
+    const NOTE: &str = "Your shaders draw the picture";
+    let path = crate::support::repo().join("lessons/24-shader-programs.toml");
+    let mut h = super::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    h.state_mut().panels.parameters = true;
+    h.run_steps(4);
+    assert!(h.state().session.spec.scene.has_shaders());
+    assert!(h.query_by_label_contains(NOTE).is_some());
+    let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
+    let mut h = super::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    h.state_mut().panels.parameters = true;
+    h.run_steps(4);
+    assert!(!h.state().session.spec.scene.has_shaders());
+    assert!(h.query_by_label_contains(NOTE).is_none());
+}

@@ -37,7 +37,8 @@ pub fn ui(ui: &mut Ui, session: &Session) -> Option<Command> {
             projection(ui, &mut spec.scene.projection, lang);
         });
         egui::CollapsingHeader::new(RichText::new(lang.tr("Rasterizer settings", "光栅化设置")).strong()).default_open(true).show(ui, |ui| {
-            render(ui, &mut spec.settings, lang);
+            let shaders_draw = spec.scene.has_shaders();
+            render(ui, &mut spec.settings, (shaders_draw, lang));
         });
         if !spec.scene.lights.is_empty() {
             // Open where the picture is lit: the lights are then what a step teaches.
@@ -225,7 +226,11 @@ fn near_far(ui: &mut Ui, near: &mut f32, far: &mut f32, lang: Lang) {
     }
 }
 
-fn render(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lang: Lang) {
+fn render(
+    ui: &mut Ui,
+    s: &mut pipeline::settings::RenderSettings,
+    (shaders_draw, lang): (bool, Lang),
+) {
     ui.horizontal(|ui| {
         ui.label(lang.tr("viewport", "视口"));
         ui.add(
@@ -288,7 +293,7 @@ fn render(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lang: Lang) {
         "Off: multisampling shades once per pixel and triangle at the pixel centre. On: supersampling shades each sample at its own position.",
         "关：多重采样每个像素每个三角形在像素中心着色一次。开：超采样在每个采样点各自着色。",
     ));
-    shading(ui, s, lang);
+    shading(ui, s, shaders_draw, lang);
     texture_sampling(ui, s, lang);
     ui.checkbox(
         &mut s.perspective_correct,
@@ -297,7 +302,34 @@ fn render(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lang: Lang) {
     .on_hover_text("b_i = (λ_i / w_i) / Σ_k (λ_k / w_k)");
 }
 
-fn shading(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lang: Lang) {
+/// The shading frequency and the specular term; while the student's shaders draw the picture
+/// they are greyed, with a note: they then only choose what the shader panel's "pipelens' own"
+/// writes.
+fn shading(
+    ui: &mut Ui,
+    s: &mut pipeline::settings::RenderSettings,
+    shaders_draw: bool,
+    lang: Lang,
+) {
+    if shaders_draw {
+        ui.label(
+            egui::RichText::new(lang.tr(
+                "Your shaders draw the picture: the shading frequency and the specular term below change nothing on screen; they choose what the shader panel's \"pipelens' own\" writes.",
+                "画面由你的着色器绘制：下面的着色频率与镜面项不改变画面；它们决定着色器面板中“pipelens 自带”写出的着色器。",
+            ))
+            .color(ui.visuals().warn_fg_color),
+        );
+    }
+    let weak = ui.visuals().weak_text_color();
+    ui.scope(|ui| {
+        if shaders_draw {
+            ui.visuals_mut().override_text_color = Some(weak);
+        }
+        shading_choices(ui, s, lang);
+    });
+}
+
+fn shading_choices(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lang: Lang) {
     ui.horizontal_wrapped(|ui| {
         ui.label(lang.tr("shading", "着色频率"));
         for (f, n) in [
