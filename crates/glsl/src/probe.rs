@@ -304,6 +304,18 @@ void main() {
             };
             let (a, _) = colour(&plain, false);
             let (b, trace) = colour(&watched, true);
+            // The store after line 6 follows two steps (a on line 5, b on line 6) and holds
+            // a = 2x.
+            let mut batch = Batch::new(&watched);
+            batch.start(1);
+            batch.set(0, 0, &[x]);
+            let mut m = watched.machine();
+            m.trace_lane(Some(0));
+            m.run_batch(&batch, &()).expect("runs");
+            assert_eq!(
+                watched.watched_values(&m.take_trace()),
+                [(2, [2.0 * x, 0.0, 0.0, 0.0])]
+            );
             assert_eq!(a, b);
             assert!(
                 trace.iter().all(|t| !t.text.contains("pipelens_as_watch")),

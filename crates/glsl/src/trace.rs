@@ -122,6 +122,28 @@ impl Value {
 pub type Trace = Vec<TraceLine>;
 
 impl Program {
+    /// What the traced lane's watch stored, each time it ran the watched line
+    /// (`crate::probe`): the number of the student's steps before it (so the value stands at
+    /// every step from that index on, until the next), and the value as the watch keeps it (a
+    /// `vec4`, the expression's components first).
+    #[must_use]
+    pub fn watched_values(&self, events: &[Event]) -> Vec<(usize, [f32; 4])> {
+        let mut steps = 0;
+        let mut seen = Vec::new();
+        for e in events {
+            match e {
+                Event::Assign { name, bits, .. } if name == crate::watched::WATCH => {
+                    seen.push((
+                        steps,
+                        std::array::from_fn(|c| bits.get(c).map_or(0.0, |b| f32::from_bits(*b))),
+                    ));
+                }
+                _ => steps += 1,
+            }
+        }
+        seen
+    }
+
     /// The trace of the traced lane, as data and in words.
     #[must_use]
     pub fn describe(&self, events: &[Event]) -> Trace {

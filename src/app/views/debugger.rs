@@ -224,7 +224,7 @@ pub fn bar(
     ui: &mut Ui,
     debugger: &mut Debugger,
     run: &[TraceLine],
-    fragments: usize,
+    (fragments, watch): (usize, Option<&Watching<'_>>),
     lang: Lang,
 ) -> Option<Move> {
     let mut pressed = None;
@@ -322,8 +322,44 @@ pub fn bar(
     }
     if let Some(a) = debugger.at.filter(|&a| a < run.len()) {
         scope(ui, run, a, lang);
+        if let Some(w) = watch {
+            ui.label(RichText::new(w.at_step(a, lang)).monospace());
+        }
     }
     pressed
+}
+
+/// The variable picture's watch as the followed fragment's run stored it, to say its value at
+/// the step shown.
+pub struct Watching<'a> {
+    /// The expression and its line.
+    pub picture: &'a pipeline::capture::WatchPicture,
+    /// Each store of the run: the steps before it, the value.
+    pub stored: &'a [(usize, [f32; 4])],
+}
+
+impl Watching<'_> {
+    /// "watch `expr` after line L = value" at step `at`: the last store at or before it.
+    fn at_step(&self, at: usize, lang: Lang) -> String {
+        let (expression, line) = (&self.picture.expression, self.picture.line);
+        let kind = self.picture.kind;
+        match (self.stored.iter().rev().find(|(k, _)| *k <= at + 1), kind) {
+            (Some((_, v)), Some(kind)) => format!(
+                "{} `{expression}` {} {line} = {}",
+                lang.tr("watch", "监视"),
+                lang.tr("after line", "在行"),
+                super::watch_picture::value_words(kind, *v)
+            ),
+            _ => match lang {
+                Lang::En => format!(
+                    "watch `{expression}`: up to this step, this fragment has not run line {line}"
+                ),
+                Lang::Zh => {
+                    format!("监视 `{expression}`：到此步为止，此片元尚未执行第 {line} 行")
+                }
+            },
+        }
+    }
 }
 
 /// The variables of the step's function as they stand at the step, a colour with its swatch.
@@ -464,7 +500,22 @@ fn stepped(
     if let Some(m) = keys(ui.ctx()) {
         debugger.step(&run, stage, m, lang);
     }
-    if let Some(m) = bar(ui, debugger, &run, fragments, lang) {
+    let picture = capture
+        .as_deref()
+        .and_then(|c| c.shaders.as_ref())
+        .and_then(|r| {
+            r.watch
+                .as_ref()
+                .map(|w| (w, r.pixel.get(debugger.fragment)))
+        });
+    let watching = match (stage, picture) {
+        (Stage::Fragment, Some((picture, Some(f)))) => Some(Watching {
+            picture,
+            stored: &f.watch,
+        }),
+        _ => None,
+    };
+    if let Some(m) = bar(ui, debugger, &run, (fragments, watching.as_ref()), lang) {
         debugger.step(&run, stage, m, lang);
         // The bar above already showed the step before the click.
         ui.ctx().request_repaint();

@@ -195,7 +195,7 @@ fn shown(
 }
 
 /// A watched value as GLSL writes it.
-fn value_words(kind: WatchKind, v: [f32; 4]) -> String {
+pub(super) fn value_words(kind: WatchKind, v: [f32; 4]) -> String {
     match kind {
         WatchKind::Bool => (v[0] != 0.0).to_string(),
         WatchKind::Float | WatchKind::Int => num(v[0]),

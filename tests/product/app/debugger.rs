@@ -211,6 +211,11 @@ fn a_condition_over_the_frame_finds_its_first_fragment() {
         .at
         .expect("the debugger shows a step");
     assert_eq!(run[at].line, 22);
+    assert!(
+        h.query_by_label_contains("watch `dot(n, l) < 0.0` after line 22 = true")
+            .is_some(),
+        "the watch's value at the step"
+    );
     // The same fragment as a breakpoint's condition on line 22: diffuse = max(n·l, 0) is 0
     // exactly where n·l ≤ 0, so the first fragment where `diffuse <= 0.0` is the same one.
     let first = app.session.selection.pixel;

@@ -254,6 +254,11 @@ pub struct FragmentTrace {
     pub trace: Vec<crate::shader::TraceLine>,
     /// The colour it wrote, or `None` when it was discarded.
     pub output: Option<[f32; 4]>,
+    /// When the frame watched an expression: each time this run stored it, the number of
+    /// steps of `trace` before (the value stands from that step on) and the value, its
+    /// components first (`ShaderRecord::watch` has its type).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub watch: Vec<(usize, [f32; 4])>,
 }
 
 /// One vertex through the vertex shader: what it received, what each statement did, what it

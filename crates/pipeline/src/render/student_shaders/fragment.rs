@@ -357,6 +357,7 @@ impl FragmentShading<'_> {
             samples: u32::from(job.samples[j]),
             inputs: received,
             trace: fs.describe(&events),
+            watch: fs.watched_values(&events),
             output,
         })
     }
