@@ -219,6 +219,10 @@ impl PipelensApp {
                 .default_size(wide)
                 .resizable(true)
                 .show(ui, |ui| {
+                    // The code at the chrome's size in classroom mode too: the picture and the
+                    // narration are what the room reads, and the code's type stays no larger
+                    // than the narration's.
+                    super::style::chrome_style(ui);
                     ui.heading(lang.tr("Shaders (GLSL)", "着色器（GLSL）"));
                     self.commands.extend(views::shader::ui(
                         ui,
