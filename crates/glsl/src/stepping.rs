@@ -1,4 +1,4 @@
-//! Stepping through a run that has already happened: a [`Trace`] read forward and back as a
+//! Stepping through a run that has already happened: a [`Trace`](crate::Trace) read forward and back as a
 //! debugger reads a live program. Every position is an index into the trace (the step shown
 //! has run); stepping back is free, since nothing is run again.
 //!
