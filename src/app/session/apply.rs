@@ -166,7 +166,11 @@ impl Session {
             SelectionCommand::SelectVertex(v) => sel.vertex = v,
             SelectionCommand::SelectPixel(p) => sel.pixel = p,
             SelectionCommand::SetProfile(p) => sel.profile = p,
-            SelectionCommand::SetWatch(w) => sel.watch = w,
+            SelectionCommand::SetWatch(w) => {
+                sel.watch = w;
+                // A new watch (or none): why the last one was dropped no longer stands.
+                self.watch_error = None;
+            }
         }
     }
 }

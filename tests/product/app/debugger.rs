@@ -297,3 +297,39 @@ fn a_pixel_click_picks_the_pixel_only() {
     );
     assert_eq!(sel.vertex, None);
 }
+
+/// A watch that the code, edited under it, no longer compiles is dropped with the reason; the
+/// next watch asked for clears the reason.
+#[test]
+fn a_watch_the_edited_code_no_longer_compiles_is_dropped_with_why() {
+    let mut h = drawing_the_tests_shader();
+    let watch = |w: Option<(usize, &str)>| {
+        Command::Selection(SelectionCommand::SetWatch(
+            w.map(|(l, e)| (l, e.to_owned())),
+        ))
+    };
+    // Line 12 of the test's shader writes the colour from a and b.
+    h.state_mut().session.apply(watch(Some((12, "a"))));
+    h.run_steps(4);
+    assert!(h.state().session.selection.watch.is_some());
+    // pipelens' own Blinn-Phong has a declaration on line 12, outside any function.
+    {
+        let app = h.state_mut();
+        app.shader_editor.fragment = pipeline::shader::BUILTIN_FRAGMENT.to_owned();
+        let applied = app.shader_editor.apply(&app.session).expect("compiles");
+        app.session.apply(applied);
+    }
+    h.run_steps(4);
+    let s = &h.state().session;
+    assert_eq!(s.selection.watch, None);
+    assert!(
+        s.watch_error
+            .as_deref()
+            .is_some_and(|e| e.contains("line 12 does not end a statement")),
+        "{:?}",
+        s.watch_error
+    );
+    h.state_mut().session.apply(watch(Some((29, "n"))));
+    h.run_steps(4);
+    assert_eq!(h.state().session.watch_error, None);
+}
