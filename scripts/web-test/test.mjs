@@ -245,7 +245,7 @@ if (await waitForTitle(zh2, /^pipelens — 07-rasterization — step 1\/6$/, "a 
 // 6. The shader lesson: GLSL compiled by naga and run by pipelens' interpreter in the page; S
 // opens the shader panel on the right (its text changes that side of the window).
 const sh = await open("?lesson=24-shader-programs&step=5", "shaders");
-if (await waitForTitle(sh, /^pipelens — 24-shader-programs — step 5\/11$/, "the shader lesson opens on its toon step")) {
+if (await waitForTitle(sh, /^pipelens — 24-shader-programs — step 5\/12$/, "the shader lesson opens on its toon step")) {
   await sh.waitForTimeout(3000);
   const before = PNG.sync.read(await sh.screenshot({ path: `${out}/shader-lesson-toon.png` }));
   await sh.focus("#pipelens");
