@@ -10,7 +10,7 @@ use crate::machine::{LANES, Machine, RunError, Textures};
 use crate::program::Program;
 
 /// The inputs of one batch of up to [`LANES`] invocations.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Batch {
     rows: Vec<Vec<u32>>,
     lanes: usize,

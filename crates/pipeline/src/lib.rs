@@ -43,5 +43,6 @@ pub mod transform;
 pub mod vertex;
 
 pub use render::{
-    CodePart, RenderError, StageTimes, render, render_reusing, render_timed, trace_vertex,
+    CodePart, RenderError, ReplayError, StageTimes, render, render_reusing, render_timed,
+    trace_vertex, watch_fragment, watch_vertex,
 };

@@ -259,6 +259,23 @@ pub struct FragmentTrace {
     /// components first (`ShaderRecord::watch` has its type).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub watch: Vec<(usize, [f32; 4])>,
+    /// What it takes to run this fragment again (with a watch: `crate::watch_fragment`).
+    #[serde(skip)]
+    pub replay: Option<FragmentReplay>,
+}
+
+/// A fragment's run as the frame ran it, to run again: its object, its quad's inputs (the
+/// quad's other lanes too, for derivatives; helpers marked) and which lane it is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FragmentReplay {
+    /// The object, an index into the scene as drawn (figures and shadows expanded).
+    pub object: usize,
+    /// Its lane in the quad.
+    pub lane: usize,
+    /// The fragment shader's inputs, as the quad received them.
+    pub inputs: Vec<crate::shader::Varying>,
+    /// Their values, lane by lane.
+    pub batch: crate::shader::Batch,
 }
 
 /// One vertex through the vertex shader: what it received, what each statement did, what it

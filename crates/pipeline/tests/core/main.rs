@@ -27,6 +27,7 @@ mod shader;
 mod shader_errors;
 mod shader_frame;
 mod shader_frame_trace;
+mod shader_replay;
 mod shader_watch;
 mod support;
 mod texture;

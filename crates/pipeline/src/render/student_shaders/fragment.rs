@@ -343,6 +343,12 @@ impl FragmentShading<'_> {
         inputs.start_for(fs, 4);
         self.quad_inputs(&sh.programs, &job, object, y, 0, inputs);
         let received = super::lane_values(&fs.inputs, inputs.rows(), j);
+        let replay = crate::capture::FragmentReplay {
+            object,
+            lane: j,
+            inputs: fs.inputs.clone(),
+            batch: inputs.clone(),
+        };
         let tex = textures(fs, o, ctx.settings.sampler);
         let bindings = Bindings { textures: &tex };
         m.trace_lane(Some(j));
@@ -359,6 +365,7 @@ impl FragmentShading<'_> {
             trace: fs.describe(&events),
             watch: fs.watched_values(&events),
             output,
+            replay: Some(replay),
         })
     }
 

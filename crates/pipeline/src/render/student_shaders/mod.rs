@@ -18,9 +18,11 @@ use rayon::prelude::*;
 
 mod discard;
 mod fragment;
+mod replay;
 
 pub(in crate::render) use discard::{Peeled, peel_discarded};
 pub(in crate::render) use fragment::fragment_shaders;
+pub use replay::{ReplayError, watch_fragment, watch_vertex};
 
 use super::RenderError;
 use crate::capture::{
@@ -268,64 +270,101 @@ pub fn trace_vertex(
     if !scene.has_shaders() {
         return Ok(None);
     }
-    let expanded;
-    let scene = if let Some((s, _)) = scene.expanded() {
-        expanded = s;
-        &expanded
-    } else {
-        scene
-    };
-    if row >= capture.vertices.len() {
-        return Ok(None);
-    }
-    let mut first = 0usize;
-    let Some((i, object)) = scene.objects.iter().enumerate().find(|(_, o)| {
-        let n = o.mesh.positions.len();
-        first += n;
-        row < first
-    }) else {
+    let drawn = as_drawn(scene);
+    let scene = drawn.as_ref();
+    let Some((i, index)) = row_vertex(scene, capture, row) else {
         return Ok(None);
     };
+    let object = &scene.objects[i];
     let Some(sh) = &object.code.shader else {
         return Ok(None);
     };
-    let index = row - (first - object.mesh.positions.len());
     let vs = &sh.programs.vertex;
-    let u = uniforms(scene, &capture.settings, &capture.matrices, i, sh.time);
-    let mut m = vs.machine();
-    m.budget = capture.settings.max_steps;
-    vs.set_uniforms(&mut m, &u);
-    let mut batch = Batch::new(vs);
-    batch.start(1);
-    for (input, rows) in vs.inputs.iter().zip(batch.rows_mut()) {
-        let location = shader::interface::attribute_location(&input.name);
-        write_inputs(rows, input, location, object, index, 1);
-    }
-    let tex = textures(vs, object, crate::texture::Sampler::default());
-    let bindings = Bindings { textures: &tex };
-    m.trace_lane(Some(0));
-    let ran = m
-        .run_batch(&batch, &bindings)
-        .map_err(|e| shader_error(vs, object, &e))?;
+    let run = run_one_vertex(scene, capture, i, index, vs)?;
     let mut at = 0usize;
     let outputs = vs
         .outputs
         .iter()
         .map(|o| {
             let n = o.components as usize;
-            let value = lane_value(&ran.rows()[at * LANES..], n, 0);
+            let value = lane_value(&run.outputs[at * LANES..], n, 0);
             at += n;
             (o.name.clone(), value)
         })
         .collect();
-    let events = m.take_trace();
     Ok(Some(VertexTrace {
         row: row as u32,
         object: object.name.clone(),
-        inputs: lane_values(&vs.inputs, batch.rows(), 0),
-        trace: vs.describe(&events),
+        inputs: lane_values(&vs.inputs, run.batch.rows(), 0),
+        trace: vs.describe(&run.events),
         outputs,
     }))
+}
+
+/// `scene` as the render draws it: its figures and shadows expanded.
+fn as_drawn(scene: &Scene) -> std::borrow::Cow<'_, Scene> {
+    match scene.expanded() {
+        Some((s, _)) => std::borrow::Cow::Owned(s),
+        None => std::borrow::Cow::Borrowed(scene),
+    }
+}
+
+/// Where row `row` of the vertex table comes from in `scene` (expanded): its object, and the
+/// vertex's index in that object's mesh.
+fn row_vertex(scene: &Scene, capture: &FrameCapture, row: usize) -> Option<(usize, usize)> {
+    if row >= capture.vertices.len() {
+        return None;
+    }
+    let mut first = 0usize;
+    let (i, object) = scene.objects.iter().enumerate().find(|(_, o)| {
+        first += o.mesh.positions.len();
+        row < first
+    })?;
+    Some((i, row - (first - object.mesh.positions.len())))
+}
+
+/// One vertex's run, traced: its inputs, its outputs (the batch's rows), what it did.
+struct VertexRun {
+    batch: Batch,
+    outputs: Vec<u32>,
+    events: Vec<shader::Event>,
+}
+
+/// Vertex `index` of object `i` through `program` (the object's vertex shader, or it compiled
+/// with a watch), alone in lane 0, traced.
+fn run_one_vertex(
+    scene: &Scene,
+    capture: &FrameCapture,
+    i: usize,
+    index: usize,
+    program: &shader::Program,
+) -> Result<VertexRun, RenderError> {
+    let object = &scene.objects[i];
+    let time = object.code.shader.as_ref().map_or(0.0, |sh| sh.time);
+    let u = uniforms(scene, &capture.settings, &capture.matrices, i, time);
+    let mut m = program.machine();
+    m.budget = capture.settings.max_steps;
+    program.set_uniforms(&mut m, &u);
+    let mut batch = Batch::new(program);
+    batch.start(1);
+    for (input, rows) in program.inputs.iter().zip(batch.rows_mut()) {
+        let location = shader::interface::attribute_location(&input.name);
+        write_inputs(rows, input, location, object, index, 1);
+    }
+    let tex = textures(program, object, crate::texture::Sampler::default());
+    let bindings = Bindings { textures: &tex };
+    m.trace_lane(Some(0));
+    let outputs = m
+        .run_batch(&batch, &bindings)
+        .map_err(|e| shader_error(program, object, &e))?
+        .rows()
+        .to_vec();
+    let events = m.take_trace();
+    Ok(VertexRun {
+        batch,
+        outputs,
+        events,
+    })
 }
 
 /// Lane `lane`'s value of a varying of `components` floats, rows `LANES` apart, as GLSL writes
