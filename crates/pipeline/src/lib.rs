@@ -43,6 +43,6 @@ pub mod transform;
 pub mod vertex;
 
 pub use render::{
-    CodePart, RenderError, ReplayError, StageTimes, render, render_reusing, render_timed,
+    CodePart, RenderError, ReplayError, StageTimes, WatchRun, render, render_reusing, render_timed,
     trace_vertex, watch_fragment, watch_vertex,
 };

@@ -21,7 +21,7 @@ mod runs;
 mod storage;
 mod student_geometry;
 mod student_shaders;
-pub use student_shaders::{ReplayError, trace_vertex, watch_fragment, watch_vertex};
+pub use student_shaders::{ReplayError, WatchRun, trace_vertex, watch_fragment, watch_vertex};
 
 use std::time::Duration;
 

@@ -4,8 +4,7 @@
 //! a normalized vector's length, the colour the run wrote, a mesh's own vertex.
 
 use pipeline::ReplayError;
-use pipeline::shader::Stage;
-use pipeline::shader::probe::watch;
+use pipeline::shader::probe::WatchKind;
 
 use crate::shader_frame::{settings, sphere_scene, with_shaders};
 use crate::support::render;
@@ -44,12 +43,11 @@ fn a_watch_reads_the_inspected_fragments_own_run_after_its_line() {
     let scene = with_shaders(sphere_scene(false), None, Some(FS));
     let f = render(&scene, &s);
     let frag = &f.shaders.as_ref().expect("a record").pixel[0];
-    let at = |line: usize, expr: &str| {
-        let program = watch(Stage::Fragment, FS, line, expr).expect("compiles");
-        pipeline::watch_fragment(&scene, &f, frag, &program)
-    };
+    let at = |line: usize, expr: &str| pipeline::watch_fragment(&scene, &f, frag, (line, expr));
     // Three stores after line 7, each right after one of its steps in the run shown.
     let s_values = at(7, "s").expect("runs");
+    assert_eq!(s_values.kind, Some(WatchKind::Float));
+    let s_values = s_values.stores;
     let after_line_7: Vec<usize> = frag
         .trace
         .iter()
@@ -65,15 +63,20 @@ fn a_watch_reads_the_inspected_fragments_own_run_after_its_line() {
             (after_line_7[2], [0.75, 0.0, 0.0, 0.0]),
         ]
     );
-    let length = at(9, "length(n)").expect("runs");
+    let length = at(9, "length(n)").expect("runs").stores;
     assert_eq!(length.len(), 1);
     assert!((length[0].1[0] - 1.0).abs() < 1e-6, "{length:?}");
-    let colour = at(10, "color").expect("runs");
+    let colour = at(10, "color").expect("runs").stores;
     assert_eq!(Some(colour[0].1), frag.output, "the colour the run wrote");
     assert_eq!(colour[0].1[3], 0.75);
     // An input the shader never declared was never interpolated: named, not made up.
     match at(10, "gl_FragCoord.x") {
         Err(ReplayError::Input(name)) => assert_eq!(name, "gl_FragCoord"),
+        other => panic!("{other:?}"),
+    }
+    // A name not in scope at the line is the compiler's message, at the line.
+    match at(5, "n") {
+        Err(ReplayError::Watch(e)) => assert!(e.to_string().contains('n'), "{e}"),
         other => panic!("{other:?}"),
     }
 }
@@ -83,14 +86,15 @@ fn a_watch_reads_a_vertexs_own_run() {
     let s = settings();
     let scene = with_shaders(sphere_scene(false), Some(VS), Some(FS));
     let f = render(&scene, &s);
-    let program = watch(Stage::Vertex, VS, 9, "position").expect("compiles");
     let row = 5;
-    let seen = pipeline::watch_vertex(&scene, &f, row, &program).expect("runs");
+    let seen = pipeline::watch_vertex(&scene, &f, row, (9, "position")).expect("runs");
+    assert_eq!(seen.kind, Some(WatchKind::Vec3));
+    let seen = seen.stores;
     let p = scene.objects[0].mesh.positions[row];
     assert_eq!(seen.len(), 1);
     assert_eq!(&seen[0].1[..3], &p.to_array()[..]);
     assert!(matches!(
-        pipeline::watch_vertex(&scene, &f, f.vertices.len(), &program),
+        pipeline::watch_vertex(&scene, &f, f.vertices.len(), (9, "position")),
         Err(ReplayError::NotKept)
     ));
 }

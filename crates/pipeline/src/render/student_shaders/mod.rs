@@ -22,7 +22,7 @@ mod replay;
 
 pub(in crate::render) use discard::{Peeled, peel_discarded};
 pub(in crate::render) use fragment::fragment_shaders;
-pub use replay::{ReplayError, watch_fragment, watch_vertex};
+pub use replay::{ReplayError, WatchRun, watch_fragment, watch_vertex};
 
 use super::RenderError;
 use crate::capture::{
@@ -323,11 +323,13 @@ fn row_vertex(scene: &Scene, capture: &FrameCapture, row: usize) -> Option<(usiz
     Some((i, row - (first - object.mesh.positions.len())))
 }
 
-/// One vertex's run, traced: its inputs, its outputs (the batch's rows), what it did.
+/// One vertex's run, traced: its inputs, its outputs (the batch's rows), what it did, and
+/// what its watch last saw (a program compiled with one).
 struct VertexRun {
     batch: Batch,
     outputs: Vec<u32>,
     events: Vec<shader::Event>,
+    watched: Option<shader::probe::Watched>,
 }
 
 /// Vertex `index` of object `i` through `program` (the object's vertex shader, or it compiled
@@ -354,16 +356,17 @@ fn run_one_vertex(
     let tex = textures(program, object, crate::texture::Sampler::default());
     let bindings = Bindings { textures: &tex };
     m.trace_lane(Some(0));
-    let outputs = m
+    let ran = m
         .run_batch(&batch, &bindings)
-        .map_err(|e| shader_error(program, object, &e))?
-        .rows()
-        .to_vec();
+        .map_err(|e| shader_error(program, object, &e))?;
+    let outputs = ran.rows().to_vec();
+    let watched = program.watch.as_ref().and_then(|w| ran.watched(w, 0));
     let events = m.take_trace();
     Ok(VertexRun {
         batch,
         outputs,
         events,
+        watched,
     })
 }
 

@@ -11,6 +11,18 @@ use super::{
 use super::{textures, uniforms};
 use crate::capture::{FragmentTrace, FrameCapture};
 use crate::shader::Program;
+use crate::shader::probe::{self, WatchError, WatchKind};
+
+/// What a watch saw in one run: the value's type (`None`: the run never ran the line) and each
+/// store, after how many of the run's steps (the value stands from that step on) and the
+/// value's components first.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WatchRun {
+    /// The value's type.
+    pub kind: Option<WatchKind>,
+    /// Each store: the steps before it, the value.
+    pub stores: Vec<(usize, [f32; 4])>,
+}
 
 /// Why a run could not be run again with a watch.
 #[derive(Debug)]
@@ -21,6 +33,9 @@ pub enum ReplayError {
     /// The expression reads an input the shader does not declare (and so the frame did not
     /// interpolate): its name.
     Input(String),
+    /// The expression cannot be watched there (a name not in scope, a line that ends no
+    /// statement).
+    Watch(WatchError),
     /// The run stopped (an endless loop, an index out of range).
     Run(RenderError),
 }
@@ -33,24 +48,25 @@ impl std::fmt::Display for ReplayError {
                 f,
                 "it reads `{name}`, which the shader does not declare: the frame did not interpolate it"
             ),
+            Self::Watch(e) => write!(f, "{e}"),
             Self::Run(e) => write!(f, "{e}"),
         }
     }
 }
 
-/// Each value `program` (the fragment shader of `trace`'s object compiled with a watch) stores,
-/// when the fragment of `trace` runs again with it: the number of steps of the run before the
-/// store, and the value's components (see `Program::watched_values`). `scene` is the scene
-/// `capture` was drawn from.
+/// What `expression` is just after `line` of the fragment shader of `trace`'s object, each
+/// time the fragment of `trace` runs that line when it runs again with the shader compiled
+/// with that watch. `scene` is the scene `capture` was drawn from.
 ///
 /// # Errors
-/// No run kept, an input the frame did not interpolate, or the run stopped.
+/// No run kept, an expression that cannot be watched there, an input the frame did not
+/// interpolate, or the run stopped.
 pub fn watch_fragment(
     scene: &Scene,
     capture: &FrameCapture,
     trace: &FragmentTrace,
-    program: &Program,
-) -> Result<Vec<(usize, [f32; 4])>, ReplayError> {
+    (line, expression): (usize, &str),
+) -> Result<WatchRun, ReplayError> {
     let replay = trace.replay.as_ref().ok_or(ReplayError::NotKept)?;
     let drawn = as_drawn(scene);
     let scene = drawn.as_ref();
@@ -59,6 +75,7 @@ pub fn watch_fragment(
         .get(replay.object)
         .ok_or(ReplayError::NotKept)?;
     let sh = object.code.shader.as_ref().ok_or(ReplayError::NotKept)?;
+    let program = &watched(&sh.programs.fragment, line, expression)?;
     let kept = &replay.batch;
     let mut batch = Batch::new(program);
     batch.start(kept.lanes());
@@ -94,28 +111,53 @@ pub fn watch_fragment(
     let tex = textures(program, object, capture.settings.sampler);
     let bindings = Bindings { textures: &tex };
     m.trace_lane(Some(replay.lane));
-    m.run_batch(&batch, &bindings)
+    let ran = m
+        .run_batch(&batch, &bindings)
         .map_err(|e| ReplayError::Run(shader_error(program, object, &e)))?;
-    Ok(program.watched_values(&m.take_trace()))
+    let kind = program
+        .watch
+        .as_ref()
+        .and_then(|w| ran.watched(w, replay.lane))
+        .map(|w| w.kind);
+    Ok(WatchRun {
+        kind,
+        stores: program.watched_values(&m.take_trace()),
+    })
 }
 
-/// [`watch_fragment`] for the vertex of row `row` of the vertex table: each value `program`
-/// (its object's vertex shader compiled with a watch) stores when the vertex runs again.
+/// [`watch_fragment`] for the vertex of row `row` of the vertex table: each value `expression`
+/// has just after `line` of its object's vertex shader when the vertex runs again.
 ///
 /// # Errors
-/// No such row or no shader of the student's there, or the run stopped.
+/// No such row or no shader of the student's there, an expression that cannot be watched
+/// there, or the run stopped.
 pub fn watch_vertex(
     scene: &Scene,
     capture: &FrameCapture,
     row: usize,
-    program: &Program,
-) -> Result<Vec<(usize, [f32; 4])>, ReplayError> {
+    (line, expression): (usize, &str),
+) -> Result<WatchRun, ReplayError> {
     let drawn = as_drawn(scene);
     let scene = drawn.as_ref();
     let (i, index) = row_vertex(scene, capture, row).ok_or(ReplayError::NotKept)?;
-    if scene.objects[i].code.shader.is_none() {
-        return Err(ReplayError::NotKept);
-    }
+    let sh = scene.objects[i]
+        .code
+        .shader
+        .as_ref()
+        .ok_or(ReplayError::NotKept)?;
+    let program = &watched(&sh.programs.vertex, line, expression)?;
     let run = run_one_vertex(scene, capture, i, index, program).map_err(ReplayError::Run)?;
-    Ok(program.watched_values(&run.events))
+    Ok(WatchRun {
+        kind: run.watched.map(|w| w.kind),
+        stores: program.watched_values(&run.events),
+    })
+}
+
+/// `program`'s source compiled with a watch of `expression` just after `line`, its errors
+/// placed in the file it stands in.
+fn watched(program: &Program, line: usize, expression: &str) -> Result<Program, ReplayError> {
+    let mut watched = probe::watch(program.stage, &program.source, line, expression)
+        .map_err(ReplayError::Watch)?;
+    watched.origin.clone_from(&program.origin);
+    Ok(watched)
 }
