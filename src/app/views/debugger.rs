@@ -5,7 +5,7 @@
 //! which of its hits). Nothing runs again: the frame already kept the whole run, so stepping
 //! back is as cheap as stepping forward (`pipelens_glsl::stepping`).
 
-use egui::{Color32, RichText, Ui};
+use egui::{RichText, Ui};
 use pipeline::capture::FrameCapture;
 use pipeline::shader::stepping;
 use pipeline::shader::{Stage, TraceLine};
@@ -32,6 +32,8 @@ pub struct Debugger {
     pub note: Option<String>,
     /// The variable picture's row.
     pub watch: super::watch_picture::WatchPanel,
+    /// The watch list: expressions read at the step.
+    pub list: super::watch_list::WatchList,
     /// A line whose last step to show once the run of the pixel just inspected arrives (a
     /// condition's first pixel).
     pub show_line: Option<usize>,
@@ -54,11 +56,6 @@ pub enum Move {
     Continue,
     /// Back to the previous breakpoint.
     ContinueBack,
-}
-
-/// A colour as egui draws it, from a value in [0, 1].
-pub fn swatch(c: [f32; 4]) -> Color32 {
-    Color32::from(egui::Rgba::from_rgba_unmultiplied(c[0], c[1], c[2], c[3]))
 }
 
 /// The run the tab shown can step: the fragment shader's at the inspected pixel (the fragment
@@ -187,7 +184,7 @@ impl Debugger {
                     .step
                     .written()
                     .and_then(|(_, v)| stepping::colour(v))
-                    .map(swatch);
+                    .map(super::palette::swatch);
                 (line, crate::vocabulary::trace::words(&run[k], lang), swatch)
             })
             .collect();
@@ -374,7 +371,8 @@ fn scope(ui: &mut Ui, run: &[TraceLine], at: usize, lang: Lang) {
                     if let Some(c) = stepping::colour(held.value) {
                         let (rect, _) =
                             ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
-                        ui.painter().rect_filled(rect, 2.0, swatch(c));
+                        ui.painter()
+                            .rect_filled(rect, 2.0, super::palette::swatch(c));
                     }
                     ui.label(
                         RichText::new(format!(
@@ -520,6 +518,15 @@ fn stepped(
         // The bar above already showed the step before the click.
         ui.ctx().request_repaint();
     }
+    let at = debugger.at.unwrap_or(run.len() - 1);
+    super::watch_list::ui(
+        ui,
+        &mut debugger.list,
+        session,
+        (stage, debugger.fragment),
+        &run,
+        at,
+    );
     let mut marks = debugger.marks(&run, stage, lang);
     marks.reveal = debugger.at != before;
     let step_line = marks.current;

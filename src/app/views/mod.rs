@@ -21,6 +21,7 @@ mod projector;
 pub mod shader;
 mod shader_source;
 pub mod typeset;
+pub mod watch_list;
 pub mod watch_picture;
 mod words;
 

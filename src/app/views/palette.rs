@@ -37,3 +37,8 @@ pub const FATES: [(Color32, &str, &str); crate::spaces::FATES.len()] = {
     }
     [fate(0), fate(1), fate(2), fate(3), fate(4), fate(5)]
 };
+
+/// A colour as egui draws it, from a value in [0, 1].
+pub fn swatch(c: [f32; 4]) -> Color32 {
+    Color32::from(egui::Rgba::from_rgba_unmultiplied(c[0], c[1], c[2], c[3]))
+}

@@ -156,6 +156,88 @@ fn the_debugger_steps_through_the_inspected_fragments_run() {
 /// `diffuse = max(dot(n, l), 0.0)`). The pixel it inspects has, by its own run's values of n
 /// and l (the trace, not the watch), n·l < 0, and the debugger shows that run at line 22 with
 /// diffuse 0.
+/// The watch list reads each expression just after the step's line in the run shown, worked by
+/// hand from [`SOURCE`]'s run: after line 9 `a = 0.25`, so `a * 2.0` is 0.5; on line 11's first
+/// step the loop has not finished (the watch follows the whole `for` statement, its line's last
+/// `}`); after line 12 `a = 0.5`, so `a * 2.0` is 1 and `color` is `(0.5, 0.125, 0, 1)`, a colour;
+/// `h` lives in `half_of`, not at line 9, and says so.
+#[test]
+fn the_watch_list_reads_each_expression_at_the_step() {
+    let mut h = drawing_the_tests_shader();
+    h.state_mut()
+        .session
+        .apply(Command::Selection(SelectionCommand::SelectPixel(Some((
+            240, 180,
+        )))));
+    h.run_steps(6);
+    let field = || (egui::accesskit::Role::TextInput, "Add:");
+    for expression in ["a * 2.0", "color", "h"] {
+        h.get_by_role_and_label(field().0, field().1).focus();
+        h.run_steps(1);
+        h.get_by_role_and_label(field().0, field().1)
+            .type_text(expression);
+        h.run_steps(1);
+        h.key_press(Key::Enter);
+        h.run_steps(2);
+    }
+    assert_eq!(
+        h.state().shader_editor.debugger.list.entries,
+        ["a * 2.0", "color", "h"]
+    );
+    // Away from the field, F10 steps: the first step is line 9.
+    h.state_mut().shader_editor.debugger.at = Some(0);
+    h.run_steps(3);
+    assert_eq!(line(&h), Some(9));
+    assert!(
+        h.query_by_label_contains("a * 2.0 = 0.500").is_some(),
+        "a = 0.25 after line 9"
+    );
+    assert!(
+        h.query_by_label_contains("not readable after line 9")
+            .is_some(),
+        "h is not in scope at line 9"
+    );
+    // Line 11's first step: the loop has not run to its end yet.
+    let first_on_11 = {
+        let app = h.state();
+        let run = &app
+            .session
+            .capture
+            .as_ref()
+            .expect("a frame")
+            .shaders
+            .as_ref()
+            .expect("shaders")
+            .pixel[0]
+            .trace;
+        run.iter().position(|t| t.line == 11).expect("line 11 runs")
+    };
+    h.state_mut().shader_editor.debugger.at = Some(first_on_11);
+    h.run_steps(3);
+    assert!(
+        h.query_by_label_contains("a * 2.0: up to this step, the run has not run this line")
+            .is_some()
+    );
+    h.state_mut().shader_editor.debugger.cursor_line = Some(12);
+    press(&mut h, Modifiers::COMMAND, Key::F10);
+    assert_eq!(line(&h), Some(12));
+    assert!(h.query_by_label_contains("a * 2.0 = 1.000").is_some());
+    assert!(
+        h.query_by_label_contains("color = vec4(0.500, 0.125, 0, 1.000)")
+            .is_some()
+    );
+    // Taken off the list.
+    h.get_all_by_label("×")
+        .next()
+        .expect("a remove button")
+        .click();
+    h.run_steps(2);
+    assert_eq!(
+        h.state().shader_editor.debugger.list.entries,
+        ["color", "h"]
+    );
+}
+
 #[test]
 fn a_condition_over_the_frame_finds_its_first_fragment() {
     let path = crate::support::repo().join("lessons/24-shader-programs.toml");
