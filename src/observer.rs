@@ -136,6 +136,7 @@ pub fn render_observer(
 ) -> Option<FrameCapture> {
     let distance = (camera.eye - camera.at).length();
     let scene = Scene {
+        uniforms: Default::default(),
         objects: spec.scene.objects.clone(),
         camera,
         projection: Projection::Perspective {

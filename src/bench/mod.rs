@@ -41,6 +41,7 @@ pub fn sphere_scene(triangles: u32) -> BenchScene {
     BenchScene {
         name,
         scene: Scene {
+            uniforms: Default::default(),
             objects: vec![Object::new("sphere", mesh)],
             camera: Camera {
                 eye: Vec3::new(0.0, 0.0, 3.0),
@@ -77,6 +78,7 @@ pub fn lit_textured_scene() -> BenchScene {
     BenchScene {
         name: "lit textured floor+sphere".to_owned(),
         scene: Scene {
+            uniforms: Default::default(),
             objects: vec![floor, ball],
             camera: Camera {
                 eye: Vec3::new(0.0, 1.0, 4.0),

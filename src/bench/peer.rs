@@ -57,6 +57,7 @@ pub fn obj_scene(
             if texture.is_some() { " + texture" } else { "" }
         ),
         scene: Scene {
+            uniforms: Default::default(),
             objects: vec![object],
             camera: Camera {
                 eye: Vec3::new(0.0, 0.0, 3.0),

@@ -205,6 +205,7 @@ mod tests {
     fn every_problem_that_keeps_a_scene_from_being_drawn_is_said_in_chinese() {
         use pipeline::camera::Projection;
         let mut scene = pipeline::scene::Scene {
+            uniforms: Default::default(),
             projection: Projection::Perspective {
                 fovy_deg: 200.0,
                 aspect: Some(-1.0),

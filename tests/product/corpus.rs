@@ -352,6 +352,7 @@ fn a_million_faces_load_and_render() {
     assert_eq!(mesh.indices.len(), 2 * (n - 1) * (n - 1));
     assert!(mesh.indices.len() > 1_000_000);
     let scene = pipeline::scene::Scene {
+        uniforms: Default::default(),
         objects: vec![pipeline::scene::Object::new("grid", mesh)],
         ..scene_looking_at_the_origin()
     };
@@ -367,6 +368,7 @@ fn a_million_faces_load_and_render() {
 
 fn scene_looking_at_the_origin() -> pipeline::scene::Scene {
     pipeline::scene::Scene {
+        uniforms: Default::default(),
         objects: Vec::new(),
         camera: pipeline::camera::Camera {
             eye: glam::Vec3::new(0.0, 0.0, 1.5),

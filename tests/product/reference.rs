@@ -62,6 +62,7 @@ fn spot_scene(
         attenuation: Vec3::new(0.0, 0.0, 1.0),
     };
     let scene = pipeline::scene::Scene {
+        uniforms: Default::default(),
         objects: vec![spot],
         camera: Camera {
             eye: Vec3::new(0.0, 0.0, 10.0),

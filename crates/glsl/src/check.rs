@@ -108,34 +108,17 @@ pub(super) fn check_declarations(
     }
 }
 
-/// A uniform's declaration: one pipelens sets, with its type.
+/// A uniform's declaration: one pipelens sets, with its type; or one of the student's own
+/// (`crate::own_uniform`): a `float`, `int`, `bool` or `vec3` whose comment, if it starts like
+/// a control, is one. A name one letter or two from a uniform pipelens sets, with no control,
+/// is taken for that uniform misspelt.
 fn uniform_declaration(
     source: &str,
     d: &dialect::Declaration,
     module: &naga::Module,
 ) -> Option<ShaderError> {
     let Some(spec) = interface::uniform(&d.name) else {
-        let known: Vec<&str> = interface::UNIFORMS
-            .iter()
-            .flat_map(|u| u.names.iter().copied())
-            .collect();
-        let firsts: Vec<&str> = interface::UNIFORMS.iter().map(|u| u.names[0]).collect();
-        return Some(complain(
-            error_at(
-                source,
-                d.name_span.clone(),
-                format!(
-                    "pipelens sets no uniform called `{}`; the uniforms it sets: {}{}",
-                    d.name,
-                    firsts.join(", "),
-                    did_you_mean(&d.name, known.iter().copied(), Quote::Code),
-                ),
-            ),
-            Complaint::UnknownUniform {
-                name: d.name.clone(),
-                suggestion: nearest(&d.name, known.iter().copied()).map(str::to_owned),
-            },
-        ));
+        return own_uniform_declaration(source, d, module);
     };
     let written = glsl_type_of_global(module, &d.name).unwrap_or_default();
     let expected = spec
@@ -157,6 +140,69 @@ fn uniform_declaration(
             },
         )
     })
+}
+
+/// A uniform pipelens does not set: the student's own when a control can set its type (and
+/// its comment, if it starts like a control, is one), else a message.
+fn own_uniform_declaration(
+    source: &str,
+    d: &dialect::Declaration,
+    module: &naga::Module,
+) -> Option<ShaderError> {
+    use crate::own_uniform::{OwnKind, comment_after, control, own_uniform};
+    let known: Vec<&str> = interface::UNIFORMS
+        .iter()
+        .flat_map(|u| u.names.iter().copied())
+        .collect();
+    let written = glsl_type_of_global(module, &d.name).unwrap_or_default();
+    let controlled =
+        comment_after(source, d.span.end).is_some_and(|c| control(c).is_ok_and(|c| c.is_some()));
+    let suggestion = nearest(&d.name, known.iter().copied());
+    // Misspelt: `ligth_pos`, close to a uniform pipelens sets of the same type, with no
+    // control of its own (`uniform float k;` is not a misspelt `ka`: that is a vec3).
+    let misspelt = !controlled
+        && suggestion
+            .and_then(interface::uniform)
+            .is_some_and(|u| u.glsl == written);
+    match OwnKind::of(&written) {
+        _ if misspelt => {}
+        Some(kind) => {
+            return own_uniform(source, d, kind).err().map(|why| {
+                complain(
+                    error_at(
+                        source,
+                        d.span.clone(),
+                        format!(
+                            "`{}` is a uniform of your own; its comment reads like its control (`// MIN..MAX = VALUE`) but {why}",
+                            d.name
+                        ),
+                    ),
+                    Complaint::OwnUniformControl {
+                        name: d.name.clone(),
+                        why,
+                    },
+                )
+            });
+        }
+        None => {}
+    }
+    let firsts: Vec<&str> = interface::UNIFORMS.iter().map(|u| u.names[0]).collect();
+    Some(complain(
+        error_at(
+            source,
+            d.name_span.clone(),
+            format!(
+                "pipelens sets no uniform called `{}`; the uniforms it sets: {}{}. A uniform of your own is a float, int, bool or vec3, its control in a comment after it: `// 0..4 = 1.5`",
+                d.name,
+                firsts.join(", "),
+                did_you_mean(&d.name, known.iter().copied(), Quote::Code),
+            ),
+        ),
+        Complaint::UnknownUniform {
+            name: d.name.clone(),
+            suggestion: suggestion.map(str::to_owned),
+        },
+    ))
 }
 
 /// A texture's declaration: one pipelens binds.

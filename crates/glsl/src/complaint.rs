@@ -89,6 +89,14 @@ pub enum Complaint {
         /// The uniform meant, when one is close.
         suggestion: Option<String>,
     },
+    /// A uniform of the student's own whose comment starts like its control
+    /// (`// MIN..MAX = VALUE`) but is not one.
+    OwnUniformControl {
+        /// The uniform.
+        name: String,
+        /// What is wrong with the comment, in English.
+        why: String,
+    },
     /// A uniform pipelens sets (its type is in [`super::interface::UNIFORMS`]), declared with
     /// another type.
     UniformType {

@@ -29,6 +29,7 @@ mod lowering;
 mod machine;
 mod modulo;
 mod ops;
+pub mod own_uniform;
 pub mod power;
 pub mod probe;
 mod register_form;

@@ -239,6 +239,10 @@ pub struct Scene {
     pub shadow: Option<PlanarShadow>,
     /// Articulated figures (robot arm, humanoid), drawn part by part by a matrix-stack traversal.
     pub figures: Vec<Figure>,
+    /// The values of the student's own uniforms (`crate::shader::own_uniform`), by name — a
+    /// lesson's `shader.uniforms`, the shader panel's controls; one not here starts at the
+    /// value its comment gives.
+    pub uniforms: std::collections::BTreeMap<String, Vec<f32>>,
 }
 
 impl Scene {

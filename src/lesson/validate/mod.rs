@@ -309,6 +309,7 @@ pub fn scene(
     if c.found.is_empty() {
         Ok(SceneSpec {
             scene: Scene {
+                uniforms: Default::default(),
                 objects,
                 camera,
                 projection,

@@ -66,6 +66,7 @@ pub(crate) fn scene() -> Scene {
     let mut unlit = Object::new("unlit", BuiltinMesh::Triangle.build());
     (unlit.translate, unlit.lit) = (Vec3::new(0.0, 1.6, -2.0), false);
     Scene {
+        uniforms: Default::default(),
         objects: vec![floor, ball, torus, cube, unlit],
         camera: Camera {
             eye: Vec3::new(0.5, 1.5, 5.0),

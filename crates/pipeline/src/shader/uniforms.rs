@@ -45,6 +45,8 @@ pub struct Uniforms {
     pub axis_angle: (Vec3, f32),
     /// The object's scale factors.
     pub scale: Vec3,
+    /// The student's own uniforms, each as the machine's words.
+    pub own: Vec<(String, Vec<u32>)>,
 }
 
 impl Default for Uniforms {
@@ -68,6 +70,7 @@ impl Default for Uniforms {
             rotation: Vec3::ZERO,
             axis_angle: (Vec3::ZERO, 0.0),
             scale: Vec3::ONE,
+            own: Vec::new(),
         }
     }
 }
@@ -88,6 +91,9 @@ impl Uniforms {
     /// uniform.
     #[must_use]
     pub fn components(&self, name: &str) -> Option<Vec<u32>> {
+        if let Some((_, words)) = self.own.iter().find(|(n, _)| n == name) {
+            return Some(words.clone());
+        }
         let spec = uniform(name)?;
         let m = &self.material;
         let first = self.lights.iter().find_map(|l| match *l {

@@ -111,6 +111,7 @@ fn the_construction_draws_the_levels_asked_for_and_labels_them() {
     let mut object = pipeline::scene::Object::new("curve", all);
     object.color = pipeline::scene::ColorSource::Uniform(glam::Vec3::ONE);
     let scene = pipeline::scene::Scene {
+        uniforms: Default::default(),
         objects: vec![object],
         camera: pipeline::camera::Camera {
             eye: glam::Vec3::new(0.0, 0.0, 5.0),

@@ -17,6 +17,7 @@ pub(crate) fn lit_textured_quad(size: u32, samples: Samples) -> (Scene, RenderSe
     quad.rotate_deg = Vec3::new(-40.0, 10.0, 0.0);
     quad.texture = Some(std::sync::Arc::new(Texture::checkerboard(64, 8)));
     let scene = Scene {
+        uniforms: Default::default(),
         objects: vec![quad],
         camera: Camera {
             eye: Vec3::new(0.0, 0.0, 3.0),
@@ -185,6 +186,7 @@ fn runs_of_triangles(layout: &[(usize, bool)]) -> Scene {
         labels: Vec::new(),
     };
     Scene {
+        uniforms: Default::default(),
         objects: vec![Object::new("runs", mesh)],
         camera: Camera {
             eye: Vec3::ZERO,

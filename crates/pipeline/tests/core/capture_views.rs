@@ -156,6 +156,7 @@ fn the_first_wrong_pixel_and_the_difference_picture_are_upright() {
     let drawn = render(&scene, &settings);
     let empty = render(
         &Scene {
+            uniforms: Default::default(),
             objects: Vec::new(),
             ..scene.clone()
         },

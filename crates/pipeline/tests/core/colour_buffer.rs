@@ -27,6 +27,7 @@ fn bright_sphere() -> Scene {
     );
     sphere.color = ColorSource::Uniform(Vec3::new(3.0, 0.5, 2.0));
     Scene {
+        uniforms: Default::default(),
         objects: vec![sphere],
         camera: Camera {
             eye: Vec3::new(0.0, 0.0, 4.0),

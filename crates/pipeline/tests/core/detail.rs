@@ -18,6 +18,7 @@ fn detailed_quad(detail: pipeline::texture::SurfaceDetail) -> pipeline::capture:
     let mut quad = Object::new("quad", mesh);
     quad.detail = Some(detail);
     let scene = Scene {
+        uniforms: Default::default(),
         objects: vec![quad],
         camera: Camera {
             eye: Vec3::new(0.0, 0.0, 3.0),
@@ -113,6 +114,7 @@ fn displacement_moves_each_vertex_along_its_normal_by_the_height() {
         scale: 0.5,
     });
     let scene = Scene {
+        uniforms: Default::default(),
         objects: vec![sphere],
         camera: Camera {
             eye: Vec3::new(0.0, 0.0, 6.0),
@@ -193,6 +195,7 @@ fn cube_map_faces_and_a_mirror_sphere() {
     });
     sphere.material.ks = Vec3::ZERO;
     let scene = Scene {
+        uniforms: Default::default(),
         objects: vec![sphere],
         camera: Camera {
             eye: Vec3::new(0.0, 0.0, 4.0),

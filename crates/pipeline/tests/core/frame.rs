@@ -20,6 +20,7 @@ fn camera_scene(mesh: Mesh, size: u32) -> (Scene, RenderSettings) {
     let mut object = Object::new("plane", mesh);
     object.color = ColorSource::Vertex;
     let scene = Scene {
+        uniforms: Default::default(),
         objects: vec![object],
         camera: Camera {
             eye: Vec3::ZERO,

@@ -191,6 +191,7 @@ fn lit_sphere(frequency: Frequency) -> pipeline::capture::FrameCapture {
     sphere.color = pipeline::scene::ColorSource::Uniform(Vec3::ONE);
     sphere.material = material();
     let scene = Scene {
+        uniforms: Default::default(),
         objects: vec![sphere],
         camera: Camera {
             eye: Vec3::new(0.0, 0.0, 4.0),
@@ -314,6 +315,7 @@ fn the_shadow_pass_projects_every_vertex_by_the_closed_form() {
     let mut cube = Object::new("cube", BuiltinMesh::Cube.build());
     cube.translate = Vec3::new(0.5, 2.0, -0.5);
     let scene = Scene {
+        uniforms: Default::default(),
         objects: vec![cube],
         camera: Camera {
             eye: Vec3::new(0.0, 8.0, 10.0),

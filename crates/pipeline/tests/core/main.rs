@@ -17,6 +17,7 @@ mod hooks;
 mod implicit;
 mod lighting;
 mod normals;
+mod own_uniforms;
 mod parameters;
 mod projection;
 mod properties;

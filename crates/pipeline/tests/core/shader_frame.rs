@@ -40,6 +40,7 @@ pub(crate) fn sphere_scene(textured: bool) -> Scene {
         sphere.texture = Some(Arc::new(Texture::checkerboard(256, 8)));
     }
     Scene {
+        uniforms: Default::default(),
         objects: vec![sphere],
         camera: Camera {
             eye: Vec3::new(1.0, 0.5, 4.0),

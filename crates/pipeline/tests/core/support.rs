@@ -30,6 +30,7 @@ pub fn pixel_scene(w: u32, h: u32, triangles: &[[Vec2; 3]]) -> (Scene, RenderSet
     let mut object = Object::new("test", mesh);
     object.color = ColorSource::Vertex;
     let scene = Scene {
+        uniforms: Default::default(),
         objects: vec![object],
         camera: Camera {
             eye: Vec3::new(0.0, 0.0, 1.0),

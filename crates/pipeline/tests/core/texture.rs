@@ -113,6 +113,7 @@ fn textured_quad(d: f32, tilt: f32, sampler: Sampler) -> pipeline::capture::Fram
     quad.rotate_deg = Vec3::new(-tilt, 0.0, 0.0);
     quad.texture = Some(std::sync::Arc::new(Texture::checkerboard(256, 16)));
     let scene = Scene {
+        uniforms: Default::default(),
         objects: vec![quad],
         camera: Camera {
             eye: Vec3::new(0.0, 0.0, d),

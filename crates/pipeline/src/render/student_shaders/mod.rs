@@ -144,7 +144,24 @@ fn uniforms(
         rotation: o.rotate_deg,
         axis_angle: o.axis_rotation.unwrap_or((glam::Vec3::ZERO, 0.0)),
         scale: o.scale,
+        own: own_uniforms(scene, o),
     }
+}
+
+/// The values of the student's own uniforms `object`'s shaders declare: the scene's, or where
+/// it has none, the comment's (`shader::own_uniform`).
+fn own_uniforms(scene: &Scene, object: &Object) -> Vec<(String, Vec<u32>)> {
+    let Some(sh) = &object.code.shader else {
+        return Vec::new();
+    };
+    let mut own = sh.programs.vertex.own_uniforms();
+    own.extend(sh.programs.fragment.own_uniforms());
+    own.into_iter()
+        .map(|u| {
+            let value = scene.uniforms.get(&u.name).unwrap_or(&u.value);
+            (u.name.clone(), u.kind.words(value))
+        })
+        .collect()
 }
 
 /// `[fovy (degrees), aspect, near, far]` of the view volume: `fovy = 2·atan((t − b)/(2·near))`,
