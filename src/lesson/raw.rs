@@ -5,6 +5,8 @@
 // The fields are the keys of the file, documented one by one in lessons/README.md.
 #![allow(missing_docs)]
 
+use std::collections::BTreeMap;
+
 use pipeline::shader::HookKind;
 use serde::Deserialize;
 use toml::Spanned;
@@ -59,6 +61,22 @@ pub struct RawShader {
     pub shadow_matrix: Option<Spanned<String>>,
     /// `vec3 bezier_patch(vec3 p[16], float u, float v)`, a Bézier patch's surface point.
     pub bezier_patch: Option<Spanned<String>>,
+    /// `uniforms = { bands = 4, tint = [1, 0.5, 0] }`: the values of the shaders' own
+    /// uniforms (`pipeline::shader::own_uniform`).
+    pub uniforms: Option<BTreeMap<Spanned<String>, Spanned<RawUniformValue>>>,
+}
+
+/// A value a lesson gives a uniform of the shader's own: a number, true or false, or three
+/// numbers.
+#[derive(Debug, Deserialize)]
+#[serde(untagged)]
+pub enum RawUniformValue {
+    /// `true` or `false`.
+    Bool(bool),
+    /// A number.
+    Number(f64),
+    /// Three numbers.
+    Triple([f64; 3]),
 }
 
 impl RawShader {

@@ -23,6 +23,7 @@ mod labs;
 mod lesson_mistakes;
 mod lessons;
 mod observer;
+mod own_uniforms;
 mod record;
 mod reference;
 mod scene_file;

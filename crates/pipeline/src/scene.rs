@@ -98,6 +98,9 @@ pub struct StudentCode {
     pub shader: Option<ObjectShader>,
     /// The functions of the pipeline the student wrote, by kind (`None`: pipelens' own).
     pub hooks: crate::shader::Hooks,
+    /// Values given to the shaders' own uniforms (`shader.uniforms`), by name: they go into
+    /// [`Scene::uniforms`].
+    pub uniforms: std::collections::BTreeMap<String, Vec<f32>>,
 }
 
 impl Object {
@@ -252,6 +255,26 @@ impl Scene {
         self.objects.iter().any(|o| o.code.shader.is_some())
     }
 
+    /// The uniforms of the student's own the objects' shaders declare (each name once, the
+    /// first declaration's control), with the scene's value where it has one.
+    #[must_use]
+    pub fn own_uniforms(&self) -> Vec<crate::shader::own_uniform::OwnUniform> {
+        let mut own: Vec<crate::shader::own_uniform::OwnUniform> = Vec::new();
+        for sh in self.objects.iter().filter_map(|o| o.code.shader.as_ref()) {
+            for stage in [&sh.programs.vertex, &sh.programs.fragment] {
+                for mut u in stage.own_uniforms() {
+                    if own.iter().all(|o| o.name != u.name) {
+                        if let Some(v) = self.uniforms.get(&u.name) {
+                            u.value.clone_from(v);
+                        }
+                        own.push(u);
+                    }
+                }
+            }
+        }
+        own
+    }
+
     /// Every object runs `shader` (a lesson step's, the shader panel's).
     pub fn set_shaders(&mut self, shader: &ObjectShader) {
         for o in &mut self.objects {
@@ -338,6 +361,7 @@ impl Scene {
         if let Some(shader) = &code.shader {
             self.set_shaders(shader);
         }
+        self.uniforms.extend(code.uniforms.clone());
         for hook in code.hooks.iter() {
             self.set_hook(hook);
         }

@@ -39,6 +39,7 @@ pub fn describe(spec: &SceneSpec, name: &str, lang: crate::vocabulary::Lang) -> 
             "max_steps" => "循环步数上限",
             "samples" => "采样数",
             "anisotropy" => "各向异性",
+            "uniforms" => "着色器的 uniform",
             other => return other.to_owned(),
         };
         match lang {

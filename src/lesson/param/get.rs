@@ -45,6 +45,19 @@ pub fn get(spec: &SceneSpec, name: &str) -> Option<Value> {
             let (_, value) = joints.into_iter().find(|(j, _)| j == joint)?;
             Some(Value::Number(*value))
         }
+        ["uniforms", u] => {
+            use pipeline::shader::own_uniform::OwnKind;
+            let u = spec
+                .scene
+                .own_uniforms()
+                .into_iter()
+                .find(|o| o.name == *u)?;
+            Some(match u.kind {
+                OwnKind::Float | OwnKind::Int => Value::Number(u.value[0]),
+                OwnKind::Bool => Value::Bool(u.value[0] != 0.0),
+                OwnKind::Vec3 => Value::Vec3(Vec3::from_slice(&u.value)),
+            })
+        }
         _ => None,
     }
 }

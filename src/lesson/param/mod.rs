@@ -196,6 +196,9 @@ pub fn names(spec: &SceneSpec) -> Vec<String> {
             out.push(format!("figures.{name}.{joint}"));
         }
     }
+    for u in spec.scene.own_uniforms() {
+        out.push(format!("uniforms.{}", u.name));
+    }
     out
 }
 
@@ -239,6 +242,33 @@ fn choice<T: Copy>(v: &Value, options: &[(&str, T)]) -> Result<T, String> {
             .ok_or_else(|| format!("expected one of {}, got \"{n}\"", names.join(", "))),
         other => Err(format!("expected one of {}, got {other}", names.join(", "))),
     }
+}
+
+/// `uniforms.NAME`: a uniform of the shaders' own, set inside its control's range (an `int`
+/// rounded, so that an animation passes through whole numbers).
+fn own_uniform(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Problem> {
+    use pipeline::shader::own_uniform::OwnKind;
+    let u = spec
+        .scene
+        .own_uniforms()
+        .into_iter()
+        .find(|u| u.name == name)
+        .ok_or(Problem::Unknown)?;
+    let value = match u.kind {
+        OwnKind::Float => vec![number(v)?],
+        OwnKind::Int => vec![number(v)?.round()],
+        OwnKind::Bool => vec![f32::from(u8::from(boolean(v)?))],
+        OwnKind::Vec3 => vec3(v)?.to_array().to_vec(),
+    };
+    let (lo, hi) = u.range;
+    if value.iter().any(|x| !(lo..=hi).contains(x)) {
+        return Err(format!(
+            "{v} is outside its control's range {lo}..{hi} (the comment after its declaration)"
+        )
+        .into());
+    }
+    spec.scene.uniforms.insert(u.name, value);
+    Ok(())
 }
 
 /// Sets parameter `name` of `spec` to `value`, then checks that the scene can still be drawn.
@@ -341,6 +371,7 @@ fn set(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Problem> {
                 .ok_or(Problem::Unknown)?;
             *slot.1 = number(v)?;
         }
+        ["uniforms", u] => own_uniform(spec, u, v)?,
         _ => return Err(Problem::Unknown),
     }
     Ok(())

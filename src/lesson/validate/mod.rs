@@ -286,12 +286,18 @@ pub fn scene(
         .filter_map(|l| lights::light(&mut c, l))
         .collect();
     let mut objects: Vec<pipeline::scene::Object> = objects;
+    // The values of the shaders' own uniforms: each object's shader's, then the scene's.
+    let mut uniforms: std::collections::BTreeMap<String, Vec<f32>> = objects
+        .iter()
+        .flat_map(|o| o.code.uniforms.clone())
+        .collect();
     if let Some(code) = s
         .shader
         .as_ref()
         .and_then(|sh| shaders::shader(&mut c, sh, base))
     {
         shaders::give(&mut objects, &code);
+        uniforms.extend(code.uniforms);
     }
     let light_names = lights::names(&mut c, &s.lights);
     let shadow = s.shadow.as_ref().and_then(|sh| lights::shadow(&mut c, sh));
@@ -309,7 +315,7 @@ pub fn scene(
     if c.found.is_empty() {
         Ok(SceneSpec {
             scene: Scene {
-                uniforms: Default::default(),
+                uniforms,
                 objects,
                 camera,
                 projection,

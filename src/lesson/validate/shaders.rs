@@ -8,13 +8,16 @@ use std::ops::Range;
 use std::path::Path;
 use std::sync::Arc;
 
+use std::collections::BTreeMap;
+
 use pipeline::scene::{ObjectShader, StudentCode};
+use pipeline::shader::own_uniform::{OwnKind, OwnUniform};
 use pipeline::shader::{HookKind, Hooks, Stage};
 use toml::Spanned;
 
 use super::Checker;
 use crate::lesson::Diagnostic;
-use crate::lesson::raw::RawShader;
+use crate::lesson::raw::{RawShader, RawUniformValue};
 
 /// The endings of a shader file's name: a value ending so (on one line) names a file.
 pub const SHADER_FILE_ENDINGS: [&str; 5] = [".vert", ".frag", ".glsl", ".vs", ".fs"];
@@ -131,7 +134,102 @@ pub(in crate::lesson) fn shader(
             hooks.set(compiled);
         }
     }
-    ok.then_some(StudentCode { shader, hooks })
+    let uniforms = r
+        .uniforms
+        .as_ref()
+        .map(|given| own_values(c, given, shader.as_ref()))
+        .unwrap_or_default();
+    ok.then_some(StudentCode {
+        shader,
+        hooks,
+        uniforms,
+    })
+}
+
+/// `shader.uniforms`: each a uniform of the shaders' own, its value of its type and inside its
+/// control's range (an `int` a whole number).
+fn own_values(
+    c: &mut Checker<'_>,
+    given: &BTreeMap<Spanned<String>, Spanned<RawUniformValue>>,
+    shader: Option<&ObjectShader>,
+) -> BTreeMap<String, Vec<f32>> {
+    let own: Vec<OwnUniform> = shader.map_or_else(Vec::new, |sh| {
+        let mut own = sh.programs.vertex.own_uniforms();
+        own.extend(sh.programs.fragment.own_uniforms());
+        own
+    });
+    let mut values = BTreeMap::new();
+    for (name, value) in given {
+        let Some(u) = own.iter().find(|u| u.name == *name.get_ref()) else {
+            let names: Vec<&str> = own.iter().map(|u| u.name.as_str()).collect();
+            c.error(
+                name.span(),
+                format!(
+                    "the shaders declare no uniform of their own called `{}`{}",
+                    name.get_ref(),
+                    if names.is_empty() {
+                        " (they declare none: `uniform float k; // 0..1 = 0.5` is one)".to_owned()
+                    } else {
+                        format!(
+                            "; theirs: {}{}",
+                            names.join(", "),
+                            pipeline::shader::suggest::did_you_mean(
+                                name.get_ref(),
+                                names.iter().copied(),
+                                pipeline::shader::suggest::Quote::Code
+                            )
+                        )
+                    }
+                ),
+            );
+            continue;
+        };
+        match own_value(u, value.get_ref()) {
+            Ok(v) => {
+                values.insert(u.name.clone(), v);
+            }
+            Err(e) => c.error(value.span(), format!("`{}`: {e}", u.name)),
+        }
+    }
+    values
+}
+
+/// A value written for `u`, checked against its type and range.
+fn own_value(u: &OwnUniform, value: &RawUniformValue) -> Result<Vec<f32>, String> {
+    #[allow(clippy::cast_possible_truncation)]
+    let v: Vec<f32> = match (u.kind, value) {
+        (OwnKind::Bool, RawUniformValue::Bool(b)) => vec![f32::from(u8::from(*b))],
+        (OwnKind::Float | OwnKind::Int, RawUniformValue::Number(x)) => vec![*x as f32],
+        (OwnKind::Vec3, RawUniformValue::Triple(t)) => t.iter().map(|x| *x as f32).collect(),
+        (kind, _) => {
+            return Err(format!(
+                "a {} takes {}",
+                match kind {
+                    OwnKind::Float => "float",
+                    OwnKind::Int => "int",
+                    OwnKind::Bool => "bool",
+                    OwnKind::Vec3 => "vec3",
+                },
+                match kind {
+                    OwnKind::Bool => "true or false",
+                    OwnKind::Vec3 => "three numbers [x, y, z]",
+                    _ => "a number",
+                }
+            ));
+        }
+    };
+    if u.kind == OwnKind::Int && v[0].fract() != 0.0 {
+        return Err(format!("an int takes a whole number, got {}", v[0]));
+    }
+    let (lo, hi) = u.range;
+    if u.kind != OwnKind::Bool && v.iter().any(|x| !(lo..=hi).contains(x)) {
+        let written: Vec<String> = v.iter().map(ToString::to_string).collect();
+        return Err(format!(
+            "{} is outside its control's range {lo}..{hi} (the comment after its declaration)",
+            written.join(", ")
+        ));
+    }
+    Ok(v)
 }
 
 /// How a message names the function it is about.

@@ -1,0 +1,90 @@
+//! A shader's own uniforms in a lesson: `shader.uniforms` gives their values, a step's `set`
+//! and `animate` change them as `"uniforms.NAME"`, and a wrong name, type or value is an error
+//! at its place in the file. The frame's centre pixel is grey `level` (worked by hand: the
+//! shader writes `vec4(vec3(level), 1)` and `level` stays inside [0, 1]).
+
+use std::path::Path;
+
+use pipelens::lesson::param::Value;
+use pipelens::lesson::script::parse_lesson;
+
+const HEAD: &str = "[lesson]
+id = \"t\"
+title = { en = \"T\", zh = \"题\" }
+summary = { en = \"S\", zh = \"概\" }
+
+[[scene.objects]]
+name = \"ball\"
+mesh = { builtin = \"uv_sphere\", segments = 24, rings = 12 }
+
+[scene.render]
+width = 40
+height = 30
+samples = 1
+
+[scene.shader]
+fragment = \"\"\"
+#version 330 core
+uniform float level; // 0..1 = 0.25
+uniform bool on;     // = true
+out vec4 color;
+void main() {
+    color = vec4(on ? vec3(level) : vec3(0.0), 1.0);
+}
+\"\"\"
+";
+
+const STEP: &str =
+    "[[steps]]\ntitle = { en = \"a\", zh = \"甲\" }\nnarration = { en = \"b\", zh = \"乙\" }\n";
+
+fn centre(spec: &pipelens::lesson::SceneSpec) -> f32 {
+    let f = pipeline::render(&spec.scene, &spec.settings).expect("draws");
+    f.pixels.color[15 * 40 + 20][0]
+}
+
+#[test]
+fn a_lesson_gives_sets_and_animates_a_shaders_own_uniform() {
+    let text = format!(
+        "{HEAD}uniforms = {{ level = 0.75 }}\n\n{STEP}\n{STEP}set = {{ \"uniforms.level\" = 0.5 }}\n\n{STEP}animate = [{{ param = \"uniforms.level\", from = 0.0, to = 1.0, seconds = 2.0, easing = \"linear\" }}]\n\n{STEP}set = {{ \"uniforms.on\" = false }}\n"
+    );
+    let lesson = parse_lesson(&text, "t.toml", Path::new(".")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(centre(&lesson.spec_at(0)), 0.75, "the file's value");
+    assert_eq!(centre(&lesson.spec_at(1)), 0.5, "the step's set");
+    assert_eq!(
+        centre(&lesson.spec_playing(2, 0.5)),
+        0.25,
+        "a quarter of the way"
+    );
+    assert_eq!(centre(&lesson.spec_at(3)), 0.0, "switched off");
+    assert_eq!(
+        pipelens::lesson::param::get(&lesson.spec_at(1), "uniforms.level"),
+        Some(Value::Number(0.5))
+    );
+    assert!(pipelens::lesson::param::names(&lesson.spec_at(0)).contains(&"uniforms.on".to_owned()));
+}
+
+#[test]
+fn a_wrong_uniform_name_type_or_value_is_an_error_at_its_place() {
+    let errors = |extra: &str, step: &str| match parse_lesson(
+        &format!("{HEAD}{extra}\n\n{STEP}{step}"),
+        "t.toml",
+        Path::new("."),
+    ) {
+        Ok(_) => panic!("expected an error for {extra} {step}"),
+        Err(d) => d.0,
+    };
+    // The `uniforms` line is line 25 of the file: HEAD has 24.
+    let found = errors("uniforms = { levle = 0.5 }", "");
+    crate::support::assert_found(&found, 25, 14, "did you mean `level`?");
+    let found = errors("uniforms = { level = 2.0 }", "");
+    crate::support::assert_found(&found, 25, 22, "outside its control's range 0..1");
+    let found = errors("uniforms = { on = 1 }", "");
+    crate::support::assert_found(&found, 25, 19, "a bool takes true or false");
+    let found = errors("", "set = { \"uniforms.level\" = -1.0 }");
+    assert!(
+        found
+            .iter()
+            .any(|d| d.message.contains("outside its control's range 0..1")),
+        "{found:?}"
+    );
+}
