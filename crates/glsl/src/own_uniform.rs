@@ -42,6 +42,17 @@ impl OwnKind {
         }
     }
 
+    /// Its GLSL type.
+    #[must_use]
+    pub fn glsl(self) -> &'static str {
+        match self {
+            Self::Float => "float",
+            Self::Int => "int",
+            Self::Bool => "bool",
+            Self::Vec3 => "vec3",
+        }
+    }
+
     /// How many numbers its value has.
     #[must_use]
     pub fn components(self) -> usize {
@@ -164,7 +175,7 @@ pub fn own_uniform(source: &str, d: &Declaration, kind: OwnKind) -> Result<OwnUn
     {
         return Err(format!(
             "a {} takes {n} number{}, the comment gives {}",
-            glsl(kind),
+            kind.glsl(),
             if n == 1 { "" } else { "s" },
             v.len()
         ));
@@ -191,16 +202,6 @@ pub fn own_uniform(source: &str, d: &Declaration, kind: OwnKind) -> Result<OwnUn
         colour,
         line: crate::error::line_column(source, d.span.start).0,
     })
-}
-
-/// Its GLSL type.
-fn glsl(kind: OwnKind) -> &'static str {
-    match kind {
-        OwnKind::Float => "float",
-        OwnKind::Int => "int",
-        OwnKind::Bool => "bool",
-        OwnKind::Vec3 => "vec3",
-    }
 }
 
 impl Program {

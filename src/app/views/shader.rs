@@ -254,6 +254,7 @@ pub fn ui(
         None => {}
     }
     messages(ui, editor, session, lang);
+    let tuned = super::own_uniforms::controls(ui, session);
     let tab = editor.tab;
     let hook = match tab {
         Tab::Hook(kind) => editor.hooks.iter().position(|h| h.kind == kind),
@@ -316,7 +317,7 @@ pub fn ui(
     } else {
         None
     };
-    applied.into_iter().chain(watched).collect()
+    applied.into_iter().chain(watched).chain(tuned).collect()
 }
 
 /// "pipelens' own": the shading of the current settings as GLSL in place of the student's,

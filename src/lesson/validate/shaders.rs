@@ -204,12 +204,7 @@ fn own_value(u: &OwnUniform, value: &RawUniformValue) -> Result<Vec<f32>, String
         (kind, _) => {
             return Err(format!(
                 "a {} takes {}",
-                match kind {
-                    OwnKind::Float => "float",
-                    OwnKind::Int => "int",
-                    OwnKind::Bool => "bool",
-                    OwnKind::Vec3 => "vec3",
-                },
+                kind.glsl(),
                 match kind {
                     OwnKind::Bool => "true or false",
                     OwnKind::Vec3 => "three numbers [x, y, z]",

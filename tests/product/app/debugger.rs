@@ -415,3 +415,63 @@ fn a_watch_the_edited_code_no_longer_compiles_is_dropped_with_why() {
     h.run_steps(4);
     assert_eq!(h.state().session.watch_error, None);
 }
+
+/// A uniform of the student's own is a control in the panel: `level` from its comment starts
+/// at 0.25 on a 0.01 grid (a hundredth of its range 0..1, a power of ten), so one → on the
+/// focused slider makes it 0.26, and the frame draws grey 0.26 at the sphere's centre (the
+/// shader writes `vec4(vec3(level), 1)`).
+#[test]
+fn a_uniform_of_ones_own_is_a_slider_that_redraws_the_frame() {
+    let path = crate::support::repo().join("lessons/24-shader-programs.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    h.state_mut().panels.shader = true;
+    h.run_steps(4);
+    let app = h.state_mut();
+    app.shader_editor.fragment = "#version 330 core
+uniform float level; // 0..1 = 0.25
+out vec4 color;
+void main() {
+    color = vec4(vec3(level), 1.0);
+}
+"
+    .to_owned();
+    app.shader_editor.shaders_in_use = true;
+    let applied = app.shader_editor.apply(&app.session).expect("compiles");
+    app.session.apply(applied);
+    h.run_steps(4);
+    let slider = || (egui::accesskit::Role::Slider, "level");
+    h.get_by_role_and_label(slider().0, slider().1).focus();
+    h.run_steps(2);
+    h.key_press(Key::ArrowRight);
+    h.run_steps(2);
+    let level = h.state().session.spec.scene.uniforms.get("level").cloned();
+    assert_eq!(level, Some(vec![0.26]));
+    h.state_mut()
+        .session
+        .apply(Command::Selection(SelectionCommand::SelectPixel(Some((
+            240, 180,
+        )))));
+    for _ in 0..20 {
+        h.run_steps(2);
+        let done = h
+            .state()
+            .session
+            .capture
+            .as_ref()
+            .is_some_and(|c| c.settings.capture.pixel == Some((240, 180)));
+        if done {
+            break;
+        }
+    }
+    let app = h.state();
+    let frag = &app
+        .session
+        .capture
+        .as_ref()
+        .expect("a frame")
+        .shaders
+        .as_ref()
+        .expect("shaders")
+        .pixel[0];
+    assert_eq!(frag.output, Some([0.26, 0.26, 0.26, 1.0]));
+}
