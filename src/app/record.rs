@@ -59,6 +59,9 @@ pub fn recorded_step(session: &Session) -> Option<Step> {
         focus: sel.focus.clone(),
         depth_range: sel.depth_view.range,
         watch: sel.watch.clone(),
+        // Authored, not on screen: "Update step" keeps the file's own.
+        shader_lines: None,
+        panels: Vec::new(),
         shader: None,
         question: None,
         expect: None,

@@ -11,7 +11,7 @@ use super::views::{
     pixels::PixelView,
 };
 use super::{editor, platform, progress, views, watched, window_size};
-use crate::app::command::{LessonCommand, SceneCommand};
+use crate::app::command::{LessonCommand, SceneCommand, SelectionCommand};
 use crate::vocabulary::Stage;
 
 /// What the window shows around the picture. In a lesson or classroom mode the picture comes
@@ -74,8 +74,8 @@ pub struct PipelensApp {
     /// Stops the export under way.
     pub(super) export_cancel: Option<crate::export::Cancel>,
     pub(super) commands: Vec<Command>,
-    /// The step whose watch last opened the shader panel (`Session::step_entered`).
-    pub(super) watch_opened: u64,
+    /// The step whose panels were last opened on entering it (`Session::step_entered`).
+    pub(super) step_opened: u64,
     /// The progress as last saved: when the session's differs, a frame is asked for after the
     /// save interval, so that eframe saves it even if nothing else moves (a browser tab).
     pub(super) saved_progress: progress::Progress,
@@ -112,7 +112,7 @@ impl PipelensApp {
             export_message: None,
             export_cancel: None,
             commands: Vec::new(),
-            watch_opened: 0,
+            step_opened: 0,
             watched: None,
             editor: editor::Editor::default(),
             inbox: platform::Inbox::default(),
@@ -179,7 +179,7 @@ impl PipelensApp {
         self.picture.clear();
         self.subject.clear();
         let compact = self.bar(ui);
-        self.open_for_watch(compact);
+        self.open_for_step(compact);
         self.keys_help(ui.ctx());
         // Presenting, the status line shows only to say what went wrong.
         if !self.presenting() || self.session.error.is_some() {
@@ -290,15 +290,30 @@ impl PipelensApp {
         compact
     }
 
-    /// A step that draws a variable over the frame shows it where it is drawn: the shader
-    /// panel, on the fragment shader's tab (once, on entering the step).
-    fn open_for_watch(&mut self, compact: bool) {
-        if self.watch_opened != self.session.step_entered {
-            self.watch_opened = self.session.step_entered;
-            if self.session.selection.watch.is_some() && !compact {
-                self.panels.shader = true;
-                self.shader_editor.tab =
-                    views::shader::Tab::Shader(pipeline::shader::Stage::Fragment);
+    /// On entering a step, the panels it needs: a step that draws a variable over the frame
+    /// or names its shader lines opens the shader panel on the fragment shader's tab (the lines
+    /// scrolled to), and a step's `panels` are opened. Not in a small window, where a panel
+    /// covers the picture.
+    fn open_for_step(&mut self, compact: bool) {
+        if self.step_opened == self.session.step_entered {
+            return;
+        }
+        self.step_opened = self.session.step_entered;
+        if compact {
+            return;
+        }
+        let step = self.session.lesson.as_ref().map(|p| p.current());
+        let lines = step.and_then(|s| s.shader_lines);
+        let panels = step.map(|s| s.panels.clone()).unwrap_or_default();
+        if self.session.selection.watch.is_some() || lines.is_some() {
+            self.panels.shader = true;
+            self.shader_editor.tab = views::shader::Tab::Shader(pipeline::shader::Stage::Fragment);
+        }
+        self.shader_editor.debugger.lines = lines.map(|l| (l, true));
+        for p in panels {
+            match p {
+                crate::lesson::script::StepPanel::Inspector => self.panels.inspector = true,
+                crate::lesson::script::StepPanel::Shader => self.panels.shader = true,
             }
         }
     }
@@ -395,6 +410,17 @@ impl PipelensApp {
                 self.subject.extend(self.geometry_view.subject);
             } else {
                 let c = self.pixel_view.ui(ui, &self.session, capture);
+                // A pixel clicked is a pixel to read: the inspector opens with its derivation
+                // (not in a small window, where it would cover the picture).
+                let picked = c.iter().any(|c| {
+                    matches!(
+                        c,
+                        Command::Selection(SelectionCommand::SelectPixel(Some(_)))
+                    )
+                });
+                if picked && !window_size::is_compact(ui.ctx()) {
+                    self.panels.inspector = true;
+                }
                 self.commands.extend(c);
                 self.picture.extend(self.pixel_view.picture.iter().copied());
                 self.subject.extend(self.pixel_view.subject.iter().copied());

@@ -434,6 +434,11 @@ pub struct RawStep {
     /// The debugger's variable picture: a fragment-shader expression after a line,
     /// `"EXPR@LINE"`.
     pub watch: Option<Spanned<String>>,
+    /// The fragment shader's lines the step is about, `[first, last]` (or `[line]`): the
+    /// shader panel opens on them, scrolled to and marked.
+    pub shader_lines: Option<Spanned<Vec<i64>>>,
+    /// The panels the step opens on entering it: `"inspector"`, `"shader"`.
+    pub panels: Option<Vec<Spanned<String>>>,
     /// `shader = { vertex = …, fragment = … }`: every object's shaders from this step on.
     pub shader: Option<Spanned<RawShader>>,
     pub question: Option<Spanned<RawText>>,

@@ -54,6 +54,20 @@ pub enum Overlay {
     Normals,
 }
 
+/// A panel a step opens (`panels = [...]`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StepPanel {
+    /// The inspector, where a pixel's or a vertex's derivation is read.
+    Inspector,
+    /// The shader panel, with its source and debugger.
+    Shader,
+}
+
+impl StepPanel {
+    /// The names a lesson file gives them.
+    pub const NAMES: [(&str, Self); 2] = [("inspector", Self::Inspector), ("shader", Self::Shader)];
+}
+
 /// One step of a lesson.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Step {
@@ -89,6 +103,11 @@ pub struct Step {
     /// The fragment shader's expression drawn over the frame, and the line after which it is
     /// read (`watch = "EXPR@LINE"`; the debugger's variable picture).
     pub watch: Option<(usize, String)>,
+    /// The fragment shader's lines the step is about, first and last, from 1
+    /// (`shader_lines = [23, 25]`): the shader panel opens on them, scrolled to and marked.
+    pub shader_lines: Option<(usize, usize)>,
+    /// The panels the step opens (`panels = ["inspector"]`).
+    pub panels: Vec<StepPanel>,
     /// The shaders and inside test every object runs from this step on (`None`: as the steps
     /// before left them).
     pub shader: Option<pipeline::scene::StudentCode>,

@@ -37,6 +37,9 @@ pub struct Debugger {
     /// A line whose last step to show once the run of the pixel just inspected arrives (a
     /// condition's first pixel).
     pub show_line: Option<usize>,
+    /// The lesson step's lines of the fragment shader (`shader_lines`), first and last, and
+    /// whether they are still to be scrolled to.
+    pub lines: Option<((usize, usize), bool)>,
 }
 
 /// A move of the step shown.
@@ -174,6 +177,7 @@ impl Debugger {
                 beside: Vec::new(),
                 reveal: false,
                 watched: None,
+                lines: None,
             };
         };
         let at = self.at.unwrap_or(last).min(last);
@@ -194,6 +198,7 @@ impl Debugger {
             beside,
             reveal: false,
             watched: None,
+            lines: None,
         }
     }
 }
@@ -406,12 +411,16 @@ pub fn panel(
             beside: Vec::new(),
             reveal: false,
             watched: None,
+            lines: None,
         };
         return (none, None);
     };
     let (mut marks, step_line) = stepped(ui, debugger, stage, session);
     if stage == Stage::Fragment {
         marks.watched = session.selection.watch.as_ref().map(|(line, _)| *line);
+        if let Some((lines, reveal)) = &mut debugger.lines {
+            marks.lines = Some((*lines, std::mem::take(reveal)));
+        }
     }
     let mut command = super::breakpoints::list(
         ui,

@@ -18,6 +18,9 @@ pub struct Marks {
     pub reveal: bool,
     /// The line after which the variable picture reads its expression (outlined).
     pub watched: Option<usize>,
+    /// The lesson step's lines, first and last (marked with a bar), and whether to scroll to
+    /// them this frame.
+    pub lines: Option<((usize, usize), bool)>,
 }
 
 /// What the reader did in the source this frame.
@@ -195,13 +198,31 @@ fn text(
 
 /// The step's line highlighted (over the text: the editor's own background would hide it
 /// beneath; light enough to read through, with a bar at its left edge) and scrolled to when it
-/// moved, and the watched line outlined; `row_rect` is a line's row on screen.
+/// moved, the watched line outlined, and the lesson step's lines marked with a bar at the right
+/// (scrolled to on entering the step); `row_rect` is a line's row on screen.
 fn bands(
     ui: &Ui,
     marks: &Marks,
     row_rect: &dyn Fn(usize) -> Option<egui::Rect>,
     x_range: egui::Rangef,
 ) {
+    if let Some(((first, last), reveal)) = marks.lines
+        && let (Some(top), Some(bottom)) = (row_rect(first), row_rect(last))
+    {
+        let block = egui::Rect::from_x_y_ranges(x_range, top.top()..=bottom.bottom());
+        if reveal && !marks.reveal {
+            let start = egui::Rect::from_x_y_ranges(block.left()..=block.left(), block.y_range());
+            ui.scroll_to_rect(start, Some(egui::Align::Center));
+        }
+        let teal = Color32::from_rgb(70, 190, 170);
+        ui.painter()
+            .rect_filled(block, 0.0, teal.gamma_multiply(0.12));
+        ui.painter().rect_filled(
+            egui::Rect::from_x_y_ranges(block.right() - 4.0..=block.right(), block.y_range()),
+            0.0,
+            teal,
+        );
+    }
     if let Some(rect) = marks.current.and_then(row_rect) {
         if marks.reveal {
             // Up or down to the line, not sideways: the line's start is what is asked for.

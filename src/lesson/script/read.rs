@@ -159,6 +159,16 @@ impl Checker<'_> {
         let (pixel, vertex, profile) = self.targets(r, spec);
         let focus = r.focus.as_ref().map(|names| self.focus(names, spec));
         let watch = r.watch.as_ref().and_then(|w| self.watch(w, spec));
+        let shader_lines = r
+            .shader_lines
+            .as_ref()
+            .and_then(|l| self.shader_lines(l, spec));
+        let panels = r
+            .panels
+            .iter()
+            .flatten()
+            .filter_map(|p| self.choice("panels", p, &super::StepPanel::NAMES))
+            .collect();
         let depth_range = r.depth_range.as_ref().and_then(|d| {
             let [a, b] = *d.get_ref();
             if (0.0..=1.0).contains(&a) && (0.0..=1.0).contains(&b) && a < b {
@@ -187,6 +197,8 @@ impl Checker<'_> {
             focus,
             depth_range,
             watch,
+            shader_lines,
+            panels,
             shader,
             question,
             expect,
@@ -312,6 +324,40 @@ impl Checker<'_> {
             }
         });
         (pixel, vertex, profile)
+    }
+
+    /// A step's `shader_lines = [first, last]` (or `[line]`): lines of the fragment shader
+    /// the scene runs at this step, the first not after the last.
+    fn shader_lines(&mut self, l: &Spanned<Vec<i64>>, spec: &SceneSpec) -> Option<(usize, usize)> {
+        let lines = spec
+            .scene
+            .objects
+            .iter()
+            .find_map(|o| o.code.shader.as_ref())
+            .map(|sh| sh.programs.fragment.source.lines().count());
+        let Some(count) = lines else {
+            self.error(
+                l.span(),
+                "`shader_lines`: no object runs a shader of the student's at this step",
+            );
+            return None;
+        };
+        let (first, last) = match l.get_ref().as_slice() {
+            [a] => (*a, *a),
+            [a, b] => (*a, *b),
+            _ => {
+                self.error(l.span(), "`shader_lines` is [first, last] or [line]");
+                return None;
+            }
+        };
+        if first < 1 || first > last || last > count as i64 {
+            self.error(
+                l.span(),
+                format!("`shader_lines` = [{first}, {last}] must be lines 1 to {count} of the fragment shader, the first not after the last"),
+            );
+            return None;
+        }
+        Some((first as usize, last as usize))
     }
 
     /// A step's watch, `"EXPR@LINE"`: read, and compiled against the fragment shaders the

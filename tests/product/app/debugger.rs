@@ -359,10 +359,11 @@ fn pipelens_own_keeps_the_students_code_one_click_away() {
 /// would stand beside the pixel's lighting vectors): lesson 24's debugger step, its picture's
 /// middle clicked.
 #[test]
-fn a_pixel_click_picks_the_pixel_only() {
+fn a_pixel_click_picks_the_pixel_only_and_opens_the_inspector() {
     let path = crate::support::repo().join("lessons/24-shader-programs.toml");
     let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    crate::app::go_to_step_titled(&mut h, "The debugger: one fragment's run");
+    crate::app::go_to_step_titled(&mut h, "Edit: add a rim");
+    h.state_mut().panels.inspector = false;
     h.run_steps(4);
     let before = h.state().session.selection.pixel;
     let picture = *h.state().picture.first().expect("a picture");
@@ -378,6 +379,37 @@ fn a_pixel_click_picks_the_pixel_only() {
         sel.pixel
     );
     assert_eq!(sel.vertex, None);
+    assert!(
+        h.state().panels.inspector,
+        "the pixel's derivation is read there"
+    );
+}
+
+/// The toon step asks the student to read a band in the inspector and is about the lines that
+/// make the bands: entering it opens the inspector and the shader panel on the fragment shader,
+/// its lines 15–17 (d, the band, the colour — counted in the lesson's source) marked.
+#[test]
+fn a_step_opens_the_panels_it_speaks_of_on_its_lines() {
+    let path = crate::support::repo().join("lessons/24-shader-programs.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    assert!(!h.state().panels.inspector && !h.state().panels.shader);
+    crate::app::go_to_step_titled(&mut h, "Edit: toon bands");
+    h.run_steps(4);
+    let app = h.state();
+    assert!(app.panels.inspector && app.panels.shader);
+    assert_eq!(
+        app.shader_editor.tab,
+        pipelens::app::views::shader::Tab::Shader(pipeline::shader::Stage::Fragment)
+    );
+    assert_eq!(
+        app.shader_editor.debugger.lines,
+        Some(((15, 17), false)),
+        "marked, and scrolled to once"
+    );
+    let lines: Vec<&str> = app.shader_editor.fragment.lines().collect();
+    assert!(lines[14].contains("float d = max(dot(n, l), 0.0);"));
+    assert!(lines[15].contains("float band = floor(d * 4.0) / 4.0;"));
+    assert!(lines[16].contains("vec3 c = v_color * (0.2 + 0.8 * band);"));
 }
 
 /// A watch that the code, edited under it, no longer compiles is dropped with the reason; the

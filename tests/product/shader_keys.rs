@@ -1,12 +1,13 @@
-//! A shader's own uniforms in a lesson: `shader.uniforms` gives their values, a step's `set`
+//! A lesson's keys about its shaders. A shader's own uniforms: `shader.uniforms` gives their values, a step's `set`
 //! and `animate` change them as `"uniforms.NAME"`, and a wrong name, type or value is an error
 //! at its place in the file. The frame's centre pixel is grey `level` (worked by hand: the
-//! shader writes `vec4(vec3(level), 1)` and `level` stays inside [0, 1]).
+//! shader writes `vec4(vec3(level), 1)` and `level` stays inside [0, 1]). A step's
+//! `shader_lines` and `panels`: lines the shader has, panels that exist.
 
 use std::path::Path;
 
 use pipelens::lesson::param::Value;
-use pipelens::lesson::script::parse_lesson;
+use pipelens::lesson::script::{StepPanel, parse_lesson};
 
 const HEAD: &str = "[lesson]
 id = \"t\"
@@ -86,5 +87,38 @@ fn a_wrong_uniform_name_type_or_value_is_an_error_at_its_place() {
             .iter()
             .any(|d| d.message.contains("outside its control's range 0..1")),
         "{found:?}"
+    );
+}
+
+#[test]
+fn a_steps_shader_lines_and_panels_are_checked() {
+    let lesson =
+        |step: &str| parse_lesson(&format!("{HEAD}\n{STEP}{step}"), "t.toml", Path::new("."));
+    // The fragment shader of HEAD has 7 lines (#version … the closing brace).
+    let ok = lesson("shader_lines = [5, 6]\npanels = [\"inspector\", \"shader\"]\n")
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(ok.steps[0].shader_lines, Some((5, 6)));
+    assert_eq!(
+        ok.steps[0].panels,
+        [StepPanel::Inspector, StepPanel::Shader]
+    );
+    let found = |step: &str| match lesson(step) {
+        Ok(_) => panic!("expected an error for {step}"),
+        Err(d) => d.0,
+    };
+    assert!(
+        found("shader_lines = [5, 8]\n")
+            .iter()
+            .any(|d| d.message.contains("must be lines 1 to 7"))
+    );
+    assert!(
+        found("shader_lines = [6, 5]\n")
+            .iter()
+            .any(|d| d.message.contains("the first not after the last"))
+    );
+    assert!(
+        found("panels = [\"inspectr\"]\n")
+            .iter()
+            .any(|d| d.message.contains("\"inspector\""))
     );
 }
