@@ -1,6 +1,7 @@
 //! `pipelens bench`: frame times per stage for standard scenes (against Mesa's llvmpipe on the
 //! same meshes in `peer.rs`). It measures; it asserts nothing.
 
+mod debugger;
 pub mod grade;
 pub mod handouts;
 pub mod peer;
@@ -8,7 +9,7 @@ mod shaders;
 pub mod steps;
 
 pub use peer::{Peer, run_against_peer};
-pub use shaders::{rows as shader_rows, with_shaders};
+pub use shaders::with_shaders;
 
 use std::time::Duration;
 
@@ -205,9 +206,19 @@ pub fn run(quick: bool, frames: Option<usize>, out: &mut dyn std::io::Write) -> 
             )?;
         }
     }
-    shaders::rows(frames.unwrap_or(if quick { 1 } else { 5 }), out)?;
+    shader_rows(frames.unwrap_or(if quick { 1 } else { 5 }), out)?;
     slider_drag(frames.unwrap_or(if quick { 1 } else { 15 }), out)?;
     memory(out)
+}
+
+/// The rows of the student's shaders: GLSL beside the built-in path, then the debugger's
+/// timings on lesson 24 (`pipelens bench --shaders`), `frames` runs each.
+///
+/// # Errors
+/// When a shader does not compile or a frame cannot be drawn.
+pub fn shader_rows(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()> {
+    shaders::rows(frames, out)?;
+    debugger::rows(frames, out)
 }
 
 /// The memory of a full capture of the lit, textured scene at 1920×1080 with 4 samples:

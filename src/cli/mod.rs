@@ -170,7 +170,9 @@ pub enum Command {
         /// of `lessons/`, and the six-step teapot lesson when the data has the teapot).
         #[arg(long)]
         handouts: bool,
-        /// Instead: only the rows of the student's shaders (GLSL beside the built-in path).
+        /// Instead: only the rows of the student's shaders (GLSL beside the built-in path) and
+        /// of the shader debugger (a keystroke to the picture, a click to its trace, a watch,
+        /// a variable's picture, on lesson 24).
         #[arg(long, conflicts_with = "handouts")]
         shaders: bool,
         /// Instead: each step of a built-in lesson (its file name without `.toml`, as
