@@ -150,13 +150,17 @@ pub fn card_size(shape: Shape, over: Rect, aspect: f32) -> (f32, f32, f32) {
             over.height() * 0.55,
         ),
         Shape::Band => (most, 0.0, over.height() * 0.4),
-        Shape::Column => (
-            (over.width() - over.height() * aspect)
-                .clamp(320.0, over.width() * 0.45)
-                .min(most),
-            tall,
-            tall,
-        ),
+        Shape::Column => {
+            // In a narrow view (panels open beside it) 45 % is under 320 points: then 45 %.
+            let widest = over.width() * 0.45;
+            (
+                (over.width() - over.height() * aspect)
+                    .clamp(320.0_f32.min(widest), widest)
+                    .min(most),
+                tall,
+                tall,
+            )
+        }
     }
 }
 
@@ -317,6 +321,14 @@ mod tests {
 
     fn rect(x0: f32, y0: f32, x1: f32, y1: f32) -> Rect {
         Rect::from_min_max(pos2(x0, y0), pos2(x1, y1))
+    }
+
+    /// A view 600 points wide (the shader panel, the inspector and the editor open beside it):
+    /// a column is 45 % of it, 270 points, not the usual 320 — and nothing panics.
+    #[test]
+    fn a_column_in_a_narrow_view_is_45_percent_of_it() {
+        let (w, _, _) = card_size(Shape::Column, rect(0.0, 0.0, 600.0, 400.0), 4.0 / 3.0);
+        assert_eq!(w, 270.0);
     }
 
     #[test]
