@@ -124,4 +124,6 @@ pub enum SelectionCommand {
     SetProfile(Option<[f32; 4]>),
     /// Watch a fragment-shader expression after a line over the frame (or stop).
     SetWatch(Option<(usize, String)>),
+    /// Turn the debugger's cost view on or off.
+    SetCost(bool),
 }

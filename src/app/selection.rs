@@ -38,6 +38,9 @@ pub struct Selection {
     /// The fragment shader's expression watched over the frame, and the line after which it
     /// is read (the debugger's variable picture; `Scene::watching`).
     pub watch: Option<(usize, String)>,
+    /// Whether the debugger's cost view is on: the steps the fragment shader ran at each pixel
+    /// (`Capture::cost`).
+    pub cost: bool,
 }
 
 /// How the depth buffer is drawn: window depth or eye distance, over a range.
@@ -66,6 +69,7 @@ impl Default for Selection {
             depth_view: DepthView::default(),
             focus: None,
             watch: None,
+            cost: false,
         }
     }
 }

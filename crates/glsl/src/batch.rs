@@ -106,6 +106,9 @@ pub struct Ran<'m> {
     privates: &'m [u32],
     /// The lanes that were discarded.
     pub killed: u64,
+    /// Each lane's steps of the student's code, when the machine counts them
+    /// (`Machine::count_cost`).
+    cost: Option<[u32; LANES]>,
 }
 
 impl Ran<'_> {
@@ -140,6 +143,12 @@ impl Ran<'_> {
         places.read(self.privates, lane)
     }
 
+    /// The steps of the student's code lane `lane` ran, when the machine counts them.
+    #[must_use]
+    pub fn cost(&self, lane: usize) -> Option<u32> {
+        self.cost.map(|c| c[lane])
+    }
+
     /// Whether lane `lane` was discarded.
     #[must_use]
     pub fn discarded(&self, lane: usize) -> bool {
@@ -164,6 +173,7 @@ impl Machine<'_> {
             result: self.result(),
             privates: &self.privates,
             killed,
+            cost: self.cost,
         })
     }
 }
@@ -202,5 +212,41 @@ mod tests {
         }
         let e = machine.run_batch(&batch, &()).expect_err("a[3]");
         assert_eq!(program.run_error(&e).line, 9);
+    }
+
+    /// Each lane's cost is the length of its own trace: the counter and the recorder agree lane
+    /// by lane, over lanes that loop 0, 1, 2 and 5 times and take either branch. By hand, a lane
+    /// with k iterations runs `s = 0` (1), the loop (k iterations, each with its test, `s += 1`
+    /// and `i++`, and the last test that leaves), the `if` (1), one write in its branch (1) and
+    /// `color = …` (1).
+    #[test]
+    fn each_lanes_cost_is_the_length_of_its_own_trace() {
+        let src = "#version 330 core\nin float x;\nout vec4 color;\nvoid main() {\n    float s = 0.0;\n    for (int i = 0; i < int(x); i++) {\n        s += 1.0;\n    }\n    float t;\n    if (s > 1.5) {\n        t = 1.0;\n    } else {\n        t = 0.0;\n    }\n    color = vec4(s, t, 0.0, 1.0);\n}\n";
+        let program = compile(Stage::Fragment, src).expect("compiles");
+        let mut machine = program.machine();
+        let mut batch = Batch::new(&program);
+        batch.start(4);
+        for (l, x) in [0.0f32, 1.0, 2.0, 5.0].into_iter().enumerate() {
+            batch.set(0, l, &[x]);
+        }
+        machine.count_cost(true);
+        machine.run_batch(&batch, &()).expect("runs");
+        let costs: Vec<u32> = (0..4).map(|l| machine.cost(l).expect("counting")).collect();
+        for (l, cost) in costs.iter().enumerate() {
+            machine.trace_lane(Some(l));
+            machine.run_batch(&batch, &()).expect("runs");
+            let events = machine.take_trace();
+            assert_eq!(
+                *cost as usize,
+                program.describe(&events).len(),
+                "lane {l}: {:#?}",
+                program.describe(&events)
+            );
+        }
+        // More iterations, more steps: each one adds the same few.
+        assert!(costs[0] < costs[1] && costs[1] < costs[2] && costs[2] < costs[3]);
+        assert_eq!(costs[3] - costs[2], 3 * (costs[2] - costs[1]));
+        machine.count_cost(false);
+        assert_eq!(machine.cost(0), None);
     }
 }

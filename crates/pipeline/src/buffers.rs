@@ -185,6 +185,9 @@ pub struct Capture {
     /// other pixel takes): the inspected pixel, whose explanation derives its colour from its
     /// own records and must land on it.
     pub pixel: Option<(u32, u32)>,
+    /// Keep, at each pixel, the steps the student's fragment shader ran there (of the
+    /// fragment covering the most of its samples): the debugger's cost view.
+    pub cost: bool,
 }
 
 impl Capture {
@@ -193,12 +196,14 @@ impl Capture {
         lighting: true,
         texturing: true,
         pixel: None,
+        cost: false,
     };
     /// The colour, coverage, depth and owner only.
     pub const COLOR: Self = Self {
         lighting: false,
         texturing: false,
         pixel: None,
+        cost: false,
     };
 
     /// What showing `kinds` needs.
@@ -217,13 +222,16 @@ impl Capture {
         Self { pixel: at, ..self }
     }
 
-    /// Whether this selection keeps everything `other` keeps: its buffers, and its pixel's
-    /// terms (kept by every buffer or by the same pixel).
+    /// Whether this selection keeps everything `other` keeps: its buffers, the cost view, and
+    /// its pixel's terms (kept by every buffer or by the same pixel).
     #[must_use]
     pub fn covers(self, other: Self) -> bool {
         let pixel =
             other.pixel.is_none() || self.pixel == other.pixel || (self.lighting && self.texturing);
-        (self.lighting || !other.lighting) && (self.texturing || !other.texturing) && pixel
+        (self.lighting || !other.lighting)
+            && (self.texturing || !other.texturing)
+            && (self.cost || !other.cost)
+            && pixel
     }
 
     /// Whether `kind` is kept.

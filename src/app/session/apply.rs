@@ -166,6 +166,7 @@ impl Session {
             SelectionCommand::SelectVertex(v) => sel.vertex = v,
             SelectionCommand::SelectPixel(p) => sel.pixel = p,
             SelectionCommand::SetProfile(p) => sel.profile = p,
+            SelectionCommand::SetCost(on) => sel.cost = on,
             SelectionCommand::SetWatch(w) => {
                 sel.watch = w;
                 // A new watch (or none): why the last one was dropped no longer stands.

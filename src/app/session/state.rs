@@ -265,11 +265,15 @@ impl Session {
     pub fn capture_needed(&self) -> Capture {
         let shown = Capture::showing([self.selection.buffer]);
         let shaders = self.spec.scene.has_shaders();
-        match self.selection.pixel {
+        let needed = match self.selection.pixel {
             Some(_) if self.drafting => shown.with_pixel(self.selection.pixel),
             Some(_) if shaders => Capture::FULL.with_pixel(self.selection.pixel),
             Some(_) => Capture::FULL,
             None => shown,
+        };
+        Capture {
+            cost: self.selection.cost && shaders,
+            ..needed
         }
     }
 

@@ -34,6 +34,8 @@ pub struct Debugger {
     pub watch: super::watch_picture::WatchPanel,
     /// The watch list: expressions read at the step.
     pub list: super::watch_list::WatchList,
+    /// The cost view's picture.
+    pub cost: super::watch_picture::WatchPanel,
     /// A line whose last step to show once the run of the pixel just inspected arrives (a
     /// condition's first pixel).
     pub show_line: Option<usize>,
@@ -432,6 +434,7 @@ pub fn panel(
     if stage == Stage::Fragment && session.spec.scene.has_shaders() {
         let asked = super::watch_picture::ui(ui, &mut debugger.watch, session, step_line);
         command = command.or(asked.command);
+        command = command.or(super::watch_picture::cost(ui, &mut debugger.cost, session));
         let (found, show_line) = super::breakpoints::found(&mut debugger.breakpoints, session);
         command = command.or(found);
         if let Some(line) = asked.show_line.or(show_line) {

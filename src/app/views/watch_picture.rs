@@ -117,6 +117,39 @@ pub fn ui(
     asked
 }
 
+/// The cost view's row: a checkbox, and when it is on the picture of the steps the fragment
+/// shader ran at each pixel (`ShaderRecord::cost`: loops and branches show as brighter areas),
+/// its legend and hover, a click inspecting the pixel.
+pub fn cost(ui: &mut Ui, panel: &mut WatchPanel, session: &Session) -> Option<Command> {
+    let lang = session.lang;
+    let mut on = session.selection.cost;
+    let mut asked = Asked::default();
+    if ui
+        .checkbox(
+            &mut on,
+            RichText::new(lang.tr("Cost: the steps each fragment ran", "开销：每个片元执行的步数")).strong(),
+        )
+        .on_hover_text(lang.tr(
+            "At each pixel, how many steps of your fragment shader its fragment ran (the steps the debugger steps through: writes, branches, loop tests and iterations, calls, returns): a loop that runs longer or a branch with more work shows brighter. Dark blue the fewest, yellow the most.",
+            "每个像素上，它的片元执行了片元着色器的多少步（调试器逐步执行的那些步：赋值、分支、循环判断与迭代、调用、返回）：循环次数多或分支工作多的地方更亮。深蓝最少，黄色最多。",
+        ))
+        .changed()
+    {
+        asked.command = Some(Command::Selection(SelectionCommand::SetCost(on)));
+    }
+    let picture = session.capture.as_ref().and_then(|c| {
+        c.shaders
+            .as_ref()
+            .and_then(|r| r.cost.as_ref())
+            .map(|w| (c, w))
+    });
+    if let Some((capture, picture)) = picture.filter(|_| on) {
+        let key = (std::sync::Arc::as_ptr(capture) as usize, WatchView::Value);
+        shown(ui, panel, picture, key, lang, &mut asked);
+    }
+    asked.command
+}
+
 /// Checks the watch against the scene (it compiles there) and asks for it.
 fn show(panel: &mut WatchPanel, session: &Session) -> Option<Command> {
     let lang = session.lang;
@@ -179,8 +212,13 @@ fn shown(
     let local = (pos - response.rect.min) / scale;
     let (x, row) = (local.x.floor() as u32, local.y.floor() as u32);
     let y = picture.height().saturating_sub(row + 1);
+    let cost = picture.line == 0;
     let said = match picture.at(x, y) {
+        Some(v) if cost => format!("{} {}", num(v[0]), lang.tr("steps", "步")),
         Some(v) => value_words(kind, v),
+        None if cost => lang
+            .tr("no fragment of yours here", "这里没有你的片元")
+            .to_owned(),
         None => lang
             .tr("the line did not run here", "这里没有执行该行")
             .to_owned(),

@@ -507,3 +507,34 @@ void main() {
         .pixel[0];
     assert_eq!(frag.output, Some([0.26, 0.26, 0.26, 1.0]));
 }
+
+/// The cost view: ticked, the frame is drawn again keeping each pixel's steps, and at the
+/// inspected pixel the picture says as many steps as that fragment's run lists (the test's
+/// shader runs the same steps everywhere but for its loop, which runs twice at every pixel).
+#[test]
+fn the_cost_view_shows_each_pixels_steps() {
+    let mut h = drawing_the_tests_shader();
+    h.state_mut()
+        .session
+        .apply(Command::Selection(SelectionCommand::SelectPixel(Some((
+            240, 180,
+        )))));
+    h.run_steps(6);
+    h.get_by_label("Cost: the steps each fragment ran").click();
+    h.run_steps(8);
+    let app = h.state();
+    assert!(app.session.selection.cost);
+    let record = app
+        .session
+        .capture
+        .as_ref()
+        .expect("a frame")
+        .shaders
+        .as_ref()
+        .expect("shaders");
+    let cost = record.cost.as_ref().expect("the frame kept the cost view");
+    let steps = cost.at(240, 180).expect("the sphere is there")[0];
+    assert_eq!(steps as usize, record.pixel[0].trace.len());
+    // The same number everywhere on the sphere: the run does not depend on the pixel.
+    assert_eq!(cost.at(250, 170).map(|v| v[0]), Some(steps));
+}

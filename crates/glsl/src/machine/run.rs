@@ -47,6 +47,9 @@ pub struct Machine<'c> {
     pub budget: u32,
     pub(super) killed: u64,
     pub(super) trace: Option<(usize, Vec<Event>)>,
+    /// When counting: each lane's steps of the student's code in the last run, the steps its
+    /// trace would list (a write, a branch, a loop's test or iteration, a call, a return …).
+    pub(crate) cost: Option<[u32; LANES]>,
     /// Whether the registers of the values no invocation changes hold them: each function's
     /// constants (its `pre`) and its loads of a uniform at a fixed place. They are evaluated
     /// over every lane once, at the first run after the uniforms are set, not at every run.
@@ -79,6 +82,7 @@ impl<'c> Machine<'c> {
             budget: DEFAULT_MAX_STEPS,
             killed: 0,
             trace: None,
+            cost: None,
             invariants_ready: false,
         }
     }
@@ -93,6 +97,17 @@ impl<'c> Machine<'c> {
     /// Records what lane `lane` does in the next run.
     pub fn trace_lane(&mut self, lane: Option<usize>) {
         self.trace = lane.map(|l| (l, Vec::new()));
+    }
+
+    /// Counts each lane's steps of the student's code from the next run on (`on`), or stops.
+    pub fn count_cost(&mut self, on: bool) {
+        self.cost = on.then_some([0; LANES]);
+    }
+
+    /// The steps lane `lane` ran in the last run, when counting ([`Self::count_cost`]).
+    #[must_use]
+    pub fn cost(&self, lane: usize) -> Option<u32> {
+        self.cost.map(|c| c[lane])
     }
 
     /// The events of the traced lane's last run.
@@ -119,6 +134,9 @@ impl<'c> Machine<'c> {
     ) -> Res<u64> {
         self.n = n.min(LANES);
         self.steps = [0; LANES];
+        if let Some(c) = self.cost.as_mut() {
+            *c = [0; LANES];
+        }
         self.killed = 0;
         let code = self.code;
         for (at, v) in &code.private_init {
@@ -190,6 +208,27 @@ impl<'c> Machine<'c> {
     /// student's (the entry point naga wraps around `main` copies inputs and outputs only; a
     /// built-in pipelens wrote in GLSL is not the student's either).
     pub(super) fn event(&mut self, fi: usize, mask: u64, e: impl FnOnce(&Self, usize) -> Event) {
+        self.counted(fi, mask);
+        self.record(fi, mask, e);
+    }
+
+    /// One step more for each lane of `mask`, when counting and function `fi` is the student's.
+    pub(super) fn counted(&mut self, fi: usize, mask: u64) {
+        if self.cost.is_none()
+            || fi + 1 == self.code.functions.len()
+            || self.code.functions[fi].builtin
+        {
+            return;
+        }
+        if let Some(c) = self.cost.as_mut() {
+            for (l, k) in c.iter_mut().enumerate().take(self.n) {
+                *k += u32::from(mask & bit(l) != 0);
+            }
+        }
+    }
+
+    /// [`Self::event`] without counting it (a watch's store, which the student did not write).
+    pub(super) fn record(&mut self, fi: usize, mask: u64, e: impl FnOnce(&Self, usize) -> Event) {
         if fi + 1 == self.code.functions.len() || self.code.functions[fi].builtin {
             return;
         }

@@ -58,9 +58,12 @@ impl Machine<'_> {
                 Stmt::Store { at, place, value } => {
                     self.store(fi, place, *value, mask, run.live)?;
                     // naga's own temporaries (a `?:`'s result) have no name: the student's
-                    // variables do.
+                    // variables do. A watch's store is not a step of theirs.
+                    if !place.name.is_empty() && place.name != crate::watched::WATCH {
+                        self.counted(fi, mask);
+                    }
                     if self.traced(mask) && !place.name.is_empty() {
-                        self.event(fi, mask, |m, l| Event::Assign {
+                        self.record(fi, mask, |m, l| Event::Assign {
                             at: *at,
                             name: place.name.clone(),
                             ty: place.ty,

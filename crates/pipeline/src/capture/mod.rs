@@ -236,6 +236,10 @@ pub struct ShaderRecord {
     /// (`Scene::watching`); written apart from `capture.json` (`pipelens export --watch`).
     #[serde(skip)]
     pub watch: Option<WatchPicture>,
+    /// The cost view (`Capture::cost`): at each pixel the steps of the student's fragment shader
+    /// the fragment covering the most of its samples ran (`line` 0, an `int` per pixel).
+    #[serde(skip)]
+    pub cost: Option<WatchPicture>,
 }
 
 /// One fragment of the inspected pixel through the fragment shader: what it received, what

@@ -76,7 +76,8 @@ fn a_colour_only_capture_has_the_same_picture_without_the_term_buffers() {
         Capture {
             lighting: true,
             texturing: false,
-            pixel: None
+            pixel: None,
+            cost: false,
         }
     );
     assert!(b.buffers().contains(&BufferKind::BaryAffine));

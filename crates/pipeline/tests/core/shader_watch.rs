@@ -112,3 +112,52 @@ fn a_condition_is_a_mask_and_a_bad_watch_says_why() {
         Err(WatchError::NoShader)
     ));
 }
+
+/// The cost view: each pixel's steps of the fragment shader. A pixel loops `x mod 4` times
+/// (x its window column), so along a row inside the sphere the cost climbs by the same amount
+/// per iteration; at the inspected pixel it is the length of that fragment's own trace.
+#[test]
+fn the_cost_view_counts_each_pixels_steps_as_its_trace_does() {
+    const LOOPING: &str = "#version 330 core
+in vec3 w_nrm;
+out vec4 color;
+void main() {
+    float s = 0.0;
+    for (int i = 0; i < int(gl_FragCoord.x) % 4; i++) {
+        s += 0.25;
+    }
+    color = vec4(normalize(w_nrm) * 0.5 + 0.5, 1.0) * (0.5 + 0.5 * s);
+}
+";
+    let mut s = settings();
+    s.samples = Samples::X1;
+    s.capture.cost = true;
+    s.capture.pixel = Some((80, 60));
+    let scene = with_shaders(sphere_scene(false), None, Some(LOOPING));
+    let f = render(&scene, &s);
+    let record = f.shaders.as_ref().expect("a record");
+    let cost = record.cost.as_ref().expect("the cost view");
+    let at = |x: u32, y: u32| cost.at(x, y).map(|v| v[0] as u32);
+    let traced = &record.pixel[0];
+    assert_eq!(at(80, 60), Some(traced.trace.len() as u32));
+    // Columns 80 to 83 of row 60: 0, 1, 2 and 3 iterations.
+    let row: Vec<u32> = (80..84)
+        .map(|x| at(x, 60).expect("on the sphere"))
+        .collect();
+    let per_iteration = row[1] - row[0];
+    assert!(per_iteration > 0);
+    assert_eq!(
+        row,
+        [
+            row[0],
+            row[0] + per_iteration,
+            row[0] + 2 * per_iteration,
+            row[0] + 3 * per_iteration
+        ]
+    );
+    // Outside the sphere nothing ran.
+    assert_eq!(at(0, 0), None);
+    // Not asked for, not kept.
+    s.capture.cost = false;
+    assert!(render(&scene, &s).shaders.expect("a record").cost.is_none());
+}

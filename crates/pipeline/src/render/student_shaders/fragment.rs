@@ -36,6 +36,9 @@ pub(in crate::render) struct FragmentCounts {
     /// What a watch saw (`crate::shader::probe`): image pixel, and the value of the fragment
     /// that covers the most of its samples.
     pub(in crate::render) watch: Vec<(usize, Watched)>,
+    /// The steps the fragment shader ran (the cost view, `Capture::cost`): image pixel, and
+    /// the steps of the fragment that covers the most of its samples.
+    pub(in crate::render) cost: Vec<(usize, u32)>,
 }
 
 impl std::ops::Add for FragmentCounts {
@@ -44,6 +47,7 @@ impl std::ops::Add for FragmentCounts {
         self.pixel.extend(o.pixel);
         self.discards.extend(o.discards);
         self.watch.extend(o.watch);
+        self.cost.extend(o.cost);
         Self {
             fragments: self.fragments + o.fragments,
             discarded: self.discarded + o.discarded,
@@ -51,6 +55,7 @@ impl std::ops::Add for FragmentCounts {
             pixel: self.pixel,
             discards: self.discards,
             watch: self.watch,
+            cost: self.cost,
         }
     }
 }
@@ -105,6 +110,31 @@ struct Sums {
     acc: Vec<Vec3>,
     shaded: Vec<u8>,
     watch: Option<Vec<(u8, Option<Watched>)>>,
+    /// The cost view's steps, as `watch`.
+    cost: Option<Vec<(u8, u32)>>,
+}
+
+impl Sums {
+    /// What the pictures keep of this row pair (the cost view, a watch), as image pixels from
+    /// `first` on, into `counts`.
+    fn pictured(self, first: usize, counts: &mut FragmentCounts) {
+        if let Some(cost) = self.cost {
+            counts.cost.extend(
+                cost.into_iter()
+                    .enumerate()
+                    .filter(|(_, (k, _))| *k > 0)
+                    .map(|(i, (_, steps))| (first + i, steps)),
+            );
+        }
+        if let Some(watch) = self.watch {
+            counts.watch.extend(
+                watch
+                    .into_iter()
+                    .enumerate()
+                    .filter_map(|(i, (_, w))| Some((first + i, w?))),
+            );
+        }
+    }
 }
 
 struct FragmentShading<'a> {
@@ -146,6 +176,12 @@ impl FragmentShading<'_> {
             acc: vec![Vec3::ZERO; rows.len()],
             shaded: vec![0u8; rows.len()],
             watch: watching.then(|| vec![(0, None); rows.len()]),
+            cost: self
+                .ctx
+                .settings
+                .capture
+                .cost
+                .then(|| vec![(0, 0); rows.len()]),
         };
         let mut counts = FragmentCounts::default();
         let mut batch: Vec<QuadJob> = Vec::with_capacity(LANES / 4);
@@ -225,14 +261,7 @@ impl FragmentShading<'_> {
                 *c = (Vec3::from(*c) + *a / s as f32).to_array();
             }
         }
-        if let Some(watch) = sums.watch {
-            counts.watch.extend(
-                watch
-                    .into_iter()
-                    .enumerate()
-                    .filter_map(|(i, (_, w))| Some((first + i, w?))),
-            );
-        }
+        sums.pictured(first, &mut counts);
         Ok(counts)
     }
 
@@ -258,6 +287,7 @@ impl FragmentShading<'_> {
         let m = machines[object].get_or_insert_with(|| {
             let mut m = fs.machine();
             m.budget = ctx.settings.max_steps;
+            m.count_cost(ctx.settings.capture.cost);
             if let Some(u) = &self.uniforms[object] {
                 fs.set_uniforms(&mut m, u);
             }
@@ -291,6 +321,12 @@ impl FragmentShading<'_> {
                 else {
                     continue;
                 };
+                if let (Some(cost), Some(steps)) = (sums.cost.as_mut(), ran.cost(l))
+                    && k > cost[i].0
+                {
+                    // What was run for the pixel, whether or not it was then discarded.
+                    cost[i] = (k, steps);
+                }
                 let color = if ran.discarded(l) {
                     counts.discarded += 1;
                     let (px, py) = (i64::from(job.x) + (j % 2) as i64, y + (j / 2) as i64);

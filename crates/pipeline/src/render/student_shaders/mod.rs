@@ -56,6 +56,19 @@ pub(in crate::render) fn record(
     let mut pixel = peeled.traces;
     pixel.extend(counts.pixel);
     let watch = watch_picture(ctx, counts.watch, color.len());
+    let cost = ctx.settings.capture.cost.then(|| {
+        let mut values = vec![None; color.len()];
+        for (i, steps) in counts.cost {
+            values[i] = Some([steps as f32, 0.0, 0.0, 0.0]);
+        }
+        WatchPicture {
+            line: 0,
+            expression: "steps run".to_owned(),
+            kind: Some(shader::probe::WatchKind::Int),
+            values,
+            width: ctx.settings.width,
+        }
+    });
     Ok(Some(ShaderRecord {
         vertex_results: results,
         fragments: counts.fragments,
@@ -63,6 +76,7 @@ pub(in crate::render) fn record(
         not_finite: counts.not_finite,
         pixel,
         watch,
+        cost,
     }))
 }
 
