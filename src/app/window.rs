@@ -179,7 +179,7 @@ impl PipelensApp {
         self.picture.clear();
         self.subject.clear();
         let compact = self.bar(ui);
-        self.open_for_step(compact);
+        self.open_for_step(ui.ctx(), compact);
         self.keys_help(ui.ctx());
         // Presenting, the status line shows only to say what went wrong.
         if !self.presenting() || self.session.error.is_some() {
@@ -292,9 +292,9 @@ impl PipelensApp {
 
     /// On entering a step, the panels it needs: a step that draws a variable over the frame
     /// or names its shader lines opens the shader panel on the fragment shader's tab (the lines
-    /// scrolled to), and a step's `panels` are opened. Not in a small window, where a panel
-    /// covers the picture.
-    fn open_for_step(&mut self, compact: bool) {
+    /// scrolled to), and a step's `panels` are opened (the inspector where there is room). Not
+    /// in a small window, where a panel covers the picture.
+    fn open_for_step(&mut self, ctx: &egui::Context, compact: bool) {
         if self.step_opened == self.session.step_entered {
             return;
         }
@@ -312,10 +312,19 @@ impl PipelensApp {
         self.shader_editor.debugger.lines = lines.map(|l| (l, true));
         for p in panels {
             match p {
-                crate::lesson::script::StepPanel::Inspector => self.panels.inspector = true,
+                crate::lesson::script::StepPanel::Inspector => {
+                    self.panels.inspector |= self.room_for_inspector(ctx);
+                }
                 crate::lesson::script::StepPanel::Shader => self.panels.shader = true,
             }
         }
+    }
+
+    /// Whether the inspector can open beside what is open without crushing the picture: the
+    /// shader panel and the inspector together need a wide window (a 1366-point projector
+    /// keeps the picture and the code; the inspector then opens when asked, with I).
+    fn room_for_inspector(&self, ctx: &egui::Context) -> bool {
+        !self.panels.shader || ctx.content_rect().width() >= 1600.0
     }
 
     /// What the narration (the card, or a small window's sheet) asked for.
@@ -411,14 +420,16 @@ impl PipelensApp {
             } else {
                 let c = self.pixel_view.ui(ui, &self.session, capture);
                 // A pixel clicked is a pixel to read: the inspector opens with its derivation
-                // (not in a small window, where it would cover the picture).
+                // (not in a small window, where it would cover the picture, nor beside the
+                // shader panel in a narrow one).
                 let picked = c.iter().any(|c| {
                     matches!(
                         c,
                         Command::Selection(SelectionCommand::SelectPixel(Some(_)))
                     )
                 });
-                if picked && !window_size::is_compact(ui.ctx()) {
+                if picked && !window_size::is_compact(ui.ctx()) && self.room_for_inspector(ui.ctx())
+                {
                     self.panels.inspector = true;
                 }
                 self.commands.extend(c);

@@ -38,7 +38,7 @@ fn the_shader_lesson_runs_each_edit_and_traces_its_pixel() {
     assert!(source(1).contains("float p = 8.0;"));
     assert!(source(2).contains("reflect(-l, n)"));
     assert!(source(3).contains("rim"));
-    assert!(source(4).contains("floor(d * 4.0)"));
+    assert!(source(4).contains("floor(d * bands) / bands"));
     assert!(source(5).contains("discard"));
     let key = |c: &[f32; 3]| c.map(|v| (v * 255.0).round() as i32);
     let colours = |k: usize| {

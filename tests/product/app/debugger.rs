@@ -387,7 +387,7 @@ fn a_pixel_click_picks_the_pixel_only_and_opens_the_inspector() {
 
 /// The toon step asks the student to read a band in the inspector and is about the lines that
 /// make the bands: entering it opens the inspector and the shader panel on the fragment shader,
-/// its lines 15–17 (d, the band, the colour — counted in the lesson's source) marked.
+/// its lines 16–18 (d, the band, the colour — counted in the lesson's source) marked.
 #[test]
 fn a_step_opens_the_panels_it_speaks_of_on_its_lines() {
     let path = crate::support::repo().join("lessons/24-shader-programs.toml");
@@ -403,13 +403,13 @@ fn a_step_opens_the_panels_it_speaks_of_on_its_lines() {
     );
     assert_eq!(
         app.shader_editor.debugger.lines,
-        Some(((15, 17), false)),
+        Some(((16, 18), false)),
         "marked, and scrolled to once"
     );
     let lines: Vec<&str> = app.shader_editor.fragment.lines().collect();
-    assert!(lines[14].contains("float d = max(dot(n, l), 0.0);"));
-    assert!(lines[15].contains("float band = floor(d * 4.0) / 4.0;"));
-    assert!(lines[16].contains("vec3 c = v_color * (0.2 + 0.8 * band);"));
+    assert!(lines[15].contains("float d = max(dot(n, l), 0.0);"));
+    assert!(lines[16].contains("float band = floor(d * bands) / bands;"));
+    assert!(lines[17].contains("vec3 c = v_color * (0.2 + 0.8 * band);"));
 }
 
 /// A watch that the code, edited under it, no longer compiles is dropped with the reason; the
