@@ -103,6 +103,10 @@ pub fn step_picture(
         if let Some(note) = crate::vocabulary::gain_note(buffer, gain, lang) {
             bottom_note(&mut img, &note);
         }
+        let img = match watched(r.capture, zoom_for(w), lang) {
+            Some(w) => beside(&img, &w),
+            None => img,
+        };
         match (step.layout, observer()) {
             (Layout::Observer, Some(o)) => beside(&img, &o),
             _ => img,
@@ -125,17 +129,75 @@ pub fn step_picture(
     Ok(above(&picture, &chart))
 }
 
+/// The variable picture a frame drawn with a watch kept (`ShaderRecord::watch`), magnified `z`
+/// times as the buffer beside it is, its expression and line written at its top.
+fn watched(capture: &FrameCapture, z: u32, lang: Lang) -> Option<RgbaImage> {
+    let picture = capture.shaders.as_ref()?.watch.as_ref()?;
+    let drawn = picture.drawn(pipeline::capture::WatchView::Value);
+    let mut img = image::imageops::resize(
+        &drawn.image,
+        drawn.image.width() * z,
+        drawn.image.height() * z,
+        image::imageops::FilterType::Nearest,
+    );
+    let title = match lang {
+        Lang::En => format!("{} after line {}", picture.expression, picture.line),
+        Lang::Zh => format!("第 {} 行之后的 {}", picture.line, picture.expression),
+    };
+    let middle = img.width() as f32 / 2.0;
+    centred_label(&mut img, middle, 18.0, &title);
+    Some(img)
+}
+
 /// The legend of step `k`'s drawings that its picture leaves to the page or slide around it
 /// (drawn there at their own size, clear of the subject): the lighting vectors' names, when
-/// the step's inspected pixel draws them.
+/// the step's inspected pixel draws them; the variable picture's colours, when it draws one.
 #[must_use]
 pub fn legend(lesson: &Lesson, k: usize, capture: &FrameCapture, lang: Lang) -> Vec<String> {
     let (w, h) = (capture.width(), capture.height());
-    lesson.steps[k]
+    let mut lines: Vec<String> = lesson.steps[k]
         .pixel
         .filter(|&(x, y)| x < w && y < h && !capture.lighting_arrows(x, y).is_empty())
         .map(|_| lighting_legend(lang).map(str::to_owned).to_vec())
-        .unwrap_or_default()
+        .unwrap_or_default();
+    if let Some(picture) = capture.shaders.as_ref().and_then(|s| s.watch.as_ref()) {
+        lines.push(watch_legend(picture, lang));
+    }
+    lines
+}
+
+/// What the variable picture's colours stand for, in words.
+fn watch_legend(picture: &pipeline::capture::WatchPicture, lang: Lang) -> String {
+    use pipeline::shader::probe::WatchKind;
+    let range = picture.range(0);
+    let said = match (picture.kind, range, lang) {
+        (Some(WatchKind::Bool), _, Lang::En) => {
+            "yellow where it holds, dark blue where not".to_owned()
+        }
+        (Some(WatchKind::Bool), _, Lang::Zh) => "成立处为黄色，不成立处为深蓝色".to_owned(),
+        (Some(WatchKind::Float | WatchKind::Int), Some((lo, hi)), Lang::En) => format!(
+            "dark blue {} to yellow {}",
+            crate::vocabulary::num(lo),
+            crate::vocabulary::num(hi)
+        ),
+        (Some(WatchKind::Float | WatchKind::Int), Some((lo, hi)), Lang::Zh) => format!(
+            "深蓝 {} 到黄色 {}",
+            crate::vocabulary::num(lo),
+            crate::vocabulary::num(hi)
+        ),
+        (_, _, Lang::En) => "the vector as a colour".to_owned(),
+        (_, _, Lang::Zh) => "向量显示为颜色".to_owned(),
+    };
+    match lang {
+        Lang::En => format!(
+            "{} after line {}: {said}; grey checks where no fragment ran the line",
+            picture.expression, picture.line
+        ),
+        Lang::Zh => format!(
+            "第 {} 行之后的 {}：{said}；灰色棋盘格处没有片元执行该行",
+            picture.line, picture.expression
+        ),
+    }
 }
 
 /// The size of a geometry stage's picture.

@@ -225,14 +225,21 @@ fn object_param(o: &pipeline::scene::Object, p: &str) -> Option<Value> {
 
 /// The parameters whose values differ between `base` (the lesson's scene) and `now`, with
 /// their values in `now`, in [`super::names`]' order: what a step recorded from `now` sets.
-/// Numbers equal to a part in a million count as equal (a slider's float noise).
+/// Numbers equal to a part in a million count as equal (a slider's float noise). A uniform of
+/// the shaders' own that `base` does not have is left out (it comes with the shader).
 #[must_use]
 pub fn differences(base: &SceneSpec, now: &SceneSpec) -> Vec<(String, Value)> {
     super::names(now)
         .into_iter()
         .filter_map(|name| {
             let v = get(now, &name)?;
-            let same = get(base, &name).is_some_and(|b| close(&b, &v));
+            let was = get(base, &name);
+            // A uniform of a shader `base` does not run comes with that shader, its value
+            // from its comment: not something `set` could change on `base`.
+            if was.is_none() && name.starts_with("uniforms.") {
+                return None;
+            }
+            let same = was.is_some_and(|b| close(&b, &v));
             (!same).then_some((name, v))
         })
         .collect()
