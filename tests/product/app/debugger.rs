@@ -61,16 +61,22 @@ fn drawing_the_tests_shader() -> egui_kittest::Harness<'static, pipelens::app::P
     h
 }
 
-#[test]
-fn the_debugger_steps_through_the_inspected_fragments_run() {
+/// [`drawing_the_tests_shader`] with the frame's middle pixel inspected (the middle of the
+/// 480 × 360 frame is on the sphere).
+fn inspecting_the_centre() -> egui_kittest::Harness<'static, pipelens::app::PipelensApp> {
     let mut h = drawing_the_tests_shader();
-    // The middle of the 480 × 360 frame is on the sphere.
     h.state_mut()
         .session
         .apply(Command::Selection(SelectionCommand::SelectPixel(Some((
             240, 180,
         )))));
     h.run_steps(6);
+    h
+}
+
+#[test]
+fn the_debugger_steps_through_the_inspected_fragments_run() {
+    let mut h = inspecting_the_centre();
     assert!(
         h.query_by_label_contains("steps: F10 steps through them")
             .is_some(),
@@ -163,13 +169,7 @@ fn the_debugger_steps_through_the_inspected_fragments_run() {
 /// `h` lives in `half_of`, not at line 9, and says so.
 #[test]
 fn the_watch_list_reads_each_expression_at_the_step() {
-    let mut h = drawing_the_tests_shader();
-    h.state_mut()
-        .session
-        .apply(Command::Selection(SelectionCommand::SelectPixel(Some((
-            240, 180,
-        )))));
-    h.run_steps(6);
+    let mut h = inspecting_the_centre();
     let field = || (egui::accesskit::Role::TextInput, "Add:");
     for expression in ["a * 2.0", "color", "h"] {
         h.get_by_role_and_label(field().0, field().1).focus();
@@ -513,13 +513,7 @@ void main() {
 /// shader runs the same steps everywhere but for its loop, which runs twice at every pixel).
 #[test]
 fn the_cost_view_shows_each_pixels_steps() {
-    let mut h = drawing_the_tests_shader();
-    h.state_mut()
-        .session
-        .apply(Command::Selection(SelectionCommand::SelectPixel(Some((
-            240, 180,
-        )))));
-    h.run_steps(6);
+    let mut h = inspecting_the_centre();
     h.get_by_label("Cost: the steps each fragment ran").click();
     h.run_steps(8);
     let app = h.state();
