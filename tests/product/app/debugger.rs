@@ -184,7 +184,7 @@ fn the_watch_list_reads_each_expression_at_the_step() {
         h.state().shader_editor.debugger.list.entries,
         ["a * 2.0", "color", "h"]
     );
-    // Away from the field, F10 steps: the first step is line 9.
+    // The run's first step, line 9 (set directly: the field keeps the keyboard).
     h.state_mut().shader_editor.debugger.at = Some(0);
     h.run_steps(3);
     assert_eq!(line(&h), Some(9));
