@@ -29,7 +29,9 @@ pub struct WatchList {
 /// What a reading depends on: the frame, the run followed, the line, the expressions.
 #[derive(Clone, PartialEq, Eq)]
 struct Key {
-    frame: usize,
+    /// The capture on screen: where it is and its generation (an address alone could be a
+    /// new frame's where the old one was freed).
+    frame: (usize, u64),
     stage: Stage,
     fragment: usize,
     vertex: Option<u32>,
@@ -66,7 +68,7 @@ impl WatchList {
             return Vec::new();
         };
         let key = Key {
-            frame: Arc::as_ptr(&capture) as usize,
+            frame: (Arc::as_ptr(&capture) as usize, session.shown_generation),
             stage,
             fragment,
             vertex: session.selection.vertex,
