@@ -187,7 +187,10 @@ impl PipelensApp {
                 ),
             ),
         ];
-        let roomy = ui.ctx().content_rect().width() > 1500.0 || lang == Lang::Zh;
+        // Chinese names are short enough for one row at 1366 points, but not at classroom
+        // mode's larger type: there the toggles go into a menu, and the bar keeps one row.
+        let roomy =
+            ui.ctx().content_rect().width() > 1500.0 || (lang == Lang::Zh && !self.classroom);
         if roomy {
             for (k, (on, name, tip)) in toggles.into_iter().enumerate() {
                 if k > 0 || lesson {
