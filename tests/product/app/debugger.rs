@@ -37,6 +37,21 @@ fn line(h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>) -> Option<usi
     Some(run[at].line)
 }
 
+/// The inspected pixel's first fragment in the frame on screen.
+fn first_fragment<'h>(
+    h: &'h egui_kittest::Harness<'_, pipelens::app::PipelensApp>,
+) -> &'h pipeline::capture::FragmentTrace {
+    &h.state()
+        .session
+        .capture
+        .as_ref()
+        .expect("a frame")
+        .shaders
+        .as_ref()
+        .expect("shaders")
+        .pixel[0]
+}
+
 fn press(h: &mut egui_kittest::Harness<'_, pipelens::app::PipelensApp>, m: Modifiers, key: Key) {
     h.key_press_modifiers(m, key);
     h.run_steps(2);
@@ -199,17 +214,7 @@ fn the_watch_list_reads_each_expression_at_the_step() {
     );
     // Line 11's first step: the loop has not run to its end yet.
     let first_on_11 = {
-        let app = h.state();
-        let run = &app
-            .session
-            .capture
-            .as_ref()
-            .expect("a frame")
-            .shaders
-            .as_ref()
-            .expect("shaders")
-            .pixel[0]
-            .trace;
+        let run = &first_fragment(&h).trace;
         run.iter().position(|t| t.line == 11).expect("line 11 runs")
     };
     h.state_mut().shader_editor.debugger.at = Some(first_on_11);
@@ -495,16 +500,7 @@ void main() {
             break;
         }
     }
-    let app = h.state();
-    let frag = &app
-        .session
-        .capture
-        .as_ref()
-        .expect("a frame")
-        .shaders
-        .as_ref()
-        .expect("shaders")
-        .pixel[0];
+    let frag = first_fragment(&h);
     assert_eq!(frag.output, Some([0.26, 0.26, 0.26, 1.0]));
 }
 
