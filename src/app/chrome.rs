@@ -31,23 +31,10 @@ impl PipelensApp {
                 ui.separator();
                 self.panel_toggles(ui, lang);
                 ui.separator();
-                if ui
-                    .button(lang.other().name())
-                    .on_hover_text(lang.tr("Switch the language", "切换语言"))
-                    .clicked()
-                {
-                    self.commands.push(Command::View(ViewCommand::SetLang(lang.other())));
-                }
-                if ui
-                    .selectable_label(self.classroom, lang.tr("Classroom", "课堂模式"))
-                    .on_hover_text(lang.tr(
-                        "Large type and high contrast for a projector; the picture first (C). F11: full screen, Ctrl +/−: text size, ←/→: steps or stages, Space: play.",
-                        "投影用的大字号与高对比度，画面优先（C）。F11：全屏，Ctrl +/−：字号，←/→：步骤或阶段，空格：播放。",
-                    ))
-                    .clicked()
-                {
-                    let on = !self.classroom;
-                    self.set_classroom(ui.ctx(), on);
+                // Beside a narration band (1366 points, the code open) these two are in the
+                // Show menu, and the bar keeps one row with a step's Play button.
+                if !self.band {
+                    self.language_and_classroom(ui, lang);
                 }
                 self.export_menu(ui, lang);
                 ui.toggle_value(&mut self.panels.keys, "?")
@@ -55,6 +42,29 @@ impl PipelensApp {
             });
             self.bar_messages(ui, lang);
         });
+    }
+
+    /// The language switch and the classroom toggle.
+    fn language_and_classroom(&mut self, ui: &mut egui::Ui, lang: Lang) {
+        if ui
+            .button(lang.other().name())
+            .on_hover_text(lang.tr("Switch the language", "切换语言"))
+            .clicked()
+        {
+            self.commands
+                .push(Command::View(ViewCommand::SetLang(lang.other())));
+        }
+        if ui
+            .selectable_label(self.classroom, lang.tr("Classroom", "课堂模式"))
+            .on_hover_text(lang.tr(
+                "Large type and high contrast for a projector; the picture first (C). F11: full screen, Ctrl +/−: text size, ←/→: steps or stages, Space: play.",
+                "投影用的大字号与高对比度，画面优先（C）。F11：全屏，Ctrl +/−：字号，←/→：步骤或阶段，空格：播放。",
+            ))
+            .clicked()
+        {
+            let on = !self.classroom;
+            self.set_classroom(ui.ctx(), on);
+        }
     }
 
     /// Under the bar: why the file on disk no longer loads, what an export did.
@@ -144,7 +154,9 @@ impl PipelensApp {
     /// as buttons where there is room, in a menu otherwise.
     pub(super) fn panel_toggles(&mut self, ui: &mut egui::Ui, lang: Lang) {
         let lesson = self.session.lesson.is_some();
-        let p = &mut self.panels;
+        // A copy, set back after: the menu's view controls need the app too.
+        let mut panels = self.panels;
+        let p = &mut panels;
         let toggles: [(&mut bool, &str, &str); 5] = [
             (
                 &mut p.narration,
@@ -189,8 +201,9 @@ impl PipelensApp {
         ];
         // Chinese names are short enough for one row at 1366 points, but not at classroom
         // mode's larger type: there the toggles go into a menu, and the bar keeps one row.
-        let roomy =
-            ui.ctx().content_rect().width() > 1500.0 || (lang == Lang::Zh && !self.classroom);
+        // Beside a narration band the menu also holds the stage's view controls.
+        let roomy = !self.band
+            && (ui.ctx().content_rect().width() > 1500.0 || (lang == Lang::Zh && !self.classroom));
         if roomy {
             for (k, (on, name, tip)) in toggles.into_iter().enumerate() {
                 if k > 0 || lesson {
@@ -204,8 +217,20 @@ impl PipelensApp {
                         ui.checkbox(on, name).on_hover_text(tip);
                     }
                 }
+                if self.band {
+                    ui.separator();
+                    ui.horizontal(|ui| self.language_and_classroom(ui, lang));
+                }
+                if self.band
+                    && let Some(capture) = self.session.capture.clone()
+                {
+                    ui.separator();
+                    ui.label(RichText::new(self.session.selection.stage.name(lang)).strong());
+                    self.view_controls(ui, &capture);
+                }
             });
         }
+        self.panels = panels;
     }
 
     /// The snapshot export, in a menu: the folder, the button, Cancel while it runs.

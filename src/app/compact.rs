@@ -5,6 +5,8 @@
 //! (beside it on a phone held sideways; never over it), swiped left or right for the next or
 //! previous step. The picture itself pans
 //! with a drag and zooms with a pinch (the views read egui's zoom), and a tap inspects a pixel.
+//! A desktop window narrower than 1600 points with the shader panel open runs the narration in
+//! a band across its foot, under the picture and the code both, for the same reason.
 
 use egui::{Context, RichText};
 
@@ -94,6 +96,43 @@ impl PipelensApp {
         if let Some(step) = swiped(ui.ctx(), sheet.response.rect) {
             self.commands.push(step);
         }
+    }
+
+    /// The narration in a band across the window's foot, under the picture and the shader
+    /// panel both (see `narration_in_band`): as high as its words, their type shrunk as the
+    /// card's is to fit a quarter of the window (never below the normal size); words that
+    /// still do not fit take up to a third, and scroll beyond.
+    pub(super) fn narration_band(&mut self, ui: &mut egui::Ui) {
+        let ctx = ui.ctx().clone();
+        let fit = ctx.content_rect().height() / 4.0;
+        let most = ctx.content_rect().height() / 3.0;
+        // As high as its words were last frame (a panel keeps the size it was given).
+        let words_id = egui::Id::unique("narration-band-words");
+        let words = ctx.data(|d| d.get_temp::<f32>(words_id)).unwrap_or(most);
+        // The panel's frame around its words, as measured last frame.
+        let margin_id = egui::Id::unique("narration-band-margin");
+        let margin = ctx.data(|d| d.get_temp::<f32>(margin_id)).unwrap_or(16.0);
+        let band = egui::Panel::bottom("narration-band")
+            .resizable(false)
+            .exact_size((words + margin).min(most))
+            .show(ui, |ui| {
+                let inner = ui.available_height();
+                (
+                    super::views::lesson::band(ui, &self.session, fit - margin),
+                    inner,
+                )
+            });
+        let ((out, height), inner) = band.inner;
+        let framed = band.response.rect.height() - inner;
+        if (framed - margin).abs() > 0.5 {
+            ctx.data_mut(|d| d.insert_temp(margin_id, framed));
+            ctx.request_repaint();
+        }
+        if (height - words).abs() > 0.5 {
+            ctx.data_mut(|d| d.insert_temp(words_id, height));
+            ctx.request_repaint();
+        }
+        self.narrated(out);
     }
 }
 

@@ -45,7 +45,11 @@ impl PipelensApp {
     }
 
     /// The buffer and overlays (pixel stages), the depth ramp, the comparison, the observer.
-    fn view_controls(&mut self, ui: &mut egui::Ui, capture: &pipeline::capture::FrameCapture) {
+    pub(super) fn view_controls(
+        &mut self,
+        ui: &mut egui::Ui,
+        capture: &pipeline::capture::FrameCapture,
+    ) {
         let sel = self.session.selection.clone();
         let lang = self.session.lang;
         let space = sel.stage.space();

@@ -76,6 +76,9 @@ pub struct PipelensApp {
     pub(super) commands: Vec<Command>,
     /// The step whose panels were last opened on entering it (`Session::step_entered`).
     pub(super) step_opened: u64,
+    /// This frame, the narration runs in a band across the window's foot (see
+    /// `narration_in_band`); the stage's view controls are then in the bar's Show menu.
+    pub(super) band: bool,
     /// The progress as last saved: when the session's differs, a frame is asked for after the
     /// save interval, so that eframe saves it even if nothing else moves (a browser tab).
     pub(super) saved_progress: progress::Progress,
@@ -113,6 +116,7 @@ impl PipelensApp {
             export_cancel: None,
             commands: Vec::new(),
             step_opened: 0,
+            band: false,
             watched: None,
             editor: editor::Editor::default(),
             inbox: platform::Inbox::default(),
@@ -178,6 +182,9 @@ impl PipelensApp {
         self.keyboard(ui.ctx());
         self.picture.clear();
         self.subject.clear();
+        let narrated = self.panels.narration && self.session.lesson.is_some();
+        self.band =
+            narrated && !window_size::is_compact(ui.ctx()) && self.narration_in_band(ui.ctx());
         let compact = self.bar(ui);
         self.open_for_step(ui.ctx(), compact);
         self.keys_help(ui.ctx());
@@ -186,6 +193,10 @@ impl PipelensApp {
             self.status_bar(ui);
         }
         let lang = self.session.lang;
+        let band = self.band;
+        if band {
+            self.narration_band(ui);
+        }
         if self.panels.parameters {
             egui::Panel::left("parameters")
                 .default_size(300.0)
@@ -212,27 +223,8 @@ impl PipelensApp {
                 });
         }
         if self.panels.shader {
-            // Wide enough for an 80-column line of code where the window allows it (at
-            // 1920 points, 760 leave the picture more than half), narrower in a smaller one.
-            let wide = (ui.ctx().content_rect().width() * 0.4).clamp(520.0, 760.0);
-            egui::Panel::right("shader")
-                .default_size(wide)
-                .resizable(true)
-                .show(ui, |ui| {
-                    // The code at the chrome's size in classroom mode too: the picture and the
-                    // narration are what the room reads, and the code's type stays no larger
-                    // than the narration's.
-                    super::style::chrome_style(ui);
-                    ui.heading(lang.tr("Shaders (GLSL)", "着色器（GLSL）"));
-                    self.commands.extend(views::shader::ui(
-                        ui,
-                        &mut self.shader_editor,
-                        &self.session,
-                        std::path::Path::new(self.export_dir.trim()),
-                    ));
-                });
+            self.shader_panel(ui);
         }
-        let narrated = self.panels.narration && self.session.lesson.is_some();
         if compact && narrated {
             self.narration_sheet(ui);
         }
@@ -252,7 +244,7 @@ impl PipelensApp {
             })
             .response
             .rect;
-        if !narrated || compact {
+        if !narrated || compact || band {
             views::card_placement::set_narration_card(ui.ctx(), None);
         } else {
             let out = views::lesson::card(ui.ctx(), central, &self.session);
@@ -276,6 +268,30 @@ impl PipelensApp {
         }
         // A buffer or a pixel chosen that the capture shown did not keep: render it.
         self.session.ensure_captured();
+    }
+
+    /// The shader panel on the right: the student's GLSL, its debugger and own uniforms.
+    fn shader_panel(&mut self, ui: &mut egui::Ui) {
+        let lang = self.session.lang;
+        // Wide enough for an 80-column line of code where the window allows it (at
+        // 1920 points, 760 leave the picture more than half), narrower in a smaller one.
+        let wide = (ui.ctx().content_rect().width() * 0.4).clamp(520.0, 760.0);
+        egui::Panel::right("shader")
+            .default_size(wide)
+            .resizable(true)
+            .show(ui, |ui| {
+                // The code at the chrome's size in classroom mode too: the picture and the
+                // narration are what the room reads, and the code's type stays no larger
+                // than the narration's.
+                super::style::chrome_style(ui);
+                ui.heading(lang.tr("Shaders (GLSL)", "着色器（GLSL）"));
+                self.commands.extend(views::shader::ui(
+                    ui,
+                    &mut self.shader_editor,
+                    &self.session,
+                    std::path::Path::new(self.export_dir.trim()),
+                ));
+            });
     }
 
     /// The bar at the top: the desktop's, or a small window's one row; whether the window is
@@ -327,7 +343,15 @@ impl PipelensApp {
         !self.panels.shader || ctx.content_rect().width() >= 1600.0
     }
 
-    /// What the narration (the card, or a small window's sheet) asked for.
+    /// Whether the narration runs in a band across the window's foot rather than in a card over
+    /// the picture: with the shader panel open in a window narrower than 1600 points (a
+    /// 1366×768 projector), where a card under the picture would leave it a fifth of the
+    /// window; across both the picture and the code its words take fewer lines.
+    fn narration_in_band(&self, ctx: &egui::Context) -> bool {
+        self.panels.shader && ctx.content_rect().width() < 1600.0
+    }
+
+    /// What the narration (the card, a small window's sheet, or the band) asked for.
     pub(super) fn narrated(&mut self, out: views::lesson::CardOutput) {
         self.commands.extend(out.commands);
         if out.fold {
@@ -354,7 +378,11 @@ impl PipelensApp {
             );
         }
         let space = sel.stage.space();
-        self.stage_toolbar(ui, capture);
+        // Beside a band, the top bar names the stage and its Show menu holds the view's
+        // controls: the picture keeps the toolbar's row.
+        if !self.band {
+            self.stage_toolbar(ui, capture);
+        }
         let observer = sel.show_observer && (space.is_some() || sel.comparison.is_none());
         // A narration band or column leaves the views the part above or beside it.
         let card = views::card_placement::narration_card(ui.ctx());

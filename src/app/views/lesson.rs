@@ -49,19 +49,7 @@ pub fn card(ctx: &egui::Context, central: egui::Rect, session: &Session) -> Card
                     ui.set_width(width);
                     ui.set_min_height(least);
                     ui.set_max_height(most);
-                    let fit_id = egui::Id::unique("narration-card-fit");
-                    let fit = ctx.data(|d| d.get_temp::<f32>(fit_id)).unwrap_or(1.0);
-                    let normal = crate::app::style::text_styles(1.0)[&egui::TextStyle::Body].size;
-                    let body = ui.style().text_styles[&egui::TextStyle::Body].size;
-                    for font in ui.style_mut().text_styles.values_mut() {
-                        font.size *= fit;
-                    }
-                    let (room, needed) = contents(ui, session, &mut out);
-                    let next = fitted(fit, room, needed, normal / body);
-                    if next != fit {
-                        ctx.data_mut(|d| d.insert_temp(fit_id, next));
-                        ctx.request_repaint();
-                    }
+                    fit_contents(ui, session, &mut out, ("narration-card-fit", None));
                 });
         });
     super::card_placement::set_narration_card(ctx, Some(shown.response.rect));
@@ -78,6 +66,49 @@ pub fn sheet(ui: &mut Ui, session: &Session) -> CardOutput {
     };
     contents(ui, session, &mut out);
     out
+}
+
+/// The narration in a band across the window's foot, at most `most` points high (see
+/// `PipelensApp::narration_band`): its type shrinks as the card's does until its words fit
+/// (never below the normal size; beyond it they scroll). Returns what it asked for and the
+/// height it needs, title and words.
+pub fn band(ui: &mut Ui, session: &Session, most: f32) -> (CardOutput, f32) {
+    let mut out = CardOutput {
+        commands: Vec::new(),
+        fold: false,
+        inspect: false,
+    };
+    let needed = fit_contents(ui, session, &mut out, ("narration-band-fit", Some(most)));
+    (out, needed)
+}
+
+/// The card's words in `ui`, their type scaled to fit as [`fitted`] says, the scale kept under
+/// `fit.0`; the room for the words is what `ui` leaves below the title, or what `fit.1` (a
+/// height for the whole) leaves. Returns the height title and words need at this scale.
+fn fit_contents(
+    ui: &mut Ui,
+    session: &Session,
+    out: &mut CardOutput,
+    fit: (&str, Option<f32>),
+) -> f32 {
+    let ctx = ui.ctx().clone();
+    let fit_id = egui::Id::unique(fit.0);
+    let scale = ctx.data(|d| d.get_temp::<f32>(fit_id)).unwrap_or(1.0);
+    let normal = crate::app::style::text_styles(1.0)[&egui::TextStyle::Body].size;
+    let body = ui.style().text_styles[&egui::TextStyle::Body].size;
+    for font in ui.style_mut().text_styles.values_mut() {
+        font.size *= scale;
+    }
+    let top = ui.available_height();
+    let (room, needed) = contents(ui, session, out);
+    let title = top - room;
+    let room = fit.1.map_or(room, |whole| whole - title);
+    let next = fitted(scale, room, needed, normal / body);
+    if next != scale {
+        ctx.data_mut(|d| d.insert_temp(fit_id, next));
+        ctx.request_repaint();
+    }
+    title + needed
 }
 
 /// The card's type scale for the next frame, so that what it says fits without scrolling

@@ -48,3 +48,84 @@ fn the_classroom_card_fits_its_question_and_answer_button_at_1366() {
         assert!(checked > 0, "{name}: no step with an answer was checked");
     }
 }
+
+/// In classroom mode on a 1366×768 projector with the shader panel open, the code and the
+/// picture are seen together: the narration runs in a band across the window's foot, under
+/// both, and every step of lesson 24 keeps its picture at least 35 % of the window (with the
+/// card under the picture it kept a fifth), in both languages; a lab's three pictures and a
+/// step of many words keep 29 %.
+#[test]
+fn the_code_and_the_picture_share_a_1366_projector() {
+    let path = crate::support::repo().join("lessons/24-shader-programs.toml");
+    let screen = egui::Rect::from_min_size(egui::pos2(8.0, 8.0), egui::vec2(1366.0, 768.0));
+    let mut small = Vec::new();
+    for lang in [
+        pipelens::vocabulary::Lang::En,
+        pipelens::vocabulary::Lang::Zh,
+    ] {
+        // The harness keeps 8 points around the app: 1366×768 inside.
+        let mut h = super::sized_lesson_harness(&path, [1382.0, 784.0]);
+        let ctx = h.ctx.clone();
+        h.state_mut().set_classroom(&ctx, true);
+        h.state_mut()
+            .session
+            .apply(pipelens::app::session::Command::View(
+                pipelens::app::command::ViewCommand::SetLang(lang),
+            ));
+        let steps = h
+            .state()
+            .session
+            .lesson
+            .as_ref()
+            .map_or(0, |p| p.lesson.steps.len());
+        for k in 0..steps {
+            h.state_mut()
+                .session
+                .apply(pipelens::app::session::Command::Lesson(
+                    pipelens::app::session::LessonCommand::GoToStep(k),
+                ));
+            h.run_steps(2);
+            h.state_mut().panels.shader = true;
+            h.run_steps(12);
+            let share = h.state().picture_share(screen);
+            let step = h
+                .state()
+                .session
+                .lesson
+                .as_ref()
+                .expect("a lesson")
+                .current()
+                .clone();
+            let title = step.title.get(lang).to_owned();
+            let shown = h
+                .get_by_label_contains(&format!("{}. {title}", k + 1))
+                .rect();
+            assert!(
+                shown.bottom() <= 776.0 && shown.top() > 400.0,
+                "{lang:?} step {}: the title is at {shown:?}, not in the band at the foot",
+                k + 1
+            );
+            // A lab's three pictures side by side (aspect 2) are as wide as 805 points allow,
+            // and a step whose words need more than a quarter of the window at the normal
+            // type gives them the room: both keep at least 29 %.
+            let long = shown.top() < 776.0 - 768.0 / 4.0;
+            let least = if step.exercise.is_some() || long {
+                0.29
+            } else {
+                0.35
+            };
+            if share < least {
+                small.push(format!(
+                    "{lang:?} step {}: {:.1} % (at least {:.0} %)",
+                    k + 1,
+                    share * 100.0,
+                    least * 100.0
+                ));
+            }
+        }
+    }
+    assert!(
+        small.is_empty(),
+        "beside the code the picture is too small: {small:?}"
+    );
+}

@@ -35,8 +35,18 @@ fn the_narration_card_leaves_the_subject_clear() {
                     .session
                     .apply(Command::Lesson(LessonCommand::GoToStep(k)));
                 h.run_steps(6);
-                let card = pipelens::app::views::card_placement::narration_card(&h.ctx)
-                    .expect("a lesson shows its card");
+                let Some(card) = pipelens::app::views::card_placement::narration_card(&h.ctx)
+                else {
+                    // With the shader panel open at 1366 points the narration is a band at
+                    // the window's foot, a panel the views lie above.
+                    assert!(
+                        h.state().panels.shader && size[0] < 1600.0,
+                        "{} step {}: a lesson shows its card",
+                        path.display(),
+                        k + 1
+                    );
+                    continue;
+                };
                 for r in &h.state().subject {
                     checked += 1;
                     if r.intersects(card) {
