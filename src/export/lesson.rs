@@ -502,14 +502,19 @@ fn compact_image(img: &RgbaImage) -> Result<super::handout::Image> {
     })
 }
 
+/// A vector as a caption shows it: `(1, 0.5, 0)`.
+fn components(v: &[f32]) -> String {
+    let c: Vec<String> = v.iter().map(|&x| crate::vocabulary::short(x, 2)).collect();
+    format!("({})", c.join(", "))
+}
+
 /// A value as a caption shows it.
 fn shown(v: &Value) -> String {
     match v {
         Value::Number(x) => crate::vocabulary::short(*x, 2),
-        Value::Vec3(v) => {
-            let c = |x: f32| crate::vocabulary::short(x, 2);
-            format!("({}, {}, {})", c(v.x), c(v.y), c(v.z))
-        }
+        Value::Vec2(v) => components(&v.to_array()),
+        Value::Vec3(v) => components(&v.to_array()),
+        Value::Vec4(v) => components(&v.to_array()),
         other => other.to_string(),
     }
 }

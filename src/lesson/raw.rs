@@ -66,8 +66,8 @@ pub struct RawShader {
     pub uniforms: Option<BTreeMap<Spanned<String>, Spanned<RawUniformValue>>>,
 }
 
-/// A value a lesson gives a uniform of the shader's own: a number, true or false, or three
-/// numbers.
+/// A value a lesson gives a uniform of the shader's own: a number, true or false, or two,
+/// three or four numbers.
 #[derive(Debug, Deserialize)]
 #[serde(untagged)]
 pub enum RawUniformValue {
@@ -75,8 +75,12 @@ pub enum RawUniformValue {
     Bool(bool),
     /// A number.
     Number(f64),
+    /// Two numbers.
+    Pair([f64; 2]),
     /// Three numbers.
     Triple([f64; 3]),
+    /// Four numbers.
+    Quad([f64; 4]),
 }
 
 impl RawShader {
@@ -506,12 +510,15 @@ pub struct RawAnimate {
 #[serde(
     untagged,
     expecting = "a number, [x, y, z], true or false, or a name such as \"phong\" (write the \
-    parameter's name in quotes: \"projection.fovy\" = 60)"
+    parameter's name in quotes: \"projection.fovy\" = 60); a vec2 or vec4 uniform of the \
+    shader's own takes [x, y] or [x, y, z, w]"
 )]
 pub enum RawValue {
     Bool(bool),
     Number(f64),
+    Vec2([f64; 2]),
     Vec3([f64; 3]),
+    Vec4([f64; 4]),
     Name(String),
 }
 

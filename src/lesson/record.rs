@@ -241,7 +241,9 @@ pub(super) fn text(t: &Text) -> InlineTable {
 fn param_value(v: &Value) -> toml_edit::Value {
     match v {
         Value::Number(x) => number(*x),
+        Value::Vec2(v) => Array::from_iter(v.to_array().map(number)).into(),
         Value::Vec3(v) => Array::from_iter(v.to_array().map(number)).into(),
+        Value::Vec4(v) => Array::from_iter(v.to_array().map(number)).into(),
         Value::Bool(b) => (*b).into(),
         Value::Name(n) => n.as_str().into(),
     }

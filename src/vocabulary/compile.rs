@@ -230,7 +230,7 @@ fn own(c: &Complaint, lang: Lang) -> Option<String> {
                 .map(|u| u.names[0])
                 .collect::<Vec<_>>()
                 .join("、")
-        ) + "。自己的 uniform 可以是 float、int、bool 或 vec3，在其后的注释中写明控件：`// 0..4 = 1.5`",
+        ) + "。自己的 uniform 可以是 float、int、bool、vec2、vec3 或 vec4，在其后的注释中写明控件：`// 0..4 = 1.5`",
         C::OwnUniformControl { name, .. } => format!(
             "`{name}` 是你自己的 uniform；它的注释看起来像控件（`// 最小..最大 = 初值`），但写得不对：范围须是 最小..最大（最小小于最大），初值的个数须与类型相符"
         ),

@@ -64,6 +64,43 @@ fn a_lesson_gives_sets_and_animates_a_shaders_own_uniform() {
     assert!(pipelens::lesson::param::names(&lesson.spec_at(0)).contains(&"uniforms.on".to_owned()));
 }
 
+/// A `vec4` colour and a `vec2` of the shader's own: the file's value, a step's `set` and an
+/// animation between two `[x, y]`; the centre's red is `glaze.r · glaze.a + offset.x` (by
+/// hand: the shader below).
+#[test]
+fn a_lesson_gives_sets_and_animates_a_vec2_and_a_vec4() {
+    let head = HEAD.replace(
+        "uniform float level; // 0..1 = 0.25\nuniform bool on;     // = true\nout vec4 color;\nvoid main() {\n    color = vec4(on ? vec3(level) : vec3(0.0), 1.0);",
+        "uniform vec4 glaze;  // = 1, 1, 1, 1\nuniform vec2 offset; // 0..1 = 0\nout vec4 color;\nvoid main() {\n    color = vec4(glaze.rgb * glaze.a + vec3(offset, 0.0), 1.0);",
+    );
+    assert_ne!(head, HEAD, "the shader was replaced");
+    let text = format!(
+        "{head}uniforms = {{ glaze = [0.5, 0.0, 0.0, 0.5] }}\n\n{STEP}\n{STEP}set = {{ \"uniforms.offset\" = [0.5, 0.0] }}\n\n{STEP}animate = [{{ param = \"uniforms.offset\", from = [0.0, 0.0], to = [1.0, 1.0], seconds = 2.0, easing = \"linear\" }}]\n"
+    );
+    let lesson = parse_lesson(&text, "t.toml", Path::new(".")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(centre(&lesson.spec_at(0)), 0.25, "0.5 · 0.5");
+    assert_eq!(centre(&lesson.spec_at(1)), 0.75, "0.25 + the step's 0.5");
+    assert_eq!(
+        centre(&lesson.spec_playing(2, 0.5)),
+        0.5,
+        "0.25 + a quarter of the way"
+    );
+    assert_eq!(
+        pipelens::lesson::param::get(&lesson.spec_at(1), "uniforms.offset"),
+        Some(Value::Vec2(glam::vec2(0.5, 0.0)))
+    );
+    let wrong = |extra: &str| match parse_lesson(
+        &format!("{head}{extra}\n\n{STEP}"),
+        "t.toml",
+        Path::new("."),
+    ) {
+        Ok(_) => panic!("expected an error for {extra}"),
+        Err(d) => d.0,
+    };
+    let found = wrong("uniforms = { glaze = [1.0, 0.0, 0.0] }");
+    crate::support::assert_found(&found, 25, 22, "a vec4 takes four numbers [x, y, z, w]");
+}
+
 #[test]
 fn a_wrong_uniform_name_type_or_value_is_an_error_at_its_place() {
     let errors = |extra: &str, step: &str| match parse_lesson(

@@ -1,17 +1,20 @@
 //! A student's own uniforms: a `uniform` whose name pipelens does not set becomes a control the
-//! student drives (a slider for a `float` or an `int`, a checkbox for a `bool`, a colour or
-//! three numbers for a `vec3`), its range and first value written in a comment after it on its
-//! line:
+//! student drives (a slider for a `float` or an `int`, a checkbox for a `bool`, two numbers for
+//! a `vec2`, a colour or three numbers for a `vec3`, a colour with its alpha or four numbers for
+//! a `vec4`), its range and first value written in a comment after it on its line:
 //!
 //! ```glsl
 //! uniform float bands;      // 1..8 = 4
 //! uniform vec3 tint;        // = 1, 0.5, 0
+//! uniform vec4 glaze;       // = 1, 1, 1, 0.5
+//! uniform vec2 offset;      // -1..1 = 0.25, 0
 //! uniform bool outline;     // = true
 //! ```
 //!
-//! The comment reads `MIN..MAX = VALUE`, either half alone. Without a value the uniform starts
-//! at 0 (GLSL's value for a uniform never set), moved into the range; a `vec3` without a range
-//! is a colour, its components in [0, 1].
+//! The comment reads `MIN..MAX = VALUE`, either half alone; a vector's value is its components
+//! or one number for all of them. Without a value the uniform starts at 0 (GLSL's value for a
+//! uniform never set), moved into the range; a `vec3` or `vec4` without a range (or with
+//! `0..1`) is a colour, its components in [0, 1].
 
 use crate::dialect::{Declaration, Storage};
 use crate::program::Program;
@@ -25,8 +28,12 @@ pub enum OwnKind {
     Int,
     /// `bool`: a checkbox.
     Bool,
+    /// `vec2`: two numbers.
+    Vec2,
     /// `vec3`: a colour, or three numbers when it has a range other than [0, 1].
     Vec3,
+    /// `vec4`: a colour with its alpha, or four numbers when it has a range other than [0, 1].
+    Vec4,
 }
 
 impl OwnKind {
@@ -37,7 +44,9 @@ impl OwnKind {
             "float" => Some(Self::Float),
             "int" => Some(Self::Int),
             "bool" => Some(Self::Bool),
+            "vec2" => Some(Self::Vec2),
             "vec3" => Some(Self::Vec3),
+            "vec4" => Some(Self::Vec4),
             _ => None,
         }
     }
@@ -49,14 +58,34 @@ impl OwnKind {
             Self::Float => "float",
             Self::Int => "int",
             Self::Bool => "bool",
+            Self::Vec2 => "vec2",
             Self::Vec3 => "vec3",
+            Self::Vec4 => "vec4",
         }
     }
 
     /// How many numbers its value has.
     #[must_use]
     pub fn components(self) -> usize {
-        if self == Self::Vec3 { 3 } else { 1 }
+        match self {
+            Self::Float | Self::Int | Self::Bool => 1,
+            Self::Vec2 => 2,
+            Self::Vec3 => 3,
+            Self::Vec4 => 4,
+        }
+    }
+
+    /// Whether it is a vector (`vec2`, `vec3`, `vec4`): its value may be written as one number
+    /// for every component.
+    #[must_use]
+    pub fn vector(self) -> bool {
+        self.components() > 1
+    }
+
+    /// Whether a value of it can be a colour (`vec3`, `vec4`: RGB, RGBA).
+    #[must_use]
+    pub fn colour_kind(self) -> bool {
+        matches!(self, Self::Vec3 | Self::Vec4)
     }
 
     /// Its value as the machine's 32-bit words: a float's bits, an int's, a bool's 0 or 1.
@@ -66,7 +95,7 @@ impl OwnKind {
             .iter()
             .take(self.components())
             .map(|&x| match self {
-                Self::Float | Self::Vec3 => x.to_bits(),
+                Self::Float | Self::Vec2 | Self::Vec3 | Self::Vec4 => x.to_bits(),
                 #[allow(clippy::cast_possible_truncation)]
                 Self::Int => (x.round() as i32).cast_unsigned(),
                 Self::Bool => u32::from(x != 0.0),
@@ -82,11 +111,11 @@ pub struct OwnUniform {
     pub name: String,
     /// Its type.
     pub kind: OwnKind,
-    /// The control's range (a `vec3`'s for each component).
+    /// The control's range (a vector's for each component).
     pub range: (f32, f32),
     /// Its first value (a bool's 0 or 1), inside the range.
     pub value: Vec<f32>,
-    /// Whether a `vec3` is a colour.
+    /// Whether a `vec3` or `vec4` is a colour (RGB, RGBA).
     pub colour: bool,
     /// The line it is declared on, from 1.
     pub line: usize,
@@ -97,7 +126,7 @@ pub struct OwnUniform {
 pub struct Control {
     /// `MIN..MAX`.
     pub range: Option<(f32, f32)>,
-    /// `= VALUE` (a vec3's three numbers; a bool's `true` as 1).
+    /// `= VALUE` (a vector's numbers; a bool's `true` as 1).
     pub value: Option<Vec<f32>>,
 }
 
@@ -171,7 +200,7 @@ pub fn own_uniform(source: &str, d: &Declaration, kind: OwnKind) -> Result<OwnUn
     let n = kind.components();
     if let Some(v) = &control.value
         && v.len() != n
-        && !(kind == OwnKind::Vec3 && v.len() == 1)
+        && !(kind.vector() && v.len() == 1)
     {
         return Err(format!(
             "a {} takes {n} number{}, the comment gives {}",
@@ -180,10 +209,8 @@ pub fn own_uniform(source: &str, d: &Declaration, kind: OwnKind) -> Result<OwnUn
             v.len()
         ));
     }
-    let colour = kind == OwnKind::Vec3 && control.range.is_none_or(|r| r == (0.0, 1.0));
+    let colour = kind.colour_kind() && control.range.is_none_or(|r| r == (0.0, 1.0));
     let range = control.range.unwrap_or(match kind {
-        OwnKind::Bool => (0.0, 1.0),
-        OwnKind::Vec3 if colour => (0.0, 1.0),
         OwnKind::Int => (0.0, 10.0),
         _ => (0.0, 1.0),
     });
@@ -260,6 +287,20 @@ mod tests {
         assert!(control("4..1").is_err());
         assert!(control("0..x = 1").is_err());
         assert!(control("0.. = 1").is_err());
+    }
+
+    #[test]
+    fn a_vector_takes_its_components_or_one_number_for_all() {
+        assert_eq!(OwnKind::of("vec2"), Some(OwnKind::Vec2));
+        assert_eq!(OwnKind::of("vec4"), Some(OwnKind::Vec4));
+        assert_eq!(OwnKind::of("mat3"), None);
+        assert_eq!(OwnKind::Vec4.components(), 4);
+        // 0.5 is 0x3F000000, 1 is 0x3F800000.
+        assert_eq!(
+            OwnKind::Vec4.words(&[1.0, 0.5, 0.0, 1.0]),
+            vec![0x3F80_0000, 0x3F00_0000, 0, 0x3F80_0000]
+        );
+        assert_eq!(OwnKind::Vec2.words(&[0.5, 0.5]), vec![0x3F00_0000; 2]);
     }
 
     #[test]

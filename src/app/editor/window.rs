@@ -99,7 +99,10 @@ impl Editor {
             let Some(start) = param::get(from, &name) else {
                 continue;
             };
-            if !matches!(end, Value::Number(_) | Value::Vec3(_)) {
+            if !matches!(
+                end,
+                Value::Number(_) | Value::Vec2(_) | Value::Vec3(_) | Value::Vec4(_)
+            ) {
                 continue;
             }
             self.drags.retain(|a| a.param != name);

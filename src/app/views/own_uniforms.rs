@@ -1,6 +1,7 @@
 //! The controls of the student's own uniforms in the shader panel: each `uniform` of theirs
 //! pipelens does not set (`pipeline::shader::own_uniform`) as a slider (`float`, `int` in
-//! whole steps), a checkbox (`bool`), a colour or three numbers (`vec3`), its range and first
+//! whole steps), a checkbox (`bool`), numbers (`vec2`), a colour or numbers (`vec3`, `vec4`
+//! with its alpha), its range and first
 //! value from the comment after its declaration. A change sets the parameter `uniforms.NAME`,
 //! the one a lesson's `set` and `animate` use, so the recorder writes it into a step.
 
@@ -97,8 +98,16 @@ fn control(ui: &mut Ui, u: &OwnUniform, label: egui::Id, lang: Lang) -> Option<V
                 .changed()
                 .then_some(Value::Vec3(glam::Vec3::from_array(c)))
         }
-        OwnKind::Vec3 => {
-            let mut v = [u.value[0], u.value[1], u.value[2]];
+        OwnKind::Vec4 if u.colour => {
+            let mut c = [u.value[0], u.value[1], u.value[2], u.value[3]];
+            ui.color_edit_button_rgba_unmultiplied(&mut c)
+                .labelled_by(label)
+                .on_hover_text(tip)
+                .changed()
+                .then_some(Value::Vec4(glam::Vec4::from_array(c)))
+        }
+        OwnKind::Vec2 | OwnKind::Vec3 | OwnKind::Vec4 => {
+            let mut v = u.value.clone();
             let speed = (hi - lo) / 200.0;
             let mut changed = false;
             for x in &mut v {
@@ -108,7 +117,11 @@ fn control(ui: &mut Ui, u: &OwnUniform, label: egui::Id, lang: Lang) -> Option<V
                     .on_hover_text(&tip)
                     .changed();
             }
-            changed.then_some(Value::Vec3(glam::Vec3::from_array(v)))
+            changed.then(|| match *v.as_slice() {
+                [x, y] => Value::Vec2(glam::vec2(x, y)),
+                [x, y, z, w] => Value::Vec4(glam::vec4(x, y, z, w)),
+                _ => Value::Vec3(glam::Vec3::from_slice(&v)),
+            })
         }
     }
 }

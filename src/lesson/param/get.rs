@@ -55,7 +55,9 @@ pub fn get(spec: &SceneSpec, name: &str) -> Option<Value> {
             Some(match u.kind {
                 OwnKind::Float | OwnKind::Int => Value::Number(u.value[0]),
                 OwnKind::Bool => Value::Bool(u.value[0] != 0.0),
+                OwnKind::Vec2 => Value::Vec2(glam::Vec2::from_slice(&u.value)),
                 OwnKind::Vec3 => Value::Vec3(Vec3::from_slice(&u.value)),
+                OwnKind::Vec4 => Value::Vec4(glam::Vec4::from_slice(&u.value)),
             })
         }
         _ => None,
@@ -249,7 +251,9 @@ fn close(a: &Value, b: &Value) -> bool {
     let near = |x: f32, y: f32| (x - y).abs() <= 1e-6 * x.abs().max(y.abs()).max(1.0);
     match (a, b) {
         (Value::Number(x), Value::Number(y)) => near(*x, *y),
+        (Value::Vec2(x), Value::Vec2(y)) => (0..2).all(|k| near(x[k], y[k])),
         (Value::Vec3(x), Value::Vec3(y)) => (0..3).all(|k| near(x[k], y[k])),
+        (Value::Vec4(x), Value::Vec4(y)) => (0..4).all(|k| near(x[k], y[k])),
         _ => a == b,
     }
 }

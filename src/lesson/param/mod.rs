@@ -27,8 +27,12 @@ use super::validate::{CULL, DEPTH_TEST, FILTER, MIPMAP, REFLECTION, SHADING, WRA
 pub enum Value {
     /// A number.
     Number(f32),
+    /// Two numbers (a `vec2` uniform of the shader's own).
+    Vec2(glam::Vec2),
     /// Three numbers.
     Vec3(Vec3),
+    /// Four numbers (a `vec4` uniform of the shader's own).
+    Vec4(glam::Vec4),
     /// `true` or `false`.
     Bool(bool),
     /// A name, such as `"phong"`.
@@ -39,7 +43,9 @@ impl std::fmt::Display for Value {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Self::Number(x) => write!(f, "{x}"),
+            Self::Vec2(v) => write!(f, "[{}, {}]", v.x, v.y),
             Self::Vec3(v) => write!(f, "[{}, {}, {}]", v.x, v.y, v.z),
+            Self::Vec4(v) => write!(f, "[{}, {}, {}, {}]", v.x, v.y, v.z, v.w),
             Self::Bool(b) => write!(f, "{b}"),
             Self::Name(n) => write!(f, "\"{n}\""),
         }
@@ -122,7 +128,9 @@ impl Animation {
         };
         match (&self.from, &self.to) {
             (Value::Number(a), Value::Number(b)) => Value::Number(a + (b - a) * s),
+            (Value::Vec2(a), Value::Vec2(b)) => Value::Vec2(a.lerp(*b, s)),
             (Value::Vec3(a), Value::Vec3(b)) => Value::Vec3(a.lerp(*b, s)),
+            (Value::Vec4(a), Value::Vec4(b)) => Value::Vec4(a.lerp(*b, s)),
             _ => self.to.clone(),
         }
     }
@@ -225,6 +233,21 @@ fn vec3(v: &Value) -> Result<Vec3, String> {
     }
 }
 
+/// A vector of `n` finite numbers (2, 3 or 4), as a uniform of the shader's own takes it.
+fn vector(v: &Value, n: usize) -> Result<Vec<f32>, String> {
+    let numbers = match v {
+        Value::Vec2(x) if n == 2 => x.to_array().to_vec(),
+        Value::Vec3(x) if n == 3 => x.to_array().to_vec(),
+        Value::Vec4(x) if n == 4 => x.to_array().to_vec(),
+        other => return Err(format!("expected {n} finite numbers, got {other}")),
+    };
+    if numbers.iter().all(|x| x.is_finite()) {
+        Ok(numbers)
+    } else {
+        Err(format!("expected {n} finite numbers, got {v}"))
+    }
+}
+
 fn boolean(v: &Value) -> Result<bool, String> {
     match v {
         Value::Bool(b) => Ok(*b),
@@ -258,7 +281,7 @@ fn own_uniform(spec: &mut SceneSpec, name: &str, v: &Value) -> Result<(), Proble
         OwnKind::Float => vec![number(v)?],
         OwnKind::Int => vec![number(v)?.round()],
         OwnKind::Bool => vec![f32::from(u8::from(boolean(v)?))],
-        OwnKind::Vec3 => vec3(v)?.to_array().to_vec(),
+        OwnKind::Vec2 | OwnKind::Vec3 | OwnKind::Vec4 => vector(v, u.kind.components())?,
     };
     let (lo, hi) = u.range;
     if value.iter().any(|x| !(lo..=hi).contains(x)) {

@@ -19,12 +19,15 @@ impl Checker<'_> {
         let to = self.value(&r.to)?;
         let same_kind = matches!(
             (&from, &to),
-            (Value::Number(_), Value::Number(_)) | (Value::Vec3(_), Value::Vec3(_))
+            (Value::Number(_), Value::Number(_))
+                | (Value::Vec2(_), Value::Vec2(_))
+                | (Value::Vec3(_), Value::Vec3(_))
+                | (Value::Vec4(_), Value::Vec4(_))
         );
         if !same_kind {
             self.error(
                 r.to.span(),
-                "`from` and `to` must both be numbers or both [x, y, z]: only those can move",
+                "`from` and `to` must both be numbers or both vectors of the same length ([x, y, z]): only those can move",
             );
             return None;
         }

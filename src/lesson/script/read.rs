@@ -110,9 +110,15 @@ impl Checker<'_> {
         Some(match v.get_ref() {
             RawValue::Bool(b) => Value::Bool(*b),
             RawValue::Number(x) if x.is_finite() && x.abs() <= 1e15 => Value::Number(*x as f32),
+            RawValue::Vec2(a) if a.iter().all(|x| x.is_finite() && x.abs() <= 1e15) => {
+                Value::Vec2(glam::Vec2::new(a[0] as f32, a[1] as f32))
+            }
             RawValue::Vec3(a) if a.iter().all(|x| x.is_finite() && x.abs() <= 1e15) => {
                 Value::Vec3(glam::Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32))
             }
+            RawValue::Vec4(a) if a.iter().all(|x| x.is_finite() && x.abs() <= 1e15) => Value::Vec4(
+                glam::Vec4::new(a[0] as f32, a[1] as f32, a[2] as f32, a[3] as f32),
+            ),
             RawValue::Name(n) => Value::Name(n.clone()),
             _ => {
                 self.error(

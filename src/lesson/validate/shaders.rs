@@ -200,14 +200,18 @@ fn own_value(u: &OwnUniform, value: &RawUniformValue) -> Result<Vec<f32>, String
     let v: Vec<f32> = match (u.kind, value) {
         (OwnKind::Bool, RawUniformValue::Bool(b)) => vec![f32::from(u8::from(*b))],
         (OwnKind::Float | OwnKind::Int, RawUniformValue::Number(x)) => vec![*x as f32],
+        (OwnKind::Vec2, RawUniformValue::Pair(t)) => t.iter().map(|x| *x as f32).collect(),
         (OwnKind::Vec3, RawUniformValue::Triple(t)) => t.iter().map(|x| *x as f32).collect(),
+        (OwnKind::Vec4, RawUniformValue::Quad(t)) => t.iter().map(|x| *x as f32).collect(),
         (kind, _) => {
             return Err(format!(
                 "a {} takes {}",
                 kind.glsl(),
                 match kind {
                     OwnKind::Bool => "true or false",
+                    OwnKind::Vec2 => "two numbers [x, y]",
                     OwnKind::Vec3 => "three numbers [x, y, z]",
+                    OwnKind::Vec4 => "four numbers [x, y, z, w]",
                     _ => "a number",
                 }
             ));

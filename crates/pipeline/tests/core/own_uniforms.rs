@@ -1,4 +1,4 @@
-//! A student's own uniforms: a `float`, `int`, `bool` or `vec3` pipelens does not set is the
+//! A student's own uniforms: a `float`, `int`, `bool`, `vec2`, `vec3` or `vec4` pipelens does not set is the
 //! student's, its control's range and first value in the comment after it; the frame draws it
 //! with the scene's value, or the comment's. A name close to one pipelens sets, of its type, is
 //! a misspelling unless it has a control; a type no control sets is an error.
@@ -59,6 +59,58 @@ fn the_frame_draws_the_scenes_value_or_the_comments() {
     assert_eq!(f.pixels.color[centre], [0.0, 0.0, 0.0]);
 }
 
+/// A `vec4` without a range is a colour with its alpha; a `vec2` with one is two numbers, one
+/// number in its comment standing for both.
+const VECTORS: &str = "#version 330 core
+uniform vec4 glaze;   // = 0.5, 0.25, 1, 0.75
+uniform vec2 offset;  // -1..1 = 0.5
+out vec4 color;
+void main() {
+    color = vec4(glaze.rgb * glaze.a + vec3(offset, 0.0), 1.0);
+}
+";
+
+#[test]
+fn a_vec2_and_a_vec4_are_controls_too() {
+    let p = compile(Stage::Fragment, VECTORS).expect("compiles");
+    let own = p.own_uniforms();
+    assert_eq!(own.len(), 2);
+    assert_eq!(
+        (
+            own[0].kind,
+            own[0].range,
+            own[0].colour,
+            own[0].value.clone()
+        ),
+        (OwnKind::Vec4, (0.0, 1.0), true, vec![0.5, 0.25, 1.0, 0.75])
+    );
+    assert_eq!(
+        (
+            own[1].kind,
+            own[1].range,
+            own[1].colour,
+            own[1].value.clone()
+        ),
+        (OwnKind::Vec2, (-1.0, 1.0), false, vec![0.5, 0.5])
+    );
+    // The frame: glaze.rgb · glaze.a + (offset, 0) = (0.375 + 0.5, 0.1875 + 0.5, 0.75), by
+    // hand; then the scene's values, (0, 0, 0, 1) and (0.25, -0.25): (0.25, 0, 0) after the
+    // colour buffer's clamp to [0, 1].
+    let s = settings();
+    let mut scene = with_shaders(sphere_scene(false), None, Some(VECTORS));
+    let centre = (s.height as usize / 2) * s.width as usize + s.width as usize / 2;
+    let f = render(&scene, &s);
+    assert_eq!(f.pixels.color[centre], [0.875, 0.6875, 0.75]);
+    scene
+        .uniforms
+        .insert("glaze".to_owned(), vec![0.0, 0.0, 0.0, 1.0]);
+    scene
+        .uniforms
+        .insert("offset".to_owned(), vec![0.25, -0.25]);
+    let f = render(&scene, &s);
+    assert_eq!(f.pixels.color[centre], [0.25, 0.0, 0.0]);
+}
+
 #[test]
 fn a_misspelling_a_bad_control_and_a_type_no_control_sets_are_errors() {
     let error = |decl: &str| {
@@ -83,6 +135,10 @@ fn a_misspelling_a_bad_control_and_a_type_no_control_sets_are_errors() {
     ));
     assert!(matches!(
         error("uniform float k; // 0..1 = 1, 2"),
+        Some(Complaint::OwnUniformControl { .. })
+    ));
+    assert!(matches!(
+        error("uniform vec4 tint4; // = 1, 0, 0"),
         Some(Complaint::OwnUniformControl { .. })
     ));
     assert!(matches!(
