@@ -15,6 +15,8 @@
 //     the file that the native `pipelens grade` ($PIPELENS_BIN) passes;
 //  9. on a phone (390×844, touch) the picture covers half the page or more, and a swipe across
 //     the narration sheet goes to the next step; landscape and tablet screenshots.
+// 10b. the debugger's variable picture (lesson 24 step 8) is the view's picture at 1920×1080 and
+//     on a phone;
 //  0. (first) the service worker takes the page over and makes it cross-origin isolated (this
 //     server sends no isolation headers, as a static host), so the threaded build runs a pool of
 //     every core; the tour's heaviest step's frame times in the page on 1 and on every thread
@@ -459,6 +461,33 @@ for (const [w, h, name] of [[390, 844, "phone-portrait"], [844, 390, "phone-land
         await page.screenshot({ path: `${out}/phone-portrait-step2.png` });
       }
     }
+  }
+  await device.close();
+}
+
+// 10b. The variable picture (lesson 24 step 8, `watch = "dot(n, l) < 0.0@22"`) is the view's
+// picture, on a desktop and on a phone (where the shader panel stays closed): the crescent
+// where n·l < 0 is drawn in the ramp's yellow.
+function yellow(png) {
+  let n = 0;
+  for (let i = 0; i < png.data.length; i += 4) {
+    if (png.data[i] > 200 && png.data[i + 1] > 180 && png.data[i + 2] < 100) n += 1;
+  }
+  return n;
+}
+for (const [w, h, name, least] of [[1920, 1080, "variable-picture", 5000], [390, 844, "variable-picture-phone", 1000]]) {
+  const device = await browser.newContext({ viewport: { width: w, height: h }, deviceScaleFactor: 1, isMobile: w < 700, hasTouch: w < 700 });
+  const page = await device.newPage();
+  page.on("pageerror", (e) => errors.push(`${name}: ${e.message}`));
+  page.on("console", (m) => { if (m.type() === "error") errors.push(`${name}: ${m.text()}`); });
+  await page.goto(url + "?lesson=24-shader-programs&step=8");
+  if (await waitForTitle(page, /^pipelens — 24-shader-programs — step 8\/12$/, `the variable-picture step opens at ${w}×${h}`)) {
+    let found = 0;
+    for (let k = 0; k < 15 && found < least; k++) {
+      await page.waitForTimeout(2000);
+      found = yellow(PNG.sync.read(await page.screenshot({ path: `${out}/${name}.png` })));
+    }
+    check(found >= least, `the view draws the crescent where n·l < 0 at ${w}×${h} (${found} yellow pixels)`);
   }
   await device.close();
 }

@@ -14,6 +14,7 @@ mod keys;
 mod labs;
 mod lesson_play;
 mod library;
+mod own_uniforms;
 mod params;
 mod phone;
 mod recording;

@@ -38,7 +38,7 @@ fn line(h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>) -> Option<usi
 }
 
 /// The inspected pixel's first fragment in the frame on screen.
-fn first_fragment<'h>(
+pub(super) fn first_fragment<'h>(
     h: &'h egui_kittest::Harness<'_, pipelens::app::PipelensApp>,
 ) -> &'h pipeline::capture::FragmentTrace {
     &h.state()
@@ -453,57 +453,6 @@ fn a_watch_the_edited_code_no_longer_compiles_is_dropped_with_why() {
     assert_eq!(h.state().session.watch_error, None);
 }
 
-/// A uniform of the student's own is a control in the panel: `level` from its comment starts
-/// at 0.25 on a 0.01 grid (a hundredth of its range 0..1, a power of ten), so one → on the
-/// focused slider makes it 0.26, and the frame draws grey 0.26 at the sphere's centre (the
-/// shader writes `vec4(vec3(level), 1)`).
-#[test]
-fn a_uniform_of_ones_own_is_a_slider_that_redraws_the_frame() {
-    let path = crate::support::repo().join("lessons/24-shader-programs.toml");
-    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    h.state_mut().panels.shader = true;
-    h.run_steps(4);
-    let app = h.state_mut();
-    app.shader_editor.fragment = "#version 330 core
-uniform float level; // 0..1 = 0.25
-out vec4 color;
-void main() {
-    color = vec4(vec3(level), 1.0);
-}
-"
-    .to_owned();
-    app.shader_editor.shaders_in_use = true;
-    let applied = app.shader_editor.apply(&app.session).expect("compiles");
-    app.session.apply(applied);
-    h.run_steps(4);
-    let slider = || (egui::accesskit::Role::Slider, "level");
-    h.get_by_role_and_label(slider().0, slider().1).focus();
-    h.run_steps(2);
-    h.key_press(Key::ArrowRight);
-    h.run_steps(2);
-    let level = h.state().session.spec.scene.uniforms.get("level").cloned();
-    assert_eq!(level, Some(vec![0.26]));
-    h.state_mut()
-        .session
-        .apply(Command::Selection(SelectionCommand::SelectPixel(Some((
-            240, 180,
-        )))));
-    for _ in 0..20 {
-        h.run_steps(2);
-        let done = h
-            .state()
-            .session
-            .capture
-            .as_ref()
-            .is_some_and(|c| c.settings.capture.pixel == Some((240, 180)));
-        if done {
-            break;
-        }
-    }
-    let frag = first_fragment(&h);
-    assert_eq!(frag.output, Some([0.26, 0.26, 0.26, 1.0]));
-}
-
 /// The cost view: ticked, the frame is drawn again keeping each pixel's steps, and at the
 /// inspected pixel the picture says as many steps as that fragment's run lists (the test's
 /// shader runs the same steps everywhere but for its loop, which runs twice at every pixel).
@@ -529,64 +478,63 @@ fn the_cost_view_shows_each_pixels_steps() {
     assert_eq!(cost.at(250, 170).map(|v| v[0]), Some(steps));
 }
 
-/// A `vec2` of the student's own is two numbers and a `vec4` without a range a colour with
-/// its alpha: ↑ on the focused first number moves `offset.x` by its step, a two-hundredth of
-/// its range 0..1 (0.25 → 0.255), and the frame's centre draws red `glaze.r · glaze.a +
-/// offset.x` = 0.5 · 0.5 + 0.255 = 0.505 (by hand, from the shader below).
+/// The textures the last frame painted, by name (egui's texture manager names each), the
+/// fonts' left out.
+fn painted_textures(h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>) -> Vec<String> {
+    let manager = h.ctx.tex_manager();
+    let manager = manager.read();
+    h.output()
+        .shapes
+        .iter()
+        .filter_map(|c| match &c.shape {
+            egui::Shape::Mesh(m) => Some(m.texture_id),
+            egui::Shape::Rect(r) => r.fill_texture_id().into(),
+            _ => None,
+        })
+        .filter_map(|id| manager.meta(id).map(|m| m.name.clone()))
+        .filter(|name| name != "egui_font_texture")
+        .collect()
+}
+
+/// Lesson 24's variable-picture step (`watch = "dot(n, l) < 0.0@22"`) draws the watch in the
+/// view itself, the frame's size, in place of the colour buffer; unticking "variable picture"
+/// brings the colour back.
 #[test]
-fn a_vec2_is_two_numbers_and_a_vec4_a_colour_with_its_alpha() {
+fn the_variable_picture_is_the_views_picture() {
     let path = crate::support::repo().join("lessons/24-shader-programs.toml");
     let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    h.state_mut().panels.shader = true;
-    h.run_steps(4);
-    let app = h.state_mut();
-    app.shader_editor.fragment = "#version 330 core
-uniform vec4 glaze;  // = 0.5, 0.5, 0.5, 0.5
-uniform vec2 offset; // 0..1 = 0.25
-out vec4 color;
-void main() {
-    color = vec4(glaze.rgb * glaze.a + vec3(offset, 0.0), 1.0);
-}
-"
-    .to_owned();
-    app.shader_editor.shaders_in_use = true;
-    let applied = app.shader_editor.apply(&app.session).expect("compiles");
-    app.session.apply(applied);
-    h.run_steps(4);
-    let numbers = h.get_all_by_role_and_label(egui::accesskit::Role::SpinButton, "offset");
-    assert_eq!(numbers.count(), 2, "offset is two numbers");
-    assert!(
-        h.query_by_role_and_label(egui::accesskit::Role::ColorWell, "glaze")
-            .is_some(),
-        "glaze is a colour"
-    );
-    h.get_all_by_role_and_label(egui::accesskit::Role::SpinButton, "offset")
-        .next()
-        .expect("the first number")
-        .focus();
-    h.run_steps(2);
-    h.key_press(Key::ArrowUp);
-    h.run_steps(2);
-    let offset = h.state().session.spec.scene.uniforms.get("offset").cloned();
-    assert_eq!(offset, Some(vec![0.255, 0.25]));
-    h.state_mut()
-        .session
-        .apply(Command::Selection(SelectionCommand::SelectPixel(Some((
-            240, 180,
-        )))));
-    for _ in 0..20 {
+    h.state_mut().session.apply(Command::Lesson(
+        pipelens::app::session::LessonCommand::GoToStep(7),
+    ));
+    for _ in 0..40 {
         h.run_steps(2);
-        let done = h
-            .state()
-            .session
-            .capture
-            .as_ref()
-            .is_some_and(|c| c.settings.capture.pixel == Some((240, 180)));
-        if done {
+        let drawn = h.state().session.capture.as_ref().is_some_and(|c| {
+            c.shaders
+                .as_ref()
+                .is_some_and(|r| r.watch.as_ref().is_some_and(|w| w.kind.is_some()))
+        });
+        if drawn {
             break;
         }
     }
-    let out = first_fragment(&h).output.expect("an output");
-    assert!((out[0] - 0.505).abs() < 1e-6, "{out:?}");
-    assert!((out[1] - (0.25 + 0.25)).abs() < 1e-6, "{out:?}");
+    h.run_steps(2);
+    let painted = painted_textures(&h);
+    assert!(
+        painted.iter().any(|n| n == "pixel-view-watch"),
+        "the view paints {painted:?}"
+    );
+    assert!(!painted.iter().any(|n| n == "pixel-view"), "{painted:?}");
+    h.get_by_label("variable picture").click();
+    h.run_steps(4);
+    let painted = painted_textures(&h);
+    assert!(
+        painted
+            .iter()
+            .any(|n| n == "pixel-view" || n == "pixel-view-fine"),
+        "the view paints {painted:?}"
+    );
+    assert!(
+        !painted.iter().any(|n| n == "pixel-view-watch"),
+        "{painted:?}"
+    );
 }

@@ -57,6 +57,22 @@ fn pixel_tooltip(ui: &mut Ui, capture: &FrameCapture, x: u32, y: u32, lang: Lang
         num(c[1]),
         num(c[2])
     ));
+    // The debugger's watch over the frame, read at this pixel (y up, as the pixel's own).
+    if let Some(w) = capture.shaders.as_ref().and_then(|r| r.watch.as_ref())
+        && let Some(kind) = w.kind
+    {
+        let said = match w.at(x, y) {
+            Some(v) => crate::app::views::watch_picture::value_words(kind, v),
+            None => lang
+                .tr("the line did not run here", "这里没有执行该行")
+                .to_owned(),
+        };
+        let at = match lang {
+            Lang::En => format!("after line {}", w.line),
+            Lang::Zh => format!("第 {} 行之后", w.line),
+        };
+        ui.label(RichText::new(format!("{} ({at}): {said}", w.expression)).monospace());
+    }
     ui.label(RichText::new(lang.tr("click to inspect", "单击查看详情")).weak());
 }
 

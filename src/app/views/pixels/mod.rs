@@ -34,6 +34,9 @@ pub struct PixelView {
     pyramid: depth_and_mips::Pyramid,
     /// Show the mip pyramid under a texturing buffer.
     show_pyramid: bool,
+    /// Draw the variable picture (the debugger's watch over the frame, or its cost view) in
+    /// place of the buffer while there is one: the step's subject, big, on a phone too.
+    show_watch: bool,
     /// The inspected pixel's record, per capture and pixel.
     record: Option<(u64, (u32, u32), pipeline::capture::PixelRecord)>,
     /// Where the picture (the image, the depth curve, the pyramid) was drawn this frame.
@@ -60,6 +63,7 @@ impl Default for PixelView {
             textures: texture::Textures::default(),
             pyramid: depth_and_mips::Pyramid::default(),
             show_pyramid: true,
+            show_watch: true,
             record: None,
             picture: Vec::new(),
             subject: Vec::new(),
@@ -69,6 +73,22 @@ impl Default for PixelView {
             fitted: Vec2::ZERO,
         }
     }
+}
+
+/// The variable picture the selection asks for and the frame drew: the watch, or else the
+/// cost view; `None` when neither, or when no fragment ran the watched line.
+fn watched<'c>(
+    session: &Session,
+    capture: &'c FrameCapture,
+) -> Option<&'c pipeline::capture::WatchPicture> {
+    let sel = &session.selection;
+    let record = capture.shaders.as_ref()?;
+    let picture = match (&record.watch, &record.cost) {
+        (Some(w), _) if sel.watch.is_some() => w,
+        (_, Some(c)) if sel.cost => c,
+        _ => return None,
+    };
+    (picture.kind.is_some() && picture.width == capture.width()).then_some(picture)
 }
 
 fn overlay_name(kind: OverlayKind, l: Lang) -> &'static str {
@@ -133,6 +153,13 @@ impl PixelView {
                         "同时显示纹理的所有层级：每一层是上一层的 2×2 盒式滤波。",
                     ));
             }
+            if sel.watch.is_some() || sel.cost {
+                ui.checkbox(&mut self.show_watch, lang.tr("variable picture", "变量图"))
+                    .on_hover_text(lang.tr(
+                        "The shader panel's watch over the frame (or its cost view) drawn here, in place of the buffer: a number on a ramp, dark blue the least and yellow the greatest; a condition yellow where it holds; grey checks where no fragment ran the line. Hover for the value at a pixel.",
+                        "着色器面板的整帧监视（或开销视图）画在这里，代替缓冲：数值用色带表示，深蓝最小、黄色最大；条件成立处为黄色；灰色棋盘格是没有片元执行该行之处。悬停可看某个像素的值。",
+                    ));
+            }
             if ui
                 .button(lang.tr("Fit", "适应窗口"))
                 .on_hover_text(lang.tr(
@@ -146,6 +173,24 @@ impl PixelView {
             }
         });
         cmds
+    }
+
+    /// The texture the image shows at magnification `zoom`, and its lighting term's gain: the
+    /// variable picture while there is one and it is ticked, the buffer otherwise.
+    fn texture(
+        &mut self,
+        ctx: &egui::Context,
+        session: &Session,
+        capture: &FrameCapture,
+        zoom: f32,
+    ) -> (egui::TextureHandle, f32) {
+        match self.show_watch.then(|| watched(session, capture)).flatten() {
+            Some(picture) => (
+                self.textures.watch(ctx, session.shown_generation, picture),
+                1.0,
+            ),
+            None => self.textures.get(ctx, session, capture, zoom),
+        }
     }
 
     /// The depth buffer's drawing: linear or not, and its range.
@@ -215,7 +260,7 @@ impl PixelView {
         if session.view_pixels != Some(pixels) {
             cmds.push(Command::View(ViewCommand::SetViewPixels(pixels)));
         }
-        let (texture, gain) = self.textures.get(ui.ctx(), session, capture, view.zoom);
+        let (texture, gain) = self.texture(ui.ctx(), session, capture, view.zoom);
         let image = Rect::from_min_max(
             view.to_screen([0.0, 0.0]),
             view.to_screen([view.size.x, view.size.y]),

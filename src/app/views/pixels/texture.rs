@@ -17,6 +17,8 @@ pub(super) struct Textures {
     lesson: crate::app::views::BufferTexture,
     at_view_size: crate::app::views::BufferTexture,
     gain: crate::app::views::TermGain,
+    /// The variable picture's, per frame shown and expression.
+    watch: Option<((u64, usize, String), egui::TextureHandle)>,
 }
 
 impl Textures {
@@ -68,5 +70,27 @@ impl Textures {
             },
         );
         (texture, gain)
+    }
+
+    /// The texture of the variable picture `picture` of the frame `generation` (its value as
+    /// a colour, a number on the ramp), made again when either changes.
+    pub(super) fn watch(
+        &mut self,
+        ctx: &egui::Context,
+        generation: u64,
+        picture: &pipeline::capture::WatchPicture,
+    ) -> egui::TextureHandle {
+        let key = (generation, picture.line, picture.expression.clone());
+        if let Some((k, t)) = &self.watch
+            && *k == key
+        {
+            return t.clone();
+        }
+        let drawn = picture.drawn(pipeline::capture::WatchView::Value);
+        let size = [drawn.image.width() as usize, drawn.image.height() as usize];
+        let image = egui::ColorImage::from_rgba_unmultiplied(size, drawn.image.as_raw());
+        let t = ctx.load_texture("pixel-view-watch", image, TextureOptions::NEAREST);
+        self.watch = Some((key, t.clone()));
+        t
     }
 }
