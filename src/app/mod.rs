@@ -7,6 +7,7 @@ pub mod command;
 mod compact;
 mod editor;
 mod export_task;
+mod latency;
 mod library;
 pub mod platform;
 mod player;

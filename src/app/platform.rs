@@ -105,6 +105,14 @@ fn log_frame(ctx: &egui::Context, title: &str, frame_ms: Option<f64>) {
     }
 }
 
+/// With `PIPELENS_FRAME_LOG` set, an input's latency to its picture (`app::latency`) goes to
+/// standard error as `latency: 41.2 ms (keystroke)`; the page logs nothing.
+pub fn log_latency(ms: f64, what: &str) {
+    if super::latency::logging() {
+        eprintln!("latency: {ms:.1} ms ({what})");
+    }
+}
+
 /// Whether the app writes files (the desktop) rather than offering downloads (the browser).
 pub const WRITES_FILES: bool = cfg!(not(target_arch = "wasm32"));
 

@@ -79,6 +79,8 @@ pub struct PipelensApp {
     /// This frame, the narration runs in a band across the window's foot (see
     /// `narration_in_band`); the stage's view controls are then in the bar's Show menu.
     pub(super) band: bool,
+    /// A keystroke or pixel click waiting for its picture, timed with the frame log on.
+    waiting: Option<super::latency::Waiting>,
     /// The progress as last saved: when the session's differs, a frame is asked for after the
     /// save interval, so that eframe saves it even if nothing else moves (a browser tab).
     pub(super) saved_progress: progress::Progress,
@@ -117,6 +119,7 @@ impl PipelensApp {
             commands: Vec::new(),
             step_opened: 0,
             band: false,
+            waiting: None,
             watched: None,
             editor: editor::Editor::default(),
             inbox: platform::Inbox::default(),
@@ -172,6 +175,7 @@ impl PipelensApp {
 
     /// Draws one frame and applies the commands it produced.
     pub fn frame(&mut self, ui: &mut egui::Ui) {
+        let started = web_time::Instant::now();
         self.session.poll();
         if self.session.progress != self.saved_progress {
             ui.ctx()
@@ -263,11 +267,35 @@ impl PipelensApp {
         {
             self.session.set_drafting(true);
         }
+        self.apply_commands(ui.ctx(), started);
+    }
+
+    /// Applies the frame's commands, then renders what the view needs that the capture shown
+    /// did not keep (a buffer, a pixel). With the frame log on, a keystroke or a pixel click
+    /// among them is timed until its picture is drawn (`latency`).
+    fn apply_commands(&mut self, ctx: &egui::Context, started: web_time::Instant) {
+        let typed = ctx.input(|i| {
+            i.events
+                .iter()
+                .any(|e| matches!(e, egui::Event::Key { .. } | egui::Event::Text(_)))
+        });
+        let timed = super::latency::logging()
+            .then(|| {
+                self.commands
+                    .iter()
+                    .find_map(|c| super::latency::timed(c, typed))
+            })
+            .flatten();
+        let before = self.session.generation;
         for cmd in std::mem::take(&mut self.commands) {
             self.session.apply(cmd);
         }
         // A buffer or a pixel chosen that the capture shown did not keep: render it.
         self.session.ensure_captured();
+        if let Some(what) = timed {
+            self.waiting =
+                super::latency::wait(what, started, before, &self.session).or(self.waiting);
+        }
     }
 
     /// The shader panel on the right: the student's GLSL, its debugger and own uniforms.
@@ -531,6 +559,9 @@ fn split(ui: &egui::Ui, aspect: Option<f32>) -> (egui::Rect, egui::Rect, egui::R
 impl eframe::App for PipelensApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.frame(ui);
+        if let Some((ms, what)) = super::latency::arrived(&mut self.waiting, &self.session) {
+            platform::log_latency(ms, what);
+        }
         let ms = self.session.times.map(|t| t.total().as_secs_f64() * 1e3);
         let share = self.picture_share(ui.ctx().content_rect());
         platform::report(ui.ctx(), &self.title(), ms, share);
