@@ -31,16 +31,18 @@ pub fn timed(command: &Command, typed: bool) -> Option<&'static str> {
     }
 }
 
-/// Whether the log is on (`PIPELENS_FRAME_LOG`, on the desktop).
+/// Whether inputs are timed: the frame log is on (`platform::frame_log`).
 #[must_use]
 pub fn logging() -> bool {
-    #[cfg(not(target_arch = "wasm32"))]
-    {
-        static ON: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
-        *ON.get_or_init(|| std::env::var_os("PIPELENS_FRAME_LOG").is_some())
+    super::platform::frame_log()
+}
+
+/// Writes an input's latency to standard error, `latency: 41.2 ms (keystroke)`, beside the
+/// frame log's `frame:` lines.
+pub fn log(ms: f64, what: &str) {
+    if logging() {
+        eprintln!("latency: {ms:.1} ms ({what})");
     }
-    #[cfg(target_arch = "wasm32")]
-    false
 }
 
 /// The input `what`, handled in the frame that started `since`, waits for the render the

@@ -18,6 +18,7 @@ pub mod selection;
 pub mod session;
 pub mod shortcuts;
 mod start;
+mod step_panels;
 mod style;
 mod toolbar;
 pub mod view_resolution;

@@ -92,10 +92,7 @@ pub fn report(ctx: &egui::Context, title: &str, frame_ms: Option<f64>, share: f3
 /// `scripts/native-frames.sh` to measure the app as it runs, its window painting.
 #[cfg(not(target_arch = "wasm32"))]
 fn log_frame(ctx: &egui::Context, title: &str, frame_ms: Option<f64>) {
-    static ON: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
-    let Some(ms) =
-        frame_ms.filter(|_| *ON.get_or_init(|| std::env::var_os("PIPELENS_FRAME_LOG").is_some()))
-    else {
+    let Some(ms) = frame_ms.filter(|_| frame_log()) else {
         return;
     };
     let id = egui::Id::unique("pipelens-frame-logged");
@@ -105,12 +102,17 @@ fn log_frame(ctx: &egui::Context, title: &str, frame_ms: Option<f64>) {
     }
 }
 
-/// With `PIPELENS_FRAME_LOG` set, an input's latency to its picture (`app::latency`) goes to
-/// standard error as `latency: 41.2 ms (keystroke)`; the page logs nothing.
-pub fn log_latency(ms: f64, what: &str) {
-    if super::latency::logging() {
-        eprintln!("latency: {ms:.1} ms ({what})");
+/// Whether the frame log is on: `PIPELENS_FRAME_LOG` set, on the desktop (the page reports its
+/// frame times in the document instead).
+#[must_use]
+pub fn frame_log() -> bool {
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        static ON: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+        *ON.get_or_init(|| std::env::var_os("PIPELENS_FRAME_LOG").is_some())
     }
+    #[cfg(target_arch = "wasm32")]
+    false
 }
 
 /// Whether the app writes files (the desktop) rather than offering downloads (the browser).

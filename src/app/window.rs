@@ -298,30 +298,6 @@ impl PipelensApp {
         }
     }
 
-    /// The shader panel on the right: the student's GLSL, its debugger and own uniforms.
-    fn shader_panel(&mut self, ui: &mut egui::Ui) {
-        let lang = self.session.lang;
-        // Wide enough for an 80-column line of code where the window allows it (at
-        // 1920 points, 760 leave the picture more than half), narrower in a smaller one.
-        let wide = (ui.ctx().content_rect().width() * 0.4).clamp(520.0, 760.0);
-        egui::Panel::right("shader")
-            .default_size(wide)
-            .resizable(true)
-            .show(ui, |ui| {
-                // The code at the chrome's size in classroom mode too: the picture and the
-                // narration are what the room reads, and the code's type stays no larger
-                // than the narration's.
-                super::style::chrome_style(ui);
-                ui.heading(lang.tr("Shaders (GLSL)", "着色器（GLSL）"));
-                self.commands.extend(views::shader::ui(
-                    ui,
-                    &mut self.shader_editor,
-                    &self.session,
-                    std::path::Path::new(self.export_dir.trim()),
-                ));
-            });
-    }
-
     /// The bar at the top: the desktop's, or a small window's one row; whether the window is
     /// small (see [`window_size::is_compact`]).
     fn bar(&mut self, ui: &mut egui::Ui) -> bool {
@@ -332,51 +308,6 @@ impl PipelensApp {
             self.top_bar(ui);
         }
         compact
-    }
-
-    /// On entering a step, the panels it needs: a step that draws a variable over the frame
-    /// or names its shader lines opens the shader panel on the fragment shader's tab (the lines
-    /// scrolled to), and a step's `panels` are opened (the inspector where there is room). Not
-    /// in a small window, where a panel covers the picture.
-    fn open_for_step(&mut self, ctx: &egui::Context, compact: bool) {
-        if self.step_opened == self.session.step_entered {
-            return;
-        }
-        self.step_opened = self.session.step_entered;
-        if compact {
-            return;
-        }
-        let step = self.session.lesson.as_ref().map(|p| p.current());
-        let lines = step.and_then(|s| s.shader_lines);
-        let panels = step.map(|s| s.panels.clone()).unwrap_or_default();
-        if self.session.selection.watch.is_some() || lines.is_some() {
-            self.panels.shader = true;
-            self.shader_editor.tab = views::shader::Tab::Shader(pipeline::shader::Stage::Fragment);
-        }
-        self.shader_editor.debugger.lines = lines.map(|l| (l, true));
-        for p in panels {
-            match p {
-                crate::lesson::script::StepPanel::Inspector => {
-                    self.panels.inspector |= self.room_for_inspector(ctx);
-                }
-                crate::lesson::script::StepPanel::Shader => self.panels.shader = true,
-            }
-        }
-    }
-
-    /// Whether the inspector can open beside what is open without crushing the picture: the
-    /// shader panel and the inspector together need a wide window (a 1366-point projector
-    /// keeps the picture and the code; the inspector then opens when asked, with I).
-    fn room_for_inspector(&self, ctx: &egui::Context) -> bool {
-        !self.panels.shader || ctx.content_rect().width() >= 1600.0
-    }
-
-    /// Whether the narration runs in a band across the window's foot rather than in a card over
-    /// the picture: with the shader panel open in a window narrower than 1600 points (a
-    /// 1366×768 projector), where a card under the picture would leave it a fifth of the
-    /// window; across both the picture and the code its words take fewer lines.
-    fn narration_in_band(&self, ctx: &egui::Context) -> bool {
-        self.panels.shader && ctx.content_rect().width() < 1600.0
     }
 
     /// What the narration (the card, a small window's sheet, or the band) asked for.
@@ -560,7 +491,7 @@ impl eframe::App for PipelensApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         self.frame(ui);
         if let Some((ms, what)) = super::latency::arrived(&mut self.waiting, &self.session) {
-            platform::log_latency(ms, what);
+            super::latency::log(ms, what);
         }
         let ms = self.session.times.map(|t| t.total().as_secs_f64() * 1e3);
         let share = self.picture_share(ui.ctx().content_rect());

@@ -40,9 +40,14 @@ pub struct Debugger {
     /// condition's first pixel).
     pub show_line: Option<usize>,
     /// The lesson step's lines of the fragment shader (`shader_lines`), first and last, and
-    /// whether they are still to be scrolled to.
-    pub lines: Option<((usize, usize), bool)>,
+    /// for how many more frames they are scrolled to ([`REVEAL_FRAMES`] on entering the step).
+    pub lines: Option<((usize, usize), u8)>,
 }
+
+/// For how many frames a step's lines are scrolled to on entering it: the panel's layout
+/// settles over the first few (the code's scroll area learns its size, a watch's legend and
+/// the narration band take their rows), and a scroll asked in the first alone can be undone.
+pub const REVEAL_FRAMES: u8 = 8;
 
 /// A move of the step shown.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -420,8 +425,9 @@ pub fn panel(
     let (mut marks, step_line) = stepped(ui, debugger, stage, session);
     if stage == Stage::Fragment {
         marks.watched = session.selection.watch.as_ref().map(|(line, _)| *line);
-        if let Some((lines, reveal)) = &mut debugger.lines {
-            marks.lines = Some((*lines, std::mem::take(reveal)));
+        if let Some((lines, frames)) = &mut debugger.lines {
+            marks.lines = Some((*lines, *frames > 0));
+            *frames = frames.saturating_sub(1);
         }
     }
     let mut command = super::breakpoints::list(

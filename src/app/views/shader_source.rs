@@ -31,6 +31,9 @@ pub(super) struct Touched {
     pub gutter: Option<usize>,
     /// The line the text cursor is on, from 1, while the source has the keyboard.
     pub cursor_line: Option<usize>,
+    /// The start of the line to bring into view (the step's lines on entering the step, the
+    /// debugger's line when it moved).
+    scroll_to: Option<egui::Rect>,
 }
 
 /// The source with its line numbers, highlighted, with `errors` (`(line, message)`) and the
@@ -45,6 +48,7 @@ pub(super) fn code(
         changed: false,
         gutter: None,
         cursor_line: None,
+        scroll_to: None,
     };
     egui::ScrollArea::vertical()
         .id_salt(("shader source", tab))
@@ -89,6 +93,11 @@ pub(super) fn code(
                     .show(ui, |ui| {
                         text(ui, (source, tab), errors, marks, &mut touched, &numbers);
                     });
+                // Asked here, outside the sideways area: a scroll area takes both axes'
+                // targets, so one asked inside it would never reach this vertical one.
+                if let Some(start) = touched.scroll_to.take() {
+                    ui.scroll_to_rect(start, Some(egui::Align::Center));
+                }
             });
         });
     touched
@@ -137,7 +146,7 @@ fn text(
             .and_then(|k| out.galley.rows.get(k))
             .map(|row| row.rect().translate(out.galley_pos.to_vec2()))
     };
-    bands(ui, marks, &row_rect, out.response.rect.x_range());
+    touched.scroll_to = bands(ui, marks, &row_rect, out.response.rect.x_range());
     if numbers.clicked()
         && let Some(y) = numbers.interact_pointer_pos().map(|p| p.y)
     {
@@ -199,20 +208,24 @@ fn text(
 /// The step's line highlighted (over the text: the editor's own background would hide it
 /// beneath; light enough to read through, with a bar at its left edge) and scrolled to when it
 /// moved, the watched line outlined, and the lesson step's lines marked with a bar at the right
-/// (scrolled to on entering the step); `row_rect` is a line's row on screen.
+/// (scrolled to on entering the step); `row_rect` is a line's row on screen. Returns the start
+/// of the line to scroll to, if any.
 fn bands(
     ui: &Ui,
     marks: &Marks,
     row_rect: &dyn Fn(usize) -> Option<egui::Rect>,
     x_range: egui::Rangef,
-) {
+) -> Option<egui::Rect> {
+    let mut scroll_to = None;
     if let Some(((first, last), reveal)) = marks.lines
         && let (Some(top), Some(bottom)) = (row_rect(first), row_rect(last))
     {
         let block = egui::Rect::from_x_y_ranges(x_range, top.top()..=bottom.bottom());
         if reveal && !marks.reveal {
-            let start = egui::Rect::from_x_y_ranges(block.left()..=block.left(), block.y_range());
-            ui.scroll_to_rect(start, Some(egui::Align::Center));
+            scroll_to = Some(egui::Rect::from_x_y_ranges(
+                block.left()..=block.left(),
+                block.y_range(),
+            ));
         }
         let teal = Color32::from_rgb(70, 190, 170);
         ui.painter()
@@ -226,8 +239,10 @@ fn bands(
     if let Some(rect) = marks.current.and_then(row_rect) {
         if marks.reveal {
             // Up or down to the line, not sideways: the line's start is what is asked for.
-            let start = egui::Rect::from_x_y_ranges(rect.left()..=rect.left(), rect.y_range());
-            ui.scroll_to_rect(start, Some(egui::Align::Center));
+            scroll_to = Some(egui::Rect::from_x_y_ranges(
+                rect.left()..=rect.left(),
+                rect.y_range(),
+            ));
         }
         let band = egui::Rect::from_x_y_ranges(x_range, rect.y_range());
         let amber = Color32::from_rgb(230, 190, 60);
@@ -248,4 +263,5 @@ fn bands(
             egui::StrokeKind::Inside,
         );
     }
+    scroll_to
 }

@@ -21,6 +21,9 @@ pub struct WatchPanel {
     pub view: WatchView,
     /// Why the last Show did nothing.
     pub error: Option<String>,
+    /// The pixel view draws this picture (the window sets it each frame): the row keeps its
+    /// legend and leaves the picture out, so that the code keeps its room.
+    pub in_view: bool,
     /// The picture's texture, with the frame and view it shows.
     texture: Option<((usize, WatchView), egui::TextureHandle)>,
     /// The watch the row last showed: one set elsewhere (a lesson's step) is copied into it.
@@ -34,6 +37,7 @@ impl Default for WatchPanel {
             line: 1,
             view: WatchView::Value,
             error: None,
+            in_view: false,
             texture: None,
             synced: None,
         }
@@ -187,6 +191,9 @@ fn shown(
     };
     let drawn = picture.drawn(panel.view);
     legend(ui, panel, picture, kind, drawn.range, lang, asked);
+    if panel.in_view {
+        return;
+    }
     let texture = match &panel.texture {
         Some((k, t)) if *k == key => t.clone(),
         _ => {

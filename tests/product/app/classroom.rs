@@ -129,3 +129,37 @@ fn the_code_and_the_picture_share_a_1366_projector() {
         "beside the code the picture is too small: {small:?}"
     );
 }
+
+/// Entering lesson 24's variable-picture step on a 1366×768 projector in classroom mode, its
+/// `shader_lines = [22, 24]` are scrolled into the code's view (they lie below its fold): line
+/// 22's row is between the panel's rows above the code and the narration band under it. (The
+/// scroll was once asked inside the code's sideways scroll area, which swallowed it.)
+#[test]
+fn a_steps_lines_below_the_fold_are_scrolled_into_view() {
+    let path = crate::support::repo().join("lessons/24-shader-programs.toml");
+    let mut h = super::sized_lesson_harness(&path, [1382.0, 784.0]);
+    let ctx = h.ctx.clone();
+    h.state_mut().set_classroom(&ctx, true);
+    crate::app::go_to_step_titled(&mut h, "The variable picture: where n·l < 0");
+    h.run_steps(12);
+    let code = h
+        .get_by_role(egui::accesskit::Role::MultilineTextInput)
+        .rect();
+    let lines = h.state().shader_editor.fragment.lines().count();
+    assert!(lines >= 24, "{lines} lines");
+    // The editor lays out one row per line (no wrapping), at least 24 rows.
+    let row = code.height() / lines.max(24) as f32;
+    let line_22 = code.top() + 21.5 * row;
+    let above = h
+        .get_by_label("Cost: the steps each fragment ran")
+        .rect()
+        .bottom();
+    let band = h
+        .get_by_label_contains("8. The variable picture")
+        .rect()
+        .top();
+    assert!(
+        line_22 > above && line_22 < band,
+        "line 22 at y = {line_22}, the code's view from {above} to {band}"
+    );
+}

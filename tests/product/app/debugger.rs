@@ -399,7 +399,7 @@ fn a_step_opens_the_panels_it_speaks_of_on_its_lines() {
     let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
     assert!(!h.state().panels.inspector && !h.state().panels.shader);
     crate::app::go_to_step_titled(&mut h, "Edit: toon bands");
-    h.run_steps(4);
+    h.run_steps(12);
     let app = h.state();
     assert!(app.panels.inspector && app.panels.shader);
     assert_eq!(
@@ -408,8 +408,8 @@ fn a_step_opens_the_panels_it_speaks_of_on_its_lines() {
     );
     assert_eq!(
         app.shader_editor.debugger.lines,
-        Some(((16, 18), false)),
-        "marked, and scrolled to once"
+        Some(((16, 18), 0)),
+        "marked, and scrolled to over the step's first frames only"
     );
     let lines: Vec<&str> = app.shader_editor.fragment.lines().collect();
     assert!(lines[15].contains("float d = max(dot(n, l), 0.0);"));

@@ -37,6 +37,8 @@ pub struct PixelView {
     /// Draw the variable picture (the debugger's watch over the frame, or its cost view) in
     /// place of the buffer while there is one: the step's subject, big, on a phone too.
     show_watch: bool,
+    /// Whether the image drew the variable picture this frame.
+    pub drew_watch: bool,
     /// The inspected pixel's record, per capture and pixel.
     record: Option<(u64, (u32, u32), pipeline::capture::PixelRecord)>,
     /// Where the picture (the image, the depth curve, the pyramid) was drawn this frame.
@@ -64,6 +66,7 @@ impl Default for PixelView {
             pyramid: depth_and_mips::Pyramid::default(),
             show_pyramid: true,
             show_watch: true,
+            drew_watch: false,
             record: None,
             picture: Vec::new(),
             subject: Vec::new(),
@@ -184,7 +187,9 @@ impl PixelView {
         capture: &FrameCapture,
         zoom: f32,
     ) -> (egui::TextureHandle, f32) {
-        match self.show_watch.then(|| watched(session, capture)).flatten() {
+        let picture = self.show_watch.then(|| watched(session, capture)).flatten();
+        self.drew_watch = picture.is_some();
+        match picture {
             Some(picture) => (
                 self.textures.watch(ctx, session.shown_generation, picture),
                 1.0,

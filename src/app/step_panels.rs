@@ -1,0 +1,92 @@
+//! The side panels a lesson's step calls for: those it opens on entering it (the code where it
+//! draws a variable over the frame or names its lines, the inspector where there is room),
+//! where the narration goes beside the code, and the shader panel itself.
+
+use super::PipelensApp;
+
+impl PipelensApp {
+    /// The shader panel on the right: the student's GLSL, its debugger and own uniforms (the
+    /// variable picture left out while the view draws it).
+    pub(super) fn shader_panel(&mut self, ui: &mut egui::Ui) {
+        let lang = self.session.lang;
+        // The variable picture the view draws (last frame) is left out of the panel.
+        let sel = &self.session.selection;
+        let in_view = self.pixel_view.drew_watch && sel.stage.space().is_none();
+        let debugger = &mut self.shader_editor.debugger;
+        debugger.watch.in_view = in_view && sel.watch.is_some();
+        debugger.cost.in_view = in_view && sel.watch.is_none() && sel.cost;
+        // Wide enough for an 80-column line of code where the window allows it (at
+        // 1920 points, 760 leave the picture more than half), narrower in a smaller one.
+        let wide = (ui.ctx().content_rect().width() * 0.4).clamp(520.0, 760.0);
+        egui::Panel::right("shader")
+            .default_size(wide)
+            .resizable(true)
+            .show(ui, |ui| {
+                // The code at the chrome's size in classroom mode too: the picture and the
+                // narration are what the room reads, and the code's type stays no larger
+                // than the narration's.
+                crate::app::style::chrome_style(ui);
+                ui.heading(lang.tr("Shaders (GLSL)", "着色器（GLSL）"));
+                self.commands.extend(crate::app::views::shader::ui(
+                    ui,
+                    &mut self.shader_editor,
+                    &self.session,
+                    std::path::Path::new(self.export_dir.trim()),
+                ));
+            });
+    }
+
+    /// On entering a step, the panels it needs: a step that draws a variable over the frame
+    /// or names its shader lines opens the shader panel on the fragment shader's tab (the lines
+    /// scrolled to), and a step's `panels` are opened (the inspector where there is room; one
+    /// left open folds when the step opens the code where there is none). Not in a small
+    /// window, where a panel covers the picture.
+    pub(super) fn open_for_step(&mut self, ctx: &egui::Context, compact: bool) {
+        if self.step_opened == self.session.step_entered {
+            return;
+        }
+        self.step_opened = self.session.step_entered;
+        if compact {
+            return;
+        }
+        let step = self.session.lesson.as_ref().map(|p| p.current());
+        let lines = step.and_then(|s| s.shader_lines);
+        let panels = step.map(|s| s.panels.clone()).unwrap_or_default();
+        let had_shader = self.panels.shader;
+        if self.session.selection.watch.is_some() || lines.is_some() {
+            self.panels.shader = true;
+            self.shader_editor.tab =
+                crate::app::views::shader::Tab::Shader(pipeline::shader::Stage::Fragment);
+        }
+        self.shader_editor.debugger.lines =
+            lines.map(|l| (l, crate::app::views::debugger::REVEAL_FRAMES));
+        for p in panels {
+            match p {
+                crate::lesson::script::StepPanel::Inspector => {
+                    self.panels.inspector |= self.room_for_inspector(ctx);
+                }
+                crate::lesson::script::StepPanel::Shader => self.panels.shader = true,
+            }
+        }
+        // The code opened by the step beside an inspector left open in a narrow window: the
+        // inspector folds (I brings it back), so that the picture is not crushed between them.
+        if self.panels.shader && !had_shader && !self.room_for_inspector(ctx) {
+            self.panels.inspector = false;
+        }
+    }
+
+    /// Whether the inspector can open beside what is open without crushing the picture: the
+    /// shader panel and the inspector together need a wide window (a 1366-point projector
+    /// keeps the picture and the code; the inspector then opens when asked, with I).
+    pub(super) fn room_for_inspector(&self, ctx: &egui::Context) -> bool {
+        !self.panels.shader || ctx.content_rect().width() >= 1600.0
+    }
+
+    /// Whether the narration runs in a band across the window's foot rather than in a card over
+    /// the picture: with the shader panel open in a window narrower than 1600 points (a
+    /// 1366×768 projector), where a card under the picture would leave it a fifth of the
+    /// window; across both the picture and the code its words take fewer lines.
+    pub(super) fn narration_in_band(&self, ctx: &egui::Context) -> bool {
+        self.panels.shader && ctx.content_rect().width() < 1600.0
+    }
+}
