@@ -200,9 +200,11 @@ impl ShaderEditor {
         // fragment stage (a matrix lab) is on the vertex tab, and so is a lab whose TODO is in
         // its vertex shader only (Gouraud shading).
         if matches!(self.tab, Tab::Shader(_)) {
+            // The sources as written, not as shown (their comments are in the reader's
+            // language).
             let own = |source: &str, shipped: &[&str]| shipped.contains(&source);
-            let vertex_shipped = own(&self.vertex, &shader::SHIPPED_VERTEX);
-            let fragment_shipped = own(&self.fragment, &shader::SHIPPED_FRAGMENT);
+            let vertex_shipped = own(&sh.programs.vertex.source, &shader::SHIPPED_VERTEX);
+            let fragment_shipped = own(&sh.programs.fragment.source, &shader::SHIPPED_FRAGMENT);
             let todo_in_vertex = self.vertex.contains("TODO") && !self.fragment.contains("TODO");
             self.tab = Tab::Shader(if (!vertex_shipped && fragment_shipped) || todo_in_vertex {
                 Stage::Vertex

@@ -135,33 +135,53 @@ fn the_shader_source_keeps_the_focus_while_messages_appear() {
     );
 }
 
+/// The lesson at `path` at 1920×1080 in `lang`, with the shader panel open.
+fn in_language(
+    path: &std::path::Path,
+    lang: Lang,
+) -> egui_kittest::Harness<'static, pipelens::app::PipelensApp> {
+    let mut h = crate::app::sized_lesson_harness(path, [1920.0, 1080.0]);
+    h.state_mut()
+        .session
+        .apply(pipelens::app::session::Command::View(ViewCommand::SetLang(
+            lang,
+        )));
+    h.state_mut().panels.shader = true;
+    h
+}
+
 /// The shader panel opens on the stage a step is about: lesson 24's vertex-shader step (its own
 /// vertex shader beside pipelens' Blinn-Phong) and its Gouraud lab (both shaders its own, the
 /// TODO in the vertex shader) show the vertex shader's source; the diffuse lab its fragment's.
+/// In Chinese too, where the sources are shown with their comments translated.
 #[test]
 fn the_shader_panel_opens_on_the_stage_the_step_is_about() {
     use egui_kittest::kittest::Queryable;
     let path = crate::support::repo().join("lessons/24-shader-programs.toml");
-    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    h.state_mut().panels.shader = true;
-    for (title, shown) in [
-        (
-            "The vertex shader: a program per vertex",
-            "gl_Position = projection",
-        ),
-        (
-            "Lab: Gouraud shading in the vertex shader",
-            "v_specular = specular;",
-        ),
-        ("Lab: the diffuse term", "// TODO: the diffuse term"),
-    ] {
-        crate::app::go_to_step_titled(&mut h, title);
-        h.run_steps(4);
-        let source = h
-            .get_by_role(egui::accesskit::Role::MultilineTextInput)
-            .value()
-            .unwrap_or_default();
-        assert!(source.contains(shown), "{title}: the panel shows {source}");
+    for lang in [Lang::En, Lang::Zh] {
+        let mut h = in_language(&path, lang);
+        for (title, shown) in [
+            (
+                "The vertex shader: a program per vertex",
+                "gl_Position = projection",
+            ),
+            (
+                "Lab: Gouraud shading in the vertex shader",
+                "v_specular = specular;",
+            ),
+            ("Lab: the diffuse term", "out vec4 color;"),
+        ] {
+            crate::app::go_to_step_titled(&mut h, title);
+            h.run_steps(4);
+            let source = h
+                .get_by_role(egui::accesskit::Role::MultilineTextInput)
+                .value()
+                .unwrap_or_default();
+            assert!(
+                source.contains(shown),
+                "{lang:?} {title}: the panel shows {source}"
+            );
+        }
     }
 }
 
@@ -171,13 +191,8 @@ fn the_shader_panel_opens_on_the_stage_the_step_is_about() {
 #[test]
 fn a_lab_s_starter_reads_in_chinese_and_is_still_the_starter() {
     use egui_kittest::kittest::Queryable;
-    use pipelens::app::session::Command;
     let path = crate::support::repo().join("lessons/24-shader-programs.toml");
-    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
-    h.state_mut().panels.shader = true;
-    h.state_mut()
-        .session
-        .apply(Command::View(ViewCommand::SetLang(Lang::Zh)));
+    let mut h = in_language(&path, Lang::Zh);
     crate::app::go_to_step_titled(&mut h, "Lab: Gouraud shading in the vertex shader");
     h.run_steps(4);
     let source = h
