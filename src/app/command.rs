@@ -122,8 +122,8 @@ pub enum SelectionCommand {
     SelectPixel(Option<(u32, u32)>),
     /// Draw (or clear) the profile line.
     SetProfile(Option<[f32; 4]>),
-    /// Watch a fragment-shader expression after a line over the frame (or stop).
-    SetWatch(Option<(usize, String)>),
+    /// Watch a shader's expression after a line over the frame (or stop).
+    SetWatch(Option<pipeline::shader::probe::WatchSpec>),
     /// Turn the debugger's cost view on or off.
     SetCost(bool),
 }

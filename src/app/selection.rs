@@ -35,9 +35,9 @@ pub struct Selection {
     pub depth_view: DepthView,
     /// The objects and figures the geometry views frame (`None`: every object).
     pub focus: Option<Vec<String>>,
-    /// The fragment shader's expression watched over the frame, and the line after which it
-    /// is read (the debugger's variable picture; `Scene::watching`).
-    pub watch: Option<(usize, String)>,
+    /// The expression watched over the frame, with its shader and the line after which it is
+    /// read (the debugger's variable picture; `Scene::watching`).
+    pub watch: Option<pipeline::shader::probe::WatchSpec>,
     /// Whether the debugger's cost view is on: the steps the fragment shader ran at each pixel
     /// (`Capture::cost`).
     pub cost: bool,

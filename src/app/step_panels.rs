@@ -14,6 +14,7 @@ impl PipelensApp {
         let in_view = self.pixel_view.drew_watch && sel.stage.space().is_none();
         let debugger = &mut self.shader_editor.debugger;
         debugger.watch.in_view = in_view && sel.watch.is_some();
+        debugger.vertex_watch.in_view = debugger.watch.in_view;
         debugger.cost.in_view = in_view && sel.watch.is_none() && sel.cost;
         // Wide enough for an 80-column line of code where the window allows it (at
         // 1920 points, 760 leave the picture more than half), narrower in a smaller one.
@@ -37,10 +38,10 @@ impl PipelensApp {
     }
 
     /// On entering a step, the panels it needs: a step that draws a variable over the frame
-    /// or names its shader lines opens the shader panel on the fragment shader's tab (the lines
-    /// scrolled to), and a step's `panels` are opened (the inspector where there is room; one
-    /// left open folds when the step opens the code where there is none). Not in a small
-    /// window, where a panel covers the picture.
+    /// or names its shader lines opens the shader panel on the watched shader's tab (the
+    /// fragment shader's, where its lines are scrolled to), and a step's `panels` are opened
+    /// (the inspector where there is room; one left open folds when the step opens the code
+    /// where there is none). Not in a small window, where a panel covers the picture.
     pub(super) fn open_for_step(&mut self, ctx: &egui::Context, compact: bool) {
         if self.step_opened == self.session.step_entered {
             return;
@@ -55,8 +56,12 @@ impl PipelensApp {
         let had_shader = self.panels.shader;
         if self.session.selection.watch.is_some() || lines.is_some() {
             self.panels.shader = true;
-            self.shader_editor.tab =
-                crate::app::views::shader::Tab::Shader(pipeline::shader::Stage::Fragment);
+            // The tab of the watched shader (a vertex shader's watch opens its own).
+            let stage = match &self.session.selection.watch {
+                Some(w) if lines.is_none() => w.stage,
+                _ => pipeline::shader::Stage::Fragment,
+            };
+            self.shader_editor.tab = crate::app::views::shader::Tab::Shader(stage);
         }
         self.shader_editor.debugger.lines =
             lines.map(|l| (l, crate::app::views::debugger::REVEAL_FRAMES));

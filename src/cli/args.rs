@@ -27,7 +27,7 @@ pub(super) fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
 }
 
 /// A watch `EXPR@LINE` (`probe::parse`).
-pub(super) fn parse_watch(s: &str) -> Result<(String, usize), String> {
+pub(super) fn parse_watch(s: &str) -> Result<pipeline::shader::probe::WatchSpec, String> {
     pipeline::shader::probe::parse(s)
 }
 

@@ -92,7 +92,10 @@ pub(super) fn export(
     opts: &ExportOptions,
     size: Option<Size>,
     samples: Option<u32>,
-    (profile, watch): (Option<[f32; 4]>, Option<&(String, usize)>),
+    (profile, watch): (
+        Option<[f32; 4]>,
+        Option<&pipeline::shader::probe::WatchSpec>,
+    ),
 ) -> Result<()> {
     let mut spec = load(scene)?;
     if let Some(s) = size {
@@ -108,7 +111,7 @@ pub(super) fn export(
         spec.settings.capture.pixel = opts.pixel;
     }
     let scene = match watch {
-        Some((expression, line)) => spec.scene.watching(*line, expression)?,
+        Some(w) => spec.scene.watching(w)?,
         None => spec.scene.clone(),
     };
     let capture = pipeline::render(&scene, &spec.settings)?;
@@ -146,8 +149,8 @@ pub(super) fn export(
     Ok(())
 }
 
-/// Step `step` (from 1) of `lesson` drawn with its fragment shader watching `expression` after
-/// `line`: the watch's files written into `out`, whole or not at all.
+/// Step `step` (from 1) of `lesson` drawn with its shaders watching `watch`: the watch's files
+/// written into `out`, whole or not at all.
 ///
 /// # Errors
 /// No step given, a step without shaders of its own, a watch that does not compile, a size the
@@ -157,7 +160,7 @@ pub(super) fn export_step_watch(
     step: Option<usize>,
     out: &Path,
     size: Option<Size>,
-    (expression, line): &(String, usize),
+    watch: &pipeline::shader::probe::WatchSpec,
 ) -> Result<ExitCode> {
     let Some(k) = step.and_then(|s| s.checked_sub(1)) else {
         anyhow::bail!("--watch on a lesson reads one step's shaders: add --step N (from 1)");
@@ -179,7 +182,7 @@ pub(super) fn export_step_watch(
     }
     let scene = spec
         .scene
-        .watching(*line, expression)
+        .watching(watch)
         .with_context(|| format!("step {}", k + 1))?;
     let capture = pipeline::render(&scene, &spec.settings)?;
     let picture = capture
@@ -203,8 +206,11 @@ pub(super) fn export_step_watch(
 
 /// What a watch saw, in a line: where it ran, its type and its range.
 fn say_watch(picture: &pipeline::capture::WatchPicture) {
-    let what = format!("`{}` after line {}", picture.expression, picture.line);
+    let what = format!("`{}` {}", picture.expression, picture.place());
     match picture.kind {
+        None if picture.from_vertex => {
+            say!("{what}: no triangle of the frame has all three corners through that line");
+        }
         None => say!("{what}: no fragment of the frame ran that line"),
         Some(pipeline::shader::probe::WatchKind::Bool) => {
             let holds = picture
@@ -218,7 +224,7 @@ fn say_watch(picture: &pipeline::capture::WatchPicture) {
                 .map(|(x, y)| format!("; the first, reading from the top, at pixel {x},{y}"))
                 .unwrap_or_default();
             say!(
-                "{what}: holds at {holds} of the {} pixels that ran the line{first}",
+                "{what}: holds at {holds} of the {} pixels that have it{first}",
                 picture.pixels_run()
             );
         }

@@ -113,10 +113,11 @@ pub enum Command {
         #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
         pixel: Option<(u32, u32)>,
         /// Also write watch.png and watch.csv: the fragment shader's expression EXPR just after
-        /// line LINE, at every pixel (as the debugger's variable picture draws it). For a
+        /// line LINE, at every pixel (as the debugger's variable picture draws it); with
+        /// EXPR@vertex:LINE the vertex shader's, interpolated over each triangle. For a
         /// lesson, with --step: the step's shaders, and only the watch's files.
         #[arg(long, value_name = "EXPR@LINE", value_parser = parse_watch)]
-        watch: Option<(String, usize)>,
+        watch: Option<pipeline::shader::probe::WatchSpec>,
     },
     /// Validate scene and lesson files and print every problem with file:line:column.
     Check {

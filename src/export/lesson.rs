@@ -402,10 +402,10 @@ fn spec_of(lesson: &Lesson, k: usize, opts: &LessonExport, t: Option<f32>) -> Re
         anyhow::bail!("{p}");
     }
     // A step that draws a variable over the frame keeps it: its picture shows it beside.
-    if let Some((line, expression)) = &lesson.steps[k].watch {
+    if let Some(watch) = &lesson.steps[k].watch {
         spec.scene = spec
             .scene
-            .watching(*line, expression)
+            .watching(watch)
             .with_context(|| format!("step {}'s watch", k + 1))?;
     }
     Ok(spec)

@@ -190,8 +190,14 @@ fn watch_legend(picture: &pipeline::capture::WatchPicture, lang: Lang) -> String
     };
     match lang {
         Lang::En => format!(
-            "{} after line {}: {said}; grey checks where no fragment ran the line",
-            picture.expression, picture.line
+            "{} {}: {said}; grey checks {}",
+            picture.expression,
+            picture.place(),
+            picture.unrun()
+        ),
+        Lang::Zh if picture.from_vertex => format!(
+            "顶点着色器第 {} 行之后的 {}，经三角形上插值：{said}；灰色棋盘格处三角形有顶点没有执行该行",
+            picture.line, picture.expression
         ),
         Lang::Zh => format!(
             "第 {} 行之后的 {}：{said}；灰色棋盘格处没有片元执行该行",

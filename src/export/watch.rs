@@ -21,20 +21,21 @@ pub fn watch_files(picture: &WatchPicture) -> Result<Vec<ExportFile>> {
     let kind = picture
         .kind
         .unwrap_or(pipeline::shader::probe::WatchKind::Float);
-    let what = format!("`{}` after line {}", picture.expression, picture.line);
+    let what = format!("`{}` {}", picture.expression, picture.place());
+    let unrun = picture.unrun();
     let shown = picture.drawn(WatchView::Value);
     let mut files = vec![ExportFile {
         name: "watch.png".to_owned(),
         description: match shown.range {
             Some((lo, hi)) => format!(
-                "{what} on the cividis ramp, dark blue {lo} to yellow {hi}; grey checks where no fragment ran the line, magenta NaN or infinite"
+                "{what} on the cividis ramp, dark blue {lo} to yellow {hi}; grey checks {unrun}, magenta NaN or infinite"
             ),
-            None if kind == pipeline::shader::probe::WatchKind::Bool => format!(
-                "{what}: yellow where it holds, dark blue where not; grey checks where no fragment ran the line"
-            ),
-            None => format!(
-                "{what} as a colour, each component clamped to [0, 1]; grey checks where no fragment ran the line"
-            ),
+            None if kind == pipeline::shader::probe::WatchKind::Bool => {
+                format!("{what}: yellow where it holds, dark blue where not; grey checks {unrun}")
+            }
+            None => {
+                format!("{what} as a colour, each component clamped to [0, 1]; grey checks {unrun}")
+            }
         },
         bytes: png_rgba(&shown.image)?,
     }];
@@ -74,7 +75,7 @@ pub fn watch_files(picture: &WatchPicture) -> Result<Vec<ExportFile>> {
     files.push(ExportFile {
         name: "watch.csv".to_owned(),
         description: format!(
-            "{what} at each pixel whose fragment ran the line: window x, y (y up), then each component"
+            "{what} at each pixel that has it: window x, y (y up), then each component"
         ),
         bytes: csv.into_bytes(),
     });

@@ -209,8 +209,8 @@ pub fn view_items(step: &Step) -> Vec<(&'static str, Item)> {
             value(r.map(number).into_iter().collect::<Array>()),
         ));
     }
-    if let Some((line, expression)) = &step.watch {
-        items.push(("watch", value(format!("{expression}@{line}"))));
+    if let Some(watch) = &step.watch {
+        items.push(("watch", value(watch.to_string())));
     }
     if !step.set.is_empty() {
         let mut set = InlineTable::new();

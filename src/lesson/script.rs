@@ -100,9 +100,10 @@ pub struct Step {
     /// The depth buffer's grey ramp `[black, white]` in window depth (`None`: the nearest and
     /// farthest depth present).
     pub depth_range: Option<[f32; 2]>,
-    /// The fragment shader's expression drawn over the frame, and the line after which it is
-    /// read (`watch = "EXPR@LINE"`; the debugger's variable picture).
-    pub watch: Option<(usize, String)>,
+    /// The shader expression drawn over the frame, with its shader and the line after which it
+    /// is read (`watch = "EXPR@LINE"` for the fragment shader, `"EXPR@vertex:LINE"`; the
+    /// debugger's variable picture).
+    pub watch: Option<pipeline::shader::probe::WatchSpec>,
     /// The fragment shader's lines the step is about, first and last, from 1
     /// (`shader_lines = [23, 25]`): the shader panel opens on them, scrolled to and marked.
     pub shader_lines: Option<(usize, usize)>,

@@ -19,6 +19,7 @@ mod params;
 mod phone;
 mod recording;
 mod steps;
+mod variable_picture;
 
 /// The app on the built-in scene, rendering synchronously so that tests are deterministic.
 fn harness() -> Harness<'static, PipelensApp> {

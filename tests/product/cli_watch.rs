@@ -86,3 +86,48 @@ fn a_condition_says_where_it_holds_and_a_bad_watch_writes_nothing() {
     );
     assert!(text(&o).contains("add --step N"), "{}", text(&o));
 }
+
+/// The rows of a watch's CSV: pixel `(x, y)` and its first value.
+fn csv_values(dir: &std::path::Path) -> std::collections::HashMap<(u32, u32), f64> {
+    let csv = std::fs::read_to_string(dir.join("watch.csv")).expect("watch.csv");
+    csv.lines()
+        .skip(1)
+        .map(|line| {
+            let v: Vec<&str> = line.split(',').collect();
+            let n = |k: usize| v[k].parse::<f64>().expect("a number");
+            ((n(0) as u32, n(1) as u32), n(2))
+        })
+        .collect()
+}
+
+/// A vertex shader's expression (`EXPR@vertex:LINE`) reaches each pixel interpolated with
+/// perspective-correct weights: for the clip w that pipelens' vertex shader writes on its line
+/// 32, `(Σ λᵢ·wᵢ/wᵢ)/(Σ λᵢ/wᵢ) = 1/(Σ λᵢ/wᵢ)`, which is by GLSL's definition
+/// `1 / gl_FragCoord.w` — the fragment shader's own watch of it, at every pixel.
+#[test]
+fn a_vertex_expression_is_interpolated_as_a_varying() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let (vertex, fragment) = (dir.path().join("vertex"), dir.path().join("fragment"));
+    let o = export_watch("gl_Position.w@vertex:32", &vertex);
+    let said = text(&o);
+    assert!(o.status.success(), "{said}");
+    assert!(
+        said.contains("after line 32 of the vertex shader, interpolated"),
+        "{said}"
+    );
+    let o = export_watch("1.0 / gl_FragCoord.w@22", &fragment);
+    assert!(o.status.success(), "{}", text(&o));
+    let (from_vertex, from_fragment) = (csv_values(&vertex), csv_values(&fragment));
+    assert!(from_vertex.len() > 30_000, "{} pixels", from_vertex.len());
+    assert_eq!(from_vertex.len(), from_fragment.len());
+    for (at, w) in &from_vertex {
+        let expected = from_fragment[at];
+        assert!(
+            (w - expected).abs() <= 1e-4 * expected.abs(),
+            "{at:?}: {w} vs {expected}"
+        );
+    }
+    // Not a shader pipelens has.
+    let o = export_watch("p@geometry:3", &dir.path().join("none"));
+    assert!(!o.status.success() && text(&o).contains("\"geometry\" is not a shader"));
+}

@@ -34,25 +34,90 @@ vec4 pipelens_as_watch(uint x) { pipelens_watch_kind = 5.0; return vec4(float(x)
 vec4 pipelens_as_watch(bool x) { pipelens_watch_kind = 6.0; return vec4(x ? 1.0 : 0.0, 0.0, 0.0, 0.0); }
 ";
 
-/// A watch as a lesson and the command line write it, `EXPR@LINE`: the expression and the line
-/// after which it is read (the last `@` separates them, so the expression may hold none).
+/// A watch as a lesson, the command line and the debugger name it: whose shader, the line
+/// after which the expression is read, and the expression.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct WatchSpec {
+    /// The shader watched: the fragment shader's value is each pixel's own; the vertex
+    /// shader's is each vertex's, interpolated over the triangle as a varying is.
+    pub stage: Stage,
+    /// The line after which the expression is read, from 1.
+    pub line: usize,
+    /// The expression, as typed.
+    pub expression: String,
+}
+
+impl WatchSpec {
+    /// A watch of the fragment shader.
+    #[must_use]
+    pub fn fragment(line: usize, expression: &str) -> Self {
+        Self {
+            stage: Stage::Fragment,
+            line,
+            expression: expression.to_owned(),
+        }
+    }
+
+    /// A watch of the vertex shader.
+    #[must_use]
+    pub fn vertex(line: usize, expression: &str) -> Self {
+        Self {
+            stage: Stage::Vertex,
+            ..Self::fragment(line, expression)
+        }
+    }
+}
+
+impl std::fmt::Display for WatchSpec {
+    /// As [`parse`] reads it: `EXPR@LINE`, `EXPR@vertex:LINE` for the vertex shader.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.stage {
+            Stage::Fragment => write!(f, "{}@{}", self.expression, self.line),
+            Stage::Vertex => write!(f, "{}@vertex:{}", self.expression, self.line),
+        }
+    }
+}
+
+/// A watch as a lesson and the command line write it, `EXPR@LINE` for a line of the fragment
+/// shader or `EXPR@vertex:LINE` for one of the vertex shader (`fragment:LINE` is also read):
+/// the expression and the line after which it is read (the last `@` separates them, so the
+/// expression may hold none).
 ///
 /// # Errors
-/// No `@`, a line that is not a whole number from 1, or no expression before it.
-pub fn parse(s: &str) -> Result<(String, usize), String> {
-    let (expression, line) = s.rsplit_once('@').ok_or_else(|| {
-        format!("expected EXPR@LINE such as \"max(dot(n, l), 0.0)@22\", got \"{s}\"")
+/// No `@`, a line that is not a whole number from 1, an unknown stage, or no expression before
+/// it.
+pub fn parse(s: &str) -> Result<WatchSpec, String> {
+    let (expression, at) = s.rsplit_once('@').ok_or_else(|| {
+        format!(
+            "expected EXPR@LINE such as \"max(dot(n, l), 0.0)@22\" (or EXPR@vertex:LINE), got \"{s}\""
+        )
     })?;
+    let (stage, line) = match at.split_once(':') {
+        None => (Stage::Fragment, at),
+        Some((stage, line)) => match stage.trim() {
+            "vertex" => (Stage::Vertex, line),
+            "fragment" => (Stage::Fragment, line),
+            other => {
+                return Err(format!(
+                    "\"{other}\" is not a shader: write EXPR@vertex:LINE or EXPR@fragment:LINE"
+                ));
+            }
+        },
+    };
     let line = line
         .trim()
         .parse::<usize>()
         .ok()
         .filter(|&l| l > 0)
-        .ok_or_else(|| format!("\"{line}\" is not a line number (from 1)"))?;
+        .ok_or_else(|| format!("\"{}\" is not a line number (from 1)", line.trim()))?;
     if expression.trim().is_empty() {
-        return Err(format!("no expression before @{line}"));
+        return Err(format!("no expression before @{at}"));
     }
-    Ok((expression.trim().to_owned(), line))
+    Ok(WatchSpec {
+        stage,
+        line,
+        expression: expression.trim().to_owned(),
+    })
 }
 
 /// Why a watch cannot be made.
@@ -206,10 +271,24 @@ void main() {
 
     #[test]
     fn a_watch_is_written_expr_at_line() {
-        assert_eq!(parse("a@5"), Ok(("a".to_owned(), 5)));
-        assert_eq!(parse(" x.y < 0.0 @ 12"), Ok(("x.y < 0.0".to_owned(), 12)));
+        assert_eq!(parse("a@5"), Ok(WatchSpec::fragment(5, "a")));
+        assert_eq!(
+            parse(" x.y < 0.0 @ 12"),
+            Ok(WatchSpec::fragment(12, "x.y < 0.0"))
+        );
+        let vertex = WatchSpec {
+            stage: Stage::Vertex,
+            line: 7,
+            expression: "p.z".to_owned(),
+        };
+        assert_eq!(parse("p.z@vertex:7"), Ok(vertex.clone()));
+        assert_eq!(parse("a@fragment:5"), Ok(WatchSpec::fragment(5, "a")));
+        // Written back as read.
+        assert_eq!(vertex.to_string(), "p.z@vertex:7");
+        assert_eq!(WatchSpec::fragment(5, "a").to_string(), "a@5");
         assert!(parse("a").is_err() && parse("a@0").is_err() && parse("@3").is_err());
-        assert!(parse("a@two").is_err());
+        assert!(parse("a@two").is_err() && parse("a@geometry:3").is_err());
+        assert!(parse("a@vertex:").is_err());
     }
 
     #[test]

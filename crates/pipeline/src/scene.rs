@@ -282,17 +282,16 @@ impl Scene {
         }
     }
 
-    /// This scene with every object's fragment shader watching `expression` just after
-    /// `line` (`Programs::watching`): the frame it draws keeps the value at every pixel
-    /// (`ShaderRecord::watch`).
+    /// This scene with every object's shader of `watch.stage` watching its expression just
+    /// after its line (`Programs::watching`): the frame it draws keeps the value at every pixel
+    /// (`ShaderRecord::watch`; a vertex shader's interpolated over each triangle).
     ///
     /// # Errors
     /// No object has shaders, the line ends no statement, or the expression does not compile
     /// there.
     pub fn watching(
         &self,
-        line: usize,
-        expression: &str,
+        watch: &crate::shader::probe::WatchSpec,
     ) -> Result<Self, crate::shader::probe::WatchError> {
         if !self.has_shaders() {
             return Err(crate::shader::probe::WatchError::NoShader);
@@ -313,7 +312,11 @@ impl Scene {
             {
                 Some((_, to)) => std::sync::Arc::clone(to),
                 None => {
-                    let to = std::sync::Arc::new(sh.programs.watching(line, expression)?);
+                    let to = std::sync::Arc::new(sh.programs.watching(
+                        watch.stage,
+                        watch.line,
+                        &watch.expression,
+                    )?);
                     made.push((
                         std::sync::Arc::clone(&sh.programs),
                         std::sync::Arc::clone(&to),

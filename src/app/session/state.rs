@@ -317,13 +317,19 @@ impl Session {
             .as_ref()
             .and_then(|c| c.shaders.as_ref())
             .and_then(|r| r.watch.as_ref())
-            .map(|w| (w.line, w.expression.as_str()));
+            .map(|w| (w.from_vertex, w.line, w.expression.as_str()));
         let asked = self
             .selection
             .watch
             .as_ref()
             .filter(|_| self.spec.scene.has_shaders())
-            .map(|(l, e)| (*l, e.as_str()));
+            .map(|w| {
+                (
+                    w.stage == pipeline::shader::Stage::Vertex,
+                    w.line,
+                    w.expression.as_str(),
+                )
+            });
         kept != asked
     }
 
@@ -376,10 +382,10 @@ impl Session {
         let mut job = self.job();
         // The watch the selection asks for, drawn into the same frame; one that no longer
         // compiles (the code changed under it) is dropped, with why.
-        if let Some((line, expression)) = self.selection.watch.clone()
+        if let Some(watch) = self.selection.watch.clone()
             && job.spec.scene.has_shaders()
         {
-            match job.spec.scene.watching(line, &expression) {
+            match job.spec.scene.watching(&watch) {
                 Ok(watched) => job.spec.scene = watched,
                 Err(e) => {
                     self.watch_error = Some(e.to_string());

@@ -133,15 +133,15 @@ pub fn list(
                     .clicked()
                 {
                     let condition = condition.trim().to_owned();
-                    match session.spec.scene.watching(line, &condition) {
+                    let spec = pipeline::shader::probe::WatchSpec::fragment(line, &condition);
+                    match session.spec.scene.watching(&spec) {
                         Ok(_) => {
                             bps.note = None;
                             watch.expression.clone_from(&condition);
                             watch.line = line;
                             bps.finding = Some((line, condition.clone()));
-                            command = Some(Command::Selection(SelectionCommand::SetWatch(Some(
-                                (line, condition),
-                            ))));
+                            command =
+                                Some(Command::Selection(SelectionCommand::SetWatch(Some(spec))));
                         }
                         Err(e) => {
                             bps.note = Some(format!(

@@ -30,8 +30,10 @@ pub struct Debugger {
     pub cursor_line: Option<usize>,
     /// Why the last step did not move (the run never reaches the line …), in words.
     pub note: Option<String>,
-    /// The variable picture's row.
+    /// The variable picture's row on the fragment shader's tab.
     pub watch: super::watch_picture::WatchPanel,
+    /// The variable picture's row on the vertex shader's tab.
+    pub vertex_watch: super::watch_picture::WatchPanel,
     /// The watch list: expressions read at the step.
     pub list: super::watch_list::WatchList,
     /// The cost view's picture.
@@ -423,12 +425,17 @@ pub fn panel(
         return (none, None);
     };
     let (mut marks, step_line) = stepped(ui, debugger, stage, session);
-    if stage == Stage::Fragment {
-        marks.watched = session.selection.watch.as_ref().map(|(line, _)| *line);
-        if let Some((lines, frames)) = &mut debugger.lines {
-            marks.lines = Some((*lines, *frames > 0));
-            *frames = frames.saturating_sub(1);
-        }
+    marks.watched = session
+        .selection
+        .watch
+        .as_ref()
+        .filter(|w| w.stage == stage)
+        .map(|w| w.line);
+    if stage == Stage::Fragment
+        && let Some((lines, frames)) = &mut debugger.lines
+    {
+        marks.lines = Some((*lines, *frames > 0));
+        *frames = frames.saturating_sub(1);
     }
     let mut command = super::breakpoints::list(
         ui,
@@ -437,8 +444,13 @@ pub fn panel(
         stage,
         session,
     );
+    if stage == Stage::Vertex && session.spec.scene.has_shaders() {
+        let asked =
+            super::watch_picture::ui(ui, &mut debugger.vertex_watch, session, step_line, stage);
+        command = command.or(asked.command);
+    }
     if stage == Stage::Fragment && session.spec.scene.has_shaders() {
-        let asked = super::watch_picture::ui(ui, &mut debugger.watch, session, step_line);
+        let asked = super::watch_picture::ui(ui, &mut debugger.watch, session, step_line, stage);
         command = command.or(asked.command);
         command = command.or(super::watch_picture::cost(ui, &mut debugger.cost, session));
         let (found, show_line) = super::breakpoints::found(&mut debugger.breakpoints, session);

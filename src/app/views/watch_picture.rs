@@ -1,11 +1,13 @@
 //! The debugger's variable picture: a fragment-shader expression after a line, at every pixel
 //! of the frame (`Selection::watch`, drawn by `WatchPicture::drawn`), with its legend; the
 //! value under the mouse, a click inspecting that pixel, and for a condition the first pixel
-//! where it holds, its run shown at that line.
+//! where it holds, its run shown at that line. On the vertex shader's tab, the same for an
+//! expression of the vertex shader, interpolated over each triangle as a varying is.
 
 use egui::{RichText, Ui};
 use pipeline::capture::{WatchPicture, WatchView};
-use pipeline::shader::probe::WatchKind;
+use pipeline::shader::Stage;
+use pipeline::shader::probe::{WatchKind, WatchSpec};
 
 use crate::app::command::SelectionCommand;
 use crate::app::session::{Command, Session};
@@ -27,7 +29,7 @@ pub struct WatchPanel {
     /// The picture's texture, with the frame and view it shows.
     texture: Option<((usize, WatchView), egui::TextureHandle)>,
     /// The watch the row last showed: one set elsewhere (a lesson's step) is copied into it.
-    synced: Option<(usize, String)>,
+    synced: Option<WatchSpec>,
 }
 
 impl Default for WatchPanel {
@@ -54,31 +56,41 @@ pub struct Asked {
     pub show_line: Option<usize>,
 }
 
-/// The watch's row and picture. `step_line` is the line of the debugger's step (the default
-/// line to watch after).
+/// The watch's row and picture for the shader of `stage`. `step_line` is the line of the
+/// debugger's step (the default line to watch after).
 pub fn ui(
     ui: &mut Ui,
     panel: &mut WatchPanel,
     session: &Session,
     step_line: Option<usize>,
+    stage: Stage,
 ) -> Asked {
     let lang = session.lang;
     let mut asked = Asked::default();
-    let watching = session.selection.watch.clone();
+    // The selection's watch, when it is of this tab's shader (the row shows it); the picture
+    // and its legend, which say whose line it is, show on either tab.
+    let any = session.selection.watch.is_some();
+    let watching = session.selection.watch.clone().filter(|w| w.stage == stage);
     if panel.synced != watching {
-        if let Some((line, expression)) = &watching {
-            panel.line = *line;
-            panel.expression.clone_from(expression);
+        if let Some(w) = &watching {
+            panel.line = w.line;
+            panel.expression.clone_from(&w.expression);
         }
         panel.synced.clone_from(&watching);
     }
     ui.horizontal_wrapped(|ui| {
         let label = ui
             .label(RichText::new(lang.tr("Watch over the frame:", "整帧监视：")).strong())
-            .on_hover_text(lang.tr(
-                "Any expression of your fragment shader, read just after the line runs, at every pixel: a number on a ramp (dark blue the least, yellow the greatest), a vector as a colour or one component, a condition where it holds. Grey checks: no fragment ran the line there.",
-                "片元着色器中的任意表达式，在该行执行之后读取，每个像素一个值：数值用色带表示（深蓝最小，黄色最大），向量显示为颜色或某一分量，条件显示其成立之处。灰色棋盘格：那里没有片元执行该行。",
-            ));
+            .on_hover_text(match stage {
+                Stage::Fragment => lang.tr(
+                    "Any expression of your fragment shader, read just after the line runs, at every pixel: a number on a ramp (dark blue the least, yellow the greatest), a vector as a colour or one component, a condition where it holds. Grey checks: no fragment ran the line there.",
+                    "片元着色器中的任意表达式，在该行执行之后读取，每个像素一个值：数值用色带表示（深蓝最小，黄色最大），向量显示为颜色或某一分量，条件显示其成立之处。灰色棋盘格：那里没有片元执行该行。",
+                ),
+                Stage::Vertex => lang.tr(
+                    "Any expression of your vertex shader, read just after the line runs at each vertex, and carried to every pixel as a varying is: interpolated over the triangle with perspective-correct weights, (Σ λᵢ·aᵢ/wᵢ)/(Σ λᵢ/wᵢ); an int or a bool flat, from the triangle's last vertex, as GLSL passes them. A number on a ramp (dark blue the least, yellow the greatest), a vector as a colour or one component, a condition where it holds. Grey checks: a corner of the triangle there did not run the line.",
+                    "顶点着色器中的任意表达式，在每个顶点执行该行之后读取，再像 varying 一样送到每个像素：在三角形上用透视校正的权重插值，(Σ λᵢ·aᵢ/wᵢ)/(Σ λᵢ/wᵢ)；int 与 bool 按 GLSL 的规定 flat 传递，取三角形最后一个顶点的值。数值用色带表示（深蓝最小，黄色最大），向量显示为颜色或某一分量，条件显示其成立之处。灰色棋盘格：那里三角形有顶点没有执行该行。",
+                ),
+            });
         let field = ui.add(
             egui::TextEdit::singleline(&mut panel.expression)
                 .id_salt("watch expression")
@@ -99,9 +111,9 @@ pub fn ui(
         }
         let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
         if ui.button(lang.tr("Show", "显示")).clicked() || entered {
-            asked.command = show(panel, session);
+            asked.command = show(panel, session, stage);
         }
-        if watching.is_some() && ui.button(lang.tr("Stop", "停止")).clicked() {
+        if any && ui.button(lang.tr("Stop", "停止")).clicked() {
             asked.command = Some(Command::Selection(SelectionCommand::SetWatch(None)));
         }
     });
@@ -114,7 +126,7 @@ pub fn ui(
             .and_then(|r| r.watch.as_ref())
             .map(|w| (c, w))
     });
-    if let Some((capture, picture)) = picture.filter(|_| watching.is_some()) {
+    if let Some((capture, picture)) = picture.filter(|_| any) {
         let key = (std::sync::Arc::as_ptr(capture) as usize, panel.view);
         shown(ui, panel, picture, key, lang, &mut asked);
     }
@@ -154,17 +166,19 @@ pub fn cost(ui: &mut Ui, panel: &mut WatchPanel, session: &Session) -> Option<Co
     asked.command
 }
 
-/// Checks the watch against the scene (it compiles there) and asks for it.
-fn show(panel: &mut WatchPanel, session: &Session) -> Option<Command> {
+/// Checks the watch of `stage`'s shader against the scene (it compiles there) and asks for it.
+fn show(panel: &mut WatchPanel, session: &Session, stage: Stage) -> Option<Command> {
     let lang = session.lang;
-    let expression = panel.expression.trim().to_owned();
-    match session.spec.scene.watching(panel.line, &expression) {
+    let watch = WatchSpec {
+        stage,
+        line: panel.line,
+        expression: panel.expression.trim().to_owned(),
+    };
+    match session.spec.scene.watching(&watch) {
         Ok(_) => {
             panel.error = None;
             panel.view = WatchView::Value;
-            Some(Command::Selection(SelectionCommand::SetWatch(Some((
-                panel.line, expression,
-            )))))
+            Some(Command::Selection(SelectionCommand::SetWatch(Some(watch))))
         }
         Err(e) => {
             panel.error = Some(format!("{} {e}", lang.tr("Cannot watch:", "无法监视：")));
@@ -183,10 +197,17 @@ fn shown(
     asked: &mut Asked,
 ) {
     let Some(kind) = picture.kind else {
-        ui.label(lang.tr(
-            "No fragment of this frame ran that line.",
-            "此帧没有片元执行该行。",
-        ));
+        ui.label(if picture.from_vertex {
+            lang.tr(
+                "No triangle of this frame has all three corners through that line.",
+                "此帧没有哪个三角形的三个顶点都执行了该行。",
+            )
+        } else {
+            lang.tr(
+                "No fragment of this frame ran that line.",
+                "此帧没有片元执行该行。",
+            )
+        });
         return;
     };
     let drawn = picture.drawn(panel.view);
@@ -226,6 +247,12 @@ fn shown(
         None if cost => lang
             .tr("no fragment of yours here", "这里没有你的片元")
             .to_owned(),
+        None if picture.from_vertex => lang
+            .tr(
+                "a corner of the triangle here did not run the line",
+                "这里三角形有顶点没有执行该行",
+            )
+            .to_owned(),
         None => lang
             .tr("the line did not run here", "这里没有执行该行")
             .to_owned(),
@@ -236,6 +263,21 @@ fn shown(
         asked.command = Some(Command::Selection(SelectionCommand::SelectPixel(Some((
             x, y,
         )))));
+    }
+}
+
+/// Where the picture's expression is read: after which line of which shader.
+fn place_words(picture: &WatchPicture, lang: Lang) -> String {
+    if picture.from_vertex {
+        lang.tr_owned(
+            &format!(
+                "after line {} of the vertex shader, interpolated",
+                picture.line
+            ),
+            &format!("顶点着色器第 {} 行之后，经插值", picture.line),
+        )
+    } else {
+        format!("{} {}", lang.tr("after line", "在行"), picture.line)
     }
 }
 
@@ -272,10 +314,9 @@ fn legend(
     ui.horizontal_wrapped(|ui| {
         ui.label(
             RichText::new(format!(
-                "`{}` {} {} · {}",
+                "`{}` {} · {}",
                 picture.expression,
-                lang.tr("after line", "在行"),
-                picture.line,
+                place_words(picture, lang),
                 kind.glsl()
             ))
             .monospace(),
@@ -318,7 +359,8 @@ fn legend(
                 {
                     asked.command =
                         Some(Command::Selection(SelectionCommand::SelectPixel(Some(first))));
-                    asked.show_line = Some(picture.line);
+                    // A fragment's run has no vertex line to show.
+                    asked.show_line = (!picture.from_vertex).then_some(picture.line);
                 }
             }
             (_, Some((lo, hi))) => {

@@ -366,15 +366,19 @@ impl Checker<'_> {
         Some((first as usize, last as usize))
     }
 
-    /// A step's watch, `"EXPR@LINE"`: read, and compiled against the fragment shaders the
-    /// scene runs at this step.
-    fn watch(&mut self, w: &Spanned<String>, spec: &SceneSpec) -> Option<(usize, String)> {
+    /// A step's watch, `"EXPR@LINE"` (or `"EXPR@vertex:LINE"`): read, and compiled against
+    /// the shaders the scene runs at this step.
+    fn watch(
+        &mut self,
+        w: &Spanned<String>,
+        spec: &SceneSpec,
+    ) -> Option<pipeline::shader::probe::WatchSpec> {
         let parsed = pipeline::shader::probe::parse(w.get_ref())
             .map_err(|e| format!("`watch`: {e}"))
-            .and_then(|(expression, line)| {
+            .and_then(|watch| {
                 spec.scene
-                    .watching(line, &expression)
-                    .map(|_| (line, expression))
+                    .watching(&watch)
+                    .map(|_| watch)
                     .map_err(|e| format!("`watch`: {e}"))
             });
         match parsed {

@@ -321,7 +321,7 @@ fn a_watch_is_recorded_into_the_step_it_is_drawn_in() {
     assert_eq!(super::lesson_of(&h).steps[k].watch, None);
     h.key_press(egui::Key::R);
     h.run_steps(3);
-    let watch = (22, "dot(n, l) < 0.0".to_owned());
+    let watch = pipeline::shader::probe::WatchSpec::fragment(22, "dot(n, l) < 0.0");
     h.state_mut()
         .session
         .apply(Command::Selection(SelectionCommand::SetWatch(Some(

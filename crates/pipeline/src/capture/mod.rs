@@ -307,6 +307,10 @@ pub struct VertexResults {
     pub stride: u32,
     /// Every vertex's outputs, in the shader's output order.
     pub values: Vec<f32>,
+    /// What each vertex's watch saw, when the vertex shader watches an expression
+    /// (`Programs::watching`); empty otherwise.
+    #[serde(skip)]
+    pub watch: Vec<Option<crate::shader::probe::Watched>>,
 }
 
 impl FrameCapture {

@@ -1,5 +1,5 @@
 //! A watch over the frame as a picture: an expression of the fragment shader after a line, at
-//! every pixel (`Scene::watching`), drawn so that every reader can tell its values apart — a
+//! every pixel (`Scene::watching`) — or of the vertex shader, interpolated over each triangle — drawn so that every reader can tell its values apart — a
 //! number on cividis (a ramp that keeps its order under every colour-blindness, dark blue to
 //! yellow, Nuñez et al. 2018) from the frame's least to its greatest value, a vector as a
 //! colour or one component on the ramp, a condition as a mask (the ramp's two ends). Where no
@@ -9,11 +9,16 @@ use crate::shader::probe::WatchKind;
 
 /// An expression's value after a line of the fragment shader, at every pixel: the fragment
 /// that covers the most of the pixel's samples (the one a single-sample frame keeps), where it
-/// ran the line and was not discarded.
+/// ran the line and was not discarded. For a line of the vertex shader, that fragment's
+/// triangle's corners' values interpolated at the pixel, where all three corners ran it.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct WatchPicture {
     /// The line watched, from 1.
     pub line: usize,
+    /// The line is the vertex shader's: each pixel holds the value at its triangle's corners
+    /// interpolated as a varying is (perspective-correct; an `int` or a `bool` flat, from the
+    /// provoking vertex, as GLSL passes them).
+    pub from_vertex: bool,
     /// The expression, as typed.
     pub expression: String,
     /// Its type (`None` when no fragment of the frame ran the line).
@@ -71,6 +76,30 @@ impl WatchPicture {
         (self.values.len() as u32)
             .checked_div(self.width)
             .unwrap_or(0)
+    }
+
+    /// Where the expression is read, in words: "after line N", of the vertex shader and
+    /// interpolated when it is the vertex shader's.
+    #[must_use]
+    pub fn place(&self) -> String {
+        if self.from_vertex {
+            format!(
+                "after line {} of the vertex shader, interpolated over each triangle",
+                self.line
+            )
+        } else {
+            format!("after line {}", self.line)
+        }
+    }
+
+    /// What a pixel without a value means, in words ("where …").
+    #[must_use]
+    pub fn unrun(&self) -> &'static str {
+        if self.from_vertex {
+            "where a corner of the triangle did not run the line"
+        } else {
+            "where no fragment ran the line"
+        }
     }
 
     /// The value at window pixel `(x, y)` (y up, as the inspector counts).
@@ -170,6 +199,7 @@ mod tests {
     /// row's left pixel did not, its right pixel holds NaN.
     fn picture(kind: WatchKind) -> WatchPicture {
         WatchPicture {
+            from_vertex: false,
             line: 1,
             expression: "x".to_owned(),
             kind: Some(kind),

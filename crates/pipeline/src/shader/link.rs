@@ -149,23 +149,36 @@ impl Programs {
 }
 
 impl Programs {
-    /// These programs with the fragment shader watching `expression` just after `line` (see
-    /// [`super::probe`]): the frame they draw is the same, and every fragment keeps the value.
+    /// These programs with `stage`'s shader watching `expression` just after `line` (see
+    /// [`super::probe`]): the frame they draw is the same, and every invocation keeps the value
+    /// (a fragment its own; a vertex its own, which the fragment stage interpolates as a
+    /// varying).
     ///
     /// # Errors
     /// A line that ends no statement, or an expression that does not compile there.
     pub fn watching(
         &self,
+        stage: Stage,
         line: usize,
         expression: &str,
     ) -> Result<Self, super::probe::WatchError> {
-        let mut fragment =
-            super::probe::watch(Stage::Fragment, &self.fragment.source, line, expression)?;
-        fragment.origin.clone_from(&self.fragment.origin);
-        // Linked again: the expression may read an input the shader did not (gl_FragCoord).
-        linked(Arc::clone(&self.vertex), fragment).map_err(|e| {
-            super::probe::WatchError::Compile(e.into_iter().map(|e| e.error).collect())
-        })
+        let program = match stage {
+            Stage::Vertex => &self.vertex,
+            Stage::Fragment => &self.fragment,
+        };
+        let mut watched = super::probe::watch(stage, &program.source, line, expression)?;
+        watched.origin.clone_from(&program.origin);
+        match stage {
+            // The watch's value is a private global: the outputs and the links stay.
+            Stage::Vertex => Ok(Self {
+                vertex: Arc::new(watched),
+                ..self.clone()
+            }),
+            // Linked again: the expression may read an input the shader did not (gl_FragCoord).
+            Stage::Fragment => linked(Arc::clone(&self.vertex), watched).map_err(|e| {
+                super::probe::WatchError::Compile(e.into_iter().map(|e| e.error).collect())
+            }),
+        }
     }
 }
 

@@ -1,9 +1,10 @@
 //! A watch over the frame: an expression of the student's fragment shader after a line, at
 //! every pixel — at the pixel the frame shows it at, read in window terms (y up) with no
-//! mirror, and the frame it draws the frame the shader draws.
+//! mirror, and the frame it draws the frame the shader draws; and one of the vertex shader,
+//! carried to every pixel as a varying is.
 
 use pipeline::raster::Samples;
-use pipeline::shader::probe::{WatchError, WatchKind};
+use pipeline::shader::probe::{WatchError, WatchKind, WatchSpec};
 
 use crate::shader_frame::{settings, sphere_scene, with_shaders};
 use crate::support::render;
@@ -25,7 +26,9 @@ void main() {
 fn a_watch_holds_each_pixels_value_where_the_frame_shows_it() {
     let s = settings();
     let scene = with_shaders(sphere_scene(false), None, Some(FS));
-    let watched = scene.watching(6, "gl_FragCoord.xy").expect("compiles");
+    let watched = scene
+        .watching(&WatchSpec::fragment(6, "gl_FragCoord.xy"))
+        .expect("compiles");
     let f = render(&watched, &s);
     let picture = f
         .shaders
@@ -62,7 +65,12 @@ fn the_watched_colour_is_the_frames_colour_at_the_same_pixel() {
     s.samples = Samples::X1;
     let scene = with_shaders(sphere_scene(false), None, Some(FS));
     let plain = render(&scene, &s);
-    let f = render(&scene.watching(6, "color").expect("compiles"), &s);
+    let f = render(
+        &scene
+            .watching(&WatchSpec::fragment(6, "color"))
+            .expect("compiles"),
+        &s,
+    );
     assert_eq!(
         plain.pixels.color, f.pixels.color,
         "the watch changes nothing drawn"
@@ -88,7 +96,12 @@ fn the_watched_colour_is_the_frames_colour_at_the_same_pixel() {
 fn a_condition_is_a_mask_and_a_bad_watch_says_why() {
     let s = settings();
     let scene = with_shaders(sphere_scene(false), None, Some(FS));
-    let f = render(&scene.watching(5, "n.y > 0.0").expect("compiles"), &s);
+    let f = render(
+        &scene
+            .watching(&WatchSpec::fragment(5, "n.y > 0.0"))
+            .expect("compiles"),
+        &s,
+    );
     let picture = f
         .shaders
         .as_ref()
@@ -100,15 +113,15 @@ fn a_condition_is_a_mask_and_a_bad_watch_says_why() {
     // The sphere's upper half faces up: both values occur; the top row of the sphere holds.
     assert!(values.contains(&0.0) && values.contains(&1.0));
     assert!(matches!(
-        scene.watching(3, "n"),
+        scene.watching(&WatchSpec::fragment(3, "n")),
         Err(WatchError::NotAfterStatement(3))
     ));
     assert!(matches!(
-        scene.watching(5, "m"),
+        scene.watching(&WatchSpec::fragment(5, "m")),
         Err(WatchError::Compile(_))
     ));
     assert!(matches!(
-        sphere_scene(false).watching(5, "n"),
+        sphere_scene(false).watching(&WatchSpec::fragment(5, "n")),
         Err(WatchError::NoShader)
     ));
 }
@@ -160,4 +173,126 @@ void main() {
     // Not asked for, not kept.
     s.capture.cost = false;
     assert!(render(&scene, &s).shaders.expect("a record").cost.is_none());
+}
+
+/// A vertex shader that passes the object normal on, and past line 10 only for the vertices of
+/// the upper half (y > 0).
+const VS: &str = "#version 330 core
+uniform mat4 model;
+uniform mat4 view;
+uniform mat4 projection;
+in vec3 position;
+in vec3 normal;
+out vec3 w_nrm;
+void main() {
+    w_nrm = normal;
+    if (position.y > 0.0) {
+        w_nrm = w_nrm * 1.0;
+    }
+    gl_Position = projection * (view * (model * vec4(position, 1.0)));
+}
+";
+
+/// A fragment shader whose line 5 keeps the interpolated input as it arrives.
+const FS_INPUT: &str = "#version 330 core
+in vec3 w_nrm;
+out vec4 color;
+void main() {
+    vec3 m = w_nrm;
+    color = vec4(normalize(m) * 0.5 + 0.5, 1.0);
+}
+";
+
+/// The picture a scene's frame keeps of `watch`.
+fn picture_of(
+    scene: &pipeline::scene::Scene,
+    watch: &WatchSpec,
+) -> pipeline::capture::WatchPicture {
+    let f = render(&scene.watching(watch).expect("compiles"), &settings());
+    f.shaders
+        .and_then(|r| r.watch)
+        .expect("the frame kept the watch")
+}
+
+/// A vertex shader's value is carried to each pixel as a varying is: the vertex watch of the
+/// output after the line that writes it is, at every pixel, what the fragment shader received
+/// in that input (its own watch of it); and watching changes nothing drawn.
+#[test]
+fn a_vertex_watch_is_the_varying_the_fragment_receives() {
+    let scene = with_shaders(sphere_scene(false), Some(VS), Some(FS_INPUT));
+    let from_vertex = picture_of(&scene, &WatchSpec::vertex(9, "w_nrm"));
+    let received = picture_of(&scene, &WatchSpec::fragment(5, "w_nrm"));
+    assert!(from_vertex.from_vertex && !received.from_vertex);
+    assert_eq!(from_vertex.kind, Some(WatchKind::Vec3));
+    assert_eq!(from_vertex.line, 9);
+    let mut compared = 0;
+    for (a, b) in from_vertex.values.iter().zip(&received.values) {
+        assert_eq!(a.is_some(), b.is_some(), "the same pixels");
+        if let (Some(a), Some(b)) = (a, b) {
+            assert!((0..3).all(|c| (a[c] - b[c]).abs() < 1e-6), "{a:?} vs {b:?}");
+            compared += 1;
+        }
+    }
+    assert!(compared > 1000, "{compared} pixels");
+    let s = settings();
+    let plain = render(&scene, &s);
+    let watched = render(
+        &scene
+            .watching(&WatchSpec::vertex(9, "w_nrm"))
+            .expect("compiles"),
+        &s,
+    );
+    assert_eq!(plain.pixels.color, watched.pixels.color);
+}
+
+/// A bool passes flat (GLSL allows no other), from the triangle's last vertex: a mask of 0 and
+/// 1 that holds at the sphere's top and not at its bottom; a line that only the upper half's
+/// vertices run leaves the lower half's triangles without a value.
+#[test]
+fn a_vertex_condition_is_flat_and_an_unrun_line_leaves_no_value() {
+    let scene = with_shaders(sphere_scene(false), Some(VS), Some(FS_INPUT));
+    let s = settings();
+    let cx = s.width / 2;
+    // The sphere's top and bottom pixels on the centre column: the last and first rows of
+    // that column that the sphere covers (window y up).
+    let covered: Vec<u32> = {
+        let p = picture_of(&scene, &WatchSpec::vertex(9, "w_nrm"));
+        (0..s.height).filter(|&y| p.at(cx, y).is_some()).collect()
+    };
+    let (bottom, top) = (covered[0] + 2, covered[covered.len() - 1] - 2);
+    let mask = picture_of(&scene, &WatchSpec::vertex(9, "position.y > 0.0"));
+    assert_eq!(mask.kind, Some(WatchKind::Bool));
+    assert!(
+        mask.values
+            .iter()
+            .flatten()
+            .all(|v| v[0] == 0.0 || v[0] == 1.0)
+    );
+    assert_eq!(mask.at(cx, top).map(|v| v[0]), Some(1.0));
+    assert_eq!(mask.at(cx, bottom).map(|v| v[0]), Some(0.0));
+    // Line 11 runs only where y > 0: the upper half has the value, the lower half none.
+    let upper = picture_of(&scene, &WatchSpec::vertex(11, "w_nrm.y"));
+    assert_eq!(upper.kind, Some(WatchKind::Float));
+    assert!(upper.at(cx, top).is_some_and(|v| v[0] > 0.5));
+    assert_eq!(upper.at(cx, bottom), None);
+    // Where a triangle has the value all three corners ran line 11, so its last vertex lies
+    // above y = 0 and the mask holds there; where the mask fails, the last vertex did not run
+    // it and there is no value.
+    for (u, m) in upper.values.iter().zip(&mask.values) {
+        if u.is_some() {
+            assert_eq!(m.map(|m| m[0]), Some(1.0));
+        }
+        if m.is_some_and(|m| m[0] == 0.0) {
+            assert!(u.is_none());
+        }
+    }
+    // A line that ends no statement, and a name not in the vertex shader, say why.
+    assert!(matches!(
+        scene.watching(&WatchSpec::vertex(7, "w_nrm")),
+        Err(WatchError::NotAfterStatement(7))
+    ));
+    assert!(matches!(
+        scene.watching(&WatchSpec::vertex(9, "gl_FragCoord")),
+        Err(WatchError::Compile(_))
+    ));
 }

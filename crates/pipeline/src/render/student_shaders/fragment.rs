@@ -10,7 +10,7 @@ use crate::capture::{FragmentTrace, Matrices, VertexResults};
 use crate::raster::{NONE, ONE, RasterTriangle};
 use crate::render::RenderError;
 use crate::render::resolve::ResolveContext;
-use crate::shader::probe::Watched;
+use crate::shader::probe::{WatchKind, Watched};
 use crate::shader::{self, Batch, Bindings, Interpolate, LANES, Programs, Uniforms};
 
 /// A fragment to shade: a triangle over a 2×2 quad, with the pixels it covers (live lanes) and
@@ -167,10 +167,9 @@ impl FragmentShading<'_> {
     ) -> Result<FragmentCounts, RenderError> {
         let s = self.ctx.settings.samples.count();
         let watching = self.ctx.scene.objects.iter().any(|o| {
-            o.code
-                .shader
-                .as_ref()
-                .is_some_and(|sh| sh.programs.fragment.watch.is_some())
+            o.code.shader.as_ref().is_some_and(|sh| {
+                sh.programs.fragment.watch.is_some() || sh.programs.vertex.watch.is_some()
+            })
         });
         let mut sums = Sums {
             acc: vec![Vec3::ZERO; rows.len()],
@@ -335,10 +334,14 @@ impl FragmentShading<'_> {
                     }
                     background
                 } else {
-                    if let (Some(watch), Some(places)) = (sums.watch.as_mut(), fs.watch.as_ref())
+                    if let Some(watch) = sums.watch.as_mut()
                         && k > watch[i].0
                     {
-                        watch[i] = (k, ran.watched(places, l));
+                        let seen = match fs.watch.as_ref() {
+                            Some(places) => ran.watched(places, l),
+                            None => self.vertex_watch(job, j, y, object),
+                        };
+                        watch[i] = (k, seen);
                     }
                     let c = Vec3::from_array(ran.outputs::<3>(l));
                     if c.is_finite() {
@@ -427,6 +430,37 @@ impl FragmentShading<'_> {
             let centre = I64Vec2::new(px * ONE + ONE / 2, py * ONE + ONE / 2);
             self.lane_inputs(programs, t, object, centre, (px, py), l, inputs.rows_mut());
         }
+    }
+
+    /// What the vertex shader's watch saw at the corners of `job`'s triangle, interpolated at
+    /// the centre of lane `j`'s pixel as a smooth varying is (`Σ b_i·a_i` with the corners'
+    /// perspective-correct weights `b_i`), an `int` or a `bool` flat from the provoking (last)
+    /// vertex; `None` when the vertex shader watches nothing or a corner did not run the line.
+    fn vertex_watch(&self, job: &QuadJob, j: usize, y: i64, object: usize) -> Option<Watched> {
+        let r = self.results[object].as_ref()?;
+        let t = &self.ctx.triangles[job.triangle as usize];
+        let prim = &self.ctx.primitives[t.primitive as usize];
+        let corner = |v: usize| -> Option<Watched> {
+            let row = (prim.vertices[v] as usize).checked_sub(r.first as usize)?;
+            *r.watch.get(row)?
+        };
+        let seen = [corner(0)?, corner(1)?, corner(2)?];
+        let kind = seen[2].kind;
+        if matches!(kind, WatchKind::Int | WatchKind::Bool) {
+            return Some(seen[2]);
+        }
+        let (px, py) = (i64::from(job.x) + (j % 2) as i64, y + (j / 2) as i64);
+        let centre = I64Vec2::new(px * ONE + ONE / 2, py * ONE + ONE / 2);
+        let bary = prim.bary_corners(t);
+        let b = t.original_bary(
+            &bary,
+            t.lambda(centre),
+            self.ctx.settings.perspective_correct,
+        );
+        Some(Watched {
+            kind,
+            value: std::array::from_fn(|c| (0..3).map(|v| b[v] * seen[v].value[c]).sum()),
+        })
     }
 
     /// Writes lane `l`'s fragment inputs for triangle `t` at fixed-point position `centre`

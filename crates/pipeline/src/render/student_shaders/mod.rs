@@ -63,6 +63,7 @@ pub(in crate::render) fn record(
         }
         WatchPicture {
             line: 0,
+            from_vertex: false,
             expression: "steps run".to_owned(),
             kind: Some(shader::probe::WatchKind::Int),
             values,
@@ -80,17 +81,20 @@ pub(in crate::render) fn record(
     }))
 }
 
-/// The picture of what the watch saw (`None` when no object's fragment shader watches).
+/// The picture of what the watch saw (`None` when no object's shader watches).
 fn watch_picture(
     ctx: &ResolveContext<'_>,
     seen: Vec<(usize, shader::probe::Watched)>,
     pixels: usize,
 ) -> Option<WatchPicture> {
-    let places = ctx.scene.objects.iter().find_map(|o| {
-        o.code
-            .shader
-            .as_ref()
-            .and_then(|sh| sh.programs.fragment.watch.clone())
+    let (places, from_vertex) = ctx.scene.objects.iter().find_map(|o| {
+        let programs = &o.code.shader.as_ref()?.programs;
+        programs
+            .fragment
+            .watch
+            .clone()
+            .map(|w| (w, false))
+            .or_else(|| programs.vertex.watch.clone().map(|w| (w, true)))
     })?;
     let mut values = vec![None; pixels];
     let mut kind = None;
@@ -100,6 +104,7 @@ fn watch_picture(
     }
     Some(WatchPicture {
         line: places.line,
+        from_vertex,
         expression: places.expression,
         kind,
         values,
@@ -509,10 +514,11 @@ fn run_vertex_shader(
         .iter()
         .map(|i| shader::interface::attribute_location(&i.name))
         .collect();
-    values
+    // Each batch's watch, when the shader watches (none kept otherwise).
+    let watched: Vec<Vec<Option<shader::probe::Watched>>> = values
         .par_chunks_mut(LANES * stride.max(1))
         .enumerate()
-        .try_for_each_init(
+        .map_init(
             || {
                 let mut m = vs.machine();
                 m.budget = max_steps;
@@ -537,12 +543,18 @@ fn run_vertex_shader(
                         *v = ran.output(c, l);
                     }
                 }
-                Ok(())
+                Ok(vs
+                    .watch
+                    .as_ref()
+                    .map(|places| (0..n).map(|l| ran.watched(places, l)).collect())
+                    .unwrap_or_default())
             },
-        )?;
+        )
+        .collect::<Result<_, RenderError>>()?;
     Ok(VertexResults {
         first: first as u32,
         stride: stride as u32,
         values,
+        watch: watched.concat(),
     })
 }
