@@ -17,9 +17,19 @@ impl PipelensApp {
         debugger.vertex_watch.in_view = debugger.watch.in_view;
         debugger.cost.in_view = in_view && sel.watch.is_none() && sel.cost;
         // Wide enough for an 80-column line of code where the window allows it (at
-        // 1920 points, 760 leave the picture more than half), narrower in a smaller one.
-        let wide = (ui.ctx().content_rect().width() * 0.4).clamp(520.0, 760.0);
-        egui::Panel::right("shader")
+        // 1920 points, 760 leave the picture more than half), narrower in a smaller one. A
+        // lab shows three pictures side by side (the student's frame, pipelens' own and their
+        // difference), so in a window with the narration band (a 1366-point projector) its
+        // code starts narrower, at 34 %, for them to keep more than a third of the window; the
+        // lab's panel keeps its own width (a drag sets it for every lab).
+        let window = ui.ctx().content_rect().width();
+        let lab = self.session.current_exercise().is_some() && self.narration_in_band(ui.ctx());
+        let (id, wide) = if lab {
+            ("shader-lab", (window * 0.34).clamp(440.0, 760.0))
+        } else {
+            ("shader", (window * 0.4).clamp(520.0, 760.0))
+        };
+        egui::Panel::right(id)
             .default_size(wide)
             .resizable(true)
             .show(ui, |ui| {
