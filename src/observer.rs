@@ -321,25 +321,12 @@ pub fn viewing_camera(
             }
             tags.push(Tag {
                 at: g.label_at,
-                text: light_name(light, k, lang),
+                text: crate::vocabulary::light_name(light, k, lang),
                 color: [255, 240, 120, 255],
             });
         }
     }
     (marks, tags)
-}
-
-/// "point light 1", "聚光灯 2"…
-#[must_use]
-pub fn light_name(light: &pipeline::light::Light, k: usize, lang: Lang) -> String {
-    use pipeline::light::Light;
-    let kind = match light {
-        Light::Point { .. } => lang.tr("point light", "点光源"),
-        Light::Spot { .. } => lang.tr("spotlight", "聚光灯"),
-        Light::Directional { .. } => lang.tr("directional light", "平行光"),
-        Light::Ambient { .. } => lang.tr("ambient light", "环境光"),
-    };
-    format!("{kind} {k}")
 }
 
 /// The centre and size of what the scene draws, for placing the lights' marks: the orbit's

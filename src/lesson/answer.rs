@@ -248,6 +248,9 @@ impl Verdict {
         let cell = |(r, c): (usize, usize)| match (expect.shape, lang) {
             (Shape::Number, Lang::En) => "your value".to_owned(),
             (Shape::Number, Lang::Zh) => "你的数值".to_owned(),
+            // A vector's entries by the names its boxes show, x, y, z, w (up to four).
+            (Shape::Vector(n), Lang::En) if n <= 4 => ["x", "y", "z", "w"][c].to_owned(),
+            (Shape::Vector(n), Lang::Zh) if n <= 4 => format!("{} 分量", ["x", "y", "z", "w"][c]),
             (Shape::Vector(_), Lang::En) => format!("component {}", c + 1),
             (Shape::Vector(_), Lang::Zh) => format!("第 {} 个分量", c + 1),
             (Shape::Matrix(..), Lang::En) => format!("row {}, column {}", r + 1, c + 1),
@@ -359,6 +362,27 @@ mod tests {
         ));
         // One value each, written with spaces and a decimal comma.
         assert_eq!(e.check(&typed(["1 + 1", "0,5", "- 0.5"])), Verdict::Right);
+    }
+
+    /// A vector's entry that is off is named as its box is, x, y or z: 2.5 typed for y = 2 is
+    /// 0.5 too large.
+    #[test]
+    fn a_vectors_entry_is_named_as_its_box() {
+        use crate::vocabulary::Lang;
+        let e = Expect {
+            shape: Shape::Vector(3),
+            values: vec![1.0, 2.0, 3.0],
+            tolerance: 0.01,
+        };
+        let typed = |cells: [&str; 3]| cells.map(str::to_owned).to_vec();
+        let v = e.check(&typed(["1", "2.5", "3"]));
+        assert!(
+            v.describe(&e, Lang::En)
+                .contains("y = 2.5 is 0.5 too large")
+        );
+        assert!(v.describe(&e, Lang::Zh).contains("y 分量 = 2.5 大了 0.5"));
+        let empty = e.check(&typed(["1", "2", ""]));
+        assert!(empty.describe(&e, Lang::En).contains("Still empty: z."));
     }
 
     /// Lesson 10 step 4's 0.8^32 = 0.000792 with the step's ±0.005: 0 is not right for it (it

@@ -64,3 +64,25 @@ pub fn shadow_of(object: &str, lang: Lang) -> String {
         Lang::Zh => format!("{object}的影子"),
     }
 }
+
+/// "point light 1", "聚光灯 2"…
+#[must_use]
+pub fn light_name(light: &pipeline::light::Light, k: usize, lang: Lang) -> String {
+    use pipeline::light::Light;
+    let kind = match light {
+        Light::Point { .. } => lang.tr("point light", "点光源"),
+        Light::Spot { .. } => lang.tr("spotlight", "聚光灯"),
+        Light::Directional { .. } => lang.tr("directional light", "平行光"),
+        Light::Ambient { .. } => lang.tr("ambient light", "环境光"),
+    };
+    format!("{kind} {k}")
+}
+
+/// `text` with its first letter a capital (a sentence's start; Chinese is left as it is).
+#[must_use]
+pub fn upper_first(text: &str) -> String {
+    let mut chars = text.chars();
+    chars
+        .next()
+        .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
+}

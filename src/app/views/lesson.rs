@@ -187,9 +187,8 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
             }
             for a in &step.animate {
                 let line = format!(
-                    "{} {}: {} → {}",
-                    lang.tr("▶ moving", "▶ 动画"),
-                    param::describe(spec, &a.param, lang),
+                    "▶ {}: {} → {}",
+                    crate::vocabulary::upper_first(&param::describe(spec, &a.param, lang)),
                     a.from,
                     a.to
                 );

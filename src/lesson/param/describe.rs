@@ -2,8 +2,9 @@
 
 use super::SceneSpec;
 
-/// A parameter's name as a reader says it: `objects.cube.rotate` → "cube · rotate" (立方体 · 旋转),
-/// the object by its label.
+/// A parameter's name as the parameters panel says it: `objects.cube.rotate` → "rotate of cube"
+/// (立方体的旋转), the object by its label; `lights.1.position` → "point light 1 position"
+/// (点光源 1 的位置), the light as the panel heads it; `camera.eye` → "camera eye" (相机的视点).
 #[must_use]
 pub fn describe(spec: &SceneSpec, name: &str, lang: crate::vocabulary::Lang) -> String {
     let word = |w: &str| -> String {
@@ -33,7 +34,7 @@ pub fn describe(spec: &SceneSpec, name: &str, lang: crate::vocabulary::Lang) -> 
             "cutoff" => "截止角",
             "exponent" => "衰减指数",
             "light" => "光源",
-            "shininess" => "高光指数",
+            "shininess" => "高光指数 p",
             "normals" => "法线",
             "lod_bias" => "mip 偏移",
             "max_steps" => "循环步数上限",
@@ -43,21 +44,101 @@ pub fn describe(spec: &SceneSpec, name: &str, lang: crate::vocabulary::Lang) -> 
             other => return other.to_owned(),
         };
         match lang {
+            // As the panel's slider says it.
+            crate::vocabulary::Lang::En if w == "shininess" => "shininess p".to_owned(),
             crate::vocabulary::Lang::En => w.replace('_', " "),
             crate::vocabulary::Lang::Zh => zh.to_owned(),
         }
     };
+    // "B of A" in English, "A的B" in Chinese.
+    let of = |whole: &str, part: &str| match lang {
+        crate::vocabulary::Lang::En => format!("{part} of {whole}"),
+        crate::vocabulary::Lang::Zh => format!("{whole}的{part}"),
+    };
     let parts: Vec<&str> = name.split('.').collect();
     match parts.as_slice() {
-        ["objects" | "figures", object, p] => {
-            format!(
-                "{} · {}",
-                spec.label(object, lang),
-                crate::vocabulary::part_name(&word(p), lang)
-            )
+        ["objects" | "figures", object, p] => of(
+            &spec.label(object, lang),
+            crate::vocabulary::part_name(&word(p), lang),
+        ),
+        ["lights", k, p] => {
+            let light = spec
+                .light_index(k)
+                .and_then(|i| {
+                    Some(crate::vocabulary::light_name(
+                        spec.scene.lights.get(i)?,
+                        i,
+                        lang,
+                    ))
+                })
+                .unwrap_or_else(|| format!("{} {k}", word("lights")));
+            match lang {
+                crate::vocabulary::Lang::En => format!("{light} {}", word(p)),
+                crate::vocabulary::Lang::Zh => format!("{light} 的{}", word(p)),
+            }
         }
-        ["lights", k, p] => format!("{} {k} · {}", word("lights"), word(p)),
-        [group, p] => format!("{} · {}", word(group), word(p)),
+        ["uniforms", u] => format!("uniform {u}"),
+        [group, p] => match lang {
+            crate::vocabulary::Lang::En => format!("{} {}", word(group), word(p)),
+            crate::vocabulary::Lang::Zh => format!("{}的{}", word(group), word(p)),
+        },
         _ => name.to_owned(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vocabulary::Lang;
+    use pipeline::light::Light;
+
+    /// A sphere under an ambient light (0) and a point light (1) named "key".
+    fn spec() -> SceneSpec {
+        let scene = pipeline::scene::Scene {
+            objects: vec![pipeline::scene::Object::new(
+                "sphere",
+                pipeline::mesh::BuiltinMesh::UvSphere {
+                    segments: 8,
+                    rings: 4,
+                }
+                .build(),
+            )],
+            lights: vec![
+                Light::Ambient {
+                    intensity: glam::Vec3::splat(0.2),
+                },
+                Light::Point {
+                    position: glam::Vec3::ONE,
+                    intensity: glam::Vec3::ONE,
+                    attenuation: glam::Vec3::X,
+                },
+            ],
+            ..pipeline::scene::Scene::default()
+        };
+        let mut spec = SceneSpec::new(scene, pipeline::settings::RenderSettings::default());
+        spec.light_names = vec![None, Some("key".to_owned())];
+        spec
+    }
+
+    /// The names the parameters panel gives: the material's "shininess p" of its object, a
+    /// light as the panel heads it (its kind and index, whether the parameter names it by its
+    /// index or its name), a group's field, a uniform of the student's.
+    #[test]
+    fn a_parameter_is_named_as_the_panel_names_it() {
+        let s = spec();
+        let en = |n: &str| describe(&s, n, Lang::En);
+        let zh = |n: &str| describe(&s, n, Lang::Zh);
+        assert_eq!(en("objects.sphere.shininess"), "shininess p of sphere");
+        assert_eq!(en("lights.1.position"), "point light 1 position");
+        assert_eq!(en("lights.key.position"), "point light 1 position");
+        assert_eq!(zh("lights.key.position"), "点光源 1 的位置");
+        assert_eq!(en("camera.eye"), "camera eye");
+        assert_eq!(zh("camera.eye"), "相机的视点");
+        assert_eq!(en("uniforms.band"), "uniform band");
+        assert_eq!(
+            crate::vocabulary::upper_first(&en("camera.eye")),
+            "Camera eye"
+        );
+        assert_eq!(crate::vocabulary::upper_first("相机的视点"), "相机的视点");
     }
 }

@@ -12,7 +12,7 @@ use crate::vocabulary::Lang;
 /// it is: position, direction, attenuation, a spot's cone.
 pub(super) fn lights(ui: &mut Ui, lights: &mut [Light], lang: Lang) {
     for (k, light) in lights.iter_mut().enumerate() {
-        ui.label(RichText::new(crate::observer::light_name(light, k, lang)).strong());
+        ui.label(RichText::new(crate::vocabulary::light_name(light, k, lang)).strong());
         let (intensity, attenuation) = placement(ui, light, lang);
         let tip = lang.tr(
             "I, the light's intensity per RGB channel: L = k·I·…",
