@@ -255,7 +255,7 @@ fn the_handout_picture_has_the_overlays_the_pixel_and_the_chart() {
     // ease_in_out: 3t² − 2t³ at t = 0, ¼, ½, ¾, 1 gives 0, 0.156, 0.5, 0.844, 1 of the way.
     for fovy in ["40", "43.12", "50", "56.88", "60"] {
         assert!(
-            html.contains(&format!("projection · fovy = {fovy}</figcaption>")),
+            html.contains(&format!("projection fovy = {fovy}</figcaption>")),
             "frame at fovy = {fovy}"
         );
     }
@@ -332,7 +332,7 @@ fn the_answer_key_prints_every_answer_and_chinese_captions_are_chinese() {
         );
     }
     assert_captions_chinese(&html, "picture");
-    assert!(html.contains("投影 · fovy = 40</figcaption>"));
+    assert!(html.contains("投影的 fovy = 40</figcaption>"));
 }
 
 #[test]

@@ -50,9 +50,12 @@ pub fn describe(spec: &SceneSpec, name: &str, lang: crate::vocabulary::Lang) -> 
             crate::vocabulary::Lang::Zh => zh.to_owned(),
         }
     };
-    // "B of A" in English, "A的B" in Chinese.
+    // "B of A" in English, "A的B" in Chinese (a space before a Latin word: "投影的 fovy").
     let of = |whole: &str, part: &str| match lang {
         crate::vocabulary::Lang::En => format!("{part} of {whole}"),
+        crate::vocabulary::Lang::Zh if part.starts_with(|c: char| c.is_ascii_alphanumeric()) => {
+            format!("{whole}的 {part}")
+        }
         crate::vocabulary::Lang::Zh => format!("{whole}的{part}"),
     };
     let parts: Vec<&str> = name.split('.').collect();
@@ -80,7 +83,7 @@ pub fn describe(spec: &SceneSpec, name: &str, lang: crate::vocabulary::Lang) -> 
         ["uniforms", u] => format!("uniform {u}"),
         [group, p] => match lang {
             crate::vocabulary::Lang::En => format!("{} {}", word(group), word(p)),
-            crate::vocabulary::Lang::Zh => format!("{}的{}", word(group), word(p)),
+            crate::vocabulary::Lang::Zh => of(&word(group), &word(p)),
         },
         _ => name.to_owned(),
     }
@@ -134,6 +137,7 @@ mod tests {
         assert_eq!(zh("lights.key.position"), "点光源 1 的位置");
         assert_eq!(en("camera.eye"), "camera eye");
         assert_eq!(zh("camera.eye"), "相机的视点");
+        assert_eq!(zh("projection.fovy"), "投影的 fovy");
         assert_eq!(en("uniforms.band"), "uniform band");
         assert_eq!(
             crate::vocabulary::upper_first(&en("camera.eye")),
