@@ -67,20 +67,47 @@ impl PipelensApp {
         }
     }
 
-    /// Under the bar: why the file on disk no longer loads, what an export did.
-    pub(super) fn bar_messages(&self, ui: &mut egui::Ui, lang: Lang) {
-        if let Some(e) = &self.session.reload_error {
-            ui.label(
-                RichText::new(format!(
-                    "{}\n{e}",
-                    lang.tr(
-                        "The file changed on disk and no longer loads; the last good version keeps running:",
-                        "文件在磁盘上被修改后无法加载；继续运行上一个正确的版本："
-                    )
-                ))
-                .monospace()
-                .color(Color32::LIGHT_RED),
-            );
+    /// Under the bar: why the file on disk no longer loads, why a dropped file did not open
+    /// (each with × to close it), what an export did.
+    pub(super) fn bar_messages(&mut self, ui: &mut egui::Ui, lang: Lang) {
+        let said = [
+            (
+                self.session.reload_error.clone(),
+                lang.tr(
+                    "The file changed on disk and no longer loads; the last good version keeps running:",
+                    "文件在磁盘上被修改后无法加载；继续运行上一个正确的版本：",
+                ),
+            ),
+            (
+                self.session.dropped_error.clone(),
+                lang.tr(
+                    "The dropped file did not open; what was open keeps running:",
+                    "拖入的文件未能打开；继续运行原来打开的内容：",
+                ),
+            ),
+        ];
+        for (k, (error, heading)) in said.into_iter().enumerate() {
+            let Some(e) = error else { continue };
+            let closed = ui
+                .horizontal_top(|ui| {
+                    let close = ui
+                        .small_button("×")
+                        .on_hover_text(lang.tr("Close this message", "关闭此消息"))
+                        .clicked();
+                    ui.label(
+                        RichText::new(format!("{heading}\n{e}"))
+                            .monospace()
+                            .color(Color32::LIGHT_RED),
+                    );
+                    close
+                })
+                .inner;
+            if closed {
+                match k {
+                    0 => self.session.reload_error = None,
+                    _ => self.session.dropped_error = None,
+                }
+            }
         }
         if let Some((ok, msg)) = &self.export_message {
             ui.label(RichText::new(msg).color(if *ok {

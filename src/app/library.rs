@@ -106,7 +106,13 @@ impl PipelensApp {
         let dropped = ctx.input(|i| i.raw.dropped_files.clone());
         if let Some(file) = dropped.into_iter().next() {
             let path = file.path().to_path_buf();
-            if path.is_absolute()
+            let name = path.file_name().map_or_else(
+                || path.display().to_string(),
+                |n| n.to_string_lossy().into_owned(),
+            );
+            if let Some(why) = not_opened(&name, path.is_absolute()) {
+                self.session.dropped_error = Some(why);
+            } else if path.is_absolute()
                 && path
                     .extension()
                     .is_some_and(|e| e.eq_ignore_ascii_case("obj"))
@@ -183,7 +189,7 @@ impl PipelensApp {
                     self.commands.push(c);
                 }
             }
-            Err(e) => self.session.reload_error = Some(e),
+            Err(e) => self.session.dropped_error = Some(e),
         }
     }
 
@@ -196,7 +202,7 @@ impl PipelensApp {
     ) {
         match loaded {
             Ok(doc) => self.open(doc, name, path),
-            Err(e) => self.session.reload_error = Some(e.to_string()),
+            Err(e) => self.session.dropped_error = Some(e.to_string()),
         }
     }
 
@@ -208,6 +214,29 @@ impl PipelensApp {
         if let Some(path) = path {
             self.watch(path);
         }
+    }
+}
+
+/// Why a file named `name` dropped on the window is not opened, when its kind is one pipelens
+/// does not open there (`on_disk`: the desktop, which has its path): a lesson or scene is a
+/// `.toml` file, a shader a `.vert`, `.frag` or pipeline-function `.glsl`, and a mesh (`.obj`)
+/// becomes a new lesson in the editor, which reads it from disk. A name without an extension is
+/// read as a lesson.
+fn not_opened(name: &str, on_disk: bool) -> Option<String> {
+    let lower = name.to_ascii_lowercase();
+    let extension = std::path::Path::new(&lower)
+        .extension()
+        .and_then(|e| e.to_str())?
+        .to_owned();
+    match extension.as_str() {
+        "toml" | "vert" | "frag" | "glsl" => None,
+        "obj" if on_disk => None,
+        "obj" => Some(format!(
+            "{name}: a mesh becomes a new lesson in the desktop app (drop it on its window); the page opens lessons and scenes (.toml) and shaders (.vert, .frag)"
+        )),
+        _ => Some(format!(
+            "{name}: pipelens opens lessons and scenes (.toml), shaders (.vert, .frag, .glsl) and meshes (.obj), not .{extension} files"
+        )),
     }
 }
 

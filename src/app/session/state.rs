@@ -60,6 +60,9 @@ pub struct Session {
     pub lesson: Option<LessonPlayer>,
     /// Why the file on disk no longer loads (the last good version keeps running).
     pub reload_error: Option<String>,
+    /// Why a file dropped on the window (or page) did not open: shown until it is closed, a
+    /// step is entered or something else opens.
+    pub dropped_error: Option<String>,
     /// Where the results come from: a worker thread, or (tests) this thread.
     worker: Option<RenderWorker>,
     /// Counts the steps entered: a view that frames or opens something per step resets when it
@@ -120,6 +123,7 @@ impl Session {
             observer_asked: false,
             lesson: None,
             reload_error: None,
+            dropped_error: None,
             worker,
             step_entered: 0,
             drafting: false,
@@ -223,6 +227,8 @@ impl Session {
         };
         sel.profile = step.profile_line(spec.settings.width, spec.settings.height);
         self.step_entered += 1;
+        // A dropped file's trouble is about what was on screen when it was dropped.
+        self.dropped_error = None;
         let mut spec = spec;
         self.restore_code(&mut spec);
         self.spec = spec;

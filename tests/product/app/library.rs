@@ -73,7 +73,7 @@ fn a_dropped_lesson_opens_from_its_bytes_and_a_broken_one_says_where() {
     }));
     h.run_steps(4);
     assert_eq!(lesson_id(&h), "07-rasterization");
-    assert!(h.state().session.reload_error.is_none());
+    assert!(h.state().session.dropped_error.is_none());
     // A broken copy: the lesson open keeps running, the error names the line.
     let broken = String::from_utf8(text).expect("UTF-8").replacen(
         "stage = \"viewport\"",
@@ -90,11 +90,44 @@ fn a_dropped_lesson_opens_from_its_bytes_and_a_broken_one_says_where() {
         "07-rasterization",
         "the open lesson keeps running"
     );
-    let error = h.state().session.reload_error.clone().unwrap_or_default();
+    let error = h.state().session.dropped_error.clone().unwrap_or_default();
     assert!(
         error.contains("mine.toml:") && error.contains("viewport"),
         "{error}"
     );
+    // It says the dropped file did not open (nothing changed on disk), and × closes it.
+    assert!(
+        h.query_by_label_contains("The dropped file did not open")
+            .is_some()
+    );
+    assert!(h.query_by_label_contains("changed on disk").is_none());
+    h.get_by_label("×").click();
+    h.run_steps(2);
+    assert!(h.state().session.dropped_error.is_none());
+    // A mesh dropped on the page (no path on disk) is not read as a lesson: the message says
+    // where a mesh opens; it goes when a step is entered.
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("bunny.obj"),
+        bytes: b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n".to_vec(),
+    }));
+    h.run_steps(4);
+    let error = h.state().session.dropped_error.clone().unwrap_or_default();
+    assert!(
+        error.starts_with("bunny.obj: a mesh becomes a new lesson in the desktop app"),
+        "{error}"
+    );
+    assert_eq!(lesson_id(&h), "07-rasterization");
+    h.key_press(egui::Key::ArrowRight);
+    h.run_steps(2);
+    assert!(h.state().session.dropped_error.is_none());
+    // Nor is a picture.
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("brick.png"),
+        bytes: vec![0x89, b'P', b'N', b'G'],
+    }));
+    h.run_steps(4);
+    let error = h.state().session.dropped_error.clone().unwrap_or_default();
+    assert!(error.contains("not .png files"), "{error}");
 }
 
 #[test]
