@@ -108,6 +108,13 @@ impl SceneSpec {
 /// The largest scene or lesson file read (a larger one is surely a mistake).
 pub const MAX_FILE_BYTES: u64 = 4 * 1024 * 1024;
 
+/// The narration a lesson started from the scene on screen gives its first step, English and
+/// Chinese, for the teacher to replace: `pipelens check` warns while it is still there.
+pub const PLACEHOLDER_NARRATION: [&str; 2] = [
+    "Write here what the viewer should see, and why.",
+    "在这里写下观众应当看到什么、为什么。",
+];
+
 /// Reads and validates a scene file. Relative mesh paths are relative to the file's folder.
 ///
 /// # Errors

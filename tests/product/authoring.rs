@@ -78,6 +78,18 @@ fn check_warns_of_an_id_unlike_the_file_name_and_describes_each_mesh() {
         out.contains("box: box.obj, 2 triangles, box [0, 0, 0] to [2, 4, 6], centre [1, 2, 3]"),
         "{out}"
     );
+    // A narration left as the placeholder of a lesson started from the scene on screen.
+    let placeholder = lesson(false).replace(
+        "narration = { en = \"A.\", zh = \"甲。\" }",
+        "narration = { en = \"A.\", zh = \"在这里写下观众应当看到什么、为什么。\" }",
+    );
+    std::fs::write(dir.path().join("other.toml"), placeholder).expect("write");
+    let o = pipelens(dir.path(), &["check", "other.toml"]);
+    let out = text(&o);
+    assert!(
+        out.contains("warning: step 1's Chinese narration is still the new lesson's placeholder"),
+        "{out}"
+    );
     std::fs::write(dir.path().join("other.toml"), lesson(true)).expect("write");
     let o = pipelens(dir.path(), &["check", "other.toml"]);
     let out = text(&o);

@@ -210,9 +210,10 @@ fn first_step(session: &Session) -> Result<lesson::Step, String> {
     let player = session.lesson.as_ref().ok_or("no lesson open")?;
     let mut step = crate::app::record::recorded_step(session).ok_or("no lesson open")?;
     step.set = lesson::param::differences(&player.lesson.scene, &session.spec);
+    let [en, zh] = lesson::PLACEHOLDER_NARRATION;
     step.narration = Text {
-        en: "Write here what the viewer should see, and why.".to_owned(),
-        zh: "在这里写下观众应当看到什么、为什么。".to_owned(),
+        en: en.to_owned(),
+        zh: zh.to_owned(),
     };
     Ok(step)
 }

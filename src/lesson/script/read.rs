@@ -63,6 +63,30 @@ pub fn parse_lesson(text: &str, file: &str, base: &Path) -> Result<Lesson, Diagn
             "the lesson has no steps: add at least one [[steps]] with a `title` and `narration`",
         );
     }
+    // A narration still the placeholder a new lesson starts with (in either language).
+    for (k, s) in raw.steps.iter().enumerate() {
+        let said = s.get_ref().narration.get_ref();
+        let kept: Vec<&str> = [("English", &said.en), ("Chinese", &said.zh)]
+            .into_iter()
+            .filter(|(_, t)| super::super::PLACEHOLDER_NARRATION.contains(&t.trim()))
+            .map(|(lang, _)| lang)
+            .collect();
+        if !kept.is_empty() {
+            warnings.push(
+                super::super::Diagnostic::at(
+                    file,
+                    text,
+                    s.get_ref().narration.span(),
+                    format!(
+                        "step {}'s {} narration is still the new lesson's placeholder: write what the viewer should see, and why",
+                        k + 1,
+                        kept.join(" and ")
+                    ),
+                )
+                .warning(),
+            );
+        }
+    }
     let mut steps = Vec::new();
     if let Ok(base_spec) = &scene {
         let mut spec = base_spec.clone();
