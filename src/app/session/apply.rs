@@ -84,10 +84,20 @@ impl Session {
 
     /// `lesson` in place of the one playing, at its step `step`: entered (its scene, view and
     /// selection as the step sets them) or, for a change of words only, kept as it is on screen.
+    /// A change of words keeps the player where it was on that step — its animations' time,
+    /// playing or not, the answer shown — for the screen is what that time drew: a step
+    /// recorded next counts its changes from there.
     fn revise(&mut self, lesson: crate::lesson::Lesson, step: usize, enter: bool) {
         self.reload_error = None;
         let step = step.min(lesson.steps.len().saturating_sub(1));
-        self.lesson = Some(LessonPlayer::new(Arc::new(lesson), step));
+        let mut player = LessonPlayer::new(Arc::new(lesson), step);
+        if let Some(was) = self.lesson.as_ref().filter(|p| !enter && p.step == step) {
+            player.time = was.time;
+            player.playing = was.playing;
+            player.show_answer = was.show_answer;
+            player.verdict.clone_from(&was.verdict);
+        }
+        self.lesson = Some(player);
         if enter {
             self.enter_step(step);
         }

@@ -333,3 +333,38 @@ fn a_watch_is_recorded_into_the_step_it_is_drawn_in() {
     h.run_steps(3);
     assert_eq!(super::lesson_of(&h).steps[k].watch, Some(watch));
 }
+
+/// A change of words while a step's animation has moved keeps the animation's time with the
+/// screen it drew: a step recorded then sets nothing the teacher did not set. (Typing a title
+/// in the editor restarted the player at time 0 while the screen kept the light where the
+/// animation had left it, and the step was saved with that light's position in its `set`.)
+#[test]
+fn a_change_of_words_keeps_the_animations_time() {
+    use pipelens::app::command::EditorCommand;
+    let lesson = pipelens::lesson::library::lesson("10-blinn-phong.toml").expect("lesson 10");
+    let doc = pipelens::lesson::Document::Lesson(Box::new(lesson.clone()));
+    let mut s = pipelens::app::session::Session::with_document(doc, "10-blinn-phong", None);
+    s.apply(Command::Lesson(LessonCommand::GoToStep(1)));
+    assert!(
+        !lesson.steps[1].animate.is_empty(),
+        "step 2 moves its light"
+    );
+    // The step plays on entering it: 0.7 s in, it is paused.
+    if !s.lesson.as_ref().is_some_and(|p| p.playing) {
+        s.apply(Command::Lesson(LessonCommand::TogglePlay));
+    }
+    s.apply(Command::Lesson(LessonCommand::Tick(0.7)));
+    s.apply(Command::Lesson(LessonCommand::TogglePlay));
+    assert!(!s.lesson.as_ref().is_some_and(|p| p.playing));
+    let mut edited = lesson;
+    edited.steps[1].title.zh = "漫反射（改）".to_owned();
+    s.apply(Command::Editor(EditorCommand::ReviseLesson {
+        lesson: Box::new(edited),
+        step: 1,
+        enter: false,
+    }));
+    let player = s.lesson.as_ref().expect("a lesson");
+    assert!((player.time - 0.7).abs() < 1e-6, "time {}", player.time);
+    let step = pipelens::app::record::recorded_step(&s).expect("a step");
+    assert!(step.set.is_empty(), "{:?}", step.set);
+}
