@@ -101,10 +101,24 @@ impl Editor {
         match result {
             Some(Ok(())) => {
                 self.said = None;
+                self.refused_on_screen = None;
                 self.revised(session, Some(go), true, out);
             }
-            Some(Err(e)) => self.said = Some(Err(e)),
+            Some(Err(e)) => {
+                self.refused_on_screen = Some((e.clone(), true));
+                self.said = Some(Err(e));
+            }
             None => {}
+        }
+        // Why the button did nothing, where the teacher is looking: under it, scrolled to.
+        if let (Some((refusal, reveal)), Some(Err(e))) = (&mut self.refused_on_screen, &self.said)
+            && e == refusal
+        {
+            let shown = super::window::said(ui, &Err(e.clone()));
+            if *reveal {
+                shown.scroll_to_me(Some(egui::Align::Center));
+                *reveal = false;
+            }
         }
     }
 

@@ -34,6 +34,10 @@ pub struct Editor {
     pub(super) marks: Option<(u64, Vec<bool>)>,
     /// What the last action said.
     pub(super) said: Option<Result<String, String>>,
+    /// The last refusal of the buttons under "what is on screen" (add or update a step): while
+    /// it is what the editor last said, it is said there, beside them, and scrolled to once
+    /// (`true` until it is).
+    pub(super) refused_on_screen: Option<(String, bool)>,
     /// The "New lesson" part.
     pub new: NewLesson,
     /// A lesson just made, for the app to open (and then [`Self::adopt`]).
@@ -170,8 +174,10 @@ impl Editor {
     ) {
         if self.doc.is_some() {
             self.file_row(ui, session, lang, out);
-            // What the last action said, at the top where it is seen.
-            if let Some(m) = &self.said {
+            // What the last action said, at the top where it is seen (a refusal of the
+            // buttons under the screen's part beside them instead).
+            let below = |m: &Result<String, String>| matches!((m, &self.refused_on_screen), (Err(e), Some((r, _))) if e == r);
+            if let Some(m) = self.said.as_ref().filter(|m| !below(m)) {
                 said(ui, m);
             }
             if self
@@ -318,7 +324,7 @@ impl Editor {
 }
 
 /// A message: done in green, refused or failed in the error colour.
-pub(super) fn said(ui: &mut egui::Ui, message: &Result<String, String>) {
+pub(super) fn said(ui: &mut egui::Ui, message: &Result<String, String>) -> egui::Response {
     match message {
         Ok(m) => ui.label(RichText::new(m).color(egui::Color32::LIGHT_GREEN)),
         Err(e) => ui.label(
@@ -326,5 +332,5 @@ pub(super) fn said(ui: &mut egui::Ui, message: &Result<String, String>) {
                 .color(ui.visuals().error_fg_color)
                 .monospace(),
         ),
-    };
+    }
 }

@@ -90,8 +90,19 @@ fn a_lesson_is_recorded_arranged_and_saved_in_the_editor() {
             .is_some()
     );
     h.get_by_label("＋ Add as step 2").click_accesskit();
-    h.run_steps(2);
+    h.run_steps(4);
     assert_eq!(titles(&h).len(), 5);
+    // Why, under the button (not at the window's top, scrolled out of sight), in view.
+    let button = h.get_by_label("＋ Add as step 2").rect();
+    let why = h
+        .get_by_label_contains("a lesson's step needs its words in both languages")
+        .rect();
+    assert!(
+        why.top() >= button.bottom() - 1.0 && why.top() < button.bottom() + 40.0,
+        "the refusal at {why:?}, the button at {button:?}"
+    );
+    let window = h.ctx.content_rect();
+    assert!(window.contains_rect(why), "{why:?} is off {window:?}");
     let words = [
         "The base at 50°",
         "支架转到 50°",
