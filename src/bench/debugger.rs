@@ -92,7 +92,11 @@ pub fn rows(frames: usize, out: &mut dyn Write) -> anyhow::Result<()> {
     let mut job = session.job();
     job.spec.settings.capture = job.spec.settings.capture.with_pixel(Some((w / 2, h / 2)));
     let capture = pipeline::render(&job.spec.scene, &job.spec.settings)?;
-    let line = watch_line(&fragment)?;
+    let line = line_starting(
+        &fragment,
+        "vec3 h =",
+        "fragment shader computes no `vec3 h`",
+    )?;
     let fragment_run = capture
         .shaders
         .as_ref()
@@ -104,14 +108,17 @@ pub fn rows(frames: usize, out: &mut dyn Write) -> anyhow::Result<()> {
             .map_err(|e| anyhow::anyhow!("{e}"))
     })?;
     row(out, "watch list: one entry read at a step", read, None)?;
-    pictures(&session, line, frames, out)
+    // And a vertex shader's value: the world normal's y after the line that writes it.
+    let vertex_line = line_starting(&vertex, "w_nrm =", "vertex shader writes no `w_nrm`")?;
+    pictures(&session, (line, vertex_line), frames, out)
 }
 
 /// The variable picture at 1280×720: the frame with a watch of the fragment shader after
-/// `line`, and one of the vertex shader, against the frame without.
+/// `line`, and one of the vertex shader after `vertex_line` (carried to the pixels as a
+/// varying), against the frame without.
 fn pictures(
     session: &Session,
-    line: usize,
+    (line, vertex_line): (usize, usize),
     frames: usize,
     out: &mut dyn Write,
 ) -> anyhow::Result<()> {
@@ -129,23 +136,6 @@ fn pictures(
             "dot(n, l)",
         ))
         .map_err(|e| anyhow::anyhow!("{e}"))?;
-    // And a vertex shader's value, carried to the pixels as a varying: the world normal's y
-    // after the vertex shader's line that writes it.
-    let vertex_line = session
-        .spec
-        .scene
-        .objects
-        .iter()
-        .find_map(|o| o.code.shader.as_ref())
-        .and_then(|sh| {
-            sh.programs
-                .vertex
-                .source
-                .lines()
-                .position(|l| l.trim_start().starts_with("w_nrm ="))
-        })
-        .map(|i| i + 1)
-        .ok_or_else(|| anyhow::anyhow!("{LESSON}'s vertex shader writes no `w_nrm`"))?;
     let vertex_watching = session
         .spec
         .scene
@@ -176,14 +166,15 @@ fn pictures(
     Ok(())
 }
 
-/// The line of `fragment` that computes the half vector h, after n and l: the watch reads
-/// `dot(n, l)` just after it.
-fn watch_line(fragment: &str) -> anyhow::Result<usize> {
-    fragment
+/// The first line of `source` (from 1) that starts with `start`, where a watch is read: the
+/// fragment shader's line that computes the half vector h (after n and l, so `dot(n, l)` can
+/// be read), the vertex shader's that writes `w_nrm`. `missing` says what is not there.
+fn line_starting(source: &str, start: &str, missing: &str) -> anyhow::Result<usize> {
+    source
         .lines()
-        .position(|l| l.trim_start().starts_with("vec3 h ="))
+        .position(|l| l.trim_start().starts_with(start))
         .map(|i| i + 1)
-        .ok_or_else(|| anyhow::anyhow!("{LESSON}'s fragment shader computes no `vec3 h`"))
+        .ok_or_else(|| anyhow::anyhow!("{LESSON}'s {missing}"))
 }
 
 /// One row: what, milliseconds, and a note.
