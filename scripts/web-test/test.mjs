@@ -275,7 +275,9 @@ if (await waitForTitle(ans, /^pipelens — 14-mipmaps — step 3\/6$/, "the mipm
     await ans.keyboard.press("Control+A");
     await ans.keyboard.type(typed, { delay: 100 });
     await ans.keyboard.press("Enter");
-    await ans.waitForTimeout(1500);
+    // The verdict must be drawn (the card grown) before the next click aims at the box: on a
+    // loaded machine 1.5 s was once too little and "3" went elsewhere.
+    await ans.waitForTimeout(4000);
     await ans.screenshot({ path: `${out}/typed-answer-${typed}.png` });
   }
   // Saved within seconds (eframe's auto-save, 5 s here): waited for, up to 30 s, not slept.
