@@ -59,6 +59,9 @@ pub struct PipelensApp {
     pub picture: Vec<egui::Rect>,
     /// Where this frame drew the step's subject, which the narration card must leave clear.
     pub subject: Vec<egui::Rect>,
+    /// Where this frame drew words over the picture (a view's header, matrix card, legend),
+    /// which must leave the subject clear too.
+    pub overlays: Vec<egui::Rect>,
     pub(super) pixel_view: PixelView,
     pub(super) geometry_view: GeometryView,
     pub(super) observer_view: ObserverView,
@@ -103,6 +106,7 @@ impl PipelensApp {
             panels: Panels::for_mode(presenting),
             picture: Vec::new(),
             subject: Vec::new(),
+            overlays: Vec::new(),
             pixel_view: PixelView::default(),
             geometry_view: GeometryView::default(),
             observer_view: ObserverView::default(),
@@ -186,6 +190,7 @@ impl PipelensApp {
         self.keyboard(ui.ctx());
         self.picture.clear();
         self.subject.clear();
+        self.overlays.clear();
         let narrated = self.panels.narration && self.session.lesson.is_some();
         self.band =
             narrated && !window_size::is_compact(ui.ctx()) && self.narration_in_band(ui.ctx());
@@ -404,6 +409,8 @@ impl PipelensApp {
                 self.commands.extend(c);
                 self.picture.extend(self.geometry_view.picture);
                 self.subject.extend(self.geometry_view.subject);
+                self.overlays
+                    .extend(self.geometry_view.cards.iter().filter(|r| r.is_positive()));
             } else {
                 let c = self.pixel_view.ui(ui, &self.session, capture);
                 // A pixel clicked is a pixel to read: the inspector opens with its derivation

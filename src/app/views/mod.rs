@@ -14,6 +14,7 @@ pub mod lesson;
 mod matrix;
 pub mod navigator;
 pub mod observer;
+pub mod overlays;
 pub mod own_uniforms;
 pub mod palette;
 pub mod params;

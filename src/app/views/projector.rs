@@ -48,13 +48,14 @@ impl Projector {
 
 /// The lights of a capture drawn where they are (see `Light::gizmo`), through `to_view` (world
 /// coordinates into the space drawn), in a scene centred at `centre` of about `size`; each with its
-/// label; returns whether it drew any.
+/// label, kept off the cards in `avoid` within `view`; returns whether it drew any.
 pub fn draw_lights(
     painter: &egui::Painter,
     cam: &Projector,
     lights: &[pipeline::light::Light],
     to_view: &dyn Fn(Vec3) -> Vec3,
     (centre, size): (Vec3, f32),
+    (avoid, view): (&[egui::Rect], egui::Rect),
     lang: Lang,
 ) -> bool {
     use pipeline::light::Light;
@@ -76,11 +77,22 @@ pub fn draw_lights(
                 Light::Directional { .. } => lang.tr("directional light", "平行光"),
                 Light::Ambient { .. } => "",
             };
+            let text = format!("{name} {k}");
+            let size = painter
+                .layout_no_wrap(text.clone(), font.clone(), palette::LIGHT)
+                .size()
+                + egui::Vec2::splat(8.0);
+            let above = egui::Rect::from_center_size(p - egui::vec2(0.0, size.y / 2.0), size);
+            let at = if avoid.iter().any(|r| r.intersects(above)) {
+                crate::app::views::place_label(p, size, avoid, view.shrink(4.0))
+            } else {
+                above
+            };
             label_with_background(
                 painter,
-                p,
-                egui::Align2::CENTER_BOTTOM,
-                &format!("{name} {k}"),
+                at.center(),
+                egui::Align2::CENTER_CENTER,
+                &text,
                 &font,
                 palette::LIGHT,
             );

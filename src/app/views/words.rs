@@ -14,16 +14,28 @@ pub fn picture_scale(ctx: &egui::Context) -> f32 {
         .map_or(1.0, |f| f.size / 15.0)
 }
 
+/// The size on screen of words of `size` normal points over a picture: scaled with the body
+/// text, and in classroom mode never below the body (the narration's own size), so that a
+/// label reads from the back of the room as the narration does.
+fn picture_size(ctx: &egui::Context, size: f32) -> f32 {
+    let scale = picture_scale(ctx);
+    if scale > 1.0 {
+        size.max(15.0) * scale
+    } else {
+        size * scale
+    }
+}
+
 /// A proportional font of `size` normal points for words drawn over a picture.
 #[must_use]
 pub fn picture_font(ctx: &egui::Context, size: f32) -> egui::FontId {
-    egui::FontId::proportional(size * picture_scale(ctx))
+    egui::FontId::proportional(picture_size(ctx, size))
 }
 
 /// A monospace font of `size` normal points for numbers drawn over a picture.
 #[must_use]
 pub fn picture_mono(ctx: &egui::Context, size: f32) -> egui::FontId {
-    egui::FontId::monospace(size * picture_scale(ctx))
+    egui::FontId::monospace(picture_size(ctx, size))
 }
 
 /// Says over a picture that a dim lighting term is drawn `gain` times brighter than its values

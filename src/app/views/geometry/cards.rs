@@ -22,87 +22,121 @@ pub(super) struct Shown {
     pub lights: bool,
 }
 
-/// What each colour drawn means, at the right from `top` down (below the matrix card: the
-/// bottom-left belongs to the narration), or at the bottom-right when that would cover the
-/// step's `subject` there and not here; returns where it is.
-pub(super) fn legend(
-    painter: &egui::Painter,
-    (rect, top, subject): (Rect, f32, Rect),
-    lang: Lang,
-    stride: usize,
-    shown: &Shown,
-) -> Rect {
-    let mut items: Vec<(Color32, &str)> = FATES
-        .iter()
-        .zip(shown.fates)
-        .filter(|(_, drawn)| *drawn)
-        .map(|((color, en, zh), _)| (*color, lang.tr(en, zh)))
-        .collect();
-    if shown.volume {
-        items.push((palette::NEAR, lang.tr("near plane", "近平面")));
-        items.push((palette::FAR, lang.tr("far plane", "远平面")));
+/// The legend, measured before the picture is framed so that the subject can be framed clear
+/// of it: what each colour drawn means, one item a row (a column) or as many a row as the
+/// view's width holds (a strip along the foot).
+pub(super) struct Legend {
+    items: Vec<(Color32, &'static str)>,
+    /// Each item's width (the widest's), its line and words.
+    item_w: f32,
+    row: f32,
+    /// "showing triangles 1/n" when only every n-th triangle is drawn.
+    note: Option<String>,
+}
+
+impl Legend {
+    /// The legend of what `shown` says is drawn; `stride`: every how many triangles one is.
+    pub(super) fn new(painter: &egui::Painter, shown: &Shown, lang: Lang, stride: usize) -> Self {
+        let mut items: Vec<(Color32, &'static str)> = FATES
+            .iter()
+            .zip(shown.fates)
+            .filter(|(_, drawn)| *drawn)
+            .map(|((color, en, zh), _)| (*color, lang.tr(en, zh)))
+            .collect();
+        if shown.volume {
+            items.push((palette::NEAR, lang.tr("near plane", "近平面")));
+            items.push((palette::FAR, lang.tr("far plane", "远平面")));
+        }
+        if shown.lights {
+            items.push((palette::LIGHT, lang.tr("light", "光源")));
+        }
+        let font = picture_font(painter.ctx(), 14.0);
+        let item_w = items
+            .iter()
+            .map(|(_, text)| {
+                let g = painter.layout_no_wrap((*text).to_owned(), font.clone(), Color32::WHITE);
+                g.size().x
+            })
+            .fold(0.0f32, f32::max)
+            + 40.0 * picture_scale(painter.ctx());
+        let note = (stride > 1 && !items.is_empty())
+            .then(|| format!("{} 1/{stride}", lang.tr("showing triangles", "显示三角形")));
+        Self {
+            items,
+            item_w,
+            row: font.size * 1.3,
+            note,
+        }
     }
-    if shown.lights {
-        items.push((palette::LIGHT, lang.tr("light", "光源")));
+
+    /// How many items a row holds in a strip `width` wide (at least one).
+    pub(super) fn per_row(&self, width: f32) -> usize {
+        ((width - 8.0) / self.item_w).floor().max(1.0) as usize
     }
-    if items.is_empty() {
-        return Rect::NOTHING;
+
+    /// The legend's size with `per_row` items a row, its note below included; zero when it
+    /// has nothing to say.
+    pub(super) fn size(&self, per_row: usize) -> Vec2 {
+        if self.items.is_empty() {
+            return Vec2::ZERO;
+        }
+        let per_row = per_row.clamp(1, self.items.len());
+        let rows = self.items.len().div_ceil(per_row);
+        let note = if self.note.is_some() {
+            self.row + 6.0
+        } else {
+            0.0
+        };
+        Vec2::new(
+            self.item_w * per_row as f32 + 4.0,
+            self.row * rows as f32 + 8.0 + note,
+        )
     }
-    let scale = picture_scale(painter.ctx());
-    let row = 18.0 * scale;
-    let w = items
-        .iter()
-        .map(|(_, text)| {
-            painter
-                .layout_no_wrap(
-                    (*text).to_owned(),
-                    picture_font(painter.ctx(), 14.0),
-                    Color32::WHITE,
-                )
-                .size()
-                .x
-        })
-        .fold(0.0f32, f32::max)
-        + 40.0 * scale;
-    let size = Vec2::new(w + 4.0, row * items.len() as f32 + 8.0);
-    let below_card = Rect::from_min_size(Pos2::new(rect.right() - w - 10.0, top), size);
-    let bottom = Rect::from_min_size(
-        Pos2::new(rect.right() - w - 10.0, rect.bottom() - size.y - 40.0),
-        size,
-    );
-    let back = if below_card.intersects(subject) && !bottom.intersects(subject) {
-        bottom
-    } else {
-        below_card
-    };
-    let top = back.top() + 4.0;
-    painter.rect_filled(back, 4.0, Color32::from_black_alpha(150));
-    for (k, (color, text)) in items.into_iter().enumerate() {
-        let p = Pos2::new(back.left() + 8.0, top + row * (k as f32 + 0.5));
-        painter.line_segment(
-            [p, p + Vec2::new(18.0 * scale, 0.0)],
-            Stroke::new(3.0, color),
-        );
-        painter.text(
-            p + Vec2::new(24.0 * scale, 0.0),
-            Align2::LEFT_CENTER,
-            text,
-            picture_font(painter.ctx(), 14.0),
-            Color32::from_gray(230),
-        );
+
+    /// Draws the legend in `at` (from [`Self::size`] with `per_row`); returns where it is.
+    pub(super) fn paint(&self, painter: &egui::Painter, at: Rect, per_row: usize) -> Rect {
+        if self.items.is_empty() {
+            return Rect::NOTHING;
+        }
+        let per_row = per_row.clamp(1, self.items.len());
+        let scale = picture_scale(painter.ctx());
+        let note = if self.note.is_some() {
+            self.row + 6.0
+        } else {
+            0.0
+        };
+        let back = Rect::from_min_max(at.min, at.max - Vec2::new(0.0, note));
+        painter.rect_filled(back, 4.0, Color32::from_black_alpha(150));
+        for (k, (color, text)) in self.items.iter().enumerate() {
+            let (r, c) = (k / per_row, k % per_row);
+            let p = Pos2::new(
+                back.left() + 8.0 + self.item_w * c as f32,
+                back.top() + 4.0 + self.row * (r as f32 + 0.5),
+            );
+            painter.line_segment(
+                [p, p + Vec2::new(18.0 * scale, 0.0)],
+                Stroke::new(3.0, *color),
+            );
+            painter.text(
+                p + Vec2::new(24.0 * scale, 0.0),
+                Align2::LEFT_CENTER,
+                *text,
+                picture_font(painter.ctx(), 14.0),
+                Color32::from_gray(230),
+            );
+        }
+        match &self.note {
+            Some(note) => back.union(label_with_background(
+                painter,
+                back.left_bottom() + Vec2::new(0.0, 6.0),
+                Align2::LEFT_TOP,
+                note,
+                &picture_font(painter.ctx(), 13.0),
+                Color32::YELLOW,
+            )),
+            None => back,
+        }
     }
-    if stride > 1 {
-        let note = label_with_background(
-            painter,
-            back.left_bottom() + Vec2::new(0.0, 6.0),
-            Align2::LEFT_TOP,
-            &format!("{} 1/{stride}", lang.tr("showing triangles", "显示三角形")),
-            &picture_font(painter.ctx(), 13.0),
-            Color32::YELLOW,
-        );
-        return back.union(note);
-    }
-    back
 }
 
 /// The matrix the stage applies, big, in a card at the top-right: the object's model matrix, V,
@@ -149,11 +183,16 @@ pub(super) fn matrix_card(
         (Space::Window, _) => (m.viewport.name.clone(), Some(&m.viewport)),
         _ => return None,
     };
-    // Larger in classroom mode (the room reads its digits), never wider than half the view.
-    let scale = crate::app::views::picture_scale(painter.ctx());
-    let size = (rect.width() / 42.0)
-        .clamp(13.0 * scale, 24.0 * scale)
-        .min(rect.width() / 36.0);
+    // In classroom mode the narration's size, the room reads its digits (the subject is
+    // framed clear of the card); otherwise as the view's width allows, 13 to 24 points.
+    let scale = picture_scale(painter.ctx());
+    let size = if scale > 1.0 {
+        15.0 * scale
+    } else {
+        (rect.width() / 42.0)
+            .clamp(13.0, 24.0)
+            .min(rect.width() / 36.0)
+    };
     let style = typeset::Style {
         size,
         color: Color32::WHITE,

@@ -32,6 +32,8 @@ pub struct GeometryView {
     pub picture: Option<Rect>,
     /// Where the step's focused objects were drawn this frame (none without a focus).
     pub subject: Option<Rect>,
+    /// The cards drawn over the picture this frame: the header, the matrix card, the legend.
+    pub cards: Vec<Rect>,
 }
 
 impl Default for GeometryView {
@@ -44,6 +46,7 @@ impl Default for GeometryView {
             reset_for: None,
             picture: None,
             subject: None,
+            cards: Vec::new(),
         }
     }
 }
@@ -111,18 +114,16 @@ fn draw_volume(painter: &egui::Painter, cam: &Projector, v: &[Vec3; 8]) {
     }
 }
 
-/// Every triangle as three segments, coloured by its fate (the subject brighter); returns the
-/// stride used, the screen box of the subject and which fates (by [`fate_index`]) were drawn.
+/// Every `stride`-th triangle as three segments, coloured by its fate (the subject brighter);
+/// returns the screen box of the subject.
 fn draw_triangles(
     painter: &egui::Painter,
     cam: &Projector,
     capture: &FrameCapture,
     points: &[Option<Vec3>],
-    subject: &[bool],
-) -> (usize, Rect, [bool; FATES.len()]) {
-    let stride = capture.primitives.len().div_ceil(MAX_TRIANGLES).max(1);
+    (subject, stride): (&[bool], usize),
+) -> Rect {
     let mut seen = Rect::NOTHING;
-    let mut fates = [false; FATES.len()];
     for prim in capture.primitives.iter().step_by(stride) {
         let focused = subject.get(prim.object as usize).copied().unwrap_or(false);
         let color = fate_color(&prim.fate);
@@ -142,13 +143,43 @@ fn draw_triangles(
             painter.line_segment([a, b], stroke);
             painter.line_segment([b, c], stroke);
             painter.line_segment([c, a], stroke);
-            fates[fate_index(&prim.fate)] = true;
             if focused {
                 seen = seen.union(Rect::from_points(&[a, b, c]));
             }
         }
     }
-    (stride, seen, fates)
+    seen
+}
+
+/// What the legend names: the fates of the triangles drawn (every `stride`-th), the view
+/// volume when drawn, the lights when this space has the world's lights and one has a gizmo
+/// around the subject's `sphere`.
+fn shown(
+    capture: &FrameCapture,
+    space: Space,
+    sphere: Option<(Vec3, f32)>,
+    volume: bool,
+    stride: usize,
+) -> cards::Shown {
+    let mut fates = [false; FATES.len()];
+    for prim in capture.primitives.iter().step_by(stride) {
+        fates[fate_index(&prim.fate)] = true;
+    }
+    let lights = match (world_into(capture, space), sphere) {
+        (Some(m), Some((centre, radius))) => {
+            let world_centre = m.inverse().transform_point3(centre);
+            capture
+                .lights
+                .iter()
+                .any(|l| l.gizmo(world_centre, radius.max(1e-3) * 2.0).is_some())
+        }
+        _ => false,
+    };
+    cards::Shown {
+        fates,
+        volume,
+        lights,
+    }
 }
 
 /// What the header over the picture says and where it may reach.
@@ -187,17 +218,22 @@ impl GeometryView {
         let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
         self.picture = Some(rect);
         self.subject = None;
+        self.cards.clear();
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 0.0, Color32::from_gray(18));
-        let frame = clear_of_card(ui.ctx(), rect);
-        self.navigate(ui, &response, frame);
         let subject = subject(capture, session, space);
         let eased = t * t * (3.0 - 2.0 * t);
         let from = from.unwrap_or(space);
         let points = positions(capture, (from, space, eased), &subject);
-        let Some((cam, radius, centre)) =
-            bounds(capture, [space, from], &subject).and_then(|b| self.camera(frame, b))
-        else {
+        let sphere = bounds(capture, [space, from], &subject);
+        let view_volume = volume(capture, space).filter(|_| t >= 1.0);
+        let stride = capture.primitives.len().div_ceil(MAX_TRIANGLES).max(1);
+        let shown = shown(capture, space, sphere, view_volume.is_some(), stride);
+        let legend = cards::Legend::new(&painter, &shown, lang, stride);
+        let own = super::overlays::last(ui.ctx(), cards_id());
+        let (frame, legend_at) = clear_of_cards(ui.ctx(), rect, &own, &legend);
+        self.navigate(ui, &response, frame);
+        let Some((cam, radius, centre)) = sphere.and_then(|b| self.camera(frame, b)) else {
             painter.text(
                 rect.center(),
                 Align2::CENTER_CENTER,
@@ -208,11 +244,10 @@ impl GeometryView {
             return cmds;
         };
         draw_axes(&painter, &cam, radius * 0.6);
-        let view_volume = volume(capture, space).filter(|_| t >= 1.0);
         if let Some(v) = &view_volume {
             draw_volume(&painter, &cam, v);
         }
-        let (stride, seen, fates) = draw_triangles(&painter, &cam, capture, &points, &subject);
+        let seen = draw_triangles(&painter, &cam, capture, &points, (&subject, stride));
         let focused = session
             .selection
             .focus
@@ -222,37 +257,36 @@ impl GeometryView {
         if space == Space::World && from == space && session.selection.show_normals {
             draw_normals(&painter, &cam, capture, &points, radius * 0.12);
         }
-        let mut lights = false;
-        if let Some(m) = world_into(capture, space) {
+        if shown.lights
+            && let Some(m) = world_into(capture, space)
+        {
             let to_view = |p: Vec3| m.transform_point3(p);
             let world_centre = m.inverse().transform_point3(centre);
-            lights = draw_lights(
+            draw_lights(
                 &painter,
                 &cam,
                 &capture.lights,
                 &to_view,
                 (world_centre, radius * 2.0),
+                (&own, rect),
                 lang,
             );
         }
         let card = card
             .then(|| cards::matrix_card(&painter, rect, session, capture, space))
             .flatten();
+        let header = self.header_beside(ui, rect, card);
         let header = Header {
-            rect,
+            rect: header,
             space,
             subject: &subject,
             animated: from != space,
-            right: card.map_or(rect.right(), |c| c.left()),
+            right: header.right(),
         };
         let title = self.header(ui, &painter, &header, session, capture, &mut cmds);
-        let shown = cards::Shown {
-            fates,
-            volume: view_volume.is_some(),
-            lights,
-        };
-        let top = card.map_or(rect.top(), |c| c.bottom()) + 8.0;
-        let legend = cards::legend(&painter, (rect, top, seen), lang, stride, &shown);
+        let legend = legend.paint(&painter, legend_at.0, legend_at.1);
+        self.cards = vec![title, card.unwrap_or(Rect::NOTHING), legend];
+        super::overlays::record(ui.ctx(), cards_id(), self.cards.clone());
         let narration = super::card_placement::narration_card(ui.ctx()).unwrap_or(Rect::NOTHING);
         let avoid = [
             seen,
@@ -385,6 +419,20 @@ impl GeometryView {
         }
     }
 
+    /// Where the header (the space's name, the view's buttons) goes: the top-left, left of the
+    /// matrix card, or below the card across the view when the card leaves it less than nine
+    /// words' room.
+    fn header_beside(&self, ui: &Ui, rect: Rect, card: Option<Rect>) -> Rect {
+        let size = ui.style().text_styles[&egui::TextStyle::Body].size;
+        match card {
+            Some(c) if c.left() - rect.left() >= size * 9.0 => {
+                Rect::from_min_max(rect.min, Pos2::new(c.left(), rect.bottom()))
+            }
+            Some(c) => Rect::from_min_max(Pos2::new(rect.left(), c.bottom() + 2.0), rect.max),
+            None => rect,
+        }
+    }
+
     /// The orbiting camera framing the sphere `(centre, radius)`.
     fn camera(&self, rect: Rect, (centre, radius): (Vec3, f32)) -> Option<(Projector, f32, Vec3)> {
         let radius = radius.max(1e-3);
@@ -402,17 +450,66 @@ impl GeometryView {
     }
 }
 
-/// Where the subject's sphere (a square on the narrower side of `rect`) is framed clear of the
-/// narration card: the rect the orbiting camera's viewport maps to.
-fn clear_of_card(ctx: &egui::Context, rect: Rect) -> Rect {
-    let card = super::card_placement::narration_card(ctx);
-    let square = Rect::from_center_size(
-        (rect.size() / 2.0).to_pos2(),
-        Vec2::splat(rect.width().min(rect.height())),
-    );
-    let frame = super::card_placement::place(rect, rect.size(), square, card);
-    super::card_placement::report_kept(ctx, frame.area() / rect.area());
-    frame
+fn cards_id() -> egui::Id {
+    egui::Id::unique("pipelens-geometry-cards")
+}
+
+/// Where the subject's sphere is framed: the largest square of `rect` clear of the view's own
+/// cards drawn last frame (`own`: the header, the matrix card, the legend) and of the narration
+/// card, with the legend where it leaves the largest square — one item a row below the matrix
+/// card or at the bottom-right, or a strip along the foot. Returns the square and the legend's
+/// place and items a row. Reports the share of the square the narration card left.
+fn clear_of_cards(
+    ctx: &egui::Context,
+    rect: Rect,
+    own: &[Rect],
+    legend: &cards::Legend,
+) -> (Rect, (Rect, usize)) {
+    let narration = super::card_placement::narration_card(ctx);
+    let header = own.first().copied().unwrap_or(Rect::NOTHING);
+    let card = own.get(1).copied().unwrap_or(Rect::NOTHING);
+    let right = rect.right() - 10.0;
+    let column = legend.size(1);
+    let top = [card, header]
+        .iter()
+        .filter(|r| r.is_positive() && r.right() > right - column.x)
+        .map(|r| r.bottom() + 8.0)
+        .fold(rect.top() + 10.0, f32::max);
+    let strip_w = rect.width() - 20.0;
+    let strip = legend.size(legend.per_row(strip_w));
+    let places = [
+        (
+            Rect::from_min_size(Pos2::new(right - column.x, top), column),
+            1,
+        ),
+        (
+            Rect::from_min_size(Pos2::new(right, rect.bottom() - 10.0) - column, column),
+            1,
+        ),
+        (
+            Rect::from_min_size(Pos2::new(right, rect.bottom() - 10.0) - strip, strip),
+            legend.per_row(strip_w),
+        ),
+    ];
+    let square = |legend: Rect, narration: Option<Rect>| {
+        let mut all = vec![header, card, legend];
+        all.extend(narration);
+        super::overlays::free_square(rect, &all).unwrap_or(rect)
+    };
+    let (frame, place) = places
+        .iter()
+        .map(|p| (square(p.0, narration), *p))
+        .reduce(|best, next| {
+            if next.0.width() > best.0.width() + 0.5 {
+                next
+            } else {
+                best
+            }
+        })
+        .unwrap_or((rect, places[0]));
+    let alone = square(place.0, None);
+    super::card_placement::report_kept(ctx, (frame.area() / alone.area().max(1.0)).min(1.0));
+    (frame, place)
 }
 
 /// Each vertex row's position on the way from space `from` to `to` at eased progress `t`; in

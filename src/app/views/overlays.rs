@@ -1,0 +1,135 @@
+//! Room for the subject among a view's own cards. A view draws words over its picture — the
+//! space's name and buttons at the top-left, the stage's matrix at the top-right, the legend —
+//! and the narration card may lie over it too. The subject is framed in the largest square
+//! that meets none of them, so that no card covers what the step is about and the cards can
+//! be as large as the room reads them.
+
+use egui::{Id, Rect, pos2};
+
+/// The gap kept between a card and the subject's square, in points.
+const GAP: f32 = 8.0;
+
+/// The largest square in `area` that overlaps none of `cards` (each kept [`GAP`] away), as
+/// near the middle of `area` as the cards allow; `None` when the cards leave no room at all.
+///
+/// Every maximal free rectangle has its sides on the area's or the cards' edges, so the
+/// rectangles between two of those x's and two of those y's that meet no card hold the
+/// answer: the largest square is `min(w, h)` of the best one, slid along its longer side
+/// toward the area's centre.
+#[must_use]
+pub fn free_square(area: Rect, cards: &[Rect]) -> Option<Rect> {
+    let cards: Vec<Rect> = cards
+        .iter()
+        .map(|c| c.expand(GAP).intersect(area))
+        .filter(|c| c.is_positive())
+        .collect();
+    let edges = |ends: fn(&Rect) -> [f32; 2]| {
+        let mut v: Vec<f32> = std::iter::once(ends(&area))
+            .chain(cards.iter().map(ends))
+            .flatten()
+            .collect();
+        v.sort_by(f32::total_cmp);
+        v.dedup();
+        v
+    };
+    let xs = edges(|r| [r.left(), r.right()]);
+    let ys = edges(|r| [r.top(), r.bottom()]);
+    let mut best: Option<(f32, f32, Rect)> = None;
+    for (i, &x0) in xs.iter().enumerate() {
+        for &x1 in &xs[i + 1..] {
+            for (j, &y0) in ys.iter().enumerate() {
+                for &y1 in &ys[j + 1..] {
+                    let free = Rect::from_min_max(pos2(x0, y0), pos2(x1, y1));
+                    if cards.iter().any(|c| c.intersect(free).is_positive()) {
+                        continue;
+                    }
+                    let square = centred_square(free, area.center());
+                    let (side, off) = (square.width(), square.center().distance(area.center()));
+                    let better =
+                        best.is_none_or(|(s, o, _)| side > s + 0.5 || (side > s - 0.5 && off < o));
+                    if better {
+                        best = Some((side, off, square));
+                    }
+                }
+            }
+        }
+    }
+    best.map(|(_, _, square)| square)
+        .filter(|s| s.width() >= 1.0)
+}
+
+/// The square of side `min(w, h)` in `free`, as near `towards` as it stays inside.
+fn centred_square(free: Rect, towards: egui::Pos2) -> Rect {
+    let side = free.width().min(free.height());
+    let half = side / 2.0;
+    let clamp = |v: f32, lo: f32, hi: f32| v.clamp(lo + half, (hi - half).max(lo + half));
+    let c = pos2(
+        clamp(towards.x, free.left(), free.right()),
+        clamp(towards.y, free.top(), free.bottom()),
+    );
+    Rect::from_center_size(c, egui::Vec2::splat(side))
+}
+
+fn key(view: Id) -> Id {
+    view.with("pipelens-overlay-cards")
+}
+
+/// The cards view `view` drew over its picture last frame (the frame is laid out before its
+/// cards are drawn, as the narration card's is).
+#[must_use]
+pub fn last(ctx: &egui::Context, view: Id) -> Vec<Rect> {
+    ctx.data(|d| d.get_temp::<Vec<Rect>>(key(view)))
+        .unwrap_or_default()
+}
+
+/// Records the cards `view` drew this frame; asks for one more frame when they moved, so
+/// that the subject is framed clear of where they are now.
+pub fn record(ctx: &egui::Context, view: Id, cards: Vec<Rect>) {
+    let changed = last(ctx, view)
+        .iter()
+        .zip(&cards)
+        .any(|(a, b)| (a.min - b.min).length() + (a.max - b.max).length() > 0.5)
+        || last(ctx, view).len() != cards.len();
+    if changed {
+        ctx.data_mut(|d| d.insert_temp(key(view), cards));
+        ctx.request_repaint();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rect(x0: f32, y0: f32, x1: f32, y1: f32) -> Rect {
+        Rect::from_min_max(pos2(x0, y0), pos2(x1, y1))
+    }
+
+    #[test]
+    fn with_no_card_the_square_is_the_narrow_side_in_the_middle() {
+        let s = free_square(rect(0.0, 0.0, 800.0, 600.0), &[]).expect("room");
+        assert_eq!(s, rect(100.0, 0.0, 700.0, 600.0));
+    }
+
+    #[test]
+    fn a_card_at_the_top_right_leaves_the_room_below_or_beside_it() {
+        // A 484 × 675 view, a card 450 × 180 at its top-right: below the card (y ≥ 198)
+        // a square of 477 fits; left of it only 26.
+        let area = rect(0.0, 0.0, 484.0, 675.0);
+        let card = rect(24.0, 10.0, 474.0, 190.0);
+        let s = free_square(area, &[card]).expect("room");
+        assert!((s.width() - 477.0).abs() < 0.01, "{s:?}");
+        assert!(s.top() >= 198.0 - 0.01 && s.bottom() <= 675.01, "{s:?}");
+        // A legend down the right below the card as well: the square keeps left of it.
+        let legend = rect(294.0, 198.0, 474.0, 408.0);
+        let s = free_square(area, &[card, legend]).expect("room");
+        // Left of the legend: 286 wide (0 … 286) and 477 high; under it: 259 high.
+        assert!((s.width() - 286.0).abs() < 0.01, "{s:?}");
+        assert!(!s.intersects(card) && !s.intersects(legend));
+    }
+
+    #[test]
+    fn cards_that_fill_the_area_leave_no_square() {
+        let area = rect(0.0, 0.0, 100.0, 100.0);
+        assert!(free_square(area, &[rect(-5.0, -5.0, 105.0, 105.0)]).is_none());
+    }
+}
