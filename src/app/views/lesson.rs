@@ -149,17 +149,17 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
     let (spec, lang) = (&session.spec, session.lang);
     let step = player.current();
     let style = card_style(ui);
-    ui.horizontal_top(|ui| {
-        // The title wraps beside the fold button (a narrow column has no room for it on one
-        // line).
-        let title = RichText::new(format!("{}. {}", player.step + 1, step.title.get(lang)))
-            .strong()
-            .size(style.size * 1.25)
-            .color(Color32::WHITE);
-        ui.allocate_ui(egui::vec2(ui.available_width() - 36.0, 0.0), |ui| {
-            ui.add(egui::Label::new(title).wrap());
-        });
-        ui.with_layout(egui::Layout::right_to_left(egui::Align::Min), |ui| {
+    // The fold button at the right first, then the title wrapped in the width it leaves (a
+    // narrow column has no room for it on one line; classroom mode's button is wider).
+    let title = RichText::new(format!("{}. {}", player.step + 1, step.title.get(lang)))
+        .strong()
+        .size(style.size * 1.25)
+        .color(Color32::WHITE);
+    let width = ui.available_width();
+    ui.allocate_ui_with_layout(
+        egui::vec2(width, 0.0),
+        egui::Layout::right_to_left(egui::Align::Min),
+        |ui| {
             if ui
                 .small_button("—")
                 .on_hover_text(lang.tr("Fold the narration away (N)", "收起讲解（N）"))
@@ -167,8 +167,11 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
             {
                 out.fold = true;
             }
-        });
-    });
+            ui.with_layout(egui::Layout::left_to_right(egui::Align::Min), |ui| {
+                ui.add(egui::Label::new(title).wrap());
+            });
+        },
+    );
     let room = ui.available_height();
     let words = egui::ScrollArea::vertical()
         .id_salt("narration")

@@ -41,7 +41,14 @@ pub fn describe(spec: &SceneSpec, name: &str, lang: crate::vocabulary::Lang) -> 
             "samples" => "采样数",
             "anisotropy" => "各向异性",
             "uniforms" => "着色器的 uniform",
-            other => return other.to_owned(),
+            // A humanoid's joint, "left_upper_leg": in words as the panel's slider says it
+            // ("left upper leg"); in Chinese its part's name (左大腿), found by the key.
+            other => {
+                return match lang {
+                    crate::vocabulary::Lang::En => other.replace('_', " "),
+                    crate::vocabulary::Lang::Zh => other.to_owned(),
+                };
+            }
         };
         match lang {
             // As the panel's slider says it.
@@ -139,6 +146,9 @@ mod tests {
         assert_eq!(zh("camera.eye"), "相机的视点");
         assert_eq!(zh("projection.fovy"), "投影的 fovy");
         assert_eq!(en("uniforms.band"), "uniform band");
+        // A humanoid's joint, as its slider says it: "left upper leg", 左大腿.
+        assert_eq!(en("figures.body.left_upper_leg"), "left upper leg of body");
+        assert!(zh("figures.body.left_upper_leg").ends_with("的左大腿"));
         assert_eq!(
             crate::vocabulary::upper_first(&en("camera.eye")),
             "Camera eye"

@@ -4,7 +4,8 @@ use egui_kittest::kittest::Queryable;
 
 /// In classroom mode on a 1366×768 projector, the narration card says all of each step
 /// without scrolling: the type shrinks until the question and its answer button fit (never
-/// below the normal size), and the button lies inside the window.
+/// below the normal size), the button lies inside the window, and the title wraps clear of
+/// the card's fold button.
 #[test]
 fn the_classroom_card_fits_its_question_and_answer_button_at_1366() {
     for name in ["17-hierarchy", "10-blinn-phong", "07-rasterization"] {
@@ -34,7 +35,21 @@ fn the_classroom_card_fits_its_question_and_answer_button_at_1366() {
                 .expect("a lesson")
                 .lesson
                 .steps[k];
-            if step.answer.is_none() {
+            let title = format!(
+                "{}. {}",
+                k + 1,
+                step.title.get(pipelens::vocabulary::Lang::En)
+            );
+            let has_answer = step.answer.is_some();
+            // The title wraps beside the fold button, never under it (lesson 17's "The
+            // humanoid tree" ran under the wider classroom button).
+            let (title, fold) = (h.get_by_label(&title).rect(), h.get_by_label("—").rect());
+            assert!(
+                !title.intersects(fold),
+                "{name} step {}: the title {title:?} runs under the fold button {fold:?}",
+                k + 1
+            );
+            if !has_answer {
                 continue;
             }
             let button = h.get_by_label("Show the answer").rect();
