@@ -36,7 +36,7 @@ pub struct BufferTexture(
 
 impl BufferTexture {
     /// The texture of `kind` from `capture` (generation `generation`), its lighting terms drawn
-    /// `gain` times brighter (`capture.image_gained`).
+    /// `gain` times brighter, with its objects' outlines (`capture.image_shown`).
     pub fn get(
         &mut self,
         ctx: &egui::Context,
@@ -46,7 +46,7 @@ impl BufferTexture {
         options: egui::TextureOptions,
     ) -> egui::TextureHandle {
         let key = (generation, kind, u64::from(gain.to_bits()));
-        self.get_with(ctx, name, key, options, || capture.image_gained(kind, gain))
+        self.get_with(ctx, name, key, options, || capture.image_shown(kind, gain))
     }
 
     /// The texture for `key`, made by `make` when the key changed.

@@ -95,7 +95,7 @@ impl ExerciseView {
             TextureOptions::NEAREST,
             || match kind {
                 BufferKind::Depth => reference.depth_image(depth.linear, depth.range),
-                kind => reference.image_gained(kind, gain),
+                kind => reference.image_shown(kind, gain),
             },
         );
         let pair = (key(capture), key(reference));

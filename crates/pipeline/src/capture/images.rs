@@ -92,6 +92,10 @@ fn texturing_rgb(tb: &TextureBuffers, kind: BufferKind, i: usize) -> [u8; 3] {
     }
 }
 
+/// The faint grey-blue of an object's outline over a lighting term's picture
+/// ([`FrameCapture::outline_objects`]).
+pub const OUTLINE: [u8; 3] = [70, 78, 96];
+
 impl FrameCapture {
     /// The image of one buffer (see [`BufferKind`] for each colour mapping).
     #[must_use]
@@ -180,6 +184,55 @@ impl FrameCapture {
             };
             Rgba([rgb[0], rgb[1], rgb[2], 255])
         })
+    }
+
+    /// The picture of buffer `kind` as the app and a lesson's pictures show it: its terms
+    /// ×`gain` ([`Self::image_gained`]) and, for a lighting term, each object's outline
+    /// ([`Self::outline_objects`]), so that a highlight reads as on a sphere and a side facing
+    /// away keeps its edge. The exported buffers keep the values alone ([`Self::image`]).
+    #[must_use]
+    pub fn image_shown(&self, kind: BufferKind, gain: f32) -> RgbaImage {
+        let mut img = self.image_gained(kind, gain);
+        if matches!(
+            kind,
+            BufferKind::Ambient | BufferKind::Diffuse | BufferKind::Specular
+        ) {
+            self.outline_objects(&mut img);
+        }
+        img
+    }
+
+    /// Draws each object's silhouette into `img` (this capture's size): a covered pixel with a
+    /// 4-neighbour not covered or covered by another object is made at least [`OUTLINE`] in
+    /// each channel — faint, under any term brighter than it. The frame's border is no edge.
+    pub fn outline_objects(&self, img: &mut RgbaImage) {
+        let (w, h) = (self.width(), self.height());
+        if img.dimensions() != (w, h) {
+            return;
+        }
+        let object = |x: u32, y: u32| {
+            let p = self.pixels.primitive[(y * w + x) as usize];
+            (p != NONE).then(|| self.primitives.get(p as usize).map(|r| r.object))
+        };
+        for y in 0..h {
+            for x in 0..w {
+                let Some(me) = object(x, y) else {
+                    continue;
+                };
+                let edge = [(-1, 0), (1, 0), (0, -1), (0, 1)].iter().any(|(dx, dy)| {
+                    let (nx, ny) = (x as i64 + dx, y as i64 + dy);
+                    (0..i64::from(w)).contains(&nx)
+                        && (0..i64::from(h)).contains(&ny)
+                        && object(nx as u32, ny as u32) != Some(me)
+                });
+                if edge {
+                    let px = img.get_pixel_mut(x, y);
+                    for (c, o) in px.0.iter_mut().zip(OUTLINE) {
+                        *c = (*c).max(o);
+                    }
+                }
+            }
+        }
     }
 
     /// The eye-space distance along −z of window depth `z_w` (see `Projection::eye_distance`).
@@ -436,7 +489,7 @@ impl FrameCapture {
         Some([self.clip_to_image(ca)?, self.clip_to_image(cb)?])
     }
 
-    /// The image of buffer `kind` with its terms ×`gain` ([`Self::image_gained`]), magnified
+    /// The picture of buffer `kind` with its terms ×`gain` ([`Self::image_shown`]), magnified
     /// `zoom`× (nearest), with `shapes` drawn over it.
     #[must_use]
     pub fn image_with_shapes(
@@ -446,7 +499,7 @@ impl FrameCapture {
         shapes: &[Shape],
         zoom: u32,
     ) -> RgbaImage {
-        overlay::magnified_with_shapes(&self.image_gained(kind, gain), shapes, zoom)
+        overlay::magnified_with_shapes(&self.image_shown(kind, gain), shapes, zoom)
     }
 
     /// The depth buffer as grey over the window-depth range `range` (black at its first end,

@@ -17,6 +17,7 @@ mod watch;
 
 pub use difference::{Criteria, Difference};
 pub use explain::*;
+pub use images::OUTLINE;
 pub use inspect::*;
 pub use pixels::*;
 pub use watch::{WatchPicture, WatchView, WatchedImage, ramp as watch_ramp};

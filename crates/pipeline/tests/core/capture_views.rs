@@ -192,3 +192,47 @@ fn the_first_wrong_pixel_and_the_difference_picture_are_upright() {
         }
     }
 }
+
+/// A lighting term's picture keeps its object's outline: the covered pixels beside uncovered
+/// ones are at least the faint `OUTLINE` where the term is darker, the inside and the outside
+/// keep the term's values, and the exported buffer has no outline. The triangle (2, 2),
+/// (14, 2), (2, 14) in window coordinates (y up, 16 rows): window pixel (2, 5), centre
+/// (2.5, 5.5), is inside and its left neighbour's centre (1.5, 5.5) is not — image row
+/// 16 − 1 − 5 = 10; window pixel (5, 5) and its four neighbours are inside (x + y < 16).
+#[test]
+fn a_lighting_terms_picture_keeps_its_objects_outline() {
+    use pipeline::buffers::BufferKind;
+    use pipeline::capture::OUTLINE;
+    let t = [
+        glam::Vec2::new(2.0, 2.0),
+        glam::Vec2::new(14.0, 2.0),
+        glam::Vec2::new(2.0, 14.0),
+    ];
+    let (scene, settings) = crate::support::pixel_scene(32, 16, &[t]);
+    let c = render(&scene, &settings);
+    let exported = c.image(BufferKind::Specular);
+    let shown = c.image_shown(BufferKind::Specular, 1.0);
+    let rim = (2, 10);
+    let inside = (5, 10);
+    let outside = (1, 10);
+    let px = |img: &image::RgbaImage, (x, y): (u32, u32)| {
+        let p = img.get_pixel(x, y).0;
+        [p[0], p[1], p[2]]
+    };
+    for k in 0..3 {
+        assert!(px(&shown, rim)[k] >= OUTLINE[k], "{:?}", px(&shown, rim));
+        assert_eq!(px(&shown, rim)[k], px(&exported, rim)[k].max(OUTLINE[k]));
+    }
+    assert_eq!(px(&shown, inside), px(&exported, inside));
+    assert_eq!(px(&shown, outside), [0, 0, 0]);
+    assert_ne!(
+        px(&exported, rim),
+        OUTLINE,
+        "the exported buffer has no outline"
+    );
+    // The colour buffer is shown as it is.
+    assert_eq!(
+        c.image_shown(BufferKind::Color, 1.0).as_raw(),
+        c.image(BufferKind::Color).as_raw()
+    );
+}

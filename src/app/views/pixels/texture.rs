@@ -66,7 +66,7 @@ impl Textures {
             TextureOptions::NEAREST,
             || match sel.buffer {
                 BufferKind::Depth => capture.depth_image(depth.linear, depth.range),
-                kind => capture.image_gained(kind, gain),
+                kind => capture.image_shown(kind, gain),
             },
         );
         (texture, gain)
