@@ -219,9 +219,9 @@ fn a_lighting_terms_picture_keeps_its_objects_outline() {
         let p = img.get_pixel(x, y).0;
         [p[0], p[1], p[2]]
     };
-    for k in 0..3 {
-        assert!(px(&shown, rim)[k] >= OUTLINE[k], "{:?}", px(&shown, rim));
-        assert_eq!(px(&shown, rim)[k], px(&exported, rim)[k].max(OUTLINE[k]));
+    for ((s, e), o) in px(&shown, rim).iter().zip(px(&exported, rim)).zip(OUTLINE) {
+        assert!(*s >= o, "{:?}", px(&shown, rim));
+        assert_eq!(*s, e.max(o));
     }
     assert_eq!(px(&shown, inside), px(&exported, inside));
     assert_eq!(px(&shown, outside), [0, 0, 0]);
