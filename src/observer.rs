@@ -44,68 +44,140 @@ impl Orbit {
     }
 }
 
-/// An orbit that frames the scene: centred on the mean of the objects' positions, far enough
-/// back to see the viewing camera too.
+/// The orbit that frames the whole scene with the viewing camera ([`orbit_for`] without a
+/// focus, for the lesson image's shape).
 pub fn default_orbit(spec: &SceneSpec) -> Orbit {
-    let n = spec.scene.objects.len().max(1) as f32;
-    let centre = spec.scene.objects.iter().map(|o| o.translate).sum::<Vec3>() / n;
-    let reach = (spec.scene.camera.eye - centre).length().max(1.0);
-    Orbit {
-        yaw: 60.0,
-        pitch: 30.0,
-        distance: reach * 2.2,
-        centre,
-    }
+    orbit_for(spec, &[], None)
 }
 
 /// The orbit a step's observer starts from, for a picture of `aspect` (width/height; the
-/// lesson image's when `None`). With a `focus`, framed on the objects it names (their
-/// world-space box, [`crate::spaces::named_in`]) from the default orbit's angles, at the
-/// distance where the box's bounding sphere of radius r fills 85 % of the picture's narrower
-/// side: `d = r / (0.85·tan α)`, α the lens's half-angle on that side ([`observer_fovy`]). The
-/// viewing camera and its frustum are then context around the subject, not what is framed.
-/// Without a focus, or when it names nothing drawn, the whole scene with the camera
-/// ([`default_orbit`]).
+/// lesson image's when `None`), from 60° round and 30° up. It frames a box: with a `focus`,
+/// the world-space box of the objects it names ([`crate::spaces::named_in`]) — the viewing
+/// camera and its frustum are then context around the subject; without one (or when it names
+/// nothing drawn), every drawn object's box, the lights with a place and the viewing camera
+/// with its frame, so that the objects are as large as the camera beside them allows (lesson
+/// 25's cube was 0.7 % of the window, framed from twice the eye's distance). The orbit looks
+/// at the middle of what it frames, from the distance where every point lies inside the
+/// middle 85 % of the picture ([`fitting_distance`]).
 pub fn orbit_for(spec: &SceneSpec, focus: &[String], aspect: Option<f32>) -> Orbit {
-    let whole = default_orbit(spec);
-    if focus.is_empty() {
-        return whole;
-    }
     let (objects, _) = spec.scene.drawn_objects();
-    let corners: Vec<Vec3> = objects
-        .iter()
-        .filter(|o| crate::spaces::named_in(focus, &o.name))
-        .filter_map(|o| {
-            let (lo, hi) = o.mesh.bounds()?;
-            let m = o.model_matrix().matrix;
-            Some((0..8).map(move |k| {
-                let pick = |bit: usize, a: f32, b: f32| if k >> bit & 1 == 1 { b } else { a };
-                m.transform_point3(Vec3::new(
-                    pick(0, lo.x, hi.x),
-                    pick(1, lo.y, hi.y),
-                    pick(2, lo.z, hi.z),
-                ))
-            }))
-        })
-        .flatten()
-        .filter(|p| p.is_finite())
-        .collect();
-    let (Some(lo), Some(hi)) = (
-        corners.iter().copied().reduce(Vec3::min),
-        corners.iter().copied().reduce(Vec3::max),
-    ) else {
-        return whole;
+    let corners = |named: &dyn Fn(&str) -> bool| -> Vec<Vec3> {
+        objects
+            .iter()
+            .filter(|o| named(&o.name))
+            .filter_map(|o| {
+                let (lo, hi) = o.mesh.bounds()?;
+                let m = o.model_matrix().matrix;
+                Some((0..8).map(move |k| {
+                    let pick = |bit: usize, a: f32, b: f32| if k >> bit & 1 == 1 { b } else { a };
+                    m.transform_point3(Vec3::new(
+                        pick(0, lo.x, hi.x),
+                        pick(1, lo.y, hi.y),
+                        pick(2, lo.z, hi.z),
+                    ))
+                }))
+            })
+            .flatten()
+            .filter(|p| p.is_finite())
+            .collect()
     };
-    let radius = ((hi - lo).length() / 2.0).max(1e-3);
+    let mut points = corners(&|name| crate::spaces::named_in(focus, name));
+    if focus.is_empty() || points.is_empty() {
+        // Every object, the lights with a place, and the viewing camera with its frame's axes
+        // u, v, n (a quarter of the way to what it looks at, labelled a little beyond).
+        points = corners(&|_| true);
+        let c = &spec.scene.camera;
+        let reach = (c.at - c.eye).length() * 0.3;
+        let n = (c.eye - c.at).normalize_or(Vec3::Z);
+        let u = c.up.cross(n).normalize_or(Vec3::X);
+        points.extend([
+            c.eye,
+            c.eye + u * reach,
+            c.eye + n.cross(u) * reach,
+            c.eye + n * reach,
+        ]);
+        points.extend(spec.scene.lights.iter().filter_map(|l| match l {
+            pipeline::light::Light::Point { position, .. }
+            | pipeline::light::Light::Spot { position, .. } => Some(*position),
+            _ => None,
+        }));
+        points.retain(|p| p.is_finite());
+    }
+    let (lo, hi) = points.iter().fold(
+        (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+    );
+    let centre = if lo.cmple(hi).all() {
+        (lo + hi) / 2.0
+    } else {
+        Vec3::ZERO
+    };
     let aspect = aspect
         .filter(|a| a.is_finite() && *a > 0.0)
         .unwrap_or(spec.settings.width as f32 / spec.settings.height.max(1) as f32);
-    let vertical = (observer_fovy(aspect).to_radians() / 2.0).tan();
-    Orbit {
-        centre: (lo + hi) / 2.0,
-        distance: radius / (0.85 * vertical * aspect.min(1.0)),
-        ..whole
+    let mut orbit = Orbit {
+        yaw: 60.0,
+        pitch: 30.0,
+        centre,
+        distance: 1.0,
+    };
+    orbit.distance = fitting_distance(&orbit, &points, aspect);
+    // Centred on what it shows: the centre moved across the picture toward the middle of the
+    // points' extent there, half the way each time (a whole step overshoots: the points
+    // nearer the observer move more than the centre), eight times.
+    for _ in 0..8 {
+        let (r, u, d) = axes(&orbit);
+        let seen = |p: &Vec3| {
+            let q = *p - orbit.centre;
+            let depth = (orbit.distance - q.dot(d)).max(1e-3);
+            (q.dot(r) / depth, q.dot(u) / depth)
+        };
+        let (mut x, mut y) = (
+            [f32::INFINITY, f32::NEG_INFINITY],
+            [f32::INFINITY, f32::NEG_INFINITY],
+        );
+        for (a, b) in points.iter().map(seen) {
+            x = [x[0].min(a), x[1].max(a)];
+            y = [y[0].min(b), y[1].max(b)];
+        }
+        if !(x[0] <= x[1] && y[0] <= y[1]) {
+            break;
+        }
+        orbit.centre += (r * (x[0] + x[1]) + u * (y[0] + y[1])) / 4.0 * orbit.distance;
+        orbit.distance = fitting_distance(&orbit, &points, aspect);
     }
+    orbit
+}
+
+/// The orbit camera's right r̂, up û and direction d̂ (from the centre toward the camera).
+fn axes(orbit: &Orbit) -> (Vec3, Vec3, Vec3) {
+    let cam = orbit.camera();
+    let d = (cam.eye - cam.at).normalize_or(Vec3::Z);
+    let r = Vec3::Y.cross(d).normalize_or(Vec3::X);
+    (r, d.cross(r), d)
+}
+
+/// The distance from `orbit`'s centre at which every one of `points` lies inside the middle
+/// 85 % of a picture of `aspect` through the observer's lens ([`observer_fovy`]). Along the
+/// orbit's direction d̂ with the picture's right r̂ and up û, a point at offset q from the
+/// centre is at depth `D − q·d̂` from a camera at distance D and shows at `(q·r̂, q·û)/(D − q·d̂)`
+/// of the focal length; inside means `|q·r̂| ≤ 0.85·tan α_h·(D − q·d̂)` and likewise for û
+/// with α_v, so `D = max(q·d̂ + |q·r̂|/(0.85·tan α_h), q·d̂ + |q·û|/(0.85·tan α_v))` over the
+/// points — exact for the box's corners, where a bounding sphere would frame a flat floor
+/// from far too far.
+fn fitting_distance(orbit: &Orbit, points: &[Vec3], aspect: f32) -> f32 {
+    let (r, u, d) = axes(orbit);
+    let vertical = 0.85 * (observer_fovy(aspect).to_radians() / 2.0).tan();
+    let horizontal = vertical * aspect;
+    let far_enough = points
+        .iter()
+        .map(|p| {
+            let q = *p - orbit.centre;
+            let depth = q.dot(d);
+            (depth + q.dot(r).abs() / horizontal).max(depth + q.dot(u).abs() / vertical)
+        })
+        .fold(0.0f32, f32::max);
+    far_enough.max(1e-2)
 }
 
 /// The observer's lens: 50° vertically for a picture at least 1.6 times as wide as high; a

@@ -109,5 +109,102 @@ fn the_observer_frames_the_steps_subject() {
         );
     }
     // A step without a focus keeps the whole scene.
-    assert_eq!(orbit_for(&spec, &[], Some(1.0)), default_orbit(&spec));
+    assert_eq!(orbit_for(&spec, &[], None), default_orbit(&spec));
+}
+
+/// Lesson 25's projection step (issue: the observer's cube was 0.7 % of the window): without a
+/// focus the observer frames every object, the lights and the viewing camera as tightly as
+/// its lens allows. The cube covers at least twice the share of the picture it had from the
+/// old orbit (around the objects' mean, at 2.2 times the eye's distance), and the eye
+/// shows inside the picture; in every lesson, what is framed — the drawn objects, the eye,
+/// the point lights, the eye's frame — spans at least 60 % of the picture's width or height
+/// (85 % is framed about the orbit's centre, which is moved toward the middle of what it shows
+/// but not always all the way), in a square panel and in a wide one.
+#[test]
+fn the_observer_frames_the_scene_and_its_camera_tightly() {
+    use pipelens::observer::{Orbit, orbit_for, render_observer};
+    let covered = |spec: &pipelens::lesson::SceneSpec, orbit: Orbit, aspect: f32| {
+        let obs = render_observer(spec, orbit.camera(), Some(aspect), None).expect("renders");
+        let (w, h) = (obs.width() as usize, obs.height() as usize);
+        let on: Vec<usize> = (0..w * h)
+            .filter(|&i| obs.pixels.primitive[i] != pipeline::raster::NONE)
+            .collect();
+        // The drawn pixels with the viewing camera's eye and the point lights, through the
+        // observer's own matrices, in [0, 1] of the picture.
+        let m = obs.matrices.projection.matrix * obs.matrices.view.matrix;
+        let c = &spec.scene.camera;
+        // The camera's frame u, v, n as gluLookAt defines it, drawn a quarter of the way to
+        // what it looks at.
+        let n = (c.eye - c.at).normalize();
+        let u = c.up.cross(n).normalize();
+        let reach = (c.at - c.eye).length() * 0.25;
+        let marks = [
+            c.eye,
+            c.eye + u * reach,
+            c.eye + n.cross(u) * reach,
+            c.eye + n * reach,
+        ]
+        .into_iter()
+        .chain(spec.scene.lights.iter().filter_map(|l| match l {
+            pipeline::light::Light::Point { position, .. } => Some(*position),
+            _ => None,
+        }))
+        .map(|p| m * p.extend(1.0))
+        .filter(|c| c.w > 0.0)
+        .map(|c| ((c.x / c.w + 1.0) / 2.0, (1.0 - c.y / c.w) / 2.0));
+        let seen: Vec<(f32, f32)> = on
+            .iter()
+            .map(|i| ((i % w) as f32 / w as f32, (i / w) as f32 / h as f32))
+            .chain(marks)
+            .collect();
+        let span = |f: fn(&(f32, f32)) -> f32| {
+            let v = seen.iter().map(f);
+            v.clone().fold(f32::NEG_INFINITY, f32::max) - v.fold(f32::INFINITY, f32::min)
+        };
+        (
+            on.len() as f32 / (w * h) as f32,
+            span(|p| p.0).max(span(|p| p.1)),
+            obs,
+        )
+    };
+    let lesson = crate::support::lesson("25-lab-model-projection");
+    let spec = lesson.spec_playing(3, 0.0);
+    let aspect = 0.7;
+    let old = Orbit {
+        yaw: 60.0,
+        pitch: 30.0,
+        distance: 5.0 * 2.2,
+        centre: glam::Vec3::ZERO,
+    };
+    let (before, _, _) = covered(&spec, old, aspect);
+    let orbit = orbit_for(&spec, &[], Some(aspect));
+    let (after, _, obs) = covered(&spec, orbit, aspect);
+    assert!(
+        after >= 2.0 * before,
+        "the cube covers {after}, before {before}"
+    );
+    // The viewing camera's eye lies inside the observer's picture.
+    let m = obs.matrices.projection.matrix * obs.matrices.view.matrix;
+    let clip = m * spec.scene.camera.eye.extend(1.0);
+    let ndc = clip.truncate() / clip.w;
+    assert!(
+        clip.w > 0.0 && ndc.x.abs() < 1.0 && ndc.y.abs() < 1.0,
+        "{ndc}"
+    );
+    for path in crate::support::lesson_files() {
+        let id = path.file_stem().unwrap_or_default().to_string_lossy();
+        let lesson = crate::support::lesson(&id);
+        let spec = lesson.spec_playing(0, 0.0);
+        if spec.scene.objects.is_empty() {
+            continue;
+        }
+        for aspect in [1.0, 2.0] {
+            let (_, span, _) = covered(&spec, orbit_for(&spec, &[], Some(aspect)), aspect);
+            assert!(
+                span >= 0.6,
+                "{}: the scene spans {span} of the observer at aspect {aspect}",
+                path.display()
+            );
+        }
+    }
 }
