@@ -4,7 +4,7 @@
 //! that meets none of them, so that no card covers what the step is about and the cards can
 //! be as large as the room reads them.
 
-use egui::{Id, Rect, pos2};
+use egui::{Rect, pos2};
 
 /// The gap kept between a card and the subject's square, in points.
 const GAP: f32 = 8.0;
@@ -68,32 +68,6 @@ fn centred_square(free: Rect, towards: egui::Pos2) -> Rect {
         clamp(towards.y, free.top(), free.bottom()),
     );
     Rect::from_center_size(c, egui::Vec2::splat(side))
-}
-
-fn key(view: Id) -> Id {
-    view.with("pipelens-overlay-cards")
-}
-
-/// The cards view `view` drew over its picture last frame (the frame is laid out before its
-/// cards are drawn, as the narration card's is).
-#[must_use]
-pub fn last(ctx: &egui::Context, view: Id) -> Vec<Rect> {
-    ctx.data(|d| d.get_temp::<Vec<Rect>>(key(view)))
-        .unwrap_or_default()
-}
-
-/// Records the cards `view` drew this frame; asks for one more frame when they moved, so
-/// that the subject is framed clear of where they are now.
-pub fn record(ctx: &egui::Context, view: Id, cards: Vec<Rect>) {
-    let changed = last(ctx, view)
-        .iter()
-        .zip(&cards)
-        .any(|(a, b)| (a.min - b.min).length() + (a.max - b.max).length() > 0.5)
-        || last(ctx, view).len() != cards.len();
-    if changed {
-        ctx.data_mut(|d| d.insert_temp(key(view), cards));
-        ctx.request_repaint();
-    }
 }
 
 #[cfg(test)]

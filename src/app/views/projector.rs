@@ -48,7 +48,7 @@ impl Projector {
 
 /// The lights of a capture drawn where they are (see `Light::gizmo`), through `to_view` (world
 /// coordinates into the space drawn), in a scene centred at `centre` of about `size`; each with its
-/// label, kept off the cards in `avoid` within `view`; returns whether it drew any.
+/// label, kept off the cards in `avoid` within `view`.
 pub fn draw_lights(
     painter: &egui::Painter,
     cam: &Projector,
@@ -57,15 +57,13 @@ pub fn draw_lights(
     (centre, size): (Vec3, f32),
     (avoid, view): (&[egui::Rect], egui::Rect),
     lang: Lang,
-) -> bool {
+) {
     use pipeline::light::Light;
     let font = picture_font(painter.ctx(), 14.0);
-    let mut drew = false;
     for (k, light) in lights.iter().enumerate() {
         let Some(g) = light.gizmo(centre, size) else {
             continue;
         };
-        drew = true;
         let stroke = egui::Stroke::new(2.0, palette::LIGHT);
         for [a, b] in &g.segments {
             cam.line(painter, to_view(*a), to_view(*b), stroke);
@@ -98,5 +96,4 @@ pub fn draw_lights(
             );
         }
     }
-    drew
 }

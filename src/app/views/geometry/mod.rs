@@ -32,7 +32,8 @@ pub struct GeometryView {
     pub picture: Option<Rect>,
     /// Where the step's focused objects were drawn this frame (none without a focus).
     pub subject: Option<Rect>,
-    /// The cards drawn over the picture this frame: the header, the matrix card, the legend.
+    /// The cards drawn over the picture this frame (until the next one is framed clear of
+    /// them): the header, the matrix card, the legend.
     pub cards: Vec<Rect>,
 }
 
@@ -218,7 +219,8 @@ impl GeometryView {
         let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
         self.picture = Some(rect);
         self.subject = None;
-        self.cards.clear();
+        // Framed clear of where the cards were last frame; a move asks for one more frame.
+        let own = std::mem::take(&mut self.cards);
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 0.0, Color32::from_gray(18));
         let subject = subject(capture, session, space);
@@ -230,7 +232,6 @@ impl GeometryView {
         let stride = capture.primitives.len().div_ceil(MAX_TRIANGLES).max(1);
         let shown = shown(capture, space, sphere, view_volume.is_some(), stride);
         let legend = cards::Legend::new(&painter, &shown, lang, stride);
-        let own = super::overlays::last(ui.ctx(), cards_id());
         let (frame, legend_at) = clear_of_cards(ui.ctx(), rect, &own, &legend);
         self.navigate(ui, &response, frame);
         let Some((cam, radius, centre)) = sphere.and_then(|b| self.camera(frame, b)) else {
@@ -286,7 +287,10 @@ impl GeometryView {
         let title = self.header(ui, &painter, &header, session, capture, &mut cmds);
         let legend = legend.paint(&painter, legend_at.0, legend_at.1);
         self.cards = vec![title, card.unwrap_or(Rect::NOTHING), legend];
-        super::overlays::record(ui.ctx(), cards_id(), self.cards.clone());
+        let moved = |a: &Rect, b: &Rect| (a.min - b.min).length() + (a.max - b.max).length() > 0.5;
+        if own.len() != self.cards.len() || own.iter().zip(&self.cards).any(|(a, b)| moved(a, b)) {
+            ui.ctx().request_repaint();
+        }
         let narration = super::card_placement::narration_card(ui.ctx()).unwrap_or(Rect::NOTHING);
         let avoid = [
             seen,
@@ -450,10 +454,6 @@ impl GeometryView {
     }
 }
 
-fn cards_id() -> egui::Id {
-    egui::Id::unique("pipelens-geometry-cards")
-}
-
 /// Where the subject's sphere is framed: the largest square of `rect` clear of the view's own
 /// cards drawn last frame (`own`: the header, the matrix card, the legend) and of the narration
 /// card, with the legend where it leaves the largest square — one item a row below the matrix
@@ -475,8 +475,8 @@ fn clear_of_cards(
         .filter(|r| r.is_positive() && r.right() > right - column.x)
         .map(|r| r.bottom() + 8.0)
         .fold(rect.top() + 10.0, f32::max);
-    let strip_w = rect.width() - 20.0;
-    let strip = legend.size(legend.per_row(strip_w));
+    let per_row = legend.per_row(rect.width() - 20.0);
+    let strip = legend.size(per_row);
     let places = [
         (
             Rect::from_min_size(Pos2::new(right - column.x, top), column),
@@ -488,7 +488,7 @@ fn clear_of_cards(
         ),
         (
             Rect::from_min_size(Pos2::new(right, rect.bottom() - 10.0) - strip, strip),
-            legend.per_row(strip_w),
+            per_row,
         ),
     ];
     let square = |legend: Rect, narration: Option<Rect>| {
