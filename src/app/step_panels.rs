@@ -16,19 +16,22 @@ impl PipelensApp {
         debugger.watch.in_view = in_view && sel.watch.is_some();
         debugger.vertex_watch.in_view = debugger.watch.in_view;
         debugger.cost.in_view = in_view && sel.watch.is_none() && sel.cost;
-        // Wide enough for an 80-column line of code where the window allows it (at
-        // 1920 points, 760 leave the picture more than half), narrower in a smaller one. A
-        // lab shows three pictures side by side (the student's frame, pipelens' own and their
-        // difference), so in a window with the narration band (a 1366-point projector) its
-        // code starts narrower, at 34 %, for them to keep more than a third of the window; the
-        // lab's panel keeps its own width (a drag sets it for every lab).
+        // Wide enough for an 80-column line of code where the window allows it (at 1920
+        // points, 760 leave the picture more than half), narrower in a smaller one. A lab shows
+        // three pictures (the student's frame, pipelens' own and their difference), so its code
+        // starts narrower, at 34 %: on a 1366-point projector with the narration band they
+        // keep more than a third of the window. Beside the inspector or the lesson editor it
+        // starts narrower again, for the two to leave the view half of the window. Each
+        // arrangement has its own id, so a drag sets the width for it alone.
         let window = ui.ctx().content_rect().width();
-        let lab = self.session.current_exercise().is_some() && self.narration_in_band(ui.ctx());
-        let (id, wide) = if lab {
-            ("shader-lab", (window * 0.34).clamp(440.0, 760.0))
-        } else {
-            ("shader", (window * 0.4).clamp(520.0, 760.0))
+        let lab = self.session.current_exercise().is_some();
+        let (id, share, most) = match (lab, self.beside_another()) {
+            (true, false) => ("shader-lab", 0.34, 760.0),
+            (true, true) => ("shader-lab-beside", 0.28, 560.0),
+            (false, false) => ("shader", 0.4, 760.0),
+            (false, true) => ("shader-beside", 0.3, 600.0),
         };
+        let wide = (window * share).clamp(440.0, most);
         egui::Panel::right(id)
             .default_size(wide)
             .resizable(true)

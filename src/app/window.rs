@@ -171,6 +171,18 @@ impl PipelensApp {
         };
     }
 
+    /// Whether two or more of the panels at the right (the inspector, the code, the lesson
+    /// editor) are open: each then starts narrower, so that the view keeps about half of the
+    /// window for its picture.
+    pub(super) fn beside_another(&self) -> bool {
+        let inspector = self.panels.inspector && self.session.capture.is_some();
+        [inspector, self.panels.shader, self.editor.open]
+            .into_iter()
+            .filter(|&open| open)
+            .count()
+            > 1
+    }
+
     /// The share of `screen` the picture covers (the area of the union of [`Self::picture`]).
     #[must_use]
     pub fn picture_share(&self, screen: egui::Rect) -> f32 {
@@ -215,12 +227,22 @@ impl PipelensApp {
                     self.commands.extend(params::ui(ui, &self.session));
                 });
         }
+        // The lesson editor outermost at the right: the view frames its subject beside it.
+        self.edit_lesson(ui);
         let capture = self.session.capture.clone();
         if self.panels.inspector
             && let Some(capture) = &capture
         {
-            egui::Panel::right("inspector")
-                .default_size(400.0)
+            // Beside another panel, narrower: a fifth of the window (its own id keeps the
+            // width a drag gives it in each arrangement).
+            let (id, wide) = if self.beside_another() {
+                let window = ui.ctx().content_rect().width();
+                ("inspector-beside", (window * 0.2).clamp(320.0, 400.0))
+            } else {
+                ("inspector", 400.0)
+            };
+            egui::Panel::right(id)
+                .default_size(wide)
                 .resizable(true)
                 .show(ui, |ui| {
                     self.commands.extend(inspector::ui(
@@ -259,7 +281,6 @@ impl PipelensApp {
             let out = views::lesson::card(ui.ctx(), central, &self.session);
             self.narrated(out);
         }
-        self.edit_lesson(ui.ctx());
         self.animate(ui.ctx());
         // A parameter dragged (a slider, a number): drafts until the pointer is let go, then the
         // full frame.
@@ -530,7 +551,7 @@ const SAVE_INTERVAL: std::time::Duration = std::time::Duration::from_secs(5);
 impl PipelensApp {
     /// The editor's part of a frame: a drag that ended recorded, the lesson open followed, the
     /// window, and a lesson just made opened.
-    pub(super) fn edit_lesson(&mut self, ctx: &egui::Context) {
+    pub(super) fn edit_lesson(&mut self, ui: &mut egui::Ui) {
         if !self.session.drafting
             && let Some(from) = self.session.drag_from.take()
         {
@@ -538,7 +559,8 @@ impl PipelensApp {
         }
         let file = self.watched.as_ref().map(|w| w.path().to_path_buf());
         self.editor.follow(&self.session, file.as_deref());
-        let commands = self.editor.ui(ctx, &self.session);
+        let beside = self.beside_another();
+        let commands = self.editor.ui(ui, &self.session, beside);
         self.commands.extend(commands);
         if let Some(made) = self.editor.made.take() {
             self.open(made.doc, &made.source, made.file.clone());

@@ -15,6 +15,7 @@ mod labs;
 mod lesson_play;
 mod library;
 mod own_uniforms;
+mod panels;
 mod params;
 mod phone;
 mod recording;

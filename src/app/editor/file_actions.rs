@@ -1,4 +1,4 @@
-//! What the editor's window does with its file: the row of Undo, Redo and Save and their keys
+//! What the editor does with its file: the row of Undo, Redo and Save and their keys
 //! (the shortcut table's), the questions about a recovery copy or a file changed on disk, and
 //! each revision handed to the session, which keeps playing the last good lesson when a
 //! revision is broken.

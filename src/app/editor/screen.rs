@@ -29,8 +29,8 @@ impl Editor {
         let k = player.step;
         ui.label(RichText::new(lang.tr("What is on screen", "屏幕上的内容")).strong());
         ui.label(RichText::new(lang.tr(
-            "The stage, buffer, layout, overlays, inspected pixel, selected vertex and every parameter changed since this step began. Drag a slider while this window is open to record an animation.",
-            "阶段、缓冲、布局、叠加层、所检查的像素、选中的顶点，以及本步骤开始以来改动过的每个参数。窗口打开时拖动滑块即可录制动画。",
+            "The stage, buffer, layout, overlays, inspected pixel, selected vertex and every parameter changed since this step began. Drag a slider while the editor is open to record an animation.",
+            "阶段、缓冲、布局、叠加层、所检查的像素、选中的顶点，以及本步骤开始以来改动过的每个参数。编辑器打开时拖动滑块即可录制动画。",
         )).small());
         if step.set.is_empty() {
             ui.label(lang.tr("No parameter changed.", "没有改动参数。"));

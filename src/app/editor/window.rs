@@ -1,9 +1,9 @@
-//! The lesson editor's window: the steps listed (those changed since the last save marked),
-//! moved, copied and deleted; the file's row, undo, redo and save (`file_actions.rs`); the
+//! The lesson editor's panel, docked at the window's right: the steps listed (those changed
+//! since the last save marked), moved, copied and deleted; the file's row, undo, redo and save (`file_actions.rs`); the
 //! current step's words and what is on screen recorded (`words.rs`, `screen.rs`), a new lesson
 //! (`new.rs`), the file (`file.rs`).
 
-use egui::{Context, RichText};
+use egui::RichText;
 
 use super::file::Edited;
 use super::new::{Made, NewLesson};
@@ -17,7 +17,7 @@ use crate::vocabulary::{Lang, Text};
 /// The editor's state.
 #[derive(Default)]
 pub struct Editor {
-    /// Whether the window is shown.
+    /// Whether the panel is shown.
     pub open: bool,
     /// The lesson being edited (the one open in the session, once the window was opened or a
     /// recovery copy was found).
@@ -28,7 +28,7 @@ pub struct Editor {
     pub(super) words_for: Option<(usize, u64)>,
     /// The words of a new step, typed before it is added.
     pub(super) fresh: [Text; 2],
-    /// Sliders dragged while the window was open: the new step's animations.
+    /// Sliders dragged while the panel was open: the new step's animations.
     pub(super) drags: Vec<Animation>,
     /// The steps changed since the last save, and the draft's revision they were read at.
     pub(super) marks: Option<(u64, Vec<bool>)>,
@@ -48,7 +48,7 @@ pub struct Editor {
 
 impl Editor {
     /// Follows what the session has open: a lesson other than the one edited is taken up (its
-    /// file read, its recovery copy looked for; the window opens to offer one). `file` is the
+    /// file read, its recovery copy looked for; the panel opens to offer one). `file` is the
     /// file on disk the session was opened from, if any.
     pub fn follow(&mut self, session: &Session, file: Option<&std::path::Path>) {
         if session.lesson.is_none() {
@@ -121,8 +121,11 @@ impl Editor {
         }
     }
 
-    /// The window, when open; the commands it gives the session.
-    pub fn ui(&mut self, ctx: &Context, session: &Session) -> Vec<Command> {
+    /// The editor, when open, docked at the window's right edge (the view beside it frames
+    /// its subject in what is left, as it does beside the inspector and the code); the
+    /// commands it gives the session. `root` is the frame's root: the panel is shown before
+    /// the view's; `beside` another panel at the right, it starts narrower.
+    pub fn ui(&mut self, root: &mut egui::Ui, session: &Session, beside: bool) -> Vec<Command> {
         let mut out = Vec::new();
         if let Some(doc) = &mut self.doc {
             doc.keep_recovery();
@@ -131,8 +134,7 @@ impl Editor {
             return out;
         }
         let lang = session.lang;
-        self.shortcuts(ctx, session, &mut out);
-        let mut open = self.open;
+        self.shortcuts(root.ctx(), session, &mut out);
         let title = match &self.doc {
             Some(d) => format!(
                 "{} — {}{}",
@@ -142,23 +144,40 @@ impl Editor {
             ),
             None => lang.tr("Lesson editor", "课程编辑器").to_owned(),
         };
-        // Over the narration card, first at the top-right (the picture's subject keeps clear of
-        // the card, at the bottom-left); its title bar moves it.
-        let screen = ctx.content_rect();
-        let most = screen.height() - 90.0;
-        egui::Window::new(title)
-            .id(egui::Id::unique("lesson-editor"))
-            .open(&mut open)
-            .order(egui::Order::Foreground)
-            .pivot(egui::Align2::RIGHT_TOP)
-            .default_pos(egui::pos2(screen.right() - 16.0, screen.top() + 64.0))
-            .default_width(640.0)
-            .max_height(most)
-            .show(ctx, |ui| {
+        // A quarter of the window, up to 480 points (less `beside` another panel): the words'
+        // boxes and the steps' list fit, and the view keeps the rest.
+        let window = root.ctx().content_rect().width();
+        let (id, wide) = if beside {
+            ("lesson-editor-beside", (window * 0.22).clamp(320.0, 420.0))
+        } else {
+            ("lesson-editor", (window * 0.25).clamp(340.0, 480.0))
+        };
+        let mut open = true;
+        egui::Panel::right(id)
+            .default_size(wide)
+            .min_size(300.0)
+            .resizable(true)
+            .show(root, |ui| {
+                // A tool for the teacher, not for the room: at the chrome's size in classroom
+                // mode too, as the code is.
+                crate::app::style::chrome_style(ui);
+                ui.horizontal(|ui| {
+                    // The close button first, at the right; the title wraps in what it leaves.
+                    ui.with_layout(egui::Layout::right_to_left(egui::Align::Min), |ui| {
+                        let close = ui
+                            .button("×")
+                            .on_hover_text(lang.tr("Close the editor (R)", "关闭编辑器（R）"));
+                        if close.clicked() {
+                            open = false;
+                        }
+                        ui.with_layout(egui::Layout::left_to_right(egui::Align::Min), |ui| {
+                            ui.add(egui::Label::new(RichText::new(title).strong()).wrap());
+                        });
+                    });
+                });
+                ui.separator();
                 egui::ScrollArea::vertical()
                     .id_salt("lesson-editor-scroll")
-                    .max_height(most)
-                    .min_scrolled_height(most)
                     .show(ui, |ui| self.contents(ui, session, lang, &mut out));
             });
         self.open = open;
