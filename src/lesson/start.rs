@@ -1,11 +1,13 @@
 //! A new lesson's first text: the template `pipelens new-lesson` writes (every key a step can
 //! take, with comments), the same with a mesh of one's own in place of its sphere, or the scene
-//! on screen — a lesson's or a scene file's, with their comments — and one step recorded from
-//! what is on screen. Each reads back through `check` as a lesson.
+//! on screen — a scene file's with its comments, a lesson's without its (they speak of that
+//! lesson's steps) — and one step recorded from what is on screen. Each reads back through
+//! `check` as a lesson.
 
 use std::path::Path;
 
-use toml_edit::{Item, Table, value};
+use toml_edit::visit_mut::{self, VisitMut};
+use toml_edit::{Decor, Item, KeyMut, Table, value};
 
 use super::Step;
 use super::record::{self, document, replace, step_table};
@@ -96,8 +98,10 @@ pub fn renamed(source: &str, file: &Path) -> Result<String, String> {
     Ok(doc.to_string())
 }
 
-/// A lesson for `file` on the scene of `source` (a lesson's or a scene file's text; its
-/// comments kept), its `[lesson]` header new, its steps replaced by `step`.
+/// A lesson for `file` on the scene of `source` (a lesson's or a scene file's text), its
+/// `[lesson]` header new, its steps replaced by `step`. A scene file's comments are kept; a
+/// lesson's are not: they explain that lesson's header, lights and steps ("the light that
+/// makes step 3's highlight"), which the new lesson does not have.
 ///
 /// # Errors
 /// When `source` is not TOML, `file` is not a lesson file's name (see [`id_of`]) or `step`
@@ -105,6 +109,11 @@ pub fn renamed(source: &str, file: &Path) -> Result<String, String> {
 pub fn from_scene(source: &str, file: &Path, step: &Step) -> Result<String, String> {
     let id = id_of(file)?;
     let mut doc = document(source)?;
+    if doc.contains_key("lesson") {
+        Uncomment.visit_document_mut(&mut doc);
+        let trailing = uncommented(doc.trailing().as_str().unwrap_or_default());
+        doc.set_trailing(trailing);
+    }
     doc.remove("steps");
     let mut header = Table::new();
     header.insert("id", value(id.as_str()));
@@ -118,7 +127,7 @@ pub fn from_scene(source: &str, file: &Path, step: &Step) -> Result<String, Stri
     );
     header.insert("prerequisites", value(toml_edit::Array::new()));
     match doc.get_mut("lesson").and_then(Item::as_table_mut) {
-        // A lesson's header keeps its place and comments; its keys are the new lesson's.
+        // A lesson's header keeps its place; its keys are the new lesson's.
         Some(old) => {
             old.clear();
             old.extend(header.iter().map(|(k, v)| (k.to_owned(), v.clone())));
@@ -141,4 +150,52 @@ fn text(en: &str, zh: &str) -> toml_edit::InlineTable {
         en: en.to_owned(),
         zh: zh.to_owned(),
     })
+}
+
+/// Takes every comment out of a document, its blank lines kept.
+struct Uncomment;
+
+impl VisitMut for Uncomment {
+    fn visit_table_mut(&mut self, node: &mut Table) {
+        uncomment(node.decor_mut());
+        visit_mut::visit_table_mut(self, node);
+    }
+
+    fn visit_table_like_kv_mut(&mut self, mut key: KeyMut<'_>, node: &mut Item) {
+        uncomment(key.leaf_decor_mut());
+        uncomment(key.dotted_decor_mut());
+        visit_mut::visit_table_like_kv_mut(self, key, node);
+    }
+
+    fn visit_array_mut(&mut self, node: &mut toml_edit::Array) {
+        let trailing = uncommented(node.trailing().as_str().unwrap_or_default());
+        node.set_trailing(trailing);
+        visit_mut::visit_array_mut(self, node);
+    }
+
+    fn visit_value_mut(&mut self, node: &mut toml_edit::Value) {
+        uncomment(node.decor_mut());
+        visit_mut::visit_value_mut(self, node);
+    }
+}
+
+/// `decor` with its comments taken out.
+fn uncomment(decor: &mut Decor) {
+    let prefix = decor.prefix().and_then(|p| p.as_str()).map(uncommented);
+    let suffix = decor.suffix().and_then(|p| p.as_str()).map(uncommented);
+    if let Some(p) = prefix {
+        decor.set_prefix(p);
+    }
+    if let Some(s) = suffix {
+        decor.set_suffix(s);
+    }
+}
+
+/// Whitespace and comments (a decor's text) with the comments taken out: a line of comment
+/// goes with its line break (a comment after a value is its decor's whole text); blank lines
+/// stay.
+fn uncommented(text: &str) -> String {
+    text.split_inclusive('\n')
+        .filter(|line| !line.trim_start().starts_with('#'))
+        .collect()
 }

@@ -222,7 +222,7 @@ fn an_updated_step_shows_the_screen_and_keeps_its_words() {
 
 /// A new lesson's first text reads back through the checker: the template on a mesh of one's
 /// own, a built-in lesson renamed, and the scene of a lesson with one step recorded on it (the
-/// comments of the file it came from kept).
+/// lesson's comments taken out; a scene file's kept).
 #[test]
 fn a_new_lesson_starts_from_a_mesh_a_built_in_lesson_or_the_scene_on_screen() {
     use pipelens::lesson::start;
@@ -254,12 +254,33 @@ fn a_new_lesson_starts_from_a_mesh_a_built_in_lesson_or_the_scene_on_screen() {
     )];
     let text = start::from_scene(tour, &file, &step).expect("made");
     let scene = check(&text);
-    assert_eq!(scene.steps, vec![step]);
+    assert_eq!(scene.steps, vec![step.clone()]);
     assert_eq!(scene.scene, lesson.scene, "the same scene");
-    let comment = tour
+    // The tour's comments speak of its own steps: none is kept (they were, and a teacher's
+    // new lesson started from lesson 10 explained lesson 10's lights).
+    assert!(
+        tour.lines().any(|l| l.trim_start().starts_with('#')),
+        "the tour has comments"
+    );
+    let commented: Vec<&str> = text
         .lines()
-        .find(|l| l.starts_with('#'))
-        .expect("a comment");
-    assert!(text.contains(comment), "the file's comments are kept");
+        .filter(|l| l.trim_start().starts_with('#') || l.contains(" # "))
+        .collect();
+    assert!(
+        commented.is_empty(),
+        "the tour's comments kept: {commented:?}"
+    );
+    assert!(
+        !text.contains("\n\n\n"),
+        "a comment's lines left blank:\n{text}"
+    );
+    // A scene file's comments are the scene's own, and stay.
+    let robot = std::fs::read_to_string(crate::support::repo().join("assets/scenes/robot.toml"))
+        .expect("the robot scene");
+    let on_robot = start::from_scene(&robot, &file, &step).expect("made");
+    check(&on_robot);
+    for comment in robot.lines().filter(|l| l.starts_with('#')) {
+        assert!(on_robot.contains(comment), "{comment} was kept");
+    }
     assert!(start::from_mesh(std::path::Path::new("no-extension"), "tri.obj").is_err());
 }
