@@ -379,3 +379,86 @@ fn a_change_of_words_keeps_the_animations_time() {
     let step = pipelens::app::record::recorded_step(&s).expect("a step");
     assert!(step.set.is_empty(), "{:?}", step.set);
 }
+
+/// Lesson 10's step 2 moves its light. Its animation stopped each way a teacher stops one — the
+/// play key, typing a word of the step then Escape, leaving the step and coming back — and the
+/// screen recorded as a new step, the saved file's new steps set nothing: the light's passing
+/// position is the step's animation's, not a value the teacher set. (A recorded step once
+/// saved `lights.1.intensity = [2.058401, …]`, a value from the middle of an animation.)
+#[test]
+fn a_recorded_step_holds_no_value_an_animation_passed_through() {
+    let (_dir, file) = copy_of("10-blinn-phong.toml");
+    let mut h = super::lesson_harness(Some(file.clone()));
+    h.run_steps(2);
+    h.key_press(egui::Key::R);
+    h.run_steps(3);
+    let ways = ["the play key", "typing then Escape", "a step change"];
+    for (n, way) in ways.iter().enumerate() {
+        h.state_mut()
+            .session
+            .apply(Command::Lesson(LessonCommand::GoToStep(1)));
+        h.run_steps(20);
+        match n {
+            0 => h.key_press(egui::Key::Space),
+            1 => {
+                // The current step's Chinese title, a word added, then Escape.
+                type_into(&mut h, 1, "（改）");
+                h.key_press(egui::Key::Escape);
+            }
+            _ => {
+                for k in [2, 1] {
+                    h.state_mut()
+                        .session
+                        .apply(Command::Lesson(LessonCommand::GoToStep(k)));
+                    h.run_steps(15);
+                }
+            }
+        }
+        h.run_steps(10);
+        let player = h.state().session.lesson.as_ref().expect("a lesson");
+        assert!(
+            player.step == 1 && player.time > 0.1,
+            "{way}: step {} at {} s, its animation under way",
+            player.step + 1,
+            player.time
+        );
+        let words = [format!("Recorded after {way}"), format!("记录 {n}")];
+        for (k, text) in words.iter().enumerate() {
+            type_into(&mut h, 8 + k, text);
+        }
+        for (k, text) in ["What the room sees.", "观众所见。"].iter().enumerate() {
+            type_into(&mut h, 10 + k, text);
+        }
+        h.get_by_label("＋ Add as step 3").click_accesskit();
+        h.run_steps(3);
+        assert_eq!(
+            super::lesson_of(&h).steps[2].title.en,
+            words[0],
+            "{way}: the step was added"
+        );
+    }
+    h.get_by_label("Save").click_accesskit();
+    h.run_steps(3);
+    let text = std::fs::read_to_string(&file).expect("saved");
+    let saved = pipelens::lesson::script::parse_lesson(
+        &text,
+        "10-blinn-phong.toml",
+        file.parent().expect("a folder"),
+    )
+    .expect("the saved lesson reads back");
+    let recorded: Vec<_> = saved
+        .steps
+        .iter()
+        .filter(|s| s.title.en.starts_with("Recorded after"))
+        .collect();
+    assert_eq!(recorded.len(), ways.len(), "every recorded step was saved");
+    for step in recorded {
+        assert!(
+            step.set.is_empty() && step.animate.is_empty(),
+            "{}: sets {:?}, animates {:?}",
+            step.title.en,
+            step.set,
+            step.animate
+        );
+    }
+}
