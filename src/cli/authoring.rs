@@ -79,11 +79,12 @@ pub(super) fn check(paths: &[PathBuf]) -> ExitCode {
                 print_meshes(&s);
             }
             Ok(lesson::Document::Lesson(l)) => {
+                let n = l.steps.len();
                 say!(
-                    "{}: ok (lesson {}, {} steps)",
+                    "{}: ok (lesson {}, {n} step{})",
                     p.display(),
                     l.id,
-                    l.steps.len()
+                    if n == 1 { "" } else { "s" }
                 );
                 print_meshes(&l.scene);
                 for w in &l.warnings {

@@ -115,6 +115,21 @@ pub const PLACEHOLDER_NARRATION: [&str; 2] = [
     "在这里写下观众应当看到什么、为什么。",
 ];
 
+/// The title a lesson started from the scene on screen gives its first step (not the stage's
+/// name, which a teacher writing only one language would leave in the other); `check` warns
+/// while it is there.
+pub const PLACEHOLDER_STEP_TITLE: [&str; 2] = ["Name this step", "给这一步起个名字"];
+
+/// The title and summary a lesson started from the scene on screen begins with; `check` warns
+/// while either is there.
+pub const PLACEHOLDER_LESSON: [[&str; 2]; 2] = [
+    ["Name this lesson", "给这一课起个名字"],
+    [
+        "Say what this lesson teaches, in one or two sentences.",
+        "用一两句话说说这一课讲什么。",
+    ],
+];
+
 /// Reads and validates a scene file. Relative mesh paths are relative to the file's folder.
 ///
 /// # Errors

@@ -117,14 +117,9 @@ pub fn from_scene(source: &str, file: &Path, step: &Step) -> Result<String, Stri
     doc.remove("steps");
     let mut header = Table::new();
     header.insert("id", value(id.as_str()));
-    header.insert("title", value(text("A new lesson", "新的一课")));
-    header.insert(
-        "summary",
-        value(text(
-            "What this lesson teaches, in one or two sentences.",
-            "这一课讲什么，一两句话。",
-        )),
-    );
+    let [[title_en, title_zh], [summary_en, summary_zh]] = super::PLACEHOLDER_LESSON;
+    header.insert("title", value(text(title_en, title_zh)));
+    header.insert("summary", value(text(summary_en, summary_zh)));
     header.insert("prerequisites", value(toml_edit::Array::new()));
     match doc.get_mut("lesson").and_then(Item::as_table_mut) {
         // A lesson's header keeps its place; its keys are the new lesson's.
@@ -141,7 +136,8 @@ pub fn from_scene(source: &str, file: &Path, step: &Step) -> Result<String, Stri
     let mut steps = toml_edit::ArrayOfTables::new();
     steps.push(step_table(step)?);
     doc.insert("steps", Item::ArrayOfTables(steps));
-    Ok(doc.to_string())
+    // The old first comment's line gone, the file starts at its header.
+    Ok(doc.to_string().trim_start().to_owned())
 }
 
 /// `{ en = "…", zh = "…" }`.

@@ -79,17 +79,30 @@ fn check_warns_of_an_id_unlike_the_file_name_and_describes_each_mesh() {
         "{out}"
     );
     // A narration left as the placeholder of a lesson started from the scene on screen.
-    let placeholder = lesson(false).replace(
-        "narration = { en = \"A.\", zh = \"甲。\" }",
-        "narration = { en = \"A.\", zh = \"在这里写下观众应当看到什么、为什么。\" }",
-    );
+    // So are its step's title and the lesson's title, each in the language it was left in.
+    let placeholder = lesson(false)
+        .replace(
+            "narration = { en = \"A.\", zh = \"甲。\" }",
+            "narration = { en = \"A.\", zh = \"在这里写下观众应当看到什么、为什么。\" }",
+        )
+        .replace(
+            "[[steps]]\ntitle = { en = \"A\", zh = \"甲\" }",
+            "[[steps]]\ntitle = { en = \"Name this step\", zh = \"给这一步起个名字\" }",
+        )
+        .replace(
+            "id = \"other\"\ntitle = { en = \"A\", zh = \"甲\" }",
+            "id = \"other\"\ntitle = { en = \"Name this lesson\", zh = \"我的\" }",
+        );
     std::fs::write(dir.path().join("other.toml"), placeholder).expect("write");
     let o = pipelens(dir.path(), &["check", "other.toml"]);
     let out = text(&o);
-    assert!(
-        out.contains("warning: step 1's Chinese narration is still the new lesson's placeholder"),
-        "{out}"
-    );
+    for said in [
+        "warning: step 1's narration is still the new lesson's placeholder in Chinese",
+        "warning: step 1's title is still the new lesson's placeholder in English and Chinese",
+        "warning: the lesson's title is still the new lesson's placeholder in English",
+    ] {
+        assert!(out.contains(said), "{said}: {out}");
+    }
     std::fs::write(dir.path().join("other.toml"), lesson(true)).expect("write");
     let o = pipelens(dir.path(), &["check", "other.toml"]);
     let out = text(&o);

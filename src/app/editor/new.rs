@@ -205,16 +205,17 @@ impl NewLesson {
 }
 
 /// The step on screen as a new lesson's first step: what differs from the lesson's scene as
-/// `set`, words for the teacher to replace.
+/// `set`, placeholder words for the teacher to replace (`check` warns of each one left).
 fn first_step(session: &Session) -> Result<lesson::Step, String> {
     let player = session.lesson.as_ref().ok_or("no lesson open")?;
     let mut step = crate::app::record::recorded_step(session).ok_or("no lesson open")?;
     step.set = lesson::param::differences(&player.lesson.scene, &session.spec);
-    let [en, zh] = lesson::PLACEHOLDER_NARRATION;
-    step.narration = Text {
+    let words = |[en, zh]: [&str; 2]| Text {
         en: en.to_owned(),
         zh: zh.to_owned(),
     };
+    step.title = words(lesson::PLACEHOLDER_STEP_TITLE);
+    step.narration = words(lesson::PLACEHOLDER_NARRATION);
     Ok(step)
 }
 

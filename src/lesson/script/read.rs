@@ -63,23 +63,60 @@ pub fn parse_lesson(text: &str, file: &str, base: &Path) -> Result<Lesson, Diagn
             "the lesson has no steps: add at least one [[steps]] with a `title` and `narration`",
         );
     }
-    // A narration still the placeholder a new lesson starts with (in either language).
-    for (k, s) in raw.steps.iter().enumerate() {
-        let said = s.get_ref().narration.get_ref();
-        let kept: Vec<&str> = [("English", &said.en), ("Chinese", &said.zh)]
-            .into_iter()
-            .filter(|(_, t)| super::super::PLACEHOLDER_NARRATION.contains(&t.trim()))
-            .map(|(lang, _)| lang)
-            .collect();
+    // Words still the placeholders a new lesson starts with (in either language).
+    let placeholders = [
+        (
+            "the lesson's title",
+            &meta.title,
+            super::super::PLACEHOLDER_LESSON[0],
+        ),
+        (
+            "the lesson's summary",
+            &meta.summary,
+            super::super::PLACEHOLDER_LESSON[1],
+        ),
+    ];
+    let numbered: Vec<_> = raw
+        .steps
+        .iter()
+        .enumerate()
+        .flat_map(|(k, s)| {
+            let s = s.get_ref();
+            [
+                (
+                    format!("step {}'s title", k + 1),
+                    &s.title,
+                    super::super::PLACEHOLDER_STEP_TITLE,
+                ),
+                (
+                    format!("step {}'s narration", k + 1),
+                    &s.narration,
+                    super::super::PLACEHOLDER_NARRATION,
+                ),
+            ]
+        })
+        .collect();
+    for (what, said, placeholder) in placeholders
+        .into_iter()
+        .map(|(w, s, p)| (w.to_owned(), s, p))
+        .chain(numbered)
+    {
+        let kept: Vec<&str> = [
+            ("English", &said.get_ref().en),
+            ("Chinese", &said.get_ref().zh),
+        ]
+        .into_iter()
+        .filter(|(_, t)| placeholder.contains(&t.trim()))
+        .map(|(lang, _)| lang)
+        .collect();
         if !kept.is_empty() {
             warnings.push(
                 super::super::Diagnostic::at(
                     file,
                     text,
-                    s.get_ref().narration.span(),
+                    said.span(),
                     format!(
-                        "step {}'s {} narration is still the new lesson's placeholder: write what the viewer should see, and why",
-                        k + 1,
+                        "{what} is still the new lesson's placeholder in {}: write the lesson's own words",
                         kept.join(" and ")
                     ),
                 )
