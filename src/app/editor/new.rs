@@ -204,12 +204,27 @@ impl NewLesson {
     }
 }
 
-/// The step on screen as a new lesson's first step: what differs from the lesson's scene as
-/// `set`, placeholder words for the teacher to replace (`check` warns of each one left).
+/// The step on screen as a new lesson's first step: the step as it starts, with what the
+/// teacher changed on screen, as `set` against the lesson's scene; the step's animations that
+/// the teacher did not override, which it plays (a value an animation was passing through when
+/// the lesson was made is the animation's, not one the teacher set); placeholder words for the
+/// teacher to replace (`check` warns of each one left).
 fn first_step(session: &Session) -> Result<lesson::Step, String> {
     let player = session.lesson.as_ref().ok_or("no lesson open")?;
+    // What the teacher changed: what differs from the step as it plays now.
     let mut step = crate::app::record::recorded_step(session).ok_or("no lesson open")?;
-    step.set = lesson::param::differences(&player.lesson.scene, &session.spec);
+    let mut start = player.lesson.spec_playing(player.step, 0.0);
+    for (name, value) in &step.set {
+        lesson::param::apply(&mut start, name, value)?;
+    }
+    step.animate = player
+        .current()
+        .animate
+        .iter()
+        .filter(|a| !step.set.iter().any(|(name, _)| *name == a.param))
+        .cloned()
+        .collect();
+    step.set = lesson::param::differences(&player.lesson.scene, &start);
     let words = |[en, zh]: [&str; 2]| Text {
         en: en.to_owned(),
         zh: zh.to_owned(),

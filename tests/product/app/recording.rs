@@ -462,3 +462,66 @@ fn a_recorded_step_holds_no_value_an_animation_passed_through() {
         );
     }
 }
+
+/// A new lesson made from lesson 10's step 2 while its light is moving: its first step starts
+/// where the step starts (the light at the animation's `from`, [-3, 2.5, 3] in the lesson's
+/// file) and plays the same animation. (It was made with the light's passing position in its
+/// `set`, [-2.9769993, 2.5, 3]: a value nobody set.)
+#[test]
+fn a_lesson_made_from_a_moving_step_starts_where_the_step_starts() {
+    let (dir, source) = copy_of("10-blinn-phong.toml");
+    let file = dir.path().join("moving.toml");
+    let mut h = super::lesson_harness(Some(source));
+    h.run_steps(2);
+    h.state_mut()
+        .session
+        .apply(Command::Lesson(LessonCommand::GoToStep(1)));
+    h.run_steps(20);
+    let time = h.state().session.lesson.as_ref().map_or(0.0, |p| p.time);
+    assert!(time > 0.1, "the light is moving: {time} s into the step");
+    h.key_press(egui::Key::R);
+    h.run_steps(2);
+    h.get_by_label("New lesson…").click_accesskit();
+    h.run_steps(2);
+    // From the scene on screen (the first choice); the last one-line box is the file's name.
+    let n = h.get_all_by_role(Role::TextInput).count();
+    h.get_all_by_role(Role::TextInput)
+        .nth(n - 1)
+        .expect("a box")
+        .focus();
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run_steps(1);
+    h.get_all_by_role(Role::TextInput)
+        .nth(n - 1)
+        .expect("a box")
+        .type_text(&file.display().to_string());
+    h.run_steps(1);
+    h.get_by_label("Make the lesson").click_accesskit();
+    h.run_steps(4);
+    let text = std::fs::read_to_string(&file).expect("written");
+    let made = pipelens::lesson::script::parse_lesson(&text, "moving.toml", dir.path())
+        .unwrap_or_else(|e| panic!("{e}\n{text}"));
+    let first = &made.steps[0];
+    assert_eq!(
+        param::get(&made.spec_at(0), "lights.1.position"),
+        Some(Value::Vec3(glam::Vec3::new(-3.0, 2.5, 3.0))),
+        "{text}"
+    );
+    let animate: Vec<_> = first
+        .animate
+        .iter()
+        .map(|a| (a.param.as_str(), a.from.clone(), a.to.clone(), a.seconds))
+        .collect();
+    assert_eq!(
+        animate,
+        [(
+            "lights.1.position",
+            Value::Vec3(glam::Vec3::new(-3.0, 2.5, 3.0)),
+            Value::Vec3(glam::Vec3::new(3.0, 2.5, 3.0)),
+            5.0
+        )],
+        "{text}"
+    );
+    assert!(!text.contains("2.97"), "a passing value was kept:\n{text}");
+}
