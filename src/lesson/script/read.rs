@@ -14,6 +14,74 @@ use super::super::{Diagnostics, SceneSpec};
 use super::{LAYOUTS, Layout, Lesson, OVERLAYS, Overlay, Step};
 use crate::vocabulary::{Comparison, Lang, Stage};
 
+/// A warning for each of a new lesson's placeholders left in `raw` (the lesson's title and
+/// summary, a step's title and narration), naming the languages it was left in.
+fn placeholders_left(raw: &RawLessonFile, file: &str, text: &str) -> Vec<super::super::Diagnostic> {
+    let meta = raw.lesson.get_ref();
+    let mut out = Vec::new();
+    let placeholders = [
+        (
+            "the lesson's title",
+            &meta.title,
+            super::super::PLACEHOLDER_LESSON[0],
+        ),
+        (
+            "the lesson's summary",
+            &meta.summary,
+            super::super::PLACEHOLDER_LESSON[1],
+        ),
+    ];
+    let numbered: Vec<_> = raw
+        .steps
+        .iter()
+        .enumerate()
+        .flat_map(|(k, s)| {
+            let s = s.get_ref();
+            [
+                (
+                    format!("step {}'s title", k + 1),
+                    &s.title,
+                    super::super::PLACEHOLDER_STEP_TITLE,
+                ),
+                (
+                    format!("step {}'s narration", k + 1),
+                    &s.narration,
+                    super::super::PLACEHOLDER_NARRATION,
+                ),
+            ]
+        })
+        .collect();
+    for (what, said, placeholder) in placeholders
+        .into_iter()
+        .map(|(w, s, p)| (w.to_owned(), s, p))
+        .chain(numbered)
+    {
+        let kept: Vec<&str> = [
+            ("English", &said.get_ref().en),
+            ("Chinese", &said.get_ref().zh),
+        ]
+        .into_iter()
+        .filter(|(_, t)| placeholder.contains(&t.trim()))
+        .map(|(lang, _)| lang)
+        .collect();
+        if !kept.is_empty() {
+            out.push(
+                super::super::Diagnostic::at(
+                    file,
+                    text,
+                    said.span(),
+                    format!(
+                        "{what} is still the new lesson's placeholder in {}: write the lesson's own words",
+                        kept.join(" and ")
+                    ),
+                )
+                .warning(),
+            );
+        }
+    }
+    out
+}
+
 /// Whether TOML text is a lesson (it has a `[lesson]` table) rather than a bare scene.
 #[must_use]
 pub fn is_lesson(text: &str) -> bool {
@@ -63,67 +131,7 @@ pub fn parse_lesson(text: &str, file: &str, base: &Path) -> Result<Lesson, Diagn
             "the lesson has no steps: add at least one [[steps]] with a `title` and `narration`",
         );
     }
-    // Words still the placeholders a new lesson starts with (in either language).
-    let placeholders = [
-        (
-            "the lesson's title",
-            &meta.title,
-            super::super::PLACEHOLDER_LESSON[0],
-        ),
-        (
-            "the lesson's summary",
-            &meta.summary,
-            super::super::PLACEHOLDER_LESSON[1],
-        ),
-    ];
-    let numbered: Vec<_> = raw
-        .steps
-        .iter()
-        .enumerate()
-        .flat_map(|(k, s)| {
-            let s = s.get_ref();
-            [
-                (
-                    format!("step {}'s title", k + 1),
-                    &s.title,
-                    super::super::PLACEHOLDER_STEP_TITLE,
-                ),
-                (
-                    format!("step {}'s narration", k + 1),
-                    &s.narration,
-                    super::super::PLACEHOLDER_NARRATION,
-                ),
-            ]
-        })
-        .collect();
-    for (what, said, placeholder) in placeholders
-        .into_iter()
-        .map(|(w, s, p)| (w.to_owned(), s, p))
-        .chain(numbered)
-    {
-        let kept: Vec<&str> = [
-            ("English", &said.get_ref().en),
-            ("Chinese", &said.get_ref().zh),
-        ]
-        .into_iter()
-        .filter(|(_, t)| placeholder.contains(&t.trim()))
-        .map(|(lang, _)| lang)
-        .collect();
-        if !kept.is_empty() {
-            warnings.push(
-                super::super::Diagnostic::at(
-                    file,
-                    text,
-                    said.span(),
-                    format!(
-                        "{what} is still the new lesson's placeholder in {}: write the lesson's own words",
-                        kept.join(" and ")
-                    ),
-                )
-                .warning(),
-            );
-        }
-    }
+    warnings.extend(placeholders_left(&raw, file, text));
     let mut steps = Vec::new();
     if let Ok(base_spec) = &scene {
         let mut spec = base_spec.clone();
