@@ -19,14 +19,14 @@ impl PipelensApp {
         // Wide enough for an 80-column line of code where the window allows it (at 1920
         // points, 760 leave the picture more than half), narrower in a smaller one. A lab shows
         // three pictures (the student's frame, pipelens' own and their difference), so its code
-        // starts narrower, at 34 %: on a 1366-point projector with the narration band they
+        // starts narrower, at 33 %: on a 1366-point projector with the narration band they
         // keep more than a third of the window. Beside the inspector or the lesson editor it
         // starts narrower again, for the two to leave the view half of the window. Each
         // arrangement has its own id, so a drag sets the width for it alone.
         let window = ui.ctx().content_rect().width();
         let lab = self.session.current_exercise().is_some();
         let (id, share, most) = match (lab, self.beside_another()) {
-            (true, false) => ("shader-lab", 0.34, 760.0),
+            (true, false) => ("shader-lab", 0.33, 760.0),
             (true, true) => ("shader-lab-beside", 0.28, 560.0),
             (false, false) => ("shader", 0.4, 760.0),
             (false, true) => ("shader-beside", 0.3, 600.0),

@@ -399,12 +399,13 @@ impl PipelensApp {
         }
         let exercise = space.is_none() && self.session.current_exercise().is_some();
         let (area, main, side) = if observer || exercise {
-            let (area, left, right) = split(
-                ui,
-                space
-                    .is_none()
-                    .then(|| capture.width() as f32 / capture.height() as f32),
-            );
+            let aspect = space
+                .is_none()
+                .then(|| capture.width() as f32 / capture.height() as f32);
+            let (area, left, right) = match aspect.filter(|_| exercise) {
+                Some(aspect) => lab_split(ui, aspect),
+                None => split(ui, aspect),
+            };
             (area, left, Some(right))
         } else {
             let area = ui.available_rect_before_wrap();
@@ -513,6 +514,36 @@ fn split(ui: &egui::Ui, aspect: Option<f32>) -> (egui::Rect, egui::Rect, egui::R
     let left = egui::Rect::from_min_size(area.min, egui::vec2(left_width, area.height()));
     let right = egui::Rect::from_min_max(egui::pos2(left.right() + gap, area.top()), area.max);
     (area, left, right)
+}
+
+/// A lab's space cut for its three pictures of `aspect` (width over height): the student's
+/// frame at the left, pipelens' own over the difference at the right (in a portrait space, as
+/// [`split`] cuts it). The cut is the one that gives the three the most area, the student's
+/// frame never narrower than the others nor wider than two thirds: in a wide, low space (a
+/// projector with the narration band) the student's frame is large beside two small ones; in a
+/// tall one (beside the code at 1920 points) the three are the same size, one beside two.
+fn lab_split(ui: &egui::Ui, aspect: f32) -> (egui::Rect, egui::Rect, egui::Rect) {
+    let area = ui.available_rect_before_wrap();
+    let gap = 8.0;
+    if area.height() > area.width() * 1.1 || aspect <= 0.0 || !aspect.is_finite() {
+        return split(ui, Some(aspect));
+    }
+    let (w, h) = (area.width() - gap, area.height());
+    // An image of `aspect` fitted in width × height: its area.
+    let fitted = |width: f32, height: f32| {
+        let width = width.min(height * aspect).max(0.0);
+        width * width / aspect
+    };
+    let total = |left: f32| fitted(left, h) + 2.0 * fitted(w - left, (h - gap) / 2.0);
+    // The right column's pictures, as wide as they can be: no wider than the left.
+    let least = (w / 2.0).min(((h - gap) / 2.0) * aspect).min(w * 0.64);
+    let left = (0..=32)
+        .map(|k| least + (w * 0.64 - least) * k as f32 / 32.0)
+        .max_by(|a, b| total(*a).total_cmp(&total(*b)))
+        .unwrap_or(w / 2.0);
+    let left_rect = egui::Rect::from_min_size(area.min, egui::vec2(left, area.height()));
+    let right = egui::Rect::from_min_max(egui::pos2(left_rect.right() + gap, area.top()), area.max);
+    (area, left_rect, right)
 }
 
 impl eframe::App for PipelensApp {

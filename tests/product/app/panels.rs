@@ -1,9 +1,9 @@
 //! The picture beside the panels a student or a teacher opens (issue "The room and the
 //! editor"): on a 1920×1080 window the view frames its picture in what the shader panel, the
 //! inspector and the lesson editor leave, and keeps at least 35 % of the window with one of them
-//! open and 25 % with two, on every step of lesson 24 that shows one picture. (A lab's three
-//! pictures beside the narration card keep 29–33 % with the code open and 18–24 % with two
-//! panels: not yet held here.)
+//! open and 25 % with two, on every step of lesson 24 and on every lab. Not yet held: a lab's
+//! three pictures with the code and a second panel open keep 19.7–23.7 % (three pictures and
+//! the narration card beside 1 000 points of panels).
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -30,21 +30,28 @@ fn set_panels(h: &mut Harness<'_, PipelensApp>, shown: &mut Open, want: Open) {
     );
 }
 
-/// Every step of lesson 24 but its labs, with each panel and each pair of panels open: the
+/// Every step of lesson 24 and every lab, with each panel and each pair of panels open: the
 /// picture's share of the window. (Before the panels started narrower beside each other, the
 /// code and the inspector left a step's picture 20 % and the code and the floating editor
-/// 15.9 %, the editor covering it.)
+/// 15.9 %, the editor covering it; beside the code a lab's three pictures kept 26–31 %.)
 #[test]
 fn the_picture_keeps_its_share_beside_open_panels() {
     let screen = egui::Rect::from_min_size(egui::pos2(8.0, 8.0), egui::vec2(1920.0, 1080.0));
     let mut small = Vec::new();
     let mut measured = 0;
-    {
-        let path = crate::support::repo().join("lessons/24-shader-programs.toml");
+    for entry in std::fs::read_dir(crate::support::repo().join("lessons")).expect("lessons") {
+        let path = entry.expect("an entry").path();
+        if path.extension().is_none_or(|e| e != "toml") {
+            continue;
+        }
+        let every = path.ends_with("24-shader-programs.toml");
         let lesson = super::lesson_of(&super::sized_lesson_harness(&path, [400.0, 300.0]));
         let steps: Vec<usize> = (0..lesson.steps.len())
-            .filter(|&k| lesson.steps[k].exercise.is_none())
+            .filter(|&k| every || lesson.steps[k].exercise.is_some())
             .collect();
+        if steps.is_empty() {
+            continue;
+        }
         // The harness keeps 8 points around the app: 1920×1080 inside.
         let mut h = super::sized_lesson_harness(&path, [1936.0, 1096.0]);
         h.run_steps(2);
@@ -62,6 +69,11 @@ fn the_picture_keeps_its_share_beside_open_panels() {
                 ([true, false, true], 0.25),
                 ([false, true, true], 0.25),
             ] {
+                let lab = lesson.steps[k].exercise.is_some();
+                if lab && want[0] && least < 0.35 {
+                    // The code and another panel beside a lab: not yet held (see above).
+                    continue;
+                }
                 set_panels(&mut h, &mut shown, want);
                 let share = h.state().picture_share(screen);
                 measured += 1;
@@ -85,7 +97,11 @@ fn the_picture_keeps_its_share_beside_open_panels() {
             }
         }
     }
-    assert!(measured >= 9 * 6, "only {measured} pictures measured");
+    // Lesson 24's 12 steps, 6 arrangements each, and 16 more labs.
+    assert!(
+        measured >= 12 * 6 + 16 * 4,
+        "only {measured} pictures measured"
+    );
     assert!(
         small.is_empty(),
         "the picture is too small beside its panels: {small:#?}"
