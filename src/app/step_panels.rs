@@ -3,6 +3,7 @@
 //! where the narration goes beside the code, and the shader panel itself.
 
 use super::PipelensApp;
+use super::window::Room;
 
 impl PipelensApp {
     /// The shader panel on the right: the student's GLSL, its debugger and own uniforms (the
@@ -21,15 +22,16 @@ impl PipelensApp {
         // three pictures (the student's frame, pipelens' own and their difference), so its code
         // starts narrower, at 33 %: on a 1366-point projector with the narration band they
         // keep more than a third of the window. Beside the inspector or the lesson editor it
-        // starts narrower again, for the two to leave the view half of the window. Each
-        // arrangement has its own id, so a drag sets the width for it alone.
+        // starts narrower again, for the two to leave the view half of the window, and beside
+        // them in a lab at 23 %. Each arrangement has its own id, so a drag sets the width
+        // for it alone.
         let window = ui.ctx().content_rect().width();
         let lab = self.session.current_exercise().is_some();
-        let (id, share, most) = match (lab, self.beside_another()) {
-            (true, false) => ("shader-lab", 0.33, 760.0),
-            (true, true) => ("shader-lab-beside", 0.28, 560.0),
-            (false, false) => ("shader", 0.4, 760.0),
-            (false, true) => ("shader-beside", 0.3, 600.0),
+        let (id, share, most) = match (lab, self.room()) {
+            (true, Room::Alone) => ("shader-lab", 0.33, 760.0),
+            (false, Room::Alone) => ("shader", 0.4, 760.0),
+            (_, Room::Beside) => ("shader-beside", 0.3, 600.0),
+            (_, Room::Crowded) => ("shader-crowded", 0.23, 480.0),
         };
         let wide = (window * share).clamp(440.0, most);
         egui::Panel::right(id)

@@ -171,16 +171,20 @@ impl PipelensApp {
         };
     }
 
-    /// Whether two or more of the panels at the right (the inspector, the code, the lesson
-    /// editor) are open: each then starts narrower, so that the view keeps about half of the
-    /// window for its picture.
-    pub(super) fn beside_another(&self) -> bool {
+    /// How much room the panels at the right (the inspector, the code, the lesson editor)
+    /// start with: two or more open start narrower, so that the view keeps about half of the
+    /// window, and narrower still beside a lab, whose three pictures need more.
+    pub(super) fn room(&self) -> Room {
         let inspector = self.panels.inspector && self.session.capture.is_some();
-        [inspector, self.panels.shader, self.editor.open]
+        let open = [inspector, self.panels.shader, self.editor.open]
             .into_iter()
             .filter(|&open| open)
-            .count()
-            > 1
+            .count();
+        match (open > 1, self.session.current_exercise().is_some()) {
+            (false, _) => Room::Alone,
+            (true, false) => Room::Beside,
+            (true, true) => Room::Crowded,
+        }
     }
 
     /// The share of `screen` the picture covers (the area of the union of [`Self::picture`]).
@@ -233,13 +237,13 @@ impl PipelensApp {
         if self.panels.inspector
             && let Some(capture) = &capture
         {
-            // Beside another panel, narrower: a fifth of the window (its own id keeps the
-            // width a drag gives it in each arrangement).
-            let (id, wide) = if self.beside_another() {
-                let window = ui.ctx().content_rect().width();
-                ("inspector-beside", (window * 0.2).clamp(320.0, 400.0))
-            } else {
-                ("inspector", 400.0)
+            // Beside another panel, narrower: a fifth of the window, 320 points beside a lab
+            // (its own id keeps the width a drag gives it in each arrangement).
+            let window = ui.ctx().content_rect().width();
+            let (id, wide) = match self.room() {
+                Room::Alone => ("inspector", 400.0),
+                Room::Beside => ("inspector-beside", (window * 0.2).clamp(320.0, 400.0)),
+                Room::Crowded => ("inspector-crowded", 320.0),
             };
             egui::Panel::right(id)
                 .default_size(wide)
@@ -516,6 +520,17 @@ fn split(ui: &egui::Ui, aspect: Option<f32>) -> (egui::Rect, egui::Rect, egui::R
     (area, left, right)
 }
 
+/// The room the panels at the right start with (see [`PipelensApp::room`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Room {
+    /// One panel open.
+    Alone,
+    /// Two or more open.
+    Beside,
+    /// Two or more open beside a lab's three pictures.
+    Crowded,
+}
+
 /// A lab's space cut for its three pictures of `aspect` (width over height): the student's
 /// frame at the left, pipelens' own over the difference at the right (in a portrait space, as
 /// [`split`] cuts it). The cut is the one that gives the three the most area, the student's
@@ -590,8 +605,8 @@ impl PipelensApp {
         }
         let file = self.watched.as_ref().map(|w| w.path().to_path_buf());
         self.editor.follow(&self.session, file.as_deref());
-        let beside = self.beside_another();
-        let commands = self.editor.ui(ui, &self.session, beside);
+        let room = self.room();
+        let commands = self.editor.ui(ui, &self.session, room);
         self.commands.extend(commands);
         if let Some(made) = self.editor.made.take() {
             self.open(made.doc, &made.source, made.file.clone());

@@ -10,6 +10,7 @@ use super::new::{Made, NewLesson};
 use crate::app::command::LessonCommand;
 
 use crate::app::session::{Command, Session};
+use crate::app::window::Room;
 use crate::lesson::SceneSpec;
 use crate::lesson::param::{self, Animation, Easing, Repeat, Value};
 use crate::vocabulary::{Lang, Text};
@@ -124,8 +125,8 @@ impl Editor {
     /// The editor, when open, docked at the window's right edge (the view beside it frames
     /// its subject in what is left, as it does beside the inspector and the code); the
     /// commands it gives the session. `root` is the frame's root: the panel is shown before
-    /// the view's; `beside` another panel at the right, it starts narrower.
-    pub fn ui(&mut self, root: &mut egui::Ui, session: &Session, beside: bool) -> Vec<Command> {
+    /// the view's; with other panels at the right (`room`), it starts narrower.
+    pub fn ui(&mut self, root: &mut egui::Ui, session: &Session, room: Room) -> Vec<Command> {
         let mut out = Vec::new();
         if let Some(doc) = &mut self.doc {
             doc.keep_recovery();
@@ -144,13 +145,13 @@ impl Editor {
             ),
             None => lang.tr("Lesson editor", "课程编辑器").to_owned(),
         };
-        // A quarter of the window, up to 480 points (less `beside` another panel): the words'
-        // boxes and the steps' list fit, and the view keeps the rest.
+        // A quarter of the window, up to 480 points (less beside another panel, 320 beside a
+        // lab): the words' boxes and the steps' list fit, and the view keeps the rest.
         let window = root.ctx().content_rect().width();
-        let (id, wide) = if beside {
-            ("lesson-editor-beside", (window * 0.22).clamp(320.0, 420.0))
-        } else {
-            ("lesson-editor", (window * 0.25).clamp(340.0, 480.0))
+        let (id, wide) = match room {
+            Room::Alone => ("lesson-editor", (window * 0.25).clamp(340.0, 480.0)),
+            Room::Beside => ("lesson-editor-beside", (window * 0.22).clamp(320.0, 420.0)),
+            Room::Crowded => ("lesson-editor-crowded", 320.0),
         };
         let mut open = true;
         egui::Panel::right(id)
