@@ -10,7 +10,7 @@ use pipeline::buffers::{BufferKind, Capture};
 use pipeline::capture::FrameCapture;
 
 use super::typeset::{self, Style};
-use super::{BufferTexture, fit_rect, picture_font, wrapped_label};
+use super::{BufferTexture, boxed_galley, fit_rect, picture_font};
 use crate::app::command::SelectionCommand;
 use crate::app::session::{Command, Session};
 use crate::lab::words;
@@ -59,17 +59,13 @@ impl ExerciseView {
         let tolerance = session.current_exercise().map_or(1.0, |e| e.tolerance);
         let aspect = capture.width() as f32 / capture.height() as f32;
         let half = rect.height() / 2.0 - 4.0;
-        let top = fit_rect(
+        let halves = [
             Rect::from_min_size(rect.min, Vec2::new(rect.width(), half)),
-            aspect,
-        );
-        let bottom = fit_rect(
             Rect::from_min_size(
                 rect.min + Vec2::new(0.0, half + 8.0),
                 Vec2::new(rect.width(), half),
             ),
-            aspect,
-        );
+        ];
         // The reference in the buffer the student's frame is shown in (its gain, its depth
         // ramp), as the buffer menu names it.
         let sel = &session.selection;
@@ -115,28 +111,25 @@ impl ExerciseView {
             self.difference = Some((pair, t));
         }
         let difference_texture = self.difference.as_ref().map(|(_, t)| t.clone());
-        let own = format!(
-            "{} · {}",
-            lang.tr("pipelens' own (the reference)", "pipelens 自带（参考）"),
-            crate::vocabulary::buffer_name(kind, lang)
-        );
-        let captions = [
-            own.as_str(),
-            lang.tr(
-                "difference (red: colour, yellow: coverage, blue: depth, magenta: another triangle)",
-                "差异（红：颜色，黄：覆盖，蓝：深度，品红：另一个三角形）",
-            ),
-        ];
-        for (i, (at, texture)) in [(top, Some(reference_texture)), (bottom, difference_texture)]
+        let captions = captions(kind, lang);
+        let font = picture_font(ui.ctx(), 14.0);
+        for (i, texture) in [Some(reference_texture), difference_texture]
             .into_iter()
             .enumerate()
         {
             let Some(texture) = texture else { continue };
+            let caption = ui.painter().layout(
+                captions[i].clone(),
+                font.clone(),
+                Color32::WHITE,
+                rect.width() - 6.0,
+            );
+            let (at, above) = captioned(halves[i], aspect, caption.size().y + 6.0);
             self.picture.push(at);
             cmds.extend(picture(
                 ui,
                 (at, i, &texture),
-                captions[i],
+                (caption, above),
                 session,
                 capture,
             ));
@@ -145,12 +138,40 @@ impl ExerciseView {
     }
 }
 
-/// One picture beside the student's, captioned, the inspected pixel marked; a click on it
-/// inspects that pixel.
+/// The captions of pipelens' own picture (showing the buffer `kind`) and of the difference.
+fn captions(kind: BufferKind, lang: crate::vocabulary::Lang) -> [String; 2] {
+    [
+        format!(
+            "{} · {}",
+            lang.tr("pipelens' own (the reference)", "pipelens 自带（参考）"),
+            crate::vocabulary::buffer_name(kind, lang)
+        ),
+        lang.tr(
+            "difference (red: colour, yellow: coverage, blue: depth, magenta: another triangle)",
+            "差异（红：颜色，黄：覆盖，蓝：深度，品红：另一个三角形）",
+        )
+        .to_owned(),
+    ]
+}
+
+/// A picture of `aspect` fitted in `half` with its caption of height `caption`: above it where
+/// the half has the room (the picture moved down as far as that needs, `true`), else over its
+/// top-left corner (a low space: a projector with the narration band).
+fn captioned(half: Rect, aspect: f32, caption: f32) -> (Rect, bool) {
+    let at = fit_rect(half, aspect);
+    if half.height() - at.height() < caption {
+        return (at, false);
+    }
+    let down = (half.top() + caption - at.top()).max(0.0);
+    (at.translate(Vec2::new(0.0, down)), true)
+}
+
+/// One picture beside the student's, captioned (above it, or over it: `above`), the inspected
+/// pixel marked; a click on it inspects that pixel.
 fn picture(
     ui: &mut Ui,
     (at, i, texture): (Rect, usize, &egui::TextureHandle),
-    caption: &str,
+    (caption, above): (Arc<egui::Galley>, bool),
     session: &Session,
     capture: &FrameCapture,
 ) -> Option<Command> {
@@ -162,17 +183,20 @@ fn picture(
         Rect::from_min_max(Pos2::ZERO, Pos2::new(1.0, 1.0)),
         Color32::WHITE,
     );
-    // Over the picture's top-left corner, wrapped to the panel (a square picture is narrower
-    // than its caption in classroom type).
+    // Above the picture, or over its top-left corner, wrapped to the panel (a square picture
+    // is narrower than its caption in classroom type).
     let panel = ui.max_rect();
-    wrapped_label(
+    let corner = if above {
+        Pos2::new(panel.left(), at.top() - caption.size().y - 3.0)
+    } else {
+        at.left_top() + Vec2::splat(6.0)
+    };
+    boxed_galley(
         &ui.painter_at(panel),
-        at.left_top() + Vec2::splat(6.0),
+        corner,
         egui::Align2::LEFT_TOP,
         caption,
-        &picture_font(ui.ctx(), 14.0),
         Color32::WHITE,
-        (panel.right() - at.left() - 12.0).max(60.0),
     );
     let (w, h) = (capture.width(), capture.height());
     let grid = capture.grid();

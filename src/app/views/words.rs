@@ -82,6 +82,17 @@ pub fn wrapped_label(
     width: f32,
 ) -> Rect {
     let galley = painter.layout(text.to_owned(), font.clone(), color, width);
+    boxed_galley(painter, at, align, galley, color)
+}
+
+/// Text already laid out, on its dark box anchored at `at`; the box.
+pub fn boxed_galley(
+    painter: &egui::Painter,
+    at: Pos2,
+    align: egui::Align2,
+    galley: std::sync::Arc<egui::Galley>,
+    color: Color32,
+) -> Rect {
     let rect = align.anchor_size(at, galley.size()).expand(3.0);
     painter.rect_filled(rect, 3.0, Color32::from_black_alpha(170));
     painter.galley(rect.min + egui::vec2(3.0, 3.0), galley, color);
