@@ -34,6 +34,22 @@ fn type_into(h: &mut Harness<'_, PipelensApp>, k: usize, text: &str) {
     h.run_steps(2);
 }
 
+/// Replaces the text of the `k`-th one-line box of the window with `text`.
+fn replace_in(h: &mut Harness<'_, PipelensApp>, k: usize, text: &str) {
+    h.get_all_by_role(Role::TextInput)
+        .nth(k)
+        .expect("a box")
+        .focus();
+    h.run_steps(1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run_steps(1);
+    h.get_all_by_role(Role::TextInput)
+        .nth(k)
+        .expect("a box")
+        .type_text(text);
+    h.run_steps(1);
+}
+
 /// A slider dragged from the scene on screen to `name = value`, as the app sees a drag: the
 /// draft starts before the first change and ends when the pointer is let go.
 fn drag(h: &mut Harness<'_, PipelensApp>, name: &str, value: f32) {
@@ -272,18 +288,7 @@ fn a_new_lesson_starts_from_a_mesh_of_ones_own() {
         (n - 2, mesh.display().to_string()),
         (n - 1, file.display().to_string()),
     ] {
-        h.get_all_by_role(Role::TextInput)
-            .nth(k)
-            .expect("a box")
-            .focus();
-        h.run_steps(1);
-        h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
-        h.run_steps(1);
-        h.get_all_by_role(Role::TextInput)
-            .nth(k)
-            .expect("a box")
-            .type_text(&text);
-        h.run_steps(1);
+        replace_in(&mut h, k, &text);
     }
     h.get_by_label("Make the lesson").click_accesskit();
     h.run_steps(4);
@@ -485,18 +490,7 @@ fn a_lesson_made_from_a_moving_step_starts_where_the_step_starts() {
     h.run_steps(2);
     // From the scene on screen (the first choice); the last one-line box is the file's name.
     let n = h.get_all_by_role(Role::TextInput).count();
-    h.get_all_by_role(Role::TextInput)
-        .nth(n - 1)
-        .expect("a box")
-        .focus();
-    h.run_steps(1);
-    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
-    h.run_steps(1);
-    h.get_all_by_role(Role::TextInput)
-        .nth(n - 1)
-        .expect("a box")
-        .type_text(&file.display().to_string());
-    h.run_steps(1);
+    replace_in(&mut h, n - 1, &file.display().to_string());
     h.get_by_label("Make the lesson").click_accesskit();
     h.run_steps(4);
     let text = std::fs::read_to_string(&file).expect("written");
