@@ -8,6 +8,7 @@ mod compact;
 mod editor;
 mod export_task;
 mod latency;
+mod layout;
 mod library;
 pub mod platform;
 mod player;

@@ -3,7 +3,7 @@
 //! where the narration goes beside the code, and the shader panel itself.
 
 use super::PipelensApp;
-use super::window::Room;
+use super::layout::Room;
 
 impl PipelensApp {
     /// The shader panel on the right: the student's GLSL, its debugger and own uniforms (the

@@ -9,8 +9,8 @@ use super::file::Edited;
 use super::new::{Made, NewLesson};
 use crate::app::command::LessonCommand;
 
+use crate::app::layout::Room;
 use crate::app::session::{Command, Session};
-use crate::app::window::Room;
 use crate::lesson::SceneSpec;
 use crate::lesson::param::{self, Animation, Easing, Repeat, Value};
 use crate::vocabulary::{Lang, Text};
