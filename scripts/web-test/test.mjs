@@ -223,14 +223,15 @@ if (await waitForTitle(zh2, /^pipelens — 07-rasterization — step 1\/6$/, "a 
   await zh2.keyboard.press("r");
   await zh2.waitForTimeout(2000);
   await zh2.screenshot({ path: `${out}/editor-zh.png` });
-  // "删除" (delete) in the row under the six steps; "保存（下载）" (save) beside Undo and Redo.
-  await zh2.mouse.click(1560, 281);
+  // The editor is docked at the right edge, 480 points wide at 1920: "删除" (delete) in the
+  // row under the six steps; "保存（下载）" (save) beside Undo and Redo.
+  await zh2.mouse.click(1739, 260);
   await zh2.waitForTimeout(2500);
   await zh2.screenshot({ path: `${out}/editor-zh-deleted.png` });
   const unsaved = await zh2.evaluate(() => localStorage.getItem("pipelens-unsaved:my-lesson.toml.unsaved") ?? "");
   check((unsaved.match(/^\[\[steps\]\]/gm) ?? []).length === 5, `the unsaved edit is kept in the page's storage (${(unsaved.match(/^\[\[steps\]\]/gm) ?? []).length} steps)`);
   const saving = zh2.waitForEvent("download", { timeout: 15000 }).catch(() => null);
-  await zh2.mouse.click(1440, 94);
+  await zh2.mouse.click(1635, 73);
   const download = await saving;
   check(download !== null && download.suggestedFilename() === "my-lesson.toml", `Save is a download of my-lesson.toml (${download?.suggestedFilename()})`);
   if (download) {
