@@ -39,31 +39,140 @@ pub(super) enum Room {
 }
 
 /// A lab's space cut for its three pictures of `aspect` (width over height): the student's
-/// frame at the left, pipelens' own over the difference at the right (in a portrait space, as
-/// [`split`] cuts it). The cut is the one that gives the three the most area, the student's
-/// frame never narrower than the others nor wider than two thirds: in a wide, low space (a
-/// projector with the narration band) the student's frame is large beside two small ones; in a
-/// tall one (beside the code at 1920 points) the three are the same size, one beside two.
-pub(super) fn lab_split(ui: &egui::Ui, aspect: f32) -> (egui::Rect, egui::Rect, egui::Rect) {
+/// frame at the left, pipelens' own and the difference at the right, each under its caption,
+/// `caption(width)` high when wrapped to that width (in a portrait space, as [`split`] cuts
+/// it). The cut is the one that gives the three the most area, the student's frame never
+/// narrower than the others nor wider than two thirds, the right two one over the other or
+/// side by side as [`lab_pair`] arranges them: in a wide, low space (a projector with the
+/// narration band) the student's frame is large beside two smaller ones side by side, each
+/// under its whole caption; in a tall one (beside the code at 1920 points) the three are the
+/// same size, one beside two.
+pub(super) fn lab_split(
+    ui: &egui::Ui,
+    aspect: f32,
+    caption: &dyn Fn(f32) -> f32,
+) -> (egui::Rect, egui::Rect, egui::Rect) {
     let area = ui.available_rect_before_wrap();
     let gap = 8.0;
     if area.height() > area.width() * 1.1 || aspect <= 0.0 || !aspect.is_finite() {
         return split(ui, Some(aspect));
     }
     let (w, h) = (area.width() - gap, area.height());
-    // An image of `aspect` fitted in width × height: its area.
-    let fitted = |width: f32, height: f32| {
-        let width = width.min(height * aspect).max(0.0);
-        width * width / aspect
+    let right_of = |left: f32| {
+        egui::Rect::from_min_max(egui::pos2(area.left() + left + gap, area.top()), area.max)
     };
-    let total = |left: f32| fitted(left, h) + 2.0 * fitted(w - left, (h - gap) / 2.0);
-    // The right column's pictures, as wide as they can be: no wider than the left.
+    let total = |left: f32| {
+        let pair = lab_pair(right_of(left), aspect, caption);
+        fitted(egui::vec2(left, h), aspect) + pair.iter().map(|p| p.area).sum::<f32>()
+    };
+    // The right pictures, as wide as they can be: no wider than the left.
     let least = (w / 2.0).min(((h - gap) / 2.0) * aspect).min(w * 0.64);
     let left = (0..=32)
         .map(|k| least + (w * 0.64 - least) * k as f32 / 32.0)
         .max_by(|a, b| total(*a).total_cmp(&total(*b)))
         .unwrap_or(w / 2.0);
     let left_rect = egui::Rect::from_min_size(area.min, egui::vec2(left, area.height()));
-    let right = egui::Rect::from_min_max(egui::pos2(left_rect.right() + gap, area.top()), area.max);
-    (area, left_rect, right)
+    (area, left_rect, right_of(left))
+}
+
+/// One of a lab's two companion pictures: its space (caption included) and the area its
+/// picture takes under the caption.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Companion {
+    pub space: egui::Rect,
+    pub area: f32,
+}
+
+/// A lab's two companion pictures of `aspect` in `rect`, each under a caption `caption(width)`
+/// high at its space's width: one over the other or side by side, whichever leaves the two
+/// pictures more area (a caption that does not fit above its picture leaves it no area here;
+/// the view then writes it over the picture's corner).
+pub(super) fn lab_pair(
+    rect: egui::Rect,
+    aspect: f32,
+    caption: &dyn Fn(f32) -> f32,
+) -> [Companion; 2] {
+    let gap = 8.0;
+    let companion = |space: egui::Rect| {
+        let room = egui::vec2(space.width(), space.height() - caption(space.width()));
+        Companion {
+            space,
+            area: fitted(room, aspect),
+        }
+    };
+    let (w, h) = ((rect.width() - gap) / 2.0, (rect.height() - gap) / 2.0);
+    let stacked = [
+        egui::Rect::from_min_size(rect.min, egui::vec2(rect.width(), h)),
+        egui::Rect::from_min_max(egui::pos2(rect.left(), rect.bottom() - h), rect.max),
+    ]
+    .map(companion);
+    let beside = [
+        egui::Rect::from_min_size(rect.min, egui::vec2(w, rect.height())),
+        egui::Rect::from_min_max(egui::pos2(rect.right() - w, rect.top()), rect.max),
+    ]
+    .map(companion);
+    let area = |pair: &[Companion; 2]| pair[0].area + pair[1].area;
+    if area(&beside) > area(&stacked) * 1.05 {
+        beside
+    } else {
+        stacked
+    }
+}
+
+/// The area of a picture of `aspect` fitted in `room` (none where the room is empty).
+fn fitted(room: egui::Vec2, aspect: f32) -> f32 {
+    let width = room.x.min(room.y * aspect).max(0.0);
+    width * width / aspect
+}
+
+#[cfg(test)]
+mod tests {
+    use super::lab_pair;
+    use egui::{Rect, pos2, vec2};
+
+    /// Two lines of classroom type (28 points each) where the space is narrower than 400
+    /// points, one line otherwise.
+    fn caption(width: f32) -> f32 {
+        if width < 400.0 { 62.0 } else { 34.0 }
+    }
+
+    /// A wide, low column (a projector with the narration band): the two pictures go side by
+    /// side, each under its caption; the picture of aspect 1.6 in a 346 × 370 half under a
+    /// two-line caption is 346 × 216, where stacked it would be 235 × 147 under one line.
+    #[test]
+    fn a_low_column_puts_the_pictures_side_by_side_under_their_captions() {
+        let rect = Rect::from_min_size(pos2(600.0, 60.0), vec2(700.0, 370.0));
+        let pair = lab_pair(rect, 1.6, &caption);
+        assert_eq!(
+            pair[0].space,
+            Rect::from_min_size(pos2(600.0, 60.0), vec2(346.0, 370.0))
+        );
+        assert_eq!(
+            pair[1].space,
+            Rect::from_min_size(pos2(954.0, 60.0), vec2(346.0, 370.0))
+        );
+        let (w, h) = (346.0f32, 346.0 / 1.6);
+        assert!((pair[0].area - w * h).abs() < 0.5, "{}", pair[0].area);
+    }
+
+    /// A tall column (beside the code at 1920 points): one over the other, each as wide as the
+    /// column: 400 wide in a 400 × 411 half under a one-line caption, 400 × 250.
+    #[test]
+    fn a_tall_column_stacks_the_pictures() {
+        let rect = Rect::from_min_size(pos2(0.0, 0.0), vec2(400.0, 830.0));
+        let pair = lab_pair(rect, 1.6, &caption);
+        assert_eq!(
+            pair[0].space,
+            Rect::from_min_size(pos2(0.0, 0.0), vec2(400.0, 411.0))
+        );
+        assert_eq!(
+            pair[1].space,
+            Rect::from_min_size(pos2(0.0, 419.0), vec2(400.0, 411.0))
+        );
+        assert!(
+            (pair[1].area - 400.0 * 250.0).abs() < 0.5,
+            "{}",
+            pair[1].area
+        );
+    }
 }

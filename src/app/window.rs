@@ -408,7 +408,10 @@ impl PipelensApp {
                 .is_none()
                 .then(|| capture.width() as f32 / capture.height() as f32);
             let (area, left, right) = match aspect.filter(|_| exercise) {
-                Some(aspect) => lab_split(ui, aspect),
+                Some(aspect) => {
+                    let caption = views::exercise::caption_height(ui.ctx(), &self.session);
+                    lab_split(ui, aspect, &caption)
+                }
                 None => split(ui, aspect),
             };
             (area, left, Some(right))
@@ -456,6 +459,7 @@ impl PipelensApp {
                 self.commands.extend(c);
                 self.picture.extend(self.pixel_view.picture.iter().copied());
                 self.subject.extend(self.pixel_view.subject.iter().copied());
+                self.overlays.extend(self.pixel_view.words.iter().copied());
             }
         });
         if let Some(side) = side {
@@ -466,6 +470,10 @@ impl PipelensApp {
                     self.commands.extend(c);
                     self.picture
                         .extend(self.exercise_view.picture.iter().copied());
+                    self.subject
+                        .extend(self.exercise_view.picture.iter().copied());
+                    self.overlays
+                        .extend(self.exercise_view.captions.iter().copied());
                 } else {
                     let c = self.observer_view.ui(ui, &self.session, capture);
                     self.commands.extend(c);

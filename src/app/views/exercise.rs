@@ -5,9 +5,10 @@
 
 use std::sync::Arc;
 
+use egui::text::LayoutJob;
 use egui::{Color32, Pos2, Rect, RichText, Sense, TextureOptions, Ui, Vec2};
 use pipeline::buffers::{BufferKind, Capture};
-use pipeline::capture::FrameCapture;
+use pipeline::capture::{DIFFERENCE_COLOURS, FrameCapture};
 
 use super::typeset::{self, Style};
 use super::{BufferTexture, boxed_galley, fit_rect, picture_font};
@@ -27,6 +28,8 @@ pub struct ExerciseView {
     difference: Option<((usize, usize), egui::TextureHandle)>,
     /// Where the pictures were drawn this frame (for the share of the window they take).
     pub picture: Vec<Rect>,
+    /// The boxes of their captions this frame (words that must not cover a picture).
+    pub captions: Vec<Rect>,
 }
 
 /// A frame's identity for the caches: its address (a new render is a new frame).
@@ -46,6 +49,7 @@ impl ExerciseView {
         let lang = session.lang;
         let mut cmds = Vec::new();
         self.picture.clear();
+        self.captions.clear();
         let Some(reference) = &session.exercise.reference else {
             ui.put(
                 rect,
@@ -58,28 +62,9 @@ impl ExerciseView {
         };
         let tolerance = session.current_exercise().map_or(1.0, |e| e.tolerance);
         let aspect = capture.width() as f32 / capture.height() as f32;
-        let half = rect.height() / 2.0 - 4.0;
-        let halves = [
-            Rect::from_min_size(rect.min, Vec2::new(rect.width(), half)),
-            Rect::from_min_size(
-                rect.min + Vec2::new(0.0, half + 8.0),
-                Vec2::new(rect.width(), half),
-            ),
-        ];
-        // The reference in the buffer the student's frame is shown in (its gain, its depth
-        // ramp), as the buffer menu names it.
-        let sel = &session.selection;
-        let kind = if reference
-            .settings
-            .capture
-            .covers(Capture::showing([sel.buffer]))
-        {
-            sel.buffer
-        } else {
-            BufferKind::Color
-        };
+        let kind = reference_kind(session);
         let gain = capture.term_gain(kind);
-        let depth = sel.depth_view;
+        let depth = session.selection.depth_view;
         let reference_texture = self.reference.get_with(
             ui.ctx(),
             "exercise-reference",
@@ -111,70 +96,141 @@ impl ExerciseView {
             self.difference = Some((pair, t));
         }
         let difference_texture = self.difference.as_ref().map(|(_, t)| t.clone());
-        let captions = captions(kind, lang);
-        let font = picture_font(ui.ctx(), 14.0);
+        let captions = captions(kind, lang, &picture_font(ui.ctx(), 14.0));
+        let height = caption_height(ui.ctx(), session);
+        let pair = crate::app::layout::lab_pair(rect, aspect, &height);
         for (i, texture) in [Some(reference_texture), difference_texture]
             .into_iter()
             .enumerate()
         {
             let Some(texture) = texture else { continue };
-            let caption = ui.painter().layout(
-                captions[i].clone(),
-                font.clone(),
-                Color32::WHITE,
-                rect.width() - 6.0,
-            );
-            let (at, above) = captioned(halves[i], aspect, caption.size().y + 6.0);
+            let space = pair[i].space;
+            let caption = ui
+                .painter()
+                .layout_job(wrapped(&captions[i], space.width()));
+            let (at, above) = captioned(space, aspect, caption.size().y + 6.0);
             self.picture.push(at);
-            cmds.extend(picture(
+            let (pick, boxed) = picture(
                 ui,
-                (at, i, &texture),
+                (space, at, i, &texture),
                 (caption, above),
                 session,
                 capture,
-            ));
+            );
+            cmds.extend(pick);
+            self.captions.push(boxed);
         }
         cmds
     }
 }
 
-/// The captions of pipelens' own picture (showing the buffer `kind`) and of the difference.
-fn captions(kind: BufferKind, lang: crate::vocabulary::Lang) -> [String; 2] {
-    [
-        format!(
+/// The buffer pipelens' own picture shows: the one the student's frame is shown in (with its
+/// gain, its depth ramp), as the buffer menu names it, where the reference kept it; colour
+/// otherwise.
+fn reference_kind(session: &Session) -> BufferKind {
+    let shown = session.selection.buffer;
+    let kept = session
+        .exercise
+        .reference
+        .as_ref()
+        .is_some_and(|r| r.settings.capture.covers(Capture::showing([shown])));
+    if kept { shown } else { BufferKind::Color }
+}
+
+/// How high the two companion pictures' captions are, wrapped to a space `width` wide: the
+/// higher of the two with its margin, as [`ExerciseView::ui`] lays them out.
+pub fn caption_height(ctx: &egui::Context, session: &Session) -> impl Fn(f32) -> f32 + use<> {
+    let captions = captions(
+        reference_kind(session),
+        session.lang,
+        &picture_font(ctx, 14.0),
+    );
+    let ctx = ctx.clone();
+    move |width: f32| {
+        captions
+            .iter()
+            .map(|c| ctx.fonts_mut(|f| f.layout_job(wrapped(c, width))).size().y + 6.0)
+            .fold(0.0, f32::max)
+    }
+}
+
+/// A caption wrapped to a space `width` wide (less its box's margins).
+fn wrapped(caption: &LayoutJob, width: f32) -> LayoutJob {
+    let mut job = caption.clone();
+    job.wrap.max_width = width - 6.0;
+    job
+}
+
+/// The captions of pipelens' own picture (showing the buffer `kind`) and of the difference,
+/// whose key names each meaning in its colour in the picture (red: colour, yellow: coverage,
+/// blue: depth, magenta: another triangle).
+fn captions(
+    kind: BufferKind,
+    lang: crate::vocabulary::Lang,
+    font: &egui::FontId,
+) -> [LayoutJob; 2] {
+    let format = |color: Color32| egui::TextFormat::simple(font.clone(), color);
+    let mut own = LayoutJob::default();
+    own.append(
+        &format!(
             "{} · {}",
-            lang.tr("pipelens' own (the reference)", "pipelens 自带（参考）"),
+            lang.tr("pipelens' own", "pipelens 自带"),
             crate::vocabulary::buffer_name(kind, lang)
         ),
-        lang.tr(
-            "difference (red: colour, yellow: coverage, blue: depth, magenta: another triangle)",
-            "差异（红：颜色，黄：覆盖，蓝：深度，品红：另一个三角形）",
-        )
-        .to_owned(),
-    ]
+        0.0,
+        format(Color32::WHITE),
+    );
+    let mut difference = LayoutJob::default();
+    difference.append(
+        lang.tr("difference:", "差异："),
+        0.0,
+        format(Color32::WHITE),
+    );
+    let names = [
+        lang.tr("colour", "颜色"),
+        lang.tr("coverage", "覆盖"),
+        lang.tr("depth", "深度"),
+        lang.tr("another triangle", "另一个三角形"),
+    ];
+    let (space, separator) = match lang {
+        crate::vocabulary::Lang::Zh => (0.0, "、"),
+        crate::vocabulary::Lang::En => (6.0, ","),
+    };
+    for (k, (name, [r, g, b])) in names.into_iter().zip(DIFFERENCE_COLOURS).enumerate() {
+        difference.append(name, space, format(Color32::from_rgb(r, g, b)));
+        if k + 1 < names.len() {
+            difference.append(separator, 0.0, format(Color32::WHITE));
+        }
+    }
+    [own, difference]
 }
 
 /// A picture of `aspect` fitted in `half` with its caption of height `caption`: above it where
-/// the half has the room (the picture moved down as far as that needs, `true`), else over its
-/// top-left corner (a low space: a projector with the narration band).
+/// the half has the room (the picture moved down as far as that needs, or made smaller by up to
+/// a third to leave that room; `true`), else over its top-left corner (a very low space).
 fn captioned(half: Rect, aspect: f32, caption: f32) -> (Rect, bool) {
     let at = fit_rect(half, aspect);
     if half.height() - at.height() < caption {
-        return (at, false);
+        let below = Rect::from_min_max(half.min + Vec2::new(0.0, caption), half.max);
+        let smaller = fit_rect(below, aspect);
+        if below.height() <= 0.0 || smaller.width() < at.width() * 2.0 / 3.0 {
+            return (at, false);
+        }
+        return (smaller, true);
     }
     let down = (half.top() + caption - at.top()).max(0.0);
     (at.translate(Vec2::new(0.0, down)), true)
 }
 
 /// One picture beside the student's, captioned (above it, or over it: `above`), the inspected
-/// pixel marked; a click on it inspects that pixel.
+/// pixel marked; a click on it inspects that pixel. Returns that command and the caption's box.
 fn picture(
     ui: &mut Ui,
-    (at, i, texture): (Rect, usize, &egui::TextureHandle),
+    (space, at, i, texture): (Rect, Rect, usize, &egui::TextureHandle),
     (caption, above): (Arc<egui::Galley>, bool),
     session: &Session,
     capture: &FrameCapture,
-) -> Option<Command> {
+) -> (Option<Command>, Rect) {
     let response = ui.interact(at, ui.scope_id().with(("exercise", i)), Sense::click());
     let painter = ui.painter_at(at);
     painter.image(
@@ -183,21 +239,21 @@ fn picture(
         Rect::from_min_max(Pos2::ZERO, Pos2::new(1.0, 1.0)),
         Color32::WHITE,
     );
-    // Above the picture, or over its top-left corner, wrapped to the panel (a square picture
+    // Above the picture, or over its top-left corner, wrapped to its space (a square picture
     // is narrower than its caption in classroom type).
-    let panel = ui.max_rect();
     let corner = if above {
-        Pos2::new(panel.left(), at.top() - caption.size().y - 3.0)
+        Pos2::new(space.left(), at.top() - caption.size().y - 3.0)
     } else {
         at.left_top() + Vec2::splat(6.0)
     };
-    boxed_galley(
-        &ui.painter_at(panel),
+    let boxed = boxed_galley(
+        &ui.painter_at(space),
         corner,
         egui::Align2::LEFT_TOP,
         caption,
         Color32::WHITE,
-    );
+    )
+    .intersect(space);
     let (w, h) = (capture.width(), capture.height());
     let grid = capture.grid();
     let s = at.width() / w as f32;
@@ -210,16 +266,20 @@ fn picture(
             egui::StrokeKind::Outside,
         );
     }
-    let p = response
+    let clicked = response
         .clicked()
-        .then(|| response.interact_pointer_pos())??;
-    let (x, row) = ((p.x - at.left()) / s, (p.y - at.top()) / s);
-    (x >= 0.0 && row >= 0.0 && (x as u32) < w && (row as u32) < h).then(|| {
-        Command::Selection(SelectionCommand::SelectPixel(Some((
-            x as u32,
-            grid.row(row as u32),
-        ))))
-    })
+        .then(|| response.interact_pointer_pos())
+        .flatten();
+    let pick = clicked.and_then(|p| {
+        let (x, row) = ((p.x - at.left()) / s, (p.y - at.top()) / s);
+        (x >= 0.0 && row >= 0.0 && (x as u32) < w && (row as u32) < h).then(|| {
+            Command::Selection(SelectionCommand::SelectPixel(Some((
+                x as u32,
+                grid.row(row as u32),
+            ))))
+        })
+    });
+    (pick, boxed)
 }
 
 /// What else the check found, each as a line: the inside or depth test sample by sample at the

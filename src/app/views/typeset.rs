@@ -210,6 +210,13 @@ pub fn paint_formula(
     rect
 }
 
+/// The size a formula takes when painted ([`paint_formula`]).
+pub fn formula_size(painter: &Painter, formula: &str, style: &Style) -> Vec2 {
+    let nodes = notation::parse(formula, true);
+    let b = layout(painter, &nodes, style.size, style.color, style);
+    Vec2::new(b.width, b.ascent + b.descent)
+}
+
 /// A formula on one line, as a widget.
 pub fn formula(ui: &mut Ui, formula: &str, style: &Style) -> Response {
     let nodes = notation::parse(formula, true);

@@ -40,23 +40,23 @@ pub fn picture_mono(ctx: &egui::Context, size: f32) -> egui::FontId {
 
 /// Says over a picture that a dim lighting term is drawn `gain` times brighter than its values
 /// (`vocabulary::gain_note`), in the accent colour at `at`; nothing when it is drawn as it is.
+/// Returns its box.
 pub fn draw_gain_note(
     painter: &egui::Painter,
     (at, align): (Pos2, egui::Align2),
     kind: pipeline::buffers::BufferKind,
     gain: f32,
     lang: crate::vocabulary::Lang,
-) {
-    if let Some(note) = crate::vocabulary::gain_note(kind, gain, lang) {
-        label_with_background(
-            painter,
-            at,
-            align,
-            &note,
-            &picture_font(painter.ctx(), 15.0),
-            egui::Color32::from_rgb(255, 214, 120),
-        );
-    }
+) -> Option<Rect> {
+    let note = crate::vocabulary::gain_note(kind, gain, lang)?;
+    Some(label_with_background(
+        painter,
+        at,
+        align,
+        &note,
+        &picture_font(painter.ctx(), 15.0),
+        egui::Color32::from_rgb(255, 214, 120),
+    ))
 }
 
 /// Text on a dark translucent box, legible over any picture; returns its rect.
@@ -97,6 +97,48 @@ pub fn boxed_galley(
     painter.rect_filled(rect, 3.0, Color32::from_black_alpha(170));
     painter.galley(rect.min + egui::vec2(3.0, 3.0), galley, color);
     rect
+}
+
+/// Where a box of `size` (a legend) goes in `view`: the first of its corners, 10 points in,
+/// in the order top-left, top-right, bottom-left, bottom-right, whose box covers nothing in
+/// `avoid` (the subject on screen), then the same corners 4 points in; else the corner whose
+/// box covers the least of it.
+#[must_use]
+pub fn clear_corner(size: egui::Vec2, view: Rect, avoid: &[Rect]) -> Rect {
+    let corners: Vec<Rect> = [10.0, 4.0]
+        .into_iter()
+        .flat_map(|inset| {
+            let inner = view.shrink(inset);
+            [
+                egui::Align2::LEFT_TOP,
+                egui::Align2::RIGHT_TOP,
+                egui::Align2::LEFT_BOTTOM,
+                egui::Align2::RIGHT_BOTTOM,
+            ]
+            .map(|a| a.align_size_within_rect(size, inner))
+        })
+        .collect();
+    let covered = |r: &Rect| covered_area(*r, avoid);
+    corners
+        .iter()
+        .find(|r| covered(r) <= 0.0)
+        .or_else(|| {
+            corners
+                .iter()
+                .min_by(|a, b| covered(a).total_cmp(&covered(b)))
+        })
+        .copied()
+        .unwrap_or(view)
+}
+
+/// How much of the rects in `avoid` the rect `r` covers (their overlaps' areas summed).
+#[must_use]
+pub fn covered_area(r: Rect, avoid: &[Rect]) -> f32 {
+    avoid
+        .iter()
+        .filter(|a| r.intersects(**a))
+        .map(|a| r.intersect(*a).area())
+        .sum()
 }
 
 /// Where to put a label of `size` pointing at `anchor` so that it covers nothing in `avoid`

@@ -68,7 +68,7 @@ fn the_classroom_card_fits_its_question_and_answer_button_at_1366() {
 /// picture are seen together: the narration runs in a band across the window's foot, under
 /// both, and every step of lesson 24 keeps its picture at least 35 % of the window (with the
 /// card under the picture it kept a fifth), in both languages — a lab's three pictures
-/// together, its code starting narrower.
+/// together at least 30 %, its code starting narrower, the companions' captions above them.
 #[test]
 fn the_code_and_the_picture_share_a_1366_projector() {
     let path = crate::support::repo().join("lessons/24-shader-programs.toml");
@@ -120,14 +120,21 @@ fn the_code_and_the_picture_share_a_1366_projector() {
                 "{lang:?} step {}: the title is at {shown:?}, not in the band at the foot",
                 k + 1
             );
-            if share < 0.35 {
+            // A lab's three pictures: its two companions under their whole captions (in
+            // classroom type, two lines each), which takes a few points of the 35 %.
+            let least = if h.state().session.current_exercise().is_some() {
+                0.30
+            } else {
+                0.35
+            };
+            if share < least {
                 small.push(format!("{lang:?} step {}: {:.1} %", k + 1, share * 100.0));
             }
         }
     }
     assert!(
         small.is_empty(),
-        "beside the code the picture is under 35 %: {small:?}"
+        "beside the code the picture is under 35 % (a lab's 30 %): {small:?}"
     );
 }
 

@@ -103,6 +103,13 @@ impl PixelDifference {
     }
 }
 
+/// The difference picture's colours: a colour that differs (red, at its largest: dimmer for a
+/// smaller difference), coverage that differs (yellow), another depth (blue), another
+/// triangle's pixel (magenta). A pixel that differs in several ways shows the first of
+/// coverage, colour, triangle, depth.
+pub const DIFFERENCE_COLOURS: [[u8; 3]; 4] =
+    [[255, 30, 30], [255, 220, 0], [60, 140, 255], [230, 60, 230]];
+
 impl FrameCapture {
     /// Compares this frame with `reference` (same size): a pixel matches when both cover it
     /// equally and each of its colour channels, rounded to 8 bits, is within `tolerance` steps
@@ -154,7 +161,7 @@ impl FrameCapture {
         Some(d)
     }
 
-    /// The difference as a picture: matching pixels dark grey (their reference's luminance at a
+    /// The difference as a picture ([`DIFFERENCE_COLOURS`]): matching pixels dark grey (their reference's luminance at a
     /// quarter), pixels whose colour differs red, brighter the larger the difference (full red
     /// at 64 steps and beyond), pixels whose coverage differs yellow, pixels at another depth
     /// blue, pixels another triangle owns magenta. Image rows run down.
@@ -169,15 +176,17 @@ impl FrameCapture {
                 return Rgba([0, 0, 0, 255]);
             }
             let p = PixelDifference::of(self, reference, i, &criteria);
+            let [colour, coverage, depth, owner] =
+                DIFFERENCE_COLOURS.map(|c| Rgba([c[0], c[1], c[2], 255]));
             if p.coverage {
-                Rgba([255, 220, 0, 255])
+                coverage
             } else if p.colour > criteria.tolerance {
                 let t = (p.colour / 64.0).clamp(0.25, 1.0);
-                Rgba([(255.0 * t) as u8, 30, 30, 255])
+                Rgba([(f32::from(colour[0]) * t) as u8, colour[1], colour[2], 255])
             } else if p.owner {
-                Rgba([230, 60, 230, 255])
+                owner
             } else if p.depth {
-                Rgba([60, 140, 255, 255])
+                depth
             } else {
                 let [r, g, b] = reference.pixels.color[i];
                 let y = (0.2126 * r + 0.7152 * g + 0.0722 * b).clamp(0.0, 1.0);

@@ -15,7 +15,7 @@ mod inspect;
 mod pixels;
 mod watch;
 
-pub use difference::{Criteria, Difference};
+pub use difference::{Criteria, DIFFERENCE_COLOURS, Difference};
 pub use explain::*;
 pub use images::OUTLINE;
 pub use inspect::*;

@@ -124,9 +124,12 @@ impl Pyramid {
             .iter()
             .map(|l| Vec2::new(l.width as f32, l.height as f32))
             .collect();
+        let font = picture_font(painter.ctx(), 13.0);
+        let label_h = painter.ctx().fonts_mut(|f| f.row_height(&font)) + 2.0;
         let rects = level_rects(
             &sizes,
             Rect::from_min_max(Pos2::new(rect.left(), below), rect.max),
+            label_h,
         );
         for (k, (level, r)) in texture.levels.iter().zip(rects).enumerate() {
             let key = (texture.name.clone(), k);
@@ -162,23 +165,7 @@ impl Pyramid {
                 ),
                 egui::StrokeKind::Outside,
             );
-            // A level too narrow for its size is labelled by its number only.
-            let label = if r.width() >= 70.0 {
-                format!("{k}: {}×{}", level.width, level.height)
-            } else {
-                k.to_string()
-            };
-            painter.text(
-                Pos2::new(r.left(), r.top() - LABEL_H),
-                Align2::LEFT_TOP,
-                label,
-                picture_font(painter.ctx(), 13.0),
-                if chosen {
-                    Color32::YELLOW
-                } else {
-                    Color32::from_gray(220)
-                },
-            );
+            level_label(&painter, (r, label_h), (k, level), &font, chosen);
             if let (Some(t), Some((l, _))) = (read, level_read)
                 && l == k
             {
@@ -186,6 +173,38 @@ impl Pyramid {
             }
         }
     }
+}
+
+/// Level `k`'s label above its picture `r` (`label_h` high): its number and size, or where
+/// that would run into the next level's label, its number only; yellow for a level read.
+fn level_label(
+    painter: &egui::Painter,
+    (r, label_h): (Rect, f32),
+    (k, level): (usize, &pipeline::texture::Level),
+    font: &egui::FontId,
+    chosen: bool,
+) {
+    let full = format!("{k}: {}×{}", level.width, level.height);
+    let width = painter
+        .layout_no_wrap(full.clone(), font.clone(), Color32::WHITE)
+        .size()
+        .x;
+    let label = if width <= r.width() + LEVEL_GAP - 4.0 {
+        full
+    } else {
+        k.to_string()
+    };
+    painter.text(
+        Pos2::new(r.left(), r.top() - label_h),
+        Align2::LEFT_TOP,
+        label,
+        font.clone(),
+        if chosen {
+            Color32::YELLOW
+        } else {
+            Color32::from_gray(220)
+        },
+    );
 }
 
 /// The inspected pixel's footprint on mip level `k` shown in `r` (`width` texels wide): its
@@ -217,16 +236,16 @@ fn draw_footprint(
     }
 }
 
-/// The height of a level's label.
-const LABEL_H: f32 = 18.0;
+/// The gap between a level and the next in a row.
+const LEVEL_GAP: f32 = 16.0;
 
 /// Where each mip level goes in `rect`, in the arrangement that shows level 0 largest: in a row
 /// (level 0, then each smaller level right of the one before), or, in a tall panel, level 0 on
-/// top and the smaller levels in a row under it. Every level has its label's height above it
-/// and a gap before the next; the levels that would be under 2 points are left out.
-fn level_rects(sizes: &[Vec2], rect: Rect) -> Vec<Rect> {
+/// top and the smaller levels in a row under it. Every level has its label's height `label_h`
+/// above it and a gap before the next; the levels that would be under 2 points are left out.
+fn level_rects(sizes: &[Vec2], rect: Rect, label_h: f32) -> Vec<Rect> {
     let pad = 8.0;
-    let gap = 16.0;
+    let gap = LEVEL_GAP;
     let Some(&first) = sizes.first() else {
         return Vec::new();
     };
@@ -235,11 +254,11 @@ fn level_rects(sizes: &[Vec2], rect: Rect) -> Vec<Rect> {
     let gaps = gap * (sizes.len() - 1) as f32;
     let (w, h) = (rect.width() - 2.0 * pad, rect.height() - 2.0 * pad);
     // In a row: (first.x + rest_w)·s + gaps ≤ w, first.y·s + label ≤ h.
-    let row = ((w - gaps) / (first.x + rest_w)).min((h - LABEL_H) / first.y);
+    let row = ((w - gaps) / (first.x + rest_w)).min((h - label_h) / first.y);
     // Stacked: level 0 over the row of the rest.
     let stacked = (w / first.x)
         .min((w - gaps + gap) / rest_w.max(1.0))
-        .min((h - 2.0 * LABEL_H - pad) / (first.y + rest_h));
+        .min((h - 2.0 * label_h - pad) / (first.y + rest_h));
     let scale = row.max(stacked).max(0.0);
     let origin = rect.left_top() + Vec2::splat(pad);
     let mut at = origin;
@@ -249,7 +268,7 @@ fn level_rects(sizes: &[Vec2], rect: Rect) -> Vec<Rect> {
         if size.x < 2.0 || size.y < 2.0 {
             break;
         }
-        let r = Rect::from_min_size(at + Vec2::new(0.0, LABEL_H), size);
+        let r = Rect::from_min_size(at + Vec2::new(0.0, label_h), size);
         out.push(r);
         at = if k == 0 && stacked > row {
             Pos2::new(origin.x, r.bottom() + pad)
@@ -270,10 +289,13 @@ mod tests {
             .collect()
     }
 
+    /// A label's height in normal type (13 points' rows and 2).
+    const LABEL_H: f32 = 18.0;
+
     /// Every level shown lies inside the panel with its label, none overlaps another.
-    fn laid_out(rects: &[Rect], panel: Rect) {
+    fn laid_out(rects: &[Rect], panel: Rect, label_h: f32) {
         for (i, r) in rects.iter().enumerate() {
-            let labelled = Rect::from_min_max(r.min - Vec2::new(0.0, LABEL_H), r.max);
+            let labelled = Rect::from_min_max(r.min - Vec2::new(0.0, label_h), r.max);
             assert!(
                 panel.contains_rect(labelled),
                 "level {i} {labelled:?} outside {panel:?}"
@@ -288,8 +310,8 @@ mod tests {
     fn a_wide_panel_shows_the_levels_in_a_row() {
         // 1366×768 with the pyramid under the image: a band about 1000 × 180.
         let panel = Rect::from_min_size(Pos2::ZERO, Vec2::new(1000.0, 180.0));
-        let rects = level_rects(&pyramid(9), panel);
-        laid_out(&rects, panel);
+        let rects = level_rects(&pyramid(9), panel, LABEL_H);
+        laid_out(&rects, panel, LABEL_H);
         assert!(rects.len() >= 7, "only {} levels", rects.len());
         assert!(rects.windows(2).all(|w| w[1].left() > w[0].right()));
     }
@@ -298,11 +320,20 @@ mod tests {
     fn a_tall_panel_puts_the_smaller_levels_under_level_zero() {
         // The column beside a wide image: 300 × 600.
         let panel = Rect::from_min_size(Pos2::ZERO, Vec2::new(300.0, 600.0));
-        let rects = level_rects(&pyramid(9), panel);
-        laid_out(&rects, panel);
+        let rects = level_rects(&pyramid(9), panel, LABEL_H);
+        laid_out(&rects, panel, LABEL_H);
         assert!(rects.len() >= 6, "only {} levels", rects.len());
         assert!(rects[1].top() > rects[0].bottom());
         // Level 0 over half the panel's width (the row under it, with its gaps, limits it).
         assert!(rects[0].width() > 150.0);
+    }
+
+    /// Classroom type's taller labels (24-point type, rows of 30) keep clear of the levels.
+    #[test]
+    fn classroom_labels_keep_their_room() {
+        let panel = Rect::from_min_size(Pos2::ZERO, Vec2::new(1000.0, 180.0));
+        let rects = level_rects(&pyramid(9), panel, 30.0);
+        laid_out(&rects, panel, 30.0);
+        assert!(rects.len() >= 6, "only {} levels", rects.len());
     }
 }

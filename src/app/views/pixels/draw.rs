@@ -159,14 +159,14 @@ pub(super) fn draw_light_vectors(
     view: &ImageViewport,
     capture: &FrameCapture,
     sel: &Selection,
-    lang: Lang,
-) {
+    (subject, lang): (&[Rect], Lang),
+) -> Option<Rect> {
     let arrows = sel
         .pixel
         .map(|(x, y)| capture.lighting_arrows(x, y))
         .unwrap_or_default();
     if arrows.is_empty() {
-        return;
+        return None;
     }
     for arrow in arrows {
         let [r, g, b, _] = arrow.color;
@@ -187,16 +187,38 @@ pub(super) fn draw_light_vectors(
             color,
         );
     }
-    // The legend, typeset, on a dark box at the top-left.
-    let back = painter.add(egui::Shape::Noop);
+    // The legend, typeset, on a dark box in a corner clear of the subject.
     let style = crate::app::views::typeset::Style {
-        size: 15.0,
+        size: picture_font(painter.ctx(), 15.0).size,
         color: Color32::WHITE,
         accent: Color32::from_rgb(255, 214, 120),
     };
-    let mut at = view.rect.left_top() + Vec2::new(10.0, 10.0);
-    let mut area = Rect::NOTHING;
-    for line in crate::vocabulary::lighting_legend(lang) {
+    // Its two lines, or each part between the " · " on a line of its own (a narrower, taller
+    // box), whichever covers the least of the subject (the two lines where both are clear).
+    let wide: Vec<&str> = crate::vocabulary::lighting_legend(lang).to_vec();
+    let narrow: Vec<&str> = wide.iter().flat_map(|l| l.split(" · ")).collect();
+    let boxed = |lines: &[&str]| {
+        let sizes: Vec<Vec2> = lines
+            .iter()
+            .map(|line| crate::app::views::typeset::formula_size(painter, line, &style))
+            .collect();
+        let size = Vec2::new(
+            sizes.iter().map(|s| s.x).fold(0.0, f32::max),
+            sizes.iter().map(|s| s.y + 4.0).sum::<f32>() - 4.0,
+        );
+        crate::app::views::clear_corner(size + Vec2::splat(10.0), view.rect, subject)
+    };
+    let covered = |r: &Rect| crate::app::views::covered_area(*r, subject);
+    let (lines, legend) = [wide, narrow]
+        .into_iter()
+        .map(|lines| {
+            let legend = boxed(&lines);
+            (lines, legend)
+        })
+        .min_by(|a, b| covered(&a.1).total_cmp(&covered(&b.1)))?;
+    painter.rect_filled(legend, 4.0, Color32::from_black_alpha(180));
+    let mut at = legend.min + Vec2::splat(5.0);
+    for line in &lines {
         let r = crate::app::views::typeset::paint_formula(
             painter,
             at,
@@ -204,37 +226,63 @@ pub(super) fn draw_light_vectors(
             line,
             &style,
         );
-        area = area.union(r);
         at.y = r.bottom() + 4.0;
     }
-    painter.set(
-        back,
-        egui::Shape::rect_filled(area.expand(5.0), 4.0, Color32::from_black_alpha(180)),
-    );
+    Some(legend)
 }
 
-/// The colours of the mip levels, with their numbers.
-pub(super) fn draw_mip_legend(painter: &egui::Painter, rect: Rect, lang: Lang) {
-    let origin = rect.right_top() + Vec2::new(-230.0, 10.0);
-    painter.rect_filled(
-        Rect::from_min_size(origin, Vec2::new(220.0, 54.0)),
-        4.0,
-        Color32::from_black_alpha(190),
-    );
-    painter.text(
-        origin + Vec2::new(8.0, 6.0),
-        egui::Align2::LEFT_TOP,
-        lang.tr("mip level", "mipmap 层级"),
+/// The colours of the mip levels, with their numbers, on a dark box in a corner of `rect`
+/// clear of the `subject`, at the size of the words over pictures (larger in classroom mode):
+/// the eight swatches in a row, or where no corner has room for the row, in two rows of four
+/// or four of two (beside a picture that fills the view's width, in the bars at its sides),
+/// whichever covers the least of the subject.
+/// Returns the box.
+pub(super) fn draw_mip_legend(
+    painter: &egui::Painter,
+    rect: Rect,
+    (subject, lang): (&[Rect], Lang),
+) -> Rect {
+    let title = painter.layout_no_wrap(
+        lang.tr("mip level", "mipmap 层级").to_owned(),
         picture_font(painter.ctx(), 13.0),
+        Color32::WHITE,
+    );
+    let number = picture_font(painter.ctx(), 12.0);
+    // A swatch holds its number with a little room: the number's line height and a third.
+    let swatch = painter.ctx().fonts_mut(|f| f.row_height(&number)) * 4.0 / 3.0;
+    let (pad, gap) = (8.0, swatch * 0.18);
+    let size = |columns: u32| {
+        let rows = 8u32.div_ceil(columns) as f32;
+        let columns = columns as f32;
+        Vec2::new(
+            (pad * 2.0 + columns * swatch + (columns - 1.0) * gap).max(title.size().x + pad * 2.0),
+            pad + title.size().y + 4.0 + rows * swatch + (rows - 1.0) * gap + pad,
+        )
+    };
+    let covered = |r: &Rect| crate::app::views::covered_area(*r, subject);
+    let (columns, legend) = [8, 4, 2]
+        .into_iter()
+        .map(|c| (c, crate::app::views::clear_corner(size(c), rect, subject)))
+        .min_by(|a, b| covered(&a.1).total_cmp(&covered(&b.1)))
+        .unwrap_or((8, rect));
+    painter.rect_filled(legend, 4.0, Color32::from_black_alpha(190));
+    let top = legend.top() + pad + title.size().y + 4.0;
+    painter.galley(
+        legend.min + Vec2::new(pad, pad - 2.0),
+        title,
         Color32::WHITE,
     );
     for k in 0..8u32 {
         let c = pipeline::texture::level_color(k)
             .to_array()
             .map(|v| (v.clamp(0.0, 1.0) * 255.0) as u8);
-        let at = origin + Vec2::new(8.0 + k as f32 * 26.0, 26.0);
+        let (column, row) = ((k % columns) as f32, (k / columns) as f32);
+        let at = Pos2::new(
+            legend.left() + pad + column * (swatch + gap),
+            top + row * (swatch + gap),
+        );
         painter.rect_filled(
-            Rect::from_min_size(at, Vec2::new(22.0, 22.0)),
+            Rect::from_min_size(at, Vec2::splat(swatch)),
             2.0,
             Color32::from_rgb(c[0], c[1], c[2]),
         );
@@ -244,10 +292,10 @@ pub(super) fn draw_mip_legend(painter: &egui::Painter, rect: Rect, lang: Lang) {
             k.to_string()
         };
         painter.text(
-            at + Vec2::new(11.0, 11.0),
+            at + Vec2::splat(swatch / 2.0),
             egui::Align2::CENTER_CENTER,
             label,
-            picture_font(painter.ctx(), 12.0),
+            number.clone(),
             if k == 0 || k == 3 {
                 Color32::BLACK
             } else {
@@ -255,6 +303,7 @@ pub(super) fn draw_mip_legend(painter: &egui::Painter, rect: Rect, lang: Lang) {
             },
         );
     }
+    legend
 }
 
 /// The names of the objects a step compares, each above its object, on a dark box.

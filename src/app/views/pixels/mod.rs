@@ -46,6 +46,9 @@ pub struct PixelView {
     /// Where the step's subject in the image (the covered pixels, the inspected one) was
     /// drawn this frame, and the panel beside the image.
     pub subject: Vec<Rect>,
+    /// The boxes of the words drawn over the picture this frame (the lighting vectors' legend,
+    /// the mip levels' legend, the note on a term's gain): they must not cover the subject.
+    pub words: Vec<Rect>,
     /// Which raster triangles own a sample, per capture shown (overlays leave out the rest).
     visible: Option<(u64, Option<Vec<bool>>)>,
     /// Where each object's name goes, per capture shown.
@@ -70,6 +73,7 @@ impl Default for PixelView {
             record: None,
             picture: Vec::new(),
             subject: Vec::new(),
+            words: Vec::new(),
             visible: None,
             label_points: None,
             covered: None,
@@ -231,6 +235,40 @@ impl PixelView {
         (view != sel.depth_view).then_some(Command::View(ViewCommand::SetDepthView(view)))
     }
 
+    /// The words over the picture, each kept in [`Self::words`]: the lighting vectors' legend,
+    /// the mip levels' legend, why a buffer is not shown yet, and the note on a term's gain (at
+    /// the top, clear of the narration card in the bottom-left).
+    fn draw_words(
+        &mut self,
+        painter: &egui::Painter,
+        (rect, view): (Rect, &ImageViewport),
+        (session, capture): (&Session, &FrameCapture),
+        (gain, offered): (f32, bool),
+    ) {
+        let (sel, lang) = (&session.selection, session.lang);
+        if sel.buffer.is_lighting() || sel.buffer == BufferKind::Color {
+            self.words.extend(draw::draw_light_vectors(
+                painter,
+                view,
+                capture,
+                sel,
+                (&self.subject, lang),
+            ));
+        }
+        if sel.buffer == BufferKind::MipLevel {
+            let legend = draw::draw_mip_legend(painter, rect, (&self.subject, lang));
+            self.words.push(legend);
+        }
+        hover::status_message(painter, rect, capture, sel.buffer, offered, lang);
+        let top = (
+            rect.center_top() + egui::Vec2::new(0.0, 8.0),
+            egui::Align2::CENTER_TOP,
+        );
+        self.words.extend(crate::app::views::draw_gain_note(
+            painter, top, sel.buffer, gain, lang,
+        ));
+    }
+
     /// The image view itself.
     pub fn ui(&mut self, ui: &mut Ui, session: &Session, capture: &FrameCapture) -> Vec<Command> {
         let sel = &session.selection;
@@ -245,6 +283,7 @@ impl PixelView {
         let extra = extra.map(|e| crate::app::views::card_placement::right_of(e, card));
         let response = ui.allocate_rect(rect, Sense::click_and_drag());
         self.picture.clear();
+        self.words.clear();
         response.widget_info(|| {
             egui::WidgetInfo::labeled(egui::Role::Image, true, lang.tr("pixel view", "像素视图"))
         });
@@ -305,19 +344,7 @@ impl PixelView {
         {
             draw::draw_edge_test(&painter, &view, r, lang);
         }
-        if sel.buffer.is_lighting() || sel.buffer == BufferKind::Color {
-            draw::draw_light_vectors(&painter, &view, capture, sel, lang);
-        }
-        if sel.buffer == BufferKind::MipLevel {
-            draw::draw_mip_legend(&painter, rect, lang);
-        }
-        hover::status_message(&painter, rect, capture, sel.buffer, offered, lang);
-        // At the top, clear of the narration card in the bottom-left.
-        let top = (
-            rect.center_top() + egui::Vec2::new(0.0, 8.0),
-            egui::Align2::CENTER_TOP,
-        );
-        crate::app::views::draw_gain_note(&painter, top, sel.buffer, gain, lang);
+        self.draw_words(&painter, (rect, &view), (session, capture), (gain, offered));
         if let Some(below) = extra {
             self.picture.push(below);
             self.subject.push(below);
