@@ -71,7 +71,7 @@ pub fn slide(
     // picture, across the slide with the words under it, whichever leaves it the larger.
     let mut paragraphs = paragraphs(step.narration.get(lang));
     if let Some(task) = &extras.task {
-        paragraphs.push(text::marked_runs(task, ACCENT, ACCENT));
+        paragraphs.push((task.clone(), ACCENT));
     }
     let (w0, h0) = (picture.width() as f32, picture.height() as f32);
     let full = WIDTH as f32 - 2.0 * margin;
@@ -177,8 +177,12 @@ fn code_panel(
 /// narration may shrink from there).
 const STACKED_TYPE: f32 = 38.0;
 
-/// The narration's paragraphs as runs (formulas highlighted, list items bulleted).
-fn paragraphs(text: &str) -> Vec<Vec<Run>> {
+/// A paragraph of a slide: its text (`**formulas**` in the accent colour) and the colour of
+/// the rest.
+type Paragraph = (String, [u8; 3]);
+
+/// The narration's paragraphs (list items bulleted), in ink.
+fn paragraphs(text: &str) -> Vec<Paragraph> {
     text.split("\n\n")
         .map(str::trim)
         .filter(|p| !p.is_empty())
@@ -192,16 +196,16 @@ fn paragraphs(text: &str) -> Vec<Vec<Run>> {
                 })
                 .collect::<Vec<_>>()
                 .join(" ");
-            text::marked_runs(&joined, INK, ACCENT)
+            (joined, INK)
         })
         .collect()
 }
 
 /// The height `paragraphs` take in type of `size` wrapped to `width`.
-fn needed(paragraphs: &[Vec<Run>], size: f32, width: f32) -> f32 {
+fn needed(paragraphs: &[Paragraph], size: f32, width: f32) -> f32 {
     let lines: usize = paragraphs
         .iter()
-        .map(|p| text::wrap(p, size, width).len())
+        .map(|(p, color)| text::wrap_marked(p, (*color, ACCENT), size, width).len())
         .sum();
     lines as f32 * size * 1.45 + (paragraphs.len() as f32 - 1.0).max(0.0) * size * 0.6
 }
@@ -209,7 +213,7 @@ fn needed(paragraphs: &[Vec<Run>], size: f32, width: f32) -> f32 {
 /// The narration in the largest type from 46 down to 20 pixels that fits `height`.
 fn narration(
     img: &mut RgbaImage,
-    paragraphs: &[Vec<Run>],
+    paragraphs: &[Paragraph],
     (x, width): (f32, f32),
     top: f32,
     height: f32,
@@ -220,7 +224,7 @@ fn narration(
     }
     let layout: Vec<Vec<Vec<Run>>> = paragraphs
         .iter()
-        .map(|p| text::wrap(p, size, width))
+        .map(|(p, color)| text::wrap_marked(p, (*color, ACCENT), size, width))
         .collect();
     let mut y = top + size;
     for paragraph in layout {

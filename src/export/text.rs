@@ -1,11 +1,12 @@
 //! Text in exported pictures and slides: the embedded CJK font (Latin, Greek and the math
 //! symbols included), with egui's Hack for the few symbols it lacks (⁻ ⌊ ⌋), rasterized by
-//! `ab_glyph` straight onto an RGBA image. Lines wrap at spaces, and anywhere between two
-//! Chinese characters.
+//! `ab_glyph` straight onto an RGBA image. Lines break where the app's cards break them
+//! (`vocabulary::line_breaks`).
 
 use ab_glyph::{Font, FontRef, PxScale, ScaleFont};
 use image::{Rgba, RgbaImage};
 
+use crate::vocabulary::line_breaks;
 use crate::vocabulary::notation::{self, Node};
 
 /// The fonts, first the one tried first; parsed once. After the CJK font, the fallbacks the app's
@@ -189,62 +190,52 @@ fn run_width(text: &str, script: Script, size: f32) -> f32 {
     width(text, script.placed(size).0)
 }
 
-/// The runs cut into lines no wider than `max` at `size` (a word wider than a line stays whole).
+/// `text` typeset as runs ([`marked_runs`]: its `**formulas**` in `accent`, the rest in
+/// `color`) in lines no wider than `max` at `size` (a piece wider than a line stays whole),
+/// broken where the app's cards break them ([`line_breaks`]): after a space or beside a Chinese
+/// character, never before closing punctuation nor inside a formula's atom, an operator kept
+/// with its operands where the line has room.
 #[must_use]
-pub fn wrap(runs: &[Run], size: f32, max: f32) -> Vec<Vec<Run>> {
-    // Pieces that do not break inside: a word with the spaces after it, or one CJK character; a
-    // piece may hold several runs (a symbol and its subscript, a formula and its full stop).
-    let mut pieces: Vec<Vec<Run>> = Vec::new();
-    let mut cur: Vec<Run> = Vec::new();
-    // Chinese line-breaking rules: closing punctuation stays with what it follows, opening
-    // punctuation with what follows it.
-    use crate::vocabulary::notation::{closes, is_cjk, opens};
-    let mut after_space = false;
-    let mut after_opening = false;
-    for r in runs {
-        for c in r.text.chars() {
-            let cut =
-                !closes(c) && !after_opening && (is_cjk(c) || (after_space && !c.is_whitespace()));
-            if cut && !cur.is_empty() {
-                pieces.push(std::mem::take(&mut cur));
+pub fn wrap_marked(
+    text: &str,
+    (color, accent): ([u8; 3], [u8; 3]),
+    size: f32,
+    max: f32,
+) -> Vec<Vec<Run>> {
+    let pieces = line_breaks::pieces(&notation::parse_paragraph(text));
+    let runs: Vec<Vec<Run>> = pieces
+        .iter()
+        .map(|p| {
+            let mut out = Vec::new();
+            push_nodes(&mut out, p, color, accent, Script::Base);
+            out
+        })
+        .collect();
+    let widths: Vec<(f32, f32)> = runs
+        .iter()
+        .map(|piece| {
+            let advance = piece.iter().map(|r| run_width(&r.text, r.script, size));
+            let ink = piece.iter().enumerate().map(|(k, r)| {
+                let text = if k + 1 == piece.len() {
+                    r.text.trim_end()
+                } else {
+                    &r.text
+                };
+                run_width(text, r.script, size)
+            });
+            (advance.sum(), ink.sum())
+        })
+        .collect();
+    line_breaks::lines(&widths, &line_breaks::keeps_with_next(&pieces), max)
+        .into_iter()
+        .map(|line| {
+            let mut out = Vec::new();
+            for r in line.iter().flat_map(|&k| &runs[k]) {
+                push(&mut out, &r.text, r.color, r.script);
             }
-            push(&mut cur, c.encode_utf8(&mut [0; 4]), r.color, r.script);
-            after_space = c.is_whitespace() || is_cjk(c);
-            after_opening = opens(c);
-        }
-    }
-    if !cur.is_empty() {
-        pieces.push(cur);
-    }
-    let mut lines: Vec<Vec<Run>> = vec![Vec::new()];
-    let mut used = 0.0;
-    for piece in pieces {
-        let widths = |trim: bool| -> f32 {
-            piece
-                .iter()
-                .enumerate()
-                .map(|(k, r)| {
-                    let text = if trim && k + 1 == piece.len() {
-                        r.text.trim_end()
-                    } else {
-                        &r.text
-                    };
-                    run_width(text, r.script, size)
-                })
-                .sum()
-        };
-        let (w, trimmed) = (widths(false), widths(true));
-        if used + trimmed > max && !lines.last().is_some_and(Vec::is_empty) {
-            lines.push(Vec::new());
-            used = 0.0;
-        }
-        let line = lines.last_mut().expect("a line");
-        for r in &piece {
-            push(line, &r.text, r.color, r.script);
-        }
-        used += w;
-    }
-    lines
+            out
+        })
+        .collect()
 }
 
 /// `text` typeset as runs ([`notation::parse_paragraph`]): its `**formulas**` in `accent`, the
@@ -359,25 +350,28 @@ mod tests {
 
     #[test]
     fn lines_wrap_at_spaces_and_between_chinese_characters() {
-        let runs = marked_runs("one two three four five six", [0; 3], [0; 3]);
-        let lines = wrap(&runs, 20.0, width("one two three", 20.0) + 1.0);
+        let plain = ([0; 3], [0; 3]);
+        let lines = wrap_marked(
+            "one two three four five six",
+            plain,
+            20.0,
+            width("one two three", 20.0) + 1.0,
+        );
         let texts: Vec<String> = lines
             .iter()
             .map(|l| l.iter().map(|r| r.text.as_str()).collect::<String>())
             .collect();
         assert_eq!(texts[0].trim_end(), "one two three");
         assert_eq!(texts.len(), 2);
-        let zh = marked_runs("透视投影把视锥变成立方体", [0; 3], [0; 3]);
-        let lines = wrap(&zh, 20.0, width("透视投影", 20.0) + 1.0);
+        let four = width("透视投影", 20.0) + 1.0;
+        let lines = wrap_marked("透视投影把视锥变成立方体", plain, 20.0, four);
         assert_eq!(lines.len(), 3);
         // Chinese punctuation never begins a line: it goes with the character before it.
-        let zh = marked_runs("透视投影。视锥", [0; 3], [0; 3]);
-        let lines = wrap(&zh, 20.0, width("透视投影", 20.0) + 1.0);
+        let lines = wrap_marked("透视投影。视锥", plain, 20.0, four);
         let first: String = lines[0].iter().map(|r| r.text.as_str()).collect();
         assert_eq!(first, "透视投");
         // Nor does an opening bracket end one: it goes with the character after it.
-        let zh = marked_runs("透视投（影）", [0; 3], [0; 3]);
-        let lines = wrap(&zh, 20.0, width("透视投（", 20.0) + 1.0);
+        let lines = wrap_marked("透视投（影）", plain, 20.0, width("透视投（", 20.0) + 1.0);
         let texts: Vec<String> = lines
             .iter()
             .map(|l| l.iter().map(|r| r.text.as_str()).collect::<String>())
@@ -420,8 +414,12 @@ mod tests {
             "the subscript goes below the baseline"
         );
         // A line never breaks between a symbol, its subscript and the full stop after them.
-        let runs = marked_runs("then apply M_ortho.", ink, accent);
-        let lines = wrap(&runs, 20.0, width("then apply M", 20.0) + 1.0);
+        let lines = wrap_marked(
+            "then apply M_ortho.",
+            (ink, accent),
+            20.0,
+            width("then apply M", 20.0) + 1.0,
+        );
         let texts: Vec<String> = lines
             .iter()
             .map(|l| l.iter().map(|r| r.text.as_str()).collect::<String>())

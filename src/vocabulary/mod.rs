@@ -10,6 +10,7 @@ mod explain;
 mod formulas;
 pub mod glsl;
 mod lang;
+pub mod line_breaks;
 mod names;
 pub mod notation;
 mod numbers;
