@@ -115,6 +115,11 @@ pub fn from_scene(source: &str, file: &Path, step: &Step) -> Result<String, Stri
         doc.set_trailing(trailing);
     }
     doc.remove("steps");
+    // A lesson's `[comments]` translate its shaders' comments: with no shader left in the
+    // scene (a recorded step holds none), they belong to the old lesson.
+    if !scene_has_shaders(&doc) {
+        doc.remove("comments");
+    }
     let mut header = Table::new();
     header.insert("id", value(id.as_str()));
     let [[title_en, title_zh], [summary_en, summary_zh]] = super::PLACEHOLDER_LESSON;
@@ -138,6 +143,18 @@ pub fn from_scene(source: &str, file: &Path, step: &Step) -> Result<String, Stri
     doc.insert("steps", Item::ArrayOfTables(steps));
     // The old first comment's line gone, the file starts at its header.
     Ok(doc.to_string().trim_start().to_owned())
+}
+
+/// Whether the scene of `doc` runs shaders of its own: `shader` on the scene or an object.
+fn scene_has_shaders(doc: &toml_edit::DocumentMut) -> bool {
+    let Some(scene) = doc.get("scene").and_then(Item::as_table_like) else {
+        return false;
+    };
+    scene.contains_key("shader")
+        || scene
+            .get("objects")
+            .and_then(Item::as_array_of_tables)
+            .is_some_and(|objects| objects.iter().any(|o| o.contains_key("shader")))
 }
 
 /// `{ en = "…", zh = "…" }`.

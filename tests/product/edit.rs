@@ -274,6 +274,19 @@ fn a_new_lesson_starts_from_a_mesh_a_built_in_lesson_or_the_scene_on_screen() {
         !text.contains("\n\n\n"),
         "a comment's lines left blank:\n{text}"
     );
+    // Lesson 10's `[comments.zh]` translate its labs' shader comments: a new lesson from its
+    // scene, which runs no shader, leaves them behind.
+    let lights = library::LESSONS[10].1;
+    assert!(
+        lights.contains("[comments.zh]"),
+        "lesson 10 has shader comments"
+    );
+    let on_lights = start::from_scene(lights, &file, &step).expect("made");
+    check(&on_lights);
+    assert!(
+        !on_lights.contains("[comments"),
+        "lesson 10's shader comments kept:\n{on_lights}"
+    );
     // A scene file's comments are the scene's own, and stay.
     let robot = std::fs::read_to_string(crate::support::repo().join("assets/scenes/robot.toml"))
         .expect("the robot scene");
