@@ -86,13 +86,21 @@ impl Editor {
                     self.save(false);
                 }
             }
-            let state = if dirty {
-                RichText::new(lang.tr("● unsaved changes (kept in a recovery copy)", "● 有未保存的修改（已保存恢复副本）"))
-                    .color(ui.visuals().warn_fg_color)
+            // A word or two, as long as each other: the row keeps its height when the first
+            // change is typed (a longer note wrapped to a second line and moved everything
+            // under it, the box being typed in too, down a line).
+            if dirty {
+                ui.label(
+                    RichText::new(lang.tr("● unsaved", "● 未保存"))
+                        .color(ui.visuals().warn_fg_color),
+                )
+                .on_hover_text(lang.tr(
+                    "Unsaved changes, kept in a recovery copy beside the file until saved (Ctrl+S).",
+                    "有未保存的修改，保存（Ctrl+S）之前已在文件旁保存恢复副本。",
+                ));
             } else {
-                RichText::new(lang.tr("saved", "已保存")).weak()
-            };
-            ui.label(state);
+                ui.label(RichText::new(lang.tr("saved", "已保存")).weak());
+            }
         });
     }
 

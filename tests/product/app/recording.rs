@@ -519,3 +519,27 @@ fn a_lesson_made_from_a_moving_step_starts_where_the_step_starts() {
     );
     assert!(!text.contains("2.97"), "a passing value was kept:\n{text}");
 }
+
+/// The first change typed leaves every box where it was: the row of Undo, Redo and Save says
+/// "● unsaved" in a word (its longer note wrapped to a second line and moved the boxes under
+/// it down a line, so the next click landed a line off).
+#[test]
+fn typing_the_first_change_moves_no_box() {
+    let (_dir, file) = copy_of("17-hierarchy.toml");
+    let mut h = super::lesson_harness(Some(file));
+    h.run_steps(2);
+    h.key_press(egui::Key::R);
+    h.run_steps(3);
+    let boxes = |h: &Harness<'_, PipelensApp>| -> Vec<egui::Rect> {
+        h.get_all_by_role(Role::TextInput)
+            .chain(h.get_all_by_role(Role::MultilineTextInput))
+            .map(|b| b.rect())
+            .collect()
+    };
+    let before = boxes(&h);
+    assert!(before.len() >= 4, "the editor's boxes: {before:?}");
+    type_into(&mut h, 0, " arm");
+    h.run_steps(2);
+    assert!(h.query_by_label_contains("● unsaved").is_some());
+    assert_eq!(boxes(&h), before, "the boxes moved");
+}
