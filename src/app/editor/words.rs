@@ -166,13 +166,16 @@ fn preview(ui: &mut egui::Ui, text: &Text) {
     });
 }
 
-/// "Still needs: English" when a language has no words.
+/// "Still needs: English" when a language has no words, else "Worded: English, 中文": a line either
+/// way, so that the buttons under it stay where they were when the last word is typed.
 pub(super) fn missing_note(ui: &mut egui::Ui, lang: Lang, text: &Text) {
     let missing: Vec<&str> = crate::lesson::record::unworded(text)
         .into_iter()
         .map(|l| if l == Lang::En { "English" } else { "中文" })
         .collect();
-    if !missing.is_empty() {
+    if missing.is_empty() {
+        ui.label(RichText::new(lang.tr("Worded: English, 中文", "已写好：English、中文")).weak());
+    } else {
         ui.label(
             RichText::new(format!(
                 "{} {}",

@@ -155,7 +155,7 @@ fn a_lesson_is_recorded_arranged_and_saved_in_the_editor() {
     // Not saved yet: the file is as it was, the edits in the recovery copy beside it.
     assert_eq!(std::fs::read_to_string(&file).expect("reads"), before);
     assert!(recovery.exists(), "a recovery copy keeps the unsaved edits");
-    assert!(h.query_by_label_contains("● unsaved changes").is_some());
+    assert!(h.query_by_label_contains("● unsaved").is_some());
     // Moved down one, and a question typed on the step.
     h.get_by_label("▼ Later").click_accesskit();
     h.run_steps(3);
@@ -322,7 +322,7 @@ fn a_move_that_breaks_the_lesson_is_refused_with_the_reason() {
     );
     assert_eq!(titles(&h), before);
     assert_eq!(h.state().session.lesson.as_ref().map(|p| p.step), Some(3));
-    assert!(h.query_by_label_contains("● unsaved changes").is_none());
+    assert!(h.query_by_label_contains("● unsaved").is_none());
 }
 
 /// A watch on screen is recorded where its step stands (it reads a line of the shaders in
@@ -542,4 +542,17 @@ fn typing_the_first_change_moves_no_box() {
     h.run_steps(2);
     assert!(h.query_by_label_contains("● unsaved").is_some());
     assert_eq!(boxes(&h), before, "the boxes moved");
+    // The new step's title and narration worded in one language, then the other: the note
+    // under them says what is still missing, then that both are there, and the Add button
+    // stays where it was.
+    let n = h.get_all_by_role(Role::MultilineTextInput).count();
+    let add = |h: &Harness<'_, PipelensApp>| h.get_by_label_contains("Add as step").rect();
+    type_into(&mut h, n - 4, "Next");
+    type_into(&mut h, n - 2, "What comes next.");
+    let waiting = add(&h);
+    assert!(h.query_by_label_contains("Still needs: 中文").is_some());
+    type_into(&mut h, n - 3, "下一步");
+    type_into(&mut h, n - 1, "接下来是什么。");
+    assert!(h.query_all_by_label_contains("Still needs").next().is_none());
+    assert_eq!(add(&h), waiting, "the Add button moved");
 }
