@@ -143,14 +143,9 @@ mod tests {
     fn a_low_column_puts_the_pictures_side_by_side_under_their_captions() {
         let rect = Rect::from_min_size(pos2(600.0, 60.0), vec2(700.0, 370.0));
         let pair = lab_pair(rect, 1.6, &caption);
-        assert_eq!(
-            pair[0].space,
-            Rect::from_min_size(pos2(600.0, 60.0), vec2(346.0, 370.0))
-        );
-        assert_eq!(
-            pair[1].space,
-            Rect::from_min_size(pos2(954.0, 60.0), vec2(346.0, 370.0))
-        );
+        let half = vec2(346.0, 370.0);
+        let spaces = [pos2(600.0, 60.0), pos2(954.0, 60.0)].map(|at| Rect::from_min_size(at, half));
+        assert_eq!(pair.map(|p| p.space), spaces);
         let (w, h) = (346.0f32, 346.0 / 1.6);
         assert!((pair[0].area - w * h).abs() < 0.5, "{}", pair[0].area);
     }
@@ -161,14 +156,9 @@ mod tests {
     fn a_tall_column_stacks_the_pictures() {
         let rect = Rect::from_min_size(pos2(0.0, 0.0), vec2(400.0, 830.0));
         let pair = lab_pair(rect, 1.6, &caption);
-        assert_eq!(
-            pair[0].space,
-            Rect::from_min_size(pos2(0.0, 0.0), vec2(400.0, 411.0))
-        );
-        assert_eq!(
-            pair[1].space,
-            Rect::from_min_size(pos2(0.0, 419.0), vec2(400.0, 411.0))
-        );
+        let half = vec2(400.0, 411.0);
+        let spaces = [pos2(0.0, 0.0), pos2(0.0, 419.0)].map(|at| Rect::from_min_size(at, half));
+        assert_eq!(pair.map(|p| p.space), spaces);
         assert!(
             (pair[1].area - 400.0 * 250.0).abs() < 0.5,
             "{}",

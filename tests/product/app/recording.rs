@@ -553,6 +553,10 @@ fn typing_the_first_change_moves_no_box() {
     assert!(h.query_by_label_contains("Still needs: 中文").is_some());
     type_into(&mut h, n - 3, "下一步");
     type_into(&mut h, n - 1, "接下来是什么。");
-    assert!(h.query_all_by_label_contains("Still needs").next().is_none());
+    assert!(
+        h.query_all_by_label_contains("Still needs")
+            .next()
+            .is_none()
+    );
     assert_eq!(add(&h), waiting, "the Add button moved");
 }
