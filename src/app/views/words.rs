@@ -99,15 +99,15 @@ pub fn boxed_galley(
     rect
 }
 
-/// Where a box of `size` (a legend) goes in `view`: the first of its corners, 10 points in,
-/// in the order top-left, top-right, bottom-left, bottom-right, whose box covers nothing in
-/// `avoid` (the subject on screen), then the same corners 4 points in; else the corner whose
-/// box covers the least of it.
+/// Where a box (a legend) goes in `view`, and which of its shapes `sizes` (in the order they
+/// are preferred: a wide one, then narrower ones) it takes: each shape in the corners of
+/// `view` 10 points in, then 4 points in — top-left, top-right, bottom-left, bottom-right — the
+/// first place that covers nothing in `avoid` (the subject on screen), else the one that
+/// covers the least of it (the first of those). Returns the shape's index and its box.
 #[must_use]
-pub fn clear_corner(size: egui::Vec2, view: Rect, avoid: &[Rect]) -> Rect {
-    let corners: Vec<Rect> = [10.0, 4.0]
-        .into_iter()
-        .flat_map(|inset| {
+pub fn clear_corner(sizes: &[egui::Vec2], view: Rect, avoid: &[Rect]) -> (usize, Rect) {
+    let places = sizes.iter().enumerate().flat_map(|(k, size)| {
+        [10.0, 4.0].into_iter().flat_map(move |inset| {
             let inner = view.shrink(inset);
             [
                 egui::Align2::LEFT_TOP,
@@ -115,25 +115,19 @@ pub fn clear_corner(size: egui::Vec2, view: Rect, avoid: &[Rect]) -> Rect {
                 egui::Align2::LEFT_BOTTOM,
                 egui::Align2::RIGHT_BOTTOM,
             ]
-            .map(|a| a.align_size_within_rect(size, inner))
+            .map(|a| (k, a.align_size_within_rect(*size, inner)))
         })
-        .collect();
-    let covered = |r: &Rect| covered_area(*r, avoid);
-    corners
-        .iter()
-        .find(|r| covered(r) <= 0.0)
-        .or_else(|| {
-            corners
-                .iter()
-                .min_by(|a, b| covered(a).total_cmp(&covered(b)))
-        })
-        .copied()
-        .unwrap_or(view)
+    });
+    // The covered area is never negative: the first minimum is the first clear place, if any.
+    places
+        .map(|(k, r)| (k, r, covered_area(r, avoid)))
+        .min_by(|a, b| a.2.total_cmp(&b.2))
+        .map_or((0, view), |(k, r, _)| (k, r))
 }
 
 /// How much of the rects in `avoid` the rect `r` covers (their overlaps' areas summed).
 #[must_use]
-pub fn covered_area(r: Rect, avoid: &[Rect]) -> f32 {
+fn covered_area(r: Rect, avoid: &[Rect]) -> f32 {
     avoid
         .iter()
         .filter(|a| r.intersects(**a))

@@ -197,25 +197,19 @@ pub(super) fn draw_light_vectors(
     // box), whichever covers the least of the subject (the two lines where both are clear).
     let wide: Vec<&str> = crate::vocabulary::lighting_legend(lang).to_vec();
     let narrow: Vec<&str> = wide.iter().flat_map(|l| l.split(" · ")).collect();
-    let boxed = |lines: &[&str]| {
+    let size = |lines: &[&str]| {
         let sizes: Vec<Vec2> = lines
             .iter()
             .map(|line| crate::app::views::typeset::formula_size(painter, line, &style))
             .collect();
-        let size = Vec2::new(
+        Vec2::new(
             sizes.iter().map(|s| s.x).fold(0.0, f32::max),
             sizes.iter().map(|s| s.y + 4.0).sum::<f32>() - 4.0,
-        );
-        crate::app::views::clear_corner(size + Vec2::splat(10.0), view.rect, subject)
+        ) + Vec2::splat(10.0)
     };
-    let covered = |r: &Rect| crate::app::views::covered_area(*r, subject);
-    let (lines, legend) = [wide, narrow]
-        .into_iter()
-        .map(|lines| {
-            let legend = boxed(&lines);
-            (lines, legend)
-        })
-        .min_by(|a, b| covered(&a.1).total_cmp(&covered(&b.1)))?;
+    let (k, legend) =
+        crate::app::views::clear_corner(&[size(&wide), size(&narrow)], view.rect, subject);
+    let lines = if k == 0 { wide } else { narrow };
     painter.rect_filled(legend, 4.0, Color32::from_black_alpha(180));
     let mut at = legend.min + Vec2::splat(5.0);
     for line in &lines {
@@ -259,12 +253,9 @@ pub(super) fn draw_mip_legend(
             pad + title.size().y + 4.0 + rows * swatch + (rows - 1.0) * gap + pad,
         )
     };
-    let covered = |r: &Rect| crate::app::views::covered_area(*r, subject);
-    let (columns, legend) = [8, 4, 2]
-        .into_iter()
-        .map(|c| (c, crate::app::views::clear_corner(size(c), rect, subject)))
-        .min_by(|a, b| covered(&a.1).total_cmp(&covered(&b.1)))
-        .unwrap_or((8, rect));
+    let shapes = [8, 4, 2];
+    let (k, legend) = crate::app::views::clear_corner(&shapes.map(size), rect, subject);
+    let columns = shapes[k];
     painter.rect_filled(legend, 4.0, Color32::from_black_alpha(190));
     let top = legend.top() + pad + title.size().y + 4.0;
     painter.galley(
