@@ -44,14 +44,20 @@ impl Orbit {
     }
 }
 
+/// The direction an observer looks from unless a step names its own (`orbit = [yaw, pitch]`):
+/// 60° round from the viewing camera's usual +z side and 30° above the horizon, where a
+/// frustum looking down −z shows its length and its four sides at once.
+pub const DEFAULT_DIRECTION: [f32; 2] = [60.0, 30.0];
+
 /// The orbit that frames the whole scene with the viewing camera ([`orbit_for`] without a
-/// focus, for the lesson image's shape).
+/// focus, from [`DEFAULT_DIRECTION`], for the lesson image's shape).
 pub fn default_orbit(spec: &SceneSpec) -> Orbit {
-    orbit_for(spec, &[], None)
+    orbit_for(spec, &[], None, None)
 }
 
 /// The orbit a step's observer starts from, for a picture of `aspect` (width/height; the
-/// lesson image's when `None`), from 60° round and 30° up. It frames a box: with a `focus`,
+/// lesson image's when `None`), from `direction` = `[yaw, pitch]` in degrees (the step's
+/// `orbit`; [`DEFAULT_DIRECTION`] when `None`). It frames a box: with a `focus`,
 /// the world-space box of the objects it names ([`crate::spaces::named_in`]) — the viewing
 /// camera and its frustum are then context around the subject; without one (or when it names
 /// nothing drawn), every drawn object's box, the lights with a place and the viewing camera
@@ -59,7 +65,12 @@ pub fn default_orbit(spec: &SceneSpec) -> Orbit {
 /// 25's cube was 0.7 % of the window, framed from twice the eye's distance). The orbit looks
 /// at the middle of what it frames, from the distance where every point lies inside the
 /// middle 85 % of the picture ([`fitting_distance`]).
-pub fn orbit_for(spec: &SceneSpec, focus: &[String], aspect: Option<f32>) -> Orbit {
+pub fn orbit_for(
+    spec: &SceneSpec,
+    focus: &[String],
+    direction: Option<[f32; 2]>,
+    aspect: Option<f32>,
+) -> Orbit {
     let (objects, _) = spec.scene.drawn_objects();
     let corners = |named: &dyn Fn(&str) -> bool| -> Vec<Vec3> {
         objects
@@ -115,9 +126,10 @@ pub fn orbit_for(spec: &SceneSpec, focus: &[String], aspect: Option<f32>) -> Orb
     let aspect = aspect
         .filter(|a| a.is_finite() && *a > 0.0)
         .unwrap_or(spec.settings.width as f32 / spec.settings.height.max(1) as f32);
+    let [yaw, pitch] = direction.unwrap_or(DEFAULT_DIRECTION);
     let mut orbit = Orbit {
-        yaw: 60.0,
-        pitch: 30.0,
+        yaw,
+        pitch,
         centre,
         distance: 1.0,
     };
@@ -418,9 +430,10 @@ pub fn observer_image(
     spec: &SceneSpec,
     main: &FrameCapture,
     focus: &[String],
+    direction: Option<[f32; 2]>,
 ) -> Option<image::RgbaImage> {
     use pipeline::overlay::Shape;
-    let orbit = orbit_for(spec, focus, None);
+    let orbit = orbit_for(spec, focus, direction, None);
     let outside = render_observer(spec, orbit.camera(), None, None)?;
     let (marks, _) = viewing_camera(main, &Parts::default(), scene_extent(spec), Lang::En);
     let mut shapes: Vec<Shape> = marks

@@ -1,6 +1,6 @@
 //! A step recorded from what is on screen ("Add step", issue 36): the stage, the buffer, the
 //! layout and comparison, the overlays, the inspected pixel and selected vertex, the framed
-//! objects, the profile line, the depth ramp, and — as `set` entries — every parameter that
+//! objects, the observer's direction, the profile line, the depth ramp, and — as `set` entries — every parameter that
 //! differs from the scene the lesson's current step leaves (`set` entries are kept by the steps
 //! after theirs). Its title names the stage in both languages until the teacher words it; it has
 //! no narration yet. `lesson::record::append_step` writes it into the lesson file.
@@ -57,6 +57,7 @@ pub fn recorded_step(session: &Session) -> Option<Step> {
         // The profile plot is drawn under compared images only.
         profile: sel.profile.filter(|_| sel.comparison.is_some()),
         focus: sel.focus.clone(),
+        orbit: sel.show_observer.then(|| direction(session)).flatten(),
         depth_range: sel.depth_view.range,
         watch: sel.watch.clone(),
         // Authored, not on screen: "Update step" keeps the file's own.
@@ -68,4 +69,16 @@ pub fn recorded_step(session: &Session) -> Option<Step> {
         exercise: None,
         answer: None,
     })
+}
+
+/// The direction the teacher turned the observer to, `[yaw, pitch]` to a tenth of a degree;
+/// `None` where it is the one every observer starts from
+/// ([`crate::observer::DEFAULT_DIRECTION`]), which a step need not name.
+fn direction(session: &Session) -> Option<[f32; 2]> {
+    let tenth = |x: f32| (x * 10.0).round() / 10.0;
+    // A drag turns the yaw without bound: the same direction, written in (−180°, 180°].
+    let yaw = tenth(session.orbit.yaw).rem_euclid(360.0);
+    let yaw = if yaw > 180.0 { yaw - 360.0 } else { yaw };
+    let now = [yaw, tenth(session.orbit.pitch)];
+    (now != crate::observer::DEFAULT_DIRECTION).then_some(now)
 }

@@ -58,7 +58,7 @@ pub fn step_picture(
         let z = zoom_for(big.settings.width);
         big.settings.width *= z;
         big.settings.height *= z;
-        crate::observer::observer_image(&big, r.capture, focus)
+        crate::observer::observer_image(&big, r.capture, focus, step.orbit)
     };
     if let Some(space) = stage.space() {
         let normals = step

@@ -433,6 +433,9 @@ pub struct RawStep {
     pub profile: Option<Spanned<[f64; 4]>>,
     /// The objects or figures the geometry views frame.
     pub focus: Option<Vec<Spanned<String>>>,
+    /// The observer's direction `[yaw, pitch]` in degrees: round the vertical axis from +z
+    /// toward +x, and above the horizon.
+    pub orbit: Option<Spanned<[f64; 2]>>,
     /// The depth buffer's grey ramp: black at the first window depth, white at the second.
     pub depth_range: Option<Spanned<[f64; 2]>>,
     /// The debugger's variable picture: a fragment-shader expression after a line,

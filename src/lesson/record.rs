@@ -138,13 +138,14 @@ pub fn step_table(step: &Step) -> Result<Table, String> {
 
 /// The keys of a step that say what is on screen — everything "Update step" rewrites from the
 /// screen; the words, the shaders, an exercise and a typed answer are not among them.
-pub const VIEW_KEYS: [&str; 13] = [
+pub const VIEW_KEYS: [&str; 14] = [
     "stage",
     "layout",
     "compare",
     "buffer",
     "overlays",
     "focus",
+    "orbit",
     "pixel",
     "vertex",
     "profile",
@@ -187,6 +188,9 @@ pub fn view_items(step: &Step) -> Vec<(&'static str, Item)> {
             "focus",
             value(focus.iter().map(String::as_str).collect::<Array>()),
         ));
+    }
+    if let Some(o) = step.orbit {
+        items.push(("orbit", value(o.map(number).into_iter().collect::<Array>())));
     }
     if let Some((x, y)) = step.pixel {
         items.push((

@@ -97,6 +97,10 @@ pub struct Step {
     pub profile: Option<[f32; 4]>,
     /// The objects and figures the geometry views frame (`None`: every object).
     pub focus: Option<Vec<String>>,
+    /// The direction the observer looks from, `[yaw, pitch]` in degrees (`orbit = [25, 20]`;
+    /// `None`: 60° round and 30° up, [`crate::observer::DEFAULT_DIRECTION`]). Its distance is
+    /// always the one that frames the step's subject.
+    pub orbit: Option<[f32; 2]>,
     /// The depth buffer's grey ramp `[black, white]` in window depth (`None`: the nearest and
     /// farthest depth present).
     pub depth_range: Option<[f32; 2]>,

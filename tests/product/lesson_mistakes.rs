@@ -21,6 +21,12 @@ pub(crate) const MISTAKES: &[(&str, &str, &str)] = &[
         "`stage` must be one of",
     ),
     ("layout = \"compare\"", "\"compare\"", "needs `compare"),
+    // The observer cannot look straight down: its camera's up is the vertical axis.
+    (
+        "orbit = [30, 90]",
+        "[30, 90]",
+        "−90 < pitch < 90, got [30, 90]",
+    ),
     (
         "buffer = \"colour\"",
         "\"colour\"",

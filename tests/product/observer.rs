@@ -102,14 +102,14 @@ fn the_observer_frames_the_steps_subject() {
     // In a square panel (the app's split) and a wide one (a slide), taking the lens's
     // angle on the narrower side into account.
     for aspect in [1.0, 2.0] {
-        let framed = arm_rows(orbit_for(&spec, &focus, Some(aspect)), aspect);
+        let framed = arm_rows(orbit_for(&spec, &focus, None, Some(aspect)), aspect);
         assert!(
             framed >= 0.5,
             "aspect {aspect}: the arm spans {framed} of the height"
         );
     }
     // A step without a focus keeps the whole scene.
-    assert_eq!(orbit_for(&spec, &[], None), default_orbit(&spec));
+    assert_eq!(orbit_for(&spec, &[], None, None), default_orbit(&spec));
 }
 
 /// Lesson 25's projection step (issue: the observer's cube was 0.7 % of the window): without a
@@ -177,7 +177,7 @@ fn the_observer_frames_the_scene_and_its_camera_tightly() {
         centre: glam::Vec3::ZERO,
     };
     let (before, _, _) = covered(&spec, old, aspect);
-    let orbit = orbit_for(&spec, &[], Some(aspect));
+    let orbit = orbit_for(&spec, &[], None, Some(aspect));
     let (after, _, obs) = covered(&spec, orbit, aspect);
     assert!(
         after >= 2.0 * before,
@@ -199,7 +199,7 @@ fn the_observer_frames_the_scene_and_its_camera_tightly() {
             continue;
         }
         for aspect in [1.0, 2.0] {
-            let (_, span, _) = covered(&spec, orbit_for(&spec, &[], Some(aspect)), aspect);
+            let (_, span, _) = covered(&spec, orbit_for(&spec, &[], None, Some(aspect)), aspect);
             assert!(
                 span >= 0.6,
                 "{}: the scene spans {span} of the observer at aspect {aspect}",

@@ -2,7 +2,7 @@
 //! parameter reads back the value `set` gives it, and the parameters that differ between two
 //! states of a scene are the `set` entries that lead from one to the other.
 
-use pipelens::app::command::{LessonCommand, SceneCommand, SelectionCommand};
+use pipelens::app::command::{LessonCommand, SceneCommand, SelectionCommand, ViewCommand};
 use pipelens::lesson::param::{self, Value};
 
 fn close(a: &Value, b: &Value) -> bool {
@@ -170,8 +170,8 @@ fn a_step_appended_to_a_lesson_reads_back_as_the_same_step() {
             );
             assert_eq!(last.overlays, step.overlays, "{label}");
             assert_eq!(
-                (&last.focus, last.pixel, last.vertex),
-                (&step.focus, step.pixel, step.vertex),
+                (&last.focus, last.orbit, last.pixel, last.vertex),
+                (&step.focus, step.orbit, step.pixel, step.vertex),
                 "{label}"
             );
             assert_eq!(
@@ -199,8 +199,8 @@ fn a_step_appended_to_a_lesson_reads_back_as_the_same_step() {
 }
 
 /// What is on screen becomes a step: in lesson 17 at step 1, with the base turned to 50°, a
-/// pixel inspected and the observer on, the recorded step names the stage, the
-/// layout, the pixel and the one parameter changed; appended to the lesson file it reads back,
+/// pixel inspected and the observer on and turned, the recorded step names the stage, the
+/// layout, the pixel, the observer's direction and the one parameter changed; appended to the lesson file it reads back,
 /// and replayed from the step before it gives the scene on screen.
 #[test]
 fn the_state_on_screen_is_recorded_as_a_step() {
@@ -216,7 +216,16 @@ fn the_state_on_screen_is_recorded_as_a_step() {
     s.apply(Command::Selection(SelectionCommand::SelectPixel(Some((
         120, 80,
     )))));
+    // The observer untouched: no direction to write, every observer starts from the default.
+    let untouched = pipelens::app::record::recorded_step(&s).expect("a lesson is open");
+    assert_eq!(untouched.orbit, None);
+    // Turned by a drag that went once round and a little more: −335.04° round is 24.96°,
+    // written to a tenth of a degree as 25°; 20.04° up as 20°.
+    let mut turned = s.orbit;
+    (turned.yaw, turned.pitch) = (-335.04, 20.04);
+    s.apply(Command::View(ViewCommand::SetOrbit(turned)));
     let step = pipelens::app::record::recorded_step(&s).expect("a lesson is open");
+    assert_eq!(step.orbit, Some([25.0, 20.0]));
     assert_eq!(step.stage, Some(pipelens::vocabulary::Stage::World));
     assert_eq!(step.layout, Layout::Observer);
     assert_eq!(step.pixel, Some((120, 80)));
@@ -244,6 +253,20 @@ fn the_state_on_screen_is_recorded_as_a_step() {
     .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(again.steps.len(), 6);
     assert_eq!(again.steps[1], step);
+    assert!(out.contains("\norbit = [25, 20]\n"), "{out}");
+    // Played, the new step's observer looks from where the teacher turned it.
+    let dir = tempfile::tempdir().expect("temp dir");
+    let file = dir.path().join("17-hierarchy.toml");
+    std::fs::write(&file, &out).expect("written");
+    let mut played = Session::with_document(
+        pipelens::lesson::load_file(&file).expect("the recorded lesson loads"),
+        "test",
+        None,
+    );
+    played.apply(Command::Lesson(LessonCommand::GoToStep(1)));
+    assert_eq!((played.orbit.yaw, played.orbit.pitch), (25.0, 20.0));
+    played.apply(Command::Lesson(LessonCommand::GoToStep(2)));
+    assert_eq!((played.orbit.yaw, played.orbit.pitch), (60.0, 30.0));
     let lesson = pipelens::lesson::script::parse_lesson(
         &text,
         "lesson.toml",

@@ -219,6 +219,7 @@ impl Session {
         self.orbit = crate::observer::orbit_for(
             &spec,
             step.focus.as_deref().unwrap_or_default(),
+            step.orbit,
             self.observer_aspect,
         );
         sel.depth_view = DepthView {

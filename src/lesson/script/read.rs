@@ -233,6 +233,7 @@ impl Checker<'_> {
             .collect();
         let (pixel, vertex, profile) = self.targets(r, spec);
         let focus = r.focus.as_ref().map(|names| self.focus(names, spec));
+        let orbit = r.orbit.as_ref().and_then(|o| self.orbit(o));
         let watch = r.watch.as_ref().and_then(|w| self.watch(w, spec));
         let shader_lines = r
             .shader_lines
@@ -270,6 +271,7 @@ impl Checker<'_> {
             vertex,
             profile,
             focus,
+            orbit,
             depth_range,
             watch,
             shader_lines,
@@ -460,6 +462,20 @@ impl Checker<'_> {
     }
 
     /// The names a step frames: each an object or a figure of the scene as the step leaves it.
+    /// The observer's direction `[yaw, pitch]`: any finite yaw, a pitch strictly between −90°
+    /// and 90° (at ±90° the orbit's camera would look along its own up vector).
+    fn orbit(&mut self, o: &Spanned<[f64; 2]>) -> Option<[f32; 2]> {
+        let [yaw, pitch] = *o.get_ref();
+        if yaw.is_finite() && pitch.is_finite() && pitch.abs() < 90.0 {
+            return Some([yaw as f32, pitch as f32]);
+        }
+        self.error(
+            o.span(),
+            format!("`orbit` = [yaw, pitch] in degrees needs a finite yaw and −90 < pitch < 90, got [{yaw}, {pitch}]"),
+        );
+        None
+    }
+
     fn focus(&mut self, names: &[Spanned<String>], spec: &SceneSpec) -> Vec<String> {
         let known: Vec<&str> = spec
             .scene
