@@ -3,6 +3,7 @@
 //! flows:
 //!
 //! - [`vocabulary`]: the words everything shares (stages, spaces, comparisons, two languages);
+//! - [`palette`]: the colours that carry a meaning, kept apart for colour-blind eyes;
 //! - [`lesson`]: scene files and lessons, parsed and validated;
 //! - [`observer`]: the scene seen from outside;
 //! - [`export`]: snapshots and handouts written to disk;
@@ -21,5 +22,6 @@ pub mod export;
 pub mod lab;
 pub mod lesson;
 pub mod observer;
+pub mod palette;
 pub mod spaces;
 pub mod vocabulary;

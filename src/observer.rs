@@ -283,8 +283,8 @@ impl Default for Parts {
             sides: true,
             clipped: true,
             lights: true,
-            near_color: [255, 200, 60, 255],
-            far_color: [255, 140, 40, 255],
+            near_color: opaque(crate::palette::NEAR),
+            far_color: opaque(crate::palette::FAR),
         }
     }
 }
@@ -334,9 +334,9 @@ pub fn viewing_camera(
         let scale = (c.at - c.eye).length().max(n) * 0.25;
         if parts.axes {
             for (axis, color, label) in [
-                (frame.u, [235, 80, 80, 255], "u"),
-                (frame.v, [90, 210, 90, 255], "v"),
-                (frame.n, [90, 140, 255, 255], "n"),
+                (frame.u, opaque(crate::palette::X), "u"),
+                (frame.v, opaque(crate::palette::Y), "v"),
+                (frame.n, opaque(crate::palette::Z), "n"),
             ] {
                 mark(c.eye, c.eye + axis * scale, color, 2.5);
                 tags.push(Tag {
@@ -391,7 +391,12 @@ pub fn viewing_camera(
                 })
                 .collect();
             for k in 0..pts.len() {
-                mark(pts[k], pts[(k + 1) % pts.len()], [255, 120, 200, 255], 1.5);
+                mark(
+                    pts[k],
+                    pts[(k + 1) % pts.len()],
+                    opaque(crate::palette::CLIPPED),
+                    1.5,
+                );
             }
         }
     }
@@ -401,12 +406,12 @@ pub fn viewing_camera(
                 continue;
             };
             for [a, b] in g.segments {
-                mark(a, b, [255, 240, 120, 255], 2.0);
+                mark(a, b, opaque(crate::palette::LIGHT), 2.0);
             }
             tags.push(Tag {
                 at: g.label_at,
                 text: crate::vocabulary::light_name(light, k, lang),
-                color: [255, 240, 120, 255],
+                color: opaque(crate::palette::LIGHT),
             });
         }
     }
@@ -456,4 +461,9 @@ pub fn observer_image(
         });
     }
     Some(outside.image_with_shapes(BufferKind::Color, 1.0, &shapes, 1))
+}
+
+/// A palette colour, opaque.
+fn opaque([r, g, b]: crate::palette::Rgb) -> [u8; 4] {
+    [r, g, b, 255]
 }

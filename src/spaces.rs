@@ -162,13 +162,13 @@ pub fn framing(centre: Vec3, radius: f32, yaw: f32, pitch: f32, aspect: f32) -> 
 
 /// The fates a triangle can meet, in the legend's order: colour, English name, Chinese name.
 pub const FATES: [([u8; 3], &str, &str); 6] = [
-    ([220, 220, 220], "drawn", "绘制"),
-    ([255, 120, 200], "clipped", "被裁剪"),
-    ([90, 90, 90], "outside", "在视见体外"),
-    ([70, 90, 150], "culled", "被剔除"),
-    ([255, 0, 0], "degenerate", "退化"),
+    (crate::palette::DRAWN, "drawn", "绘制"),
+    (crate::palette::CLIPPED, "clipped", "被裁剪"),
+    (crate::palette::OUTSIDE, "outside", "在视见体外"),
+    (crate::palette::CULLED, "culled", "被剔除"),
+    (crate::palette::DEGENERATE, "degenerate", "退化"),
     (
-        [160, 110, 255],
+        crate::palette::NOT_FINITE,
         "not finite (NaN or ∞)",
         "非有限值（NaN 或 ∞）",
     ),

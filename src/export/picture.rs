@@ -252,9 +252,14 @@ fn space_picture(
     };
     if let Some(v) = spaces::volume(capture, space) {
         for i in 0..4 {
-            segment(v[i], v[(i + 1) % 4], ink([255, 200, 60], 255), 1.5);
-            segment(v[4 + i], v[4 + (i + 1) % 4], ink([255, 140, 40], 255), 1.2);
-            segment(v[i], v[4 + i], ink([255, 140, 40], 255), 1.2);
+            segment(v[i], v[(i + 1) % 4], ink(crate::palette::NEAR, 255), 1.5);
+            segment(
+                v[4 + i],
+                v[4 + (i + 1) % 4],
+                ink(crate::palette::FAR, 255),
+                1.2,
+            );
+            segment(v[i], v[4 + i], ink(crate::palette::FAR, 255), 1.2);
         }
     }
     let points: Vec<Option<Vec3>> = capture
@@ -294,9 +299,9 @@ fn space_picture(
         }
     }
     let axes = [
-        (Vec3::X, [235, 80, 80], "x"),
-        (Vec3::Y, [90, 210, 90], "y"),
-        (Vec3::Z, [90, 140, 255], "z"),
+        (Vec3::X, crate::palette::X, "x"),
+        (Vec3::Y, crate::palette::Y, "y"),
+        (Vec3::Z, crate::palette::Z, "z"),
     ];
     let length = radius * 0.6;
     for (axis, rgb, _) in axes {

@@ -23,6 +23,7 @@ mod labs;
 mod lesson_mistakes;
 mod lessons;
 mod observer;
+mod palette;
 mod record;
 mod reference;
 mod scene_file;

@@ -163,7 +163,7 @@ fn wrapped(caption: &LayoutJob, width: f32) -> LayoutJob {
 
 /// The captions of pipelens' own picture (showing the buffer `kind`) and of the difference,
 /// whose key names each meaning in its colour in the picture (red: colour, yellow: coverage,
-/// blue: depth, magenta: another triangle).
+/// blue: depth, pink: another triangle).
 fn captions(
     kind: BufferKind,
     lang: crate::vocabulary::Lang,

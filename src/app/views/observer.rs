@@ -39,7 +39,7 @@ impl ObserverView {
             )));
         }
         let painter = ui.painter_at(outer);
-        painter.rect_filled(outer, 0.0, Color32::from_gray(18));
+        painter.rect_filled(outer, 0.0, super::palette::GROUND);
         self.picture = None;
         let Some(obs) = &session.observer else {
             painter.text(

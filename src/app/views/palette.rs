@@ -1,26 +1,29 @@
-//! Colours used across views, chosen to read on a projector: the axes, the selection, the
-//! frustum, clipped geometry, lights, and the fates a triangle can meet.
+//! Colours used across views, as egui's: the meanings' colours of [`crate::palette`] (the
+//! axes, the frustum, clipped geometry, lights, the fates a triangle can meet, their ground)
+//! and the selection.
 
 use egui::Color32;
 
 pub use crate::spaces::fate_index;
 
 /// The x axis.
-pub const X: Color32 = Color32::from_rgb(235, 80, 80);
+pub const X: Color32 = egui_colour(crate::palette::X);
 /// The y axis.
-pub const Y: Color32 = Color32::from_rgb(90, 210, 90);
+pub const Y: Color32 = egui_colour(crate::palette::Y);
 /// The z axis.
-pub const Z: Color32 = Color32::from_rgb(90, 140, 255);
+pub const Z: Color32 = egui_colour(crate::palette::Z);
+/// The ground the geometry views and the observer's frame are drawn on.
+pub const GROUND: Color32 = egui_colour(crate::palette::GROUND);
 /// Selection highlight.
 pub const SELECTED: Color32 = Color32::from_rgb(255, 215, 0);
 /// The viewing frustum's near plane.
-pub const NEAR: Color32 = Color32::from_rgb(255, 200, 60);
+pub const NEAR: Color32 = egui_colour(crate::palette::NEAR);
 /// The viewing frustum's far plane and sides.
-pub const FAR: Color32 = Color32::from_rgb(255, 140, 40);
+pub const FAR: Color32 = egui_colour(crate::palette::FAR);
 /// Clipped geometry.
-pub const CLIPPED: Color32 = Color32::from_rgb(255, 120, 200);
+pub const CLIPPED: Color32 = egui_colour(crate::palette::CLIPPED);
 /// Lights.
-pub const LIGHT: Color32 = Color32::from_rgb(255, 240, 120);
+pub const LIGHT: Color32 = egui_colour(crate::palette::LIGHT);
 
 /// The colour of a primitive's fate, for wireframes.
 #[must_use]
@@ -33,10 +36,15 @@ pub fn fate_color(f: &pipeline::capture::Fate) -> Color32 {
 pub const FATES: [(Color32, &str, &str); crate::spaces::FATES.len()] = {
     const fn fate(k: usize) -> (Color32, &'static str, &'static str) {
         let f = crate::spaces::FATES[k];
-        (Color32::from_rgb(f.0[0], f.0[1], f.0[2]), f.1, f.2)
+        (egui_colour(f.0), f.1, f.2)
     }
     [fate(0), fate(1), fate(2), fate(3), fate(4), fate(5)]
 };
+
+/// A palette colour ([`crate::palette`]) as egui's.
+const fn egui_colour([r, g, b]: crate::palette::Rgb) -> Color32 {
+    Color32::from_rgb(r, g, b)
+}
 
 /// A colour as egui draws it, from a value in [0, 1].
 pub fn swatch(c: [f32; 4]) -> Color32 {

@@ -104,11 +104,25 @@ impl PixelDifference {
 }
 
 /// The difference picture's colours: a colour that differs (red, at its largest: dimmer for a
-/// smaller difference), coverage that differs (yellow), another depth (blue), another
-/// triangle's pixel (magenta). A pixel that differs in several ways shows the first of
-/// coverage, colour, triangle, depth.
-pub const DIFFERENCE_COLOURS: [[u8; 3]; 4] =
-    [[255, 30, 30], [255, 220, 0], [60, 140, 255], [230, 60, 230]];
+/// smaller difference, down to [`DIFFERENCE_DIMMEST`]), coverage that differs (yellow), another
+/// depth (blue), another triangle's pixel (pink). A pixel that differs in several ways shows
+/// the first of coverage, colour, triangle, depth. Every pair, and each against the matching
+/// pixels' greys (0 to [`MATCH_GREY_MAX`]), stays apart to colour-blind eyes too (the app's
+/// `palette::vision` test): blue and magenta, (60, 140, 255) and (230, 60, 230), were 11 ΔE
+/// apart to a protanope.
+pub const DIFFERENCE_COLOURS: [[u8; 3]; 4] = [
+    [255, 30, 30],
+    [255, 220, 0],
+    [80, 120, 255],
+    [255, 120, 200],
+];
+
+/// The smallest share of its red a differing colour keeps: at a quarter, a difference of a few
+/// steps was (63, 30, 30), 4 ΔE from a matching pixel's grey to a protanope.
+pub const DIFFERENCE_DIMMEST: f32 = 0.6;
+
+/// The lightest grey of a matching pixel: its reference's luminance at a quarter, times 255.
+pub const MATCH_GREY_MAX: u8 = 64;
 
 impl FrameCapture {
     /// Compares this frame with `reference` (same size): a pixel matches when both cover it
@@ -164,7 +178,7 @@ impl FrameCapture {
     /// The difference as a picture ([`DIFFERENCE_COLOURS`]): matching pixels dark grey (their reference's luminance at a
     /// quarter), pixels whose colour differs red, brighter the larger the difference (full red
     /// at 64 steps and beyond), pixels whose coverage differs yellow, pixels at another depth
-    /// blue, pixels another triangle owns magenta. Image rows run down.
+    /// blue, pixels another triangle owns pink. Image rows run down.
     #[must_use]
     pub fn difference_image(&self, reference: &FrameCapture, criteria: Criteria) -> RgbaImage {
         let w = self.width();
@@ -181,7 +195,7 @@ impl FrameCapture {
             if p.coverage {
                 coverage
             } else if p.colour > criteria.tolerance {
-                let t = (p.colour / 64.0).clamp(0.25, 1.0);
+                let t = (p.colour / 64.0).clamp(DIFFERENCE_DIMMEST, 1.0);
                 Rgba([(f32::from(colour[0]) * t) as u8, colour[1], colour[2], 255])
             } else if p.owner {
                 owner
@@ -190,7 +204,7 @@ impl FrameCapture {
             } else {
                 let [r, g, b] = reference.pixels.color[i];
                 let y = (0.2126 * r + 0.7152 * g + 0.0722 * b).clamp(0.0, 1.0);
-                let v = (y * 64.0) as u8;
+                let v = (y * f32::from(MATCH_GREY_MAX)) as u8;
                 Rgba([v, v, v, 255])
             }
         })

@@ -15,7 +15,9 @@ mod inspect;
 mod pixels;
 mod watch;
 
-pub use difference::{Criteria, DIFFERENCE_COLOURS, Difference};
+pub use difference::{
+    Criteria, DIFFERENCE_COLOURS, DIFFERENCE_DIMMEST, Difference, MATCH_GREY_MAX,
+};
 pub use explain::*;
 pub use images::OUTLINE;
 pub use inspect::*;

@@ -222,7 +222,7 @@ impl GeometryView {
         // Framed clear of where the cards were last frame; a move asks for one more frame.
         let own = std::mem::take(&mut self.cards);
         let painter = ui.painter_at(rect);
-        painter.rect_filled(rect, 0.0, Color32::from_gray(18));
+        painter.rect_filled(rect, 0.0, palette::GROUND);
         let subject = subject(capture, session, space);
         let eased = t * t * (3.0 - 2.0 * t);
         let from = from.unwrap_or(space);
