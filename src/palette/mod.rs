@@ -19,7 +19,7 @@ pub type Rgb = [u8; 3];
 pub const GROUND: Rgb = [18, 18, 18];
 
 /// The x axis (and a camera frame's u).
-pub const X: Rgb = [215, 50, 50];
+pub const X: Rgb = [235, 70, 70];
 /// The y axis (and v).
 pub const Y: Rgb = [130, 245, 110];
 /// The z axis (and n).

@@ -7,6 +7,7 @@ use pipelens::app::{PipelensApp, setup_context};
 use pipelens::vocabulary::{Lang, Stage};
 
 mod classroom;
+mod contrast;
 mod debugger;
 mod export;
 mod framing;

@@ -224,11 +224,15 @@ impl CompareView {
         let Some(line) = session.selection.profile else {
             return;
         };
+        let (x_axes, y_axes) = crate::app::views::plot_axes::axes(
+            profile::x_label(lang),
+            profile::y_label(lang),
+            40.0,
+        );
         Plot::new("profile")
             .legend(Legend::default().follow_insertion_order(true))
-            .x_axis_label(profile::x_label(lang))
-            .y_axis_label(profile::y_label(lang))
-            .y_axis_min_width(40.0)
+            .custom_x_axes(x_axes)
+            .custom_y_axes(y_axes)
             .include_y(0.0)
             .allow_scroll(false)
             .show(ui, |plot| {

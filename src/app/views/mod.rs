@@ -19,6 +19,7 @@ pub mod own_uniforms;
 pub mod palette;
 pub mod params;
 pub mod pixels;
+pub mod plot_axes;
 mod projector;
 pub mod shader;
 mod shader_source;

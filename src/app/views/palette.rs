@@ -46,6 +46,20 @@ const fn egui_colour([r, g, b]: crate::palette::Rgb) -> Color32 {
     Color32::from_rgb(r, g, b)
 }
 
+/// Black or white, whichever stands out more from `ground` by WCAG's contrast ratio
+/// `(L₁ + 0.05)/(L₂ + 0.05)`: black where the ground's relative luminance L is above 0.179,
+/// where `(L + 0.05)/0.05` passes `1.05/(L + 0.05)`.
+#[must_use]
+pub fn ink_on(ground: Color32) -> Color32 {
+    let l = egui::Rgba::from(ground);
+    let luminance = 0.2126 * l.r() + 0.7152 * l.g() + 0.0722 * l.b();
+    if luminance > 0.179 {
+        Color32::BLACK
+    } else {
+        Color32::WHITE
+    }
+}
+
 /// A colour as egui draws it, from a value in [0, 1].
 pub fn swatch(c: [f32; 4]) -> Color32 {
     Color32::from(egui::Rgba::from_rgba_unmultiplied(c[0], c[1], c[2], c[3]))

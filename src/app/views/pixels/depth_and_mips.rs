@@ -31,11 +31,15 @@ pub(super) fn depth_curve(
         .collect();
     ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
         ui.painter().rect_filled(rect, 4.0, Color32::from_gray(14));
+        let (x_axes, y_axes) = crate::app::views::plot_axes::axes(
+            lang.tr("eye distance d (near → far)", "到视点的距离 d（近 → 远）"),
+            lang.tr("window depth z_w", "窗口深度 z_w"),
+            36.0,
+        );
         Plot::new("depth-curve")
             .legend(Legend::default().follow_insertion_order(true))
-            .x_axis_label(lang.tr("eye distance d (near → far)", "到视点的距离 d（近 → 远）"))
-            .y_axis_label(lang.tr("window depth z_w", "窗口深度 z_w"))
-            .y_axis_min_width(36.0)
+            .custom_x_axes(x_axes)
+            .custom_y_axes(y_axes)
             .include_y(0.0)
             .include_y(1.0)
             .allow_scroll(false)

@@ -138,14 +138,15 @@ pub(super) fn draw_overlays(
         }
     }
     if drawn >= MAX_SHAPES {
-        painter.text(
+        crate::app::views::label_with_background(
+            painter,
             view.rect.left_bottom() + Vec2::new(8.0, -8.0),
             egui::Align2::LEFT_BOTTOM,
             lang.tr(
                 "overlays: first 20 000 shapes only",
                 "叠加层：只显示前 20000 个图形",
             ),
-            picture_font(painter.ctx(), 13.0),
+            &picture_font(painter.ctx(), 13.0),
             Color32::YELLOW,
         );
     }
@@ -179,11 +180,13 @@ pub(super) fn draw_light_vectors(
         };
         draw_shape(painter, &shape, &|p| view.to_screen(p));
         let (a, b) = (view.to_screen(arrow.from), view.to_screen(arrow.to));
-        painter.text(
-            b + (b - a).normalized() * 10.0,
+        // On its box: the letter lies on the lit surface, which may be as light as it is.
+        crate::app::views::label_with_background(
+            painter,
+            b + (b - a).normalized() * 14.0,
             egui::Align2::CENTER_CENTER,
             arrow.name,
-            picture_font(painter.ctx(), 18.0),
+            &picture_font(painter.ctx(), 18.0),
             color,
         );
     }
@@ -272,11 +275,8 @@ pub(super) fn draw_mip_legend(
             legend.left() + pad + column * (swatch + gap),
             top + row * (swatch + gap),
         );
-        painter.rect_filled(
-            Rect::from_min_size(at, Vec2::splat(swatch)),
-            2.0,
-            Color32::from_rgb(c[0], c[1], c[2]),
-        );
+        let fill = Color32::from_rgb(c[0], c[1], c[2]);
+        painter.rect_filled(Rect::from_min_size(at, Vec2::splat(swatch)), 2.0, fill);
         let label = if k == 7 {
             "7+".to_owned()
         } else {
@@ -287,11 +287,7 @@ pub(super) fn draw_mip_legend(
             egui::Align2::CENTER_CENTER,
             label,
             number.clone(),
-            if k == 0 || k == 3 {
-                Color32::BLACK
-            } else {
-                Color32::WHITE
-            },
+            crate::app::views::palette::ink_on(fill),
         );
     }
     legend
