@@ -64,6 +64,8 @@ pub struct StepPage {
     pub trace: Option<((u32, u32), Vec<FragmentTrace>)>,
     /// The legend of the picture's drawings, printed under it.
     pub legend: Vec<String>,
+    /// The picture's text alternative ([`crate::vocabulary::alt_text`]), its `alt`.
+    pub alt: String,
 }
 
 /// A data URL of `bytes` of MIME type `mime`.
@@ -261,8 +263,9 @@ fn step_html(
         .collect();
     let _ = writeln!(
         h,
-        "<figure><img src=\"{}\" alt=\"{title}\"><figcaption class=\"ui\">{}{}{target}{legend}</figcaption></figure>",
+        "<figure><img src=\"{}\" alt=\"{}\"><figcaption class=\"ui\">{}{}{target}{legend}</figcaption></figure>",
         page.picture.url(),
+        html::esc(&page.alt),
         t("Stage: ", "阶段："),
         page.stage.name(lang)
     );

@@ -3,6 +3,7 @@
 //! matrices' formulas in Chinese, and how numbers are written. It sits below all three and uses
 //! only the core: `lesson`, `export` and `app` import it; it imports none of them.
 
+pub mod alt_text;
 mod buffers;
 mod comparison;
 pub mod compile;

@@ -445,3 +445,37 @@ fn a_wide_picture_spans_the_slide_with_the_words_under_it() {
     let share = full as f64 / f64::from(above_footer - below_title);
     assert!(share > 0.7, "rows with content under the title: {share:.2}");
 }
+
+/// Every picture of a handout says in its `alt` what it shows (issue "Every student can use
+/// it", WCAG 1.1.1): the stage, the buffer, the size and the objects; at the step's pixel, the
+/// pixel, its object and its derivation's last line, the colour — the very colour the plain
+/// picture has there (window pixel (80, 70) of 160×120, y up, is row 119 − 70 = 49, magnified
+/// four times: the picture's pixel (322, 198)). The second step, with no pixel, says no more.
+#[test]
+fn each_picture_says_what_it_shows() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let html = export(dir.path(), &[]);
+    let alts: Vec<&str> = html
+        .split("<figure><img src=\"data:image/png")
+        .skip(1)
+        .filter_map(|f| f.split("alt=\"").nth(1)?.split('"').next())
+        .collect();
+    assert_eq!(alts.len(), 2, "{alts:?}");
+    let first = alts[0];
+    assert!(
+        first.starts_with(
+            "Shading stage, Colour buffer, 160×120 pixels: ball. At pixel (80, 70), ball's triangle "
+        ),
+        "{first}"
+    );
+    let plain = &images(&html)[1];
+    let [r, g, b, _] = plain.get_pixel(322, 198).0;
+    assert!(
+        first.ends_with(&format!("= ({r}, {g}, {b}).")),
+        "{first} against ({r}, {g}, {b})"
+    );
+    assert_eq!(
+        alts[1],
+        "Shading stage, Colour buffer, 160×120 pixels: ball."
+    );
+}
