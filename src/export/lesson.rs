@@ -521,9 +521,8 @@ fn shown(v: &Value) -> String {
     }
 }
 
-/// Step `k`'s picture in words ([`crate::vocabulary::alt_text`]): its stage and buffer, the
-/// objects drawn (its `focus` first), and at the step's pixel (or the one asked for) the first
-/// and last lines of the pixel's derivation.
+/// Step `k`'s picture in words ([`crate::lesson::describe::picture`]), at the step's pixel or
+/// the one asked for.
 fn alt_text(
     lesson: &Lesson,
     k: usize,
@@ -531,37 +530,12 @@ fn alt_text(
     capture: &pipeline::capture::FrameCapture,
     opts: &LessonExport,
 ) -> String {
-    use crate::vocabulary::alt_text::{Shown, alt_text};
-    let focus = lesson.steps[k].focus.as_deref().unwrap_or_default();
-    let (mut subject, mut rest) = (Vec::new(), Vec::new());
-    for o in &capture.objects {
-        // A figure's parts ("arm: base") are read as the figure.
-        let whole = o.name.split_once(": ").map_or(o.name.as_str(), |(f, _)| f);
-        let name = spec.label(whole, opts.lang);
-        let list = if focus.is_empty() || crate::spaces::named_in(focus, &o.name) {
-            &mut subject
-        } else {
-            &mut rest
-        };
-        if !list.contains(&name) {
-            list.push(name);
-        }
-    }
-    let explained = lesson.steps[k]
-        .pixel
-        .or(opts.pixel)
-        .and_then(|(x, y)| capture.explain(x, y));
-    let pixel = explained
-        .as_ref()
-        .map(|p| (p, spec.label(&p.object, opts.lang)));
-    alt_text(
-        &Shown {
-            stage: lesson.stage_at(k),
-            buffer: Some(lesson.buffer_at(k)),
-            objects: (&subject, &rest),
-            size: (capture.width(), capture.height()),
-            pixel,
-        },
+    crate::lesson::describe::picture(
+        spec,
+        capture,
+        (lesson.stage_at(k), Some(lesson.buffer_at(k))),
+        lesson.steps[k].focus.as_deref().unwrap_or_default(),
+        lesson.steps[k].pixel.or(opts.pixel),
         opts.lang,
     )
 }

@@ -8,6 +8,7 @@
 //! named in [`param`]. The grammar of both is documented in `lessons/README.md`.
 
 pub mod answer;
+pub mod describe;
 mod diagnostic;
 pub mod edit;
 pub mod forbid;

@@ -6,6 +6,7 @@ use pipelens::app::session::Session;
 use pipelens::app::{PipelensApp, setup_context};
 use pipelens::vocabulary::{Lang, Stage};
 
+mod accessible;
 mod classroom;
 mod contrast;
 mod debugger;
@@ -90,7 +91,7 @@ fn clicking_a_pixel_lists_its_fragments() {
     h.run();
     // Just below the middle of the pixel view is on the image (fitted and centred in it), where
     // the floor covers the lower half.
-    let r = h.get_by_label("pixel view").rect();
+    let r = h.get_by_label_contains("pixel view: ").rect();
     let p = egui::pos2(r.center().x, r.center().y + 30.0);
     h.hover_at(p);
     h.event(egui::Event::PointerButton {

@@ -92,7 +92,7 @@ pub fn list(
                 return;
             };
             let mut hit = b.hit.unwrap_or(0);
-            ui.label(lang.tr("at hit", "在第"));
+            let at_hit = ui.label(lang.tr("at hit", "在第"));
             if ui
                 .add(
                     egui::DragValue::new(&mut hit)
@@ -105,6 +105,7 @@ pub fn list(
                             }
                         }),
                 )
+                .labelled_by(at_hit.id)
                 .on_hover_text(lang.tr(
                     "Stop only the n-th time the run reaches this line (in a loop: its n-th iteration); 0 stops at every hit.",
                     "只在运行第 n 次到达此行时停下（在循环中即第 n 次迭代）；0 表示每次都停。",

@@ -241,7 +241,12 @@ pub fn bar(
     let mut pressed = None;
     ui.horizontal_wrapped(|ui| {
         let buttons = [
-            (Move::Back, ("← back", "← 后退"), Action::StepBack, ("step back", "后退一步")),
+            (
+                Move::Back,
+                ("← back", "← 后退"),
+                Action::StepBack,
+                ("step back", "后退一步"),
+            ),
             (
                 Move::Over,
                 ("→ over", "→ 跳过"),
@@ -305,27 +310,12 @@ pub fn bar(
             None => format!(
                 "{} {}",
                 run.len(),
-                lang.tr(
-                    "steps: F10 steps through them",
-                    "步：按 F10 逐步执行"
-                )
+                lang.tr("steps: F10 steps through them", "步：按 F10 逐步执行")
             ),
         };
         ui.label(RichText::new(position).monospace());
         if fragments > 1 {
-            ui.label(lang.tr("fragment", "片元"));
-            let mut k = debugger.fragment + 1;
-            if ui
-                .add(egui::DragValue::new(&mut k).range(1..=fragments))
-                .on_hover_text(lang.tr(
-                    "Several fragments reached this pixel (triangles meeting in it, or layers a discard peeled): which one to follow.",
-                    "有多个片元到达此像素（在此相交的三角形，或被 discard 剥离的层）：选择跟随哪一个。",
-                ))
-                .changed()
-            {
-                debugger.fragment = k - 1;
-                debugger.at = None;
-            }
+            fragment_chooser(ui, debugger, fragments, lang);
         }
     });
     if let Some(note) = &debugger.note {
@@ -561,4 +551,22 @@ fn stepped(
     marks.reveal = debugger.at != before;
     let step_line = marks.current;
     (marks, step_line)
+}
+
+/// Which of the `fragments` that reached the pixel the debugger follows, from 1.
+fn fragment_chooser(ui: &mut Ui, debugger: &mut Debugger, fragments: usize, lang: Lang) {
+    let label = ui.label(lang.tr("fragment", "片元"));
+    let mut k = debugger.fragment + 1;
+    if ui
+        .add(egui::DragValue::new(&mut k).range(1..=fragments))
+        .labelled_by(label.id)
+        .on_hover_text(lang.tr(
+            "Several fragments reached this pixel (triangles meeting in it, or layers a discard peeled): which one to follow.",
+            "有多个片元到达此像素（在此相交的三角形，或被 discard 剥离的层）：选择跟随哪一个。",
+        ))
+        .changed()
+    {
+        debugger.fragment = k - 1;
+        debugger.at = None;
+    }
 }

@@ -232,6 +232,8 @@ fn picture(
     capture: &FrameCapture,
 ) -> (Option<Command>, Rect) {
     let response = ui.interact(at, ui.scope_id().with(("exercise", i)), Sense::click());
+    let name = caption.text().to_owned();
+    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &name));
     let painter = ui.painter_at(at);
     painter.image(
         texture.id(),

@@ -1,6 +1,7 @@
 //! The panels. Each reads the session (and the capture) and returns the commands it wants;
 //! none of them computes pipeline results — those come from the `FrameCapture`.
 
+pub mod alt;
 pub mod answer;
 pub mod breakpoints;
 mod buffer_texture;

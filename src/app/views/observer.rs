@@ -33,6 +33,16 @@ impl ObserverView {
         let mut cmds = Vec::new();
         let (outer, response) =
             ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
+        response.widget_info(|| {
+            egui::WidgetInfo::labeled(
+                egui::Role::Image,
+                true,
+                lang.tr(
+                    "observer: the scene seen from outside, with the viewing camera, its frustum and the lights",
+                    "观察者：从外部看到的场景，带有观察相机、视锥和光源",
+                ),
+            )
+        });
         if outer.height() > 0.0 {
             cmds.push(Command::View(ViewCommand::SetObserverAspect(
                 outer.width() / outer.height(),

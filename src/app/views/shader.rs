@@ -298,7 +298,9 @@ pub fn ui(
         Tab::Hook(_) => None,
     };
     let (marks, watched) = super::debugger::panel(ui, &mut editor.debugger, stage, session);
-    let touched = super::shader_source::code(ui, (source, &format!("{tab:?}")), &errors, &marks);
+    let name = tab_name(tab, session.lang);
+    let touched =
+        super::shader_source::code(ui, (source, &format!("{tab:?}"), &name), &errors, &marks);
     let edited = touched.changed;
     if touched.cursor_line.is_some() {
         editor.debugger.cursor_line = touched.cursor_line;
@@ -435,15 +437,21 @@ fn tabs(ui: &mut Ui, editor: &mut ShaderEditor, lang: Lang) {
             ui.selectable_value(&mut editor.tab, Tab::Hook(kind), label)
                 .on_hover_text(hook_tip(kind, lang));
         }
-        for (stage, en, zh) in [
-            (Stage::Vertex, "Vertex shader", "顶点着色器"),
-            (Stage::Fragment, "Fragment shader", "片元着色器"),
-        ] {
+        for stage in [Stage::Vertex, Stage::Fragment] {
             let failed = editor.errors.iter().any(|e| e.stage == stage);
-            let label = marked(lang.tr(en, zh), failed);
+            let label = marked(&tab_name(Tab::Shader(stage), lang), failed);
             ui.selectable_value(&mut editor.tab, Tab::Shader(stage), label);
         }
     });
+}
+
+/// A tab's name, as its button shows it and a screen reader names its source.
+fn tab_name(tab: Tab, lang: Lang) -> String {
+    match tab {
+        Tab::Hook(kind) => hook_label(kind, lang).to_owned(),
+        Tab::Shader(Stage::Vertex) => lang.tr("Vertex shader", "顶点着色器").to_owned(),
+        Tab::Shader(Stage::Fragment) => lang.tr("Fragment shader", "片元着色器").to_owned(),
+    }
 }
 
 /// Both sources as files (downloads in the browser): what was written, or why not.

@@ -40,7 +40,7 @@ pub(super) struct Touched {
 /// debugger's `marks`; `tab` names the tab, which keeps its own scroll position.
 pub(super) fn code(
     ui: &mut Ui,
-    (source, tab): (&mut String, &str),
+    (source, tab, name): (&mut String, &str, &str),
     errors: &[(usize, &str)],
     marks: &Marks,
 ) -> Touched {
@@ -91,7 +91,14 @@ pub(super) fn code(
                 egui::ScrollArea::horizontal()
                     .id_salt(("shader source columns", tab))
                     .show(ui, |ui| {
-                        text(ui, (source, tab), errors, marks, &mut touched, &numbers);
+                        text(
+                            ui,
+                            (source, tab, name),
+                            errors,
+                            marks,
+                            &mut touched,
+                            &numbers,
+                        );
                     });
                 // Asked here, outside the sideways area: a scroll area takes both axes'
                 // targets, so one asked inside it would never reach this vertical one.
@@ -106,7 +113,7 @@ pub(super) fn code(
 /// The text itself, its step highlighted, with the messages and values painted after the lines.
 fn text(
     ui: &mut Ui,
-    (source, tab): (&mut String, &str),
+    (source, tab, name): (&mut String, &str, &str),
     errors: &[(usize, &str)],
     marks: &Marks,
     touched: &mut Touched,
@@ -143,6 +150,8 @@ fn text(
         .lock_focus(true)
         .layouter(&mut layouter)
         .show(ui);
+    // Named as its tab is: a screen reader reads "Fragment shader" for the source.
+    let _ = out.response.response.clone().accessible_name(name);
     touched.changed = out.response.changed();
     touched.cursor_line = out
         .cursor_range

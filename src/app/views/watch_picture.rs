@@ -99,8 +99,9 @@ pub fn ui(
                 .hint_text(lang.tr("e.g. dot(n, l) < 0.0", "例如 dot(n, l) < 0.0")),
         )
         .labelled_by(label.id);
-        ui.label(lang.tr("after line", "在此行之后："));
-        ui.add(egui::DragValue::new(&mut panel.line).range(1..=9999));
+        let after = ui.label(lang.tr("after line", "在此行之后："));
+        ui.add(egui::DragValue::new(&mut panel.line).range(1..=9999))
+            .labelled_by(after.id);
         if let Some(line) = step_line
             && ui
                 .small_button(lang.tr("the step's", "当前步的行"))

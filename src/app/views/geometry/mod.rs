@@ -217,6 +217,8 @@ impl GeometryView {
         }
         let mut cmds = Vec::new();
         let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
+        let view = lang.tr("geometry view", "几何视图");
+        super::alt::name_picture(&response, view, (session, capture, session.selection.stage));
         self.picture = Some(rect);
         self.subject = None;
         // Framed clear of where the cards were last frame; a move asks for one more frame.

@@ -71,6 +71,25 @@ pub(super) fn depth_curve(
                         egui_plot::HLine::new(name, f64::from(hi)).color(Color32::from_gray(200)),
                     );
                 }
+            })
+            .response
+            .widget_info(|| {
+                egui::WidgetInfo::labeled(
+                    egui::Role::Image,
+                    true,
+                    lang.tr_owned(
+                        &format!(
+                            "depth curve: window depth z_w against eye distance d from near {} to far {}",
+                            num(near),
+                            num(far)
+                        ),
+                        &format!(
+                            "深度曲线：窗口深度 z_w 随视点距离 d 变化，近 {}，远 {}",
+                            num(near),
+                            num(far)
+                        ),
+                    ),
+                )
             });
     });
 }

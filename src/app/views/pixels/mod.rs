@@ -284,9 +284,11 @@ impl PixelView {
         let response = ui.allocate_rect(rect, Sense::click_and_drag());
         self.picture.clear();
         self.words.clear();
-        response.widget_info(|| {
-            egui::WidgetInfo::labeled(egui::Role::Image, true, lang.tr("pixel view", "像素视图"))
-        });
+        crate::app::views::alt::name_picture(
+            &response,
+            lang.tr("pixel view", "像素视图"),
+            (session, capture, sel.stage),
+        );
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 0.0, Color32::from_gray(24));
         if response.double_clicked() {
