@@ -38,6 +38,7 @@ impl PipelensApp {
                 }
                 self.export_menu(ui, lang);
                 ui.toggle_value(&mut self.panels.keys, "?")
+                    .accessible_name(lang.tr("Help: keyboard shortcuts", "帮助：键盘快捷键"))
                     .on_hover_text(lang.tr("Keyboard shortcuts (F1)", "键盘快捷键（F1）"));
             });
             self.bar_messages(ui, lang);
@@ -126,6 +127,7 @@ impl PipelensApp {
         let (k, n) = (player.step, player.lesson.steps.len());
         if ui
             .add_enabled(k > 0, egui::Button::new("◀"))
+            .accessible_name(lang.tr("Previous step", "上一步"))
             .on_hover_text(lang.tr("Previous step (← or Page Up)", "上一步（← 或 Page Up）"))
             .clicked()
         {
@@ -152,6 +154,7 @@ impl PipelensApp {
         .on_hover_text(player.lesson.title.get(lang));
         if ui
             .add_enabled(k + 1 < n, egui::Button::new("▶"))
+            .accessible_name(lang.tr("Next step", "下一步"))
             .on_hover_text(lang.tr("Next step (→ or Page Down)", "下一步（→ 或 Page Down）"))
             .clicked()
         {

@@ -162,6 +162,7 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
         |ui| {
             if ui
                 .small_button("—")
+                .accessible_name(lang.tr("Fold the narration away", "收起讲解"))
                 .on_hover_text(lang.tr("Fold the narration away (N)", "收起讲解（N）"))
                 .clicked()
             {

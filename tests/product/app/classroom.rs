@@ -43,7 +43,10 @@ fn the_classroom_card_fits_its_question_and_answer_button_at_1366() {
             let has_answer = step.answer.is_some();
             // The title wraps beside the fold button, never under it (lesson 17's "The
             // humanoid tree" ran under the wider classroom button).
-            let (title, fold) = (h.get_by_label(&title).rect(), h.get_by_label("—").rect());
+            let (title, fold) = (
+                h.get_by_label(&title).rect(),
+                h.get_by_label("Fold the narration away").rect(),
+            );
             assert!(
                 !title.intersects(fold),
                 "{name} step {}: the title {title:?} runs under the fold button {fold:?}",
