@@ -337,6 +337,25 @@ pub(crate) fn step_of(h: &Harness<'_, PipelensApp>) -> usize {
 }
 
 /// The app on a lesson file at a window size.
+/// The number of steps of the lesson `h` plays (0 without one).
+pub(crate) fn step_count(h: &Harness<'static, PipelensApp>) -> usize {
+    h.state()
+        .session
+        .lesson
+        .as_ref()
+        .map_or(0, |p| p.lesson.steps.len())
+}
+
+/// Goes to step `k` (from 0) and runs six frames, enough for the views to place their cards.
+pub(crate) fn go_to_step(h: &mut Harness<'static, PipelensApp>, k: usize) {
+    h.state_mut()
+        .session
+        .apply(pipelens::app::session::Command::Lesson(
+            pipelens::app::command::LessonCommand::GoToStep(k),
+        ));
+    h.run_steps(6);
+}
+
 pub(crate) fn sized_lesson_harness(
     path: &std::path::Path,
     size: [f32; 2],

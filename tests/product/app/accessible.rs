@@ -5,7 +5,7 @@
 
 use accesskit_consumer::{FilterResult, NodeRef};
 use egui_kittest::kittest::{NodeT, Queryable, by};
-use pipelens::app::command::{Command, LessonCommand, ViewCommand};
+use pipelens::app::command::{Command, ViewCommand};
 use pipelens::vocabulary::{Lang, Stage};
 
 fn include(_: &NodeRef) -> FilterResult {
@@ -69,17 +69,8 @@ fn every_control_has_a_name() {
             let path = crate::support::repo().join(format!("lessons/{id}.toml"));
             let mut h = super::sized_lesson_harness(&path, [1366.0, 768.0]);
             open_everything(&mut h, lang);
-            let steps = h
-                .state()
-                .session
-                .lesson
-                .as_ref()
-                .map_or(0, |p| p.lesson.steps.len());
-            for k in 0..steps {
-                h.state_mut()
-                    .session
-                    .apply(Command::Lesson(LessonCommand::GoToStep(k)));
-                h.run_steps(6);
+            for k in 0..super::step_count(&h) {
+                super::go_to_step(&mut h, k);
                 for n in unnamed(&h) {
                     missing.push(format!("{lang:?} {id} step {}: {n}", k + 1));
                 }

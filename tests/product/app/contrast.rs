@@ -9,8 +9,6 @@
 //! white, through whatever box lies between.
 
 use egui::{Color32, Pos2, Rect, Shape};
-use pipelens::app::command::LessonCommand;
-use pipelens::app::session::Command;
 
 /// WCAG's relative luminance of an sRGB colour: `0.2126 R + 0.7152 G + 0.0722 B` of the
 /// linear channels.
@@ -185,17 +183,8 @@ fn every_word_stands_out_from_its_ground() {
             let mut h = super::sized_lesson_harness(&path, [1366.0, 768.0]);
             let ctx = h.ctx.clone();
             h.state_mut().set_classroom(&ctx, classroom);
-            let steps = h
-                .state()
-                .session
-                .lesson
-                .as_ref()
-                .map_or(0, |p| p.lesson.steps.len());
-            for k in 0..steps {
-                h.state_mut()
-                    .session
-                    .apply(Command::Lesson(LessonCommand::GoToStep(k)));
-                h.run_steps(6);
+            for k in 0..super::step_count(&h) {
+                super::go_to_step(&mut h, k);
                 let shapes = flatten(&h);
                 runs += shapes
                     .iter()

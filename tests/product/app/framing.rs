@@ -1,6 +1,6 @@
 //! Where things go in the picture: the step's subject clear of the narration card and of the
 //! words over it, a label beside its point.
-use pipelens::app::command::{LessonCommand, ViewCommand};
+use pipelens::app::command::ViewCommand;
 
 /// The narration card and the words a view draws over its picture (its header, the matrix
 /// card, the legend) never cover the step's subject (issue: the card hid a vertex of lesson
@@ -30,17 +30,8 @@ fn the_narration_and_the_overlays_leave_the_subject_clear() {
             h.state_mut()
                 .session
                 .apply(Command::View(ViewCommand::SetLang(lang)));
-            let steps = h
-                .state()
-                .session
-                .lesson
-                .as_ref()
-                .map_or(0, |p| p.lesson.steps.len());
-            for k in 0..steps {
-                h.state_mut()
-                    .session
-                    .apply(Command::Lesson(LessonCommand::GoToStep(k)));
-                h.run_steps(6);
+            for k in 0..super::step_count(&h) {
+                super::go_to_step(&mut h, k);
                 let place = format!(
                     "{} step {} at {}×{}{}",
                     path.file_stem().unwrap_or_default().to_string_lossy(),
