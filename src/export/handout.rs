@@ -263,7 +263,7 @@ fn step_html(
         .collect();
     let _ = writeln!(
         h,
-        "<figure><img src=\"{}\" alt=\"{}\"><figcaption class=\"ui\">{}{}{target}{legend}</figcaption></figure>",
+        "<figure><img src=\"{}\" alt=\"{title} — {}\"><figcaption class=\"ui\">{}{}{target}{legend}</figcaption></figure>",
         page.picture.url(),
         html::esc(&page.alt),
         t("Stage: ", "阶段："),

@@ -447,7 +447,7 @@ fn a_wide_picture_spans_the_slide_with_the_words_under_it() {
 }
 
 /// Every picture of a handout says in its `alt` what it shows (issue "Every student can use
-/// it", WCAG 1.1.1): the stage, the buffer, the size and the objects; at the step's pixel, the
+/// it", WCAG 1.1.1): its step's title, the stage, the buffer, the size and the objects; at the step's pixel, the
 /// pixel, its object and its derivation's last line, the colour — the very colour the plain
 /// picture has there (window pixel (80, 70) of 160×120, y up, is row 119 − 70 = 49, magnified
 /// four times: the picture's pixel (322, 198)). The second step, with no pixel, says no more.
@@ -464,7 +464,7 @@ fn each_picture_says_what_it_shows() {
     let first = alts[0];
     assert!(
         first.starts_with(
-            "Shading stage, Colour buffer, 160×120 pixels: ball. At pixel (80, 70), ball's triangle "
+            "Everything drawn — Shading stage, Colour buffer, 160×120 pixels: ball. At pixel (80, 70), ball's triangle "
         ),
         "{first}"
     );
@@ -476,6 +476,6 @@ fn each_picture_says_what_it_shows() {
     );
     assert_eq!(
         alts[1],
-        "Shading stage, Colour buffer, 160×120 pixels: ball."
+        "Nothing drawn — Shading stage, Colour buffer, 160×120 pixels: ball."
     );
 }

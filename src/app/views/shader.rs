@@ -298,7 +298,11 @@ pub fn ui(
         Tab::Hook(_) => None,
     };
     let (marks, watched) = super::debugger::panel(ui, &mut editor.debugger, stage, session);
-    let name = tab_name(tab, session.lang);
+    let name = format!(
+        "{}{}",
+        tab_name(tab, session.lang),
+        session.lang.tr(": source", "：源代码")
+    );
     let touched =
         super::shader_source::code(ui, (source, &format!("{tab:?}"), &name), &errors, &marks);
     let edited = touched.changed;

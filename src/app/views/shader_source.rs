@@ -150,7 +150,7 @@ fn text(
         .lock_focus(true)
         .layouter(&mut layouter)
         .show(ui);
-    // Named as its tab is: a screen reader reads "Fragment shader" for the source.
+    // Named after its tab: a screen reader reads "Fragment shader: source".
     let _ = out.response.response.clone().accessible_name(name);
     touched.changed = out.response.changed();
     touched.cursor_line = out
