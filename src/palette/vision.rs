@@ -100,6 +100,14 @@ impl Vision {
     }
 }
 
+/// WCAG's relative luminance of `c`: `0.2126 R + 0.7152 G + 0.0722 B` of its linear channels
+/// (the Y of CIE XYZ under sRGB's primaries).
+#[must_use]
+pub fn luminance(c: Rgb) -> f32 {
+    let [r, g, b] = c.map(linear);
+    0.2126 * r + 0.7152 * g + 0.0722 * b
+}
+
 /// An 8-bit sRGB channel as linear light: `c/12.92` up to 0.04045, else `((c + 0.055)/1.055)^2.4`.
 fn linear(c: u8) -> f32 {
     let c = f32::from(c) / 255.0;

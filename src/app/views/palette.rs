@@ -51,9 +51,7 @@ const fn egui_colour([r, g, b]: crate::palette::Rgb) -> Color32 {
 /// where `(L + 0.05)/0.05` passes `1.05/(L + 0.05)`.
 #[must_use]
 pub fn ink_on(ground: Color32) -> Color32 {
-    let l = egui::Rgba::from(ground);
-    let luminance = 0.2126 * l.r() + 0.7152 * l.g() + 0.0722 * l.b();
-    if luminance > 0.179 {
+    if crate::palette::vision::luminance([ground.r(), ground.g(), ground.b()]) > 0.179 {
         Color32::BLACK
     } else {
         Color32::WHITE
