@@ -121,6 +121,9 @@ pub fn list(
                     egui::TextEdit::singleline(condition)
                         .id_salt(("breakpoint condition", line))
                         .code_editor()
+                        // One line: Tab moves on to the next control, as in every field (the
+                        // code editor's lock would trap the keyboard here, WCAG 2.1.2).
+                        .lock_focus(false)
                         .desired_width(160.0)
                         .hint_text("diffuse <= 0.0"),
                 )

@@ -34,6 +34,9 @@ pub(super) struct Touched {
     /// The start of the line to bring into view (the step's lines on entering the step, the
     /// debugger's line when it moved).
     scroll_to: Option<egui::Rect>,
+    /// The text cursor, where the keys moved it this frame: kept in sight (Ctrl+End, the
+    /// arrows, typing past the last line seen) by as little a scroll as does it.
+    cursor_moved_to: Option<egui::Rect>,
 }
 
 /// The source with its line numbers, highlighted, with `errors` (`(line, message)`) and the
@@ -49,6 +52,7 @@ pub(super) fn code(
         gutter: None,
         cursor_line: None,
         scroll_to: None,
+        cursor_moved_to: None,
     };
     egui::ScrollArea::vertical()
         .id_salt(("shader source", tab))
@@ -104,10 +108,30 @@ pub(super) fn code(
                 // targets, so one asked inside it would never reach this vertical one.
                 if let Some(start) = touched.scroll_to.take() {
                     ui.scroll_to_rect(start, Some(egui::Align::Center));
+                } else if let Some(cursor) = touched.cursor_moved_to.take() {
+                    ui.scroll_to_rect(cursor, None);
                 }
             });
         });
     touched
+}
+
+/// Where the text cursor is when the keys moved it since the last frame (and the source has
+/// the keyboard). egui keeps the cursor in sight of the nearest scroll area only, the sideways
+/// one; the vertical one is asked with this.
+fn cursor_moved(ui: &Ui, out: &egui::text_edit::TextEditOutput) -> Option<egui::Rect> {
+    let seen = out.response.response.id.with("cursor seen");
+    let cursor = out.cursor_range.map(|r| r.primary.index.0);
+    let last = ui.data_mut(|d| {
+        let last = d.get_temp::<Option<usize>>(seen);
+        d.insert_temp(seen, cursor);
+        last
+    });
+    let r = out.cursor_range?;
+    (out.response.response.has_focus() && last.is_some_and(|l| l != cursor)).then(|| {
+        let at = out.galley.pos_from_cursor(r.primary);
+        at.translate(out.galley_pos.to_vec2()).expand(4.0)
+    })
 }
 
 /// The text itself, its step highlighted, with the messages and values painted after the lines.
@@ -156,6 +180,7 @@ fn text(
     touched.cursor_line = out
         .cursor_range
         .map(|r| out.galley.layout_from_cursor(r.primary).row + 1);
+    touched.cursor_moved_to = cursor_moved(ui, &out);
     // Without wrapping, row k of the laid-out text is source line k + 1.
     let row_rect = |line: usize| {
         line.checked_sub(1)

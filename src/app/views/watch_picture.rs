@@ -95,6 +95,9 @@ pub fn ui(
             egui::TextEdit::singleline(&mut panel.expression)
                 .id_salt("watch expression")
                 .code_editor()
+                // One line: Tab moves on to the next control, as in every field (the
+                // code editor's lock would trap the keyboard here, WCAG 2.1.2).
+                .lock_focus(false)
                 .desired_width(220.0)
                 .hint_text(lang.tr("e.g. dot(n, l) < 0.0", "例如 dot(n, l) < 0.0")),
         )
