@@ -6,7 +6,7 @@ use egui::{Color32, RichText};
 
 use super::PipelensApp;
 use super::session::Command;
-use super::shortcuts::{self, Action, MOUSE, SHORTCUTS};
+use super::shortcuts::{self, Action, IN_A_PICTURE, MOUSE, SHORTCUTS};
 use super::views::navigator;
 use crate::app::command::{LessonCommand, ViewCommand};
 use crate::vocabulary::Lang;
@@ -397,39 +397,41 @@ impl PipelensApp {
         });
     }
 
-    /// The keyboard shortcuts ([`SHORTCUTS`]) and what the mouse does, in a window F1 (or ?)
-    /// opens and closes.
+    /// The keyboard shortcuts ([`SHORTCUTS`]), the keys of a focused picture ([`IN_A_PICTURE`])
+    /// and what the mouse does, in a window F1 (or ?) opens and closes; it scrolls where the
+    /// window is too low for the whole list.
     pub(super) fn keys_help(&mut self, ctx: &egui::Context) {
         let lang = self.session.lang;
         let mut open = self.panels.keys;
+        let keys = |ui: &mut egui::Ui, written: &str| {
+            ui.label(RichText::new(written).monospace().strong());
+        };
         egui::Window::new(lang.tr("Keyboard shortcuts", "键盘快捷键"))
             .open(&mut open)
             .collapsible(false)
             .resizable(false)
             .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
             .show(ctx, |ui| {
-                egui::Grid::new("keys")
-                    .striped(true)
-                    .spacing([24.0, 6.0])
+                egui::ScrollArea::vertical()
+                    .max_height(ctx.content_rect().height() * 0.8)
                     .show(ui, |ui| {
-                        for s in &SHORTCUTS {
-                            ui.label(
-                                RichText::new(shortcuts::keys_written(s))
-                                    .monospace()
-                                    .strong(),
-                            );
-                            ui.label(lang.tr(s.does.0, s.does.1));
-                            ui.end_row();
-                        }
-                        for ((en_keys, zh_keys), (en, zh)) in MOUSE {
-                            ui.label(
-                                RichText::new(lang.tr(en_keys, zh_keys))
-                                    .monospace()
-                                    .strong(),
-                            );
-                            ui.label(lang.tr(en, zh));
-                            ui.end_row();
-                        }
+                        egui::Grid::new("keys")
+                            .striped(true)
+                            .spacing([24.0, 6.0])
+                            .show(ui, |ui| {
+                                for s in &SHORTCUTS {
+                                    keys(ui, &shortcuts::keys_written(s));
+                                    ui.label(lang.tr(s.does.0, s.does.1));
+                                    ui.end_row();
+                                }
+                                for ((en_keys, zh_keys), (en, zh)) in
+                                    IN_A_PICTURE.iter().chain(&MOUSE)
+                                {
+                                    keys(ui, lang.tr(en_keys, zh_keys));
+                                    ui.label(lang.tr(en, zh));
+                                    ui.end_row();
+                                }
+                            });
                     });
             });
         self.panels.keys = open;
@@ -481,6 +483,9 @@ impl PipelensApp {
         if pressed(Action::Classroom) {
             let on = !self.classroom;
             self.set_classroom(ctx, on);
+        }
+        if pressed(Action::FocusView) {
+            super::views::picture_keys::cycle(ctx);
         }
         if pressed(Action::FullScreen) {
             let full = ctx.input(|i| i.viewport().fullscreen.unwrap_or(false));

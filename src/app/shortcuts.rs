@@ -55,6 +55,9 @@ pub enum Action {
     FullScreen,
     /// Larger or smaller text (egui's own zoom listens for these keys).
     TextSize,
+    /// The keyboard to the main picture, then to the one beside it, then back to the steps
+    /// (`views::picture_keys`).
+    FocusView,
     /// Show or hide this list.
     Keys,
 }
@@ -84,7 +87,7 @@ const fn shift(key: Key) -> KeyboardShortcut {
 
 /// Every shortcut, in the order the help lists them. Redo comes before Undo: Ctrl+Shift+Z
 /// holds Ctrl+Z's keys too, so it is asked first.
-pub const SHORTCUTS: [Shortcut; 25] = [
+pub const SHORTCUTS: [Shortcut; 26] = [
     Shortcut {
         action: Action::Next,
         keys: &[plain(Key::ArrowRight), plain(Key::PageDown)],
@@ -248,6 +251,14 @@ pub const SHORTCUTS: [Shortcut; 25] = [
         does: ("text size", "字号"),
     },
     Shortcut {
+        action: Action::FocusView,
+        keys: &[plain(Key::V)],
+        does: (
+            "the keyboard to the picture, then to the one beside it, then back to the steps (Tab reaches each too)",
+            "键盘焦点移到画面，再移到旁边的画面，再回到步骤（Tab 键也能到达每个画面）",
+        ),
+    },
+    Shortcut {
         action: Action::Keys,
         keys: &[plain(Key::F1), plain(Key::Questionmark)],
         does: ("this list", "本列表"),
@@ -270,6 +281,34 @@ pub const MOUSE: [(Both, Both); 2] = [
     (
         ("click", "单击"),
         ("select a pixel or a vertex", "选择像素或顶点"),
+    ),
+];
+
+/// What a picture does with the keys while it has the keyboard (V, or Tab; a ring shows it),
+/// for the help: how the help writes the keys and what they do, in English and in Chinese.
+/// `views::picture_keys` reads these keys.
+pub const IN_A_PICTURE: [(Both, Both); 4] = [
+    (
+        ("← → ↑ ↓", "← → ↑ ↓"),
+        (
+            "in the picture: the inspected pixel moves (Shift: 10 pixels); a geometry view or the observer orbits (Shift: 10×)",
+            "画面中：移动所查看的像素（Shift：10 个像素）；几何视图或观察者视图环绕（Shift：10 倍）",
+        ),
+    ),
+    (("+  −", "+  −"), ("in the picture: zoom", "画面中：缩放")),
+    (
+        ("[  ]", "[  ]"),
+        (
+            "in a geometry view: the previous or next vertex (Shift: 10 on)",
+            "几何视图中：上一个或下一个顶点（Shift：跳 10 个）",
+        ),
+    ),
+    (
+        ("Esc", "Esc"),
+        (
+            "the keyboard back from the picture or the shader's source (where Tab indents): the arrows step again",
+            "键盘离开画面或着色器源码（源码中 Tab 用于缩进）：方向键重新用于换步",
+        ),
     ),
 ];
 
@@ -297,23 +336,49 @@ fn function_key(key: Key) -> bool {
     name.len() > 1 && name.starts_with('F') && name[1..].chars().all(|c| c.is_ascii_digit())
 }
 
+/// Whether a focused widget acts on `key` itself: the arrows (a slider's value, a picture's
+/// pixel, egui's own move of the focus), Space and Enter (a button's click), Tab and Escape.
+fn widget_key(key: Key) -> bool {
+    matches!(
+        key,
+        Key::ArrowLeft
+            | Key::ArrowRight
+            | Key::ArrowUp
+            | Key::ArrowDown
+            | Key::Space
+            | Key::Enter
+            | Key::Tab
+            | Key::Escape
+    )
+}
+
+/// Whether a plain press of `key` is the window's shortcut, given what has the keyboard: a
+/// function key always (the debugger's F10 steps while the cursor is in the source); any other
+/// key never while a text box has it (it types); and while another widget has the focus (a
+/// button, a slider, a picture reached by Tab or V), every key but the ones that widget acts on
+/// itself, so that N, I or Page Down still work from a focused button.
+fn plain_key_is_ours(key: Key, (text_box, focused): (bool, bool)) -> bool {
+    function_key(key) || !(text_box || (focused && widget_key(key)))
+}
+
 /// Whether one of `action`'s keys was pressed this frame. A key with modifiers is consumed, so
 /// that nothing else acts on it too. A key with none counts with no Ctrl, Alt, Command or Shift
 /// held (the key's own modifiers, not those at the end of the frame: a Ctrl+S whose Ctrl is let
 /// go within the frame is still Ctrl+S, not S) — nor Shift for a function key, whose Shift+ is
-/// another action —, and, unless it is a function key, only while
-/// no text box has the keyboard: the debugger's F10 steps while the cursor is in the source.
+/// another action —, and as [`plain_key_is_ours`] says given what has the keyboard.
 #[must_use]
 pub fn pressed(ctx: &Context, action: Action) -> bool {
     of(action).keys.iter().any(|k| {
         if k.modifiers.is_none() {
-            (function_key(k.logical_key) || !ctx.egui_wants_keyboard_input())
-                && ctx.input(|i| {
-                    i.events.iter().any(|e| {
-                        matches!(e, egui::Event::Key { key, pressed: true, modifiers, .. }
+            plain_key_is_ours(
+                k.logical_key,
+                (ctx.text_edit_focused(), ctx.egui_wants_keyboard_input()),
+            ) && ctx.input(|i| {
+                i.events.iter().any(|e| {
+                    matches!(e, egui::Event::Key { key, pressed: true, modifiers, .. }
                             if *key == k.logical_key && plain_press(*modifiers, *key))
-                    })
                 })
+            })
         } else {
             ctx.input_mut(|i| i.consume_shortcut(k))
         }
@@ -380,6 +445,7 @@ mod tests {
             Action::Breakpoint,
             Action::FullScreen,
             Action::TextSize,
+            Action::FocusView,
             Action::Keys,
         ];
         assert_eq!(actions.len(), SHORTCUTS.len());
@@ -403,6 +469,27 @@ mod tests {
         assert_eq!(keys_written(of(Action::TextSize)), "Ctrl++  Ctrl+−");
         assert_eq!(keys_written(of(Action::StepBack)), "Shift+F10");
         assert_eq!(keys_written(of(Action::RunToCursor)), "Ctrl+F10");
+    }
+
+    /// A text box keeps every key but the function keys; a focused button or picture keeps the
+    /// arrows, Space and Enter, and leaves the letters and Page Down to the window.
+    #[test]
+    fn a_focused_widget_keeps_only_the_keys_it_acts_on() {
+        let (none, button, text) = ((false, false), (false, true), (true, true));
+        for key in [Key::ArrowRight, Key::Space, Key::N, Key::PageDown, Key::F10] {
+            assert!(plain_key_is_ours(key, none), "{key:?} with nothing focused");
+        }
+        for key in [Key::N, Key::PageDown, Key::V, Key::F1] {
+            assert!(
+                plain_key_is_ours(key, button),
+                "{key:?} beside a focused button"
+            );
+        }
+        for key in [Key::ArrowRight, Key::ArrowUp, Key::Space, Key::Enter] {
+            assert!(!plain_key_is_ours(key, button), "{key:?} is the button's");
+        }
+        assert!(!plain_key_is_ours(Key::N, text) && !plain_key_is_ours(Key::PageDown, text));
+        assert!(plain_key_is_ours(Key::F10, text));
     }
 
     /// Only F1 … F35 are function keys: a letter or an arrow is not, though its name starts

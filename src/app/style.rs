@@ -62,6 +62,11 @@ pub fn apply_style(ctx: &egui::Context, classroom: bool) {
         // 140 was 4.4:1 on grey 40, 3.8:1 on grey 50.
         style.visuals.widgets.noninteractive.fg_stroke.color = egui::Color32::from_gray(210);
         style.spacing.slider_width = 220.0 * scale;
+        // The focus is seen (WCAG 2.4.7): egui draws a focused widget as an active one, whose
+        // 1-point white outline is easy to miss on a grey button; 2 points in the focus colour,
+        // the ring a focused picture has too (`views::picture_keys`).
+        let focus = style.visuals.selection.stroke.color;
+        style.visuals.widgets.active.bg_stroke = egui::Stroke::new(2.0, focus);
         if classroom {
             style.visuals.override_text_color = Some(egui::Color32::WHITE);
             style.visuals.weak_text_color = Some(egui::Color32::from_gray(225));

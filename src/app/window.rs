@@ -480,6 +480,8 @@ impl PipelensApp {
                     self.picture.extend(self.observer_view.picture);
                 }
             });
+        } else {
+            views::picture_keys::nothing_beside(ui.ctx());
         }
         ui.advance_cursor_after_rect(area);
     }

@@ -12,6 +12,7 @@ mod contrast;
 mod debugger;
 mod export;
 mod framing;
+mod keyboard_alone;
 mod keys;
 mod labs;
 mod lesson_play;

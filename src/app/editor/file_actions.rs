@@ -19,7 +19,7 @@ impl Editor {
         if pressed(ctx, Action::Save) {
             self.save(false);
         }
-        if ctx.egui_wants_keyboard_input() {
+        if ctx.text_edit_focused() {
             return;
         }
         if pressed(ctx, Action::Redo) {

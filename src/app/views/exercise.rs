@@ -274,13 +274,21 @@ fn picture(
         .flatten();
     let pick = clicked.and_then(|p| {
         let (x, row) = ((p.x - at.left()) / s, (p.y - at.top()) / s);
-        (x >= 0.0 && row >= 0.0 && (x as u32) < w && (row as u32) < h).then(|| {
-            Command::Selection(SelectionCommand::SelectPixel(Some((
-                x as u32,
-                grid.row(row as u32),
-            ))))
-        })
+        (x >= 0.0 && row >= 0.0 && (x as u32) < w && (row as u32) < h)
+            .then(|| (x as u32, grid.row(row as u32)))
     });
+    // With the keyboard's focus (Tab, or V for the first), the arrows move the inspected pixel
+    // as in the student's own frame; the first press inspects the middle.
+    let place = (i == 0).then_some(super::picture_keys::Place::Beside);
+    let keys = super::picture_keys::take(ui, &response, place);
+    super::picture_keys::ring(ui, at, keys);
+    let moved = (keys.arrows != Vec2::ZERO).then(|| match session.selection.pixel {
+        Some(from) => super::picture_keys::moved_pixel(from, keys.arrows, (w, h)),
+        None => (w / 2, h / 2),
+    });
+    let pick = pick
+        .or(moved)
+        .map(|p| Command::Selection(SelectionCommand::SelectPixel(Some(p))));
     (pick, boxed)
 }
 

@@ -19,6 +19,7 @@ pub mod overlays;
 pub mod own_uniforms;
 pub mod palette;
 pub mod params;
+pub mod picture_keys;
 pub mod pixels;
 pub mod plot_axes;
 mod projector;

@@ -5,7 +5,7 @@
 
 use crate::app::command::ViewCommand;
 use crate::app::views::picture_font;
-use egui::{Align2, Color32, Rect, Sense, Stroke, TextureOptions, Ui, Vec2};
+use egui::{Align2, Color32, Rect, Stroke, TextureOptions, Ui, Vec2};
 use pipeline::buffers::BufferKind;
 use pipeline::capture::FrameCapture;
 
@@ -31,8 +31,7 @@ impl ObserverView {
     pub fn ui(&mut self, ui: &mut Ui, session: &Session, main: &FrameCapture) -> Vec<Command> {
         let lang = session.lang;
         let mut cmds = Vec::new();
-        let (outer, response) =
-            ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
+        let (outer, response) = super::picture_keys::allocate_rest(ui, "observer");
         response.widget_info(|| {
             egui::WidgetInfo::labeled(
                 egui::Role::Image,
@@ -77,6 +76,13 @@ impl ObserverView {
             Color32::WHITE,
         );
         let mut orbit: Orbit = session.orbit;
+        let keys =
+            super::picture_keys::take(ui, &response, Some(super::picture_keys::Place::Beside));
+        // The arrows turn it as a drag that way would; `+` comes closer.
+        orbit.yaw -= keys.arrows.x * super::geometry::ORBIT_STEP;
+        orbit.pitch =
+            (orbit.pitch - keys.arrows.y * super::geometry::ORBIT_STEP).clamp(-85.0, 85.0);
+        orbit.distance = super::picture_keys::zoomed(orbit.distance, -keys.zoom, (0.2, 1e4));
         if response.dragged() {
             let d = response.drag_delta();
             orbit.yaw -= d.x * 0.4;
@@ -115,6 +121,7 @@ impl ObserverView {
             }
         }
         self.controls(ui, rect, lang);
+        super::picture_keys::ring(ui, rect, keys);
         cmds
     }
 

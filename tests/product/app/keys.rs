@@ -41,6 +41,11 @@ fn the_keys_fold_panels_switch_classroom_mode_and_list_themselves() {
         );
     }
     assert!(h.query_by_label("Ctrl+Shift+Z  Ctrl+Y").is_some());
+    // And what a focused picture does with the keys, from the table its listener reads.
+    for ((keys, _), (does, _)) in &pipelens::app::shortcuts::IN_A_PICTURE {
+        assert!(h.query_by_label(keys).is_some(), "the help lists {keys}");
+        assert!(h.query_by_label(does).is_some(), "the help says {does}");
+    }
     h.key_press(egui::Key::F1);
     h.run_steps(2);
     assert!(h.query_by_label("Keyboard shortcuts").is_none());

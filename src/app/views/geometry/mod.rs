@@ -6,7 +6,7 @@
 
 mod cards;
 
-use egui::{Align2, Color32, FontId, Pos2, Rect, Sense, Stroke, Ui, Vec2};
+use egui::{Align2, Color32, FontId, Pos2, Rect, Stroke, Ui, Vec2};
 use glam::Vec3;
 use pipeline::capture::FrameCapture;
 
@@ -183,6 +183,23 @@ fn shown(
     }
 }
 
+/// `]` and `[` of a focused view: the next or previous vertex selected.
+fn vertex_keys(
+    keys: super::picture_keys::Keys,
+    session: &Session,
+    capture: &FrameCapture,
+) -> Option<Command> {
+    (keys.vertex != 0).then(|| {
+        let count = capture.vertices.len();
+        let vertex =
+            super::picture_keys::stepped_vertex(session.selection.vertex, keys.vertex, count);
+        Command::Selection(SelectionCommand::SelectVertex(vertex))
+    })
+}
+
+/// Degrees an arrow key turns a focused geometry view or the observer.
+pub const ORBIT_STEP: f32 = 5.0;
+
 /// What the header over the picture says and where it may reach.
 struct Header<'a> {
     /// The picture's rect.
@@ -215,8 +232,7 @@ impl GeometryView {
             (self.zoom, self.pan) = (1.0, Vec2::ZERO);
             self.reset_for = Some(session.step_entered);
         }
-        let mut cmds = Vec::new();
-        let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
+        let (rect, response) = super::picture_keys::allocate_rest(ui, "geometry view");
         let view = lang.tr("geometry view", "几何视图");
         super::alt::name_picture(&response, view, (session, capture, session.selection.stage));
         self.picture = Some(rect);
@@ -235,7 +251,8 @@ impl GeometryView {
         let shown = shown(capture, space, sphere, view_volume.is_some(), stride);
         let legend = cards::Legend::new(&painter, &shown, lang, stride);
         let (frame, legend_at) = clear_of_cards(ui.ctx(), rect, &own, &legend);
-        self.navigate(ui, &response, frame);
+        let keys = self.navigate(ui, &response, frame);
+        let mut cmds: Vec<Command> = vertex_keys(keys, session, capture).into_iter().collect();
         let Some((cam, radius, centre)) = sphere.and_then(|b| self.camera(frame, b)) else {
             painter.text(
                 rect.center(),
@@ -309,6 +326,7 @@ impl GeometryView {
         {
             cmds.push(pick(&cam, &points, pos));
         }
+        super::picture_keys::ring(ui, rect, keys);
         cmds
     }
 
@@ -399,8 +417,23 @@ impl GeometryView {
     }
 
     /// Drag to orbit, scroll to zoom toward the cursor, drag with the right button (or
-    /// Shift) to pan, double-click to reset.
-    fn navigate(&mut self, ui: &Ui, response: &egui::Response, rect: Rect) {
+    /// Shift) to pan, double-click to reset; with the keyboard's focus, the arrows orbit as a
+    /// drag that way would ([`ORBIT_STEP`] a press, Shift ten) and `+`/`−` zoom about the
+    /// middle. Returns the keys it read (the vertex keys are the caller's).
+    fn navigate(
+        &mut self,
+        ui: &Ui,
+        response: &egui::Response,
+        rect: Rect,
+    ) -> super::picture_keys::Keys {
+        let keys = super::picture_keys::take(ui, response, Some(super::picture_keys::Place::Main));
+        self.yaw -= keys.arrows.x * ORBIT_STEP;
+        self.pitch = (self.pitch - keys.arrows.y * ORBIT_STEP).clamp(-89.0, 89.0);
+        if keys.zoom != 0 {
+            let zoom = super::picture_keys::zoomed(self.zoom, keys.zoom, (0.05, 80.0));
+            self.pan *= zoom / self.zoom;
+            self.zoom = zoom;
+        }
         let shift = ui.input(|i| i.modifiers.shift);
         if response.double_clicked() {
             (self.zoom, self.pan) = (1.0, Vec2::ZERO);
@@ -423,6 +456,7 @@ impl GeometryView {
                 self.zoom = zoom;
             }
         }
+        keys
     }
 
     /// Where the header (the space's name, the view's buttons) goes: the top-left, left of the

@@ -12,13 +12,14 @@ mod viewport;
 
 pub use draw::draw_shape;
 
-use egui::{Color32, Pos2, Rect, Sense, Ui, Vec2};
+use egui::{Color32, Pos2, Rect, Ui, Vec2};
 use pipeline::buffers::BufferKind;
 use pipeline::capture::FrameCapture;
 use pipeline::overlay::OverlayKind;
 
-use crate::app::command::ViewCommand;
+use crate::app::command::{SelectionCommand, ViewCommand};
 use crate::app::session::{Command, Selection, Session};
+use crate::app::views::picture_keys;
 use crate::vocabulary::{Lang, buffer_name};
 use viewport::{ImageViewport, layout};
 
@@ -281,7 +282,7 @@ impl PixelView {
             || (sel.buffer.is_texturing() && self.show_pyramid && !capture.textures.is_empty());
         let (rect, extra) = layout(full, capture, wants_extra);
         let extra = extra.map(|e| crate::app::views::card_placement::right_of(e, card));
-        let response = ui.allocate_rect(rect, Sense::click_and_drag());
+        let response = picture_keys::allocate(ui, rect, "pixel view");
         self.picture.clear();
         self.words.clear();
         crate::app::views::alt::name_picture(
@@ -296,7 +297,9 @@ impl PixelView {
             self.centre = None;
             return cmds;
         }
-        let view = self.navigate(ui, (&response, session), rect, capture);
+        let keys = picture_keys::take(ui, &response, Some(picture_keys::Place::Main));
+        let view = self.navigate(ui, (&response, session), (rect, keys), capture);
+        cmds.extend(self.arrows(keys, &view, session, capture));
         // The physical pixels the fitted image covers: the finer render's size (`display`).
         let ppp = ui.ctx().pixels_per_point();
         let pixels = [
@@ -363,6 +366,7 @@ impl PixelView {
             }
         }
         cmds.extend(hover::hover_and_click(&response, &view, capture, lang));
+        picture_keys::ring(ui, rect, keys);
         cmds
     }
 
@@ -478,12 +482,46 @@ impl PixelView {
         subject
     }
 
-    /// Applies wheel zoom (about the cursor) and drag pan; returns the mapping to use.
+    /// The arrows of a focused view: the inspected pixel moved (Shift: ten pixels), the first
+    /// press inspecting the middle of the step's subject; the view panned to keep it in sight.
+    fn arrows(
+        &mut self,
+        keys: picture_keys::Keys,
+        view: &ImageViewport,
+        session: &Session,
+        capture: &FrameCapture,
+    ) -> Option<Command> {
+        if keys.arrows == Vec2::ZERO {
+            return None;
+        }
+        let grid = capture.grid();
+        let size = (capture.width(), capture.height());
+        let to = match session.selection.pixel {
+            Some(from) => picture_keys::moved_pixel(from, keys.arrows, size),
+            None => {
+                let c = self.subject(session, capture).center();
+                let x = (c.x as u32).min(size.0.saturating_sub(1));
+                (x, grid.row((c.y as u32).min(size.1.saturating_sub(1))))
+            }
+        };
+        // Its centre on screen, kept a pixel's width inside the view.
+        let at = view.to_screen([to.0 as f32 + 0.5, grid.row(to.1) as f32 + 0.5]);
+        let inside = view.rect.shrink(view.zoom.min(view.rect.width() / 4.0));
+        if !inside.contains(at) {
+            let shift = (at - inside.clamp(at)) / view.zoom;
+            self.zoom = Some(view.zoom);
+            self.centre = Some(view.centre + shift);
+        }
+        Some(Command::Selection(SelectionCommand::SelectPixel(Some(to))))
+    }
+
+    /// Applies wheel zoom (about the cursor), a focused view's `+`/`−` (about the inspected
+    /// pixel, else the middle) and drag pan; returns the mapping to use.
     fn navigate(
         &mut self,
         ui: &Ui,
         (response, session): (&egui::Response, &Session),
-        rect: Rect,
+        (rect, keys): (Rect, picture_keys::Keys),
         capture: &FrameCapture,
     ) -> ImageViewport {
         let size = Vec2::new(capture.width() as f32, capture.height() as f32);
@@ -519,6 +557,16 @@ impl PixelView {
                 self.zoom = Some(zoom);
                 self.centre = Some(centre);
             }
+        }
+        if keys.zoom != 0 {
+            let new_zoom = picture_keys::zoomed(zoom, keys.zoom, range);
+            let held = session.selection.pixel.map_or(centre, |(x, y)| {
+                Vec2::new(x as f32 + 0.5, capture.grid().row(y) as f32 + 0.5)
+            });
+            centre = held - (held - centre) * zoom / new_zoom;
+            zoom = new_zoom;
+            self.zoom = Some(zoom);
+            self.centre = Some(centre);
         }
         if response.dragged() {
             centre -= response.drag_delta() / zoom;
