@@ -28,3 +28,33 @@ pub fn name_picture(
         egui::WidgetInfo::labeled(egui::Role::Image, true, format!("{view}: {words}"))
     });
 }
+
+/// A live region (ARIA's `aria-live="polite"`) saying `text`: a status node that a screen
+/// reader reads out when it appears and again whenever its words change, without taking the
+/// focus — the narration card on a new step, a lab's verdict as the student's code runs.
+/// `salt` tells the live regions of one `ui` apart; each keeps its id from frame to frame, so
+/// the same words are not read twice.
+pub fn announce(ui: &egui::Ui, salt: &str, text: &str) {
+    let id = ui.scope_id().with(("announced", salt));
+    ui.ctx().accesskit_node_builder(id, |node| {
+        node.set_role(egui::accesskit::Role::Status);
+        node.set_label(text.to_owned());
+        node.set_live(egui::accesskit::Live::Polite);
+    });
+}
+
+/// A lesson's text with its marks taken out, its paragraphs run together: what a screen
+/// reader reads of a narration (`**k_d·max(0, n·l)**` is read "kd·max(0, n·l)").
+#[must_use]
+pub fn plain_words(text: &str) -> String {
+    text.split("\n\n")
+        .map(|p| {
+            crate::vocabulary::notation::read_aloud(&crate::vocabulary::notation::parse_paragraph(
+                p,
+            ))
+        })
+        .map(|p| p.split_whitespace().collect::<Vec<_>>().join(" "))
+        .filter(|p| !p.is_empty())
+        .collect::<Vec<_>>()
+        .join(" ")
+}

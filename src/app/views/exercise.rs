@@ -361,26 +361,24 @@ pub fn card_part(
         .as_ref()
         .is_some_and(|p| session.progress.passed(&p.lesson, p.step));
     if let Some(s) = &session.exercise.findings.shortcut {
-        not_yet(ui, s.words(lang), style);
+        let verdict = s.words(lang);
+        super::alt::announce(ui, "verdict", &verdict);
+        not_yet(ui, verdict, style);
         return false;
     }
     if let Some(c) = &session.exercise.findings.curve {
         let color = if c.passed() { PASSED } else { NOT_YET };
-        ui.label(
-            RichText::new(words::curve_verdict(c, lang))
-                .size(style.size * 0.9)
-                .color(color),
-        );
+        let verdict = words::curve_verdict(c, lang);
+        super::alt::announce(ui, "verdict", &verdict);
+        ui.label(RichText::new(verdict).size(style.size * 0.9).color(color));
         return false;
     }
     match &session.exercise.findings.difference {
         Some(d) => {
             let color = if d.passed() { PASSED } else { NOT_YET };
-            ui.label(
-                RichText::new(words::verdict(d, lang))
-                    .size(style.size * 0.9)
-                    .color(color),
-            );
+            let verdict = words::verdict(d, lang);
+            super::alt::announce(ui, "verdict", &verdict);
+            ui.label(RichText::new(verdict).size(style.size * 0.9).color(color));
             if !d.passed()
                 && let Some((row, yours, theirs)) = session.exercise.findings.vertex
             {

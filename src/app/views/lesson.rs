@@ -173,6 +173,14 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
             });
         },
     );
+    // Read out on each new step (and its language), as the card's words change.
+    let said = format!(
+        "{}. {}. {}",
+        player.step + 1,
+        step.title.get(lang),
+        super::alt::plain_words(step.narration.get(lang))
+    );
+    super::alt::announce(ui, "narration", &said);
     let room = ui.available_height();
     let words = egui::ScrollArea::vertical()
         .id_salt("narration")

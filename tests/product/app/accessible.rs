@@ -116,3 +116,71 @@ fn the_picture_is_named_by_what_it_shows() {
     assert!(name.contains("At pixel (320, 200), "), "{name}");
     assert!(name.contains("RGB_8 = round(255·c) = ("), "{name}");
 }
+
+/// The live regions' words: each status node that a screen reader reads out as it changes.
+fn announced(h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>) -> Vec<String> {
+    h.query_all(by().predicate(|n: &NodeRef| {
+        n.role() == accesskit::Role::Status && n.live() == accesskit::Live::Polite
+    }))
+    .filter_map(|n| n.accesskit_node().label())
+    .collect()
+}
+
+/// The narration card and a lab's verdict are live regions: the step's number, title and
+/// words (marks taken out) are announced on each new step, and the verdict as the student's
+/// code changes it, without the focus moving.
+#[test]
+fn the_narration_and_the_verdict_are_announced_as_they_change() {
+    let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    h.run_steps(4);
+    let lesson = crate::app::lesson_of(&h);
+    // Lesson 10's first step says **L_a = k_a·I_a**, its second **L_d = k_d·(I/r²)·…**: each
+    // read with its marks taken out, the one on screen only.
+    let said = |h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>, k: usize| {
+        let all = announced(h);
+        let title = format!("{}. {}. ", k + 1, lesson.steps[k].title.en);
+        let step: Vec<&String> = all.iter().filter(|s| s.starts_with(&title)).collect();
+        assert_eq!(step.len(), 1, "step {k} is announced once: {all:?}");
+        step[0].clone()
+    };
+    let first = said(&h, 0);
+    assert!(
+        first.contains("La = ka·Ia") && !first.contains("**"),
+        "{first}"
+    );
+    crate::app::go_to_step(&mut h, 1);
+    let second = said(&h, 1);
+    assert!(second.contains("Ld = kd·(I/r²)·max(0, n·l)"), "{second}");
+    assert!(!announced(&h).iter().any(|s| s.starts_with("1. ")));
+    let k = crate::app::go_to_step_titled(&mut h, crate::app::SPECULAR_LAB);
+    h.run_steps(4);
+    assert!(
+        announced(&h)
+            .iter()
+            .any(|s| s.starts_with("Not yet: 162116 of 172800 pixels match")),
+        "{:?}",
+        announced(&h)
+    );
+    // Solved: the verdict's words change, and so what is announced.
+    let solved = crate::labs::solved_source(&h.state().session, true);
+    h.state_mut().panels.shader = true;
+    h.run_steps(3);
+    let source = h.get_by_role(accesskit::Role::MultilineTextInput);
+    source.focus();
+    h.run_steps(2);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.get_by_role(accesskit::Role::MultilineTextInput)
+        .type_text(&solved);
+    h.run_steps(3);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Enter);
+    h.run_steps(6);
+    assert_eq!(crate::app::step_of(&h), k);
+    assert!(
+        announced(&h)
+            .iter()
+            .any(|s| s.starts_with("Passed: all 172800 pixels match")),
+        "{:?}",
+        announced(&h)
+    );
+}
