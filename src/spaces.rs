@@ -174,6 +174,19 @@ pub const FATES: [([u8; 3], &str, &str); 6] = [
     ),
 ];
 
+/// How each fate's edges are drawn beside their colour, so that no fate is told by hue alone
+/// (WCAG 1.4.1): dash and gap lengths in points, alternating, in [`FATES`]' order; empty for a
+/// solid line. Drawn: solid; clipped: dashes; outside: dots; culled: dash and dot;
+/// degenerate: a long dash and two dots; not finite: short dashes.
+pub const FATE_DASHES: [&[f32]; FATES.len()] = [
+    &[],
+    &[7.0, 3.0],
+    &[1.5, 3.0],
+    &[8.0, 3.0, 1.5, 3.0],
+    &[10.0, 2.5, 1.5, 2.5, 1.5, 2.5],
+    &[3.0, 2.0],
+];
+
 /// Where a fate stands in [`FATES`].
 #[must_use]
 pub fn fate_index(f: &pipeline::capture::Fate) -> usize {

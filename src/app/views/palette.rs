@@ -31,6 +31,31 @@ pub fn fate_color(f: &pipeline::capture::Fate) -> Color32 {
     FATES[fate_index(f)].0
 }
 
+/// A segment of an edge whose triangle met fate `fate` (by `fate_index`): solid, or in that
+/// fate's dashes (`spaces::FATE_DASHES`, lengths × `scale`) when `dashed`.
+pub fn fate_segment(
+    painter: &egui::Painter,
+    ends: [egui::Pos2; 2],
+    stroke: egui::Stroke,
+    (fate, dashed, scale): (usize, bool, f32),
+) {
+    let pattern = crate::spaces::FATE_DASHES[fate];
+    if !dashed || pattern.is_empty() {
+        painter.line_segment(ends, stroke);
+        return;
+    }
+    let dash: Vec<f32> = pattern.iter().step_by(2).map(|d| d * scale).collect();
+    let gap: Vec<f32> = pattern
+        .iter()
+        .skip(1)
+        .step_by(2)
+        .map(|g| g * scale)
+        .collect();
+    painter.extend(egui::Shape::dashed_line_with_offset(
+        &ends, stroke, &dash, &gap, 0.0,
+    ));
+}
+
 /// The fates a triangle can meet, in the legend's order: colour, English name, Chinese name
 /// (`spaces::FATES`, the colours as egui's).
 pub const FATES: [(Color32, &str, &str); crate::spaces::FATES.len()] = {

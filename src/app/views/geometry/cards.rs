@@ -16,6 +16,10 @@ use crate::vocabulary::{Lang, Space, num, vec3, vec4};
 pub(super) struct Shown {
     /// Which fates (by `fate_index`) some drawn triangle met.
     pub fates: [bool; FATES.len()],
+    /// Every how many triangles one is drawn.
+    pub stride: usize,
+    /// Whether the triangles are dashed by their fate (few enough of them to be).
+    pub dashed: bool,
     /// Whether the view volume's edges are drawn.
     pub volume: bool,
     /// Whether a light is drawn.
@@ -26,7 +30,8 @@ pub(super) struct Shown {
 /// of it: what each colour drawn means, one item a row (a column) or as many a row as the
 /// view's width holds (a strip along the foot).
 pub(super) struct Legend {
-    items: Vec<(Color32, &'static str)>,
+    /// Each item's colour, words, and the fate whose dashes its line shows (by `fate_index`).
+    items: Vec<(Color32, &'static str, Option<usize>)>,
     /// Each item's width (the widest's), its line and words.
     item_w: f32,
     row: f32,
@@ -35,25 +40,27 @@ pub(super) struct Legend {
 }
 
 impl Legend {
-    /// The legend of what `shown` says is drawn; `stride`: every how many triangles one is.
-    pub(super) fn new(painter: &egui::Painter, shown: &Shown, lang: Lang, stride: usize) -> Self {
-        let mut items: Vec<(Color32, &'static str)> = FATES
+    /// The legend of what `shown` says is drawn.
+    pub(super) fn new(painter: &egui::Painter, shown: &Shown, lang: Lang) -> Self {
+        let stride = shown.stride;
+        let mut items: Vec<(Color32, &'static str, Option<usize>)> = FATES
             .iter()
             .zip(shown.fates)
-            .filter(|(_, drawn)| *drawn)
-            .map(|((color, en, zh), _)| (*color, lang.tr(en, zh)))
+            .enumerate()
+            .filter(|(_, (_, drawn))| *drawn)
+            .map(|(k, ((color, en, zh), _))| (*color, lang.tr(en, zh), shown.dashed.then_some(k)))
             .collect();
         if shown.volume {
-            items.push((palette::NEAR, lang.tr("near plane", "近平面")));
-            items.push((palette::FAR, lang.tr("far plane", "远平面")));
+            items.push((palette::NEAR, lang.tr("near plane", "近平面"), None));
+            items.push((palette::FAR, lang.tr("far plane", "远平面"), None));
         }
         if shown.lights {
-            items.push((palette::LIGHT, lang.tr("light", "光源")));
+            items.push((palette::LIGHT, lang.tr("light", "光源"), None));
         }
         let font = picture_font(painter.ctx(), 14.0);
         let item_w = items
             .iter()
-            .map(|(_, text)| {
+            .map(|(_, text, _)| {
                 let g = painter.layout_no_wrap((*text).to_owned(), font.clone(), Color32::WHITE);
                 g.size().x
             })
@@ -107,16 +114,17 @@ impl Legend {
         };
         let back = Rect::from_min_max(at.min, at.max - Vec2::new(0.0, note));
         painter.rect_filled(back, 4.0, Color32::from_black_alpha(150));
-        for (k, (color, text)) in self.items.iter().enumerate() {
+        for (k, (color, text, fate)) in self.items.iter().enumerate() {
             let (r, c) = (k / per_row, k % per_row);
             let p = Pos2::new(
                 back.left() + 8.0 + self.item_w * c as f32,
                 back.top() + 4.0 + self.row * (r as f32 + 0.5),
             );
-            painter.line_segment(
-                [p, p + Vec2::new(18.0 * scale, 0.0)],
-                Stroke::new(3.0, *color),
-            );
+            // The line as the picture draws it: a fate's in its dashes, a little longer so
+            // that the pattern shows.
+            let ends = [p, p + Vec2::new(18.0 * scale, 0.0)];
+            let pattern = (fate.unwrap_or(0), fate.is_some(), scale * 0.8);
+            palette::fate_segment(painter, ends, Stroke::new(3.0, *color), pattern);
             painter.text(
                 p + Vec2::new(24.0 * scale, 0.0),
                 Align2::LEFT_CENTER,

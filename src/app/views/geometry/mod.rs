@@ -55,6 +55,10 @@ impl Default for GeometryView {
 /// The most triangles drawn as wireframe (every k-th beyond that).
 const MAX_TRIANGLES: usize = 30_000;
 
+/// The most triangles drawn dashed (their fate's pattern, `spaces::FATE_DASHES`): each dashed
+/// edge is a dozen segments, so past this the fates are told by colour and the legend alone.
+const MOST_DASHED: usize = 4_000;
+
 /// Which vertex rows are the subject (see [`crate::spaces::subject`]).
 fn subject(capture: &FrameCapture, session: &Session, space: Space) -> Vec<bool> {
     let focus = session.selection.focus.as_deref().unwrap_or_default();
@@ -115,19 +119,22 @@ fn draw_volume(painter: &egui::Painter, cam: &Projector, v: &[Vec3; 8]) {
     }
 }
 
-/// Every `stride`-th triangle as three segments, coloured by its fate (the subject brighter);
-/// returns the screen box of the subject.
+/// Every `stride`-th triangle (as `shown` says) as three segments, coloured by its fate (the
+/// subject brighter) and dashed by it where `shown` is; returns the screen box of the subject.
 fn draw_triangles(
     painter: &egui::Painter,
     cam: &Projector,
     capture: &FrameCapture,
     points: &[Option<Vec3>],
-    (subject, stride): (&[bool], usize),
+    (subject, shown): (&[bool], &cards::Shown),
 ) -> Rect {
+    let (stride, dashed) = (shown.stride, shown.dashed);
     let mut seen = Rect::NOTHING;
+    let scale = super::picture_scale(painter.ctx());
     for prim in capture.primitives.iter().step_by(stride) {
         let focused = subject.get(prim.object as usize).copied().unwrap_or(false);
         let color = fate_color(&prim.fate);
+        let fate = (fate_index(&prim.fate), dashed, scale);
         let stroke = Stroke::new(
             if focused { 1.3 } else { 0.8 },
             if focused {
@@ -141,9 +148,9 @@ fn draw_triangles(
             .map(|r| points[r as usize].and_then(|p| cam.project(p)));
         if let [Some(a), Some(b), Some(c)] = p {
             // Separate segments: a joined outline of a sliver gets miter spikes.
-            painter.line_segment([a, b], stroke);
-            painter.line_segment([b, c], stroke);
-            painter.line_segment([c, a], stroke);
+            for ends in [[a, b], [b, c], [c, a]] {
+                palette::fate_segment(painter, ends, stroke, fate);
+            }
             if focused {
                 seen = seen.union(Rect::from_points(&[a, b, c]));
             }
@@ -152,7 +159,8 @@ fn draw_triangles(
     seen
 }
 
-/// What the legend names: the fates of the triangles drawn (every `stride`-th), the view
+/// What the legend names: the fates of the triangles drawn (every `stride`-th, as many as
+/// [`MAX_TRIANGLES`] allows), the view
 /// volume when drawn, the lights when this space has the world's lights and one has a gizmo
 /// around the subject's `sphere`.
 fn shown(
@@ -160,11 +168,14 @@ fn shown(
     space: Space,
     sphere: Option<(Vec3, f32)>,
     volume: bool,
-    stride: usize,
 ) -> cards::Shown {
+    let stride = capture.primitives.len().div_ceil(MAX_TRIANGLES).max(1);
     let mut fates = [false; FATES.len()];
+    let mut patterned = 0;
     for prim in capture.primitives.iter().step_by(stride) {
-        fates[fate_index(&prim.fate)] = true;
+        let k = fate_index(&prim.fate);
+        fates[k] = true;
+        patterned += usize::from(!crate::spaces::FATE_DASHES[k].is_empty());
     }
     let lights = match (world_into(capture, space), sphere) {
         (Some(m), Some((centre, radius))) => {
@@ -178,6 +189,8 @@ fn shown(
     };
     cards::Shown {
         fates,
+        stride,
+        dashed: patterned <= MOST_DASHED,
         volume,
         lights,
     }
@@ -247,9 +260,8 @@ impl GeometryView {
         let points = positions(capture, (from, space, eased), &subject);
         let sphere = bounds(capture, [space, from], &subject);
         let view_volume = volume(capture, space).filter(|_| t >= 1.0);
-        let stride = capture.primitives.len().div_ceil(MAX_TRIANGLES).max(1);
-        let shown = shown(capture, space, sphere, view_volume.is_some(), stride);
-        let legend = cards::Legend::new(&painter, &shown, lang, stride);
+        let shown = shown(capture, space, sphere, view_volume.is_some());
+        let legend = cards::Legend::new(&painter, &shown, lang);
         let (frame, legend_at) = clear_of_cards(ui.ctx(), rect, &own, &legend);
         let keys = self.navigate(ui, &response, frame);
         let mut cmds: Vec<Command> = vertex_keys(keys, session, capture).into_iter().collect();
@@ -267,7 +279,7 @@ impl GeometryView {
         if let Some(v) = &view_volume {
             draw_volume(&painter, &cam, v);
         }
-        let seen = draw_triangles(&painter, &cam, capture, &points, (&subject, stride));
+        let seen = draw_triangles(&painter, &cam, capture, &points, (&subject, &shown));
         let focused = session
             .selection
             .focus
