@@ -187,6 +187,67 @@ pub const FATE_DASHES: [&[f32]; FATES.len()] = [
     &[3.0, 2.0],
 ];
 
+/// What each fate's line is called, in English and in Chinese (for a legend in words).
+pub const FATE_LINES: [(&str, &str); FATES.len()] = [
+    ("solid", "实线"),
+    ("dashed", "虚线"),
+    ("dotted", "点线"),
+    ("dash-dot", "点划线"),
+    ("dash-dot-dot", "双点划线"),
+    ("short dashes", "短虚线"),
+];
+
+/// The fates that `capture`'s triangles met, each with its line in words, in [`FATES`]'
+/// order: "clipped: dashed · outside: dotted" — the key a picture drawn without a legend of
+/// its own leaves to the page.
+#[must_use]
+pub fn fates_in_words(capture: &pipeline::capture::FrameCapture, lang: Lang) -> String {
+    let mut met = [false; FATES.len()];
+    for prim in &capture.primitives {
+        met[fate_index(&prim.fate)] = true;
+    }
+    (0..FATES.len())
+        .filter(|&k| met[k])
+        .map(|k| {
+            let (_, en, zh) = FATES[k];
+            let (line_en, line_zh) = FATE_LINES[k];
+            match lang {
+                Lang::En => format!("{en}: {line_en}"),
+                Lang::Zh => format!("{zh}：{line_zh}"),
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(" · ")
+}
+
+/// The pieces of the segment `a`–`b` that `pattern` draws (dash and gap lengths as in
+/// [`FATE_DASHES`], × `scale`, repeated from `a`; the last dash cut at `b`): the whole segment
+/// for an empty pattern, a point-like one, or one so long that its dashes would be past
+/// counting. The app and the exported pictures dash by this one rule.
+#[must_use]
+pub fn dashed(a: [f32; 2], b: [f32; 2], pattern: &[f32], scale: f32) -> Vec<[[f32; 2]; 2]> {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let length = dx.hypot(dy);
+    let period = pattern.iter().sum::<f32>() * scale;
+    if pattern.is_empty() || !(period > 0.0) || !(length > 0.0) || length / period > 1e4 {
+        return vec![[a, b]];
+    }
+    let at = |t: f32| [a[0] + dx * t / length, a[1] + dy * t / length];
+    let mut pieces = Vec::new();
+    let mut t = 0.0;
+    for (k, len) in pattern.iter().enumerate().cycle() {
+        let end = (t + len * scale).min(length);
+        if k % 2 == 0 {
+            pieces.push([at(t), at(end)]);
+        }
+        t = end;
+        if t >= length {
+            break;
+        }
+    }
+    pieces
+}
+
 /// Where a fate stands in [`FATES`].
 #[must_use]
 pub fn fate_index(f: &pipeline::capture::Fate) -> usize {
@@ -242,4 +303,39 @@ pub fn subject(
         objects = (0..capture.objects.len()).map(|k| k == one).collect();
     }
     objects
+}
+
+#[cfg(test)]
+mod tests {
+    use super::dashed;
+
+    /// 7 on, 3 off from the start: a 20-long segment is lit on [0, 7] and [10, 17]; a 12-long
+    /// one's second dash is cut at its end; no pattern, or no length, is the whole segment.
+    #[test]
+    fn a_dashed_segment_is_lit_where_its_pattern_says() {
+        let along = |x: f32| [x, 0.0];
+        assert_eq!(
+            dashed(along(0.0), along(20.0), &[7.0, 3.0], 1.0),
+            vec![[along(0.0), along(7.0)], [along(10.0), along(17.0)]]
+        );
+        assert_eq!(
+            dashed(along(0.0), along(12.0), &[7.0, 3.0], 1.0),
+            vec![[along(0.0), along(7.0)], [along(10.0), along(12.0)]]
+        );
+        // Twice the scale: one dash of 14 fills a 12-long segment.
+        assert_eq!(
+            dashed(along(0.0), along(12.0), &[7.0, 3.0], 2.0),
+            vec![[along(0.0), along(12.0)]]
+        );
+        assert_eq!(
+            dashed(along(0.0), along(5.0), &[], 1.0),
+            vec![[along(0.0), along(5.0)]]
+        );
+        assert_eq!(dashed(along(3.0), along(3.0), &[1.0, 1.0], 1.0).len(), 1);
+        // Down a diagonal: 3-4-5, so the first dash of 5 ends at (3, 4).
+        assert_eq!(
+            dashed([0.0, 0.0], [6.0, 8.0], &[5.0, 5.0], 1.0),
+            vec![[[0.0, 0.0], [3.0, 4.0]]]
+        );
+    }
 }

@@ -151,7 +151,8 @@ fn watched(capture: &FrameCapture, z: u32, lang: Lang) -> Option<RgbaImage> {
 
 /// The legend of step `k`'s drawings that its picture leaves to the page or slide around it
 /// (drawn there at their own size, clear of the subject): the lighting vectors' names, when
-/// the step's inspected pixel draws them; the variable picture's colours, when it draws one.
+/// the step's inspected pixel draws them; the variable picture's colours, when it draws one;
+/// the triangles' fates and their lines, on a geometry stage.
 #[must_use]
 pub fn legend(lesson: &Lesson, k: usize, capture: &FrameCapture, lang: Lang) -> Vec<String> {
     let (w, h) = (capture.width(), capture.height());
@@ -162,6 +163,14 @@ pub fn legend(lesson: &Lesson, k: usize, capture: &FrameCapture, lang: Lang) -> 
         .unwrap_or_default();
     if let Some(picture) = capture.shaders.as_ref().and_then(|s| s.watch.as_ref()) {
         lines.push(watch_legend(picture, lang));
+    }
+    // A geometry stage's triangles, dashed by their fates: the key to the lines.
+    if lesson.steps[k]
+        .stage
+        .and_then(crate::vocabulary::Stage::space)
+        .is_some()
+    {
+        lines.push(spaces::fates_in_words(capture, lang));
     }
     lines
 }
@@ -206,6 +215,23 @@ fn watch_legend(picture: &pipeline::capture::WatchPicture, lang: Lang) -> String
     }
 }
 
+/// The polylines of the segment `a`–`b` (picture pixels) in a pen's colour and width, solid
+/// with no dashes, else in them (`spaces::dashed`, as the app dashes a fate's edges).
+fn pen_segments(
+    a: [f32; 2],
+    b: [f32; 2],
+    (color, width, dashes): ([u8; 4], f32, &[f32]),
+) -> impl Iterator<Item = Shape> {
+    spaces::dashed(a, b, dashes, 1.0)
+        .into_iter()
+        .map(move |[p, q]| Shape::Polyline {
+            points: vec![p, q],
+            closed: false,
+            color,
+            width,
+        })
+}
+
 /// The size of a geometry stage's picture.
 const SPACE_PICTURE: (u32, u32) = (800, 600);
 
@@ -240,26 +266,21 @@ fn space_picture(
         })
     };
     let mut shapes = Vec::new();
-    let mut segment = |a: Vec3, b: Vec3, color: [u8; 4], width: f32| {
+    // A segment in world coordinates, drawn with a pen (colour, width, dashes).
+    let mut segment = |a: Vec3, b: Vec3, pen: ([u8; 4], f32, &[f32])| {
         if let (Some(a), Some(b)) = (project(a), project(b)) {
-            shapes.push(Shape::Polyline {
-                points: vec![a, b],
-                closed: false,
-                color,
-                width,
-            });
+            shapes.extend(pen_segments(a, b, pen));
         }
     };
     if let Some(v) = spaces::volume(capture, space) {
+        let (near, far) = (
+            ink(crate::palette::NEAR, 255),
+            ink(crate::palette::FAR, 255),
+        );
         for i in 0..4 {
-            segment(v[i], v[(i + 1) % 4], ink(crate::palette::NEAR, 255), 1.5);
-            segment(
-                v[4 + i],
-                v[4 + (i + 1) % 4],
-                ink(crate::palette::FAR, 255),
-                1.2,
-            );
-            segment(v[i], v[4 + i], ink(crate::palette::FAR, 255), 1.2);
+            segment(v[i], v[(i + 1) % 4], (near, 1.5, &[]));
+            segment(v[4 + i], v[4 + (i + 1) % 4], (far, 1.2, &[]));
+            segment(v[i], v[4 + i], (far, 1.2, &[]));
         }
     }
     let points: Vec<Option<Vec3>> = capture
@@ -285,16 +306,16 @@ fn space_picture(
             (ink(rgb, 80), 0.8)
         };
         if let [Some(a), Some(b), Some(c)] = prim.vertices.map(|i| points[i as usize]) {
-            segment(a, b, color, width);
-            segment(b, c, color, width);
-            segment(c, a, color, width);
+            for [p, q] in [[a, b], [b, c], [c, a]] {
+                segment(p, q, (color, width, spaces::FATE_DASHES[fate]));
+            }
         }
     }
     if normals && space == Space::World {
         for (v, p) in capture.vertices.iter().zip(&points) {
             if let Some(p) = p {
                 let tip = *p + v.normal_world * (radius * 0.12);
-                segment(*p, tip, ink([90, 210, 230], 255), 1.5);
+                segment(*p, tip, (ink([90, 210, 230], 255), 1.5, &[]));
             }
         }
     }
@@ -305,7 +326,7 @@ fn space_picture(
     ];
     let length = radius * 0.6;
     for (axis, rgb, _) in axes {
-        segment(Vec3::ZERO, axis * length, ink(rgb, 255), 2.0);
+        segment(Vec3::ZERO, axis * length, (ink(rgb, 255), 2.0, &[]));
     }
     let labels: Vec<([f32; 2], [u8; 3], &str)> = axes
         .iter()

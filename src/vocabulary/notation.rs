@@ -343,51 +343,29 @@ fn merge(nodes: Vec<Node>) -> Vec<Node> {
     out
 }
 
-/// The text of nodes with the marks taken out (`x_i` → `xi`): for searching and measuring.
+/// The text of nodes with the marks taken out (`x_i` → `xi`): for searching and accessibility.
 #[must_use]
 pub fn plain_text(nodes: &[Node]) -> String {
-    text_of(nodes, false)
-}
-
-/// The text of nodes as a screen reader should read it: the marks taken out as in
-/// [`plain_text`], and a fraction's numerator and denominator in brackets where they hold
-/// more than one term, so that **h = (l+v)/|l+v|** typeset as a fraction is not read
-/// "h = l + v/|l + v|".
-#[must_use]
-pub fn read_aloud(nodes: &[Node]) -> String {
-    text_of(nodes, true)
-}
-
-fn text_of(nodes: &[Node], grouped: bool) -> String {
     let mut s = String::new();
     for n in nodes {
         match n {
             Node::Text(t) | Node::Code(t) => s.push_str(t),
             Node::Script { base, sub, sup } => {
-                s.push_str(&text_of(base, grouped));
+                s.push_str(&plain_text(base));
                 if let Some(x) = sub {
-                    s.push_str(&text_of(x, grouped));
+                    s.push_str(&plain_text(x));
                 }
                 if let Some(x) = sup {
                     s.push('^');
-                    s.push_str(&text_of(x, grouped));
+                    s.push_str(&plain_text(x));
                 }
             }
             Node::Frac { num, den } => {
-                let part = |nodes: &[Node]| {
-                    let t = text_of(nodes, grouped);
-                    let several = t.trim().contains([' ', '+', '−', '-', '·', '*', '/']);
-                    if grouped && several {
-                        format!("({})", t.trim())
-                    } else {
-                        t
-                    }
-                };
-                s.push_str(&part(num));
+                s.push_str(&plain_text(num));
                 s.push('/');
-                s.push_str(&part(den));
+                s.push_str(&plain_text(den));
             }
-            Node::Formula(inner) => s.push_str(&text_of(inner, grouped)),
+            Node::Formula(inner) => s.push_str(&plain_text(inner)),
         }
     }
     s
@@ -399,16 +377,6 @@ mod tests {
 
     fn t(s: &str) -> Node {
         Node::Text(s.to_owned())
-    }
-
-    /// Read aloud, a fraction of sums keeps its brackets; a plain one and the measured text
-    /// do not take any.
-    #[test]
-    fn a_fraction_read_aloud_keeps_its_terms_together() {
-        let half = parse("h = (l + v)/|l + v|", true);
-        assert_eq!(super::read_aloud(&half), "h = (l + v)/(|l + v|)");
-        assert_eq!(super::read_aloud(&parse("1/2", true)), "1/2");
-        assert_eq!(super::plain_text(&parse("1/2", true)), "1/2");
     }
 
     #[test]

@@ -29,32 +29,40 @@ pub fn name_picture(
     });
 }
 
-/// A live region (ARIA's `aria-live="polite"`) saying `text`: a status node that a screen
-/// reader reads out when it appears and again whenever its words change, without taking the
-/// focus — the narration card on a new step, a lab's verdict as the student's code runs.
-/// `salt` tells the live regions of one `ui` apart; each keeps its id from frame to frame, so
-/// the same words are not read twice.
-pub fn announce(ui: &egui::Ui, salt: &str, text: &str) {
-    let id = ui.scope_id().with(("announced", salt));
-    ui.ctx().accesskit_node_builder(id, |node| {
-        node.set_role(egui::accesskit::Role::Status);
-        node.set_label(text.to_owned());
-        node.set_live(egui::accesskit::Live::Polite);
-    });
-}
+/// Seconds a live region's words must be gone for before the same words are said again.
+pub const GONE: f64 = 1.0;
 
-/// A lesson's text with its marks taken out, its paragraphs run together: what a screen
-/// reader reads of a narration (`**k_d·max(0, n·l)**` is read "kd·max(0, n·l)").
-#[must_use]
-pub fn plain_words(text: &str) -> String {
-    text.split("\n\n")
-        .map(|p| {
-            crate::vocabulary::notation::read_aloud(&crate::vocabulary::notation::parse_paragraph(
-                p,
-            ))
-        })
-        .map(|p| p.split_whitespace().collect::<Vec<_>>().join(" "))
-        .filter(|p| !p.is_empty())
-        .collect::<Vec<_>>()
-        .join(" ")
+/// Makes `response`'s node, showing `text`, a live region (ARIA's `aria-live="polite"`) in the
+/// frame its words are new: a screen reader reads them out then, without the focus moving —
+/// the narration card's title on a new step, a lab's verdict as the student's code changes it.
+/// Only then: AT-SPI reads a live node out each time it is added to the tree, and egui may
+/// add a label's node anew in a frame where nothing about it changed. Words are new when they
+/// differ from the last `salt` said, or when they were not shown for [`GONE`] (a pass that is
+/// not seen does not count): a verdict that is left out of a few frames while an animated
+/// lab's frame is checked again is not said again. The widget's own node, so that its words
+/// stand once in the tree.
+pub fn announce(response: &egui::Response, (salt, text): (&'static str, &str)) {
+    let ctx = &response.ctx;
+    // Not said while no screen reader listens, nor in a pass that shows nothing (an area's
+    // first frame sizes it unseen).
+    if ctx.accesskit_node_builder(response.id, |_| ()).is_none() {
+        return;
+    }
+    let key = egui::Id::unique(("announced", salt));
+    let now = ctx.input(|i| i.time);
+    let new = ctx.data_mut(|d| {
+        // The words, when they were said, when they were last shown.
+        let last = d.get_temp::<(String, f64, f64)>(key);
+        let said = match last {
+            Some((t, said, shown)) if t == text && now - shown <= GONE => said,
+            _ => now,
+        };
+        d.insert_temp(key, (text.to_owned(), said, now));
+        said == now
+    });
+    if new {
+        ctx.accesskit_node_builder(response.id, |node| {
+            node.set_live(egui::accesskit::Live::Polite);
+        });
+    }
 }

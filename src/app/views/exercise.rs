@@ -318,8 +318,8 @@ fn findings_lines(ui: &mut Ui, session: &Session, style: &Style) {
 }
 
 /// A line of what is not yet right, in the card's colour for it.
-fn not_yet(ui: &mut Ui, text: String, style: &Style) {
-    ui.label(RichText::new(text).size(style.size * 0.9).color(NOT_YET));
+fn not_yet(ui: &mut Ui, text: String, style: &Style) -> egui::Response {
+    ui.label(RichText::new(text).size(style.size * 0.9).color(NOT_YET))
 }
 
 /// The card's part of an exercise step: the task, where to write, the verdict and the first
@@ -362,23 +362,22 @@ pub fn card_part(
         .is_some_and(|p| session.progress.passed(&p.lesson, p.step));
     if let Some(s) = &session.exercise.findings.shortcut {
         let verdict = s.words(lang);
-        super::alt::announce(ui, "verdict", &verdict);
-        not_yet(ui, verdict, style);
+        super::alt::announce(&not_yet(ui, verdict.clone(), style), ("verdict", &verdict));
         return false;
     }
     if let Some(c) = &session.exercise.findings.curve {
         let color = if c.passed() { PASSED } else { NOT_YET };
         let verdict = words::curve_verdict(c, lang);
-        super::alt::announce(ui, "verdict", &verdict);
-        ui.label(RichText::new(verdict).size(style.size * 0.9).color(color));
+        let shown = ui.label(RichText::new(&verdict).size(style.size * 0.9).color(color));
+        super::alt::announce(&shown, ("verdict", &verdict));
         return false;
     }
     match &session.exercise.findings.difference {
         Some(d) => {
             let color = if d.passed() { PASSED } else { NOT_YET };
             let verdict = words::verdict(d, lang);
-            super::alt::announce(ui, "verdict", &verdict);
-            ui.label(RichText::new(verdict).size(style.size * 0.9).color(color));
+            let shown = ui.label(RichText::new(&verdict).size(style.size * 0.9).color(color));
+            super::alt::announce(&shown, ("verdict", &verdict));
             if !d.passed()
                 && let Some((row, yours, theirs)) = session.exercise.findings.vertex
             {

@@ -169,18 +169,13 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
                 out.fold = true;
             }
             ui.with_layout(egui::Layout::left_to_right(egui::Align::Min), |ui| {
-                ui.add(egui::Label::new(title).wrap());
+                // Read out on each new step (and its language): the card's words follow it.
+                let words = title.text().to_owned();
+                let shown = ui.add(egui::Label::new(title).wrap());
+                super::alt::announce(&shown, ("narration", &words));
             });
         },
     );
-    // Read out on each new step (and its language), as the card's words change.
-    let said = format!(
-        "{}. {}. {}",
-        player.step + 1,
-        step.title.get(lang),
-        super::alt::plain_words(step.narration.get(lang))
-    );
-    super::alt::announce(ui, "narration", &said);
     let room = ui.available_height();
     let words = egui::ScrollArea::vertical()
         .id_salt("narration")

@@ -44,16 +44,10 @@ pub fn fate_segment(
         painter.line_segment(ends, stroke);
         return;
     }
-    let dash: Vec<f32> = pattern.iter().step_by(2).map(|d| d * scale).collect();
-    let gap: Vec<f32> = pattern
-        .iter()
-        .skip(1)
-        .step_by(2)
-        .map(|g| g * scale)
-        .collect();
-    painter.extend(egui::Shape::dashed_line_with_offset(
-        &ends, stroke, &dash, &gap, 0.0,
-    ));
+    let [a, b] = ends.map(|p| [p.x, p.y]);
+    for [p, q] in crate::spaces::dashed(a, b, pattern, scale) {
+        painter.line_segment([p.into(), q.into()], stroke);
+    }
 }
 
 /// The fates a triangle can meet, in the legend's order: colour, English name, Chinese name
