@@ -58,12 +58,23 @@ impl Session {
     }
 
     /// Takes a render's reference (none for a draft: the last one stays), compares the frame on
-    /// screen with it, and keeps the student's code — as passed when every pixel matches.
-    pub(super) fn receive_reference(&mut self, reference: Option<Arc<FrameCapture>>) {
+    /// screen with it, and keeps the student's code — as passed when every pixel matches. A
+    /// render drawn for the step before (`this_step` false: it arrives after the step changed)
+    /// is judged by nothing: its frame and reference are the other step's, and a verdict from
+    /// them could pass this step's lab.
+    pub(super) fn receive_reference(
+        &mut self,
+        reference: Option<Arc<FrameCapture>>,
+        this_step: bool,
+    ) {
         let Some(exercise) = self.current_exercise().cloned() else {
             self.exercise = Comparison::default();
             return;
         };
+        if !this_step {
+            self.exercise.findings = Findings::default();
+            return;
+        }
         if reference.is_some() {
             self.exercise.reference = reference;
         }
@@ -132,5 +143,75 @@ impl Session {
                 spec.scene.set_hook(&hook);
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::app::command::LessonCommand;
+    use crate::app::session::Command;
+
+    /// Lesson 10's light casters lab, entered from the specular lab while that lab's frame is
+    /// still being drawn: that frame, when it arrives, is the other lab's (its scene, its
+    /// reference), and this lab is judged by nothing until its own frame comes — before, the
+    /// card showed the specular lab's "Not yet: 162116 of 172800" under the light casters.
+    #[test]
+    fn a_frame_drawn_for_the_step_before_is_not_judged_by_this_one() {
+        let path =
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("lessons/10-blinn-phong.toml");
+        let doc = crate::lesson::load_file(&path).expect("lesson 10 loads");
+        let mut s = Session::with_document(doc, "test", None);
+        let lab = s
+            .lesson
+            .as_ref()
+            .and_then(|p| {
+                p.lesson
+                    .steps
+                    .iter()
+                    .position(|st| st.title.en.starts_with("Lab: the specular"))
+            })
+            .expect("the specular lab");
+        s.apply(Command::Lesson(LessonCommand::GoToStep(lab)));
+        // The job the worker would be running as the student presses →.
+        let before = s
+            .job()
+            .run(&mut crate::app::worker::RecycledCaptures::default())
+            .result
+            .expect("the specular lab renders");
+        s.apply(Command::Lesson(LessonCommand::GoToStep(lab + 1)));
+        let own = s
+            .exercise
+            .reference
+            .clone()
+            .expect("the light casters' reference");
+        let verdict = |s: &Session| s.exercise.findings.difference.as_ref().map(|d| d.passed());
+        assert_eq!(
+            verdict(&s),
+            Some(false),
+            "the light casters' own starter is not yet right"
+        );
+        // The late frame: shown (as `receive` shows any newer frame), not judged.
+        s.capture = Some(before.capture.clone());
+        s.receive_reference(before.reference.clone(), false);
+        assert_eq!(
+            verdict(&s),
+            None,
+            "the specular lab's frame judged the light casters"
+        );
+        let kept = s.exercise.reference.as_ref().expect("a reference");
+        assert!(
+            Arc::ptr_eq(kept, &own),
+            "the specular lab's reference was kept as this one's"
+        );
+        // Its own frame is judged again.
+        let now = s
+            .job()
+            .run(&mut crate::app::worker::RecycledCaptures::default())
+            .result
+            .expect("the light casters lab renders");
+        s.capture = Some(now.capture);
+        s.receive_reference(now.reference, true);
+        assert_eq!(verdict(&s), Some(false));
     }
 }

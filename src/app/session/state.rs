@@ -68,6 +68,10 @@ pub struct Session {
     /// Counts the steps entered: a view that frames or opens something per step resets when it
     /// changes.
     pub step_entered: u64,
+    /// The generation of the first render asked for on the step on screen: a render older than
+    /// it was drawn for the step before, and its frame is not judged by this step's exercise
+    /// (nor its reference kept as this step's).
+    step_generation: u64,
     /// A parameter is being dragged: each render is a draft (one sample per pixel, shaded once
     /// per 2×2 block but the inspected pixel, the observer at a quarter of its pixels) so
     /// that the picture keeps up with the hand; letting go renders the full frame.
@@ -126,6 +130,7 @@ impl Session {
             dropped_error: None,
             worker,
             step_entered: 0,
+            step_generation: generation,
             drafting: false,
             drag_from: None,
             shown_draft: false,
@@ -233,6 +238,7 @@ impl Session {
         let mut spec = spec;
         self.restore_code(&mut spec);
         self.spec = spec;
+        self.step_generation = self.generation + 1;
         self.request_render();
     }
 
@@ -444,7 +450,7 @@ impl Session {
                     old.1.into_iter().for_each(|c| w.recycle(c, true));
                 }
                 self.shown_draft = r.draft;
-                self.receive_reference(r.reference);
+                self.receive_reference(r.reference, generation >= self.step_generation);
                 self.view_resolution.capture = r.view_resolution;
                 self.buffers = r.buffers;
                 self.variants = r.variants;
