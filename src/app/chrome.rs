@@ -407,13 +407,20 @@ impl PipelensApp {
             ui.label(RichText::new(written).monospace().strong());
         };
         egui::Window::new(lang.tr("Keyboard shortcuts", "键盘快捷键"))
+            // Over the narration card (a foreground area), opened after it: nothing covers
+            // the list.
+            .order(egui::Order::Foreground)
             .open(&mut open)
             .collapsible(false)
             .resizable(false)
             .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
             .show(ctx, |ui| {
+                // As tall as the list, up to most of the window (egui would keep a scrolled
+                // area far lower).
+                let most = ctx.content_rect().height() * 0.8;
                 egui::ScrollArea::vertical()
-                    .max_height(ctx.content_rect().height() * 0.8)
+                    .max_height(most)
+                    .min_scrolled_height(most)
                     .show(ui, |ui| {
                         egui::Grid::new("keys")
                             .striped(true)
