@@ -415,6 +415,9 @@ impl PipelensApp {
             .resizable(false)
             .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
             .show(ctx, |ui| {
+                // Chrome, at its normal size in classroom mode too: in classroom type the
+                // table was wider than a 1366-point window and its keys were cut off.
+                super::style::chrome_style(ui);
                 // As tall as the list, up to most of the window (egui would keep a scrolled
                 // area far lower).
                 let most = ctx.content_rect().height() * 0.8;
