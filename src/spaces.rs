@@ -197,17 +197,24 @@ pub const FATE_LINES: [(&str, &str); FATES.len()] = [
     ("short dashes", "短虚线"),
 ];
 
+/// How many of every `stride`-th of `capture`'s triangles met each fate, in [`FATES`]' order.
+#[must_use]
+pub fn fates_met(capture: &pipeline::capture::FrameCapture, stride: usize) -> [usize; FATES.len()] {
+    let mut met = [0; FATES.len()];
+    for prim in capture.primitives.iter().step_by(stride.max(1)) {
+        met[fate_index(&prim.fate)] += 1;
+    }
+    met
+}
+
 /// The fates that `capture`'s triangles met, each with its line in words, in [`FATES`]'
 /// order: "clipped: dashed · outside: dotted" — the key a picture drawn without a legend of
 /// its own leaves to the page.
 #[must_use]
 pub fn fates_in_words(capture: &pipeline::capture::FrameCapture, lang: Lang) -> String {
-    let mut met = [false; FATES.len()];
-    for prim in &capture.primitives {
-        met[fate_index(&prim.fate)] = true;
-    }
+    let met = fates_met(capture, 1);
     (0..FATES.len())
-        .filter(|&k| met[k])
+        .filter(|&k| met[k] > 0)
         .map(|k| {
             let (_, en, zh) = FATES[k];
             let (line_en, line_zh) = FATE_LINES[k];

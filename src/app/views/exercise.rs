@@ -282,10 +282,8 @@ fn picture(
     let place = (i == 0).then_some(super::picture_keys::Place::Beside);
     let keys = super::picture_keys::take(ui, &response, place);
     super::picture_keys::ring(ui, at, keys);
-    let moved = (keys.arrows != Vec2::ZERO).then(|| match session.selection.pixel {
-        Some(from) => super::picture_keys::moved_pixel(from, keys.arrows, (w, h)),
-        None => (w / 2, h / 2),
-    });
+    let from = session.selection.pixel;
+    let moved = super::picture_keys::arrowed_pixel(keys, from, (w, h), || (w / 2, h / 2));
     let pick = pick
         .or(moved)
         .map(|p| Command::Selection(SelectionCommand::SelectPixel(Some(p))));

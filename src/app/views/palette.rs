@@ -31,16 +31,18 @@ pub fn fate_color(f: &pipeline::capture::Fate) -> Color32 {
     FATES[fate_index(f)].0
 }
 
-/// A segment of an edge whose triangle met fate `fate` (by `fate_index`): solid, or in that
-/// fate's dashes (`spaces::FATE_DASHES`, lengths × `scale`) when `dashed`.
+/// A segment of an edge in the dashes of fate `fate` (by `fate_index`; `spaces::FATE_DASHES`,
+/// lengths × `scale`); solid for none, or a fate drawn solid.
 pub fn fate_segment(
     painter: &egui::Painter,
     ends: [egui::Pos2; 2],
     stroke: egui::Stroke,
-    (fate, dashed, scale): (usize, bool, f32),
+    (fate, scale): (Option<usize>, f32),
 ) {
-    let pattern = crate::spaces::FATE_DASHES[fate];
-    if !dashed || pattern.is_empty() {
+    let pattern = fate.map_or(&[][..], |k| crate::spaces::FATE_DASHES[k]);
+    // `spaces::dashed` would give the whole segment too, through a vector: not for each edge
+    // of tens of thousands of solid triangles a frame.
+    if pattern.is_empty() {
         painter.line_segment(ends, stroke);
         return;
     }

@@ -193,6 +193,21 @@ pub fn moved_pixel(from: (u32, u32), arrows: Vec2, (width, height): (u32, u32)) 
     (x as u32, y as u32)
 }
 
+/// The pixel a focused picture's arrows inspect: `from` moved ([`moved_pixel`]), or, on the
+/// first press with none inspected, `start` (the middle of what the picture shows); none
+/// without an arrow.
+pub fn arrowed_pixel(
+    keys: Keys,
+    from: Option<(u32, u32)>,
+    size: (u32, u32),
+    start: impl FnOnce() -> (u32, u32),
+) -> Option<(u32, u32)> {
+    (keys.arrows != Vec2::ZERO).then(|| match from {
+        Some(from) => moved_pixel(from, keys.arrows, size),
+        None => start(),
+    })
+}
+
 /// The vertex `]`/`[` pick, `steps` on from `from` (none yet: the first, or the last going
 /// back), wrapping round the `count` vertices.
 #[must_use]

@@ -123,8 +123,12 @@ impl Legend {
             // The line as the picture draws it: a fate's in its dashes, a little longer so
             // that the pattern shows.
             let ends = [p, p + Vec2::new(18.0 * scale, 0.0)];
-            let pattern = (fate.unwrap_or(0), fate.is_some(), scale * 0.8);
-            palette::fate_segment(painter, ends, Stroke::new(3.0, *color), pattern);
+            palette::fate_segment(
+                painter,
+                ends,
+                Stroke::new(3.0, *color),
+                (*fate, scale * 0.8),
+            );
             painter.text(
                 p + Vec2::new(24.0 * scale, 0.0),
                 Align2::LEFT_CENTER,

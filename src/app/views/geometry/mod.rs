@@ -134,7 +134,7 @@ fn draw_triangles(
     for prim in capture.primitives.iter().step_by(stride) {
         let focused = subject.get(prim.object as usize).copied().unwrap_or(false);
         let color = fate_color(&prim.fate);
-        let fate = (fate_index(&prim.fate), dashed, scale);
+        let fate = (dashed.then(|| fate_index(&prim.fate)), scale);
         let stroke = Stroke::new(
             if focused { 1.3 } else { 0.8 },
             if focused {
@@ -170,13 +170,12 @@ fn shown(
     volume: bool,
 ) -> cards::Shown {
     let stride = capture.primitives.len().div_ceil(MAX_TRIANGLES).max(1);
-    let mut fates = [false; FATES.len()];
-    let mut patterned = 0;
-    for prim in capture.primitives.iter().step_by(stride) {
-        let k = fate_index(&prim.fate);
-        fates[k] = true;
-        patterned += usize::from(!crate::spaces::FATE_DASHES[k].is_empty());
-    }
+    let met = crate::spaces::fates_met(capture, stride);
+    let fates = met.map(|n| n > 0);
+    let patterned: usize = (0..FATES.len())
+        .filter(|&k| !crate::spaces::FATE_DASHES[k].is_empty())
+        .map(|k| met[k])
+        .sum();
     let lights = match (world_into(capture, space), sphere) {
         (Some(m), Some((centre, radius))) => {
             let world_centre = m.inverse().transform_point3(centre);

@@ -491,19 +491,13 @@ impl PixelView {
         session: &Session,
         capture: &FrameCapture,
     ) -> Option<Command> {
-        if keys.arrows == Vec2::ZERO {
-            return None;
-        }
         let grid = capture.grid();
         let size = (capture.width(), capture.height());
-        let to = match session.selection.pixel {
-            Some(from) => picture_keys::moved_pixel(from, keys.arrows, size),
-            None => {
-                let c = self.subject(session, capture).center();
-                let x = (c.x as u32).min(size.0.saturating_sub(1));
-                (x, grid.row((c.y as u32).min(size.1.saturating_sub(1))))
-            }
-        };
+        let to = picture_keys::arrowed_pixel(keys, session.selection.pixel, size, || {
+            let c = self.subject(session, capture).center();
+            let x = (c.x as u32).min(size.0.saturating_sub(1));
+            (x, grid.row((c.y as u32).min(size.1.saturating_sub(1))))
+        })?;
         // Its centre on screen, kept a pixel's width inside the view.
         let at = view.to_screen([to.0 as f32 + 0.5, grid.row(to.1) as f32 + 0.5]);
         let inside = view.rect.shrink(view.zoom.min(view.rect.width() / 4.0));
