@@ -87,6 +87,57 @@ pub fn report(ctx: &egui::Context, title: &str, frame_ms: Option<f64>, share: f3
     }
 }
 
+/// Writes the page's words that changed ([`views::alt::PageWords`]) into their elements beside
+/// the canvas (`web/index.html`), their language marked (`lang`, on the words' container and the
+/// document), and names eframe's text agent — the hidden `<input>` beside the canvas that takes
+/// the keys typed — in that language (WCAG 4.1.2: a form field has a name); nothing on the
+/// desktop, whose screen readers read AccessKit's tree.
+///
+/// [`views::alt::PageWords`]: super::views::alt::PageWords
+pub fn show_page_words(
+    changed: &[(super::views::alt::Part, String)],
+    lang: crate::vocabulary::Lang,
+) {
+    #[cfg(target_arch = "wasm32")]
+    if let Some(document) = web_sys::window()
+        .and_then(|w| w.document())
+        .filter(|_| !changed.is_empty())
+    {
+        let tag = lang.tag();
+        let agent = document
+            .get_element_by_id("pipelens")
+            .and_then(|canvas| canvas.next_element_sibling())
+            .filter(|e| e.tag_name().eq_ignore_ascii_case("input"));
+        if let Some(input) = agent {
+            let name = lang.tr(
+                "pipelens: the keys typed into the app",
+                "pipelens：输入应用的按键",
+            );
+            if input.get_attribute("aria-label").as_deref() != Some(name) {
+                let _ = input.set_attribute("aria-label", name);
+            }
+        }
+        for element in [
+            document.document_element(),
+            document.get_element_by_id("pipelens-words"),
+        ]
+        .into_iter()
+        .flatten()
+        {
+            if element.get_attribute("lang").as_deref() != Some(tag) {
+                let _ = element.set_attribute("lang", tag);
+            }
+        }
+        for (part, words) in changed {
+            if let Some(element) = document.get_element_by_id(part.id()) {
+                element.set_text_content(Some(words));
+            }
+        }
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    let _ = (changed, lang);
+}
+
 /// With `PIPELENS_FRAME_LOG` set, each new frame's render time goes to standard error as
 /// `frame: 23.1 ms (title)`: the desktop's counterpart of the page's `data-frame-ms`, read by
 /// `scripts/native-frames.sh` to measure the app as it runs, its window painting.

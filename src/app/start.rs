@@ -149,6 +149,8 @@ pub async fn start(
             canvas,
             eframe::WebOptions::default(),
             Box::new(move |cc| {
+                // The page's own words beside the canvas, for a screen reader (views::alt).
+                super::views::alt::keep_page_words(&cc.egui_ctx);
                 Ok(Box::new(create(
                     cc,
                     crate::lesson::Document::Lesson(Box::new(doc)),

@@ -287,6 +287,10 @@ impl PipelensApp {
             self.narrated(out);
         }
         self.animate(ui.ctx());
+        // What the frame showed, in words beside a page's canvas (`views::alt::PageWords`).
+        views::lesson::for_the_page(ui.ctx(), &self.session);
+        let changed = views::alt::settle_page_words(ui.ctx());
+        platform::show_page_words(&changed, self.session.lang);
         // A parameter dragged (a slider, a number): drafts until the pointer is let go, then the
         // full frame.
         if !ui.ctx().input(|i| i.pointer.any_down()) {

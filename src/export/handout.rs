@@ -223,7 +223,7 @@ pub fn html(lesson: &Lesson, pages: &[StepPage], lang: Lang, answers: bool) -> S
     format!(
         "<!doctype html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\">\
          <meta name=\"viewport\" content=\"width=device-width\"><title>{title}</title>\n<style>\n{}{STYLE}{}</style></head><body>\n{h}",
-        if lang == Lang::Zh { "zh-CN" } else { "en" },
+        lang.tag(),
         cjk_font_face(lang, &format!("{title}{h}")),
         super::listing::STYLE
     )

@@ -40,6 +40,16 @@ impl Lang {
         }
     }
 
+    /// The language's BCP 47 tag, as a document's `lang` attribute takes it: `en`, `zh-Hans`
+    /// (Chinese in simplified characters, as the interface and the course notes are written).
+    #[must_use]
+    pub fn tag(self) -> &'static str {
+        match self {
+            Self::En => "en",
+            Self::Zh => "zh-Hans",
+        }
+    }
+
     /// The language's own name, for the switch.
     #[must_use]
     pub fn name(self) -> &'static str {

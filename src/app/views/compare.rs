@@ -151,8 +151,7 @@ impl CompareView {
             let response = ui.interact(image, ui.scope_id().with(("compare", i)), Sense::drag());
             let caption = variant_label(name, lang);
             let accessible = format!("{}: {caption}", lang.tr("compared image", "对比图像"));
-            response
-                .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &accessible));
+            super::alt::name_image(&response, || accessible.clone());
             let painter = ui.painter_at(cell);
             painter.image(
                 texture.id(),

@@ -233,7 +233,7 @@ fn picture(
 ) -> (Option<Command>, Rect) {
     let response = ui.interact(at, ui.scope_id().with(("exercise", i)), Sense::click());
     let name = caption.text().to_owned();
-    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, &name));
+    super::alt::name_image(&response, || name.clone());
     let painter = ui.painter_at(at);
     painter.image(
         texture.id(),
@@ -360,14 +360,17 @@ pub fn card_part(
         .is_some_and(|p| session.progress.passed(&p.lesson, p.step));
     if let Some(s) = &session.exercise.findings.shortcut {
         let verdict = s.words(lang);
-        super::alt::announce(&not_yet(ui, verdict.clone(), style), ("verdict", &verdict));
+        super::alt::announce(
+            &not_yet(ui, verdict.clone(), style),
+            (super::alt::Part::Verdict, &verdict),
+        );
         return false;
     }
     if let Some(c) = &session.exercise.findings.curve {
         let color = if c.passed() { PASSED } else { NOT_YET };
         let verdict = words::curve_verdict(c, lang);
         let shown = ui.label(RichText::new(&verdict).size(style.size * 0.9).color(color));
-        super::alt::announce(&shown, ("verdict", &verdict));
+        super::alt::announce(&shown, (super::alt::Part::Verdict, &verdict));
         return false;
     }
     match &session.exercise.findings.difference {
@@ -375,7 +378,7 @@ pub fn card_part(
             let color = if d.passed() { PASSED } else { NOT_YET };
             let verdict = words::verdict(d, lang);
             let shown = ui.label(RichText::new(&verdict).size(style.size * 0.9).color(color));
-            super::alt::announce(&shown, ("verdict", &verdict));
+            super::alt::announce(&shown, (super::alt::Part::Verdict, &verdict));
             if !d.passed()
                 && let Some((row, yours, theirs)) = session.exercise.findings.vertex
             {

@@ -6,8 +6,10 @@ use egui::{Align2, Color32, Frame, RichText, Ui, Vec2};
 
 use super::typeset::{self, Style};
 use crate::app::command::LessonCommand;
+use crate::app::player::LessonPlayer;
 use crate::app::session::{Command, Session};
 use crate::lesson::param;
+use crate::vocabulary::Lang;
 
 /// What the card asked for.
 pub struct CardOutput {
@@ -151,7 +153,7 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
     let style = card_style(ui);
     // The fold button at the right first, then the title wrapped in the width it leaves (a
     // narrow column has no room for it on one line; classroom mode's button is wider).
-    let title = RichText::new(format!("{}. {}", player.step + 1, step.title.get(lang)))
+    let title = RichText::new(heading(player, lang))
         .strong()
         .size(style.size * 1.25)
         .color(Color32::WHITE);
@@ -172,7 +174,7 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
                 // Read out on each new step (and its language): the card's words follow it.
                 let words = title.text().to_owned();
                 let shown = ui.add(egui::Label::new(title).wrap());
-                super::alt::announce(&shown, ("narration", &words));
+                super::alt::announce(&shown, (super::alt::Part::Title, &words));
             });
         },
     );
@@ -243,6 +245,50 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
 /// Simple markdown: paragraphs split by blank lines, lines starting `- ` as bullets, `**…**`
 /// formulas typeset and highlighted, `` `code` `` as written.
 pub fn narration(ui: &mut Ui, text: &str, style: &Style) {
+    for (list, items) in paragraphs(text) {
+        if list {
+            for item in items {
+                ui.horizontal_top(|ui| {
+                    ui.label(RichText::new("•").size(style.size).color(style.color));
+                    typeset::paragraph(ui, &item, style);
+                });
+            }
+        } else {
+            for item in items {
+                typeset::paragraph(ui, &item, style);
+            }
+        }
+        ui.add_space(style.size * 0.35);
+    }
+}
+
+/// The step's number and title, as the card's heading shows them: "3. Specular: the highlight".
+#[must_use]
+pub fn heading(player: &LessonPlayer, lang: Lang) -> String {
+    format!("{}. {}", player.step + 1, player.current().title.get(lang))
+}
+
+/// The step's heading and its narration in plain words, for the words a page keeps beside its
+/// canvas ([`super::alt::PageWords`]), whether the card is shown or folded away.
+pub fn for_the_page(ctx: &egui::Context, session: &Session) {
+    let Some(player) = &session.lesson else {
+        return;
+    };
+    if !super::alt::keeps_page_words(ctx) {
+        return;
+    }
+    let lang = session.lang;
+    super::alt::for_the_page(ctx, super::alt::Part::Title, &heading(player, lang));
+    let narration = plain_narration(player.current().narration.get(lang));
+    super::alt::for_the_page(ctx, super::alt::Part::Narration, &narration);
+}
+
+/// A narration's paragraphs (split at blank lines), each a list's items (when every line
+/// starts with "- ") or its lines joined into one, with a space (none between Chinese
+/// characters).
+fn paragraphs(text: &str) -> Vec<(bool, Vec<String>)> {
+    let is_cjk = crate::vocabulary::notation::is_cjk;
+    let mut out = Vec::new();
     for paragraph in text.split("\n\n") {
         let paragraph = paragraph.trim();
         if paragraph.is_empty() {
@@ -250,30 +296,64 @@ pub fn narration(ui: &mut Ui, text: &str, style: &Style) {
         }
         let lines: Vec<&str> = paragraph.lines().map(str::trim).collect();
         if lines.iter().all(|l| l.starts_with("- ")) {
-            for l in lines {
-                ui.horizontal_top(|ui| {
-                    ui.label(RichText::new("•").size(style.size).color(style.color));
-                    typeset::paragraph(ui, &l[2..], style);
-                });
-            }
-        } else {
-            // Lines of a paragraph join with a space (none between Chinese characters).
-            let mut joined = String::new();
-            for l in lines {
-                let cjk_join = joined
-                    .chars()
-                    .last()
-                    .is_some_and(crate::vocabulary::notation::is_cjk)
-                    && l.chars()
-                        .next()
-                        .is_some_and(crate::vocabulary::notation::is_cjk);
-                if !joined.is_empty() && !cjk_join {
-                    joined.push(' ');
-                }
-                joined.push_str(l);
-            }
-            typeset::paragraph(ui, &joined, style);
+            out.push((true, lines.iter().map(|l| l[2..].to_owned()).collect()));
+            continue;
         }
-        ui.add_space(style.size * 0.35);
+        let mut joined = String::new();
+        for l in lines {
+            let cjk_join =
+                joined.chars().last().is_some_and(is_cjk) && l.chars().next().is_some_and(is_cjk);
+            if !joined.is_empty() && !cjk_join {
+                joined.push(' ');
+            }
+            joined.push_str(l);
+        }
+        out.push((false, vec![joined]));
+    }
+    out
+}
+
+/// A narration as plain text, its marks taken out (`**L_a = k_a·I_a**` → `La = ka·Ia`): what a
+/// page shows a screen reader beside its canvas. Paragraphs are separated by a blank line, a
+/// list's items start with "• ".
+#[must_use]
+pub fn plain_narration(text: &str) -> String {
+    let plain = |s: &str| {
+        crate::vocabulary::notation::plain_text(&crate::vocabulary::notation::parse_paragraph(s))
+    };
+    paragraphs(text)
+        .into_iter()
+        .map(|(list, items)| {
+            let items = items.iter().map(|i| plain(i));
+            if list {
+                items
+                    .map(|i| format!("• {i}"))
+                    .collect::<Vec<_>>()
+                    .join("\n")
+            } else {
+                items.collect::<Vec<_>>().join("\n")
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n\n")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::plain_narration;
+
+    /// The page's narration in plain words: marks out, a paragraph's lines joined (no space
+    /// between Chinese characters), a list's items each on a line behind a bullet.
+    #[test]
+    fn a_narration_in_plain_words() {
+        let en = "**L_a = k_a·I_a**: the same at every point. Alone\nit draws a flat disc.\n\n- one\n- two";
+        assert_eq!(
+            plain_narration(en),
+            "La = ka·Ia: the same at every point. Alone it draws a flat disc.\n\n• one\n• two"
+        );
+        assert_eq!(
+            plain_narration("光线\n来自各处，\nn·l = 1"),
+            "光线来自各处， n·l = 1"
+        );
     }
 }

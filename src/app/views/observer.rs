@@ -32,15 +32,12 @@ impl ObserverView {
         let lang = session.lang;
         let mut cmds = Vec::new();
         let (outer, response) = super::picture_keys::allocate_rest(ui, "observer");
-        response.widget_info(|| {
-            egui::WidgetInfo::labeled(
-                egui::Role::Image,
-                true,
-                lang.tr(
-                    "observer: the scene seen from outside, with the viewing camera, its frustum and the lights",
-                    "观察者：从外部看到的场景，带有观察相机、视锥和光源",
-                ),
+        super::alt::name_image(&response, || {
+            lang.tr(
+                "observer: the scene seen from outside, with the viewing camera, its frustum and the lights",
+                "观察者：从外部看到的场景，带有观察相机、视锥和光源",
             )
+            .to_owned()
         });
         if outer.height() > 0.0 {
             cmds.push(Command::View(ViewCommand::SetObserverAspect(

@@ -196,3 +196,60 @@ fn the_narration_and_the_verdict_are_announced_once_as_they_change() {
     assert_eq!(said.iter().filter(|s| passed(s)).count(), 1, "{said:?}");
     assert!(said.last().is_some_and(passed), "{said:?}");
 }
+
+/// A page has no AccessKit, so its words stand beside the canvas (`web/index.html`): the step's
+/// number and title, the narration in plain words, each picture's text alternative — the same
+/// words AccessKit's tree names the picture by — and a lab's verdict, in the interface's
+/// language. Read here as the page's elements get them (`alt::page_words`).
+#[test]
+fn a_page_keeps_the_step_its_pictures_and_the_verdict_in_words() {
+    use pipelens::app::views::alt::{self, Part};
+    let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
+    let mut h = crate::app::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    alt::keep_page_words(&h.ctx);
+    crate::app::go_to_step_titled(&mut h, "Ambient: light from everywhere");
+    h.run_steps(6);
+    let words = alt::page_words(&h.ctx).expect("kept");
+    assert_eq!(words.get(Part::Title), "1. Ambient: light from everywhere");
+    // The step's narration, its marks taken out (lessons/10-blinn-phong.toml).
+    assert!(
+        words
+            .get(Part::Narration)
+            .starts_with("La = ka·Ia: the same at every point, a stand-in for light bounced around the room. Alone it draws"),
+        "{}",
+        words.get(Part::Narration)
+    );
+    // Each picture's words are those its node in the tree is named by.
+    let named: Vec<String> = h
+        .query_all(by().role(accesskit::Role::Image))
+        .filter_map(|n| n.accesskit_node().label())
+        .filter(|l| l.contains(" view: ") || l.starts_with("observer"))
+        .collect();
+    assert!(!named.is_empty());
+    for n in &named {
+        assert!(
+            words.get(Part::Picture).lines().any(|l| l == n),
+            "{n:?} not in {:?}",
+            words.get(Part::Picture)
+        );
+    }
+    assert!(words.get(Part::Verdict).is_empty(), "no lab, no verdict");
+    crate::app::go_to_step_titled(&mut h, crate::app::SPECULAR_LAB);
+    h.run_steps(30);
+    let words = alt::page_words(&h.ctx).expect("kept");
+    assert!(
+        words.get(Part::Verdict).starts_with("Not yet: "),
+        "{}",
+        words.get(Part::Verdict)
+    );
+    // In Chinese.
+    h.state_mut().session.lang = Lang::Zh;
+    h.run_steps(6);
+    let words = alt::page_words(&h.ctx).expect("kept");
+    assert_eq!(words.get(Part::Title), "8. 实验：在片元着色器中写出高光项");
+    assert!(
+        words.get(Part::Picture).starts_with("像素视图："),
+        "{}",
+        words.get(Part::Picture)
+    );
+}

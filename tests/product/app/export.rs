@@ -36,7 +36,7 @@ fn the_export_menu_writes_the_lessons_handout_and_slides_in_the_interfaces_langu
     assert!(!h.state().exporting(), "the export finished");
     let html = std::fs::read_to_string(dir.path().join("index.html")).expect("index.html");
     assert!(
-        html.contains("<html lang=\"zh-CN\">"),
+        html.contains("<html lang=\"zh-Hans\">"),
         "in Chinese, as the interface"
     );
     let steps = std::fs::read_dir(dir.path().join("slides"))

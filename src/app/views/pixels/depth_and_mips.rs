@@ -36,7 +36,7 @@ pub(super) fn depth_curve(
             lang.tr("window depth z_w", "窗口深度 z_w"),
             36.0,
         );
-        Plot::new("depth-curve")
+        let plot = Plot::new("depth-curve")
             .legend(Legend::default().follow_insertion_order(true))
             .custom_x_axes(x_axes)
             .custom_y_axes(y_axes)
@@ -72,25 +72,21 @@ pub(super) fn depth_curve(
                     );
                 }
             })
-            .response
-            .widget_info(|| {
-                egui::WidgetInfo::labeled(
-                    egui::Role::Image,
-                    true,
-                    lang.tr_owned(
-                        &format!(
-                            "depth curve: window depth z_w against eye distance d from near {} to far {}",
-                            num(near),
-                            num(far)
-                        ),
-                        &format!(
-                            "深度曲线：窗口深度 z_w 随视点距离 d 变化，近 {}，远 {}",
-                            num(near),
-                            num(far)
-                        ),
-                    ),
-                )
-            });
+            .response;
+        crate::app::views::alt::name_image(&plot, || {
+            lang.tr_owned(
+                &format!(
+                    "depth curve: window depth z_w against eye distance d from near {} to far {}",
+                    num(near),
+                    num(far)
+                ),
+                &format!(
+                    "深度曲线：窗口深度 z_w 随视点距离 d 变化，近 {}，远 {}",
+                    num(near),
+                    num(far)
+                ),
+            )
+        });
     });
 }
 
