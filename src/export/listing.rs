@@ -91,7 +91,7 @@ fn class(kind: Kind, text: &str) -> Option<&'static str> {
 /// The style rules of a listing (a `<table class="src">`).
 pub const STYLE: &str = "\
 table.src{border-collapse:collapse;width:100%;background:#f6f6f1;font-family:'pipelens CJK','DejaVu Sans Mono',Menlo,Consolas,'Liberation Mono',monospace;font-size:8.5pt;line-height:1.35;margin:.3em 0}
-table.src td{padding:0 .5em;vertical-align:top} table.src td.n{color:#999;text-align:right;width:2.5em;user-select:none;border-right:1px solid #ddd}
+table.src td{padding:0 .5em;vertical-align:top} table.src td.n{color:#666;text-align:right;width:2.5em;user-select:none;border-right:1px solid #ddd}
 table.src td.l{white-space:pre-wrap;overflow-wrap:anywhere} table.src tr.m td{background:#fff1c7}
 table.src .c{color:#5b6b5b;font-style:italic} table.src .k{color:#8a1f6d;font-weight:bold} table.src .t{color:#0b5f8a}
 table.src .n{color:#9a5b00} table.src .d{color:#6d4aa6} .listing{font-size:.9em;color:#444;margin:.8em 0 0}
