@@ -97,4 +97,11 @@ fi
 
 cp web/index.html "$out/"
 version=$(find "$out" -name '*.wasm' | sort | xargs cat | sha256sum | cut -c1-16)
-sed "s/@BUILD@/$version/" web/sw.js >"$out/sw.js"
+# Each build's files, for the service worker to keep the one in use from the page's first visit
+# (a JSON list of paths relative to the page).
+list() { # list FIND-ARGS...: the files, as "a","b"
+  (cd "$out" && find . -type f "$@" -printf '%P\n' | sort | sed 's/.*/"&"/' | paste -sd, -)
+}
+one=$(list ! -path './threads/*' ! -name index.html)
+threaded=$(list -path './threads/*')
+sed -e "s/@BUILD@/$version/" -e "s|\"@ONE@\"|$one|" -e "s|\"@THREADS@\"|$threaded|" web/sw.js >"$out/sw.js"

@@ -25,10 +25,17 @@ scripts/build-web.sh target/web-dist
 port=${PORT:-8765}
 python3 -m http.server "$port" --bind 127.0.0.1 --directory target/web-dist >target/web-serve.log 2>&1 &
 server=$!
-trap 'kill $server 2>/dev/null || true' EXIT
-for _ in $(seq 1 50); do
-  python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$port/index.html')" 2>/dev/null && break
-  sleep 0.2
+# The same build from a host that isolates the page itself (scripts/serve-web.sh sends the
+# headers), where the page runs from its first load with no reload through the worker: opened
+# once there, it must open again offline.
+PORT=$((port + 1)) scripts/serve-web.sh target/web-dist >target/web-serve-isolated.log 2>&1 &
+isolated=$!
+trap 'kill $server $isolated 2>/dev/null || true' EXIT
+for p in "$port" $((port + 1)); do
+  for _ in $(seq 1 50); do
+    python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$p/index.html')" 2>/dev/null && break
+    sleep 0.2
+  done
 done
 # The native frame times of the same steps, printed beside the page's: the render alone
 # (bench --steps), and the app as it runs, its window painting under Xvfb at 1920×1080 as the
@@ -43,5 +50,6 @@ if command -v Xvfb >/dev/null && command -v xdotool >/dev/null; then
   echo "$app_frames"
 fi
 NATIVE_STEPS=$(echo "$native" | tail -1) NATIVE_APP=$app_frames SERVER_PID=$server \
+  ISOLATED_URL="http://127.0.0.1:$((port + 1))/index.html" ISOLATED_PID=$isolated \
   PIPELENS_BIN=$PWD/target/release/pipelens \
   node scripts/web-test/test.mjs "http://127.0.0.1:$port/index.html" target/web-test

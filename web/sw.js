@@ -8,7 +8,13 @@
 //    is cross-origin isolated (the `Cross-Origin-Opener-Policy` and `-Embedder-Policy` headers).
 //    A static host that cannot send them still gets them: this worker adds them to every
 //    response it serves (the page reloads once after the worker first takes it over).
+// A page loaded before this worker controlled it (its first visit, from a host that isolates it
+// itself, so with no reload) did not pass its files through the worker: once it runs it says
+// which build it runs, and the worker keeps the page and that build's files then.
 const VERSION = "pipelens-@BUILD@";
+// Each build's files (scripts/build-web.sh lists them), relative to the page: the single-threaded
+// build's and the threaded one's, kept whole once the page says which it runs.
+const FILES = { one: ["@ONE@"], threads: ["@THREADS@"] };
 
 self.addEventListener("install", () => self.skipWaiting());
 
@@ -18,6 +24,29 @@ self.addEventListener("activate", (event) => {
       if (name.startsWith("pipelens-") && name !== VERSION) await caches.delete(name);
     }
     await self.clients.claim();
+  })());
+});
+
+/** The cache's key for `url`: the page itself is one copy whatever its query (?lang=zh&step=3). */
+function key(request) {
+  return request.mode === "navigate" ? new URL("./", self.location).href : request;
+}
+
+self.addEventListener("message", (event) => {
+  const files = FILES[event.data?.keep];
+  if (!Array.isArray(files)) return;
+  event.waitUntil((async () => {
+    const cache = await caches.open(VERSION);
+    for (const file of ["./", ...files]) {
+      const url = new URL(file, self.location).href;
+      if (await cache.match(url)) continue;
+      try {
+        const fresh = await fetch(url);
+        if (fresh.ok) await cache.put(url, fresh);
+      } catch (e) {
+        console.warn(`pipelens: ${file} not kept for offline use:`, e);
+      }
+    }
   })());
 });
 
@@ -37,13 +66,11 @@ self.addEventListener("fetch", (event) => {
   if (request.method !== "GET" || url.origin !== self.location.origin) return;
   event.respondWith((async () => {
     const cache = await caches.open(VERSION);
-    // The page itself is asked for with its query (?lang=zh&step=3): one copy serves them all.
-    const key = request.mode === "navigate" ? new URL("./", self.location).href : request;
-    const kept = await cache.match(key, { ignoreSearch: request.mode === "navigate" });
+    const kept = await cache.match(key(request), { ignoreSearch: request.mode === "navigate" });
     if (kept) return isolated(kept);
     try {
       const fresh = await fetch(request, { cache: "no-cache" });
-      if (fresh.ok) await cache.put(key, fresh.clone());
+      if (fresh.ok) await cache.put(key(request), fresh.clone());
       return isolated(fresh);
     } catch (e) {
       return new Response(`pipelens is offline and ${url.pathname} was not kept: ${e}`, {

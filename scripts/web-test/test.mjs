@@ -22,6 +22,13 @@
 //     every core; the tour's heaviest step's frame times in the page on 1 and on every thread
 //     are printed beside the native render's (`pipelens bench --steps 00-tour`, in $NATIVE_STEPS)
 //     and the native app's as it runs (`scripts/native-frames.sh`, in $NATIVE_APP);
+// 12. a screen reader's words stand beside the canvas: the step's title and narration, the
+//     picture's text alternative, a lab's verdict, the document's language; axe-core finds no
+//     violation of WCAG 2.1 A/AA on the page (the tour, the Chinese lab) nor on a handout
+//     exported by the native app, in English and in Chinese;
+// 13. offline from the first visit: a new browser profile opens the page once from a host that
+//     isolates it itself (scripts/serve-web.sh, $ISOLATED_URL: no reload through the worker),
+//     and with that server stopped (in 11) the page reloads and goes to another lesson;
 // 11. (last) with the server stopped, the page opens again from the service worker's cache.
 // Screenshots are written to the output folder for a person to look at.
 import { chromium } from "playwright-core";
@@ -43,6 +50,40 @@ function check(ok, what) {
     failures.push(what);
     console.log(`FAIL ${what}`);
   }
+}
+
+/** axe-core's WCAG 2.1 A and AA rules run on `page`'s document: each violation, with the
+ * elements it names. */
+const axeSource = readFileSync(new URL("./node_modules/axe-core/axe.min.js", import.meta.url), "utf8");
+async function axe(page, what) {
+  await page.addScriptTag({ content: axeSource });
+  const found = await page.evaluate(async () => {
+    const r = await globalThis.axe.run(document, {
+      runOnly: { type: "tag", values: ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"] },
+    });
+    return {
+      passes: r.passes.length,
+      violations: r.violations.map((v) =>
+        `${v.id} (${v.impact}): ${v.help} — ${v.nodes.slice(0, 5).map((n) => n.target.join(" ")).join(", ")}`),
+    };
+  });
+  check(found.violations.length === 0 && found.passes > 0,
+    `axe-core: no WCAG 2.1 A/AA violation on ${what} (${found.passes} rules pass)` +
+    (found.violations.length ? `: ${found.violations.join("; ")}` : ""));
+}
+
+/** The words the page keeps beside its canvas for a screen reader (web/index.html). */
+async function words(page) {
+  return page.evaluate(() => ({
+    lang: document.documentElement.lang,
+    wordsLang: document.getElementById("pipelens-words")?.lang,
+    step: document.getElementById("pipelens-step")?.textContent ?? "",
+    stepLive: document.getElementById("pipelens-step")?.getAttribute("aria-live"),
+    narration: document.getElementById("pipelens-narration")?.textContent ?? "",
+    picture: document.getElementById("pipelens-picture")?.textContent ?? "",
+    verdict: document.getElementById("pipelens-verdict")?.textContent ?? "",
+    verdictRole: document.getElementById("pipelens-verdict")?.getAttribute("role"),
+  }));
 }
 
 /** Distinct colours and the spread of grey in a region of a PNG screenshot. */
@@ -161,6 +202,30 @@ for (const [query, label, mine, running] of [
 }
 console.log(`the tour's step ${heaviest} at 1920×1080, the frame the page reports (medians of 5):\n${rows.join("\n")}`);
 
+// 13. Offline from the first visit (its reload is in 11): the page's one visit to a host that
+// isolates it, in a profile of its own, and the worker keeping that visit's build whole.
+let firstVisit = null;
+if (process.env.ISOLATED_URL) {
+  const own = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+  firstVisit = await own.newPage();
+  firstVisit.on("pageerror", (e) => errors.push(`first visit, isolated: ${e.message}`));
+  await firstVisit.goto(process.env.ISOLATED_URL + "?step=2");
+  const running = await until(firstVisit, () => document.title.endsWith("step 2/10"), null);
+  let kept = [];
+  for (let i = 0; i < 60 && running; i++) {
+    kept = await firstVisit.evaluate(async () => {
+      const names = await caches.keys();
+      const cache = names.length ? await caches.open(names[0]) : null;
+      return cache ? (await cache.keys()).map((r) => new URL(r.url).pathname) : [];
+    });
+    if (kept.some((p) => p.endsWith("_bg.wasm")) && kept.includes("/")) break;
+    await firstVisit.waitForTimeout(1000);
+  }
+  const threaded = await firstVisit.evaluate(() => Number(document.documentElement.dataset.threads));
+  check(running && kept.includes("/") && kept.some((p) => p.endsWith(threaded > 0 ? "/threads/pipelens_web_bg.wasm" : "/pipelens_web_bg.wasm")),
+    `a first visit to an isolating host keeps the page and its build (${threaded} threads; kept: ${kept.join(" ")})`);
+}
+
 // 1. English, the tour.
 let enShot;
 const en = await open("", "en");
@@ -173,6 +238,15 @@ if (await waitForTitle(en, /^pipelens — 00-tour — step 1\/10$/, "the tour lo
   check(bar.colours > 20 && bar.deviation > 5, `the top bar with the stages has text (${bar.colours} colours)`);
   const ms = await en.evaluate(() => document.documentElement.dataset.frameMs);
   check(ms !== undefined && Number(ms) > 0, `a frame was rendered: ${ms} ms (the tour, 640×400, 4 samples)`);
+  // 12. The words beside the canvas, and axe-core on the page.
+  const tour = readFileSync(new URL("../../lessons/00-tour.toml", import.meta.url), "utf8");
+  const firstTitle = tour.match(/\[\[steps\]\]\s*\ntitle = \{ en = "([^"]*)"/)[1];
+  const w = await words(en);
+  check(w.step === `1. ${firstTitle}` && w.stepLive === "polite", `the page says the step's title, live ("${w.step}", aria-live ${w.stepLive})`);
+  check(w.narration.length > 40 && !w.narration.includes("**"), `the page holds the narration in plain words ("${w.narration.slice(0, 80)}…")`);
+  check(/view: /.test(w.picture) && w.picture.includes("stage"), `the page holds the picture's text alternative ("${w.picture.slice(0, 100)}…")`);
+  check(w.lang === "en" && w.wordsLang === "en", `the document's language is English (${w.lang}, ${w.wordsLang})`);
+  await axe(en, "the tour's page");
   // 2. A key press advances a step.
   await en.focus("#pipelens");
   await en.keyboard.press("ArrowRight");
@@ -386,6 +460,11 @@ if (await waitForTitle(frag, /^pipelens — 10-blinn-phong — step 8\/9$/, "the
   await frag.waitForTimeout(3000);
   const before = await frag.evaluate(() => JSON.stringify(Object.entries(localStorage)));
   check(!/10-blinn-phong[^)]*passed:\[8\]/.test(before), "the starter has not passed");
+  const notYet = await words(frag);
+  check(notYet.verdict.startsWith("还没有") && notYet.verdictRole === "status" && notYet.lang === "zh-Hans",
+    `the page says the lab's verdict in Chinese, as a status (${notYet.lang}: "${notYet.verdict.slice(0, 60)}…")`);
+  check(notYet.step.startsWith("8. 实验"), `the page says the lab's title in Chinese ("${notYet.step}")`);
+  await axe(frag, "the Chinese lab's page");
   await frag.focus("#pipelens");
   await frag.keyboard.press("s");
   await frag.waitForTimeout(2000);
@@ -399,6 +478,27 @@ if (await waitForTitle(frag, /^pipelens — 10-blinn-phong — step 8\/9$/, "the
   const kept = await keptWhen(frag, /10-blinn-phong[^)]*passed:\[8\]/);
   const at = kept.indexOf("10-blinn-phong");
   check(/10-blinn-phong[^)]*passed:\[8\]/.test(kept), `the specular lab passes and is kept (${at < 0 ? "not in the storage" : kept.slice(at, at + 120)})`);
+  const passedWords = await words(frag);
+  check(passedWords.verdict.startsWith("通过"), `the page's verdict says it passed ("${passedWords.verdict.slice(0, 60)}…")`);
+}
+
+// 12b. A handout, exported by the native app in each language, through axe-core.
+for (const lang of ["en", "zh"]) {
+  const dir = `${out}/handout-${lang}`;
+  try {
+    execFileSync(process.env.PIPELENS_BIN, ["export", "lessons/10-blinn-phong.toml", "--out", dir, "--lang", lang], { stdio: "pipe" });
+    const handout = await context.newPage();
+    await handout.goto(`file://${process.cwd()}/${dir}/index.html`);
+    const heads = await handout.evaluate(() =>
+      [...document.querySelectorAll("h1, h2, h3, h4")].map((h) => Number(h.tagName[1])));
+    const skips = heads.filter((h, i) => i > 0 && h > heads[i - 1] + 1).length;
+    const alts = await handout.evaluate(() => [...document.images].filter((i) => !i.alt.trim()).length);
+    check(heads[0] === 1 && skips === 0 && alts === 0, `the ${lang} handout: headings in order (${heads.length}, none skipped), every picture has alt text (${alts} without)`);
+    await axe(handout, `the ${lang} handout`);
+    await handout.close();
+  } catch (e) {
+    check(false, `the ${lang} handout exports and opens: ${e}`);
+  }
 }
 
 // 10. A matrix lab: lesson 25's step 3 asks for rotate_z(deg) in the vertex shader. The starter
@@ -506,6 +606,20 @@ if (process.env.SERVER_PID) {
     const threads = Number(await off.evaluate(() => document.documentElement.dataset.threads));
     check(threads === state.cores, `offline, the threaded build still runs on ${threads} threads`);
     await off.screenshot({ path: `${out}/offline-zh-step3.png` });
+  }
+}
+
+// 13 (end). That first visit's page, its server stopped too: it reloads, and opens another lesson.
+if (firstVisit && process.env.ISOLATED_PID) {
+  process.kill(Number(process.env.ISOLATED_PID));
+  await new Promise((r) => setTimeout(r, 1000));
+  await firstVisit.reload().catch((e) => errors.push(`first visit, reload: ${e.message}`));
+  if (await waitForTitle(firstVisit, /^pipelens — 00-tour — step 2\/10$/, "offline after one visit, the page reloads")) {
+    await firstVisit.goto(process.env.ISOLATED_URL + "?lesson=10-blinn-phong&step=2").catch(() => {});
+    if (await waitForTitle(firstVisit, /^pipelens — 10-blinn-phong — step 2\/9$/, "offline after one visit, another lesson opens")) {
+      await firstVisit.waitForTimeout(3000);
+      await firstVisit.screenshot({ path: `${out}/offline-first-visit-10.png` });
+    }
   }
 }
 
