@@ -87,17 +87,12 @@ pub fn report(ctx: &egui::Context, title: &str, frame_ms: Option<f64>, share: f3
     }
 }
 
-/// Writes the page's words that changed ([`views::alt::PageWords`]) into their elements beside
-/// the canvas (`web/index.html`), their language marked (`lang`, on the words' container and the
-/// document), and names eframe's text agent — the hidden `<input>` beside the canvas that takes
-/// the keys typed — in that language (WCAG 4.1.2: a form field has a name); nothing on the
-/// desktop, whose screen readers read AccessKit's tree.
-///
-/// [`views::alt::PageWords`]: super::views::alt::PageWords
-pub fn show_page_words(
-    changed: &[(super::views::alt::Part, String)],
-    lang: crate::vocabulary::Lang,
-) {
+/// Writes the page's words that changed — each the id of its element beside the canvas in
+/// `web/index.html` and its new words (the views' `PageWords`) — their language marked (`lang`,
+/// on the words' container and the document), and names eframe's text agent — the hidden
+/// `<input>` beside the canvas that takes the keys typed — in that language (WCAG 4.1.2: a form
+/// field has a name); nothing on the desktop, whose screen readers read AccessKit's tree.
+pub fn show_page_words(changed: &[(&'static str, String)], lang: crate::vocabulary::Lang) {
     #[cfg(target_arch = "wasm32")]
     if let Some(document) = web_sys::window()
         .and_then(|w| w.document())
@@ -128,8 +123,8 @@ pub fn show_page_words(
                 let _ = element.set_attribute("lang", tag);
             }
         }
-        for (part, words) in changed {
-            if let Some(element) = document.get_element_by_id(part.id()) {
+        for (id, words) in changed {
+            if let Some(element) = document.get_element_by_id(id) {
                 element.set_text_content(Some(words));
             }
         }

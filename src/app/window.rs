@@ -287,10 +287,7 @@ impl PipelensApp {
             self.narrated(out);
         }
         self.animate(ui.ctx());
-        // What the frame showed, in words beside a page's canvas (`views::alt::PageWords`).
-        views::lesson::for_the_page(ui.ctx(), &self.session);
-        let changed = views::alt::settle_page_words(ui.ctx());
-        platform::show_page_words(&changed, self.session.lang);
+        self.page_words(ui.ctx());
         // A parameter dragged (a slider, a number): drafts until the pointer is let go, then the
         // full frame.
         if !ui.ctx().input(|i| i.pointer.any_down()) {
@@ -488,6 +485,17 @@ impl PipelensApp {
             views::picture_keys::nothing_beside(ui.ctx());
         }
         ui.advance_cursor_after_rect(area);
+    }
+
+    /// What the frame showed, in words beside a page's canvas (`views::alt::PageWords`): the
+    /// step's heading and narration added to what the views said, those that changed written.
+    fn page_words(&self, ctx: &egui::Context) {
+        views::lesson::for_the_page(ctx, &self.session);
+        let changed: Vec<_> = views::alt::settle_page_words(ctx)
+            .into_iter()
+            .map(|(part, words)| (part.id(), words))
+            .collect();
+        platform::show_page_words(&changed, self.session.lang);
     }
 
     fn animate(&mut self, ctx: &egui::Context) {

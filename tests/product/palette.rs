@@ -24,8 +24,8 @@ fn every_set_of_meanings_reads_apart_to_colour_blind_eyes() {
     for set in &SETS {
         assert_apart(set.name, set.meanings, set.grounds);
     }
-    // The difference picture: its four meanings, a colour difference at its brightest and at
-    // its dimmest, over every grey a matching pixel can have.
+    // The difference picture: its four meanings and the coverage's stripe, a colour difference
+    // at its brightest and at its dimmest, over every grey a matching pixel can have.
     let [colour, coverage, depth, owner] = pipeline::capture::DIFFERENCE_COLOURS;
     let greys: Vec<Rgb> = (0..=pipeline::capture::MATCH_GREY_MAX)
         .map(|v| [v; 3])
@@ -41,6 +41,7 @@ fn every_set_of_meanings_reads_apart_to_colour_blind_eyes() {
             &[
                 ("colour", red),
                 ("coverage", coverage),
+                ("coverage's stripe", pipeline::capture::COVERAGE_STRIPE),
                 ("depth", depth),
                 ("another triangle", owner),
             ],

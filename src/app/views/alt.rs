@@ -7,8 +7,8 @@
 //! A page has no AccessKit (eframe's web build draws egui on a canvas), so there the same
 //! words stand as text in the document beside the canvas ([`PageWords`]: the step's title, the
 //! narration, each picture's text alternative, a lab's verdict, each in its element of
-//! `web/index.html`, the title and the verdict in live regions); `platform::show_page_words`
-//! writes them.
+//! `web/index.html`, the title and the verdict in live regions); the window hands those that
+//! changed to `platform::show_page_words`.
 
 use pipeline::capture::FrameCapture;
 

@@ -104,7 +104,8 @@ impl PixelDifference {
 }
 
 /// The difference picture's colours: a colour that differs (red, at its largest: dimmer for a
-/// smaller difference, down to [`DIFFERENCE_DIMMEST`]), coverage that differs (yellow), another
+/// smaller difference, down to [`DIFFERENCE_DIMMEST`]), coverage that differs (yellow, striped
+/// with [`COVERAGE_STRIPE`]), another
 /// depth (blue), another triangle's pixel (pink). A pixel that differs in several ways shows
 /// the first of coverage, colour, triangle, depth. Every pair, and each against the matching
 /// pixels' greys (0 to [`MATCH_GREY_MAX`]), stays apart to colour-blind eyes too (the app's
@@ -116,6 +117,19 @@ pub const DIFFERENCE_COLOURS: [[u8; 3]; 4] = [
     [80, 120, 255],
     [255, 120, 200],
 ];
+
+/// The second colour of differing coverage's stripes ([`on_stripe`]): coverage is drawn in
+/// diagonal bands, yellow and white, so that it reads apart from a colour difference by its
+/// pattern and not by its hue alone (WCAG 1.4.1) — to a deuteranope a large colour difference's
+/// red is a dark yellow, near the coverage's own.
+pub const COVERAGE_STRIPE: [u8; 3] = [255, 255, 255];
+
+/// Whether image pixel (`x`, `row`) of differing coverage takes [`COVERAGE_STRIPE`]: bands two
+/// pixels wide along the diagonals `x + row`, every other pair (`x + row` = 2, 3, 6, 7, …).
+#[must_use]
+pub const fn on_stripe(x: u32, row: u32) -> bool {
+    (x + row) / 2 % 2 == 1
+}
 
 /// The smallest share of its red a differing colour keeps: at a quarter, a difference of a few
 /// steps was (63, 30, 30), 4 ΔE from a matching pixel's grey to a protanope.
@@ -177,7 +191,8 @@ impl FrameCapture {
 
     /// The difference as a picture ([`DIFFERENCE_COLOURS`]): matching pixels dark grey (their reference's luminance at a
     /// quarter), pixels whose colour differs red, brighter the larger the difference (full red
-    /// at 64 steps and beyond), pixels whose coverage differs yellow, pixels at another depth
+    /// at 64 steps and beyond), pixels whose coverage differs striped yellow and white
+    /// ([`on_stripe`]), pixels at another depth
     /// blue, pixels another triangle owns pink. Image rows run down.
     #[must_use]
     pub fn difference_image(&self, reference: &FrameCapture, criteria: Criteria) -> RgbaImage {
@@ -192,7 +207,10 @@ impl FrameCapture {
             let p = PixelDifference::of(self, reference, i, &criteria);
             let [colour, coverage, depth, owner] =
                 DIFFERENCE_COLOURS.map(|c| Rgba([c[0], c[1], c[2], 255]));
-            if p.coverage {
+            if p.coverage && on_stripe(x, row) {
+                let [r, g, b] = COVERAGE_STRIPE;
+                Rgba([r, g, b, 255])
+            } else if p.coverage {
                 coverage
             } else if p.colour > criteria.tolerance {
                 let t = (p.colour / 64.0).clamp(DIFFERENCE_DIMMEST, 1.0);

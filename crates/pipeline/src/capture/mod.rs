@@ -16,7 +16,8 @@ mod pixels;
 mod watch;
 
 pub use difference::{
-    Criteria, DIFFERENCE_COLOURS, DIFFERENCE_DIMMEST, Difference, MATCH_GREY_MAX,
+    COVERAGE_STRIPE, Criteria, DIFFERENCE_COLOURS, DIFFERENCE_DIMMEST, Difference, MATCH_GREY_MAX,
+    on_stripe,
 };
 pub use explain::*;
 pub use images::OUTLINE;

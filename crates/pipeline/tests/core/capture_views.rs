@@ -177,18 +177,28 @@ fn the_first_wrong_pixel_and_the_difference_picture_are_upright() {
     );
     assert_ne!(a.coverage, b.coverage, "the reported pixel differs");
     let picture = drawn.difference_image(&empty, pipeline::capture::Criteria::colour(1.0));
-    let yellow = image::Rgba([255, 220, 0, 255]);
-    let covered_rows: [(u32, &[u32]); 3] = [(3, &[0]), (4, &[0, 1]), (5, &[0, 1, 2])];
+    // Coverage that differs is striped: yellow where (col + row) / 2 is even, white where it
+    // is odd — (0, 3): 3 / 2 = 1, white; (0, 4), (1, 4), (0, 5): 2, yellow; (1, 5), (2, 5): 3,
+    // white.
+    let (yellow, white) = (image::Rgba([255, 220, 0, 255]), image::Rgba([255; 4]));
+    let covered: [((u32, u32), image::Rgba<u8>); 6] = [
+        ((0, 3), white),
+        ((0, 4), yellow),
+        ((1, 4), yellow),
+        ((0, 5), yellow),
+        ((1, 5), white),
+        ((2, 5), white),
+    ];
     for row in 0..6 {
         for col in 0..8 {
-            let expected = covered_rows
-                .iter()
-                .any(|(r, cols)| *r == row && cols.contains(&col));
-            assert_eq!(
-                *picture.get_pixel(col, row) == yellow,
-                expected,
-                "image pixel ({col}, {row})"
-            );
+            let p = *picture.get_pixel(col, row);
+            match covered.iter().find(|(at, _)| *at == (col, row)) {
+                Some((_, c)) => assert_eq!(p, *c, "image pixel ({col}, {row})"),
+                None => assert!(
+                    p != yellow && p != white,
+                    "image pixel ({col}, {row}): {p:?}"
+                ),
+            }
         }
     }
 }
