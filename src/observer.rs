@@ -349,7 +349,7 @@ pub fn viewing_camera(
     }
     tags.push(Tag {
         at: c.eye,
-        text: lang.tr("eye", "视点").to_owned(),
+        text: lang.t("observer-eye").to_owned(),
         color: [255, 255, 255, 255],
     });
     // Eye-space corners to world: the inverse of the view matrix the capture used.
@@ -440,7 +440,7 @@ pub fn observer_image(
     use pipeline::overlay::Shape;
     let orbit = orbit_for(spec, focus, direction, None);
     let outside = render_observer(spec, orbit.camera(), None, None)?;
-    let (marks, _) = viewing_camera(main, &Parts::default(), scene_extent(spec), Lang::En);
+    let (marks, _) = viewing_camera(main, &Parts::default(), scene_extent(spec), Lang::EN);
     let mut shapes: Vec<Shape> = marks
         .iter()
         .filter_map(|m| {

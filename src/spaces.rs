@@ -39,24 +39,12 @@ pub fn between(v: &pipeline::vertex::VertexRecord, from: Space, to: Space, t: f3
 #[must_use]
 pub fn space_name(space: Space, l: Lang) -> &'static str {
     match space {
-        Space::Model => l.tr("object coordinates", "模型坐标"),
-        Space::World => l.tr("world coordinates", "世界坐标"),
-        Space::Eye => l.tr(
-            "eye coordinates: camera at the origin, looking down −z",
-            "相机坐标：相机在原点，朝向 −z",
-        ),
-        Space::Clip => l.tr(
-            "clip coordinates (x, y, z of the homogeneous point)",
-            "裁剪坐标（齐次点的 x, y, z）",
-        ),
-        Space::Ndc => l.tr(
-            "normalized device coordinates: the canonical cube [−1, 1]³",
-            "规范化设备坐标：规范立方体 [−1, 1]³",
-        ),
-        Space::Window => l.tr(
-            "window coordinates: [0, W] × [0, H] × [0, 1]",
-            "屏幕坐标：[0, W] × [0, H] × [0, 1]",
-        ),
+        Space::Model => l.t("spaces-object-coordinates"),
+        Space::World => l.t("spaces-world-coordinates"),
+        Space::Eye => l.t("spaces-eye-coordinates-camera-at-the"),
+        Space::Clip => l.t("spaces-clip-coordinates-x-y-z"),
+        Space::Ndc => l.t("spaces-normalized-device-coordinates-the-canonical"),
+        Space::Window => l.t("spaces-window-coordinates-0-w-0"),
     }
 }
 
@@ -160,18 +148,14 @@ pub fn framing(centre: Vec3, radius: f32, yaw: f32, pitch: f32, aspect: f32) -> 
     Some(proj.matrix * view)
 }
 
-/// The fates a triangle can meet, in the legend's order: colour, English name, Chinese name.
-pub const FATES: [([u8; 3], &str, &str); 6] = [
-    (crate::palette::DRAWN, "drawn", "绘制"),
-    (crate::palette::CLIPPED, "clipped", "被裁剪"),
-    (crate::palette::OUTSIDE, "outside", "在视见体外"),
-    (crate::palette::CULLED, "culled", "被剔除"),
-    (crate::palette::DEGENERATE, "degenerate", "退化"),
-    (
-        crate::palette::NOT_FINITE,
-        "not finite (NaN or ∞)",
-        "非有限值（NaN 或 ∞）",
-    ),
+/// The fates a triangle can meet, in the legend's order: colour and the message of its name.
+pub const FATES: [([u8; 3], &str); 6] = [
+    (crate::palette::DRAWN, "spaces-fate-drawn"),
+    (crate::palette::CLIPPED, "spaces-fate-clipped"),
+    (crate::palette::OUTSIDE, "spaces-fate-outside"),
+    (crate::palette::CULLED, "spaces-fate-culled"),
+    (crate::palette::DEGENERATE, "spaces-fate-degenerate"),
+    (crate::palette::NOT_FINITE, "spaces-fate-not-finite"),
 ];
 
 /// How each fate's edges are drawn beside their colour, so that no fate is told by hue alone
@@ -187,14 +171,14 @@ pub const FATE_DASHES: [&[f32]; FATES.len()] = [
     &[3.0, 2.0],
 ];
 
-/// What each fate's line is called, in English and in Chinese (for a legend in words).
-pub const FATE_LINES: [(&str, &str); FATES.len()] = [
-    ("solid", "实线"),
-    ("dashed", "虚线"),
-    ("dotted", "点线"),
-    ("dash-dot", "点划线"),
-    ("dash-dot-dot", "双点划线"),
-    ("short dashes", "短虚线"),
+/// The message of what each fate's line is called (for a legend in words).
+pub const FATE_LINES: [&str; FATES.len()] = [
+    "spaces-solid",
+    "spaces-dashed",
+    "spaces-dotted",
+    "spaces-dash-dot",
+    "spaces-dash-dot-dot",
+    "spaces-short-dashes",
 ];
 
 /// How many of every `stride`-th of `capture`'s triangles met each fate, in [`FATES`]' order.
@@ -216,12 +200,13 @@ pub fn fates_in_words(capture: &pipeline::capture::FrameCapture, lang: Lang) -> 
     (0..FATES.len())
         .filter(|&k| met[k] > 0)
         .map(|k| {
-            let (_, en, zh) = FATES[k];
-            let (line_en, line_zh) = FATE_LINES[k];
-            match lang {
-                Lang::En => format!("{en}: {line_en}"),
-                Lang::Zh => format!("{zh}：{line_zh}"),
-            }
+            lang.t_with(
+                "spaces-fate-and-line",
+                &[
+                    ("fate", &lang.t(FATES[k].1)),
+                    ("line", &lang.t(FATE_LINES[k])),
+                ],
+            )
         })
         .collect::<Vec<_>>()
         .join(" · ")

@@ -38,29 +38,51 @@ impl PipelensApp {
                 }
                 self.export_menu(ui, lang);
                 ui.toggle_value(&mut self.panels.keys, "?")
-                    .accessible_name(lang.tr("Help: keyboard shortcuts", "帮助：键盘快捷键"))
-                    .on_hover_text(lang.tr("Keyboard shortcuts (F1)", "键盘快捷键（F1）"));
+                    .accessible_name(lang.t("chrome-help-keyboard-shortcuts"))
+                    .on_hover_text(lang.t("chrome-keyboard-shortcuts-f1"));
             });
             self.bar_messages(ui, lang);
         });
     }
 
-    /// The language switch and the classroom toggle.
+    /// A button for each language of the catalogs other than `lang`, named in its own words;
+    /// the one clicked.
+    pub(super) fn language_list(&self, ui: &mut egui::Ui, lang: Lang) -> Option<Lang> {
+        let mut chosen = None;
+        for l in Lang::all().into_iter().filter(|l| *l != lang) {
+            if ui.button(l.name()).clicked() {
+                chosen = Some(l);
+            }
+        }
+        chosen
+    }
+
+    /// The language switch and the classroom toggle. The switch names the other language
+    /// where the catalogs hold two, and is a menu of them all where they hold more.
     fn language_and_classroom(&mut self, ui: &mut egui::Ui, lang: Lang) {
-        if ui
-            .button(lang.other().name())
-            .on_hover_text(lang.tr("Switch the language", "切换语言"))
-            .clicked()
-        {
-            self.commands
-                .push(Command::View(ViewCommand::SetLang(lang.other())));
+        let others: Vec<Lang> = Lang::all().into_iter().filter(|l| *l != lang).collect();
+        let mut chosen = None;
+        if let [other] = others[..] {
+            if ui
+                .button(other.name())
+                .on_hover_text(lang.t("chrome-switch-the-language"))
+                .clicked()
+            {
+                chosen = Some(other);
+            }
+        } else {
+            ui.menu_button(format!("{} ▾", lang.name()), |ui| {
+                chosen = self.language_list(ui, lang);
+            })
+            .response
+            .on_hover_text(lang.t("chrome-switch-the-language"));
+        }
+        if let Some(l) = chosen {
+            self.commands.push(Command::View(ViewCommand::SetLang(l)));
         }
         if ui
-            .selectable_label(self.classroom, lang.tr("Classroom", "课堂模式"))
-            .on_hover_text(lang.tr(
-                "Large type and high contrast for a projector; the picture first (C). F11: full screen, Ctrl +/−: text size, ←/→: steps or stages, Space: play.",
-                "投影用的大字号与高对比度，画面优先（C）。F11：全屏，Ctrl +/−：字号，←/→：步骤或阶段，空格：播放。",
-            ))
+            .selectable_label(self.classroom, lang.t("chrome-classroom"))
+            .on_hover_text(lang.t("chrome-large-type-and-high-contrast"))
             .clicked()
         {
             let on = !self.classroom;
@@ -74,17 +96,11 @@ impl PipelensApp {
         let said = [
             (
                 self.session.reload_error.clone(),
-                lang.tr(
-                    "The file changed on disk and no longer loads; the last good version keeps running:",
-                    "文件在磁盘上被修改后无法加载；继续运行上一个正确的版本：",
-                ),
+                lang.t("chrome-the-file-changed-on-disk"),
             ),
             (
                 self.session.dropped_error.clone(),
-                lang.tr(
-                    "The dropped file did not open; what was open keeps running:",
-                    "拖入的文件未能打开；继续运行原来打开的内容：",
-                ),
+                lang.t("chrome-the-dropped-file-did-not"),
             ),
         ];
         for (k, (error, heading)) in said.into_iter().enumerate() {
@@ -93,7 +109,7 @@ impl PipelensApp {
                 .horizontal_top(|ui| {
                     let close = ui
                         .small_button("×")
-                        .on_hover_text(lang.tr("Close this message", "关闭此消息"))
+                        .on_hover_text(lang.t("chrome-close-this-message"))
                         .clicked();
                     ui.label(
                         RichText::new(format!("{heading}\n{e}"))
@@ -127,51 +143,45 @@ impl PipelensApp {
         let (k, n) = (player.step, player.lesson.steps.len());
         if ui
             .add_enabled(k > 0, egui::Button::new("◀"))
-            .accessible_name(lang.tr("Previous step", "上一步"))
-            .on_hover_text(lang.tr("Previous step (← or Page Up)", "上一步（← 或 Page Up）"))
+            .accessible_name(lang.t("chrome-previous-step"))
+            .on_hover_text(lang.t("chrome-previous-step-or-page-up"))
             .clicked()
         {
             self.commands
                 .push(Command::Lesson(LessonCommand::PreviousStep));
         }
-        ui.menu_button(
-            format!("{} {} / {n}", lang.tr("Step", "步骤"), k + 1),
-            |ui| {
-                ui.label(RichText::new(player.lesson.title.get(lang)).strong());
-                for (i, s) in player.lesson.steps.iter().enumerate() {
-                    if ui
-                        .selectable_label(i == k, format!("{}. {}", i + 1, s.title.get(lang)))
-                        .clicked()
-                    {
-                        self.commands
-                            .push(Command::Lesson(LessonCommand::GoToStep(i)));
-                        ui.close();
-                    }
+        ui.menu_button(format!("{} {} / {n}", lang.t("chrome-step"), k + 1), |ui| {
+            ui.label(RichText::new(player.lesson.title.get(lang)).strong());
+            for (i, s) in player.lesson.steps.iter().enumerate() {
+                if ui
+                    .selectable_label(i == k, format!("{}. {}", i + 1, s.title.get(lang)))
+                    .clicked()
+                {
+                    self.commands
+                        .push(Command::Lesson(LessonCommand::GoToStep(i)));
+                    ui.close();
                 }
-            },
-        )
+            }
+        })
         .response
         .on_hover_text(player.lesson.title.get(lang));
         if ui
             .add_enabled(k + 1 < n, egui::Button::new("▶"))
-            .accessible_name(lang.tr("Next step", "下一步"))
-            .on_hover_text(lang.tr("Next step (→ or Page Down)", "下一步（→ 或 Page Down）"))
+            .accessible_name(lang.t("chrome-next-step"))
+            .on_hover_text(lang.t("chrome-next-step-or-page-down"))
             .clicked()
         {
             self.commands.push(Command::Lesson(LessonCommand::NextStep));
         }
         if !player.current().animate.is_empty() {
             let label = if player.playing {
-                lang.tr("‖ Pause", "‖ 暂停")
+                lang.t("chrome-pause")
             } else {
-                lang.tr("▶ Play", "▶ 播放")
+                lang.t("chrome-play")
             };
             if ui
                 .button(label)
-                .on_hover_text(lang.tr(
-                    "Play or pause the animation (Space)",
-                    "播放或暂停动画（空格）",
-                ))
+                .on_hover_text(lang.t("chrome-play-or-pause-the-animation"))
                 .clicked()
             {
                 self.commands
@@ -190,50 +200,35 @@ impl PipelensApp {
         let toggles: [(&mut bool, &str, &str); 5] = [
             (
                 &mut p.narration,
-                lang.tr("Narration", "讲解"),
-                lang.tr(
-                    "Show or fold the narration over the picture (N)",
-                    "显示或收起画面上的讲解（N）",
-                ),
+                lang.t("chrome-narration"),
+                lang.t("chrome-show-or-fold-the-narration"),
             ),
             (
                 &mut p.parameters,
-                lang.tr("Parameters", "参数"),
-                lang.tr(
-                    "The camera, projection, rasterizer and objects (P)",
-                    "相机、投影、光栅化与物体（P）",
-                ),
+                lang.t("chrome-parameters"),
+                lang.t("chrome-the-camera-projection-rasterizer-and"),
             ),
             (
                 &mut p.inspector,
-                lang.tr("Inspector", "检查器"),
-                lang.tr(
-                    "Matrices, the vertex table, the pixel inspector (I)",
-                    "矩阵、顶点表、像素检查器（I）",
-                ),
+                lang.t("chrome-inspector"),
+                lang.t("chrome-matrices-the-vertex-table-the"),
             ),
             (
                 &mut p.matrix_card,
-                lang.tr("Matrix", "矩阵卡片"),
-                lang.tr(
-                    "The stage's matrix over the geometry (M)",
-                    "在几何视图上显示本阶段的矩阵（M）",
-                ),
+                lang.t("chrome-matrix"),
+                lang.t("chrome-the-stage-s-matrix-over"),
             ),
             (
                 &mut p.shader,
-                lang.tr("Shader", "着色器"),
-                lang.tr(
-                    "Write the vertex and fragment shaders in GLSL; Ctrl+Enter applies (S)",
-                    "用 GLSL 编写顶点与片元着色器；Ctrl+Enter 应用（S）",
-                ),
+                lang.t("chrome-shader"),
+                lang.t("chrome-write-the-vertex-and-fragment"),
             ),
         ];
         // Chinese names are short enough for one row at 1366 points, but not at classroom
         // mode's larger type: there the toggles go into a menu, and the bar keeps one row.
         // Beside a narration band the menu also holds the stage's view controls.
         let roomy = !self.band
-            && (ui.ctx().content_rect().width() > 1500.0 || (lang == Lang::Zh && !self.classroom));
+            && (ui.ctx().content_rect().width() > 1500.0 || (lang.is_chinese() && !self.classroom));
         if roomy {
             for (k, (on, name, tip)) in toggles.into_iter().enumerate() {
                 if k > 0 || lesson {
@@ -241,7 +236,7 @@ impl PipelensApp {
                 }
             }
         } else {
-            ui.menu_button(lang.tr("Show ▾", "显示 ▾"), |ui| {
+            ui.menu_button(lang.t("chrome-show"), |ui| {
                 for (k, (on, name, tip)) in toggles.into_iter().enumerate() {
                     if k > 0 || lesson {
                         ui.checkbox(on, name).on_hover_text(tip);
@@ -269,22 +264,16 @@ impl PipelensApp {
             // In the browser: no folders to write to, the handout downloads.
             if self.session.lesson.is_some()
                 && ui
-                    .button(lang.tr("Download handout", "下载讲义"))
-                    .on_hover_text(lang.tr(
-                        "The lesson's handout in this language as one HTML file, every image in it, printable (it takes a few seconds to render every step). Snapshots of every buffer: the desktop app or `pipelens export`.",
-                        "以当前语言下载本课讲义：一个 HTML 文件，图片都在其中，可打印（渲染每一步需要几秒）。各缓冲的快照：请用桌面版或 `pipelens export`。",
-                    ))
+                    .button(lang.t("chrome-download-handout"))
+                    .on_hover_text(lang.t("chrome-the-lesson-s-handout-in"))
                     .clicked()
             {
                 self.download_handout();
             }
             if self.session.lesson.is_some()
                 && ui
-                    .button(lang.tr("Download my work", "下载我的作业"))
-                    .on_hover_text(lang.tr(
-                        "One file with this lesson's code you last ran at each step and the answers you typed (LESSON-work.toml): hand it in; a teacher grades it with `pipelens grade LESSON FILE`.",
-                        "一个文件，包含你在本课每一步最后运行的代码和填写的答案（LESSON-work.toml）：交上这个文件；老师用 `pipelens grade 课程 文件` 评分。",
-                    ))
+                    .button(lang.t("chrome-download-my-work"))
+                    .on_hover_text(lang.t("chrome-one-file-with-this-lesson"))
                     .clicked()
             {
                 self.export_work();
@@ -292,23 +281,14 @@ impl PipelensApp {
             return;
         }
         let busy = self.export_result.is_some();
-        ui.menu_button(lang.tr("Export ▾", "导出 ▾"), |ui| {
-            let label = ui.label(lang.tr("Folder", "文件夹"));
+        ui.menu_button(lang.t("chrome-export"), |ui| {
+            let label = ui.label(lang.t("chrome-folder"));
             ui.add(egui::TextEdit::singleline(&mut self.export_dir).desired_width(200.0))
                 .labelled_by(label.id)
-                .on_hover_text(lang.tr(
-                    "The folder the snapshot is written to (created if missing).",
-                    "快照写入的文件夹（不存在时创建）。",
-                ));
+                .on_hover_text(lang.t("chrome-the-folder-the-snapshot-is"));
             if ui
-                .add_enabled(
-                    !busy,
-                    egui::Button::new(lang.tr("Export snapshot", "导出快照")),
-                )
-                .on_hover_text(lang.tr(
-                    "Every buffer as PNG and capture.json, as `pipelens export` writes them.",
-                    "每个缓冲的 PNG 与 capture.json，与 `pipelens export` 相同。",
-                ))
+                .add_enabled(!busy, egui::Button::new(lang.t("chrome-export-snapshot")))
+                .on_hover_text(lang.t("chrome-every-buffer-as-png-and"))
                 .clicked()
             {
                 self.start_export();
@@ -317,26 +297,17 @@ impl PipelensApp {
                 && ui
                     .add_enabled(
                         !busy,
-                        egui::Button::new(lang.tr(
-                            "Export handout and slides",
-                            "导出讲义与幻灯片",
-                        )),
+                        egui::Button::new(lang.t("chrome-export-handout-and-slides")),
                     )
-                    .on_hover_text(lang.tr(
-                        "The lesson's handout in this language (index.html, every image in it, printable) and one 1920×1080 slide per step (slides/), as `pipelens export LESSON --slides` writes them.",
-                        "用当前语言导出本课的讲义（index.html，图片都在其中，可打印）和每步一张 1920×1080 的幻灯片（slides/），与 `pipelens export 课程 --slides` 相同。",
-                    ))
+                    .on_hover_text(lang.t("chrome-the-lesson-s-handout-in-2"))
                     .clicked()
             {
                 self.start_handout_export();
             }
             if self.session.lesson.is_some()
                 && ui
-                    .button(lang.tr("Export my work", "导出我的作业"))
-                    .on_hover_text(lang.tr(
-                        "One file with this lesson's code you last ran at each step and the answers you typed (LESSON-work.toml, into the folder above): hand it in; a teacher grades it with `pipelens grade LESSON FILE`.",
-                        "一个文件，包含你在本课每一步最后运行的代码和填写的答案（LESSON-work.toml，写入上面的文件夹）：交上这个文件；老师用 `pipelens grade 课程 文件` 评分。",
-                    ))
+                    .button(lang.t("chrome-export-my-work"))
+                    .on_hover_text(lang.t("chrome-one-file-with-this-lesson-2"))
                     .clicked()
             {
                 self.export_work();
@@ -344,11 +315,8 @@ impl PipelensApp {
         });
         if let Some(cancel) = self.export_cancel.as_ref().filter(|_| busy)
             && ui
-                .button(lang.tr("Cancel export", "取消导出"))
-                .on_hover_text(lang.tr(
-                    "Stops between two files: those written stay whole.",
-                    "在两个文件之间停止：已写入的文件保持完整。",
-                ))
+                .button(lang.t("chrome-cancel-export"))
+                .on_hover_text(lang.t("chrome-stops-between-two-files-those"))
                 .clicked()
         {
             cancel.cancel();
@@ -361,10 +329,10 @@ impl PipelensApp {
             ui.horizontal_wrapped(|ui| {
                 if let Some(e) = &self.session.error {
                     ui.label(
-                        RichText::new(format!("{}: {e}", lang.tr("Error", "错误")))
+                        RichText::new(format!("{}: {e}", lang.t("chrome-error")))
                             .color(Color32::LIGHT_RED),
                     );
-                    ui.label(lang.tr("(showing the last good frame)", "（显示上一个正确的帧）"));
+                    ui.label(lang.t("chrome-showing-the-last-good-frame"));
                 }
                 if let (Some(c), Some(t)) = (&self.session.capture, &self.session.times) {
                     let ms = |d: std::time::Duration| format!("{:.1}", d.as_secs_f64() * 1e3);
@@ -374,16 +342,16 @@ impl PipelensApp {
                         c.height(),
                         c.settings.samples.count(),
                         c.primitives.len(),
-                        lang.tr("triangles", "个三角形"),
-                        lang.tr("frame", "帧"),
+                        lang.t("chrome-triangles"),
+                        lang.t("chrome-frame"),
                         ms(t.total()),
-                        lang.tr("vertex", "顶点"),
+                        lang.t("chrome-vertex"),
                         ms(t.vertex),
-                        lang.tr("clip", "裁剪"),
+                        lang.t("chrome-clip"),
                         ms(t.clip_setup),
-                        lang.tr("raster", "光栅化"),
+                        lang.t("chrome-raster"),
                         ms(t.raster),
-                        lang.tr("resolve", "解析"),
+                        lang.t("chrome-resolve"),
                         ms(t.resolve),
                     ));
                     if let Some(s) = &c.shaders {
@@ -406,7 +374,7 @@ impl PipelensApp {
         let keys = |ui: &mut egui::Ui, written: &str| {
             ui.label(RichText::new(written).monospace().strong());
         };
-        egui::Window::new(lang.tr("Keyboard shortcuts", "键盘快捷键"))
+        egui::Window::new(lang.t("chrome-keyboard-shortcuts"))
             // Over the narration card (a foreground area), opened after it: nothing covers
             // the list.
             .order(egui::Order::Foreground)
@@ -431,14 +399,17 @@ impl PipelensApp {
                             .show(ui, |ui| {
                                 for s in &SHORTCUTS {
                                     keys(ui, &shortcuts::keys_written(s));
-                                    ui.label(lang.tr(s.does.0, s.does.1));
+                                    ui.label(lang.t(s.does));
                                     ui.end_row();
                                 }
-                                for ((en_keys, zh_keys), (en, zh)) in
-                                    IN_A_PICTURE.iter().chain(&MOUSE)
-                                {
-                                    keys(ui, lang.tr(en_keys, zh_keys));
-                                    ui.label(lang.tr(en, zh));
+                                for (written, does) in IN_A_PICTURE {
+                                    keys(ui, written);
+                                    ui.label(lang.t(does));
+                                    ui.end_row();
+                                }
+                                for (written, does) in MOUSE {
+                                    keys(ui, lang.t(written));
+                                    ui.label(lang.t(does));
                                     ui.end_row();
                                 }
                             });
@@ -517,41 +488,29 @@ fn shader_counts(
         ui.label(
             RichText::new(format!(
                 "· {dropped} {}",
-                lang.tr(
-                    "triangles dropped: gl_Position NaN or ∞",
-                    "个三角形被丢弃：gl_Position 为 NaN 或 ∞"
-                )
+                lang.t("chrome-triangles-dropped-gl-position-nan")
             ))
             .color(Color32::LIGHT_RED),
         )
-        .on_hover_text(lang.tr(
-            "A vertex shader wrote a gl_Position that is not a finite number (a division by zero, normalize(vec3(0.0))): nothing can be drawn from it, so its triangles are dropped before clipping. The Vertices tab shows the vertex's run.",
-            "顶点着色器写出的 gl_Position 不是有限数（除以零、normalize(vec3(0.0))）：无法据此绘制，所以它的三角形在裁剪之前就被丢弃。顶点表标签页显示该顶点的运行过程。",
-        ));
+        .on_hover_text(lang.t("chrome-a-vertex-shader-wrote-a"));
     }
     ui.label(format!(
         "· {} {} · {} {}",
         s.fragments,
-        lang.tr("fragments shaded", "个片元已着色"),
+        lang.t("chrome-fragments-shaded"),
         s.discarded,
-        lang.tr("discarded", "个被丢弃"),
+        lang.t("chrome-discarded"),
     ))
-    .on_hover_text(lang.tr(
-        "The fragment shader ran once per fragment (2×2 quads' helper lanes not counted); `discard` threw these away.",
-        "片元着色器对每个片元运行一次（2×2 像素块的辅助通道不计）；这些被 `discard` 丢弃。",
-    ));
+    .on_hover_text(lang.t("chrome-the-fragment-shader-ran-once"));
     if s.not_finite > 0 {
         ui.label(
             RichText::new(format!(
                 "· {} {}",
                 s.not_finite,
-                lang.tr("pixels NaN or ∞ (drawn black)", "个像素为 NaN 或 ∞（画成黑色）")
+                lang.t("chrome-pixels-nan-or-drawn-black")
             ))
             .color(Color32::LIGHT_RED),
         )
-        .on_hover_text(lang.tr(
-            "A shader's colour was not a finite number, e.g. normalize(vec3(0.0)) or 0.0/0.0: click such a pixel to see the statement that made it.",
-            "着色器输出的颜色不是有限数，例如 normalize(vec3(0.0)) 或 0.0/0.0：单击这样的像素，查看产生它的语句。",
-        ));
+        .on_hover_text(lang.t("chrome-a-shader-s-colour-was"));
     }
 }

@@ -27,15 +27,14 @@ impl PipelensApp {
             super::style::chrome_style(ui);
             ui.spacing_mut().item_spacing.x = 4.0;
             ui.horizontal(|ui| {
-                ui.menu_button(lang.tr("Menu", "菜单"), |ui| {
+                ui.menu_button(lang.t("compact-menu"), |ui| {
                     self.lessons_menu(ui, lang);
                     self.panel_toggles(ui, lang);
-                    if ui.button(lang.other().name()).clicked() {
-                        self.commands
-                            .push(Command::View(ViewCommand::SetLang(lang.other())));
+                    if let Some(l) = self.language_list(ui, lang) {
+                        self.commands.push(Command::View(ViewCommand::SetLang(l)));
                     }
                     self.export_menu(ui, lang);
-                    ui.toggle_value(&mut self.panels.keys, lang.tr("Keys (?)", "快捷键（?）"));
+                    ui.toggle_value(&mut self.panels.keys, lang.t("compact-keys"));
                 });
                 self.step_controls(ui, lang);
                 self.stage_menu(ui, lang);
@@ -63,7 +62,7 @@ impl PipelensApp {
             })
             .response
             .widget_info(|| {
-                egui::WidgetInfo::labeled(egui::Role::ComboBox, true, lang.tr("Stage", "阶段"))
+                egui::WidgetInfo::labeled(egui::Role::ComboBox, true, lang.t("compact-stage"))
             });
     }
 

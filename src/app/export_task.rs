@@ -85,11 +85,7 @@ impl PipelensApp {
         let name = format!(
             "{}-{}.html",
             lesson.id,
-            if lang == crate::vocabulary::Lang::Zh {
-                "zh"
-            } else {
-                "en"
-            }
+            if lang.is_chinese() { "zh" } else { lang.tag() }
         );
         let result = crate::export::lesson::handout_html(&lesson, &opts)
             .map_err(|e| format!("{e:#}"))
@@ -99,7 +95,7 @@ impl PipelensApp {
         self.export_message = Some(match result {
             Ok(file) => (
                 true,
-                format!("{} {file}", lang.tr("Handout saved:", "讲义已保存：")),
+                format!("{} {file}", lang.t("export-task-handout-saved")),
             ),
             Err(e) => (false, e),
         });
@@ -144,7 +140,7 @@ impl PipelensApp {
                 true,
                 format!(
                     "{} {}: {}",
-                    lang.tr("Exported to", "已导出到"),
+                    lang.t("export-task-exported-to"),
                     self.export_dir,
                     files
                         .iter()
@@ -180,9 +176,9 @@ impl PipelensApp {
                 true,
                 format!(
                     "{} {file} ({} {})",
-                    lang.tr("Your work saved:", "你的作业已保存："),
+                    lang.t("export-task-your-work-saved"),
                     work.steps.len(),
-                    lang.tr("steps with work", "个步骤有作业")
+                    lang.t("export-task-steps-with-work")
                 ),
             ),
             Err(e) => (false, e),

@@ -29,10 +29,10 @@ impl PipelensApp {
     pub(super) fn lessons_menu(&mut self, ui: &mut egui::Ui, lang: Lang) {
         let open_id = self.session.lesson.as_ref().map(|p| p.lesson.id.clone());
         let mut chosen = None;
-        ui.menu_button(lang.tr("Lessons", "课程"), |ui| {
+        ui.menu_button(lang.t("library-lessons"), |ui| {
             for ((file, _), ((en, zh), asks)) in library::LESSONS.iter().zip(titles()) {
                 let id = file.trim_end_matches(".toml");
-                let title = if lang == Lang::Zh { zh } else { en };
+                let title = if lang.is_chinese() { zh } else { en };
                 let number = id.split('-').next().unwrap_or_default();
                 // The questions answered right, of those with a value to type.
                 let done = self
@@ -42,15 +42,15 @@ impl PipelensApp {
                     .map_or(0, |p| p.answered.union(&p.passed).count());
                 let label = match (*asks, done) {
                     (0, _) => format!("{number}  {title}"),
-                    (n, d) if d >= n => format!("{number}  {title}   {n}/{n} {}", lang.tr("all right", "全对")),
+                    (n, d) if d >= n => format!(
+                        "{number}  {title}   {n}/{n} {}",
+                        lang.t("library-all-right")
+                    ),
                     (n, d) => format!("{number}  {title}   {d}/{n}"),
                 };
                 if ui
                     .selectable_label(open_id.as_deref() == Some(id), label)
-                    .on_hover_text(lang.tr(
-                        "d/n: questions you answered right, of those with a value to type",
-                        "d/n：需要填写数值的思考题中你已答对的数目",
-                    ))
+                    .on_hover_text(lang.t("library-d-n-questions-you-answered"))
                     .clicked()
                 {
                     chosen = Some(*file);
@@ -60,31 +60,22 @@ impl PipelensApp {
             ui.separator();
             // In the menu, not the bar: the bar must stay one row at 1366 points.
             if ui
-                .button(lang.tr("Edit this lesson, or make one… (R)", "编辑本课程或新建课程…（R）"))
-                .on_hover_text(lang.tr(
-                    "Record what is on screen as steps, word them in both languages, arrange them, save the file",
-                    "把屏幕上的内容录制为步骤，用两种语言撰写文字，调整顺序，保存文件",
-                ))
+                .button(lang.t("library-edit-this-lesson-or-make"))
+                .on_hover_text(lang.t("library-record-what-is-on-screen"))
                 .clicked()
             {
                 self.editor.open = true;
                 ui.close();
             }
             let hint = if super::platform::WATCHES_FILES {
-                lang.tr(
-                    "Your own lesson or scene: drop its .toml file on the window; it reloads when you save it.",
-                    "自己的课程或场景：把它的 .toml 文件拖放到窗口上；保存后自动重新加载。",
-                )
+                lang.t("library-your-own-lesson-or-scene")
             } else {
-                lang.tr(
-                    "Your own lesson or scene: drop its .toml file on the page. A page cannot watch files: after an edit, drop it again.",
-                    "自己的课程或场景：把它的 .toml 文件拖放到页面上。网页无法监视文件：修改后请重新拖放。",
-                )
+                lang.t("library-your-own-lesson-or-scene-2")
             };
             ui.label(RichText::new(hint).small());
         })
         .response
-        .on_hover_text(lang.tr("Open another built-in lesson", "打开另一个内置课程"));
+        .on_hover_text(lang.t("library-open-another-built-in-lesson"));
         if let Some(file) = chosen {
             match library::lesson(file) {
                 Ok(l) => self.open(

@@ -104,10 +104,7 @@ pub fn show_page_words(changed: &[(&'static str, String)], lang: crate::vocabula
             .and_then(|canvas| canvas.next_element_sibling())
             .filter(|e| e.tag_name().eq_ignore_ascii_case("input"));
         if let Some(input) = agent {
-            let name = lang.tr(
-                "pipelens: the keys typed into the app",
-                "pipelens：输入应用的按键",
-            );
+            let name = lang.t("platform-pipelens-the-keys-typed-into");
             if input.get_attribute("aria-label").as_deref() != Some(name) {
                 let _ = input.set_attribute("aria-label", name);
             }

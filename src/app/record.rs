@@ -40,8 +40,8 @@ pub fn recorded_step(session: &Session) -> Option<Step> {
     };
     Some(Step {
         title: Text {
-            en: sel.stage.name(Lang::En).to_owned(),
-            zh: sel.stage.name(Lang::Zh).to_owned(),
+            en: sel.stage.name(Lang::EN).to_owned(),
+            zh: sel.stage.name(Lang::ZH).to_owned(),
         },
         narration: Text::default(),
         stage: Some(sel.stage),

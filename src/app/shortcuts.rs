@@ -69,8 +69,8 @@ pub struct Shortcut {
     /// The keys, each with the modifiers it needs; a key with none works only while no text
     /// box has the keyboard.
     pub keys: &'static [KeyboardShortcut],
-    /// What it does, in English and in Chinese.
-    pub does: Both,
+    /// What it does: its message in the catalogs (`locales/`).
+    pub does: &'static str,
 }
 
 const fn plain(key: Key) -> KeyboardShortcut {
@@ -91,80 +91,62 @@ pub const SHORTCUTS: [Shortcut; 26] = [
     Shortcut {
         action: Action::Next,
         keys: &[plain(Key::ArrowRight), plain(Key::PageDown)],
-        does: (
-            "next step of a lesson (next stage without one)",
-            "课程的下一步（无课程时为下一阶段）",
-        ),
+        does: "shortcuts-next-step-of-a-lesson",
     },
     Shortcut {
         action: Action::Previous,
         keys: &[plain(Key::ArrowLeft), plain(Key::PageUp)],
-        does: ("previous step (previous stage)", "上一步（上一阶段）"),
+        does: "shortcuts-previous-step-previous-stage",
     },
     Shortcut {
         action: Action::Play,
         keys: &[plain(Key::Space)],
-        does: (
-            "play or pause the step's animation (replay the transition)",
-            "播放或暂停本步动画（重放过渡）",
-        ),
+        does: "shortcuts-play-or-pause-the-step",
     },
     Shortcut {
         action: Action::Narration,
         keys: &[plain(Key::N)],
-        does: ("the narration card", "讲解卡片"),
+        does: "shortcuts-the-narration-card",
     },
     Shortcut {
         action: Action::Parameters,
         keys: &[plain(Key::P)],
-        does: ("the parameters panel", "参数面板"),
+        does: "shortcuts-the-parameters-panel",
     },
     Shortcut {
         action: Action::Inspector,
         keys: &[plain(Key::I)],
-        does: (
-            "the inspector: matrices, vertices, the pixel explained",
-            "检查器：矩阵、顶点、像素解释",
-        ),
+        does: "shortcuts-the-inspector-matrices-vertices-the",
     },
     Shortcut {
         action: Action::MatrixCard,
         keys: &[plain(Key::M)],
-        does: ("the matrix card over the geometry", "几何视图上的矩阵卡片"),
+        does: "shortcuts-the-matrix-card-over-the",
     },
     Shortcut {
         action: Action::Classroom,
         keys: &[plain(Key::C)],
-        does: (
-            "classroom mode: large type, the picture first",
-            "课堂模式：大字号，画面优先",
-        ),
+        does: "shortcuts-classroom-mode-large-type-the",
     },
     Shortcut {
         action: Action::ShaderEditor,
         keys: &[plain(Key::S)],
-        does: ("the shader editor (GLSL)", "着色器编辑器（GLSL）"),
+        does: "shortcuts-the-shader-editor-glsl",
     },
     Shortcut {
         action: Action::ApplyShaders,
         keys: &[command(Key::Enter)],
-        does: ("apply the shaders", "应用着色器"),
+        does: "shortcuts-apply-the-shaders",
     },
     Shortcut {
         action: Action::LessonEditor,
         keys: &[plain(Key::R)],
-        does: (
-            "the lesson editor: record what is on screen as steps, word, arrange",
-            "课程编辑器：把屏幕内容录制为步骤，撰写文字，调整顺序",
-        ),
+        does: "shortcuts-the-lesson-editor-record-what",
     },
     Shortcut {
         action: Action::Save,
         keys: &[command(Key::S)],
-        does: (
-            "the lesson editor saves its file, whole or not at all",
-            "课程编辑器保存文件（要么完整写入，要么不写）",
-        ),
+        does: "shortcuts-the-lesson-editor-saves-its",
     },
     Shortcut {
         action: Action::Redo,
@@ -172,144 +154,90 @@ pub const SHORTCUTS: [Shortcut; 26] = [
             KeyboardShortcut::new(Modifiers::COMMAND.plus(Modifiers::SHIFT), Key::Z),
             command(Key::Y),
         ],
-        does: ("the lesson editor redoes", "课程编辑器重做"),
+        does: "shortcuts-the-lesson-editor-redoes",
     },
     Shortcut {
         action: Action::Undo,
         keys: &[command(Key::Z)],
-        does: ("the lesson editor undoes", "课程编辑器撤销"),
+        does: "shortcuts-the-lesson-editor-undoes",
     },
     Shortcut {
         action: Action::StepOver,
         keys: &[plain(Key::F10)],
-        does: (
-            "shader debugger: next step (a call run whole)",
-            "着色器调试器：下一步（整个执行调用）",
-        ),
+        does: "shortcuts-shader-debugger-next-step-a",
     },
     Shortcut {
         action: Action::StepBack,
         keys: &[shift(Key::F10)],
-        does: ("shader debugger: one step back", "着色器调试器：后退一步"),
+        does: "shortcuts-shader-debugger-one-step-back",
     },
     Shortcut {
         action: Action::StepInto,
         keys: &[plain(Key::F7)],
-        does: (
-            "shader debugger: next step, into a call",
-            "着色器调试器：下一步，进入调用",
-        ),
+        does: "shortcuts-shader-debugger-next-step-into",
     },
     Shortcut {
         action: Action::StepOut,
         keys: &[shift(Key::F7)],
-        does: (
-            "shader debugger: out of this function",
-            "着色器调试器：跳出此函数",
-        ),
+        does: "shortcuts-shader-debugger-out-of-this",
     },
     Shortcut {
         action: Action::RunToCursor,
         keys: &[command(Key::F10)],
-        does: (
-            "shader debugger: run to the cursor's line",
-            "着色器调试器：运行到光标所在行",
-        ),
+        does: "shortcuts-shader-debugger-run-to-the",
     },
     Shortcut {
         action: Action::Continue,
         keys: &[plain(Key::F8)],
-        does: (
-            "shader debugger: on to the next breakpoint",
-            "着色器调试器：继续到下一个断点",
-        ),
+        does: "shortcuts-shader-debugger-on-to-the",
     },
     Shortcut {
         action: Action::ContinueBack,
         keys: &[shift(Key::F8)],
-        does: (
-            "shader debugger: back to the previous breakpoint",
-            "着色器调试器：倒退到上一个断点",
-        ),
+        does: "shortcuts-shader-debugger-back-to-the",
     },
     Shortcut {
         action: Action::Breakpoint,
         keys: &[plain(Key::F9)],
-        does: (
-            "shader debugger: a breakpoint on the cursor's line (or off); a click on a line number too",
-            "着色器调试器：在光标所在行设置或取消断点；单击行号亦可",
-        ),
+        does: "shortcuts-shader-debugger-a-breakpoint-on",
     },
     Shortcut {
         action: Action::FullScreen,
         keys: &[plain(Key::F11)],
-        does: ("full screen", "全屏"),
+        does: "shortcuts-full-screen",
     },
     Shortcut {
         action: Action::TextSize,
         keys: &[command(Key::Plus), command(Key::Minus)],
-        does: ("text size", "字号"),
+        does: "shortcuts-text-size",
     },
     Shortcut {
         action: Action::FocusView,
         keys: &[plain(Key::V)],
-        does: (
-            "the keyboard to the picture, then to the one beside it, then back to the steps (Tab reaches each too)",
-            "键盘焦点移到画面，再移到旁边的画面，再回到步骤（Tab 键也能到达每个画面）",
-        ),
+        does: "shortcuts-the-keyboard-to-the-picture",
     },
     Shortcut {
         action: Action::Keys,
         keys: &[plain(Key::F1), plain(Key::Questionmark)],
-        does: ("this list", "本列表"),
+        does: "shortcuts-this-list",
     },
 ];
 
-/// Words in English and in Chinese.
-type Both = (&'static str, &'static str);
-
-/// What the mouse does, for the help beside the keys: how the help writes it, in English and
-/// in Chinese, and what it does, in both.
-pub const MOUSE: [(Both, Both); 2] = [
-    (
-        ("wheel, drag", "滚轮、拖动"),
-        (
-            "zoom at the cursor, pan (geometry: orbit)",
-            "以光标为中心缩放、平移（几何视图：环绕）",
-        ),
-    ),
-    (
-        ("click", "单击"),
-        ("select a pixel or a vertex", "选择像素或顶点"),
-    ),
+/// What the mouse does, for the help beside the keys: the messages of how the help writes it
+/// and of what it does.
+pub const MOUSE: [(&str, &str); 2] = [
+    ("shortcuts-wheel-drag", "shortcuts-zoom-at-the-cursor-pan"),
+    ("shortcuts-click", "shortcuts-select-a-pixel-or-a"),
 ];
 
 /// What a picture does with the keys while it has the keyboard (V, or Tab; a ring shows it),
-/// for the help: how the help writes the keys and what they do, in English and in Chinese.
-/// `views::picture_keys` reads these keys.
-pub const IN_A_PICTURE: [(Both, Both); 4] = [
-    (
-        ("← → ↑ ↓", "← → ↑ ↓"),
-        (
-            "in the picture: the inspected pixel moves (Shift: 10 pixels); a geometry view or the observer orbits (Shift: 10×)",
-            "画面中：移动所查看的像素（Shift：10 个像素）；几何视图或观察者视图环绕（Shift：10 倍）",
-        ),
-    ),
-    (("+  −", "+  −"), ("in the picture: zoom", "画面中：缩放")),
-    (
-        ("[  ]", "[  ]"),
-        (
-            "in a geometry view: the previous or next vertex (Shift: 10 on)",
-            "几何视图中：上一个或下一个顶点（Shift：跳 10 个）",
-        ),
-    ),
-    (
-        ("Esc", "Esc"),
-        (
-            "the keyboard back from the picture or the shader's source (where Tab indents): the arrows step again",
-            "键盘离开画面或着色器源码（源码中 Tab 用于缩进）：方向键重新用于换步",
-        ),
-    ),
+/// for the help: the keys as the help writes them (the same in every language) and the message
+/// of what they do. `views::picture_keys` reads these keys.
+pub const IN_A_PICTURE: [(&str, &str); 4] = [
+    ("← → ↑ ↓", "shortcuts-in-the-picture-the-inspected"),
+    ("+  −", "shortcuts-in-the-picture-zoom"),
+    ("[  ]", "shortcuts-in-a-geometry-view-the"),
+    ("Esc", "shortcuts-the-keyboard-back-from-the"),
 ];
 
 /// The shortcut of `action`.

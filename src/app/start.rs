@@ -63,13 +63,14 @@ pub fn create(
     }
 }
 
-/// The language a fresh session starts in, from `PIPELENS_LANG` (`zh` or `en`).
+/// The language a fresh session starts in, from `PIPELENS_LANG` (a catalog's tag: `en`,
+/// `zh-Hans` or `zh`; English for any other).
 #[must_use]
 pub fn initial_lang() -> Lang {
-    match std::env::var("PIPELENS_LANG").as_deref() {
-        Ok("zh") => Lang::Zh,
-        _ => Lang::En,
-    }
+    std::env::var("PIPELENS_LANG")
+        .ok()
+        .and_then(|tag| Lang::find(&tag))
+        .unwrap_or(Lang::EN)
 }
 
 /// Opens the window on `doc` and runs until it is closed.
@@ -126,10 +127,9 @@ pub async fn start(
             .find_map(|kv| kv.strip_prefix(key)?.strip_prefix('='))
             .map(str::to_owned)
     };
-    let lang = match value("lang").as_deref() {
-        Some("zh") => crate::vocabulary::Lang::Zh,
-        _ => crate::vocabulary::Lang::En,
-    };
+    let lang = value("lang")
+        .and_then(|tag| crate::vocabulary::Lang::find(&tag))
+        .unwrap_or_default();
     let lesson_file = value("lesson");
     let doc = lesson_file
         .as_deref()

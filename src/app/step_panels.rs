@@ -42,7 +42,7 @@ impl PipelensApp {
                 // narration are what the room reads, and the code's type stays no larger
                 // than the narration's.
                 crate::app::style::chrome_style(ui);
-                ui.heading(lang.tr("Shaders (GLSL)", "着色器（GLSL）"));
+                ui.heading(lang.t("step-panels-shaders-glsl"));
                 self.commands.extend(crate::app::views::shader::ui(
                     ui,
                     &mut self.shader_editor,

@@ -23,7 +23,7 @@ impl PipelensApp {
         if super::window_size::is_compact(ui.ctx()) {
             ui.horizontal(|ui| {
                 style::chrome_style(ui);
-                ui.menu_button(lang.tr("View ▾", "视图 ▾"), |ui| {
+                ui.menu_button(lang.t("toolbar-view"), |ui| {
                     self.view_controls(ui, capture);
                 });
             });
@@ -68,11 +68,8 @@ impl PipelensApp {
         if space.is_some() || sel.comparison.is_none() {
             let mut obs = sel.show_observer;
             if ui
-                .checkbox(&mut obs, lang.tr("Observer view", "观察者视图"))
-                .on_hover_text(lang.tr(
-                    "The scene seen from outside, with the camera's frustum and the lights.",
-                    "从外部看场景，并显示相机的视锥和光源。",
-                ))
+                .checkbox(&mut obs, lang.t("toolbar-observer-view"))
+                .on_hover_text(lang.t("toolbar-the-scene-seen-from-outside"))
                 .changed()
             {
                 self.commands
@@ -86,19 +83,16 @@ impl PipelensApp {
         let lang = self.session.lang;
         let current = self.session.selection.comparison;
         let mut choice = current;
-        egui::ComboBox::new("comparison", lang.tr("side by side", "并排对比"))
-            .selected_text(current.map_or(lang.tr("off", "关"), |c| c.name(lang)))
+        egui::ComboBox::new("comparison", lang.t("toolbar-side-by-side"))
+            .selected_text(current.map_or(lang.t("toolbar-off"), |c| c.name(lang)))
             .show_ui(ui, |ui| {
-                ui.selectable_value(&mut choice, None, lang.tr("off", "关"));
+                ui.selectable_value(&mut choice, None, lang.t("toolbar-off"));
                 for c in crate::vocabulary::Comparison::ALL {
                     ui.selectable_value(&mut choice, Some(c), c.name(lang));
                 }
             })
             .response
-            .on_hover_text(lang.tr(
-                "Render the scene with different settings and show them side by side, with an intensity profile.",
-                "用不同设置渲染场景并并排显示，附亮度剖面曲线。",
-            ));
+            .on_hover_text(lang.t("toolbar-render-the-scene-with-different"));
         if choice != current {
             self.commands
                 .push(Command::View(ViewCommand::SetComparison(choice)));

@@ -228,7 +228,7 @@ impl PipelensApp {
                 .default_size(300.0)
                 .resizable(true)
                 .show(ui, |ui| {
-                    ui.heading(lang.tr("Parameters", "参数"));
+                    ui.heading(lang.t("window-parameters"));
                     self.commands.extend(params::ui(ui, &self.session));
                 });
         }
@@ -273,7 +273,7 @@ impl PipelensApp {
                             self.session
                                 .error
                                 .clone()
-                                .unwrap_or_else(|| lang.tr("Rendering…", "渲染中…").to_owned()),
+                                .unwrap_or_else(|| lang.t("window-rendering").to_owned()),
                         );
                     });
                 }

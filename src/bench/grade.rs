@@ -74,7 +74,7 @@ pub fn run(count: usize, out: &mut dyn Write) -> Result<()> {
     let start = Instant::now();
     let passed = hand_ins
         .par_iter()
-        .filter(|code| grade(&lesson, k, code, Lang::En).passed)
+        .filter(|code| grade(&lesson, k, code, Lang::EN).passed)
         .count();
     let seconds = start.elapsed().as_secs_f64();
     writeln!(

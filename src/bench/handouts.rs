@@ -16,7 +16,7 @@ const TEAPOT: &str = include_str!("teapot-handout.toml");
 
 /// One export: (bytes of index.html, seconds).
 fn measure(lesson: &Lesson, lang: Lang, scratch: &Path) -> Result<(u64, f64)> {
-    let out = scratch.join(format!("{}-{}", lesson.id, lang.tr("en", "zh")));
+    let out = scratch.join(format!("{}-{}", lesson.id, lang.t("handouts-en")));
     let opts = LessonExport {
         out: out.clone(),
         step: None,
@@ -77,8 +77,8 @@ pub fn run(lessons: &Path, data: &Path, out: &mut dyn std::io::Write) -> Result<
         "lesson", "steps", "animated", "en MB", "en s", "zh MB", "zh s"
     )?;
     for l in &cases {
-        let (en_b, en_s) = measure(l, Lang::En, &scratch)?;
-        let (zh_b, zh_s) = measure(l, Lang::Zh, &scratch)?;
+        let (en_b, en_s) = measure(l, Lang::EN, &scratch)?;
+        let (zh_b, zh_s) = measure(l, Lang::ZH, &scratch)?;
         let animated = l.steps.iter().filter(|s| !s.animate.is_empty()).count();
         let mb = |b: u64| b as f64 / 1_000_000.0;
         writeln!(

@@ -296,7 +296,7 @@ fn slider_drag(frames: usize, out: &mut dyn std::io::Write) -> anyhow::Result<()
             } else {
                 "nothing inspected"
             },
-            session.selection.stage.name(crate::vocabulary::Lang::En),
+            session.selection.stage.name(crate::vocabulary::Lang::EN),
             match job.spec.settings.capture {
                 Capture::FULL => "every buffer",
                 Capture::COLOR => "the colour only",

@@ -13,6 +13,19 @@ pub(super) fn parse_stage(s: &str) -> Result<crate::vocabulary::Stage, String> {
     })
 }
 
+/// A language by its BCP 47 tag: one of the catalogs in `locales/` (`en`, `zh-Hans`; `zh` for
+/// short), or the pseudo-locale `en-XA`.
+pub(super) fn parse_lang(s: &str) -> Result<crate::vocabulary::Lang, String> {
+    use crate::vocabulary::{Lang, lang::PSEUDO};
+    Lang::find(s).ok_or_else(|| {
+        let found: Vec<&str> = Lang::all().iter().map(|l| l.tag()).collect();
+        format!(
+            "no catalog for \"{s}\": the languages found are {} (and the pseudo-locale {PSEUDO})",
+            found.join(", ")
+        )
+    })
+}
+
 /// A window pixel `X,Y` (y up).
 pub(super) fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
     let (x, y) = s

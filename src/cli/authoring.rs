@@ -173,7 +173,7 @@ fn check_shader(path: &Path) -> Option<bool> {
             for e in &errors {
                 let said = crate::vocabulary::compile::complaint(
                     &e.complaint,
-                    crate::vocabulary::Lang::En,
+                    crate::vocabulary::Lang::EN,
                 )
                 .unwrap_or_else(|| e.message.clone());
                 eprintln!("{}:{}:{}: error: {said}", path.display(), e.line, e.column);

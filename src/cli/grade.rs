@@ -4,6 +4,7 @@
 //! endless loop, a file far too large, binary bytes, a link out of its folder — is graded
 //! failed with its reason; the batch goes on.
 
+use crate::vocabulary::Written;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
@@ -75,10 +76,7 @@ pub fn run(req: &GradeRequest) -> Result<()> {
             .unwrap_or_else(|_| {
                 Grade::failed(
                     req.lang
-                        .tr(
-                            "pipelens failed while checking this hand-in (a defect in pipelens, not in the hand-in): please report it",
-                            "pipelens 在检查这份作业时出错（这是 pipelens 的缺陷，不是作业的问题）：请报告",
-                        )
+                        .t("grade-pipelens-failed-while-checking-this")
                         .to_owned(),
                 )
             });
@@ -192,42 +190,48 @@ impl Unreadable {
     /// The reason in words, in `lang`.
     fn words(&self, path: &Path, lang: Lang) -> String {
         let at = path.display();
-        match (self, lang) {
-            (Self::Missing(e), Lang::En) => format!("{at} cannot be read: {e}"),
-            (Self::Missing(e), Lang::Zh) => format!("无法读取 {at}：{e}"),
-            (Self::TooLarge(name, n), Lang::En) => format!(
+        match (self, lang.written()) {
+            (Self::Missing(e), Written::English) => format!("{at} cannot be read: {e}"),
+            (Self::Missing(e), Written::Chinese) => format!("无法读取 {at}：{e}"),
+            (Self::TooLarge(name, n), Written::English) => format!(
                 "{name} holds {:.1} MB; a shader is at most {} KB: not graded",
                 *n as f64 / 1e6,
                 MAX_SOURCE_BYTES / 1024
             ),
-            (Self::TooLarge(name, n), Lang::Zh) => format!(
+            (Self::TooLarge(name, n), Written::Chinese) => format!(
                 "{name} 有 {:.1} MB；着色器最多 {} KB：不予评分",
                 *n as f64 / 1e6,
                 MAX_SOURCE_BYTES / 1024
             ),
-            (Self::NotText(name), Lang::En) => {
+            (Self::NotText(name), Written::English) => {
                 format!("{name} is not text (it holds bytes that are not UTF-8)")
             }
-            (Self::NotText(name), Lang::Zh) => format!("{name} 不是文本（含有非 UTF-8 的字节）"),
-            (Self::OutsideFolder(name), Lang::En) => {
+            (Self::NotText(name), Written::Chinese) => {
+                format!("{name} 不是文本（含有非 UTF-8 的字节）")
+            }
+            (Self::OutsideFolder(name), Written::English) => {
                 format!("{name} is a link that leads out of the hand-in's folder: not read")
             }
-            (Self::OutsideFolder(name), Lang::Zh) => {
+            (Self::OutsideFolder(name), Written::Chinese) => {
                 format!("{name} 是指向作业文件夹之外的链接：未读取")
             }
-            (Self::Nothing, Lang::En) => format!(
+            (Self::Nothing, Written::English) => format!(
                 "{at} holds no shader.vert, shader.frag or function file ({})",
                 function_files(", ")
             ),
-            (Self::NotWork(why), Lang::En) => format!("{at}: {why}"),
-            (Self::NotWork(why), Lang::Zh) => format!("{at}：不是 pipelens 写的作业文件（{why}）"),
-            (Self::OtherLesson(id), Lang::En) => {
+            (Self::NotWork(why), Written::English) => format!("{at}: {why}"),
+            (Self::NotWork(why), Written::Chinese) => {
+                format!("{at}：不是 pipelens 写的作业文件（{why}）")
+            }
+            (Self::OtherLesson(id), Written::English) => {
                 format!("{at} is work on lesson {id}, not on this one")
             }
-            (Self::OtherLesson(id), Lang::Zh) => format!("{at} 是课程 {id} 的作业，不是这一课的"),
-            (Self::NoWorkAt(n), Lang::En) => format!("{at} holds no code for step {n}"),
-            (Self::NoWorkAt(n), Lang::Zh) => format!("{at} 中没有第 {n} 步的代码"),
-            (Self::Nothing, Lang::Zh) => format!(
+            (Self::OtherLesson(id), Written::Chinese) => {
+                format!("{at} 是课程 {id} 的作业，不是这一课的")
+            }
+            (Self::NoWorkAt(n), Written::English) => format!("{at} holds no code for step {n}"),
+            (Self::NoWorkAt(n), Written::Chinese) => format!("{at} 中没有第 {n} 步的代码"),
+            (Self::Nothing, Written::Chinese) => format!(
                 "{at} 中没有 shader.vert、shader.frag 或函数文件（{}）",
                 function_files("、")
             ),
@@ -326,7 +330,7 @@ fn print_table(rows: &[Row], lang: Lang) {
         .map(|r| columns(&r.student))
         .max()
         .unwrap_or(0)
-        .max(columns(lang.tr("student", "学生")));
+        .max(columns(lang.t("grade-student")));
     let line = |cells: [&str; 5]| {
         let pad = |text: &str, to: usize, right: bool| {
             let fill = " ".repeat(to.saturating_sub(columns(text)));
@@ -346,11 +350,11 @@ fn print_table(rows: &[Row], lang: Lang) {
         );
     };
     line([
-        lang.tr("student", "学生"),
-        lang.tr("step", "步骤"),
-        lang.tr("passed", "通过"),
-        lang.tr("matching", "一致"),
-        lang.tr("first difference", "第一处差异"),
+        lang.t("grade-student"),
+        lang.t("grade-step"),
+        lang.t("grade-passed"),
+        lang.t("grade-matching"),
+        lang.t("grade-first-difference"),
     ]);
     for r in rows {
         let matching = r
@@ -358,9 +362,9 @@ fn print_table(rows: &[Row], lang: Lang) {
             .matching
             .map_or_else(|| "—".to_owned(), |(m, t)| format!("{m}/{t}"));
         let passed = if r.grade.passed {
-            lang.tr("yes", "是")
+            lang.t("grade-yes")
         } else {
-            lang.tr("no", "否")
+            lang.t("grade-no")
         };
         line([
             &r.student,
@@ -375,8 +379,8 @@ fn print_table(rows: &[Row], lang: Lang) {
     let passed = rows.iter().filter(|r| r.grade.passed).count();
     say!(
         "{}",
-        match lang {
-            Lang::En => {
+        match lang.written() {
+            Written::English => {
                 let plural = |n: usize, one: &str, many: &str| {
                     format!("{n} {}", if n == 1 { one } else { many })
                 };
@@ -386,7 +390,7 @@ fn print_table(rows: &[Row], lang: Lang) {
                     plural(rows.len(), "check", "checks")
                 )
             }
-            Lang::Zh => format!(
+            Written::Chinese => format!(
                 "{} 份作业，{} 项检查，{passed} 项通过",
                 students.len(),
                 rows.len()
@@ -440,9 +444,9 @@ fn gradescope_results(rows: &[Row], lang: Lang) -> serde_json::Value {
         .iter()
         .map(|r| {
             serde_json::json!({
-                "name": match lang {
-                    Lang::En => format!("Step {}: {}", r.step, r.title),
-                    Lang::Zh => format!("第 {} 步：{}", r.step, r.title),
+                "name": match lang.written() {
+                    Written::English => format!("Step {}: {}", r.step, r.title),
+                    Written::Chinese => format!("第 {} 步：{}", r.step, r.title),
                 },
                 "score": if r.grade.passed { 1.0 } else { 0.0 },
                 "max_score": 1.0,
@@ -455,9 +459,9 @@ fn gradescope_results(rows: &[Row], lang: Lang) -> serde_json::Value {
     let score = rows.iter().filter(|r| r.grade.passed).count() as f64;
     serde_json::json!({
         "score": score,
-        "output": match lang {
-            Lang::En => format!("{} of {} lab steps passed, each checked pixel by pixel against pipelens' own.", score, rows.len()),
-            Lang::Zh => format!("{} 个练习步骤中通过 {} 个，每个都与 pipelens 自带的逐像素比较。", rows.len(), score),
+        "output": match lang.written() {
+            Written::English => format!("{} of {} lab steps passed, each checked pixel by pixel against pipelens' own.", score, rows.len()),
+            Written::Chinese => format!("{} 个练习步骤中通过 {} 个，每个都与 pipelens 自带的逐像素比较。", rows.len(), score),
         },
         "visibility": "visible",
         "stdout_visibility": "visible",

@@ -22,7 +22,7 @@ mod export;
 mod grade;
 
 pub use args::Size;
-use args::{parse_line, parse_pixel, parse_stage, parse_watch};
+use args::{parse_lang, parse_line, parse_pixel, parse_stage, parse_watch};
 pub use export::load;
 
 use std::path::PathBuf;
@@ -45,9 +45,10 @@ pub struct Cli {
     /// omitted). The file is watched: edits are reloaded on save.
     #[arg(long = "lesson", visible_alias = "scene", value_name = "FILE")]
     pub scene: Option<PathBuf>,
-    /// The app: the interface language, `en` or `zh`.
-    #[arg(long, value_parser = ["en", "zh"])]
-    pub lang: Option<String>,
+    /// The app: the interface language, by its tag — one of the catalogs in locales/ (en,
+    /// zh-Hans or zh), or the pseudo-locale en-XA.
+    #[arg(long, value_parser = parse_lang)]
+    pub lang: Option<crate::vocabulary::Lang>,
     /// The app: the stage to open on (model, world, view, clip, ndc, viewport, rasterization,
     /// depth, shading, texturing, output).
     #[arg(long, value_parser = parse_stage)]
@@ -74,9 +75,10 @@ pub enum Command {
         /// A lesson: export only step N (1-based).
         #[arg(long)]
         step: Option<usize>,
-        /// A lesson: the handout's language, `en` or `zh`.
-        #[arg(long, value_parser = ["en", "zh"], default_value = "en")]
-        lang: String,
+        /// A lesson: the handout's language, by its tag (en, zh-Hans or zh, any catalog in
+        /// locales/).
+        #[arg(long, value_parser = parse_lang, default_value = "en")]
+        lang: crate::vocabulary::Lang,
         /// A lesson: a teacher's key, every answer printed under its question.
         #[arg(long)]
         answers: bool,
@@ -158,9 +160,9 @@ pub enum Command {
         /// per submission; scripts/gradescope/ holds the autograder).
         #[arg(long, value_name = "FILE")]
         gradescope: Option<PathBuf>,
-        /// The feedback's language, `en` or `zh`.
-        #[arg(long, default_value = "en", value_parser = ["en", "zh"])]
-        lang: String,
+        /// The feedback's language, by its tag (en, zh-Hans or zh, any catalog in locales/).
+        #[arg(long, default_value = "en", value_parser = parse_lang)]
+        lang: crate::vocabulary::Lang,
     },
     /// Time each stage of the pipeline on standard scenes.
     Bench {
@@ -264,11 +266,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                         s => s.map(|s| s - 1),
                     },
                     size: size.map(|s| (s.width, s.height)),
-                    lang: if lang == "zh" {
-                        crate::vocabulary::Lang::Zh
-                    } else {
-                        crate::vocabulary::Lang::En
-                    },
+                    lang,
                     max_records,
                     answers,
                     slides,
@@ -312,11 +310,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                 submissions,
                 csv,
                 gradescope,
-                lang: if lang == "zh" {
-                    crate::vocabulary::Lang::Zh
-                } else {
-                    crate::vocabulary::Lang::En
-                },
+                lang,
             })?;
             Ok(ExitCode::SUCCESS)
         }
@@ -333,11 +327,7 @@ fn open_app(cli: &Cli) -> Result<ExitCode> {
     }
     .map_err(|d| anyhow::anyhow!("{d}"))?;
     let source = crate::app::session::source_name(cli.scene.as_ref());
-    let lang = match cli.lang.as_deref() {
-        Some("zh") => crate::vocabulary::Lang::Zh,
-        Some(_) => crate::vocabulary::Lang::En,
-        None => crate::app::initial_lang(),
-    };
+    let lang = cli.lang.unwrap_or_else(crate::app::initial_lang);
     let start = crate::app::Start {
         lang,
         stage: cli.stage,

@@ -3,6 +3,7 @@
 //! it fits, no interactive parts on paper, each step's matrices only where they changed or where
 //! the step's stage uses them, and, for a teacher's key, every answer printed.
 
+use crate::vocabulary::Written;
 use std::fmt::Write as _;
 
 use base64::Engine as _;
@@ -165,8 +166,8 @@ img{max-height:100mm;width:auto}
 /// its own; the embedded one is the fallback. Lesson 11's adds about 0.15 MB (the whole font
 /// would add 4 MB); an English handout has none.
 fn cjk_font_face(lang: Lang, text: &str) -> String {
-    match lang {
-        Lang::Zh => {
+    match lang.written() {
+        Written::Chinese => {
             // A font that cannot be cut is embedded whole: larger, and still Chinese.
             let font = super::font::cjk_subset(text)
                 .unwrap_or_else(|_| crate::vocabulary::cjk_font().to_vec());
@@ -179,14 +180,14 @@ fn cjk_font_face(lang: Lang, text: &str) -> String {
                 data_url("font/otf", &font)
             )
         }
-        Lang::En => String::new(),
+        Written::English => String::new(),
     }
 }
 
 /// The handout of the exported `pages`, in `lang`; with `answers`, every answer printed.
 #[must_use]
 pub fn html(lesson: &Lesson, pages: &[StepPage], lang: Lang, answers: bool) -> String {
-    let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
+    let t = |id: &'static str| lang.t(id);
     // The body first: the head's font is cut to the characters it holds.
     let mut h = String::new();
     let _ = writeln!(
@@ -199,17 +200,14 @@ pub fn html(lesson: &Lesson, pages: &[StepPage], lang: Lang, answers: bool) -> S
         let _ = writeln!(
             h,
             "<p><span class=\"key ui\">{}</span></p>",
-            t(
-                "Teacher's key: every answer printed",
-                "教师版：印出全部答案"
-            )
+            t("handout-teacher-s-key-every-answer")
         );
     }
     if !lesson.prerequisites.is_empty() {
         let _ = writeln!(
             h,
             "<p class=\"summary\"><span class=\"ui\">{}</span>: {}</p>",
-            t("Before this lesson", "先修课"),
+            t("handout-before-this-lesson"),
             html::esc(&lesson.prerequisites.join(", "))
         );
     }
@@ -237,7 +235,7 @@ fn step_html(
     lang: Lang,
     answers: bool,
 ) {
-    let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
+    let t = |id: &'static str| lang.t(id);
     let step = &lesson.steps[page.index];
     let title = html::esc(step.title.get(lang));
     let _ = write!(
@@ -250,7 +248,7 @@ fn step_html(
     let target = if step.exercise.is_some() {
         format!(
             "{}{}",
-            t(" — ", "——"),
+            t("handout-dash"),
             super::handout_exercise::lab_target(lang)
         )
     } else {
@@ -266,7 +264,7 @@ fn step_html(
         "<figure><img src=\"{}\" alt=\"{title} — {}\"><figcaption class=\"ui\">{}{}{target}{legend}</figcaption></figure>",
         page.picture.url(),
         html::esc(&page.alt),
-        t("Stage: ", "阶段："),
+        t("handout-stage"),
         page.stage.name(lang)
     );
     if let Some(a) = &page.animated {
@@ -274,18 +272,12 @@ fn step_html(
             h,
             "<figure class=\"screen\"><img src=\"{}\" alt=\"{title}\"><figcaption class=\"ui\">{}</figcaption></figure>",
             data_url("image/gif", &a.gif),
-            t(
-                "The animation, as the app plays it",
-                "动画，与应用中播放的相同"
-            )
+            t("handout-the-animation-as-the-app")
         );
         let _ = write!(
             h,
             "<p class=\"ui\">{}</p><div class=\"film\">",
-            t(
-                "The animation in frames, from its start to its end:",
-                "动画的分帧，从开始到结束："
-            )
+            t("handout-the-animation-in-frames-from")
         );
         for f in &a.filmstrip {
             let _ = write!(
@@ -350,7 +342,7 @@ mod tests {
             assert!(!html.contains(mark), "{mark} in {html}");
         }
         let m = NamedMatrix::new("M_persp", "M_{persp→ortho}", glam::Mat4::IDENTITY);
-        let figure = matrix_html(&m, Lang::En);
+        let figure = matrix_html(&m, Lang::EN);
         assert!(figure.contains("M<sub>persp→ortho</sub>"), "{figure}");
     }
 }

@@ -2,6 +2,7 @@
 //! teacher's key, the answer), the exercise with its file listed and what is left to do marked,
 //! a lab's student code and, at its inspected pixel, the fragments' trace.
 
+use crate::vocabulary::Written;
 use std::fmt::Write as _;
 
 use pipeline::capture::FragmentTrace;
@@ -21,12 +22,12 @@ pub(super) fn question_html(
     lang: Lang,
     answers: bool,
 ) -> String {
-    let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
+    let t = |id: &'static str| lang.t(id);
     let mut h = String::new();
     let _ = write!(
         h,
         "<div class=\"question\"><b class=\"ui\">{}</b> {}",
-        t("Question:", "思考题："),
+        t("handout-exercise-question"),
         typeset(&notation::parse_paragraph(q.get(lang)))
     );
     if let Some(e) = &step.expect {
@@ -37,14 +38,14 @@ pub(super) fn question_html(
             let _ = write!(
                 h,
                 "<div class=\"answer\"><b class=\"ui\">{}</b>{}</div>",
-                t("Answer:", "答案："),
+                t("handout-exercise-answer"),
                 markdown(a.get(lang))
             );
         } else {
             let _ = write!(
                 h,
                 "<details class=\"screen\"><summary class=\"ui\">{}</summary>{}</details>",
-                t("Show the answer", "显示答案"),
+                t("handout-exercise-show-the-answer"),
                 markdown(a.get(lang))
             );
         }
@@ -76,10 +77,7 @@ pub(super) fn shaders_html(lesson: &Lesson, k: usize, code: &StudentCode, lang: 
     }
     let mut h = format!(
         "<p class=\"listing ui\">{}</p>",
-        lang.tr(
-            "The shaders this step runs (on yellow: the lines changed from the step before):",
-            "本步骤运行的着色器（黄底：与上一步相比改动的行）："
-        )
+        lang.t("handout-exercise-the-shaders-this-step-runs")
     );
     for (file, source, marked) in files {
         h.push_str(&file_listing(
@@ -94,25 +92,22 @@ pub(super) fn shaders_html(lesson: &Lesson, k: usize, code: &StudentCode, lang: 
 
 /// What a lab's picture is: pipelens' own frame, which the student's code must draw.
 pub(super) fn lab_target(lang: Lang) -> &'static str {
-    lang.tr(
-        "pipelens' own, what your code must draw",
-        "pipelens 自带的结果：你的代码要画出的画面",
-    )
+    lang.t("handout-exercise-pipelens-own-what-your-code")
 }
 
 /// The debugger at the step's pixel on paper: each fragment's inputs, its run statement by
 /// statement (line and words, branches and loop iterations among them), and what it wrote.
 pub(super) fn trace_html((x, y): (u32, u32), fragments: &[FragmentTrace], lang: Lang) -> String {
-    let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
+    let t = |id: &'static str| lang.t(id);
     let mut h = String::new();
     for (k, f) in fragments.iter().enumerate() {
         let _ = write!(
             h,
             "<p class=\"listing ui\">{} ({x}, {y}) · {} {} · {} {}</p><table class=\"src\">",
-            t("The debugger at pixel", "调试器：像素"),
-            t("fragment", "片元"),
+            t("handout-exercise-the-debugger-at-pixel"),
+            t("handout-exercise-fragment"),
             k + 1,
-            t("triangle", "三角形"),
+            t("handout-exercise-triangle"),
             f.primitive
         );
         let row = |h: &mut String, n: &str, text: &str| {
@@ -135,7 +130,7 @@ pub(super) fn trace_html((x, y): (u32, u32), fragments: &[FragmentTrace], lang: 
             );
         }
         let out = f.output.map_or_else(
-            || t("discarded", "被丢弃").to_owned(),
+            || t("handout-exercise-discarded").to_owned(),
             |c| {
                 format!(
                     "vec4({}, {}, {}, {})",
@@ -159,10 +154,10 @@ pub(super) fn exercise_html(
     comments: &std::collections::BTreeMap<String, String>,
     lang: Lang,
 ) -> String {
-    let t = |en: &'static str, zh: &'static str| lang.tr(en, zh);
+    let t = |id: &'static str| lang.t(id);
     let mut h = format!(
         "<div class=\"question exercise\"><b class=\"ui\">{}</b> {}",
-        t("Exercise:", "练习："),
+        t("handout-exercise-exercise"),
         typeset(&notation::parse_paragraph(e.task.get(lang)))
     );
     for (file, source, todo) in super::listing::starter_todos(&e.starter) {
@@ -181,9 +176,9 @@ fn fill_in(e: &crate::lesson::answer::Expect, answers: bool, lang: Lang) -> Stri
     let _ = write!(
         h,
         "<div class=\"ui\">{}</div><table class=\"fill\">",
-        match lang {
-            Lang::En => format!("Your answer (each entry within {tolerance}):"),
-            Lang::Zh => format!("你的答案（每项误差 {tolerance} 以内）："),
+        match lang.written() {
+            Written::English => format!("Your answer (each entry within {tolerance}):"),
+            Written::Chinese => format!("你的答案（每项误差 {tolerance} 以内）："),
         }
     );
     for r in 0..rows {

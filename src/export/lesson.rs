@@ -269,7 +269,7 @@ fn slide_extras(
         extras.caption = Some(super::handout_exercise::lab_target(lang).to_owned());
         extras.task = Some(format!(
             "{} {}",
-            lang.tr("Exercise:", "练习："),
+            lang.t("lesson-exercise"),
             e.task.get(lang)
         ));
         extras.code = starter_todos(&e.starter)
@@ -299,10 +299,7 @@ fn slide_extras(
         if rows.len() > 10 {
             rows.drain(9..rows.len() - 1);
         }
-        let heading = format!(
-            "{} ({x}, {y})",
-            lang.tr("The debugger at pixel", "调试器：像素")
-        );
+        let heading = format!("{} ({x}, {y})", lang.t("lesson-the-debugger-at-pixel"));
         extras.code = Some((heading, rows));
         return extras;
     }

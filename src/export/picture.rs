@@ -5,6 +5,7 @@
 //! shows it. The shapes are the core's (`overlay::Shape`, `FrameCapture::lighting_arrows`), the
 //! ones the app draws.
 
+use crate::vocabulary::Written;
 use anyhow::Result;
 use image::{Rgba, RgbaImage, imageops};
 use pipeline::buffers::BufferKind;
@@ -140,9 +141,9 @@ fn watched(capture: &FrameCapture, z: u32, lang: Lang) -> Option<RgbaImage> {
         drawn.image.height() * z,
         image::imageops::FilterType::Nearest,
     );
-    let title = match lang {
-        Lang::En => format!("{} after line {}", picture.expression, picture.line),
-        Lang::Zh => format!("第 {} 行之后的 {}", picture.line, picture.expression),
+    let title = match lang.written() {
+        Written::English => format!("{} after line {}", picture.expression, picture.line),
+        Written::Chinese => format!("第 {} 行之后的 {}", picture.line, picture.expression),
     };
     let middle = img.width() as f32 / 2.0;
     centred_label(&mut img, middle, 18.0, &title);
@@ -179,36 +180,36 @@ pub fn legend(lesson: &Lesson, k: usize, capture: &FrameCapture, lang: Lang) -> 
 fn watch_legend(picture: &pipeline::capture::WatchPicture, lang: Lang) -> String {
     use pipeline::shader::probe::WatchKind;
     let range = picture.range(0);
-    let said = match (picture.kind, range, lang) {
-        (Some(WatchKind::Bool), _, Lang::En) => {
+    let said = match (picture.kind, range, lang.written()) {
+        (Some(WatchKind::Bool), _, Written::English) => {
             "yellow where it holds, dark blue where not".to_owned()
         }
-        (Some(WatchKind::Bool), _, Lang::Zh) => "成立处为黄色，不成立处为深蓝色".to_owned(),
-        (Some(WatchKind::Float | WatchKind::Int), Some((lo, hi)), Lang::En) => format!(
+        (Some(WatchKind::Bool), _, Written::Chinese) => "成立处为黄色，不成立处为深蓝色".to_owned(),
+        (Some(WatchKind::Float | WatchKind::Int), Some((lo, hi)), Written::English) => format!(
             "dark blue {} to yellow {}",
             crate::vocabulary::num(lo),
             crate::vocabulary::num(hi)
         ),
-        (Some(WatchKind::Float | WatchKind::Int), Some((lo, hi)), Lang::Zh) => format!(
+        (Some(WatchKind::Float | WatchKind::Int), Some((lo, hi)), Written::Chinese) => format!(
             "深蓝 {} 到黄色 {}",
             crate::vocabulary::num(lo),
             crate::vocabulary::num(hi)
         ),
-        (_, _, Lang::En) => "the vector as a colour".to_owned(),
-        (_, _, Lang::Zh) => "向量显示为颜色".to_owned(),
+        (_, _, Written::English) => "the vector as a colour".to_owned(),
+        (_, _, Written::Chinese) => "向量显示为颜色".to_owned(),
     };
-    match lang {
-        Lang::En => format!(
+    match lang.written() {
+        Written::English => format!(
             "{} {}: {said}; grey checks {}",
             picture.expression,
             picture.place(),
             picture.unrun()
         ),
-        Lang::Zh if picture.from_vertex => format!(
+        Written::Chinese if picture.from_vertex => format!(
             "顶点着色器第 {} 行之后的 {}，经三角形上插值：{said}；灰色棋盘格处三角形有顶点没有执行该行",
             picture.line, picture.expression
         ),
-        Lang::Zh => format!(
+        Written::Chinese => format!(
             "第 {} 行之后的 {}：{said}；灰色棋盘格处没有片元执行该行",
             picture.line, picture.expression
         ),
@@ -477,7 +478,7 @@ fn mip_legend(img: &mut RgbaImage, lang: Lang) {
     let (w, h) = (8 * 26 + 14, 62);
     let x0 = img.width().saturating_sub(w + 8);
     darken(img, x0, 8, w, h);
-    let title = lang.tr("mip level", "mipmap 层级");
+    let title = lang.t("picture-mip-level");
     text::draw(img, (x0 + 8) as f32, 26.0, 15.0, [255, 255, 255], title);
     for k in 0..8u32 {
         let c = pipeline::texture::level_color(k)

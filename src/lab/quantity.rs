@@ -4,6 +4,7 @@
 //! stands for (`uv`, `lod`, `texel`). pipelens' own comes from its texture lookup at the pixel,
 //! which every frame with the pixel inspected keeps.
 
+use crate::vocabulary::Written;
 use pipeline::capture::{FrameCapture, PixelTexture};
 
 use crate::lesson::answer::{Compare, Quantity};
@@ -118,18 +119,18 @@ impl QuantityMismatch {
         let t = &self.theirs;
         let theirs = numbers(&pipelens_value(self.quantity, t));
         let uv = numbers(&t.uv.map(f64::from));
-        match (self.quantity, lang) {
-            (Quantity::Uv, Lang::En) => format!(
+        match (self.quantity, lang.written()) {
+            (Quantity::Uv, Written::English) => format!(
                 "At the inspected pixel your `{name}` (line {line}) is {yours}; pipelens' uv there, interpolated perspective-correctly, is {theirs}."
             ),
-            (Quantity::Uv, Lang::Zh) => format!(
+            (Quantity::Uv, Written::Chinese) => format!(
                 "在所检查的像素处，你的 `{name}`（第 {line} 行）是 {yours}；pipelens 在此处经透视校正插值的 uv 是 {theirs}。"
             ),
-            (Quantity::Lod, Lang::En) => format!(
+            (Quantity::Lod, Written::English) => format!(
                 "At the inspected pixel your `{name}` (line {line}) gives λ = {yours}; pipelens' λ there is {theirs}: the footprint is L = 2^λ = {:.2} texels a pixel step (uv {uv}).",
                 2f64.powf(f64::from(t.lod))
             ),
-            (Quantity::Lod, Lang::Zh) => format!(
+            (Quantity::Lod, Written::Chinese) => format!(
                 "在所检查的像素处，你的 `{name}`（第 {line} 行）给出 λ = {yours}；pipelens 在此处的 λ 是 {theirs}：像素每走一步，覆盖区域是 L = 2^λ = {:.2} 个纹素（uv {uv}）。",
                 2f64.powf(f64::from(t.lod))
             ),
@@ -148,11 +149,11 @@ impl QuantityMismatch {
             .filter(|_| level.fract() == 0.0)
             .map(|(w, h)| ((w >> level as u32).max(1), (h >> level as u32).max(1)));
         let Some((w, h)) = size else {
-            return match lang {
-                Lang::En => format!(
+            return match lang.written() {
+                Written::English => format!(
                     "At the inspected pixel your `{name}` (line {line}) gives {yours}; pipelens' filter reads {theirs} there (uv {uv})."
                 ),
-                Lang::Zh => format!(
+                Written::Chinese => format!(
                     "在所检查的像素处，你的 `{name}`（第 {line} 行）给出 {yours}；pipelens 的过滤在此处读出 {theirs}（uv {uv}）。"
                 ),
             };
@@ -162,19 +163,19 @@ impl QuantityMismatch {
         let y = f64::from(self.theirs.uv[1]) * f64::from(h) - 0.5;
         let (i, j) = (x.floor(), y.floor());
         let (s, t) = (x - i, y - j);
-        let on = match (lang, level as u32) {
-            (Lang::En, 0) => format!("the {w} × {h} texture"),
-            (Lang::En, k) => format!("level {k} ({w} × {h})"),
-            (Lang::Zh, 0) => format!(" {w} × {h} 的纹理"),
-            (Lang::Zh, k) => format!("第 {k} 层（{w} × {h}）"),
+        let on = match (lang.written(), level as u32) {
+            (Written::English, 0) => format!("the {w} × {h} texture"),
+            (Written::English, k) => format!("level {k} ({w} × {h})"),
+            (Written::Chinese, 0) => format!(" {w} × {h} 的纹理"),
+            (Written::Chinese, k) => format!("第 {k} 层（{w} × {h}）"),
         };
-        match lang {
-            Lang::En => format!(
+        match lang.written() {
+            Written::English => format!(
                 "At the inspected pixel your `{name}` (line {line}) gives {yours}; pipelens' bilinear filter reads {theirs} there: uv {uv} on {on} is (x, y) = ({x:.3}, {y:.3}) (x = u·w − ½, y = v·h − ½), between texels ({i}, {j}) and ({}, {}), mixed by s = {s:.3} and t = {t:.3}.",
                 i + 1.0,
                 j + 1.0
             ),
-            Lang::Zh => format!(
+            Written::Chinese => format!(
                 "在所检查的像素处，你的 `{name}`（第 {line} 行）给出 {yours}；pipelens 的双线性过滤在此处读出 {theirs}：uv {uv} 在{on}上是 (x, y) = ({x:.3}, {y:.3})（x = u·w − ½，y = v·h − ½），位于纹素 ({i}, {j}) 与 ({}, {}) 之间，按 s = {s:.3}、t = {t:.3} 混合。",
                 i + 1.0,
                 j + 1.0

@@ -4,6 +4,7 @@
 //! stored, both verdicts (the depth test). What the lab is about, named at the place it
 //! differs.
 
+use crate::vocabulary::Written;
 use glam::I64Vec2;
 use pipeline::capture::FrameCapture;
 use pipeline::raster::ONE;
@@ -134,17 +135,17 @@ impl SampleMismatch {
     /// The mismatch in words: where, the numbers the test reads, both verdicts.
     #[must_use]
     pub fn words(&self, lang: Lang) -> String {
-        let verdict = |inside: bool| match (inside, lang) {
-            (true, Lang::En) => "inside",
-            (false, Lang::En) => "outside",
-            (true, Lang::Zh) => "在内部",
-            (false, Lang::Zh) => "在外部",
+        let verdict = |inside: bool| match (inside, lang.written()) {
+            (true, Written::English) => "inside",
+            (false, Written::English) => "outside",
+            (true, Written::Chinese) => "在内部",
+            (false, Written::Chinese) => "在外部",
         };
-        let writes = |w: bool| match (w, lang) {
-            (true, Lang::En) => "writes the fragment",
-            (false, Lang::En) => "keeps what is stored",
-            (true, Lang::Zh) => "写入这个片元",
-            (false, Lang::Zh) => "保留已存的值",
+        let writes = |w: bool| match (w, lang.written()) {
+            (true, Written::English) => "writes the fragment",
+            (false, Written::English) => "keeps what is stored",
+            (true, Written::Chinese) => "写入这个片元",
+            (false, Written::Chinese) => "保留已存的值",
         };
         let num = |v: f64| crate::vocabulary::short(v as f32, 4);
         match self {
@@ -160,11 +161,13 @@ impl SampleMismatch {
                 let edges: Vec<String> = (0..3)
                     .map(|i| {
                         let on = if e[i] == 0.0 {
-                            match (top_left[i], lang) {
-                                (true, Lang::En) => " (on it: a top or left edge)",
-                                (false, Lang::En) => " (on it: neither a top nor a left edge)",
-                                (true, Lang::Zh) => "（恰在边上：上边或左边）",
-                                (false, Lang::Zh) => "（恰在边上：既非上边也非左边）",
+                            match (top_left[i], lang.written()) {
+                                (true, Written::English) => " (on it: a top or left edge)",
+                                (false, Written::English) => {
+                                    " (on it: neither a top nor a left edge)"
+                                }
+                                (true, Written::Chinese) => "（恰在边上：上边或左边）",
+                                (false, Written::Chinese) => "（恰在边上：既非上边也非左边）",
                             }
                         } else {
                             ""
@@ -172,8 +175,8 @@ impl SampleMismatch {
                         format!("E{i} = {}{on}", num(e[i]))
                     })
                     .collect();
-                match lang {
-                    Lang::En => format!(
+                match lang.written() {
+                    Written::English => format!(
                         "At pixel ({x}, {y}), the sample ({}, {}) against triangle {triangle}: {}. pipelens: {}; your inside(): {}.",
                         num(*px),
                         num(*py),
@@ -181,7 +184,7 @@ impl SampleMismatch {
                         verdict(*theirs),
                         verdict(*yours)
                     ),
-                    Lang::Zh => format!(
+                    Written::Chinese => format!(
                         "在像素 ({x}, {y})，采样点 ({}, {}) 对三角形 {triangle}：{}。pipelens：{}；你的 inside()：{}。",
                         num(*px),
                         num(*py),
@@ -201,13 +204,13 @@ impl SampleMismatch {
                 yours,
             } => {
                 let (z, stored) = (format!("{z:.6}"), format!("{stored:.6}"));
-                match lang {
-                    Lang::En => format!(
+                match lang.written() {
+                    Written::English => format!(
                         "At pixel ({x}, {y}), sample {sample}: triangle {triangle}'s fragment has z = {z} and the z-buffer holds {stored}. pipelens {}; your depth_test(z, stored) {}.",
                         writes(*theirs),
                         writes(*yours)
                     ),
-                    Lang::Zh => format!(
+                    Written::Chinese => format!(
                         "在像素 ({x}, {y}) 的第 {sample} 个采样点：三角形 {triangle} 的片元 z = {z}，深度缓冲中已存 {stored}。pipelens {}；你的 depth_test(z, stored) {}。",
                         writes(*theirs),
                         writes(*yours)

@@ -3,6 +3,7 @@
 //! or `bezier_patch.glsl` for the functions a step runs — put in place of the step's starter and
 //! checked as the app checks it. What the student did not hand in stays the starter's.
 
+use crate::vocabulary::Written;
 use std::sync::Arc;
 
 use pipeline::scene::ObjectShader;
@@ -77,9 +78,9 @@ impl Grade {
 #[must_use]
 pub fn grade(lesson: &Lesson, k: usize, code: &Code, lang: Lang) -> Grade {
     let Some(exercise) = lesson.steps.get(k).and_then(|s| s.exercise.as_ref()) else {
-        return Grade::failed(match lang {
-            Lang::En => format!("step {} of {} is not a lab", k + 1, lesson.id),
-            Lang::Zh => format!("{} 的第 {} 步不是练习", lesson.id, k + 1),
+        return Grade::failed(match lang.written() {
+            Written::English => format!("step {} of {} is not a lab", k + 1, lesson.id),
+            Written::Chinese => format!("{} 的第 {} 步不是练习", lesson.id, k + 1),
         });
     };
     let mut spec = lesson.spec_at(k);
@@ -110,9 +111,9 @@ pub fn grade(lesson: &Lesson, k: usize, code: &Code, lang: Lang) -> Grade {
                     .first()
                     .map(|e| crate::vocabulary::compile::message(e, lang))
                     .unwrap_or_default();
-                return Grade::failed(match lang {
-                    Lang::En => format!("Does not compile: {}.glsl, {first}", kind.key()),
-                    Lang::Zh => format!("无法编译：{}.glsl，{first}", kind.key()),
+                return Grade::failed(match lang.written() {
+                    Written::English => format!("Does not compile: {}.glsl, {first}", kind.key()),
+                    Written::Chinese => format!("无法编译：{}.glsl，{first}", kind.key()),
                 });
             }
         }
@@ -123,9 +124,9 @@ pub fn grade(lesson: &Lesson, k: usize, code: &Code, lang: Lang) -> Grade {
             matching: matching(&found),
             sentences: found.sentences(lang),
         },
-        Err(e) => Grade::failed(match lang {
-            Lang::En => format!("It compiles, but its run stopped: {e}"),
-            Lang::Zh => format!(
+        Err(e) => Grade::failed(match lang.written() {
+            Written::English => format!("It compiles, but its run stopped: {e}"),
+            Written::Chinese => format!(
                 "可以编译，但运行中止：{}",
                 crate::vocabulary::run::render_error(&e, lang)
             ),
@@ -145,25 +146,25 @@ fn matching(found: &Findings) -> Option<(u64, u64)> {
 /// The first message of shaders that do not compile, with its stage and line.
 fn compile_failed(errors: &[pipeline::shader::StageError], lang: Lang) -> String {
     let first = errors.first().map_or_else(String::new, |e| {
-        let stage = match (e.stage, lang) {
-            (pipeline::shader::Stage::Vertex, Lang::En) => "vertex shader",
-            (pipeline::shader::Stage::Fragment, Lang::En) => "fragment shader",
-            (pipeline::shader::Stage::Vertex, Lang::Zh) => "顶点着色器",
-            (pipeline::shader::Stage::Fragment, Lang::Zh) => "片元着色器",
+        let stage = match (e.stage, lang.written()) {
+            (pipeline::shader::Stage::Vertex, Written::English) => "vertex shader",
+            (pipeline::shader::Stage::Fragment, Written::English) => "fragment shader",
+            (pipeline::shader::Stage::Vertex, Written::Chinese) => "顶点着色器",
+            (pipeline::shader::Stage::Fragment, Written::Chinese) => "片元着色器",
         };
-        let comma = if lang == Lang::Zh { "，" } else { ", " };
+        let comma = if lang.is_chinese() { "，" } else { ", " };
         format!(
             "{stage}{comma}{}",
             crate::vocabulary::compile::message(&e.error, lang)
         )
     });
     let more = errors.len().saturating_sub(1);
-    match (lang, more) {
-        (Lang::En, 0) => format!("Does not compile: {first}"),
-        (Lang::En, 1) => format!("Does not compile: {first} (and 1 more message)"),
-        (Lang::En, n) => format!("Does not compile: {first} (and {n} more messages)"),
-        (Lang::Zh, 0) => format!("无法编译：{first}"),
-        (Lang::Zh, n) => format!("无法编译：{first}（另有 {n} 条消息）"),
+    match (lang.written(), more) {
+        (Written::English, 0) => format!("Does not compile: {first}"),
+        (Written::English, 1) => format!("Does not compile: {first} (and 1 more message)"),
+        (Written::English, n) => format!("Does not compile: {first} (and {n} more messages)"),
+        (Written::Chinese, 0) => format!("无法编译：{first}"),
+        (Written::Chinese, n) => format!("无法编译：{first}（另有 {n} 条消息）"),
     }
 }
 

@@ -2,6 +2,7 @@
 //! points) differ and where the first is, and what was found there — the variable, the vertex,
 //! the matrix entries. The card in the app and `pipelens grade` print the same sentences.
 
+use crate::vocabulary::Written;
 use pipeline::capture::Difference;
 use pipeline::shader::CurveDifference;
 
@@ -13,12 +14,12 @@ use crate::vocabulary::Lang;
 pub fn verdict(d: &Difference, lang: Lang) -> String {
     let tolerance = crate::vocabulary::short(d.criteria.tolerance, 1);
     if d.passed() {
-        return match lang {
-            Lang::En => format!(
+        return match lang.written() {
+            Written::English => format!(
                 "Passed: all {} pixels match pipelens' own (each channel within {tolerance}/255).",
                 d.total
             ),
-            Lang::Zh => format!(
+            Written::Chinese => format!(
                 "通过：全部 {} 个像素与 pipelens 自带的一致（每个通道相差不超过 {tolerance}/255）。",
                 d.total
             ),
@@ -33,15 +34,15 @@ pub fn verdict(d: &Difference, lang: Lang) -> String {
     // What differs, each clause only where some pixel differs so.
     let mut how = Vec::new();
     if d.largest > d.criteria.tolerance {
-        how.push(match lang {
-            Lang::En => format!("colours by up to {largest}/255"),
-            Lang::Zh => format!("颜色最多相差 {largest}/255"),
+        how.push(match lang.written() {
+            Written::English => format!("colours by up to {largest}/255"),
+            Written::Chinese => format!("颜色最多相差 {largest}/255"),
         });
     }
-    let counted = |n: u64, one: &str, many: &str, zh: &str| match lang {
-        Lang::En if n == 1 => format!("1 {one}"),
-        Lang::En => format!("{n} {many}"),
-        Lang::Zh => format!("{n} 个{zh}"),
+    let counted = |n: u64, one: &str, many: &str, zh: &str| match lang.written() {
+        Written::English if n == 1 => format!("1 {one}"),
+        Written::English => format!("{n} {many}"),
+        Written::Chinese => format!("{n} 个{zh}"),
     };
     if d.coverage_differs > 0 {
         how.push(counted(
@@ -67,8 +68,8 @@ pub fn verdict(d: &Difference, lang: Lang) -> String {
             "属于另一个三角形",
         ));
     }
-    match lang {
-        Lang::En => format!(
+    match lang.written() {
+        Written::English => format!(
             "Not yet: {} of {} pixels match; {} ({}). The first, reading from the top, is {first}.",
             d.matching,
             d.total,
@@ -79,7 +80,7 @@ pub fn verdict(d: &Difference, lang: Lang) -> String {
             },
             how.join("; ")
         ),
-        Lang::Zh => format!(
+        Written::Chinese => format!(
             "还没有通过：{} 个像素中 {} 个一致，{differ} 个不同（{}）。从上往下读，第一个是 {first}。",
             d.total,
             d.matching,
@@ -93,28 +94,30 @@ pub fn verdict(d: &Difference, lang: Lang) -> String {
 #[must_use]
 pub fn mismatch_words(m: &Mismatch, lang: Lang) -> String {
     let unnormalized = super::findings::unnormalized(m.lengths);
-    let mut text = match (lang, m.vertex) {
-        (Lang::En, None) => format!(
+    let mut text = match (lang.written(), m.vertex) {
+        (Written::English, None) => format!(
             "At the inspected pixel your `{}` (line {}) is {}; pipelens' own shader has {}.",
             m.name, m.line, m.yours, m.theirs
         ),
-        (Lang::Zh, None) => format!(
+        (Written::Chinese, None) => format!(
             "在所检查的像素处，你的 `{}`（第 {} 行）是 {}；pipelens 自带的着色器得到 {}。",
             m.name, m.line, m.yours, m.theirs
         ),
-        (Lang::En, Some(row)) => format!(
+        (Written::English, Some(row)) => format!(
             "At vertex {row} (a corner of the first wrong pixel's triangle) your vertex shader's `{}` (line {}) is {}; pipelens' own has {}.",
             m.name, m.line, m.yours, m.theirs
         ),
-        (Lang::Zh, Some(row)) => format!(
+        (Written::Chinese, Some(row)) => format!(
             "在顶点 {row}（第一个错误像素所在三角形的一个角）处，你的顶点着色器中的 `{}`（第 {} 行）是 {}；pipelens 自带的得到 {}。",
             m.name, m.line, m.yours, m.theirs
         ),
     };
     if let Some(len) = unnormalized {
-        text.push_str(&match lang {
-            Lang::En => format!(" Yours has length {len:.4}, pipelens' 1: is it normalized?"),
-            Lang::Zh => format!("你的长度是 {len:.4}，pipelens 的是 1：它归一化了吗？"),
+        text.push_str(&match lang.written() {
+            Written::English => {
+                format!(" Yours has length {len:.4}, pipelens' 1: is it normalized?")
+            }
+            Written::Chinese => format!("你的长度是 {len:.4}，pipelens 的是 1：它归一化了吗？"),
         });
     }
     text
@@ -123,13 +126,13 @@ pub fn mismatch_words(m: &Mismatch, lang: Lang) -> String {
 /// The first wrong vertex in words: its row and both clip positions.
 pub fn vertex_words(row: u32, yours: glam::Vec4, theirs: glam::Vec4, lang: Lang) -> String {
     let v = |c: glam::Vec4| format!("({:.3}, {:.3}, {:.3}, {:.3})", c.x, c.y, c.z, c.w);
-    match lang {
-        Lang::En => format!(
+    match lang.written() {
+        Written::English => format!(
             "The first vertex off is row {row}: your clip position {}, pipelens' {}.",
             v(yours),
             v(theirs)
         ),
-        Lang::Zh => format!(
+        Written::Chinese => format!(
             "第一个出错的顶点在第 {row} 行：你的裁剪坐标 {}，pipelens 的 {}。",
             v(yours),
             v(theirs)
@@ -145,20 +148,20 @@ pub fn matrix_words(m: &MatrixMismatch, lang: Lang) -> String {
         .entries
         .iter()
         .take(4)
-        .map(|(r, c, yours, theirs)| match lang {
-            Lang::En => format!(
+        .map(|(r, c, yours, theirs)| match lang.written() {
+            Written::English => format!(
                 "row {r}, column {c} is {yours:.3} ({} has {theirs:.3})",
                 m.matrix
             ),
-            Lang::Zh => format!(
+            Written::Chinese => format!(
                 "第 {r} 行第 {c} 列是 {yours:.3}（{} 中为 {theirs:.3}）",
                 m.matrix
             ),
         })
         .collect();
     let more = m.entries.len().saturating_sub(4);
-    match lang {
-        Lang::En => format!(
+    match lang.written() {
+        Written::English => format!(
             "Your `{}` (line {}) is pipelens' {} but for {}: {}{}.",
             m.name,
             m.line,
@@ -174,7 +177,7 @@ pub fn matrix_words(m: &MatrixMismatch, lang: Lang) -> String {
                 String::new()
             }
         ),
-        Lang::Zh => format!(
+        Written::Chinese => format!(
             "你的 `{}`（第 {} 行）与 pipelens 的 {} 有 {} 个元素不同：{}{}。",
             m.name,
             m.line,
@@ -197,19 +200,19 @@ pub fn curve_verdict(c: &CurveDifference, lang: Lang) -> String {
     use pipeline::shader::At;
     let tolerance = format!("{:e}", c.tolerance);
     let surface = c.surface;
-    let (b, what) = match (surface, lang) {
-        (false, Lang::En) => ("b(t)", "curve"),
-        (true, Lang::En) => ("b(u, v)", "surface"),
-        (false, Lang::Zh) => ("b(t)", "曲线"),
-        (true, Lang::Zh) => ("b(u, v)", "曲面"),
+    let (b, what) = match (surface, lang.written()) {
+        (false, Written::English) => ("b(t)", "curve"),
+        (true, Written::English) => ("b(u, v)", "surface"),
+        (false, Written::Chinese) => ("b(t)", "曲线"),
+        (true, Written::Chinese) => ("b(u, v)", "曲面"),
     };
     if c.passed() {
-        return match lang {
-            Lang::En => format!(
+        return match lang.written() {
+            Written::English => format!(
                 "Passed: all {} points of your {what} lie within {tolerance} of pipelens' {b}.",
                 c.total
             ),
-            Lang::Zh => format!(
+            Written::Chinese => format!(
                 "通过：你的{what}的全部 {} 个点与 pipelens 的 {b} 相差都不超过 {tolerance}。",
                 c.total
             ),
@@ -232,25 +235,25 @@ pub fn curve_verdict(c: &CurveDifference, lang: Lang) -> String {
             At::T(t) => format!("t = {t:.4}"),
             At::Uv(uv) => format!("(u, v) = ({:.4}, {:.4})", uv.x, uv.y),
         };
-        match lang {
-            Lang::En => format!(
+        match lang.written() {
+            Written::English => format!(
                 " The first, {at}: yours {}, pipelens' {}.",
                 point(mine),
                 point(theirs)
             ),
-            Lang::Zh => format!(
+            Written::Chinese => format!(
                 "第一个在 {at}：你的 {}，pipelens 的 {}。",
                 point(mine),
                 point(theirs)
             ),
         }
     });
-    match lang {
-        Lang::En => format!(
+    match lang.written() {
+        Written::English => format!(
             "Not yet: {} of {} {what} points lie within {tolerance} of pipelens' {b} (the farthest is {largest} away).{first}",
             c.matching, c.total
         ),
-        Lang::Zh => format!(
+        Written::Chinese => format!(
             "还没有通过：{} 个{what}点中 {} 个与 pipelens 的 {b} 相差不超过 {tolerance}（最远相差 {largest}）。{first}",
             c.total, c.matching
         ),

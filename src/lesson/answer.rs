@@ -161,18 +161,20 @@ impl Expect {
     /// entry is small enough to be checked within 5 % of itself, that too.
     #[must_use]
     pub fn tolerance_words(&self, lang: crate::vocabulary::Lang) -> String {
-        use crate::vocabulary::Lang;
+        use crate::vocabulary::Written;
         let t = crate::vocabulary::short(self.tolerance as f32, 4);
         let below = crate::vocabulary::short((self.tolerance / RELATIVE_TOLERANCE) as f32, 4);
         let small = self
             .values
             .iter()
             .any(|&e| self.tolerance_at(e) < self.tolerance);
-        match (lang, small) {
-            (Lang::En, false) => format!("±{t}"),
-            (Lang::Zh, false) => format!("±{t}"),
-            (Lang::En, true) => format!("±{t}; an entry under {below} within 5 % of itself"),
-            (Lang::Zh, true) => format!("±{t}；小于 {below} 的项在其自身的 5% 以内"),
+        match (lang.written(), small) {
+            (Written::English, false) => format!("±{t}"),
+            (Written::Chinese, false) => format!("±{t}"),
+            (Written::English, true) => {
+                format!("±{t}; an entry under {below} within 5 % of itself")
+            }
+            (Written::Chinese, true) => format!("±{t}；小于 {below} 的项在其自身的 5% 以内"),
         }
     }
 
@@ -243,69 +245,73 @@ impl Verdict {
     /// and by how much it is too large or too small; or which cells are empty or unreadable.
     #[must_use]
     pub fn describe(&self, expect: &Expect, lang: crate::vocabulary::Lang) -> String {
-        use crate::vocabulary::Lang;
+        use crate::vocabulary::Written;
         let num = |v: f64| crate::vocabulary::short(v as f32, 4);
-        let cell = |(r, c): (usize, usize)| match (expect.shape, lang) {
-            (Shape::Number, Lang::En) => "your value".to_owned(),
-            (Shape::Number, Lang::Zh) => "你的数值".to_owned(),
+        let cell = |(r, c): (usize, usize)| match (expect.shape, lang.written()) {
+            (Shape::Number, Written::English) => "your value".to_owned(),
+            (Shape::Number, Written::Chinese) => "你的数值".to_owned(),
             // A vector's entries by the names its boxes show, x, y, z, w (up to four).
-            (Shape::Vector(n), Lang::En) if n <= 4 => ["x", "y", "z", "w"][c].to_owned(),
-            (Shape::Vector(n), Lang::Zh) if n <= 4 => format!("{} 分量", ["x", "y", "z", "w"][c]),
-            (Shape::Vector(_), Lang::En) => format!("component {}", c + 1),
-            (Shape::Vector(_), Lang::Zh) => format!("第 {} 个分量", c + 1),
-            (Shape::Matrix(..), Lang::En) => format!("row {}, column {}", r + 1, c + 1),
-            (Shape::Matrix(..), Lang::Zh) => format!("第 {} 行第 {} 列", r + 1, c + 1),
+            (Shape::Vector(n), Written::English) if n <= 4 => ["x", "y", "z", "w"][c].to_owned(),
+            (Shape::Vector(n), Written::Chinese) if n <= 4 => {
+                format!("{} 分量", ["x", "y", "z", "w"][c])
+            }
+            (Shape::Vector(_), Written::English) => format!("component {}", c + 1),
+            (Shape::Vector(_), Written::Chinese) => format!("第 {} 个分量", c + 1),
+            (Shape::Matrix(..), Written::English) => format!("row {}, column {}", r + 1, c + 1),
+            (Shape::Matrix(..), Written::Chinese) => format!("第 {} 行第 {} 列", r + 1, c + 1),
         };
         let tolerance = expect.tolerance_words(lang);
         match self {
-            Self::Right => match lang {
-                Lang::En => format!("Right: every entry within {tolerance} of the answer."),
-                Lang::Zh => format!("正确：每一项都在 {tolerance} 之内。"),
+            Self::Right => match lang.written() {
+                Written::English => format!("Right: every entry within {tolerance} of the answer."),
+                Written::Chinese => format!("正确：每一项都在 {tolerance} 之内。"),
             },
             Self::Empty(cells) => {
                 let list: Vec<String> = cells.iter().map(|&at| cell(at)).collect();
-                match lang {
-                    Lang::En => format!("Still empty: {}.", list.join("; ")),
-                    Lang::Zh => format!("尚未填写：{}。", list.join("；")),
+                match lang.written() {
+                    Written::English => format!("Still empty: {}.", list.join("; ")),
+                    Written::Chinese => format!("尚未填写：{}。", list.join("；")),
                 }
             }
-            Self::Unreadable { at, text, why } => match lang {
-                Lang::En => format!(
+            Self::Unreadable { at, text, why } => match lang.written() {
+                Written::English => format!(
                     "{}: \"{text}\" is not a number ({}).",
                     cell(*at),
                     why.words(lang)
                 ),
-                Lang::Zh => format!("{}：“{text}”不是数值（{}）。", cell(*at), why.words(lang)),
+                Written::Chinese => {
+                    format!("{}：“{text}”不是数值（{}）。", cell(*at), why.words(lang))
+                }
             },
             Self::Off(misses) => {
                 let each: Vec<String> = misses
                     .iter()
                     .map(|m| {
                         let by = num(m.off_by.abs());
-                        match (lang, m.off_by > 0.0) {
-                            (Lang::En, true) => {
+                        match (lang.written(), m.off_by > 0.0) {
+                            (Written::English, true) => {
                                 format!("{} = {} is {by} too large", cell(m.at), num(m.typed))
                             }
-                            (Lang::En, false) => {
+                            (Written::English, false) => {
                                 format!("{} = {} is {by} too small", cell(m.at), num(m.typed))
                             }
-                            (Lang::Zh, true) => {
+                            (Written::Chinese, true) => {
                                 format!("{} = {} 大了 {by}", cell(m.at), num(m.typed))
                             }
-                            (Lang::Zh, false) => {
+                            (Written::Chinese, false) => {
                                 format!("{} = {} 小了 {by}", cell(m.at), num(m.typed))
                             }
                         }
                     })
                     .collect();
-                match lang {
-                    Lang::En => format!(
+                match lang.written() {
+                    Written::English => format!(
                         "Not yet ({} of {} off, tolerance {tolerance}): {}.",
                         misses.len(),
                         expect.values.len(),
                         each.join("; ")
                     ),
-                    Lang::Zh => format!(
+                    Written::Chinese => format!(
                         "还不对（{} 项中有 {} 项超出 {tolerance}）：{}。",
                         expect.values.len(),
                         misses.len(),
@@ -330,7 +336,7 @@ mod tests {
             tolerance: 0.001,
         };
         let v = e.check(&["(1".to_owned()]);
-        let zh = v.describe(&e, Lang::Zh);
+        let zh = v.describe(&e, Lang::ZH);
         assert!(zh.contains("没有闭合"), "{zh}");
         assert!(
             !zh.contains("is not"),
@@ -377,12 +383,12 @@ mod tests {
         let typed = |cells: [&str; 3]| cells.map(str::to_owned).to_vec();
         let v = e.check(&typed(["1", "2.5", "3"]));
         assert!(
-            v.describe(&e, Lang::En)
+            v.describe(&e, Lang::EN)
                 .contains("y = 2.5 is 0.5 too large")
         );
-        assert!(v.describe(&e, Lang::Zh).contains("y 分量 = 2.5 大了 0.5"));
+        assert!(v.describe(&e, Lang::ZH).contains("y 分量 = 2.5 大了 0.5"));
         let empty = e.check(&typed(["1", "2", ""]));
-        assert!(empty.describe(&e, Lang::En).contains("Still empty: z."));
+        assert!(empty.describe(&e, Lang::EN).contains("Still empty: z."));
     }
 
     /// Lesson 10 step 4's 0.8^32 = 0.000792 with the step's ±0.005: 0 is not right for it (it
@@ -404,7 +410,7 @@ mod tests {
         ));
         assert_eq!(e.tolerance_at(0.0), 0.005);
         assert!(
-            e.tolerance_words(crate::vocabulary::Lang::En)
+            e.tolerance_words(crate::vocabulary::Lang::EN)
                 .contains("an entry under 0.1 within 5 % of itself")
         );
     }

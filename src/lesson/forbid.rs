@@ -5,6 +5,7 @@
 //! variable that happens to be called `view` is no shortcut.
 
 use crate::vocabulary::Lang;
+use crate::vocabulary::Written;
 
 /// A forbidden name found in the student's code.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -24,17 +25,17 @@ impl Shortcut {
     #[must_use]
     pub fn words(&self, lang: Lang) -> String {
         let (name, file, line) = (&self.name, &self.file, self.line);
-        match (self.uniform, lang) {
-            (true, Lang::En) => format!(
+        match (self.uniform, lang.written()) {
+            (true, Written::English) => format!(
                 "Not yet: {file} line {line} declares pipelens' own `{name}` — this lab asks you to compute it yourself, so the uniform is not yours to use here."
             ),
-            (true, Lang::Zh) => format!(
+            (true, Written::Chinese) => format!(
                 "还没有通过：{file} 第 {line} 行声明了 pipelens 自带的 `{name}`——本练习要求你自己算出它，这里不能使用这个 uniform。"
             ),
-            (false, Lang::En) => format!(
+            (false, Written::English) => format!(
                 "Not yet: {file} line {line} calls `{name}()` — this lab asks you to compute what it returns yourself, so it is not yours to call here."
             ),
-            (false, Lang::Zh) => format!(
+            (false, Written::Chinese) => format!(
                 "还没有通过：{file} 第 {line} 行调用了 `{name}()`——本练习要求你自己算出它的结果，这里不能调用它。"
             ),
         }

@@ -86,7 +86,7 @@ pub fn put_step(steps: &mut toml_edit::ArrayOfTables, at: usize, mut table: Tabl
 /// The languages `text` has no words in yet (blank counts as none).
 #[must_use]
 pub fn unworded(text: &Text) -> Vec<Lang> {
-    [Lang::En, Lang::Zh]
+    [Lang::EN, Lang::ZH]
         .into_iter()
         .filter(|&l| text.get(l).trim().is_empty())
         .collect()
@@ -109,7 +109,7 @@ pub fn step_table(step: &Step) -> Result<Table, String> {
     // asks for both).
     let missing: Vec<&str> = unworded(&step.narration)
         .into_iter()
-        .map(|l| if l == Lang::En { "English" } else { "Chinese" })
+        .map(|l| if l == Lang::EN { "English" } else { "Chinese" })
         .collect();
     if !missing.is_empty() {
         return Err(format!(
@@ -120,7 +120,7 @@ pub fn step_table(step: &Step) -> Result<Table, String> {
     }
     let mut narration = Table::new();
     narration.set_dotted(true);
-    for (lang, key) in [(Lang::En, "en"), (Lang::Zh, "zh")] {
+    for (lang, key) in [(Lang::EN, "en"), (Lang::ZH, "zh")] {
         narration.insert(key, value(step.narration.get(lang)));
     }
     t.insert("narration", Item::Table(narration));
@@ -161,7 +161,7 @@ pub const VIEW_KEYS: [&str; 14] = [
 pub fn view_items(step: &Step) -> Vec<(&'static str, Item)> {
     let mut items = Vec::new();
     if let Some(stage) = step.stage {
-        items.push(("stage", value(stage.name(Lang::En).to_lowercase())));
+        items.push(("stage", value(stage.name(Lang::EN).to_lowercase())));
     }
     if step.layout != Layout::Single && step.compare.is_none() {
         let name = LAYOUTS

@@ -71,28 +71,28 @@ impl Unreadable {
     /// The reason in words.
     #[must_use]
     pub fn words(&self, lang: crate::vocabulary::Lang) -> String {
-        use crate::vocabulary::Lang;
-        match (self, lang) {
-            (Self::Unexpected(c), Lang::En) => format!("unexpected `{c}`"),
-            (Self::Unexpected(c), Lang::Zh) => format!("不应出现 `{c}`"),
-            (Self::Unclosed, Lang::En) => "a `(` is not closed".to_owned(),
-            (Self::Unclosed, Lang::Zh) => "有一个 `(` 没有闭合".to_owned(),
-            (Self::MissingAtEnd, Lang::En) => "a number is missing at the end".to_owned(),
-            (Self::MissingAtEnd, Lang::Zh) => "末尾缺少一个数".to_owned(),
-            (Self::NotANumber(t), Lang::En) => format!("`{t}` is not a number"),
-            (Self::NotANumber(t), Lang::Zh) => format!("`{t}` 不是数"),
-            (Self::UnknownName(t), Lang::En) => format!(
+        use crate::vocabulary::Written;
+        match (self, lang.written()) {
+            (Self::Unexpected(c), Written::English) => format!("unexpected `{c}`"),
+            (Self::Unexpected(c), Written::Chinese) => format!("不应出现 `{c}`"),
+            (Self::Unclosed, Written::English) => "a `(` is not closed".to_owned(),
+            (Self::Unclosed, Written::Chinese) => "有一个 `(` 没有闭合".to_owned(),
+            (Self::MissingAtEnd, Written::English) => "a number is missing at the end".to_owned(),
+            (Self::MissingAtEnd, Written::Chinese) => "末尾缺少一个数".to_owned(),
+            (Self::NotANumber(t), Written::English) => format!("`{t}` is not a number"),
+            (Self::NotANumber(t), Written::Chinese) => format!("`{t}` 不是数"),
+            (Self::UnknownName(t), Written::English) => format!(
                 "`{t}` is not a function pipelens knows: sqrt, sin, cos, tan, cot, asin, acos, atan, ln, log2, log10, exp, deg, pi"
             ),
-            (Self::UnknownName(t), Lang::Zh) => format!(
+            (Self::UnknownName(t), Written::Chinese) => format!(
                 "pipelens 不认识函数 `{t}`：可用 sqrt、sin、cos、tan、cot、asin、acos、atan、ln、log2、log10、exp、deg、pi"
             ),
-            (Self::NotFinite, Lang::En) => "not a finite number".to_owned(),
-            (Self::NotFinite, Lang::Zh) => "不是有限的数".to_owned(),
-            (Self::Several, Lang::En) => {
+            (Self::NotFinite, Written::English) => "not a finite number".to_owned(),
+            (Self::NotFinite, Written::Chinese) => "不是有限的数".to_owned(),
+            (Self::Several, Written::English) => {
                 "several numbers in one box: type one number in each box".to_owned()
             }
-            (Self::Several, Lang::Zh) => "一个格子里有多个数：请每格填一个数".to_owned(),
+            (Self::Several, Written::Chinese) => "一个格子里有多个数：请每格填一个数".to_owned(),
         }
     }
 }

@@ -31,46 +31,39 @@ pub fn alt_text(shown: &Shown, lang: Lang) -> String {
         Some(b) => format!(
             "{}{}{}",
             stage_words(shown.stage, lang),
-            lang.tr(", ", "，"),
-            lang.tr_owned(
-                &format!("{} buffer", buffer_name(b, lang)),
-                &format!("{}缓冲", buffer_name(b, lang))
-            ),
+            lang.t("alt-text-comma"),
+            lang.t_with("alt-text-buffer", &[("name", &buffer_name(b, lang))]),
         ),
         None => stage_words(shown.stage, lang),
     };
     let (w, h) = shown.size;
-    out.push_str(&lang.tr_owned(&format!(", {w}×{h} pixels"), &format!("，{w}×{h} 像素")));
+    out.push_str(&lang.t_with("alt-text-size", &[("w", &w), ("h", &h)]));
     let (subject, rest) = shown.objects;
     if subject.is_empty() && rest.is_empty() {
-        out.push_str(lang.tr(": nothing drawn.", "：没有绘制任何物体。"));
+        out.push_str(lang.t("alt-text-nothing-drawn"));
     } else {
-        let list = |names: &[String]| names.join(lang.tr(", ", "、"));
+        let list = |names: &[String]| names.join(lang.t("alt-text-list-comma"));
         let (first, others) = if subject.is_empty() {
             (rest, &[][..])
         } else {
             (subject, rest)
         };
-        out.push_str(lang.tr(": ", "："));
+        out.push_str(lang.t("alt-text-colon"));
         out.push_str(&list(first));
         if !others.is_empty() {
-            out.push_str(&lang.tr_owned(
-                &format!(" (beside: {})", list(others)),
-                &format!("（另有：{}）", list(others)),
-            ));
+            out.push_str(&lang.t_with("alt-text-beside", &[("others", &list(others))]));
         }
-        out.push_str(lang.tr(".", "。"));
+        out.push_str(lang.t("alt-text-full-stop"));
     }
     if let Some((p, object)) = &shown.pixel {
-        out.push_str(&lang.tr_owned(
-            &format!(
-                " At pixel ({}, {}), {object}'s triangle {}",
-                p.x, p.y, p.primitive
-            ),
-            &format!(
-                " 在像素 ({}, {}) 处，{object}的三角形 {}",
-                p.x, p.y, p.primitive
-            ),
+        out.push_str(&lang.t_with(
+            "alt-text-at-pixel",
+            &[
+                ("x", &p.x),
+                ("y", &p.y),
+                ("object", object),
+                ("triangle", &p.primitive),
+            ],
         ));
         let line = |l: &pipeline::capture::Line| {
             if l.numbers.is_empty() {
@@ -83,29 +76,26 @@ pub fn alt_text(shown: &Shown, lang: Lang) -> String {
             (Some(a), Some(b)) if p.lines.len() > 1 => {
                 out.push_str(&format!(
                     "{}{}{}{}",
-                    lang.tr(": ", "："),
+                    lang.t("alt-text-colon"),
                     line(a),
-                    lang.tr("; … ", "；……"),
+                    lang.t("alt-text-ellipsis"),
                     line(b)
                 ));
             }
             (Some(a), _) => {
-                out.push_str(lang.tr(": ", "："));
+                out.push_str(lang.t("alt-text-colon"));
                 out.push_str(&line(a));
             }
             _ => {}
         }
-        out.push_str(lang.tr(".", "。"));
+        out.push_str(lang.t("alt-text-full-stop"));
     }
     out
 }
 
 /// "Output stage" / "输出阶段".
 fn stage_words(stage: Stage, lang: Lang) -> String {
-    lang.tr_owned(
-        &format!("{} stage", stage.name(lang)),
-        &format!("{}阶段", stage.name(lang)),
-    )
+    lang.t_with("alt-text-stage", &[("stage", &stage.name(lang))])
 }
 
 #[cfg(test)]
@@ -125,20 +115,20 @@ mod tests {
             pixel: None,
         };
         assert_eq!(
-            alt_text(&shown(Stage::Output, (&cube, &floor)), Lang::En),
+            alt_text(&shown(Stage::Output, (&cube, &floor)), Lang::EN),
             "Output stage, Colour buffer, 640×400 pixels: cube (beside: floor)."
         );
         assert_eq!(
-            alt_text(&shown(Stage::World, (&[], &floor)), Lang::En),
+            alt_text(&shown(Stage::World, (&[], &floor)), Lang::EN),
             "World stage, 640×400 pixels: floor."
         );
         let (cube, floor) = (["立方体".to_owned()], ["地面".to_owned()]);
         assert_eq!(
-            alt_text(&shown(Stage::Output, (&cube, &floor)), Lang::Zh),
+            alt_text(&shown(Stage::Output, (&cube, &floor)), Lang::ZH),
             "输出阶段，颜色缓冲，640×400 像素：立方体（另有：地面）。"
         );
         assert_eq!(
-            alt_text(&shown(Stage::Depth, (&[], &[])), Lang::En),
+            alt_text(&shown(Stage::Depth, (&[], &[])), Lang::EN),
             "Depth stage, Colour buffer, 640×400 pixels: nothing drawn."
         );
     }

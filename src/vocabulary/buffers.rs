@@ -1,6 +1,7 @@
 //! The names of the buffers a capture can show, in both languages (the core's
 //! `BufferKind::name` is the file name; `BufferKind::mapping` says how values become colours).
 
+use crate::vocabulary::Written;
 use pipeline::buffers::BufferKind;
 
 use super::Lang;
@@ -8,25 +9,23 @@ use super::Lang;
 /// The name of a buffer, as the buffer menu and the handouts show it.
 pub fn buffer_name(kind: BufferKind, l: Lang) -> &'static str {
     match kind {
-        BufferKind::Color => l.tr("Colour", "颜色"),
-        BufferKind::Depth => l.tr("Depth", "深度"),
-        BufferKind::Coverage => l.tr("Coverage", "覆盖率"),
-        BufferKind::PrimitiveId => l.tr("Primitive id", "图元编号"),
-        BufferKind::BaryPerspective => {
-            l.tr("Barycentrics (perspective-correct)", "重心坐标（透视校正）")
-        }
-        BufferKind::BaryAffine => l.tr("Barycentrics (affine)", "重心坐标（仿射）"),
-        BufferKind::Ambient => l.tr("Ambient term", "环境光项"),
-        BufferKind::Diffuse => l.tr("Diffuse term", "漫反射项"),
-        BufferKind::Specular => l.tr("Specular term", "镜面反射项"),
-        BufferKind::Normal => l.tr("Normal", "法向量"),
+        BufferKind::Color => l.t("buffers-colour"),
+        BufferKind::Depth => l.t("buffers-depth"),
+        BufferKind::Coverage => l.t("buffers-coverage"),
+        BufferKind::PrimitiveId => l.t("buffers-primitive-id"),
+        BufferKind::BaryPerspective => l.t("buffers-barycentrics-perspective-correct"),
+        BufferKind::BaryAffine => l.t("buffers-barycentrics-affine"),
+        BufferKind::Ambient => l.t("buffers-ambient-term"),
+        BufferKind::Diffuse => l.t("buffers-diffuse-term"),
+        BufferKind::Specular => l.t("buffers-specular-term"),
+        BufferKind::Normal => l.t("buffers-normal"),
         BufferKind::NDotL => "n·l",
         BufferKind::NDotH => "n·h",
-        BufferKind::Uv => l.tr("Texture coordinates (u, v)", "纹理坐标 (u, v)"),
-        BufferKind::MipLevel => l.tr("Mip level", "Mipmap 层级"),
-        BufferKind::Texel => l.tr("Texel colour", "纹素颜色"),
-        BufferKind::Footprint => l.tr("Texture footprint", "纹理覆盖区域（足迹）"),
-        BufferKind::Reflected => l.tr("Reflected (environment)", "反射项（环境映射（反射映射））"),
+        BufferKind::Uv => l.t("buffers-texture-coordinates-u-v"),
+        BufferKind::MipLevel => l.t("buffers-mip-level"),
+        BufferKind::Texel => l.t("buffers-texel-colour"),
+        BufferKind::Footprint => l.t("buffers-texture-footprint"),
+        BufferKind::Reflected => l.t("buffers-reflected-environment"),
     }
 }
 
@@ -38,8 +37,8 @@ pub fn gain_note(kind: BufferKind, gain: f32, l: Lang) -> Option<String> {
         return None;
     }
     let name = buffer_name(kind, l);
-    Some(match l {
-        Lang::En => format!("{name} shown ×{gain}: {gain} times brighter than its values"),
-        Lang::Zh => format!("{name}放大 ×{gain} 显示：亮度是其数值的 {gain} 倍"),
+    Some(match l.written() {
+        Written::English => format!("{name} shown ×{gain}: {gain} times brighter than its values"),
+        Written::Chinese => format!("{name}放大 ×{gain} 显示：亮度是其数值的 {gain} 倍"),
     })
 }

@@ -56,17 +56,11 @@ impl Comparison {
     #[must_use]
     pub fn name(self, l: Lang) -> &'static str {
         match self {
-            Self::Shading => l.tr("flat | Gouraud | Phong", "平面 | Gouraud | Phong"),
-            Self::Interpolation => l.tr("affine | perspective-correct", "仿射 | 透视校正"),
-            Self::Samples => l.tr("1× | 4× MSAA | 4× SSAA", "1× | 4× MSAA | 4× SSAA"),
-            Self::Filtering => l.tr(
-                "nearest | bilinear | trilinear | anisotropic",
-                "最近邻 | 双线性 | 三线性 | 各向异性",
-            ),
-            Self::Minification => l.tr(
-                "trilinear | anisotropic | ripmap | summed-area table | EWA",
-                "三线性 | 各向异性 | ripmap | 求和面积表 | EWA",
-            ),
+            Self::Shading => l.t("comparison-flat-gouraud-phong"),
+            Self::Interpolation => l.t("comparison-affine-perspective-correct"),
+            Self::Samples => l.t("comparison-1-4-msaa-4-ssaa"),
+            Self::Filtering => l.t("comparison-nearest-bilinear-trilinear-anisotropic"),
+            Self::Minification => l.t("comparison-trilinear-anisotropic-ripmap-summed-area"),
         }
     }
 
@@ -144,14 +138,14 @@ impl Comparison {
 #[must_use]
 pub fn variant_label(key: &str, l: Lang) -> String {
     match key {
-        "flat" => l.tr("flat", "平面").to_owned(),
-        "affine" => l.tr("affine", "仿射").to_owned(),
-        "perspective-correct" => l.tr("perspective-correct", "透视校正").to_owned(),
-        "nearest" => l.tr("nearest", "最近邻").to_owned(),
-        "bilinear" => l.tr("bilinear", "双线性").to_owned(),
-        "trilinear" => l.tr("trilinear", "三线性").to_owned(),
-        "anisotropic 16×" => l.tr("anisotropic 16×", "各向异性 16×").to_owned(),
-        "summed-area table" => l.tr("summed-area table", "求和面积表").to_owned(),
+        "flat" => l.t("comparison-flat").to_owned(),
+        "affine" => l.t("comparison-affine").to_owned(),
+        "perspective-correct" => l.t("comparison-perspective-correct").to_owned(),
+        "nearest" => l.t("comparison-nearest").to_owned(),
+        "bilinear" => l.t("comparison-bilinear").to_owned(),
+        "trilinear" => l.t("comparison-trilinear").to_owned(),
+        "anisotropic 16×" => l.t("comparison-anisotropic-16").to_owned(),
+        "summed-area table" => l.t("comparison-summed-area-table").to_owned(),
         other => other.to_owned(),
     }
 }

@@ -4,6 +4,7 @@
 //! an index out of range, a `texelFetch` outside its texture, a division by zero) too, since the
 //! engine reports it as a complaint at its line.
 
+use crate::vocabulary::Written;
 use pipeline::shader::{Complaint, ShaderError, interface};
 
 use super::Lang;
@@ -12,7 +13,7 @@ use super::Lang;
 #[must_use]
 pub fn complaint(c: &Complaint, lang: Lang) -> Option<String> {
     use Complaint as C;
-    let en = lang == Lang::En;
+    let en = lang == Lang::EN;
     let t = |e: String, z: String| if en { e } else { z };
     Some(match c {
         C::MissingSemicolon => t(
@@ -92,7 +93,7 @@ pub fn complaint(c: &Complaint, lang: Lang) -> Option<String> {
 /// or `None` where the English message is all there is.
 fn form(c: &Complaint, lang: Lang) -> Option<String> {
     use Complaint as C;
-    let en = lang == Lang::En;
+    let en = lang == Lang::EN;
     let t = |e: String, z: String| if en { e } else { z };
     Some(match c {
         C::CannotCombine => t(
@@ -185,7 +186,7 @@ fn form(c: &Complaint, lang: Lang) -> Option<String> {
 /// message says it, and for a complaint that is not a run-time one).
 fn fault(c: &Complaint, lang: Lang) -> Option<String> {
     use Complaint as C;
-    if lang == Lang::En {
+    if lang == Lang::EN {
         return None;
     }
     Some(match c {
@@ -214,7 +215,7 @@ fn fault(c: &Complaint, lang: Lang) -> Option<String> {
 /// message says it.
 fn own(c: &Complaint, lang: Lang) -> Option<String> {
     use Complaint as C;
-    if lang == Lang::En {
+    if lang == Lang::EN {
         return None;
     }
     let meant = |s: &Option<String>| {
@@ -298,9 +299,9 @@ fn token_words(token: &str, lang: Lang) -> String {
         "the end of the file" => "文件结尾",
         symbol => return format!("`{symbol}`"),
     };
-    match lang {
-        Lang::En => token.to_owned(),
-        Lang::Zh => zh.to_owned(),
+    match lang.written() {
+        Written::English => token.to_owned(),
+        Written::Chinese => zh.to_owned(),
     }
 }
 
@@ -309,9 +310,9 @@ fn token_words(token: &str, lang: Lang) -> String {
 #[must_use]
 pub fn message(e: &ShaderError, lang: Lang) -> String {
     let said = complaint(&e.complaint, lang).unwrap_or_else(|| e.message.clone());
-    match lang {
-        Lang::En => format!("line {}, column {}: {said}", e.line, e.column),
-        Lang::Zh => format!("第 {} 行第 {} 列：{said}", e.line, e.column),
+    match lang.written() {
+        Written::English => format!("line {}, column {}: {said}", e.line, e.column),
+        Written::Chinese => format!("第 {} 行第 {} 列：{said}", e.line, e.column),
     }
 }
 
@@ -331,10 +332,10 @@ mod tests {
         assert_eq!(e.complaint, Complaint::MissingSemicolon);
         assert_eq!((e.line, e.column), (4, 18), "after `1.0` on line 4");
         assert_eq!(
-            message(e, Lang::En),
+            message(e, Lang::EN),
             "line 4, column 18: a `;` is missing at the end of this line"
         );
-        assert_eq!(message(e, Lang::Zh), "第 4 行第 18 列：这一行末尾缺少 `;`");
+        assert_eq!(message(e, Lang::ZH), "第 4 行第 18 列：这一行末尾缺少 `;`");
     }
 
     /// Every complaint but `Other` has a sentence in both languages, and the Chinese one holds
@@ -379,15 +380,15 @@ mod tests {
         ];
         assert!(all.len() >= 20);
         for c in &all {
-            let en = complaint(c, Lang::En).expect("a sentence");
-            let zh = complaint(c, Lang::Zh).expect("a sentence");
+            let en = complaint(c, Lang::EN).expect("a sentence");
+            let zh = complaint(c, Lang::ZH).expect("a sentence");
             assert_ne!(en, zh);
             assert!(
                 !zh.contains(" is ") && !zh.contains(" the "),
                 "English in the Chinese sentence: {zh}"
             );
         }
-        assert_eq!(complaint(&Complaint::Other, Lang::En), None);
+        assert_eq!(complaint(&Complaint::Other, Lang::EN), None);
     }
 
     /// pipelens' own checks (the uniforms, textures and attributes it provides, the outputs a
@@ -456,13 +457,13 @@ mod tests {
                 .iter()
                 .find(|e| e.complaint != Complaint::Other)
                 .unwrap_or_else(|| panic!("no complaint among {errors:?}"));
-            let zh = message(own, Lang::Zh);
+            let zh = message(own, Lang::ZH);
             assert!(zh.contains(names), "{zh}");
             assert!(
                 !zh.contains(" is ") && !zh.contains(" the ") && !zh.contains("pipelens sets"),
                 "English in the Chinese sentence: {zh}"
             );
-            assert!(message(own, Lang::En).contains(&own.message), "{own:?}");
+            assert!(message(own, Lang::EN).contains(&own.message), "{own:?}");
         }
     }
 }

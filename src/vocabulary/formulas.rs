@@ -111,9 +111,9 @@ impl Lang {
     /// A matrix's formula in this language (formulas that are only mathematics are kept).
     #[must_use]
     pub fn formula(self, en: &str) -> String {
-        match self {
-            Self::En => en.to_owned(),
-            Self::Zh => FORMULAS_ZH
+        match self.written() {
+            super::Written::English => en.to_owned(),
+            super::Written::Chinese => FORMULAS_ZH
                 .iter()
                 .find(|(e, _)| *e == en)
                 .map_or_else(|| en.to_owned(), |(_, zh)| (*zh).to_owned()),

@@ -2,6 +2,7 @@
 //! the reader's language — a lesson's own from its file (`[comments.zh]`), pipelens' shipped
 //! shaders' from this module's table. A comment with no translation stays as written.
 
+use crate::vocabulary::Written;
 use std::collections::BTreeMap;
 
 use pipeline::shader::lexeme::{Kind, lex};
@@ -12,9 +13,9 @@ use super::Lang;
 /// pipelens' own are replaced (the code, the lines and each comment's indent unchanged).
 #[must_use]
 pub fn localize(source: &str, lang: Lang, lesson: &BTreeMap<String, String>) -> String {
-    match lang {
-        Lang::En => source.to_owned(),
-        Lang::Zh => pipeline::shader::lexeme::map_comments(source, |words| {
+    match lang.written() {
+        Written::English => source.to_owned(),
+        Written::Chinese => pipeline::shader::lexeme::map_comments(source, |words| {
             chinese(words, lesson).map(str::to_owned)
         }),
     }
@@ -325,7 +326,7 @@ mod tests {
         for source in shipped {
             let missing = untranslated(source, &none);
             assert!(missing.is_empty(), "no Chinese for {missing:#?}");
-            let zh = localize(source, Lang::Zh, &none);
+            let zh = localize(source, Lang::ZH, &none);
             assert!(pipeline::shader::lexeme::same_code(source, &zh));
             assert_eq!(zh.lines().count(), source.lines().count());
             assert!(zh.contains('的'), "{zh}");

@@ -1,66 +1,307 @@
-//! Chinese and English. Every label is written at its call site in both languages,
-//! `lang.tr("Depth", "深度")`, so no label can miss a translation; a lesson's own text is a
-//! [`Text`] with both.
+//! The interface's languages. Every word the interface shows is a message of a Fluent catalog,
+//! one file per language in `locales/` (`locales/en.ftl`, `locales/zh-Hans.ftl`, named by the
+//! language's BCP 47 tag) that `build.rs` embeds; the code names a message by its id,
+//! `lang.t("stage-depth")`. English is the fallback: a message a catalog lacks is shown in
+//! English. A language is added by adding its file; `pipelens --lang` and the menu list the
+//! catalogs found.
+//!
+//! Besides the catalogs there is a pseudo-locale, `en-XA`: English with every letter accented,
+//! each message lengthened by about 40 % and bracketed, `[Ðéép·ţh~~]`, so that a word written in
+//! the code instead of a catalog, or a label too narrow for a longer language, shows at a glance.
+//!
+//! A lesson's own words are a [`Text`].
 
-/// The language of the interface.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Lang {
-    /// English.
-    #[default]
-    En,
-    /// 简体中文.
-    Zh,
+use std::collections::HashMap;
+use std::sync::OnceLock;
+
+use fluent_bundle::concurrent::FluentBundle;
+use fluent_bundle::{FluentArgs, FluentResource};
+
+mod embedded {
+    include!(concat!(env!("OUT_DIR"), "/catalogs.rs"));
+}
+
+/// The pseudo-locale's tag: "English, accented" (the tag Android and Chromium use for it).
+pub const PSEUDO: &str = "en-XA";
+
+/// A language of the interface, named by its BCP 47 tag.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Lang(&'static str);
+
+impl Default for Lang {
+    fn default() -> Self {
+        Self::EN
+    }
+}
+
+/// One language's messages.
+struct Catalog {
+    tag: &'static str,
+    /// Every message's id, in the file's order.
+    ids: Vec<&'static str>,
+    /// Each message without variables, formatted once.
+    plain: HashMap<&'static str, &'static str>,
+    /// The catalog, for messages with variables.
+    bundle: FluentBundle<FluentResource>,
+    pseudo: bool,
+}
+
+/// Every catalog, the fallback English first, then the pseudo-locale.
+fn catalogs() -> &'static [Catalog] {
+    static ALL: OnceLock<Vec<Catalog>> = OnceLock::new();
+    ALL.get_or_init(|| {
+        let mut all: Vec<Catalog> = embedded::CATALOGS
+            .iter()
+            .map(|(tag, text)| catalog(tag, text, false))
+            .collect();
+        if let Some((_, en)) = embedded::CATALOGS.iter().find(|(t, _)| *t == "en") {
+            all.push(catalog(PSEUDO, en, true));
+        }
+        all
+    })
+}
+
+/// Reads one catalog. A message that does not parse is left out (and so shown in English);
+/// [`catalog_problems`] names it, and a test asserts there are none.
+fn catalog(tag: &'static str, text: &str, pseudo: bool) -> Catalog {
+    let resource = FluentResource::try_new(text.to_owned()).unwrap_or_else(|(partial, _)| partial);
+    let ids: Vec<&'static str> = message_ids(&resource)
+        .into_iter()
+        .map(|id| &*Box::leak(id.into_boxed_str()))
+        .collect();
+    let langid = tag.parse().unwrap_or_default();
+    let mut bundle = FluentBundle::new_concurrent(vec![langid]);
+    bundle.set_use_isolating(false);
+    if pseudo {
+        bundle.set_transform(Some(pseudo_text));
+    }
+    // A message defined twice keeps its first definition (the error is reported by
+    // `catalog_problems`).
+    let _ = bundle.add_resource(resource);
+    let mut plain = HashMap::new();
+    for &id in &ids {
+        let mut errors = Vec::new();
+        let Some(pattern) = bundle.get_message(id).and_then(|m| m.value()) else {
+            continue;
+        };
+        let text = bundle.format_pattern(pattern, None, &mut errors);
+        if errors.is_empty() {
+            let text = if pseudo {
+                format!("[{text}]")
+            } else {
+                text.into_owned()
+            };
+            plain.insert(id, &*Box::leak(text.into_boxed_str()));
+        }
+    }
+    Catalog {
+        tag,
+        ids,
+        plain,
+        bundle,
+        pseudo,
+    }
+}
+
+/// The ids of a catalog's messages, in the file's order.
+fn message_ids(resource: &FluentResource) -> Vec<String> {
+    resource
+        .entries()
+        .filter_map(|e| match e {
+            fluent_syntax::ast::Entry::Message(m) => Some(m.id.name.to_owned()),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The pseudo-locale's text: each ASCII letter accented, and the text lengthened by about
+/// 40 % (rounded up) by doubling vowels, then padding with `~`.
+fn pseudo_text(text: &str) -> std::borrow::Cow<'_, str> {
+    const FROM: &str = "aeiouAEIOUcCnNyYsSzZdDgGtT";
+    const TO: &str = "áéíóúÁÉÍÓÚçÇñÑýÝşŞžŽđĐğĞţŢ";
+    let mut extra = (text.chars().count() * 2).div_ceil(5);
+    let mut out = String::with_capacity(text.len() * 2);
+    for c in text.chars() {
+        let accented = FROM.find(c).and_then(|i| TO.chars().nth(i)).unwrap_or(c);
+        out.push(accented);
+        if extra > 0 && "aeiouAEIOU".contains(c) {
+            out.push(accented);
+            extra -= 1;
+        }
+    }
+    out.extend(std::iter::repeat_n('~', extra));
+    out.into()
 }
 
 impl Lang {
-    /// The text in this language.
+    /// English: the fallback.
+    pub const EN: Self = Self("en");
+    /// 简体中文: Chinese in simplified characters, as the course notes are written.
+    pub const ZH: Self = Self("zh-Hans");
+
+    /// The message `id` in this language (in English where this language lacks it; the id
+    /// itself where no catalog has it, which a test rules out).
     #[must_use]
-    pub fn tr(self, en: &'static str, zh: &'static str) -> &'static str {
-        match self {
-            Self::En => en,
-            Self::Zh => zh,
-        }
+    pub fn t(self, id: &'static str) -> &'static str {
+        [self, Self::EN]
+            .iter()
+            .filter_map(|l| l.catalog())
+            .find_map(|c| c.plain.get(id).copied())
+            .unwrap_or(id)
     }
 
-    /// The text in this language, owned.
+    /// The message `id` with its variables, `{ $name }`, given as `(name, value)` pairs.
     #[must_use]
-    pub fn tr_owned(self, en: &str, zh: &str) -> String {
-        match self {
-            Self::En => en.to_owned(),
-            Self::Zh => zh.to_owned(),
+    pub fn t_with(
+        self,
+        id: &'static str,
+        args: &[(&'static str, &dyn std::fmt::Display)],
+    ) -> String {
+        let mut fluent = FluentArgs::new();
+        for (name, value) in args {
+            fluent.set(*name, value.to_string());
         }
+        for c in [self, Self::EN].iter().filter_map(|l| l.catalog()) {
+            if let Some(pattern) = c.bundle.get_message(id).and_then(|m| m.value()) {
+                let mut errors = Vec::new();
+                let text = c.bundle.format_pattern(pattern, Some(&fluent), &mut errors);
+                return if c.pseudo {
+                    format!("[{text}]")
+                } else {
+                    text.into_owned()
+                };
+            }
+        }
+        id.to_owned()
     }
 
-    /// The other language.
-    #[must_use]
-    pub fn other(self) -> Self {
-        match self {
-            Self::En => Self::Zh,
-            Self::Zh => Self::En,
-        }
+    fn catalog(self) -> Option<&'static Catalog> {
+        catalogs().iter().find(|c| c.tag == self.0)
     }
 
-    /// The language's BCP 47 tag, as a document's `lang` attribute takes it: `en`, `zh-Hans`
-    /// (Chinese in simplified characters, as the interface and the course notes are written).
+    /// The language a tag names: a catalog's tag (letter case aside), or its language alone
+    /// (`zh` finds `zh-Hans`), or the pseudo-locale. `None` for a language with no catalog.
+    #[must_use]
+    pub fn find(tag: &str) -> Option<Self> {
+        let all = catalogs();
+        all.iter()
+            .find(|c| c.tag.eq_ignore_ascii_case(tag))
+            .or_else(|| {
+                all.iter()
+                    .find(|c| !c.pseudo && primary(c.tag).eq_ignore_ascii_case(tag))
+            })
+            .map(|c| Self(c.tag))
+    }
+
+    /// Every language with a catalog, English first; the pseudo-locale is not among them.
+    #[must_use]
+    pub fn all() -> Vec<Self> {
+        catalogs()
+            .iter()
+            .filter(|c| !c.pseudo)
+            .map(|c| Self(c.tag))
+            .collect()
+    }
+
+    /// The language's BCP 47 tag, as a document's `lang` attribute takes it: `en`, `zh-Hans`.
     #[must_use]
     pub fn tag(self) -> &'static str {
-        match self {
-            Self::En => "en",
-            Self::Zh => "zh-Hans",
-        }
+        self.0
     }
 
-    /// The language's own name, for the switch.
+    /// The language's own name, for the switch (its catalog's `language-name`).
     #[must_use]
     pub fn name(self) -> &'static str {
-        match self {
-            Self::En => "English",
-            Self::Zh => "中文",
+        self.t("language-name")
+    }
+
+    /// Whether this is Chinese, whose words are set without spaces between them.
+    #[must_use]
+    pub fn is_chinese(self) -> bool {
+        primary(self.0) == "zh"
+    }
+}
+
+/// The language that words still written in the code (not yet in a catalog) are in: Chinese
+/// for Chinese, English for every other language. `lang.written()` marks each such place;
+/// moving its words into `locales/` removes it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Written {
+    /// English: every language but Chinese.
+    English,
+    /// Chinese.
+    Chinese,
+}
+
+impl Lang {
+    /// The language of the words the code itself still writes ([`Written`]).
+    #[must_use]
+    pub fn written(self) -> Written {
+        if self.is_chinese() {
+            Written::Chinese
+        } else {
+            Written::English
         }
     }
 }
 
-/// Text in both languages.
+/// A tag's language subtag: `zh` of `zh-Hans`.
+fn primary(tag: &str) -> &str {
+    tag.split(['-', '_']).next().unwrap_or(tag)
+}
+
+/// What is wrong with the catalogs: a message that does not parse or is defined twice, and a
+/// message of English that another catalog lacks (shown in English there). Each entry names
+/// the catalog's file.
+#[must_use]
+pub fn catalog_problems() -> Vec<String> {
+    let mut problems = Vec::new();
+    let mut english: Vec<String> = Vec::new();
+    for (tag, text) in embedded::CATALOGS {
+        let file = format!("locales/{tag}.ftl");
+        let resource = match FluentResource::try_new((*text).to_owned()) {
+            Ok(r) => r,
+            Err((r, errors)) => {
+                for e in errors {
+                    let line = text[..e.pos.start.min(text.len())].lines().count();
+                    problems.push(format!("{file}:{line}: {}", e.kind));
+                }
+                r
+            }
+        };
+        let ids = message_ids(&resource);
+        let mut seen = std::collections::HashSet::new();
+        for id in &ids {
+            if !seen.insert(id) {
+                problems.push(format!("{file}: `{id}` is defined twice"));
+            }
+        }
+        if *tag == "en" {
+            english = ids;
+        } else {
+            let missing: Vec<&String> = english.iter().filter(|id| !seen.contains(id)).collect();
+            if !missing.is_empty() {
+                problems.push(format!(
+                    "{file}: {} of English's messages missing, the first `{}`",
+                    missing.len(),
+                    missing[0]
+                ));
+            }
+        }
+    }
+    problems
+}
+
+/// Every message id of the English catalog.
+#[must_use]
+pub fn english_ids() -> Vec<&'static str> {
+    Lang::EN
+        .catalog()
+        .map(|c| c.ids.clone())
+        .unwrap_or_default()
+}
+
+/// A lesson's words, in English and Chinese.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Text {
     /// English.
@@ -70,12 +311,118 @@ pub struct Text {
 }
 
 impl Text {
-    /// The text in `lang`.
+    /// The text in `lang`: Chinese for Chinese, English for every other language.
     #[must_use]
     pub fn get(&self, lang: Lang) -> &str {
-        match lang {
-            Lang::En => &self.en,
-            Lang::Zh => &self.zh,
+        if lang.is_chinese() {
+            &self.zh
+        } else {
+            &self.en
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_catalog_parses_and_holds_every_message_of_english() {
+        assert_eq!(catalog_problems(), Vec::<String>::new());
+        assert!(english_ids().len() > 600, "{}", english_ids().len());
+    }
+
+    #[test]
+    fn a_language_is_found_by_its_tag_or_by_its_language_alone() {
+        assert_eq!(Lang::find("en"), Some(Lang::EN));
+        assert_eq!(Lang::find("zh-Hans"), Some(Lang::ZH));
+        assert_eq!(Lang::find("ZH-hans"), Some(Lang::ZH));
+        assert_eq!(Lang::find("zh"), Some(Lang::ZH));
+        assert_eq!(Lang::find("fr"), None);
+        assert_eq!(Lang::find(PSEUDO).map(Lang::tag), Some(PSEUDO));
+        assert_eq!(Lang::all()[0], Lang::EN);
+        assert!(Lang::all().contains(&Lang::ZH));
+        assert!(!Lang::all().iter().any(|l| l.tag() == PSEUDO));
+        assert_eq!(Lang::ZH.name(), "中文");
+        assert_eq!(Lang::EN.name(), "English");
+    }
+
+    #[test]
+    fn a_message_is_in_its_language_with_english_behind_it() {
+        assert_eq!(Lang::EN.t("chrome-classroom"), "Classroom");
+        assert_eq!(Lang::ZH.t("chrome-classroom"), "课堂模式");
+        // A message no catalog has shows its id: visible, and ruled out by the test below.
+        assert_eq!(Lang::ZH.t("no-such-message"), "no-such-message");
+        // Variables, and a language's own punctuation around them.
+        let both = |l: Lang| l.t_with("spaces-fate-and-line", &[("fate", &"a"), ("line", &"b")]);
+        assert_eq!(both(Lang::EN), "a: b");
+        assert_eq!(both(Lang::ZH), "a：b");
+    }
+
+    /// The pseudo-locale, worked by hand: "Classroom" has 9 characters, so 4 more
+    /// (⌈9 × 0.4⌉): its first three vowels doubled, then one `~`; C, a, s, o accented.
+    #[test]
+    fn the_pseudo_locale_accents_lengthens_and_brackets() {
+        let pseudo = Lang::find(PSEUDO).expect("the pseudo-locale");
+        assert_eq!(pseudo.t("chrome-classroom"), "[Çlááşşróóóóm~]");
+        // Text around a variable is changed, the variable's value is not: ": " is 2
+        // characters, so one `~`.
+        assert_eq!(
+            pseudo.t_with("spaces-fate-and-line", &[("fate", &"a"), ("line", &"b")]),
+            "[a: ~b]"
+        );
+    }
+
+    /// Every message the code names is in English's catalog, and every message there is
+    /// named somewhere in the code: a typo in an id, or a message left behind by a change,
+    /// fails here.
+    #[test]
+    fn the_code_and_the_english_catalog_name_the_same_messages() {
+        let mut code = String::new();
+        let mut dirs = vec![std::path::PathBuf::from(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/src"
+        ))];
+        while let Some(dir) = dirs.pop() {
+            for entry in std::fs::read_dir(&dir).expect("src/ is read").flatten() {
+                let path = entry.path();
+                if path.is_dir() {
+                    dirs.push(path);
+                } else if path.extension().is_some_and(|e| e == "rs")
+                    && !path.ends_with("vocabulary/lang.rs")
+                {
+                    code.push_str(&std::fs::read_to_string(&path).expect("a source file is read"));
+                }
+            }
+        }
+        let ids = english_ids();
+        // Every string written like an id (`words-joined-by-hyphens`) whose first word starts
+        // some message's id: the calls `lang.t("…")` and the tables that name messages.
+        let prefixes: std::collections::HashSet<&str> =
+            ids.iter().filter_map(|id| id.split('-').next()).collect();
+        let named: Vec<&str> = code
+            .split('"')
+            .skip(1)
+            .step_by(2)
+            .filter(|s| {
+                s.contains('-')
+                    && s.chars()
+                        .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-')
+                    && s.split('-').next().is_some_and(|p| prefixes.contains(p))
+            })
+            .collect();
+        let missing: Vec<&&str> = named.iter().filter(|id| !ids.contains(id)).collect();
+        assert!(
+            missing.is_empty(),
+            "named in the code, missing from locales/en.ftl: {missing:?}"
+        );
+        let unused: Vec<&&str> = ids
+            .iter()
+            .filter(|id| **id != "language-name" && !code.contains(&format!("\"{id}\"")))
+            .collect();
+        assert!(
+            unused.is_empty(),
+            "in locales/en.ftl, named nowhere in the code: {unused:?}"
+        );
     }
 }

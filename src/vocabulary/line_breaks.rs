@@ -238,7 +238,7 @@ mod tests {
                     step.question.as_ref(),
                     step.answer.as_ref(),
                 ];
-                for lang in [crate::vocabulary::Lang::En, crate::vocabulary::Lang::Zh] {
+                for lang in [crate::vocabulary::Lang::EN, crate::vocabulary::Lang::ZH] {
                     for text in texts.iter().flatten() {
                         let nodes = notation::parse_paragraph(text.get(lang));
                         let p = pieces(&nodes);

@@ -1,6 +1,7 @@
 //! The product's vocabulary: the words the app, the lessons and the exports share — the stages
-//! and spaces of the pipeline, the comparisons, the buffers' names, text in two languages, the
-//! matrices' formulas in Chinese, and how numbers are written. It sits below all three and uses
+//! and spaces of the pipeline, the comparisons, the buffers' names, the interface's languages
+//! (the message catalogs of `locales/`), the matrices' formulas in Chinese, and how numbers are
+//! written. It sits below all three and uses
 //! only the core: `lesson`, `export` and `app` import it; it imports none of them.
 
 pub mod alt_text;
@@ -10,7 +11,7 @@ pub mod compile;
 mod explain;
 mod formulas;
 pub mod glsl;
-mod lang;
+pub mod lang;
 pub mod line_breaks;
 mod names;
 pub mod notation;
@@ -23,7 +24,7 @@ pub mod trace;
 pub use buffers::{buffer_name, gain_note};
 pub use comparison::{Comparison, variant_label};
 pub use explain::{lighting_legend, remark, section_name};
-pub use lang::{Lang, Text};
+pub use lang::{Lang, Text, Written};
 pub use names::{light_name, part_name, shadow_of, upper_first};
 pub use numbers::{num, short, vec3, vec4};
 pub use stage::{Space, Stage};

@@ -2,6 +2,7 @@
 //! the lessons use, so that a scene without `label`s still reads in Chinese.
 
 use super::Lang;
+use crate::vocabulary::Written;
 
 /// Names of the core's figures and parts, and of the lessons' usual objects, in Chinese.
 const NAMES_ZH: &[(&str, &str)] = &[
@@ -47,9 +48,9 @@ const NAMES_ZH: &[(&str, &str)] = &[
 /// A built-in name (a figure's part, a usual object name) in `lang`; other names as they are.
 #[must_use]
 pub fn part_name(name: &str, lang: Lang) -> &str {
-    match lang {
-        Lang::En => name,
-        Lang::Zh => NAMES_ZH
+    match lang.written() {
+        Written::English => name,
+        Written::Chinese => NAMES_ZH
             .iter()
             .find(|(en, _)| *en == name)
             .map_or(name, |(_, zh)| zh),
@@ -59,9 +60,9 @@ pub fn part_name(name: &str, lang: Lang) -> &str {
 /// The name of the shadow an object casts, `shadow of NAME`.
 #[must_use]
 pub fn shadow_of(object: &str, lang: Lang) -> String {
-    match lang {
-        Lang::En => format!("shadow of {object}"),
-        Lang::Zh => format!("{object}的影子"),
+    match lang.written() {
+        Written::English => format!("shadow of {object}"),
+        Written::Chinese => format!("{object}的影子"),
     }
 }
 
@@ -70,10 +71,10 @@ pub fn shadow_of(object: &str, lang: Lang) -> String {
 pub fn light_name(light: &pipeline::light::Light, k: usize, lang: Lang) -> String {
     use pipeline::light::Light;
     let kind = match light {
-        Light::Point { .. } => lang.tr("point light", "点光源"),
-        Light::Spot { .. } => lang.tr("spotlight", "聚光灯"),
-        Light::Directional { .. } => lang.tr("directional light", "平行光"),
-        Light::Ambient { .. } => lang.tr("ambient light", "环境光"),
+        Light::Point { .. } => lang.t("names-point-light"),
+        Light::Spot { .. } => lang.t("names-spotlight"),
+        Light::Directional { .. } => lang.t("names-directional-light"),
+        Light::Ambient { .. } => lang.t("names-ambient-light"),
     };
     format!("{kind} {k}")
 }

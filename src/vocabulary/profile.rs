@@ -16,16 +16,13 @@ pub const CURVE_COLORS: [[u8; 3]; 4] = [
 /// The horizontal axis.
 #[must_use]
 pub fn x_label(lang: Lang) -> &'static str {
-    lang.tr(
-        "position along the yellow line (pixels)",
-        "沿黄线的位置（像素）",
-    )
+    lang.t("profile-position-along-the-yellow-line")
 }
 
 /// The vertical axis.
 #[must_use]
 pub fn y_label(lang: Lang) -> &'static str {
-    lang.tr("intensity (Rec. 709 luminance)", "亮度（Rec. 709）")
+    lang.t("profile-intensity-rec-709-luminance")
 }
 
 /// The points of one curve: (distance along `line` in pixels, luminance), `line` being

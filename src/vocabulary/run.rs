@@ -2,6 +2,7 @@
 //! stopped while it ran (an endless loop, an index out of range, a `texelFetch` outside its
 //! texture, an integer divided by zero) said at its line, with the object it ran on.
 
+use crate::vocabulary::Written;
 use pipeline::camera::ProjectionProblem;
 use pipeline::scene::SceneProblem;
 use pipeline::settings::{MAX_CAPTURE_BYTES, MAX_VIEWPORT_SIDE, SettingsProblem};
@@ -15,9 +16,9 @@ use super::Lang;
 /// settings as the core says it.
 #[must_use]
 pub fn render_error(e: &RenderError, lang: Lang) -> String {
-    match (e, lang) {
-        (_, Lang::En) => e.to_string(),
-        (RenderError::Invalid(problems), Lang::Zh) => format!(
+    match (e, lang.written()) {
+        (_, Written::English) => e.to_string(),
+        (RenderError::Invalid(problems), Written::Chinese) => format!(
             "无法绘制场景：{}",
             problems
                 .iter()
@@ -25,7 +26,7 @@ pub fn render_error(e: &RenderError, lang: Lang) -> String {
                 .collect::<Vec<_>>()
                 .join("；")
         ),
-        (RenderError::ShadowMatrix { light, matrix }, Lang::Zh) => format!(
+        (RenderError::ShadowMatrix { light, matrix }, Written::Chinese) => format!(
             "无法绘制场景：shadow_matrix(vec3({}, {}, {})) 返回的矩阵含有非有限的数（是否除以了零？）：{matrix}",
             light.x, light.y, light.z
         ),
@@ -36,7 +37,7 @@ pub fn render_error(e: &RenderError, lang: Lang) -> String {
                 error,
                 file,
             },
-            Lang::Zh,
+            Written::Chinese,
         ) => {
             let part = match part {
                 CodePart::Shader(pipeline::shader::Stage::Vertex) => "顶点着色器".to_owned(),
@@ -60,7 +61,7 @@ pub fn render_error(e: &RenderError, lang: Lang) -> String {
 #[must_use]
 pub fn scene_problem(p: &SceneProblem, lang: Lang) -> String {
     match (p, lang) {
-        (_, Lang::En) => p.to_string(),
+        (_, Lang::EN) => p.to_string(),
         (SceneProblem::Settings(s), _) => settings_problem(s, lang),
         (SceneProblem::Projection(p), _) => projection_problem(p, lang),
         (SceneProblem::CameraNotFinite, _) => "相机的 eye、at 和 up 必须是有限的数".to_owned(),
@@ -82,7 +83,7 @@ pub fn scene_problem(p: &SceneProblem, lang: Lang) -> String {
 #[must_use]
 pub fn settings_problem(p: &SettingsProblem, lang: Lang) -> String {
     match (p, lang) {
-        (_, Lang::En) => p.to_string(),
+        (_, Lang::EN) => p.to_string(),
         (SettingsProblem::ViewportSide { height, got }, _) => format!(
             "视口的{}必须在 1 到 {MAX_VIEWPORT_SIDE} 像素之间，现在是 {got}",
             if *height { "高度" } else { "宽度" }
@@ -108,7 +109,7 @@ pub fn settings_problem(p: &SettingsProblem, lang: Lang) -> String {
 pub fn projection_problem(p: &ProjectionProblem, lang: Lang) -> String {
     use ProjectionProblem as P;
     match (p, lang) {
-        (_, Lang::En) => p.to_string(),
+        (_, Lang::EN) => p.to_string(),
         (P::Fovy(f), _) => format!("fovy 必须在 0° 到 180° 之间（不含两端），现在是 {f}"),
         (P::Aspect(a), _) => format!("aspect 必须是正数，现在是 {a}"),
         (P::LeftRight { left, right }, _) => {
@@ -149,11 +150,11 @@ mod tests {
             file: None,
         };
         assert_eq!(
-            render_error(&e, Lang::Zh),
+            render_error(&e, Lang::ZH),
             "无法绘制场景：物体 sphere 的片元着色器，第 12 行第 5 列：循环执行超过了 65536 步（是不是死循环？如果它本来就要运行更久，请在 [scene.render] 中用 `max_steps` 提高上限）"
         );
         assert_eq!(
-            render_error(&e, Lang::En),
+            render_error(&e, Lang::EN),
             "the scene cannot be drawn: fragment shader of sphere, line 12, column 5: the loop ran more than 65536 steps (an endless loop?)"
         );
         // A function the pipeline calls is named by its GLSL name in Chinese too.
@@ -167,10 +168,10 @@ mod tests {
             file: None,
         };
         assert!(
-            render_error(&e, Lang::Zh)
+            render_error(&e, Lang::ZH)
                 .starts_with("无法绘制场景：物体 curve 的函数 de_casteljau，第 12 行第 5 列："),
             "{}",
-            render_error(&e, Lang::Zh)
+            render_error(&e, Lang::ZH)
         );
         // Code written in a lesson (or a shader file) names the file before its line.
         let RenderError::Code { error, .. } = e else {
@@ -183,18 +184,18 @@ mod tests {
             file: Some("lessons/24-shader-programs.toml".to_owned()),
         };
         assert!(
-            render_error(&e, Lang::Zh).starts_with(
+            render_error(&e, Lang::ZH).starts_with(
                 "无法绘制场景：物体 sphere 的片元着色器，lessons/24-shader-programs.toml，第 12 行第 5 列："
             ),
             "{}",
-            render_error(&e, Lang::Zh)
+            render_error(&e, Lang::ZH)
         );
         assert!(
-            render_error(&e, Lang::En).starts_with(
+            render_error(&e, Lang::EN).starts_with(
                 "the scene cannot be drawn: fragment shader of sphere, lessons/24-shader-programs.toml, line 12, column 5: "
             ),
             "{}",
-            render_error(&e, Lang::En)
+            render_error(&e, Lang::EN)
         );
     }
 
@@ -221,7 +222,7 @@ mod tests {
             ..Default::default()
         };
         let e = pipeline::render(&scene, &settings).expect_err("nothing can be drawn");
-        let zh = render_error(&e, Lang::Zh);
+        let zh = render_error(&e, Lang::ZH);
         let said: Vec<&str> = zh
             .strip_prefix("无法绘制场景：")
             .expect("the frame's sentence")
@@ -241,10 +242,10 @@ mod tests {
         );
         // In English, the core's sentences.
         assert!(
-            render_error(&e, Lang::En)
+            render_error(&e, Lang::EN)
                 .starts_with("the scene cannot be drawn: the viewport width must be between 1 and 16384 pixels, got 0; the background colour must be finite; fovy must be between"),
             "{}",
-            render_error(&e, Lang::En)
+            render_error(&e, Lang::EN)
         );
         // The rest of the problems, one by one: Chinese, none of the English words.
         let rest = [
@@ -276,8 +277,8 @@ mod tests {
             SceneProblem::ObjectColour("cube".to_owned()),
         ];
         for p in &rest {
-            let zh = scene_problem(p, Lang::Zh);
-            assert_ne!(zh, scene_problem(p, Lang::En));
+            let zh = scene_problem(p, Lang::ZH);
+            assert_ne!(zh, scene_problem(p, Lang::EN));
             for english in ["must", "got", "the ", " is "] {
                 assert!(!zh.contains(english), "English in {zh}");
             }
@@ -287,7 +288,7 @@ mod tests {
             matrix: glam::Mat4::NAN,
         };
         assert!(
-            render_error(&shadow, Lang::Zh)
+            render_error(&shadow, Lang::ZH)
                 .starts_with("无法绘制场景：shadow_matrix(vec3(0, 2, 0)) 返回的矩阵含有非有限的数")
         );
     }

@@ -40,7 +40,7 @@ impl Stage {
     pub fn from_name(name: &str) -> Option<Self> {
         Self::ALL
             .into_iter()
-            .find(|s| s.name(Lang::En).eq_ignore_ascii_case(name))
+            .find(|s| s.name(Lang::EN).eq_ignore_ascii_case(name))
     }
 
     /// Every stage, in order.
@@ -62,17 +62,17 @@ impl Stage {
     #[must_use]
     pub fn name(self, l: Lang) -> &'static str {
         match self {
-            Self::Model => l.tr("Model", "模型"),
-            Self::World => l.tr("World", "世界"),
-            Self::View => l.tr("View", "相机"),
-            Self::Clip => l.tr("Clip", "裁剪"),
-            Self::Ndc => l.tr("NDC", "规范化设备"),
-            Self::Screen => l.tr("Viewport", "视口"),
-            Self::Raster => l.tr("Rasterization", "光栅化"),
-            Self::Depth => l.tr("Depth", "深度"),
-            Self::Shading => l.tr("Shading", "着色"),
-            Self::Texturing => l.tr("Texturing", "纹理"),
-            Self::Output => l.tr("Output", "输出"),
+            Self::Model => l.t("stage-model"),
+            Self::World => l.t("stage-world"),
+            Self::View => l.t("stage-view"),
+            Self::Clip => l.t("stage-clip"),
+            Self::Ndc => l.t("stage-ndc"),
+            Self::Screen => l.t("stage-viewport"),
+            Self::Raster => l.t("stage-rasterization"),
+            Self::Depth => l.t("stage-depth"),
+            Self::Shading => l.t("stage-shading"),
+            Self::Texturing => l.t("stage-texturing"),
+            Self::Output => l.t("stage-output"),
         }
     }
 
@@ -80,50 +80,17 @@ impl Stage {
     #[must_use]
     pub fn explanation(self, l: Lang) -> &'static str {
         match self {
-            Self::Model => l.tr(
-                "Object coordinates: the mesh as it was modelled, p = (x, y, z, 1).",
-                "模型坐标系：物体建模时的坐标，p = (x, y, z, 1)。",
-            ),
-            Self::World => l.tr(
-                "World coordinates: M·p, with M = T·Rz·Ry·Rx·S placing each object.",
-                "世界坐标系：M·p，M = T·Rz·Ry·Rx·S 把每个物体放入场景。",
-            ),
-            Self::View => l.tr(
-                "Eye coordinates: V·M·p, V = LookAt(eye, at, up); the camera at the origin looking down −z.",
-                "相机坐标系：V·M·p，V = LookAt(eye, at, up)；相机位于原点，朝向 −z。",
-            ),
-            Self::Clip => l.tr(
-                "Clip coordinates: P·V·M·p (homogeneous). Inside the view volume: −w ≤ x, y, z ≤ w.",
-                "裁剪坐标系：P·V·M·p（齐次坐标）。视见体内：−w ≤ x, y, z ≤ w。",
-            ),
-            Self::Ndc => l.tr(
-                "Normalized device coordinates: (x, y, z)/w, the canonical cube [−1, 1]³.",
-                "规范化设备坐标：(x, y, z)/w，规范立方体 [−1, 1]³。",
-            ),
-            Self::Screen => l.tr(
-                "Window coordinates: x_w = (x+1)·W/2, y_w = (y+1)·H/2, z_w = (z+1)/2.",
-                "屏幕坐标：x_w = (x+1)·W/2，y_w = (y+1)·H/2，z_w = (z+1)/2。",
-            ),
-            Self::Raster => l.tr(
-                "Which samples each triangle covers: edge functions, the top-left rule, barycentric weights.",
-                "每个三角形覆盖哪些采样点：边函数、左上规则、重心坐标。",
-            ),
-            Self::Depth => l.tr(
-                "The z-buffer: a fragment is kept if it is nearer than what the buffer holds.",
-                "深度缓冲（z-buffer）：片元比缓冲中的值更近时保留。",
-            ),
-            Self::Shading => l.tr(
-                "Lighting: I = k_a·I_a + f_att·(k_d·I_d·max(l·n, 0) + k_s·I_s·max(n·h, 0)^β), evaluated per face, per vertex or per pixel.",
-                "光照：I = k_a·I_a + f_att·(k_d·I_d·max(l·n, 0) + k_s·I_s·max(n·h, 0)^β)，按面、按顶点或按像素计算。",
-            ),
-            Self::Texturing => l.tr(
-                "Texture lookups: uv interpolated, λ = log₂(texels per pixel) picks the mip level; nearest, bilinear, trilinear, anisotropic.",
-                "纹理查询：插值得到 uv，λ = log₂(每像素纹素数) 选择 mipmap 层级；最近邻、双线性、三线性、各向异性。",
-            ),
-            Self::Output => l.tr(
-                "The final colour: each pixel the mean of its samples.",
-                "最终颜色：每个像素为其采样点的平均。",
-            ),
+            Self::Model => l.t("stage-object-coordinates-the-mesh-as"),
+            Self::World => l.t("stage-world-coordinates-m-p-with"),
+            Self::View => l.t("stage-eye-coordinates-v-m-p"),
+            Self::Clip => l.t("stage-clip-coordinates-p-v-m"),
+            Self::Ndc => l.t("stage-normalized-device-coordinates-x-y"),
+            Self::Screen => l.t("stage-window-coordinates-x-w-x"),
+            Self::Raster => l.t("stage-which-samples-each-triangle-covers"),
+            Self::Depth => l.t("stage-the-z-buffer-a-fragment"),
+            Self::Shading => l.t("stage-lighting-i-k-a-i"),
+            Self::Texturing => l.t("stage-texture-lookups-uv-interpolated-log"),
+            Self::Output => l.t("stage-the-final-colour-each-pixel"),
         }
     }
 

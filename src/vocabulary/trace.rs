@@ -11,7 +11,7 @@ use super::Lang;
 /// value, a discard.
 #[must_use]
 pub fn words(line: &TraceLine, lang: Lang) -> String {
-    if lang == Lang::En {
+    if lang == Lang::EN {
         return line.text.clone();
     }
     let value = line.value.as_deref().unwrap_or_default();
@@ -82,7 +82,7 @@ mod tests {
             line(Step::Break, "break: the loop ends", None),
             line(Step::Continue, "continue: on to the next iteration", None),
         ];
-        let zh: Vec<String> = lines.iter().map(|l| words(l, Lang::Zh)).collect();
+        let zh: Vec<String> = lines.iter().map(|l| words(l, Lang::ZH)).collect();
         assert_eq!(
             zh,
             [
@@ -98,7 +98,7 @@ mod tests {
             ]
         );
         for l in &lines {
-            assert_eq!(words(l, Lang::En), l.text);
+            assert_eq!(words(l, Lang::EN), l.text);
         }
     }
 }

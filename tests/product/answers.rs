@@ -156,7 +156,7 @@ fn the_verdict_speaks_chinese_and_names_empty_cells() {
     h.state_mut()
         .session
         .apply(Command::View(ViewCommand::SetLang(
-            pipelens::vocabulary::Lang::Zh,
+            pipelens::vocabulary::Lang::ZH,
         )));
     go_to_the_typed_question(&mut h);
     h.get_by_label("检查").click();

@@ -45,7 +45,7 @@ fn clicking_every_stage_shows_it() {
     let mut h = harness();
     h.run();
     for stage in Stage::ALL {
-        h.get_by_label(stage.name(Lang::En)).click();
+        h.get_by_label(stage.name(Lang::EN)).click();
         h.run();
         assert_eq!(h.state().session.selection.stage, stage);
     }
@@ -71,7 +71,7 @@ fn switching_the_language_shows_chinese_labels() {
     h.run();
     h.get_by_label("中文").click();
     h.run();
-    assert_eq!(h.state().session.lang, Lang::Zh);
+    assert_eq!(h.state().session.lang, Lang::ZH);
     // Rendering these labels panics if no installed font has the glyphs: the embedded font works.
     h.get_by_label("光栅化").click();
     h.run();

@@ -192,6 +192,8 @@ fn every_file_architecture_md_names_exists() {
     let files: Vec<String> = ["src", "crates", "web", "tests", "fuzz"]
         .iter()
         .flat_map(|d| rust_files(&repo().join(d)))
+        // The build script, at the root.
+        .chain([repo().join("build.rs")].into_iter().filter(|p| p.exists()))
         .map(|p| {
             p.strip_prefix(repo())
                 .expect("below the repository")

@@ -136,17 +136,17 @@ fn words_typed_in_the_editor_are_the_steps_words() {
     let narration = "The frustum **grows** with fovy.\n\n- top = near·tan(fovy/2)";
     for k in 1..=narration.len() {
         if narration.is_char_boundary(k) {
-            d.set_words(0, Words::Narration, Lang::En, &narration[..k])
+            d.set_words(0, Words::Narration, Lang::EN, &narration[..k])
                 .expect("typed");
         }
     }
-    d.set_words(0, Words::Narration, Lang::Zh, "视锥随 fovy 变大。")
+    d.set_words(0, Words::Narration, Lang::ZH, "视锥随 fovy 变大。")
         .expect("typed");
-    d.set_words(0, Words::Title, Lang::Zh, "视锥体")
+    d.set_words(0, Words::Title, Lang::ZH, "视锥体")
         .expect("typed");
-    d.set_words(0, Words::Question, Lang::En, "What grows?")
+    d.set_words(0, Words::Question, Lang::EN, "What grows?")
         .expect("typed");
-    d.set_words(0, Words::Question, Lang::Zh, "什么变大？")
+    d.set_words(0, Words::Question, Lang::ZH, "什么变大？")
         .expect("typed");
     let l = lesson(&d);
     let s = &l.steps[0];
@@ -178,9 +178,9 @@ fn words_typed_in_the_editor_are_the_steps_words() {
     }
     assert_eq!(d.text(), original);
     // The lesson's own title and summary, in `[lesson]`, whichever step is asked.
-    d.set_words(3, Words::LessonTitle, Lang::En, "Perspective, by hand")
+    d.set_words(3, Words::LessonTitle, Lang::EN, "Perspective, by hand")
         .expect("typed");
-    d.set_words(0, Words::Summary, Lang::Zh, "透视投影，一步一步。")
+    d.set_words(0, Words::Summary, Lang::ZH, "透视投影，一步一步。")
         .expect("typed");
     let l = lesson(&d);
     assert_eq!(l.title.en, "Perspective, by hand");
@@ -189,9 +189,9 @@ fn words_typed_in_the_editor_are_the_steps_words() {
     assert!(d.undo() && d.undo());
     assert_eq!(d.text(), original);
     // A question emptied in both languages is gone from the file.
-    d.set_words(0, Words::Question, Lang::En, "Why?")
+    d.set_words(0, Words::Question, Lang::EN, "Why?")
         .expect("typed");
-    d.set_words(0, Words::Question, Lang::En, "")
+    d.set_words(0, Words::Question, Lang::EN, "")
         .expect("typed");
     assert_eq!(d.text(), original);
 }

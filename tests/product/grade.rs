@@ -357,7 +357,7 @@ fn a_run_that_stops_is_said_in_chinese() {
     let endless = starter.replace(todo, "    float d = 0.0; while (d < 1.0) { d *= 2.0; }");
     let mut code = pipelens::lab::submission::Code::default();
     code.take("shader.frag", endless);
-    let zh = pipelens::lab::submission::grade(&lesson, k, &code, Lang::Zh);
+    let zh = pipelens::lab::submission::grade(&lesson, k, &code, Lang::ZH);
     assert!(!zh.passed);
     let said = zh.sentences.join(" ");
     for words in [
@@ -371,7 +371,7 @@ fn a_run_that_stops_is_said_in_chinese() {
     for english in ["the scene", "loop ran", "shader of", "line "] {
         assert!(!said.contains(english), "English {english:?} in {said:?}");
     }
-    let en = pipelens::lab::submission::grade(&lesson, k, &code, Lang::En);
+    let en = pipelens::lab::submission::grade(&lesson, k, &code, Lang::EN);
     assert!(
         en.sentences.join(" ").contains("an endless loop?"),
         "{:?}",

@@ -95,7 +95,7 @@ fn every_lab_s_corpus_is_graded_as_a_teacher_would() {
         .chain(crate::lab_corpus_shading::CORPUS);
     for (lesson_id, title, code, want) in corpus {
         let (lesson, k) = lab(lesson_id, title);
-        let g = grade(&lesson, k, &hand_in(&lesson, k, code), Lang::En);
+        let g = grade(&lesson, k, &hand_in(&lesson, k, code), Lang::EN);
         let said = g.sentences.join(" ");
         let counts = wrong_per_lab.entry((lesson_id, title)).or_default();
         match want {
@@ -119,7 +119,7 @@ fn every_lab_s_corpus_is_graded_as_a_teacher_would() {
                     ));
                 }
                 // Both languages say it: the Chinese verdict in Chinese, every sentence of it.
-                let zh = grade(&lesson, k, &hand_in(&lesson, k, code), Lang::Zh);
+                let zh = grade(&lesson, k, &hand_in(&lesson, k, code), Lang::ZH);
                 assert_eq!(zh.passed, g.passed);
                 for sentence in &zh.sentences {
                     let english = ["Not yet", "your ", "Your ", " is ", " the ", "pixels match"];

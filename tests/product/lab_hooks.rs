@@ -438,7 +438,7 @@ fn starter_inspected(
         .session
         .exercise
         .findings
-        .sentences(pipelens::vocabulary::Lang::En)
+        .sentences(pipelens::vocabulary::Lang::EN)
         .join(" ");
     (h, said)
 }

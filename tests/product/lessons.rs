@@ -215,7 +215,7 @@ fn every_lesson_exports_a_handout() {
                 }) {
                     // The listing colours its words (the page's text, tags left out), and
                     // its comments are in the handout's language.
-                    let language = if lang == "zh" { Lang::Zh } else { Lang::En };
+                    let language = if lang == "zh" { Lang::ZH } else { Lang::EN };
                     let shown = pipelens::vocabulary::glsl::localize(
                         &hook.source,
                         language,
@@ -359,7 +359,7 @@ fn every_matrix_formula_a_lesson_shows_reads_in_chinese() {
     }
     let untranslated: Vec<&String> = formulas
         .iter()
-        .filter(|f| is_prose(f) && Lang::Zh.formula(f) == **f)
+        .filter(|f| is_prose(f) && Lang::ZH.formula(f) == **f)
         .collect();
     assert!(untranslated.is_empty(), "no Chinese for: {untranslated:#?}");
     assert!(formulas.len() > 20);
@@ -491,7 +491,7 @@ fn the_objects_a_step_compares_are_named_in_the_picture() {
         names.sort_by(|a, b| a.0[0].total_cmp(&b.0[0]));
         names
     };
-    let three = named("lessons/21-geometry-representations.toml", 0, Lang::Zh);
+    let three = named("lessons/21-geometry-representations.toml", 0, Lang::ZH);
     let words: Vec<&str> = three.iter().map(|(_, n)| n.as_str()).collect();
     assert_eq!(words, ["参数球面", "隐式曲面", "点云"]);
     // Each name sits above its shape: in the upper half of a picture whose shapes are centred.
@@ -499,5 +499,5 @@ fn the_objects_a_step_compares_are_named_in_the_picture() {
         three.iter().all(|([_, y], _)| *y < 360.0 / 2.0),
         "{three:?}"
     );
-    assert!(named("lessons/15-surface-detail.toml", 0, Lang::En).is_empty());
+    assert!(named("lessons/15-surface-detail.toml", 0, Lang::EN).is_empty());
 }

@@ -35,7 +35,7 @@ fn the_observer_draws_the_frustum_and_the_clipped_floor_where_they_are() {
         clipped: false,
         ..Parts::default()
     };
-    let (near, _) = viewing_camera(&capture, &parts, scene_extent(&spec), Lang::En);
+    let (near, _) = viewing_camera(&capture, &parts, scene_extent(&spec), Lang::EN);
     assert_eq!(near.len(), 4, "the near rectangle");
     let pv = capture.matrices.projection.matrix * capture.matrices.view.matrix;
     for m in &near {
@@ -49,7 +49,7 @@ fn the_observer_draws_the_frustum_and_the_clipped_floor_where_they_are() {
         clipped: true,
         ..parts
     };
-    let (marks, _) = viewing_camera(&capture, &clipped, scene_extent(&spec), Lang::En);
+    let (marks, _) = viewing_camera(&capture, &clipped, scene_extent(&spec), Lang::EN);
     let floor = capture
         .primitives
         .iter()

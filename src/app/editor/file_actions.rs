@@ -48,35 +48,35 @@ impl Editor {
         );
         ui.horizontal_wrapped(|ui| {
             if ui
-                .add_enabled(undo, egui::Button::new(lang.tr("↶ Undo", "↶ 撤销")))
+                .add_enabled(undo, egui::Button::new(lang.t("file-actions-undo")))
                 .on_hover_text("Ctrl+Z")
                 .clicked()
             {
                 self.undo_redo(true, session, out);
             }
             if ui
-                .add_enabled(redo, egui::Button::new(lang.tr("↷ Redo", "↷ 重做")))
+                .add_enabled(redo, egui::Button::new(lang.t("file-actions-redo")))
                 .on_hover_text("Ctrl+Shift+Z, Ctrl+Y")
                 .clicked()
             {
                 self.undo_redo(false, session, out);
             }
             let save = if builtin {
-                lang.tr("Save as a new lesson ↓", "另存为新课程 ↓")
+                lang.t("file-actions-save-as-a-new-lesson")
             } else if crate::app::platform::WRITES_FILES {
-                lang.tr("Save", "保存")
+                lang.t("file-actions-save")
             } else {
-                lang.tr("Save (download)", "保存（下载）")
+                lang.t("file-actions-save-download")
             };
             let button = ui
-                .add_enabled(dirty || builtin || !crate::app::platform::WRITES_FILES, egui::Button::new(save))
+                .add_enabled(
+                    dirty || builtin || !crate::app::platform::WRITES_FILES,
+                    egui::Button::new(save),
+                )
                 .on_hover_text(if builtin {
-                    lang.tr(
-                        "A built-in lesson is not changed: make it a lesson file of your own below (New lesson, from this lesson).",
-                        "内置课程不会被修改：在下面把它新建为你自己的课程文件（新建课程，从本课程开始）。",
-                    )
+                    lang.t("file-actions-a-built-in-lesson-is")
                 } else {
-                    lang.tr("Ctrl+S: the file is written whole or not at all", "Ctrl+S：文件要么完整写入，要么不写")
+                    lang.t("file-actions-ctrl-s-the-file-is")
                 });
             if button.clicked() {
                 if builtin {
@@ -91,15 +91,11 @@ impl Editor {
             // under it, the box being typed in too, down a line).
             if dirty {
                 ui.label(
-                    RichText::new(lang.tr("● unsaved", "● 未保存"))
-                        .color(ui.visuals().warn_fg_color),
+                    RichText::new(lang.t("file-actions-unsaved")).color(ui.visuals().warn_fg_color),
                 )
-                .on_hover_text(lang.tr(
-                    "Unsaved changes, kept in a recovery copy beside the file until saved (Ctrl+S).",
-                    "有未保存的修改，保存（Ctrl+S）之前已在文件旁保存恢复副本。",
-                ));
+                .on_hover_text(lang.t("file-actions-unsaved-changes-kept-in-a"));
             } else {
-                ui.label(RichText::new(lang.tr("saved", "已保存")).weak());
+                ui.label(RichText::new(lang.t("file-actions-saved")).weak());
             }
         });
     }
@@ -128,53 +124,37 @@ impl Editor {
         let mut changed = false;
         if doc.recovery.is_some() {
             ui.label(
-                RichText::new(lang.tr(
-                    "Unsaved changes to this lesson were kept from the last time it was edited.",
-                    "上次编辑这个课程时有未保存的修改，已保留。",
-                ))
-                .color(warn),
+                RichText::new(lang.t("file-actions-unsaved-changes-to-this-lesson")).color(warn),
             );
             ui.horizontal(|ui| {
-                if ui.button(lang.tr("Restore them", "恢复这些修改")).clicked() {
+                if ui.button(lang.t("file-actions-restore-them")).clicked() {
                     self.said = Some(doc.restore().map(|()| {
-                        lang.tr(
-                            "Restored: Save keeps them, Undo drops them.",
-                            "已恢复：保存即保留，撤销即放弃。",
-                        )
-                        .to_owned()
+                        lang.t("file-actions-restored-save-keeps-them-undo")
+                            .to_owned()
                     }));
                     changed = true;
                 }
-                if ui.button(lang.tr("Discard them", "丢弃")).clicked() {
+                if ui.button(lang.t("file-actions-discard-them")).clicked() {
                     doc.discard_recovery();
                 }
             });
         }
         if doc.ask_overwrite || doc.disk_changed {
-            ui.label(
-                RichText::new(lang.tr(
-                    "The file changed on disk while you were editing it.",
-                    "编辑期间，文件在磁盘上被修改了。",
-                ))
-                .color(warn),
-            );
+            ui.label(RichText::new(lang.t("file-actions-the-file-changed-on-disk")).color(warn));
             ui.horizontal(|ui| {
                 if ui
-                    .button(lang.tr("Overwrite it with my edits", "用我的修改覆盖它"))
+                    .button(lang.t("file-actions-overwrite-it-with-my-edits"))
                     .clicked()
                 {
                     self.said = Some(doc.save(true).map(|f| format!("saved: {f}")));
                 }
                 if ui
-                    .button(lang.tr(
-                        "Load it from disk (Undo brings my edits back)",
-                        "从磁盘载入（撤销可找回我的修改）",
-                    ))
+                    .button(lang.t("file-actions-load-it-from-disk-undo"))
                     .clicked()
                 {
                     self.said = Some(
                         doc.load_from_disk()
-                            .map(|()| lang.tr("Loaded from disk.", "已从磁盘载入。").to_owned()),
+                            .map(|()| lang.t("file-actions-loaded-from-disk").to_owned()),
                     );
                     changed = true;
                 }
@@ -227,19 +207,13 @@ impl Editor {
                 doc.draft.discard_last();
                 self.said = Some(Err(format!(
                     "{}\n{e}",
-                    lang.tr(
-                        "Not done: the lesson would no longer pass the check (a step's parameters may need one before it):",
-                        "未执行：这样改动后课程将无法通过检查（某一步的参数可能依赖它之前的步骤）：",
-                    )
+                    lang.t("file-actions-not-done-the-lesson-would")
                 )));
             }
             Err(e) => {
                 self.said = Some(Err(format!(
                     "{}\n{e}",
-                    lang.tr(
-                        "The lesson does not pass the check; the last good version keeps playing until this is fixed:",
-                        "课程无法通过检查；在修正之前继续播放上一个正确的版本：",
-                    )
+                    lang.t("file-actions-the-lesson-does-not-pass")
                 )));
             }
         }

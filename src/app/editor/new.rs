@@ -63,12 +63,10 @@ impl NewLesson {
         if self.path.is_empty() {
             self.path = default_path();
         }
-        let header = egui::CollapsingHeader::new(
-            RichText::new(lang.tr("New lesson…", "新建课程…")).strong(),
-        )
-        .id_salt("new-lesson")
-        .open(self.show.then_some(true))
-        .show(ui, |ui| self.contents(ui, session, lang, current));
+        let header = egui::CollapsingHeader::new(RichText::new(lang.t("new-new-lesson")).strong())
+            .id_salt("new-lesson")
+            .open(self.show.then_some(true))
+            .show(ui, |ui| self.contents(ui, session, lang, current));
         if header.header_response.clicked() {
             self.show = !self.show;
         }
@@ -85,17 +83,11 @@ impl NewLesson {
         ui.radio_value(
             &mut self.from,
             From::Screen,
-            lang.tr(
-                "from the scene on screen, with this view as its first step",
-                "从屏幕上的场景开始，当前画面作为第一步",
-            ),
+            lang.t("new-from-the-scene-on-screen"),
         );
         let builtin = matches!(self.from, From::Builtin(_));
         if ui
-            .radio(
-                builtin,
-                lang.tr("from a built-in lesson:", "从一个内置课程开始："),
-            )
+            .radio(builtin, lang.t("new-from-a-built-in-lesson"))
             .clicked()
             && !builtin
         {
@@ -116,10 +108,7 @@ impl NewLesson {
             ui.radio_value(
                 &mut self.from,
                 From::Mesh,
-                lang.tr(
-                    "from a mesh of your own (.obj; or drop one on the window):",
-                    "从你自己的网格开始（.obj；也可以把文件拖到窗口上）：",
-                ),
+                lang.t("new-from-a-mesh-of-your"),
             );
         }
         if self.from == From::Mesh {
@@ -131,13 +120,13 @@ impl NewLesson {
         }
         ui.horizontal(|ui| {
             ui.label(if crate::app::platform::WRITES_FILES {
-                lang.tr("Write it to:", "写入：")
+                lang.t("new-write-it-to")
             } else {
-                lang.tr("Name:", "名称：")
+                lang.t("new-name")
             });
             ui.add(egui::TextEdit::singleline(&mut self.path).desired_width(f32::INFINITY));
         });
-        ui.button(lang.tr("Make the lesson", "新建课程"))
+        ui.button(lang.t("new-make-the-lesson"))
             .clicked()
             .then(|| self.make(session, current))
     }

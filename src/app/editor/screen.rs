@@ -2,6 +2,7 @@
 //! sliders dragged while the editor was open (as `animate`, their seconds editable), added as a
 //! new step after the current one — its words typed first — or written into the current one.
 
+use crate::vocabulary::Written;
 use egui::RichText;
 
 use super::window::Editor;
@@ -27,13 +28,10 @@ impl Editor {
             return;
         };
         let k = player.step;
-        ui.label(RichText::new(lang.tr("What is on screen", "屏幕上的内容")).strong());
-        ui.label(RichText::new(lang.tr(
-            "The stage, buffer, layout, overlays, inspected pixel, selected vertex and every parameter changed since this step began. Drag a slider while the editor is open to record an animation.",
-            "阶段、缓冲、布局、叠加层、所检查的像素、选中的顶点，以及本步骤开始以来改动过的每个参数。编辑器打开时拖动滑块即可录制动画。",
-        )).small());
+        ui.label(RichText::new(lang.t("screen-what-is-on-screen")).strong());
+        ui.label(RichText::new(lang.t("screen-the-stage-buffer-layout-overlays")).small());
         if step.set.is_empty() {
-            ui.label(lang.tr("No parameter changed.", "没有改动参数。"));
+            ui.label(lang.t("screen-no-parameter-changed"));
         }
         for (name, value) in &step.set {
             ui.monospace(format!("set {name} = {value}"));
@@ -46,14 +44,11 @@ impl Editor {
         let mut result = None;
         let mut go = k;
         if ui
-            .button(match lang {
-                Lang::En => format!("Update step {} from the screen", k + 1),
-                Lang::Zh => format!("用屏幕内容更新第 {} 步", k + 1),
+            .button(match lang.written() {
+                Written::English => format!("Update step {} from the screen", k + 1),
+                Written::Chinese => format!("用屏幕内容更新第 {} 步", k + 1),
             })
-            .on_hover_text(lang.tr(
-                "Its words, shaders and exercise are kept",
-                "保留它的文字、着色器和练习",
-            ))
+            .on_hover_text(lang.t("screen-its-words-shaders-and-exercise"))
             .clicked()
         {
             // `set` counts from the scene the step before leaves, its own animations where they
@@ -72,19 +67,19 @@ impl Editor {
         }
         ui.add_space(6.0);
         ui.label(
-            RichText::new(match lang {
-                Lang::En => format!("A new step {}: its words", k + 2),
-                Lang::Zh => format!("新的第 {} 步：文字", k + 2),
+            RichText::new(match lang.written() {
+                Written::English => format!("A new step {}: its words", k + 2),
+                Written::Chinese => format!("新的第 {} 步：文字", k + 2),
             })
             .strong(),
         );
-        words::pair(ui, lang.tr("Title", "标题"), &mut self.fresh[0], 1);
-        words::pair(ui, lang.tr("Narration", "讲解"), &mut self.fresh[1], 3);
+        words::pair(ui, lang.t("screen-title"), &mut self.fresh[0], 1);
+        words::pair(ui, lang.t("screen-narration"), &mut self.fresh[1], 3);
         words::missing_note(ui, lang, &self.fresh[1]);
         if ui
-            .button(match lang {
-                Lang::En => format!("＋ Add as step {}", k + 2),
-                Lang::Zh => format!("＋ 添加为第 {} 步", k + 2),
+            .button(match lang.written() {
+                Written::English => format!("＋ Add as step {}", k + 2),
+                Written::Chinese => format!("＋ 添加为第 {} 步", k + 2),
             })
             .clicked()
         {
@@ -134,13 +129,10 @@ impl Editor {
                         .speed(0.1)
                         .suffix(" s"),
                 )
-                .on_hover_text(lang.tr(
-                    "Seconds from the first value to the last",
-                    "从起始值到结束值的秒数",
-                ));
+                .on_hover_text(lang.t("screen-seconds-from-the-first-value"));
                 if ui
                     .small_button("×")
-                    .on_hover_text(lang.tr("Not an animation", "不作为动画"))
+                    .on_hover_text(lang.t("screen-not-an-animation"))
                     .clicked()
                 {
                     drop = Some(i);

@@ -3,6 +3,7 @@
 //! current step's words and what is on screen recorded (`words.rs`, `screen.rs`), a new lesson
 //! (`new.rs`), the file (`file.rs`).
 
+use crate::vocabulary::Written;
 use egui::RichText;
 
 use super::file::Edited;
@@ -139,11 +140,11 @@ impl Editor {
         let title = match &self.doc {
             Some(d) => format!(
                 "{} — {}{}",
-                lang.tr("Lesson editor", "课程编辑器"),
+                lang.t("window-lesson-editor"),
                 d.draft.name(),
                 if d.draft.is_dirty() { " ●" } else { "" }
             ),
-            None => lang.tr("Lesson editor", "课程编辑器").to_owned(),
+            None => lang.t("window-lesson-editor").to_owned(),
         };
         // A quarter of the window, up to 480 points (less beside another panel, 320 beside a
         // lab): the words' boxes and the steps' list fit, and the view keeps the rest.
@@ -167,7 +168,7 @@ impl Editor {
                     ui.with_layout(egui::Layout::right_to_left(egui::Align::Min), |ui| {
                         let close = ui
                             .button("×")
-                            .on_hover_text(lang.tr("Close the editor (R)", "关闭编辑器（R）"));
+                            .on_hover_text(lang.t("window-close-the-editor-r"));
                         if close.clicked() {
                             open = false;
                         }
@@ -210,10 +211,10 @@ impl Editor {
             if self.doc.as_ref().is_some_and(Edited::builtin) {
                 // Not edited in place: edits to a lesson shipped inside the app would have no
                 // file to be kept in.
-                ui.label(RichText::new(lang.tr(
-                    "A built-in lesson is not edited in place. Make it a lesson of your own (New lesson, from this lesson, below), then record, word and arrange its steps there.",
-                    "内置课程不能直接修改。先把它新建为你自己的课程（见下方“新建课程”，从本课程开始），再在那里录制、撰写和调整步骤。",
-                )).color(ui.visuals().warn_fg_color));
+                ui.label(
+                    RichText::new(lang.t("window-a-built-in-lesson-is"))
+                        .color(ui.visuals().warn_fg_color),
+                );
             } else {
                 self.steps(ui, session, lang, out);
                 ui.separator();
@@ -222,10 +223,7 @@ impl Editor {
                 self.on_screen(ui, session, lang, out);
             }
         } else {
-            ui.label(lang.tr(
-                "Open a lesson to edit it, or make a new one below.",
-                "打开一个课程即可编辑它，或在下面新建一个。",
-            ));
+            ui.label(lang.t("window-open-a-lesson-to-edit"));
         }
         ui.separator();
         let current = self.doc.as_ref().map(|d| d.draft.text().to_owned());
@@ -257,8 +255,8 @@ impl Editor {
         };
         let current = player.step;
         let n = doc.draft.len();
-        ui.label(RichText::new(lang.tr("Steps", "步骤")).strong())
-            .on_hover_text(lang.tr("● changed since the last save", "● 自上次保存以来有改动"));
+        ui.label(RichText::new(lang.t("window-steps")).strong())
+            .on_hover_text(lang.t("window-changed-since-the-last-save"));
         // Read from the file's text once a change or a save, not every frame.
         let revision = doc.draft.revision();
         if self.marks.as_ref().is_none_or(|(r, _)| *r != revision) {
@@ -283,12 +281,12 @@ impl Editor {
             });
         if doc.draft.deleted() > 0 {
             ui.label(
-                RichText::new(match lang {
-                    Lang::En => format!(
+                RichText::new(match lang.written() {
+                    Written::English => format!(
                         "{} step(s) deleted since the last save",
                         doc.draft.deleted()
                     ),
-                    Lang::Zh => format!("自上次保存以来删除了 {} 步", doc.draft.deleted()),
+                    Written::Chinese => format!("自上次保存以来删除了 {} 步", doc.draft.deleted()),
                 })
                 .weak(),
             );
@@ -296,36 +294,30 @@ impl Editor {
         let mut moved = None;
         let mut result = None;
         ui.horizontal_wrapped(|ui| {
-            ui.label(match lang {
-                Lang::En => format!("Step {}:", current + 1),
-                Lang::Zh => format!("第 {} 步：", current + 1),
+            ui.label(match lang.written() {
+                Written::English => format!("Step {}:", current + 1),
+                Written::Chinese => format!("第 {} 步：", current + 1),
             });
             if ui
-                .add_enabled(
-                    current > 0,
-                    egui::Button::new(lang.tr("▲ Earlier", "▲ 前移")),
-                )
+                .add_enabled(current > 0, egui::Button::new(lang.t("window-earlier")))
                 .clicked()
             {
                 result = Some(doc.draft.move_step(current, current - 1));
                 moved = Some(current - 1);
             }
             if ui
-                .add_enabled(
-                    current + 1 < n,
-                    egui::Button::new(lang.tr("▼ Later", "▼ 后移")),
-                )
+                .add_enabled(current + 1 < n, egui::Button::new(lang.t("window-later")))
                 .clicked()
             {
                 result = Some(doc.draft.move_step(current, current + 1));
                 moved = Some(current + 1);
             }
-            if ui.button(lang.tr("Duplicate", "复制")).clicked() {
+            if ui.button(lang.t("window-duplicate")).clicked() {
                 result = Some(doc.draft.duplicate(current));
                 moved = Some(current + 1);
             }
             if ui
-                .add_enabled(n > 1, egui::Button::new(lang.tr("Delete", "删除")))
+                .add_enabled(n > 1, egui::Button::new(lang.t("window-delete")))
                 .clicked()
             {
                 result = Some(doc.draft.delete(current));

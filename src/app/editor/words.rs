@@ -3,6 +3,7 @@
 //! (formulas included) and a note when one language is missing. What is typed goes into the
 //! lesson file's text at once (typing on in one box is one change to undo) and onto the card.
 
+use crate::vocabulary::Written;
 use egui::RichText;
 
 use super::window::Editor;
@@ -42,19 +43,17 @@ impl Editor {
             self.words_for = Some((k, doc.draft.revision()));
         }
         let mut typed = Vec::new();
-        egui::CollapsingHeader::new(
-            RichText::new(lang.tr("The lesson's title and summary", "课程的标题与简介")).strong(),
-        )
-        .id_salt("lesson-words")
-        .show(ui, |ui| {
-            for (which, text) in EDITED.iter().zip(&mut self.words).take(2) {
-                typed.extend(boxes(ui, lang, *which, text));
-            }
-        });
+        egui::CollapsingHeader::new(RichText::new(lang.t("words-the-lesson-s-title-and")).strong())
+            .id_salt("lesson-words")
+            .show(ui, |ui| {
+                for (which, text) in EDITED.iter().zip(&mut self.words).take(2) {
+                    typed.extend(boxes(ui, lang, *which, text));
+                }
+            });
         ui.label(
-            RichText::new(match lang {
-                Lang::En => format!("The words of step {}", k + 1),
-                Lang::Zh => format!("第 {} 步的文字", k + 1),
+            RichText::new(match lang.written() {
+                Written::English => format!("The words of step {}", k + 1),
+                Written::Chinese => format!("第 {} 步的文字", k + 1),
             })
             .strong(),
         );
@@ -100,11 +99,11 @@ fn boxes(
     text: &mut Text,
 ) -> Vec<(Words, Lang, String)> {
     let (label, rows) = match which {
-        Words::LessonTitle | Words::Title => (lang.tr("Title", "标题"), 1),
-        Words::Summary => (lang.tr("Summary", "简介"), 2),
-        Words::Narration => (lang.tr("Narration", "讲解"), 4),
-        Words::Question => (lang.tr("Question (optional)", "思考题（可选）"), 2),
-        Words::Answer => (lang.tr("Answer (optional)", "答案（可选）"), 2),
+        Words::LessonTitle | Words::Title => (lang.t("words-title"), 1),
+        Words::Summary => (lang.t("words-summary"), 2),
+        Words::Narration => (lang.t("words-narration"), 4),
+        Words::Question => (lang.t("words-question-optional"), 2),
+        Words::Answer => (lang.t("words-answer-optional"), 2),
     };
     let changed = pair(ui, label, text, rows);
     if matches!(which, Words::Narration | Words::Question | Words::Answer) {
@@ -113,7 +112,7 @@ fn boxes(
     if which.required() {
         missing_note(ui, lang, text);
     }
-    [(Lang::En, changed.0), (Lang::Zh, changed.1)]
+    [(Lang::EN, changed.0), (Lang::ZH, changed.1)]
         .into_iter()
         .filter(|(_, on)| *on)
         .map(|(l, _)| (which, l, text.get(l).to_owned()))
@@ -171,15 +170,15 @@ fn preview(ui: &mut egui::Ui, text: &Text) {
 pub(super) fn missing_note(ui: &mut egui::Ui, lang: Lang, text: &Text) {
     let missing: Vec<&str> = crate::lesson::record::unworded(text)
         .into_iter()
-        .map(|l| if l == Lang::En { "English" } else { "中文" })
+        .map(|l| if l == Lang::EN { "English" } else { "中文" })
         .collect();
     if missing.is_empty() {
-        ui.label(RichText::new(lang.tr("Worded: English, 中文", "已写好：English、中文")).weak());
+        ui.label(RichText::new(lang.t("words-worded-english")).weak());
     } else {
         ui.label(
             RichText::new(format!(
                 "{} {}",
-                lang.tr("Still needs:", "还缺少："),
+                lang.t("words-still-needs"),
                 missing.join(", ")
             ))
             .color(ui.visuals().warn_fg_color),

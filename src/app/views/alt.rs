@@ -32,7 +32,7 @@ pub fn name_picture(
             sel.pixel,
             session.lang,
         );
-        format!("{view}{}{words}", session.lang.tr(": ", "："))
+        format!("{view}{}{words}", session.lang.t("alt-name-colon"))
     });
 }
 

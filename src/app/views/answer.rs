@@ -2,6 +2,7 @@
 //! cell by cell), the tolerance said beside it, Check (or Enter), and the verdict — right, or
 //! which entry is off and by how much — after which the worked answer is offered.
 
+use crate::vocabulary::Written;
 use egui::{Color32, RichText, Ui};
 
 use super::typeset::Style;
@@ -49,10 +50,7 @@ pub fn field(
                         .hint_text(hint(expect.shape, (r, c)));
                     let response = ui
                         .add_sized([cell_width, style.size * 1.5], edit)
-                        .on_hover_text(lang.tr(
-                            "A number or an expression: 0.866, sqrt(3)/2, 2*pi/3, 1/4",
-                            "数值或算式：0.866、sqrt(3)/2、2*pi/3、1/4",
-                        ));
+                        .on_hover_text(lang.t("answer-a-number-or-an-expression"));
                     if response.changed() {
                         commands.push(Command::Lesson(LessonCommand::TypeAnswer { cell: i, text }));
                     }
@@ -63,14 +61,11 @@ pub fn field(
         });
     ui.horizontal(|ui| {
         check |= ui
-            .button(lang.tr("Check", "检查"))
-            .on_hover_text(lang.tr(
-                "Compare with the expected value (Enter)",
-                "与期望值比较（回车）",
-            ))
+            .button(lang.t("answer-check"))
+            .on_hover_text(lang.t("answer-compare-with-the-expected-value"))
             .clicked();
         if player.verdict.is_none() && progress.answered(&player.lesson, player.step) {
-            ui.label(RichText::new(lang.tr("answered right before", "之前已答对")).color(RIGHT));
+            ui.label(RichText::new(lang.t("answer-answered-right-before")).color(RIGHT));
         }
     });
     if check {
@@ -89,17 +84,17 @@ pub fn field(
 /// What the field asks for, with the tolerance stated.
 fn prompt(expect: &Expect, lang: Lang) -> String {
     let tolerance = expect.tolerance_words(lang);
-    let what = match (expect.shape, lang) {
-        (Shape::Number, Lang::En) => "Type the value".to_owned(),
-        (Shape::Number, Lang::Zh) => "填入数值".to_owned(),
-        (Shape::Vector(n), Lang::En) => format!("Type the {n} components"),
-        (Shape::Vector(n), Lang::Zh) => format!("填入 {n} 个分量"),
-        (Shape::Matrix(r, c), Lang::En) => format!("Type the {r}×{c} matrix, cell by cell"),
-        (Shape::Matrix(r, c), Lang::Zh) => format!("逐格填入 {r}×{c} 矩阵"),
+    let what = match (expect.shape, lang.written()) {
+        (Shape::Number, Written::English) => "Type the value".to_owned(),
+        (Shape::Number, Written::Chinese) => "填入数值".to_owned(),
+        (Shape::Vector(n), Written::English) => format!("Type the {n} components"),
+        (Shape::Vector(n), Written::Chinese) => format!("填入 {n} 个分量"),
+        (Shape::Matrix(r, c), Written::English) => format!("Type the {r}×{c} matrix, cell by cell"),
+        (Shape::Matrix(r, c), Written::Chinese) => format!("逐格填入 {r}×{c} 矩阵"),
     };
-    match lang {
-        Lang::En => format!("{what} (each within {tolerance}):"),
-        Lang::Zh => format!("{what}（每项误差 {tolerance} 以内）："),
+    match lang.written() {
+        Written::English => format!("{what} (each within {tolerance}):"),
+        Written::Chinese => format!("{what}（每项误差 {tolerance} 以内）："),
     }
 }
 

@@ -83,7 +83,7 @@ pub fn list(
     let lines: Vec<usize> = bps.of(stage).iter().map(|b| b.line).collect();
     for line in lines {
         ui.horizontal_wrapped(|ui| {
-            ui.label(RichText::new(format!("● {} {line}", lang.tr("line", "行"))).monospace());
+            ui.label(RichText::new(format!("● {} {line}", lang.t("breakpoints-line"))).monospace());
             let Some(b) = bps
                 .by_stage
                 .get_mut(&stage.into())
@@ -92,31 +92,28 @@ pub fn list(
                 return;
             };
             let mut hit = b.hit.unwrap_or(0);
-            let at_hit = ui.label(lang.tr("at hit", "在第"));
+            let at_hit = ui.label(lang.t("breakpoints-at-hit"));
             if ui
                 .add(
                     egui::DragValue::new(&mut hit)
                         .range(0..=100_000)
                         .custom_formatter(|n, _| {
                             if n < 1.0 {
-                                lang.tr("every", "每次").to_owned()
+                                lang.t("breakpoints-every").to_owned()
                             } else {
                                 format!("{n}")
                             }
                         }),
                 )
                 .labelled_by(at_hit.id)
-                .on_hover_text(lang.tr(
-                    "Stop only the n-th time the run reaches this line (in a loop: its n-th iteration); 0 stops at every hit.",
-                    "只在运行第 n 次到达此行时停下（在循环中即第 n 次迭代）；0 表示每次都停。",
-                ))
+                .on_hover_text(lang.t("breakpoints-stop-only-the-n-th"))
                 .changed()
             {
                 b.hit = (hit > 0).then_some(hit);
             }
             if stage == Stage::Fragment {
                 let condition = bps.conditions.entry(line).or_default();
-                let label = ui.label(lang.tr("where", "条件"));
+                let label = ui.label(lang.t("breakpoints-where"));
                 ui.add(
                     egui::TextEdit::singleline(condition)
                         .id_salt(("breakpoint condition", line))
@@ -129,11 +126,8 @@ pub fn list(
                 )
                 .labelled_by(label.id);
                 if ui
-                    .button(lang.tr("Find in the frame", "在整帧中查找"))
-                    .on_hover_text(lang.tr(
-                        "The first fragment, reading the picture from the top, where the condition holds just after this line: it is inspected, and its run shown at this line.",
-                        "从画面顶部读起，第一个在此行之后条件成立的片元：检查它，并在此行显示它的运行过程。",
-                    ))
+                    .button(lang.t("breakpoints-find-in-the-frame"))
+                    .on_hover_text(lang.t("breakpoints-the-first-fragment-reading-the"))
                     .clicked()
                 {
                     let condition = condition.trim().to_owned();
@@ -150,7 +144,7 @@ pub fn list(
                         Err(e) => {
                             bps.note = Some(format!(
                                 "{} {e}",
-                                lang.tr("The condition cannot be read there:", "无法在此处读取该条件：")
+                                lang.t("breakpoints-the-condition-cannot-be-read")
                             ));
                         }
                     }
@@ -158,7 +152,7 @@ pub fn list(
             }
             if ui
                 .small_button("×")
-                .on_hover_text(lang.tr("Remove this breakpoint", "删除此断点"))
+                .on_hover_text(lang.t("breakpoints-remove-this-breakpoint"))
                 .clicked()
             {
                 removed = Some(line);
@@ -199,20 +193,14 @@ pub fn found(bps: &mut Breakpoints, session: &Session) -> (Option<Command>, Opti
         (Some(WatchKind::Bool), None) => {
             bps.note = Some(format!(
                 "`{condition}` {}",
-                lang.tr(
-                    "holds at no fragment of this frame after that line.",
-                    "在此帧中没有任何片元在该行之后成立。"
-                )
+                lang.t("breakpoints-holds-at-no-fragment-of")
             ));
             (None, None)
         }
         _ => {
             bps.note = Some(format!(
                 "`{condition}` {}",
-                lang.tr(
-                    "is not a condition (a bool): write a comparison, such as diffuse <= 0.0.",
-                    "不是条件（bool）：请写一个比较，例如 diffuse <= 0.0。"
-                )
+                lang.t("breakpoints-is-not-a-condition-a")
             ));
             (None, None)
         }

@@ -118,7 +118,7 @@ impl CompareView {
         self.picture.clear();
         let variants = &session.variants;
         if variants.is_empty() {
-            ui.label(lang.tr("Rendering the comparison…", "正在渲染对比…"));
+            ui.label(lang.t("compare-rendering-the-comparison"));
             return cmds;
         }
         let card = super::card_placement::narration_card(ui.ctx());
@@ -150,7 +150,7 @@ impl CompareView {
             self.picture.push(image);
             let response = ui.interact(image, ui.scope_id().with(("compare", i)), Sense::drag());
             let caption = variant_label(name, lang);
-            let accessible = format!("{}: {caption}", lang.tr("compared image", "对比图像"));
+            let accessible = format!("{}: {caption}", lang.t("compare-compared-image"));
             super::alt::name_image(&response, || accessible.clone());
             let painter = ui.painter_at(cell);
             painter.image(

@@ -5,6 +5,7 @@
 //! which of its hits). Nothing runs again: the frame already kept the whole run, so stepping
 //! back is as cheap as stepping forward (`pipelens_glsl::stepping`).
 
+use crate::vocabulary::Written;
 use egui::{RichText, Ui};
 use pipeline::capture::FrameCapture;
 use pipeline::shader::stepping;
@@ -138,34 +139,20 @@ impl Debugger {
                 self.note = Some(
                     match m {
                         Move::Back | Move::ContinueBack if at.is_none() || here == 0 => {
-                            lang.tr("This is the run's first step.", "这已是运行的第一步。")
+                            lang.t("debugger-this-is-the-run-s")
                         }
-                        Move::ContinueBack => lang.tr(
-                            "No breakpoint stops the run before this step.",
-                            "此步之前没有断点使运行停下。",
-                        ),
-                        Move::Continue if self.breakpoints.of(stage).is_empty() => lang.tr(
-                            "No breakpoint is set: click a line number, or press F9 on a line.",
-                            "尚未设置断点：单击行号，或在某行按 F9。",
-                        ),
-                        Move::Continue => lang.tr(
-                            "No breakpoint stops the rest of this run.",
-                            "运行的其余部分没有断点使它停下。",
-                        ),
-                        Move::ToCursor if self.cursor_line.is_none() => lang.tr(
-                            "Put the text cursor on a line first.",
-                            "请先把文本光标放在某一行上。",
-                        ),
-                        Move::ToCursor => lang.tr(
-                            "The rest of this run never reaches the cursor's line.",
-                            "运行的其余部分不会到达光标所在行。",
-                        ),
-                        Move::Out => lang.tr(
-                            "This step is in main: there is no caller to return to.",
-                            "此步在 main 中：没有可返回的调用者。",
-                        ),
+                        Move::ContinueBack => lang.t("debugger-no-breakpoint-stops-the-run"),
+                        Move::Continue if self.breakpoints.of(stage).is_empty() => {
+                            lang.t("debugger-no-breakpoint-is-set-click")
+                        }
+                        Move::Continue => lang.t("debugger-no-breakpoint-stops-the-rest"),
+                        Move::ToCursor if self.cursor_line.is_none() => {
+                            lang.t("debugger-put-the-text-cursor-on")
+                        }
+                        Move::ToCursor => lang.t("debugger-the-rest-of-this-run"),
+                        Move::Out => lang.t("debugger-this-step-is-in-main"),
                         Move::Into | Move::Over | Move::Back => {
-                            lang.tr("This is the run's last step.", "这已是运行的最后一步。")
+                            lang.t("debugger-this-is-the-run-s-2")
                         }
                     }
                     .to_owned(),
@@ -243,74 +230,70 @@ pub fn bar(
         let buttons = [
             (
                 Move::Back,
-                ("← back", "← 后退"),
+                "debugger-back",
                 Action::StepBack,
-                ("step back", "后退一步"),
+                "debugger-step-back",
             ),
             (
                 Move::Over,
-                ("→ over", "→ 跳过"),
+                "debugger-over",
                 Action::StepOver,
-                ("step over (a call run whole)", "单步跳过（整个执行调用）"),
+                "debugger-step-over-a-call-run",
             ),
             (
                 Move::Into,
-                ("↓ into", "↓ 进入"),
+                "debugger-into",
                 Action::StepInto,
-                ("step into a call", "单步进入调用"),
+                "debugger-step-into-a-call",
             ),
             (
                 Move::Out,
-                ("↑ out", "↑ 跳出"),
+                "debugger-out",
                 Action::StepOut,
-                ("step out of this function", "单步跳出此函数"),
+                "debugger-step-out-of-this-function",
             ),
             (
                 Move::ToCursor,
-                ("to cursor", "到光标"),
+                "debugger-to-cursor",
                 Action::RunToCursor,
-                ("run to the cursor's line", "运行到光标所在行"),
+                "debugger-run-to-the-cursor-s",
             ),
             (
                 Move::ContinueBack,
-                ("◀ breakpoint", "◀ 断点"),
+                "debugger-breakpoint",
                 Action::ContinueBack,
-                ("back to the previous breakpoint", "倒退到上一个断点"),
+                "debugger-back-to-the-previous-breakpoint",
             ),
             (
                 Move::Continue,
-                ("breakpoint ▶", "断点 ▶"),
+                "debugger-breakpoint-2",
                 Action::Continue,
-                ("on to the next breakpoint", "继续到下一个断点"),
+                "debugger-on-to-the-next-breakpoint",
             ),
         ];
-        for (m, (label_en, label_zh), action, (en, zh)) in buttons {
+        for (m, label, action, does) in buttons {
             let tip = format!(
                 "{} ({})",
-                lang.tr(en, zh),
+                lang.t(does),
                 shortcuts::keys_written(shortcuts::of(action))
             );
-            if ui
-                .button(lang.tr(label_en, label_zh))
-                .on_hover_text(tip)
-                .clicked()
-            {
+            if ui.button(lang.t(label)).on_hover_text(tip).clicked() {
                 pressed = Some(m);
             }
         }
         let position = match debugger.at {
             Some(a) => format!(
                 "{} {} / {} · {} {}",
-                lang.tr("step", "第"),
+                lang.t("debugger-step"),
                 a + 1,
                 run.len(),
-                lang.tr("line", "行"),
+                lang.t("debugger-line"),
                 run[a.min(run.len() - 1)].line
             ),
             None => format!(
                 "{} {}",
                 run.len(),
-                lang.tr("steps: F10 steps through them", "步：按 F10 逐步执行")
+                lang.t("debugger-steps-f10-steps-through-them")
             ),
         };
         ui.label(RichText::new(position).monospace());
@@ -347,15 +330,15 @@ impl Watching<'_> {
         match (self.stored.iter().rev().find(|(k, _)| *k <= at + 1), kind) {
             (Some((_, v)), Some(kind)) => format!(
                 "{} `{expression}` {} {line} = {}",
-                lang.tr("watch", "监视"),
-                lang.tr("after line", "在行"),
+                lang.t("debugger-watch"),
+                lang.t("debugger-after-line"),
                 super::watch_picture::value_words(kind, *v)
             ),
-            _ => match lang {
-                Lang::En => format!(
+            _ => match lang.written() {
+                Written::English => format!(
                     "watch `{expression}`: up to this step, this fragment has not run line {line}"
                 ),
-                Lang::Zh => {
+                Written::Chinese => {
                     format!("监视 `{expression}`：到此步为止，此片元尚未执行第 {line} 行")
                 }
             },
@@ -365,7 +348,7 @@ impl Watching<'_> {
 
 /// The variables of the step's function as they stand at the step, a colour with its swatch.
 fn scope(ui: &mut Ui, run: &[TraceLine], at: usize, lang: Lang) {
-    egui::CollapsingHeader::new(lang.tr("Variables at this step", "此步的变量"))
+    egui::CollapsingHeader::new(lang.t("debugger-variables-at-this-step"))
         .id_salt("debugger scope")
         .default_open(true)
         .show(ui, |ui| {
@@ -383,7 +366,7 @@ fn scope(ui: &mut Ui, run: &[TraceLine], at: usize, lang: Lang) {
                             "{} = {}   ({} {})",
                             held.name,
                             run[held.step].value.as_deref().unwrap_or_default(),
-                            lang.tr("line", "行"),
+                            lang.t("debugger-line"),
                             held.line
                         ))
                         .monospace(),
@@ -468,14 +451,8 @@ fn stepped(
         if session.spec.scene.has_shaders() {
             ui.label(
                 RichText::new(match stage {
-                    Stage::Fragment => lang.tr(
-                        "Debugger: click a pixel of the picture; its fragment's run steps here (F10).",
-                        "调试器：单击画面中的一个像素；它的片元的运行在这里逐步执行（F10）。",
-                    ),
-                    Stage::Vertex => lang.tr(
-                        "Debugger: select a vertex (a click in a geometry view, or a row of the vertex table); its run steps here (F10).",
-                        "调试器：选择一个顶点（在几何视图中单击，或在顶点表中选一行）；它的运行在这里逐步执行（F10）。",
-                    ),
+                    Stage::Fragment => lang.t("debugger-debugger-click-a-pixel-of"),
+                    Stage::Vertex => lang.t("debugger-debugger-select-a-vertex-a"),
                 })
                 .italics(),
             );
@@ -505,13 +482,7 @@ fn stepped(
         match debugger.cursor_line {
             Some(line) => debugger.breakpoints.toggle(stage, line),
             None => {
-                debugger.note = Some(
-                    lang.tr(
-                        "Put the text cursor on a line first.",
-                        "请先把文本光标放在某一行上。",
-                    )
-                    .to_owned(),
-                );
+                debugger.note = Some(lang.t("debugger-put-the-text-cursor-on").to_owned());
             }
         }
     }
@@ -555,15 +526,12 @@ fn stepped(
 
 /// Which of the `fragments` that reached the pixel the debugger follows, from 1.
 fn fragment_chooser(ui: &mut Ui, debugger: &mut Debugger, fragments: usize, lang: Lang) {
-    let label = ui.label(lang.tr("fragment", "片元"));
+    let label = ui.label(lang.t("debugger-fragment"));
     let mut k = debugger.fragment + 1;
     if ui
         .add(egui::DragValue::new(&mut k).range(1..=fragments))
         .labelled_by(label.id)
-        .on_hover_text(lang.tr(
-            "Several fragments reached this pixel (triangles meeting in it, or layers a discard peeled): which one to follow.",
-            "有多个片元到达此像素（在此相交的三角形，或被 discard 剥离的层）：选择跟随哪一个。",
-        ))
+        .on_hover_text(lang.t("debugger-several-fragments-reached-this-pixel"))
         .changed()
     {
         debugger.fragment = k - 1;

@@ -53,10 +53,7 @@ impl ExerciseView {
         let Some(reference) = &session.exercise.reference else {
             ui.put(
                 rect,
-                egui::Label::new(lang.tr(
-                    "Drawing pipelens' own frame…",
-                    "正在绘制 pipelens 自带的画面…",
-                )),
+                egui::Label::new(lang.t("exercise-drawing-pipelens-own-frame")),
             );
             return cmds;
         };
@@ -174,27 +171,23 @@ fn captions(
     own.append(
         &format!(
             "{} · {}",
-            lang.tr("pipelens' own", "pipelens 自带"),
+            lang.t("exercise-pipelens-own"),
             crate::vocabulary::buffer_name(kind, lang)
         ),
         0.0,
         format(Color32::WHITE),
     );
     let mut difference = LayoutJob::default();
-    difference.append(
-        lang.tr("difference:", "差异："),
-        0.0,
-        format(Color32::WHITE),
-    );
+    difference.append(lang.t("exercise-difference"), 0.0, format(Color32::WHITE));
     let names = [
-        lang.tr("colour", "颜色"),
-        lang.tr("coverage", "覆盖"),
-        lang.tr("depth", "深度"),
-        lang.tr("another triangle", "另一个三角形"),
+        lang.t("exercise-colour"),
+        lang.t("exercise-coverage"),
+        lang.t("exercise-depth"),
+        lang.t("exercise-another-triangle"),
     ];
-    let (space, separator) = match lang {
-        crate::vocabulary::Lang::Zh => (0.0, "、"),
-        crate::vocabulary::Lang::En => (6.0, ","),
+    let (space, separator) = match lang.written() {
+        crate::vocabulary::Written::Chinese => (0.0, "、"),
+        crate::vocabulary::Written::English => (6.0, ","),
     };
     for (k, (name, [r, g, b])) in names.into_iter().zip(DIFFERENCE_COLOURS).enumerate() {
         difference.append(name, space, format(Color32::from_rgb(r, g, b)));
@@ -331,27 +324,18 @@ pub fn card_part(
     let lang = session.lang;
     ui.add_space(6.0);
     ui.label(
-        RichText::new(lang.tr("Exercise", "练习"))
+        RichText::new(lang.t("exercise-exercise"))
             .strong()
             .color(Color32::WHITE),
     );
     typeset::paragraph(ui, exercise.task.get(lang), style);
     let writes = |kind| exercise.starter.hooks.get(kind).is_some();
     let how = if writes(pipeline::shader::HookKind::Curve) {
-        lang.tr(
-            "Write your code in the Shader panel (key S): it runs as you type, and your curve is compared with pipelens' b(t), point by point.",
-            "在着色器面板（S 键）中编写代码：边写边运行，你的曲线与 pipelens 的 b(t) 逐点比较。",
-        )
+        lang.t("exercise-write-your-code-in-the")
     } else if writes(pipeline::shader::HookKind::Patch) {
-        lang.tr(
-            "Write your code in the Shader panel (key S): it runs as you type, and your surface is compared with pipelens' b(u, v), point by point.",
-            "在着色器面板（S 键）中编写代码：边写边运行，你的曲面与 pipelens 的 b(u, v) 逐点比较。",
-        )
+        lang.t("exercise-write-your-code-in-the-2")
     } else {
-        lang.tr(
-            "Write your code in the Shader panel (key S): it runs as you type, and the frame is compared with pipelens' own, pixel by pixel.",
-            "在着色器面板（S 键）中编写代码：边写边运行，画面与 pipelens 自带的逐像素比较。",
-        )
+        lang.t("exercise-write-your-code-in-the-3")
     };
     ui.label(RichText::new(how).size(style.size * 0.85));
     let passed_before = session
@@ -388,14 +372,13 @@ pub fn card_part(
                 }
                 if session.selection.vertex != Some(row)
                     && ui
-                        .button(lang.tr("Inspect the first wrong vertex", "检查第一个错误的顶点"))
-                        .on_hover_text(lang.tr(
-                            "Selects its row of the vertex table: the Inspector shows your vertex shader's run for it.",
-                            "选中它在顶点表中的那一行：检查器显示你的顶点着色器对它的运行过程。",
-                        ))
+                        .button(lang.t("exercise-inspect-the-first-wrong-vertex"))
+                        .on_hover_text(lang.t("exercise-selects-its-row-of-the"))
                         .clicked()
                 {
-                    commands.push(Command::Selection(SelectionCommand::SelectVertex(Some(row))));
+                    commands.push(Command::Selection(SelectionCommand::SelectVertex(Some(
+                        row,
+                    ))));
                     return true;
                 }
             }
@@ -405,19 +388,18 @@ pub fn card_part(
             if let Some(first) = d.first
                 && session.selection.pixel != Some(first)
                 && ui
-                    .button(lang.tr("Inspect the first wrong pixel", "检查第一个错误的像素"))
-                    .on_hover_text(lang.tr(
-                        "Selects it: the Inspector shows your shader's run there beside pipelens' own derivation.",
-                        "选中它：检查器并列显示你的着色器在该处的运行过程和 pipelens 自带的推导。",
-                    ))
+                    .button(lang.t("exercise-inspect-the-first-wrong-pixel"))
+                    .on_hover_text(lang.t("exercise-selects-it-the-inspector-shows"))
                     .clicked()
             {
-                commands.push(Command::Selection(SelectionCommand::SelectPixel(Some(first))));
+                commands.push(Command::Selection(SelectionCommand::SelectPixel(Some(
+                    first,
+                ))));
                 return true;
             }
         }
         None if passed_before => {
-            ui.label(RichText::new(lang.tr("Passed before.", "之前已通过。")).color(PASSED));
+            ui.label(RichText::new(lang.t("exercise-passed-before")).color(PASSED));
         }
         None => {}
     }

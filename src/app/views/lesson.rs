@@ -164,8 +164,8 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
         |ui| {
             if ui
                 .small_button("—")
-                .accessible_name(lang.tr("Fold the narration away", "收起讲解"))
-                .on_hover_text(lang.tr("Fold the narration away (N)", "收起讲解（N）"))
+                .accessible_name(lang.t("lesson-fold-the-narration-away"))
+                .on_hover_text(lang.t("lesson-fold-the-narration-away-n"))
                 .clicked()
             {
                 out.fold = true;
@@ -186,12 +186,9 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
             narration(ui, step.narration.get(lang), &style);
             if step.predicts() && !player.playing && player.time == 0.0 {
                 ui.label(
-                    RichText::new(lang.tr(
-                        "Predict first (the question below), then press Space to watch.",
-                        "先预测（见下方思考题），再按空格键观看。",
-                    ))
-                    .strong()
-                    .color(Color32::from_rgb(255, 214, 120)),
+                    RichText::new(lang.t("lesson-predict-first-the-question-below"))
+                        .strong()
+                        .color(Color32::from_rgb(255, 214, 120)),
                 );
             }
             for a in &step.animate {
@@ -210,7 +207,7 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
             if let Some(q) = &step.question {
                 ui.add_space(6.0);
                 ui.label(
-                    RichText::new(lang.tr("Question", "思考题"))
+                    RichText::new(lang.t("lesson-question"))
                         .strong()
                         .color(Color32::WHITE),
                 );
@@ -225,9 +222,9 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
                 if let Some(a) = &step.answer {
                     let shown = player.show_answer;
                     let label = if shown {
-                        lang.tr("Hide the answer", "隐藏答案")
+                        lang.t("lesson-hide-the-answer")
                     } else {
-                        lang.tr("Show the answer", "显示答案")
+                        lang.t("lesson-show-the-answer")
                     };
                     if ui.button(label).clicked() {
                         out.commands

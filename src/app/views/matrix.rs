@@ -23,7 +23,7 @@ pub fn matrix(ui: &mut Ui, m: &NamedMatrix, lang: Lang, id: &str, open: bool) {
     }
     matrix_grid(ui, &m.matrix, id);
     if !m.factors.is_empty() {
-        egui::CollapsingHeader::new(lang.tr("Factors", "分解"))
+        egui::CollapsingHeader::new(lang.t("matrix-factors"))
             .id_salt(format!("{id}-factors"))
             .default_open(open)
             .show(ui, |ui| {

@@ -33,11 +33,7 @@ impl ObserverView {
         let mut cmds = Vec::new();
         let (outer, response) = super::picture_keys::allocate_rest(ui, "observer");
         super::alt::name_image(&response, || {
-            lang.tr(
-                "observer: the scene seen from outside, with the viewing camera, its frustum and the lights",
-                "观察者：从外部看到的场景，带有观察相机、视锥和光源",
-            )
-            .to_owned()
+            lang.t("observer-observer-the-scene-seen-from").to_owned()
         });
         if outer.height() > 0.0 {
             cmds.push(Command::View(ViewCommand::SetObserverAspect(
@@ -51,7 +47,7 @@ impl ObserverView {
             painter.text(
                 outer.center(),
                 Align2::CENTER_CENTER,
-                lang.tr("rendering the observer…", "正在渲染观察者视图…"),
+                lang.t("observer-rendering-the-observer"),
                 picture_font(painter.ctx(), 16.0),
                 Color32::GRAY,
             );
@@ -131,24 +127,15 @@ impl ObserverView {
         );
         ui.scope_builder(egui::UiBuilder::new().max_rect(bar), |ui| {
             ui.horizontal(|ui| {
-                ui.menu_button(lang.tr("Observer ▾", "观察者 ▾"), |ui| {
-                    ui.label(lang.tr(
-                        "The scene from outside: drag to orbit, scroll to zoom.",
-                        "从外部看场景：拖动旋转，滚轮缩放。",
-                    ));
+                ui.menu_button(lang.t("observer-observer"), |ui| {
+                    ui.label(lang.t("observer-the-scene-from-outside-drag"));
                     let p = &mut self.parts;
-                    ui.checkbox(
-                        &mut p.axes,
-                        lang.tr("camera frame u, v, n", "相机标架 u, v, n"),
-                    );
-                    ui.checkbox(
-                        &mut p.clipped,
-                        lang.tr("clipped polygons", "裁剪后的多边形"),
-                    );
-                    ui.checkbox(&mut p.sides, lang.tr("frustum sides", "视锥侧棱"));
-                    ui.checkbox(&mut p.near, lang.tr("near plane", "近平面"));
-                    ui.checkbox(&mut p.far, lang.tr("far plane", "远平面"));
-                    ui.checkbox(&mut p.lights, lang.tr("lights", "光源"));
+                    ui.checkbox(&mut p.axes, lang.t("observer-camera-frame-u-v-n"));
+                    ui.checkbox(&mut p.clipped, lang.t("observer-clipped-polygons"));
+                    ui.checkbox(&mut p.sides, lang.t("observer-frustum-sides"));
+                    ui.checkbox(&mut p.near, lang.t("observer-near-plane"));
+                    ui.checkbox(&mut p.far, lang.t("observer-far-plane"));
+                    ui.checkbox(&mut p.lights, lang.t("observer-lights"));
                 });
             });
         });

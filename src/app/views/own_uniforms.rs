@@ -5,6 +5,7 @@
 //! value from the comment after its declaration. A change sets the parameter `uniforms.NAME`,
 //! the one a lesson's `set` and `animate` use, so the recorder writes it into a step.
 
+use crate::vocabulary::Written;
 use egui::{RichText, Ui};
 use pipeline::shader::own_uniform::{OwnKind, OwnUniform};
 
@@ -22,7 +23,7 @@ pub fn controls(ui: &mut Ui, session: &Session) -> Option<Command> {
     }
     let lang = session.lang;
     let mut moved: Option<(String, Value)> = None;
-    egui::CollapsingHeader::new(lang.tr("Your uniforms", "你的 uniform"))
+    egui::CollapsingHeader::new(lang.t("own-uniforms-your-uniforms"))
         .id_salt("own uniforms")
         .default_open(true)
         .show(ui, |ui| {
@@ -44,15 +45,15 @@ pub fn controls(ui: &mut Ui, session: &Session) -> Option<Command> {
 /// One uniform's control, labelled by `label`; its new value when moved.
 fn control(ui: &mut Ui, u: &OwnUniform, label: egui::Id, lang: Lang) -> Option<Value> {
     let (lo, hi) = u.range;
-    let tip = match lang {
-        Lang::En => format!(
+    let tip = match lang.written() {
+        Written::English => format!(
             "uniform {} {} (line {}): the range {lo}..{hi} and first value come from the comment after it, `// MIN..MAX = VALUE`; a lesson sets it with \"uniforms.{}\"",
             u.kind.glsl(),
             u.name,
             u.line,
             u.name
         ),
-        Lang::Zh => format!(
+        Written::Chinese => format!(
             "uniform {} {}（第 {} 行）：范围 {lo}..{hi} 和初值来自其后的注释 `// 最小..最大 = 初值`；课程用 \"uniforms.{}\" 设置它",
             u.kind.glsl(),
             u.name,

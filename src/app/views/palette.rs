@@ -52,12 +52,12 @@ pub fn fate_segment(
     }
 }
 
-/// The fates a triangle can meet, in the legend's order: colour, English name, Chinese name
+/// The fates a triangle can meet, in the legend's order: colour and the message of its name
 /// (`spaces::FATES`, the colours as egui's).
-pub const FATES: [(Color32, &str, &str); crate::spaces::FATES.len()] = {
-    const fn fate(k: usize) -> (Color32, &'static str, &'static str) {
+pub const FATES: [(Color32, &str); crate::spaces::FATES.len()] = {
+    const fn fate(k: usize) -> (Color32, &'static str) {
         let f = crate::spaces::FATES[k];
-        (egui_colour(f.0), f.1, f.2)
+        (egui_colour(f.0), f.1)
     }
     [fate(0), fate(1), fate(2), fate(3), fate(4), fate(5)]
 };

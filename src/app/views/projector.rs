@@ -70,9 +70,9 @@ pub fn draw_lights(
         }
         if let Some(p) = cam.project(to_view(g.label_at)) {
             let name = match light {
-                Light::Point { .. } => lang.tr("point light", "点光源"),
-                Light::Spot { .. } => lang.tr("spotlight", "聚光灯"),
-                Light::Directional { .. } => lang.tr("directional light", "平行光"),
+                Light::Point { .. } => lang.t("projector-point-light"),
+                Light::Spot { .. } => lang.t("projector-spotlight"),
+                Light::Directional { .. } => lang.t("projector-directional-light"),
                 Light::Ambient { .. } => "",
             };
             let text = format!("{name} {k}");

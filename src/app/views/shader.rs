@@ -4,6 +4,7 @@
 //! compiles is applied as one types (or on Ctrl+Enter); one that does not keeps the last good
 //! picture on screen. The source lives in the app (in the browser too, in the page).
 
+use crate::vocabulary::Written;
 use std::sync::Arc;
 
 use egui::{Color32, RichText, Ui};
@@ -231,16 +232,13 @@ pub fn ui(
     tabs(ui, editor, lang);
     ui.horizontal(|ui| {
         apply |= ui
-            .button(lang.tr("Apply", "应用"))
-            .on_hover_text(lang.tr("Compile and draw with these shaders (Ctrl+Enter)", "编译并用这些着色器绘制（Ctrl+Enter）"))
+            .button(lang.t("shader-apply"))
+            .on_hover_text(lang.t("shader-compile-and-draw-with-these"))
             .clicked();
         apply |= own_or_back(ui, editor, session);
         if ui
-            .button(lang.tr("Save", "保存"))
-            .on_hover_text(lang.tr(
-                "Writes shader.vert and shader.frag into the export folder, and inside.glsl or depth_test.glsl when the step runs those functions (in the browser: downloads them). A lesson reads them with shader = { vertex = \"shader.vert\", fragment = \"shader.frag\", inside = \"inside.glsl\" }.",
-                "把 shader.vert 和 shader.frag 写入导出文件夹；当前步骤运行 inside 或 depth_test 函数时，还写入 inside.glsl 或 depth_test.glsl（在浏览器中：下载它们）。课程用 shader = { vertex = \"shader.vert\", fragment = \"shader.frag\", inside = \"inside.glsl\" } 读取它们。",
-            ))
+            .button(lang.t("shader-save"))
+            .on_hover_text(lang.t("shader-writes-shader-vert-and-shader"))
             .clicked()
         {
             editor.saved = Some(save(editor, save_dir));
@@ -248,7 +246,7 @@ pub fn ui(
     });
     match &editor.saved {
         Some(Ok(files)) => {
-            ui.label(format!("{} {files}", lang.tr("Saved:", "已保存：")));
+            ui.label(format!("{} {files}", lang.t("shader-saved")));
         }
         Some(Err(e)) => {
             ui.colored_label(ui.visuals().error_fg_color, e);
@@ -301,10 +299,15 @@ pub fn ui(
     let name = format!(
         "{}{}",
         tab_name(tab, session.lang),
-        session.lang.tr(": source", "：源代码")
+        session.lang.t("shader-source")
     );
-    let touched =
-        super::shader_source::code(ui, (source, &format!("{tab:?}"), &name), &errors, &marks);
+    let touched = super::shader_source::code(
+        ui,
+        (source, &format!("{tab:?}"), &name),
+        &errors,
+        &marks,
+        session.lang,
+    );
     let edited = touched.changed;
     if touched.cursor_line.is_some() {
         editor.debugger.cursor_line = touched.cursor_line;
@@ -335,11 +338,8 @@ fn own_or_back(ui: &mut Ui, editor: &mut ShaderEditor, session: &Session) -> boo
     let lang = session.lang;
     if let Some((vertex, fragment)) = editor.before_own.clone()
         && ui
-            .button(lang.tr("← Back to your code", "← 回到你的代码"))
-            .on_hover_text(lang.tr(
-                "Puts back the code you had before pipelens' own replaced it.",
-                "恢复被 pipelens 自带着色替换之前你的代码。",
-            ))
+            .button(lang.t("shader-back-to-your-code"))
+            .on_hover_text(lang.t("shader-puts-back-the-code-you"))
             .clicked()
     {
         editor.vertex = vertex;
@@ -348,11 +348,8 @@ fn own_or_back(ui: &mut Ui, editor: &mut ShaderEditor, session: &Session) -> boo
         return true;
     }
     if !ui
-        .button(lang.tr("pipelens' own", "pipelens 自带"))
-        .on_hover_text(lang.tr(
-            "Start again from pipelens' own shading for the current settings, written as GLSL (unlit; flat; Gouraud; Phong shading with n·h or r·v; a bump or normal map): it draws the same pixels. For r·v with flat or Gouraud shading or a bump map, and for a mirror, none is shipped: there, Blinn-Phong per pixel. Your code stays one click away (Back to your code).",
-            "从 pipelens 针对当前设置的自带着色（GLSL 写成）重新开始（无光照；平面；Gouraud；Phong 着色，n·h 或 r·v；凹凸或法线贴图）：画出的像素相同。平面或 Gouraud 着色配 r·v、凹凸贴图配 r·v 以及镜面没有对应的着色器：此时用逐像素 Blinn-Phong。你的代码仍可一键恢复（回到你的代码）。",
-        ))
+        .button(lang.t("shader-pipelens-own"))
+        .on_hover_text(lang.t("shader-start-again-from-pipelens-own"))
         .clicked()
     {
         return false;
@@ -385,26 +382,11 @@ fn own_or_back(ui: &mut Ui, editor: &mut ShaderEditor, session: &Session) -> boo
 /// What a function's tab says when hovered, in English and Chinese.
 fn hook_tip(kind: HookKind, lang: Lang) -> String {
     let what = match kind {
-        HookKind::Inside => lang.tr(
-            "The rasterizer calls it for every sample of a triangle's bounding box: p the sample, a, b, c the corners (window pixels, y up, counter-clockwise). It decides coverage in place of pipelens' edge functions E_i(p) ≥ 0 with the top-left rule.",
-            "光栅化器对三角形包围盒内的每个采样点调用它：p 是采样点，a、b、c 是顶点（窗口像素坐标，y 向上，逆时针）。它代替 pipelens 的边函数 E_i(p) ≥ 0 及左上规则来决定覆盖。",
-        ),
-        HookKind::DepthTest => lang.tr(
-            "The rasterizer calls it for every sample a triangle covers: z the triangle's window depth there (in [0, 1]), stored what the z-buffer holds (1 where nothing was drawn). true writes z and the triangle into the sample. It replaces the depth comparison of the settings (less: z < stored).",
-            "光栅化器对三角形覆盖的每个采样点调用它：z 是三角形在该处的窗口深度（在 [0, 1] 内），stored 是深度缓冲中已存的值（尚未绘制处为 1）。返回 true 则把 z 和该三角形写入采样点。它代替设置中的深度比较（less：z < stored）。",
-        ),
-        HookKind::Curve => lang.tr(
-            "A Bézier curve's drawing calls it for every point of the curve (161 values of t from 0 to 1): p0 … p3 the control points, in the curve's plane. It replaces pipelens' own b(t) = Σ B_i³(t)·P_i.",
-            "贝塞尔曲线的绘制对曲线上的每个点调用它（t 从 0 到 1 取 161 个值）：p0 … p3 是控制点，在曲线所在平面内。它代替 pipelens 自己的 b(t) = Σ B_i³(t)·P_i。",
-        ),
-        HookKind::ShadowMatrix => lang.tr(
-            "The shadow pass calls it once a frame: light the point light, relative to the plane the shadow falls on, which it takes to be y = 0. Every shadow object is drawn with it in place of pipelens' M_shadow = T(l)·M_p·T(−l); any positive multiple casts the same shadow.",
-            "阴影绘制每帧调用它一次：light 是点光源相对于接收阴影的平面的位置，平面取为 y = 0。每个阴影物体都用它代替 pipelens 的 M_shadow = T(l)·M_p·T(−l) 绘制；它的任何正倍数投下同样的阴影。",
-        ),
-        HookKind::Patch => lang.tr(
-            "A Bézier patch's drawing calls it for every vertex of its surface grid (25 × 25 values of (u, v) from 0 to 1): p[4i + j] the control point P_ij, row i along v, column j along u. It replaces pipelens' own b(u, v) = Σ Σ B_i³(v)·B_j³(u)·P_ij; the surface keeps pipelens' exact normals.",
-            "贝塞尔曲面片的绘制对曲面网格的每个顶点调用它（(u, v) 在 0 到 1 之间取 25 × 25 个值）：p[4i + j] 是控制点 P_ij，第 i 行沿 v，第 j 列沿 u。它代替 pipelens 自己的 b(u, v) = Σ Σ B_i³(v)·B_j³(u)·P_ij；曲面仍用 pipelens 的精确法线。",
-        ),
+        HookKind::Inside => lang.t("shader-the-rasterizer-calls-it-for"),
+        HookKind::DepthTest => lang.t("shader-the-rasterizer-calls-it-for-2"),
+        HookKind::Curve => lang.t("shader-a-b-zier-curve-s"),
+        HookKind::ShadowMatrix => lang.t("shader-the-shadow-pass-calls-it"),
+        HookKind::Patch => lang.t("shader-a-b-zier-patch-s"),
     };
     format!("{}\n{what}", kind.signature())
 }
@@ -412,11 +394,11 @@ fn hook_tip(kind: HookKind, lang: Lang) -> String {
 /// A function's tab's name.
 fn hook_label(kind: HookKind, lang: Lang) -> &'static str {
     match kind {
-        HookKind::Inside => lang.tr("Inside test", "内部测试 inside"),
-        HookKind::DepthTest => lang.tr("Depth test", "深度测试 depth_test"),
-        HookKind::Curve => lang.tr("de Casteljau", "de Casteljau 算法"),
-        HookKind::ShadowMatrix => lang.tr("Shadow matrix", "阴影矩阵 shadow_matrix"),
-        HookKind::Patch => lang.tr("Bézier patch", "贝塞尔曲面片 bezier_patch"),
+        HookKind::Inside => lang.t("shader-inside-test"),
+        HookKind::DepthTest => lang.t("shader-depth-test"),
+        HookKind::Curve => lang.t("shader-de-casteljau"),
+        HookKind::ShadowMatrix => lang.t("shader-shadow-matrix"),
+        HookKind::Patch => lang.t("shader-b-zier-patch"),
     }
 }
 
@@ -453,8 +435,8 @@ fn tabs(ui: &mut Ui, editor: &mut ShaderEditor, lang: Lang) {
 fn tab_name(tab: Tab, lang: Lang) -> String {
     match tab {
         Tab::Hook(kind) => hook_label(kind, lang).to_owned(),
-        Tab::Shader(Stage::Vertex) => lang.tr("Vertex shader", "顶点着色器").to_owned(),
-        Tab::Shader(Stage::Fragment) => lang.tr("Fragment shader", "片元着色器").to_owned(),
+        Tab::Shader(Stage::Vertex) => lang.t("shader-vertex-shader").to_owned(),
+        Tab::Shader(Stage::Fragment) => lang.t("shader-fragment-shader").to_owned(),
     }
 }
 
@@ -486,10 +468,7 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
         ui.label(
             RichText::new(format!(
                 "{} {e}",
-                lang.tr(
-                    "Compiles, but the run stopped; the last good picture stays on screen:",
-                    "可以编译，但运行中止；画面保持上一次成功的结果："
-                )
+                lang.t("shader-compiles-but-the-run-stopped")
             ))
             .color(ui.visuals().error_fg_color),
         );
@@ -498,30 +477,18 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
     if editor.errors.is_empty() && editor.hooks.iter().all(|h| h.errors.is_empty()) {
         // Until the source is applied (or edited), pipelens' own shading draws the picture.
         let text = if !editor.hooks.is_empty() && !session.spec.scene.has_shaders() {
-            lang.tr(
-                "Compiled: the pipeline calls these functions in place of its own (hover a tab: when, and what it replaces); the shading is pipelens' own.",
-                "已编译：管线调用这些函数来代替它自己的实现（把鼠标停在标签上可看到何时调用、代替什么）；着色仍由 pipelens 完成。",
-            )
+            lang.t("shader-compiled-the-pipeline-calls-these")
         } else if session.spec.scene.has_shaders() {
-            lang.tr(
-                "Compiled: the picture is drawn with these shaders.",
-                "已编译：画面由这些着色器绘制。",
-            )
+            lang.t("shader-compiled-the-picture-is-drawn")
         } else {
-            lang.tr(
-                "The picture is drawn by pipelens' own shading: Apply (Ctrl+Enter) or edit to draw it with these shaders.",
-                "画面由 pipelens 自带的着色绘制：按“应用”（Ctrl+Enter）或编辑后，改用这些着色器绘制。",
-            )
+            lang.t("shader-the-picture-is-drawn-by")
         };
         ui.label(RichText::new(text).color(Color32::from_rgb(90, 170, 90)));
         return;
     }
     ui.label(
-        RichText::new(lang.tr(
-            "Does not compile: the last good picture stays on screen.",
-            "无法编译：画面保持上一次成功的结果。",
-        ))
-        .color(ui.visuals().error_fg_color),
+        RichText::new(lang.t("shader-does-not-compile-the-last"))
+            .color(ui.visuals().error_fg_color),
     );
     for (h, e) in editor
         .hooks
@@ -542,13 +509,13 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
         ui.label(
             RichText::new(format!(
                 "{}{}{}",
-                match (e.stage, lang) {
-                    (Stage::Vertex, Lang::En) => "vertex shader",
-                    (Stage::Fragment, Lang::En) => "fragment shader",
-                    (Stage::Vertex, Lang::Zh) => "顶点着色器",
-                    (Stage::Fragment, Lang::Zh) => "片元着色器",
+                match (e.stage, lang.written()) {
+                    (Stage::Vertex, Written::English) => "vertex shader",
+                    (Stage::Fragment, Written::English) => "fragment shader",
+                    (Stage::Vertex, Written::Chinese) => "顶点着色器",
+                    (Stage::Fragment, Written::Chinese) => "片元着色器",
                 },
-                if lang == Lang::Zh { "，" } else { ", " },
+                if lang.is_chinese() { "，" } else { ", " },
                 crate::vocabulary::compile::message(&e.error, lang)
             ))
             .monospace()

@@ -40,12 +40,14 @@ pub(super) struct Touched {
 }
 
 /// The source with its line numbers, highlighted, with `errors` (`(line, message)`) and the
-/// debugger's `marks`; `tab` names the tab, which keeps its own scroll position.
+/// debugger's `marks`; `tab` names the tab, which keeps its own scroll position. The line
+/// numbers' tooltip is in `lang`.
 pub(super) fn code(
     ui: &mut Ui,
     (source, tab, name): (&mut String, &str, &str),
     errors: &[(usize, &str)],
     marks: &Marks,
+    lang: crate::vocabulary::Lang,
 ) -> Touched {
     let mut touched = Touched {
         changed: false,
@@ -86,11 +88,9 @@ pub(super) fn code(
                         .selectable(false)
                         .sense(egui::Sense::click()),
                     )
-                    .on_hover_text(
-                        crate::app::shortcuts::of(crate::app::shortcuts::Action::Breakpoint)
-                            .does
-                            .0,
-                    );
+                    .on_hover_text(lang.t(
+                        crate::app::shortcuts::of(crate::app::shortcuts::Action::Breakpoint).does,
+                    ));
                 // The text scrolls sideways by itself: a long line never hides the numbers.
                 egui::ScrollArea::horizontal()
                     .id_salt(("shader source columns", tab))

@@ -4,6 +4,7 @@
 //! (`pipeline::watch_fragment`, `pipeline::watch_vertex`). A value stands from its store on,
 //! so stepping back and forth shows each expression as the run had it at that step.
 
+use crate::vocabulary::Written;
 use std::sync::Arc;
 
 use egui::{RichText, Ui};
@@ -124,21 +125,16 @@ impl WatchList {
 /// Why an expression cannot be read after `line`, in the reader's language (the compiler's
 /// own message kept as it is).
 fn why(e: &ReplayError, line: usize, lang: Lang) -> String {
-    match (e, lang) {
-        (ReplayError::NotKept, _) => lang
-            .tr(
-                "no run is kept here: inspect a pixel or select a vertex",
-                "这里没有保存的运行：请检查一个像素或选择一个顶点",
-            )
-            .to_owned(),
-        (ReplayError::Input(name), Lang::En) => format!(
+    match (e, lang.written()) {
+        (ReplayError::NotKept, _) => lang.t("watch-list-no-run-is-kept-here").to_owned(),
+        (ReplayError::Input(name), Written::English) => format!(
             "it reads `{name}`, which your shader does not declare: the frame did not hand it over"
         ),
-        (ReplayError::Input(name), Lang::Zh) => {
+        (ReplayError::Input(name), Written::Chinese) => {
             format!("它读取了 `{name}`，而你的着色器没有声明它：这一帧没有传入它")
         }
-        (ReplayError::Watch(e), Lang::En) => format!("not readable after line {line}: {e}"),
-        (ReplayError::Watch(e), Lang::Zh) => format!("无法在第 {line} 行之后读取：{e}"),
+        (ReplayError::Watch(e), Written::English) => format!("not readable after line {line}: {e}"),
+        (ReplayError::Watch(e), Written::Chinese) => format!("无法在第 {line} 行之后读取：{e}"),
         (ReplayError::Run(e), _) => e.to_string(),
     }
 }
@@ -158,8 +154,8 @@ pub fn ui(
     let readings = list.readings(session, (stage, fragment), run, at);
     egui::CollapsingHeader::new(format!(
         "{} ({} {line})",
-        lang.tr("Watch list", "监视列表"),
-        lang.tr("after line", "在此行之后：")
+        lang.t("watch-list-watch-list"),
+        lang.t("watch-list-after-line")
     ))
     .id_salt("debugger watch list")
     .default_open(true)
@@ -169,7 +165,7 @@ pub fn ui(
             ui.horizontal(|ui| {
                 if ui
                     .small_button("×")
-                    .on_hover_text(lang.tr("Take it off the list", "从列表中移除"))
+                    .on_hover_text(lang.t("watch-list-take-it-off-the-list"))
                     .clicked()
                 {
                     remove = Some(i);
@@ -178,14 +174,16 @@ pub fn ui(
                     Reading::Value(kind, v) => {
                         let value = pipeline::shader::Value {
                             ty: kind.glsl().to_owned(),
-                            numbers: v[..kind.components()].iter().map(|c| f64::from(*c)).collect(),
+                            numbers: v[..kind.components()]
+                                .iter()
+                                .map(|c| f64::from(*c))
+                                .collect(),
                         };
                         if let Some(c) = pipeline::shader::stepping::colour(&value) {
-                            let (rect, _) = ui.allocate_exact_size(
-                                egui::vec2(14.0, 14.0),
-                                egui::Sense::hover(),
-                            );
-                            ui.painter().rect_filled(rect, 2.0, super::palette::swatch(c));
+                            let (rect, _) = ui
+                                .allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
+                            ui.painter()
+                                .rect_filled(rect, 2.0, super::palette::swatch(c));
                         }
                         ui.label(
                             RichText::new(format!(
@@ -199,10 +197,7 @@ pub fn ui(
                         ui.label(
                             RichText::new(format!(
                                 "{expression}: {}",
-                                lang.tr(
-                                    "up to this step, the run has not run this line",
-                                    "到此步为止，这次运行尚未执行此行"
-                                )
+                                lang.t("watch-list-up-to-this-step-the")
                             ))
                             .monospace()
                             .weak(),
@@ -219,22 +214,19 @@ pub fn ui(
             list.entries.remove(i);
         }
         ui.horizontal(|ui| {
-            let label = ui.label(lang.tr("Add:", "添加："));
+            let label = ui.label(lang.t("watch-list-add"));
             let field = ui
                 .add(
                     egui::TextEdit::singleline(&mut list.draft)
                         .id_salt("watch list expression")
-                        .hint_text(lang.tr("an expression, e.g. dot(n, l)", "表达式，例如 dot(n, l)"))
+                        .hint_text(lang.t("watch-list-an-expression-e-g-dot"))
                         .font(egui::TextStyle::Monospace)
                         .desired_width(220.0),
                 )
                 .labelled_by(label.id)
-                .on_hover_text(lang.tr(
-                    "Any expression of this shader, read just after the step's line in the run shown; Enter adds it.",
-                    "此着色器中的任意表达式，在所示运行中于此步所在行之后读取；按 Enter 添加。",
-                ));
+                .on_hover_text(lang.t("watch-list-any-expression-of-this-shader"));
             let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
-            let added = ui.button(lang.tr("＋ Watch", "＋ 监视")).clicked();
+            let added = ui.button(lang.t("watch-list-watch")).clicked();
             if (entered || added) && !list.draft.trim().is_empty() {
                 list.entries.push(list.draft.trim().to_owned());
                 list.draft.clear();

@@ -80,44 +80,39 @@ pub fn ui(
     }
     ui.horizontal_wrapped(|ui| {
         let label = ui
-            .label(RichText::new(lang.tr("Watch over the frame:", "整帧监视：")).strong())
+            .label(RichText::new(lang.t("watch-picture-watch-over-the-frame")).strong())
             .on_hover_text(match stage {
-                Stage::Fragment => lang.tr(
-                    "Any expression of your fragment shader, read just after the line runs, at every pixel: a number on a ramp (dark blue the least, yellow the greatest), a vector as a colour or one component, a condition where it holds. Grey checks: no fragment ran the line there.",
-                    "片元着色器中的任意表达式，在该行执行之后读取，每个像素一个值：数值用色带表示（深蓝最小，黄色最大），向量显示为颜色或某一分量，条件显示其成立之处。灰色棋盘格：那里没有片元执行该行。",
-                ),
-                Stage::Vertex => lang.tr(
-                    "Any expression of your vertex shader, read just after the line runs at each vertex, and carried to every pixel as a varying is: interpolated over the triangle with perspective-correct weights, (Σ λᵢ·aᵢ/wᵢ)/(Σ λᵢ/wᵢ); an int or a bool flat, from the triangle's last vertex, as GLSL passes them. A number on a ramp (dark blue the least, yellow the greatest), a vector as a colour or one component, a condition where it holds. Grey checks: a corner of the triangle there did not run the line.",
-                    "顶点着色器中的任意表达式，在每个顶点执行该行之后读取，再像 varying 一样送到每个像素：在三角形上用透视校正的权重插值，(Σ λᵢ·aᵢ/wᵢ)/(Σ λᵢ/wᵢ)；int 与 bool 按 GLSL 的规定 flat 传递，取三角形最后一个顶点的值。数值用色带表示（深蓝最小，黄色最大），向量显示为颜色或某一分量，条件显示其成立之处。灰色棋盘格：那里三角形有顶点没有执行该行。",
-                ),
+                Stage::Fragment => lang.t("watch-picture-any-expression-of-your-fragment"),
+                Stage::Vertex => lang.t("watch-picture-any-expression-of-your-vertex"),
             });
-        let field = ui.add(
-            egui::TextEdit::singleline(&mut panel.expression)
-                .id_salt("watch expression")
-                .code_editor()
-                // One line: Tab moves on to the next control, as in every field (the
-                // code editor's lock would trap the keyboard here, WCAG 2.1.2).
-                .lock_focus(false)
-                .desired_width(220.0)
-                .hint_text(lang.tr("e.g. dot(n, l) < 0.0", "例如 dot(n, l) < 0.0")),
-        )
-        .labelled_by(label.id);
-        let after = ui.label(lang.tr("after line", "在此行之后："));
+        let field = ui
+            .add(
+                egui::TextEdit::singleline(&mut panel.expression)
+                    .id_salt("watch expression")
+                    .code_editor()
+                    // One line: Tab moves on to the next control, as in every field (the
+                    // code editor's lock would trap the keyboard here, WCAG 2.1.2).
+                    .lock_focus(false)
+                    .desired_width(220.0)
+                    .hint_text(lang.t("watch-picture-e-g-dot-n-l")),
+            )
+            .labelled_by(label.id);
+        let after = ui.label(lang.t("watch-picture-after-line"));
         ui.add(egui::DragValue::new(&mut panel.line).range(1..=9999))
             .labelled_by(after.id);
         if let Some(line) = step_line
             && ui
-                .small_button(lang.tr("the step's", "当前步的行"))
-                .on_hover_text(lang.tr("Watch after the line of the debugger's step.", "在调试器当前步所在行之后监视。"))
+                .small_button(lang.t("watch-picture-the-step-s"))
+                .on_hover_text(lang.t("watch-picture-watch-after-the-line-of"))
                 .clicked()
         {
             panel.line = line;
         }
         let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
-        if ui.button(lang.tr("Show", "显示")).clicked() || entered {
+        if ui.button(lang.t("watch-picture-show")).clicked() || entered {
             asked.command = show(panel, session, stage);
         }
-        if any && ui.button(lang.tr("Stop", "停止")).clicked() {
+        if any && ui.button(lang.t("watch-picture-stop")).clicked() {
             asked.command = Some(Command::Selection(SelectionCommand::SetWatch(None)));
         }
     });
@@ -147,12 +142,9 @@ pub fn cost(ui: &mut Ui, panel: &mut WatchPanel, session: &Session) -> Option<Co
     if ui
         .checkbox(
             &mut on,
-            RichText::new(lang.tr("Cost: the steps each fragment ran", "开销：每个片元执行的步数")).strong(),
+            RichText::new(lang.t("watch-picture-cost-the-steps-each-fragment")).strong(),
         )
-        .on_hover_text(lang.tr(
-            "At each pixel, how many steps of your fragment shader its fragment ran (the steps the debugger steps through: writes, branches, loop tests and iterations, calls, returns): a loop that runs longer or a branch with more work shows brighter. Dark blue the fewest, yellow the most.",
-            "每个像素上，它的片元执行了片元着色器的多少步（调试器逐步执行的那些步：赋值、分支、循环判断与迭代、调用、返回）：循环次数多或分支工作多的地方更亮。深蓝最少，黄色最多。",
-        ))
+        .on_hover_text(lang.t("watch-picture-at-each-pixel-how-many"))
         .changed()
     {
         asked.command = Some(Command::Selection(SelectionCommand::SetCost(on)));
@@ -185,7 +177,7 @@ fn show(panel: &mut WatchPanel, session: &Session, stage: Stage) -> Option<Comma
             Some(Command::Selection(SelectionCommand::SetWatch(Some(watch))))
         }
         Err(e) => {
-            panel.error = Some(format!("{} {e}", lang.tr("Cannot watch:", "无法监视：")));
+            panel.error = Some(format!("{} {e}", lang.t("watch-picture-cannot-watch")));
             None
         }
     }
@@ -202,15 +194,9 @@ fn shown(
 ) {
     let Some(kind) = picture.kind else {
         ui.label(if picture.from_vertex {
-            lang.tr(
-                "No triangle of this frame has all three corners through that line.",
-                "此帧没有哪个三角形的三个顶点都执行了该行。",
-            )
+            lang.t("watch-picture-no-triangle-of-this-frame")
         } else {
-            lang.tr(
-                "No fragment of this frame ran that line.",
-                "此帧没有片元执行该行。",
-            )
+            lang.t("watch-picture-no-fragment-of-this-frame")
         });
         return;
     };
@@ -246,23 +232,16 @@ fn shown(
     let y = picture.height().saturating_sub(row + 1);
     let cost = picture.line == 0;
     let said = match picture.at(x, y) {
-        Some(v) if cost => format!("{} {}", num(v[0]), lang.tr("steps", "步")),
+        Some(v) if cost => format!("{} {}", num(v[0]), lang.t("watch-picture-steps")),
         Some(v) => value_words(kind, v),
-        None if cost => lang
-            .tr("no fragment of yours here", "这里没有你的片元")
-            .to_owned(),
-        None if picture.from_vertex => lang
-            .tr(
-                "a corner of the triangle here did not run the line",
-                "这里三角形有顶点没有执行该行",
-            )
-            .to_owned(),
-        None => lang
-            .tr("the line did not run here", "这里没有执行该行")
-            .to_owned(),
+        None if cost => lang.t("watch-picture-no-fragment-of-yours-here").to_owned(),
+        None if picture.from_vertex => lang.t("watch-picture-a-corner-of-the-triangle").to_owned(),
+        None => lang.t("watch-picture-the-line-did-not-run").to_owned(),
     };
-    let response =
-        response.on_hover_text(format!("{} ({x}, {y}): {said}", lang.tr("pixel", "像素")));
+    let response = response.on_hover_text(format!(
+        "{} ({x}, {y}): {said}",
+        lang.t("watch-picture-pixel")
+    ));
     if response.clicked() {
         asked.command = Some(Command::Selection(SelectionCommand::SelectPixel(Some((
             x, y,
@@ -273,15 +252,12 @@ fn shown(
 /// Where the picture's expression is read: after which line of which shader.
 fn place_words(picture: &WatchPicture, lang: Lang) -> String {
     if picture.from_vertex {
-        lang.tr_owned(
-            &format!(
-                "after line {} of the vertex shader, interpolated",
-                picture.line
-            ),
-            &format!("顶点着色器第 {} 行之后，经插值", picture.line),
+        lang.t_with(
+            "watch-picture-after-vertex-line",
+            &[("line", &picture.line)],
         )
     } else {
-        format!("{} {}", lang.tr("after line", "在行"), picture.line)
+        format!("{} {}", lang.t("watch-picture-after-line-2"), picture.line)
     }
 }
 
@@ -329,7 +305,7 @@ fn legend(
             ui.selectable_value(
                 &mut panel.view,
                 WatchView::Value,
-                lang.tr("as colour", "显示为颜色"),
+                lang.t("watch-picture-as-colour"),
             );
             for (c, name) in ["x", "y", "z", "w"]
                 .iter()
@@ -343,26 +319,29 @@ fn legend(
     ui.horizontal_wrapped(|ui| {
         match (kind, range) {
             (WatchKind::Bool, _) => {
-                let holds = picture.values.iter().flatten().filter(|v| v[0] != 0.0).count();
+                let holds = picture
+                    .values
+                    .iter()
+                    .flatten()
+                    .filter(|v| v[0] != 0.0)
+                    .count();
                 swatch(ui, ramp(1.0));
-                ui.label(format!("{} ({holds})", lang.tr("true", "成立")));
+                ui.label(format!("{} ({holds})", lang.t("watch-picture-true")));
                 swatch(ui, ramp(0.0));
                 ui.label(format!(
                     "{} ({})",
-                    lang.tr("false", "不成立"),
+                    lang.t("watch-picture-false"),
                     picture.pixels_run() - holds
                 ));
                 if let Some(first) = picture.first_where()
                     && ui
-                        .button(lang.tr("First where it holds ▶", "第一个成立之处 ▶"))
-                        .on_hover_text(lang.tr(
-                            "Inspects the first pixel where it holds, reading the picture from the top, and shows its run at the watched line: a breakpoint with a condition, over the whole frame.",
-                            "检查从画面顶部读起第一个条件成立的像素，并在被监视的行显示它的运行过程：在整帧上的条件断点。",
-                        ))
+                        .button(lang.t("watch-picture-first-where-it-holds"))
+                        .on_hover_text(lang.t("watch-picture-inspects-the-first-pixel-where"))
                         .clicked()
                 {
-                    asked.command =
-                        Some(Command::Selection(SelectionCommand::SelectPixel(Some(first))));
+                    asked.command = Some(Command::Selection(SelectionCommand::SelectPixel(Some(
+                        first,
+                    ))));
                     // A fragment's run has no vertex line to show.
                     asked.show_line = (!picture.from_vertex).then_some(picture.line);
                 }
@@ -377,13 +356,10 @@ fn legend(
                 ui.label(num(hi));
             }
             _ => {
-                ui.label(lang.tr(
-                    "x → red, y → green, z → blue, each clamped to [0, 1]",
-                    "x → 红，y → 绿，z → 蓝，各自截取到 [0, 1]",
-                ));
+                ui.label(lang.t("watch-picture-x-red-y-green-z"));
             }
         }
         swatch(ui, [68, 68, 68, 255]);
-        ui.label(lang.tr("not run", "未执行"));
+        ui.label(lang.t("watch-picture-not-run"));
     });
 }

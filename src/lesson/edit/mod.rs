@@ -439,8 +439,8 @@ impl Draft {
         } else {
             *self.now.ids.get(at).ok_or_else(|| no_step(at))?
         };
-        let key = if lang == Lang::En { "en" } else { "zh" };
-        let other = if lang == Lang::En { "zh" } else { "en" };
+        let key = if lang == Lang::EN { "en" } else { "zh" };
+        let other = if lang == Lang::EN { "zh" } else { "en" };
         self.change(Some((id, which, lang)), |doc, _| {
             let t = if which.of_lesson() {
                 doc.get_mut("lesson")

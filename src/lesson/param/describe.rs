@@ -44,26 +44,28 @@ pub fn describe(spec: &SceneSpec, name: &str, lang: crate::vocabulary::Lang) -> 
             // A humanoid's joint, "left_upper_leg": in words as the panel's slider says it
             // ("left upper leg"); in Chinese its part's name (左大腿), found by the key.
             other => {
-                return match lang {
-                    crate::vocabulary::Lang::En => other.replace('_', " "),
-                    crate::vocabulary::Lang::Zh => other.to_owned(),
+                return match lang.written() {
+                    crate::vocabulary::Written::English => other.replace('_', " "),
+                    crate::vocabulary::Written::Chinese => other.to_owned(),
                 };
             }
         };
-        match lang {
+        match lang.written() {
             // As the panel's slider says it.
-            crate::vocabulary::Lang::En if w == "shininess" => "shininess p".to_owned(),
-            crate::vocabulary::Lang::En => w.replace('_', " "),
-            crate::vocabulary::Lang::Zh => zh.to_owned(),
+            crate::vocabulary::Written::English if w == "shininess" => "shininess p".to_owned(),
+            crate::vocabulary::Written::English => w.replace('_', " "),
+            crate::vocabulary::Written::Chinese => zh.to_owned(),
         }
     };
     // "B of A" in English, "A的B" in Chinese (a space before a Latin word: "投影的 fovy").
-    let of = |whole: &str, part: &str| match lang {
-        crate::vocabulary::Lang::En => format!("{part} of {whole}"),
-        crate::vocabulary::Lang::Zh if part.starts_with(|c: char| c.is_ascii_alphanumeric()) => {
+    let of = |whole: &str, part: &str| match lang.written() {
+        crate::vocabulary::Written::English => format!("{part} of {whole}"),
+        crate::vocabulary::Written::Chinese
+            if part.starts_with(|c: char| c.is_ascii_alphanumeric()) =>
+        {
             format!("{whole}的 {part}")
         }
-        crate::vocabulary::Lang::Zh => format!("{whole}的{part}"),
+        crate::vocabulary::Written::Chinese => format!("{whole}的{part}"),
     };
     let parts: Vec<&str> = name.split('.').collect();
     match parts.as_slice() {
@@ -82,15 +84,15 @@ pub fn describe(spec: &SceneSpec, name: &str, lang: crate::vocabulary::Lang) -> 
                     ))
                 })
                 .unwrap_or_else(|| format!("{} {k}", word("lights")));
-            match lang {
-                crate::vocabulary::Lang::En => format!("{light} {}", word(p)),
-                crate::vocabulary::Lang::Zh => format!("{light} 的{}", word(p)),
+            match lang.written() {
+                crate::vocabulary::Written::English => format!("{light} {}", word(p)),
+                crate::vocabulary::Written::Chinese => format!("{light} 的{}", word(p)),
             }
         }
         ["uniforms", u] => format!("uniform {u}"),
-        [group, p] => match lang {
-            crate::vocabulary::Lang::En => format!("{} {}", word(group), word(p)),
-            crate::vocabulary::Lang::Zh => of(&word(group), &word(p)),
+        [group, p] => match lang.written() {
+            crate::vocabulary::Written::English => format!("{} {}", word(group), word(p)),
+            crate::vocabulary::Written::Chinese => of(&word(group), &word(p)),
         },
         _ => name.to_owned(),
     }
@@ -136,8 +138,8 @@ mod tests {
     #[test]
     fn a_parameter_is_named_as_the_panel_names_it() {
         let s = spec();
-        let en = |n: &str| describe(&s, n, Lang::En);
-        let zh = |n: &str| describe(&s, n, Lang::Zh);
+        let en = |n: &str| describe(&s, n, Lang::EN);
+        let zh = |n: &str| describe(&s, n, Lang::ZH);
         assert_eq!(en("objects.sphere.shininess"), "shininess p of sphere");
         assert_eq!(en("lights.1.position"), "point light 1 position");
         assert_eq!(en("lights.key.position"), "point light 1 position");

@@ -289,7 +289,7 @@ impl Checker<'_> {
         let r = s.get_ref();
         let stages: Vec<(String, Stage)> = Stage::ALL
             .into_iter()
-            .map(|st| (st.name(Lang::En).to_lowercase(), st))
+            .map(|st| (st.name(Lang::EN).to_lowercase(), st))
             .collect();
         let stage_options: Vec<(&str, Stage)> =
             stages.iter().map(|(n, st)| (n.as_str(), *st)).collect();

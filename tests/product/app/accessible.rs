@@ -49,7 +49,7 @@ fn open_everything(h: &mut egui_kittest::Harness<'_, pipelens::app::PipelensApp>
 fn every_control_has_a_name() {
     let mut missing = Vec::new();
     let mut named = 0;
-    for lang in [Lang::En, Lang::Zh] {
+    for lang in [Lang::EN, Lang::ZH] {
         let mut h = super::harness();
         open_everything(&mut h, lang);
         h.run();
@@ -62,7 +62,7 @@ fn every_control_has_a_name() {
                 .query_all(by().predicate(|n: &NodeRef| n.label().is_some()))
                 .count();
             for n in unnamed(&h) {
-                missing.push(format!("{lang:?} {}: {n}", stage.name(Lang::En)));
+                missing.push(format!("{lang:?} {}: {n}", stage.name(Lang::EN)));
             }
         }
         for id in ["24-shader-programs", "25-lab-model-projection"] {
@@ -243,7 +243,7 @@ fn a_page_keeps_the_step_its_pictures_and_the_verdict_in_words() {
         words.get(Part::Verdict)
     );
     // In Chinese.
-    h.state_mut().session.lang = Lang::Zh;
+    h.state_mut().session.lang = Lang::ZH;
     h.run_steps(6);
     let words = alt::page_words(&h.ctx).expect("kept");
     assert_eq!(words.get(Part::Title), "8. 实验：在片元着色器中写出高光项");

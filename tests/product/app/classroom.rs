@@ -38,7 +38,7 @@ fn the_classroom_card_fits_its_question_and_answer_button_at_1366() {
             let title = format!(
                 "{}. {}",
                 k + 1,
-                step.title.get(pipelens::vocabulary::Lang::En)
+                step.title.get(pipelens::vocabulary::Lang::EN)
             );
             let has_answer = step.answer.is_some();
             // The title wraps beside the fold button, never under it (lesson 17's "The
@@ -78,8 +78,8 @@ fn the_code_and_the_picture_share_a_1366_projector() {
     let screen = egui::Rect::from_min_size(egui::pos2(8.0, 8.0), egui::vec2(1366.0, 768.0));
     let mut small = Vec::new();
     for lang in [
-        pipelens::vocabulary::Lang::En,
-        pipelens::vocabulary::Lang::Zh,
+        pipelens::vocabulary::Lang::EN,
+        pipelens::vocabulary::Lang::ZH,
     ] {
         // The harness keeps 8 points around the app: 1366×768 inside.
         let mut h = super::sized_lesson_harness(&path, [1382.0, 784.0]);

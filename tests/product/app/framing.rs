@@ -19,9 +19,9 @@ fn the_narration_and_the_overlays_leave_the_subject_clear() {
     let mut small = Vec::new();
     let mut checked = (0, 0);
     for (size, classroom, lang) in [
-        ([1920.0, 1080.0], false, Lang::Zh),
-        ([1366.0, 768.0], true, Lang::En),
-        ([1920.0, 1080.0], true, Lang::Zh),
+        ([1920.0, 1080.0], false, Lang::ZH),
+        ([1366.0, 768.0], true, Lang::EN),
+        ([1920.0, 1080.0], true, Lang::ZH),
     ] {
         for path in crate::support::lesson_files() {
             let mut h = super::sized_lesson_harness(&path, size);

@@ -158,7 +158,7 @@ fn in_language(
 fn the_shader_panel_opens_on_the_stage_the_step_is_about() {
     use egui_kittest::kittest::Queryable;
     let path = crate::support::repo().join("lessons/24-shader-programs.toml");
-    for lang in [Lang::En, Lang::Zh] {
+    for lang in [Lang::EN, Lang::ZH] {
         let mut h = in_language(&path, lang);
         for (title, shown) in [
             (
@@ -192,7 +192,7 @@ fn the_shader_panel_opens_on_the_stage_the_step_is_about() {
 fn a_lab_s_starter_reads_in_chinese_and_is_still_the_starter() {
     use egui_kittest::kittest::Queryable;
     let path = crate::support::repo().join("lessons/24-shader-programs.toml");
-    let mut h = in_language(&path, Lang::Zh);
+    let mut h = in_language(&path, Lang::ZH);
     crate::app::go_to_step_titled(&mut h, "Lab: Gouraud shading in the vertex shader");
     h.run_steps(4);
     let source = h
@@ -213,7 +213,7 @@ fn a_lab_s_starter_reads_in_chinese_and_is_still_the_starter() {
     let hand_in = |text: &str| {
         let mut code = pipelens::lab::submission::Code::default();
         code.take("shader.vert", text.to_owned());
-        pipelens::lab::submission::grade(&lesson, k, &code, Lang::En).sentences
+        pipelens::lab::submission::grade(&lesson, k, &code, Lang::EN).sentences
     };
     let english = lesson.steps[k]
         .exercise

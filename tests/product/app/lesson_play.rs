@@ -86,7 +86,7 @@ fn every_lesson_step_draws_in_both_languages() {
             .lesson
             .as_ref()
             .map_or(0, |p| p.lesson.steps.len());
-        for lang in [Lang::En, Lang::Zh] {
+        for lang in [Lang::EN, Lang::ZH] {
             h.state_mut()
                 .session
                 .apply(pipelens::app::session::Command::View(

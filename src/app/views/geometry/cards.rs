@@ -48,14 +48,14 @@ impl Legend {
             .zip(shown.fates)
             .enumerate()
             .filter(|(_, (_, drawn))| *drawn)
-            .map(|(k, ((color, en, zh), _))| (*color, lang.tr(en, zh), shown.dashed.then_some(k)))
+            .map(|(k, ((color, name), _))| (*color, lang.t(name), shown.dashed.then_some(k)))
             .collect();
         if shown.volume {
-            items.push((palette::NEAR, lang.tr("near plane", "近平面"), None));
-            items.push((palette::FAR, lang.tr("far plane", "远平面"), None));
+            items.push((palette::NEAR, lang.t("cards-near-plane"), None));
+            items.push((palette::FAR, lang.t("cards-far-plane"), None));
         }
         if shown.lights {
-            items.push((palette::LIGHT, lang.tr("light", "光源"), None));
+            items.push((palette::LIGHT, lang.t("cards-light"), None));
         }
         let font = picture_font(painter.ctx(), 14.0);
         let item_w = items
@@ -67,7 +67,7 @@ impl Legend {
             .fold(0.0f32, f32::max)
             + 40.0 * picture_scale(painter.ctx());
         let note = (stride > 1 && !items.is_empty())
-            .then(|| format!("{} 1/{stride}", lang.tr("showing triangles", "显示三角形")));
+            .then(|| format!("{} 1/{stride}", lang.t("cards-showing-triangles")));
         Self {
             items,
             item_w,

@@ -245,7 +245,7 @@ impl GeometryView {
             self.reset_for = Some(session.step_entered);
         }
         let (rect, response) = super::picture_keys::allocate_rest(ui, "geometry view");
-        let view = lang.tr("geometry view", "几何视图");
+        let view = lang.t("geometry-geometry-view");
         super::alt::name_picture(&response, view, (session, capture, session.selection.stage));
         self.picture = Some(rect);
         self.subject = None;
@@ -268,7 +268,7 @@ impl GeometryView {
             painter.text(
                 rect.center(),
                 Align2::CENTER_CENTER,
-                lang.tr("nothing to show in this space", "此空间中没有可显示的顶点"),
+                lang.t("geometry-nothing-to-show-in-this"),
                 picture_font(painter.ctx(), 18.0),
                 Color32::GRAY,
             );
@@ -386,12 +386,12 @@ impl GeometryView {
         );
         let row = ui.scope_builder(egui::UiBuilder::new().max_rect(buttons), |ui| {
             ui.horizontal_wrapped(|ui| {
-                if ui.button(lang.tr("Front view", "正视图")).clicked() {
+                if ui.button(lang.t("geometry-front-view")).clicked() {
                     (self.yaw, self.pitch) = (0.0, 0.0);
                 }
                 if ui
-                    .button(lang.tr("Reset view", "重置视角"))
-                    .on_hover_text(lang.tr("Or double-click the picture.", "或双击画面。"))
+                    .button(lang.t("geometry-reset-view"))
+                    .on_hover_text(lang.t("geometry-or-double-click-the-picture"))
                     .clicked()
                 {
                     *self = Self {
@@ -402,11 +402,8 @@ impl GeometryView {
                 if space == Space::World {
                     let mut on = session.selection.show_normals;
                     if ui
-                        .checkbox(&mut on, lang.tr("Normals", "法线"))
-                        .on_hover_text(lang.tr(
-                            "Each vertex's normal n in world space, the one lighting uses (n_world = (M^(−1))^T·n).",
-                            "每个顶点在世界空间中的法线 n，即光照所用的法线（n_world = (M^(−1))^T·n）。",
-                        ))
+                        .checkbox(&mut on, lang.t("geometry-normals"))
+                        .on_hover_text(lang.t("geometry-each-vertex-s-normal-n"))
                         .changed()
                     {
                         cmds.push(Command::View(ViewCommand::ToggleNormals));
@@ -414,8 +411,8 @@ impl GeometryView {
                 }
                 if animated
                     && ui
-                        .button(lang.tr("▶ Replay transition", "▶ 重播变换"))
-                        .on_hover_text(lang.tr("Space", "空格键"))
+                        .button(lang.t("geometry-replay-transition"))
+                        .on_hover_text(lang.t("geometry-space"))
                         .clicked()
                 {
                     cmds.push(Command::View(ViewCommand::PlayTransition));

@@ -15,7 +15,7 @@ pub fn ui(ui: &mut Ui, session: &Session, capture: &FrameCapture) {
     let teaching = session.teaching();
     let m = &capture.matrices;
     ui.label(
-        RichText::new(lang.tr("What this stage applies", "本阶段使用的矩阵"))
+        RichText::new(lang.t("matrices-what-this-stage-applies"))
             .strong()
             .size(ui.style().text_styles[&egui::TextStyle::Body].size * 1.05),
     );
@@ -31,17 +31,11 @@ pub fn ui(ui: &mut Ui, session: &Session, capture: &FrameCapture) {
         Teaching::Projection => projection(ui, capture, lang, true),
         _ => {
             matrix(ui, &m.viewport, lang, "focused-viewport", true);
-            typeset::note(
-                ui,
-                lang.tr(
-                    "GAMES101's M_viewport maps x and y the same way and leaves z unchanged; OpenGL (and pipelens) also maps z from [−1, 1] to z_w ∈ [0, 1]. (The notes label this matrix M_{persp→ortho} by mistake.)",
-                    "GAMES101 的 M_viewport 对 x、y 的变换相同而 z 保持不变；OpenGL（以及 pipelens）还把 z 从 [−1, 1] 映射到 z_w ∈ [0, 1]。（笔记中把该矩阵误标为 M_{persp→ortho}。）",
-                ),
-            );
+            typeset::note(ui, lang.t("matrices-games101-s-m-viewport-maps"));
         }
     }
     ui.add_space(8.0);
-    egui::CollapsingHeader::new(RichText::new(lang.tr("Other matrices", "其他矩阵")).strong())
+    egui::CollapsingHeader::new(RichText::new(lang.t("matrices-other-matrices")).strong())
         .id_salt("other-matrices")
         .show(ui, |ui| {
             for (i, model) in m.models.iter().enumerate() {
@@ -75,7 +69,7 @@ fn object_caption(ui: &mut Ui, session: &Session, capture: &FrameCapture, k: usi
         ui.label(
             RichText::new(format!(
                 "{}: {}",
-                session.lang.tr("object", "物体"),
+                session.lang.t("matrices-object"),
                 session.spec.label(&o.name, session.lang)
             ))
             .strong(),
@@ -88,26 +82,14 @@ fn projection(ui: &mut Ui, capture: &FrameCapture, lang: Lang, open: bool) {
     let m = &capture.matrices;
     matrix(ui, &m.projection, lang, "projection", open);
     ui.add_space(6.0);
-    typeset::note(
-        ui,
-        lang.tr(
-            "The same projection in GAMES101's terms (n = −near, f = −far):",
-            "GAMES101 记法下的同一投影（n = −near，f = −far）：",
-        ),
-    );
+    typeset::note(ui, lang.t("matrices-the-same-projection-in-games101"));
     matrix(ui, &m.projection_games101, lang, "games101", open);
     typeset::note(
         ui,
         if capture.projection.is_perspective() {
-            lang.tr(
-                "M_ortho·M_{persp→ortho} = −Z·P with Z = diag(1, 1, −1, 1): the same x, y after the division; NDC z mirrored (near → +1).",
-                "M_ortho·M_{persp→ortho} = −Z·P，Z = diag(1, 1, −1, 1)：除法后 x、y 相同；NDC 的 z 取反（近平面 → +1）。",
-            )
+            lang.t("matrices-m-ortho-m-persp-ortho")
         } else {
-            lang.tr(
-                "M_ortho = Z·Ortho with Z = diag(1, 1, −1, 1): NDC z mirrored (near → +1).",
-                "M_ortho = Z·Ortho，Z = diag(1, 1, −1, 1)：NDC 的 z 取反（近平面 → +1）。",
-            )
+            lang.t("matrices-m-ortho-z-ortho-with")
         },
     );
 }
@@ -115,9 +97,7 @@ fn projection(ui: &mut Ui, capture: &FrameCapture, lang: Lang, open: bool) {
 /// The figures' traversal as the matrix stack sees it: push, visit with the composite, pop.
 fn hierarchy(ui: &mut Ui, session: &Session, capture: &FrameCapture, lang: Lang) {
     use pipeline::hierarchy::Step;
-    ui.label(
-        RichText::new(lang.tr("Matrix stack, depth-first", "矩阵栈（深度优先遍历）")).strong(),
-    );
+    ui.label(RichText::new(lang.t("matrices-matrix-stack-depth-first")).strong());
     let focus = session.selection.focus.as_deref().unwrap_or_default();
     let size = ui.style().text_styles[&egui::TextStyle::Body].size;
     for (i, step) in capture.hierarchy.iter().enumerate() {

@@ -28,9 +28,9 @@ pub fn ui(
     let mut cmds = Vec::new();
     ui.horizontal(|ui| {
         let tab = &mut inspector.tab;
-        ui.selectable_value(tab, Tab::Matrices, lang.tr("Matrices", "矩阵"));
-        ui.selectable_value(tab, Tab::Vertices, lang.tr("Vertices", "顶点表"));
-        ui.selectable_value(tab, Tab::Pixel, lang.tr("Pixel", "像素"));
+        ui.selectable_value(tab, Tab::Matrices, lang.t("inspector-matrices"));
+        ui.selectable_value(tab, Tab::Vertices, lang.t("inspector-vertices"));
+        ui.selectable_value(tab, Tab::Pixel, lang.t("inspector-pixel"));
     });
     ui.separator();
     match inspector.tab {

@@ -14,25 +14,18 @@ pub fn ui(ui: &mut Ui, session: &Session, capture: &FrameCapture, record: Option
     let lang = session.lang;
     let style = Style::body(ui);
     let Some(record) = record else {
-        typeset::paragraph(
-            ui,
-            lang.tr(
-                "Click a pixel in a pixel view (Rasterization, Depth, Shading, Texturing, Output) to see every fragment that reached it and how its colour was made.",
-                "在像素视图（光栅化、深度、着色、纹理、输出）中单击一个像素，查看到达它的每个片元以及它的颜色是如何得到的。",
-            ),
-            &style,
-        );
+        typeset::paragraph(ui, lang.t("pixel-click-a-pixel-in-a"), &style);
         return;
     };
     let (x, y) = (record.x, record.y);
     let s = capture.settings.samples.count();
-    ui.heading(format!("{} ({x}, {y})", lang.tr("Pixel", "像素")));
+    ui.heading(format!("{} ({x}, {y})", lang.t("pixel-pixel")));
     if let Some(e) = &record.explanation {
         ui.label(
             RichText::new(format!(
                 "{} · {} {}",
                 session.spec.label(&e.object, lang),
-                lang.tr("triangle", "三角形"),
+                lang.t("pixel-triangle"),
                 e.primitive
             ))
             .strong(),
@@ -42,11 +35,11 @@ pub fn ui(ui: &mut Ui, session: &Session, capture: &FrameCapture, record: Option
         ui,
         &format!(
             "{}: {}/{s} · {}: z_w = {} · {}: ({}, {}, {})",
-            lang.tr("coverage", "覆盖"),
+            lang.t("pixel-coverage"),
             record.coverage,
-            lang.tr("depth (mean of samples)", "深度（采样平均）"),
+            lang.t("pixel-depth-mean-of-samples"),
             num(record.depth),
-            lang.tr("colour", "颜色"),
+            lang.t("pixel-colour"),
             num(record.color[0]),
             num(record.color[1]),
             num(record.color[2])
@@ -59,33 +52,18 @@ pub fn ui(ui: &mut Ui, session: &Session, capture: &FrameCapture, record: Option
         // still tells how the fragment got here, and what pipelens' own shading would give.
         super::shader_trace::ui(ui, capture, lang);
         ui.separator();
-        ui.label(
-            RichText::new(lang.tr(
-                "How the fragment got here (and what pipelens' own shading would make of it):",
-                "片元如何到达这里（以及 pipelens 自带着色会得到什么）：",
-            ))
-            .italics(),
-        );
+        ui.label(RichText::new(lang.t("pixel-how-the-fragment-got-here")).italics());
     }
     match &record.explanation {
         Some(e) => explanation(ui, e, lang),
         None => {
-            ui.label(lang.tr(
-                "No fragment owns this pixel: it keeps the background.",
-                "没有片元拥有此像素：它保持背景色。",
-            ));
+            ui.label(lang.t("pixel-no-fragment-owns-this-pixel"));
         }
     }
     ui.separator();
-    ui.label(
-        RichText::new(lang.tr(
-            "Every fragment that reached the pixel",
-            "到达此像素的每个片元",
-        ))
-        .strong(),
-    );
+    ui.label(RichText::new(lang.t("pixel-every-fragment-that-reached-the")).strong());
     if record.fragments.is_empty() {
-        ui.label(lang.tr("None.", "没有。"));
+        ui.label(lang.t("pixel-none"));
     }
     for (k, f) in record.fragments.iter().enumerate() {
         fragment(ui, k, f, session, capture, lang);
@@ -99,15 +77,9 @@ pub fn ui(ui: &mut Ui, session: &Session, capture: &FrameCapture, record: Option
             .hook(pipeline::shader::HookKind::Inside)
             .is_some();
         ui.label(if student_inside {
-            lang.tr(
-                "Your inside() covers none of these fragments' samples (the samples above are pipelens' own edge test's).",
-                "你的 inside() 没有覆盖这些片元的任何采样点（上面的采样点是 pipelens 自己的边测试给出的）。",
-            )
+            lang.t("pixel-your-inside-covers-none-of")
         } else {
-            lang.tr(
-                "Every fragment failed the depth test.",
-                "所有片元都未通过深度测试。",
-            )
+            lang.t("pixel-every-fragment-failed-the-depth")
         });
     }
 }
@@ -128,45 +100,43 @@ fn explanation(ui: &mut Ui, e: &PixelExplanation, lang: Lang) {
         ..style
     };
     let numbers_style = style.sized(style.size * 0.92);
-    egui::CollapsingHeader::new(
-        RichText::new(lang.tr("Explain this pixel", "解释这个像素")).strong(),
-    )
-    .id_salt("explain")
-    .default_open(true)
-    .show(ui, |ui| {
-        let mut section = None;
-        for line in &e.lines {
-            if section != Some(line.section) {
-                section = Some(line.section);
-                ui.add_space(4.0);
-                ui.label(RichText::new(section_name(line.section, lang)).strong());
+    egui::CollapsingHeader::new(RichText::new(lang.t("pixel-explain-this-pixel")).strong())
+        .id_salt("explain")
+        .default_open(true)
+        .show(ui, |ui| {
+            let mut section = None;
+            for line in &e.lines {
+                if section != Some(line.section) {
+                    section = Some(line.section);
+                    ui.add_space(4.0);
+                    ui.label(RichText::new(section_name(line.section, lang)).strong());
+                }
+                ui.indent(("line", line.formula.as_str()), |ui| {
+                    typeset::paragraph(ui, &format!("**{}**", line.formula), &formula_style);
+                    let mut rest = String::new();
+                    if !line.numbers.is_empty() {
+                        rest.push_str(&format!("= {}", line.numbers));
+                    }
+                    if !line.result.is_empty() {
+                        rest.push_str(&format!(
+                            "{}= **{}**",
+                            if rest.is_empty() { "" } else { " " },
+                            line.result
+                        ));
+                    }
+                    if !rest.is_empty() {
+                        typeset::paragraph(ui, &rest, &numbers_style);
+                    }
+                    for r in &line.remarks {
+                        typeset::paragraph(
+                            ui,
+                            &remark(r, lang),
+                            &numbers_style.sized(style.size * 0.85),
+                        );
+                    }
+                });
             }
-            ui.indent(("line", line.formula.as_str()), |ui| {
-                typeset::paragraph(ui, &format!("**{}**", line.formula), &formula_style);
-                let mut rest = String::new();
-                if !line.numbers.is_empty() {
-                    rest.push_str(&format!("= {}", line.numbers));
-                }
-                if !line.result.is_empty() {
-                    rest.push_str(&format!(
-                        "{}= **{}**",
-                        if rest.is_empty() { "" } else { " " },
-                        line.result
-                    ));
-                }
-                if !rest.is_empty() {
-                    typeset::paragraph(ui, &rest, &numbers_style);
-                }
-                for r in &line.remarks {
-                    typeset::paragraph(
-                        ui,
-                        &remark(r, lang),
-                        &numbers_style.sized(style.size * 0.85),
-                    );
-                }
-            });
-        }
-    });
+        });
 }
 
 /// One fragment: its triangle, its edge functions at the centre, its samples' inside and depth
@@ -187,12 +157,12 @@ fn fragment(
         .unwrap_or_default();
     let title = format!(
         "{} {} · {object} · {} {}{}",
-        lang.tr("fragment", "片元"),
+        lang.t("pixel-fragment"),
         k + 1,
-        lang.tr("triangle", "三角形"),
+        lang.t("pixel-triangle"),
         f.primitive,
         if f.visible {
-            lang.tr("  √ visible", "  √ 可见")
+            lang.t("pixel-visible")
         } else {
             ""
         }
@@ -203,10 +173,7 @@ fn fragment(
         .default_open(k < 3)
         .show(ui, |ui| {
             if prim.fate == Fate::Clipped {
-                ui.label(lang.tr(
-                    "(a piece of a clipped triangle)",
-                    "（被裁剪三角形的一部分）",
-                ));
+                ui.label(lang.t("pixel-a-piece-of-a-clipped"));
             }
             let e = &f.edges;
             typeset::paragraph(
@@ -223,7 +190,7 @@ fn fragment(
                 &style,
             );
             ui.horizontal_wrapped(|ui| {
-                ui.label(lang.tr("samples:", "采样点："));
+                ui.label(lang.t("pixel-samples"));
                 for (si, outcome) in f.samples.iter().enumerate() {
                     let (text, color) = match outcome {
                         None => ("·", Color32::GRAY),
@@ -240,18 +207,15 @@ fn fragment(
                         .monospace(),
                     )
                     .on_hover_text(match (outcome, f.sample_depths[si]) {
-                        (None, _) => lang.tr("not covered", "未覆盖").to_owned(),
+                        (None, _) => lang.t("pixel-not-covered").to_owned(),
                         (Some(true), Some(z)) => format!(
                             "{} z = {}",
-                            lang.tr("covered, passed the depth test:", "被覆盖，通过深度测试："),
+                            lang.t("pixel-covered-passed-the-depth-test"),
                             num(z)
                         ),
                         (Some(false), Some(z)) => format!(
                             "{} z = {}",
-                            lang.tr(
-                                "covered, failed the depth test:",
-                                "被覆盖，未通过深度测试："
-                            ),
+                            lang.t("pixel-covered-failed-the-depth-test"),
                             num(z)
                         ),
                         _ => String::new(),
@@ -259,10 +223,7 @@ fn fragment(
                 }
             });
             if e.samples.iter().any(|q| !q.on_edges.is_empty()) {
-                ui.label(lang.tr(
-                    "* on an edge: the top-left rule decided",
-                    "* 在边上：由左上填充规则决定",
-                ));
+                ui.label(lang.t("pixel-on-an-edge-the-top"));
             }
             let b = f.bary_perspective;
             typeset::paragraph(

@@ -41,71 +41,56 @@ fn axis_forms(ui: &mut Ui, session: &Session, k: usize) {
     let theta = degrees.to_radians();
     let style = crate::app::views::typeset::Style::body(ui);
     ui.add_space(6.0);
-    egui::CollapsingHeader::new(
-        RichText::new(lang.tr(
-            "The same rotation R(n, θ), two more ways",
-            "同一个旋转 R(n, θ) 的另外两种算法",
-        ))
-        .strong(),
-    )
-    .id_salt("axis-rotation-forms")
-    .default_open(true)
-    .show(ui, |ui| {
-        typeset::formula(
-            ui,
-            "R(n, θ) = cos θ·I + (1 − cos θ)·n·n^T + sin θ·N",
-            &style,
-        );
-        typeset::note(
-            ui,
-            &format!(
-                "{} n = ({:.3}, {:.3}, {:.3}), θ = {degrees:.1}°",
-                lang.tr(
-                    "Rodrigues' formula, N the cross-product matrix of n:",
-                    "Rodrigues 公式，N 是 n 的叉乘矩阵："
+    egui::CollapsingHeader::new(RichText::new(lang.t("rotation-the-same-rotation-r-n")).strong())
+        .id_salt("axis-rotation-forms")
+        .default_open(true)
+        .show(ui, |ui| {
+            typeset::formula(
+                ui,
+                "R(n, θ) = cos θ·I + (1 − cos θ)·n·n^T + sin θ·N",
+                &style,
+            );
+            typeset::note(
+                ui,
+                &format!(
+                    "{} n = ({:.3}, {:.3}, {:.3}), θ = {degrees:.1}°",
+                    lang.t("rotation-rodrigues-formula-n-the-cross"),
+                    n.x,
+                    n.y,
+                    n.z
                 ),
-                n.x,
-                n.y,
-                n.z
-            ),
-        );
-        if let Ok(r) = pipeline::transform::rotate_axis_rodrigues(n, theta) {
-            crate::app::views::matrix_grid(ui, &r, "rodrigues");
-        }
-        ui.add_space(4.0);
-        let q = glam::Quat::from_axis_angle(n, theta);
-        typeset::formula(ui, "q = (cos(θ/2), sin(θ/2)·n), v′ = q·v·q^(−1)", &style);
-        typeset::note(
-            ui,
-            &format!(
-                "q = ({:.3}, {:.3}, {:.3}, {:.3}) {}",
-                q.w,
-                q.x,
-                q.y,
-                q.z,
-                lang.tr(
-                    "(w, x, y, z); −q is the same rotation. Its matrix:",
-                    "（w, x, y, z）；−q 表示同一个旋转。它的矩阵：",
-                )
-            ),
-        );
-        crate::app::views::matrix_grid(ui, &glam::Mat4::from_quat(q), "quaternion");
-        let half = glam::Quat::IDENTITY.slerp(q, 0.5);
-        typeset::note(
-            ui,
-            &format!(
-                "slerp(1, q, ½) = ({:.3}, {:.3}, {:.3}, {:.3}): {}",
-                half.w,
-                half.x,
-                half.y,
-                half.z,
-                lang.tr(
-                    "halfway along the shortest arc, the rotation by θ/2 about the same axis.",
-                    "沿最短弧走到一半，即绕同一轴旋转 θ/2。",
-                )
-            ),
-        );
-    });
+            );
+            if let Ok(r) = pipeline::transform::rotate_axis_rodrigues(n, theta) {
+                crate::app::views::matrix_grid(ui, &r, "rodrigues");
+            }
+            ui.add_space(4.0);
+            let q = glam::Quat::from_axis_angle(n, theta);
+            typeset::formula(ui, "q = (cos(θ/2), sin(θ/2)·n), v′ = q·v·q^(−1)", &style);
+            typeset::note(
+                ui,
+                &format!(
+                    "q = ({:.3}, {:.3}, {:.3}, {:.3}) {}",
+                    q.w,
+                    q.x,
+                    q.y,
+                    q.z,
+                    lang.t("rotation-w-x-y-z-q")
+                ),
+            );
+            crate::app::views::matrix_grid(ui, &glam::Mat4::from_quat(q), "quaternion");
+            let half = glam::Quat::IDENTITY.slerp(q, 0.5);
+            typeset::note(
+                ui,
+                &format!(
+                    "slerp(1, q, ½) = ({:.3}, {:.3}, {:.3}, {:.3}): {}",
+                    half.w,
+                    half.x,
+                    half.y,
+                    half.z,
+                    lang.t("rotation-halfway-along-the-shortest-arc")
+                ),
+            );
+        });
 }
 
 /// slerp from q₀ (the rotation about the object's axis) to q₁ (its `slerp_to`): the two
@@ -131,11 +116,7 @@ fn slerp_forms(
     let (n, angle) = q.axis_angle();
     ui.add_space(6.0);
     egui::CollapsingHeader::new(
-        RichText::new(lang.tr(
-            "Between two orientations: slerp",
-            "两个朝向之间：球面线性插值 slerp",
-        ))
-        .strong(),
+        RichText::new(lang.t("rotation-between-two-orientations-slerp")).strong(),
     )
     .id_salt("slerp-forms")
     .default_open(true)
@@ -150,7 +131,7 @@ fn slerp_forms(
             &format!(
                 "q₀ = {} ({degrees:.1}°, {})",
                 quat(&q0),
-                lang.tr("the first axis", "第一个轴"),
+                lang.t("rotation-the-first-axis"),
             ),
         );
         typeset::note(
@@ -159,15 +140,12 @@ fn slerp_forms(
                 "q₁ = {} ({:.1}°, {})",
                 quat(&q1),
                 s.angle_deg,
-                lang.tr("the second axis", "第二个轴"),
+                lang.t("rotation-the-second-axis"),
             ),
         );
         let dot = q0.dot(&q1);
         let flip = if arc.flipped {
-            lang.tr(
-                " < 0: slerp takes −q₁, the same rotation, the shorter way round",
-                " < 0：slerp 改用 −q₁，同一个旋转，走较短的一侧",
-            )
+            lang.t("rotation-0-slerp-takes-q-the")
         } else {
             ""
         };
@@ -176,7 +154,7 @@ fn slerp_forms(
             &format!(
                 "q₀·q₁ = {dot:.3}{flip}; Ω = {:.1}°, {} 2Ω = {:.1}°",
                 arc.omega.to_degrees(),
-                lang.tr("the turn from one to the other", "两个朝向之间相差的转角"),
+                lang.t("rotation-the-turn-from-one-to"),
                 2.0 * arc.omega.to_degrees()
             ),
         );
@@ -185,7 +163,7 @@ fn slerp_forms(
             &format!(
                 "t = {:.2}: {} {a:.3}, {b:.3}",
                 s.t,
-                lang.tr("weights", "权重"),
+                lang.t("rotation-weights"),
             ),
         );
         typeset::note(
@@ -193,7 +171,7 @@ fn slerp_forms(
             &format!(
                 "slerp = {} = {angle:.1}° {} ({:.3}, {:.3}, {:.3})",
                 quat(&q),
-                lang.tr("about", "绕轴"),
+                lang.t("rotation-about"),
                 n.x,
                 n.y,
                 n.z,

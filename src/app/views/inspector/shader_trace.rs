@@ -15,18 +15,9 @@ pub(super) fn ui(ui: &mut Ui, capture: &FrameCapture, lang: Lang) {
     let Some(record) = &capture.shaders else {
         return;
     };
-    ui.label(
-        RichText::new(lang.tr(
-            "Your fragment shader at this pixel",
-            "你的片元着色器在此像素",
-        ))
-        .strong(),
-    );
+    ui.label(RichText::new(lang.t("shader-trace-your-fragment-shader-at-this")).strong());
     if record.pixel.is_empty() {
-        ui.label(lang.tr(
-            "It did not run here: no triangle of an object with shaders covers this pixel.",
-            "它没有在这里运行：没有带着色器的物体的三角形覆盖此像素。",
-        ));
+        ui.label(lang.t("shader-trace-it-did-not-run-here"));
     }
     for (k, f) in record.pixel.iter().enumerate() {
         fragment(ui, k, f, lang);
@@ -37,10 +28,7 @@ pub(super) fn ui(ui: &mut Ui, capture: &FrameCapture, lang: Lang) {
             format!(
                 "{} {}",
                 record.not_finite,
-                lang.tr(
-                    "pixels of this frame came out NaN or infinite (drawn black).",
-                    "个像素的结果为 NaN 或无穷大（画成黑色）。"
-                )
+                lang.t("shader-trace-pixels-of-this-frame-came")
             ),
         );
     }
@@ -49,28 +37,23 @@ pub(super) fn ui(ui: &mut Ui, capture: &FrameCapture, lang: Lang) {
 fn fragment(ui: &mut Ui, k: usize, f: &FragmentTrace, lang: Lang) {
     let title = format!(
         "{} {} · {} {} · {} {}",
-        lang.tr("fragment", "片元"),
+        lang.t("shader-trace-fragment"),
         k + 1,
-        lang.tr("triangle", "三角形"),
+        lang.t("shader-trace-triangle"),
         f.primitive,
         f.samples,
-        lang.tr("sample(s)", "个采样"),
+        lang.t("shader-trace-sample-s"),
     );
     egui::CollapsingHeader::new(title)
         .id_salt(("shader fragment", k))
         .default_open(true)
         .show(ui, |ui| {
             ui.label(
-                RichText::new(lang.tr(
-                    "received (interpolated across the triangle)",
-                    "收到的输入（在三角形上插值）",
-                ))
-                .italics(),
+                RichText::new(lang.t("shader-trace-received-interpolated-across-the-triangle"))
+                    .italics(),
             );
             values(ui, &f.inputs);
-            ui.label(
-                RichText::new(lang.tr("ran, statement by statement", "逐条语句的执行")).italics(),
-            );
+            ui.label(RichText::new(lang.t("shader-trace-ran-statement-by-statement")).italics());
             run(ui, &f.trace, lang);
             match f.output {
                 Some(c) => {
@@ -83,10 +66,7 @@ fn fragment(ui: &mut Ui, k: usize, f: &FragmentTrace, lang: Lang) {
                     ));
                 }
                 None => {
-                    ui.label(lang.tr(
-                        "→ discarded: what lies behind shows instead.",
-                        "→ 被丢弃（discard）：显示其后方的表面。",
-                    ));
+                    ui.label(lang.t("shader-trace-discarded-what-lies-behind-shows"));
                 }
             }
         });
@@ -113,7 +93,7 @@ pub(super) fn vertex(ui: &mut Ui, session: &Session, capture: &FrameCapture, row
     egui::CollapsingHeader::new(
         RichText::new(format!(
             "{} {} ({})",
-            lang.tr("Your vertex shader at vertex", "你的顶点着色器在顶点"),
+            lang.t("shader-trace-your-vertex-shader-at-vertex"),
             traced.row,
             traced.object
         ))
@@ -126,17 +106,13 @@ pub(super) fn vertex(ui: &mut Ui, session: &Session, capture: &FrameCapture, row
             .id_salt("vertex shader run scroll")
             .max_height(ui.available_height() * 0.45)
             .show(ui, |ui| {
-                ui.label(
-                    RichText::new(lang.tr("received (its attributes)", "收到的输入（它的属性）"))
-                        .italics(),
-                );
+                ui.label(RichText::new(lang.t("shader-trace-received-its-attributes")).italics());
                 values(ui, &traced.inputs);
                 ui.label(
-                    RichText::new(lang.tr("ran, statement by statement", "逐条语句的执行"))
-                        .italics(),
+                    RichText::new(lang.t("shader-trace-ran-statement-by-statement")).italics(),
                 );
                 run(ui, &traced.trace, lang);
-                ui.label(RichText::new(lang.tr("wrote", "输出")).italics());
+                ui.label(RichText::new(lang.t("shader-trace-wrote")).italics());
                 values(ui, &traced.outputs);
             });
     });
@@ -162,7 +138,7 @@ const NOT_FINITE_MARK: &str = "◀ NaN/∞";
 fn run(ui: &mut Ui, trace: &[TraceLine], lang: Lang) {
     for line in trace {
         ui.horizontal_wrapped(|ui| {
-            ui.monospace(format!("{} {:>3}", lang.tr("line", "行"), line.line));
+            ui.monospace(format!("{} {:>3}", lang.t("shader-trace-line"), line.line));
             let words = crate::vocabulary::trace::words(line, lang);
             let text = if not_finite(&words) {
                 // The statement where a value stopped being a number.

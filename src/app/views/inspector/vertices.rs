@@ -24,12 +24,12 @@ const SPACES: [Space; 6] = [
 
 fn space_header(space: Space, lang: Lang) -> &'static str {
     match space {
-        Space::Model => lang.tr("model", "模型"),
-        Space::World => lang.tr("world", "世界"),
-        Space::Eye => lang.tr("eye", "相机"),
-        Space::Clip => lang.tr("clip (x, y, z, w)", "裁剪 (x, y, z, w)"),
+        Space::Model => lang.t("vertices-model"),
+        Space::World => lang.t("vertices-world"),
+        Space::Eye => lang.t("vertices-eye"),
+        Space::Clip => lang.t("vertices-clip-x-y-z-w"),
         Space::Ndc => "NDC",
-        Space::Window => lang.tr("window", "屏幕"),
+        Space::Window => lang.t("vertices-window"),
     }
 }
 
@@ -64,7 +64,7 @@ fn choose_spaces(ui: &mut Ui, inspector: &mut Inspector, session: &Session) -> V
         .clone()
         .unwrap_or_else(|| default_spaces(session.selection.stage));
     ui.horizontal_wrapped(|ui| {
-        ui.label(lang.tr("spaces:", "空间："));
+        ui.label(lang.t("vertices-spaces"));
         for space in SPACES {
             let mut on = spaces.contains(&space);
             if ui.checkbox(&mut on, space_header(space, lang)).changed() {
@@ -92,11 +92,8 @@ pub fn ui(
     let mut cmds = Vec::new();
     let spaces = choose_spaces(ui, inspector, session);
     ui.label(
-        RichText::new(lang.tr(
-            "Click a row to highlight the vertex in every view; click a vertex in a view to find its row.",
-            "单击一行，在所有视图中高亮该顶点；在视图中单击顶点可找到它所在的行。",
-        ))
-        .size(ui.style().text_styles[&egui::TextStyle::Small].size),
+        RichText::new(lang.t("vertices-click-a-row-to-highlight"))
+            .size(ui.style().text_styles[&egui::TextStyle::Small].size),
     );
     let selected = session.selection.vertex;
     if let Some(row) = selected {
@@ -122,10 +119,10 @@ pub fn ui(
     table
         .header(row_height + 2.0, |mut header| {
             header.col(|ui| {
-                ui.strong(lang.tr("vertex", "顶点"));
+                ui.strong(lang.t("vertices-vertex"));
             });
             header.col(|ui| {
-                ui.strong(lang.tr("object", "物体"));
+                ui.strong(lang.t("vertices-object"));
             });
             for space in &spaces {
                 header.col(|ui| {

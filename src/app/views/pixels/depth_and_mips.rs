@@ -32,8 +32,8 @@ pub(super) fn depth_curve(
     ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
         ui.painter().rect_filled(rect, 4.0, Color32::from_gray(14));
         let (x_axes, y_axes) = crate::app::views::plot_axes::axes(
-            lang.tr("eye distance d (near → far)", "到视点的距离 d（近 → 远）"),
-            lang.tr("window depth z_w", "窗口深度 z_w"),
+            lang.t("depth-and-mips-eye-distance-d-near-far"),
+            lang.t("depth-and-mips-window-depth-z-w"),
             36.0,
         );
         let plot = Plot::new("depth-curve")
@@ -54,7 +54,7 @@ pub(super) fn depth_curve(
                 );
                 if let Some([a, b]) = capture.depth_range() {
                     let (da, db) = (capture.eye_depth(a), capture.eye_depth(b));
-                    let name = lang.tr("depths in the image", "图像中的深度");
+                    let name = lang.t("depth-and-mips-depths-in-the-image");
                     plot.vline(
                         VLine::new(name, f64::from(da)).color(Color32::from_rgb(120, 200, 255)),
                     );
@@ -63,7 +63,7 @@ pub(super) fn depth_curve(
                     );
                 }
                 if let Some([lo, hi]) = range {
-                    let name = lang.tr("grey ramp: black → white", "灰度范围：黑 → 白");
+                    let name = lang.t("depth-and-mips-grey-ramp-black-white");
                     plot.hline(
                         egui_plot::HLine::new(name, f64::from(lo)).color(Color32::from_gray(200)),
                     );
@@ -74,17 +74,9 @@ pub(super) fn depth_curve(
             })
             .response;
         crate::app::views::alt::name_image(&plot, || {
-            lang.tr_owned(
-                &format!(
-                    "depth curve: window depth z_w against eye distance d from near {} to far {}",
-                    num(near),
-                    num(far)
-                ),
-                &format!(
-                    "深度曲线：窗口深度 z_w 随视点距离 d 变化，近 {}，远 {}",
-                    num(near),
-                    num(far)
-                ),
+            lang.t_with(
+                "depth-and-mips-curve-alt",
+                &[("near", &num(near)), ("far", &num(far))],
             )
         });
     });
@@ -126,11 +118,8 @@ impl Pyramid {
         let title = painter.layout(
             format!(
                 "{} · {}",
-                lang.tr("mip pyramid", "mipmap 金字塔"),
-                lang.tr(
-                    "framed: the level read at the inspected pixel, its footprint in cyan",
-                    "框出：所检查像素读取的层级，青色为其覆盖区域"
-                )
+                lang.t("depth-and-mips-mip-pyramid"),
+                lang.t("depth-and-mips-framed-the-level-read-at")
             ),
             picture_font(painter.ctx(), 13.0),
             Color32::WHITE,

@@ -142,10 +142,7 @@ pub(super) fn draw_overlays(
             painter,
             view.rect.left_bottom() + Vec2::new(8.0, -8.0),
             egui::Align2::LEFT_BOTTOM,
-            lang.tr(
-                "overlays: first 20 000 shapes only",
-                "叠加层：只显示前 20000 个图形",
-            ),
+            lang.t("draw-overlays-first-20-000-shapes"),
             &picture_font(painter.ctx(), 13.0),
             Color32::YELLOW,
         );
@@ -240,7 +237,7 @@ pub(super) fn draw_mip_legend(
     (subject, lang): (&[Rect], Lang),
 ) -> Rect {
     let title = painter.layout_no_wrap(
-        lang.tr("mip level", "mipmap 层级").to_owned(),
+        lang.t("draw-mip-level").to_owned(),
         picture_font(painter.ctx(), 13.0),
         Color32::WHITE,
     );
@@ -410,7 +407,7 @@ pub(super) fn draw_edge_test(
             normal
         };
         let tl = if e.top_left[k] {
-            lang.tr(" (top/left)", "（上/左边）")
+            lang.t("draw-top-left")
         } else {
             ""
         };

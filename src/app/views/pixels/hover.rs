@@ -1,6 +1,7 @@
 //! The pixel under the mouse: its values in a tooltip, what the status line says there, and a
 //! click that inspects it.
 
+use crate::vocabulary::Written;
 use egui::{Color32, Rect, RichText, Ui};
 use pipeline::buffers::BufferKind;
 use pipeline::capture::FrameCapture;
@@ -14,37 +15,37 @@ use crate::vocabulary::{Lang, num};
 fn pixel_tooltip(ui: &mut Ui, capture: &FrameCapture, x: u32, y: u32, lang: Lang) {
     let i = capture.grid().index(x, y);
     let px = &capture.pixels;
-    ui.label(RichText::new(format!("{} ({x}, {y})", lang.tr("pixel", "像素"))).strong());
+    ui.label(RichText::new(format!("{} ({x}, {y})", lang.t("hover-pixel"))).strong());
     ui.label(format!(
         "{}: {}/{}",
-        lang.tr("coverage", "覆盖"),
+        lang.t("hover-coverage"),
         px.coverage[i],
         capture.settings.samples.count()
     ));
     ui.label(format!(
         "{} z_w: {} ({} {})",
-        lang.tr("depth", "深度"),
+        lang.t("hover-depth"),
         num(px.depth[i]),
-        lang.tr("eye distance", "相机距离"),
+        lang.t("hover-eye-distance"),
         num(capture.eye_depth(px.depth[i]))
     ));
     if let Some(bary) = capture.barycentrics(i) {
         let (b, a) = (bary.perspective, bary.affine);
         ui.label(format!(
             "{}: {}",
-            lang.tr("primitive", "图元"),
+            lang.t("hover-primitive"),
             px.primitive[i]
         ));
         ui.label(format!(
             "b ({}) = ({}, {}, {})",
-            lang.tr("perspective-correct", "透视校正"),
+            lang.t("hover-perspective-correct"),
             num(b[0]),
             num(b[1]),
             num(b[2])
         ));
         ui.label(format!(
             "λ ({}) = ({}, {}, {})",
-            lang.tr("affine", "仿射"),
+            lang.t("hover-affine"),
             num(a[0]),
             num(a[1]),
             num(a[2])
@@ -63,17 +64,15 @@ fn pixel_tooltip(ui: &mut Ui, capture: &FrameCapture, x: u32, y: u32, lang: Lang
     {
         let said = match w.at(x, y) {
             Some(v) => crate::app::views::watch_picture::value_words(kind, v),
-            None => lang
-                .tr("the line did not run here", "这里没有执行该行")
-                .to_owned(),
+            None => lang.t("hover-the-line-did-not-run").to_owned(),
         };
-        let at = match lang {
-            Lang::En => format!("after line {}", w.line),
-            Lang::Zh => format!("第 {} 行之后", w.line),
+        let at = match lang.written() {
+            Written::English => format!("after line {}", w.line),
+            Written::Chinese => format!("第 {} 行之后", w.line),
         };
         ui.label(RichText::new(format!("{} ({at}): {said}", w.expression)).monospace());
     }
-    ui.label(RichText::new(lang.tr("click to inspect", "单击查看详情")).weak());
+    ui.label(RichText::new(lang.t("hover-click-to-inspect")).weak());
 }
 
 /// Why the image shows nothing (no texture in the scene), or that the buffer is on its way.
@@ -86,14 +85,11 @@ pub(super) fn status_message(
     lang: Lang,
 ) {
     let text = if !offered {
-        lang.tr(
-            "No object of this scene is textured: there is no texture lookup to show.",
-            "此场景中没有物体带纹理：没有可显示的纹理查询。",
-        )
+        lang.t("hover-no-object-of-this-scene")
     } else if !capture.settings.capture.keeps(buffer) {
         // The capture shown kept only what the previous view needed; the render that keeps
         // this buffer is under way.
-        lang.tr("rendering this buffer…", "正在渲染此缓冲…")
+        lang.t("hover-rendering-this-buffer")
     } else {
         return;
     };

@@ -101,8 +101,8 @@ fn watched<'c>(
 
 fn overlay_name(kind: OverlayKind, l: Lang) -> &'static str {
     match kind {
-        OverlayKind::TriangleEdges => l.tr("Triangle edges", "三角形边"),
-        OverlayKind::BoundingBoxes => l.tr("Bounding boxes", "包围盒"),
+        OverlayKind::TriangleEdges => l.t("pixels-triangle-edges"),
+        OverlayKind::BoundingBoxes => l.t("pixels-bounding-boxes"),
     }
 }
 
@@ -117,13 +117,19 @@ impl PixelView {
     ) -> Vec<Command> {
         let mut cmds = Vec::new();
         ui.horizontal_wrapped(|ui| {
-            egui::ComboBox::new("buffer", lang.tr("buffer", "缓冲"))
+            egui::ComboBox::new("buffer", lang.t("pixels-buffer"))
                 .selected_text(buffer_name(sel.buffer, lang))
                 .show_ui(ui, |ui| {
                     // The final colour first (the most used, and at the bottom of 17 it fell
                     // below the fold), then the buffers in the pipeline's order.
-                    let colour = available.iter().copied().filter(|&k| k == BufferKind::Color);
-                    let rest = available.iter().copied().filter(|&k| k != BufferKind::Color);
+                    let colour = available
+                        .iter()
+                        .copied()
+                        .filter(|&k| k == BufferKind::Color);
+                    let rest = available
+                        .iter()
+                        .copied()
+                        .filter(|&k| k != BufferKind::Color);
                     for (i, kind) in colour.chain(rest).enumerate() {
                         if i == 1 && available.contains(&BufferKind::Color) {
                             ui.separator();
@@ -145,35 +151,23 @@ impl PixelView {
             }
             let mut samples = sel.show_samples;
             if ui
-                .checkbox(&mut samples, lang.tr("Sample points", "采样点"))
-                .on_hover_text(lang.tr(
-                    "Zoom in to see each pixel's sample positions: filled when covered. The patterns are the standard ones: Direct3D's published numbers taken with y up, as Mesa's llvmpipe takes them (OpenGL leaves the positions to the implementation), so this 4× pattern is Direct3D's drawing mirrored vertically.",
-                    "放大后显示每个像素的采样位置：被覆盖时为实心。采样模式是标准模式：Direct3D 公布的数值按 y 向上使用，与 Mesa 的 llvmpipe 相同（OpenGL 不规定采样位置），所以这里的 4× 模式是 Direct3D 图示的上下镜像。",
-                ))
+                .checkbox(&mut samples, lang.t("pixels-sample-points"))
+                .on_hover_text(lang.t("pixels-zoom-in-to-see-each"))
                 .changed()
             {
                 cmds.push(Command::View(ViewCommand::ToggleSamples));
             }
             if sel.buffer.is_texturing() {
-                ui.checkbox(&mut self.show_pyramid, lang.tr("mip pyramid", "mipmap 金字塔"))
-                    .on_hover_text(lang.tr(
-                        "Every level of the texture at once: each the 2×2 box filter of the one before.",
-                        "同时显示纹理的所有层级：每一层是上一层的 2×2 盒式滤波。",
-                    ));
+                ui.checkbox(&mut self.show_pyramid, lang.t("pixels-mip-pyramid"))
+                    .on_hover_text(lang.t("pixels-every-level-of-the-texture"));
             }
             if sel.watch.is_some() || sel.cost {
-                ui.checkbox(&mut self.show_watch, lang.tr("variable picture", "变量图"))
-                    .on_hover_text(lang.tr(
-                        "The shader panel's watch over the frame (or its cost view) drawn here, in place of the buffer: a number on a ramp, dark blue the least and yellow the greatest; a condition yellow where it holds; grey checks where no fragment ran the line. Hover for the value at a pixel.",
-                        "着色器面板的整帧监视（或开销视图）画在这里，代替缓冲：数值用色带表示，深蓝最小、黄色最大；条件成立处为黄色；灰色棋盘格是没有片元执行该行之处。悬停可看某个像素的值。",
-                    ));
+                ui.checkbox(&mut self.show_watch, lang.t("pixels-variable-picture"))
+                    .on_hover_text(lang.t("pixels-the-shader-panel-s-watch"));
             }
             if ui
-                .button(lang.tr("Fit", "适应窗口"))
-                .on_hover_text(lang.tr(
-                    "Zoom to fit (double-click the image)",
-                    "缩放以适应（双击图像）",
-                ))
+                .button(lang.t("pixels-fit"))
+                .on_hover_text(lang.t("pixels-zoom-to-fit-double-click"))
                 .clicked()
             {
                 self.zoom = None;
@@ -212,21 +206,30 @@ impl PixelView {
     ) -> Option<Command> {
         let mut view = sel.depth_view;
         ui.horizontal_wrapped(|ui| {
-            ui.checkbox(&mut view.linear, lang.tr("linear: eye distance", "线性：相机距离"))
-                .on_hover_text(lang.tr(
-                    "z_w is not linear in distance: d = 2fn/((f+n) − z_ndc·(f−n)). Most of [0, 1] goes to the near part of the frustum.",
-                    "z_w 与距离不成线性：d = 2fn/((f+n) − z_ndc·(f−n))。[0, 1] 的大部分分给了视锥体的近处。",
-                ));
+            ui.checkbox(&mut view.linear, lang.t("pixels-linear-eye-distance"))
+                .on_hover_text(lang.t("pixels-z-w-is-not-linear"));
             let value = |z: f32| if view.linear { capture.eye_depth(z) } else { z };
-            let auto = capture.depth_range().map_or([0.0, 1.0], |[a, b]| [value(a), value(b)]);
+            let auto = capture
+                .depth_range()
+                .map_or([0.0, 1.0], |[a, b]| [value(a), value(b)]);
             let mut range = view.range.unwrap_or(auto);
             let speed = ((range[1] - range[0]).abs() / 200.0).max(1e-5);
-            let a = ui.add(egui::DragValue::new(&mut range[0]).speed(speed).max_decimals(5).prefix(lang.tr("black at ", "黑：")));
-            let b = ui.add(egui::DragValue::new(&mut range[1]).speed(speed).max_decimals(5).prefix(lang.tr("white at ", "白：")));
+            let a = ui.add(
+                egui::DragValue::new(&mut range[0])
+                    .speed(speed)
+                    .max_decimals(5)
+                    .prefix(lang.t("pixels-black-at")),
+            );
+            let b = ui.add(
+                egui::DragValue::new(&mut range[1])
+                    .speed(speed)
+                    .max_decimals(5)
+                    .prefix(lang.t("pixels-white-at")),
+            );
             if a.changed() || b.changed() {
                 view.range = Some(range);
             }
-            if ui.button(lang.tr("auto range", "自动范围")).clicked() {
+            if ui.button(lang.t("pixels-auto-range")).clicked() {
                 view.range = None;
             }
             if view.linear != sel.depth_view.linear {
@@ -287,7 +290,7 @@ impl PixelView {
         self.words.clear();
         crate::app::views::alt::name_picture(
             &response,
-            lang.tr("pixel view", "像素视图"),
+            lang.t("pixels-pixel-view"),
             (session, capture, sel.stage),
         );
         let painter = ui.painter_at(rect);

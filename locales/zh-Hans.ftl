@@ -1,0 +1,878 @@
+# pipelens: 界面的简体中文。
+# The interface in Chinese (simplified characters); a message missing here is shown in English.
+
+language-name = 中文
+
+## src/app/chrome.rs
+
+chrome-help-keyboard-shortcuts = 帮助：键盘快捷键
+chrome-keyboard-shortcuts-f1 = 键盘快捷键（F1）
+chrome-switch-the-language = 切换语言
+chrome-classroom = 课堂模式
+chrome-large-type-and-high-contrast = 投影用的大字号与高对比度，画面优先（C）。F11：全屏，Ctrl +/−：字号，←/→：步骤或阶段，空格：播放。
+chrome-the-file-changed-on-disk = 文件在磁盘上被修改后无法加载；继续运行上一个正确的版本：
+chrome-the-dropped-file-did-not = 拖入的文件未能打开；继续运行原来打开的内容：
+chrome-close-this-message = 关闭此消息
+chrome-previous-step = 上一步
+chrome-previous-step-or-page-up = 上一步（← 或 Page Up）
+chrome-step = 步骤
+chrome-next-step = 下一步
+chrome-next-step-or-page-down = 下一步（→ 或 Page Down）
+chrome-pause = ‖ 暂停
+chrome-play = ▶ 播放
+chrome-play-or-pause-the-animation = 播放或暂停动画（空格）
+chrome-narration = 讲解
+chrome-show-or-fold-the-narration = 显示或收起画面上的讲解（N）
+chrome-parameters = 参数
+chrome-the-camera-projection-rasterizer-and = 相机、投影、光栅化与物体（P）
+chrome-inspector = 检查器
+chrome-matrices-the-vertex-table-the = 矩阵、顶点表、像素检查器（I）
+chrome-matrix = 矩阵卡片
+chrome-the-stage-s-matrix-over = 在几何视图上显示本阶段的矩阵（M）
+chrome-shader = 着色器
+chrome-write-the-vertex-and-fragment = 用 GLSL 编写顶点与片元着色器；Ctrl+Enter 应用（S）
+chrome-show = 显示 ▾
+chrome-download-handout = 下载讲义
+chrome-the-lesson-s-handout-in = 以当前语言下载本课讲义：一个 HTML 文件，图片都在其中，可打印（渲染每一步需要几秒）。各缓冲的快照：请用桌面版或 `pipelens export`。
+chrome-download-my-work = 下载我的作业
+chrome-one-file-with-this-lesson = 一个文件，包含你在本课每一步最后运行的代码和填写的答案（LESSON-work.toml）：交上这个文件；老师用 `pipelens grade 课程 文件` 评分。
+chrome-export = 导出 ▾
+chrome-folder = 文件夹
+chrome-the-folder-the-snapshot-is = 快照写入的文件夹（不存在时创建）。
+chrome-export-snapshot = 导出快照
+chrome-every-buffer-as-png-and = 每个缓冲的 PNG 与 capture.json，与 `pipelens export` 相同。
+chrome-export-handout-and-slides = 导出讲义与幻灯片
+chrome-the-lesson-s-handout-in-2 = 用当前语言导出本课的讲义（index.html，图片都在其中，可打印）和每步一张 1920×1080 的幻灯片（slides/），与 `pipelens export 课程 --slides` 相同。
+chrome-export-my-work = 导出我的作业
+chrome-one-file-with-this-lesson-2 = 一个文件，包含你在本课每一步最后运行的代码和填写的答案（LESSON-work.toml，写入上面的文件夹）：交上这个文件；老师用 `pipelens grade 课程 文件` 评分。
+chrome-cancel-export = 取消导出
+chrome-stops-between-two-files-those = 在两个文件之间停止：已写入的文件保持完整。
+chrome-error = 错误
+chrome-showing-the-last-good-frame = （显示上一个正确的帧）
+chrome-triangles = 个三角形
+chrome-frame = 帧
+chrome-vertex = 顶点
+chrome-clip = 裁剪
+chrome-raster = 光栅化
+chrome-resolve = 解析
+chrome-keyboard-shortcuts = 键盘快捷键
+chrome-triangles-dropped-gl-position-nan = 个三角形被丢弃：gl_Position 为 NaN 或 ∞
+chrome-a-vertex-shader-wrote-a = 顶点着色器写出的 gl_Position 不是有限数（除以零、normalize(vec3(0.0))）：无法据此绘制，所以它的三角形在裁剪之前就被丢弃。顶点表标签页显示该顶点的运行过程。
+chrome-fragments-shaded = 个片元已着色
+chrome-discarded = 个被丢弃
+chrome-the-fragment-shader-ran-once = 片元着色器对每个片元运行一次（2×2 像素块的辅助通道不计）；这些被 `discard` 丢弃。
+chrome-pixels-nan-or-drawn-black = 个像素为 NaN 或 ∞（画成黑色）
+chrome-a-shader-s-colour-was = 着色器输出的颜色不是有限数，例如 normalize(vec3(0.0)) 或 0.0/0.0：单击这样的像素，查看产生它的语句。
+
+## src/app/compact.rs
+
+compact-menu = 菜单
+compact-keys = 快捷键（?）
+compact-stage = 阶段
+
+## src/app/editor/file_actions.rs
+
+file-actions-undo = ↶ 撤销
+file-actions-redo = ↷ 重做
+file-actions-save-as-a-new-lesson = 另存为新课程 ↓
+file-actions-save = 保存
+file-actions-save-download = 保存（下载）
+file-actions-a-built-in-lesson-is = 内置课程不会被修改：在下面把它新建为你自己的课程文件（新建课程，从本课程开始）。
+file-actions-ctrl-s-the-file-is = Ctrl+S：文件要么完整写入，要么不写
+file-actions-unsaved = ● 未保存
+file-actions-unsaved-changes-kept-in-a = 有未保存的修改，保存（Ctrl+S）之前已在文件旁保存恢复副本。
+file-actions-saved = 已保存
+file-actions-unsaved-changes-to-this-lesson = 上次编辑这个课程时有未保存的修改，已保留。
+file-actions-restore-them = 恢复这些修改
+file-actions-restored-save-keeps-them-undo = 已恢复：保存即保留，撤销即放弃。
+file-actions-discard-them = 丢弃
+file-actions-the-file-changed-on-disk = 编辑期间，文件在磁盘上被修改了。
+file-actions-overwrite-it-with-my-edits = 用我的修改覆盖它
+file-actions-load-it-from-disk-undo = 从磁盘载入（撤销可找回我的修改）
+file-actions-loaded-from-disk = 已从磁盘载入。
+file-actions-not-done-the-lesson-would = 未执行：这样改动后课程将无法通过检查（某一步的参数可能依赖它之前的步骤）：
+file-actions-the-lesson-does-not-pass = 课程无法通过检查；在修正之前继续播放上一个正确的版本：
+
+## src/app/editor/new.rs
+
+new-new-lesson = 新建课程…
+new-from-the-scene-on-screen = 从屏幕上的场景开始，当前画面作为第一步
+new-from-a-built-in-lesson = 从一个内置课程开始：
+new-from-a-mesh-of-your = 从你自己的网格开始（.obj；也可以把文件拖到窗口上）：
+new-write-it-to = 写入：
+new-name = 名称：
+new-make-the-lesson = 新建课程
+
+## src/app/editor/screen.rs
+
+screen-what-is-on-screen = 屏幕上的内容
+screen-the-stage-buffer-layout-overlays = 阶段、缓冲、布局、叠加层、所检查的像素、选中的顶点，以及本步骤开始以来改动过的每个参数。编辑器打开时拖动滑块即可录制动画。
+screen-no-parameter-changed = 没有改动参数。
+screen-its-words-shaders-and-exercise = 保留它的文字、着色器和练习
+screen-title = 标题
+screen-narration = 讲解
+screen-seconds-from-the-first-value = 从起始值到结束值的秒数
+screen-not-an-animation = 不作为动画
+
+## src/app/editor/window.rs
+
+window-lesson-editor = 课程编辑器
+window-close-the-editor-r = 关闭编辑器（R）
+window-a-built-in-lesson-is = 内置课程不能直接修改。先把它新建为你自己的课程（见下方“新建课程”，从本课程开始），再在那里录制、撰写和调整步骤。
+window-open-a-lesson-to-edit = 打开一个课程即可编辑它，或在下面新建一个。
+window-steps = 步骤
+window-changed-since-the-last-save = ● 自上次保存以来有改动
+window-earlier = ▲ 前移
+window-later = ▼ 后移
+window-duplicate = 复制
+window-delete = 删除
+
+## src/app/editor/words.rs
+
+words-the-lesson-s-title-and = 课程的标题与简介
+words-title = 标题
+words-summary = 简介
+words-narration = 讲解
+words-question-optional = 思考题（可选）
+words-answer-optional = 答案（可选）
+words-worded-english = 已写好：English、中文
+words-still-needs = 还缺少：
+
+## src/app/export_task.rs
+
+export-task-handout-saved = 讲义已保存：
+export-task-exported-to = 已导出到
+export-task-your-work-saved = 你的作业已保存：
+export-task-steps-with-work = 个步骤有作业
+
+## src/app/library.rs
+
+library-lessons = 课程
+library-all-right = 全对
+library-d-n-questions-you-answered = d/n：需要填写数值的思考题中你已答对的数目
+library-edit-this-lesson-or-make = 编辑本课程或新建课程…（R）
+library-record-what-is-on-screen = 把屏幕上的内容录制为步骤，用两种语言撰写文字，调整顺序，保存文件
+library-your-own-lesson-or-scene = 自己的课程或场景：把它的 .toml 文件拖放到窗口上；保存后自动重新加载。
+library-your-own-lesson-or-scene-2 = 自己的课程或场景：把它的 .toml 文件拖放到页面上。网页无法监视文件：修改后请重新拖放。
+library-open-another-built-in-lesson = 打开另一个内置课程
+
+## src/app/platform.rs
+
+platform-pipelens-the-keys-typed-into = pipelens：输入应用的按键
+
+## src/app/step_panels.rs
+
+step-panels-shaders-glsl = 着色器（GLSL）
+
+## src/app/toolbar.rs
+
+toolbar-view = 视图 ▾
+toolbar-observer-view = 观察者视图
+toolbar-the-scene-seen-from-outside = 从外部看场景，并显示相机的视锥和光源。
+toolbar-side-by-side = 并排对比
+toolbar-off = 关
+toolbar-render-the-scene-with-different = 用不同设置渲染场景并并排显示，附亮度剖面曲线。
+
+## src/app/views/alt.rs
+
+alt-name-colon = ：
+
+## src/app/views/answer.rs
+
+answer-a-number-or-an-expression = 数值或算式：0.866、sqrt(3)/2、2*pi/3、1/4
+answer-check = 检查
+answer-compare-with-the-expected-value = 与期望值比较（回车）
+answer-answered-right-before = 之前已答对
+
+## src/app/views/breakpoints.rs
+
+breakpoints-line = 行
+breakpoints-at-hit = 在第
+breakpoints-every = 每次
+breakpoints-stop-only-the-n-th = 只在运行第 n 次到达此行时停下（在循环中即第 n 次迭代）；0 表示每次都停。
+breakpoints-where = 条件
+breakpoints-find-in-the-frame = 在整帧中查找
+breakpoints-the-first-fragment-reading-the = 从画面顶部读起，第一个在此行之后条件成立的片元：检查它，并在此行显示它的运行过程。
+breakpoints-the-condition-cannot-be-read = 无法在此处读取该条件：
+breakpoints-remove-this-breakpoint = 删除此断点
+breakpoints-holds-at-no-fragment-of = 在此帧中没有任何片元在该行之后成立。
+breakpoints-is-not-a-condition-a = 不是条件（bool）：请写一个比较，例如 diffuse <= 0.0。
+
+## src/app/views/compare.rs
+
+compare-rendering-the-comparison = 正在渲染对比…
+compare-compared-image = 对比图像
+
+## src/app/views/debugger.rs
+
+debugger-this-is-the-run-s = 这已是运行的第一步。
+debugger-no-breakpoint-stops-the-run = 此步之前没有断点使运行停下。
+debugger-no-breakpoint-is-set-click = 尚未设置断点：单击行号，或在某行按 F9。
+debugger-no-breakpoint-stops-the-rest = 运行的其余部分没有断点使它停下。
+debugger-put-the-text-cursor-on = 请先把文本光标放在某一行上。
+debugger-the-rest-of-this-run = 运行的其余部分不会到达光标所在行。
+debugger-this-step-is-in-main = 此步在 main 中：没有可返回的调用者。
+debugger-this-is-the-run-s-2 = 这已是运行的最后一步。
+debugger-step = 第
+debugger-line = 行
+debugger-steps-f10-steps-through-them = 步：按 F10 逐步执行
+debugger-watch = 监视
+debugger-after-line = 在行
+debugger-variables-at-this-step = 此步的变量
+debugger-debugger-click-a-pixel-of = 调试器：单击画面中的一个像素；它的片元的运行在这里逐步执行（F10）。
+debugger-debugger-select-a-vertex-a = 调试器：选择一个顶点（在几何视图中单击，或在顶点表中选一行）；它的运行在这里逐步执行（F10）。
+debugger-fragment = 片元
+debugger-several-fragments-reached-this-pixel = 有多个片元到达此像素（在此相交的三角形，或被 discard 剥离的层）：选择跟随哪一个。
+
+## src/app/views/exercise.rs
+
+exercise-drawing-pipelens-own-frame = 正在绘制 pipelens 自带的画面…
+exercise-pipelens-own = pipelens 自带
+exercise-difference = 差异：
+exercise-colour = 颜色
+exercise-coverage = 覆盖
+exercise-depth = 深度
+exercise-another-triangle = 另一个三角形
+exercise-exercise = 练习
+exercise-write-your-code-in-the = 在着色器面板（S 键）中编写代码：边写边运行，你的曲线与 pipelens 的 b(t) 逐点比较。
+exercise-write-your-code-in-the-2 = 在着色器面板（S 键）中编写代码：边写边运行，你的曲面与 pipelens 的 b(u, v) 逐点比较。
+exercise-write-your-code-in-the-3 = 在着色器面板（S 键）中编写代码：边写边运行，画面与 pipelens 自带的逐像素比较。
+exercise-inspect-the-first-wrong-vertex = 检查第一个错误的顶点
+exercise-selects-its-row-of-the = 选中它在顶点表中的那一行：检查器显示你的顶点着色器对它的运行过程。
+exercise-inspect-the-first-wrong-pixel = 检查第一个错误的像素
+exercise-selects-it-the-inspector-shows = 选中它：检查器并列显示你的着色器在该处的运行过程和 pipelens 自带的推导。
+exercise-passed-before = 之前已通过。
+
+## src/app/views/geometry/cards.rs
+
+cards-near-plane = 近平面
+cards-far-plane = 远平面
+cards-light = 光源
+cards-showing-triangles = 显示三角形
+
+## src/app/views/geometry/mod.rs
+
+geometry-geometry-view = 几何视图
+geometry-nothing-to-show-in-this = 此空间中没有可显示的顶点
+geometry-front-view = 正视图
+geometry-reset-view = 重置视角
+geometry-or-double-click-the-picture = 或双击画面。
+geometry-normals = 法线
+geometry-each-vertex-s-normal-n = 每个顶点在世界空间中的法线 n，即光照所用的法线（n_world = (M^(−1))^T·n）。
+geometry-replay-transition = ▶ 重播变换
+geometry-space = 空格键
+
+## src/app/views/inspector/matrices.rs
+
+matrices-what-this-stage-applies = 本阶段使用的矩阵
+matrices-games101-s-m-viewport-maps = GAMES101 的 M_viewport 对 x、y 的变换相同而 z 保持不变；OpenGL（以及 pipelens）还把 z 从 [−1, 1] 映射到 z_w ∈ [0, 1]。（笔记中把该矩阵误标为 M_{"{"}persp→ortho{"}"}。）
+matrices-other-matrices = 其他矩阵
+matrices-object = 物体
+matrices-the-same-projection-in-games101 = GAMES101 记法下的同一投影（n = −near，f = −far）：
+matrices-m-ortho-m-persp-ortho = M_ortho·M_{"{"}persp→ortho{"}"} = −Z·P，Z = diag(1, 1, −1, 1)：除法后 x、y 相同；NDC 的 z 取反（近平面 → +1）。
+matrices-m-ortho-z-ortho-with = M_ortho = Z·Ortho，Z = diag(1, 1, −1, 1)：NDC 的 z 取反（近平面 → +1）。
+matrices-matrix-stack-depth-first = 矩阵栈（深度优先遍历）
+
+## src/app/views/inspector/mod.rs
+
+inspector-matrices = 矩阵
+inspector-vertices = 顶点表
+inspector-pixel = 像素
+
+## src/app/views/inspector/pixel.rs
+
+pixel-click-a-pixel-in-a = 在像素视图（光栅化、深度、着色、纹理、输出）中单击一个像素，查看到达它的每个片元以及它的颜色是如何得到的。
+pixel-pixel = 像素
+pixel-triangle = 三角形
+pixel-coverage = 覆盖
+pixel-depth-mean-of-samples = 深度（采样平均）
+pixel-colour = 颜色
+pixel-how-the-fragment-got-here = 片元如何到达这里（以及 pipelens 自带着色会得到什么）：
+pixel-no-fragment-owns-this-pixel = 没有片元拥有此像素：它保持背景色。
+pixel-every-fragment-that-reached-the = 到达此像素的每个片元
+pixel-none = 没有。
+pixel-your-inside-covers-none-of = 你的 inside() 没有覆盖这些片元的任何采样点（上面的采样点是 pipelens 自己的边测试给出的）。
+pixel-every-fragment-failed-the-depth = 所有片元都未通过深度测试。
+pixel-explain-this-pixel = 解释这个像素
+pixel-fragment = 片元
+pixel-visible = {"  "}√ 可见
+pixel-a-piece-of-a-clipped = （被裁剪三角形的一部分）
+pixel-samples = 采样点：
+pixel-not-covered = 未覆盖
+pixel-covered-passed-the-depth-test = 被覆盖，通过深度测试：
+pixel-covered-failed-the-depth-test = 被覆盖，未通过深度测试：
+pixel-on-an-edge-the-top = {"*"} 在边上：由左上填充规则决定
+
+## src/app/views/inspector/rotation.rs
+
+rotation-the-same-rotation-r-n = 同一个旋转 R(n, θ) 的另外两种算法
+rotation-rodrigues-formula-n-the-cross = Rodrigues 公式，N 是 n 的叉乘矩阵：
+rotation-w-x-y-z-q = （w, x, y, z）；−q 表示同一个旋转。它的矩阵：
+rotation-halfway-along-the-shortest-arc = 沿最短弧走到一半，即绕同一轴旋转 θ/2。
+rotation-between-two-orientations-slerp = 两个朝向之间：球面线性插值 slerp
+rotation-the-first-axis = 第一个轴
+rotation-the-second-axis = 第二个轴
+rotation-0-slerp-takes-q-the = {" "}< 0：slerp 改用 −q₁，同一个旋转，走较短的一侧
+rotation-the-turn-from-one-to = 两个朝向之间相差的转角
+rotation-weights = 权重
+rotation-about = 绕轴
+
+## src/app/views/inspector/shader_trace.rs
+
+shader-trace-your-fragment-shader-at-this = 你的片元着色器在此像素
+shader-trace-it-did-not-run-here = 它没有在这里运行：没有带着色器的物体的三角形覆盖此像素。
+shader-trace-pixels-of-this-frame-came = 个像素的结果为 NaN 或无穷大（画成黑色）。
+shader-trace-fragment = 片元
+shader-trace-triangle = 三角形
+shader-trace-sample-s = 个采样
+shader-trace-received-interpolated-across-the-triangle = 收到的输入（在三角形上插值）
+shader-trace-ran-statement-by-statement = 逐条语句的执行
+shader-trace-discarded-what-lies-behind-shows = → 被丢弃（discard）：显示其后方的表面。
+shader-trace-your-vertex-shader-at-vertex = 你的顶点着色器在顶点
+shader-trace-received-its-attributes = 收到的输入（它的属性）
+shader-trace-wrote = 输出
+shader-trace-line = 行
+
+## src/app/views/inspector/vertices.rs
+
+vertices-model = 模型
+vertices-world = 世界
+vertices-eye = 相机
+vertices-clip-x-y-z-w = 裁剪 (x, y, z, w)
+vertices-window = 屏幕
+vertices-spaces = 空间：
+vertices-click-a-row-to-highlight = 单击一行，在所有视图中高亮该顶点；在视图中单击顶点可找到它所在的行。
+vertices-vertex = 顶点
+vertices-object = 物体
+
+## src/app/views/lesson.rs
+
+lesson-fold-the-narration-away = 收起讲解
+lesson-fold-the-narration-away-n = 收起讲解（N）
+lesson-predict-first-the-question-below = 先预测（见下方思考题），再按空格键观看。
+lesson-question = 思考题
+lesson-hide-the-answer = 隐藏答案
+lesson-show-the-answer = 显示答案
+
+## src/app/views/matrix.rs
+
+matrix-factors = 分解
+
+## src/app/views/observer.rs
+
+observer-observer-the-scene-seen-from = 观察者：从外部看到的场景，带有观察相机、视锥和光源
+observer-rendering-the-observer = 正在渲染观察者视图…
+observer-observer = 观察者 ▾
+observer-the-scene-from-outside-drag = 从外部看场景：拖动旋转，滚轮缩放。
+observer-camera-frame-u-v-n = 相机标架 u, v, n
+observer-clipped-polygons = 裁剪后的多边形
+observer-frustum-sides = 视锥侧棱
+observer-near-plane = 近平面
+observer-far-plane = 远平面
+observer-lights = 光源
+
+## src/app/views/own_uniforms.rs
+
+own-uniforms-your-uniforms = 你的 uniform
+
+## src/app/views/params/lighting.rs
+
+lighting-i-the-light-s-intensity = I：光源在 RGB 各通道的强度，L = k·I·…
+lighting-intensity-i = 强度 I
+lighting-f-att-1-a-b = f_att = 1/(a + b·d + c·d²)
+lighting-l-position-p-position-p = l = (position − p)/|position − p|
+lighting-l-direction-direction-the-light = l = −direction/|direction|：光沿这个方向传播
+lighting-direction = 方向
+lighting-position = 位置
+lighting-the-cone-s-axis = 圆锥的轴
+lighting-axis = 锥轴
+lighting-cutoff = 截止角
+lighting-f-spot-cos-e-inside = 截止角以内 f_spot = (cos φ)^e，以外为 0
+lighting-f-spot-cos-e-a = f_spot = (cos φ)^e：e 越大，圆斑向边缘衰减越快
+lighting-material = 材质
+lighting-ambient-l-a-k-a = 环境光：L_a = k_a·c·I_a
+lighting-diffuse-l-d-k-d = 漫反射：L_d = k_d·c·(I/r²)·max(0, n·l)
+lighting-specular-l-s-k-s = 高光：L_s = k_s·(I/r²)·max(0, n·h)^p
+lighting-shininess-p = 高光指数 p
+lighting-p-in-n-h-p = (n·h)^p（Blinn-Phong）或 (r·v)^p（Phong）中的 p：越大，高光越小越锐利
+
+## src/app/views/params/mod.rs
+
+params-camera = 相机
+params-lookat-eye-at-up-n = LookAt(eye, at, up)：n = (eye − at)/|eye − at|，u = up × n/|up × n|，v = n × u
+params-eye = 视点
+params-at = 参考点
+params-up = 上方向
+params-projection = 投影
+params-rasterizer-settings = 光栅化设置
+params-lights = 光源
+params-joint-angles = 关节角
+params-objects = 物体
+params-m-t-rz-ry-rx = M = T·Rz·Ry·Rx·S
+params-translate = 平移
+params-rotate = 旋转 °
+params-scale = 缩放
+params-q-axis = q₀ 旋转轴
+params-axis-n = 旋转轴 n
+params-r-n-cos-i-1 = R(n, θ) = cos θ·I + (1 − cos θ)·n·n^T + sin θ·N；q = (cos(θ/2), sin(θ/2)·n)
+params-q-axis-2 = q₁ 旋转轴
+params-slerp-q-q-t-sin = slerp(q₀, q₁, t) = sin((1 − t)Ω)/sin Ω·q₀ + sin(tΩ)/sin Ω·q₁，cos Ω = q₀·q₁：t = 0 为 q₀，t = 1 为 q₁，其间匀角速度转动
+params-angle = 转角 θ
+params-perspective = 透视 Perspective
+params-frustum = 视见体 Frustum
+params-ortho = 正交 Ortho
+params-projection-2 = 投影
+params-vertical-field-of-view-top = 垂直视场角。top = near·tan(fovy/2)，right = top·aspect（复习讲义中的 near·tan(fovy) 是笔误）。
+params-aspect-from-the-viewport = 宽高比取视口的
+params-the-near-rectangle-l-r = 近平面矩形 [l, r] × [b, t]
+params-near = 近 near{" "}
+params-distance-to-the-near-plane = 到近平面 z = −near 的距离。near 过小会浪费深度精度：z_ndc = (f+n)/(f−n) − 2fn/((f−n)·d)。
+params-far = 远 far{" "}
+params-distance-to-the-far-plane = 到远平面 z = −far 的距离。
+params-viewport = 视口
+params-samples-per-pixel = 每像素采样数
+params-msaa-coverage-and-depth-per = MSAA：每个采样点单独计算覆盖与深度，每个像素每个三角形只着色一次；4× 使用旋转网格。
+params-culling = 面剔除
+params-none = 无
+params-back = 背面
+params-front = 正面
+params-front-faces-are-counter-clockwise = 屏幕上逆时针的面为正面。
+params-depth-test = 深度测试
+params-shade-every-sample-ssaa = 每个采样点着色（SSAA）
+params-off-multisampling-shades-once-per = 关：多重采样每个像素每个三角形在像素中心着色一次。开：超采样在每个采样点各自着色。
+params-perspective-correct-interpolation = 透视校正插值
+params-your-shaders-draw-the-picture = 画面由你的着色器绘制：下面的着色频率与镜面项不改变画面；它们决定着色器面板中“pipelens 自带”写出的着色器。
+params-shading = 着色频率
+params-unlit = 无光照
+params-flat = 平面
+params-flat-once-per-face-gouraud = 平面：每个面一次。Gouraud：按顶点计算，颜色插值。Phong：法向插值，按像素计算光照。
+params-specular = 镜面项
+params-texture-filter = 纹理过滤
+params-nearest = 最近邻
+params-bilinear = 双线性
+params-nearest-level = 最近层
+params-trilinear = 三线性
+params-summed-area-table = 求和面积表
+params-log-max-uw-vh-x = λ = log₂ max(|∂(uw, vh)/∂x|, |∂(uw, vh)/∂y|)：纹素大小与像素相当的层级。
+params-anisotropy = 各向异性
+params-up-to-n-samples-along = 沿覆盖区域（足迹）长轴最多取 N 个样本；λ = log₂(长轴/N)。
+params-mip-bias = mip 偏移
+params-base-b-y = 支架 θ_b (y)
+params-lower-arm-la-z = 下臂 θ_la (z)
+params-upper-arm-ua-z = 上臂 θ_ua (z)
+params-torso-y = 躯干 (y)
+params-head-y = 头 (y)
+params-left-upper-arm = 左上臂
+params-left-lower-arm = 左下臂
+params-right-upper-arm = 右上臂
+params-right-lower-arm = 右下臂
+params-left-upper-leg = 左大腿
+params-left-lower-leg = 左小腿
+params-right-upper-leg = 右大腿
+params-right-lower-leg = 右小腿
+params-the-joint-s-rotation-every = 关节旋转：树中其下的所有部件随之运动（M ← M·local）。
+params-less-gl-less = < 更近 (GL_LESS)
+params-less-or-equal = ≤ 更近或相等
+params-greater = > 更远
+params-greater-or-equal = ≥ 更远或相等
+params-always-painter-s-order = 总是通过（画家顺序）
+
+## src/app/views/pixels/depth_and_mips.rs
+
+depth-and-mips-eye-distance-d-near-far = 到视点的距离 d（近 → 远）
+depth-and-mips-window-depth-z-w = 窗口深度 z_w
+depth-and-mips-depths-in-the-image = 图像中的深度
+depth-and-mips-grey-ramp-black-white = 灰度范围：黑 → 白
+depth-and-mips-mip-pyramid = mipmap 金字塔
+depth-and-mips-framed-the-level-read-at = 框出：所检查像素读取的层级，青色为其覆盖区域
+
+## src/app/views/pixels/draw.rs
+
+draw-overlays-first-20-000-shapes = 叠加层：只显示前 20000 个图形
+draw-mip-level = mipmap 层级
+draw-top-left = （上/左边）
+
+## src/app/views/pixels/hover.rs
+
+hover-pixel = 像素
+hover-coverage = 覆盖
+hover-depth = 深度
+hover-eye-distance = 相机距离
+hover-primitive = 图元
+hover-perspective-correct = 透视校正
+hover-affine = 仿射
+hover-the-line-did-not-run = 这里没有执行该行
+hover-click-to-inspect = 单击查看详情
+hover-no-object-of-this-scene = 此场景中没有物体带纹理：没有可显示的纹理查询。
+hover-rendering-this-buffer = 正在渲染此缓冲…
+
+## src/app/views/pixels/mod.rs
+
+pixels-triangle-edges = 三角形边
+pixels-bounding-boxes = 包围盒
+pixels-buffer = 缓冲
+pixels-sample-points = 采样点
+pixels-zoom-in-to-see-each = 放大后显示每个像素的采样位置：被覆盖时为实心。采样模式是标准模式：Direct3D 公布的数值按 y 向上使用，与 Mesa 的 llvmpipe 相同（OpenGL 不规定采样位置），所以这里的 4× 模式是 Direct3D 图示的上下镜像。
+pixels-mip-pyramid = mipmap 金字塔
+pixels-every-level-of-the-texture = 同时显示纹理的所有层级：每一层是上一层的 2×2 盒式滤波。
+pixels-variable-picture = 变量图
+pixels-the-shader-panel-s-watch = 着色器面板的整帧监视（或开销视图）画在这里，代替缓冲：数值用色带表示，深蓝最小、黄色最大；条件成立处为黄色；灰色棋盘格是没有片元执行该行之处。悬停可看某个像素的值。
+pixels-fit = 适应窗口
+pixels-zoom-to-fit-double-click = 缩放以适应（双击图像）
+pixels-linear-eye-distance = 线性：相机距离
+pixels-z-w-is-not-linear = z_w 与距离不成线性：d = 2fn/((f+n) − z_ndc·(f−n))。[0, 1] 的大部分分给了视锥体的近处。
+pixels-black-at = 黑：
+pixels-white-at = 白：
+pixels-auto-range = 自动范围
+pixels-pixel-view = 像素视图
+
+## src/app/views/projector.rs
+
+projector-point-light = 点光源
+projector-spotlight = 聚光灯
+projector-directional-light = 平行光
+
+## src/app/views/shader.rs
+
+shader-apply = 应用
+shader-compile-and-draw-with-these = 编译并用这些着色器绘制（Ctrl+Enter）
+shader-save = 保存
+shader-writes-shader-vert-and-shader = 把 shader.vert 和 shader.frag 写入导出文件夹；当前步骤运行 inside 或 depth_test 函数时，还写入 inside.glsl 或 depth_test.glsl（在浏览器中：下载它们）。课程用 shader = {"{"} vertex = "shader.vert", fragment = "shader.frag", inside = "inside.glsl" {"}"} 读取它们。
+shader-saved = 已保存：
+shader-source = ：源代码
+shader-back-to-your-code = ← 回到你的代码
+shader-puts-back-the-code-you = 恢复被 pipelens 自带着色替换之前你的代码。
+shader-pipelens-own = pipelens 自带
+shader-start-again-from-pipelens-own = 从 pipelens 针对当前设置的自带着色（GLSL 写成）重新开始（无光照；平面；Gouraud；Phong 着色，n·h 或 r·v；凹凸或法线贴图）：画出的像素相同。平面或 Gouraud 着色配 r·v、凹凸贴图配 r·v 以及镜面没有对应的着色器：此时用逐像素 Blinn-Phong。你的代码仍可一键恢复（回到你的代码）。
+shader-the-rasterizer-calls-it-for = 光栅化器对三角形包围盒内的每个采样点调用它：p 是采样点，a、b、c 是顶点（窗口像素坐标，y 向上，逆时针）。它代替 pipelens 的边函数 E_i(p) ≥ 0 及左上规则来决定覆盖。
+shader-the-rasterizer-calls-it-for-2 = 光栅化器对三角形覆盖的每个采样点调用它：z 是三角形在该处的窗口深度（在 [0, 1] 内），stored 是深度缓冲中已存的值（尚未绘制处为 1）。返回 true 则把 z 和该三角形写入采样点。它代替设置中的深度比较（less：z < stored）。
+shader-a-b-zier-curve-s = 贝塞尔曲线的绘制对曲线上的每个点调用它（t 从 0 到 1 取 161 个值）：p0 … p3 是控制点，在曲线所在平面内。它代替 pipelens 自己的 b(t) = Σ B_i³(t)·P_i。
+shader-the-shadow-pass-calls-it = 阴影绘制每帧调用它一次：light 是点光源相对于接收阴影的平面的位置，平面取为 y = 0。每个阴影物体都用它代替 pipelens 的 M_shadow = T(l)·M_p·T(−l) 绘制；它的任何正倍数投下同样的阴影。
+shader-a-b-zier-patch-s = 贝塞尔曲面片的绘制对曲面网格的每个顶点调用它（(u, v) 在 0 到 1 之间取 25 × 25 个值）：p[4i + j] 是控制点 P_ij，第 i 行沿 v，第 j 列沿 u。它代替 pipelens 自己的 b(u, v) = Σ Σ B_i³(v)·B_j³(u)·P_ij；曲面仍用 pipelens 的精确法线。
+shader-inside-test = 内部测试 inside
+shader-depth-test = 深度测试 depth_test
+shader-de-casteljau = de Casteljau 算法
+shader-shadow-matrix = 阴影矩阵 shadow_matrix
+shader-b-zier-patch = 贝塞尔曲面片 bezier_patch
+shader-vertex-shader = 顶点着色器
+shader-fragment-shader = 片元着色器
+shader-compiles-but-the-run-stopped = 可以编译，但运行中止；画面保持上一次成功的结果：
+shader-compiled-the-pipeline-calls-these = 已编译：管线调用这些函数来代替它自己的实现（把鼠标停在标签上可看到何时调用、代替什么）；着色仍由 pipelens 完成。
+shader-compiled-the-picture-is-drawn = 已编译：画面由这些着色器绘制。
+shader-the-picture-is-drawn-by = 画面由 pipelens 自带的着色绘制：按“应用”（Ctrl+Enter）或编辑后，改用这些着色器绘制。
+shader-does-not-compile-the-last = 无法编译：画面保持上一次成功的结果。
+
+## src/app/views/watch_list.rs
+
+watch-list-no-run-is-kept-here = 这里没有保存的运行：请检查一个像素或选择一个顶点
+watch-list-watch-list = 监视列表
+watch-list-after-line = 在此行之后：
+watch-list-take-it-off-the-list = 从列表中移除
+watch-list-up-to-this-step-the = 到此步为止，这次运行尚未执行此行
+watch-list-add = 添加：
+watch-list-an-expression-e-g-dot = 表达式，例如 dot(n, l)
+watch-list-any-expression-of-this-shader = 此着色器中的任意表达式，在所示运行中于此步所在行之后读取；按 Enter 添加。
+watch-list-watch = ＋ 监视
+
+## src/app/views/watch_picture.rs
+
+watch-picture-watch-over-the-frame = 整帧监视：
+watch-picture-any-expression-of-your-fragment = 片元着色器中的任意表达式，在该行执行之后读取，每个像素一个值：数值用色带表示（深蓝最小，黄色最大），向量显示为颜色或某一分量，条件显示其成立之处。灰色棋盘格：那里没有片元执行该行。
+watch-picture-any-expression-of-your-vertex = 顶点着色器中的任意表达式，在每个顶点执行该行之后读取，再像 varying 一样送到每个像素：在三角形上用透视校正的权重插值，(Σ λᵢ·aᵢ/wᵢ)/(Σ λᵢ/wᵢ)；int 与 bool 按 GLSL 的规定 flat 传递，取三角形最后一个顶点的值。数值用色带表示（深蓝最小，黄色最大），向量显示为颜色或某一分量，条件显示其成立之处。灰色棋盘格：那里三角形有顶点没有执行该行。
+watch-picture-e-g-dot-n-l = 例如 dot(n, l) < 0.0
+watch-picture-after-line = 在此行之后：
+watch-picture-the-step-s = 当前步的行
+watch-picture-watch-after-the-line-of = 在调试器当前步所在行之后监视。
+watch-picture-show = 显示
+watch-picture-stop = 停止
+watch-picture-cost-the-steps-each-fragment = 开销：每个片元执行的步数
+watch-picture-at-each-pixel-how-many = 每个像素上，它的片元执行了片元着色器的多少步（调试器逐步执行的那些步：赋值、分支、循环判断与迭代、调用、返回）：循环次数多或分支工作多的地方更亮。深蓝最少，黄色最多。
+watch-picture-cannot-watch = 无法监视：
+watch-picture-no-triangle-of-this-frame = 此帧没有哪个三角形的三个顶点都执行了该行。
+watch-picture-no-fragment-of-this-frame = 此帧没有片元执行该行。
+watch-picture-steps = 步
+watch-picture-no-fragment-of-yours-here = 这里没有你的片元
+watch-picture-a-corner-of-the-triangle = 这里三角形有顶点没有执行该行
+watch-picture-the-line-did-not-run = 这里没有执行该行
+watch-picture-pixel = 像素
+watch-picture-after-line-2 = 在行
+watch-picture-as-colour = 显示为颜色
+watch-picture-true = 成立
+watch-picture-false = 不成立
+watch-picture-first-where-it-holds = 第一个成立之处 ▶
+watch-picture-inspects-the-first-pixel-where = 检查从画面顶部读起第一个条件成立的像素，并在被监视的行显示它的运行过程：在整帧上的条件断点。
+watch-picture-x-red-y-green-z = x → 红，y → 绿，z → 蓝，各自截取到 [0, 1]
+watch-picture-not-run = 未执行
+
+## src/app/window.rs
+
+window-parameters = 参数
+window-rendering = 渲染中…
+
+## src/bench/handouts.rs
+
+handouts-en = zh
+
+## src/cli/grade.rs
+
+grade-pipelens-failed-while-checking-this = pipelens 在检查这份作业时出错（这是 pipelens 的缺陷，不是作业的问题）：请报告
+grade-student = 学生
+grade-step = 步骤
+grade-passed = 通过
+grade-matching = 一致
+grade-first-difference = 第一处差异
+grade-yes = 是
+grade-no = 否
+
+## src/export/handout_exercise.rs
+
+handout-exercise-the-shaders-this-step-runs = 本步骤运行的着色器（黄底：与上一步相比改动的行）：
+handout-exercise-pipelens-own-what-your-code = pipelens 自带的结果：你的代码要画出的画面
+
+## src/export/lesson.rs
+
+lesson-exercise = 练习：
+lesson-the-debugger-at-pixel = 调试器：像素
+
+## src/export/picture.rs
+
+picture-mip-level = mipmap 层级
+
+## src/observer.rs
+
+observer-eye = 视点
+
+## src/spaces.rs
+
+spaces-object-coordinates = 模型坐标
+spaces-world-coordinates = 世界坐标
+spaces-eye-coordinates-camera-at-the = 相机坐标：相机在原点，朝向 −z
+spaces-clip-coordinates-x-y-z = 裁剪坐标（齐次点的 x, y, z）
+spaces-normalized-device-coordinates-the-canonical = 规范化设备坐标：规范立方体 [−1, 1]³
+spaces-window-coordinates-0-w-0 = 屏幕坐标：[0, W] × [0, H] × [0, 1]
+
+## src/vocabulary/alt_text.rs
+
+alt-text-comma = ，
+alt-text-nothing-drawn = ：没有绘制任何物体。
+alt-text-list-comma = 、
+alt-text-colon = ：
+alt-text-full-stop = 。
+alt-text-ellipsis = ；……
+
+## src/vocabulary/buffers.rs
+
+buffers-colour = 颜色
+buffers-depth = 深度
+buffers-coverage = 覆盖率
+buffers-primitive-id = 图元编号
+buffers-barycentrics-perspective-correct = 重心坐标（透视校正）
+buffers-barycentrics-affine = 重心坐标（仿射）
+buffers-ambient-term = 环境光项
+buffers-diffuse-term = 漫反射项
+buffers-specular-term = 镜面反射项
+buffers-normal = 法向量
+buffers-texture-coordinates-u-v = 纹理坐标 (u, v)
+buffers-mip-level = Mipmap 层级
+buffers-texel-colour = 纹素颜色
+buffers-texture-footprint = 纹理覆盖区域（足迹）
+buffers-reflected-environment = 反射项（环境映射（反射映射））
+
+## src/vocabulary/comparison.rs
+
+comparison-flat-gouraud-phong = 平面 | Gouraud | Phong
+comparison-affine-perspective-correct = 仿射 | 透视校正
+comparison-1-4-msaa-4-ssaa = 1× | 4× MSAA | 4× SSAA
+comparison-nearest-bilinear-trilinear-anisotropic = 最近邻 | 双线性 | 三线性 | 各向异性
+comparison-trilinear-anisotropic-ripmap-summed-area = 三线性 | 各向异性 | ripmap | 求和面积表 | EWA
+comparison-flat = 平面
+comparison-affine = 仿射
+comparison-perspective-correct = 透视校正
+comparison-nearest = 最近邻
+comparison-bilinear = 双线性
+comparison-trilinear = 三线性
+comparison-anisotropic-16 = 各向异性 16×
+comparison-summed-area-table = 求和面积表
+
+## src/vocabulary/explain.rs
+
+explain-the-triangle-s-vertices-clip = 三角形的顶点：裁剪 → NDC → 屏幕
+explain-inside-test-edge-functions = 内部测试：边函数
+explain-interpolation-at-the-pixel-centre = 在像素中心插值
+explain-texture-lookup = 纹理查询
+explain-lighting = 光照
+explain-the-colour = 颜色
+explain-n-normal-l-to-the = n 法线 · l 指向光源 · v 指向视点
+
+
+## src/vocabulary/names.rs
+
+names-point-light = 点光源
+names-spotlight = 聚光灯
+names-directional-light = 平行光
+names-ambient-light = 环境光
+
+## src/vocabulary/profile.rs
+
+profile-position-along-the-yellow-line = 沿黄线的位置（像素）
+profile-intensity-rec-709-luminance = 亮度（Rec. 709）
+
+## src/vocabulary/stage.rs
+
+stage-model = 模型
+stage-world = 世界
+stage-view = 相机
+stage-clip = 裁剪
+stage-ndc = 规范化设备
+stage-viewport = 视口
+stage-rasterization = 光栅化
+stage-depth = 深度
+stage-shading = 着色
+stage-texturing = 纹理
+stage-output = 输出
+stage-object-coordinates-the-mesh-as = 模型坐标系：物体建模时的坐标，p = (x, y, z, 1)。
+stage-world-coordinates-m-p-with = 世界坐标系：M·p，M = T·Rz·Ry·Rx·S 把每个物体放入场景。
+stage-eye-coordinates-v-m-p = 相机坐标系：V·M·p，V = LookAt(eye, at, up)；相机位于原点，朝向 −z。
+stage-clip-coordinates-p-v-m = 裁剪坐标系：P·V·M·p（齐次坐标）。视见体内：−w ≤ x, y, z ≤ w。
+stage-normalized-device-coordinates-x-y = 规范化设备坐标：(x, y, z)/w，规范立方体 [−1, 1]³。
+stage-window-coordinates-x-w-x = 屏幕坐标：x_w = (x+1)·W/2，y_w = (y+1)·H/2，z_w = (z+1)/2。
+stage-which-samples-each-triangle-covers = 每个三角形覆盖哪些采样点：边函数、左上规则、重心坐标。
+stage-the-z-buffer-a-fragment = 深度缓冲（z-buffer）：片元比缓冲中的值更近时保留。
+stage-lighting-i-k-a-i = 光照：I = k_a·I_a + f_att·(k_d·I_d·max(l·n, 0) + k_s·I_s·max(n·h, 0)^β)，按面、按顶点或按像素计算。
+stage-texture-lookups-uv-interpolated-log = 纹理查询：插值得到 uv，λ = log₂(每像素纹素数) 选择 mipmap 层级；最近邻、双线性、三线性、各向异性。
+stage-the-final-colour-each-pixel = 最终颜色：每个像素为其采样点的平均。
+
+## src/export/handout.rs
+
+handout-teacher-s-key-every-answer = 教师版：印出全部答案
+handout-before-this-lesson = 先修课
+handout-dash = ——
+handout-stage = 阶段：
+handout-the-animation-as-the-app = 动画，与应用中播放的相同
+handout-the-animation-in-frames-from = 动画的分帧，从开始到结束：
+
+## src/export/handout_exercise.rs
+
+handout-exercise-question = 思考题：
+handout-exercise-answer = 答案：
+handout-exercise-show-the-answer = 显示答案
+handout-exercise-the-debugger-at-pixel = 调试器：像素
+handout-exercise-fragment = 片元
+handout-exercise-triangle = 三角形
+handout-exercise-discarded = 被丢弃
+handout-exercise-exercise = 练习：
+
+## src/vocabulary/explain.rs
+
+explain-behind-the-eye-no-ndc = 在视点之后：没有 NDC；裁剪先把三角形切开
+explain-the-triangle-crosses-the-view = 三角形跨越视见体：该像素位于裁剪后多边形的一部分中
+explain-snapped-to-1-256-pixel = 对齐到 1/256 像素，逆时针；v_k 是第 k 个顶点，c_k 是裁剪产生的角点
+explain-the-pixel-centre = 像素中心
+explain-depth-is-linear-in-screen = 深度在屏幕空间中是线性的
+explain-perspective-correct-interpolation = 透视校正插值
+explain-affine-interpolation-for-comparison = 仿射插值（用于对比）
+explain-derivatives-as-a-gpu-takes = 导数按 GPU 的做法求：在像素所在的 2×2 像素块（quad）内作差，取在其左下像素 (x_q, y_q) 处；块内四个像素共用这组导数和 λ
+explain-anisotropic-n-taps-along-the = 各向异性：沿覆盖区域（footprint）长轴取 N 个样本
+explain-0-magnification-level-0 = λ ≤ 0：放大，使用第 0 层
+explain-no-mipmap-level-0-always = 无 mipmap：总是第 0 层
+explain-ripmap-level-i-halves-u = ripmap：第 i 层在 u 方向减半、第 j 层在 v 方向减半，各自由覆盖区域包围盒的一条边决定；斜向覆盖区域的包围盒偏大
+explain-summed-area-table-the-exact = 求和面积表：覆盖区域包围盒内纹素的精确平均值，无论大小只需读表四次
+explain-ewa-the-texels-inside-the = EWA：覆盖区域椭圆内的纹素按高斯权重平均，在椭圆短轴约为一个纹素的层级上进行
+explain-nearest-the-texel-containing-the = 最近邻：包含该点的纹素
+explain-the-mean-of-the-taps = 各样本的平均
+explain-gouraud-lit-at-each-vertex = Gouraud：在每个顶点计算光照，再对颜色插值
+explain-flat-lit-once-per-face = 平面着色：每个面在其引发顶点（最后一个顶点）处用面法线计算一次光照
+explain-textured-the-texel-t-multiplies = 有纹理：纹素 T 乘以环境光项和漫反射项
+explain-bump-or-normal-mapping-tilts = 凹凸映射或法线映射使法线倾斜
+explain-a-mirror-it-reflects-its = 镜面：沿 r 反射环境，自身光照保留 1 − k
+explain-the-material-k-a-k = 材质：k_a、k_d、k_s 与高光指数 p
+explain-ambient-term = 环境光项
+explain-distance-attenuation = 距离衰减
+explain-the-spotlight-s-cone-half = 聚光灯的光锥，半角 θ
+explain-diffuse-term-lambert = 漫反射项（Lambert）
+explain-the-half-vector-between-l = l 与 v 之间的半程向量
+explain-the-mirror-direction-of-l = l 的镜面反射方向
+explain-specular-term-max-0-before = 镜面反射项；先取 max(·, 0) 再求幂，n·l ≤ 0 时为 0
+explain-the-sum-of-the-terms = 各项之和
+explain-the-colour-buffer-keeps-each = 颜色缓冲把每个采样点的颜色截断到 [0, 1] 再保存
+explain-the-8-bit-colour-in = 图像中的 8 位颜色
+
+## src/app/shortcuts.rs
+
+shortcuts-next-step-of-a-lesson = 课程的下一步（无课程时为下一阶段）
+shortcuts-previous-step-previous-stage = 上一步（上一阶段）
+shortcuts-play-or-pause-the-step = 播放或暂停本步动画（重放过渡）
+shortcuts-the-narration-card = 讲解卡片
+shortcuts-the-parameters-panel = 参数面板
+shortcuts-the-inspector-matrices-vertices-the = 检查器：矩阵、顶点、像素解释
+shortcuts-the-matrix-card-over-the = 几何视图上的矩阵卡片
+shortcuts-classroom-mode-large-type-the = 课堂模式：大字号，画面优先
+shortcuts-the-shader-editor-glsl = 着色器编辑器（GLSL）
+shortcuts-apply-the-shaders = 应用着色器
+shortcuts-the-lesson-editor-record-what = 课程编辑器：把屏幕内容录制为步骤，撰写文字，调整顺序
+shortcuts-the-lesson-editor-saves-its = 课程编辑器保存文件（要么完整写入，要么不写）
+shortcuts-the-lesson-editor-redoes = 课程编辑器重做
+shortcuts-the-lesson-editor-undoes = 课程编辑器撤销
+shortcuts-shader-debugger-next-step-a = 着色器调试器：下一步（整个执行调用）
+shortcuts-shader-debugger-one-step-back = 着色器调试器：后退一步
+shortcuts-shader-debugger-next-step-into = 着色器调试器：下一步，进入调用
+shortcuts-shader-debugger-out-of-this = 着色器调试器：跳出此函数
+shortcuts-shader-debugger-run-to-the = 着色器调试器：运行到光标所在行
+shortcuts-shader-debugger-on-to-the = 着色器调试器：继续到下一个断点
+shortcuts-shader-debugger-back-to-the = 着色器调试器：倒退到上一个断点
+shortcuts-shader-debugger-a-breakpoint-on = 着色器调试器：在光标所在行设置或取消断点；单击行号亦可
+shortcuts-full-screen = 全屏
+shortcuts-text-size = 字号
+shortcuts-the-keyboard-to-the-picture = 键盘焦点移到画面，再移到旁边的画面，再回到步骤（Tab 键也能到达每个画面）
+shortcuts-this-list = 本列表
+shortcuts-wheel-drag = 滚轮、拖动
+shortcuts-zoom-at-the-cursor-pan = 以光标为中心缩放、平移（几何视图：环绕）
+shortcuts-click = 单击
+shortcuts-select-a-pixel-or-a = 选择像素或顶点
+shortcuts-in-the-picture-the-inspected = 画面中：移动所查看的像素（Shift：10 个像素）；几何视图或观察者视图环绕（Shift：10 倍）
+shortcuts-in-the-picture-zoom = 画面中：缩放
+shortcuts-in-a-geometry-view-the = 几何视图中：上一个或下一个顶点（Shift：跳 10 个）
+shortcuts-the-keyboard-back-from-the = 键盘离开画面或着色器源码（源码中 Tab 用于缩进）：方向键重新用于换步
+
+## src/app/views/debugger.rs
+
+debugger-back = ← 后退
+debugger-step-back = 后退一步
+debugger-over = → 跳过
+debugger-step-over-a-call-run = 单步跳过（整个执行调用）
+debugger-into = ↓ 进入
+debugger-step-into-a-call = 单步进入调用
+debugger-out = ↑ 跳出
+debugger-step-out-of-this-function = 单步跳出此函数
+debugger-to-cursor = 到光标
+debugger-run-to-the-cursor-s = 运行到光标所在行
+debugger-breakpoint = ◀ 断点
+debugger-back-to-the-previous-breakpoint = 倒退到上一个断点
+debugger-breakpoint-2 = 断点 ▶
+debugger-on-to-the-next-breakpoint = 继续到下一个断点
+
+## src/spaces.rs
+
+spaces-solid = 实线
+spaces-dashed = 虚线
+spaces-dotted = 点线
+spaces-dash-dot = 点划线
+spaces-dash-dot-dot = 双点划线
+spaces-short-dashes = 短虚线
+spaces-fate-drawn = 绘制
+spaces-fate-clipped = 被裁剪
+spaces-fate-outside = 在视见体外
+spaces-fate-culled = 被剔除
+spaces-fate-degenerate = 退化
+spaces-fate-not-finite = 非有限值（NaN 或 ∞）
+spaces-fate-and-line = { $fate }：{ $line }
+
+## src/vocabulary/alt_text.rs (with variables)
+
+alt-text-buffer = { $name }缓冲
+alt-text-size = ，{ $w }×{ $h } 像素
+alt-text-beside = （另有：{ $others }）
+alt-text-at-pixel = {" "}在像素 ({ $x }, { $y }) 处，{ $object }的三角形 { $triangle }
+alt-text-stage = { $stage }阶段
+watch-picture-after-vertex-line = 顶点着色器第 { $line } 行之后，经插值
+depth-and-mips-curve-alt = 深度曲线：窗口深度 z_w 随视点距离 d 变化，近 { $near }，远 { $far }
