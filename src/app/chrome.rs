@@ -45,11 +45,26 @@ impl PipelensApp {
         });
     }
 
-    /// A button for each language of the catalogs other than `lang`, named in its own words;
-    /// the one clicked.
+    /// The languages to choose from: every catalog's, then those the open lesson gives beyond
+    /// them (named by their tags; their interface is English).
+    fn languages(&self) -> Vec<Lang> {
+        let mut all = Lang::all();
+        if let Some(p) = &self.session.lesson {
+            for tag in p.lesson.title.others.keys() {
+                let l = Lang::uncatalogued(tag);
+                if !all.contains(&l) {
+                    all.push(l);
+                }
+            }
+        }
+        all
+    }
+
+    /// A button for each language of [`Self::languages`] other than `lang`, named in its own
+    /// words; the one clicked.
     pub(super) fn language_list(&self, ui: &mut egui::Ui, lang: Lang) -> Option<Lang> {
         let mut chosen = None;
-        for l in Lang::all().into_iter().filter(|l| *l != lang) {
+        for l in self.languages().into_iter().filter(|l| *l != lang) {
             if ui.button(l.name()).clicked() {
                 chosen = Some(l);
             }
@@ -58,9 +73,14 @@ impl PipelensApp {
     }
 
     /// The language switch and the classroom toggle. The switch names the other language
-    /// where the catalogs hold two, and is a menu of them all where they hold more.
+    /// where there are two ([`Self::languages`]), and is a menu of them all where there are
+    /// more.
     fn language_and_classroom(&mut self, ui: &mut egui::Ui, lang: Lang) {
-        let others: Vec<Lang> = Lang::all().into_iter().filter(|l| *l != lang).collect();
+        let others: Vec<Lang> = self
+            .languages()
+            .into_iter()
+            .filter(|l| *l != lang)
+            .collect();
         let mut chosen = None;
         if let [other] = others[..] {
             if ui

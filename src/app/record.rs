@@ -39,10 +39,7 @@ pub fn recorded_step(session: &Session) -> Option<Step> {
         (None, false) => Layout::Single,
     };
     Some(Step {
-        title: Text {
-            en: sel.stage.name(Lang::EN).to_owned(),
-            zh: sel.stage.name(Lang::ZH).to_owned(),
-        },
+        title: Text::new(sel.stage.name(Lang::EN), sel.stage.name(Lang::ZH)),
         narration: Text::default(),
         stage: Some(sel.stage),
         layout,

@@ -14,16 +14,21 @@ pub(super) fn parse_stage(s: &str) -> Result<crate::vocabulary::Stage, String> {
 }
 
 /// A language by its BCP 47 tag: one of the catalogs in `locales/` (`en`, `zh-Hans`; `zh` for
-/// short), or the pseudo-locale `en-XA`.
+/// short), the pseudo-locale `en-XA`, or any other tag — a lesson's own language, whose
+/// interface is English.
 pub(super) fn parse_lang(s: &str) -> Result<crate::vocabulary::Lang, String> {
     use crate::vocabulary::{Lang, lang::PSEUDO};
-    Lang::find(s).ok_or_else(|| {
-        let found: Vec<&str> = Lang::all().iter().map(|l| l.tag()).collect();
-        format!(
-            "no catalog for \"{s}\": the languages found are {} (and the pseudo-locale {PSEUDO})",
-            found.join(", ")
-        )
-    })
+    if let Some(l) = Lang::find(s) {
+        return Ok(l);
+    }
+    if s.parse::<unic_langid::LanguageIdentifier>().is_ok() {
+        return Ok(Lang::uncatalogued(s));
+    }
+    let found: Vec<&str> = Lang::all().iter().map(|l| l.tag()).collect();
+    Err(format!(
+        "\"{s}\" is not a language tag (BCP 47, such as fr or pt-BR); the catalogs found are {} (and the pseudo-locale {PSEUDO})",
+        found.join(", ")
+    ))
 }
 
 /// A window pixel `X,Y` (y up).
@@ -92,7 +97,21 @@ impl FromStr for Size {
 
 #[cfg(test)]
 mod tests {
-    use super::Size;
+    use super::{Size, parse_lang};
+
+    #[test]
+    fn a_language_is_a_catalogs_tag_or_any_other_tag() {
+        use crate::vocabulary::Lang;
+        assert_eq!(parse_lang("zh"), Ok(Lang::ZH));
+        assert_eq!(parse_lang("en"), Ok(Lang::EN));
+        assert_eq!(parse_lang("en-XA").map(Lang::tag), Ok("en-XA"));
+        // A lesson's own language, with no catalog: kept by its tag.
+        let fr = parse_lang("fr").expect("a tag");
+        assert_eq!((fr.tag(), fr.has_catalog()), ("fr", false));
+        let refused = parse_lang("fr!").expect_err("not a tag");
+        assert!(refused.contains("not a language tag"), "{refused}");
+        assert!(refused.contains("en, zh-Hans"), "{refused}");
+    }
 
     #[test]
     fn sizes_parse_and_reject() {

@@ -328,6 +328,18 @@ fn open_app(cli: &Cli) -> Result<ExitCode> {
     .map_err(|d| anyhow::anyhow!("{d}"))?;
     let source = crate::app::session::source_name(cli.scene.as_ref());
     let lang = cli.lang.unwrap_or_else(crate::app::initial_lang);
+    let speaks = |l: &lesson::Lesson| l.title.others.keys().any(|t| lang.matches(t));
+    if !lang.has_catalog() && !matches!(&doc, lesson::Document::Lesson(l) if speaks(l)) {
+        let found: Vec<&str> = crate::vocabulary::Lang::all()
+            .iter()
+            .map(|l| l.tag())
+            .collect();
+        eprintln!(
+            "pipelens: no catalog and no lesson words in \"{}\": it is shown in English (the catalogs found: {})",
+            lang.tag(),
+            found.join(", ")
+        );
+    }
     let start = crate::app::Start {
         lang,
         stage: cli.stage,

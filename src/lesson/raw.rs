@@ -402,15 +402,16 @@ pub struct RawMeta {
     pub prerequisites: Vec<Spanned<String>>,
 }
 
-/// Text in both languages: `{ en = "…", zh = "…" }`.
+/// Text in English and Chinese, and in any other language by its BCP 47 tag:
+/// `{ en = "…", zh = "…", fr = "…" }`. (Its other keys are its languages, so it cannot deny
+/// unknown fields; `validate` checks that each is a well-formed tag.)
 #[derive(Debug, Deserialize)]
-#[serde(
-    deny_unknown_fields,
-    expecting = "a text in both languages, { en = \"…\", zh = \"…\" }"
-)]
+#[serde(expecting = "a text in both languages, { en = \"…\", zh = \"…\" }")]
 pub struct RawText {
     pub en: String,
     pub zh: String,
+    #[serde(flatten)]
+    pub others: std::collections::BTreeMap<String, String>,
 }
 
 /// One `[[steps]]` entry.

@@ -230,10 +230,12 @@ pub fn view_items(step: &Step) -> Vec<(&'static str, Item)> {
     items
 }
 
-/// `{ en = "…", zh = "…" }`, without a language left empty.
+/// `{ en = "…", zh = "…" }` and any other language the text has, without a language left
+/// empty.
 pub(super) fn text(t: &Text) -> InlineTable {
     let mut out = InlineTable::new();
-    for (key, words) in [("en", &t.en), ("zh", &t.zh)] {
+    let others = t.others.iter().map(|(k, v)| (k.as_str(), v));
+    for (key, words) in [("en", &t.en), ("zh", &t.zh)].into_iter().chain(others) {
         if !words.is_empty() {
             out.insert(key, words.as_str().into());
         }

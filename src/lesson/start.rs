@@ -159,10 +159,7 @@ fn scene_has_shaders(doc: &toml_edit::DocumentMut) -> bool {
 
 /// `{ en = "…", zh = "…" }`.
 fn text(en: &str, zh: &str) -> toml_edit::InlineTable {
-    record::text(&Text {
-        en: en.to_owned(),
-        zh: zh.to_owned(),
-    })
+    record::text(&Text::new(en, zh))
 }
 
 /// Takes every comment out of a document, its blank lines kept.

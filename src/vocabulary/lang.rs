@@ -11,7 +11,7 @@
 //!
 //! A lesson's own words are a [`Text`].
 
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 use std::sync::OnceLock;
 
 use fluent_bundle::concurrent::FluentBundle;
@@ -193,6 +193,29 @@ impl Lang {
             .map(|c| Self(c.tag))
     }
 
+    /// A language with no catalog, by its tag (a lesson's own language, `fr`): its interface
+    /// is English, a lesson's words its own where the lesson gives them. A catalog's tag
+    /// gives that catalog's language.
+    #[must_use]
+    pub fn uncatalogued(tag: &str) -> Self {
+        static TAGS: std::sync::Mutex<Vec<&'static str>> = std::sync::Mutex::new(Vec::new());
+        if let Some(l) = Self::find(tag) {
+            return l;
+        }
+        let mut tags = TAGS
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        let kept = match tags.iter().find(|t| t.eq_ignore_ascii_case(tag)) {
+            Some(t) => *t,
+            None => {
+                let t: &'static str = Box::leak(tag.to_owned().into_boxed_str());
+                tags.push(t);
+                t
+            }
+        };
+        Self(kept)
+    }
+
     /// Every language with a catalog, English first; the pseudo-locale is not among them.
     #[must_use]
     pub fn all() -> Vec<Self> {
@@ -209,10 +232,27 @@ impl Lang {
         self.0
     }
 
-    /// The language's own name, for the switch (its catalog's `language-name`).
+    /// The language's own name, for the switch (its catalog's `language-name`; its tag where
+    /// it has no catalog).
     #[must_use]
     pub fn name(self) -> &'static str {
-        self.t("language-name")
+        match self.catalog() {
+            Some(_) => self.t("language-name"),
+            None => self.0,
+        }
+    }
+
+    /// Whether a lesson's text under `tag` is in this language: the same tag (letter case
+    /// aside), or its language alone (`fr` for `fr-CA`).
+    #[must_use]
+    pub fn matches(self, tag: &str) -> bool {
+        tag.eq_ignore_ascii_case(self.0) || tag.eq_ignore_ascii_case(primary(self.0))
+    }
+
+    /// Whether the interface has a catalog in this language (else it is in English).
+    #[must_use]
+    pub fn has_catalog(self) -> bool {
+        self.catalog().is_some()
     }
 
     /// Whether this is Chinese, whose words are set without spaces between them.
@@ -301,24 +341,49 @@ pub fn english_ids() -> Vec<&'static str> {
         .unwrap_or_default()
 }
 
-/// A lesson's words, in English and Chinese.
+/// A lesson's words: English and Chinese, which every lesson has, and any other language a
+/// lesson gives by its BCP 47 tag (`fr = "…"`).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Text {
     /// English.
     pub en: String,
     /// Chinese.
     pub zh: String,
+    /// Every other language: its tag as the lesson writes it, and the text.
+    pub others: BTreeMap<String, String>,
 }
 
 impl Text {
-    /// The text in `lang`: Chinese for Chinese, English for every other language.
+    /// English and Chinese.
+    #[must_use]
+    pub fn new(en: impl Into<String>, zh: impl Into<String>) -> Self {
+        Self {
+            en: en.into(),
+            zh: zh.into(),
+            others: BTreeMap::new(),
+        }
+    }
+
+    /// The text in `lang`: Chinese for Chinese; another language's own where the lesson has
+    /// it (its tag, or its language alone: `fr` for `fr-CA`); English for the rest.
     #[must_use]
     pub fn get(&self, lang: Lang) -> &str {
         if lang.is_chinese() {
-            &self.zh
-        } else {
-            &self.en
+            return &self.zh;
         }
+        self.other(lang).unwrap_or(&self.en)
+    }
+
+    /// The text of a language other than English and Chinese, by tag (letter case aside) or
+    /// by the tag's language alone.
+    fn other(&self, lang: Lang) -> Option<&str> {
+        let exact = self
+            .others
+            .iter()
+            .find(|(k, _)| k.eq_ignore_ascii_case(lang.0));
+        exact
+            .or_else(|| self.others.iter().find(|(k, _)| lang.matches(k)))
+            .map(|(_, v)| v.as_str())
     }
 }
 

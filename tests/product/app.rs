@@ -372,3 +372,39 @@ pub(crate) fn sized_lesson_harness(
             PipelensApp::new(session),
         )
 }
+
+/// A lesson in a language with no catalog: the switch lists it beside the catalogs' (a menu,
+/// as there are three), and choosing it shows the lesson's own words in it and the interface
+/// in English.
+#[test]
+fn a_lesson_in_another_language_is_offered_and_shown_in_it() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let path = dir.path().join("t.toml");
+    std::fs::write(
+        &path,
+        "[lesson]\nid = \"t\"\n\
+         title = { en = \"T\", zh = \"题\", fr = \"Titre\" }\n\
+         summary = { en = \"S\", zh = \"概\", fr = \"Résumé\" }\n\n\
+         [[scene.objects]]\nname = \"cube\"\nmesh = \"cube\"\n\n\
+         [[steps]]\ntitle = { en = \"The cube\", zh = \"立方体\", fr = \"Le cube\" }\n\
+         narration = { en = \"A cube.\", zh = \"一个立方体。\", fr = \"Un cube.\" }\n",
+    )
+    .expect("written");
+    let mut h = lesson_harness(Some(path));
+    h.run();
+    assert!(h.query_by_label_contains("1. The cube").is_some());
+    h.get_by_label("English ▾").click();
+    h.run();
+    assert!(
+        h.query_by_label("中文").is_some(),
+        "the catalogs' languages are listed"
+    );
+    h.get_by_label("fr").click();
+    h.run();
+    assert_eq!(h.state().session.lang.tag(), "fr");
+    assert!(h.query_by_label_contains("1. Le cube").is_some());
+    assert!(h.query_by_label_contains("1. The cube").is_none());
+    // The interface has no French catalog: it is in English.
+    assert!(h.query_by_label("Next step").is_some());
+    assert!(h.query_by_label("Step 1 / 1").is_some());
+}

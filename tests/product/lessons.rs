@@ -501,3 +501,43 @@ fn the_objects_a_step_compares_are_named_in_the_picture() {
     );
     assert!(named("lessons/15-surface-detail.toml", 0, Lang::EN).is_empty());
 }
+
+/// A lesson gives any language beside `en` and `zh` by its BCP 47 tag: its words show in that
+/// language (found by its language alone too, `fr` for `fr-CA`), in English where a text lacks
+/// it, and the lesson's warnings name the incomplete language at the first text without it.
+#[test]
+fn a_lesson_speaks_any_language_and_an_incomplete_one_is_reported() {
+    let text = "[lesson]\nid = \"t\"\n\
+                title = { en = \"T\", zh = \"题\", fr = \"Titre\" }\n\
+                summary = { en = \"S\", zh = \"概\", fr = \"Résumé\" }\n\n\
+                [[scene.objects]]\nname = \"cube\"\nmesh = \"cube\"\n\n\
+                [[steps]]\ntitle = { en = \"a\", zh = \"甲\", fr = \"le a\" }\n\
+                narration = { en = \"b\", zh = \"乙\" }\n";
+    let lesson = parse_lesson(text, "t.toml", Path::new(".")).unwrap_or_else(|e| panic!("{e}"));
+    let fr = Lang::uncatalogued("fr");
+    assert_eq!(lesson.title.get(fr), "Titre");
+    assert_eq!(lesson.summary.get(fr), "Résumé");
+    assert_eq!(lesson.steps[0].title.get(fr), "le a");
+    assert_eq!(
+        lesson.steps[0].title.get(Lang::uncatalogued("fr-CA")),
+        "le a"
+    );
+    assert_eq!(lesson.steps[0].narration.get(fr), "b");
+    assert_eq!(lesson.steps[0].title.get(Lang::ZH), "甲");
+    assert_eq!(lesson.steps[0].title.get(Lang::EN), "a");
+    // Four texts, one without French: the step's narration, line 12, its `{` at column 13.
+    crate::support::assert_found(
+        &lesson.warnings,
+        12,
+        13,
+        "the language `fr` is incomplete: 1 of the lesson's 4 texts lack it",
+    );
+    assert_eq!(lesson.warnings.len(), 1, "{:?}", lesson.warnings);
+    // French everywhere: no warning.
+    let whole = text.replace("乙\" }", "乙\", fr = \"le b\" }");
+    let lesson = parse_lesson(&whole, "t.toml", Path::new(".")).unwrap_or_else(|e| panic!("{e}"));
+    assert!(lesson.warnings.is_empty(), "{:?}", lesson.warnings);
+    // A key that is no language tag is an error where the text is.
+    let typo = text.replace("fr = \"le a\"", "\"fr!\" = \"le a\"");
+    assert_error(&typo, 11, 9, "`fr!`, which is not a language tag");
+}

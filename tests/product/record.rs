@@ -239,10 +239,7 @@ fn the_state_on_screen_is_recorded_as_a_step() {
     assert!(refused.contains("English and Chinese"), "{refused}");
     // As the teacher words it.
     let mut step = step;
-    step.narration = pipelens::vocabulary::Text {
-        en: "The base turned to 50°.".to_owned(),
-        zh: "支架转到 50°。".to_owned(),
-    };
+    step.narration = pipelens::vocabulary::Text::new("The base turned to 50°.", "支架转到 50°。");
     // After the step on screen (the first), before the second and its comment.
     let out = pipelens::lesson::record::insert_step(&text, 1, &step).expect("written");
     let again = pipelens::lesson::script::parse_lesson(

@@ -214,10 +214,7 @@ fn first_step(session: &Session) -> Result<lesson::Step, String> {
         .cloned()
         .collect();
     step.set = lesson::param::differences(&player.lesson.scene, &start);
-    let words = |[en, zh]: [&str; 2]| Text {
-        en: en.to_owned(),
-        zh: zh.to_owned(),
-    };
+    let words = |[en, zh]: [&str; 2]| Text::new(en, zh);
     step.title = words(lesson::PLACEHOLDER_STEP_TITLE);
     step.narration = words(lesson::PLACEHOLDER_NARRATION);
     Ok(step)

@@ -415,10 +415,7 @@ impl Draft {
                 .unwrap_or_default()
                 .to_owned()
         };
-        Text {
-            en: read("en"),
-            zh: read("zh"),
-        }
+        Text::new(read("en"), read("zh"))
     }
 
     /// The words `which` of step `at` (or of the lesson) in `lang` are `words`. Typing on in the

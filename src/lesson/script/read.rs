@@ -139,6 +139,7 @@ pub fn parse_lesson(text: &str, file: &str, base: &Path) -> Result<Lesson, Diagn
             steps.push(c.step(s, &mut spec, base));
         }
     }
+    warnings.extend(c.incomplete_languages());
     let mut found = c.found;
     let scene = match scene {
         Ok(s) => s,

@@ -87,6 +87,8 @@ pub(super) struct Checker<'a> {
     pub(super) text: &'a str,
     pub(super) file: &'a str,
     pub(super) found: Vec<Diagnostic>,
+    /// Each text read: where it is, its key, and the languages it gives beyond `en` and `zh`.
+    pub(super) texts: Vec<(Range<usize>, String, Vec<String>)>,
 }
 
 impl<'a> Checker<'a> {
@@ -99,10 +101,53 @@ impl<'a> Checker<'a> {
                 format!("`{key}` needs both `en` and `zh` text, neither empty"),
             );
         }
-        Text {
-            en: r.en.trim().to_owned(),
-            zh: r.zh.trim().to_owned(),
+        let mut text = Text::new(r.en.trim(), r.zh.trim());
+        for (tag, words) in &r.others {
+            if tag.parse::<unic_langid::LanguageIdentifier>().is_err() {
+                self.error(
+                    t.span(),
+                    format!(
+                        "`{key}` has `{tag}`, which is not a language tag: a text takes `en`, `zh` and other languages by their BCP 47 tags (`fr`, `pt-BR`)"
+                    ),
+                );
+            } else if !words.trim().is_empty() {
+                text.others.insert(tag.clone(), words.trim().to_owned());
+            }
         }
+        self.texts.push((
+            t.span(),
+            key.to_owned(),
+            text.others.keys().cloned().collect(),
+        ));
+        text
+    }
+
+    /// A warning for each language beyond English and Chinese that some of the lesson's texts
+    /// give and others lack (those are shown in English): at the first text that lacks it.
+    pub(in crate::lesson) fn incomplete_languages(&self) -> Vec<Diagnostic> {
+        let mut tags: Vec<&String> = self.texts.iter().flat_map(|(_, _, t)| t).collect();
+        tags.sort_unstable();
+        tags.dedup();
+        tags.into_iter()
+            .filter_map(|tag| {
+                let lacking: Vec<&(Range<usize>, String, Vec<String>)> =
+                    self.texts.iter().filter(|(_, _, t)| !t.contains(tag)).collect();
+                let (span, key, _) = lacking.first()?;
+                Some(
+                    Diagnostic::at(
+                        self.file,
+                        self.text,
+                        span.clone(),
+                        format!(
+                            "the language `{tag}` is incomplete: {} of the lesson's {} texts lack it, the first this `{key}` (a text without it is shown in English)",
+                            lacking.len(),
+                            self.texts.len()
+                        ),
+                    )
+                    .warning(),
+                )
+            })
+            .collect()
     }
 
     /// A checker of `text`, named `file` in messages, with nothing found yet.
@@ -111,6 +156,7 @@ impl<'a> Checker<'a> {
             text,
             file,
             found: Vec::new(),
+            texts: Vec::new(),
         }
     }
 
