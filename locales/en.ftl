@@ -877,3 +877,46 @@ alt-text-at-pixel = {" "}At pixel ({ $x }, { $y }), { $object }'s triangle { $tr
 alt-text-stage = { $stage } stage
 watch-picture-after-vertex-line = after line { $line } of the vertex shader, interpolated
 depth-and-mips-curve-alt = depth curve: window depth z_w against eye distance d from near { $near } to far { $far }
+
+## src/lab/words.rs: a lab's verdict
+
+lab-words-passed = Passed: all { $total } pixels match pipelens' own (each channel within { $tolerance }/255).
+lab-words-colours-differ = colours by up to { $largest }/255
+lab-words-covered-differently =
+    { $n ->
+        [one] 1 is covered differently
+       *[other] { $n } are covered differently
+    }
+lab-words-at-another-depth =
+    { $n ->
+        [one] 1 lies at another depth
+       *[other] { $n } lie at another depth
+    }
+lab-words-another-triangle =
+    { $n ->
+        [one] 1 belongs to another triangle
+       *[other] { $n } belong to another triangle
+    }
+# Between the clauses of what differs, and between a matrix's differing entries.
+lab-words-clause-separator = {"; "}
+lab-words-not-yet =
+    Not yet: { $matching } of { $total } pixels match; { $differ ->
+        [one] 1 differs
+       *[other] { $differ } differ
+    } ({ $how }). The first, reading from the top, is { $first }.
+lab-words-at-the-pixel = At the inspected pixel your `{ $name }` (line { $line }) is { $yours }; pipelens' own shader has { $theirs }.
+lab-words-at-the-vertex = At vertex { $row } (a corner of the first wrong pixel's triangle) your vertex shader's `{ $name }` (line { $line }) is { $yours }; pipelens' own has { $theirs }.
+lab-words-not-normalized = {" "}Yours has length { $length }, pipelens' 1: is it normalized?
+lab-words-first-vertex = The first vertex off is row { $row }: your clip position { $yours }, pipelens' { $theirs }.
+lab-words-matrix-entry = row { $row }, column { $column } is { $yours } ({ $matrix } has { $theirs })
+lab-words-matrix-more = ; and { $more } more
+lab-words-matrix =
+    Your `{ $name }` (line { $line }) is pipelens' { $matrix } but for { $n ->
+        [one] one entry
+       *[other] { $n } entries
+    }: { $entries }{ $more }.
+lab-words-curve = curve
+lab-words-surface = surface
+lab-words-curve-passed = Passed: all { $total } points of your { $what } lie within { $tolerance } of pipelens' { $b }.
+lab-words-curve-first = {" "}The first, { $at }: yours { $yours }, pipelens' { $theirs }.
+lab-words-curve-not-yet = Not yet: { $matching } of { $total } { $what } points lie within { $tolerance } of pipelens' { $b } (the farthest is { $largest } away).{ $first }

@@ -876,3 +876,25 @@ alt-text-at-pixel = {" "}在像素 ({ $x }, { $y }) 处，{ $object }的三角�
 alt-text-stage = { $stage }阶段
 watch-picture-after-vertex-line = 顶点着色器第 { $line } 行之后，经插值
 depth-and-mips-curve-alt = 深度曲线：窗口深度 z_w 随视点距离 d 变化，近 { $near }，远 { $far }
+
+## src/lab/words.rs: a lab's verdict
+
+lab-words-passed = 通过：全部 { $total } 个像素与 pipelens 自带的一致（每个通道相差不超过 { $tolerance }/255）。
+lab-words-colours-differ = 颜色最多相差 { $largest }/255
+lab-words-covered-differently = { $n } 个覆盖不同
+lab-words-at-another-depth = { $n } 个深度不同
+lab-words-another-triangle = { $n } 个属于另一个三角形
+lab-words-clause-separator = ；
+lab-words-not-yet = 还没有通过：{ $total } 个像素中 { $matching } 个一致，{ $differ } 个不同（{ $how }）。从上往下读，第一个是 { $first }。
+lab-words-at-the-pixel = 在所检查的像素处，你的 `{ $name }`（第 { $line } 行）是 { $yours }；pipelens 自带的着色器得到 { $theirs }。
+lab-words-at-the-vertex = 在顶点 { $row }（第一个错误像素所在三角形的一个角）处，你的顶点着色器中的 `{ $name }`（第 { $line } 行）是 { $yours }；pipelens 自带的得到 { $theirs }。
+lab-words-not-normalized = 你的长度是 { $length }，pipelens 的是 1：它归一化了吗？
+lab-words-first-vertex = 第一个出错的顶点在第 { $row } 行：你的裁剪坐标 { $yours }，pipelens 的 { $theirs }。
+lab-words-matrix-entry = 第 { $row } 行第 { $column } 列是 { $yours }（{ $matrix } 中为 { $theirs }）
+lab-words-matrix-more = ；还有 { $more } 个
+lab-words-matrix = 你的 `{ $name }`（第 { $line } 行）与 pipelens 的 { $matrix } 有 { $n } 个元素不同：{ $entries }{ $more }。
+lab-words-curve = 曲线
+lab-words-surface = 曲面
+lab-words-curve-passed = 通过：你的{ $what }的全部 { $total } 个点与 pipelens 的 { $b } 相差都不超过 { $tolerance }。
+lab-words-curve-first = 第一个在 { $at }：你的 { $yours }，pipelens 的 { $theirs }。
+lab-words-curve-not-yet = 还没有通过：{ $total } 个{ $what }点中 { $matching } 个与 pipelens 的 { $b } 相差不超过 { $tolerance }（最远相差 { $largest }）。{ $first }

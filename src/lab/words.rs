@@ -2,7 +2,6 @@
 //! points) differ and where the first is, and what was found there — the variable, the vertex,
 //! the matrix entries. The card in the app and `pipelens grade` print the same sentences.
 
-use crate::vocabulary::Written;
 use pipeline::capture::Difference;
 use pipeline::shader::CurveDifference;
 
@@ -14,19 +13,11 @@ use crate::vocabulary::Lang;
 pub fn verdict(d: &Difference, lang: Lang) -> String {
     let tolerance = crate::vocabulary::short(d.criteria.tolerance, 1);
     if d.passed() {
-        return match lang.written() {
-            Written::English => format!(
-                "Passed: all {} pixels match pipelens' own (each channel within {tolerance}/255).",
-                d.total
-            ),
-            Written::Chinese => format!(
-                "通过：全部 {} 个像素与 pipelens 自带的一致（每个通道相差不超过 {tolerance}/255）。",
-                d.total
-            ),
-        };
+        return lang.t_with(
+            "lab-words-passed",
+            &[("total", &d.total), ("tolerance", &tolerance)],
+        );
     }
-    let differ = d.total - d.matching;
-    let largest = crate::vocabulary::short(d.largest, 0);
     let first = d
         .first
         .map(|(x, y)| format!("({x}, {y})"))
@@ -34,91 +25,51 @@ pub fn verdict(d: &Difference, lang: Lang) -> String {
     // What differs, each clause only where some pixel differs so.
     let mut how = Vec::new();
     if d.largest > d.criteria.tolerance {
-        how.push(match lang.written() {
-            Written::English => format!("colours by up to {largest}/255"),
-            Written::Chinese => format!("颜色最多相差 {largest}/255"),
-        });
+        let largest = crate::vocabulary::short(d.largest, 0);
+        how.push(lang.t_with("lab-words-colours-differ", &[("largest", &largest)]));
     }
-    let counted = |n: u64, one: &str, many: &str, zh: &str| match lang.written() {
-        Written::English if n == 1 => format!("1 {one}"),
-        Written::English => format!("{n} {many}"),
-        Written::Chinese => format!("{n} 个{zh}"),
-    };
-    if d.coverage_differs > 0 {
-        how.push(counted(
-            d.coverage_differs,
-            "is covered differently",
-            "are covered differently",
-            "覆盖不同",
-        ));
+    for (n, id) in [
+        (d.coverage_differs, "lab-words-covered-differently"),
+        (d.depth_differs, "lab-words-at-another-depth"),
+        (d.owner_differs, "lab-words-another-triangle"),
+    ] {
+        if n > 0 {
+            how.push(lang.t_with(id, &[("n", &n)]));
+        }
     }
-    if d.depth_differs > 0 {
-        how.push(counted(
-            d.depth_differs,
-            "lies at another depth",
-            "lie at another depth",
-            "深度不同",
-        ));
-    }
-    if d.owner_differs > 0 {
-        how.push(counted(
-            d.owner_differs,
-            "belongs to another triangle",
-            "belong to another triangle",
-            "属于另一个三角形",
-        ));
-    }
-    match lang.written() {
-        Written::English => format!(
-            "Not yet: {} of {} pixels match; {} ({}). The first, reading from the top, is {first}.",
-            d.matching,
-            d.total,
-            if differ == 1 {
-                "1 differs".to_owned()
-            } else {
-                format!("{differ} differ")
-            },
-            how.join("; ")
-        ),
-        Written::Chinese => format!(
-            "还没有通过：{} 个像素中 {} 个一致，{differ} 个不同（{}）。从上往下读，第一个是 {first}。",
-            d.total,
-            d.matching,
-            how.join("；")
-        ),
-    }
+    lang.t_with(
+        "lab-words-not-yet",
+        &[
+            ("matching", &d.matching),
+            ("total", &d.total),
+            ("differ", &(d.total - d.matching)),
+            ("how", &how.join(lang.t("lab-words-clause-separator"))),
+            ("first", &first),
+        ],
+    )
 }
 
 /// A mismatch in words: the variable, its line, both values, and a vector's length when only
 /// pipelens' is 1 (a normal not normalized).
 #[must_use]
 pub fn mismatch_words(m: &Mismatch, lang: Lang) -> String {
-    let unnormalized = super::findings::unnormalized(m.lengths);
-    let mut text = match (lang.written(), m.vertex) {
-        (Written::English, None) => format!(
-            "At the inspected pixel your `{}` (line {}) is {}; pipelens' own shader has {}.",
-            m.name, m.line, m.yours, m.theirs
-        ),
-        (Written::Chinese, None) => format!(
-            "在所检查的像素处，你的 `{}`（第 {} 行）是 {}；pipelens 自带的着色器得到 {}。",
-            m.name, m.line, m.yours, m.theirs
-        ),
-        (Written::English, Some(row)) => format!(
-            "At vertex {row} (a corner of the first wrong pixel's triangle) your vertex shader's `{}` (line {}) is {}; pipelens' own has {}.",
-            m.name, m.line, m.yours, m.theirs
-        ),
-        (Written::Chinese, Some(row)) => format!(
-            "在顶点 {row}（第一个错误像素所在三角形的一个角）处，你的顶点着色器中的 `{}`（第 {} 行）是 {}；pipelens 自带的得到 {}。",
-            m.name, m.line, m.yours, m.theirs
-        ),
+    let values: [(&'static str, &dyn std::fmt::Display); 4] = [
+        ("name", &m.name),
+        ("line", &m.line),
+        ("yours", &m.yours),
+        ("theirs", &m.theirs),
+    ];
+    let mut text = match m.vertex {
+        None => lang.t_with("lab-words-at-the-pixel", &values),
+        Some(row) => {
+            let mut at_vertex = values.to_vec();
+            at_vertex.push(("row", &row));
+            lang.t_with("lab-words-at-the-vertex", &at_vertex)
+        }
     };
-    if let Some(len) = unnormalized {
-        text.push_str(&match lang.written() {
-            Written::English => {
-                format!(" Yours has length {len:.4}, pipelens' 1: is it normalized?")
-            }
-            Written::Chinese => format!("你的长度是 {len:.4}，pipelens 的是 1：它归一化了吗？"),
-        });
+    if let Some(len) = super::findings::unnormalized(m.lengths) {
+        let len = format!("{len:.4}");
+        text.push_str(&lang.t_with("lab-words-not-normalized", &[("length", &len)]));
     }
     text
 }
@@ -126,18 +77,10 @@ pub fn mismatch_words(m: &Mismatch, lang: Lang) -> String {
 /// The first wrong vertex in words: its row and both clip positions.
 pub fn vertex_words(row: u32, yours: glam::Vec4, theirs: glam::Vec4, lang: Lang) -> String {
     let v = |c: glam::Vec4| format!("({:.3}, {:.3}, {:.3}, {:.3})", c.x, c.y, c.z, c.w);
-    match lang.written() {
-        Written::English => format!(
-            "The first vertex off is row {row}: your clip position {}, pipelens' {}.",
-            v(yours),
-            v(theirs)
-        ),
-        Written::Chinese => format!(
-            "第一个出错的顶点在第 {row} 行：你的裁剪坐标 {}，pipelens 的 {}。",
-            v(yours),
-            v(theirs)
-        ),
-    }
+    lang.t_with(
+        "lab-words-first-vertex",
+        &[("row", &row), ("yours", &v(yours)), ("theirs", &v(theirs))],
+    )
 }
 
 /// A matrix compared entry by entry, in words: which of pipelens' matrices it stands for and
@@ -148,49 +91,39 @@ pub fn matrix_words(m: &MatrixMismatch, lang: Lang) -> String {
         .entries
         .iter()
         .take(4)
-        .map(|(r, c, yours, theirs)| match lang.written() {
-            Written::English => format!(
-                "row {r}, column {c} is {yours:.3} ({} has {theirs:.3})",
-                m.matrix
-            ),
-            Written::Chinese => format!(
-                "第 {r} 行第 {c} 列是 {yours:.3}（{} 中为 {theirs:.3}）",
-                m.matrix
-            ),
+        .map(|(r, c, yours, theirs)| {
+            lang.t_with(
+                "lab-words-matrix-entry",
+                &[
+                    ("row", r),
+                    ("column", c),
+                    ("yours", &format!("{yours:.3}")),
+                    ("theirs", &format!("{theirs:.3}")),
+                    ("matrix", &m.matrix),
+                ],
+            )
         })
         .collect();
     let more = m.entries.len().saturating_sub(4);
-    match lang.written() {
-        Written::English => format!(
-            "Your `{}` (line {}) is pipelens' {} but for {}: {}{}.",
-            m.name,
-            m.line,
-            m.matrix,
-            match m.entries.len() {
-                1 => "one entry".to_owned(),
-                n => format!("{n} entries"),
-            },
-            entries.join("; "),
-            if more > 0 {
-                format!("; and {more} more")
-            } else {
-                String::new()
-            }
-        ),
-        Written::Chinese => format!(
-            "你的 `{}`（第 {} 行）与 pipelens 的 {} 有 {} 个元素不同：{}{}。",
-            m.name,
-            m.line,
-            m.matrix,
-            m.entries.len(),
-            entries.join("；"),
-            if more > 0 {
-                format!("；还有 {more} 个")
-            } else {
-                String::new()
-            }
-        ),
-    }
+    let more = if more > 0 {
+        lang.t_with("lab-words-matrix-more", &[("more", &more)])
+    } else {
+        String::new()
+    };
+    lang.t_with(
+        "lab-words-matrix",
+        &[
+            ("name", &m.name),
+            ("line", &m.line),
+            ("matrix", &m.matrix),
+            ("n", &m.entries.len()),
+            (
+                "entries",
+                &entries.join(lang.t("lab-words-clause-separator")),
+            ),
+            ("more", &more),
+        ],
+    )
 }
 
 /// The verdict on a curve (or a Bézier patch's surface) in words: passed, or how many points
@@ -200,23 +133,21 @@ pub fn curve_verdict(c: &CurveDifference, lang: Lang) -> String {
     use pipeline::shader::At;
     let tolerance = format!("{:e}", c.tolerance);
     let surface = c.surface;
-    let (b, what) = match (surface, lang.written()) {
-        (false, Written::English) => ("b(t)", "curve"),
-        (true, Written::English) => ("b(u, v)", "surface"),
-        (false, Written::Chinese) => ("b(t)", "曲线"),
-        (true, Written::Chinese) => ("b(u, v)", "曲面"),
+    let (b, what) = if surface {
+        ("b(u, v)", lang.t("lab-words-surface"))
+    } else {
+        ("b(t)", lang.t("lab-words-curve"))
     };
     if c.passed() {
-        return match lang.written() {
-            Written::English => format!(
-                "Passed: all {} points of your {what} lie within {tolerance} of pipelens' {b}.",
-                c.total
-            ),
-            Written::Chinese => format!(
-                "通过：你的{what}的全部 {} 个点与 pipelens 的 {b} 相差都不超过 {tolerance}。",
-                c.total
-            ),
-        };
+        return lang.t_with(
+            "lab-words-curve-passed",
+            &[
+                ("total", &c.total),
+                ("what", &what),
+                ("tolerance", &tolerance),
+                ("b", &b),
+            ],
+        );
     }
     let point = |p: glam::Vec3| {
         if surface {
@@ -235,27 +166,163 @@ pub fn curve_verdict(c: &CurveDifference, lang: Lang) -> String {
             At::T(t) => format!("t = {t:.4}"),
             At::Uv(uv) => format!("(u, v) = ({:.4}, {:.4})", uv.x, uv.y),
         };
-        match lang.written() {
-            Written::English => format!(
-                " The first, {at}: yours {}, pipelens' {}.",
-                point(mine),
-                point(theirs)
-            ),
-            Written::Chinese => format!(
-                "第一个在 {at}：你的 {}，pipelens 的 {}。",
-                point(mine),
-                point(theirs)
-            ),
-        }
+        lang.t_with(
+            "lab-words-curve-first",
+            &[
+                ("at", &at),
+                ("yours", &point(mine)),
+                ("theirs", &point(theirs)),
+            ],
+        )
     });
-    match lang.written() {
-        Written::English => format!(
-            "Not yet: {} of {} {what} points lie within {tolerance} of pipelens' {b} (the farthest is {largest} away).{first}",
-            c.matching, c.total
-        ),
-        Written::Chinese => format!(
-            "还没有通过：{} 个{what}点中 {} 个与 pipelens 的 {b} 相差不超过 {tolerance}（最远相差 {largest}）。{first}",
-            c.total, c.matching
-        ),
+    lang.t_with(
+        "lab-words-curve-not-yet",
+        &[
+            ("matching", &c.matching),
+            ("total", &c.total),
+            ("what", &what),
+            ("tolerance", &tolerance),
+            ("b", &b),
+            ("largest", &largest),
+            ("first", &first),
+        ],
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use pipeline::capture::Criteria;
+
+    fn difference(
+        matching: u64,
+        (coverage, depth, owner): (u64, u64, u64),
+        largest: f32,
+    ) -> Difference {
+        Difference {
+            matching,
+            total: 100,
+            coverage_differs: coverage,
+            depth_differs: depth,
+            owner_differs: owner,
+            largest,
+            first: Some((3, 7)),
+            criteria: Criteria {
+                tolerance: 2.0,
+                depth: Some(1e-4),
+                owner: true,
+            },
+        }
+    }
+
+    /// Each sentence as a student reads it, written out by hand in both languages: one of a
+    /// kind and several, every clause.
+    #[test]
+    fn a_verdict_reads_in_either_language_with_its_counts() {
+        let passed = difference(100, (0, 0, 0), 0.0);
+        assert_eq!(
+            verdict(&passed, Lang::EN),
+            "Passed: all 100 pixels match pipelens' own (each channel within 2/255)."
+        );
+        assert_eq!(
+            verdict(&passed, Lang::ZH),
+            "通过：全部 100 个像素与 pipelens 自带的一致（每个通道相差不超过 2/255）。"
+        );
+        let one = difference(99, (1, 0, 0), 0.0);
+        assert_eq!(
+            verdict(&one, Lang::EN),
+            "Not yet: 99 of 100 pixels match; 1 differs (1 is covered differently). The first, reading from the top, is (3, 7)."
+        );
+        let many = difference(90, (4, 1, 2), 37.0);
+        assert_eq!(
+            verdict(&many, Lang::EN),
+            "Not yet: 90 of 100 pixels match; 10 differ (colours by up to 37/255; 4 are covered differently; 1 lies at another depth; 2 belong to another triangle). The first, reading from the top, is (3, 7)."
+        );
+        assert_eq!(
+            verdict(&many, Lang::ZH),
+            "还没有通过：100 个像素中 90 个一致，10 个不同（颜色最多相差 37/255；4 个覆盖不同；1 个深度不同；2 个属于另一个三角形）。从上往下读，第一个是 (3, 7)。"
+        );
+    }
+
+    #[test]
+    fn a_mismatch_a_vertex_and_a_matrix_read_in_either_language() {
+        let m = Mismatch {
+            name: "n".to_owned(),
+            line: 12,
+            yours: "(0, 2, 0)".to_owned(),
+            theirs: "(0, 1, 0)".to_owned(),
+            lengths: Some((2.0, 1.0)),
+            vertex: None,
+        };
+        assert_eq!(
+            mismatch_words(&m, Lang::EN),
+            "At the inspected pixel your `n` (line 12) is (0, 2, 0); pipelens' own shader has (0, 1, 0). Yours has length 2.0000, pipelens' 1: is it normalized?"
+        );
+        let at_vertex = Mismatch {
+            vertex: Some(5),
+            lengths: None,
+            ..m
+        };
+        assert_eq!(
+            mismatch_words(&at_vertex, Lang::ZH),
+            "在顶点 5（第一个错误像素所在三角形的一个角）处，你的顶点着色器中的 `n`（第 12 行）是 (0, 2, 0)；pipelens 自带的得到 (0, 1, 0)。"
+        );
+        let v = glam::Vec4::new(1.0, 0.5, 0.25, 1.0);
+        assert_eq!(
+            vertex_words(3, v, glam::Vec4::ONE, Lang::EN),
+            "The first vertex off is row 3: your clip position (1.000, 0.500, 0.250, 1.000), pipelens' (1.000, 1.000, 1.000, 1.000)."
+        );
+        let one = MatrixMismatch {
+            name: "view".to_owned(),
+            line: 4,
+            matrix: "V",
+            entries: vec![(1, 4, 2.0, -2.0)],
+        };
+        assert_eq!(
+            matrix_words(&one, Lang::EN),
+            "Your `view` (line 4) is pipelens' V but for one entry: row 1, column 4 is 2.000 (V has -2.000)."
+        );
+        let six = MatrixMismatch {
+            entries: vec![(1, 1, 0.0, 1.0); 6],
+            ..one
+        };
+        assert_eq!(
+            matrix_words(&six, Lang::ZH),
+            "你的 `view`（第 4 行）与 pipelens 的 V 有 6 个元素不同：第 1 行第 1 列是 0.000（V 中为 1.000）；第 1 行第 1 列是 0.000（V 中为 1.000）；第 1 行第 1 列是 0.000（V 中为 1.000）；第 1 行第 1 列是 0.000（V 中为 1.000）；还有 2 个。"
+        );
+    }
+
+    #[test]
+    fn a_curves_verdict_reads_in_either_language() {
+        let c = CurveDifference {
+            matching: 60,
+            total: 64,
+            largest: 0.5,
+            first: Some((
+                pipeline::shader::At::T(0.25),
+                glam::Vec3::new(1.0, 2.0, 0.0),
+                glam::Vec3::new(1.0, 1.5, 0.0),
+            )),
+            tolerance: 1e-4,
+            surface: false,
+        };
+        assert_eq!(
+            curve_verdict(&c, Lang::EN),
+            "Not yet: 60 of 64 curve points lie within 1e-4 of pipelens' b(t) (the farthest is 0.5000 away). The first, t = 0.2500: yours (1.0000, 2.0000), pipelens' (1.0000, 1.5000)."
+        );
+        assert_eq!(
+            curve_verdict(&c, Lang::ZH),
+            "还没有通过：64 个曲线点中 60 个与 pipelens 的 b(t) 相差不超过 1e-4（最远相差 0.5000）。第一个在 t = 0.2500：你的 (1.0000, 2.0000)，pipelens 的 (1.0000, 1.5000)。"
+        );
+        let passed = CurveDifference {
+            matching: 64,
+            first: None,
+            surface: true,
+            ..c
+        };
+        assert_eq!(
+            curve_verdict(&passed, Lang::ZH),
+            "通过：你的曲面的全部 64 个点与 pipelens 的 b(u, v) 相差都不超过 1e-4。"
+        );
     }
 }

@@ -150,7 +150,10 @@ impl Lang {
             .unwrap_or(id)
     }
 
-    /// The message `id` with its variables, `{ $name }`, given as `(name, value)` pairs.
+    /// The message `id` with its variables, `{ $name }`, given as `(name, value)` pairs. A
+    /// value written as a whole number (digits only) is passed as a number, so that a message
+    /// can choose its words by it (`{ $n -> [one] … *[other] … }`, the language's plural
+    /// rules); every other value is passed as the text it displays as.
     #[must_use]
     pub fn t_with(
         self,
@@ -159,7 +162,11 @@ impl Lang {
     ) -> String {
         let mut fluent = FluentArgs::new();
         for (name, value) in args {
-            fluent.set(*name, value.to_string());
+            let text = value.to_string();
+            match text.parse::<u64>() {
+                Ok(n) if text.bytes().all(|b| b.is_ascii_digit()) => fluent.set(*name, n),
+                _ => fluent.set(*name, text),
+            }
         }
         for c in [self, Self::EN].iter().filter_map(|l| l.catalog()) {
             if let Some(pattern) = c.bundle.get_message(id).and_then(|m| m.value()) {
