@@ -7,65 +7,26 @@ use super::SceneSpec;
 /// (点光源 1 的位置), the light as the panel heads it; `camera.eye` → "camera eye" (相机的视点).
 #[must_use]
 pub fn describe(spec: &SceneSpec, name: &str, lang: crate::vocabulary::Lang) -> String {
+    // A key's words, `param-KEY` in the catalogs; a humanoid's joint, "left_upper_leg", as
+    // the panel's slider says it ("left upper leg"), kept as its key where the words are
+    // Chinese so that `part_name` finds its part's name (左大腿).
     let word = |w: &str| -> String {
-        let zh = match w {
-            "camera" => "相机",
-            "projection" => "投影",
-            "render" => "渲染",
-            "lights" => "光源",
-            "shadow" => "阴影",
-            "eye" => "视点",
-            "at" => "参考点",
-            "up" => "上方向",
-            "near" => "近平面 near",
-            "far" => "远平面 far",
-            "translate" => "平移",
-            "rotate" => "旋转",
-            "scale" => "缩放",
-            "color" => "颜色",
-            "axis" => "旋转轴",
-            "axis_angle" => "绕轴旋转角",
-            "slerp_axis" => "slerp 终点旋转轴",
-            "slerp_angle" => "slerp 终点旋转角",
-            "slerp_t" => "slerp 参数 t",
-            "position" => "位置",
-            "direction" => "方向",
-            "intensity" => "强度",
-            "cutoff" => "截止角",
-            "exponent" => "衰减指数",
-            "light" => "光源",
-            "shininess" => "高光指数 p",
-            "normals" => "法线",
-            "lod_bias" => "mip 偏移",
-            "max_steps" => "循环步数上限",
-            "samples" => "采样数",
-            "anisotropy" => "各向异性",
-            "uniforms" => "着色器的 uniform",
-            // A humanoid's joint, "left_upper_leg": in words as the panel's slider says it
-            // ("left upper leg"); in Chinese its part's name (左大腿), found by the key.
-            other => {
-                return match lang.written() {
-                    crate::vocabulary::Written::English => other.replace('_', " "),
-                    crate::vocabulary::Written::Chinese => other.to_owned(),
-                };
-            }
-        };
-        match lang.written() {
-            // As the panel's slider says it.
-            crate::vocabulary::Written::English if w == "shininess" => "shininess p".to_owned(),
-            crate::vocabulary::Written::English => w.replace('_', " "),
-            crate::vocabulary::Written::Chinese => zh.to_owned(),
+        match lang.keyed("param", w) {
+            Some(words) => words.to_owned(),
+            None if lang.is_chinese() => w.to_owned(),
+            None => w.replace('_', " "),
         }
     };
-    // "B of A" in English, "A的B" in Chinese (a space before a Latin word: "投影的 fovy").
-    let of = |whole: &str, part: &str| match lang.written() {
-        crate::vocabulary::Written::English => format!("{part} of {whole}"),
-        crate::vocabulary::Written::Chinese
-            if part.starts_with(|c: char| c.is_ascii_alphanumeric()) =>
-        {
-            format!("{whole}的 {part}")
-        }
-        crate::vocabulary::Written::Chinese => format!("{whole}的{part}"),
+    // "B of A", its words the catalogs' (in Chinese "A的B", a space before a Latin word:
+    // "投影的 fovy").
+    let latin = |part: &str| part.starts_with(|c: char| c.is_ascii_alphanumeric());
+    let of = |whole: &str, part: &str| {
+        let id = if latin(part) {
+            "describe-of-latin"
+        } else {
+            "describe-of"
+        };
+        lang.t_with(id, &[("whole", &whole), ("part", &part)])
     };
     let parts: Vec<&str> = name.split('.').collect();
     match parts.as_slice() {
@@ -84,16 +45,21 @@ pub fn describe(spec: &SceneSpec, name: &str, lang: crate::vocabulary::Lang) -> 
                     ))
                 })
                 .unwrap_or_else(|| format!("{} {k}", word("lights")));
-            match lang.written() {
-                crate::vocabulary::Written::English => format!("{light} {}", word(p)),
-                crate::vocabulary::Written::Chinese => format!("{light} 的{}", word(p)),
-            }
+            lang.t_with(
+                "describe-light-part",
+                &[("light", &light), ("part", &word(p))],
+            )
         }
         ["uniforms", u] => format!("uniform {u}"),
-        [group, p] => match lang.written() {
-            crate::vocabulary::Written::English => format!("{} {}", word(group), word(p)),
-            crate::vocabulary::Written::Chinese => of(&word(group), &word(p)),
-        },
+        [group, p] => {
+            let (group, part) = (word(group), word(p));
+            let id = if latin(&part) {
+                "describe-group-part-latin"
+            } else {
+                "describe-group-part"
+            };
+            lang.t_with(id, &[("group", &group), ("part", &part)])
+        }
         _ => name.to_owned(),
     }
 }
