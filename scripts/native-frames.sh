@@ -21,14 +21,32 @@ cores=$(nproc)
 # The median of five fresh renders of the step, each entered from the step before.
 measure() {
   local threads=$1 log=target/native-frames-$1.log window= times=()
-  RAYON_NUM_THREADS=$threads PIPELENS_FRAME_LOG=1 DISPLAY=$display \
-    target/release/pipelens --step "$step" >"$log" 2>&1 &
-  app=$!
-  for _ in $(seq 1 60); do
-    window=$(DISPLAY=$display xdotool search --name "step $step/" 2>/dev/null | head -1) || true
+  local attempt
+  # Up to three launches: once in CI the app could not connect to an Xvfb that had just
+  # answered xdotool (start_xvfb); what the server said and whether it lives are printed.
+  for attempt in 1 2 3; do
+    RAYON_NUM_THREADS=$threads PIPELENS_FRAME_LOG=1 DISPLAY=$display \
+      target/release/pipelens --step "$step" >"$log" 2>&1 &
+    app=$!
+    for _ in $(seq 1 60); do
+      window=$(DISPLAY=$display xdotool search --name "step $step/" 2>/dev/null | head -1) || true
+      [ -n "$window" ] && break
+      kill -0 "$app" 2>/dev/null || break
+      sleep 1
+    done
     [ -n "$window" ] && break
-    kill -0 "$app" 2>/dev/null || { echo "native-frames: the app exited:" >&2; cat "$log" >&2; exit 1; }
-    sleep 1
+    if ! kill -0 "$app" 2>/dev/null; then
+      echo "native-frames: the app exited (launch $attempt of 3):" >&2
+      cat "$log" >&2
+      if kill -0 "$xvfb" 2>/dev/null; then echo "native-frames: Xvfb $display is running" >&2; else echo "native-frames: Xvfb $display has exited" >&2; fi
+      DISPLAY=$display xdotool getdisplaygeometry >&2 || echo "native-frames: xdotool cannot reach $display either" >&2
+      echo "native-frames: Xvfb's log:" >&2
+      cat "$xvfb_log" >&2
+      [ "$attempt" = 3 ] && exit 1
+      sleep 2
+    else
+      break
+    fi
   done
   [ -n "$window" ] || { echo "native-frames: no window on step $step after 60 s" >&2; exit 1; }
   DISPLAY=$display xdotool windowsize "$window" 1920 1080 windowmove "$window" 0 0 windowfocus "$window"
