@@ -494,6 +494,7 @@ draw-top-left = {" "}(top/left)
 
 ## src/app/views/pixels/hover.rs
 
+hover-after-line = after line { $line }
 hover-pixel = pixel
 hover-coverage = coverage
 hover-depth = depth
@@ -662,6 +663,7 @@ alt-text-ellipsis = ; …{" "}
 
 ## src/vocabulary/buffers.rs
 
+buffers-shown-brighter = { $name } shown ×{ $gain }: { $gain } times brighter than its values
 buffers-colour = Colour
 buffers-depth = Depth
 buffers-coverage = Coverage
@@ -764,6 +766,22 @@ handout-exercise-exercise = Exercise:
 
 ## src/vocabulary/explain.rs
 
+explain-edge-opposite = the edge opposite corner { $edge }
+explain-sample-covered = sample { $index } is covered
+explain-sample-not-covered = sample { $index } is not covered
+explain-on-a-top-or-left-edge = exactly on edge { $edge }, a top or left edge: counts as inside (top-left rule)
+explain-on-a-bottom-or-right-edge = exactly on edge { $edge }, a bottom or right edge: does not count (top-left rule)
+explain-nearest-level = the nearest level, at most { $max }
+explain-trilinear = trilinear: levels k and k+1 blended by t (λ at most { $max })
+explain-four-texels = the four texels read, of level { $level } ({ $width }×{ $height })
+explain-directional-light = directional
+explain-spot-light = spot
+explain-point-light = point
+explain-light-towards = light { $index } ({ $kind }): the unit vector towards it
+explain-mean-of-samples = the mean of the pixel's { $samples } samples; { $covered ->
+        [one] 1 belongs
+       *[other] { $covered } belong
+    } to this triangle's primitive, the others keep their own colour or the background
 explain-behind-the-eye-no-ndc = behind the eye: no NDC; clipping cut the triangle first
 explain-the-triangle-crosses-the-view = the triangle crosses the view volume: the pixel lies in a piece of the clipped polygon
 explain-snapped-to-1-256-pixel = snapped to 1/256 pixel, counter-clockwise; v_k is vertex k, c_k a corner made by clipping
@@ -1002,3 +1020,12 @@ describe-of-latin = { $part } of { $whole }
 describe-light-part = { $light } { $part }
 describe-group-part = { $group } { $part }
 describe-group-part-latin = { $group } { $part }
+
+## src/lab/quantity.rs
+
+quantity-uv-differs = At the inspected pixel your `{ $name }` (line { $line }) is { $yours }; pipelens' uv there, interpolated perspective-correctly, is { $theirs }.
+quantity-lod-differs = At the inspected pixel your `{ $name }` (line { $line }) gives λ = { $yours }; pipelens' λ there is { $theirs }: the footprint is L = 2^λ = { $footprint } texels a pixel step (uv { $uv }).
+quantity-texel-differs = At the inspected pixel your `{ $name }` (line { $line }) gives { $yours }; pipelens' filter reads { $theirs } there (uv { $uv }).
+quantity-the-texture = the { $w } × { $h } texture
+quantity-the-level = level { $k } ({ $w } × { $h })
+quantity-bilinear-differs = At the inspected pixel your `{ $name }` (line { $line }) gives { $yours }; pipelens' bilinear filter reads { $theirs } there: uv { $uv } on { $on } is (x, y) = ({ $x }, { $y }) (x = u·w − ½, y = v·h − ½), between texels ({ $i }, { $j }) and ({ $i1 }, { $j1 }), mixed by s = { $s } and t = { $t }.

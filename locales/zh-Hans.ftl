@@ -494,6 +494,7 @@ draw-top-left = （上/左边）
 
 ## src/app/views/pixels/hover.rs
 
+hover-after-line = 第 { $line } 行之后
 hover-pixel = 像素
 hover-coverage = 覆盖
 hover-depth = 深度
@@ -662,6 +663,7 @@ alt-text-ellipsis = ；……
 
 ## src/vocabulary/buffers.rs
 
+buffers-shown-brighter = { $name }放大 ×{ $gain } 显示：亮度是其数值的 { $gain } 倍
 buffers-colour = 颜色
 buffers-depth = 深度
 buffers-coverage = 覆盖率
@@ -764,6 +766,19 @@ handout-exercise-exercise = 练习：
 
 ## src/vocabulary/explain.rs
 
+explain-edge-opposite = 角点 { $edge } 对面的边
+explain-sample-covered = 采样点 { $index } 被覆盖
+explain-sample-not-covered = 采样点 { $index } 未被覆盖
+explain-on-a-top-or-left-edge = 恰好在边 { $edge } 上，这是上边或左边：算作内部（左上填充规则）
+explain-on-a-bottom-or-right-edge = 恰好在边 { $edge } 上，这是下边或右边：不算内部（左上填充规则）
+explain-nearest-level = 最近的层级，最多为 { $max }
+explain-trilinear = 三线性：按 t 混合第 k 层与第 k+1 层（λ 最多为 { $max }）
+explain-four-texels = 读取的四个纹素，第 { $level } 层（{ $width }×{ $height }）
+explain-directional-light = 平行光
+explain-spot-light = 聚光灯
+explain-point-light = 点光源
+explain-light-towards = 光源 { $index }（{ $kind }）：指向它的单位向量
+explain-mean-of-samples = 像素 { $samples } 个采样点的平均；其中 { $covered } 个属于该图元，其余保留各自的颜色或背景色
 explain-behind-the-eye-no-ndc = 在视点之后：没有 NDC；裁剪先把三角形切开
 explain-the-triangle-crosses-the-view = 三角形跨越视见体：该像素位于裁剪后多边形的一部分中
 explain-snapped-to-1-256-pixel = 对齐到 1/256 像素，逆时针；v_k 是第 k 个顶点，c_k 是裁剪产生的角点
@@ -979,3 +994,12 @@ describe-of-latin = { $whole }的 { $part }
 describe-light-part = { $light } 的{ $part }
 describe-group-part = { $group }的{ $part }
 describe-group-part-latin = { $group }的 { $part }
+
+## src/lab/quantity.rs
+
+quantity-uv-differs = 在所检查的像素处，你的 `{ $name }`（第 { $line } 行）是 { $yours }；pipelens 在此处经透视校正插值的 uv 是 { $theirs }。
+quantity-lod-differs = 在所检查的像素处，你的 `{ $name }`（第 { $line } 行）给出 λ = { $yours }；pipelens 在此处的 λ 是 { $theirs }：像素每走一步，覆盖区域是 L = 2^λ = { $footprint } 个纹素（uv { $uv }）。
+quantity-texel-differs = 在所检查的像素处，你的 `{ $name }`（第 { $line } 行）给出 { $yours }；pipelens 的过滤在此处读出 { $theirs }（uv { $uv }）。
+quantity-the-texture = { " " }{ $w } × { $h } 的纹理
+quantity-the-level = 第 { $k } 层（{ $w } × { $h }）
+quantity-bilinear-differs = 在所检查的像素处，你的 `{ $name }`（第 { $line } 行）给出 { $yours }；pipelens 的双线性过滤在此处读出 { $theirs }：uv { $uv } 在{ $on }上是 (x, y) = ({ $x }, { $y })（x = u·w − ½，y = v·h − ½），位于纹素 ({ $i }, { $j }) 与 ({ $i1 }, { $j1 }) 之间，按 s = { $s }、t = { $t } 混合。

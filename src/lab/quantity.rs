@@ -4,7 +4,6 @@
 //! stands for (`uv`, `lod`, `texel`). pipelens' own comes from its texture lookup at the pixel,
 //! which every frame with the pixel inspected keeps.
 
-use crate::vocabulary::Written;
 use pipeline::capture::{FrameCapture, PixelTexture};
 
 use crate::lesson::answer::{Compare, Quantity};
@@ -119,22 +118,24 @@ impl QuantityMismatch {
         let t = &self.theirs;
         let theirs = numbers(&pipelens_value(self.quantity, t));
         let uv = numbers(&t.uv.map(f64::from));
-        match (self.quantity, lang.written()) {
-            (Quantity::Uv, Written::English) => format!(
-                "At the inspected pixel your `{name}` (line {line}) is {yours}; pipelens' uv there, interpolated perspective-correctly, is {theirs}."
-            ),
-            (Quantity::Uv, Written::Chinese) => format!(
-                "在所检查的像素处，你的 `{name}`（第 {line} 行）是 {yours}；pipelens 在此处经透视校正插值的 uv 是 {theirs}。"
-            ),
-            (Quantity::Lod, Written::English) => format!(
-                "At the inspected pixel your `{name}` (line {line}) gives λ = {yours}; pipelens' λ there is {theirs}: the footprint is L = 2^λ = {:.2} texels a pixel step (uv {uv}).",
-                2f64.powf(f64::from(t.lod))
-            ),
-            (Quantity::Lod, Written::Chinese) => format!(
-                "在所检查的像素处，你的 `{name}`（第 {line} 行）给出 λ = {yours}；pipelens 在此处的 λ 是 {theirs}：像素每走一步，覆盖区域是 L = 2^λ = {:.2} 个纹素（uv {uv}）。",
-                2f64.powf(f64::from(t.lod))
-            ),
-            (Quantity::Texel, _) => self.texel_words(&yours, &theirs, &uv, lang),
+        let args = [
+            ("name", name as &dyn std::fmt::Display),
+            ("line", &line),
+            ("yours", &yours),
+            ("theirs", &theirs),
+        ];
+        match self.quantity {
+            Quantity::Uv => lang.t_with("quantity-uv-differs", &args),
+            Quantity::Lod => {
+                let footprint = format!("{:.2}", 2f64.powf(f64::from(t.lod)));
+                let mut args = args.to_vec();
+                args.extend([
+                    ("footprint", &footprint as &dyn std::fmt::Display),
+                    ("uv", &uv),
+                ]);
+                lang.t_with("quantity-lod-differs", &args)
+            }
+            Quantity::Texel => self.texel_words(&yours, &theirs, &uv, lang),
         }
     }
 
@@ -149,37 +150,109 @@ impl QuantityMismatch {
             .filter(|_| level.fract() == 0.0)
             .map(|(w, h)| ((w >> level as u32).max(1), (h >> level as u32).max(1)));
         let Some((w, h)) = size else {
-            return match lang.written() {
-                Written::English => format!(
-                    "At the inspected pixel your `{name}` (line {line}) gives {yours}; pipelens' filter reads {theirs} there (uv {uv})."
-                ),
-                Written::Chinese => format!(
-                    "在所检查的像素处，你的 `{name}`（第 {line} 行）给出 {yours}；pipelens 的过滤在此处读出 {theirs}（uv {uv}）。"
-                ),
-            };
+            return lang.t_with(
+                "quantity-texel-differs",
+                &[
+                    ("name", name),
+                    ("line", &line),
+                    ("yours", &yours),
+                    ("theirs", &theirs),
+                    ("uv", &uv),
+                ],
+            );
         };
         // x = u·w − ½, y = v·h − ½; the texels around (x, y) and the weights between them.
         let x = f64::from(self.theirs.uv[0]) * f64::from(w) - 0.5;
         let y = f64::from(self.theirs.uv[1]) * f64::from(h) - 0.5;
         let (i, j) = (x.floor(), y.floor());
         let (s, t) = (x - i, y - j);
-        let on = match (lang.written(), level as u32) {
-            (Written::English, 0) => format!("the {w} × {h} texture"),
-            (Written::English, k) => format!("level {k} ({w} × {h})"),
-            (Written::Chinese, 0) => format!(" {w} × {h} 的纹理"),
-            (Written::Chinese, k) => format!("第 {k} 层（{w} × {h}）"),
+        let on = match level as u32 {
+            0 => lang.t_with("quantity-the-texture", &[("w", &w), ("h", &h)]),
+            k => lang.t_with("quantity-the-level", &[("k", &k), ("w", &w), ("h", &h)]),
         };
-        match lang.written() {
-            Written::English => format!(
-                "At the inspected pixel your `{name}` (line {line}) gives {yours}; pipelens' bilinear filter reads {theirs} there: uv {uv} on {on} is (x, y) = ({x:.3}, {y:.3}) (x = u·w − ½, y = v·h − ½), between texels ({i}, {j}) and ({}, {}), mixed by s = {s:.3} and t = {t:.3}.",
-                i + 1.0,
-                j + 1.0
-            ),
-            Written::Chinese => format!(
-                "在所检查的像素处，你的 `{name}`（第 {line} 行）给出 {yours}；pipelens 的双线性过滤在此处读出 {theirs}：uv {uv} 在{on}上是 (x, y) = ({x:.3}, {y:.3})（x = u·w − ½，y = v·h − ½），位于纹素 ({i}, {j}) 与 ({}, {}) 之间，按 s = {s:.3}、t = {t:.3} 混合。",
-                i + 1.0,
-                j + 1.0
-            ),
+        let (x, y, s, t) = (
+            format!("{x:.3}"),
+            format!("{y:.3}"),
+            format!("{s:.3}"),
+            format!("{t:.3}"),
+        );
+        let (i1, j1) = (i + 1.0, j + 1.0);
+        lang.t_with(
+            "quantity-bilinear-differs",
+            &[
+                ("name", name),
+                ("line", &line),
+                ("yours", &yours),
+                ("theirs", &theirs),
+                ("uv", &uv),
+                ("on", &on),
+                ("x", &x),
+                ("y", &y),
+                ("i", &i),
+                ("j", &j),
+                ("i1", &i1),
+                ("j1", &j1),
+                ("s", &s),
+                ("t", &t),
+            ],
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn mismatch(quantity: Quantity, yours: Vec<f64>, level: f32) -> QuantityMismatch {
+        QuantityMismatch {
+            name: "texel".to_owned(),
+            line: 12,
+            quantity,
+            yours,
+            theirs: PixelTexture {
+                uv: [0.25, 0.5],
+                footprint: [0.0; 4],
+                lod: 2.0,
+                level,
+                texel: [0.5, 0.25, 0.0],
+            },
+            size: Some((64, 32)),
         }
+    }
+
+    /// The findings as a student should read them, the texels and weights worked by hand:
+    /// level 1 of 64 × 32 is 32 × 16, x = 0.25·32 − ½ = 7.5, y = 0.5·16 − ½ = 7.5.
+    #[test]
+    fn a_finding_says_both_values_and_where_the_filter_reads() {
+        let texel = mismatch(Quantity::Texel, vec![1.0, 0.0, 0.0], 1.0);
+        assert_eq!(
+            texel.words(Lang::EN),
+            "At the inspected pixel your `texel` (line 12) gives (1.000, 0.000, 0.000); pipelens' \
+             bilinear filter reads (0.500, 0.250, 0.000) there: uv (0.250, 0.500) on level 1 \
+             (32 × 16) is (x, y) = (7.500, 7.500) (x = u·w − ½, y = v·h − ½), between texels \
+             (7, 7) and (8, 8), mixed by s = 0.500 and t = 0.500."
+        );
+        // Level 0 of 64 × 32: x = 0.25·64 − ½ = 15.5, y = 0.5·32 − ½ = 15.5.
+        let level0 = mismatch(Quantity::Texel, vec![1.0, 0.0, 0.0], 0.0);
+        assert_eq!(
+            level0.words(Lang::ZH),
+            "在所检查的像素处，你的 `texel`（第 12 行）给出 (1.000, 0.000, 0.000)；pipelens 的双线性\
+             过滤在此处读出 (0.500, 0.250, 0.000)：uv (0.250, 0.500) 在 64 × 32 的纹理上是 (x, y) = \
+             (15.500, 15.500)（x = u·w − ½，y = v·h − ½），位于纹素 (15, 15) 与 (16, 16) 之间，按 \
+             s = 0.500、t = 0.500 混合。"
+        );
+        // A blend of two levels: said without the texels.
+        let blend = mismatch(Quantity::Texel, vec![1.0, 0.0, 0.0], 1.5);
+        assert_eq!(
+            blend.words(Lang::EN),
+            "At the inspected pixel your `texel` (line 12) gives (1.000, 0.000, 0.000); pipelens' \
+             filter reads (0.500, 0.250, 0.000) there (uv (0.250, 0.500))."
+        );
+        let lod = mismatch(Quantity::Lod, vec![1.0], 1.0);
+        assert_eq!(
+            lod.words(Lang::EN),
+            "At the inspected pixel your `texel` (line 12) gives λ = 1.000; pipelens' λ there is \
+             2.000: the footprint is L = 2^λ = 4.00 texels a pixel step (uv (0.250, 0.500))."
+        );
     }
 }

@@ -1,7 +1,6 @@
 //! The names of the buffers a capture can show, in both languages (the core's
 //! `BufferKind::name` is the file name; `BufferKind::mapping` says how values become colours).
 
-use crate::vocabulary::Written;
 use pipeline::buffers::BufferKind;
 
 use super::Lang;
@@ -37,8 +36,8 @@ pub fn gain_note(kind: BufferKind, gain: f32, l: Lang) -> Option<String> {
         return None;
     }
     let name = buffer_name(kind, l);
-    Some(match l.written() {
-        Written::English => format!("{name} shown ×{gain}: {gain} times brighter than its values"),
-        Written::Chinese => format!("{name}放大 ×{gain} 显示：亮度是其数值的 {gain} 倍"),
-    })
+    Some(l.t_with(
+        "buffers-shown-brighter",
+        &[("name", &name), ("gain", &gain)],
+    ))
 }

@@ -1,7 +1,6 @@
 //! The pixel under the mouse: its values in a tooltip, what the status line says there, and a
 //! click that inspects it.
 
-use crate::vocabulary::Written;
 use egui::{Color32, Rect, RichText, Ui};
 use pipeline::buffers::BufferKind;
 use pipeline::capture::FrameCapture;
@@ -66,10 +65,7 @@ fn pixel_tooltip(ui: &mut Ui, capture: &FrameCapture, x: u32, y: u32, lang: Lang
             Some(v) => crate::app::views::watch_picture::value_words(kind, v),
             None => lang.t("hover-the-line-did-not-run").to_owned(),
         };
-        let at = match lang.written() {
-            Written::English => format!("after line {}", w.line),
-            Written::Chinese => format!("第 {} 行之后", w.line),
-        };
+        let at = lang.t_with("hover-after-line", &[("line", &w.line)]);
         ui.label(RichText::new(format!("{} ({at}): {said}", w.expression)).monospace());
     }
     ui.label(RichText::new(lang.t("hover-click-to-inspect")).weak());
