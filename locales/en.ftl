@@ -1029,3 +1029,18 @@ quantity-texel-differs = At the inspected pixel your `{ $name }` (line { $line }
 quantity-the-texture = the { $w } × { $h } texture
 quantity-the-level = level { $k } ({ $w } × { $h })
 quantity-bilinear-differs = At the inspected pixel your `{ $name }` (line { $line }) gives { $yours }; pipelens' bilinear filter reads { $theirs } there: uv { $uv } on { $on } is (x, y) = ({ $x }, { $y }) (x = u·w − ½, y = v·h − ½), between texels ({ $i }, { $j }) and ({ $i1 }, { $j1 }), mixed by s = { $s } and t = { $t }.
+
+## src/lesson/answer.rs
+
+answer-tolerance-and-relative = ±{ $t }; an entry under { $below } within 5 % of itself
+answer-your-value = your value
+answer-named-entry = { $name }
+answer-component = component { $n }
+answer-row-column = row { $row }, column { $column }
+answer-list-separator = { "; " }
+answer-right = Right: every entry within { $tolerance } of the answer.
+answer-still-empty = Still empty: { $cells }.
+answer-not-a-number = { $cell }: "{ $text }" is not a number ({ $why }).
+answer-too-large = { $cell } = { $typed } is { $by } too large
+answer-too-small = { $cell } = { $typed } is { $by } too small
+answer-not-yet = Not yet ({ $off } of { $entries } off, tolerance { $tolerance }): { $each }.

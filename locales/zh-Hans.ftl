@@ -1003,3 +1003,18 @@ quantity-texel-differs = 在所检查的像素处，你的 `{ $name }`（第 { $
 quantity-the-texture = { " " }{ $w } × { $h } 的纹理
 quantity-the-level = 第 { $k } 层（{ $w } × { $h }）
 quantity-bilinear-differs = 在所检查的像素处，你的 `{ $name }`（第 { $line } 行）给出 { $yours }；pipelens 的双线性过滤在此处读出 { $theirs }：uv { $uv } 在{ $on }上是 (x, y) = ({ $x }, { $y })（x = u·w − ½，y = v·h − ½），位于纹素 ({ $i }, { $j }) 与 ({ $i1 }, { $j1 }) 之间，按 s = { $s }、t = { $t } 混合。
+
+## src/lesson/answer.rs
+
+answer-tolerance-and-relative = ±{ $t }；小于 { $below } 的项在其自身的 5% 以内
+answer-your-value = 你的数值
+answer-named-entry = { $name } 分量
+answer-component = 第 { $n } 个分量
+answer-row-column = 第 { $row } 行第 { $column } 列
+answer-list-separator = ；
+answer-right = 正确：每一项都在 { $tolerance } 之内。
+answer-still-empty = 尚未填写：{ $cells }。
+answer-not-a-number = { $cell }：“{ $text }”不是数值（{ $why }）。
+answer-too-large = { $cell } = { $typed } 大了 { $by }
+answer-too-small = { $cell } = { $typed } 小了 { $by }
+answer-not-yet = 还不对（{ $entries } 项中有 { $off } 项超出 { $tolerance }）：{ $each }。

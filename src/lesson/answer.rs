@@ -161,20 +161,19 @@ impl Expect {
     /// entry is small enough to be checked within 5 % of itself, that too.
     #[must_use]
     pub fn tolerance_words(&self, lang: crate::vocabulary::Lang) -> String {
-        use crate::vocabulary::Written;
         let t = crate::vocabulary::short(self.tolerance as f32, 4);
         let below = crate::vocabulary::short((self.tolerance / RELATIVE_TOLERANCE) as f32, 4);
         let small = self
             .values
             .iter()
             .any(|&e| self.tolerance_at(e) < self.tolerance);
-        match (lang.written(), small) {
-            (Written::English, false) => format!("±{t}"),
-            (Written::Chinese, false) => format!("±{t}"),
-            (Written::English, true) => {
-                format!("±{t}; an entry under {below} within 5 % of itself")
-            }
-            (Written::Chinese, true) => format!("±{t}；小于 {below} 的项在其自身的 5% 以内"),
+        if small {
+            lang.t_with(
+                "answer-tolerance-and-relative",
+                &[("t", &t), ("below", &below)],
+            )
+        } else {
+            format!("±{t}")
         }
     }
 
@@ -245,79 +244,59 @@ impl Verdict {
     /// and by how much it is too large or too small; or which cells are empty or unreadable.
     #[must_use]
     pub fn describe(&self, expect: &Expect, lang: crate::vocabulary::Lang) -> String {
-        use crate::vocabulary::Written;
         let num = |v: f64| crate::vocabulary::short(v as f32, 4);
-        let cell = |(r, c): (usize, usize)| match (expect.shape, lang.written()) {
-            (Shape::Number, Written::English) => "your value".to_owned(),
-            (Shape::Number, Written::Chinese) => "你的数值".to_owned(),
+        let cell = |(r, c): (usize, usize)| match expect.shape {
+            Shape::Number => lang.t("answer-your-value").to_owned(),
             // A vector's entries by the names its boxes show, x, y, z, w (up to four).
-            (Shape::Vector(n), Written::English) if n <= 4 => ["x", "y", "z", "w"][c].to_owned(),
-            (Shape::Vector(n), Written::Chinese) if n <= 4 => {
-                format!("{} 分量", ["x", "y", "z", "w"][c])
+            Shape::Vector(n) if n <= 4 => {
+                lang.t_with("answer-named-entry", &[("name", &["x", "y", "z", "w"][c])])
             }
-            (Shape::Vector(_), Written::English) => format!("component {}", c + 1),
-            (Shape::Vector(_), Written::Chinese) => format!("第 {} 个分量", c + 1),
-            (Shape::Matrix(..), Written::English) => format!("row {}, column {}", r + 1, c + 1),
-            (Shape::Matrix(..), Written::Chinese) => format!("第 {} 行第 {} 列", r + 1, c + 1),
+            Shape::Vector(_) => lang.t_with("answer-component", &[("n", &(c + 1))]),
+            Shape::Matrix(..) => lang.t_with(
+                "answer-row-column",
+                &[("row", &(r + 1)), ("column", &(c + 1))],
+            ),
         };
+        let list = |items: &[String]| items.join(lang.t("answer-list-separator"));
         let tolerance = expect.tolerance_words(lang);
         match self {
-            Self::Right => match lang.written() {
-                Written::English => format!("Right: every entry within {tolerance} of the answer."),
-                Written::Chinese => format!("正确：每一项都在 {tolerance} 之内。"),
-            },
+            Self::Right => lang.t_with("answer-right", &[("tolerance", &tolerance)]),
             Self::Empty(cells) => {
-                let list: Vec<String> = cells.iter().map(|&at| cell(at)).collect();
-                match lang.written() {
-                    Written::English => format!("Still empty: {}.", list.join("; ")),
-                    Written::Chinese => format!("尚未填写：{}。", list.join("；")),
-                }
+                let cells: Vec<String> = cells.iter().map(|&at| cell(at)).collect();
+                lang.t_with("answer-still-empty", &[("cells", &list(&cells))])
             }
-            Self::Unreadable { at, text, why } => match lang.written() {
-                Written::English => format!(
-                    "{}: \"{text}\" is not a number ({}).",
-                    cell(*at),
-                    why.words(lang)
-                ),
-                Written::Chinese => {
-                    format!("{}：“{text}”不是数值（{}）。", cell(*at), why.words(lang))
-                }
-            },
+            Self::Unreadable { at, text, why } => lang.t_with(
+                "answer-not-a-number",
+                &[
+                    ("cell", &cell(*at)),
+                    ("text", text),
+                    ("why", &why.words(lang)),
+                ],
+            ),
             Self::Off(misses) => {
                 let each: Vec<String> = misses
                     .iter()
                     .map(|m| {
                         let by = num(m.off_by.abs());
-                        match (lang.written(), m.off_by > 0.0) {
-                            (Written::English, true) => {
-                                format!("{} = {} is {by} too large", cell(m.at), num(m.typed))
-                            }
-                            (Written::English, false) => {
-                                format!("{} = {} is {by} too small", cell(m.at), num(m.typed))
-                            }
-                            (Written::Chinese, true) => {
-                                format!("{} = {} 大了 {by}", cell(m.at), num(m.typed))
-                            }
-                            (Written::Chinese, false) => {
-                                format!("{} = {} 小了 {by}", cell(m.at), num(m.typed))
-                            }
-                        }
+                        lang.t_with(
+                            if m.off_by > 0.0 {
+                                "answer-too-large"
+                            } else {
+                                "answer-too-small"
+                            },
+                            &[("cell", &cell(m.at)), ("typed", &num(m.typed)), ("by", &by)],
+                        )
                     })
                     .collect();
-                match lang.written() {
-                    Written::English => format!(
-                        "Not yet ({} of {} off, tolerance {tolerance}): {}.",
-                        misses.len(),
-                        expect.values.len(),
-                        each.join("; ")
-                    ),
-                    Written::Chinese => format!(
-                        "还不对（{} 项中有 {} 项超出 {tolerance}）：{}。",
-                        expect.values.len(),
-                        misses.len(),
-                        each.join("；")
-                    ),
-                }
+                lang.t_with(
+                    "answer-not-yet",
+                    &[
+                        ("off", &misses.len()),
+                        ("entries", &expect.values.len()),
+                        ("tolerance", &tolerance),
+                        ("each", &list(&each)),
+                    ],
+                )
             }
         }
     }
@@ -389,6 +368,37 @@ mod tests {
         assert!(v.describe(&e, Lang::ZH).contains("y 分量 = 2.5 大了 0.5"));
         let empty = e.check(&typed(["1", "2", ""]));
         assert!(empty.describe(&e, Lang::EN).contains("Still empty: z."));
+    }
+
+    /// A whole verdict as a student reads it, in both languages (written by hand).
+    #[test]
+    fn a_matrix_verdict_reads_as_a_sentence() {
+        use crate::vocabulary::Lang;
+        let e = Expect {
+            shape: Shape::Matrix(2, 2),
+            values: vec![1.0, 0.0, 0.0, 1.0],
+            tolerance: 0.01,
+        };
+        let typed = |cells: [&str; 4]| cells.map(str::to_owned).to_vec();
+        let v = e.check(&typed(["1", "0.5", "0", "0.5"]));
+        assert_eq!(
+            v.describe(&e, Lang::EN),
+            "Not yet (2 of 4 off, tolerance ±0.01): row 1, column 2 = 0.5 is 0.5 too large; \
+             row 2, column 2 = 0.5 is 0.5 too small."
+        );
+        assert_eq!(
+            v.describe(&e, Lang::ZH),
+            "还不对（4 项中有 2 项超出 ±0.01）：第 1 行第 2 列 = 0.5 大了 0.5；第 2 行第 2 列 = 0.5 小了 0.5。"
+        );
+        let empty = e.check(&typed(["1", "", "0", ""]));
+        assert_eq!(
+            empty.describe(&e, Lang::EN),
+            "Still empty: row 1, column 2; row 2, column 2."
+        );
+        assert_eq!(
+            e.check(&typed(["1", "0", "0", "1"])).describe(&e, Lang::ZH),
+            "正确：每一项都在 ±0.01 之内。"
+        );
     }
 
     /// Lesson 10 step 4's 0.8^32 = 0.000792 with the step's ±0.005: 0 is not right for it (it
