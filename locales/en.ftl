@@ -1044,3 +1044,17 @@ answer-not-a-number = { $cell }: "{ $text }" is not a number ({ $why }).
 answer-too-large = { $cell } = { $typed } is { $by } too large
 answer-too-small = { $cell } = { $typed } is { $by } too small
 answer-not-yet = Not yet ({ $off } of { $entries } off, tolerance { $tolerance }): { $each }.
+
+## src/lab/submission.rs
+
+submission-not-a-lab = step { $step } of { $lesson } is not a lab
+submission-file-does-not-compile = Does not compile: { $file }.glsl, { $first }
+submission-its-run-stopped = It compiles, but its run stopped: { $why }
+submission-vertex-shader = vertex shader
+submission-fragment-shader = fragment shader
+submission-stage-message = { $stage }, { $message }
+submission-does-not-compile = Does not compile: { $first }{ $more ->
+        [0] {""}
+        [one] { " " }(and 1 more message)
+       *[other] { " " }(and { $more } more messages)
+    }

@@ -1018,3 +1018,16 @@ answer-not-a-number = { $cell }：“{ $text }”不是数值（{ $why }）。
 answer-too-large = { $cell } = { $typed } 大了 { $by }
 answer-too-small = { $cell } = { $typed } 小了 { $by }
 answer-not-yet = 还不对（{ $entries } 项中有 { $off } 项超出 { $tolerance }）：{ $each }。
+
+## src/lab/submission.rs
+
+submission-not-a-lab = { $lesson } 的第 { $step } 步不是练习
+submission-file-does-not-compile = 无法编译：{ $file }.glsl，{ $first }
+submission-its-run-stopped = 可以编译，但运行中止：{ $why }
+submission-vertex-shader = 顶点着色器
+submission-fragment-shader = 片元着色器
+submission-stage-message = { $stage }，{ $message }
+submission-does-not-compile = 无法编译：{ $first }{ $more ->
+        [0] {""}
+       *[other] （另有 { $more } 条消息）
+    }

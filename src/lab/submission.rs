@@ -3,7 +3,6 @@
 //! or `bezier_patch.glsl` for the functions a step runs — put in place of the step's starter and
 //! checked as the app checks it. What the student did not hand in stays the starter's.
 
-use crate::vocabulary::Written;
 use std::sync::Arc;
 
 use pipeline::scene::ObjectShader;
@@ -78,10 +77,10 @@ impl Grade {
 #[must_use]
 pub fn grade(lesson: &Lesson, k: usize, code: &Code, lang: Lang) -> Grade {
     let Some(exercise) = lesson.steps.get(k).and_then(|s| s.exercise.as_ref()) else {
-        return Grade::failed(match lang.written() {
-            Written::English => format!("step {} of {} is not a lab", k + 1, lesson.id),
-            Written::Chinese => format!("{} 的第 {} 步不是练习", lesson.id, k + 1),
-        });
+        return Grade::failed(lang.t_with(
+            "submission-not-a-lab",
+            &[("step", &(k + 1)), ("lesson", &lesson.id)],
+        ));
     };
     let mut spec = lesson.spec_at(k);
     let starter = &exercise.starter;
@@ -111,10 +110,10 @@ pub fn grade(lesson: &Lesson, k: usize, code: &Code, lang: Lang) -> Grade {
                     .first()
                     .map(|e| crate::vocabulary::compile::message(e, lang))
                     .unwrap_or_default();
-                return Grade::failed(match lang.written() {
-                    Written::English => format!("Does not compile: {}.glsl, {first}", kind.key()),
-                    Written::Chinese => format!("无法编译：{}.glsl，{first}", kind.key()),
-                });
+                return Grade::failed(lang.t_with(
+                    "submission-file-does-not-compile",
+                    &[("file", &kind.key()), ("first", &first)],
+                ));
             }
         }
     }
@@ -124,13 +123,10 @@ pub fn grade(lesson: &Lesson, k: usize, code: &Code, lang: Lang) -> Grade {
             matching: matching(&found),
             sentences: found.sentences(lang),
         },
-        Err(e) => Grade::failed(match lang.written() {
-            Written::English => format!("It compiles, but its run stopped: {e}"),
-            Written::Chinese => format!(
-                "可以编译，但运行中止：{}",
-                crate::vocabulary::run::render_error(&e, lang)
-            ),
-        }),
+        Err(e) => Grade::failed(lang.t_with(
+            "submission-its-run-stopped",
+            &[("why", &crate::vocabulary::run::render_error(&e, lang))],
+        )),
     }
 }
 
@@ -146,26 +142,26 @@ fn matching(found: &Findings) -> Option<(u64, u64)> {
 /// The first message of shaders that do not compile, with its stage and line.
 fn compile_failed(errors: &[pipeline::shader::StageError], lang: Lang) -> String {
     let first = errors.first().map_or_else(String::new, |e| {
-        let stage = match (e.stage, lang.written()) {
-            (pipeline::shader::Stage::Vertex, Written::English) => "vertex shader",
-            (pipeline::shader::Stage::Fragment, Written::English) => "fragment shader",
-            (pipeline::shader::Stage::Vertex, Written::Chinese) => "顶点着色器",
-            (pipeline::shader::Stage::Fragment, Written::Chinese) => "片元着色器",
-        };
-        let comma = if lang.is_chinese() { "，" } else { ", " };
-        format!(
-            "{stage}{comma}{}",
-            crate::vocabulary::compile::message(&e.error, lang)
+        let stage = lang.t(match e.stage {
+            pipeline::shader::Stage::Vertex => "submission-vertex-shader",
+            pipeline::shader::Stage::Fragment => "submission-fragment-shader",
+        });
+        lang.t_with(
+            "submission-stage-message",
+            &[
+                ("stage", &stage),
+                (
+                    "message",
+                    &crate::vocabulary::compile::message(&e.error, lang),
+                ),
+            ],
         )
     });
     let more = errors.len().saturating_sub(1);
-    match (lang.written(), more) {
-        (Written::English, 0) => format!("Does not compile: {first}"),
-        (Written::English, 1) => format!("Does not compile: {first} (and 1 more message)"),
-        (Written::English, n) => format!("Does not compile: {first} (and {n} more messages)"),
-        (Written::Chinese, 0) => format!("无法编译：{first}"),
-        (Written::Chinese, n) => format!("无法编译：{first}（另有 {n} 条消息）"),
-    }
+    lang.t_with(
+        "submission-does-not-compile",
+        &[("first", &first), ("more", &more)],
+    )
 }
 
 /// A student's work on a lesson in one file, as **Export my work** writes it and `pipelens
@@ -290,6 +286,29 @@ impl Code {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A shader that does not compile is said by its stage and first message, and how many
+    /// more there are, by the language's plural rules.
+    #[test]
+    fn a_compile_failure_names_its_stage_and_counts_the_rest() {
+        let errors = pipeline::shader::link(
+            Some("void main() { gl_Position = vec4(0.0) }"),
+            Some("out vec4 c; void main() { c = vec4(1.0) }"),
+        )
+        .expect_err("two missing semicolons");
+        let one = compile_failed(&errors[1..], Lang::EN);
+        assert!(
+            one.starts_with("Does not compile: fragment shader, "),
+            "{one}"
+        );
+        assert!(!one.contains("more message"), "{one}");
+        let en = compile_failed(&errors, Lang::EN);
+        assert!(en.starts_with("Does not compile: vertex shader, "), "{en}");
+        assert!(en.ends_with(" (and 1 more message)"), "{en}");
+        let zh = compile_failed(&errors, Lang::ZH);
+        assert!(zh.starts_with("无法编译：顶点着色器，"), "{zh}");
+        assert!(zh.ends_with("（另有 1 条消息）"), "{zh}");
+    }
 
     /// A work file written and read back holds the same code and answers; a file that is not
     /// one says so.
