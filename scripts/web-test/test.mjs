@@ -209,6 +209,7 @@ if (process.env.ISOLATED_URL) {
   const own = await browser.newContext({ viewport: { width: 1366, height: 768 } });
   firstVisit = await own.newPage();
   firstVisit.on("pageerror", (e) => errors.push(`first visit, isolated: ${e.message}`));
+  firstVisit.on("console", (m) => { if ((m.type() === "warning" || m.type() === "error") && !/deprecated parameters/.test(m.text())) console.log(`first visit, isolated, ${m.type()}: ${m.text()}`); });
   await firstVisit.goto(process.env.ISOLATED_URL + "?step=2");
   const running = await until(firstVisit, () => document.title.endsWith("step 2/10"), null);
   let kept = [];
@@ -222,6 +223,8 @@ if (process.env.ISOLATED_URL) {
     await firstVisit.waitForTimeout(1000);
   }
   const threaded = await firstVisit.evaluate(() => Number(document.documentElement.dataset.threads));
+  const poolError = await firstVisit.evaluate(() => document.documentElement.dataset.poolError);
+  if (poolError) console.log(`note: the first visit's thread pool did not start (${poolError}); it ran the single-threaded build`);
   check(running && kept.includes("/") && kept.some((p) => p.endsWith(threaded > 0 ? "/threads/pipelens_web_bg.wasm" : "/pipelens_web_bg.wasm")),
     `a first visit to an isolating host keeps the page and its build (${threaded} threads; kept: ${kept.join(" ")})`);
   // Closed meanwhile (a blank page in its place), so that it draws nothing while the rest runs.
