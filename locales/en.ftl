@@ -105,6 +105,9 @@ new-make-the-lesson = Make the lesson
 
 ## src/app/editor/screen.rs
 
+screen-update-step = Update step { $step } from the screen
+screen-new-step-words = A new step { $step }: its words
+screen-add-as-step = ＋ Add as step { $step }
 screen-what-is-on-screen = What is on screen
 screen-the-stage-buffer-layout-overlays = The stage, buffer, layout, overlays, inspected pixel, selected vertex and every parameter changed since this step began. Drag a slider while the editor is open to record an animation.
 screen-no-parameter-changed = No parameter changed.
@@ -116,6 +119,11 @@ screen-not-an-animation = Not an animation
 
 ## src/app/editor/window.rs
 
+window-steps-deleted = { $count ->
+    [one] 1 step deleted since the last save
+   *[other] { $count } steps deleted since the last save
+}
+window-step-label = Step { $step }:
 window-lesson-editor = Lesson editor
 window-close-the-editor-r = Close the editor (R)
 window-a-built-in-lesson-is = A built-in lesson is not edited in place. Make it a lesson of your own (New lesson, from this lesson, below), then record, word and arrange its steps there.
@@ -129,6 +137,7 @@ window-delete = Delete
 
 ## src/app/editor/words.rs
 
+words-of-step = The words of step { $step }
 words-the-lesson-s-title-and = The lesson's title and summary
 words-title = Title
 words-summary = Summary
@@ -179,6 +188,10 @@ alt-name-colon = :{" "}
 
 ## src/app/views/answer.rs
 
+answer-type-the-value = Type the value
+answer-type-the-components = Type the { $n } components
+answer-type-the-matrix = Type the { $rows }×{ $columns } matrix, cell by cell
+answer-prompt = { $what } (each within { $tolerance }):
 answer-a-number-or-an-expression = A number or an expression: 0.866, sqrt(3)/2, 2*pi/3, 1/4
 answer-check = Check
 answer-compare-with-the-expected-value = Compare with the expected value (Enter)
@@ -226,6 +239,7 @@ debugger-several-fragments-reached-this-pixel = Several fragments reached this p
 
 ## src/app/views/exercise.rs
 
+exercise-list-separator = { ", " }
 exercise-drawing-pipelens-own-frame = Drawing pipelens' own frame…
 exercise-pipelens-own = pipelens' own
 exercise-difference = difference:
@@ -373,6 +387,7 @@ observer-lights = lights
 
 ## src/app/views/own_uniforms.rs
 
+own-uniforms-tip = uniform { $kind } { $name } (line { $line }): the range { $lo }..{ $hi } and first value come from the comment after it, `// MIN..MAX = VALUE`; a lesson sets it with "uniforms.{ $name }"
 own-uniforms-your-uniforms = Your uniforms
 
 ## src/app/views/params/lighting.rs
@@ -565,6 +580,8 @@ shader-does-not-compile-the-last = Does not compile: the last good picture stays
 
 ## src/app/views/watch_list.rs
 
+watch-list-undeclared-input = it reads `{ $name }`, which your shader does not declare: the frame did not hand it over
+watch-list-not-readable = not readable after line { $line }: { $why }
 watch-list-no-run-is-kept-here = no run is kept here: inspect a pixel or select a vertex
 watch-list-watch-list = Watch list
 watch-list-after-line = after line
@@ -854,6 +871,7 @@ shortcuts-the-keyboard-back-from-the = the keyboard back from the picture or the
 
 ## src/app/views/debugger.rs
 
+debugger-watch-not-run-yet = watch `{ $expression }`: up to this step, this fragment has not run line { $line }
 debugger-back = ← back
 debugger-step-back = step back
 debugger-over = → over
@@ -1050,11 +1068,16 @@ answer-not-yet = Not yet ({ $off } of { $entries } off, tolerance { $tolerance }
 submission-not-a-lab = step { $step } of { $lesson } is not a lab
 submission-file-does-not-compile = Does not compile: { $file }.glsl, { $first }
 submission-its-run-stopped = It compiles, but its run stopped: { $why }
-submission-vertex-shader = vertex shader
-submission-fragment-shader = fragment shader
-submission-stage-message = { $stage }, { $message }
 submission-does-not-compile = Does not compile: { $first }{ $more ->
         [0] {""}
         [one] { " " }(and 1 more message)
        *[other] { " " }(and { $more } more messages)
     }
+
+## src/vocabulary/compile.rs
+
+compile-at = line { $line }, column { $column }: { $said }
+compile-vertex-shader = vertex shader
+compile-fragment-shader = fragment shader
+compile-stage-message = { $stage }, { $message }
+compile-file-message = { $file }.glsl, { $message }

@@ -105,6 +105,9 @@ new-make-the-lesson = 新建课程
 
 ## src/app/editor/screen.rs
 
+screen-update-step = 用屏幕内容更新第 { $step } 步
+screen-new-step-words = 新的第 { $step } 步：文字
+screen-add-as-step = ＋ 添加为第 { $step } 步
 screen-what-is-on-screen = 屏幕上的内容
 screen-the-stage-buffer-layout-overlays = 阶段、缓冲、布局、叠加层、所检查的像素、选中的顶点，以及本步骤开始以来改动过的每个参数。编辑器打开时拖动滑块即可录制动画。
 screen-no-parameter-changed = 没有改动参数。
@@ -116,6 +119,8 @@ screen-not-an-animation = 不作为动画
 
 ## src/app/editor/window.rs
 
+window-steps-deleted = 自上次保存以来删除了 { $count } 步
+window-step-label = 第 { $step } 步：
 window-lesson-editor = 课程编辑器
 window-close-the-editor-r = 关闭编辑器（R）
 window-a-built-in-lesson-is = 内置课程不能直接修改。先把它新建为你自己的课程（见下方“新建课程”，从本课程开始），再在那里录制、撰写和调整步骤。
@@ -129,6 +134,7 @@ window-delete = 删除
 
 ## src/app/editor/words.rs
 
+words-of-step = 第 { $step } 步的文字
 words-the-lesson-s-title-and = 课程的标题与简介
 words-title = 标题
 words-summary = 简介
@@ -179,6 +185,10 @@ alt-name-colon = ：
 
 ## src/app/views/answer.rs
 
+answer-type-the-value = 填入数值
+answer-type-the-components = 填入 { $n } 个分量
+answer-type-the-matrix = 逐格填入 { $rows }×{ $columns } 矩阵
+answer-prompt = { $what }（每项误差 { $tolerance } 以内）：
 answer-a-number-or-an-expression = 数值或算式：0.866、sqrt(3)/2、2*pi/3、1/4
 answer-check = 检查
 answer-compare-with-the-expected-value = 与期望值比较（回车）
@@ -226,6 +236,7 @@ debugger-several-fragments-reached-this-pixel = 有多个片元到达此像素�
 
 ## src/app/views/exercise.rs
 
+exercise-list-separator = 、
 exercise-drawing-pipelens-own-frame = 正在绘制 pipelens 自带的画面…
 exercise-pipelens-own = pipelens 自带
 exercise-difference = 差异：
@@ -373,6 +384,7 @@ observer-lights = 光源
 
 ## src/app/views/own_uniforms.rs
 
+own-uniforms-tip = uniform { $kind } { $name }（第 { $line } 行）：范围 { $lo }..{ $hi } 和初值来自其后的注释 `// 最小..最大 = 初值`；课程用 "uniforms.{ $name }" 设置它
 own-uniforms-your-uniforms = 你的 uniform
 
 ## src/app/views/params/lighting.rs
@@ -565,6 +577,8 @@ shader-does-not-compile-the-last = 无法编译：画面保持上一次成功的
 
 ## src/app/views/watch_list.rs
 
+watch-list-undeclared-input = 它读取了 `{ $name }`，而你的着色器没有声明它：这一帧没有传入它
+watch-list-not-readable = 无法在第 { $line } 行之后读取：{ $why }
 watch-list-no-run-is-kept-here = 这里没有保存的运行：请检查一个像素或选择一个顶点
 watch-list-watch-list = 监视列表
 watch-list-after-line = 在此行之后：
@@ -851,6 +865,7 @@ shortcuts-the-keyboard-back-from-the = 键盘离开画面或着色器源码（�
 
 ## src/app/views/debugger.rs
 
+debugger-watch-not-run-yet = 监视 `{ $expression }`：到此步为止，此片元尚未执行第 { $line } 行
 debugger-back = ← 后退
 debugger-step-back = 后退一步
 debugger-over = → 跳过
@@ -1024,10 +1039,15 @@ answer-not-yet = 还不对（{ $entries } 项中有 { $off } 项超出 { $tolera
 submission-not-a-lab = { $lesson } 的第 { $step } 步不是练习
 submission-file-does-not-compile = 无法编译：{ $file }.glsl，{ $first }
 submission-its-run-stopped = 可以编译，但运行中止：{ $why }
-submission-vertex-shader = 顶点着色器
-submission-fragment-shader = 片元着色器
-submission-stage-message = { $stage }，{ $message }
 submission-does-not-compile = 无法编译：{ $first }{ $more ->
         [0] {""}
        *[other] （另有 { $more } 条消息）
     }
+
+## src/vocabulary/compile.rs
+
+compile-at = 第 { $line } 行第 { $column } 列：{ $said }
+compile-vertex-shader = 顶点着色器
+compile-fragment-shader = 片元着色器
+compile-stage-message = { $stage }，{ $message }
+compile-file-message = { $file }.glsl，{ $message }

@@ -142,20 +142,7 @@ fn matching(found: &Findings) -> Option<(u64, u64)> {
 /// The first message of shaders that do not compile, with its stage and line.
 fn compile_failed(errors: &[pipeline::shader::StageError], lang: Lang) -> String {
     let first = errors.first().map_or_else(String::new, |e| {
-        let stage = lang.t(match e.stage {
-            pipeline::shader::Stage::Vertex => "submission-vertex-shader",
-            pipeline::shader::Stage::Fragment => "submission-fragment-shader",
-        });
-        lang.t_with(
-            "submission-stage-message",
-            &[
-                ("stage", &stage),
-                (
-                    "message",
-                    &crate::vocabulary::compile::message(&e.error, lang),
-                ),
-            ],
-        )
+        crate::vocabulary::compile::stage_message(e, lang)
     });
     let more = errors.len().saturating_sub(1);
     lang.t_with(

@@ -5,7 +5,7 @@
 //! engine reports it as a complaint at its line.
 
 use crate::vocabulary::Written;
-use pipeline::shader::{Complaint, ShaderError, interface};
+use pipeline::shader::{Complaint, ShaderError, Stage, StageError, interface};
 
 use super::Lang;
 
@@ -13,7 +13,7 @@ use super::Lang;
 #[must_use]
 pub fn complaint(c: &Complaint, lang: Lang) -> Option<String> {
     use Complaint as C;
-    let en = lang == Lang::EN;
+    let en = lang.written() == Written::English;
     let t = |e: String, z: String| if en { e } else { z };
     Some(match c {
         C::MissingSemicolon => t(
@@ -93,7 +93,7 @@ pub fn complaint(c: &Complaint, lang: Lang) -> Option<String> {
 /// or `None` where the English message is all there is.
 fn form(c: &Complaint, lang: Lang) -> Option<String> {
     use Complaint as C;
-    let en = lang == Lang::EN;
+    let en = lang.written() == Written::English;
     let t = |e: String, z: String| if en { e } else { z };
     Some(match c {
         C::CannotCombine => t(
@@ -186,7 +186,7 @@ fn form(c: &Complaint, lang: Lang) -> Option<String> {
 /// message says it, and for a complaint that is not a run-time one).
 fn fault(c: &Complaint, lang: Lang) -> Option<String> {
     use Complaint as C;
-    if lang == Lang::EN {
+    if lang.written() == Written::English {
         return None;
     }
     Some(match c {
@@ -215,7 +215,7 @@ fn fault(c: &Complaint, lang: Lang) -> Option<String> {
 /// message says it.
 fn own(c: &Complaint, lang: Lang) -> Option<String> {
     use Complaint as C;
-    if lang == Lang::EN {
+    if lang.written() == Written::English {
         return None;
     }
     let meant = |s: &Option<String>| {
@@ -310,10 +310,23 @@ fn token_words(token: &str, lang: Lang) -> String {
 #[must_use]
 pub fn message(e: &ShaderError, lang: Lang) -> String {
     let said = complaint(&e.complaint, lang).unwrap_or_else(|| e.message.clone());
-    match lang.written() {
-        Written::English => format!("line {}, column {}: {said}", e.line, e.column),
-        Written::Chinese => format!("第 {} 行第 {} 列：{said}", e.line, e.column),
-    }
+    lang.t_with(
+        "compile-at",
+        &[("line", &e.line), ("column", &e.column), ("said", &said)],
+    )
+}
+
+/// A shader's compile message with the stage it is in: "fragment shader, line 4, column 18: …".
+#[must_use]
+pub fn stage_message(e: &StageError, lang: Lang) -> String {
+    let stage = lang.t(match e.stage {
+        Stage::Vertex => "compile-vertex-shader",
+        Stage::Fragment => "compile-fragment-shader",
+    });
+    lang.t_with(
+        "compile-stage-message",
+        &[("stage", &stage), ("message", &message(&e.error, lang))],
+    )
 }
 
 #[cfg(test)]
@@ -336,6 +349,30 @@ mod tests {
             "line 4, column 18: a `;` is missing at the end of this line"
         );
         assert_eq!(message(e, Lang::ZH), "第 4 行第 18 列：这一行末尾缺少 `;`");
+    }
+
+    /// A language with no sentences of its own here (French, a lesson's language) reads the
+    /// English ones, not the Chinese; the stage comes first, then the line, in each language.
+    #[test]
+    fn another_language_reads_english_and_the_stage_is_named_first() {
+        let src = "#version 330 core\nout vec4 color;\nvoid main() {\n    float x = 1.0\n    color = vec4(x);\n}\n";
+        let Err(errors) = pipeline::shader::compile(Stage::Fragment, src) else {
+            panic!("it compiles");
+        };
+        let english = "line 4, column 18: a `;` is missing at the end of this line";
+        assert_eq!(message(&errors[0], Lang::uncatalogued("fr")), english);
+        let staged = StageError {
+            stage: Stage::Fragment,
+            error: errors[0].clone(),
+        };
+        assert_eq!(
+            stage_message(&staged, Lang::EN),
+            format!("fragment shader, {english}")
+        );
+        assert_eq!(
+            stage_message(&staged, Lang::ZH),
+            "片元着色器，第 4 行第 18 列：这一行末尾缺少 `;`"
+        );
     }
 
     /// Every complaint but `Other` has a sentence in both languages, and the Chinese one holds

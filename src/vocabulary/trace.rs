@@ -11,7 +11,7 @@ use super::Lang;
 /// value, a discard.
 #[must_use]
 pub fn words(line: &TraceLine, lang: Lang) -> String {
-    if lang == Lang::EN {
+    if lang.written() == super::Written::English {
         return line.text.clone();
     }
     let value = line.value.as_deref().unwrap_or_default();

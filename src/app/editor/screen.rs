@@ -2,7 +2,6 @@
 //! sliders dragged while the editor was open (as `animate`, their seconds editable), added as a
 //! new step after the current one — its words typed first — or written into the current one.
 
-use crate::vocabulary::Written;
 use egui::RichText;
 
 use super::window::Editor;
@@ -44,10 +43,7 @@ impl Editor {
         let mut result = None;
         let mut go = k;
         if ui
-            .button(match lang.written() {
-                Written::English => format!("Update step {} from the screen", k + 1),
-                Written::Chinese => format!("用屏幕内容更新第 {} 步", k + 1),
-            })
+            .button(lang.t_with("screen-update-step", &[("step", &(k + 1))]))
             .on_hover_text(lang.t("screen-its-words-shaders-and-exercise"))
             .clicked()
         {
@@ -67,20 +63,13 @@ impl Editor {
         }
         ui.add_space(6.0);
         ui.label(
-            RichText::new(match lang.written() {
-                Written::English => format!("A new step {}: its words", k + 2),
-                Written::Chinese => format!("新的第 {} 步：文字", k + 2),
-            })
-            .strong(),
+            RichText::new(lang.t_with("screen-new-step-words", &[("step", &(k + 2))])).strong(),
         );
         words::pair(ui, lang.t("screen-title"), &mut self.fresh[0], 1);
         words::pair(ui, lang.t("screen-narration"), &mut self.fresh[1], 3);
         words::missing_note(ui, lang, &self.fresh[1]);
         if ui
-            .button(match lang.written() {
-                Written::English => format!("＋ Add as step {}", k + 2),
-                Written::Chinese => format!("＋ 添加为第 {} 步", k + 2),
-            })
+            .button(lang.t_with("screen-add-as-step", &[("step", &(k + 2))]))
             .clicked()
         {
             if crate::lesson::record::unworded(&self.fresh[0]).len() < 2 {

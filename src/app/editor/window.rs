@@ -3,7 +3,6 @@
 //! current step's words and what is on screen recorded (`words.rs`, `screen.rs`), a new lesson
 //! (`new.rs`), the file (`file.rs`).
 
-use crate::vocabulary::Written;
 use egui::RichText;
 
 use super::file::Edited;
@@ -281,23 +280,16 @@ impl Editor {
             });
         if doc.draft.deleted() > 0 {
             ui.label(
-                RichText::new(match lang.written() {
-                    Written::English => format!(
-                        "{} step(s) deleted since the last save",
-                        doc.draft.deleted()
-                    ),
-                    Written::Chinese => format!("自上次保存以来删除了 {} 步", doc.draft.deleted()),
-                })
+                RichText::new(
+                    lang.t_with("window-steps-deleted", &[("count", &doc.draft.deleted())]),
+                )
                 .weak(),
             );
         }
         let mut moved = None;
         let mut result = None;
         ui.horizontal_wrapped(|ui| {
-            ui.label(match lang.written() {
-                Written::English => format!("Step {}:", current + 1),
-                Written::Chinese => format!("第 {} 步：", current + 1),
-            });
+            ui.label(lang.t_with("window-step-label", &[("step", &(current + 1))]));
             if ui
                 .add_enabled(current > 0, egui::Button::new(lang.t("window-earlier")))
                 .clicked()

@@ -3,7 +3,6 @@
 //! (formulas included) and a note when one language is missing. What is typed goes into the
 //! lesson file's text at once (typing on in one box is one change to undo) and onto the card.
 
-use crate::vocabulary::Written;
 use egui::RichText;
 
 use super::window::Editor;
@@ -50,13 +49,7 @@ impl Editor {
                     typed.extend(boxes(ui, lang, *which, text));
                 }
             });
-        ui.label(
-            RichText::new(match lang.written() {
-                Written::English => format!("The words of step {}", k + 1),
-                Written::Chinese => format!("第 {} 步的文字", k + 1),
-            })
-            .strong(),
-        );
+        ui.label(RichText::new(lang.t_with("words-of-step", &[("step", &(k + 1))])).strong());
         for (which, text) in EDITED.iter().zip(&mut self.words).skip(2) {
             typed.extend(boxes(ui, lang, *which, text));
         }

@@ -2,7 +2,6 @@
 //! cell by cell), the tolerance said beside it, Check (or Enter), and the verdict — right, or
 //! which entry is off and by how much — after which the worked answer is offered.
 
-use crate::vocabulary::Written;
 use egui::{Color32, RichText, Ui};
 
 use super::typeset::Style;
@@ -84,18 +83,17 @@ pub fn field(
 /// What the field asks for, with the tolerance stated.
 fn prompt(expect: &Expect, lang: Lang) -> String {
     let tolerance = expect.tolerance_words(lang);
-    let what = match (expect.shape, lang.written()) {
-        (Shape::Number, Written::English) => "Type the value".to_owned(),
-        (Shape::Number, Written::Chinese) => "填入数值".to_owned(),
-        (Shape::Vector(n), Written::English) => format!("Type the {n} components"),
-        (Shape::Vector(n), Written::Chinese) => format!("填入 {n} 个分量"),
-        (Shape::Matrix(r, c), Written::English) => format!("Type the {r}×{c} matrix, cell by cell"),
-        (Shape::Matrix(r, c), Written::Chinese) => format!("逐格填入 {r}×{c} 矩阵"),
+    let what = match expect.shape {
+        Shape::Number => lang.t("answer-type-the-value").to_owned(),
+        Shape::Vector(n) => lang.t_with("answer-type-the-components", &[("n", &n)]),
+        Shape::Matrix(r, c) => {
+            lang.t_with("answer-type-the-matrix", &[("rows", &r), ("columns", &c)])
+        }
     };
-    match lang.written() {
-        Written::English => format!("{what} (each within {tolerance}):"),
-        Written::Chinese => format!("{what}（每项误差 {tolerance} 以内）："),
-    }
+    lang.t_with(
+        "answer-prompt",
+        &[("what", &what), ("tolerance", &tolerance)],
+    )
 }
 
 /// The grey hint in an empty cell: `x`, `y`, … for a vector, `m11` … for a matrix.

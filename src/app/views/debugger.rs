@@ -5,7 +5,6 @@
 //! which of its hits). Nothing runs again: the frame already kept the whole run, so stepping
 //! back is as cheap as stepping forward (`pipelens_glsl::stepping`).
 
-use crate::vocabulary::Written;
 use egui::{RichText, Ui};
 use pipeline::capture::FrameCapture;
 use pipeline::shader::stepping;
@@ -334,14 +333,10 @@ impl Watching<'_> {
                 lang.t("debugger-after-line"),
                 super::watch_picture::value_words(kind, *v)
             ),
-            _ => match lang.written() {
-                Written::English => format!(
-                    "watch `{expression}`: up to this step, this fragment has not run line {line}"
-                ),
-                Written::Chinese => {
-                    format!("监视 `{expression}`：到此步为止，此片元尚未执行第 {line} 行")
-                }
-            },
+            _ => lang.t_with(
+                "debugger-watch-not-run-yet",
+                &[("expression", expression), ("line", &line)],
+            ),
         }
     }
 }

@@ -185,12 +185,9 @@ fn captions(
         lang.t("exercise-depth"),
         lang.t("exercise-another-triangle"),
     ];
-    let (space, separator) = match lang.written() {
-        crate::vocabulary::Written::Chinese => (0.0, "、"),
-        crate::vocabulary::Written::English => (6.0, ","),
-    };
+    let separator = lang.t("exercise-list-separator");
     for (k, (name, [r, g, b])) in names.into_iter().zip(DIFFERENCE_COLOURS).enumerate() {
-        difference.append(name, space, format(Color32::from_rgb(r, g, b)));
+        difference.append(name, 0.0, format(Color32::from_rgb(r, g, b)));
         if k + 1 < names.len() {
             difference.append(separator, 0.0, format(Color32::WHITE));
         }

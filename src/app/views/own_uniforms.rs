@@ -5,7 +5,6 @@
 //! value from the comment after its declaration. A change sets the parameter `uniforms.NAME`,
 //! the one a lesson's `set` and `animate` use, so the recorder writes it into a step.
 
-use crate::vocabulary::Written;
 use egui::{RichText, Ui};
 use pipeline::shader::own_uniform::{OwnKind, OwnUniform};
 
@@ -45,22 +44,16 @@ pub fn controls(ui: &mut Ui, session: &Session) -> Option<Command> {
 /// One uniform's control, labelled by `label`; its new value when moved.
 fn control(ui: &mut Ui, u: &OwnUniform, label: egui::Id, lang: Lang) -> Option<Value> {
     let (lo, hi) = u.range;
-    let tip = match lang.written() {
-        Written::English => format!(
-            "uniform {} {} (line {}): the range {lo}..{hi} and first value come from the comment after it, `// MIN..MAX = VALUE`; a lesson sets it with \"uniforms.{}\"",
-            u.kind.glsl(),
-            u.name,
-            u.line,
-            u.name
-        ),
-        Written::Chinese => format!(
-            "uniform {} {}（第 {} 行）：范围 {lo}..{hi} 和初值来自其后的注释 `// 最小..最大 = 初值`；课程用 \"uniforms.{}\" 设置它",
-            u.kind.glsl(),
-            u.name,
-            u.line,
-            u.name
-        ),
-    };
+    let tip = lang.t_with(
+        "own-uniforms-tip",
+        &[
+            ("kind", &u.kind.glsl()),
+            ("name", &u.name),
+            ("line", &u.line),
+            ("lo", &lo),
+            ("hi", &hi),
+        ],
+    );
     match u.kind {
         OwnKind::Float => {
             let mut x = u.value[0];

@@ -4,7 +4,6 @@
 //! compiles is applied as one types (or on Ctrl+Enter); one that does not keeps the last good
 //! picture on screen. The source lives in the app (in the browser too, in the page).
 
-use crate::vocabulary::Written;
 use std::sync::Arc;
 
 use egui::{Color32, RichText, Ui};
@@ -496,10 +495,12 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
         .flat_map(|h| h.errors.iter().map(move |e| (h, e)))
     {
         ui.label(
-            RichText::new(format!(
-                "{}.glsl, {}",
-                h.kind.key(),
-                crate::vocabulary::compile::message(e, lang)
+            RichText::new(lang.t_with(
+                "compile-file-message",
+                &[
+                    ("file", &h.kind.key()),
+                    ("message", &crate::vocabulary::compile::message(e, lang)),
+                ],
             ))
             .monospace()
             .color(ui.visuals().error_fg_color),
@@ -507,19 +508,9 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
     }
     for e in &editor.errors {
         ui.label(
-            RichText::new(format!(
-                "{}{}{}",
-                match (e.stage, lang.written()) {
-                    (Stage::Vertex, Written::English) => "vertex shader",
-                    (Stage::Fragment, Written::English) => "fragment shader",
-                    (Stage::Vertex, Written::Chinese) => "顶点着色器",
-                    (Stage::Fragment, Written::Chinese) => "片元着色器",
-                },
-                if lang.is_chinese() { "，" } else { ", " },
-                crate::vocabulary::compile::message(&e.error, lang)
-            ))
-            .monospace()
-            .color(ui.visuals().error_fg_color),
+            RichText::new(crate::vocabulary::compile::stage_message(e, lang))
+                .monospace()
+                .color(ui.visuals().error_fg_color),
         );
     }
 }

@@ -4,7 +4,6 @@
 //! (`pipeline::watch_fragment`, `pipeline::watch_vertex`). A value stands from its store on,
 //! so stepping back and forth shows each expression as the run had it at that step.
 
-use crate::vocabulary::Written;
 use std::sync::Arc;
 
 use egui::{RichText, Ui};
@@ -125,17 +124,13 @@ impl WatchList {
 /// Why an expression cannot be read after `line`, in the reader's language (the compiler's
 /// own message kept as it is).
 fn why(e: &ReplayError, line: usize, lang: Lang) -> String {
-    match (e, lang.written()) {
-        (ReplayError::NotKept, _) => lang.t("watch-list-no-run-is-kept-here").to_owned(),
-        (ReplayError::Input(name), Written::English) => format!(
-            "it reads `{name}`, which your shader does not declare: the frame did not hand it over"
-        ),
-        (ReplayError::Input(name), Written::Chinese) => {
-            format!("它读取了 `{name}`，而你的着色器没有声明它：这一帧没有传入它")
+    match e {
+        ReplayError::NotKept => lang.t("watch-list-no-run-is-kept-here").to_owned(),
+        ReplayError::Input(name) => lang.t_with("watch-list-undeclared-input", &[("name", name)]),
+        ReplayError::Watch(e) => {
+            lang.t_with("watch-list-not-readable", &[("line", &line), ("why", e)])
         }
-        (ReplayError::Watch(e), Written::English) => format!("not readable after line {line}: {e}"),
-        (ReplayError::Watch(e), Written::Chinese) => format!("无法在第 {line} 行之后读取：{e}"),
-        (ReplayError::Run(e), _) => e.to_string(),
+        ReplayError::Run(e) => e.to_string(),
     }
 }
 
