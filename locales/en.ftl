@@ -239,7 +239,7 @@ debugger-several-fragments-reached-this-pixel = Several fragments reached this p
 
 ## src/app/views/exercise.rs
 
-exercise-list-separator = { ", " }
+list-separator = { ", " }
 exercise-drawing-pipelens-own-frame = Drawing pipelens' own frame…
 exercise-pipelens-own = pipelens' own
 exercise-difference = difference:
@@ -633,6 +633,23 @@ handouts-en = en
 
 ## src/cli/grade.rs
 
+grade-cannot-be-read = { $file } cannot be read: { $why }
+grade-too-large = { $name } holds { $megabytes } MB; a shader is at most { $kilobytes } KB: not graded
+grade-not-text = { $name } is not text (it holds bytes that are not UTF-8)
+grade-outside-folder = { $name } is a link that leads out of the hand-in's folder: not read
+grade-nothing = { $file } holds no shader.vert, shader.frag or function file ({ $functions })
+grade-not-work = { $file }: { $why }
+grade-other-lesson = { $file } is work on lesson { $lesson }, not on this one
+grade-no-work-at = { $file } holds no code for step { $step }
+grade-summary = { $handins ->
+    [one] 1 hand-in
+   *[other] { $handins } hand-ins
+}, { $checks ->
+    [one] 1 check
+   *[other] { $checks } checks
+}, { $passed } passed
+grade-gradescope-step = Step { $step }: { $title }
+grade-gradescope-output = { $passed } of { $total } lab steps passed, each checked pixel by pixel against pipelens' own.
 grade-pipelens-failed-while-checking-this = pipelens failed while checking this hand-in (a defect in pipelens, not in the hand-in): please report it
 grade-student = student
 grade-step = step
@@ -1081,3 +1098,15 @@ compile-vertex-shader = vertex shader
 compile-fragment-shader = fragment shader
 compile-stage-message = { $stage }, { $message }
 compile-file-message = { $file }.glsl, { $message }
+
+## src/lab/samples.rs
+
+samples-inside = inside
+samples-outside = outside
+samples-writes-the-fragment = writes the fragment
+samples-keeps-what-is-stored = keeps what is stored
+samples-on-a-top-or-left-edge = { " " }(on it: a top or left edge)
+samples-on-neither-top-nor-left = { " " }(on it: neither a top nor a left edge)
+samples-edge-value = E{ $edge } = { $value }{ $on }
+samples-inside-differs = At pixel ({ $x }, { $y }), the sample ({ $sx }, { $sy }) against triangle { $triangle }: { $edges }. pipelens: { $theirs }; your inside(): { $yours }.
+samples-depth-differs = At pixel ({ $x }, { $y }), sample { $sample }: triangle { $triangle }'s fragment has z = { $z } and the z-buffer holds { $stored }. pipelens { $theirs }; your depth_test(z, stored) { $yours }.

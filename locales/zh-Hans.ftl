@@ -236,7 +236,7 @@ debugger-several-fragments-reached-this-pixel = 有多个片元到达此像素�
 
 ## src/app/views/exercise.rs
 
-exercise-list-separator = 、
+list-separator = 、
 exercise-drawing-pipelens-own-frame = 正在绘制 pipelens 自带的画面…
 exercise-pipelens-own = pipelens 自带
 exercise-difference = 差异：
@@ -630,6 +630,17 @@ handouts-en = zh
 
 ## src/cli/grade.rs
 
+grade-cannot-be-read = 无法读取 { $file }：{ $why }
+grade-too-large = { $name } 有 { $megabytes } MB；着色器最多 { $kilobytes } KB：不予评分
+grade-not-text = { $name } 不是文本（含有非 UTF-8 的字节）
+grade-outside-folder = { $name } 是指向作业文件夹之外的链接：未读取
+grade-nothing = { $file } 中没有 shader.vert、shader.frag 或函数文件（{ $functions }）
+grade-not-work = { $file }：不是 pipelens 写的作业文件（{ $why }）
+grade-other-lesson = { $file } 是课程 { $lesson } 的作业，不是这一课的
+grade-no-work-at = { $file } 中没有第 { $step } 步的代码
+grade-summary = { $handins } 份作业，{ $checks } 项检查，{ $passed } 项通过
+grade-gradescope-step = 第 { $step } 步：{ $title }
+grade-gradescope-output = { $total } 个练习步骤中通过 { $passed } 个，每个都与 pipelens 自带的逐像素比较。
 grade-pipelens-failed-while-checking-this = pipelens 在检查这份作业时出错（这是 pipelens 的缺陷，不是作业的问题）：请报告
 grade-student = 学生
 grade-step = 步骤
@@ -1051,3 +1062,15 @@ compile-vertex-shader = 顶点着色器
 compile-fragment-shader = 片元着色器
 compile-stage-message = { $stage }，{ $message }
 compile-file-message = { $file }.glsl，{ $message }
+
+## src/lab/samples.rs
+
+samples-inside = 在内部
+samples-outside = 在外部
+samples-writes-the-fragment = 写入这个片元
+samples-keeps-what-is-stored = 保留已存的值
+samples-on-a-top-or-left-edge = （恰在边上：上边或左边）
+samples-on-neither-top-nor-left = （恰在边上：既非上边也非左边）
+samples-edge-value = E{ $edge } = { $value }{ $on }
+samples-inside-differs = 在像素 ({ $x }, { $y })，采样点 ({ $sx }, { $sy }) 对三角形 { $triangle }：{ $edges }。pipelens：{ $theirs }；你的 inside()：{ $yours }。
+samples-depth-differs = 在像素 ({ $x }, { $y }) 的第 { $sample } 个采样点：三角形 { $triangle } 的片元 z = { $z }，深度缓冲中已存 { $stored }。pipelens { $theirs }；你的 depth_test(z, stored) { $yours }。

@@ -4,7 +4,6 @@
 //! endless loop, a file far too large, binary bytes, a link out of its folder — is graded
 //! failed with its reason; the batch goes on.
 
-use crate::vocabulary::Written;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
@@ -190,51 +189,31 @@ impl Unreadable {
     /// The reason in words, in `lang`.
     fn words(&self, path: &Path, lang: Lang) -> String {
         let at = path.display();
-        match (self, lang.written()) {
-            (Self::Missing(e), Written::English) => format!("{at} cannot be read: {e}"),
-            (Self::Missing(e), Written::Chinese) => format!("无法读取 {at}：{e}"),
-            (Self::TooLarge(name, n), Written::English) => format!(
-                "{name} holds {:.1} MB; a shader is at most {} KB: not graded",
-                *n as f64 / 1e6,
-                MAX_SOURCE_BYTES / 1024
+        let file = &at;
+        match self {
+            Self::Missing(e) => lang.t_with("grade-cannot-be-read", &[("file", file), ("why", e)]),
+            Self::TooLarge(name, n) => lang.t_with(
+                "grade-too-large",
+                &[
+                    ("name", name),
+                    ("megabytes", &format!("{:.1}", *n as f64 / 1e6)),
+                    ("kilobytes", &(MAX_SOURCE_BYTES / 1024)),
+                ],
             ),
-            (Self::TooLarge(name, n), Written::Chinese) => format!(
-                "{name} 有 {:.1} MB；着色器最多 {} KB：不予评分",
-                *n as f64 / 1e6,
-                MAX_SOURCE_BYTES / 1024
+            Self::NotText(name) => lang.t_with("grade-not-text", &[("name", name)]),
+            Self::OutsideFolder(name) => lang.t_with("grade-outside-folder", &[("name", name)]),
+            Self::Nothing => lang.t_with(
+                "grade-nothing",
+                &[
+                    ("file", file),
+                    ("functions", &function_files(lang.t("list-separator"))),
+                ],
             ),
-            (Self::NotText(name), Written::English) => {
-                format!("{name} is not text (it holds bytes that are not UTF-8)")
+            Self::NotWork(why) => lang.t_with("grade-not-work", &[("file", file), ("why", why)]),
+            Self::OtherLesson(id) => {
+                lang.t_with("grade-other-lesson", &[("file", file), ("lesson", id)])
             }
-            (Self::NotText(name), Written::Chinese) => {
-                format!("{name} 不是文本（含有非 UTF-8 的字节）")
-            }
-            (Self::OutsideFolder(name), Written::English) => {
-                format!("{name} is a link that leads out of the hand-in's folder: not read")
-            }
-            (Self::OutsideFolder(name), Written::Chinese) => {
-                format!("{name} 是指向作业文件夹之外的链接：未读取")
-            }
-            (Self::Nothing, Written::English) => format!(
-                "{at} holds no shader.vert, shader.frag or function file ({})",
-                function_files(", ")
-            ),
-            (Self::NotWork(why), Written::English) => format!("{at}: {why}"),
-            (Self::NotWork(why), Written::Chinese) => {
-                format!("{at}：不是 pipelens 写的作业文件（{why}）")
-            }
-            (Self::OtherLesson(id), Written::English) => {
-                format!("{at} is work on lesson {id}, not on this one")
-            }
-            (Self::OtherLesson(id), Written::Chinese) => {
-                format!("{at} 是课程 {id} 的作业，不是这一课的")
-            }
-            (Self::NoWorkAt(n), Written::English) => format!("{at} holds no code for step {n}"),
-            (Self::NoWorkAt(n), Written::Chinese) => format!("{at} 中没有第 {n} 步的代码"),
-            (Self::Nothing, Written::Chinese) => format!(
-                "{at} 中没有 shader.vert、shader.frag 或函数文件（{}）",
-                function_files("、")
-            ),
+            Self::NoWorkAt(n) => lang.t_with("grade-no-work-at", &[("file", file), ("step", n)]),
         }
     }
 }
@@ -379,23 +358,14 @@ fn print_table(rows: &[Row], lang: Lang) {
     let passed = rows.iter().filter(|r| r.grade.passed).count();
     say!(
         "{}",
-        match lang.written() {
-            Written::English => {
-                let plural = |n: usize, one: &str, many: &str| {
-                    format!("{n} {}", if n == 1 { one } else { many })
-                };
-                format!(
-                    "{}, {}, {passed} passed",
-                    plural(students.len(), "hand-in", "hand-ins"),
-                    plural(rows.len(), "check", "checks")
-                )
-            }
-            Written::Chinese => format!(
-                "{} 份作业，{} 项检查，{passed} 项通过",
-                students.len(),
-                rows.len()
-            ),
-        }
+        lang.t_with(
+            "grade-summary",
+            &[
+                ("handins", &students.len()),
+                ("checks", &rows.len()),
+                ("passed", &passed),
+            ],
+        )
     );
 }
 
@@ -444,10 +414,7 @@ fn gradescope_results(rows: &[Row], lang: Lang) -> serde_json::Value {
         .iter()
         .map(|r| {
             serde_json::json!({
-                "name": match lang.written() {
-                    Written::English => format!("Step {}: {}", r.step, r.title),
-                    Written::Chinese => format!("第 {} 步：{}", r.step, r.title),
-                },
+                "name": lang.t_with("grade-gradescope-step", &[("step", &r.step), ("title", &r.title)]),
                 "score": if r.grade.passed { 1.0 } else { 0.0 },
                 "max_score": 1.0,
                 "status": if r.grade.passed { "passed" } else { "failed" },
@@ -459,12 +426,44 @@ fn gradescope_results(rows: &[Row], lang: Lang) -> serde_json::Value {
     let score = rows.iter().filter(|r| r.grade.passed).count() as f64;
     serde_json::json!({
         "score": score,
-        "output": match lang.written() {
-            Written::English => format!("{} of {} lab steps passed, each checked pixel by pixel against pipelens' own.", score, rows.len()),
-            Written::Chinese => format!("{} 个练习步骤中通过 {} 个，每个都与 pipelens 自带的逐像素比较。", rows.len(), score),
-        },
+        "output": lang.t_with("grade-gradescope-output", &[("passed", &score), ("total", &rows.len())]),
         "visibility": "visible",
         "stdout_visibility": "visible",
         "tests": tests,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Why a hand-in is not graded, as whole sentences in both languages (written by hand: the
+    /// limit is 256 KB, the function files are the five `HookKind`s' in their order).
+    #[test]
+    fn a_hand_in_that_cannot_be_read_is_told_why_in_both_languages() {
+        let at = Path::new("class/ana");
+        let large = Unreadable::TooLarge("shader.frag".to_owned(), 2_500_000);
+        assert_eq!(
+            large.words(at, Lang::EN),
+            "shader.frag holds 2.5 MB; a shader is at most 256 KB: not graded"
+        );
+        assert_eq!(
+            large.words(at, Lang::ZH),
+            "shader.frag 有 2.5 MB；着色器最多 256 KB：不予评分"
+        );
+        assert_eq!(
+            Unreadable::Nothing.words(at, Lang::EN),
+            "class/ana holds no shader.vert, shader.frag or function file (inside.glsl, \
+             depth_test.glsl, de_casteljau.glsl, shadow_matrix.glsl, bezier_patch.glsl)"
+        );
+        assert_eq!(
+            Unreadable::Nothing.words(at, Lang::ZH),
+            "class/ana 中没有 shader.vert、shader.frag 或函数文件（inside.glsl、depth_test.glsl、\
+             de_casteljau.glsl、shadow_matrix.glsl、bezier_patch.glsl）"
+        );
+        assert_eq!(
+            Unreadable::NoWorkAt(3).words(at, Lang::ZH),
+            "class/ana 中没有第 3 步的代码"
+        );
+    }
 }

@@ -4,7 +4,6 @@
 //! stored, both verdicts (the depth test). What the lab is about, named at the place it
 //! differs.
 
-use crate::vocabulary::Written;
 use glam::I64Vec2;
 use pipeline::capture::FrameCapture;
 use pipeline::raster::ONE;
@@ -135,17 +134,19 @@ impl SampleMismatch {
     /// The mismatch in words: where, the numbers the test reads, both verdicts.
     #[must_use]
     pub fn words(&self, lang: Lang) -> String {
-        let verdict = |inside: bool| match (inside, lang.written()) {
-            (true, Written::English) => "inside",
-            (false, Written::English) => "outside",
-            (true, Written::Chinese) => "在内部",
-            (false, Written::Chinese) => "在外部",
+        let verdict = |inside: bool| {
+            lang.t(if inside {
+                "samples-inside"
+            } else {
+                "samples-outside"
+            })
         };
-        let writes = |w: bool| match (w, lang.written()) {
-            (true, Written::English) => "writes the fragment",
-            (false, Written::English) => "keeps what is stored",
-            (true, Written::Chinese) => "写入这个片元",
-            (false, Written::Chinese) => "保留已存的值",
+        let writes = |w: bool| {
+            lang.t(if w {
+                "samples-writes-the-fragment"
+            } else {
+                "samples-keeps-what-is-stored"
+            })
         };
         let num = |v: f64| crate::vocabulary::short(v as f32, 4);
         match self {
@@ -161,38 +162,33 @@ impl SampleMismatch {
                 let edges: Vec<String> = (0..3)
                     .map(|i| {
                         let on = if e[i] == 0.0 {
-                            match (top_left[i], lang.written()) {
-                                (true, Written::English) => " (on it: a top or left edge)",
-                                (false, Written::English) => {
-                                    " (on it: neither a top nor a left edge)"
-                                }
-                                (true, Written::Chinese) => "（恰在边上：上边或左边）",
-                                (false, Written::Chinese) => "（恰在边上：既非上边也非左边）",
-                            }
+                            lang.t(if top_left[i] {
+                                "samples-on-a-top-or-left-edge"
+                            } else {
+                                "samples-on-neither-top-nor-left"
+                            })
                         } else {
                             ""
                         };
-                        format!("E{i} = {}{on}", num(e[i]))
+                        lang.t_with(
+                            "samples-edge-value",
+                            &[("edge", &i), ("value", &num(e[i])), ("on", &on)],
+                        )
                     })
                     .collect();
-                match lang.written() {
-                    Written::English => format!(
-                        "At pixel ({x}, {y}), the sample ({}, {}) against triangle {triangle}: {}. pipelens: {}; your inside(): {}.",
-                        num(*px),
-                        num(*py),
-                        edges.join(", "),
-                        verdict(*theirs),
-                        verdict(*yours)
-                    ),
-                    Written::Chinese => format!(
-                        "在像素 ({x}, {y})，采样点 ({}, {}) 对三角形 {triangle}：{}。pipelens：{}；你的 inside()：{}。",
-                        num(*px),
-                        num(*py),
-                        edges.join("，"),
-                        verdict(*theirs),
-                        verdict(*yours)
-                    ),
-                }
+                lang.t_with(
+                    "samples-inside-differs",
+                    &[
+                        ("x", x),
+                        ("y", y),
+                        ("sx", &num(*px)),
+                        ("sy", &num(*py)),
+                        ("triangle", triangle),
+                        ("edges", &edges.join(lang.t("list-separator"))),
+                        ("theirs", &verdict(*theirs)),
+                        ("yours", &verdict(*yours)),
+                    ],
+                )
             }
             Self::Depth {
                 pixel: (x, y),
@@ -204,19 +200,73 @@ impl SampleMismatch {
                 yours,
             } => {
                 let (z, stored) = (format!("{z:.6}"), format!("{stored:.6}"));
-                match lang.written() {
-                    Written::English => format!(
-                        "At pixel ({x}, {y}), sample {sample}: triangle {triangle}'s fragment has z = {z} and the z-buffer holds {stored}. pipelens {}; your depth_test(z, stored) {}.",
-                        writes(*theirs),
-                        writes(*yours)
-                    ),
-                    Written::Chinese => format!(
-                        "在像素 ({x}, {y}) 的第 {sample} 个采样点：三角形 {triangle} 的片元 z = {z}，深度缓冲中已存 {stored}。pipelens {}；你的 depth_test(z, stored) {}。",
-                        writes(*theirs),
-                        writes(*yours)
-                    ),
-                }
+                lang.t_with(
+                    "samples-depth-differs",
+                    &[
+                        ("x", x),
+                        ("y", y),
+                        ("sample", sample),
+                        ("triangle", triangle),
+                        ("z", &z),
+                        ("stored", &stored),
+                        ("theirs", &writes(*theirs)),
+                        ("yours", &writes(*yours)),
+                    ],
+                )
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A sample on a shared edge that the student counts in and pipelens leaves out, and a
+    /// depth test answered the other way, each read as a whole sentence in both languages
+    /// (written here by hand from the fields).
+    #[test]
+    fn a_mismatch_reads_as_a_sentence_in_both_languages() {
+        let inside = SampleMismatch::Inside {
+            pixel: (12, 7),
+            triangle: 3,
+            position: [12.5, 7.5],
+            e: [0.0, 1.25, -0.5],
+            top_left: [false, true, true],
+            theirs: false,
+            yours: true,
+        };
+        assert_eq!(
+            inside.words(Lang::EN),
+            "At pixel (12, 7), the sample (12.5, 7.5) against triangle 3: \
+             E0 = 0 (on it: neither a top nor a left edge), E1 = 1.25, E2 = -0.5. \
+             pipelens: outside; your inside(): inside."
+        );
+        assert_eq!(
+            inside.words(Lang::ZH),
+            "在像素 (12, 7)，采样点 (12.5, 7.5) 对三角形 3：\
+             E0 = 0（恰在边上：既非上边也非左边）、E1 = 1.25、E2 = -0.5。\
+             pipelens：在外部；你的 inside()：在内部。"
+        );
+        let depth = SampleMismatch::Depth {
+            pixel: (4, 5),
+            sample: 2,
+            triangle: 1,
+            z: 0.25,
+            stored: 0.5,
+            theirs: true,
+            yours: false,
+        };
+        assert_eq!(
+            depth.words(Lang::EN),
+            "At pixel (4, 5), sample 2: triangle 1's fragment has z = 0.250000 and the z-buffer \
+             holds 0.500000. pipelens writes the fragment; your depth_test(z, stored) keeps what \
+             is stored."
+        );
+        assert_eq!(
+            depth.words(Lang::ZH),
+            "在像素 (4, 5) 的第 2 个采样点：三角形 1 的片元 z = 0.250000，深度缓冲中已存 0.500000。\
+             pipelens 写入这个片元；你的 depth_test(z, stored) 保留已存的值。"
+        );
     }
 }

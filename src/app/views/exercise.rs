@@ -185,7 +185,7 @@ fn captions(
         lang.t("exercise-depth"),
         lang.t("exercise-another-triangle"),
     ];
-    let separator = lang.t("exercise-list-separator");
+    let separator = lang.t("list-separator");
     for (k, (name, [r, g, b])) in names.into_iter().zip(DIFFERENCE_COLOURS).enumerate() {
         difference.append(name, 0.0, format(Color32::from_rgb(r, g, b)));
         if k + 1 < names.len() {
