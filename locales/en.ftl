@@ -671,6 +671,12 @@ lesson-the-debugger-at-pixel = The debugger at pixel
 
 ## src/export/picture.rs
 
+picture-watch-title = { $expression } after line { $line }
+picture-watch-holds = yellow where it holds, dark blue where not
+picture-watch-range = dark blue { $lo } to yellow { $hi }
+picture-watch-vector = the vector as a colour
+picture-watch-legend-fragment = { $expression } after line { $line }: { $said }; grey checks where no fragment ran the line
+picture-watch-legend-vertex = { $expression } after line { $line } of the vertex shader, interpolated over each triangle: { $said }; grey checks where a corner of the triangle did not run the line
 picture-mip-level = mip level
 
 ## src/observer.rs
@@ -789,6 +795,7 @@ handout-the-animation-in-frames-from = The animation in frames, from its start t
 
 ## src/export/handout_exercise.rs
 
+handout-exercise-your-answer = Your answer (each entry within { $tolerance }):
 handout-exercise-question = Question:
 handout-exercise-answer = Answer:
 handout-exercise-show-the-answer = Show the answer
@@ -1110,3 +1117,18 @@ samples-on-neither-top-nor-left = { " " }(on it: neither a top nor a left edge)
 samples-edge-value = E{ $edge } = { $value }{ $on }
 samples-inside-differs = At pixel ({ $x }, { $y }), the sample ({ $sx }, { $sy }) against triangle { $triangle }: { $edges }. pipelens: { $theirs }; your inside(): { $yours }.
 samples-depth-differs = At pixel ({ $x }, { $y }), sample { $sample }: triangle { $triangle }'s fragment has z = { $z } and the z-buffer holds { $stored }. pipelens { $theirs }; your depth_test(z, stored) { $yours }.
+
+## src/lesson/forbid.rs
+
+forbid-own-uniform = Not yet: { $file } line { $line } declares pipelens' own `{ $name }` — this lab asks you to compute it yourself, so the uniform is not yours to use here.
+forbid-own-function = Not yet: { $file } line { $line } calls `{ $name }()` — this lab asks you to compute what it returns yourself, so it is not yours to call here.
+
+## src/lesson/typed.rs
+
+typed-unexpected = unexpected `{ $what }`
+typed-unclosed = a `(` is not closed
+typed-missing-at-end = a number is missing at the end
+typed-not-a-number = `{ $what }` is not a number
+typed-unknown-name = `{ $what }` is not a function pipelens knows: sqrt, sin, cos, tan, cot, asin, acos, atan, ln, log2, log10, exp, deg, pi
+typed-not-finite = not a finite number
+typed-several = several numbers in one box: type one number in each box

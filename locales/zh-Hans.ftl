@@ -662,6 +662,12 @@ lesson-the-debugger-at-pixel = 调试器：像素
 
 ## src/export/picture.rs
 
+picture-watch-title = 第 { $line } 行之后的 { $expression }
+picture-watch-holds = 成立处为黄色，不成立处为深蓝色
+picture-watch-range = 深蓝 { $lo } 到黄色 { $hi }
+picture-watch-vector = 向量显示为颜色
+picture-watch-legend-fragment = 第 { $line } 行之后的 { $expression }：{ $said }；灰色棋盘格处没有片元执行该行
+picture-watch-legend-vertex = 顶点着色器第 { $line } 行之后的 { $expression }，经三角形上插值：{ $said }；灰色棋盘格处三角形有顶点没有执行该行
 picture-mip-level = mipmap 层级
 
 ## src/observer.rs
@@ -780,6 +786,7 @@ handout-the-animation-in-frames-from = 动画的分帧，从开始到结束：
 
 ## src/export/handout_exercise.rs
 
+handout-exercise-your-answer = 你的答案（每项误差 { $tolerance } 以内）：
 handout-exercise-question = 思考题：
 handout-exercise-answer = 答案：
 handout-exercise-show-the-answer = 显示答案
@@ -1074,3 +1081,18 @@ samples-on-neither-top-nor-left = （恰在边上：既非上边也非左边）
 samples-edge-value = E{ $edge } = { $value }{ $on }
 samples-inside-differs = 在像素 ({ $x }, { $y })，采样点 ({ $sx }, { $sy }) 对三角形 { $triangle }：{ $edges }。pipelens：{ $theirs }；你的 inside()：{ $yours }。
 samples-depth-differs = 在像素 ({ $x }, { $y }) 的第 { $sample } 个采样点：三角形 { $triangle } 的片元 z = { $z }，深度缓冲中已存 { $stored }。pipelens { $theirs }；你的 depth_test(z, stored) { $yours }。
+
+## src/lesson/forbid.rs
+
+forbid-own-uniform = 还没有通过：{ $file } 第 { $line } 行声明了 pipelens 自带的 `{ $name }`——本练习要求你自己算出它，这里不能使用这个 uniform。
+forbid-own-function = 还没有通过：{ $file } 第 { $line } 行调用了 `{ $name }()`——本练习要求你自己算出它的结果，这里不能调用它。
+
+## src/lesson/typed.rs
+
+typed-unexpected = 不应出现 `{ $what }`
+typed-unclosed = 有一个 `(` 没有闭合
+typed-missing-at-end = 末尾缺少一个数
+typed-not-a-number = `{ $what }` 不是数
+typed-unknown-name = pipelens 不认识函数 `{ $what }`：可用 sqrt、sin、cos、tan、cot、asin、acos、atan、ln、log2、log10、exp、deg、pi
+typed-not-finite = 不是有限的数
+typed-several = 一个格子里有多个数：请每格填一个数

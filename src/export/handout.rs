@@ -3,7 +3,6 @@
 //! it fits, no interactive parts on paper, each step's matrices only where they changed or where
 //! the step's stage uses them, and, for a teacher's key, every answer printed.
 
-use crate::vocabulary::Written;
 use std::fmt::Write as _;
 
 use base64::Engine as _;
@@ -166,21 +165,20 @@ img{max-height:100mm;width:auto}
 /// its own; the embedded one is the fallback. Lesson 11's adds about 0.15 MB (the whole font
 /// would add 4 MB); an English handout has none.
 fn cjk_font_face(lang: Lang, text: &str) -> String {
-    match lang.written() {
-        Written::Chinese => {
-            // A font that cannot be cut is embedded whole: larger, and still Chinese.
-            let font = super::font::cjk_subset(text)
-                .unwrap_or_else(|_| crate::vocabulary::cjk_font().to_vec());
-            // For Chinese characters and punctuation only (Latin text keeps the reader's own
-            // sans-serif and monospace): a listing's font list names it first, so that headless
-            // Chromium does not draw the first Chinese run of a listing as boxes, as it did with
-            // the font as a fallback after the monospace one.
-            format!(
-                "@font-face{{font-family:'pipelens CJK';src:url({}) format('opentype');unicode-range:U+2000-206F,U+2E80-9FFF,U+F900-FFEF}}\n",
-                data_url("font/otf", &font)
-            )
-        }
-        Written::English => String::new(),
+    if lang.is_chinese() {
+        // A font that cannot be cut is embedded whole: larger, and still Chinese.
+        let font = super::font::cjk_subset(text)
+            .unwrap_or_else(|_| crate::vocabulary::cjk_font().to_vec());
+        // For Chinese characters and punctuation only (Latin text keeps the reader's own
+        // sans-serif and monospace): a listing's font list names it first, so that headless
+        // Chromium does not draw the first Chinese run of a listing as boxes, as it did with
+        // the font as a fallback after the monospace one.
+        format!(
+            "@font-face{{font-family:'pipelens CJK';src:url({}) format('opentype');unicode-range:U+2000-206F,U+2E80-9FFF,U+F900-FFEF}}\n",
+            data_url("font/otf", &font)
+        )
+    } else {
+        String::new()
     }
 }
 

@@ -2,7 +2,6 @@
 //! teacher's key, the answer), the exercise with its file listed and what is left to do marked,
 //! a lab's student code and, at its inspected pixel, the fragments' trace.
 
-use crate::vocabulary::Written;
 use std::fmt::Write as _;
 
 use pipeline::capture::FragmentTrace;
@@ -176,10 +175,7 @@ fn fill_in(e: &crate::lesson::answer::Expect, answers: bool, lang: Lang) -> Stri
     let _ = write!(
         h,
         "<div class=\"ui\">{}</div><table class=\"fill\">",
-        match lang.written() {
-            Written::English => format!("Your answer (each entry within {tolerance}):"),
-            Written::Chinese => format!("你的答案（每项误差 {tolerance} 以内）："),
-        }
+        lang.t_with("handout-exercise-your-answer", &[("tolerance", &tolerance)])
     );
     for r in 0..rows {
         h.push_str("<tr>");

@@ -5,7 +5,6 @@
 //! shows it. The shapes are the core's (`overlay::Shape`, `FrameCapture::lighting_arrows`), the
 //! ones the app draws.
 
-use crate::vocabulary::Written;
 use anyhow::Result;
 use image::{Rgba, RgbaImage, imageops};
 use pipeline::buffers::BufferKind;
@@ -141,10 +140,10 @@ fn watched(capture: &FrameCapture, z: u32, lang: Lang) -> Option<RgbaImage> {
         drawn.image.height() * z,
         image::imageops::FilterType::Nearest,
     );
-    let title = match lang.written() {
-        Written::English => format!("{} after line {}", picture.expression, picture.line),
-        Written::Chinese => format!("第 {} 行之后的 {}", picture.line, picture.expression),
-    };
+    let title = lang.t_with(
+        "picture-watch-title",
+        &[("expression", &picture.expression), ("line", &picture.line)],
+    );
     let middle = img.width() as f32 / 2.0;
     centred_label(&mut img, middle, 18.0, &title);
     Some(img)
@@ -180,40 +179,29 @@ pub fn legend(lesson: &Lesson, k: usize, capture: &FrameCapture, lang: Lang) -> 
 fn watch_legend(picture: &pipeline::capture::WatchPicture, lang: Lang) -> String {
     use pipeline::shader::probe::WatchKind;
     let range = picture.range(0);
-    let said = match (picture.kind, range, lang.written()) {
-        (Some(WatchKind::Bool), _, Written::English) => {
-            "yellow where it holds, dark blue where not".to_owned()
-        }
-        (Some(WatchKind::Bool), _, Written::Chinese) => "成立处为黄色，不成立处为深蓝色".to_owned(),
-        (Some(WatchKind::Float | WatchKind::Int), Some((lo, hi)), Written::English) => format!(
-            "dark blue {} to yellow {}",
-            crate::vocabulary::num(lo),
-            crate::vocabulary::num(hi)
+    let said = match (picture.kind, range) {
+        (Some(WatchKind::Bool), _) => lang.t("picture-watch-holds").to_owned(),
+        (Some(WatchKind::Float | WatchKind::Int), Some((lo, hi))) => lang.t_with(
+            "picture-watch-range",
+            &[
+                ("lo", &crate::vocabulary::num(lo)),
+                ("hi", &crate::vocabulary::num(hi)),
+            ],
         ),
-        (Some(WatchKind::Float | WatchKind::Int), Some((lo, hi)), Written::Chinese) => format!(
-            "深蓝 {} 到黄色 {}",
-            crate::vocabulary::num(lo),
-            crate::vocabulary::num(hi)
-        ),
-        (_, _, Written::English) => "the vector as a colour".to_owned(),
-        (_, _, Written::Chinese) => "向量显示为颜色".to_owned(),
+        _ => lang.t("picture-watch-vector").to_owned(),
     };
-    match lang.written() {
-        Written::English => format!(
-            "{} {}: {said}; grey checks {}",
-            picture.expression,
-            picture.place(),
-            picture.unrun()
-        ),
-        Written::Chinese if picture.from_vertex => format!(
-            "顶点着色器第 {} 行之后的 {}，经三角形上插值：{said}；灰色棋盘格处三角形有顶点没有执行该行",
-            picture.line, picture.expression
-        ),
-        Written::Chinese => format!(
-            "第 {} 行之后的 {}：{said}；灰色棋盘格处没有片元执行该行",
-            picture.line, picture.expression
-        ),
-    }
+    lang.t_with(
+        if picture.from_vertex {
+            "picture-watch-legend-vertex"
+        } else {
+            "picture-watch-legend-fragment"
+        },
+        &[
+            ("expression", &picture.expression),
+            ("line", &picture.line),
+            ("said", &said),
+        ],
+    )
 }
 
 /// The polylines of the segment `a`–`b` (picture pixels) in a pen's colour and width, solid

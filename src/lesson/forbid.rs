@@ -5,7 +5,6 @@
 //! variable that happens to be called `view` is no shortcut.
 
 use crate::vocabulary::Lang;
-use crate::vocabulary::Written;
 
 /// A forbidden name found in the student's code.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -25,20 +24,14 @@ impl Shortcut {
     #[must_use]
     pub fn words(&self, lang: Lang) -> String {
         let (name, file, line) = (&self.name, &self.file, self.line);
-        match (self.uniform, lang.written()) {
-            (true, Written::English) => format!(
-                "Not yet: {file} line {line} declares pipelens' own `{name}` — this lab asks you to compute it yourself, so the uniform is not yours to use here."
-            ),
-            (true, Written::Chinese) => format!(
-                "还没有通过：{file} 第 {line} 行声明了 pipelens 自带的 `{name}`——本练习要求你自己算出它，这里不能使用这个 uniform。"
-            ),
-            (false, Written::English) => format!(
-                "Not yet: {file} line {line} calls `{name}()` — this lab asks you to compute what it returns yourself, so it is not yours to call here."
-            ),
-            (false, Written::Chinese) => format!(
-                "还没有通过：{file} 第 {line} 行调用了 `{name}()`——本练习要求你自己算出它的结果，这里不能调用它。"
-            ),
-        }
+        lang.t_with(
+            if self.uniform {
+                "forbid-own-uniform"
+            } else {
+                "forbid-own-function"
+            },
+            &[("file", file), ("line", &line), ("name", name)],
+        )
     }
 }
 
@@ -170,5 +163,31 @@ mod tests {
         // The starter's own file, unchanged, is not the student's shortcut.
         let own = [("shader.vert".to_owned(), called)];
         assert_eq!(find(&forbid, &own, &own), None);
+    }
+
+    /// The shortcut read as a whole sentence in both languages (written by hand).
+    #[test]
+    fn a_shortcut_is_told_with_its_file_and_line() {
+        let uniform = Shortcut {
+            name: "view".into(),
+            uniform: true,
+            file: "shader.vert".into(),
+            line: 4,
+        };
+        assert_eq!(
+            uniform.words(Lang::EN),
+            "Not yet: shader.vert line 4 declares pipelens' own `view` — this lab asks you to \
+             compute it yourself, so the uniform is not yours to use here."
+        );
+        let call = Shortcut {
+            name: "texture".into(),
+            uniform: false,
+            file: "shader.frag".into(),
+            line: 2,
+        };
+        assert_eq!(
+            call.words(Lang::ZH),
+            "还没有通过：shader.frag 第 2 行调用了 `texture()`——本练习要求你自己算出它的结果，这里不能调用它。"
+        );
     }
 }

@@ -71,28 +71,14 @@ impl Unreadable {
     /// The reason in words.
     #[must_use]
     pub fn words(&self, lang: crate::vocabulary::Lang) -> String {
-        use crate::vocabulary::Written;
-        match (self, lang.written()) {
-            (Self::Unexpected(c), Written::English) => format!("unexpected `{c}`"),
-            (Self::Unexpected(c), Written::Chinese) => format!("不应出现 `{c}`"),
-            (Self::Unclosed, Written::English) => "a `(` is not closed".to_owned(),
-            (Self::Unclosed, Written::Chinese) => "有一个 `(` 没有闭合".to_owned(),
-            (Self::MissingAtEnd, Written::English) => "a number is missing at the end".to_owned(),
-            (Self::MissingAtEnd, Written::Chinese) => "末尾缺少一个数".to_owned(),
-            (Self::NotANumber(t), Written::English) => format!("`{t}` is not a number"),
-            (Self::NotANumber(t), Written::Chinese) => format!("`{t}` 不是数"),
-            (Self::UnknownName(t), Written::English) => format!(
-                "`{t}` is not a function pipelens knows: sqrt, sin, cos, tan, cot, asin, acos, atan, ln, log2, log10, exp, deg, pi"
-            ),
-            (Self::UnknownName(t), Written::Chinese) => format!(
-                "pipelens 不认识函数 `{t}`：可用 sqrt、sin、cos、tan、cot、asin、acos、atan、ln、log2、log10、exp、deg、pi"
-            ),
-            (Self::NotFinite, Written::English) => "not a finite number".to_owned(),
-            (Self::NotFinite, Written::Chinese) => "不是有限的数".to_owned(),
-            (Self::Several, Written::English) => {
-                "several numbers in one box: type one number in each box".to_owned()
-            }
-            (Self::Several, Written::Chinese) => "一个格子里有多个数：请每格填一个数".to_owned(),
+        match self {
+            Self::Unexpected(c) => lang.t_with("typed-unexpected", &[("what", c)]),
+            Self::Unclosed => lang.t("typed-unclosed").to_owned(),
+            Self::MissingAtEnd => lang.t("typed-missing-at-end").to_owned(),
+            Self::NotANumber(t) => lang.t_with("typed-not-a-number", &[("what", t)]),
+            Self::UnknownName(t) => lang.t_with("typed-unknown-name", &[("what", t)]),
+            Self::NotFinite => lang.t("typed-not-finite").to_owned(),
+            Self::Several => lang.t("typed-several").to_owned(),
         }
     }
 }
@@ -336,5 +322,21 @@ mod tests {
             Err(Unreadable::UnknownName("tna".into()))
         );
         assert_eq!(evaluate("sqrt(-1)"), Err(Unreadable::NotFinite));
+    }
+
+    /// Why a typed box is not read, in both languages (written by hand).
+    #[test]
+    fn an_unreadable_box_says_why_in_both_languages() {
+        use crate::vocabulary::Lang;
+        assert_eq!(
+            Unreadable::NotANumber("1..2".into()).words(Lang::EN),
+            "`1..2` is not a number"
+        );
+        assert_eq!(
+            Unreadable::NotANumber("1..2".into()).words(Lang::ZH),
+            "`1..2` 不是数"
+        );
+        assert_eq!(Unreadable::Unexpected('#').words(Lang::ZH), "不应出现 `#`");
+        assert_eq!(Unreadable::Unclosed.words(Lang::EN), "a `(` is not closed");
     }
 }
