@@ -1132,3 +1132,113 @@ typed-not-a-number = `{ $what }` is not a number
 typed-unknown-name = `{ $what }` is not a function pipelens knows: sqrt, sin, cos, tan, cot, asin, acos, atan, ln, log2, log10, exp, deg, pi
 typed-not-finite = not a finite number
 typed-several = several numbers in one box: type one number in each box
+
+## src/vocabulary/formulas.rs
+
+formula-frustum-l-r-b-t-near = Frustum(l, r, b, t, near, far): shear, scale, then perspective normalization
+formula-frustum-right-right-top-top-near = Frustum(−right, right, −top, top, near, far) with top = near·tan(fovy/2), right = top·aspect
+formula-m-t-r-n-rz-ry = M = T·R(n, θ)·Rz·Ry·Rx·S: scale, rotate about x, y, z, then about the axis n, then translate
+formula-m-t-r-slerp-q-q = M = T·R(slerp(q₀, q₁, t))·Rz·Ry·Rx·S: scale, rotate about x, y, z, then part way between two orientations, then translate
+formula-the-rotation-part-way-from-the = the rotation part way from the first orientation to the second, along the shorter arc
+formula-m-t-rz-ry-rx-s = M = T·Rz·Ry·Rx·S: scale, rotate about x, y, z, then translate
+formula-m-parent-t-rz-ry-rx = M = parent·T·Rz·Ry·Rx·S: the object's own transform, then its parent's
+formula-m-m-local-the-parent-s = M ← M·local: the parent's composite times this part's placement
+formula-t-0-h-0-t-l = T(0, h+ε, 0)·[T(l)·M_p·T(−l)]·T(0, −h, 0): project from the light onto y = h
+formula-t-joint-on-the-torso-rx = T(joint on the torso)·Rx(θ)
+formula-l-r-b-t-f-n = [l,r]×[b,t]×[f,n] → [−1,1]³: translate the centre to the origin, then scale
+formula-back-up-to-the-plane-lifted = back up to the plane, lifted by ε
+formula-your-shadow-matrix-l = your shadow_matrix(l)
+formula-centre-the-view-volume-at-the = centre the view volume at the origin, then scale it to the cube [−1,1]³
+formula-move-the-light-back-to-xl = move the light back to (xl, yl, zl)
+formula-move-the-light-to-the-origin = move the light to the origin
+formula-perspective-normalization-far-near-far-near = perspective normalization: α = −(far+near)/(far−near), β = −2·far·near/(far−near)
+formula-perspective-projection-onto-y-yl = perspective projection onto y = −yl
+formula-project-from-the-light-onto-the = project from the light onto the plane y = 0
+formula-rotation-about-an-arbitrary-axis-by = rotation about an arbitrary axis, by aligning it with z
+formula-rows-u-v-n-and-p = rows u, v, n and −p·u, −p·v, −p·n with n = (eye−at)/|eye−at|, u = v_up×n/|v_up×n|, v = n×u; equals GAMES101's R_view·T_view with g = at − eye, t = up
+formula-rows-g-t-t-g = rows: g×t, t, −g
+formula-shear-h-cot-l-r-2 = shear H(θ, φ): cot θ = (l+r)/(2·near), cot φ = (t+b)/(2·near)
+formula-squish-the-frustum-into-a-box = squish the frustum into a box (n and f fixed), then the orthographic projection
+formula-the-joint = the joint
+formula-the-part-s-composite-times-its = the part's composite times its instance matrix
+formula-the-plane-to-y-0 = the plane to y = 0
+formula-the-rotation-itself-about-z = the rotation itself, about z
+formula-to-the-joint = to the joint
+formula-undo-the-turn-into-the-xz = undo the turn into the xz plane
+formula-undo-the-turn-onto-z = undo the turn onto z
+formula-where-the-figure-stands = where the figure stands
+formula-x-n-x-z-y-n = x' = n·x/z, y' = n·y/z; z of the near and far planes kept
+formula-x-w-x-1-width-2 = x_w = (x+1)·width/2, y_w = (y+1)·height/2, z_w = (z+1)/2
+
+## src/vocabulary/glsl.rs
+
+glsl-pipelens-per-pixel-phong-frequency-lighting = pipelens' per-pixel (Phong-frequency) lighting with the Blinn-Phong model, as a shader:
+glsl-l-k-a-c-i-a = L = Σ k_a·c·I_a + Σ f_att·f_spot·(k_d·c·I·max(n·l, 0) + k_s·I·max(n·h, 0)^p)
+glsl-with-h-normalize-l-v-f = with h = normalize(l + v), f_att = 1/(a + b·d + c·d²), f_spot = (cos φ)^e inside the cone.
+glsl-pipelens-declares-these-before-your-code = pipelens declares these before your code (a program of your own declares them itself):
+glsl-the-surface-colour = the surface colour
+glsl-pipelens-flat-shading-the-fragment-half = pipelens' flat shading, the fragment half: one normal per face and one lighting per face.
+glsl-the-face-normal-is-the-cross = The face normal is the cross product of two directions in the face's plane: as x and y move
+glsl-on-the-screen-the-world-position = on the screen the world position p moves within the face, so ∂p/∂x and ∂p/∂y are two such
+glsl-directions-and-n-face-normalize-dfdx = directions and n_face = ±normalize(dFdx(p) × dFdy(p)), + for a front face. (Only the
+glsl-direction-holds-in-general-p1-p0 = direction holds in general: (p1 − p0)×(p2 − p0) = 2·area·(∂p/∂x × ∂p/∂y) holds for an affine
+glsl-mapping-alone-not-under-perspective = mapping alone, not under perspective.)
+glsl-the-blinn-phong-lighting-is-that = The Blinn-Phong lighting is that of gouraud.vert, at the provoking vertex f_pos: every
+glsl-fragment-of-the-face-computes-the = fragment of the face computes the same colour. A textured surface is lit white (c = 1) and
+glsl-its-texel-modulates-ambient-and-diffuse = its texel modulates ambient and diffuse, as with Gouraud shading.
+glsl-pipelens-flat-shading-the-vertex-half = pipelens' flat shading, the vertex half: the vertex stage of pipelens.vert, and the values a
+glsl-face-is-lit-with-opengl-gives = face is lit with. OpenGL gives a `flat` output the provoking (last) vertex's value across the
+glsl-whole-triangle-the-face-is-lit = whole triangle: the face is lit at that vertex, with its colour.
+glsl-displacement-mapping-s-height-map-none = displacement mapping's height map (none: black)
+glsl-its-k-0-without-one = its k (0 without one)
+glsl-world-position-interpolated-its-derivatives-give = world position, interpolated: its derivatives give the face normal
+glsl-the-provoking-vertex-s-world-position = the provoking vertex's world position
+glsl-and-its-colour = and its colour
+glsl-displacement-mapping-moves-the-vertex-along = Displacement mapping moves the vertex along its normal: p' = p + k·h(u, v)·n, h the
+glsl-height-map-s-luminance-bilinear-level = height map's luminance (bilinear, level 0).
+glsl-pipelens-gouraud-shading-the-fragment-half = pipelens' Gouraud shading, the fragment half: the lighting of the three vertices arrives
+glsl-interpolated-a-texel-modulates-the-ambient = interpolated; a texel modulates the ambient and diffuse part (OpenGL's GL_MODULATE), the
+glsl-specular-part-is-added-on-top = specular part is added on top.
+glsl-ambient-diffuse-lit-with-a-white = ambient + diffuse, lit with a white surface when textured
+glsl-pipelens-gouraud-shading-the-vertex-half = pipelens' Gouraud shading, the vertex half: the Blinn-Phong lighting of each vertex, once per
+glsl-vertex-with-its-own-normal = vertex, with its own normal,
+glsl-l-k-a-c-i-a-2 = L = Σ k_a·c·I_a + Σ f_att·f_spot·(k_d·c·I·max(n·l, 0) + k_s·I·max(n·h, 0)^p),
+glsl-sent-to-the-fragment-stage-to = sent to the fragment stage to be interpolated across the triangle (gouraud.frag). A textured
+glsl-surface-is-lit-white-here-c = surface is lit white here (c = 1); its texel modulates ambient and diffuse per pixel.
+glsl-ambient-diffuse = ambient + diffuse
+glsl-specular = specular
+glsl-pipelens-per-pixel-blinn-phong-lighting = pipelens' per-pixel Blinn-Phong lighting (blinn_phong.frag) with a bump or normal map: the
+glsl-interpolated-normal-n-is-tilted-in = interpolated normal n is tilted in the tangent frame before lighting.
+glsl-tangent-frame-t-p-u-b = Tangent frame: T = ∂p/∂u, B = ∂p/∂v. The screen derivatives of p and uv obey
+glsl-dfdx-p-t-dfdx-u-b = dFdx(p) = T·dFdx(u) + B·dFdx(v),  dFdy(p) = T·dFdy(u) + B·dFdy(v),
+glsl-two-equations-solved-for-t-and = two equations solved for T and B (the same T, B as from the triangle's edges).
+glsl-t-normalize-t-n-n-t = T' = normalize(T − n(n·T)), B' = ±n×T' (the sign of B), n' = normalize(T'·x + B'·y + n·z):
+glsl-bump-map-games101-x-y-z = bump map (GAMES101): (x, y, z) = (−dU, −dV, 1), dU = k_h·k_n·(h(u + 1/w, v) − h(u, v)),
+glsl-dv-k-h-k-n-h = dV = k_h·k_n·(h(u, v + 1/h) − h(u, v)), h the texel's luminance;
+glsl-normal-map-x-y-z-2 = normal map:          (x, y, z) = 2·texel − 1.
+glsl-0-none-1-bump-map-2 = 0 none, 1 bump map, 2 normal map
+glsl-k-h-k-n = k_h·k_n
+glsl-pipelens-per-pixel-blinn-phong-lighting-2 = pipelens' per-pixel Blinn-Phong lighting of a mirror (environment mapping), as a shader:
+glsl-l-1-k-ambient-diffuse-specular = L = (1 − k)·(ambient + diffuse) + specular + k·env(r),   r = 2(n·v)n − v = reflect(−v, n)
+glsl-with-ambient-k-a-c-i = with ambient = Σ k_a·c·I_a, diffuse = Σ f_att·f_spot·k_d·c·I·max(n·l, 0),
+glsl-specular-f-att-f-spot-k = specular = Σ f_att·f_spot·k_s·I·max(n·h, 0)^p, env(r) the cube map seen in direction r and
+glsl-k-the-reflectivity-a-mirror-shows = k the reflectivity: a mirror shows k of what it reflects and keeps 1 − k of its own light.
+glsl-the-surroundings-x-x-y-y = the surroundings: +x, −x, +y, −y, +z, −z
+glsl-k = k
+glsl-the-mirror-direction-2-n-v = the mirror direction 2(n·v)n − v
+glsl-env-r = env(r)
+glsl-the-height-or-normal-map-bilinear = the height or normal map: bilinear, repeating, level 0
+glsl-the-luminance-of-the-height-map = The luminance of the height map at uv: h(u, v).
+glsl-n-tilted-by-the-bump-or = n tilted by the bump or normal map at uv.
+glsl-the-uvs-do-not-grow-across = the uvs do not grow across this triangle: no frame
+glsl-pipelens-per-pixel-phong-frequency-lighting-2 = pipelens' per-pixel (Phong-frequency) lighting with Phong's reflection model, as a shader:
+glsl-l-k-a-c-i-a-3 = L = Σ k_a·c·I_a + Σ f_att·f_spot·(k_d·c·I·max(n·l, 0) + k_s·I·max(r·v, 0)^p)
+glsl-with-r-reflect-l-n-2 = with r = reflect(−l, n) = 2(n·l)n − l, f_att = 1/(a + b·d + c·d²), f_spot = (cos φ)^e inside
+glsl-the-cone-blinn-phong-frag-differs = the cone. blinn_phong.frag differs in one line: n·h in place of r·v.
+glsl-pipelens-own-vertex-stage-as-a = pipelens' own vertex stage as a shader: the position (displaced, with a displacement map)
+glsl-through-m-v-and-p-one = through M, V and P one matrix at a time (model → world → eye → clip, in the order the vertex
+glsl-table-shows-them-and-what-the = table shows them), and what the fragment stage interpolates (world position, unit world normal, texture coordinates, colour).
+glsl-world-position-m-p = world position M·p
+glsl-world-normal-m-t-n-normalized = world normal (M⁻¹)^T·n, normalized (interpolation shortens it again)
+glsl-pipelens-unlit-shading-as-a-shader = pipelens' unlit shading as a shader: the surface colour as it is, the texel where the object
+glsl-is-textured-else-the-vertex-colour = is textured, else the vertex colour (interpolated).

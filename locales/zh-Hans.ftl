@@ -1096,3 +1096,113 @@ typed-not-a-number = `{ $what }` 不是数
 typed-unknown-name = pipelens 不认识函数 `{ $what }`：可用 sqrt、sin、cos、tan、cot、asin、acos、atan、ln、log2、log10、exp、deg、pi
 typed-not-finite = 不是有限的数
 typed-several = 一个格子里有多个数：请每格填一个数
+
+## src/vocabulary/formulas.rs
+
+formula-frustum-l-r-b-t-near = Frustum(l, r, b, t, near, far)：先错切，再缩放，最后透视规范化
+formula-frustum-right-right-top-top-near = Frustum(−right, right, −top, top, near, far)，其中 top = near·tan(fovy/2)，right = top·aspect
+formula-m-t-r-n-rz-ry = M = T·R(n, θ)·Rz·Ry·Rx·S：先缩放，再绕 x、y、z 旋转，然后绕轴 n 旋转，最后平移
+formula-m-t-r-slerp-q-q = M = T·R(slerp(q₀, q₁, t))·Rz·Ry·Rx·S：先缩放，再绕 x、y、z 旋转，然后转到两个朝向之间的某处，最后平移
+formula-the-rotation-part-way-from-the = 沿较短的大圆弧，从第一个朝向转到第二个朝向途中的旋转
+formula-m-t-rz-ry-rx-s = M = T·Rz·Ry·Rx·S：先缩放，再绕 x、y、z 旋转，最后平移
+formula-m-parent-t-rz-ry-rx = M = parent·T·Rz·Ry·Rx·S：先是物体自身的变换，再是父节点的变换
+formula-m-m-local-the-parent-s = M ← M·local：父节点的组合矩阵乘以本部件的放置矩阵
+formula-t-0-h-0-t-l = T(0, h+ε, 0)·[T(l)·M_p·T(−l)]·T(0, −h, 0)：从光源投影到平面 y = h
+formula-t-joint-on-the-torso-rx = T(躯干上的关节)·Rx(θ)
+formula-l-r-b-t-f-n = [l,r]×[b,t]×[f,n] → [−1,1]³：先把中心平移到原点，再缩放
+formula-back-up-to-the-plane-lifted = 移回平面，并抬高 ε
+formula-your-shadow-matrix-l = 你的 shadow_matrix(l)
+formula-centre-the-view-volume-at-the = 把视见体的中心移到原点，再缩放为立方体 [−1,1]³
+formula-move-the-light-back-to-xl = 把光源移回 (xl, yl, zl)
+formula-move-the-light-to-the-origin = 把光源移到原点
+formula-perspective-normalization-far-near-far-near = 透视规范化：α = −(far+near)/(far−near)，β = −2·far·near/(far−near)
+formula-perspective-projection-onto-y-yl = 透视投影到平面 y = −yl
+formula-project-from-the-light-onto-the = 从光源投影到平面 y = 0
+formula-rotation-about-an-arbitrary-axis-by = 绕任意轴旋转：先把轴对齐到 z 轴
+formula-rows-u-v-n-and-p = 行为 u、v、n，最后一列为 −p·u、−p·v、−p·n，其中 n = (eye−at)/|eye−at|，u = v_up×n/|v_up×n|，v = n×u；等于 GAMES101 的 R_view·T_view（g = at − eye，t = up）
+formula-rows-g-t-t-g = 各行：g×t、t、−g
+formula-shear-h-cot-l-r-2 = 错切 H(θ, φ)：cot θ = (l+r)/(2·near)，cot φ = (t+b)/(2·near)
+formula-squish-the-frustum-into-a-box = 先把视锥挤压成长方体（n 和 f 不变），再做正交投影
+formula-the-joint = 关节
+formula-the-part-s-composite-times-its = 部件的组合矩阵乘以其实例矩阵
+formula-the-plane-to-y-0 = 把平面移到 y = 0
+formula-the-rotation-itself-about-z = 旋转本身：绕 z 轴
+formula-to-the-joint = 移到关节
+formula-undo-the-turn-into-the-xz = 撤销转入 xz 平面的旋转
+formula-undo-the-turn-onto-z = 撤销转到 z 轴的旋转
+formula-where-the-figure-stands = 人物所站的位置
+formula-x-n-x-z-y-n = x' = n·x/z，y' = n·y/z；近平面和远平面的 z 保持不变
+formula-x-w-x-1-width-2 = x_w = (x+1)·width/2，y_w = (y+1)·height/2，z_w = (z+1)/2
+
+## src/vocabulary/glsl.rs
+
+glsl-pipelens-per-pixel-phong-frequency-lighting = pipelens 的逐像素（Phong 频率）光照，用 Blinn-Phong 模型，写成着色器：
+glsl-l-k-a-c-i-a = L = Σ k_a·c·I_a + Σ f_att·f_spot·(k_d·c·I·max(n·l, 0) + k_s·I·max(n·h, 0)^p)
+glsl-with-h-normalize-l-v-f = 其中 h = normalize(l + v)，f_att = 1/(a + b·d + c·d²)，在光锥内 f_spot = (cos φ)^e。
+glsl-pipelens-declares-these-before-your-code = pipelens 在你的代码之前声明了这些（你自己的程序要自己声明）：
+glsl-the-surface-colour = 表面颜色
+glsl-pipelens-flat-shading-the-fragment-half = pipelens 的平面着色，片元部分：每个面一个法向量，每个面一次光照。
+glsl-the-face-normal-is-the-cross = 面法向量是面所在平面内两个方向的叉积：当 x 和 y
+glsl-on-the-screen-the-world-position = 在屏幕上移动时，世界坐标 p 在面内移动，所以 ∂p/∂x 和 ∂p/∂y 就是两个这样的
+glsl-directions-and-n-face-normalize-dfdx = 方向，n_face = ±normalize(dFdx(p) × dFdy(p))，正面取 +。（一般只有
+glsl-direction-holds-in-general-p1-p0 = 方向成立：(p1 − p0)×(p2 − p0) = 2·面积·(∂p/∂x × ∂p/∂y) 只对仿射
+glsl-mapping-alone-not-under-perspective = 映射成立，透视下不成立。）
+glsl-the-blinn-phong-lighting-is-that = Blinn-Phong 光照与 gouraud.vert 的相同，在引发顶点 f_pos 处计算：
+glsl-fragment-of-the-face-computes-the = 面上每个片元算出同一个颜色。有纹理的表面按白色照亮（c = 1），
+glsl-its-texel-modulates-ambient-and-diffuse = 纹素再调制环境光和漫反射，与 Gouraud 着色相同。
+glsl-pipelens-flat-shading-the-vertex-half = pipelens 的平面着色，顶点部分：pipelens.vert 的顶点阶段，以及一个面
+glsl-face-is-lit-with-opengl-gives = 光照所用的值。OpenGL 让 `flat` 输出在整个三角形上取引发顶点（最后一个顶点）的值：
+glsl-whole-triangle-the-face-is-lit = 面在这个顶点处、用它的颜色照亮。
+glsl-displacement-mapping-s-height-map-none = 位移贴图的高度图（没有时为黑色）
+glsl-its-k-0-without-one = 它的 k（没有位移贴图时为 0）
+glsl-world-position-interpolated-its-derivatives-give = 插值后的世界坐标：它的导数给出面法向量
+glsl-the-provoking-vertex-s-world-position = 引发顶点的世界坐标
+glsl-and-its-colour = 以及它的颜色
+glsl-displacement-mapping-moves-the-vertex-along = 位移贴图沿法向量移动顶点：p' = p + k·h(u, v)·n，h 为
+glsl-height-map-s-luminance-bilinear-level = 高度图的亮度（双线性，第 0 层）。
+glsl-pipelens-gouraud-shading-the-fragment-half = pipelens 的 Gouraud 着色，片元部分：三个顶点的光照经插值
+glsl-interpolated-a-texel-modulates-the-ambient = 到达这里；纹素调制环境光和漫反射部分（OpenGL 的 GL_MODULATE），
+glsl-specular-part-is-added-on-top = 高光部分再加在上面。
+glsl-ambient-diffuse-lit-with-a-white = 环境光 + 漫反射，有纹理时按白色表面计算
+glsl-pipelens-gouraud-shading-the-vertex-half = pipelens 的 Gouraud 着色，顶点部分：每个顶点的 Blinn-Phong 光照，每个顶点
+glsl-vertex-with-its-own-normal = 计算一次，用它自己的法向量，
+glsl-l-k-a-c-i-a-2 = L = Σ k_a·c·I_a + Σ f_att·f_spot·(k_d·c·I·max(n·l, 0) + k_s·I·max(n·h, 0)^p)，
+glsl-sent-to-the-fragment-stage-to = 送到片元阶段，在三角形上插值（gouraud.frag）。有纹理的
+glsl-surface-is-lit-white-here-c = 表面在这里按白色照亮（c = 1）；纹素在每个像素上调制环境光和漫反射。
+glsl-ambient-diffuse = 环境光 + 漫反射
+glsl-specular = 高光
+glsl-pipelens-per-pixel-blinn-phong-lighting = pipelens 带凹凸贴图或法线贴图的逐像素 Blinn-Phong 光照（blinn_phong.frag）：
+glsl-interpolated-normal-n-is-tilted-in = 插值得到的法向量 n 先在切线坐标系中倾斜，再计算光照。
+glsl-tangent-frame-t-p-u-b = 切线坐标系：T = ∂p/∂u，B = ∂p/∂v。p 和 uv 的屏幕导数满足
+glsl-dfdx-p-t-dfdx-u-b = dFdx(p) = T·dFdx(u) + B·dFdx(v)，dFdy(p) = T·dFdy(u) + B·dFdy(v)，
+glsl-two-equations-solved-for-t-and = 解这两个方程得到 T 和 B（与由三角形的边求出的 T、B 相同）。
+glsl-t-normalize-t-n-n-t = T' = normalize(T − n(n·T))，B' = ±n×T'（B 的符号），n' = normalize(T'·x + B'·y + n·z)：
+glsl-bump-map-games101-x-y-z = 凹凸贴图（GAMES101）：(x, y, z) = (−dU, −dV, 1)，dU = k_h·k_n·(h(u + 1/w, v) − h(u, v))，
+glsl-dv-k-h-k-n-h = dV = k_h·k_n·(h(u, v + 1/h) − h(u, v))，h 为纹素的亮度；
+glsl-normal-map-x-y-z-2 = 法线贴图：          (x, y, z) = 2·texel − 1。
+glsl-0-none-1-bump-map-2 = 0 无，1 凹凸贴图，2 法线贴图
+glsl-k-h-k-n = k_h·k_n
+glsl-pipelens-per-pixel-blinn-phong-lighting-2 = pipelens 对镜面物体的逐像素 Blinn-Phong 光照（环境映射），写成着色器：
+glsl-l-1-k-ambient-diffuse-specular = L = (1 − k)·(环境光 + 漫反射) + 高光 + k·env(r)，   r = 2(n·v)n − v = reflect(−v, n)
+glsl-with-ambient-k-a-c-i = 其中 环境光 = Σ k_a·c·I_a，漫反射 = Σ f_att·f_spot·k_d·c·I·max(n·l, 0)，
+glsl-specular-f-att-f-spot-k = 高光 = Σ f_att·f_spot·k_s·I·max(n·h, 0)^p，env(r) 是沿方向 r 看到的立方体贴图，
+glsl-k-the-reflectivity-a-mirror-shows = k 是反射率：镜面显示所反射内容的 k 倍，并保留自身光照的 1 − k 倍。
+glsl-the-surroundings-x-x-y-y = 周围环境：+x、−x、+y、−y、+z、−z 六个面
+glsl-k = k
+glsl-the-mirror-direction-2-n-v = 镜面反射方向 2(n·v)n − v
+glsl-env-r = env(r)
+glsl-the-height-or-normal-map-bilinear = 高度图或法线贴图：双线性、重复、第 0 层
+glsl-the-luminance-of-the-height-map = 高度图在 uv 处的亮度：h(u, v)。
+glsl-n-tilted-by-the-bump-or = 在 uv 处按凹凸贴图或法线贴图倾斜后的 n。
+glsl-the-uvs-do-not-grow-across = uv 在这个三角形上不变化：没有切线坐标系
+glsl-pipelens-per-pixel-phong-frequency-lighting-2 = pipelens 的逐像素（Phong 频率）光照，用 Phong 反射模型，写成着色器：
+glsl-l-k-a-c-i-a-3 = L = Σ k_a·c·I_a + Σ f_att·f_spot·(k_d·c·I·max(n·l, 0) + k_s·I·max(r·v, 0)^p)
+glsl-with-r-reflect-l-n-2 = 其中 r = reflect(−l, n) = 2(n·l)n − l，f_att = 1/(a + b·d + c·d²)，在光锥内
+glsl-the-cone-blinn-phong-frag-differs = f_spot = (cos φ)^e。blinn_phong.frag 只有一行不同：用 n·h 代替 r·v。
+glsl-pipelens-own-vertex-stage-as-a = pipelens 自带的顶点阶段，写成着色器：位置（有位移贴图时先位移）
+glsl-through-m-v-and-p-one = 依次经过 M、V、P 三个矩阵（模型 → 世界 → 眼睛 → 裁剪，与顶点表
+glsl-table-shows-them-and-what-the = 显示的顺序相同），以及片元阶段要插值的量（世界坐标、单位世界法向量、纹理坐标、颜色）。
+glsl-world-position-m-p = 世界坐标 M·p
+glsl-world-normal-m-t-n-normalized = 世界法向量 (M⁻¹)^T·n，已归一化（插值会再次使它变短）
+glsl-pipelens-unlit-shading-as-a-shader = pipelens 的无光照着色，写成着色器：表面颜色原样输出，物体有纹理时
+glsl-is-textured-else-the-vertex-colour = 用纹素，否则用（插值后的）顶点颜色。

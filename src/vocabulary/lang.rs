@@ -171,6 +171,20 @@ impl Lang {
             .find_map(|c| c.plain.get(id.as_str()).copied())
     }
 
+    /// The message of `family` (`formula`, `glsl`) whose English is `english` — words the core
+    /// or a shipped shader writes in English, looked up by those words — in this language.
+    /// `None` where no message of the family has them (they stay as they are).
+    #[must_use]
+    pub fn from_english(self, family: &str, english: &str) -> Option<&'static str> {
+        let en = Self::EN.catalog()?;
+        let id = en.ids.iter().find(|id| {
+            id.strip_prefix(family)
+                .is_some_and(|rest| rest.starts_with('-'))
+                && en.plain.get(*id) == Some(&english)
+        })?;
+        Some(self.t(id))
+    }
+
     /// The message `id` with its variables, `{ $name }`, given as `(name, value)` pairs. A
     /// value written as a whole number (digits only) is passed as a number, so that a message
     /// can choose its words by it (`{ $n -> [one] … *[other] … }`, the language's plural
@@ -514,6 +528,8 @@ mod tests {
             .filter(|id| **id != "language-name" && !code.contains(&format!("\"{id}\"")))
             // The families looked up by a key read from data (`Lang::keyed`).
             .filter(|id| !id.starts_with("part-") && !id.starts_with("param-"))
+            // The families looked up by their English words (`Lang::from_english`).
+            .filter(|id| !id.starts_with("formula-") && !id.starts_with("glsl-"))
             .collect();
         assert!(
             unused.is_empty(),

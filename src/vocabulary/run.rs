@@ -60,8 +60,10 @@ pub fn render_error(e: &RenderError, lang: Lang) -> String {
 /// object), in `lang`.
 #[must_use]
 pub fn scene_problem(p: &SceneProblem, lang: Lang) -> String {
+    if lang.written() == Written::English {
+        return p.to_string();
+    }
     match (p, lang) {
-        (_, Lang::EN) => p.to_string(),
         (SceneProblem::Settings(s), _) => settings_problem(s, lang),
         (SceneProblem::Projection(p), _) => projection_problem(p, lang),
         (SceneProblem::CameraNotFinite, _) => "相机的 eye、at 和 up 必须是有限的数".to_owned(),
@@ -82,8 +84,10 @@ pub fn scene_problem(p: &SceneProblem, lang: Lang) -> String {
 /// A problem with the render settings, in `lang`.
 #[must_use]
 pub fn settings_problem(p: &SettingsProblem, lang: Lang) -> String {
+    if lang.written() == Written::English {
+        return p.to_string();
+    }
     match (p, lang) {
-        (_, Lang::EN) => p.to_string(),
         (SettingsProblem::ViewportSide { height, got }, _) => format!(
             "视口的{}必须在 1 到 {MAX_VIEWPORT_SIDE} 像素之间，现在是 {got}",
             if *height { "高度" } else { "宽度" }
@@ -108,8 +112,10 @@ pub fn settings_problem(p: &SettingsProblem, lang: Lang) -> String {
 #[must_use]
 pub fn projection_problem(p: &ProjectionProblem, lang: Lang) -> String {
     use ProjectionProblem as P;
+    if lang.written() == Written::English {
+        return p.to_string();
+    }
     match (p, lang) {
-        (_, Lang::EN) => p.to_string(),
         (P::Fovy(f), _) => format!("fovy 必须在 0° 到 180° 之间（不含两端），现在是 {f}"),
         (P::Aspect(a), _) => format!("aspect 必须是正数，现在是 {a}"),
         (P::LeftRight { left, right }, _) => {
@@ -246,6 +252,13 @@ mod tests {
                 .starts_with("the scene cannot be drawn: the viewport width must be between 1 and 16384 pixels, got 0; the background colour must be finite; fovy must be between"),
             "{}",
             render_error(&e, Lang::EN)
+        );
+        // A language with no Chinese in it (French, a lesson's own) reads the core's English.
+        let fr = Lang::uncatalogued("fr");
+        assert_eq!(render_error(&e, fr), render_error(&e, Lang::EN));
+        assert_eq!(
+            scene_problem(&SceneProblem::CameraNotFinite, fr),
+            SceneProblem::CameraNotFinite.to_string()
         );
         // The rest of the problems, one by one: Chinese, none of the English words.
         let rest = [
