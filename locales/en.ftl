@@ -1100,6 +1100,45 @@ submission-does-not-compile = Does not compile: { $first }{ $more ->
 
 ## src/vocabulary/compile.rs
 
+compile-cannot-stand-here = `{ $found }` cannot stand here
+compile-file-ends-where = the file ends where { $expected } should follow
+compile-should-come-first = `{ $found }` cannot stand here: { $expected } should come first
+compile-or = { " or " }
+compile-token-a-name = a name
+compile-token-a-type = a type
+compile-token-a-whole-number = a whole number
+compile-token-a-number = a number
+compile-token-true-or-false = true or false
+compile-token-the-end-of-the-file = the end of the file
+compile-missing-semicolon = a `;` is missing at the end of this line
+compile-unexpected-end = the file ends too early: a `{ "}" }` or `)` is missing
+compile-unknown-variable = `{ $n }` is not declared here: declare it before its first use, or check its spelling
+compile-unknown-type = `{ $n }` is not a GLSL type (float, vec2, vec3, vec4, int, bool, mat3, mat4, …)
+compile-no-such-field = this value has no such field or component
+compile-no-field-named = this value has no field or component `{ $n }` (a vec3 has x, y, z; a vec2 has no z)
+compile-no-function-matches = no function matches this call: check its name and the types of its arguments
+compile-no-function-named = no function `{ $n }` takes these arguments: check its name, the number and types of its arguments, and that it is declared above this line
+compile-already-declared = `{ $n }` is declared twice here: give the second one another name, or assign to the first without its type
+compile-function-already-defined = this function is defined twice
+compile-cannot-combine = the two sides of this operator have types it cannot combine: a vec3 with a vec4 needs v.xyz or vec4(v, 1.0); an int with a float needs float(i) or 1.0 for 1
+compile-too-many-arguments = this constructor is given more numbers than its type holds (vec3 takes 3, mat4 takes 16)
+compile-bad-constructor = this type cannot be built from these arguments
+compile-not-constant = this must be known when the shader is compiled: a number, or a `const` made of numbers
+compile-not-assignable = this cannot be assigned to: a `uniform`, an `in` input and a `const` are read-only — copy it into a local variable first
+compile-void-value = a `void` function returns nothing, so its call has no value to use here
+compile-version-not-first = `#version` must be the first line of the shader
+compile-invalid-version = GLSL has no version `{ $v }`: write `#version 330 core` (or 110, 120 for the old GLSL)
+compile-float-modulo = GLSL's `%` takes whole numbers only (int, uint, ivec…): for floats write mod(a, b)
+compile-bad-swizzle = this swizzle is not allowed: on the left of `=` each component once (v.xy, not v.xx), and at most four
+compile-type-mismatch = the value's type is not the variable's type: a vec3 into a vec4 needs building, vec4(v, 1.0); a vec4 into a vec3 needs picking, v.xyz; a float from an int needs float(i)
+compile-return-type = what this function returns is not its declared type, or it can end without `return`
+compile-integer-overflow = this whole number is too large for 32 bits
+compile-not-implemented = pipelens does not run this form of GLSL yet ({ $what })
+compile-not-run-yet = pipelens does not run `{ $name }` yet
+compile-sampler-parameter = pipelens passes only a `sampler2D` or a `samplerCube` to a function: it binds no `{ $ty }`
+compile-recursion = GLSL does not allow recursion: `{ $name }` calls itself
+compile-defined-below = `{ $name }` is called before it is defined: move its definition above, or declare it above (its first line ending in `;`)
+compile-argument-types = the arguments do not match the parameters of `{ $name }` { $parameters }: check each argument's type
 compile-at = line { $line }, column { $column }: { $said }
 compile-vertex-shader = vertex shader
 compile-fragment-shader = fragment shader
@@ -1242,3 +1281,17 @@ glsl-world-position-m-p = world position M·p
 glsl-world-normal-m-t-n-normalized = world normal (M⁻¹)^T·n, normalized (interpolation shortens it again)
 glsl-pipelens-unlit-shading-as-a-shader = pipelens' unlit shading as a shader: the surface colour as it is, the texel where the object
 glsl-is-textured-else-the-vertex-colour = is textured, else the vertex colour (interpolated).
+
+## src/vocabulary/trace.rs
+
+trace-if-true = if: true → then
+trace-if-false = if: false → else
+trace-iteration = loop: iteration { $k }
+trace-loop-holds = loop condition: true → another iteration
+trace-loop-ends = loop condition: false → the loop ends
+trace-break = break: the loop ends
+trace-continue = continue: on to the next iteration
+trace-call = call { $name }()
+trace-returns = { $name }() returns { $value }
+trace-return-from = return from { $name }()
+trace-discard = discard: the fragment is thrown away

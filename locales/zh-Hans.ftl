@@ -1064,6 +1064,45 @@ submission-does-not-compile = 无法编译：{ $first }{ $more ->
 
 ## src/vocabulary/compile.rs
 
+compile-cannot-stand-here = 这里不能出现 `{ $found }`
+compile-file-ends-where = 文件在应当出现 { $expected } 的地方结束了
+compile-should-come-first = 这里不能出现 `{ $found }`：应当先有 { $expected }
+compile-or = 或
+compile-token-a-name = 一个名字
+compile-token-a-type = 一个类型
+compile-token-a-whole-number = 一个整数
+compile-token-a-number = 一个数
+compile-token-true-or-false = true 或 false
+compile-token-the-end-of-the-file = 文件结尾
+compile-missing-semicolon = 这一行末尾缺少 `;`
+compile-unexpected-end = 文件提前结束了：缺少 `{ "}" }` 或 `)`
+compile-unknown-variable = `{ $n }` 在这里没有声明：请在第一次使用前声明它，或检查拼写
+compile-unknown-type = `{ $n }` 不是 GLSL 的类型（float、vec2、vec3、vec4、int、bool、mat3、mat4……）
+compile-no-such-field = 这个值没有这样的成员或分量
+compile-no-field-named = 这个值没有成员或分量 `{ $n }`（vec3 有 x、y、z；vec2 没有 z）
+compile-no-function-matches = 没有与这次调用匹配的函数：请检查函数名和参数的类型
+compile-no-function-named = 没有接受这些参数的函数 `{ $n }`：请检查函数名、参数的个数和类型，以及它是否在这一行之前声明
+compile-already-declared = `{ $n }` 在这里声明了两次：给第二个换个名字，或去掉类型直接给第一个赋值
+compile-function-already-defined = 这个函数定义了两次
+compile-cannot-combine = 这个运算符两边的类型不能一起运算：vec3 与 vec4 需要 v.xyz 或 vec4(v, 1.0)；int 与 float 需要 float(i)，或把 1 写成 1.0
+compile-too-many-arguments = 这个构造函数给的数比它的类型能容纳的多（vec3 取 3 个，mat4 取 16 个）
+compile-bad-constructor = 不能用这些参数构造这个类型
+compile-not-constant = 这里必须在编译时就确定：一个数，或由数构成的 `const`
+compile-not-assignable = 不能给它赋值：`uniform`、`in` 输入和 `const` 都是只读的——先把它复制到一个局部变量
+compile-void-value = `void` 函数不返回值，所以这里没有可用的值
+compile-version-not-first = `#version` 必须是着色器的第一行
+compile-invalid-version = GLSL 没有版本 `{ $v }`：请写 `#version 330 core`（旧版 GLSL 写 110 或 120）
+compile-float-modulo = GLSL 的 `%` 只能用于整数（int、uint、ivec……）：浮点数请写 mod(a, b)
+compile-bad-swizzle = 这个分量选择（swizzle）不允许：在 `=` 左边每个分量只能出现一次（v.xy，而不是 v.xx），最多四个
+compile-type-mismatch = 值的类型与变量的类型不同：vec3 放进 vec4 需要构造 vec4(v, 1.0)；vec4 放进 vec3 需要选取 v.xyz；int 变成 float 需要 float(i)
+compile-return-type = 这个函数返回的值不是它声明的类型，或者它可能没有 `return` 就结束了
+compile-integer-overflow = 这个整数超出了 32 位的范围
+compile-not-implemented = pipelens 还不能运行这种 GLSL 写法（{ $what }）
+compile-not-run-yet = pipelens 还不能运行 `{ $name }`
+compile-sampler-parameter = pipelens 只能把 `sampler2D` 或 `samplerCube` 传给函数：它不绑定 `{ $ty }` 类型的纹理
+compile-recursion = GLSL 不允许递归：`{ $name }` 调用了它自己
+compile-defined-below = `{ $name }` 在定义之前就被调用了：把它的定义移到上面，或在上面先声明它（写出它的第一行并以 `;` 结尾）
+compile-argument-types = 实参与 `{ $name }` 的形参 { $parameters } 不相符：请检查每个实参的类型
 compile-at = 第 { $line } 行第 { $column } 列：{ $said }
 compile-vertex-shader = 顶点着色器
 compile-fragment-shader = 片元着色器
@@ -1206,3 +1245,17 @@ glsl-world-position-m-p = 世界坐标 M·p
 glsl-world-normal-m-t-n-normalized = 世界法向量 (M⁻¹)^T·n，已归一化（插值会再次使它变短）
 glsl-pipelens-unlit-shading-as-a-shader = pipelens 的无光照着色，写成着色器：表面颜色原样输出，物体有纹理时
 glsl-is-textured-else-the-vertex-colour = 用纹素，否则用（插值后的）顶点颜色。
+
+## src/vocabulary/trace.rs
+
+trace-if-true = if：条件成立 → then
+trace-if-false = if：条件不成立 → else
+trace-iteration = 循环：第 { $k } 次迭代
+trace-loop-holds = 循环条件：成立 → 再迭代一次
+trace-loop-ends = 循环条件：不成立 → 循环结束
+trace-break = break：跳出循环
+trace-continue = continue：进入下一次迭代
+trace-call = 调用 { $name }()
+trace-returns = { $name }() 返回 { $value }
+trace-return-from = 从 { $name }() 返回
+trace-discard = discard：丢弃这个片元

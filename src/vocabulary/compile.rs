@@ -13,78 +13,33 @@ use super::Lang;
 #[must_use]
 pub fn complaint(c: &Complaint, lang: Lang) -> Option<String> {
     use Complaint as C;
-    let en = lang.written() == Written::English;
-    let t = |e: String, z: String| if en { e } else { z };
     Some(match c {
-        C::MissingSemicolon => t(
-            "a `;` is missing at the end of this line".into(),
-            "这一行末尾缺少 `;`".into(),
-        ),
+        C::MissingSemicolon => lang.t("compile-missing-semicolon").to_owned(),
         C::Unexpected { found, expected } => {
             let list = expected
                 .iter()
                 .map(|e| token_words(e, lang))
                 .collect::<Vec<_>>();
             let found = found.trim().escape_debug().to_string();
-            let or = if en { " or " } else { "或" };
-            match (found.is_empty() || list.is_empty(), en) {
-                _ if list.is_empty() && en => format!("`{found}` cannot stand here"),
-                _ if list.is_empty() => format!("这里不能出现 `{found}`"),
-                (true, true) => format!("the file ends where {} should follow", list.join(or)),
-                (true, false) => format!("文件在应当出现 {} 的地方结束了", list.join(or)),
-                (false, true) => format!(
-                    "`{found}` cannot stand here: {} should come first",
-                    list.join(or)
-                ),
-                (false, false) => format!("这里不能出现 `{found}`：应当先有 {}", list.join(or)),
-            }
+            let expected = list.join(lang.t("compile-or"));
+            let id = if list.is_empty() {
+                "compile-cannot-stand-here"
+            } else if found.is_empty() {
+                "compile-file-ends-where"
+            } else {
+                "compile-should-come-first"
+            };
+            lang.t_with(id, &[("found", &found), ("expected", &expected)])
         }
-        C::UnexpectedEnd => t(
-            "the file ends too early: a `}` or `)` is missing".into(),
-            "文件提前结束了：缺少 `}` 或 `)`".into(),
-        ),
-        C::UnknownVariable(n) => t(
-            format!(
-                "`{n}` is not declared here: declare it before its first use, or check its spelling"
-            ),
-            format!("`{n}` 在这里没有声明：请在第一次使用前声明它，或检查拼写"),
-        ),
-        C::UnknownType(n) => t(
-            format!("`{n}` is not a GLSL type (float, vec2, vec3, vec4, int, bool, mat3, mat4, …)"),
-            format!("`{n}` 不是 GLSL 的类型（float、vec2、vec3、vec4、int、bool、mat3、mat4……）"),
-        ),
-        C::UnknownField(n) if n.is_empty() => t(
-            "this value has no such field or component".into(),
-            "这个值没有这样的成员或分量".into(),
-        ),
-        C::UnknownField(n) => t(
-            format!(
-                "this value has no field or component `{n}` (a vec3 has x, y, z; a vec2 has no z)"
-            ),
-            format!("这个值没有成员或分量 `{n}`（vec3 有 x、y、z；vec2 没有 z）"),
-        ),
-        C::UnknownFunction(n) if n.is_empty() => t(
-            "no function matches this call: check its name and the types of its arguments".into(),
-            "没有与这次调用匹配的函数：请检查函数名和参数的类型".into(),
-        ),
-        C::UnknownFunction(n) => t(
-            format!(
-                "no function `{n}` takes these arguments: check its name, the number and types of its arguments, and that it is declared above this line"
-            ),
-            format!(
-                "没有接受这些参数的函数 `{n}`：请检查函数名、参数的个数和类型，以及它是否在这一行之前声明"
-            ),
-        ),
-        C::AlreadyDeclared(n) => t(
-            format!(
-                "`{n}` is declared twice here: give the second one another name, or assign to the first without its type"
-            ),
-            format!("`{n}` 在这里声明了两次：给第二个换个名字，或去掉类型直接给第一个赋值"),
-        ),
-        C::FunctionAlreadyDefined => t(
-            "this function is defined twice".into(),
-            "这个函数定义了两次".into(),
-        ),
+        C::UnexpectedEnd => lang.t("compile-unexpected-end").to_owned(),
+        C::UnknownVariable(n) => lang.t_with("compile-unknown-variable", &[("n", n)]),
+        C::UnknownType(n) => lang.t_with("compile-unknown-type", &[("n", n)]),
+        C::UnknownField(n) if n.is_empty() => lang.t("compile-no-such-field").to_owned(),
+        C::UnknownField(n) => lang.t_with("compile-no-field-named", &[("n", n)]),
+        C::UnknownFunction(n) if n.is_empty() => lang.t("compile-no-function-matches").to_owned(),
+        C::UnknownFunction(n) => lang.t_with("compile-no-function-named", &[("n", n)]),
+        C::AlreadyDeclared(n) => lang.t_with("compile-already-declared", &[("n", n)]),
+        C::FunctionAlreadyDefined => lang.t("compile-function-already-defined").to_owned(),
         _ => return form(c, lang),
     })
 }
@@ -93,90 +48,28 @@ pub fn complaint(c: &Complaint, lang: Lang) -> Option<String> {
 /// or `None` where the English message is all there is.
 fn form(c: &Complaint, lang: Lang) -> Option<String> {
     use Complaint as C;
-    let en = lang.written() == Written::English;
-    let t = |e: String, z: String| if en { e } else { z };
     Some(match c {
-        C::CannotCombine => t(
-            "the two sides of this operator have types it cannot combine: a vec3 with a vec4 needs v.xyz or vec4(v, 1.0); an int with a float needs float(i) or 1.0 for 1".into(),
-            "这个运算符两边的类型不能一起运算：vec3 与 vec4 需要 v.xyz 或 vec4(v, 1.0)；int 与 float 需要 float(i)，或把 1 写成 1.0".into(),
-        ),
-        C::TooManyArguments => t(
-            "this constructor is given more numbers than its type holds (vec3 takes 3, mat4 takes 16)".into(),
-            "这个构造函数给的数比它的类型能容纳的多（vec3 取 3 个，mat4 取 16 个）".into(),
-        ),
-        C::BadConstructor => t(
-            "this type cannot be built from these arguments".into(),
-            "不能用这些参数构造这个类型".into(),
-        ),
-        C::NotConstant => t(
-            "this must be known when the shader is compiled: a number, or a `const` made of numbers".into(),
-            "这里必须在编译时就确定：一个数，或由数构成的 `const`".into(),
-        ),
-        C::NotAssignable => t(
-            "this cannot be assigned to: a `uniform`, an `in` input and a `const` are read-only — copy it into a local variable first".into(),
-            "不能给它赋值：`uniform`、`in` 输入和 `const` 都是只读的——先把它复制到一个局部变量".into(),
-        ),
-        C::VoidValue => t(
-            "a `void` function returns nothing, so its call has no value to use here".into(),
-            "`void` 函数不返回值，所以这里没有可用的值".into(),
-        ),
-        C::VersionNotFirst => t(
-            "`#version` must be the first line of the shader".into(),
-            "`#version` 必须是着色器的第一行".into(),
-        ),
-        C::InvalidVersion(v) => t(
-            format!("GLSL has no version `{v}`: write `#version 330 core` (or 110, 120 for the old GLSL)"),
-            format!("GLSL 没有版本 `{v}`：请写 `#version 330 core`（旧版 GLSL 写 110 或 120）"),
-        ),
-        C::FloatModulo => t(
-            "GLSL's `%` takes whole numbers only (int, uint, ivec…): for floats write mod(a, b)".into(),
-            "GLSL 的 `%` 只能用于整数（int、uint、ivec……）：浮点数请写 mod(a, b)".into(),
-        ),
-        C::BadSwizzle => t(
-            "this swizzle is not allowed: on the left of `=` each component once (v.xy, not v.xx), and at most four".into(),
-            "这个分量选择（swizzle）不允许：在 `=` 左边每个分量只能出现一次（v.xy，而不是 v.xx），最多四个".into(),
-        ),
-        C::TypeMismatch => t(
-            "the value's type is not the variable's type: a vec3 into a vec4 needs building, vec4(v, 1.0); a vec4 into a vec3 needs picking, v.xyz; a float from an int needs float(i)".into(),
-            "值的类型与变量的类型不同：vec3 放进 vec4 需要构造 vec4(v, 1.0)；vec4 放进 vec3 需要选取 v.xyz；int 变成 float 需要 float(i)".into(),
-        ),
-        C::ReturnType => t(
-            "what this function returns is not its declared type, or it can end without `return`".into(),
-            "这个函数返回的值不是它声明的类型，或者它可能没有 `return` 就结束了".into(),
-        ),
-        C::IntegerOverflow => t(
-            "this whole number is too large for 32 bits".into(),
-            "这个整数超出了 32 位的范围".into(),
-        ),
-        C::NotImplemented(what) => t(
-            format!("pipelens does not run this form of GLSL yet ({what})"),
-            format!("pipelens 还不能运行这种 GLSL 写法（{what}）"),
-        ),
-        C::NotRunYet(name) => t(
-            format!("pipelens does not run `{name}` yet"),
-            format!("pipelens 还不能运行 `{name}`"),
-        ),
-        C::SamplerParameter(ty) => t(
-            format!(
-                "pipelens passes only a `sampler2D` or a `samplerCube` to a function: it binds no `{ty}`"
-            ),
-            format!("pipelens 只能把 `sampler2D` 或 `samplerCube` 传给函数：它不绑定 `{ty}` 类型的纹理"),
-        ),
-        C::Recursion(name) => t(
-            format!("GLSL does not allow recursion: `{name}` calls itself"),
-            format!("GLSL 不允许递归：`{name}` 调用了它自己"),
-        ),
-        C::DefinedBelow(name) => t(
-            format!(
-                "`{name}` is called before it is defined: move its definition above, or declare it above (its first line ending in `;`)"
-            ),
-            format!("`{name}` 在定义之前就被调用了：把它的定义移到上面，或在上面先声明它（写出它的第一行并以 `;` 结尾）"),
-        ),
-        C::ArgumentTypes { name, parameters } => t(
-            format!(
-                "the arguments do not match the parameters of `{name}` {parameters}: check each argument's type"
-            ),
-            format!("实参与 `{name}` 的形参 {parameters} 不相符：请检查每个实参的类型"),
+        C::CannotCombine => lang.t("compile-cannot-combine").to_owned(),
+        C::TooManyArguments => lang.t("compile-too-many-arguments").to_owned(),
+        C::BadConstructor => lang.t("compile-bad-constructor").to_owned(),
+        C::NotConstant => lang.t("compile-not-constant").to_owned(),
+        C::NotAssignable => lang.t("compile-not-assignable").to_owned(),
+        C::VoidValue => lang.t("compile-void-value").to_owned(),
+        C::VersionNotFirst => lang.t("compile-version-not-first").to_owned(),
+        C::InvalidVersion(v) => lang.t_with("compile-invalid-version", &[("v", v)]),
+        C::FloatModulo => lang.t("compile-float-modulo").to_owned(),
+        C::BadSwizzle => lang.t("compile-bad-swizzle").to_owned(),
+        C::TypeMismatch => lang.t("compile-type-mismatch").to_owned(),
+        C::ReturnType => lang.t("compile-return-type").to_owned(),
+        C::IntegerOverflow => lang.t("compile-integer-overflow").to_owned(),
+        C::NotImplemented(what) => lang.t_with("compile-not-implemented", &[("what", what)]),
+        C::NotRunYet(name) => lang.t_with("compile-not-run-yet", &[("name", name)]),
+        C::SamplerParameter(ty) => lang.t_with("compile-sampler-parameter", &[("ty", ty)]),
+        C::Recursion(name) => lang.t_with("compile-recursion", &[("name", name)]),
+        C::DefinedBelow(name) => lang.t_with("compile-defined-below", &[("name", name)]),
+        C::ArgumentTypes { name, parameters } => lang.t_with(
+            "compile-argument-types",
+            &[("name", name), ("parameters", parameters)],
         ),
         _ => return own(c, lang).or_else(|| fault(c, lang)),
     })
@@ -290,19 +183,16 @@ fn own(c: &Complaint, lang: Lang) -> Option<String> {
 
 /// An expected token as the sentence says it: a symbol in backticks, a kind of token in words.
 fn token_words(token: &str, lang: Lang) -> String {
-    let zh = match token {
-        "a name" => "一个名字",
-        "a type" => "一个类型",
-        "a whole number" => "一个整数",
-        "a number" => "一个数",
-        "true or false" => "true 或 false",
-        "the end of the file" => "文件结尾",
+    let id = match token {
+        "a name" => "compile-token-a-name",
+        "a type" => "compile-token-a-type",
+        "a whole number" => "compile-token-a-whole-number",
+        "a number" => "compile-token-a-number",
+        "true or false" => "compile-token-true-or-false",
+        "the end of the file" => "compile-token-the-end-of-the-file",
         symbol => return format!("`{symbol}`"),
     };
-    match lang.written() {
-        Written::English => token.to_owned(),
-        Written::Chinese => zh.to_owned(),
-    }
+    lang.t(id).to_owned()
 }
 
 /// A compile message as the student reads it: its line and column, then the sentence in

@@ -6,32 +6,38 @@ use pipeline::shader::{Step, TraceLine};
 
 use super::Lang;
 
-/// What `line` did, in `lang`: `n = vec3(0.000, 0.707, 0.707)`; `if: true → then` or
+/// What `line` did, in `lang` (its English the trace's own text, which a test compares): `n = vec3(0.000, 0.707, 0.707)`; `if: true → then` or
 /// `if：条件成立 → then`; `loop: iteration 3` or `循环：第 3 次迭代`; a call, a return with its
 /// value, a discard.
 #[must_use]
 pub fn words(line: &TraceLine, lang: Lang) -> String {
-    if lang.written() == super::Written::English {
-        return line.text.clone();
-    }
     let value = line.value.as_deref().unwrap_or_default();
     match &line.step {
-        Step::Assign { name, .. } => format!("{name} = {value}"),
-        Step::Branch { taken: true } => "if：条件成立 → then".to_owned(),
-        Step::Branch { taken: false } => "if：条件不成立 → else".to_owned(),
-        Step::Iteration { k } => format!("循环：第 {k} 次迭代"),
-        Step::LoopTest { holds: true } => "循环条件：成立 → 再迭代一次".to_owned(),
-        Step::LoopTest { holds: false } => "循环条件：不成立 → 循环结束".to_owned(),
-        Step::Break => "break：跳出循环".to_owned(),
-        Step::Continue => "continue：进入下一次迭代".to_owned(),
-        Step::Call { name } => format!("调用 {name}()"),
+        Step::Assign { name, .. } => return format!("{name} = {value}"),
+        Step::Branch { taken } => lang.t(if *taken {
+            "trace-if-true"
+        } else {
+            "trace-if-false"
+        }),
+        Step::Iteration { k } => return lang.t_with("trace-iteration", &[("k", k)]),
+        Step::LoopTest { holds } => lang.t(if *holds {
+            "trace-loop-holds"
+        } else {
+            "trace-loop-ends"
+        }),
+        Step::Break => lang.t("trace-break"),
+        Step::Continue => lang.t("trace-continue"),
+        Step::Call { name } => return lang.t_with("trace-call", &[("name", name)]),
         Step::Return {
             name,
             value: Some(_),
-        } => format!("{name}() 返回 {value}"),
-        Step::Return { name, value: None } => format!("从 {name}() 返回"),
-        Step::Discard => "discard：丢弃这个片元".to_owned(),
+        } => return lang.t_with("trace-returns", &[("name", name), ("value", &value)]),
+        Step::Return { name, value: None } => {
+            return lang.t_with("trace-return-from", &[("name", name)]);
+        }
+        Step::Discard => lang.t("trace-discard"),
     }
+    .to_owned()
 }
 
 #[cfg(test)]
