@@ -290,8 +290,7 @@ fn push_nodes(out: &mut Vec<Run>, nodes: &[Node], color: [u8; 3], accent: [u8; 3
                     if k == 1 {
                         push(out, "/", color, script);
                     }
-                    let plain = notation::plain_text(part);
-                    let bracket = !plain.chars().all(char::is_alphanumeric);
+                    let bracket = notation::needs_brackets(part);
                     if bracket {
                         push(out, "(", color, script);
                     }

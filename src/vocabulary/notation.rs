@@ -343,7 +343,22 @@ fn merge(nodes: Vec<Node>) -> Vec<Node> {
     out
 }
 
-/// The text of nodes with the marks taken out (`x_i` → `xi`): for searching and accessibility.
+/// Whether a fraction's part needs brackets when the fraction is written on one line: it is
+/// more than one atom (`E0 + E1 + E2`, `z+1`, `n·l`), so `a/b` would read otherwise than the
+/// fraction bar does. A name or number (`w`, `2fn`, `x_c`) and a norm `|l + v|` need none.
+#[must_use]
+pub fn needs_brackets(part: &[Node]) -> bool {
+    let plain = plain_text(part);
+    let norm = plain.len() > 1
+        && plain.starts_with('|')
+        && plain.ends_with('|')
+        && plain.matches('|').count() == 2;
+    !norm && !plain.chars().all(char::is_alphanumeric)
+}
+
+/// The text of nodes with the marks taken out (`x_i` → `xi`), a fraction on one line with its
+/// parts bracketed where they need it (`λ_k = E_k/(E_0 + E_1 + E_2)`): for searching and for
+/// what a screen reader says.
 #[must_use]
 pub fn plain_text(nodes: &[Node]) -> String {
     let mut s = String::new();
@@ -361,9 +376,18 @@ pub fn plain_text(nodes: &[Node]) -> String {
                 }
             }
             Node::Frac { num, den } => {
-                s.push_str(&plain_text(num));
-                s.push('/');
-                s.push_str(&plain_text(den));
+                for (k, part) in [num, den].into_iter().enumerate() {
+                    if k == 1 {
+                        s.push('/');
+                    }
+                    if needs_brackets(part) {
+                        s.push('(');
+                        s.push_str(&plain_text(part));
+                        s.push(')');
+                    } else {
+                        s.push_str(&plain_text(part));
+                    }
+                }
             }
             Node::Formula(inner) => s.push_str(&plain_text(inner)),
         }
@@ -377,6 +401,25 @@ mod tests {
 
     fn t(s: &str) -> Node {
         Node::Text(s.to_owned())
+    }
+
+    /// A fraction said on one line reads as its bar does: each part of more than one atom in
+    /// brackets (the inspector's λ, f_att, window z, read out by a screen reader), a name, a
+    /// number or a norm without.
+    #[test]
+    fn a_fraction_on_one_line_keeps_its_parts_together() {
+        let said = |f: &str| super::plain_text(&parse(f, true));
+        assert_eq!(
+            said("λ_k = E_k/(E_0 + E_1 + E_2)"),
+            "λk = Ek/(E0 + E1 + E2)"
+        );
+        assert_eq!(
+            said("f_att = 1/(a + b·d + c·d^2)"),
+            "fatt = 1/(a + b·d + c·d^2)"
+        );
+        assert_eq!(said("z_w = (z+1)/2"), "zw = (z+1)/2");
+        assert_eq!(said("h = (l + v)/|l + v|"), "h = (l + v)/|l + v|");
+        assert_eq!(said("x_c/w_c"), "xc/wc");
     }
 
     #[test]
