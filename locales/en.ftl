@@ -370,6 +370,8 @@ lesson-show-the-answer = Show the answer
 
 ## src/app/views/matrix.rs
 
+matrix-grid = the 4×4 matrix, row by row: { $rows }
+matrix-grid-row = row { $row }: { $values }
 matrix-factors = Factors
 
 ## src/app/views/observer.rs
@@ -825,7 +827,7 @@ explain-mean-of-samples = the mean of the pixel's { $samples } samples; { $cover
     } to this triangle's primitive, the others keep their own colour or the background
 explain-behind-the-eye-no-ndc = behind the eye: no NDC; clipping cut the triangle first
 explain-the-triangle-crosses-the-view = the triangle crosses the view volume: the pixel lies in a piece of the clipped polygon
-explain-snapped-to-1-256-pixel = snapped to 1/256 pixel, counter-clockwise; v_k is vertex k, c_k a corner made by clipping
+explain-the-corners-snapped = the triangle's corners, snapped to 1/256 pixel, counter-clockwise; v_k is vertex k, c_k a corner made by clipping
 explain-the-pixel-centre = the pixel centre
 explain-depth-is-linear-in-screen = depth is linear in screen space
 explain-perspective-correct-interpolation = perspective-correct interpolation
@@ -1295,3 +1297,10 @@ trace-call = call { $name }()
 trace-returns = { $name }() returns { $value }
 trace-return-from = return from { $name }()
 trace-discard = discard: the fragment is thrown away
+
+## src/app/views/shader_source.rs
+
+shader-source-gutter = Line numbers 1 to { $lines } (click one to set or clear a breakpoint)
+shader-source-gutter-breakpoints = ; breakpoints at { $lines }
+shader-source-gutter-current = ; the debugger is at line { $line }
+shader-source-gutter-messages = ; a message at { $lines }

@@ -367,6 +367,8 @@ lesson-show-the-answer = 显示答案
 
 ## src/app/views/matrix.rs
 
+matrix-grid = 4×4 矩阵，按行：{ $rows }
+matrix-grid-row = 第 { $row } 行：{ $values }
 matrix-factors = 分解
 
 ## src/app/views/observer.rs
@@ -813,7 +815,7 @@ explain-light-towards = 光源 { $index }（{ $kind }）：指向它的单位向
 explain-mean-of-samples = 像素 { $samples } 个采样点的平均；其中 { $covered } 个属于该图元，其余保留各自的颜色或背景色
 explain-behind-the-eye-no-ndc = 在视点之后：没有 NDC；裁剪先把三角形切开
 explain-the-triangle-crosses-the-view = 三角形跨越视见体：该像素位于裁剪后多边形的一部分中
-explain-snapped-to-1-256-pixel = 对齐到 1/256 像素，逆时针；v_k 是第 k 个顶点，c_k 是裁剪产生的角点
+explain-the-corners-snapped = 三角形的角点，对齐到 1/256 像素，逆时针；v_k 是第 k 个顶点，c_k 是裁剪产生的角点
 explain-the-pixel-centre = 像素中心
 explain-depth-is-linear-in-screen = 深度在屏幕空间中是线性的
 explain-perspective-correct-interpolation = 透视校正插值
@@ -1259,3 +1261,10 @@ trace-call = 调用 { $name }()
 trace-returns = { $name }() 返回 { $value }
 trace-return-from = 从 { $name }() 返回
 trace-discard = discard：丢弃这个片元
+
+## src/app/views/shader_source.rs
+
+shader-source-gutter = 行号 1 到 { $lines }（单击行号设置或清除断点）
+shader-source-gutter-breakpoints = ；断点在第 { $lines } 行
+shader-source-gutter-current = ；调试器在第 { $line } 行
+shader-source-gutter-messages = ；第 { $lines } 行有消息

@@ -28,7 +28,7 @@ pub fn remark(r: &Remark, l: Lang) -> String {
     match r {
         Remark::BehindEye => s("explain-behind-the-eye-no-ndc"),
         Remark::Clipped => s("explain-the-triangle-crosses-the-view"),
-        Remark::Corners => s("explain-snapped-to-1-256-pixel"),
+        Remark::Corners => s("explain-the-corners-snapped"),
         Remark::PixelCentre => s("explain-the-pixel-centre"),
         Remark::EdgeOpposite { edge } => l.t_with("explain-edge-opposite", &[("edge", edge)]),
         Remark::Sample { index, inside } => l.t_with(

@@ -39,6 +39,42 @@ pub(super) struct Touched {
     cursor_moved_to: Option<egui::Rect>,
 }
 
+/// The line numbers as a screen reader says them: how many, then the lines marked — the
+/// breakpoints, the debugger's line, the lines with a message — instead of every number.
+fn gutter_said(
+    lines: usize,
+    errors: &[(usize, &str)],
+    marks: &Marks,
+    lang: crate::vocabulary::Lang,
+) -> String {
+    let list = |mut at: Vec<usize>| {
+        at.sort_unstable();
+        at.dedup();
+        let words: Vec<String> = at.iter().map(ToString::to_string).collect();
+        words.join(lang.t("list-separator"))
+    };
+    let mut said = lang.t_with("shader-source-gutter", &[("lines", &lines)]);
+    let breakpoints: Vec<usize> = (1..=lines)
+        .filter(|n| marks.breakpoints.contains(n))
+        .collect();
+    if !breakpoints.is_empty() {
+        said += &lang.t_with(
+            "shader-source-gutter-breakpoints",
+            &[("lines", &list(breakpoints))],
+        );
+    }
+    if let Some(line) = marks.current {
+        said += &lang.t_with("shader-source-gutter-current", &[("line", &line)]);
+    }
+    if !errors.is_empty() {
+        said += &lang.t_with(
+            "shader-source-gutter-messages",
+            &[("lines", &list(errors.iter().map(|(l, _)| *l).collect()))],
+        );
+    }
+    said
+}
+
 /// The source with its line numbers, highlighted, with `errors` (`(line, message)`) and the
 /// debugger's `marks`; `tab` names the tab, which keeps its own scroll position. The line
 /// numbers' tooltip is in `lang`.
@@ -91,6 +127,12 @@ pub(super) fn code(
                     .on_hover_text(lang.t(
                         crate::app::shortcuts::of(crate::app::shortcuts::Action::Breakpoint).does,
                     ));
+                let said = gutter_said(lines, errors, marks, lang);
+                // Named by its marks, and its numbers' text (the label's value) left unsaid.
+                numbers.widget_info(|| egui::WidgetInfo {
+                    current_text_value: Some(String::new()),
+                    ..egui::WidgetInfo::labeled(egui::Role::Button, true, &said)
+                });
                 // The text scrolls sideways by itself: a long line never hides the numbers.
                 egui::ScrollArea::horizontal()
                     .id_salt(("shader source columns", tab))
@@ -305,4 +347,43 @@ fn bands(
         );
     }
     scroll_to
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vocabulary::Lang;
+
+    /// The line numbers are said as how many and which are marked, in both languages (written
+    /// by hand), not as every number; a breakpoint past the last line is not among them.
+    #[test]
+    fn the_line_numbers_are_said_by_their_marks() {
+        let marks = Marks {
+            current: Some(8),
+            breakpoints: vec![20, 12, 40],
+            beside: Vec::new(),
+            reveal: false,
+            watched: None,
+            lines: None,
+        };
+        let errors = [(4, "a `;` is missing")];
+        assert_eq!(
+            gutter_said(20, &errors, &marks, Lang::EN),
+            "Line numbers 1 to 20 (click one to set or clear a breakpoint); breakpoints at 12, \
+             20; the debugger is at line 8; a message at 4"
+        );
+        assert_eq!(
+            gutter_said(20, &errors, &marks, Lang::ZH),
+            "行号 1 到 20（单击行号设置或清除断点）；断点在第 12、20 行；调试器在第 8 行；第 4 行有消息"
+        );
+        let none = Marks {
+            current: None,
+            breakpoints: Vec::new(),
+            ..marks
+        };
+        assert_eq!(
+            gutter_said(3, &[], &none, Lang::EN),
+            "Line numbers 1 to 3 (click one to set or clear a breakpoint)"
+        );
+    }
 }

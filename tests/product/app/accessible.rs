@@ -253,3 +253,88 @@ fn a_page_keeps_the_step_its_pictures_and_the_verdict_in_words() {
         words.get(Part::Picture)
     );
 }
+
+/// The accessibility tree below `node` as an indented outline: each shown node's role, then its
+/// name and value where it has them (cut at 120 characters).
+fn outline(node: &NodeRef, depth: usize, out: &mut String) {
+    if node.is_hidden() {
+        return;
+    }
+    let cut = |s: String| s.chars().take(120).collect::<String>();
+    let mut line = format!("{}{:?}", "  ".repeat(depth), node.role());
+    if let Some(label) = node.label().filter(|l| !l.trim().is_empty()) {
+        line.push_str(&format!(" \"{}\"", cut(label)));
+    }
+    if let Some(value) = node.value().filter(|v| !v.trim().is_empty()) {
+        line.push_str(&format!(" = \"{}\"", cut(value)));
+    }
+    out.push_str(&line);
+    out.push('\n');
+    for child in node.children() {
+        outline(&child, depth + 1, out);
+    }
+}
+
+/// The tree a screen reader walks, for three views in both languages, written out for a person
+/// to read (`target/accesskit/*.txt`): the tour's output stage with a pixel inspected, the
+/// shader lesson's code step with its panel open, and the rotation lab. Each outline holds the
+/// step's title from the lesson file and the picture's name, in the language shown.
+#[test]
+fn the_tree_of_three_views_is_written_out_for_a_reader() {
+    let dir = crate::support::repo().join("target/accesskit");
+    std::fs::create_dir_all(&dir).expect("the folder is made");
+    for lang in [Lang::EN, Lang::ZH] {
+        let views = [
+            ("00-tour", 0, "tour-inspected"),
+            ("24-shader-programs", 4, "shader-panel"),
+            ("25-lab-model-projection", 2, "rotation-lab"),
+        ];
+        for (id, k, name) in views {
+            let path = crate::support::repo().join(format!("lessons/{id}.toml"));
+            let mut h = super::sized_lesson_harness(&path, [1366.0, 768.0]);
+            h.state_mut()
+                .session
+                .apply(Command::View(ViewCommand::SetLang(lang)));
+            h.state_mut().panels.inspector = true;
+            h.state_mut().panels.shader = name == "shader-panel";
+            super::go_to_step(&mut h, k);
+            if name == "tour-inspected" {
+                h.state_mut().session.apply(Command::Selection(
+                    pipelens::app::command::SelectionCommand::SelectPixel(Some((320, 200))),
+                ));
+                h.run_steps(3);
+            }
+            let mut text = String::new();
+            outline(&h.root().accesskit_node(), 0, &mut text);
+            let file = dir.join(format!("{name}-{}.txt", lang.tag()));
+            std::fs::write(&file, &text).expect("the outline is written");
+            let title = h
+                .state()
+                .session
+                .lesson
+                .as_ref()
+                .expect("a lesson")
+                .lesson
+                .steps[k]
+                .title
+                .get(lang)
+                .to_owned();
+            assert!(text.contains(&title), "{}: no \"{title}\"", file.display());
+            assert!(
+                text.contains("Image \""),
+                "{}: no picture is named",
+                file.display()
+            );
+            // The lab's step shows the viewport matrix of its 640×400 window (x_w = 320·x + 320,
+            // y_w = 200·y + 200), said as one group row by row before its sixteen cells.
+            if name == "rotation-lab" {
+                let said = if lang == Lang::EN {
+                    "Group \"the 4×4 matrix, row by row: row 1: 320, 0, 0, 320; row 2: 0, 200, 0, 200;"
+                } else {
+                    "Group \"4×4 矩阵，按行：第 1 行：320、0、0、320；第 2 行：0、200、0、200；"
+                };
+                assert!(text.contains(said), "{}: no \"{said}\"", file.display());
+            }
+        }
+    }
+}

@@ -137,8 +137,9 @@ fn the_debugger_steps_through_the_inspected_fragments_run() {
     assert!(h.query_by_label_contains("a = 0.500   (line 11)").is_some());
     // A breakpoint by a click on line 11's number; Shift+F8 runs back to its last hit, F8
     // from the start to its first.
-    let gutter = h.get_by_label_contains("  11\n").rect();
-    // 14 numbers: the source's 13 lines and the empty one after its last newline.
+    // 14 numbers: the source's 13 lines and the empty one after its last newline (the gutter
+    // is named by how many, for a screen reader).
+    let gutter = h.get_by_label_contains("Line numbers 1 to 14 ").rect();
     let row = gutter.height() / 14.0;
     let on_11 = egui::pos2(gutter.center().x, gutter.top() + 10.5 * row);
     h.drag_at(on_11);

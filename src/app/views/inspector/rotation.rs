@@ -61,7 +61,7 @@ fn axis_forms(ui: &mut Ui, session: &Session, k: usize) {
                 ),
             );
             if let Ok(r) = pipeline::transform::rotate_axis_rodrigues(n, theta) {
-                crate::app::views::matrix_grid(ui, &r, "rodrigues");
+                crate::app::views::matrix_grid(ui, &r, "rodrigues", lang);
             }
             ui.add_space(4.0);
             let q = glam::Quat::from_axis_angle(n, theta);
@@ -77,7 +77,7 @@ fn axis_forms(ui: &mut Ui, session: &Session, k: usize) {
                     lang.t("rotation-w-x-y-z-q")
                 ),
             );
-            crate::app::views::matrix_grid(ui, &glam::Mat4::from_quat(q), "quaternion");
+            crate::app::views::matrix_grid(ui, &glam::Mat4::from_quat(q), "quaternion", lang);
             let half = glam::Quat::IDENTITY.slerp(q, 0.5);
             typeset::note(
                 ui,
@@ -178,6 +178,6 @@ fn slerp_forms(
                 angle = angle.to_degrees(),
             ),
         );
-        crate::app::views::matrix_grid(ui, &q.to_matrix(), "slerp");
+        crate::app::views::matrix_grid(ui, &q.to_matrix(), "slerp", lang);
     });
 }

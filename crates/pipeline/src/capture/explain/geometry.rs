@@ -86,7 +86,7 @@ pub(super) fn explain_edges(e: &EdgeTest, corner_vertex: &[Option<usize>; 3], li
         .collect();
     lines.add(
         s,
-        "corners a_0, a_1, a_2",
+        "a_0, a_1, a_2",
         format!(
             "{} = {}, {} = {}, {} = {}",
             names[0],
