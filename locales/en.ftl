@@ -544,12 +544,6 @@ pixels-white-at = white at{" "}
 pixels-auto-range = auto range
 pixels-pixel-view = pixel view
 
-## src/app/views/projector.rs
-
-projector-point-light = point light
-projector-spotlight = spotlight
-projector-directional-light = directional light
-
 ## src/app/views/shader.rs
 
 shader-apply = Apply

@@ -541,12 +541,6 @@ pixels-white-at = 白：
 pixels-auto-range = 自动范围
 pixels-pixel-view = 像素视图
 
-## src/app/views/projector.rs
-
-projector-point-light = 点光源
-projector-spotlight = 聚光灯
-projector-directional-light = 平行光
-
 ## src/app/views/shader.rs
 
 shader-apply = 应用

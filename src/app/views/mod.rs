@@ -35,6 +35,6 @@ pub use matrix::{matrix, matrix_grid};
 pub use palette::{FATES, fate_color, fate_index};
 pub use projector::{Projector, draw_lights};
 pub use words::{
-    boxed_galley, clear_corner, draw_gain_note, fit_rect, label_with_background, picture_font,
-    picture_mono, picture_scale, place_label, wrapped_label,
+    boxed_galley, clear_corner, draw_gain_note, fit_rect, label_with_background, moved_inside,
+    picture_font, picture_mono, picture_scale, place_label, wrapped_label,
 };

@@ -101,12 +101,20 @@ impl ObserverView {
             cam.line(&painter, m.a, m.b, Stroke::new(m.width, color(m.color)));
         }
         let font = picture_font(painter.ctx(), 14.0);
+        // Each tag below-right of its point, moved inside the picture where it would run off
+        // its edge; none for a point outside it.
+        let view = painter.clip_rect().shrink(4.0);
         for t in &tags {
-            if let Some(p) = cam.project(t.at) {
+            if let Some(p) = cam.project(t.at).filter(|p| view.contains(*p)) {
+                let size = painter
+                    .layout_no_wrap(t.text.clone(), font.clone(), color(t.color))
+                    .size()
+                    + Vec2::splat(6.0);
+                let at = super::moved_inside(Rect::from_min_size(p + Vec2::splat(3.0), size), view);
                 label_with_background(
                     &painter,
-                    p + Vec2::new(6.0, 6.0),
-                    Align2::LEFT_TOP,
+                    at.center(),
+                    Align2::CENTER_CENTER,
                     &t.text,
                     &font,
                     color(t.color),

@@ -48,7 +48,7 @@ impl Projector {
 
 /// The lights of a capture drawn where they are (see `Light::gizmo`), through `to_view` (world
 /// coordinates into the space drawn), in a scene centred at `centre` of about `size`; each with its
-/// label, kept off the cards in `avoid` within `view`.
+/// label, kept off the cards in `avoid` and whole inside `view` (none for a light outside it).
 pub fn draw_lights(
     painter: &egui::Painter,
     cam: &Projector,
@@ -58,8 +58,9 @@ pub fn draw_lights(
     (avoid, view): (&[egui::Rect], egui::Rect),
     lang: Lang,
 ) {
-    use pipeline::light::Light;
     let font = picture_font(painter.ctx(), 14.0);
+    // What of the view is painted: the panel around it may cover its edge.
+    let view = view.intersect(painter.clip_rect());
     for (k, light) in lights.iter().enumerate() {
         let Some(g) = light.gizmo(centre, size) else {
             continue;
@@ -68,20 +69,22 @@ pub fn draw_lights(
         for [a, b] in &g.segments {
             cam.line(painter, to_view(*a), to_view(*b), stroke);
         }
-        if let Some(p) = cam.project(to_view(g.label_at)) {
-            let name = match light {
-                Light::Point { .. } => lang.t("projector-point-light"),
-                Light::Spot { .. } => lang.t("projector-spotlight"),
-                Light::Directional { .. } => lang.t("projector-directional-light"),
-                Light::Ambient { .. } => "",
-            };
-            let text = format!("{name} {k}");
+        // A light outside the view has no label: there is nothing in the picture to name.
+        if let Some(p) = cam
+            .project(to_view(g.label_at))
+            .filter(|p| view.contains(*p))
+        {
+            let text = crate::vocabulary::light_name(light, k, lang);
             let size = painter
                 .layout_no_wrap(text.clone(), font.clone(), palette::LIGHT)
                 .size()
                 + egui::Vec2::splat(8.0);
             let above = egui::Rect::from_center_size(p - egui::vec2(0.0, size.y / 2.0), size);
-            let at = if avoid.iter().any(|r| r.intersects(above)) {
+            // Above the light where that is clear and whole inside the view; else the nearest
+            // place that is, so that no label runs off the picture's edge.
+            let at = if avoid.iter().any(|r| r.intersects(above))
+                || !view.shrink(4.0).contains_rect(above)
+            {
                 crate::app::views::place_label(p, size, avoid, view.shrink(4.0))
             } else {
                 above

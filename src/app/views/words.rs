@@ -139,6 +139,15 @@ fn covered_area(r: Rect, avoid: &[Rect]) -> f32 {
         .sum()
 }
 
+/// `r` moved the least distance that puts it inside `view` (where it fits).
+#[must_use]
+pub fn moved_inside(r: Rect, view: Rect) -> Rect {
+    r.translate(egui::vec2(
+        (view.left() - r.left()).max(0.0) - (r.right() - view.right()).max(0.0),
+        (view.top() - r.top()).max(0.0) - (r.bottom() - view.bottom()).max(0.0),
+    ))
+}
+
 /// Where to put a label of `size` pointing at `anchor` so that it covers nothing in `avoid`
 /// (first the subject on screen, then the cards and legends over the picture) and stays inside
 /// `view`: the first place around the anchor, a little farther each round, that does neither;
@@ -179,13 +188,7 @@ pub fn place_label(anchor: Pos2, size: egui::Vec2, avoid: &[Rect], view: Rect) -
         view.right_bottom(),
     ]
     .into_iter()
-    .map(|corner| {
-        let r = Rect::from_center_size(corner, size);
-        r.translate(egui::vec2(
-            (view.left() - r.left()).max(0.0) - (r.right() - view.right()).max(0.0),
-            (view.top() - r.top()).max(0.0) - (r.bottom() - view.bottom()).max(0.0),
-        ))
-    })
+    .map(|corner| moved_inside(Rect::from_center_size(corner, size), view))
     .collect();
     corners.sort_by(|a, b| {
         b.center()
