@@ -211,7 +211,8 @@ impl CompareView {
                 card,
             );
             self.picture.push(plot);
-            ui.scope_builder(egui::UiBuilder::new().max_rect(plot), |ui| {
+            let inner = crate::app::views::plot_axes::plot_rect(ui, plot);
+            ui.scope_builder(egui::UiBuilder::new().max_rect(inner), |ui| {
                 self.plot(ui, session)
             });
         }

@@ -18,3 +18,11 @@ pub fn axes<'a>(x: &str, y: &str, y_width: f32) -> (Vec<AxisHints<'a>>, Vec<Axis
         ],
     )
 }
+
+/// The part of `rect` to show a plot in so that all of it is painted inside `rect`: egui_plot
+/// draws the y axis's title a quarter of its line's height left of the plot's own rect (its
+/// `AXIS_LABEL_GAP`), which cut the title's first pixels off at the left edge of a panel.
+pub fn plot_rect(ui: &egui::Ui, rect: egui::Rect) -> egui::Rect {
+    let gap = 0.25 * ui.text_style_height(&egui::TextStyle::Body);
+    rect.with_min_x(rect.min.x + gap.ceil() + 1.0)
+}

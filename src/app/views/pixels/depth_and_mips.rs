@@ -29,8 +29,9 @@ pub(super) fn depth_curve(
             [f64::from(d), f64::from(p.window_depth(d))]
         })
         .collect();
-    ui.scope_builder(egui::UiBuilder::new().max_rect(rect), |ui| {
-        ui.painter().rect_filled(rect, 4.0, Color32::from_gray(14));
+    ui.painter().rect_filled(rect, 4.0, Color32::from_gray(14));
+    let inner = crate::app::views::plot_axes::plot_rect(ui, rect);
+    ui.scope_builder(egui::UiBuilder::new().max_rect(inner), |ui| {
         let (x_axes, y_axes) = crate::app::views::plot_axes::axes(
             lang.t("depth-and-mips-eye-distance-d-near-far"),
             lang.t("depth-and-mips-window-depth-z-w"),
