@@ -210,13 +210,24 @@ pub fn ui(
         }
         ui.horizontal(|ui| {
             let label = ui.label(lang.t("watch-list-add"));
+            // Wide enough for its hint in any language (220 points at least), within the row.
+            let hint = lang.t("watch-list-an-expression-e-g-dot");
+            let mono = egui::TextStyle::Monospace.resolve(ui.style());
+            let hint_width = ui
+                .painter()
+                .layout_no_wrap(hint.to_owned(), mono, egui::Color32::WHITE)
+                .size()
+                .x;
+            let width = (hint_width + 2.0 * ui.spacing().button_padding.x)
+                .max(220.0)
+                .min(ui.available_width());
             let field = ui
                 .add(
                     egui::TextEdit::singleline(&mut list.draft)
                         .id_salt("watch list expression")
-                        .hint_text(lang.t("watch-list-an-expression-e-g-dot"))
+                        .hint_text(hint)
                         .font(egui::TextStyle::Monospace)
-                        .desired_width(220.0),
+                        .desired_width(width),
                 )
                 .labelled_by(label.id)
                 .on_hover_text(lang.t("watch-list-any-expression-of-this-shader"));
