@@ -21,6 +21,7 @@ mod own_uniforms;
 mod panels;
 mod params;
 mod phone;
+mod pseudo_locale;
 mod recording;
 mod steps;
 mod variable_picture;
