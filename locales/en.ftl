@@ -498,6 +498,7 @@ params-always-painter-s-order = always (painter's order)
 
 depth-and-mips-eye-distance-d-near-far = eye distance d (near → far)
 depth-and-mips-window-depth-z-w = window depth z_w
+depth-and-mips-curve-legend = z_w(d), near { $near }, far { $far }
 depth-and-mips-depths-in-the-image = depths in the image
 depth-and-mips-grey-ramp-black-white = grey ramp: black → white
 depth-and-mips-mip-pyramid = mip pyramid

@@ -495,6 +495,7 @@ params-always-painter-s-order = 总是通过（画家顺序）
 
 depth-and-mips-eye-distance-d-near-far = 到视点的距离 d（近 → 远）
 depth-and-mips-window-depth-z-w = 窗口深度 z_w
+depth-and-mips-curve-legend = z_w(d)，近 { $near }，远 { $far }
 depth-and-mips-depths-in-the-image = 图像中的深度
 depth-and-mips-grey-ramp-black-white = 灰度范围：黑 → 白
 depth-and-mips-mip-pyramid = mipmap 金字塔

@@ -47,7 +47,10 @@ pub(super) fn depth_curve(
             .show(ui, |plot| {
                 plot.line(
                     Line::new(
-                        format!("z_w(d), near {}, far {}", num(near), num(far)),
+                        lang.t_with(
+                            "depth-and-mips-curve-legend",
+                            &[("near", &num(near)), ("far", &num(far))],
+                        ),
                         curve,
                     )
                     .color(Color32::from_rgb(255, 214, 120))
