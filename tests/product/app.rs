@@ -358,6 +358,21 @@ pub(crate) fn go_to_step(h: &mut Harness<'static, PipelensApp>, k: usize) {
     h.run_steps(6);
 }
 
+/// Every shape of the frame in paint order, with its clip rect.
+pub(crate) fn flatten(h: &Harness<'_, PipelensApp>) -> Vec<(egui::Rect, egui::Shape)> {
+    fn walk(clip: egui::Rect, s: &egui::Shape, out: &mut Vec<(egui::Rect, egui::Shape)>) {
+        match s {
+            egui::Shape::Vec(v) => v.iter().for_each(|s| walk(clip, s, out)),
+            s => out.push((clip, s.clone())),
+        }
+    }
+    let mut out = Vec::new();
+    for c in &h.output().shapes {
+        walk(c.clip_rect, &c.shape, &mut out);
+    }
+    out
+}
+
 pub(crate) fn sized_lesson_harness(
     path: &std::path::Path,
     size: [f32; 2],

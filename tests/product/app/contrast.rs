@@ -78,21 +78,6 @@ fn inside(pts: &[Pos2], p: Pos2) -> bool {
     odd
 }
 
-/// Every shape of the frame in paint order, with its clip rect.
-fn flatten(h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>) -> Vec<(Rect, Shape)> {
-    fn walk(clip: Rect, s: &Shape, out: &mut Vec<(Rect, Shape)>) {
-        match s {
-            Shape::Vec(v) => v.iter().for_each(|s| walk(clip, s, out)),
-            s => out.push((clip, s.clone())),
-        }
-    }
-    let mut out = Vec::new();
-    for c in &h.output().shapes {
-        walk(c.clip_rect, &c.shape, &mut out);
-    }
-    out
-}
-
 /// Each run of words in the frame whose contrast is below WCAG AA: what it says, its size, its
 /// colour and the ratio.
 fn too_faint(shapes: &[(Rect, Shape)], disabled: f32) -> Vec<(String, f32, Color32, f32)> {
@@ -185,7 +170,7 @@ fn every_word_stands_out_from_its_ground() {
             h.state_mut().set_classroom(&ctx, classroom);
             for k in 0..super::step_count(&h) {
                 super::go_to_step(&mut h, k);
-                let shapes = flatten(&h);
+                let shapes = super::flatten(&h);
                 runs += shapes
                     .iter()
                     .filter(|(_, s)| matches!(s, Shape::Text(_)))

@@ -9,39 +9,27 @@ use egui::{Rect, Shape};
 use pipelens::app::command::{Command, ViewCommand};
 use pipelens::vocabulary::{Lang, PSEUDO};
 
-/// Every run of words the frame paints, with where it is painted and its clip rect.
+/// Every run of words the frame paints, with its clip rect, where it is painted (its rect
+/// turned by its angle: the y axes' titles are upright), what it says and whether it was elided.
 fn texts(
     h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>,
 ) -> Vec<(Rect, Rect, String, bool)> {
-    fn walk(clip: Rect, s: &Shape, out: &mut Vec<(Rect, Rect, String, bool)>) {
-        match s {
-            Shape::Vec(v) => v.iter().for_each(|s| walk(clip, s, out)),
-            Shape::Text(t) => out.push((
-                clip,
-                {
-                    let r = t.galley.rect;
-                    let rot = egui::emath::Rot2::from_angle(t.angle);
-                    Rect::from_points(
-                        &[
-                            r.left_top(),
-                            r.right_top(),
-                            r.left_bottom(),
-                            r.right_bottom(),
-                        ]
-                        .map(|c| t.pos + rot * c.to_vec2()),
-                    )
-                },
-                t.galley.job.text.clone(),
-                t.galley.elided,
-            )),
-            _ => {}
-        }
-    }
-    let mut out = Vec::new();
-    for c in &h.output().shapes {
-        walk(c.clip_rect, &c.shape, &mut out);
-    }
-    out
+    super::flatten(h)
+        .into_iter()
+        .filter_map(|(clip, s)| {
+            let Shape::Text(t) = s else { return None };
+            let r = t.galley.rect;
+            let rot = egui::emath::Rot2::from_angle(t.angle);
+            let corners = [
+                r.left_top(),
+                r.right_top(),
+                r.left_bottom(),
+                r.right_bottom(),
+            ];
+            let at = Rect::from_points(&corners.map(|c| t.pos + rot * c.to_vec2()));
+            Some((clip, at, t.galley.job.text.clone(), t.galley.elided))
+        })
+        .collect()
 }
 
 /// The words of `text` outside every bracket: runs of two or more ASCII letters.
