@@ -9,7 +9,7 @@ use egui::{Align2, Color32, Rect, Stroke, TextureOptions, Ui, Vec2};
 use pipeline::buffers::BufferKind;
 use pipeline::capture::FrameCapture;
 
-use super::{Projector, fit_rect, label_with_background};
+use super::{Projector, boxed_galley, fit_rect};
 use crate::app::session::{Command, Session};
 use crate::observer::{Orbit, Parts, scene_extent, viewing_camera};
 
@@ -106,17 +106,14 @@ impl ObserverView {
         let view = painter.clip_rect().shrink(4.0);
         for t in &tags {
             if let Some(p) = cam.project(t.at).filter(|p| view.contains(*p)) {
-                let size = painter
-                    .layout_no_wrap(t.text.clone(), font.clone(), color(t.color))
-                    .size()
-                    + Vec2::splat(6.0);
+                let galley = painter.layout_no_wrap(t.text.clone(), font.clone(), color(t.color));
+                let size = galley.size() + Vec2::splat(6.0);
                 let at = super::moved_inside(Rect::from_min_size(p + Vec2::splat(3.0), size), view);
-                label_with_background(
+                boxed_galley(
                     &painter,
                     at.center(),
                     Align2::CENTER_CENTER,
-                    &t.text,
-                    &font,
+                    galley,
                     color(t.color),
                 );
             }
