@@ -1141,6 +1141,63 @@ compile-vertex-shader = vertex shader
 compile-fragment-shader = fragment shader
 compile-stage-message = { $stage }, { $message }
 compile-file-message = { $file }.glsl, { $message }
+compile-endless-loop = the loop ran more than { $budget } steps (an endless loop? If it is meant to run longer, raise the limit with `max_steps` under [scene.render])
+compile-index-out-of-range-of = index { $index } is out of range: `{ $name }` has { $count } elements (0 to { $last })
+compile-index-out-of-range = index { $index } is out of range (0 to { $last })
+compile-texel-outside = texelFetch at ({ $i }, { $j }) level { $level } is outside the texture
+compile-division-by-zero = integer division by zero
+compile-remainder-by-zero = integer remainder (%) by zero
+compile-did-you-mean = ; did you mean `{ $name }`?
+compile-unknown-uniform = pipelens sets no uniform called `{ $name }`; the uniforms it sets: { $uniforms }. A uniform of your own is a float, int, bool, vec2, vec3 or vec4, its control in a comment after it: `// 0..4 = 1.5`{ $meant }
+compile-own-uniform-control = `{ $name }` is a uniform of your own; its comment reads like its control (`// MIN..MAX = VALUE`) but { $why }
+compile-uniform-type = pipelens' `{ $name }` is a { $expected } ({ $meaning }), declared here as { $written }
+compile-texture-type = pipelens binds `{ $name }` as a { $expected }, declared here as { $written }
+compile-unknown-texture = pipelens binds no texture called `{ $name }`; the object's texture is `uniform sampler2D tex;`, its bump or normal map `uniform sampler2D detail;`, the cube map it mirrors `uniform samplerCube environment;`{ $meant }
+compile-unknown-attribute = pipelens feeds no vertex attribute called `{ $name }`; the attributes: { $attributes }{ $meant }
+compile-one-colour-output = pipelens draws into one colour buffer: declare one `out vec4` for the fragment's colour
+compile-uniform-written = `{ $name }` is a uniform: a shader reads it, it cannot assign to it
+compile-no-position = the vertex shader never writes `gl_Position` (the clip-space position): add `gl_Position = mvp * vec4(position, 1.0);`
+compile-no-output = the fragment shader has no output: declare `out vec4 color;` and write the fragment's colour into it
+compile-output-not-written = the fragment shader never writes `{ $name }`: the fragment would have no colour
+compile-varying-components = `{ $name }` has { $here } components here but { $vertex } in the vertex shader: declare it with the same type in both
+compile-no-varying-source = the vertex shader has no output `{ $name }` to interpolate into this input; its outputs: { $outputs }
+compile-no-outputs = none
+compile-hook-signature = { $calls }: define it with exactly that signature (no `main`, no inputs or outputs of your own)
+compile-hook-calls-inside = the rasterizer calls `{ $signature }` for every sample
+compile-hook-calls-depth-test = the rasterizer calls `{ $signature }` for every sample a triangle covers
+compile-hook-calls-curve = a Bézier curve's drawing calls `{ $signature }` for every point of the curve
+compile-hook-calls-shadow-matrix = the shadow pass calls `{ $signature }` once a frame, for the plane y = 0
+compile-hook-calls-patch = a Bézier patch's drawing calls `{ $signature }` for every vertex of the surface grid
+
+## src/vocabulary/run.rs
+
+run-cannot-draw = the scene cannot be drawn: { $why }
+run-problem-separator = {"; "}
+run-shadow-matrix = shadow_matrix(vec3({ $x }, { $y }, { $z })) returned a matrix that is not finite (a division by zero?): { $matrix }
+run-code = { $part } of { $object }, { $message }
+run-code-in-file = { $part } of { $object }, { $file }, { $message }
+run-part-inside = inside test
+run-part-depth-test = depth test
+run-part-curve = de_casteljau()
+run-part-shadow-matrix = shadow_matrix()
+run-part-patch = bezier_patch()
+run-camera-not-finite = the camera's eye, at and up must be finite
+run-eye-at-coincide = the eye and the point looked at coincide ({ $at }): there is no view direction
+run-up-parallel = the up vector { $up } is parallel to the view direction { $dir }: u = v_up × n is zero, so the camera frame is undefined (choose another up vector)
+run-zero-axis = the rotation axis is the zero vector
+run-object-transform = object `{ $name }`: its transform must be finite
+run-object-colour = object `{ $name }`: its colour must be finite
+run-viewport-width = the viewport width must be between 1 and { $max } pixels, got { $got }
+run-viewport-height = the viewport height must be between 1 and { $max } pixels, got { $got }
+run-capture-too-large = { $width }×{ $height } pixels × { $samples } samples needs about { $megabytes } MB for a capture, more than the { $allowed } MB allowed; lower the size or the sample count
+run-background = the background colour must be finite
+run-fovy = fovy must be between 0° and 180° (exclusive), got { $fovy }
+run-aspect = aspect must be a positive number, got { $aspect }
+run-left-right = left must be less than right, got left = { $left }, right = { $right }
+run-bottom-top = bottom must be less than top, got bottom = { $bottom }, top = { $top }
+run-near = near must be positive for a perspective projection (it is a distance in front of the eye), got { $near }
+run-far-near = far must be greater than near, got near = { $near }, far = { $far }
+run-projection-not-finite = every projection parameter must be a finite number
 
 ## src/lab/samples.rs
 

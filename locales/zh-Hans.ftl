@@ -1105,6 +1105,63 @@ compile-vertex-shader = 顶点着色器
 compile-fragment-shader = 片元着色器
 compile-stage-message = { $stage }，{ $message }
 compile-file-message = { $file }.glsl，{ $message }
+compile-endless-loop = 循环执行超过了 { $budget } 步（是不是死循环？如果它本来就要运行更久，请在 [scene.render] 中用 `max_steps` 提高上限）
+compile-index-out-of-range-of = 下标 { $index } 越界：`{ $name }` 的下标只能是 0 到 { $last }
+compile-index-out-of-range = 下标 { $index } 越界（只能是 0 到 { $last }）
+compile-texel-outside = texelFetch 读取的 ({ $i }, { $j })（第 { $level } 层）在纹理之外
+compile-division-by-zero = 整数除以零
+compile-remainder-by-zero = 整数对零取余（%）
+compile-did-you-mean = （是不是想写 `{ $name }`？）
+compile-unknown-uniform = pipelens 不设置名为 `{ $name }` 的 uniform{ $meant }；它设置的 uniform：{ $uniforms }。自己的 uniform 可以是 float、int、bool、vec2、vec3 或 vec4，在其后的注释中写明控件：`// 0..4 = 1.5`
+compile-own-uniform-control = `{ $name }` 是你自己的 uniform；它的注释看起来像控件（`// 最小..最大 = 初值`），但写得不对：范围须是 最小..最大（最小小于最大），初值的个数须与类型相符
+compile-uniform-type = pipelens 的 `{ $name }` 是 { $expected }，这里却声明为 { $written }
+compile-texture-type = pipelens 把 `{ $name }` 绑定为 { $expected }，这里却声明为 { $written }
+compile-unknown-texture = pipelens 不绑定名为 `{ $name }` 的纹理{ $meant }；物体的纹理是 `uniform sampler2D tex;`，凹凸或法线贴图是 `uniform sampler2D detail;`，它所反射的立方体贴图是 `uniform samplerCube environment;`
+compile-unknown-attribute = pipelens 不提供名为 `{ $name }` 的顶点属性{ $meant }；它提供的属性：{ $attributes }
+compile-one-colour-output = pipelens 只画到一个颜色缓冲：只为片元的颜色声明一个 `out vec4`
+compile-uniform-written = `{ $name }` 是 uniform：着色器只能读它，不能给它赋值
+compile-no-position = 顶点着色器从未写 `gl_Position`（裁剪空间位置）：请加上 `gl_Position = mvp * vec4(position, 1.0);`
+compile-no-output = 片元着色器没有输出：请声明 `out vec4 color;`，并把片元的颜色写进去
+compile-output-not-written = 片元着色器从未写 `{ $name }`：这个片元将没有颜色
+compile-varying-components = `{ $name }` 在这里有 { $here } 个分量，在顶点着色器中却有 { $vertex } 个：请在两边用相同的类型声明它
+compile-no-varying-source = 顶点着色器没有可插值到这个输入的输出 `{ $name }`；它的输出：{ $outputs }
+compile-no-outputs = 无
+compile-hook-signature = { $calls }：请严格按这个签名定义它（不要 `main`，也不要自己的输入或输出）
+compile-hook-calls-inside = 光栅化器对每个采样调用 `{ $signature }`
+compile-hook-calls-depth-test = 光栅化器对三角形覆盖的每个采样调用 `{ $signature }`
+compile-hook-calls-curve = 画贝塞尔曲线时，pipelens 对曲线上的每个点调用 `{ $signature }`
+compile-hook-calls-shadow-matrix = 画阴影时，pipelens 每帧为平面 y = 0 调用一次 `{ $signature }`
+compile-hook-calls-patch = 画贝塞尔曲面时，pipelens 对曲面网格的每个顶点调用 `{ $signature }`
+
+## src/vocabulary/run.rs
+
+run-cannot-draw = 无法绘制场景：{ $why }
+run-problem-separator = ；
+run-shadow-matrix = shadow_matrix(vec3({ $x }, { $y }, { $z })) 返回的矩阵含有非有限的数（是否除以了零？）：{ $matrix }
+run-code = 物体 { $object } 的{ $part }，{ $message }
+run-code-in-file = 物体 { $object } 的{ $part }，{ $file }，{ $message }
+run-part-inside = 函数 inside
+run-part-depth-test = 函数 depth_test
+run-part-curve = 函数 de_casteljau
+run-part-shadow-matrix = 函数 shadow_matrix
+run-part-patch = 函数 bezier_patch
+run-camera-not-finite = 相机的 eye、at 和 up 必须是有限的数
+run-eye-at-coincide = 视点与参考点重合（{ $at }）：没有观察方向
+run-up-parallel = 上方向 { $up } 与观察方向 { $dir } 平行：u = v_up × n 为零，相机坐标系无法确定（请换一个上方向）
+run-zero-axis = 旋转轴是零向量
+run-object-transform = 物体 `{ $name }`：它的变换必须是有限的数
+run-object-colour = 物体 `{ $name }`：它的颜色必须是有限的数
+run-viewport-width = 视口的宽度必须在 1 到 { $max } 像素之间，现在是 { $got }
+run-viewport-height = 视口的高度必须在 1 到 { $max } 像素之间，现在是 { $got }
+run-capture-too-large = { $width }×{ $height } 像素 × { $samples } 个采样的捕获约需 { $megabytes } MB，超过了允许的 { $allowed } MB；请减小尺寸或采样数
+run-background = 背景颜色必须是有限的数
+run-fovy = fovy 必须在 0° 到 180° 之间（不含两端），现在是 { $fovy }
+run-aspect = aspect 必须是正数，现在是 { $aspect }
+run-left-right = left 必须小于 right，现在 left = { $left }，right = { $right }
+run-bottom-top = bottom 必须小于 top，现在 bottom = { $bottom }，top = { $top }
+run-near = 透视投影的 near 必须为正（它是视点前方的距离），现在是 { $near }
+run-far-near = far 必须大于 near，现在 near = { $near }，far = { $far }
+run-projection-not-finite = 投影的每个参数都必须是有限的数
 
 ## src/lab/samples.rs
 

@@ -4,7 +4,6 @@
 //! an index out of range, a `texelFetch` outside its texture, a division by zero) too, since the
 //! engine reports it as a complaint at its line.
 
-use crate::vocabulary::Written;
 use pipeline::shader::{Complaint, ShaderError, Stage, StageError, interface};
 
 use super::Lang;
@@ -75,110 +74,155 @@ fn form(c: &Complaint, lang: Lang) -> Option<String> {
     })
 }
 
-/// The sentence for a run-time complaint in Chinese (`None` in English, where the core's
-/// message says it, and for a complaint that is not a run-time one).
+/// The sentence for a run-time complaint (`None` for a complaint that is not a run-time one).
 fn fault(c: &Complaint, lang: Lang) -> Option<String> {
     use Complaint as C;
-    if lang.written() == Written::English {
-        return None;
-    }
     Some(match c {
-        C::EndlessLoop { budget } => format!(
-            "循环执行超过了 {budget} 步（是不是死循环？如果它本来就要运行更久，请在 [scene.render] 中用 `max_steps` 提高上限）"
-        ),
+        C::EndlessLoop { budget } => lang.t_with("compile-endless-loop", &[("budget", budget)]),
         C::IndexOutOfRange {
             index,
             last,
             name: Some(name),
-        } => format!("下标 {index} 越界：`{name}` 的下标只能是 0 到 {last}"),
-        C::IndexOutOfRange { index, last, .. } => {
-            format!("下标 {index} 越界（只能是 0 到 {last}）")
-        }
-        C::TexelOutside { i, j, level } => {
-            format!("texelFetch 读取的 ({i}, {j})（第 {level} 层）在纹理之外")
-        }
-        C::DivisionByZero { remainder: false } => "整数除以零".to_owned(),
-        C::DivisionByZero { remainder: true } => "整数对零取余（%）".to_owned(),
+        } => lang.t_with(
+            "compile-index-out-of-range-of",
+            &[
+                ("index", index),
+                ("name", name),
+                ("count", &(u64::from(*last) + 1)),
+                ("last", last),
+            ],
+        ),
+        C::IndexOutOfRange { index, last, .. } => lang.t_with(
+            "compile-index-out-of-range",
+            &[("index", index), ("last", last)],
+        ),
+        C::TexelOutside { i, j, level } => lang.t_with(
+            "compile-texel-outside",
+            &[("i", i), ("j", j), ("level", level)],
+        ),
+        C::DivisionByZero { remainder: false } => lang.t("compile-division-by-zero").to_owned(),
+        C::DivisionByZero { remainder: true } => lang.t("compile-remainder-by-zero").to_owned(),
         _ => return None,
     })
 }
 
 /// The sentence for a complaint of pipelens' own checks (the uniforms, textures and attributes
-/// it provides, the outputs a stage must write), in Chinese; `None` in English, where the core's
-/// message says it.
+/// it provides, the outputs a stage must write, the varyings linked, the functions it calls).
 fn own(c: &Complaint, lang: Lang) -> Option<String> {
     use Complaint as C;
-    if lang.written() == Written::English {
-        return None;
-    }
     let meant = |s: &Option<String>| {
-        s.as_ref()
-            .map_or_else(String::new, |s| format!("（是不是想写 `{s}`？）"))
+        s.as_ref().map_or_else(String::new, |s| {
+            lang.t_with("compile-did-you-mean", &[("name", s)])
+        })
     };
+    let list = |items: Vec<String>| items.join(lang.t("list-separator"));
     Some(match c {
-        C::UnknownUniform { name, suggestion } => format!(
-            "pipelens 不设置名为 `{name}` 的 uniform{}；它设置的 uniform：{}",
-            meant(suggestion),
-            interface::UNIFORMS
-                .iter()
-                .map(|u| u.names[0])
-                .collect::<Vec<_>>()
-                .join("、")
-        ) + "。自己的 uniform 可以是 float、int、bool、vec2、vec3 或 vec4，在其后的注释中写明控件：`// 0..4 = 1.5`",
-        C::OwnUniformControl { name, .. } => format!(
-            "`{name}` 是你自己的 uniform；它的注释看起来像控件（`// 最小..最大 = 初值`），但写得不对：范围须是 最小..最大（最小小于最大），初值的个数须与类型相符"
+        C::UnknownUniform { name, suggestion } => lang.t_with(
+            "compile-unknown-uniform",
+            &[
+                ("name", name),
+                (
+                    "uniforms",
+                    &list(
+                        interface::UNIFORMS
+                            .iter()
+                            .map(|u| u.names[0].to_owned())
+                            .collect(),
+                    ),
+                ),
+                ("meant", &meant(suggestion)),
+            ],
         ),
-        C::UniformType { name, written } => format!(
-            "pipelens 的 `{name}` 是 {}，这里却声明为 {written}",
-            interface::uniform(name).map_or_else(String::new, |u| u
-                .glsl
-                .replace("MAX_LIGHTS", &interface::MAX_LIGHTS.to_string()))
+        C::OwnUniformControl { name, why } => lang.t_with(
+            "compile-own-uniform-control",
+            &[("name", name), ("why", why)],
         ),
-        C::UnknownTexture { name, suggestion } => format!(
-            "pipelens 不绑定名为 `{name}` 的纹理{}；物体的纹理是 `uniform sampler2D tex;`，凹凸或法线贴图是 `uniform sampler2D detail;`，它所反射的立方体贴图是 `uniform samplerCube environment;`",
-            meant(suggestion)
+        C::UniformType { name, written } => {
+            let spec = interface::uniform(name);
+            let expected = spec.map_or_else(String::new, |u| {
+                u.glsl
+                    .replace("MAX_LIGHTS", &interface::MAX_LIGHTS.to_string())
+            });
+            lang.t_with(
+                "compile-uniform-type",
+                &[
+                    ("name", name),
+                    ("expected", &expected),
+                    ("meaning", &spec.map_or("", |u| u.meaning)),
+                    ("written", written),
+                ],
+            )
+        }
+        C::UnknownTexture { name, suggestion } => lang.t_with(
+            "compile-unknown-texture",
+            &[("name", name), ("meant", &meant(suggestion))],
         ),
         C::TextureType {
             name,
             written,
             expected,
-        } => format!("pipelens 把 `{name}` 绑定为 {expected}，这里却声明为 {written}"),
-        C::UnknownAttribute { name, suggestion } => format!(
-            "pipelens 不提供名为 `{name}` 的顶点属性{}；它提供的属性：{}",
-            meant(suggestion),
-            interface::ATTRIBUTES
-                .iter()
-                .map(|a| format!("{} {}", a.glsl, a.names[0]))
-                .collect::<Vec<_>>()
-                .join("、")
+        } => lang.t_with(
+            "compile-texture-type",
+            &[("name", name), ("expected", expected), ("written", written)],
         ),
-        C::OneColourOutput => {
-            "pipelens 只画到一个颜色缓冲：只为片元的颜色声明一个 `out vec4`".to_owned()
-        }
-        C::UniformWritten(name) => {
-            format!("`{name}` 是 uniform：着色器只能读它，不能给它赋值")
-        }
-        C::NoPosition => "顶点着色器从未写 `gl_Position`（裁剪空间位置）：请加上 `gl_Position = mvp * vec4(position, 1.0);`".to_owned(),
-        C::NoOutput => "片元着色器没有输出：请声明 `out vec4 color;`，并把片元的颜色写进去".to_owned(),
-        C::OutputNotWritten(name) => {
-            format!("片元着色器从未写 `{name}`：这个片元将没有颜色")
-        }
-        C::VaryingComponents { name, here, vertex } => format!(
-            "`{name}` 在这里有 {here} 个分量，在顶点着色器中却有 {vertex} 个：请在两边用相同的类型声明它"
+        C::UnknownAttribute { name, suggestion } => lang.t_with(
+            "compile-unknown-attribute",
+            &[
+                ("name", name),
+                (
+                    "attributes",
+                    &list(
+                        interface::ATTRIBUTES
+                            .iter()
+                            .map(|a| format!("{} {}", a.glsl, a.names[0]))
+                            .collect(),
+                    ),
+                ),
+                ("meant", &meant(suggestion)),
+            ],
         ),
-        C::NoVaryingSource { name, outputs } => format!(
-            "顶点着色器没有可插值到这个输入的输出 `{name}`；它的输出：{}",
-            if outputs.is_empty() {
-                "无".to_owned()
+        C::OneColourOutput => lang.t("compile-one-colour-output").to_owned(),
+        C::UniformWritten(name) => lang.t_with("compile-uniform-written", &[("name", name)]),
+        C::NoPosition => lang.t("compile-no-position").to_owned(),
+        C::NoOutput => lang.t("compile-no-output").to_owned(),
+        C::OutputNotWritten(name) => lang.t_with("compile-output-not-written", &[("name", name)]),
+        C::VaryingComponents { name, here, vertex } => lang.t_with(
+            "compile-varying-components",
+            &[("name", name), ("here", here), ("vertex", vertex)],
+        ),
+        C::NoVaryingSource { name, outputs } => {
+            let outputs = if outputs.is_empty() {
+                lang.t("compile-no-outputs").to_owned()
             } else {
-                outputs.join("、")
-            }
-        ),
-        C::HookSignature(signature) => format!(
-            "pipelens 会调用 `{signature}`：请严格按这个签名定义它（不要 `main`，也不要自己的输入或输出）"
-        ),
+                list(outputs.clone())
+            };
+            lang.t_with(
+                "compile-no-varying-source",
+                &[("name", name), ("outputs", &outputs)],
+            )
+        }
+        C::HookSignature(signature) => return hook_signature(signature, lang),
         _ => return None,
     })
+}
+
+/// "the rasterizer calls `bool inside(…)` for every sample: define it with exactly that
+/// signature": who calls the function the student writes, and when (`None` for a signature
+/// pipelens does not call, which the core's English message then says).
+fn hook_signature(signature: &str, lang: Lang) -> Option<String> {
+    use pipeline::shader::HookKind as K;
+    let kind = K::ALL.into_iter().find(|k| k.signature() == signature)?;
+    let calls = lang.t_with(
+        match kind {
+            K::Inside => "compile-hook-calls-inside",
+            K::DepthTest => "compile-hook-calls-depth-test",
+            K::Curve => "compile-hook-calls-curve",
+            K::ShadowMatrix => "compile-hook-calls-shadow-matrix",
+            K::Patch => "compile-hook-calls-patch",
+        },
+        &[("signature", &signature)],
+    );
+    Some(lang.t_with("compile-hook-signature", &[("calls", &calls)]))
 }
 
 /// An expected token as the sentence says it: a symbol in backticks, a kind of token in words.
@@ -324,9 +368,38 @@ mod tests {
     /// core says them.
     #[test]
     fn pipelens_own_checks_are_sentences_in_chinese_too() {
-        use pipeline::shader::{Stage, compile, compile_hook, link};
+        let mut kinds = std::collections::HashSet::new();
+        for (errors, names) in own_check_cases() {
+            let own = errors
+                .iter()
+                .find(|e| e.complaint != Complaint::Other)
+                .unwrap_or_else(|| panic!("no complaint among {errors:?}"));
+            kinds.insert(std::mem::discriminant(&own.complaint));
+            let zh = message(own, Lang::ZH);
+            assert!(zh.contains(names), "{zh}");
+            assert!(
+                !zh.contains(" is ") && !zh.contains(" the ") && !zh.contains("pipelens sets"),
+                "English in the Chinese sentence: {zh}"
+            );
+            // The English catalog says what the core says, word for word.
+            assert_eq!(
+                complaint(&own.complaint, Lang::EN).as_deref(),
+                Some(own.message.as_str())
+            );
+        }
+        // Every one of pipelens' own checks was met: the uniforms (unknown, own control, type),
+        // the textures (unknown, type), the attributes, one colour output, a uniform written,
+        // no position, no output, an output not written, the varyings (components, source),
+        // a pipeline function's signature.
+        assert_eq!(kinds.len(), 14);
+    }
+
+    /// Real shaders that each of pipelens' own checks refuses, with a word its Chinese sentence
+    /// must hold.
+    fn own_check_cases() -> Vec<(Vec<ShaderError>, &'static str)> {
+        use pipeline::shader::{Stage, compile};
         let frag = |body: &str| format!("#version 330 core\nout vec4 color;\n{body}\n");
-        let cases: Vec<(Vec<ShaderError>, &str)> = vec![
+        vec![
             (
                 compile(Stage::Fragment, &frag("uniform vec3 eyes;\nvoid main() { color = vec4(eyes, 1.0); }"))
                     .expect_err("refused"),
@@ -362,6 +435,18 @@ mod tests {
                     .expect_err("refused"),
                 "uniform",
             ),
+        ]
+        .into_iter()
+        .chain(linked_and_called_cases())
+        .collect()
+    }
+
+    /// Real shaders that linking refuses, and functions of the pipeline with the wrong
+    /// signature, with a word the Chinese sentence must hold.
+    fn linked_and_called_cases() -> Vec<(Vec<ShaderError>, &'static str)> {
+        use pipeline::shader::{HookKind, Stage, compile, compile_hook, link};
+        let frag = |body: &str| format!("#version 330 core\nout vec4 color;\n{body}\n");
+        vec![
             (
                 link(
                     Some("#version 330 core\nin vec3 position;\nout vec2 v_uv;\nvoid main() { v_uv = vec2(0.0); gl_Position = vec4(position, 1.0); }\n"),
@@ -374,23 +459,139 @@ mod tests {
                 "3",
             ),
             (
-                compile_hook(pipeline::shader::HookKind::Inside, "bool inside(vec2 p) { return true; }")
+                compile(Stage::Fragment, &frag("uniform float k; // 4..1 = 2\nvoid main() { color = vec4(k); }"))
+                    .expect_err("refused"),
+                "`k`",
+            ),
+            (
+                compile(Stage::Fragment, &frag("uniform samplerCube tex;\nvoid main() { color = texture(tex, vec3(1.0)); }"))
+                    .expect_err("refused"),
+                "samplerCube",
+            ),
+            (
+                compile(Stage::Fragment, &frag("out vec4 glow;\nvoid main() { color = vec4(1.0); glow = color; }"))
+                    .expect_err("refused"),
+                "`out vec4`",
+            ),
+            (
+                compile(Stage::Fragment, "#version 330 core\nvoid main() { float x = 1.0; }\n")
+                    .expect_err("refused"),
+                "`out vec4 color;`",
+            ),
+            (
+                link(
+                    Some("#version 330 core\nin vec3 position;\nout vec2 v_uv;\nvoid main() { v_uv = vec2(0.0); gl_Position = vec4(position, 1.0); }\n"),
+                    Some(&frag("in vec3 v_normal;\nvoid main() { color = vec4(v_normal, 1.0); }")),
+                )
+                .expect_err("refused")
+                .into_iter()
+                .map(|e| e.error)
+                .collect(),
+                "v_uv",
+            ),
+            (
+                compile_hook(HookKind::Inside, "bool inside(vec2 p) { return true; }")
                     .expect_err("refused"),
                 "inside",
             ),
-        ];
-        for (errors, names) in cases {
-            let own = errors
-                .iter()
-                .find(|e| e.complaint != Complaint::Other)
-                .unwrap_or_else(|| panic!("no complaint among {errors:?}"));
-            let zh = message(own, Lang::ZH);
-            assert!(zh.contains(names), "{zh}");
-            assert!(
-                !zh.contains(" is ") && !zh.contains(" the ") && !zh.contains("pipelens sets"),
-                "English in the Chinese sentence: {zh}"
+            (
+                compile_hook(HookKind::DepthTest, "bool depth_test(float z) { return true; }")
+                    .expect_err("refused"),
+                "depth_test",
+            ),
+            (
+                compile_hook(HookKind::Curve, "vec2 de_casteljau(float t) { return vec2(t); }")
+                    .expect_err("refused"),
+                "贝塞尔曲线",
+            ),
+            (
+                compile_hook(HookKind::ShadowMatrix, "mat4 shadow_matrix() { return mat4(1.0); }")
+                    .expect_err("refused"),
+                "y = 0",
+            ),
+            (
+                compile_hook(HookKind::Patch, "vec3 bezier_patch(float u) { return vec3(u); }")
+                    .expect_err("refused"),
+                "贝塞尔曲面",
+            ),
+        ]
+    }
+
+    /// The code that stopped while it ran, in a real frame: a loop past its budget, an index
+    /// out of range (of a named array and of an array value), a `texelFetch` outside its
+    /// texture, an integer divided by zero and its remainder. The English catalog says what
+    /// the engine says; the Chinese holds no English sentence.
+    #[test]
+    fn every_run_time_fault_reads_as_the_engine_says_it_and_in_chinese() {
+        use pipeline::scene::{Object, ObjectShader, Scene};
+        let run = |body: &str| {
+            let fs = format!(
+                "#version 330 core\nout vec4 color;\nuniform sampler2D tex;\nvoid main() {{\n  int x = int(gl_FragCoord.x);\n  {body}\n}}\n"
             );
-            assert!(message(own, Lang::EN).contains(&own.message), "{own:?}");
+            let programs = pipeline::shader::link(None, Some(&fs)).expect("it compiles");
+            let mut quad = Object::new("quad", pipeline::mesh::BuiltinMesh::Cube.build());
+            quad.texture = Some(std::sync::Arc::new(
+                pipeline::texture::Texture::checkerboard(8, 2),
+            ));
+            quad.code.shader = Some(ObjectShader {
+                programs: std::sync::Arc::new(programs),
+                time: 0.0,
+            });
+            let scene = Scene {
+                objects: vec![quad],
+                ..Scene::default()
+            };
+            let settings = pipeline::settings::RenderSettings {
+                width: 16,
+                height: 16,
+                ..Default::default()
+            };
+            match pipeline::render(&scene, &settings) {
+                Err(pipeline::RenderError::Code { error, .. }) => *error,
+                other => panic!("{body}: {other:?}"),
+            }
+        };
+        let faults = [
+            run("float f = 0.0;\n  while (f >= 0.0) { f += 1.0; }\n  color = vec4(f);"),
+            run("float a[3] = float[3](1.0, 2.0, 3.0);\n  color = vec4(a[x + 3]);"),
+            run("color = vec4(float[3](1.0, 2.0, 3.0)[x + 3]);"),
+            run("color = texelFetch(tex, ivec2(x + 100, 0), 0);"),
+            run("color = vec4(float(7 / (x * 0)));"),
+            run("color = vec4(float(7 % (x * 0)));"),
+        ];
+        let mut kinds = std::collections::HashSet::new();
+        for e in &faults {
+            kinds.insert(
+                format!("{:?}", e.complaint)
+                    .split([' ', '(', '{'])
+                    .next()
+                    .map(str::to_owned),
+            );
+            assert_eq!(
+                complaint(&e.complaint, Lang::EN).as_deref(),
+                Some(e.message.as_str()),
+                "{:?}",
+                e.complaint
+            );
+            let zh = complaint(&e.complaint, Lang::ZH).expect("a sentence");
+            assert!(!zh.contains(" is ") && !zh.contains(" by "), "{zh}");
         }
+        assert_eq!(kinds.len(), 4, "{faults:?}");
+        assert!(
+            faults.iter().any(|e| matches!(&e.complaint, Complaint::IndexOutOfRange { name: Some(n), .. } if n == "a")),
+            "{faults:?}"
+        );
+        assert!(
+            faults
+                .iter()
+                .any(|e| matches!(&e.complaint, Complaint::IndexOutOfRange { name: None, .. })),
+            "{faults:?}"
+        );
+        assert!(
+            faults
+                .iter()
+                .any(|e| e.complaint == Complaint::DivisionByZero { remainder: true }),
+            "{faults:?}"
+        );
     }
 }

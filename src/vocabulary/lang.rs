@@ -304,29 +304,6 @@ impl Lang {
     }
 }
 
-/// The language that words still written in the code (not yet in a catalog) are in: Chinese
-/// for Chinese, English for every other language. `lang.written()` marks each such place;
-/// moving its words into `locales/` removes it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Written {
-    /// English: every language but Chinese.
-    English,
-    /// Chinese.
-    Chinese,
-}
-
-impl Lang {
-    /// The language of the words the code itself still writes ([`Written`]).
-    #[must_use]
-    pub fn written(self) -> Written {
-        if self.is_chinese() {
-            Written::Chinese
-        } else {
-            Written::English
-        }
-    }
-}
-
 /// A tag's language subtag: `zh` of `zh-Hans`.
 fn primary(tag: &str) -> &str {
     tag.split(['-', '_']).next().unwrap_or(tag)

@@ -24,7 +24,7 @@ pub mod trace;
 pub use buffers::{buffer_name, gain_note};
 pub use comparison::{Comparison, variant_label};
 pub use explain::{lighting_legend, remark, section_name};
-pub use lang::{Lang, PSEUDO, Text, Written};
+pub use lang::{Lang, PSEUDO, Text};
 pub use names::{light_name, part_name, shadow_of, upper_first};
 pub use numbers::{num, short, vec3, vec4};
 pub use stage::{Space, Stage};

@@ -2,109 +2,121 @@
 //! stopped while it ran (an endless loop, an index out of range, a `texelFetch` outside its
 //! texture, an integer divided by zero) said at its line, with the object it ran on.
 
-use crate::vocabulary::Written;
 use pipeline::camera::ProjectionProblem;
 use pipeline::scene::SceneProblem;
 use pipeline::settings::{MAX_CAPTURE_BYTES, MAX_VIEWPORT_SIDE, SettingsProblem};
+use pipeline::shader::{HookKind, Stage};
 use pipeline::transform::TransformError;
 use pipeline::{CodePart, RenderError};
 
 use super::Lang;
 
-/// Why the frame could not be drawn, in `lang`: the code that stopped, the object it ran on,
-/// and its message at its line in the interface's language; a problem of the scene or the
-/// settings as the core says it.
+/// Why the frame could not be drawn, in `lang`: each problem of the scene or the settings, or
+/// the code that stopped, the object it ran on, and its message at its line.
 #[must_use]
 pub fn render_error(e: &RenderError, lang: Lang) -> String {
-    match (e, lang.written()) {
-        (_, Written::English) => e.to_string(),
-        (RenderError::Invalid(problems), Written::Chinese) => format!(
-            "无法绘制场景：{}",
-            problems
-                .iter()
-                .map(|p| scene_problem(p, lang))
-                .collect::<Vec<_>>()
-                .join("；")
+    let why = match e {
+        RenderError::Invalid(problems) => problems
+            .iter()
+            .map(|p| scene_problem(p, lang))
+            .collect::<Vec<_>>()
+            .join(lang.t("run-problem-separator")),
+        RenderError::ShadowMatrix { light, matrix } => lang.t_with(
+            "run-shadow-matrix",
+            &[
+                ("x", &light.x),
+                ("y", &light.y),
+                ("z", &light.z),
+                ("matrix", matrix),
+            ],
         ),
-        (RenderError::ShadowMatrix { light, matrix }, Written::Chinese) => format!(
-            "无法绘制场景：shadow_matrix(vec3({}, {}, {})) 返回的矩阵含有非有限的数（是否除以了零？）：{matrix}",
-            light.x, light.y, light.z
-        ),
-        (
-            RenderError::Code {
-                part,
-                object,
-                error,
-                file,
-            },
-            Written::Chinese,
-        ) => {
+        RenderError::Code {
+            part,
+            object,
+            error,
+            file,
+        } => {
             let part = match part {
-                CodePart::Shader(pipeline::shader::Stage::Vertex) => "顶点着色器".to_owned(),
-                CodePart::Shader(pipeline::shader::Stage::Fragment) => "片元着色器".to_owned(),
-                CodePart::Function(kind) => format!("函数 {}", kind.key()),
+                CodePart::Shader(Stage::Vertex) => lang.t("compile-vertex-shader"),
+                CodePart::Shader(Stage::Fragment) => lang.t("compile-fragment-shader"),
+                CodePart::Function(HookKind::Inside) => lang.t("run-part-inside"),
+                CodePart::Function(HookKind::DepthTest) => lang.t("run-part-depth-test"),
+                CodePart::Function(HookKind::Curve) => lang.t("run-part-curve"),
+                CodePart::Function(HookKind::ShadowMatrix) => lang.t("run-part-shadow-matrix"),
+                CodePart::Function(HookKind::Patch) => lang.t("run-part-patch"),
             };
-            let file = file
-                .as_deref()
-                .map(|f| format!("{f}，"))
-                .unwrap_or_default();
-            format!(
-                "无法绘制场景：物体 {object} 的{part}，{file}{}",
-                super::compile::message(error, lang)
-            )
+            let message = super::compile::message(error, lang);
+            match file {
+                Some(file) => lang.t_with(
+                    "run-code-in-file",
+                    &[
+                        ("part", &part),
+                        ("object", object),
+                        ("file", file),
+                        ("message", &message),
+                    ],
+                ),
+                None => lang.t_with(
+                    "run-code",
+                    &[("part", &part), ("object", object), ("message", &message)],
+                ),
+            }
         }
-    }
+    };
+    lang.t_with("run-cannot-draw", &[("why", &why)])
 }
 
 /// A problem that keeps the scene from being drawn (its settings, projection, camera or an
 /// object), in `lang`.
 #[must_use]
 pub fn scene_problem(p: &SceneProblem, lang: Lang) -> String {
-    if lang.written() == Written::English {
-        return p.to_string();
-    }
-    match (p, lang) {
-        (SceneProblem::Settings(s), _) => settings_problem(s, lang),
-        (SceneProblem::Projection(p), _) => projection_problem(p, lang),
-        (SceneProblem::CameraNotFinite, _) => "相机的 eye、at 和 up 必须是有限的数".to_owned(),
-        (SceneProblem::Camera(TransformError::EyeAtCoincide(at)), _) => {
-            format!("视点与参考点重合（{at:?}）：没有观察方向")
+    match p {
+        SceneProblem::Settings(s) => settings_problem(s, lang),
+        SceneProblem::Projection(p) => projection_problem(p, lang),
+        SceneProblem::CameraNotFinite => lang.t("run-camera-not-finite").to_owned(),
+        SceneProblem::Camera(TransformError::EyeAtCoincide(at)) => {
+            lang.t_with("run-eye-at-coincide", &[("at", &format!("{at:?}"))])
         }
-        (SceneProblem::Camera(TransformError::UpParallelToView { up, dir }), _) => format!(
-            "上方向 {up:?} 与观察方向 {dir:?} 平行：u = v_up × n 为零，相机坐标系无法确定（请换一个上方向）"
+        SceneProblem::Camera(TransformError::UpParallelToView { up, dir }) => lang.t_with(
+            "run-up-parallel",
+            &[("up", &format!("{up:?}")), ("dir", &format!("{dir:?}"))],
         ),
-        (SceneProblem::Camera(TransformError::ZeroAxis), _) => "旋转轴是零向量".to_owned(),
-        (SceneProblem::ObjectTransform(name), _) => {
-            format!("物体 `{name}`：它的变换必须是有限的数")
+        SceneProblem::Camera(TransformError::ZeroAxis) => lang.t("run-zero-axis").to_owned(),
+        SceneProblem::ObjectTransform(name) => {
+            lang.t_with("run-object-transform", &[("name", name)])
         }
-        (SceneProblem::ObjectColour(name), _) => format!("物体 `{name}`：它的颜色必须是有限的数"),
+        SceneProblem::ObjectColour(name) => lang.t_with("run-object-colour", &[("name", name)]),
     }
 }
 
 /// A problem with the render settings, in `lang`.
 #[must_use]
 pub fn settings_problem(p: &SettingsProblem, lang: Lang) -> String {
-    if lang.written() == Written::English {
-        return p.to_string();
-    }
-    match (p, lang) {
-        (SettingsProblem::ViewportSide { height, got }, _) => format!(
-            "视口的{}必须在 1 到 {MAX_VIEWPORT_SIDE} 像素之间，现在是 {got}",
-            if *height { "高度" } else { "宽度" }
-        ),
-        (
-            SettingsProblem::CaptureTooLarge {
-                width,
-                height,
-                samples,
-                megabytes,
+    match p {
+        SettingsProblem::ViewportSide { height, got } => lang.t_with(
+            if *height {
+                "run-viewport-height"
+            } else {
+                "run-viewport-width"
             },
-            _,
-        ) => format!(
-            "{width}×{height} 像素 × {samples} 个采样的捕获约需 {megabytes} MB，超过了允许的 {} MB；请减小尺寸或采样数",
-            MAX_CAPTURE_BYTES >> 20
+            &[("max", &MAX_VIEWPORT_SIDE), ("got", got)],
         ),
-        (SettingsProblem::Background, _) => "背景颜色必须是有限的数".to_owned(),
+        SettingsProblem::CaptureTooLarge {
+            width,
+            height,
+            samples,
+            megabytes,
+        } => lang.t_with(
+            "run-capture-too-large",
+            &[
+                ("width", width),
+                ("height", height),
+                ("samples", samples),
+                ("megabytes", megabytes),
+                ("allowed", &(MAX_CAPTURE_BYTES >> 20)),
+            ],
+        ),
+        SettingsProblem::Background => lang.t("run-background").to_owned(),
     }
 }
 
@@ -112,23 +124,18 @@ pub fn settings_problem(p: &SettingsProblem, lang: Lang) -> String {
 #[must_use]
 pub fn projection_problem(p: &ProjectionProblem, lang: Lang) -> String {
     use ProjectionProblem as P;
-    if lang.written() == Written::English {
-        return p.to_string();
-    }
-    match (p, lang) {
-        (P::Fovy(f), _) => format!("fovy 必须在 0° 到 180° 之间（不含两端），现在是 {f}"),
-        (P::Aspect(a), _) => format!("aspect 必须是正数，现在是 {a}"),
-        (P::LeftRight { left, right }, _) => {
-            format!("left 必须小于 right，现在 left = {left}，right = {right}")
+    match p {
+        P::Fovy(f) => lang.t_with("run-fovy", &[("fovy", f)]),
+        P::Aspect(a) => lang.t_with("run-aspect", &[("aspect", a)]),
+        P::LeftRight { left, right } => {
+            lang.t_with("run-left-right", &[("left", left), ("right", right)])
         }
-        (P::BottomTop { bottom, top }, _) => {
-            format!("bottom 必须小于 top，现在 bottom = {bottom}，top = {top}")
+        P::BottomTop { bottom, top } => {
+            lang.t_with("run-bottom-top", &[("bottom", bottom), ("top", top)])
         }
-        (P::Near(n), _) => format!("透视投影的 near 必须为正（它是视点前方的距离），现在是 {n}"),
-        (P::FarNear { near, far }, _) => {
-            format!("far 必须大于 near，现在 near = {near}，far = {far}")
-        }
-        (P::NotFinite, _) => "投影的每个参数都必须是有限的数".to_owned(),
+        P::Near(n) => lang.t_with("run-near", &[("near", n)]),
+        P::FarNear { near, far } => lang.t_with("run-far-near", &[("near", near), ("far", far)]),
+        P::NotFinite => lang.t("run-projection-not-finite").to_owned(),
     }
 }
 
@@ -146,7 +153,7 @@ mod tests {
             line: 12,
             column: 5,
             span: 0..0,
-            message: "the loop ran more than 65536 steps (an endless loop?)".to_owned(),
+            message: "the loop ran more than 65536 steps (an endless loop? If it is meant to run longer, raise the limit with `max_steps` under [scene.render])".to_owned(),
             complaint: Complaint::EndlessLoop { budget: 65536 },
         };
         let e = RenderError::Code {
@@ -159,9 +166,10 @@ mod tests {
             render_error(&e, Lang::ZH),
             "无法绘制场景：物体 sphere 的片元着色器，第 12 行第 5 列：循环执行超过了 65536 步（是不是死循环？如果它本来就要运行更久，请在 [scene.render] 中用 `max_steps` 提高上限）"
         );
+        assert_eq!(render_error(&e, Lang::EN), e.to_string());
         assert_eq!(
             render_error(&e, Lang::EN),
-            "the scene cannot be drawn: fragment shader of sphere, line 12, column 5: the loop ran more than 65536 steps (an endless loop?)"
+            "the scene cannot be drawn: fragment shader of sphere, line 12, column 5: the loop ran more than 65536 steps (an endless loop? If it is meant to run longer, raise the limit with `max_steps` under [scene.render])"
         );
         // A function the pipeline calls is named by its GLSL name in Chinese too.
         let RenderError::Code { error, .. } = e else {
@@ -304,5 +312,94 @@ mod tests {
             render_error(&shadow, Lang::ZH)
                 .starts_with("无法绘制场景：shadow_matrix(vec3(0, 2, 0)) 返回的矩阵含有非有限的数")
         );
+    }
+
+    /// In English every problem reads as the core's `Display` says it, word for word — each
+    /// of the scene's, the settings', the projection's and the camera's, each part of the
+    /// student's code a run can stop in, with and without its file — so the catalog and the
+    /// core cannot drift apart.
+    #[test]
+    fn the_english_catalog_says_what_the_core_says() {
+        let problems = vec![
+            SceneProblem::Settings(SettingsProblem::ViewportSide {
+                height: false,
+                got: 0,
+            }),
+            SceneProblem::Settings(SettingsProblem::ViewportSide {
+                height: true,
+                got: 20_000,
+            }),
+            SceneProblem::Settings(SettingsProblem::CaptureTooLarge {
+                width: 16_384,
+                height: 16_384,
+                samples: 16,
+                megabytes: 53_248,
+            }),
+            SceneProblem::Settings(SettingsProblem::Background),
+            SceneProblem::Projection(ProjectionProblem::Fovy(200.0)),
+            SceneProblem::Projection(ProjectionProblem::Aspect(-1.5)),
+            SceneProblem::Projection(ProjectionProblem::LeftRight {
+                left: 1.0,
+                right: -1.0,
+            }),
+            SceneProblem::Projection(ProjectionProblem::BottomTop {
+                bottom: 1.0,
+                top: 0.25,
+            }),
+            SceneProblem::Projection(ProjectionProblem::Near(-0.5)),
+            SceneProblem::Projection(ProjectionProblem::FarNear {
+                near: 2.0,
+                far: 1.0,
+            }),
+            SceneProblem::Projection(ProjectionProblem::NotFinite),
+            SceneProblem::CameraNotFinite,
+            SceneProblem::Camera(TransformError::EyeAtCoincide(glam::Vec3::new(
+                0.0, 0.0, 3.0,
+            ))),
+            SceneProblem::Camera(TransformError::UpParallelToView {
+                up: glam::Vec3::Y,
+                dir: glam::Vec3::NEG_Y,
+            }),
+            SceneProblem::Camera(TransformError::ZeroAxis),
+            SceneProblem::ObjectTransform("cube".to_owned()),
+            SceneProblem::ObjectColour("cube".to_owned()),
+        ];
+        for p in &problems {
+            assert_eq!(scene_problem(p, Lang::EN), p.to_string());
+        }
+        let mut errors = vec![
+            RenderError::Invalid(problems),
+            RenderError::ShadowMatrix {
+                light: glam::Vec3::new(0.5, 2.0, -1.0),
+                matrix: glam::Mat4::NAN,
+            },
+        ];
+        let error = pipeline::shader::ShaderError {
+            line: 3,
+            column: 9,
+            span: 0..0,
+            message: "integer division by zero".to_owned(),
+            complaint: Complaint::DivisionByZero { remainder: false },
+        };
+        let parts = [
+            CodePart::Shader(Stage::Vertex),
+            CodePart::Shader(Stage::Fragment),
+        ]
+        .into_iter()
+        .chain(HookKind::ALL.map(CodePart::Function));
+        for part in parts {
+            for file in [None, Some("lessons/22-rasterization-lab.toml".to_owned())] {
+                errors.push(RenderError::Code {
+                    part,
+                    object: "tri".to_owned(),
+                    error: Box::new(error.clone()),
+                    file,
+                });
+            }
+        }
+        for e in &errors {
+            assert_eq!(render_error(e, Lang::EN), e.to_string());
+            assert_ne!(render_error(e, Lang::ZH), e.to_string());
+        }
     }
 }

@@ -192,7 +192,7 @@ fn own_uniform_declaration(
             source,
             d.name_span.clone(),
             format!(
-                "pipelens sets no uniform called `{}`; the uniforms it sets: {}{}. A uniform of your own is a float, int, bool, vec2, vec3 or vec4, its control in a comment after it: `// 0..4 = 1.5`",
+                "pipelens sets no uniform called `{}`; the uniforms it sets: {}. A uniform of your own is a float, int, bool, vec2, vec3 or vec4, its control in a comment after it: `// 0..4 = 1.5`{}",
                 d.name,
                 firsts.join(", "),
                 did_you_mean(&d.name, known.iter().copied(), Quote::Code),
