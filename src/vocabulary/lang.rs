@@ -41,6 +41,9 @@ struct Catalog {
     ids: Vec<&'static str>,
     /// Each message without variables, formatted once.
     plain: HashMap<&'static str, &'static str>,
+    /// The ids of the messages without variables by their text, in the file's order: how
+    /// [`Lang::from_english`] finds a message by its English words without a scan.
+    by_text: HashMap<&'static str, Vec<&'static str>>,
     /// The catalog, for messages with variables.
     bundle: FluentBundle<FluentResource>,
     pseudo: bool,
@@ -79,6 +82,7 @@ fn catalog(tag: &'static str, text: &str, pseudo: bool) -> Catalog {
     // `catalog_problems`).
     let _ = bundle.add_resource(resource);
     let mut plain = HashMap::new();
+    let mut by_text: HashMap<&'static str, Vec<&'static str>> = HashMap::new();
     for &id in &ids {
         let mut errors = Vec::new();
         let Some(pattern) = bundle.get_message(id).and_then(|m| m.value()) else {
@@ -91,13 +95,16 @@ fn catalog(tag: &'static str, text: &str, pseudo: bool) -> Catalog {
             } else {
                 text.into_owned()
             };
-            plain.insert(id, &*Box::leak(text.into_boxed_str()));
+            let text: &'static str = Box::leak(text.into_boxed_str());
+            plain.insert(id, text);
+            by_text.entry(text).or_default().push(id);
         }
     }
     Catalog {
         tag,
         ids,
         plain,
+        by_text,
         bundle,
         pseudo,
     }
@@ -177,10 +184,9 @@ impl Lang {
     #[must_use]
     pub fn from_english(self, family: &str, english: &str) -> Option<&'static str> {
         let en = Self::EN.catalog()?;
-        let id = en.ids.iter().find(|id| {
+        let id = en.by_text.get(english)?.iter().find(|id| {
             id.strip_prefix(family)
                 .is_some_and(|rest| rest.starts_with('-'))
-                && en.plain.get(*id) == Some(&english)
         })?;
         Some(self.t(id))
     }
