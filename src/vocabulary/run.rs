@@ -268,36 +268,8 @@ mod tests {
             scene_problem(&SceneProblem::CameraNotFinite, fr),
             SceneProblem::CameraNotFinite.to_string()
         );
-        // The rest of the problems, one by one: Chinese, none of the English words.
-        let rest = [
-            SceneProblem::Projection(ProjectionProblem::LeftRight {
-                left: 1.0,
-                right: -1.0,
-            }),
-            SceneProblem::Projection(ProjectionProblem::BottomTop {
-                bottom: 1.0,
-                top: 0.0,
-            }),
-            SceneProblem::Projection(ProjectionProblem::NotFinite),
-            SceneProblem::Settings(SettingsProblem::ViewportSide {
-                height: true,
-                got: 20_000,
-            }),
-            SceneProblem::Settings(SettingsProblem::CaptureTooLarge {
-                width: 16_384,
-                height: 16_384,
-                samples: 16,
-                megabytes: 53_248,
-            }),
-            SceneProblem::CameraNotFinite,
-            SceneProblem::Camera(TransformError::UpParallelToView {
-                up: glam::Vec3::Y,
-                dir: glam::Vec3::NEG_Y,
-            }),
-            SceneProblem::ObjectTransform("cube".to_owned()),
-            SceneProblem::ObjectColour("cube".to_owned()),
-        ];
-        for p in &rest {
+        // Every problem, one by one: Chinese, none of the English words.
+        for p in &every_problem() {
             let zh = scene_problem(p, Lang::ZH);
             assert_ne!(zh, scene_problem(p, Lang::EN));
             for english in ["must", "got", "the ", " is "] {
@@ -320,7 +292,49 @@ mod tests {
     /// core cannot drift apart.
     #[test]
     fn the_english_catalog_says_what_the_core_says() {
-        let problems = vec![
+        let problems = every_problem();
+        for p in &problems {
+            assert_eq!(scene_problem(p, Lang::EN), p.to_string());
+        }
+        let mut errors = vec![
+            RenderError::Invalid(problems),
+            RenderError::ShadowMatrix {
+                light: glam::Vec3::new(0.5, 2.0, -1.0),
+                matrix: glam::Mat4::NAN,
+            },
+        ];
+        let error = pipeline::shader::ShaderError {
+            line: 3,
+            column: 9,
+            span: 0..0,
+            message: "integer division by zero".to_owned(),
+            complaint: Complaint::DivisionByZero { remainder: false },
+        };
+        let parts = [
+            CodePart::Shader(Stage::Vertex),
+            CodePart::Shader(Stage::Fragment),
+        ]
+        .into_iter()
+        .chain(HookKind::ALL.map(CodePart::Function));
+        for part in parts {
+            for file in [None, Some("lessons/22-rasterization-lab.toml".to_owned())] {
+                errors.push(RenderError::Code {
+                    part,
+                    object: "tri".to_owned(),
+                    error: Box::new(error.clone()),
+                    file,
+                });
+            }
+        }
+        for e in &errors {
+            assert_eq!(render_error(e, Lang::EN), e.to_string());
+            assert_ne!(render_error(e, Lang::ZH), e.to_string());
+        }
+    }
+
+    /// One of every problem that keeps a scene from being drawn.
+    fn every_problem() -> Vec<SceneProblem> {
+        vec![
             SceneProblem::Settings(SettingsProblem::ViewportSide {
                 height: false,
                 got: 0,
@@ -363,43 +377,6 @@ mod tests {
             SceneProblem::Camera(TransformError::ZeroAxis),
             SceneProblem::ObjectTransform("cube".to_owned()),
             SceneProblem::ObjectColour("cube".to_owned()),
-        ];
-        for p in &problems {
-            assert_eq!(scene_problem(p, Lang::EN), p.to_string());
-        }
-        let mut errors = vec![
-            RenderError::Invalid(problems),
-            RenderError::ShadowMatrix {
-                light: glam::Vec3::new(0.5, 2.0, -1.0),
-                matrix: glam::Mat4::NAN,
-            },
-        ];
-        let error = pipeline::shader::ShaderError {
-            line: 3,
-            column: 9,
-            span: 0..0,
-            message: "integer division by zero".to_owned(),
-            complaint: Complaint::DivisionByZero { remainder: false },
-        };
-        let parts = [
-            CodePart::Shader(Stage::Vertex),
-            CodePart::Shader(Stage::Fragment),
         ]
-        .into_iter()
-        .chain(HookKind::ALL.map(CodePart::Function));
-        for part in parts {
-            for file in [None, Some("lessons/22-rasterization-lab.toml".to_owned())] {
-                errors.push(RenderError::Code {
-                    part,
-                    object: "tri".to_owned(),
-                    error: Box::new(error.clone()),
-                    file,
-                });
-            }
-        }
-        for e in &errors {
-            assert_eq!(render_error(e, Lang::EN), e.to_string());
-            assert_ne!(render_error(e, Lang::ZH), e.to_string());
-        }
     }
 }
