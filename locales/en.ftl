@@ -47,7 +47,7 @@ chrome-export-my-work = Export my work
 chrome-one-file-with-this-lesson-2 = One file with this lesson's code you last ran at each step and the answers you typed (LESSON-work.toml, into the folder above): hand it in; a teacher grades it with `pipelens grade LESSON FILE`.
 chrome-cancel-export = Cancel export
 chrome-stops-between-two-files-those = Stops between two files: those written stay whole.
-chrome-error = Error
+chrome-error = Error: { $message }
 chrome-showing-the-last-good-frame = (showing the last good frame)
 chrome-triangles = triangles
 chrome-frame = frame
@@ -214,7 +214,7 @@ breakpoints-is-not-a-condition-a = is not a condition (a bool): write a comparis
 ## src/app/views/compare.rs
 
 compare-rendering-the-comparison = Rendering the comparison…
-compare-compared-image = compared image
+compare-compared-image = compared image: { $caption }
 
 ## src/app/views/debugger.rs
 

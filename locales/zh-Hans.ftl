@@ -47,7 +47,7 @@ chrome-export-my-work = 导出我的作业
 chrome-one-file-with-this-lesson-2 = 一个文件，包含你在本课每一步最后运行的代码和填写的答案（LESSON-work.toml，写入上面的文件夹）：交上这个文件；老师用 `pipelens grade 课程 文件` 评分。
 chrome-cancel-export = 取消导出
 chrome-stops-between-two-files-those = 在两个文件之间停止：已写入的文件保持完整。
-chrome-error = 错误
+chrome-error = 错误：{ $message }
 chrome-showing-the-last-good-frame = （显示上一个正确的帧）
 chrome-triangles = 个三角形
 chrome-frame = 帧
@@ -211,7 +211,7 @@ breakpoints-is-not-a-condition-a = 不是条件（bool）：请写一个比较�
 ## src/app/views/compare.rs
 
 compare-rendering-the-comparison = 正在渲染对比…
-compare-compared-image = 对比图像
+compare-compared-image = 对比图像：{ $caption }
 
 ## src/app/views/debugger.rs
 

@@ -349,7 +349,7 @@ impl PipelensApp {
             ui.horizontal_wrapped(|ui| {
                 if let Some(e) = &self.session.error {
                     ui.label(
-                        RichText::new(format!("{}: {e}", lang.t("chrome-error")))
+                        RichText::new(lang.t_with("chrome-error", &[("message", e)]))
                             .color(Color32::LIGHT_RED),
                     );
                     ui.label(lang.t("chrome-showing-the-last-good-frame"));

@@ -150,7 +150,7 @@ impl CompareView {
             self.picture.push(image);
             let response = ui.interact(image, ui.scope_id().with(("compare", i)), Sense::drag());
             let caption = variant_label(name, lang);
-            let accessible = format!("{}: {caption}", lang.t("compare-compared-image"));
+            let accessible = lang.t_with("compare-compared-image", &[("caption", &caption)]);
             super::alt::name_image(&response, || accessible.clone());
             let painter = ui.painter_at(cell);
             painter.image(
