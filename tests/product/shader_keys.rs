@@ -159,3 +159,20 @@ fn a_steps_shader_lines_and_panels_are_checked() {
             .any(|d| d.message.contains("\"inspector\""))
     );
 }
+
+/// A mistake in a lesson's GLSL is said at its place with the sentence the app shows the
+/// student, not naga's words ("Unknown variable: lvl"): `lvl` on line 22 (HEAD's `color = …`
+/// line), column 28 (four spaces and `color = vec4(on ? vec3(` before it, counted by hand).
+#[test]
+fn a_mistake_in_a_lessons_shader_is_the_students_sentence_at_its_place() {
+    let source = format!("{HEAD}\n{STEP}").replace("vec3(level)", "vec3(lvl)");
+    let Err(d) = parse_lesson(&source, "t.toml", Path::new(".")) else {
+        panic!("an undeclared name is refused");
+    };
+    crate::support::assert_found(
+        &d.0,
+        22,
+        28,
+        "fragment shader: `lvl` is not declared here: declare it before its first use, or check its spelling",
+    );
+}

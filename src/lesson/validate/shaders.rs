@@ -104,7 +104,7 @@ pub(in crate::lesson) fn shader(
                         Stage::Vertex => vertex.as_ref(),
                         Stage::Fragment => fragment.as_ref(),
                     };
-                    let message = format!("{} shader: {}", e.stage.name(), e.error.message);
+                    let message = format!("{} shader: {}", e.stage.name(), said(&e.error));
                     place(c, given, raw.span(), &e.error, message);
                 }
                 ok = false;
@@ -120,7 +120,7 @@ pub(in crate::lesson) fn shader(
             Ok(hook) => Some(hook),
             Err(errors) => {
                 for e in errors {
-                    let message = format!("{}: {}", hook_name(kind), e.message);
+                    let message = format!("{}: {}", hook_name(kind), said(&e));
                     place(c, given.as_ref(), raw.span(), &e, message);
                 }
                 ok = false;
@@ -232,6 +232,14 @@ fn own_value(u: &OwnUniform, value: &RawUniformValue) -> Result<Vec<f32>, String
 }
 
 /// How a message names the function it is about.
+/// A compile message as a lesson's diagnostic says it: the sentence the app shows the student
+/// (`` `eye` is not declared here: … ``), in English as diagnostics are, or naga's words where
+/// no sentence covers the mistake.
+fn said(e: &pipeline::shader::ShaderError) -> String {
+    crate::vocabulary::compile::complaint(&e.complaint, crate::vocabulary::Lang::EN)
+        .unwrap_or_else(|| e.message.clone())
+}
+
 fn hook_name(kind: HookKind) -> &'static str {
     match kind {
         HookKind::Inside => "inside test",
