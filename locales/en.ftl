@@ -364,6 +364,7 @@ vertices-object = object
 lesson-fold-the-narration-away = Fold the narration away
 lesson-fold-the-narration-away-n = Fold the narration away (N)
 lesson-predict-first-the-question-below = Predict first (the question below), then press Space to watch.
+lesson-animation-line = ▶ { $param }: { $from } → { $to }
 lesson-question = Question
 lesson-hide-the-answer = Hide the answer
 lesson-show-the-answer = Show the answer

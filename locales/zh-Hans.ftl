@@ -361,6 +361,7 @@ vertices-object = 物体
 lesson-fold-the-narration-away = 收起讲解
 lesson-fold-the-narration-away-n = 收起讲解（N）
 lesson-predict-first-the-question-below = 先预测（见下方思考题），再按空格键观看。
+lesson-animation-line = ▶ { $param }：{ $from } → { $to }
 lesson-question = 思考题
 lesson-hide-the-answer = 隐藏答案
 lesson-show-the-answer = 显示答案

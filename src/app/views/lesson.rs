@@ -192,11 +192,16 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
                 );
             }
             for a in &step.animate {
-                let line = format!(
-                    "▶ {}: {} → {}",
-                    crate::vocabulary::upper_first(&param::describe(spec, &a.param, lang)),
-                    a.from,
-                    a.to
+                let line = lang.t_with(
+                    "lesson-animation-line",
+                    &[
+                        (
+                            "param",
+                            &crate::vocabulary::upper_first(&param::describe(spec, &a.param, lang)),
+                        ),
+                        ("from", &a.from),
+                        ("to", &a.to),
+                    ],
                 );
                 typeset::paragraph(ui, &line, &style.sized(style.size * 0.85));
             }

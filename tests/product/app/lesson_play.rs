@@ -237,3 +237,30 @@ fn a_step_that_asks_before_it_animates_waits_for_space() {
     assert!(playing(&h), "Space plays it");
     assert!(h.query_by_label_contains("Predict first").is_none());
 }
+
+/// A step's animation lines are said as the language writes them: lesson 17 step 4 animates
+/// the humanoid's four limbs (its TOML: `figures.body.left_upper_leg` from −40 to 40 first),
+/// and the Chinese line puts a full-width colon after the limb's name, as Chinese does — not
+/// the English ": " the code once joined them with.
+#[test]
+fn an_animation_line_is_said_in_the_language_shown() {
+    let path = crate::support::repo().join("lessons/17-hierarchy.toml");
+    let mut h = sized_lesson_harness(&path, [1366.0, 768.0]);
+    super::go_to_step(&mut h, 3);
+    for (lang, line) in [
+        (Lang::EN, "▶ Left upper leg of humanoid: -40 → 40"),
+        (Lang::ZH, "▶ 人体模型的左大腿：-40 → 40"),
+    ] {
+        h.state_mut()
+            .session
+            .apply(pipelens::app::command::Command::View(
+                pipelens::app::command::ViewCommand::SetLang(lang),
+            ));
+        h.run_steps(3);
+        assert!(
+            h.query_by_label_contains(line).is_some(),
+            "no {line:?} in {}",
+            lang.tag()
+        );
+    }
+}
