@@ -70,6 +70,14 @@ compact-menu = Menu
 compact-keys = Keys (?)
 compact-stage = Stage
 
+## src/app/editor/file.rs
+
+file-cannot-read = cannot read { $file }: { $why }
+file-not-saved = not saved: { $why }
+file-changed-since-opened = { $file } changed on disk since it was opened: overwrite it, or load it and lose these edits?
+file-no-file = no file
+file-no-text-to-edit = { $source }: no text to edit
+
 ## src/app/editor/file_actions.rs
 
 file-actions-undo = ↶ Undo
@@ -90,6 +98,7 @@ file-actions-the-file-changed-on-disk = The file changed on disk while you were 
 file-actions-overwrite-it-with-my-edits = Overwrite it with my edits
 file-actions-load-it-from-disk-undo = Load it from disk (Undo brings my edits back)
 file-actions-loaded-from-disk = Loaded from disk.
+file-actions-saved-to = Saved: { $file }
 file-actions-not-done-the-lesson-would = Not done: the lesson would no longer pass the check (a step's parameters may need one before it):
 file-actions-the-lesson-does-not-pass = The lesson does not pass the check; the last good version keeps playing until this is fixed:
 
@@ -102,6 +111,13 @@ new-from-a-mesh-of-your = from a mesh of your own (.obj; or drop one on the wind
 new-write-it-to = Write it to:
 new-name = Name:
 new-make-the-lesson = Make the lesson
+new-nothing-on-screen = nothing on screen to start from
+new-choose-a-built-in-lesson = choose a built-in lesson
+new-name-the-mesh-file = name the mesh file (.obj)
+new-exists-already = { $file } exists already: choose another name (it was left as it is)
+new-cannot-create = cannot create { $dir }: { $why }
+new-made = New lesson: { $source }
+new-no-lesson-open = no lesson open
 
 ## src/app/editor/screen.rs
 
@@ -156,6 +172,7 @@ export-task-steps-with-work = steps with work
 
 ## src/app/library.rs
 
+library-cannot-read-the-file = cannot read the file: { $why }
 library-lessons = Lessons
 library-all-right = all right
 library-d-n-questions-you-answered = d/n: questions you answered right, of those with a value to type

@@ -70,6 +70,14 @@ compact-menu = 菜单
 compact-keys = 快捷键（?）
 compact-stage = 阶段
 
+## src/app/editor/file.rs
+
+file-cannot-read = 无法读取 { $file }：{ $why }
+file-not-saved = 未保存：{ $why }
+file-changed-since-opened = { $file } 在打开之后已在磁盘上被修改：覆盖它，还是从磁盘重新载入并丢弃这些编辑？
+file-no-file = 没有文件
+file-no-text-to-edit = { $source }：没有可编辑的文本
+
 ## src/app/editor/file_actions.rs
 
 file-actions-undo = ↶ 撤销
@@ -90,6 +98,7 @@ file-actions-the-file-changed-on-disk = 编辑期间，文件在磁盘上被修�
 file-actions-overwrite-it-with-my-edits = 用我的修改覆盖它
 file-actions-load-it-from-disk-undo = 从磁盘载入（撤销可找回我的修改）
 file-actions-loaded-from-disk = 已从磁盘载入。
+file-actions-saved-to = 已保存：{ $file }
 file-actions-not-done-the-lesson-would = 未执行：这样改动后课程将无法通过检查（某一步的参数可能依赖它之前的步骤）：
 file-actions-the-lesson-does-not-pass = 课程无法通过检查；在修正之前继续播放上一个正确的版本：
 
@@ -102,6 +111,13 @@ new-from-a-mesh-of-your = 从你自己的网格开始（.obj；也可以把文�
 new-write-it-to = 写入：
 new-name = 名称：
 new-make-the-lesson = 新建课程
+new-nothing-on-screen = 屏幕上没有可作为起点的内容
+new-choose-a-built-in-lesson = 请选择一个内置课程
+new-name-the-mesh-file = 请写出网格文件（.obj）的名字
+new-exists-already = { $file } 已经存在：请换一个名字（原文件保持不变）
+new-cannot-create = 无法创建 { $dir }：{ $why }
+new-made = 新课程：{ $source }
+new-no-lesson-open = 没有打开的课程
 
 ## src/app/editor/screen.rs
 
@@ -153,6 +169,7 @@ export-task-steps-with-work = 个步骤有作业
 
 ## src/app/library.rs
 
+library-cannot-read-the-file = 无法读取文件：{ $why }
 library-lessons = 课程
 library-all-right = 全对
 library-d-n-questions-you-answered = d/n：需要填写数值的思考题中你已答对的数目

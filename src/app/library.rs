@@ -115,7 +115,7 @@ impl PipelensApp {
                 self.editor.open = true;
             } else if path.is_absolute() && shader_stage(&path.display().to_string()).is_some() {
                 let name = path.display().to_string();
-                let text = std::fs::read(&path).map_err(|e| format!("cannot read the file: {e}"));
+                let text = std::fs::read(&path).map_err(|e| cannot_read(&e, self.session.lang));
                 self.load_shader(&name, text);
             } else if path.is_absolute() {
                 let loaded = lesson::load_file(&path);
@@ -126,14 +126,11 @@ impl PipelensApp {
         }
         for (name, bytes) in self.inbox.take() {
             if shader_stage(&name).is_some() {
-                self.load_shader(
-                    &name,
-                    bytes.map_err(|e| format!("cannot read the file: {e}")),
-                );
+                self.load_shader(&name, bytes.map_err(|e| cannot_read(&e, self.session.lang)));
                 continue;
             }
             let text = bytes
-                .map_err(|e| format!("cannot read the file: {e}"))
+                .map_err(|e| cannot_read(&e, self.session.lang))
                 .and_then(|b| {
                     String::from_utf8(b).map_err(|_| {
                         "the file is not UTF-8 text: drop a lesson or scene .toml file".to_owned()
@@ -148,7 +145,7 @@ impl PipelensApp {
             self.opened(loaded, &name, None);
             // In the browser the editor edits the dropped text; saving it is a download.
             if let (true, Ok(text)) = (is_lesson, text) {
-                self.editor.adopt(&name, None, text);
+                self.editor.adopt(&name, None, text, self.session.lang);
             }
         }
     }
@@ -252,4 +249,9 @@ fn shader_stage(name: &str) -> Option<Tab> {
     } else {
         None
     }
+}
+
+/// "cannot read the file: why", in `lang`.
+fn cannot_read(e: &impl std::fmt::Display, lang: Lang) -> String {
+    lang.t_with("library-cannot-read-the-file", &[("why", &e.to_string())])
 }

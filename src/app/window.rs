@@ -566,8 +566,12 @@ impl PipelensApp {
         self.commands.extend(commands);
         if let Some(made) = self.editor.made.take() {
             self.open(made.doc, &made.source, made.file.clone());
-            self.editor
-                .adopt(&made.source, made.file.as_deref(), made.text);
+            self.editor.adopt(
+                &made.source,
+                made.file.as_deref(),
+                made.text,
+                self.session.lang,
+            );
         }
     }
 }

@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 use crate::app::platform;
 use crate::lesson::edit::Draft;
 use crate::lesson::library;
+use crate::vocabulary::Lang;
 
 /// A lesson being edited, with where it is saved.
 pub struct Edited {
@@ -50,18 +51,22 @@ impl Edited {
     ///
     /// # Errors
     /// When there is no text to edit, or it is not a lesson file's.
-    pub fn open(source: &str, file: Option<&Path>, text: Option<String>) -> Result<Self, String> {
+    pub fn open(
+        source: &str,
+        file: Option<&Path>,
+        text: Option<String>,
+        lang: Lang,
+    ) -> Result<Self, String> {
         let disk = match file {
-            Some(f) if text.is_none() => Some(
-                std::fs::read_to_string(f)
-                    .map_err(|e| format!("cannot read {}: {e}", f.display()))?,
-            ),
+            Some(f) if text.is_none() => {
+                Some(std::fs::read_to_string(f).map_err(|e| cannot_read(f, &e, lang))?)
+            }
             _ => None,
         };
         let text = text
             .or_else(|| disk.clone())
             .or_else(|| builtin_text(source).map(str::to_owned))
-            .ok_or_else(|| format!("{source}: no text to edit"))?;
+            .ok_or_else(|| lang.t_with("file-no-text-to-edit", &[("source", &source)]))?;
         let base = file
             .and_then(Path::parent)
             .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
@@ -102,9 +107,9 @@ impl Edited {
     ///
     /// # Errors
     /// What went wrong, in words.
-    pub fn save(&mut self, overwrite: bool) -> Result<String, String> {
+    pub fn save(&mut self, overwrite: bool, lang: Lang) -> Result<String, String> {
         if let Err(e) = self.draft.lesson() {
-            return Err(format!("not saved: {e}"));
+            return Err(lang.t_with("file-not-saved", &[("why", &e)]));
         }
         let text = self.draft.text().to_owned();
         let Some(file) = self.file.clone() else {
@@ -122,10 +127,7 @@ impl Edited {
         let on_disk = std::fs::read_to_string(&file).ok();
         if !overwrite && on_disk.is_some() && on_disk != self.disk {
             self.ask_overwrite = true;
-            return Err(format!(
-                "{} changed on disk since it was opened: overwrite it, or load it and lose these edits?",
-                file.display()
-            ));
+            return Err(lang.t_with("file-changed-since-opened", &[("file", &file.display())]));
         }
         crate::export::write_atomically(&file, text.as_bytes()).map_err(|e| format!("{e:#}"))?;
         self.disk = Some(text);
@@ -159,10 +161,9 @@ impl Edited {
     ///
     /// # Errors
     /// When the file cannot be read or is not a lesson file's.
-    pub fn load_from_disk(&mut self) -> Result<(), String> {
-        let file = self.file.clone().ok_or("no file")?;
-        let text = std::fs::read_to_string(&file)
-            .map_err(|e| format!("cannot read {}: {e}", file.display()))?;
+    pub fn load_from_disk(&mut self, lang: Lang) -> Result<(), String> {
+        let file = self.file.clone().ok_or(lang.t("file-no-file"))?;
+        let text = std::fs::read_to_string(&file).map_err(|e| cannot_read(&file, &e, lang))?;
         self.draft.replace_text(&text)?;
         self.draft.mark_saved();
         self.disk = Some(text);
@@ -234,4 +235,13 @@ pub fn mesh_from(lesson: &Path, mesh: &Path) -> String {
         .unwrap_or(mesh)
         .to_string_lossy()
         .replace('\\', "/")
+}
+
+/// "cannot read FILE: why", in `lang`.
+fn cannot_read(file: &Path, e: &std::io::Error, lang: Lang) -> String {
+    let file = file.display();
+    lang.t_with(
+        "file-cannot-read",
+        &[("file", &file), ("why", &e.to_string())],
+    )
 }

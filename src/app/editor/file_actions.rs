@@ -17,7 +17,7 @@ impl Editor {
     pub(super) fn shortcuts(&mut self, ctx: &Context, session: &Session, out: &mut Vec<Command>) {
         use crate::app::shortcuts::{Action, pressed};
         if pressed(ctx, Action::Save) {
-            self.save(false);
+            self.save(false, session.lang);
         }
         if ctx.text_edit_focused() {
             return;
@@ -83,7 +83,7 @@ impl Editor {
                     self.new.from = new::From::Builtin(session.source.clone());
                     self.new.show = true;
                 } else {
-                    self.save(false);
+                    self.save(false, lang);
                 }
             }
             // A word or two, as long as each other: the row keeps its height when the first
@@ -100,12 +100,15 @@ impl Editor {
         });
     }
 
-    pub(super) fn save(&mut self, overwrite: bool) {
+    pub(super) fn save(&mut self, overwrite: bool, lang: Lang) {
         if let Some(doc) = &mut self.doc {
             if doc.builtin() {
                 return;
             }
-            self.said = Some(doc.save(overwrite).map(|f| format!("saved: {f}")));
+            self.said = Some(
+                doc.save(overwrite, lang)
+                    .map(|f| lang.t_with("file-actions-saved-to", &[("file", &f)])),
+            );
         }
     }
 
@@ -146,14 +149,17 @@ impl Editor {
                     .button(lang.t("file-actions-overwrite-it-with-my-edits"))
                     .clicked()
                 {
-                    self.said = Some(doc.save(true).map(|f| format!("saved: {f}")));
+                    self.said = Some(
+                        doc.save(true, lang)
+                            .map(|f| lang.t_with("file-actions-saved-to", &[("file", &f)])),
+                    );
                 }
                 if ui
                     .button(lang.t("file-actions-load-it-from-disk-undo"))
                     .clicked()
                 {
                     self.said = Some(
-                        doc.load_from_disk()
+                        doc.load_from_disk(lang)
                             .map(|()| lang.t("file-actions-loaded-from-disk").to_owned()),
                     );
                     changed = true;

@@ -133,10 +133,11 @@ impl NewLesson {
 
     /// The lesson's text, written (the desktop) and read back.
     fn make(&self, session: &Session, current: Option<&str>) -> Result<Made, String> {
+        let lang = session.lang;
         let file = PathBuf::from(self.path.trim());
         let text = match &self.from {
             From::Screen => {
-                let source = current.ok_or("nothing on screen to start from")?;
+                let source = current.ok_or(lang.t("new-nothing-on-screen"))?;
                 start::from_scene(source, &file, &first_step(session)?)?
             }
             // The lesson open, as it is on screen.
@@ -144,27 +145,26 @@ impl NewLesson {
                 start::renamed(current.unwrap_or_default(), &file)?
             }
             From::Builtin(name) => {
-                let (_, text) = library::named(name).ok_or("choose a built-in lesson")?;
+                let (_, text) =
+                    library::named(name).ok_or(lang.t("new-choose-a-built-in-lesson"))?;
                 start::renamed(text, &file)?
             }
             From::Mesh => {
                 let mesh = Path::new(self.mesh.trim());
                 if self.mesh.trim().is_empty() {
-                    return Err("name the mesh file (.obj)".to_owned());
+                    return Err(lang.t("new-name-the-mesh-file").to_owned());
                 }
                 start::from_mesh(&file, &super::file::mesh_from(&file, mesh))?
             }
         };
         let (doc, file) = if crate::app::platform::WRITES_FILES {
             if file.exists() {
-                return Err(format!(
-                    "{} exists already: choose another name (it was left as it is)",
-                    file.display()
-                ));
+                return Err(lang.t_with("new-exists-already", &[("file", &file.display())]));
             }
             if let Some(dir) = file.parent().filter(|d| !d.as_os_str().is_empty()) {
-                std::fs::create_dir_all(dir)
-                    .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+                std::fs::create_dir_all(dir).map_err(|e| {
+                    lang.t_with("new-cannot-create", &[("dir", &dir.display()), ("why", &e)])
+                })?;
             }
             let doc = lesson::parse_document(
                 &text,
@@ -184,7 +184,7 @@ impl NewLesson {
             .as_ref()
             .map_or_else(|| self.path.trim().to_owned(), |f| f.display().to_string());
         Ok(Made {
-            said: format!("new lesson: {source}"),
+            said: lang.t_with("new-made", &[("source", &source)]),
             doc,
             source,
             file,
@@ -199,9 +199,10 @@ impl NewLesson {
 /// the lesson was made is the animation's, not one the teacher set); placeholder words for the
 /// teacher to replace (`check` warns of each one left).
 fn first_step(session: &Session) -> Result<lesson::Step, String> {
-    let player = session.lesson.as_ref().ok_or("no lesson open")?;
+    let no_lesson = || session.lang.t("new-no-lesson-open").to_owned();
+    let player = session.lesson.as_ref().ok_or_else(no_lesson)?;
     // What the teacher changed: what differs from the step as it plays now.
-    let mut step = crate::app::record::recorded_step(session).ok_or("no lesson open")?;
+    let mut step = crate::app::record::recorded_step(session).ok_or_else(no_lesson)?;
     let mut start = player.lesson.spec_playing(player.step, 0.0);
     for (name, value) in &step.set {
         lesson::param::apply(&mut start, name, value)?;

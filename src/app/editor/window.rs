@@ -66,7 +66,7 @@ impl Editor {
         self.words_for = None;
         self.marks = None;
         self.drags.clear();
-        match Edited::open(&session.source, file, None) {
+        match Edited::open(&session.source, file, None, session.lang) {
             Ok(doc) => {
                 if doc.recovery.is_some() {
                     self.open = true;
@@ -85,10 +85,16 @@ impl Editor {
 
     /// Takes up `text` as the lesson the session now has open under the name `source` (a
     /// lesson just made, or a file dropped on the page), saved into `file` when there is one.
-    pub fn adopt(&mut self, source: &str, file: Option<&std::path::Path>, text: String) {
+    pub fn adopt(
+        &mut self,
+        source: &str,
+        file: Option<&std::path::Path>,
+        text: String,
+        lang: Lang,
+    ) {
         self.words_for = None;
         self.marks = None;
-        match Edited::open(source, file, Some(text)) {
+        match Edited::open(source, file, Some(text), lang) {
             Ok(doc) => self.doc = Some(doc),
             Err(e) => self.said = Some(Err(e)),
         }

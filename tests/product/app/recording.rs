@@ -188,7 +188,7 @@ fn a_lesson_is_recorded_arranged_and_saved_in_the_editor() {
 fn saved_as_played(h: &mut Harness<'_, PipelensApp>, file: &std::path::Path, before: &str) {
     h.get_by_label("Save").click_accesskit();
     h.run_steps(3);
-    assert!(h.query_by_label_contains("saved:").is_some());
+    assert!(h.query_by_label_contains("Saved: ").is_some());
     let dir = file.parent().expect("a folder");
     let saved = std::fs::read_to_string(file).expect("reads");
     let back = pipelens::lesson::script::parse_lesson(&saved, "lesson.toml", dir)
@@ -298,6 +298,58 @@ fn a_new_lesson_starts_from_a_mesh_of_ones_own() {
     assert_eq!(super::lesson_of(&h).id, "my-tetra");
     let o = crate::support::pipelens(dir.path(), &["check", "my-tetra.toml"]);
     assert!(o.status.success(), "{}", crate::support::text(&o));
+}
+
+/// The editor's refusals are said in the language shown: in Chinese, a new lesson over a file
+/// that exists already is refused in Chinese, the file left as it was, and so is one with no
+/// mesh named (the words are zh-Hans.ftl's `new-exists-already` and `new-name-the-mesh-file`).
+#[test]
+fn the_editors_refusals_are_said_in_the_language_shown() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let mesh = dir.path().join("tetra.obj");
+    std::fs::write(&mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").expect("written");
+    let file = dir.path().join("taken.toml");
+    std::fs::write(&file, "# a teacher's own file\n").expect("written");
+    let mut h = super::lesson_harness(None);
+    h.run_steps(2);
+    h.state_mut().session.source = pipelens::lesson::DEFAULT_LESSON_NAME.to_owned();
+    h.state_mut()
+        .session
+        .apply(Command::View(pipelens::app::command::ViewCommand::SetLang(
+            pipelens::vocabulary::Lang::ZH,
+        )));
+    h.key_press(egui::Key::R);
+    h.run_steps(2);
+    h.get_by_label("新建课程…").click_accesskit();
+    h.run_steps(2);
+    h.get_by_label("从你自己的网格开始（.obj；也可以把文件拖到窗口上）：")
+        .click_accesskit();
+    h.run_steps(2);
+    let n = h.get_all_by_role(Role::TextInput).count();
+    for (k, text) in [
+        (n - 2, mesh.display().to_string()),
+        (n - 1, file.display().to_string()),
+    ] {
+        replace_in(&mut h, k, &text);
+    }
+    h.get_by_label("新建课程").click_accesskit();
+    h.run_steps(4);
+    let taken = format!(
+        "{} 已经存在：请换一个名字（原文件保持不变）",
+        file.display()
+    );
+    assert!(h.query_by_label_contains(&taken).is_some(), "no {taken:?}");
+    assert_eq!(
+        std::fs::read_to_string(&file).expect("still there"),
+        "# a teacher's own file\n"
+    );
+    replace_in(&mut h, n - 2, " ");
+    h.get_by_label("新建课程").click_accesskit();
+    h.run_steps(4);
+    assert!(
+        h.query_by_label_contains("请写出网格文件（.obj）的名字")
+            .is_some()
+    );
 }
 
 /// A move the checker would reject is not made: lesson 05's off-centre frustum (step 4) moved
