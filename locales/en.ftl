@@ -486,6 +486,7 @@ params-texture-filter = texture filter
 params-nearest = nearest
 params-bilinear = bilinear
 params-nearest-level = nearest level
+params-mipmap = mipmap
 params-trilinear = trilinear
 params-summed-area-table = summed-area table
 params-log-max-uw-vh-x = λ = log₂ max(|∂(uw, vh)/∂x|, |∂(uw, vh)/∂y|): the level whose texels are the size of a pixel.

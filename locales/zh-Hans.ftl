@@ -483,6 +483,7 @@ params-texture-filter = 纹理过滤
 params-nearest = 最近邻
 params-bilinear = 双线性
 params-nearest-level = 最近层
+params-mipmap = Mipmap
 params-trilinear = 三线性
 params-summed-area-table = 求和面积表
 params-log-max-uw-vh-x = λ = log₂ max(|∂(uw, vh)/∂x|, |∂(uw, vh)/∂y|)：纹素大小与像素相当的层级。

@@ -45,6 +45,9 @@ pub struct ShaderEditor {
     /// The programs the sources were last taken from or applied as: when the scene's differ (a
     /// lesson step brought its own), the sources are taken from the scene again.
     shown: Option<Arc<Programs>>,
+    /// The language the sources' comments were last put in: when the interface's changes, the
+    /// sources not edited since are shown in the new one.
+    shown_in: Option<Lang>,
     /// The debugger: the step shown of the run at the inspected pixel or vertex, breakpoints.
     pub debugger: super::debugger::Debugger,
     /// The student's sources before "pipelens' own" replaced them, until they edit again.
@@ -87,6 +90,7 @@ impl Default for ShaderEditor {
             errors: Vec::new(),
             saved: None,
             shown: None,
+            shown_in: None,
             debugger: super::debugger::Debugger::default(),
             before_own: None,
         }
@@ -154,6 +158,29 @@ impl ShaderEditor {
             .as_ref()
             .map_or(&none, |p| &p.lesson.comments);
         let local = |source: &str| crate::vocabulary::glsl::localize(source, session.lang, table);
+        // The sources start as pipelens' own in English; when the language changes, what was
+        // not edited is shown in the new one.
+        let before = self.shown_in.unwrap_or(Lang::EN);
+        if before != session.lang {
+            let was = |source: &str| crate::vocabulary::glsl::localize(source, before, table);
+            let (vertex, fragment) = self
+                .shown
+                .as_ref()
+                .map_or((BUILTIN_VERTEX, BUILTIN_FRAGMENT), |p| {
+                    (p.vertex.source.as_str(), p.fragment.source.as_str())
+                });
+            for (text, source) in [(&mut self.vertex, vertex), (&mut self.fragment, fragment)] {
+                if *text == was(source) {
+                    *text = local(source);
+                }
+            }
+            for h in &mut self.hooks {
+                if h.source == was(&h.shown) {
+                    h.source = local(&h.shown);
+                }
+            }
+        }
+        self.shown_in = Some(session.lang);
         for kind in HookKind::ALL {
             let running = session.spec.scene.hook(kind).map(|h| h.source.clone());
             let at = self.hooks.iter().position(|h| h.kind == kind);

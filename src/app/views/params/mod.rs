@@ -371,7 +371,7 @@ fn texture_sampling(ui: &mut Ui, s: &mut pipeline::settings::RenderSettings, lan
         ui.selectable_value(&mut smp.filter, Filter::Bilinear, lang.t("params-bilinear"));
     });
     ui.horizontal_wrapped(|ui| {
-        ui.label("mipmap");
+        ui.label(lang.t("params-mipmap"));
         for (m, n) in [
             (Mipmap::None, lang.t("params-none")),
             (Mipmap::Nearest, lang.t("params-nearest-level")),
