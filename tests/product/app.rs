@@ -17,6 +17,7 @@ mod keys;
 mod labs;
 mod lesson_play;
 mod library;
+mod new_lesson;
 mod own_uniforms;
 mod panels;
 mod params;
