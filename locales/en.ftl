@@ -165,10 +165,12 @@ words-still-needs = Still needs:
 
 ## src/app/export_task.rs
 
-export-task-handout-saved = Handout saved:
-export-task-exported-to = Exported to
-export-task-your-work-saved = Your work saved:
-export-task-steps-with-work = steps with work
+export-task-handout-saved = Handout saved: { $file }
+export-task-exported-to = Exported to { $dir }: { $files }
+export-task-your-work-saved = Your work saved: { $file } ({ $steps ->
+        [one] 1 step with work
+       *[other] { $steps } steps with work
+    })
 
 ## src/app/library.rs
 
@@ -684,6 +686,9 @@ handout-exercise-pipelens-own-what-your-code = pipelens' own, what your code mus
 
 lesson-exercise = Exercise:
 lesson-the-debugger-at-pixel = The debugger at pixel
+lesson-cannot-create-the-folder = cannot create the folder { $dir }
+lesson-step-not-drawn = step { $step }: { $why }
+lesson-step-watch = step { $step }'s watch
 
 ## src/export/picture.rs
 

@@ -162,10 +162,9 @@ words-still-needs = 还缺少：
 
 ## src/app/export_task.rs
 
-export-task-handout-saved = 讲义已保存：
-export-task-exported-to = 已导出到
-export-task-your-work-saved = 你的作业已保存：
-export-task-steps-with-work = 个步骤有作业
+export-task-handout-saved = 讲义已保存：{ $file }
+export-task-exported-to = 已导出到 { $dir }：{ $files }
+export-task-your-work-saved = 你的作业已保存：{ $file }（{ $steps } 个步骤有作业）
 
 ## src/app/library.rs
 
@@ -675,6 +674,9 @@ handout-exercise-pipelens-own-what-your-code = pipelens 自带的结果：你的
 
 lesson-exercise = 练习：
 lesson-the-debugger-at-pixel = 调试器：像素
+lesson-cannot-create-the-folder = 无法创建文件夹 { $dir }
+lesson-step-not-drawn = 第 { $step } 步：{ $why }
+lesson-step-watch = 第 { $step } 步的监视
 
 ## src/export/picture.rs
 

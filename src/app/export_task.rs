@@ -95,7 +95,7 @@ impl PipelensApp {
         self.export_message = Some(match result {
             Ok(file) => (
                 true,
-                format!("{} {file}", lang.t("export-task-handout-saved")),
+                lang.t_with("export-task-handout-saved", &[("file", &file)]),
             ),
             Err(e) => (false, e),
         });
@@ -138,16 +138,20 @@ impl PipelensApp {
         self.export_message = Some(match result {
             Ok(files) => (
                 true,
-                format!(
-                    "{} {}: {}",
-                    lang.t("export-task-exported-to"),
-                    self.export_dir,
-                    files
-                        .iter()
-                        .filter_map(|p| p.file_name())
-                        .map(|n| n.to_string_lossy())
-                        .collect::<Vec<_>>()
-                        .join(", ")
+                lang.t_with(
+                    "export-task-exported-to",
+                    &[
+                        ("dir", &self.export_dir),
+                        (
+                            "files",
+                            &files
+                                .iter()
+                                .filter_map(|p| p.file_name())
+                                .map(|n| n.to_string_lossy())
+                                .collect::<Vec<_>>()
+                                .join(lang.t("list-separator")),
+                        ),
+                    ],
                 ),
             ),
             Err(e) => (false, e),
@@ -174,11 +178,9 @@ impl PipelensApp {
         self.export_message = Some(match result {
             Ok(file) => (
                 true,
-                format!(
-                    "{} {file} ({} {})",
-                    lang.t("export-task-your-work-saved"),
-                    work.steps.len(),
-                    lang.t("export-task-steps-with-work")
+                lang.t_with(
+                    "export-task-your-work-saved",
+                    &[("file", &file), ("steps", &work.steps.len())],
                 ),
             ),
             Err(e) => (false, e),

@@ -99,8 +99,12 @@ pub fn export_lesson(
     progress(steps, steps + 1, "index.html");
     let html = handout::html(lesson, &pages, opts.lang, opts.answers);
     let target = opts.out.join("index.html");
-    std::fs::create_dir_all(&opts.out)
-        .with_context(|| format!("cannot create the folder {}", opts.out.display()))?;
+    std::fs::create_dir_all(&opts.out).with_context(|| {
+        opts.lang.t_with(
+            "lesson-cannot-create-the-folder",
+            &[("dir", &opts.out.display())],
+        )
+    })?;
     super::write_atomically(&target, html.as_bytes())?;
     written.push(target);
     Ok(Exported { written, warnings })
@@ -346,9 +350,9 @@ struct Drawn {
 /// Step `k` at moment `t` of its animation (`None`: before it), rendered and drawn.
 fn draw(lesson: &Lesson, k: usize, opts: &LessonExport, t: Option<f32>) -> Result<Drawn> {
     let spec = spec_of(lesson, k, opts, t)?;
-    let capture = pipeline::render(&spec.scene, &spec.settings)
-        .with_context(|| format!("rendering step {}", k + 1))?;
-    let variants = variants(lesson, k, &spec)?;
+    let capture =
+        pipeline::render(&spec.scene, &spec.settings).map_err(|e| not_drawn(k, &e, opts.lang))?;
+    let variants = variants(lesson, k, &spec, opts.lang)?;
     let rendered = Rendered {
         spec: &spec,
         capture: &capture,
@@ -398,20 +402,37 @@ fn spec_of(lesson: &Lesson, k: usize, opts: &LessonExport, t: Option<f32>) -> Re
         .or(lesson.steps[k].pixel)
         .filter(|&(x, y)| x < w && y < h);
     if let Some(p) = spec.settings.problems().first() {
-        anyhow::bail!("{p}");
+        anyhow::bail!(crate::vocabulary::run::settings_problem(p, opts.lang));
     }
     // A step that draws a variable over the frame keeps it: its picture shows it beside.
     if let Some(watch) = &lesson.steps[k].watch {
         spec.scene = spec
             .scene
             .watching(watch)
-            .with_context(|| format!("step {}'s watch", k + 1))?;
+            .with_context(|| opts.lang.t_with("lesson-step-watch", &[("step", &(k + 1))]))?;
     }
     Ok(spec)
 }
 
+/// "step k: why it could not be drawn", in `lang` (the student's code that stopped, at its
+/// line, or the scene's problems).
+fn not_drawn(k: usize, e: &pipeline::RenderError, lang: Lang) -> anyhow::Error {
+    anyhow::anyhow!(lang.t_with(
+        "lesson-step-not-drawn",
+        &[
+            ("step", &(k + 1)),
+            ("why", &crate::vocabulary::run::render_error(e, lang)),
+        ],
+    ))
+}
+
 /// The compared settings' captures, when step `k` compares.
-fn variants(lesson: &Lesson, k: usize, spec: &SceneSpec) -> Result<Vec<(String, FrameCapture)>> {
+fn variants(
+    lesson: &Lesson,
+    k: usize,
+    spec: &SceneSpec,
+    lang: Lang,
+) -> Result<Vec<(String, FrameCapture)>> {
     let Some(c) = lesson.steps[k].compare else {
         return Ok(Vec::new());
     };
@@ -420,7 +441,7 @@ fn variants(lesson: &Lesson, k: usize, spec: &SceneSpec) -> Result<Vec<(String, 
         .map(|(label, settings)| {
             pipeline::render(&spec.scene, &settings)
                 .map(|cap| (label, cap))
-                .with_context(|| format!("rendering step {}", k + 1))
+                .map_err(|e| not_drawn(k, &e, lang))
         })
         .collect()
 }

@@ -451,3 +451,54 @@ fn a_profile_compares_the_three_shading_frequencies() {
     assert!(!o.status.success());
     assert!(text(&o).contains("expected four numbers"), "{}", text(&o));
 }
+
+/// A lesson whose step's code stops while it runs (lesson 24 with an endless loop put at the
+/// start of step 1's fragment shader's `main`) is not exported: the error names the step, the
+/// object, the file, the line and why, in the language asked for (`--lang zh`: the zh-Hans
+/// catalog's `lesson-step-not-drawn`, `run-cannot-draw`, `run-code-in-file` and
+/// `compile-endless-loop`; in English the core's own sentence), and nothing is written.
+#[test]
+fn a_step_whose_code_stops_is_not_exported_and_says_why_in_its_language() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let lesson =
+        std::fs::read_to_string(repo().join("lessons/24-shader-programs.toml")).expect("lesson 24");
+    let endless = "void main() {\n    float f = 0.0;\n    while (f >= 0.0) { f += 1.0; }\n";
+    let broken = lesson.replacen("void main() {\n", endless, 1);
+    let line = broken[..broken.find("    while (f").expect("the loop")]
+        .lines()
+        .count()
+        + 1;
+    std::fs::write(dir.path().join("broken.toml"), broken).expect("written");
+    let out = dir.path().join("out");
+    for (lang, said) in [
+        (
+            "zh",
+            format!(
+                "第 1 步：无法绘制场景：物体 sphere 的片元着色器，broken.toml，第 {line} 行第 5 列：循环执行超过了 65536 步"
+            ),
+        ),
+        (
+            "en",
+            format!(
+                "step 1: the scene cannot be drawn: fragment shader of sphere, broken.toml, line {line}, column 5: the loop ran more than 65536 steps"
+            ),
+        ),
+    ] {
+        let o = pipelens(
+            dir.path(),
+            &[
+                "export",
+                "broken.toml",
+                "--step",
+                "1",
+                "--lang",
+                lang,
+                "--out",
+                "out",
+            ],
+        );
+        assert!(!o.status.success());
+        assert!(text(&o).contains(&said), "{lang}: {}", text(&o));
+        assert!(!out.exists(), "nothing is written");
+    }
+}

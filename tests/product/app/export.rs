@@ -34,6 +34,10 @@ fn the_export_menu_writes_the_lessons_handout_and_slides_in_the_interfaces_langu
         h.run_steps(1);
     }
     assert!(!h.state().exporting(), "the export finished");
+    h.run_steps(2);
+    // Said in Chinese, with its full-width colon (zh-Hans.ftl's `export-task-exported-to`).
+    let said = format!("已导出到 {}：", dir.path().display());
+    assert!(h.query_by_label_contains(&said).is_some(), "no {said:?}");
     let html = std::fs::read_to_string(dir.path().join("index.html")).expect("index.html");
     assert!(
         html.contains("<html lang=\"zh-Hans\">"),
@@ -88,6 +92,11 @@ fn export_my_work_writes_a_file_grade_reads() {
     h.run_steps(2);
     h.get_by_label("Export my work").click();
     h.run_steps(2);
+    // One step has work, the lab's: the plural's `one` (en.ftl's `export-task-your-work-saved`).
+    assert!(
+        h.query_by_label_contains("-work.toml (1 step with work)")
+            .is_some()
+    );
     let file = dir.path().join("10-blinn-phong-work.toml");
     let text = std::fs::read_to_string(&file).expect("the work file");
     let work = pipelens::lab::submission::Work::from_text(&text).expect("reads back");
