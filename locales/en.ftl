@@ -172,6 +172,10 @@ export-task-your-work-saved = Your work saved: { $file } ({ $steps ->
        *[other] { $steps } steps with work
     })
 
+## src/app/platform.rs
+
+platform-the-browser-refused-the-download = the browser refused the download: { $why }
+
 ## src/app/library.rs
 
 library-cannot-read-the-file = cannot read the file: { $why }
@@ -682,11 +686,15 @@ grade-no = no
 handout-exercise-the-shaders-this-step-runs = The shaders this step runs (on yellow: the lines changed from the step before):
 handout-exercise-pipelens-own-what-your-code = pipelens' own, what your code must draw
 
+## src/export/mod.rs
+
+export-cannot-create-the-folder = cannot create the folder { $dir }
+export-cannot-write = cannot write { $file }
+
 ## src/export/lesson.rs
 
 lesson-exercise = Exercise:
 lesson-the-debugger-at-pixel = The debugger at pixel
-lesson-cannot-create-the-folder = cannot create the folder { $dir }
 lesson-step-not-drawn = step { $step }: { $why }
 lesson-step-watch = step { $step }'s watch
 

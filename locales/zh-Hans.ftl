@@ -166,6 +166,10 @@ export-task-handout-saved = 讲义已保存：{ $file }
 export-task-exported-to = 已导出到 { $dir }：{ $files }
 export-task-your-work-saved = 你的作业已保存：{ $file }（{ $steps } 个步骤有作业）
 
+## src/app/platform.rs
+
+platform-the-browser-refused-the-download = 浏览器拒绝了下载：{ $why }
+
 ## src/app/library.rs
 
 library-cannot-read-the-file = 无法读取文件：{ $why }
@@ -670,11 +674,15 @@ grade-no = 否
 handout-exercise-the-shaders-this-step-runs = 本步骤运行的着色器（黄底：与上一步相比改动的行）：
 handout-exercise-pipelens-own-what-your-code = pipelens 自带的结果：你的代码要画出的画面
 
+## src/export/mod.rs
+
+export-cannot-create-the-folder = 无法创建文件夹 { $dir }
+export-cannot-write = 无法写入 { $file }
+
 ## src/export/lesson.rs
 
 lesson-exercise = 练习：
 lesson-the-debugger-at-pixel = 调试器：像素
-lesson-cannot-create-the-folder = 无法创建文件夹 { $dir }
 lesson-step-not-drawn = 第 { $step } 步：{ $why }
 lesson-step-watch = 第 { $step } 步的监视
 

@@ -36,6 +36,7 @@ impl PipelensApp {
             max_records: 200_000,
             pixel: self.session.selection.pixel,
             cancel: crate::export::Cancel::default(),
+            lang: self.session.lang,
         };
         self.export_cancel = Some(opts.cancel.clone());
         let (tx, rx) = channel();
@@ -90,7 +91,7 @@ impl PipelensApp {
         let result = crate::export::lesson::handout_html(&lesson, &opts)
             .map_err(|e| format!("{e:#}"))
             .and_then(|html| {
-                super::platform::download(&name, html.as_bytes(), "text/html", &opts.out)
+                super::platform::download(&name, html.as_bytes(), "text/html", (&opts.out, lang))
             });
         self.export_message = Some(match result {
             Ok(file) => (
@@ -173,7 +174,7 @@ impl PipelensApp {
         let name = format!("{}-work.toml", player.lesson.id);
         let dir = PathBuf::from(self.export_dir.trim());
         let result = work.to_text().and_then(|text| {
-            super::platform::download(&name, text.as_bytes(), "application/toml", &dir)
+            super::platform::download(&name, text.as_bytes(), "application/toml", (&dir, lang))
         });
         self.export_message = Some(match result {
             Ok(file) => (

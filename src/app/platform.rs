@@ -9,6 +9,8 @@
 
 use std::sync::{Arc, Mutex};
 
+use crate::vocabulary::Lang;
+
 /// A dropped file's name and its bytes (or why they could not be read).
 type Read = (String, Result<Vec<u8>, String>);
 
@@ -92,7 +94,7 @@ pub fn report(ctx: &egui::Context, title: &str, frame_ms: Option<f64>, share: f3
 /// on the words' container and the document), and names eframe's text agent — the hidden
 /// `<input>` beside the canvas that takes the keys typed — in that language (WCAG 4.1.2: a form
 /// field has a name); nothing on the desktop, whose screen readers read AccessKit's tree.
-pub fn show_page_words(changed: &[(&'static str, String)], lang: crate::vocabulary::Lang) {
+pub fn show_page_words(changed: &[(&'static str, String)], lang: Lang) {
     #[cfg(target_arch = "wasm32")]
     if let Some(document) = web_sys::window()
         .and_then(|w| w.document())
@@ -173,21 +175,26 @@ pub fn download(
     name: &str,
     bytes: &[u8],
     mime: &str,
-    dir: &std::path::Path,
+    (dir, lang): (&std::path::Path, Lang),
 ) -> Result<String, String> {
     #[cfg(not(target_arch = "wasm32"))]
     {
         let _ = mime;
         std::fs::create_dir_all(dir).map_err(|e| e.to_string())?;
         let path = dir.join(name);
-        crate::export::write_atomically(&path, bytes).map_err(|e| format!("{e:#}"))?;
+        crate::export::write_atomically(&path, bytes, lang).map_err(|e| format!("{e:#}"))?;
         Ok(path.display().to_string())
     }
     #[cfg(target_arch = "wasm32")]
     {
         use wasm_bindgen::JsCast as _;
         let _ = dir;
-        let fail = |e: wasm_bindgen::JsValue| format!("the browser refused the download: {e:?}");
+        let fail = |e: wasm_bindgen::JsValue| {
+            lang.t_with(
+                "platform-the-browser-refused-the-download",
+                &[("why", &format!("{e:?}"))],
+            )
+        };
         let parts = js_sys::Array::of1(&js_sys::Uint8Array::from(bytes));
         let options = web_sys::BlobPropertyBag::new();
         options.set_type(mime);
@@ -221,7 +228,9 @@ pub fn keep_unsaved(key: &std::path::Path, text: Option<&str>) -> Result<(), Str
     {
         match text {
             Some(t) => {
-                crate::export::write_atomically(key, t.as_bytes()).map_err(|e| format!("{e:#}"))
+                // The recovery copy's failure is not shown (the edits stay in the editor).
+                crate::export::write_atomically(key, t.as_bytes(), Lang::EN)
+                    .map_err(|e| format!("{e:#}"))
             }
             None if key.exists() => std::fs::remove_file(key).map_err(|e| e.to_string()),
             None => Ok(()),

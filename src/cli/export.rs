@@ -131,7 +131,7 @@ pub(super) fn export(
         &opts.out,
         &files,
         &mut |done, all, name| bar.show(done, all, name),
-        &opts.cancel,
+        (&opts.cancel, opts.lang),
     )?;
     drop(bar);
     say!(
@@ -195,7 +195,10 @@ pub(super) fn export_step_watch(
         out,
         &files,
         &mut |_, _, _| {},
-        &crate::export::Cancel::default(),
+        (
+            &crate::export::Cancel::default(),
+            crate::vocabulary::Lang::EN,
+        ),
     )?;
     say_watch(picture);
     for p in &written {

@@ -93,13 +93,13 @@ pub fn run(req: &GradeRequest) -> Result<()> {
     drop(bar);
     print_table(&rows, req.lang);
     if let Some(csv) = &req.csv {
-        crate::export::write_atomically(csv, csv_text(&rows).as_bytes())?;
+        crate::export::write_atomically(csv, csv_text(&rows).as_bytes(), req.lang)?;
         say!("Wrote {}", csv.display());
     }
     if let Some(json) = &req.gradescope {
         let text = serde_json::to_string_pretty(&gradescope_results(&rows, req.lang))
             .context("cannot encode results.json")?;
-        crate::export::write_atomically(json, text.as_bytes())?;
+        crate::export::write_atomically(json, text.as_bytes(), req.lang)?;
         say!("Wrote {}", json.display());
     }
     Ok(())

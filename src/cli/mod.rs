@@ -285,6 +285,7 @@ pub fn run(cli: Cli) -> Result<ExitCode> {
                 max_records,
                 pixel,
                 cancel: export::cancel_on_interrupt(),
+                lang,
             };
             export::export(
                 scene.as_deref(),

@@ -91,7 +91,7 @@ pub fn export_lesson(
                 &opts.out.join(folder),
                 &files,
                 &mut |_, _, _| {},
-                &opts.cancel,
+                (&opts.cancel, opts.lang),
             )?);
         }
         pages.push(page);
@@ -101,11 +101,11 @@ pub fn export_lesson(
     let target = opts.out.join("index.html");
     std::fs::create_dir_all(&opts.out).with_context(|| {
         opts.lang.t_with(
-            "lesson-cannot-create-the-folder",
+            "export-cannot-create-the-folder",
             &[("dir", &opts.out.display())],
         )
     })?;
-    super::write_atomically(&target, html.as_bytes())?;
+    super::write_atomically(&target, html.as_bytes(), opts.lang)?;
     written.push(target);
     Ok(Exported { written, warnings })
 }
@@ -199,6 +199,7 @@ fn build_step(lesson: &Lesson, k: usize, opts: &LessonExport) -> Result<BuiltSte
             max_records: opts.max_records,
             pixel: opts.pixel,
             cancel: opts.cancel.clone(),
+            lang: opts.lang,
         };
         let (files, textures) =
             super::lesson_data::data_files(lesson, k, export, &capture, &variants)?;

@@ -28,6 +28,8 @@ use pipeline::buffers::BufferKind;
 use pipeline::capture::FrameCapture;
 use pipeline::overlay::OverlayKind;
 
+use crate::vocabulary::Lang;
+
 pub use json::capture_json;
 pub use watch::watch_files;
 
@@ -76,6 +78,8 @@ pub struct ExportOptions {
     pub pixel: Option<(u32, u32)>,
     /// Stops the export between two files.
     pub cancel: Cancel,
+    /// The language a failure is said in.
+    pub lang: Lang,
 }
 
 /// One file of an export.
@@ -256,10 +260,11 @@ pub fn export_capture(
     progress: &mut dyn FnMut(usize, usize, &str),
 ) -> Result<Vec<PathBuf>> {
     let files = encode_capture(capture, opts)?;
-    write_files(&opts.out, &files, progress, &opts.cancel)
+    write_files(&opts.out, &files, progress, (&opts.cancel, opts.lang))
 }
 
-/// Writes files into a folder, each through a temporary file and a rename.
+/// Writes files into a folder, each through a temporary file and a rename; a failure is said
+/// in `lang`.
 ///
 /// # Errors
 /// When the folder cannot be created, a file cannot be written, or `cancel` was set.
@@ -267,15 +272,19 @@ pub fn write_files(
     dir: &Path,
     files: &[ExportFile],
     progress: &mut dyn FnMut(usize, usize, &str),
-    cancel: &Cancel,
+    (cancel, lang): (&Cancel, Lang),
 ) -> Result<Vec<PathBuf>> {
-    std::fs::create_dir_all(dir)
-        .with_context(|| format!("cannot create the folder {}", dir.display()))?;
+    std::fs::create_dir_all(dir).with_context(|| {
+        lang.t_with(
+            "export-cannot-create-the-folder",
+            &[("dir", &dir.display())],
+        )
+    })?;
     let mut written = Vec::with_capacity(files.len());
     for (i, f) in files.iter().enumerate() {
         cancel.check()?;
         let target = dir.join(&f.name);
-        write_atomically(&target, &f.bytes)?;
+        write_atomically(&target, &f.bytes, lang)?;
         written.push(target);
         progress(i + 1, files.len(), &f.name);
     }
@@ -283,11 +292,11 @@ pub fn write_files(
 }
 
 /// Writes `bytes` to `target` whole or not at all: a temporary file in the same folder, flushed
-/// to disk, then renamed over the target.
+/// to disk, then renamed over the target; a failure is said in `lang`.
 ///
 /// # Errors
 /// When the temporary file cannot be created, written or renamed (it is removed then).
-pub fn write_atomically(target: &Path, bytes: &[u8]) -> Result<()> {
+pub fn write_atomically(target: &Path, bytes: &[u8], lang: Lang) -> Result<()> {
     let name = target
         .file_name()
         .map_or_else(|| "file".into(), |n| n.to_string_lossy().into_owned());
@@ -300,7 +309,8 @@ pub fn write_atomically(target: &Path, bytes: &[u8]) -> Result<()> {
     })();
     if let Err(e) = result {
         let _ = std::fs::remove_file(&tmp);
-        return Err(e).with_context(|| format!("cannot write {}", target.display()));
+        return Err(e)
+            .with_context(|| lang.t_with("export-cannot-write", &[("file", &target.display())]));
     }
     Ok(())
 }

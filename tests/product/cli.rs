@@ -57,6 +57,20 @@ fn an_unwritable_output_is_a_clear_error() {
         "{}",
         text(&o)
     );
+    // In the language asked for (zh-Hans.ftl's `export-cannot-create-the-folder`).
+    let o = pipelens(
+        dir.path(),
+        &[
+            "export",
+            "--lang",
+            "zh",
+            "--out",
+            file.to_str().expect("utf-8"),
+        ],
+    );
+    assert!(!o.status.success());
+    let said = format!("无法创建文件夹 {}", file.display());
+    assert!(text(&o).contains(&said), "{}", text(&o));
 }
 
 #[test]

@@ -208,7 +208,7 @@ fn a_cancelled_export_stops_between_files_and_leaves_only_whole_ones() {
                 flag.cancel();
             }
         },
-        &cancel,
+        (&cancel, pipelens::vocabulary::Lang::EN),
     )
     .expect_err("cancelled");
     assert!(
@@ -336,6 +336,7 @@ fn exported_default_scene(
         max_records: 10,
         pixel: None,
         cancel: pipelens::export::Cancel::default(),
+        lang: pipelens::vocabulary::Lang::EN,
     };
     pipelens::export::export_capture(&capture, &opts, &mut |_, _, _| {}).expect("exports");
     (capture, dir)

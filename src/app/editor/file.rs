@@ -118,8 +118,12 @@ impl Edited {
                 |n| n.to_string_lossy().into_owned(),
             );
             let name = name.trim_end_matches(" (built in)").to_owned();
-            let done =
-                platform::download(&name, text.as_bytes(), "application/toml", Path::new("."))?;
+            let done = platform::download(
+                &name,
+                text.as_bytes(),
+                "application/toml",
+                (Path::new("."), lang),
+            )?;
             self.draft.mark_saved();
             self.drop_recovery();
             return Ok(done);
@@ -129,7 +133,8 @@ impl Edited {
             self.ask_overwrite = true;
             return Err(lang.t_with("file-changed-since-opened", &[("file", &file.display())]));
         }
-        crate::export::write_atomically(&file, text.as_bytes()).map_err(|e| format!("{e:#}"))?;
+        crate::export::write_atomically(&file, text.as_bytes(), lang)
+            .map_err(|e| format!("{e:#}"))?;
         self.disk = Some(text);
         self.disk_changed = false;
         self.ask_overwrite = false;

@@ -172,7 +172,7 @@ impl NewLesson {
                 file.parent().unwrap_or(Path::new(".")),
             )
             .map_err(|e| e.to_string())?;
-            crate::export::write_atomically(&file, text.as_bytes())
+            crate::export::write_atomically(&file, text.as_bytes(), lang)
                 .map_err(|e| format!("{e:#}"))?;
             (doc, Some(file))
         } else {

@@ -267,7 +267,7 @@ pub fn ui(
             .on_hover_text(lang.t("shader-writes-shader-vert-and-shader"))
             .clicked()
         {
-            editor.saved = Some(save(editor, save_dir));
+            editor.saved = Some(save(editor, save_dir, lang));
         }
     });
     match &editor.saved {
@@ -467,7 +467,7 @@ fn tab_name(tab: Tab, lang: Lang) -> String {
 }
 
 /// Both sources as files (downloads in the browser): what was written, or why not.
-fn save(editor: &ShaderEditor, dir: &std::path::Path) -> Result<String, String> {
+fn save(editor: &ShaderEditor, dir: &std::path::Path, lang: Lang) -> Result<String, String> {
     let mut written = Vec::new();
     let mut files = vec![
         ("shader.vert".to_owned(), &editor.vertex),
@@ -481,7 +481,7 @@ fn save(editor: &ShaderEditor, dir: &std::path::Path) -> Result<String, String> 
             &name,
             text.as_bytes(),
             "text/plain",
-            dir,
+            (dir, lang),
         )?);
     }
     Ok(written.join(", "))
