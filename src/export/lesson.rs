@@ -99,12 +99,7 @@ pub fn export_lesson(
     progress(steps, steps + 1, "index.html");
     let html = handout::html(lesson, &pages, opts.lang, opts.answers);
     let target = opts.out.join("index.html");
-    std::fs::create_dir_all(&opts.out).with_context(|| {
-        opts.lang.t_with(
-            "export-cannot-create-the-folder",
-            &[("dir", &opts.out.display())],
-        )
-    })?;
+    super::create_folder(&opts.out, opts.lang)?;
     super::write_atomically(&target, html.as_bytes(), opts.lang)?;
     written.push(target);
     Ok(Exported { written, warnings })

@@ -274,12 +274,7 @@ pub fn write_files(
     progress: &mut dyn FnMut(usize, usize, &str),
     (cancel, lang): (&Cancel, Lang),
 ) -> Result<Vec<PathBuf>> {
-    std::fs::create_dir_all(dir).with_context(|| {
-        lang.t_with(
-            "export-cannot-create-the-folder",
-            &[("dir", &dir.display())],
-        )
-    })?;
+    create_folder(dir, lang)?;
     let mut written = Vec::with_capacity(files.len());
     for (i, f) in files.iter().enumerate() {
         cancel.check()?;
@@ -289,6 +284,19 @@ pub fn write_files(
         progress(i + 1, files.len(), &f.name);
     }
     Ok(written)
+}
+
+/// Creates the folder `dir` (and those above it); a failure is said in `lang`.
+///
+/// # Errors
+/// When the folder cannot be created.
+pub fn create_folder(dir: &Path, lang: Lang) -> Result<()> {
+    std::fs::create_dir_all(dir).with_context(|| {
+        lang.t_with(
+            "export-cannot-create-the-folder",
+            &[("dir", &dir.display())],
+        )
+    })
 }
 
 /// Writes `bytes` to `target` whole or not at all: a temporary file in the same folder, flushed

@@ -139,10 +139,7 @@ fn own(c: &Complaint, lang: Lang) -> Option<String> {
         ),
         C::UniformType { name, written } => {
             let spec = interface::uniform(name);
-            let expected = spec.map_or_else(String::new, |u| {
-                u.glsl
-                    .replace("MAX_LIGHTS", &interface::MAX_LIGHTS.to_string())
-            });
+            let expected = spec.map_or_else(String::new, interface::UniformSpec::declared_type);
             lang.t_with(
                 "compile-uniform-type",
                 &[

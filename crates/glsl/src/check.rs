@@ -121,9 +121,7 @@ fn uniform_declaration(
         return own_uniform_declaration(source, d, module);
     };
     let written = glsl_type_of_global(module, &d.name).unwrap_or_default();
-    let expected = spec
-        .glsl
-        .replace("MAX_LIGHTS", &interface::MAX_LIGHTS.to_string());
+    let expected = spec.declared_type();
     (written != expected).then(|| {
         complain(
             error_at(

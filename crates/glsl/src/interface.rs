@@ -66,6 +66,15 @@ pub struct UniformSpec {
     pub meaning: &'static str,
 }
 
+impl UniformSpec {
+    /// Its type as a declaration must write it, `MAX_LIGHTS` counted out (`Light[8]`): what
+    /// naga reports for the global.
+    #[must_use]
+    pub fn declared_type(&self) -> String {
+        self.glsl.replace("MAX_LIGHTS", &MAX_LIGHTS.to_string())
+    }
+}
+
 /// Every uniform pipelens sets. A shader declares those it uses (`uniform mat4 model;`).
 pub const UNIFORMS: [UniformSpec; 33] = [
     UniformSpec {
