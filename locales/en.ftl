@@ -648,6 +648,7 @@ watch-picture-not-run = not run
 
 window-parameters = Parameters
 window-rendering = Rendering…
+window-title-lesson-step = pipelens — { $lesson } — step { $step }/{ $steps }
 
 ## src/bench/handouts.rs
 

@@ -642,6 +642,7 @@ watch-picture-not-run = 未执行
 
 window-parameters = 参数
 window-rendering = 渲染中…
+window-title-lesson-step = pipelens — { $lesson } — 第 { $step }/{ $steps } 步
 
 ## src/bench/handouts.rs
 

@@ -26,7 +26,7 @@ measure() {
   # answered xdotool (start_xvfb); what the server said and whether it lives are printed.
   for attempt in 1 2 3; do
     RAYON_NUM_THREADS=$threads PIPELENS_FRAME_LOG=1 DISPLAY=$display \
-      target/release/pipelens --step "$step" >"$log" 2>&1 &
+      target/release/pipelens --lang en --step "$step" >"$log" 2>&1 &
     app=$!
     for _ in $(seq 1 60); do
       window=$(DISPLAY=$display xdotool search --name "step $step/" 2>/dev/null | head -1) || true

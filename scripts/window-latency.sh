@@ -20,7 +20,7 @@ start_xvfb
 log=target/window-latency.log
 home=$(mktemp -d)
 HOME=$home RAYON_NUM_THREADS=$threads PIPELENS_FRAME_LOG=1 DISPLAY=$display \
-  target/release/pipelens --lesson lessons/24-shader-programs.toml --step 1 >"$log" 2>&1 &
+  target/release/pipelens --lang en --lesson lessons/24-shader-programs.toml --step 1 >"$log" 2>&1 &
 app=$!
 window=
 for _ in $(seq 1 60); do

@@ -3,8 +3,9 @@
 //  1. the tour loads: the page's title reports lesson and step ("pipelens — 00-tour — step 1/10"),
 //     the screenshot is not blank and its top bar (the stage bar) has text on it;
 //  2. a key press advances a step: → and the title says step 2/10;
-//  3. the Chinese interface (?lang=zh) renders: its top bar differs from the English one, and a
-//     Chinese lesson step is reached the same way;
+//  3. the Chinese interface (?lang=zh) renders: its top bar differs from the English one, its
+//     title is Chinese too ("pipelens — 00-tour — 第 1/10 步"), and a Chinese lesson step is
+//     reached the same way;
 //  4. (see 0) the frame times the page reports in <html data-frame-ms>;
 //  5. a lesson file dropped on the page opens, is edited (a step deleted, the edit kept in the
 //     page's storage) and saved as a download;
@@ -264,7 +265,7 @@ if (await waitForTitle(en, /^pipelens — 00-tour — step 1\/10$/, "the tour lo
 
 // 3. Chinese, the tour and a Chinese step of another lesson.
 const zh = await open("?lang=zh", "zh");
-if (await waitForTitle(zh, /^pipelens — 00-tour — step 1\/10$/, "the Chinese tour loads")) {
+if (await waitForTitle(zh, /^pipelens — 00-tour — 第 1\/10 步$/, "the Chinese tour loads")) {
   await zh.waitForTimeout(3000);
   const shot = PNG.sync.read(await zh.screenshot({ path: `${out}/tour-zh.png` }));
   if (enShot) {
@@ -277,7 +278,7 @@ if (await waitForTitle(zh, /^pipelens — 00-tour — step 1\/10$/, "the Chinese
   }
 }
 const zh2 = await open("?lang=zh&lesson=10-blinn-phong&step=5", "zh-10");
-if (await waitForTitle(zh2, /^pipelens — 10-blinn-phong — step 5\/9$/, "a Chinese lesson opens on a step")) {
+if (await waitForTitle(zh2, /^pipelens — 10-blinn-phong — 第 5\/9 步$/, "a Chinese lesson opens on a step")) {
   await zh2.waitForTimeout(3000);
   await zh2.screenshot({ path: `${out}/blinn-phong-zh-step5.png` });
 }
@@ -291,7 +292,7 @@ await zh2.evaluate((t) => {
   canvas.dispatchEvent(new DragEvent("dragover", { dataTransfer: dt, bubbles: true, cancelable: true }));
   canvas.dispatchEvent(new DragEvent("drop", { dataTransfer: dt, bubbles: true, cancelable: true }));
 }, text);
-if (await waitForTitle(zh2, /^pipelens — 07-rasterization — step 1\/6$/, "a lesson dropped on the page opens")) {
+if (await waitForTitle(zh2, /^pipelens — 07-rasterization — 第 1\/6 步$/, "a lesson dropped on the page opens")) {
   await zh2.waitForTimeout(2000);
   await zh2.screenshot({ path: `${out}/dropped-zh.png` });
 
@@ -461,7 +462,7 @@ const specular = [
 ].join("\n");
 const solved = starter.replace("        // TODO: the specular term, where n·l > 0.", specular);
 const frag = await open("?lang=zh&lesson=10-blinn-phong&step=8", "frag-lab");
-if (await waitForTitle(frag, /^pipelens — 10-blinn-phong — step 8\/9$/, "the specular lab opens in Chinese")) {
+if (await waitForTitle(frag, /^pipelens — 10-blinn-phong — 第 8\/9 步$/, "the specular lab opens in Chinese")) {
   await frag.waitForTimeout(3000);
   const before = await frag.evaluate(() => JSON.stringify(Object.entries(localStorage)));
   check(!/10-blinn-phong[^)]*passed:\[8\]/.test(before), "the starter has not passed");
@@ -606,7 +607,7 @@ if (process.env.SERVER_PID) {
   process.kill(Number(process.env.SERVER_PID));
   await new Promise((r) => setTimeout(r, 1000));
   const off = await open("?lang=zh&step=3", "offline");
-  if (await waitForTitle(off, /^pipelens — 00-tour — step 3\/10$/, "with the server stopped the page opens from the cache")) {
+  if (await waitForTitle(off, /^pipelens — 00-tour — 第 3\/10 步$/, "with the server stopped the page opens from the cache")) {
     await off.waitForTimeout(3000);
     const threads = Number(await off.evaluate(() => document.documentElement.dataset.threads));
     check(threads === state.cores, `offline, the threaded build still runs on ${threads} threads`);

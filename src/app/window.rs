@@ -137,16 +137,19 @@ impl PipelensApp {
         self.classroom || self.session.lesson.is_some()
     }
 
-    /// What the window (or the browser tab) is titled: `pipelens — lesson id — step k/n`, or
-    /// `pipelens — file` for a scene: a test in the browser reads where the app is from it.
+    /// What the window (or the browser tab) is titled, in the language shown: `pipelens — lesson
+    /// id — step k/n` (第 k/n 步 in Chinese), or `pipelens — file` for a scene. A screen reader
+    /// says it when the window is entered, and a test in the browser reads where the app is from it.
     #[must_use]
     pub fn title(&self) -> String {
         match &self.session.lesson {
-            Some(p) => format!(
-                "pipelens — {} — step {}/{}",
-                p.lesson.id,
-                p.step + 1,
-                p.lesson.steps.len()
+            Some(p) => self.session.lang.t_with(
+                "window-title-lesson-step",
+                &[
+                    ("lesson", &p.lesson.id),
+                    ("step", &(p.step + 1)),
+                    ("steps", &p.lesson.steps.len()),
+                ],
             ),
             None => format!("pipelens — {}", self.session.source),
         }

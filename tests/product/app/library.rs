@@ -55,6 +55,13 @@ fn the_lessons_menu_opens_a_built_in_lesson_on_its_first_step() {
         h.state().title(),
         "pipelens — 13-texture-mapping — step 1/7"
     );
+    h.state_mut().session.lang = pipelens::vocabulary::Lang::ZH;
+    h.run_steps(2);
+    assert_eq!(
+        h.state().title(),
+        "pipelens — 13-texture-mapping — 第 1/7 步",
+        "the window's title (what a screen reader says of the window) is in the language shown"
+    );
     assert!(
         h.state().session.capture.is_some(),
         "its first step is drawn"
