@@ -10,12 +10,12 @@ use egui::RichText;
 
 use super::PipelensApp;
 use crate::lesson::{self, Document, library};
-use crate::vocabulary::Lang;
+use crate::vocabulary::{Lang, Text};
 
-/// The built-in lessons' titles `(en, zh)` and how many of their questions ask for a typed
-/// value, read once.
-fn titles() -> &'static [((String, String), usize)] {
-    static TITLES: OnceLock<Vec<((String, String), usize)>> = OnceLock::new();
+/// The built-in lessons' titles and how many of their questions ask for a typed value, read
+/// once.
+fn titles() -> &'static [(Text, usize)] {
+    static TITLES: OnceLock<Vec<(Text, usize)>> = OnceLock::new();
     TITLES.get_or_init(|| {
         library::LESSONS
             .iter()
@@ -30,9 +30,9 @@ impl PipelensApp {
         let open_id = self.session.lesson.as_ref().map(|p| p.lesson.id.clone());
         let mut chosen = None;
         ui.menu_button(lang.t("library-lessons"), |ui| {
-            for ((file, _), ((en, zh), asks)) in library::LESSONS.iter().zip(titles()) {
+            for ((file, _), (title, asks)) in library::LESSONS.iter().zip(titles()) {
                 let id = file.trim_end_matches(".toml");
-                let title = if lang.is_chinese() { zh } else { en };
+                let title = title.get(lang);
                 let number = id.split('-').next().unwrap_or_default();
                 // The questions answered right, of those with a value to type.
                 let done = self

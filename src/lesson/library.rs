@@ -5,6 +5,7 @@
 use std::path::Path;
 
 use super::{Diagnostics, script::Lesson};
+use crate::vocabulary::Text;
 
 /// Each built-in lesson: its file name in `lessons/` and its text.
 pub const LESSONS: [(&str, &str); 26] = [
@@ -165,22 +166,26 @@ pub fn typed_questions(text: &str) -> usize {
         .unwrap_or(0)
 }
 
-/// A built-in lesson's title in each language, read from its `[lesson]` table without building
-/// its scene (for menus): `(en, zh)`, or the file name when the text has none.
+/// A built-in lesson's title, read from its `[lesson]` table without building its scene (for
+/// menus): in English, Chinese and every other language it gives, or the file name when the
+/// text has none.
 #[must_use]
-pub fn title(text: &str, file: &str) -> (String, String) {
-    let table = text.parse::<toml::Table>().ok();
-    let get = |lang: &str| {
-        table
-            .as_ref()
-            .and_then(|t| {
-                t.get("lesson")?
-                    .get("title")?
-                    .get(lang)?
-                    .as_str()
-                    .map(str::to_owned)
-            })
-            .unwrap_or_else(|| file.to_owned())
-    };
-    (get("en"), get("zh"))
+pub fn title(text: &str, file: &str) -> Text {
+    let raw = text
+        .parse::<toml::Table>()
+        .ok()
+        .and_then(|t| t.get("lesson")?.get("title").cloned())
+        .and_then(|v| v.try_into::<super::raw::RawText>().ok());
+    match raw {
+        Some(r) => Text {
+            en: r.en.trim().to_owned(),
+            zh: r.zh.trim().to_owned(),
+            others: r
+                .others
+                .into_iter()
+                .map(|(tag, words)| (tag, words.trim().to_owned()))
+                .collect(),
+        },
+        None => Text::new(file, file),
+    }
 }

@@ -449,11 +449,34 @@ fn the_built_in_lessons_are_the_lessons_folder() {
             text,
             std::fs::read_to_string(repo().join("lessons").join(file)).expect("the file")
         );
-        let (en, zh) = pipelens::lesson::library::title(text, file);
-        assert!(en != file && zh != file && en != zh, "{file}: {en} / {zh}");
+        let t = pipelens::lesson::library::title(text, file);
+        assert!(
+            t.en != file && t.zh != file && t.en != t.zh,
+            "{file}: {} / {}",
+            t.en,
+            t.zh
+        );
     }
     let e = pipelens::lesson::library::lesson("99-nope.toml").expect_err("no such lesson");
     assert!(e.to_string().contains("there are 00-tour.toml"), "{e}");
+}
+
+/// The Lessons menu shows a lesson's title in the interface's language, as the lesson itself
+/// is shown: so it reads every language the title gives, not English and Chinese alone.
+#[test]
+fn a_menu_title_keeps_every_language_of_the_lesson() {
+    let text = "[lesson]\nid = \"x\"\ntitle = { en = \" Depth \", zh = \"深度\", pt-BR = \"Profundidade\" }\n";
+    let t = pipelens::lesson::library::title(text, "x.toml");
+    assert_eq!((t.en.as_str(), t.zh.as_str()), ("Depth", "深度"));
+    assert_eq!(
+        t.others.get("pt-BR").map(String::as_str),
+        Some("Profundidade")
+    );
+    let untitled = pipelens::lesson::library::title("[lesson]\nid = \"x\"\n", "x.toml");
+    assert_eq!(
+        (untitled.en.as_str(), untitled.zh.as_str()),
+        ("x.toml", "x.toml")
+    );
 }
 
 #[test]
