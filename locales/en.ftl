@@ -176,6 +176,10 @@ export-task-your-work-saved = Your work saved: { $file } ({ $steps ->
 
 platform-the-browser-refused-the-download = the browser refused the download: { $why }
 
+## src/app/layout.rs
+
+layout-resize-panel = Resize panel: { $panel }
+
 ## src/app/library.rs
 
 library-cannot-read-the-file = cannot read the file: { $why }

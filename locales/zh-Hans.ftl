@@ -170,6 +170,10 @@ export-task-your-work-saved = 你的作业已保存：{ $file }（{ $steps } 个
 
 platform-the-browser-refused-the-download = 浏览器拒绝了下载：{ $why }
 
+## src/app/layout.rs
+
+layout-resize-panel = 调整面板大小：{ $panel }
+
 ## src/app/library.rs
 
 library-cannot-read-the-file = 无法读取文件：{ $why }

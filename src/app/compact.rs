@@ -91,6 +91,8 @@ impl PipelensApp {
                 .show(ui, |ui| super::views::lesson::sheet(ui, &self.session))
                 .inner
         });
+        let lang = self.session.lang;
+        super::layout::name_divider(ui, "narration-sheet", lang.t("chrome-narration"), lang);
         self.narrated(sheet.inner);
         if let Some(step) = swiped(ui.ctx(), sheet.response.rect) {
             self.commands.push(step);

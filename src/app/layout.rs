@@ -1,5 +1,6 @@
 //! The main view's space cut for what it shows side by side: a view and the observer, a lab's
-//! student frame and its two companions; and the room the panels at the right start with.
+//! student frame and its two companions; the room the panels at the right start with; and
+//! what a screen reader calls a panel's divider.
 
 /// The space left in `ui` cut in two with a gap: `(all, first, second)`, beside each other, or
 /// (in a portrait space, a phone's) one over the other. With the `aspect` of the image in the
@@ -123,6 +124,23 @@ pub(super) fn lab_pair(
 fn fitted(room: egui::Vec2, aspect: f32) -> f32 {
     let width = room.x.min(room.y * aspect).max(0.0);
     width * width / aspect
+}
+
+/// Names the divider of the resizable panel `salt`, just shown in `parent`, for a screen reader
+/// in the language shown: "Resize panel: Inspector". egui calls every divider "Resize panel", in
+/// English; it keys it `parent.scope_id().with(salt).with("__resize")`, and a test reads the
+/// names in the AccessKit tree, so a change of that key in egui is seen.
+pub(super) fn name_divider(
+    parent: &egui::Ui,
+    salt: &str,
+    panel: &str,
+    lang: crate::vocabulary::Lang,
+) {
+    let id = parent.scope_id().with(salt).with("__resize");
+    let name = lang.t_with("layout-resize-panel", &[("panel", &panel)]);
+    parent
+        .ctx()
+        .accesskit_node_builder(id, |node| node.set_label(name));
 }
 
 #[cfg(test)]

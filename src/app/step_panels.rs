@@ -50,6 +50,7 @@ impl PipelensApp {
                     std::path::Path::new(self.export_dir.trim()),
                 ));
             });
+        super::layout::name_divider(ui, id, lang.t("chrome-shader"), lang);
     }
 
     /// On entering a step, the panels it needs: a step that draws a variable over the frame

@@ -234,6 +234,7 @@ impl PipelensApp {
                     ui.heading(lang.t("window-parameters"));
                     self.commands.extend(params::ui(ui, &self.session));
                 });
+            super::layout::name_divider(ui, "parameters", lang.t("chrome-parameters"), lang);
         }
         // The lesson editor outermost at the right: the view frames its subject beside it.
         self.edit_lesson(ui);
@@ -260,6 +261,7 @@ impl PipelensApp {
                         capture,
                     ));
                 });
+            super::layout::name_divider(ui, id, lang.t("chrome-inspector"), lang);
         }
         if self.panels.shader {
             self.shader_panel(ui);

@@ -187,6 +187,7 @@ impl Editor {
                     .id_salt("lesson-editor-scroll")
                     .show(ui, |ui| self.contents(ui, session, lang, &mut out));
             });
+        crate::app::layout::name_divider(root, id, lang.t("window-lesson-editor"), lang);
         self.open = open;
         out
     }

@@ -88,6 +88,65 @@ fn every_control_has_a_name() {
     );
 }
 
+/// Each panel's divider (a splitter: its arrow keys resize the panel) is named in the language
+/// shown, with the panel it resizes: egui alone calls every one "Resize panel", in English.
+#[test]
+fn every_divider_says_which_panel_it_resizes_in_the_language_shown() {
+    for (lang, names) in [
+        (
+            Lang::EN,
+            [
+                "Resize panel: Parameters",
+                "Resize panel: Inspector",
+                "Resize panel: Shader",
+                "Resize panel: Lesson editor",
+            ],
+        ),
+        (
+            Lang::ZH,
+            [
+                "调整面板大小：参数",
+                "调整面板大小：检查器",
+                "调整面板大小：着色器",
+                "调整面板大小：课程编辑器",
+            ],
+        ),
+    ] {
+        let mut h = super::harness();
+        open_everything(&mut h, lang);
+        h.run();
+        // R opens the lesson editor, as a teacher does.
+        h.key_press(egui::Key::R);
+        h.run();
+        let mut dividers: Vec<String> = h
+            .query_all(by().predicate(|n: &NodeRef| n.role() == accesskit::Role::Splitter))
+            .map(|n| n.accesskit_node().label().unwrap_or_default())
+            .collect();
+        dividers.sort();
+        let mut expected: Vec<String> = names.iter().map(|n| (*n).to_owned()).collect();
+        expected.sort();
+        assert_eq!(dividers, expected, "{lang:?}");
+        // On a phone, the narration's sheet under the picture.
+        let path = crate::support::repo().join("lessons/00-tour.toml");
+        let mut phone = super::sized_lesson_harness(&path, [390.0, 844.0]);
+        phone
+            .state_mut()
+            .session
+            .apply(Command::View(ViewCommand::SetLang(lang)));
+        phone.run_steps(3);
+        let sheet: Vec<String> = phone
+            .query_all(by().predicate(|n: &NodeRef| n.role() == accesskit::Role::Splitter))
+            .map(|n| n.accesskit_node().label().unwrap_or_default())
+            .collect();
+        let said = if lang == Lang::ZH {
+            "调整面板大小：讲解"
+        } else {
+            "Resize panel: Narration"
+        };
+        assert_eq!(sheet, [said], "{lang:?} on a phone");
+    }
+}
+
 /// The picture is named by what it shows: at the output stage of the built-in scene, the stage,
 /// the buffer and the objects; once a pixel is inspected, that pixel and its colour's line.
 #[test]
