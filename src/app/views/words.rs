@@ -106,10 +106,16 @@ pub fn boxed_galley(
 /// Where a box (a legend) goes in `view`, and which of its shapes `sizes` (in the order they
 /// are preferred: a wide one, then narrower ones) it takes: each shape in the corners of
 /// `view` 10 points in, then 4 points in — top-left, top-right, bottom-left, bottom-right — the
-/// first place that covers nothing in `avoid` (the subject on screen), else the one that
-/// covers the least of it (the first of those). Returns the shape's index and its box.
+/// first place that covers nothing in `avoid` (the subject on screen) and is not under `card`
+/// (the narration card, which would hide it), else the one least under the card and then
+/// covering the least of the subject (the first of those). Returns the shape's index and its
+/// box.
 #[must_use]
-pub fn clear_corner(sizes: &[egui::Vec2], view: Rect, avoid: &[Rect]) -> (usize, Rect) {
+pub fn clear_corner(
+    sizes: &[egui::Vec2],
+    view: Rect,
+    (avoid, card): (&[Rect], Option<Rect>),
+) -> (usize, Rect) {
     let places = sizes.iter().enumerate().flat_map(|(k, size)| {
         [10.0, 4.0].into_iter().flat_map(move |inset| {
             let inner = view.shrink(inset);
@@ -122,10 +128,11 @@ pub fn clear_corner(sizes: &[egui::Vec2], view: Rect, avoid: &[Rect]) -> (usize,
             .map(|a| (k, a.align_size_within_rect(*size, inner)))
         })
     });
-    // The covered area is never negative: the first minimum is the first clear place, if any.
+    // The covered areas are never negative: the first minimum is the first clear place, if any.
+    let card: Vec<Rect> = card.into_iter().collect();
     places
-        .map(|(k, r)| (k, r, covered_area(r, avoid)))
-        .min_by(|a, b| a.2.total_cmp(&b.2))
+        .map(|(k, r)| (k, r, (covered_area(r, &card), covered_area(r, avoid))))
+        .min_by(|a, b| a.2.0.total_cmp(&b.2.0).then(a.2.1.total_cmp(&b.2.1)))
         .map_or((0, view), |(k, r, _)| (k, r))
 }
 

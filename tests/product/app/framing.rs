@@ -17,6 +17,7 @@ fn the_narration_and_the_overlays_leave_the_subject_clear() {
     use pipelens::vocabulary::Lang;
     let mut covered = Vec::new();
     let mut small = Vec::new();
+    let mut hidden = Vec::new();
     let mut checked = (0, 0);
     for (size, classroom, lang) in [
         ([1920.0, 1080.0], false, Lang::ZH),
@@ -49,6 +50,13 @@ fn the_narration_and_the_overlays_leave_the_subject_clear() {
                         covered.push(format!("{place}: {r:?} under {o:?}"));
                     }
                 }
+                // The card does not hide the words over the picture either (the tour's NDC
+                // legend sat under it at 1920 points with the inspector open).
+                for o in &state.overlays {
+                    if let Some(c) = card.filter(|c| overlap(o, c)) {
+                        hidden.push(format!("{place}: {o:?} under the narration {c:?}"));
+                    }
+                }
                 if card.is_none() {
                     // With the shader panel open at 1366 points the narration is a band at
                     // the window's foot, a panel the views lie above.
@@ -77,6 +85,7 @@ fn the_narration_and_the_overlays_leave_the_subject_clear() {
     assert!(checked.0 > 150, "only {} subjects were checked", checked.0);
     assert!(checked.1 > 500, "only {} words were measured", checked.1);
     assert!(covered.is_empty(), "{}", covered.join("\n"));
+    assert!(hidden.is_empty(), "{}", hidden.join("\n"));
     assert!(small.is_empty(), "{}", small.join("\n"));
 }
 
@@ -164,6 +173,32 @@ fn most_common<'a>(texts: impl Iterator<Item = &'a (egui::Rect, f32, String)>) -
         }
     }
     counts.into_iter().max_by_key(|c| c.1).map_or(0.0, |c| c.0)
+}
+
+/// The tour's NDC step at 1920×1080 with the inspector open: the view is 570 points wide, the
+/// narration card spans its foot, and the legend, which leaves the largest square for the
+/// subject at the bottom-right, went under the card there. It goes where the card leaves it
+/// in sight.
+#[test]
+fn the_legend_is_not_hidden_under_the_narration_card() {
+    let path = crate::support::repo().join("lessons/00-tour.toml");
+    let mut h = super::sized_lesson_harness(&path, [1920.0, 1080.0]);
+    h.state_mut().panels.inspector = true;
+    super::go_to_step(&mut h, 5);
+    h.run_steps(4);
+    let state = h.state();
+    assert_eq!(
+        state.session.selection.stage,
+        pipelens::vocabulary::Stage::Ndc
+    );
+    let card = pipelens::app::views::card_placement::narration_card(&h.ctx).expect("the card");
+    assert!(state.overlays.len() >= 3, "{:?}", state.overlays);
+    for o in &state.overlays {
+        assert!(
+            !overlap(o, &card),
+            "{o:?} under the narration card {card:?}"
+        );
+    }
 }
 
 #[test]

@@ -187,7 +187,8 @@ pub(super) fn draw_light_vectors(
             color,
         );
     }
-    // The legend, typeset, on a dark box in a corner clear of the subject.
+    // The legend, typeset, on a dark box in a corner clear of the subject and of the narration.
+    let card = crate::app::views::card_placement::narration_card(painter.ctx());
     let style = crate::app::views::typeset::Style {
         size: picture_font(painter.ctx(), 15.0).size,
         color: Color32::WHITE,
@@ -208,7 +209,7 @@ pub(super) fn draw_light_vectors(
         ) + Vec2::splat(10.0)
     };
     let (k, legend) =
-        crate::app::views::clear_corner(&[size(&wide), size(&narrow)], view.rect, subject);
+        crate::app::views::clear_corner(&[size(&wide), size(&narrow)], view.rect, (subject, card));
     let lines = if k == 0 { wide } else { narrow };
     painter.rect_filled(legend, 4.0, Color32::from_black_alpha(180));
     let mut at = legend.min + Vec2::splat(5.0);
@@ -254,7 +255,8 @@ pub(super) fn draw_mip_legend(
         )
     };
     let shapes = [8, 4, 2];
-    let (k, legend) = crate::app::views::clear_corner(&shapes.map(size), rect, subject);
+    let card = crate::app::views::card_placement::narration_card(painter.ctx());
+    let (k, legend) = crate::app::views::clear_corner(&shapes.map(size), rect, (subject, card));
     let columns = shapes[k];
     painter.rect_filled(legend, 4.0, Color32::from_black_alpha(190));
     let top = legend.top() + pad + title.size().y + 4.0;
