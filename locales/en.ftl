@@ -182,6 +182,10 @@ layout-resize-panel = Resize panel: { $panel }
 
 ## src/app/library.rs
 
+library-a-mesh-opens-on-the-desktop = { $name }: a mesh becomes a new lesson in the desktop app (drop it on its window); the page opens lessons and scenes (.toml) and shaders (.vert, .frag)
+library-not-a-kind-pipelens-opens = { $name }: pipelens opens lessons and scenes (.toml), shaders (.vert, .frag, .glsl) and meshes (.obj), not .{ $extension } files
+library-not-text = the file is not UTF-8 text: drop a lesson or scene .toml file
+library-shader-not-text = { $name } is not UTF-8 text
 library-cannot-read-the-file = cannot read the file: { $why }
 library-lessons = Lessons
 library-all-right = all right

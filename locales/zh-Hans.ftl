@@ -176,6 +176,10 @@ layout-resize-panel = 调整面板大小：{ $panel }
 
 ## src/app/library.rs
 
+library-a-mesh-opens-on-the-desktop = { $name }：网格在桌面应用中成为一节新课程（把它拖到应用的窗口上）；网页打开课程和场景（.toml）以及着色器（.vert、.frag）
+library-not-a-kind-pipelens-opens = { $name }：pipelens 打开课程和场景（.toml）、着色器（.vert、.frag、.glsl）和网格（.obj），不打开 .{ $extension } 文件
+library-not-text = 该文件不是 UTF-8 文本：请拖入课程或场景的 .toml 文件
+library-shader-not-text = { $name } 不是 UTF-8 文本
 library-cannot-read-the-file = 无法读取文件：{ $why }
 library-lessons = 课程
 library-all-right = 全对

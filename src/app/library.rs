@@ -101,7 +101,7 @@ impl PipelensApp {
                 || path.display().to_string(),
                 |n| n.to_string_lossy().into_owned(),
             );
-            if let Some(why) = not_opened(&name, path.is_absolute()) {
+            if let Some(why) = not_opened(&name, path.is_absolute(), self.session.lang) {
                 self.session.dropped_error = Some(why);
             } else if path.is_absolute()
                 && path
@@ -132,9 +132,8 @@ impl PipelensApp {
             let text = bytes
                 .map_err(|e| cannot_read(&e, self.session.lang))
                 .and_then(|b| {
-                    String::from_utf8(b).map_err(|_| {
-                        "the file is not UTF-8 text: drop a lesson or scene .toml file".to_owned()
-                    })
+                    String::from_utf8(b)
+                        .map_err(|_| self.session.lang.t("library-not-text").to_owned())
                 })
                 .map_err(|e| lesson::Diagnostics(vec![lesson::Diagnostic::whole_file(&name, e)]));
             let loaded = text
@@ -156,8 +155,11 @@ impl PipelensApp {
         let Some(tab) = shader_stage(name) else {
             return;
         };
-        let text = bytes
-            .and_then(|b| String::from_utf8(b).map_err(|_| format!("{name} is not UTF-8 text")));
+        let lang = self.session.lang;
+        let text = bytes.and_then(|b| {
+            String::from_utf8(b)
+                .map_err(|_| lang.t_with("library-shader-not-text", &[("name", &name)]))
+        });
         match text {
             Ok(text) => {
                 let editor = &mut self.shader_editor;
@@ -209,8 +211,8 @@ impl PipelensApp {
 /// does not open there (`on_disk`: the desktop, which has its path): a lesson or scene is a
 /// `.toml` file, a shader a `.vert`, `.frag` or pipeline-function `.glsl`, and a mesh (`.obj`)
 /// becomes a new lesson in the editor, which reads it from disk. A name without an extension is
-/// read as a lesson.
-fn not_opened(name: &str, on_disk: bool) -> Option<String> {
+/// read as a lesson. Said in `lang`.
+fn not_opened(name: &str, on_disk: bool, lang: Lang) -> Option<String> {
     let lower = name.to_ascii_lowercase();
     let extension = std::path::Path::new(&lower)
         .extension()
@@ -219,11 +221,10 @@ fn not_opened(name: &str, on_disk: bool) -> Option<String> {
     match extension.as_str() {
         "toml" | "vert" | "frag" | "glsl" => None,
         "obj" if on_disk => None,
-        "obj" => Some(format!(
-            "{name}: a mesh becomes a new lesson in the desktop app (drop it on its window); the page opens lessons and scenes (.toml) and shaders (.vert, .frag)"
-        )),
-        _ => Some(format!(
-            "{name}: pipelens opens lessons and scenes (.toml), shaders (.vert, .frag, .glsl) and meshes (.obj), not .{extension} files"
+        "obj" => Some(lang.t_with("library-a-mesh-opens-on-the-desktop", &[("name", &name)])),
+        _ => Some(lang.t_with(
+            "library-not-a-kind-pipelens-opens",
+            &[("name", &name), ("extension", &extension)],
         )),
     }
 }

@@ -135,6 +135,21 @@ fn a_dropped_lesson_opens_from_its_bytes_and_a_broken_one_says_where() {
     h.run_steps(4);
     let error = h.state().session.dropped_error.clone().unwrap_or_default();
     assert!(error.contains("not .png files"), "{error}");
+    // Each said in the language shown: a picture, a lesson and a shader that are not text.
+    h.state_mut().session.lang = pipelens::vocabulary::Lang::ZH;
+    for (name, said) in [
+        ("brick.png", "brick.png：pipelens 打开课程和场景（.toml）"),
+        ("broken.toml", "该文件不是 UTF-8 文本"),
+        ("mine.frag", "mine.frag 不是 UTF-8 文本"),
+    ] {
+        h.input_mut().dropped_files.push(Arc::new(Dropped {
+            path: PathBuf::from(name),
+            bytes: vec![0xff, 0xfe, 0x00, 0x9f],
+        }));
+        h.run_steps(4);
+        let error = h.state().session.dropped_error.clone().unwrap_or_default();
+        assert!(error.contains(said), "{name}: {error}");
+    }
 }
 
 #[test]
