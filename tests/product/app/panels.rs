@@ -22,7 +22,9 @@ fn set_panels(h: &mut Harness<'_, PipelensApp>, shown: &mut Open, want: Open) {
     *shown = want;
     h.run_steps(8);
     assert_eq!(
-        h.query_by_label_contains("Lesson editor").is_some(),
+        h.query_all_by_label_contains("Lesson editor")
+            .next()
+            .is_some(),
         want[2],
         "the editor's panel follows R"
     );

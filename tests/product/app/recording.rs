@@ -83,7 +83,7 @@ fn a_lesson_is_recorded_arranged_and_saved_in_the_editor() {
     h.run_steps(2);
     h.key_press(egui::Key::R);
     h.run_steps(3);
-    assert!(h.query_by_label_contains("Lesson editor").is_some());
+    assert!(h.query_by_label("Resize panel: Lesson editor").is_some());
     drag(&mut h, "figures.arm.base", 50.0);
     h.state_mut()
         .session

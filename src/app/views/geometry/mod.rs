@@ -502,8 +502,8 @@ impl GeometryView {
 /// cards drawn last frame (`own`: the header, the matrix card, the legend) and of the narration
 /// card, with the legend where it leaves the largest square — one item a row below the matrix
 /// card or at the bottom-right, or a strip along the foot — of the places the narration card
-/// leaves in sight. Returns the square and the legend's
-/// place and items a row. Reports the share of the square the narration card left.
+/// leaves in sight. Returns the square and the legend's place and items a row; reports the
+/// share of the square the narration card left.
 fn clear_of_cards(
     ctx: &egui::Context,
     rect: Rect,
@@ -541,29 +541,27 @@ fn clear_of_cards(
         all.extend(narration);
         super::overlays::free_square(rect, &all).unwrap_or(rect)
     };
-    // A place under the narration card is no place: the card would hide the legend (the
-    // tour's NDC step at 1920 points with the inspector open). Where every place is under it,
-    // the largest square decides alone.
-    let clear: Vec<_> = places
+    // A place under the narration card would hide the legend (the tour's NDC step at 1920
+    // points with the inspector open); where every place is, the largest square decides alone.
+    let mut clear: Vec<_> = places
         .iter()
         .filter(|p| narration.is_none_or(|n| !n.intersects(p.0)))
         .copied()
         .collect();
-    let (frame, place) = (if clear.is_empty() {
-        &places[..]
-    } else {
-        &clear
-    })
-    .iter()
-    .map(|p| (square(p.0, narration), *p))
-    .reduce(|best, next| {
-        if next.0.width() > best.0.width() + 0.5 {
-            next
-        } else {
-            best
-        }
-    })
-    .unwrap_or((rect, places[0]));
+    if clear.is_empty() {
+        clear = places.to_vec();
+    }
+    let (frame, place) = clear
+        .iter()
+        .map(|p| (square(p.0, narration), *p))
+        .reduce(|best, next| {
+            if next.0.width() > best.0.width() + 0.5 {
+                next
+            } else {
+                best
+            }
+        })
+        .unwrap_or((rect, places[0]));
     let alone = square(place.0, None);
     super::card_placement::report_kept(ctx, (frame.area() / alone.area().max(1.0)).min(1.0));
     (frame, place)
