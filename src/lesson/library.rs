@@ -171,21 +171,9 @@ pub fn typed_questions(text: &str) -> usize {
 /// text has none.
 #[must_use]
 pub fn title(text: &str, file: &str) -> Text {
-    let raw = text
-        .parse::<toml::Table>()
+    text.parse::<toml::Table>()
         .ok()
         .and_then(|t| t.get("lesson")?.get("title").cloned())
-        .and_then(|v| v.try_into::<super::raw::RawText>().ok());
-    match raw {
-        Some(r) => Text {
-            en: r.en.trim().to_owned(),
-            zh: r.zh.trim().to_owned(),
-            others: r
-                .others
-                .into_iter()
-                .map(|(tag, words)| (tag, words.trim().to_owned()))
-                .collect(),
-        },
-        None => Text::new(file, file),
-    }
+        .and_then(|v| v.try_into::<super::raw::RawText>().ok())
+        .map_or_else(|| Text::new(file, file), |r| r.text())
 }

@@ -414,6 +414,20 @@ pub struct RawText {
     pub others: std::collections::BTreeMap<String, String>,
 }
 
+impl RawText {
+    /// The words, trimmed, each language's that is not empty (its tag unchecked: `validate`
+    /// checks the tags).
+    pub fn text(&self) -> crate::vocabulary::Text {
+        let mut text = crate::vocabulary::Text::new(self.en.trim(), self.zh.trim());
+        for (tag, words) in &self.others {
+            if !words.trim().is_empty() {
+                text.others.insert(tag.clone(), words.trim().to_owned());
+            }
+        }
+        text
+    }
+}
+
 /// One `[[steps]]` entry.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]

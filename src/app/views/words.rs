@@ -129,9 +129,14 @@ pub fn clear_corner(
         })
     });
     // The covered areas are never negative: the first minimum is the first clear place, if any.
-    let card: Vec<Rect> = card.into_iter().collect();
     places
-        .map(|(k, r)| (k, r, (covered_area(r, &card), covered_area(r, avoid))))
+        .map(|(k, r)| {
+            (
+                k,
+                r,
+                (covered_area(r, card.as_slice()), covered_area(r, avoid)),
+            )
+        })
         .min_by(|a, b| a.2.0.total_cmp(&b.2.0).then(a.2.1.total_cmp(&b.2.1)))
         .map_or((0, view), |(k, r, _)| (k, r))
 }

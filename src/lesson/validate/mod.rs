@@ -101,8 +101,8 @@ impl<'a> Checker<'a> {
                 format!("`{key}` needs both `en` and `zh` text, neither empty"),
             );
         }
-        let mut text = Text::new(r.en.trim(), r.zh.trim());
-        for (tag, words) in &r.others {
+        let mut text = r.text();
+        for tag in r.others.keys() {
             if tag.parse::<unic_langid::LanguageIdentifier>().is_err() {
                 self.error(
                     t.span(),
@@ -110,8 +110,7 @@ impl<'a> Checker<'a> {
                         "`{key}` has `{tag}`, which is not a language tag: a text takes `en`, `zh` and other languages by their BCP 47 tags (`fr`, `pt-BR`)"
                     ),
                 );
-            } else if !words.trim().is_empty() {
-                text.others.insert(tag.clone(), words.trim().to_owned());
+                text.others.remove(tag);
             }
         }
         self.texts.push((
