@@ -82,6 +82,24 @@ pub fn outcode(p: Vec4) -> u8 {
         .fold(0, |m, pl| m | pl.bit())
 }
 
+/// The part of the segment from `a` to `b` (clip space) in front of the camera, `w ≥ ε`
+/// ([`W_EPSILON`]): `None` when both ends are behind; otherwise the end behind, if any, moved
+/// along the segment to `t = (ε − w_a)/(w_b − w_a)` (a hair inside, so that it divides). A line
+/// drawn over a picture (a frustum's edge running past the viewer) keeps its part in front
+/// rather than vanishing whole.
+#[must_use]
+pub fn segment_in_front(a: Vec4, b: Vec4) -> Option<(Vec4, Vec4)> {
+    let eps = W_EPSILON;
+    match (a.w > eps, b.w > eps) {
+        (false, false) => None,
+        (true, true) => Some((a, b)),
+        (front_a, _) => {
+            let cut = a.lerp(b, (eps * 1.001 - a.w) / (b.w - a.w));
+            Some(if front_a { (a, cut) } else { (cut, b) })
+        }
+    }
+}
+
 /// A vertex of a (clipped) polygon: its clip-space position and its barycentric weights with
 /// respect to the original triangle (the corners are `(1,0,0)`, `(0,1,0)`, `(0,0,1)`).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]

@@ -26,7 +26,11 @@ impl Projector {
     /// The screen position of `p`, if it is in front of the camera.
     #[must_use]
     pub fn project(&self, p: Vec3) -> Option<Pos2> {
-        let c: Vec4 = self.m * p.extend(1.0);
+        self.place(self.m * p.extend(1.0))
+    }
+
+    /// The screen position of the clip-space point `c`, if it is in front of the camera.
+    fn place(&self, c: Vec4) -> Option<Pos2> {
         if c.w <= 1e-6 || !c.is_finite() {
             return None;
         }
@@ -38,9 +42,15 @@ impl Projector {
         Some(self.rect.center() + (q - self.rect.center()) * self.zoom + self.pan)
     }
 
-    /// Draws a 3-D segment.
+    /// Draws a 3-D segment: its part in front of the camera
+    /// ([`pipeline::clip::segment_in_front`]), so that a line running past the viewer shows.
     pub fn line(&self, painter: &egui::Painter, a: Vec3, b: Vec3, stroke: egui::Stroke) {
-        if let (Some(pa), Some(pb)) = (self.project(a), self.project(b)) {
+        let Some((ca, cb)) =
+            pipeline::clip::segment_in_front(self.m * a.extend(1.0), self.m * b.extend(1.0))
+        else {
+            return;
+        };
+        if let (Some(pa), Some(pb)) = (self.place(ca), self.place(cb)) {
             painter.line_segment([pa, pb], stroke);
         }
     }

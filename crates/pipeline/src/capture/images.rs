@@ -472,20 +472,7 @@ impl FrameCapture {
     #[must_use]
     pub fn world_segment_to_image(&self, a: Vec3, b: Vec3) -> Option<[[f32; 2]; 2]> {
         let pv = self.matrices.projection.matrix * self.matrices.view.matrix;
-        let (mut ca, mut cb) = (pv * a.extend(1.0), pv * b.extend(1.0));
-        let eps = 1e-5;
-        if ca.w <= eps && cb.w <= eps {
-            return None;
-        }
-        if ca.w <= eps || cb.w <= eps {
-            let t = (eps * 1.001 - ca.w) / (cb.w - ca.w);
-            let cut = ca.lerp(cb, t);
-            if ca.w <= eps {
-                ca = cut;
-            } else {
-                cb = cut;
-            }
-        }
+        let (ca, cb) = crate::clip::segment_in_front(pv * a.extend(1.0), pv * b.extend(1.0))?;
         Some([self.clip_to_image(ca)?, self.clip_to_image(cb)?])
     }
 

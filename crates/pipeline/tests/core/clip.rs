@@ -111,3 +111,31 @@ fn clipping_never_leaves_the_view_volume() {
         "the random triangles exercise the clipper ({clipped})"
     );
 }
+
+/// A segment running from in front of the camera (w = 3) to behind it (w = −1) keeps the part
+/// in front: its end behind moves to w = ε, three quarters of the way along, where the other
+/// coordinates are interpolated alike (x from 2 to −2 gives 2 − 4·¾ = −1); a segment wholly
+/// behind is dropped, and one wholly in front is kept as it is.
+#[test]
+fn a_segment_keeps_its_part_in_front_of_the_camera() {
+    use pipeline::clip::{W_EPSILON, segment_in_front};
+    let (front, behind) = (
+        Vec4::new(2.0, 1.0, 0.0, 3.0),
+        Vec4::new(-2.0, 1.0, 0.0, -1.0),
+    );
+    for (a, b) in [(front, behind), (behind, front)] {
+        let (p, q) = segment_in_front(a, b).expect("half of it is in front");
+        let (kept, cut) = if a == front { (p, q) } else { (q, p) };
+        assert_eq!(kept, front);
+        assert!(cut.w > W_EPSILON && cut.w < 2.0 * W_EPSILON, "{cut}");
+        assert!(
+            (cut.x + 1.0).abs() < 1e-4 && (cut.y - 1.0).abs() < 1e-6,
+            "{cut}"
+        );
+    }
+    assert_eq!(segment_in_front(behind, behind * 2.0), None);
+    assert_eq!(
+        segment_in_front(front, front * 2.0),
+        Some((front, front * 2.0))
+    );
+}
