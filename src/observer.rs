@@ -49,6 +49,11 @@ impl Orbit {
 /// frustum looking down −z shows its length and its four sides at once.
 pub const DEFAULT_DIRECTION: [f32; 2] = [60.0, 30.0];
 
+/// The name a step's `focus` gives the viewing camera (`focus = ["cube", "camera"]`): the
+/// observer then frames the objects named with the camera's eye and its frame u, v, n, and
+/// leaves the lights out.
+pub const CAMERA: &str = "camera";
+
 /// The orbit that frames the whole scene with the viewing camera ([`orbit_for`] without a
 /// focus, from [`DEFAULT_DIRECTION`], for the lesson image's shape).
 pub fn default_orbit(spec: &SceneSpec) -> Orbit {
@@ -59,7 +64,8 @@ pub fn default_orbit(spec: &SceneSpec) -> Orbit {
 /// lesson image's when `None`), from `direction` = `[yaw, pitch]` in degrees (the step's
 /// `orbit`; [`DEFAULT_DIRECTION`] when `None`). It frames a box: with a `focus`,
 /// the world-space box of the objects it names ([`crate::spaces::named_in`]) — the viewing
-/// camera and its frustum are then context around the subject; without one (or when it names
+/// camera and its frustum are then context around the subject, unless the focus also names
+/// the [`CAMERA`], whose eye and frame are then framed with them; without one (or when it names
 /// nothing drawn), every drawn object's box, the lights with a place and the viewing camera
 /// with its frame, so that the objects are as large as the camera beside them allows (lesson
 /// 25's cube was 0.7 % of the window, framed from twice the eye's distance). The orbit looks
@@ -92,21 +98,28 @@ pub fn orbit_for(
             .filter(|p| p.is_finite())
             .collect()
     };
-    let mut points = corners(&|name| crate::spaces::named_in(focus, name));
-    if focus.is_empty() || points.is_empty() {
-        // Every object, the lights with a place, and the viewing camera with its frame's axes
-        // u, v, n (a quarter of the way to what it looks at, labelled a little beyond).
-        points = corners(&|_| true);
+    // The viewing camera's eye with its frame's axes u, v, n (a quarter of the way to what it
+    // looks at, labelled a little beyond).
+    let camera = || {
         let c = &spec.scene.camera;
         let reach = (c.at - c.eye).length() * 0.3;
         let n = (c.eye - c.at).normalize_or(Vec3::Z);
         let u = c.up.cross(n).normalize_or(Vec3::X);
-        points.extend([
+        [
             c.eye,
             c.eye + u * reach,
             c.eye + n.cross(u) * reach,
             c.eye + n * reach,
-        ]);
+        ]
+    };
+    let mut points = corners(&|name| crate::spaces::named_in(focus, name));
+    if !points.is_empty() && focus.iter().any(|f| f == CAMERA) {
+        points.extend(camera());
+    }
+    if focus.is_empty() || points.is_empty() {
+        // Every object, the lights with a place, and the viewing camera with its frame.
+        points = corners(&|_| true);
+        points.extend(camera());
         points.extend(spec.scene.lights.iter().filter_map(|l| match l {
             pipeline::light::Light::Point { position, .. }
             | pipeline::light::Light::Spot { position, .. } => Some(*position),

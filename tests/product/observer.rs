@@ -112,7 +112,7 @@ fn the_observer_frames_the_steps_subject() {
     assert_eq!(orbit_for(&spec, &[], None, None), default_orbit(&spec));
 }
 
-/// Lesson 25's projection step (issue: the observer's cube was 0.7 % of the window): without a
+/// Lesson 25's scene (issue 58: the observer's cube was 0.7 % of the window): without a
 /// focus the observer frames every object, the lights and the viewing camera as tightly as
 /// its lens allows. The cube covers at least twice the share of the picture it had from the
 /// old orbit (around the objects' mean, at 2.2 times the eye's distance), and the eye
@@ -206,5 +206,45 @@ fn the_observer_frames_the_scene_and_its_camera_tightly() {
                 path.display()
             );
         }
+    }
+}
+
+/// Lesson 25's projection step names the cube and the viewing camera as its focus and looks
+/// from behind the cube (issue 58: the cube was 0.7 %, then 4–6 % of the observer with the whole
+/// scene framed): the cube covers at least a fifth of the observer's picture in a narrow
+/// panel, a square one and a wide one, and the viewing camera's eye stays inside it.
+#[test]
+fn lesson_25s_observer_shows_the_cube_large_with_the_eye_in_sight() {
+    use pipelens::observer::{orbit_for, render_observer};
+    let lesson = crate::support::lesson("25-lab-model-projection");
+    let k = 3;
+    let step = &lesson.steps[k];
+    assert_eq!(step.layout, pipelens::lesson::script::Layout::Observer);
+    let spec = lesson.spec_playing(k, 0.0);
+    for aspect in [0.7, 1.0, 1.6] {
+        let orbit = orbit_for(
+            &spec,
+            step.focus.as_deref().unwrap_or_default(),
+            step.orbit,
+            Some(aspect),
+        );
+        let obs = render_observer(&spec, orbit.camera(), Some(aspect), None).expect("renders");
+        let total = obs.pixels.primitive.len();
+        let cube = obs
+            .pixels
+            .primitive
+            .iter()
+            .filter(|&&p| p != pipeline::raster::NONE)
+            .count();
+        let share = cube as f32 / total as f32;
+        assert!(share >= 0.2, "aspect {aspect}: the cube covers {share}");
+        let clip = obs.matrices.projection.matrix
+            * obs.matrices.view.matrix
+            * spec.scene.camera.eye.extend(1.0);
+        let ndc = clip.truncate() / clip.w;
+        assert!(
+            clip.w > 0.0 && ndc.x.abs() < 0.95 && ndc.y.abs() < 0.95,
+            "aspect {aspect}: the eye at {ndc}"
+        );
     }
 }

@@ -151,6 +151,7 @@ impl Session {
             ViewCommand::SetOrbit(o) => {
                 if o != self.orbit {
                     self.orbit = o;
+                    self.orbit_framed = false;
                     self.request_render();
                 }
             }
@@ -160,6 +161,12 @@ impl Session {
                     .is_none_or(|old| (old / a - 1.0).abs() > 0.05);
                 if changed {
                     self.observer_aspect = Some(a);
+                    if self.orbit_framed {
+                        // The step's framing was for the old shape (the lesson image's on
+                        // the first frame): a tall panel would show the subject small.
+                        let spec = self.spec.clone();
+                        self.frame_observer(&spec);
+                    }
                     if self.observer_shown() {
                         self.request_render();
                     }

@@ -41,6 +41,10 @@ pub struct Session {
     pub orbit: Orbit,
     /// The width/height the observer is rendered at (its panel's).
     pub observer_aspect: Option<f32>,
+    /// Whether the orbit is still the one that frames the step's subject (not turned or zoomed
+    /// by hand since): it is framed again when the observer's panel changes shape, as it does
+    /// on the first frame that shows it.
+    pub orbit_framed: bool,
     /// The physical pixels the pixel view draws the image over.
     pub view_pixels: Option<[u32; 2]>,
     /// The buffer shown rendered at that resolution (`view_resolution`).
@@ -117,6 +121,7 @@ impl Session {
             times: None,
             error: None,
             orbit,
+            orbit_framed: true,
             observer_aspect: None,
             view_pixels: None,
             view_resolution: ViewResolution::default(),
@@ -173,6 +178,19 @@ impl Session {
         s
     }
 
+    /// Points the observer at the subject of the step playing (its `focus`, from its `orbit`
+    /// direction; the whole scene without a lesson), framed for the observer's panel.
+    pub(super) fn frame_observer(&mut self, spec: &SceneSpec) {
+        let step = self.lesson.as_ref().map(LessonPlayer::current);
+        self.orbit = crate::observer::orbit_for(
+            spec,
+            step.and_then(|s| s.focus.as_deref()).unwrap_or_default(),
+            step.and_then(|s| s.orbit),
+            self.observer_aspect,
+        );
+        self.orbit_framed = true;
+    }
+
     /// Goes to step `k` (clamped): its scene, stage, layout, buffer, overlays and highlights.
     pub(super) fn enter_step(&mut self, k: usize) {
         let Some(player) = &mut self.lesson else {
@@ -220,18 +238,13 @@ impl Session {
         sel.vertex = step.vertex;
         sel.watch.clone_from(&step.watch);
         sel.focus.clone_from(&step.focus);
-        // The observer frames the step's subject, as the geometry views do.
-        self.orbit = crate::observer::orbit_for(
-            &spec,
-            step.focus.as_deref().unwrap_or_default(),
-            step.orbit,
-            self.observer_aspect,
-        );
         sel.depth_view = DepthView {
             linear: false,
             range: step.depth_range,
         };
         sel.profile = step.profile_line(spec.settings.width, spec.settings.height);
+        // The observer frames the step's subject, as the geometry views do.
+        self.frame_observer(&spec);
         self.step_entered += 1;
         // A dropped file's trouble is about what was on screen when it was dropped.
         self.dropped_error = None;

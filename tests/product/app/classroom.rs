@@ -174,3 +174,53 @@ fn a_steps_lines_below_the_fold_are_scrolled_into_view() {
         "line 22 at y = {line_22}, the code's view from {above} to {band}"
     );
 }
+
+/// Lesson 25's projection step in classroom mode, on a 1366×768 projector and in a window
+/// taller than wide: the step is entered before the observer's panel is measured, so its first
+/// framing is for the lesson image's 1.6. Once the panel is drawn the observer is framed for it
+/// again, and its capture shows the cube over at least a fifth of its pixels (at 1366×768 under
+/// Xvfb it was about 7 %, framed for the wrong shape). An observer turned by hand stays as it
+/// was turned when the window changes shape.
+#[test]
+fn the_observer_frames_its_subject_for_the_panel_it_is_shown_in() {
+    let path = crate::support::repo().join("lessons/25-lab-model-projection.toml");
+    for size in [[1920.0, 1080.0], [1366.0, 768.0], [800.0, 1100.0]] {
+        let mut h = super::sized_lesson_harness(&path, size);
+        let ctx = h.ctx.clone();
+        h.state_mut().set_classroom(&ctx, true);
+        super::go_to_step(&mut h, 3);
+        let session = &h.state().session;
+        let aspect = session
+            .observer_aspect
+            .expect("the observer's panel was measured");
+        let obs = session.observer.as_ref().expect("the observer is rendered");
+        let ratio = obs.width() as f32 / obs.height() as f32;
+        assert!(
+            (ratio / aspect - 1.0).abs() < 0.05,
+            "{size:?}: rendered at {ratio}, panel {aspect}"
+        );
+        let cube = obs
+            .pixels
+            .primitive
+            .iter()
+            .filter(|&&p| p != pipeline::raster::NONE)
+            .count();
+        let share = cube as f32 / obs.pixels.primitive.len() as f32;
+        assert!(
+            share >= 0.2,
+            "{size:?}, panel {aspect}: the cube covers {share} of the observer"
+        );
+        // Turned by hand, then the window changes shape: the orbit is the one turned to.
+        let mut turned = session.orbit;
+        turned.yaw += 40.0;
+        h.state_mut()
+            .session
+            .apply(pipelens::app::session::Command::View(
+                pipelens::app::command::ViewCommand::SetOrbit(turned),
+            ));
+        h.set_size(egui::vec2(size[0] * 0.7, size[1]));
+        h.run_steps(6);
+        assert_ne!(h.state().session.observer_aspect, Some(aspect));
+        assert_eq!(h.state().session.orbit, turned);
+    }
+}
