@@ -49,11 +49,6 @@ impl Orbit {
 /// frustum looking down −z shows its length and its four sides at once.
 pub const DEFAULT_DIRECTION: [f32; 2] = [60.0, 30.0];
 
-/// The name a step's `focus` gives the viewing camera (`focus = ["cube", "camera"]`): the
-/// observer then frames the objects named with the camera's eye and its frame u, v, n, and
-/// leaves the lights out.
-pub const CAMERA: &str = "camera";
-
 /// The orbit that frames the whole scene with the viewing camera ([`orbit_for`] without a
 /// focus, from [`DEFAULT_DIRECTION`], for the lesson image's shape).
 pub fn default_orbit(spec: &SceneSpec) -> Orbit {
@@ -65,8 +60,8 @@ pub fn default_orbit(spec: &SceneSpec) -> Orbit {
 /// `orbit`; [`DEFAULT_DIRECTION`] when `None`). It frames a box: with a `focus`,
 /// the world-space box of the objects it names ([`crate::spaces::named_in`]) — the viewing
 /// camera and its frustum are then context around the subject, unless the focus also names
-/// the [`CAMERA`], whose eye and frame are then framed with them; without one (or when it names
-/// nothing drawn), every drawn object's box, the lights with a place and the viewing camera
+/// the [`crate::spaces::CAMERA`], whose eye and frame are then framed with them; without one
+/// (or when it names nothing drawn), every drawn object's box, the lights with a place and the viewing camera
 /// with its frame, so that the objects are as large as the camera beside them allows (lesson
 /// 25's cube was 0.7 % of the window, framed from twice the eye's distance). The orbit looks
 /// at the middle of what it frames, from the distance where every point lies inside the
@@ -77,6 +72,32 @@ pub fn orbit_for(
     direction: Option<[f32; 2]>,
     aspect: Option<f32>,
 ) -> Orbit {
+    orbit_for_poses(std::slice::from_ref(spec), focus, direction, aspect)
+}
+
+/// [`orbit_for`] framing what each of `poses` shows (a step's scene at moments of its
+/// animation), so that nothing framed leaves the picture while it plays; the picture's shape
+/// defaults to the first pose's image.
+pub fn orbit_for_poses(
+    poses: &[SceneSpec],
+    focus: &[String],
+    direction: Option<[f32; 2]>,
+    aspect: Option<f32>,
+) -> Orbit {
+    let points: Vec<Vec3> = poses.iter().flat_map(|s| framed(s, focus)).collect();
+    let aspect = aspect
+        .filter(|a| a.is_finite() && *a > 0.0)
+        .unwrap_or_else(|| {
+            poses.first().map_or(1.0, |s| {
+                s.settings.width as f32 / s.settings.height.max(1) as f32
+            })
+        });
+    around(&points, direction, aspect)
+}
+
+/// The points [`orbit_for`] frames in `spec`: the named objects' box corners (with the
+/// viewing camera's when the focus names it), or everything.
+fn framed(spec: &SceneSpec, focus: &[String]) -> Vec<Vec3> {
     let (objects, _) = spec.scene.drawn_objects();
     let corners = |named: &dyn Fn(&str) -> bool| -> Vec<Vec3> {
         objects
@@ -113,7 +134,7 @@ pub fn orbit_for(
         ]
     };
     let mut points = corners(&|name| crate::spaces::named_in(focus, name));
-    if !points.is_empty() && focus.iter().any(|f| f == CAMERA) {
+    if !points.is_empty() && focus.iter().any(|f| f == crate::spaces::CAMERA) {
         points.extend(camera());
     }
     if focus.is_empty() || points.is_empty() {
@@ -127,6 +148,13 @@ pub fn orbit_for(
         }));
         points.retain(|p| p.is_finite());
     }
+    points
+}
+
+/// The orbit from `direction` (`[yaw, pitch]`, [`DEFAULT_DIRECTION`] when `None`) that looks at
+/// the middle of `points` from where they all lie inside the middle 85 % of a picture of
+/// `aspect`.
+fn around(points: &[Vec3], direction: Option<[f32; 2]>, aspect: f32) -> Orbit {
     let (lo, hi) = points.iter().fold(
         (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)),
         |(lo, hi), p| (lo.min(*p), hi.max(*p)),
@@ -136,9 +164,6 @@ pub fn orbit_for(
     } else {
         Vec3::ZERO
     };
-    let aspect = aspect
-        .filter(|a| a.is_finite() && *a > 0.0)
-        .unwrap_or(spec.settings.width as f32 / spec.settings.height.max(1) as f32);
     let [yaw, pitch] = direction.unwrap_or(DEFAULT_DIRECTION);
     let mut orbit = Orbit {
         yaw,
@@ -146,7 +171,7 @@ pub fn orbit_for(
         centre,
         distance: 1.0,
     };
-    orbit.distance = fitting_distance(&orbit, &points, aspect);
+    orbit.distance = fitting_distance(&orbit, points, aspect);
     // Centred on what it shows: the centre moved across the picture toward the middle of the
     // points' extent there, half the way each time (a whole step overshoots: the points
     // nearer the observer move more than the centre), eight times.
@@ -169,7 +194,7 @@ pub fn orbit_for(
             break;
         }
         orbit.centre += (r * (x[0] + x[1]) + u * (y[0] + y[1])) / 4.0 * orbit.distance;
-        orbit.distance = fitting_distance(&orbit, &points, aspect);
+        orbit.distance = fitting_distance(&orbit, points, aspect);
     }
     orbit
 }

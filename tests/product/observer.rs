@@ -248,3 +248,62 @@ fn lesson_25s_observer_shows_the_cube_large_with_the_eye_in_sight() {
         );
     }
 }
+
+/// Lesson 17's humanoid swings its limbs ±40° while its step plays: framed over the poses
+/// of the animation, every vertex of every part of the figure stays inside the observer's
+/// picture at every moment of it (21 moments, most of them between the nine the framing
+/// samples), in a tall panel and a wide one. Framed for the first pose alone, a swinging
+/// limb leaves a tall panel (it did at 1366×768 in classroom mode).
+#[test]
+fn an_animated_subject_stays_inside_the_observer_while_it_plays() {
+    use pipelens::observer::{orbit_for, orbit_for_poses};
+    let lesson = crate::support::lesson("17-hierarchy");
+    let k = 3;
+    let step = &lesson.steps[k];
+    let focus = step.focus.clone().unwrap_or_default();
+    assert_eq!(focus, ["body"]);
+    let seconds = step.animate.iter().map(|a| a.seconds).fold(0.0, f32::max);
+    assert!(seconds > 0.0, "the step animates");
+    let poses: Vec<_> = (0..=8)
+        .map(|i| lesson.spec_playing(k, seconds * i as f32 / 8.0))
+        .collect();
+    // The largest |x| or |y| in NDC that the figure reaches over the animation.
+    let reach = |orbit: pipelens::observer::Orbit, aspect: f32| {
+        let obs =
+            pipelens::observer::render_observer(&poses[0], orbit.camera(), Some(aspect), None)
+                .expect("renders");
+        let pv = obs.matrices.projection.matrix * obs.matrices.view.matrix;
+        (0..=20)
+            .flat_map(|i| {
+                let spec = lesson.spec_playing(k, seconds * i as f32 / 20.0);
+                let (objects, _) = spec.scene.drawn_objects();
+                objects
+                    .into_iter()
+                    .filter(|o| o.name.starts_with("body: "))
+                    .flat_map(|o| {
+                        let m = o.model_matrix().matrix;
+                        o.mesh
+                            .positions
+                            .iter()
+                            .map(|p| pv * m.transform_point3(*p).extend(1.0))
+                            .collect::<Vec<_>>()
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .map(|c| (c.x / c.w).abs().max((c.y / c.w).abs()))
+            .fold(0.0f32, f32::max)
+    };
+    for aspect in [0.72, 1.6] {
+        let framed = orbit_for_poses(&poses, &focus, step.orbit, Some(aspect));
+        let r = reach(framed, aspect);
+        assert!(
+            r < 1.0,
+            "aspect {aspect}: the figure reaches {r} of the picture"
+        );
+    }
+    let first = orbit_for(&poses[0], &focus, step.orbit, Some(0.72));
+    assert!(
+        reach(first, 0.72) > 1.0,
+        "the first pose alone is the wrong frame"
+    );
+}

@@ -179,11 +179,26 @@ impl Session {
     }
 
     /// Points the observer at the subject of the step playing (its `focus`, from its `orbit`
-    /// direction; the whole scene without a lesson), framed for the observer's panel.
+    /// direction; the whole scene without a lesson), framed for the observer's panel and for
+    /// every pose the step's animations take (nine, across the longest): a limb swinging out
+    /// stays in the picture.
     pub(super) fn frame_observer(&mut self, spec: &SceneSpec) {
         let step = self.lesson.as_ref().map(LessonPlayer::current);
-        self.orbit = crate::observer::orbit_for(
-            spec,
+        let poses: Vec<SceneSpec> = match (&self.lesson, step) {
+            (Some(p), Some(s)) if !s.animate.is_empty() => {
+                let longest = s.animate.iter().map(|a| a.seconds).fold(0.0, f32::max);
+                (0..=8)
+                    .map(|i| p.lesson.spec_playing(p.step, longest * i as f32 / 8.0))
+                    .collect()
+            }
+            _ => Vec::new(),
+        };
+        self.orbit = crate::observer::orbit_for_poses(
+            if poses.is_empty() {
+                std::slice::from_ref(spec)
+            } else {
+                &poses
+            },
             step.and_then(|s| s.focus.as_deref()).unwrap_or_default(),
             step.and_then(|s| s.orbit),
             self.observer_aspect,
