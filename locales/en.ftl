@@ -221,6 +221,7 @@ alt-name-colon = :{" "}
 
 answer-type-the-value = Type the value
 answer-type-the-components = Type the { $n } components
+answer-type-the-values = Type the { $n } values
 answer-type-the-matrix = Type the { $rows }×{ $columns } matrix, cell by cell
 answer-prompt = { $what } (each within { $tolerance }):
 answer-a-number-or-an-expression = A number or an expression: 0.866, sqrt(3)/2, 2*pi/3, 1/4

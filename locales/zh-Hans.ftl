@@ -215,6 +215,7 @@ alt-name-colon = ：
 
 answer-type-the-value = 填入数值
 answer-type-the-components = 填入 { $n } 个分量
+answer-type-the-values = 填入 { $n } 个数值
 answer-type-the-matrix = 逐格填入 { $rows }×{ $columns } 矩阵
 answer-prompt = { $what }（每项误差 { $tolerance } 以内）：
 answer-a-number-or-an-expression = 数值或算式：0.866、sqrt(3)/2、2*pi/3、1/4

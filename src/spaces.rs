@@ -254,6 +254,11 @@ pub fn fate_index(f: &pipeline::capture::Fate) -> usize {
     }
 }
 
+/// The name a step's `focus` gives the viewing camera (`focus = ["cube", "camera"]`): the
+/// observer then frames the objects named with the camera's eye and its frame u, v, n, and
+/// leaves the lights out.
+pub const CAMERA: &str = "camera";
+
 /// Whether `focus` names the object `name`: by its own name, or a figure's part by the
 /// figure's name (`arm` names `arm: base`).
 #[must_use]

@@ -143,7 +143,7 @@ sub,sup{font-size:75%;line-height:0} code{font-size:92%;background:#f0f0ea;paddi
 .frac{display:inline-flex;flex-direction:column;vertical-align:middle;text-align:center;font-size:88%;margin:0 .15em;line-height:1.15}
 .frac>span:first-child{border-bottom:1px solid currentColor;padding:0 .2em}
 .question{background:#f6f6f0;padding:.5em 1em;margin-top:1em} .answer{border-left:4px solid #8a3b00;padding:.2em 1em;margin:.5em 0}
-pre.code{font-size:85%;background:#f0f0ea;padding:.5em;white-space:pre-wrap} table.fill{border-collapse:collapse;margin:.4em 0} table.fill td{border:1px solid #555;min-width:4.5em;height:1.8em;padding:0 .4em;text-align:right;font-family:monospace;background:#fff}
+pre.code{font-size:85%;background:#f0f0ea;padding:.5em;white-space:pre-wrap} table.fill{border-collapse:collapse;margin:.4em 0} table.fill td{border:1px solid #555;min-width:4.5em;height:1.8em;padding:0 .4em;text-align:right;font-family:monospace;background:#fff} table.fill th{font-weight:normal;font-family:monospace;padding:0 .4em;text-align:center}
 details{margin-top:.4em} .key{display:inline-block;background:#8a3b00;color:#fff;padding:.1em .6em;border-radius:.3em}
 @media print{
 @page{size:A4;margin:14mm}

@@ -177,6 +177,15 @@ fn fill_in(e: &crate::lesson::answer::Expect, answers: bool, lang: Lang) -> Stri
         "<div class=\"ui\">{}</div><table class=\"fill\">",
         lang.t_with("handout-exercise-your-answer", &[("tolerance", &tolerance)])
     );
+    // The entries' names over their boxes, where the step names them.
+    if !e.names.is_empty() && rows == 1 {
+        h.push_str("<tr>");
+        for c in 0..cols {
+            let name = e.entry_name((0, c)).unwrap_or_default();
+            let _ = write!(h, "<th>{}</th>", html::esc(name));
+        }
+        h.push_str("</tr>");
+    }
     for r in 0..rows {
         h.push_str("<tr>");
         for c in 0..cols {

@@ -46,6 +46,9 @@ pub struct Expect {
     pub values: Vec<f64>,
     /// The largest difference still counted right.
     pub tolerance: f64,
+    /// What each entry is, row by row (`expect_names`), where they are not a vector's x, y, z,
+    /// w; empty when the step names none.
+    pub names: Vec<String>,
 }
 
 /// An exercise step: the student completes a shader (`starter`), which draws the step's
@@ -146,6 +149,21 @@ pub enum Verdict {
 pub const RELATIVE_TOLERANCE: f64 = 0.05;
 
 impl Expect {
+    /// The name of the entry at row `r`, column `c`: the one the step gives
+    /// (`expect_names`), else a vector's x, y, z, w; `None` for a lone number, a matrix's
+    /// cells (said by row and column) and a vector longer than four.
+    #[must_use]
+    pub fn entry_name(&self, (r, c): (usize, usize)) -> Option<&str> {
+        let (_, cols) = self.shape.size();
+        if let Some(name) = self.names.get(r * cols + c) {
+            return Some(name);
+        }
+        match self.shape {
+            Shape::Vector(_) => ["x", "y", "z", "w"].get(c).copied(),
+            Shape::Number | Shape::Matrix(..) => None,
+        }
+    }
+
     /// The tolerance for `expected`: the lesson's, or 5 % of `|expected|` where that is
     /// smaller ([`RELATIVE_TOLERANCE`]). Zero keeps the lesson's.
     #[must_use]
@@ -245,14 +263,12 @@ impl Verdict {
     #[must_use]
     pub fn describe(&self, expect: &Expect, lang: crate::vocabulary::Lang) -> String {
         let num = |v: f64| crate::vocabulary::short(v as f32, 4);
-        let cell = |(r, c): (usize, usize)| match expect.shape {
-            Shape::Number => lang.t("answer-your-value").to_owned(),
-            // A vector's entries by the names its boxes show, x, y, z, w (up to four).
-            Shape::Vector(n) if n <= 4 => {
-                lang.t_with("answer-named-entry", &[("name", &["x", "y", "z", "w"][c])])
-            }
-            Shape::Vector(_) => lang.t_with("answer-component", &[("n", &(c + 1))]),
-            Shape::Matrix(..) => lang.t_with(
+        // Each entry by the name its box shows (the step's, or a vector's x, y, z, w).
+        let cell = |(r, c): (usize, usize)| match (expect.entry_name((r, c)), expect.shape) {
+            (Some(name), _) => lang.t_with("answer-named-entry", &[("name", &name)]),
+            (None, Shape::Number) => lang.t("answer-your-value").to_owned(),
+            (None, Shape::Vector(_)) => lang.t_with("answer-component", &[("n", &(c + 1))]),
+            (None, Shape::Matrix(..)) => lang.t_with(
                 "answer-row-column",
                 &[("row", &(r + 1)), ("column", &(c + 1))],
             ),
@@ -313,6 +329,7 @@ mod tests {
             shape: Shape::Number,
             values: vec![1.0],
             tolerance: 0.001,
+            names: Vec::new(),
         };
         let v = e.check(&["(1".to_owned()]);
         let zh = v.describe(&e, Lang::ZH);
@@ -332,6 +349,7 @@ mod tests {
             shape: Shape::Vector(3),
             values: vec![2.0, 0.5, -0.5],
             tolerance: 0.001,
+            names: Vec::new(),
         };
         let typed = |cells: [&str; 3]| cells.map(str::to_owned).to_vec();
         assert_eq!(e.check(&typed(["2 0.5 -0.5", "", ""])), Verdict::Right);
@@ -358,6 +376,7 @@ mod tests {
             shape: Shape::Vector(3),
             values: vec![1.0, 2.0, 3.0],
             tolerance: 0.01,
+            names: Vec::new(),
         };
         let typed = |cells: [&str; 3]| cells.map(str::to_owned).to_vec();
         let v = e.check(&typed(["1", "2.5", "3"]));
@@ -378,6 +397,7 @@ mod tests {
             shape: Shape::Matrix(2, 2),
             values: vec![1.0, 0.0, 0.0, 1.0],
             tolerance: 0.01,
+            names: Vec::new(),
         };
         let typed = |cells: [&str; 4]| cells.map(str::to_owned).to_vec();
         let v = e.check(&typed(["1", "0.5", "0", "0.5"]));
@@ -409,6 +429,7 @@ mod tests {
             shape: Shape::Vector(2),
             values: vec![0.000792, 0.185302],
             tolerance: 0.005,
+            names: Vec::new(),
         };
         let typed = |cells: [&str; 2]| cells.map(str::to_owned).to_vec();
         assert!(matches!(e.check(&typed(["0", "0.185"])), Verdict::Off(m) if m.len() == 1));
@@ -431,6 +452,7 @@ mod tests {
             shape: Shape::Matrix(2, 2),
             values: vec![1.0, 0.0, 0.0, 0.5],
             tolerance: 0.01,
+            names: Vec::new(),
         };
         let typed = |cells: [&str; 4]| cells.map(str::to_owned).to_vec();
         assert_eq!(e.check(&typed(["1", "0", "0", "1/2"])), Verdict::Right);

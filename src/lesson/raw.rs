@@ -469,6 +469,9 @@ pub struct RawStep {
     pub expect: Option<Spanned<RawExpect>>,
     /// How far a typed entry may be from `expect` and still be right.
     pub tolerance: Option<Spanned<f64>>,
+    /// What each entry of `expect` is, where they are not a vector's x, y, z, w:
+    /// `expect_names = ["top", "right"]`.
+    pub expect_names: Option<Spanned<Vec<String>>>,
     pub answer: Option<Spanned<RawText>>,
     /// The student writes code: `{ task, starter = { vertex, fragment }, tolerance }`.
     pub exercise: Option<Spanned<RawExercise>>,

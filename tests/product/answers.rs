@@ -420,3 +420,49 @@ fn progress_kept_by_the_first_version_is_read_and_nothing_is_lost() {
     assert_eq!(record.functions["a_later_kind"][&3], "src");
     assert_eq!(record.functions["inside"][&4], "bool inside4");
 }
+
+/// Lesson 25's question asks for f = cot(fovy/2) and f/aspect, two numbers that are not a
+/// vector's x and y: the boxes are named "f" and "f/aspect" (beside them, and for a screen
+/// reader), the prompt asks for values, not components, and a wrong entry is named so in the
+/// verdict. f = 2.414 right and f/aspect typed as 1.6 (the aspect itself): 1.6 − 1.50888 =
+/// 0.09112 too large, by hand, said to four digits.
+#[test]
+fn the_entries_of_a_value_that_is_not_a_vector_are_named_as_the_question_names_them() {
+    let path = repo().join("lessons/25-lab-model-projection.toml");
+    let mut h = sized_lesson_harness(&path, [1366.0, 768.0]);
+    crate::app::go_to_step(&mut h, 3);
+    assert!(crate::app::lesson_of(&h).steps[3].expect.is_some());
+    assert!(
+        h.query_by_label("f/aspect").is_some(),
+        "the name over the box"
+    );
+    // Each box is named by the name beside it, and has no x or y hint.
+    let boxes: Vec<(Option<String>, Option<String>)> = h
+        .get_all_by_role(egui::accesskit::Role::TextInput)
+        .map(|b| {
+            use egui_kittest::kittest::NodeT as _;
+            let n = b.accesskit_node();
+            (
+                n.label(),
+                n.placeholder().filter(|p| !p.is_empty()).map(str::to_owned),
+            )
+        })
+        .collect();
+    assert_eq!(
+        boxes,
+        [
+            (Some("f".to_owned()), None),
+            (Some("f/aspect".to_owned()), None)
+        ]
+    );
+    assert!(
+        h.query_by_label_contains("Type the 2 values").is_some(),
+        "the prompt"
+    );
+    type_and_check(&mut h, &["2.414", "1.6"]);
+    assert!(
+        h.query_by_label_contains("f/aspect = 1.6 is 0.0911 too large")
+            .is_some(),
+        "the verdict names f/aspect"
+    );
+}

@@ -21,6 +21,28 @@ pub(crate) const MISTAKES: &[(&str, &str, &str)] = &[
         "`stage` must be one of",
     ),
     ("layout = \"compare\"", "\"compare\"", "needs `compare"),
+    // `expect_names` names each entry of a vector's value once, beside its `expect`; the
+    // names follow on the next lines.
+    (
+        "expect_names = [\"top\"]\nquestion = { en = \"q\", zh = \"问\" }\nexpect = [1, 1]",
+        "[\"top\"]",
+        "one name per entry of `expect`: 2, got 1",
+    ),
+    (
+        "expect_names = [\"a\"]\nquestion = { en = \"q\", zh = \"问\" }\nexpect = 0.5",
+        "[\"a\"]",
+        "a single value needs none",
+    ),
+    (
+        "expect_names = [\"top\", \"\"]",
+        "[\"top\"",
+        "belongs beside an `expect` value",
+    ),
+    (
+        "expect_names = [\"the top of the near plane\", \"right\"]\nquestion = { en = \"q\", zh = \"问\" }\nexpect = [1, 1]",
+        "[\"the top",
+        "1 to 12 characters",
+    ),
     // The observer cannot look straight down: its camera's up is the vertical axis.
     (
         "orbit = [30, 90]",

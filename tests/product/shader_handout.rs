@@ -160,3 +160,34 @@ fn a_shader_slide_shows_its_code_beside_the_picture() {
         "a step with no code has a code panel"
     );
 }
+
+/// Lesson 25's question asks for f and f/aspect: the handout's boxes carry those names above
+/// them, and the teacher's key fills them with 2.4142 and 1.5089 (cot 22.5° = 2.41421 and
+/// 2.41421/1.6 = 1.50888, by hand).
+#[test]
+fn a_handouts_boxes_carry_the_names_the_question_gives() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let lesson = crate::support::repo().join("lessons/25-lab-model-projection.toml");
+    let out = dir.path().join("h");
+    let o = pipelens(
+        dir.path(),
+        &[
+            "export",
+            lesson.to_str().expect("utf-8"),
+            "--step",
+            "4",
+            "--answers",
+            "--out",
+            out.to_str().expect("utf-8"),
+        ],
+    );
+    assert!(o.status.success(), "{}", text(&o));
+    let html = std::fs::read_to_string(out.join("index.html")).expect("index.html");
+    assert!(
+        html.contains(
+            "<tr><th>f</th><th>f/aspect</th></tr><tr><td>2.4142</td><td>1.5089</td></tr>"
+        ),
+        "{}",
+        &html[html.find("class=\"fill\"").unwrap_or(0)..][..300.min(html.len())]
+    );
+}

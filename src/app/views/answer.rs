@@ -37,19 +37,33 @@ pub fn field(
     let mut check = false;
     let cell_width = style.size * 4.2;
     egui::Grid::new("answer-field")
+        .min_col_width(0.0)
         .spacing([style.size * 0.3, style.size * 0.3])
         .show(ui, |ui| {
+            // Names the step gives stay before their boxes once a box is typed in (the grey
+            // hint goes), on the boxes' own row; a vector's x, y, z are the hints alone.
+            let named = style.sized(style.size * 0.85);
             for r in 0..rows {
                 for c in 0..cols {
+                    let label = (!expect.names.is_empty()).then(|| {
+                        let name = expect.entry_name((r, c)).unwrap_or_default();
+                        super::typeset::formula(ui, name, &named).id
+                    });
                     let i = r * cols + c;
                     let mut text = typed[i].clone();
-                    let edit = egui::TextEdit::singleline(&mut text)
+                    let mut edit = egui::TextEdit::singleline(&mut text)
                         .font(egui::FontId::monospace(style.size * 0.9))
-                        .background_color(Color32::from_gray(45))
-                        .hint_text(hint(expect.shape, (r, c)));
-                    let response = ui
+                        .background_color(Color32::from_gray(45));
+                    if let Some(hint) = hint(expect, (r, c)) {
+                        edit = edit.hint_text(hint);
+                    }
+                    let mut response = ui
                         .add_sized([cell_width, style.size * 1.5], edit)
                         .on_hover_text(lang.t("answer-a-number-or-an-expression"));
+                    if let Some(label) = label {
+                        // A screen reader names the box by the name beside it.
+                        response = response.labelled_by(label);
+                    }
                     if response.changed() {
                         commands.push(Command::Lesson(LessonCommand::TypeAnswer { cell: i, text }));
                     }
@@ -85,6 +99,10 @@ fn prompt(expect: &Expect, lang: Lang) -> String {
     let tolerance = expect.tolerance_words(lang);
     let what = match expect.shape {
         Shape::Number => lang.t("answer-type-the-value").to_owned(),
+        // Named entries are values of their own, not a vector's components.
+        Shape::Vector(n) if !expect.names.is_empty() => {
+            lang.t_with("answer-type-the-values", &[("n", &n)])
+        }
         Shape::Vector(n) => lang.t_with("answer-type-the-components", &[("n", &n)]),
         Shape::Matrix(r, c) => {
             lang.t_with("answer-type-the-matrix", &[("rows", &r), ("columns", &c)])
@@ -96,11 +114,15 @@ fn prompt(expect: &Expect, lang: Lang) -> String {
     )
 }
 
-/// The grey hint in an empty cell: `x`, `y`, … for a vector, `m11` … for a matrix.
-fn hint(shape: Shape, (r, c): (usize, usize)) -> String {
-    match shape {
-        Shape::Number => "?".to_owned(),
-        Shape::Vector(_) => ["x", "y", "z", "w"][c.min(3)].to_owned(),
-        Shape::Matrix(..) => format!("m{}{}", r + 1, c + 1),
+/// The grey hint in an empty cell: `x`, `y`, … for a vector, `m11` … for a matrix's cell;
+/// none where the step names its entries (each name is beside its box).
+fn hint(expect: &Expect, (r, c): (usize, usize)) -> Option<String> {
+    if !expect.names.is_empty() {
+        return None;
     }
+    Some(match (expect.entry_name((r, c)), expect.shape) {
+        (Some(name), _) => name.to_owned(),
+        (None, Shape::Matrix(..)) => format!("m{}{}", r + 1, c + 1),
+        (None, _) => "?".to_owned(),
+    })
 }

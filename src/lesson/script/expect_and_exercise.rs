@@ -30,6 +30,10 @@ impl Checker<'_> {
             Some(t) => *t.get_ref(),
             None => DEFAULT_TOLERANCE,
         };
+        if let (Some(n), None) = (&r.expect_names, &r.expect) {
+            self.error(n.span(), "`expect_names` belongs beside an `expect` value");
+            return None;
+        }
         let e = r.expect.as_ref()?;
         if r.question.is_none() {
             self.error(e.span(), "`expect` needs a `question` in the same step: it is the value that question asks for");
@@ -66,11 +70,46 @@ impl Checker<'_> {
             );
             return None;
         }
+        let names = self.expect_names(r, shape, values.len());
         Some(Expect {
             shape,
             values,
             tolerance,
+            names,
         })
+    }
+
+    /// A step's `expect_names`: one short name per entry of a vector or matrix, as its boxes
+    /// show them (`["top", "right"]`, `["r·v", "n·h"]`); none for a lone number, which is
+    /// "your value".
+    fn expect_names(&mut self, r: &RawStep, shape: Shape, entries: usize) -> Vec<String> {
+        let Some(n) = &r.expect_names else {
+            return Vec::new();
+        };
+        let names = n.get_ref();
+        let problem = if shape == Shape::Number {
+            Some(
+                "`expect_names` names the entries of a vector or matrix; a single value needs none"
+                    .to_owned(),
+            )
+        } else if names.len() != entries {
+            Some(format!(
+                "`expect_names` needs one name per entry of `expect`: {entries}, got {}",
+                names.len()
+            ))
+        } else {
+            names
+                .iter()
+                .find(|x| x.trim().is_empty() || x.chars().count() > 12)
+                .map(|bad| format!(
+                    "each of `expect_names` is a short name of 1 to 12 characters that fits its box, got \"{bad}\""
+                ))
+        };
+        if let Some(p) = problem {
+            self.error(n.span(), p);
+            return Vec::new();
+        }
+        names.iter().map(|x| x.trim().to_owned()).collect()
     }
 
     /// A step's `exercise`: the task in both languages, a starter that compiles (its messages

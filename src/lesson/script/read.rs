@@ -484,7 +484,7 @@ impl Checker<'_> {
             .iter()
             .map(|o| o.name.as_str())
             .chain(spec.scene.figures.iter().map(|f| f.name.as_str()))
-            .chain([crate::observer::CAMERA])
+            .chain([crate::spaces::CAMERA])
             .collect();
         names
             .iter()
