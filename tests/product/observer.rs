@@ -229,14 +229,7 @@ fn lesson_25s_observer_shows_the_cube_large_with_the_eye_in_sight() {
             Some(aspect),
         );
         let obs = render_observer(&spec, orbit.camera(), Some(aspect), None).expect("renders");
-        let total = obs.pixels.primitive.len();
-        let cube = obs
-            .pixels
-            .primitive
-            .iter()
-            .filter(|&&p| p != pipeline::raster::NONE)
-            .count();
-        let share = cube as f32 / total as f32;
+        let share = crate::support::covered_share(&obs);
         assert!(share >= 0.2, "aspect {aspect}: the cube covers {share}");
         let clip = obs.matrices.projection.matrix
             * obs.matrices.view.matrix

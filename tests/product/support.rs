@@ -100,3 +100,10 @@ pub fn without_tags(html: &str) -> String {
     }
     text
 }
+
+/// The share of a capture's pixels that some triangle covers.
+pub fn covered_share(capture: &pipeline::capture::FrameCapture) -> f32 {
+    let ids = &capture.pixels.primitive;
+    let covered = ids.iter().filter(|&&p| p != pipeline::raster::NONE).count();
+    covered as f32 / ids.len().max(1) as f32
+}

@@ -199,13 +199,7 @@ fn the_observer_frames_its_subject_for_the_panel_it_is_shown_in() {
             (ratio / aspect - 1.0).abs() < 0.05,
             "{size:?}: rendered at {ratio}, panel {aspect}"
         );
-        let cube = obs
-            .pixels
-            .primitive
-            .iter()
-            .filter(|&&p| p != pipeline::raster::NONE)
-            .count();
-        let share = cube as f32 / obs.pixels.primitive.len() as f32;
+        let share = crate::support::covered_share(obs);
         assert!(
             share >= 0.2,
             "{size:?}, panel {aspect}: the cube covers {share} of the observer"
