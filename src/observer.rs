@@ -61,8 +61,8 @@ pub fn default_orbit(spec: &SceneSpec) -> Orbit {
 /// the world-space box of the objects it names ([`crate::spaces::named_in`]) — the viewing
 /// camera and its frustum are then context around the subject, unless the focus also names
 /// the [`crate::spaces::CAMERA`], whose eye and frame are then framed with them; without one
-/// (or when it names nothing drawn), every drawn object's box, the lights with a place and the viewing camera
-/// with its frame, so that the objects are as large as the camera beside them allows (lesson
+/// (or when it names nothing drawn), every drawn object's box, the lights with a place and the
+/// viewing camera with its frame, so that the objects are as large as the camera beside them allows (lesson
 /// 25's cube was 0.7 % of the window, framed from twice the eye's distance). The orbit looks
 /// at the middle of what it frames, from the distance where every point lies inside the
 /// middle 85 % of the picture ([`fitting_distance`]).

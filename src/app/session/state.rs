@@ -179,10 +179,16 @@ impl Session {
     }
 
     /// Points the observer at the subject of the step playing (its `focus`, from its `orbit`
-    /// direction; the whole scene without a lesson), framed for the observer's panel and for
-    /// every pose the step's animations take (nine, across the longest): a limb swinging out
-    /// stays in the picture.
+    /// direction; the whole scene `spec` without a lesson), framed for the observer's panel
+    /// and for every pose the step's animations take (nine, across the longest): a limb
+    /// swinging out stays in the picture.
     pub(super) fn frame_observer(&mut self, spec: &SceneSpec) {
+        self.orbit = self.observer_framing(spec);
+        self.orbit_framed = true;
+    }
+
+    /// The orbit [`Self::frame_observer`] sets.
+    pub(super) fn observer_framing(&self, spec: &SceneSpec) -> Orbit {
         let step = self.lesson.as_ref().map(LessonPlayer::current);
         let poses: Vec<SceneSpec> = match (&self.lesson, step) {
             (Some(p), Some(s)) if !s.animate.is_empty() => {
@@ -193,7 +199,7 @@ impl Session {
             }
             _ => Vec::new(),
         };
-        self.orbit = crate::observer::orbit_for_poses(
+        crate::observer::orbit_for_poses(
             if poses.is_empty() {
                 std::slice::from_ref(spec)
             } else {
@@ -202,8 +208,7 @@ impl Session {
             step.and_then(|s| s.focus.as_deref()).unwrap_or_default(),
             step.and_then(|s| s.orbit),
             self.observer_aspect,
-        );
-        self.orbit_framed = true;
+        )
     }
 
     /// Goes to step `k` (clamped): its scene, stage, layout, buffer, overlays and highlights.
