@@ -95,30 +95,53 @@ pub fn orbit_for_poses(
     around(&points, direction, aspect)
 }
 
+/// The world-space corners of the boxes of the objects `named` that `spec` draws (finite ones).
+fn corners(spec: &SceneSpec, named: &dyn Fn(&str) -> bool) -> Vec<Vec3> {
+    let (objects, _) = spec.scene.drawn_objects();
+    objects
+        .iter()
+        .filter(|o| named(&o.name))
+        .filter_map(|o| {
+            let (lo, hi) = o.mesh.bounds()?;
+            let m = o.model_matrix().matrix;
+            Some((0..8).map(move |k| {
+                let pick = |bit: usize, a: f32, b: f32| if k >> bit & 1 == 1 { b } else { a };
+                m.transform_point3(Vec3::new(
+                    pick(0, lo.x, hi.x),
+                    pick(1, lo.y, hi.y),
+                    pick(2, lo.z, hi.z),
+                ))
+            }))
+        })
+        .flatten()
+        .filter(|p| p.is_finite())
+        .collect()
+}
+
+/// Where a step's subject reaches while its animation plays: the world-space box corners of
+/// the objects `focus` names (every object when it names none drawn) in each of `poses`. A
+/// geometry view frames these from the step's first frame, so that a swinging limb neither
+/// leaves the picture nor makes it breathe.
+#[must_use]
+pub fn reached(poses: &[SceneSpec], focus: &[String]) -> Vec<Vec3> {
+    let named = |name: &str| crate::spaces::named_in(focus, name);
+    poses
+        .iter()
+        .flat_map(|spec| {
+            let points = corners(spec, &named);
+            if points.is_empty() {
+                corners(spec, &|_| true)
+            } else {
+                points
+            }
+        })
+        .collect()
+}
+
 /// The points [`orbit_for`] frames in `spec`: the named objects' box corners (with the
 /// viewing camera's when the focus names it), or everything.
 fn framed(spec: &SceneSpec, focus: &[String]) -> Vec<Vec3> {
-    let (objects, _) = spec.scene.drawn_objects();
-    let corners = |named: &dyn Fn(&str) -> bool| -> Vec<Vec3> {
-        objects
-            .iter()
-            .filter(|o| named(&o.name))
-            .filter_map(|o| {
-                let (lo, hi) = o.mesh.bounds()?;
-                let m = o.model_matrix().matrix;
-                Some((0..8).map(move |k| {
-                    let pick = |bit: usize, a: f32, b: f32| if k >> bit & 1 == 1 { b } else { a };
-                    m.transform_point3(Vec3::new(
-                        pick(0, lo.x, hi.x),
-                        pick(1, lo.y, hi.y),
-                        pick(2, lo.z, hi.z),
-                    ))
-                }))
-            })
-            .flatten()
-            .filter(|p| p.is_finite())
-            .collect()
-    };
+    let corners = |named: &dyn Fn(&str) -> bool| corners(spec, named);
     // The viewing camera's eye with its frame's axes u, v, n (a quarter of the way to what it
     // looks at, labelled a little beyond).
     let camera = || {

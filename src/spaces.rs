@@ -87,6 +87,21 @@ pub fn world_into(capture: &FrameCapture, space: Space) -> Option<glam::Mat4> {
 /// the cube to a dot), around the subject's vertices elsewhere; centred on their box, just
 /// reaching the farthest.
 pub fn bounds(capture: &FrameCapture, spaces: [Space; 2], subject: &[bool]) -> Option<(Vec3, f32)> {
+    let points = framed_points(capture, spaces, subject);
+    let lo = points.iter().copied().reduce(Vec3::min)?;
+    let hi = points.iter().copied().reduce(Vec3::max)?;
+    let centre = (lo + hi) / 2.0;
+    let radius = points
+        .iter()
+        .map(|p| (*p - centre).length())
+        .fold(0.0f32, f32::max);
+    Some((centre, radius))
+}
+
+/// The points [`bounds`] frames: the view volume's corners in NDC and window coordinates, the
+/// subject's finite vertex positions elsewhere, in each of `spaces`.
+#[must_use]
+pub fn framed_points(capture: &FrameCapture, spaces: [Space; 2], subject: &[bool]) -> Vec<Vec3> {
     let mut points = Vec::new();
     let mut add = |p: Vec3| {
         if p.is_finite() {
@@ -104,14 +119,7 @@ pub fn bounds(capture: &FrameCapture, spaces: [Space; 2], subject: &[bool]) -> O
                 .for_each(&mut add),
         }
     }
-    let lo = points.iter().copied().reduce(Vec3::min)?;
-    let hi = points.iter().copied().reduce(Vec3::max)?;
-    let centre = (lo + hi) / 2.0;
-    let radius = points
-        .iter()
-        .map(|p| (*p - centre).length())
-        .fold(0.0f32, f32::max);
-    Some((centre, radius))
+    points
 }
 
 /// The orbit a geometry picture is first seen from: degrees about y, and above the horizon.

@@ -45,6 +45,10 @@ pub struct Session {
     /// by hand since): it is framed again when the observer's panel changes shape, as it does
     /// on the first frame that shows it.
     pub orbit_framed: bool,
+    /// Where the step's subject reaches while its animation plays ([`crate::observer::reached`],
+    /// world coordinates), with the [`Self::step_entered`] it is for; empty for a step that
+    /// does not animate.
+    pub subject_reach: (u64, Vec<glam::Vec3>),
     /// The physical pixels the pixel view draws the image over.
     pub view_pixels: Option<[u32; 2]>,
     /// The buffer shown rendered at that resolution (`view_resolution`).
@@ -122,6 +126,7 @@ impl Session {
             error: None,
             orbit,
             orbit_framed: true,
+            subject_reach: (0, Vec::new()),
             observer_aspect: None,
             view_pixels: None,
             view_resolution: ViewResolution::default(),
@@ -190,15 +195,7 @@ impl Session {
     /// The orbit [`Self::frame_observer`] sets.
     pub(super) fn observer_framing(&self, spec: &SceneSpec) -> Orbit {
         let step = self.lesson.as_ref().map(LessonPlayer::current);
-        let poses: Vec<SceneSpec> = match (&self.lesson, step) {
-            (Some(p), Some(s)) if !s.animate.is_empty() => {
-                let longest = s.animate.iter().map(|a| a.seconds).fold(0.0, f32::max);
-                (0..=8)
-                    .map(|i| p.lesson.spec_playing(p.step, longest * i as f32 / 8.0))
-                    .collect()
-            }
-            _ => Vec::new(),
-        };
+        let poses = self.animation_poses();
         crate::observer::orbit_for_poses(
             if poses.is_empty() {
                 std::slice::from_ref(spec)
@@ -209,6 +206,21 @@ impl Session {
             step.and_then(|s| s.orbit),
             self.observer_aspect,
         )
+    }
+
+    /// The step's scene at nine moments of its longest animation; none for a step that does
+    /// not animate (or outside a lesson).
+    fn animation_poses(&self) -> Vec<SceneSpec> {
+        let step = self.lesson.as_ref().map(LessonPlayer::current);
+        match (&self.lesson, step) {
+            (Some(p), Some(s)) if !s.animate.is_empty() => {
+                let longest = s.animate.iter().map(|a| a.seconds).fold(0.0, f32::max);
+                (0..=8)
+                    .map(|i| p.lesson.spec_playing(p.step, longest * i as f32 / 8.0))
+                    .collect()
+            }
+            _ => Vec::new(),
+        }
     }
 
     /// Goes to step `k` (clamped): its scene, stage, layout, buffer, overlays and highlights.
@@ -266,6 +278,9 @@ impl Session {
         // The observer frames the step's subject, as the geometry views do.
         self.frame_observer(&spec);
         self.step_entered += 1;
+        let focus = step.focus.as_deref().unwrap_or_default();
+        let reach = crate::observer::reached(&self.animation_poses(), focus);
+        self.subject_reach = (self.step_entered, reach);
         // A dropped file's trouble is about what was on screen when it was dropped.
         self.dropped_error = None;
         let mut spec = spec;

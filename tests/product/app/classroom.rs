@@ -218,3 +218,54 @@ fn the_observer_frames_its_subject_for_the_panel_it_is_shown_in() {
         assert_eq!(h.state().session.orbit, turned);
     }
 }
+
+/// Lesson 17's humanoid stands taller than it is wide. Framed by its bounding sphere it got
+/// the square left between the matrix card and the legend: 230 of the 674 points of the world
+/// view at 1366×768 in classroom mode (34 %), beside a column of free room below the header.
+/// Framed by its box in the room of its own shape, it stands (at its tallest, the limbs
+/// straight) at least half the view's height at both sizes, and while its limbs swing (two
+/// and a half seconds of the step's animation) it stays inside the view, clear of every card,
+/// and the picture does not breathe: once a swing has been seen, the top of the head (which
+/// the swing does not move) stays within two points.
+#[test]
+fn a_standing_figure_is_framed_by_its_shape_and_keeps_still_while_it_swings() {
+    let path = crate::support::repo().join("lessons/17-hierarchy.toml");
+    for size in [[1366.0, 768.0], [1920.0, 1080.0]] {
+        let mut h = super::sized_lesson_harness(&path, size);
+        let ctx = h.ctx.clone();
+        h.state_mut().set_classroom(&ctx, true);
+        super::go_to_step(&mut h, 3);
+        let mut seen = Vec::new();
+        for frame in 0..150 {
+            h.run_steps(1);
+            let state = h.state();
+            let (Some(view), Some(figure)) = (state.picture.first(), state.subject.first()) else {
+                panic!("{size:?} frame {frame}: the world view and its subject");
+            };
+            assert!(
+                view.expand(1.0).contains_rect(*figure),
+                "{size:?} frame {frame}: {figure:?} leaves {view:?}"
+            );
+            let card = pipelens::app::views::card_placement::narration_card(&h.ctx);
+            for o in card.iter().chain(&state.overlays) {
+                let i = o.intersect(*figure);
+                assert!(
+                    i.width() <= 0.5 || i.height() <= 0.5,
+                    "{size:?} frame {frame}: {figure:?} under {o:?}"
+                );
+            }
+            seen.push((*figure, view.height()));
+        }
+        let tallest = seen.iter().map(|s| s.0.height()).fold(0.0, f32::max);
+        let view = seen[0].1;
+        assert!(tallest >= 0.5 * view, "{size:?}: {tallest} of {view}");
+        let top = seen[seen.len() - 1].0.top();
+        for (k, (figure, _)) in seen.iter().enumerate().skip(seen.len() / 2) {
+            assert!(
+                (figure.top() - top).abs() <= 2.0,
+                "{size:?} frame {k}: the head at {} against {top}",
+                figure.top()
+            );
+        }
+    }
+}

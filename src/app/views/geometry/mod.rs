@@ -5,6 +5,7 @@
 //! w). A card shows the matrix the stage applies.
 
 mod cards;
+mod framing;
 
 use egui::{Align2, Color32, FontId, Pos2, Rect, Stroke, Ui, Vec2};
 use glam::Vec3;
@@ -17,6 +18,7 @@ use crate::app::command::{SelectionCommand, ViewCommand};
 use crate::app::session::{Command, Session};
 use crate::spaces::{between, bounds, space_name, volume, world_into};
 use crate::vocabulary::Space;
+use framing::{SubjectBox, clear_of_cards};
 
 /// The orbiting camera of the geometry views, and the picture's zoom and pan.
 pub struct GeometryView {
@@ -35,6 +37,12 @@ pub struct GeometryView {
     /// The cards drawn over the picture this frame (until the next one is framed clear of
     /// them): the header, the matrix card, the legend.
     pub cards: Vec<Rect>,
+    /// The subject's box as the framing camera has seen it since the step, the space or the
+    /// orbit last changed (see [`SubjectBox`]).
+    seen: Option<SubjectBox>,
+    /// The square the framing camera's picture filled last frame: zooming toward the cursor
+    /// keeps the point under it where it is.
+    square: Option<Rect>,
 }
 
 impl Default for GeometryView {
@@ -48,6 +56,8 @@ impl Default for GeometryView {
             picture: None,
             subject: None,
             cards: Vec::new(),
+            seen: None,
+            square: None,
         }
     }
 }
@@ -195,6 +205,20 @@ fn shown(
     }
 }
 
+/// The camera a geometry view draws through, with the framed sphere's radius and centre.
+type Framed = (Projector, f32, Vec3);
+
+/// Said in the middle of a view with nothing in it to frame.
+fn nothing_to_show(painter: &egui::Painter, rect: Rect, lang: crate::vocabulary::Lang) {
+    painter.text(
+        rect.center(),
+        Align2::CENTER_CENTER,
+        lang.t("geometry-nothing-to-show-in-this"),
+        picture_font(painter.ctx(), 18.0),
+        Color32::GRAY,
+    );
+}
+
 /// `]` and `[` of a focused view: the next or previous vertex selected.
 fn vertex_keys(
     keys: super::picture_keys::Keys,
@@ -261,17 +285,13 @@ impl GeometryView {
         let view_volume = volume(capture, space).filter(|_| t >= 1.0);
         let shown = shown(capture, space, sphere, view_volume.is_some());
         let legend = cards::Legend::new(&painter, &shown, lang);
-        let (frame, legend_at) = clear_of_cards(ui.ctx(), rect, &own, &legend);
-        let keys = self.navigate(ui, &response, frame);
+        let keys = self.navigate(ui, &response, self.square.unwrap_or(rect));
         let mut cmds: Vec<Command> = vertex_keys(keys, session, capture).into_iter().collect();
-        let Some((cam, radius, centre)) = sphere.and_then(|b| self.camera(frame, b)) else {
-            painter.text(
-                rect.center(),
-                Align2::CENTER_CENTER,
-                lang.t("geometry-nothing-to-show-in-this"),
-                picture_font(painter.ctx(), 18.0),
-                Color32::GRAY,
-            );
+        let in_view = (rect, own.as_slice(), &legend);
+        let scene = (session, capture);
+        let (framed, legend_at) = self.frame(ui.ctx(), scene, (space, from), &subject, in_view);
+        let Some((cam, radius, centre)) = framed else {
+            nothing_to_show(&painter, rect, lang);
             return cmds;
         };
         draw_axes(&painter, &cam, radius * 0.6);
@@ -339,6 +359,51 @@ impl GeometryView {
         }
         super::picture_keys::ring(ui, rect, keys);
         cmds
+    }
+
+    /// The camera that frames the subject (the points [`crate::spaces::framed_points`] frames
+    /// on the way from `from` to `space`, and in world and eye coordinates where the step's
+    /// animation takes it) in the room of its shape that the cards (`own`, last frame's, and
+    /// the narration card) leave in `rect`, with the sphere's radius and centre; and where
+    /// the legend goes.
+    fn frame(
+        &mut self,
+        ctx: &egui::Context,
+        (session, capture): (&Session, &FrameCapture),
+        (space, from): (Space, Space),
+        subject: &[bool],
+        (rect, own, legend): (Rect, &[Rect], &cards::Legend),
+    ) -> (Option<Framed>, (Rect, usize)) {
+        let key = (
+            session.step_entered,
+            space,
+            self.yaw.to_bits(),
+            self.pitch.to_bits(),
+        );
+        let mut points = crate::spaces::framed_points(capture, [space, from], subject);
+        if let Some(m) = world_into(capture, space)
+            && session.subject_reach.0 == session.step_entered
+        {
+            let reach = &session.subject_reach.1;
+            points.extend(reach.iter().map(|p| m.transform_point3(*p)));
+        }
+        let framed = SubjectBox::framing(&points, self.seen, key);
+        self.seen = framed.map(|f| f.1);
+        let aspect = framed.map_or(1.0, |f| f.1.aspect());
+        let (frame, legend_at) = clear_of_cards(ctx, rect, own, legend, aspect);
+        let cam = framed.map(|(m, seen)| {
+            let (centre, radius) = seen.sphere();
+            let square = seen.square_for(frame);
+            self.square = Some(square);
+            let cam = Projector {
+                m,
+                rect: square,
+                zoom: self.zoom,
+                pan: self.pan,
+            };
+            (cam, radius, centre)
+        });
+        (cam, legend_at)
     }
 
     /// Space name and object at the top-left, wrapped left of the matrix card, the view buttons
@@ -480,91 +545,6 @@ impl GeometryView {
             None => rect,
         }
     }
-
-    /// The orbiting camera framing the sphere `(centre, radius)`.
-    fn camera(&self, rect: Rect, (centre, radius): (Vec3, f32)) -> Option<(Projector, f32, Vec3)> {
-        let radius = radius.max(1e-3);
-        let m = crate::spaces::framing(centre, radius, self.yaw, self.pitch, rect.aspect_ratio())?;
-        Some((
-            Projector {
-                m,
-                rect,
-                zoom: self.zoom,
-                pan: self.pan,
-            },
-            radius,
-            centre,
-        ))
-    }
-}
-
-/// Where the subject's sphere is framed: the largest square of `rect` clear of the view's own
-/// cards drawn last frame (`own`: the header, the matrix card, the legend) and of the narration
-/// card, with the legend where it leaves the largest square — one item a row below the matrix
-/// card or at the bottom-right, or a strip along the foot — of the places the narration card
-/// leaves in sight. Returns the square and the legend's place and items a row; reports the
-/// share of the square the narration card left.
-fn clear_of_cards(
-    ctx: &egui::Context,
-    rect: Rect,
-    own: &[Rect],
-    legend: &cards::Legend,
-) -> (Rect, (Rect, usize)) {
-    let narration = super::card_placement::narration_card(ctx);
-    let header = own.first().copied().unwrap_or(Rect::NOTHING);
-    let card = own.get(1).copied().unwrap_or(Rect::NOTHING);
-    let right = rect.right() - 10.0;
-    let column = legend.size(1);
-    let top = [card, header]
-        .iter()
-        .filter(|r| r.is_positive() && r.right() > right - column.x)
-        .map(|r| r.bottom() + 8.0)
-        .fold(rect.top() + 10.0, f32::max);
-    let per_row = legend.per_row(rect.width() - 20.0);
-    let strip = legend.size(per_row);
-    let places = [
-        (
-            Rect::from_min_size(Pos2::new(right - column.x, top), column),
-            1,
-        ),
-        (
-            Rect::from_min_size(Pos2::new(right, rect.bottom() - 10.0) - column, column),
-            1,
-        ),
-        (
-            Rect::from_min_size(Pos2::new(right, rect.bottom() - 10.0) - strip, strip),
-            per_row,
-        ),
-    ];
-    let square = |legend: Rect, narration: Option<Rect>| {
-        let mut all = vec![header, card, legend];
-        all.extend(narration);
-        super::overlays::free_square(rect, &all).unwrap_or(rect)
-    };
-    // A place under the narration card would hide the legend (the tour's NDC step at 1920
-    // points with the inspector open); where every place is, the largest square decides alone.
-    let mut clear: Vec<_> = places
-        .iter()
-        .filter(|p| narration.is_none_or(|n| !n.intersects(p.0)))
-        .copied()
-        .collect();
-    if clear.is_empty() {
-        clear = places.to_vec();
-    }
-    let (frame, place) = clear
-        .iter()
-        .map(|p| (square(p.0, narration), *p))
-        .reduce(|best, next| {
-            if next.0.width() > best.0.width() + 0.5 {
-                next
-            } else {
-                best
-            }
-        })
-        .unwrap_or((rect, places[0]));
-    let alone = square(place.0, None);
-    super::card_placement::report_kept(ctx, (frame.area() / alone.area().max(1.0)).min(1.0));
-    (frame, place)
 }
 
 /// Each vertex row's position on the way from space `from` to `to` at eased progress `t`; in
