@@ -92,6 +92,11 @@ fn texturing_rgb(tb: &TextureBuffers, kind: BufferKind, i: usize) -> [u8; 3] {
     }
 }
 
+/// The gains a dim lighting term's picture may be drawn with ([`FrameCapture::term_gain`]):
+/// one and a half and the powers of two, each doubled, up to 16 — a step of at most 1.5, so
+/// that a term is shown at ⅔ or more of full brightness, in factors that read at a glance.
+pub const TERM_GAINS: [f32; 9] = [1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0];
+
 /// The faint grey-blue of an object's outline over a lighting term's picture
 /// ([`FrameCapture::outline_objects`]).
 pub const OUTLINE: [u8; 3] = [70, 78, 96];
@@ -104,10 +109,11 @@ impl FrameCapture {
     }
 
     /// How much brighter a lighting term's picture is drawn than its values, so that a dim
-    /// term can be seen on a projector: the largest power of two `g ≤ 16` with `g·max ≤ 1`,
-    /// where `max` is the term's largest channel over the covered pixels (1 when `max ≥ ½`,
-    /// for a buffer that is not a term, or for an empty one). The ambient term
-    /// `k_a·I_a = 0.16` is shown ×4, as 0.64.
+    /// term can be seen on a projector: the largest of [`TERM_GAINS`] (1, 1.5, 2, 3, … 16)
+    /// with `g·max ≤ 1`, where `max` is the term's largest channel over the covered pixels
+    /// (1 when `max > ⅔`, for a buffer that is not a term, or for an empty one). The ambient
+    /// term `k_a·I_a = 0.16` is shown ×6, as 0.96; lesson 10's diffuse term, whose reddest
+    /// channel peaks at 0.54, ×1.5, as 0.81.
     #[must_use]
     pub fn term_gain(&self, kind: BufferKind) -> f32 {
         let Some(sh) = &self.pixels.shading else {
@@ -125,10 +131,14 @@ impl FrameCapture {
             .filter(|(_, p)| **p != NONE)
             .flat_map(|(v, _)| v.iter().map(|c| c.to_f32()))
             .fold(0.0_f32, f32::max);
-        if !(max > 0.0) || max >= 0.5 {
+        if !(max > 0.0) {
             return 1.0;
         }
-        (1.0 / max).log2().floor().clamp(0.0, 4.0).exp2()
+        TERM_GAINS
+            .iter()
+            .copied()
+            .filter(|g| g * max <= 1.0)
+            .fold(1.0, f32::max)
     }
 
     /// One gain for captures shown side by side, so that their terms stay comparable: the

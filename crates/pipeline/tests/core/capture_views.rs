@@ -1,4 +1,4 @@
-//! What is drawn from a capture: a dim lighting term shown brighter by a power of two with its
+//! What is drawn from a capture: a dim lighting term shown brighter by a stated factor with its
 //! values kept, the overlays (hidden triangles left out, the focus stressed), the box that holds
 //! every covered pixel, and the first wrong pixel and the difference picture, upright.
 
@@ -9,11 +9,13 @@ use pipeline::scene::Scene;
 use crate::capture::lit_textured_quad;
 use crate::support::render;
 
-/// A dim lighting term is shown brighter by a power of two, the largest with `g·max ≤ 1`, and the
-/// buffer's values stay as they are: ambient `k_a·I_a·c = 1 · 0.2 · 0.8 = 0.16` is shown ×4
-/// (0.64; ×8 would pass 1), and a term of at least ½ as it is.
+/// A dim lighting term is shown brighter by the largest of 1, 1.5, 2, 3, 4, 6, 8, 12, 16 with
+/// `g·max ≤ 1`, and the buffer's values stay as they are: ambient `k_a·I_a·c = 1 · 0.2 · 0.8 =
+/// 0.16` is shown ×6 (0.96; ×8 would pass 1); `1 · 0.7 · 0.8 = 0.56` ×1.5 (0.84; ×2 would pass
+/// 1), which a gain by powers of two left as it is, dim on a projector; `1 · 0.9 · 0.8 = 0.72`
+/// as it is (×1.5 would pass 1).
 #[test]
-fn a_dim_term_is_shown_brighter_by_a_power_of_two_and_its_values_stay() {
+fn a_dim_term_is_shown_brighter_and_its_values_stay() {
     use pipeline::buffers::BufferKind;
     use pipeline::light::{Light, Material};
     use pipeline::scene::ColorSource;
@@ -29,26 +31,28 @@ fn a_dim_term_is_shown_brighter_by_a_power_of_two_and_its_values_stay() {
         intensity: Vec3::splat(0.2),
     }];
     let c = render(&scene, &settings);
-    assert_eq!(c.term_gain(BufferKind::Ambient), 4.0);
+    assert_eq!(c.term_gain(BufferKind::Ambient), 6.0);
     // Nothing lit but the ambient: no diffuse or specular, nothing to brighten.
     assert_eq!(c.term_gain(BufferKind::Diffuse), 1.0);
     assert_eq!(c.term_gain(BufferKind::Color), 1.0);
     let centre = (8, 8);
     let raw = c.image(BufferKind::Ambient).get_pixel(centre.0, centre.1).0;
     let shown = c
-        .image_gained(BufferKind::Ambient, 4.0)
+        .image_gained(BufferKind::Ambient, 6.0)
         .get_pixel(centre.0, centre.1)
         .0;
     assert_eq!(raw[0], (0.16_f32 * 255.0).round() as u8);
-    assert_eq!(shown[0], (0.64_f32 * 255.0).round() as u8);
-    // Brighter than ½: shown as it is.
-    scene.lights = vec![Light::Ambient {
-        intensity: Vec3::splat(0.7),
-    }];
-    assert_eq!(
-        render(&scene, &settings).term_gain(BufferKind::Ambient),
-        1.0
-    );
+    assert_eq!(shown[0], (0.96_f32 * 255.0).round() as u8);
+    for (intensity, gain) in [(0.7, 1.5), (0.9, 1.0)] {
+        scene.lights = vec![Light::Ambient {
+            intensity: Vec3::splat(intensity),
+        }];
+        assert_eq!(
+            render(&scene, &settings).term_gain(BufferKind::Ambient),
+            gain,
+            "ambient {intensity}"
+        );
+    }
 }
 
 /// The overlays of a picture of the rasterizer draw the triangles in sight: one drawn over
