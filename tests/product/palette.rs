@@ -1,7 +1,8 @@
 //! The colours that carry a meaning stay apart to colour-blind eyes (issue "Every student can
 //! use it"): in every set of meanings a picture shows together, every pair and each meaning
 //! against its ground keep `vision::APART` in CIELAB, for normal vision and as Machado et al.'s
-//! protanope, deuteranope and tritanope see them.
+//! protanope, deuteranope and tritanope see them; and a lighting term's picture is bright
+//! enough to read on a projector.
 
 use pipelens::palette::vision::{APART, Vision, closest};
 use pipelens::palette::{Rgb, SETS};
@@ -81,4 +82,57 @@ fn a_small_colour_difference_is_drawn_in_the_dimmest_red() {
             255
         ]
     );
+}
+
+/// A step that shows a lighting term shows it bright enough for a projector: at every moment
+/// of its animation (five, from start to end) its brightest covered channel is drawn at two
+/// thirds of full brightness or more (the term shown brighter by the factor its note states).
+/// Lesson 10's diffuse term peaks at 0.54 (RGB 137, 60, 43 on screen): a gain by powers of
+/// two left it as it is; ×1.5 draws it at 0.81.
+#[test]
+fn a_lighting_term_is_shown_at_two_thirds_of_full_brightness_or_more() {
+    use pipeline::buffers::BufferKind;
+    let mut checked = 0;
+    for path in crate::support::lesson_files() {
+        let pipelens::lesson::Document::Lesson(lesson) =
+            pipelens::lesson::load_file(&path).unwrap_or_else(|e| panic!("{e}"))
+        else {
+            continue;
+        };
+        for (k, step) in lesson.steps.iter().enumerate() {
+            let kind = lesson.buffer_at(k);
+            if !matches!(
+                kind,
+                BufferKind::Ambient | BufferKind::Diffuse | BufferKind::Specular
+            ) {
+                continue;
+            }
+            let seconds = step.animate.iter().map(|a| a.seconds).fold(0.0, f32::max);
+            for i in 0..5 {
+                let t = seconds * i as f32 / 4.0;
+                let mut spec = lesson.spec_playing(k, t);
+                spec.settings.width = spec.settings.width.min(320);
+                spec.settings.height = spec.settings.height.min(200);
+                let c = pipeline::render(&spec.scene, &spec.settings)
+                    .unwrap_or_else(|e| panic!("{} step {k}: {e}", lesson.id));
+                let gain = c.term_gain(kind);
+                let image = c.image_gained(kind, gain);
+                let brightest = image
+                    .pixels()
+                    .zip(&c.pixels.primitive)
+                    .filter(|(_, p)| **p != pipeline::raster::NONE)
+                    .flat_map(|(px, _)| px.0[..3].to_vec())
+                    .max()
+                    .unwrap_or(0);
+                checked += 1;
+                assert!(
+                    brightest >= 170,
+                    "{} step {} at {t} s: {kind:?} shown ×{gain}, brightest {brightest} of 255",
+                    lesson.id,
+                    k + 1
+                );
+            }
+        }
+    }
+    assert!(checked >= 30, "only {checked} moments were checked");
 }

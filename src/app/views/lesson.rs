@@ -37,6 +37,21 @@ pub fn card(ctx: &egui::Context, central: egui::Rect, session: &Session) -> Card
         over,
         super::card_placement::content_aspect(session),
     );
+    // A card whose words do not fit once their type is at the normal size (a lab's verdict in
+    // classroom mode on a 1366×768 projector cut its buttons off) grows to what they need: a
+    // band or a corner card taller, up to half or four fifths of the area, a column wider, up
+    // to 45 % of it (its words' height goes as the inverse of its width). The growth is kept
+    // for the step, so that a card that fits once grown stays grown.
+    let grown_id = egui::Id::unique("narration-card-grown");
+    let (for_step, grown) = ctx
+        .data(|d| d.get_temp::<(u64, f32)>(grown_id))
+        .filter(|(step, _)| *step == session.step_entered)
+        .unwrap_or((session.step_entered, 1.0));
+    let (width, most) = match shape {
+        super::card_placement::Shape::Band => (width, (most * grown).min(over.height() * 0.5)),
+        super::card_placement::Shape::Corner => (width, (most * grown).min(over.height() * 0.8)),
+        super::card_placement::Shape::Column => ((width * grown).min(over.width() * 0.45), most),
+    };
     let shown = egui::Area::new(egui::Id::unique("narration-card"))
         .order(egui::Order::Foreground)
         .pivot(Align2::LEFT_BOTTOM)
@@ -51,7 +66,13 @@ pub fn card(ctx: &egui::Context, central: egui::Rect, session: &Session) -> Card
                     ui.set_width(width);
                     ui.set_min_height(least);
                     ui.set_max_height(most);
-                    fit_contents(ui, session, &mut out, ("narration-card-fit", None));
+                    let (needed, smallest) =
+                        fit_contents(ui, session, &mut out, ("narration-card-fit", None));
+                    let more = (grown * (needed / most.max(1.0)).min(1.5)).min(2.0);
+                    if smallest && needed > most + 1.0 && more > grown + 1e-3 {
+                        ctx.data_mut(|d| d.insert_temp(grown_id, (for_step, more)));
+                        ctx.request_repaint();
+                    }
                 });
         });
     super::card_placement::set_narration_card(ctx, Some(shown.response.rect));
@@ -80,19 +101,20 @@ pub fn band(ui: &mut Ui, session: &Session, most: f32) -> (CardOutput, f32) {
         fold: false,
         inspect: false,
     };
-    let needed = fit_contents(ui, session, &mut out, ("narration-band-fit", Some(most)));
+    let (needed, _) = fit_contents(ui, session, &mut out, ("narration-band-fit", Some(most)));
     (out, needed)
 }
 
 /// The card's words in `ui`, their type scaled to fit as [`fitted`] says, the scale kept under
 /// `fit.0`; the room for the words is what `ui` leaves below the title, or what `fit.1` (a
-/// height for the whole) leaves. Returns the height title and words need at this scale.
+/// height for the whole) leaves. Returns the height title and words need at this scale, and
+/// whether the type is as small as it goes.
 fn fit_contents(
     ui: &mut Ui,
     session: &Session,
     out: &mut CardOutput,
     fit: (&str, Option<f32>),
-) -> f32 {
+) -> (f32, bool) {
     let ctx = ui.ctx().clone();
     let fit_id = egui::Id::unique(fit.0);
     let scale = ctx.data(|d| d.get_temp::<f32>(fit_id)).unwrap_or(1.0);
@@ -105,12 +127,13 @@ fn fit_contents(
     let (room, needed) = contents(ui, session, out);
     let title = top - room;
     let room = fit.1.map_or(room, |whole| whole - title);
-    let next = fitted(scale, room, needed, normal / body);
+    let least = (normal / body).min(1.0);
+    let next = fitted(scale, room, needed, least);
     if next != scale {
         ctx.data_mut(|d| d.insert_temp(fit_id, next));
         ctx.request_repaint();
     }
-    title + needed
+    (title + needed, scale <= least + 1e-3)
 }
 
 /// The card's type scale for the next frame, so that what it says fits without scrolling

@@ -269,3 +269,51 @@ fn a_standing_figure_is_framed_by_its_shape_and_keeps_still_while_it_swings() {
         }
     }
 }
+
+/// A lab's card says its verdict whole on a 1366×768 projector in classroom mode: the buttons
+/// under the verdict ("Inspect the first wrong pixel", and the vertex's where a vertex is off)
+/// lie inside the card, not scrolled out of it (lesson 25's perspective lab cut the first in
+/// half and hid the second: the band's words did not fit at the normal size), in every lab
+/// step of every lesson, with the starter's code.
+#[test]
+fn a_labs_verdict_and_its_buttons_fit_the_classroom_card_at_1366() {
+    let mut checked = 0;
+    let mut cut = Vec::new();
+    for path in crate::support::lesson_files() {
+        let mut h = super::sized_lesson_harness(&path, [1366.0, 768.0]);
+        let lesson = super::lesson_of(&h);
+        let labs: Vec<usize> = (0..lesson.steps.len())
+            .filter(|&k| lesson.steps[k].exercise.is_some())
+            .collect();
+        if labs.is_empty() {
+            continue;
+        }
+        let ctx = h.ctx.clone();
+        h.state_mut().set_classroom(&ctx, true);
+        for k in labs {
+            super::go_to_step(&mut h, k);
+            h.run_steps(16);
+            let card = pipelens::app::views::card_placement::narration_card(&h.ctx)
+                .expect("a lab shows its card");
+            for label in [
+                "Inspect the first wrong pixel",
+                "Inspect the first wrong vertex",
+            ] {
+                let Some(button) = h.query_by_label(label) else {
+                    continue;
+                };
+                let at = button.rect();
+                checked += 1;
+                if !card.contains_rect(at) || at.bottom() > 768.0 {
+                    cut.push(format!(
+                        "{} step {}: {label:?} at {at:?}, the card {card:?}",
+                        lesson.id,
+                        k + 1
+                    ));
+                }
+            }
+        }
+    }
+    assert!(checked >= 10, "only {checked} buttons were checked");
+    assert!(cut.is_empty(), "{}", cut.join("\n"));
+}
