@@ -87,7 +87,13 @@ pub fn world_into(capture: &FrameCapture, space: Space) -> Option<glam::Mat4> {
 /// the cube to a dot), around the subject's vertices elsewhere; centred on their box, just
 /// reaching the farthest.
 pub fn bounds(capture: &FrameCapture, spaces: [Space; 2], subject: &[bool]) -> Option<(Vec3, f32)> {
-    let points = framed_points(capture, spaces, subject);
+    sphere_around(&framed_points(capture, spaces, subject))
+}
+
+/// The sphere [`bounds`] frames around `points`: centred on their box, just reaching the
+/// farthest; `None` for no points.
+#[must_use]
+pub fn sphere_around(points: &[Vec3]) -> Option<(Vec3, f32)> {
     let lo = points.iter().copied().reduce(Vec3::min)?;
     let hi = points.iter().copied().reduce(Vec3::max)?;
     let centre = (lo + hi) / 2.0;

@@ -164,7 +164,7 @@ impl Session {
                     if self.orbit_framed {
                         // The step's framing was for the old shape (the lesson image's on
                         // the first frame): a tall panel would show the subject small.
-                        self.orbit = self.observer_framing(&self.spec);
+                        self.orbit = self.observer_framing(&self.spec, &self.animation_poses());
                     }
                     if self.observer_shown() {
                         self.request_render();

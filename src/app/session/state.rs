@@ -187,20 +187,20 @@ impl Session {
     /// direction; the whole scene `spec` without a lesson), framed for the observer's panel
     /// and for every pose the step's animations take (nine, across the longest): a limb
     /// swinging out stays in the picture.
-    pub(super) fn frame_observer(&mut self, spec: &SceneSpec) {
-        self.orbit = self.observer_framing(spec);
+    pub(super) fn frame_observer(&mut self, spec: &SceneSpec, poses: &[SceneSpec]) {
+        self.orbit = self.observer_framing(spec, poses);
         self.orbit_framed = true;
     }
 
-    /// The orbit [`Self::frame_observer`] sets.
-    pub(super) fn observer_framing(&self, spec: &SceneSpec) -> Orbit {
+    /// The orbit [`Self::frame_observer`] sets: framing the step's `poses`
+    /// ([`Self::animation_poses`]), or `spec` for a step that does not animate.
+    pub(super) fn observer_framing(&self, spec: &SceneSpec, poses: &[SceneSpec]) -> Orbit {
         let step = self.lesson.as_ref().map(LessonPlayer::current);
-        let poses = self.animation_poses();
         crate::observer::orbit_for_poses(
             if poses.is_empty() {
                 std::slice::from_ref(spec)
             } else {
-                &poses
+                poses
             },
             step.and_then(|s| s.focus.as_deref()).unwrap_or_default(),
             step.and_then(|s| s.orbit),
@@ -210,7 +210,7 @@ impl Session {
 
     /// The step's scene at nine moments of its longest animation; none for a step that does
     /// not animate (or outside a lesson).
-    fn animation_poses(&self) -> Vec<SceneSpec> {
+    pub(super) fn animation_poses(&self) -> Vec<SceneSpec> {
         let step = self.lesson.as_ref().map(LessonPlayer::current);
         match (&self.lesson, step) {
             (Some(p), Some(s)) if !s.animate.is_empty() => {
@@ -276,10 +276,11 @@ impl Session {
         };
         sel.profile = step.profile_line(spec.settings.width, spec.settings.height);
         // The observer frames the step's subject, as the geometry views do.
-        self.frame_observer(&spec);
+        let poses = self.animation_poses();
+        self.frame_observer(&spec, &poses);
         self.step_entered += 1;
         let focus = step.focus.as_deref().unwrap_or_default();
-        let reach = crate::observer::reached(&self.animation_poses(), focus);
+        let reach = crate::observer::reached(&poses, focus);
         self.subject_reach = (self.step_entered, reach);
         // A dropped file's trouble is about what was on screen when it was dropped.
         self.dropped_error = None;

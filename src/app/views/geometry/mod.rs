@@ -16,7 +16,7 @@ use super::{
 };
 use crate::app::command::{SelectionCommand, ViewCommand};
 use crate::app::session::{Command, Session};
-use crate::spaces::{between, bounds, space_name, volume, world_into};
+use crate::spaces::{between, space_name, volume, world_into};
 use crate::vocabulary::Space;
 use framing::{SubjectBox, clear_of_cards};
 
@@ -281,7 +281,8 @@ impl GeometryView {
         let eased = t * t * (3.0 - 2.0 * t);
         let from = from.unwrap_or(space);
         let points = positions(capture, (from, space, eased), &subject);
-        let sphere = bounds(capture, [space, from], &subject);
+        let framed_points = crate::spaces::framed_points(capture, [space, from], &subject);
+        let sphere = crate::spaces::sphere_around(&framed_points);
         let view_volume = volume(capture, space).filter(|_| t >= 1.0);
         let shown = shown(capture, space, sphere, view_volume.is_some());
         let legend = cards::Legend::new(&painter, &shown, lang);
@@ -289,7 +290,7 @@ impl GeometryView {
         let mut cmds: Vec<Command> = vertex_keys(keys, session, capture).into_iter().collect();
         let in_view = (rect, own.as_slice(), &legend);
         let scene = (session, capture);
-        let (framed, legend_at) = self.frame(ui.ctx(), scene, (space, from), &subject, in_view);
+        let (framed, legend_at) = self.frame(ui.ctx(), scene, space, framed_points, in_view);
         let Some((cam, radius, centre)) = framed else {
             nothing_to_show(&painter, rect, lang);
             return cmds;
@@ -361,17 +362,17 @@ impl GeometryView {
         cmds
     }
 
-    /// The camera that frames the subject (the points [`crate::spaces::framed_points`] frames
-    /// on the way from `from` to `space`, and in world and eye coordinates where the step's
-    /// animation takes it) in the room of its shape that the cards (`own`, last frame's, and
-    /// the narration card) leave in `rect`, with the sphere's radius and centre; and where
-    /// the legend goes.
+    /// The camera that frames the subject in `space` (`points`, what
+    /// [`crate::spaces::framed_points`] frames on the way into it, and in world and eye
+    /// coordinates where the step's animation takes it) in the room of its shape that the
+    /// cards (`own`, last frame's, and the narration card) leave in `rect`, with the sphere's
+    /// radius and centre; and where the legend goes.
     fn frame(
         &mut self,
         ctx: &egui::Context,
         (session, capture): (&Session, &FrameCapture),
-        (space, from): (Space, Space),
-        subject: &[bool],
+        space: Space,
+        mut points: Vec<Vec3>,
         (rect, own, legend): (Rect, &[Rect], &cards::Legend),
     ) -> (Option<Framed>, (Rect, usize)) {
         let key = (
@@ -380,7 +381,6 @@ impl GeometryView {
             self.yaw.to_bits(),
             self.pitch.to_bits(),
         );
-        let mut points = crate::spaces::framed_points(capture, [space, from], subject);
         if let Some(m) = world_into(capture, space)
             && session.subject_reach.0 == session.step_entered
         {
