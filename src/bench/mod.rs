@@ -5,6 +5,7 @@ mod debugger;
 pub mod grade;
 pub mod handouts;
 pub mod peer;
+pub mod scaling;
 mod shaders;
 pub mod steps;
 

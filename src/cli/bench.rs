@@ -7,9 +7,9 @@ use anyhow::Result;
 
 use super::Command;
 
-/// `pipelens bench` in its five forms: the stages (with llvmpipe alongside on request), the
+/// `pipelens bench` in its six forms: the stages (with llvmpipe alongside on request), the
 /// handouts, the student's shaders, a lesson's steps as the app renders them, a class's lab
-/// hand-ins graded.
+/// hand-ins graded, the frame's scaling with threads.
 pub(super) fn run(command: Command) -> Result<ExitCode> {
     match command {
         Command::Bench {
@@ -39,6 +39,24 @@ pub(super) fn run(command: Command) -> Result<ExitCode> {
             Ok(ExitCode::SUCCESS)
         }
         Command::Bench {
+            scaling: true,
+            threads,
+            quick,
+            frames,
+            ..
+        } => {
+            let mut out = std::io::stdout().lock();
+            let threads: Vec<usize> = if threads.is_empty() {
+                let cores = std::thread::available_parallelism().map_or(1, usize::from);
+                crate::bench::scaling::thread_counts(cores)
+            } else {
+                threads.into_iter().map(usize::from).collect()
+            };
+            let frames = frames.unwrap_or(if quick { 1 } else { 7 });
+            crate::bench::scaling::run(&threads, frames, &mut out)?;
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Bench {
             steps: Some(lesson),
             quick,
             frames,
@@ -60,6 +78,8 @@ pub(super) fn run(command: Command) -> Result<ExitCode> {
             shaders: false,
             steps: None,
             grade: None,
+            scaling: false,
+            ..
         } => {
             let mut out = std::io::stdout().lock();
             crate::bench::run(quick, frames, &mut out)?;

@@ -189,6 +189,16 @@ pub enum Command {
         #[arg(long, value_name = "N", num_args = 0..=1, default_missing_value = "200",
               conflicts_with_all = ["handouts", "shaders", "steps"])]
         grade: Option<usize>,
+        /// Instead: the frame at 1, 2, 4, … threads up to the cores (or `--threads`), with its
+        /// speed-up and efficiency: the every-buffer and colour-only frames of the lit textured
+        /// scene, the every-buffer resolve, the 1M sphere, the student's GLSL over the built-in.
+        #[arg(long, conflicts_with_all = ["handouts", "shaders", "steps", "grade"])]
+        scaling: bool,
+        /// The thread counts `--scaling` measures, as `1,2,4` (default: 1, then doubling, up to
+        /// the cores).
+        #[arg(long, value_name = "N,N,…", value_delimiter = ',', requires = "scaling",
+              value_parser = clap::value_parser!(u16).range(1..=1024))]
+        threads: Vec<u16>,
         /// Frames per case (the median is shown).
         #[arg(long)]
         frames: Option<usize>,

@@ -26,6 +26,7 @@ mod observer;
 mod palette;
 mod record;
 mod reference;
+mod resolve_paths;
 mod scene_file;
 mod shader_handout;
 mod shader_keys;

@@ -43,6 +43,6 @@ pub mod transform;
 pub mod vertex;
 
 pub use render::{
-    CodePart, RenderError, ReplayError, StageTimes, WatchRun, render, render_reusing, render_timed,
-    trace_vertex, watch_fragment, watch_vertex,
+    CodePart, RenderError, ReplayError, StageTimes, WatchRun, render, render_reference,
+    render_reusing, render_timed, trace_vertex, watch_fragment, watch_vertex,
 };

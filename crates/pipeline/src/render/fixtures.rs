@@ -146,6 +146,7 @@ pub(crate) fn context<'a>(
     settings: &'a RenderSettings,
 ) -> ResolveContext<'a> {
     ResolveContext {
+        path: crate::render::Path::Fast,
         derivatives: settings.capture.texturing || settings.sampler.uses_footprint(),
         vertex_shading: &frame.vertex_shading,
         face_shading: &frame.face_shading,

@@ -154,23 +154,57 @@ pub fn render_reusing(
     settings: &RenderSettings,
     spare: Option<FrameCapture>,
 ) -> Result<(FrameCapture, StageTimes), RenderError> {
+    render_by(scene, settings, spare, Path::Fast)
+}
+
+/// [`render`] with every pixel resolved by the reference path alone: each pixel by itself,
+/// its fragments shaded one by one ([`ResolveContext::pixel`]) — no background spans, no runs
+/// of fragments lit together in lanes, no coarse runs (coarse shading's 2×2 blocks are still
+/// shared: they are what it draws). The fast paths give the same bits in every buffer the
+/// frame keeps; this is what tests compare them with.
+///
+/// # Errors
+/// As [`render`].
+pub fn render_reference(
+    scene: &Scene,
+    settings: &RenderSettings,
+) -> Result<FrameCapture, RenderError> {
+    render_by(scene, settings, None, Path::Reference).map(|(c, _)| c)
+}
+
+/// Which way the resolve takes (see [`render_reference`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Path {
+    /// Background spans, runs lit in lanes, coarse runs: what a frame is drawn with.
+    Fast,
+    /// Every pixel by itself.
+    Reference,
+}
+
+/// [`render_reusing`] with the resolve taking `path`.
+fn render_by(
+    scene: &Scene,
+    settings: &RenderSettings,
+    spare: Option<FrameCapture>,
+    path: Path,
+) -> Result<(FrameCapture, StageTimes), RenderError> {
     let problems = scene.problems(settings);
     if !problems.is_empty() {
         return Err(RenderError::Invalid(problems));
     }
     if let Some(drawn) = student_geometry::with_student_curves(scene, settings.max_steps)? {
-        return render_reusing(&drawn, settings, spare);
+        return render_by(&drawn, settings, spare, path);
     }
     if let Some(drawn) = student_geometry::with_student_shadow(scene, settings.max_steps)? {
-        return render_reusing(&drawn, settings, spare);
+        return render_by(&drawn, settings, spare, path);
     }
     if let Some((expanded, steps)) = scene.expanded() {
-        return render_stages(&expanded, settings, spare).map(|(mut c, t)| {
+        return render_stages(&expanded, settings, spare, path).map(|(mut c, t)| {
             c.hierarchy = steps;
             (c, t)
         });
     }
-    render_stages(scene, settings, spare)
+    render_stages(scene, settings, spare, path)
 }
 
 /// The stages, in order, over a scene whose figures and shadows are already plain objects.
@@ -178,6 +212,7 @@ fn render_stages(
     scene: &Scene,
     settings: &RenderSettings,
     spare: Option<FrameCapture>,
+    path: Path,
 ) -> Result<(FrameCapture, StageTimes), RenderError> {
     let mut storage = Storage::of(spare);
     let matrices = frame_matrices(scene, settings)?;
@@ -242,6 +277,7 @@ fn render_stages(
 
     let t = Instant::now();
     let ctx = ResolveContext {
+        path,
         derivatives: settings.capture.texturing || settings.sampler.uses_footprint(),
         scene,
         settings,

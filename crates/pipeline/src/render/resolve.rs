@@ -87,8 +87,9 @@ impl RowOut<'_> {
         // Runs of pixels, each covered by triangles of one object, are shaded together, unless
         // every sample is shaded by itself. With coarse shading, at one sample, a run of up to
         // sixteen pixels shades together what its 2×2 blocks do not share (see `coarse`).
-        let runs = !per_sample && !coarse;
-        let coarse_runs = !per_sample && coarse && ctx.settings.samples.count() == 1;
+        let fast = ctx.path == super::Path::Fast;
+        let runs = fast && !per_sample && !coarse;
+        let coarse_runs = fast && !per_sample && coarse && ctx.settings.samples.count() == 1;
         let mut blocks = std::mem::take(&mut s.blocks);
         // The first covered pixel, and the last background span.
         let (mut first, mut last_background) = (None, None);
@@ -96,7 +97,11 @@ impl RowOut<'_> {
         while x < w {
             let i = row * w + x;
             // The background (most of a frame) is written without resolving pixel by pixel.
-            let empty = ctx.background_run(i, w - x);
+            let empty = if fast {
+                ctx.background_run(i, w - x)
+            } else {
+                0
+            };
             if empty > 0 {
                 self.store_background(ctx, x, i, empty, s);
                 last_background = Some((x, x + empty));
@@ -345,6 +350,8 @@ pub(super) fn resolve(
 
 /// What the resolve of one pixel reads.
 pub(super) struct ResolveContext<'a> {
+    /// The fast paths, or every pixel by itself ([`super::render_reference`]).
+    pub(super) path: super::Path,
     /// Whether texture lookups need their screen derivatives: to choose a mip level or the
     /// anisotropic taps, or because the texturing buffers (λ, level, footprint) are kept.
     pub(super) derivatives: bool,

@@ -60,6 +60,7 @@ pub(in crate::render) fn peel_discarded(
     let mut scratch = vec![[0.0; 3]; n];
     for _ in 0..LAYERS {
         let ctx = ResolveContext {
+            path: crate::render::Path::Fast,
             derivatives: true,
             scene: frame.scene,
             settings,
