@@ -374,7 +374,21 @@ impl RasterTriangle {
     #[must_use]
     #[inline]
     pub fn lambda(&self, p: I64Vec2) -> Vec3 {
-        let inv = 1.0 / self.area2 as f64;
+        self.lambda_with(self.inv_area2(), p)
+    }
+
+    /// `1 / area2`, what [`Self::lambda_with`] multiplies the edge values by.
+    #[must_use]
+    #[inline]
+    pub fn inv_area2(&self) -> f64 {
+        1.0 / self.area2 as f64
+    }
+
+    /// [`Self::lambda`] with the inverse of the doubled area, `inv` ([`Self::inv_area2`]), computed
+    /// once for the many positions of one triangle (the same bits: the same operations).
+    #[must_use]
+    #[inline]
+    pub fn lambda_with(&self, inv: f64, p: I64Vec2) -> Vec3 {
         let l1 = self.edges[1].at(p) as f64 * inv;
         let l2 = self.edges[2].at(p) as f64 * inv;
         Vec3::new((1.0 - l1 - l2) as f32, l1 as f32, l2 as f32)

@@ -7,7 +7,7 @@ use rayon::prelude::*;
 
 use super::{shader_error, textures, uniforms};
 use crate::capture::{FragmentTrace, Matrices, VertexResults};
-use crate::raster::{NONE, ONE, RasterTriangle};
+use crate::raster::{NONE, ONE};
 use crate::render::RenderError;
 use crate::render::resolve::ResolveContext;
 use crate::shader::probe::{WatchKind, Watched};
@@ -207,9 +207,11 @@ impl FragmentShading<'_> {
             *counts = std::mem::take(counts) + r?;
             Ok::<(), RenderError>(())
         };
+        // A quad's triangles, reused from quad to quad.
+        let mut jobs: Vec<QuadJob> = Vec::new();
         for x in (0..w as i64).step_by(2) {
             let lanes = [(x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1)];
-            let mut jobs: Vec<QuadJob> = Vec::new();
+            jobs.clear();
             for (j, &(px, py)) in lanes.iter().enumerate() {
                 let Some(i) = self.index(px, py) else {
                     continue;
@@ -240,7 +242,7 @@ impl FragmentShading<'_> {
             if let Some(j) = lanes.iter().position(|&p| Some(p) == inspected) {
                 traced.extend(jobs.iter().filter(|q| q.samples[j] > 0).map(|q| (*q, j)));
             }
-            for job in jobs {
+            for &job in &jobs {
                 let object = self.object_of(job.triangle);
                 if object != batch_object || batch.len() == LANES / 4 {
                     flush(&mut batch, batch_object, &mut sums, &mut counts)?;
@@ -410,7 +412,8 @@ impl FragmentShading<'_> {
 
     /// Writes the fragment inputs of `job`'s quad (its top row at window row `y`) into lanes
     /// `first..first + 4` of `inputs`, at each pixel's centre; a pixel the triangle covers no
-    /// sample of is a helper lane.
+    /// sample of is a helper lane. What the four lanes share — the triangle, its corners'
+    /// weights, where its corners' outputs are, its area's inverse — is read once a quad.
     fn quad_inputs(
         &self,
         programs: &Programs,
@@ -420,15 +423,69 @@ impl FragmentShading<'_> {
         first: usize,
         inputs: &mut Batch,
     ) {
-        let t = &self.ctx.triangles[job.triangle as usize];
+        let ctx = self.ctx;
+        let t = &ctx.triangles[job.triangle as usize];
+        let prim = &ctx.primitives[t.primitive as usize];
+        let bary = prim.bary_corners(t);
+        let perspective = ctx.settings.perspective_correct;
+        let results = self.results[object].as_ref();
+        // Where the three corners' outputs start in the vertex shader's results.
+        let corner_rows = results.map(|r| {
+            prim.vertices
+                .map(|v| (v as usize - r.first as usize) * r.stride as usize)
+        });
+        // The inverse of the triangle's doubled area, for the four lanes' weights.
+        let inv_area = t.inv_area2();
+        let rows = inputs.rows_mut();
         for j in 0..4 {
             let l = first + j;
             let (px, py) = (i64::from(job.x) + (j % 2) as i64, y + (j / 2) as i64);
-            if job.samples[j] == 0 {
-                inputs.helper(l);
-            }
             let centre = I64Vec2::new(px * ONE + ONE / 2, py * ONE + ONE / 2);
-            self.lane_inputs(programs, t, object, centre, (px, py), l, inputs.rows_mut());
+            let lambda = t.lambda_with(inv_area, centre);
+            let weights = Weights {
+                perspective: t.original_bary(&bary, lambda, perspective),
+                linear: t.original_bary(&bary, lambda, false),
+            };
+            for ((input, link), rows) in programs
+                .fragment
+                .inputs
+                .iter()
+                .zip(&programs.links)
+                .zip(rows.iter_mut())
+            {
+                match (link, input.builtin) {
+                    (Some(link), _) => {
+                        let (Some(r), Some(corners)) = (results, corner_rows) else {
+                            continue;
+                        };
+                        for c in 0..link.components as usize {
+                            let v = corners.map(|at| r.values[at + link.from as usize + c]);
+                            rows[c * LANES + l] = weights.at(input.interpolate, &v).to_bits();
+                        }
+                    }
+                    (None, Some(naga::BuiltIn::Position { .. })) => {
+                        // gl_FragCoord = (x + ½, y + ½, z_w, 1/w_clip).
+                        let inv_w = lambda.dot(Vec3::from(t.inv_w));
+                        let v = [px as f32 + 0.5, py as f32 + 0.5, t.depth_at(centre), inv_w];
+                        for (c, x) in v.iter().enumerate() {
+                            rows[c * LANES + l] = x.to_bits();
+                        }
+                    }
+                    (None, Some(naga::BuiltIn::FrontFacing)) => {
+                        // The piece's corners are counter-clockwise on screen; its barycentric
+                        // corners keep the original order, so their determinant is negative
+                        // when the original triangle ran clockwise (a back face), even when
+                        // one of its vertices is behind the eye and has no window position.
+                        let [b0, b1, b2] = bary;
+                        let front = glam::Mat3::from_cols(b0, b1, b2).determinant() >= 0.0;
+                        rows[l] = u32::from(front);
+                    }
+                    _ => {}
+                }
+            }
+        }
+        for j in (0..4).filter(|&j| job.samples[j] == 0) {
+            inputs.helper(first + j);
         }
     }
 
@@ -462,77 +519,25 @@ impl FragmentShading<'_> {
             value: std::array::from_fn(|c| (0..3).map(|v| b[v] * seen[v].value[c]).sum()),
         })
     }
+}
 
-    /// Writes lane `l`'s fragment inputs for triangle `t` at fixed-point position `centre`
-    /// (window pixel `at`).
-    #[allow(clippy::too_many_arguments)]
-    fn lane_inputs(
-        &self,
-        programs: &Programs,
-        t: &RasterTriangle,
-        object: usize,
-        centre: I64Vec2,
-        at: (i64, i64),
-        l: usize,
-        inputs: &mut [Vec<u32>],
-    ) {
-        let ctx = self.ctx;
-        let prim = &ctx.primitives[t.primitive as usize];
-        let lambda = t.lambda(centre);
-        let perspective = ctx.settings.perspective_correct;
-        let bary = prim.bary_corners(t);
-        let b_persp = t.original_bary(&bary, lambda, perspective);
-        let b_linear = t.original_bary(&bary, lambda, false);
-        let results = self.results[object].as_ref();
-        for ((input, link), rows) in programs
-            .fragment
-            .inputs
-            .iter()
-            .zip(&programs.links)
-            .zip(inputs.iter_mut())
-        {
-            match (link, input.builtin) {
-                (Some(link), _) => {
-                    let Some(r) = results else { continue };
-                    let value = |v: usize, c: usize| {
-                        let row = prim.vertices[v] as usize - r.first as usize;
-                        r.values[row * r.stride as usize + link.from as usize + c]
-                    };
-                    for c in 0..link.components as usize {
-                        let x = match input.interpolate {
-                            Interpolate::Flat => value(2, c),
-                            Interpolate::Linear => (0..3).map(|v| b_linear[v] * value(v, c)).sum(),
-                            Interpolate::Perspective => {
-                                (0..3).map(|v| b_persp[v] * value(v, c)).sum()
-                            }
-                        };
-                        rows[c * LANES + l] = x.to_bits();
-                    }
-                }
-                (None, Some(naga::BuiltIn::Position { .. })) => {
-                    // gl_FragCoord = (x + ½, y + ½, z_w, 1/w_clip).
-                    let inv_w = lambda.dot(Vec3::from(t.inv_w));
-                    let v = [
-                        at.0 as f32 + 0.5,
-                        at.1 as f32 + 0.5,
-                        t.depth_at(centre),
-                        inv_w,
-                    ];
-                    for (c, x) in v.iter().enumerate() {
-                        rows[c * LANES + l] = x.to_bits();
-                    }
-                }
-                (None, Some(naga::BuiltIn::FrontFacing)) => {
-                    // The piece's corners are counter-clockwise on screen; its barycentric
-                    // corners keep the original order, so their determinant is negative when
-                    // the original triangle ran clockwise (a back face), even when one of its
-                    // vertices is behind the eye and has no window position.
-                    let [b0, b1, b2] = bary;
-                    let front = glam::Mat3::from_cols(b0, b1, b2).determinant() >= 0.0;
-                    rows[l] = u32::from(front);
-                }
-                _ => {}
-            }
-        }
+/// A fragment's weights of its original triangle's corners: perspective-correct and affine.
+struct Weights {
+    perspective: Vec3,
+    linear: Vec3,
+}
+
+impl Weights {
+    /// A varying's value from its values `v` at the three corners, as `interpolate` says:
+    /// `Σ b_i·v_i` with the perspective-correct or the affine weights, or the provoking (last)
+    /// corner's value for `flat`.
+    #[inline]
+    fn at(&self, interpolate: Interpolate, v: &[f32; 3]) -> f32 {
+        let b = match interpolate {
+            Interpolate::Flat => return v[2],
+            Interpolate::Linear => self.linear,
+            Interpolate::Perspective => self.perspective,
+        };
+        (0..3).map(|k| b[k] * v[k]).sum()
     }
 }
