@@ -53,26 +53,40 @@ fn first_difference(fast: &PixelBuffers, reference: &PixelBuffers) -> Option<(St
     })
     .or_else(|| at("owner", &fast.owner, &reference.owner, PartialEq::eq))
     .or_else(|| at("colour", &fast.color, &reference.color, bits3))
-    .or_else(|| match (&fast.shading, &reference.shading) {
-        (Some(a), Some(b)) => {
-            let n = a.n_dot_l.len();
-            (0..n)
-                .find(|&i| format!("{:?}", a.at(i)) != format!("{:?}", b.at(i)))
-                .map(|i| ("lighting terms".to_owned(), i))
-        }
-        (None, None) => None,
-        _ => Some(("lighting terms (kept by one only)".to_owned(), 0)),
+    .or_else(|| {
+        kept(
+            "lighting terms",
+            (fast.shading.as_ref(), reference.shading.as_ref()),
+            |b| b.n_dot_l.len(),
+            |b, i| format!("{:?}", b.at(i)),
+        )
     })
-    .or_else(|| match (&fast.texturing, &reference.texturing) {
-        (Some(a), Some(b)) => {
-            let n = a.uv.len();
-            (0..n)
-                .find(|&i| format!("{:?}", a.at(i)) != format!("{:?}", b.at(i)))
-                .map(|i| ("texture lookups".to_owned(), i))
-        }
-        (None, None) => None,
-        _ => Some(("texture lookups (kept by one only)".to_owned(), 0)),
+    .or_else(|| {
+        kept(
+            "texture lookups",
+            (fast.texturing.as_ref(), reference.texturing.as_ref()),
+            |b| b.uv.len(),
+            |b, i| format!("{:?}", b.at(i)),
+        )
     })
+}
+
+/// Where buffers `name` that a frame may keep or not first differ: kept by one frame only, or
+/// at the first of their `len` pixels whose values differ (`at`: every value printed, which
+/// tells apart any two bit patterns but NaNs).
+fn kept<B>(
+    name: &str,
+    (fast, reference): (Option<&B>, Option<&B>),
+    len: impl Fn(&B) -> usize,
+    at: impl Fn(&B, usize) -> String,
+) -> Option<(String, usize)> {
+    match (fast, reference) {
+        (Some(a), Some(b)) => (0..len(a))
+            .find(|&i| at(a, i) != at(b, i))
+            .map(|i| (name.to_owned(), i)),
+        (None, None) => None,
+        _ => Some((format!("{name} (kept by one only)"), 0)),
+    }
 }
 
 /// Renders `scene` with `settings` by the fast paths and by the reference path and panics,
