@@ -92,14 +92,20 @@ pub(in crate::render) fn fragment_shaders(
         uniforms: &uniforms,
     };
     // Row pairs, bottom pair first in window terms does not matter: each pair is independent.
+    // Each task keeps its machines (an object's registers, set to its uniforms, with their
+    // invariants evaluated) from row pair to row pair rather than making them again.
     color
         .par_chunks_mut(2 * w)
         .enumerate()
-        .map(|(k, rows)| {
-            // Image rows 2k (upper) and 2k + 1 (lower): window y of the lower one is the quad's y.
-            let y = (h as i64 - 2 - 2 * k as i64).max(-1);
-            shading.row_pair(rows, (w, 2 * k * w), y)
-        })
+        .map_init(
+            || shading.no_machines(),
+            |machines, (k, rows)| {
+                // Image rows 2k (upper) and 2k + 1 (lower): window y of the lower one is the
+                // quad's y.
+                let y = (h as i64 - 2 - 2 * k as i64).max(-1);
+                shading.row_pair(rows, (w, 2 * k * w), y, machines)
+            },
+        )
         .try_reduce(FragmentCounts::default, |a, b| Ok(a + b))
 }
 
@@ -150,6 +156,12 @@ impl FragmentShading<'_> {
         grid.checked_index(u32::try_from(x).ok()?, u32::try_from(y).ok()?)
     }
 
+    /// A machine for each object, none made yet (`run_batch` makes an object's when it first
+    /// shades it).
+    fn no_machines(&self) -> Vec<Option<shader::Machine<'_>>> {
+        self.ctx.scene.objects.iter().map(|_| None).collect()
+    }
+
     /// The object of raster triangle `t`.
     fn object_of(&self, t: u32) -> usize {
         let prim = self.ctx.triangles[t as usize].primitive;
@@ -158,12 +170,14 @@ impl FragmentShading<'_> {
 
     /// Shades the quads of one row pair: `rows` is image rows 2k and 2k + 1 of the colour
     /// buffer, `first` the image index of its first pixel, `w` the image's width; `y` the
-    /// window y of the lower row (−1 when the pair is a single top row).
-    fn row_pair(
-        &self,
+    /// window y of the lower row (−1 when the pair is a single top row); `machines` each
+    /// object's machine, kept by the task from one row pair to the next.
+    fn row_pair<'m>(
+        &'m self,
         rows: &mut [[f32; 3]],
         (w, first): (usize, usize),
         y: i64,
+        machines: &mut [Option<shader::Machine<'m>>],
     ) -> Result<FragmentCounts, RenderError> {
         let s = self.ctx.settings.samples.count();
         let watching = self.ctx.scene.objects.iter().any(|o| {
@@ -185,8 +199,6 @@ impl FragmentShading<'_> {
         let mut counts = FragmentCounts::default();
         let mut batch: Vec<QuadJob> = Vec::with_capacity(LANES / 4);
         let mut batch_object = usize::MAX;
-        let mut machines: Vec<Option<shader::Machine<'_>>> =
-            self.ctx.scene.objects.iter().map(|_| None).collect();
         let mut inputs = Batch::default();
         let inspected = self
             .ctx
@@ -202,7 +214,7 @@ impl FragmentShading<'_> {
             if batch.is_empty() {
                 return Ok(());
             }
-            let r = self.run_batch(batch, object, &mut machines, &mut inputs, sums, y, w);
+            let r = self.run_batch(batch, object, machines, &mut inputs, sums, y, w);
             batch.clear();
             *counts = std::mem::take(counts) + r?;
             Ok::<(), RenderError>(())
