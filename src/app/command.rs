@@ -91,6 +91,8 @@ pub enum ViewCommand {
     PlayTransition,
     /// Switch the language.
     SetLang(Lang),
+    /// The screen is touched (true) or typed and clicked on: the lessons' words follow.
+    SetTouch(bool),
     /// Move the observer's camera.
     SetOrbit(Orbit),
     /// The observer's panel has this width/height: render it so.

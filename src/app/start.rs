@@ -25,6 +25,9 @@ pub struct Start {
     pub step: Option<usize>,
     /// Whether to open in classroom mode.
     pub classroom: bool,
+    /// Whether the screen is a touch screen (the page asks the browser whether its main pointer
+    /// is coarse); a touch event says so later where this is false.
+    pub touch: bool,
 }
 
 /// The app eframe creates (on the desktop and in the browser alike): a session on `doc` (named
@@ -42,6 +45,7 @@ pub fn create(
     let worker = RenderWorker::start(platform::waker(&ctx)).ok();
     let mut session = Session::with_document(doc, source, worker);
     session.lang = start.lang;
+    session.touch = start.touch;
     session.progress = progress::Progress::load(cc.storage);
     if let Some(k) = start.step {
         session.apply(Command::Lesson(LessonCommand::GoToStep(k)));
@@ -142,6 +146,10 @@ pub async fn start(
         step: value("step")
             .and_then(|s| s.parse::<usize>().ok())
             .map(|k| k.saturating_sub(1)),
+        // A phone's or a tablet's finger: its main pointer is coarse.
+        touch: web_sys::window()
+            .and_then(|w| w.match_media("(pointer: coarse)").ok().flatten())
+            .is_some_and(|m| m.matches()),
         ..Default::default()
     };
     eframe::WebRunner::new()

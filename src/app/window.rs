@@ -12,7 +12,7 @@ use super::views::{
     pixels::PixelView,
 };
 use super::{editor, platform, progress, views, watched, window_size};
-use crate::app::command::{LessonCommand, SceneCommand, SelectionCommand};
+use crate::app::command::{LessonCommand, SceneCommand, SelectionCommand, ViewCommand};
 use crate::vocabulary::Stage;
 
 /// What the window shows around the picture. In a lesson or classroom mode the picture comes
@@ -205,9 +205,7 @@ impl PipelensApp {
             ui.ctx()
                 .request_repaint_after(SAVE_INTERVAL + std::time::Duration::from_millis(500));
         }
-        self.reload_if_changed(ui.ctx());
-        self.open_dropped(ui.ctx());
-        self.keyboard(ui.ctx());
+        self.take_input(ui.ctx());
         self.picture.clear();
         self.subject.clear();
         self.overlays.clear();
@@ -556,6 +554,20 @@ impl eframe::App for PipelensApp {
 const SAVE_INTERVAL: std::time::Duration = std::time::Duration::from_secs(5);
 
 impl PipelensApp {
+    /// What came in since the last frame: the watched file changed on disk, a file dropped,
+    /// keys, and a finger — the lessons' words are a touch screen's from the first touch on (a
+    /// phone's page says so from the start; a tablet's keyboard, typed on later, does not take
+    /// it back).
+    fn take_input(&mut self, ctx: &egui::Context) {
+        self.reload_if_changed(ctx);
+        self.open_dropped(ctx);
+        self.keyboard(ctx);
+        if !self.session.touch && ctx.input(egui::InputState::has_touch_screen) {
+            self.commands
+                .push(Command::View(ViewCommand::SetTouch(true)));
+        }
+    }
+
     /// The editor's part of a frame: a drag that ended recorded, the lesson open followed, the
     /// window, and a lesson just made opened.
     pub(super) fn edit_lesson(&mut self, ui: &mut egui::Ui) {

@@ -360,6 +360,7 @@ fn open_app(cli: &Cli) -> Result<ExitCode> {
             .and_then(crate::vocabulary::Comparison::from_name),
         step: cli.step.map(|n| n as usize - 1),
         classroom: cli.classroom,
+        touch: false,
     };
     crate::app::run(doc, source, cli.scene.clone(), start)?;
     Ok(ExitCode::SUCCESS)

@@ -1,7 +1,7 @@
 //! The product's vocabulary: the words the app, the lessons and the exports share — the stages
 //! and spaces of the pipeline, the comparisons, the buffers' names, the interface's languages
-//! (the message catalogs of `locales/`), the matrices' formulas in Chinese, and how numbers are
-//! written. It sits below all three and uses
+//! (the message catalogs of `locales/`), the matrices' formulas in Chinese, how numbers are
+//! written, and the lessons' words on a touch screen. It sits below all three and uses
 //! only the core: `lesson`, `export` and `app` import it; it imports none of them.
 
 pub mod alt_text;
@@ -19,6 +19,7 @@ mod numbers;
 pub mod profile;
 pub mod run;
 mod stage;
+pub mod touch;
 pub mod trace;
 
 pub use buffers::{buffer_name, gain_note};

@@ -148,6 +148,7 @@ impl Session {
                 }
             }
             ViewCommand::SetLang(l) => self.lang = l,
+            ViewCommand::SetTouch(t) => self.touch = t,
             ViewCommand::SetOrbit(o) => {
                 if o != self.orbit {
                     self.orbit = o;

@@ -57,6 +57,10 @@ pub struct Session {
     pub selection: Selection,
     /// The interface language.
     pub lang: Lang,
+    /// Whether the screen is touched, not typed and clicked on (a phone, a tablet): the
+    /// lessons' words about keys and clicks are then said with taps and swipes
+    /// (`vocabulary::touch`).
+    pub touch: bool,
     /// Bumped by every change that needs a new capture; stale results are dropped.
     pub generation: u64,
     /// The generation of the capture on screen.
@@ -132,6 +136,7 @@ impl Session {
             view_resolution: ViewResolution::default(),
             selection: Selection::default(),
             lang: Lang::default(),
+            touch: false,
             generation,
             shown_generation: generation,
             observer_asked: false,

@@ -325,7 +325,8 @@ pub fn card_part(
             .strong()
             .color(Color32::WHITE),
     );
-    typeset::paragraph(ui, exercise.task.get(lang), style);
+    let task = crate::vocabulary::touch::for_device(exercise.task.get(lang), session.touch);
+    typeset::paragraph(ui, &task, style);
     let writes = |kind| exercise.starter.hooks.get(kind).is_some();
     let how = if writes(pipeline::shader::HookKind::Curve) {
         lang.t("exercise-write-your-code-in-the")

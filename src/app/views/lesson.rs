@@ -10,6 +10,7 @@ use crate::app::player::LessonPlayer;
 use crate::app::session::{Command, Session};
 use crate::lesson::param;
 use crate::vocabulary::Lang;
+use crate::vocabulary::touch::for_device;
 
 /// What the card asked for.
 pub struct CardOutput {
@@ -206,10 +207,11 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
         .id_salt("narration")
         .auto_shrink([false, true])
         .show(ui, |ui| {
-            narration(ui, step.narration.get(lang), &style);
+            let said = |text| for_device(text, session.touch);
+            narration(ui, &said(step.narration.get(lang)), &style);
             if step.predicts() && !player.playing && player.time == 0.0 {
                 ui.label(
-                    RichText::new(lang.t("lesson-predict-first-the-question-below"))
+                    RichText::new(said(lang.t("lesson-predict-first-the-question-below")))
                         .strong()
                         .color(Color32::from_rgb(255, 214, 120)),
                 );
@@ -239,7 +241,7 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
                         .strong()
                         .color(Color32::WHITE),
                 );
-                narration(ui, q.get(lang), &style);
+                narration(ui, &said(q.get(lang)), &style);
                 super::answer::field(
                     ui,
                     (player, &session.progress),
@@ -259,7 +261,7 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
                             .push(Command::Lesson(LessonCommand::ShowAnswer(!shown)));
                     }
                     if shown {
-                        narration(ui, a.get(lang), &style);
+                        narration(ui, &said(a.get(lang)), &style);
                     }
                 }
             }
@@ -304,7 +306,10 @@ pub fn for_the_page(ctx: &egui::Context, session: &Session) {
     }
     let lang = session.lang;
     super::alt::for_the_page(ctx, super::alt::Part::Title, &heading(player, lang));
-    let narration = plain_narration(player.current().narration.get(lang));
+    let narration = plain_narration(&for_device(
+        player.current().narration.get(lang),
+        session.touch,
+    ));
     super::alt::for_the_page(ctx, super::alt::Part::Narration, &narration);
 }
 

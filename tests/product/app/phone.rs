@@ -4,6 +4,7 @@
 
 use egui::{Event, Modifiers, PointerButton, Pos2};
 use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable as _;
 use pipelens::app::PipelensApp;
 use pipelens::app::command::LessonCommand;
 use pipelens::app::session::Command;
@@ -96,4 +97,51 @@ fn a_swipe_across_the_narration_moves_the_steps() {
     // Over the picture a drag is the view's (pan, orbit), not a step.
     swipe(&mut h, Pos2::new(320.0, 300.0), Pos2::new(80.0, 300.0));
     assert_eq!(super::step_of(&h), 1, "the picture keeps its drags");
+}
+
+/// A finger's touch on the screen at `pos`, pressed and lifted, as a phone's browser sends it.
+fn touch(h: &mut Harness<'_, PipelensApp>, pos: Pos2) {
+    for phase in [egui::TouchPhase::Start, egui::TouchPhase::End] {
+        h.input_mut().events.push(Event::Touch {
+            device_id: egui::TouchDeviceId(1),
+            id: egui::TouchId(0),
+            phase,
+            pos,
+            force: None,
+        });
+        h.run_steps(1);
+    }
+}
+
+/// The tour's first step is written for a keyboard and a mouse ("Press → …", "Click any pixel
+/// to see, in the inspector on the right, …"). With a mouse the phone-sized window keeps those
+/// words; once a finger touches the screen it says the gesture and the buttons a phone has
+/// instead, the sentences as written by hand from the lesson's.
+#[test]
+fn on_a_touch_screen_the_narration_speaks_of_taps_and_swipes() {
+    let path = crate::support::repo().join("lessons/00-tour.toml");
+    let mut h = super::sized_lesson_harness(&path, [390.0, 844.0]);
+    h.run_steps(4);
+    assert!(
+        h.query_by_label_contains("Click any pixel to see")
+            .is_some()
+    );
+    assert!(!h.state().session.touch);
+    touch(&mut h, Pos2::new(200.0, 780.0));
+    h.run_steps(3);
+    assert!(h.state().session.touch, "a touch makes it a touch screen");
+    assert!(
+        h.query_by_label_contains("Swipe the narration left (or tap ▶ at the top) to follow")
+            .is_some(),
+        "the step's arrow key becomes a swipe"
+    );
+    assert!(
+        h.query_by_label_contains(
+            "Tap any pixel to see, in the inspector (Menu → Show → Inspector), every fragment"
+        )
+        .is_some(),
+        "a click becomes a tap, the inspector is found through the menu"
+    );
+    assert!(h.query_by_label_contains("Click any pixel").is_none());
+    assert!(h.query_by_label_contains("Press →").is_none());
 }
