@@ -27,8 +27,11 @@ python3 -m http.server "$port" --bind 127.0.0.1 --directory target/web-dist >tar
 server=$!
 # The same build from a host that isolates the page itself (scripts/serve-web.sh sends the
 # headers), where the page runs from its first load with no reload through the worker: opened
-# once there, it must open again offline.
-PORT=$((port + 1)) scripts/serve-web.sh target/web-dist >target/web-serve-isolated.log 2>&1 &
+# once there, it must open again offline. A copy of the build, whose worker the test changes to
+# play a new build's.
+rm -rf target/web-dist-isolated
+cp -r target/web-dist target/web-dist-isolated
+PORT=$((port + 1)) scripts/serve-web.sh target/web-dist-isolated >target/web-serve-isolated.log 2>&1 &
 isolated=$!
 trap 'kill $server $isolated 2>/dev/null || true' EXIT
 for p in "$port" $((port + 1)); do
@@ -51,5 +54,6 @@ if command -v Xvfb >/dev/null && command -v xdotool >/dev/null; then
 fi
 NATIVE_STEPS=$(echo "$native" | tail -1) NATIVE_APP=$app_frames SERVER_PID=$server \
   ISOLATED_URL="http://127.0.0.1:$((port + 1))/index.html" ISOLATED_PID=$isolated \
+  ISOLATED_DIR=target/web-dist-isolated \
   PIPELENS_BIN=$PWD/target/release/pipelens \
   node scripts/web-test/test.mjs "http://127.0.0.1:$port/index.html" target/web-test

@@ -1,22 +1,44 @@
 // pipelens' service worker (web/sw.js; scripts/build-web.sh writes the build's version below).
 //
 // Two jobs:
-//  - Offline: every file the page loads is kept in a cache named for this build, and served from
-//    it, so a page opened once works without the network (a class on a weak network). A new
-//    build has a new version, so a new worker, which starts an empty cache and drops the old.
+//  - Offline: the page and the threaded build are kept when this worker installs (before it
+//    takes the page over), every other file the page loads is kept as it passes through, and
+//    everything is served from that cache, so a page opened once works without the network (a
+//    class on a weak network). A new build has a new version, so a new worker, which fills a
+//    cache of its own and drops the old. Kept at install, not when the page asks: a page that
+//    ran before this worker controlled it (a first visit to a host that isolates it itself, or
+//    a page of the previous build while this one installs) may never pass its files through
+//    this worker, and its message may reach the previous worker, whose cache this one deletes.
 //  - Threads: the threaded build needs shared memory, which a browser gives only to a page that
 //    is cross-origin isolated (the `Cross-Origin-Opener-Policy` and `-Embedder-Policy` headers).
 //    A static host that cannot send them still gets them: this worker adds them to every
 //    response it serves (the page reloads once after the worker first takes it over).
-// A page loaded before this worker controlled it (its first visit, from a host that isolates it
-// itself, so with no reload) did not pass its files through the worker: once it runs it says
-// which build it runs, and the worker keeps the page and that build's files then.
+// The single-threaded build (a page asked for `?threads=0`, or one whose thread pool did not
+// start) is kept whole when the page says it runs it.
 const VERSION = "pipelens-@BUILD@";
 // Each build's files (scripts/build-web.sh lists them), relative to the page: the single-threaded
-// build's and the threaded one's, kept whole once the page says which it runs.
+// build's and the threaded one's (empty in a build made without threads).
 const FILES = { one: ["@ONE@"], threads: ["@THREADS@"] };
 
-self.addEventListener("install", () => self.skipWaiting());
+/** `files` and the page fetched past the browser's HTTP cache (which may still hold the previous
+ * build's), kept in this build's cache; a file already kept is not fetched again. */
+async function keep(files) {
+  const cache = await caches.open(VERSION);
+  for (const file of ["./", ...files]) {
+    const url = new URL(file, self.location).href;
+    if (await cache.match(url)) continue;
+    const fresh = await fetch(url, { cache: "no-cache" });
+    if (!fresh.ok) throw new Error(`${file}: HTTP ${fresh.status}`);
+    await cache.put(url, fresh);
+  }
+}
+
+// The page and the build almost every page runs (the worker isolates the page, so the threaded
+// one) are kept before the worker installs: it installs with them, or not at all (and the next
+// visit tries again).
+self.addEventListener("install", (event) => {
+  event.waitUntil(keep(FILES.threads).then(() => self.skipWaiting()));
+});
 
 self.addEventListener("activate", (event) => {
   event.waitUntil((async () => {
@@ -35,19 +57,7 @@ function key(request) {
 self.addEventListener("message", (event) => {
   const files = FILES[event.data?.keep];
   if (!Array.isArray(files)) return;
-  event.waitUntil((async () => {
-    const cache = await caches.open(VERSION);
-    for (const file of ["./", ...files]) {
-      const url = new URL(file, self.location).href;
-      if (await cache.match(url)) continue;
-      try {
-        const fresh = await fetch(url);
-        if (fresh.ok) await cache.put(url, fresh);
-      } catch (e) {
-        console.warn(`pipelens: ${file} not kept for offline use:`, e);
-      }
-    }
-  })());
+  event.waitUntil(keep(files).catch((e) => console.warn("pipelens: not kept for offline use:", e)));
 });
 
 /** The response with the isolation headers added (a new Response: headers are read-only). */

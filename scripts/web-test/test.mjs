@@ -29,7 +29,9 @@
 //     exported by the native app, in English and in Chinese;
 // 13. offline from the first visit: a new browser profile opens the page once from a host that
 //     isolates it itself (scripts/serve-web.sh, $ISOLATED_URL: no reload through the worker),
-//     and with that server stopped (in 11) the page opens again and goes to another lesson;
+//     the page and its build are kept by the time the lesson shows, a new build's worker keeps
+//     them again in a cache of its own, and with that server stopped (in 11) the page opens
+//     again and goes to another lesson;
 // 11. (last) with the server stopped, the page opens again from the service worker's cache.
 // Screenshots are written to the output folder for a person to look at.
 import { chromium } from "playwright-core";
@@ -204,30 +206,51 @@ for (const [query, label, mine, running] of [
 console.log(`the tour's step ${heaviest} at 1920×1080, the frame the page reports (medians of 5):\n${rows.join("\n")}`);
 
 // 13. Offline from the first visit (its reload is in 11): the page's one visit to a host that
-// isolates it, in a profile of its own, and the worker keeping that visit's build whole.
+// isolates it, in a profile of its own. The worker keeps the page and the threaded build as it
+// installs, and the page loads its build only once the worker controls it, so when the page
+// runs they are kept: looked at right away, not after a wait (a student may close the tab as
+// soon as the lesson shows). Then a new build on that host (its worker's version changed, in
+// $ISOLATED_DIR, a copy of the build that only this server serves): the new worker keeps the
+// page and the build in a cache of its own, and drops the old one.
 let firstVisit = null;
 if (process.env.ISOLATED_URL) {
   const own = await browser.newContext({ viewport: { width: 1366, height: 768 } });
   firstVisit = await own.newPage();
   firstVisit.on("pageerror", (e) => errors.push(`first visit, isolated: ${e.message}`));
   firstVisit.on("console", (m) => { if ((m.type() === "warning" || m.type() === "error") && !/deprecated parameters/.test(m.text())) console.log(`first visit, isolated, ${m.type()}: ${m.text()}`); });
+  const kept = () => firstVisit.evaluate(async () => {
+    const all = {};
+    for (const name of await caches.keys()) {
+      all[name] = (await (await caches.open(name)).keys()).map((r) => new URL(r.url).pathname);
+    }
+    return all;
+  });
+  /** Whether `files` (one cache's) hold the page and the build that runs on `threads`. */
+  const whole = (files, threads) => (files ?? []).includes("/")
+    && files.some((p) => p.endsWith(threads > 0 ? "/threads/pipelens_web_bg.wasm" : "/pipelens_web_bg.wasm"));
   await firstVisit.goto(process.env.ISOLATED_URL + "?step=2");
   const running = await until(firstVisit, () => document.title.endsWith("step 2/10"), null);
-  let kept = [];
-  for (let i = 0; i < 60 && running; i++) {
-    kept = await firstVisit.evaluate(async () => {
-      const names = await caches.keys();
-      const cache = names.length ? await caches.open(names[0]) : null;
-      return cache ? (await cache.keys()).map((r) => new URL(r.url).pathname) : [];
-    });
-    if (kept.some((p) => p.endsWith("_bg.wasm")) && kept.includes("/")) break;
-    await firstVisit.waitForTimeout(1000);
-  }
+  const first = await kept();
   const threaded = await firstVisit.evaluate(() => Number(document.documentElement.dataset.threads));
   const poolError = await firstVisit.evaluate(() => document.documentElement.dataset.poolError);
   if (poolError) console.log(`note: the first visit's thread pool did not start (${poolError}); it ran the single-threaded build`);
-  check(running && kept.includes("/") && kept.some((p) => p.endsWith(threaded > 0 ? "/threads/pipelens_web_bg.wasm" : "/pipelens_web_bg.wasm")),
-    `a first visit to an isolating host keeps the page and its build (${threaded} threads; kept: ${kept.join(" ")})`);
+  const names = Object.keys(first);
+  check(running && names.length === 1 && whole(first[names[0]], threaded),
+    `a first visit to an isolating host has kept the page and its build when the lesson shows (${threaded} threads; kept: ${JSON.stringify(first)})`);
+  if (process.env.ISOLATED_DIR && names.length === 1) {
+    const sw = `${process.env.ISOLATED_DIR}/sw.js`;
+    writeFileSync(sw, readFileSync(sw, "utf8").replace(names[0], "pipelens-0a0b0c0d0e0f0102"));
+    await firstVisit.goto(process.env.ISOLATED_URL + "?step=3");
+    await until(firstVisit, () => document.title.endsWith("step 3/10"), null);
+    let now = {};
+    for (let i = 0; i < 30; i++) {
+      now = await kept();
+      if (!now[names[0]] && whole(now["pipelens-0a0b0c0d0e0f0102"], threaded)) break;
+      await firstVisit.waitForTimeout(1000);
+    }
+    check(!now[names[0]] && whole(now["pipelens-0a0b0c0d0e0f0102"], threaded),
+      `a new build's worker keeps the page and the build in its own cache and drops the old (${JSON.stringify(now)})`);
+  }
   // Closed meanwhile (a blank page in its place), so that it draws nothing while the rest runs.
   await firstVisit.goto("about:blank");
 }
