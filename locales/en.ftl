@@ -13,6 +13,7 @@ chrome-large-type-and-high-contrast = Large type and high contrast for a project
 chrome-the-file-changed-on-disk = The file changed on disk and no longer loads; the last good version keeps running:
 chrome-the-dropped-file-did-not = The dropped file did not open; what was open keeps running:
 chrome-close-this-message = Close this message
+chrome-close-the-keyboard-shortcuts = Close the keyboard shortcuts (F1)
 chrome-previous-step = Previous step
 chrome-previous-step-or-page-up = Previous step (← or Page Up)
 chrome-step = Step

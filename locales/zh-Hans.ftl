@@ -13,6 +13,7 @@ chrome-large-type-and-high-contrast = 投影用的大字号与高对比度，画
 chrome-the-file-changed-on-disk = 文件在磁盘上被修改后无法加载；继续运行上一个正确的版本：
 chrome-the-dropped-file-did-not = 拖入的文件未能打开；继续运行原来打开的内容：
 chrome-close-this-message = 关闭此消息
+chrome-close-the-keyboard-shortcuts = 关闭键盘快捷键（F1）
 chrome-previous-step = 上一步
 chrome-previous-step-or-page-up = 上一步（← 或 Page Up）
 chrome-step = 步骤

@@ -14,7 +14,11 @@ use crate::vocabulary::Lang;
 impl PipelensApp {
     pub(super) fn top_bar(&mut self, ui: &mut egui::Ui) {
         let lang = self.session.lang;
-        egui::Panel::top("top").show(ui, |ui| {
+        // One point above and below its controls (egui's two): the controls grew to the 24
+        // points a mouse needs, and the picture keeps its room.
+        let frame =
+            egui::Frame::side_top_panel(ui.style()).inner_margin(egui::Margin::symmetric(8, 1));
+        egui::Panel::top("top").frame(frame).show(ui, |ui| {
             super::style::chrome_style(ui);
             ui.spacing_mut().item_spacing.x = 6.0;
             ui.horizontal_wrapped(|ui| {
@@ -37,8 +41,12 @@ impl PipelensApp {
                     self.language_and_classroom(ui, lang);
                 }
                 self.export_menu(ui, lang);
-                ui.toggle_value(&mut self.panels.keys, "?")
-                    .accessible_name(lang.t("chrome-help-keyboard-shortcuts"))
+                let keys = self.panels.keys;
+                let help = ui.add(super::style::glyph_button(ui, "?", Some(keys)));
+                if help.clicked() {
+                    self.panels.keys = !keys;
+                }
+                help.accessible_name(lang.t("chrome-help-keyboard-shortcuts"))
                     .on_hover_text(lang.t("chrome-keyboard-shortcuts-f1"));
             });
             self.bar_messages(ui, lang);
@@ -128,7 +136,7 @@ impl PipelensApp {
             let closed = ui
                 .horizontal_top(|ui| {
                     let close = ui
-                        .small_button("×")
+                        .add(crate::app::style::glyph_button(ui, "×", None))
                         .on_hover_text(lang.t("chrome-close-this-message"))
                         .clicked();
                     ui.label(
@@ -162,7 +170,7 @@ impl PipelensApp {
         };
         let (k, n) = (player.step, player.lesson.steps.len());
         if ui
-            .add_enabled(k > 0, egui::Button::new("◀"))
+            .add_enabled(k > 0, super::style::glyph_button(ui, "◀", None))
             .accessible_name(lang.t("chrome-previous-step"))
             .on_hover_text(lang.t("chrome-previous-step-or-page-up"))
             .clicked()
@@ -170,7 +178,14 @@ impl PipelensApp {
             self.commands
                 .push(Command::Lesson(LessonCommand::PreviousStep));
         }
-        ui.menu_button(format!("{} {} / {n}", lang.t("chrome-step"), k + 1), |ui| {
+        // A phone's bar has room for the numbers alone (a screen reader still hears "Step").
+        let step = format!("{} {} / {n}", lang.t("chrome-step"), k + 1);
+        let shown = if super::window_size::is_compact(ui.ctx()) {
+            format!("{} / {n}", k + 1)
+        } else {
+            step.clone()
+        };
+        ui.menu_button(shown, |ui| {
             ui.label(RichText::new(player.lesson.title.get(lang)).strong());
             for (i, s) in player.lesson.steps.iter().enumerate() {
                 if ui
@@ -184,9 +199,10 @@ impl PipelensApp {
             }
         })
         .response
-        .on_hover_text(player.lesson.title.get(lang));
+        .on_hover_text(player.lesson.title.get(lang))
+        .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Button, true, &step));
         if ui
-            .add_enabled(k + 1 < n, egui::Button::new("▶"))
+            .add_enabled(k + 1 < n, super::style::glyph_button(ui, "▶", None))
             .accessible_name(lang.t("chrome-next-step"))
             .on_hover_text(lang.t("chrome-next-step-or-page-down"))
             .clicked()
@@ -390,7 +406,10 @@ impl PipelensApp {
     /// window is too low for the whole list.
     pub(super) fn keys_help(&mut self, ctx: &egui::Context) {
         let lang = self.session.lang;
-        let mut open = self.panels.keys;
+        if !self.panels.keys {
+            return;
+        }
+        let mut open = true;
         let keys = |ui: &mut egui::Ui, written: &str| {
             ui.label(RichText::new(written).monospace().strong());
         };
@@ -398,7 +417,6 @@ impl PipelensApp {
             // Over the narration card (a foreground area), opened after it: nothing covers
             // the list.
             .order(egui::Order::Foreground)
-            .open(&mut open)
             .collapsible(false)
             .resizable(false)
             .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
@@ -406,6 +424,17 @@ impl PipelensApp {
                 // Chrome, at its normal size in classroom mode too: in classroom type the
                 // table was wider than a 1366-point window and its keys were cut off.
                 super::style::chrome_style(ui);
+                // Its own close button, a target's size (egui's in the title bar is 14 points).
+                ui.with_layout(egui::Layout::right_to_left(egui::Align::Min), |ui| {
+                    if ui
+                        .add(super::style::glyph_button(ui, "×", None))
+                        .accessible_name(lang.t("chrome-close-the-keyboard-shortcuts"))
+                        .on_hover_text(lang.t("chrome-close-the-keyboard-shortcuts"))
+                        .clicked()
+                    {
+                        open = false;
+                    }
+                });
                 // As tall as the list, up to most of the window (egui would keep a scrolled
                 // area far lower).
                 let most = ctx.content_rect().height() * 0.8;

@@ -34,5 +34,5 @@ pub use start::run;
 #[cfg(target_arch = "wasm32")]
 pub use start::start;
 pub use start::{Start, create, initial_lang};
-pub use style::{apply_style, cjk_font, install_fonts, setup_context};
+pub use style::{apply_style, cjk_font, install_fonts, setup_context, target_size};
 pub use window::{Panels, PipelensApp};

@@ -57,6 +57,9 @@ pub fn create(
         session.apply(Command::View(ViewCommand::SetComparison(start.compare)));
     }
     setup_context(&cc.egui_ctx);
+    if start.touch {
+        super::style::apply_style(&cc.egui_ctx, false, true);
+    }
     let mut app = PipelensApp::new(session);
     if start.classroom {
         app.set_classroom(&cc.egui_ctx, true);

@@ -25,7 +25,7 @@ pub fn install_fonts(ctx: &egui::Context) {
 /// Prepares an egui context for the app: the Chinese font and the normal style.
 pub fn setup_context(ctx: &egui::Context) {
     install_fonts(ctx);
-    apply_style(ctx, false);
+    apply_style(ctx, false, false);
 }
 
 /// The text sizes at `scale` (1: normal, 1.6: classroom).
@@ -48,14 +48,51 @@ pub fn chrome_style(ui: &mut egui::Ui) {
     ui.style_mut().text_styles = text_styles(1.0);
 }
 
+/// The least side of a control one clicks or taps (points, CSS pixels in a page): 24 with a
+/// mouse (WCAG 2.2's target size, 2.5.8), 44 under a finger (a fingertip's width, as the
+/// platforms' guidelines ask).
+#[must_use]
+pub fn target_size(touch: bool) -> f32 {
+    if touch { 44.0 } else { 24.0 }
+}
+
+/// Whether the touch screen's style is in force ([`apply_style`] with `touch`): its controls
+/// are a finger's size.
+#[must_use]
+pub fn is_touch(ctx: &egui::Context) -> bool {
+    ctx.global_style().spacing.interact_size.y >= target_size(true)
+}
+
+/// A button for one glyph (◀, ×, ?, —), at least as wide as it is high: its own width would be
+/// a sliver of the [`target_size`]. `selected` makes it a toggle's button (shown pressed).
+pub fn glyph_button<'a>(ui: &egui::Ui, glyph: &'a str, selected: Option<bool>) -> egui::Button<'a> {
+    let button = match selected {
+        Some(on) => egui::Button::selectable(on, glyph),
+        None => egui::Button::new(glyph),
+    };
+    button.min_size(egui::Vec2::splat(ui.spacing().interact_size.y))
+}
+
 /// Text sizes and contrast: normal, or classroom (large type and high contrast for a projector:
 /// body text 24 points, as slides use, white on black). Secondary text keeps a contrast of at
-/// least 7:1 against the panels (grey 190 on grey 27 in the dark theme).
-pub fn apply_style(ctx: &egui::Context, classroom: bool) {
+/// least 7:1 against the panels (grey 190 on grey 27 in the dark theme). Every control is at
+/// least [`target_size`] high, and under a finger (`touch`) wider too, with panel edges that
+/// are easier to take hold of.
+pub fn apply_style(ctx: &egui::Context, classroom: bool, touch: bool) {
     let scale = if classroom { 1.6 } else { 1.0 };
     ctx.set_theme(egui::Theme::Dark);
     ctx.global_style_mut(|style| {
         style.text_styles = text_styles(scale);
+        let target = target_size(touch);
+        // A drag value is as wide as it is high at least; a panel's edge is taken hold of a
+        // target's width across.
+        style.spacing.interact_size = egui::vec2(target.max(40.0), target);
+        style.interaction.resize_grab_radius_side = target / 2.0;
+        if touch {
+            // A short word's button ("flat", "Fit") as wide as a finger; one glyph's is
+            // `glyph_button`.
+            style.spacing.button_padding.x = 11.0;
+        }
         style.visuals = egui::Visuals::dark();
         style.visuals.weak_text_color = Some(egui::Color32::from_gray(190));
         // Words on a raised box (grey 40 or 50: a card, a table's row) keep 4.5:1: egui's grey

@@ -167,7 +167,7 @@ impl PipelensApp {
             return;
         }
         self.classroom = on;
-        apply_style(ctx, on);
+        apply_style(ctx, on, self.session.touch);
         let narration = self.panels.narration;
         self.panels = Panels {
             narration,
@@ -563,6 +563,7 @@ impl PipelensApp {
         self.open_dropped(ctx);
         self.keyboard(ctx);
         if !self.session.touch && ctx.input(egui::InputState::has_touch_screen) {
+            apply_style(ctx, self.classroom, true);
             self.commands
                 .push(Command::View(ViewCommand::SetTouch(true)));
         }

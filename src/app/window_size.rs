@@ -4,9 +4,11 @@
 use egui::Context;
 
 /// Whether the window is too small for the desktop's bar and card: narrower than 700 points
-/// (a phone or a tablet in portrait) or lower than 480 (a phone in landscape).
+/// (a phone or a tablet in portrait) or lower than 480 (a phone in landscape), or touched by
+/// a finger and narrower than 1100 (a tablet, whose finger-sized controls do not fit the
+/// desktop's bar in one row; it gets the phone's layout and its swipe).
 #[must_use]
 pub fn is_compact(ctx: &Context) -> bool {
     let r = ctx.content_rect();
-    r.width() < 700.0 || r.height() < 480.0
+    r.width() < 700.0 || r.height() < 480.0 || super::style::is_touch(ctx) && r.width() < 1100.0
 }

@@ -25,6 +25,7 @@ mod phone;
 mod pseudo_locale;
 mod recording;
 mod steps;
+mod targets;
 mod variable_picture;
 
 /// The app on the built-in scene, rendering synchronously so that tests are deterministic.

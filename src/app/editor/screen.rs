@@ -120,7 +120,7 @@ impl Editor {
                 )
                 .on_hover_text(lang.t("screen-seconds-from-the-first-value"));
                 if ui
-                    .small_button("×")
+                    .add(crate::app::style::glyph_button(ui, "×", None))
                     .on_hover_text(lang.t("screen-not-an-animation"))
                     .clicked()
                 {

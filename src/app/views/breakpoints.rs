@@ -151,7 +151,7 @@ pub fn list(
                 }
             }
             if ui
-                .small_button("×")
+                .add(crate::app::style::glyph_button(ui, "×", None))
                 .on_hover_text(lang.t("breakpoints-remove-this-breakpoint"))
                 .clicked()
             {

@@ -4,7 +4,7 @@
 //! line the user drags across any of them, plotted for all of them in the images' order.
 
 use egui::{Color32, Pos2, Rect, Sense, Stroke, TextureOptions, Ui, Vec2};
-use egui_plot::{Legend, Line, Plot};
+use egui_plot::{Line, Plot};
 
 use super::fit_rect;
 use crate::app::command::SelectionCommand;
@@ -195,11 +195,9 @@ impl CompareView {
                 );
             }
         }
-        let bottom = (
-            images.center_bottom() - Vec2::new(0.0, 8.0),
-            egui::Align2::CENTER_BOTTOM,
-        );
-        super::draw_gain_note(ui.painter(), bottom, kind, gain, lang);
+        let bottom = images.center_bottom() - Vec2::new(0.0, 8.0);
+        let at = (bottom, egui::Align2::CENTER_BOTTOM, images.width() - 24.0);
+        super::draw_gain_note(ui.painter(), at, kind, gain, lang);
         ui.advance_cursor_after_rect(images);
         if with_plot {
             // Below the images, right of the card when the card would cover its axes.
@@ -229,14 +227,28 @@ impl CompareView {
             profile::y_label(lang),
             40.0,
         );
+        let names: Vec<String> = session
+            .variants
+            .iter()
+            .map(|(name, _)| variant_label(name, lang))
+            .collect();
+        let entries: Vec<(&str, egui::Color32)> = names
+            .iter()
+            .enumerate()
+            .map(|(i, n)| (n.as_str(), CURVES[i % CURVES.len()]))
+            .collect();
+        let shown = crate::app::views::plot_legend::legend(ui, "profile", &entries);
         Plot::new("profile")
-            .legend(Legend::default().follow_insertion_order(true))
             .custom_x_axes(x_axes)
             .custom_y_axes(y_axes)
             .include_y(0.0)
             .allow_scroll(false)
+            .allow_axis_zoom_drag(false)
             .show(ui, |plot| {
                 for (i, (name, capture)) in session.variants.iter().enumerate() {
+                    if !shown[i] {
+                        continue;
+                    }
                     let points = profile::points(capture, line);
                     plot.line(
                         Line::new(variant_label(name, lang), points)

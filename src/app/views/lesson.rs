@@ -187,7 +187,7 @@ fn contents(ui: &mut Ui, session: &Session, out: &mut CardOutput) -> (f32, f32) 
         egui::Layout::right_to_left(egui::Align::Min),
         |ui| {
             if ui
-                .small_button("—")
+                .add(crate::app::style::glyph_button(ui, "—", None))
                 .accessible_name(lang.t("lesson-fold-the-narration-away"))
                 .on_hover_text(lang.t("lesson-fold-the-narration-away-n"))
                 .clicked()

@@ -22,6 +22,7 @@ pub mod params;
 pub mod picture_keys;
 pub mod pixels;
 pub mod plot_axes;
+pub mod plot_legend;
 mod projector;
 pub mod shader;
 mod shader_source;

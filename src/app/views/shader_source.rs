@@ -97,6 +97,13 @@ pub(super) fn code(
         .show(ui, |ui| {
             ui.horizontal_top(|ui| {
                 let lines = source.lines().count().max(1) + usize::from(source.ends_with('\n'));
+                // The numbers right-aligned in a column a target wide at least (a finger's
+                // on a touch screen): the mark, the arrow, then the digits.
+                let font = egui::TextStyle::Monospace.resolve(ui.style());
+                let char_width = ui.fonts_mut(|f| f.glyph_width(&font, '0')).max(1.0);
+                let digits = ((ui.spacing().interact_size.y / char_width).ceil() as usize)
+                    .saturating_sub(2)
+                    .max(3);
                 let gutter: String = (1..=lines)
                     .map(|n| {
                         let dot = if marks.breakpoints.contains(&n) {
@@ -111,7 +118,7 @@ pub(super) fn code(
                         } else {
                             ' '
                         };
-                        format!("{dot}{arrow}{n:>3}\n")
+                        format!("{dot}{arrow}{n:>digits$}\n")
                     })
                     .collect();
                 let numbers = ui

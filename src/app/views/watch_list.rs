@@ -159,7 +159,7 @@ pub fn ui(
         for (i, (expression, reading)) in list.entries.iter().zip(&readings).enumerate() {
             ui.horizontal(|ui| {
                 if ui
-                    .small_button("×")
+                    .add(crate::app::style::glyph_button(ui, "×", None))
                     .on_hover_text(lang.t("watch-list-take-it-off-the-list"))
                     .clicked()
                 {

@@ -102,7 +102,7 @@ pub fn ui(
             .labelled_by(after.id);
         if let Some(line) = step_line
             && ui
-                .small_button(lang.t("watch-picture-the-step-s"))
+                .button(lang.t("watch-picture-the-step-s"))
                 .on_hover_text(lang.t("watch-picture-watch-after-the-line-of"))
                 .clicked()
         {

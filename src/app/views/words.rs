@@ -39,23 +39,28 @@ pub fn picture_mono(ctx: &egui::Context, size: f32) -> egui::FontId {
 }
 
 /// Says over a picture that a dim lighting term is drawn `gain` times brighter than its values
-/// (`vocabulary::gain_note`), in the accent colour at `at`; nothing when it is drawn as it is.
-/// Returns its box.
+/// (`vocabulary::gain_note`), in the accent colour at `at`, on one line at most `width` wide
+/// (the picture's, less a margin): its type shrunk to fit, down to two thirds of its size, and
+/// wrapped beyond; nothing when it is drawn as it is. Returns its box.
 pub fn draw_gain_note(
     painter: &egui::Painter,
-    (at, align): (Pos2, egui::Align2),
+    (at, align, width): (Pos2, egui::Align2, f32),
     kind: pipeline::buffers::BufferKind,
     gain: f32,
     lang: crate::vocabulary::Lang,
 ) -> Option<Rect> {
     let note = crate::vocabulary::gain_note(kind, gain, lang)?;
-    Some(label_with_background(
-        painter,
-        at,
-        align,
-        &note,
-        &picture_font(painter.ctx(), 15.0),
-        egui::Color32::from_rgb(255, 214, 120),
+    let color = egui::Color32::from_rgb(255, 214, 120);
+    let mut font = picture_font(painter.ctx(), 15.0);
+    let one_line = painter
+        .layout_no_wrap(note.clone(), font.clone(), color)
+        .size()
+        .x;
+    if one_line > width {
+        font.size *= (width / one_line).max(2.0 / 3.0);
+    }
+    Some(wrapped_label(
+        painter, at, align, &note, &font, color, width,
     ))
 }
 

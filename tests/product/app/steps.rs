@@ -242,6 +242,11 @@ fn the_lighting_lesson_s_lights_and_material_are_sliders() {
             })
     };
     let start = intensity(&h).expect("a point light");
+    // Folded, the sections above leave the lights' sliders in view.
+    for section in ["Rasterizer settings", "Projection", "Camera"] {
+        h.get_by_label(section).click();
+        h.run_steps(2);
+    }
     // The sliders of the lights, in order: ambient, then the point light.
     let sliders: Vec<egui::Rect> = h
         .get_all_by_role_and_label(egui::accesskit::Role::Slider, "intensity I")
@@ -259,10 +264,8 @@ fn the_lighting_lesson_s_lights_and_material_are_sliders() {
     assert!(now > start, "intensity {start} → {now}");
     // Each lit object's material: k_a, k_d, k_s and the shininess (under Objects).
     // Folded, the sections above leave the objects in view.
-    for section in ["Lights", "Rasterizer settings", "Projection", "Camera"] {
-        h.get_by_label(section).click();
-        h.run_steps(2);
-    }
+    h.get_by_label("Lights").click();
+    h.run_steps(2);
     h.get_by_label("Objects").click();
     h.run_steps(2);
     // The object's section (the pictures' names say "sphere" too).

@@ -270,8 +270,16 @@ fn render(
     ui.horizontal(|ui| {
         ui.label(lang.t("params-samples-per-pixel"));
         for n in [Samples::X1, Samples::X4, Samples::X8, Samples::X16] {
-            ui.selectable_value(&mut s.samples, n, n.count().to_string())
-                .on_hover_text(lang.t("params-msaa-coverage-and-depth-per"));
+            let count = n.count().to_string();
+            let picked = ui.add(crate::app::style::glyph_button(
+                ui,
+                &count,
+                Some(s.samples == n),
+            ));
+            if picked.clicked() {
+                s.samples = n;
+            }
+            picked.on_hover_text(lang.t("params-msaa-coverage-and-depth-per"));
         }
     });
     ui.horizontal(|ui| {

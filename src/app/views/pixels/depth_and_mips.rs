@@ -7,7 +7,7 @@ use crate::app::views::picture_font;
 use std::collections::HashMap;
 
 use egui::{Align2, Color32, Pos2, Rect, Stroke, TextureOptions, Ui, Vec2};
-use egui_plot::{Legend, Line, Plot, VLine};
+use egui_plot::{Line, Plot, VLine};
 use pipeline::capture::{FrameCapture, PixelRecord};
 
 use crate::vocabulary::{Lang, num};
@@ -37,43 +37,55 @@ pub(super) fn depth_curve(
             lang.t("depth-and-mips-window-depth-z-w"),
             36.0,
         );
+        let (curve_colour, depths_colour, ramp_colour) = (
+            Color32::from_rgb(255, 214, 120),
+            Color32::from_rgb(120, 200, 255),
+            Color32::from_gray(200),
+        );
+        let curve_name = lang.t_with(
+            "depth-and-mips-curve-legend",
+            &[("near", &num(near)), ("far", &num(far))],
+        );
+        let depths = capture.depth_range();
+        let mut entries = vec![(curve_name.as_str(), curve_colour)];
+        if depths.is_some() {
+            entries.push((lang.t("depth-and-mips-depths-in-the-image"), depths_colour));
+        }
+        if range.is_some() {
+            entries.push((lang.t("depth-and-mips-grey-ramp-black-white"), ramp_colour));
+        }
+        let shown = crate::app::views::plot_legend::legend(ui, "depth-curve", &entries);
+        let shown = |name: &str| {
+            entries
+                .iter()
+                .zip(&shown)
+                .any(|((n, _), s)| *n == name && *s)
+        };
         let plot = Plot::new("depth-curve")
-            .legend(Legend::default().follow_insertion_order(true))
             .custom_x_axes(x_axes)
             .custom_y_axes(y_axes)
             .include_y(0.0)
             .include_y(1.0)
             .allow_scroll(false)
+            .allow_axis_zoom_drag(false)
             .show(ui, |plot| {
-                plot.line(
-                    Line::new(
-                        lang.t_with(
-                            "depth-and-mips-curve-legend",
-                            &[("near", &num(near)), ("far", &num(far))],
-                        ),
-                        curve,
-                    )
-                    .color(Color32::from_rgb(255, 214, 120))
-                    .width(2.5),
-                );
-                if let Some([a, b]) = capture.depth_range() {
+                if shown(&curve_name) {
+                    plot.line(Line::new(&curve_name, curve).color(curve_colour).width(2.5));
+                }
+                if let Some([a, b]) = depths
+                    && shown(lang.t("depth-and-mips-depths-in-the-image"))
+                {
                     let (da, db) = (capture.eye_depth(a), capture.eye_depth(b));
                     let name = lang.t("depth-and-mips-depths-in-the-image");
-                    plot.vline(
-                        VLine::new(name, f64::from(da)).color(Color32::from_rgb(120, 200, 255)),
-                    );
-                    plot.vline(
-                        VLine::new(name, f64::from(db)).color(Color32::from_rgb(120, 200, 255)),
-                    );
+                    plot.vline(VLine::new(name, f64::from(da)).color(depths_colour));
+                    plot.vline(VLine::new(name, f64::from(db)).color(depths_colour));
                 }
-                if let Some([lo, hi]) = range {
+                if let Some([lo, hi]) = range
+                    && shown(lang.t("depth-and-mips-grey-ramp-black-white"))
+                {
                     let name = lang.t("depth-and-mips-grey-ramp-black-white");
-                    plot.hline(
-                        egui_plot::HLine::new(name, f64::from(lo)).color(Color32::from_gray(200)),
-                    );
-                    plot.hline(
-                        egui_plot::HLine::new(name, f64::from(hi)).color(Color32::from_gray(200)),
-                    );
+                    plot.hline(egui_plot::HLine::new(name, f64::from(lo)).color(ramp_colour));
+                    plot.hline(egui_plot::HLine::new(name, f64::from(hi)).color(ramp_colour));
                 }
             })
             .response;

@@ -267,6 +267,7 @@ impl PixelView {
         let top = (
             rect.center_top() + egui::Vec2::new(0.0, 8.0),
             egui::Align2::CENTER_TOP,
+            rect.width() - 24.0,
         );
         self.words.extend(crate::app::views::draw_gain_note(
             painter, top, sel.buffer, gain, lang,
