@@ -375,6 +375,21 @@ pub(crate) fn flatten(h: &Harness<'_, PipelensApp>) -> Vec<(egui::Rect, egui::Sh
     out
 }
 
+/// A finger's touch at `pos`, pressed and lifted, as a phone's browser sends it: from then on
+/// the app is on a touch screen.
+pub(crate) fn touch(h: &mut Harness<'_, PipelensApp>, pos: egui::Pos2) {
+    for phase in [egui::TouchPhase::Start, egui::TouchPhase::End] {
+        h.input_mut().events.push(egui::Event::Touch {
+            device_id: egui::TouchDeviceId(1),
+            id: egui::TouchId(0),
+            phase,
+            pos,
+            force: None,
+        });
+        h.run_steps(1);
+    }
+}
+
 pub(crate) fn sized_lesson_harness(
     path: &std::path::Path,
     size: [f32; 2],

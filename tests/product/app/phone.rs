@@ -99,20 +99,6 @@ fn a_swipe_across_the_narration_moves_the_steps() {
     assert_eq!(super::step_of(&h), 1, "the picture keeps its drags");
 }
 
-/// A finger's touch on the screen at `pos`, pressed and lifted, as a phone's browser sends it.
-fn touch(h: &mut Harness<'_, PipelensApp>, pos: Pos2) {
-    for phase in [egui::TouchPhase::Start, egui::TouchPhase::End] {
-        h.input_mut().events.push(Event::Touch {
-            device_id: egui::TouchDeviceId(1),
-            id: egui::TouchId(0),
-            phase,
-            pos,
-            force: None,
-        });
-        h.run_steps(1);
-    }
-}
-
 /// The tour's first step is written for a keyboard and a mouse ("Press → …", "Click any pixel
 /// to see, in the inspector on the right, …"). With a mouse the phone-sized window keeps those
 /// words; once a finger touches the screen it says the gesture and the buttons a phone has
@@ -127,7 +113,7 @@ fn on_a_touch_screen_the_narration_speaks_of_taps_and_swipes() {
             .is_some()
     );
     assert!(!h.state().session.touch);
-    touch(&mut h, Pos2::new(200.0, 780.0));
+    super::touch(&mut h, Pos2::new(200.0, 780.0));
     h.run_steps(3);
     assert!(h.state().session.touch, "a touch makes it a touch screen");
     assert!(

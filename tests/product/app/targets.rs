@@ -3,27 +3,13 @@
 //! a phone's and a tablet's, with every panel open; and a phone's bar fits its screen.
 
 use accesskit_consumer::{FilterResult, NodeRef};
-use egui::{Event, Pos2, TouchDeviceId, TouchId, TouchPhase};
+use egui::Pos2;
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable, by};
 use pipelens::app::PipelensApp;
 
 fn include(_: &NodeRef) -> FilterResult {
     FilterResult::Include
-}
-
-/// A finger's tap in the window's corner: from then on the app is on a touch screen.
-fn touched(h: &mut Harness<'_, PipelensApp>) {
-    for phase in [TouchPhase::Start, TouchPhase::End] {
-        h.input_mut().events.push(Event::Touch {
-            device_id: TouchDeviceId(1),
-            id: TouchId(0),
-            phase,
-            pos: Pos2::new(2.0, 2.0),
-            force: None,
-        });
-        h.run_steps(1);
-    }
 }
 
 /// Each control one can act on (click, focus) narrower or lower than `least`: its role, name
@@ -79,7 +65,7 @@ fn every_control_is_big_enough_to_hit() {
             let mut h = super::sized_lesson_harness(&path, size);
             h.run_steps(2);
             if touch {
-                touched(&mut h);
+                super::touch(&mut h, Pos2::new(2.0, 2.0));
             }
             let last = super::lesson_of(&h).steps.len() - 1;
             for step in [0, last] {
@@ -118,7 +104,7 @@ fn a_phone_s_bar_fits_its_screen() {
     for size in [[360.0, 640.0], [390.0, 844.0]] {
         let mut h = super::sized_lesson_harness(&path, size);
         h.run_steps(2);
-        touched(&mut h);
+        super::touch(&mut h, Pos2::new(2.0, 2.0));
         h.run_steps(2);
         let bar: Vec<(String, egui::Rect)> = h
             .query_all(by().predicate(|n: &NodeRef| {
