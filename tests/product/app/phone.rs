@@ -31,19 +31,26 @@ fn swipe(h: &mut Harness<'_, PipelensApp>, from: Pos2, to: Pos2) {
     h.run_steps(3);
 }
 
-/// On a phone, every step of the tour and of lesson 07 gives the picture at least half of the
-/// screen upright (the narration under it) and a third on its side (the narration beside it),
+/// On a phone (and an upright tablet, touched: the phone's layout), every step of the tour and
+/// of lesson 07 gives the picture at least half of the screen upright (the narration under it)
+/// and a third on its side (the narration beside it),
 /// or as much as its shape allows: a wide image on an upright phone, whose subject spans it, is
 /// as wide as the screen (its height is then the width over its aspect, a quarter of the
 /// screen for the tour's 640×400 buffer); on its side, a picture as tall as the view.
 #[test]
 fn on_a_phone_the_picture_takes_half_the_screen_or_more() {
-    for (size, least) in [([390.0, 844.0], 0.5), ([844.0, 390.0], 0.33)] {
+    for (size, least) in [
+        ([390.0, 844.0], 0.5),
+        ([844.0, 390.0], 0.33),
+        ([768.0, 1024.0], 0.5),
+    ] {
         let screen = egui::Rect::from_min_size(Pos2::ZERO, egui::vec2(size[0], size[1]));
         let mut short = Vec::new();
         for name in ["00-tour", "07-rasterization"] {
             let path = crate::support::repo().join(format!("lessons/{name}.toml"));
             let mut h = super::sized_lesson_harness(&path, size);
+            // A phone is touched: its controls a finger's size.
+            super::touch(&mut h, Pos2::new(2.0, 2.0));
             let n = super::lesson_of(&h).steps.len();
             for k in 0..n {
                 h.state_mut()
@@ -79,7 +86,7 @@ fn on_a_phone_the_picture_takes_half_the_screen_or_more() {
 }
 
 /// A swipe leftwards across the narration sheet goes to the next step, rightwards back; a
-/// short or mostly vertical drag (scrolling the sheet) does not.
+/// short or mostly vertical drag (scrolling the sheet) does not; on a tablet too.
 #[test]
 fn a_swipe_across_the_narration_moves_the_steps() {
     let path = crate::support::repo().join("lessons/00-tour.toml");
@@ -97,6 +104,12 @@ fn a_swipe_across_the_narration_moves_the_steps() {
     // Over the picture a drag is the view's (pan, orbit), not a step.
     swipe(&mut h, Pos2::new(320.0, 300.0), Pos2::new(80.0, 300.0));
     assert_eq!(super::step_of(&h), 1, "the picture keeps its drags");
+    // An upright tablet, touched, has the phone's sheet and its swipe.
+    let mut h = super::sized_lesson_harness(&path, [768.0, 1024.0]);
+    super::touch(&mut h, Pos2::new(2.0, 2.0));
+    h.run_steps(4);
+    swipe(&mut h, Pos2::new(600.0, 940.0), Pos2::new(150.0, 950.0));
+    assert_eq!(super::step_of(&h), 1, "a tablet's swipe: the next step");
 }
 
 /// The tour's first step is written for a keyboard and a mouse ("Press → …", "Click any pixel
