@@ -24,6 +24,17 @@ use pipeline::scene::{Object, Scene};
 use pipeline::settings::RenderSettings;
 use pipeline::{StageTimes, render_reusing, render_timed};
 
+/// A rayon pool of `n` threads for one measurement (every table's rows at 1, 2, … threads).
+///
+/// # Errors
+/// When the threads cannot be started.
+pub fn pool(n: usize) -> anyhow::Result<rayon::ThreadPool> {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(n)
+        .build()
+        .map_err(|e| anyhow::anyhow!("cannot start {n} threads: {e}"))
+}
+
 /// One benchmark scene.
 pub struct BenchScene {
     /// Shown in the table.

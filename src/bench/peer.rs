@@ -273,9 +273,7 @@ pub fn run_against_peer(
                         },
                         ..RenderSettings::default()
                     };
-                    let pool = rayon::ThreadPoolBuilder::new()
-                        .num_threads(threads)
-                        .build()?;
+                    let pool = super::pool(threads)?;
                     let colour = RenderSettings {
                         capture: Capture::COLOR,
                         ..settings
@@ -376,9 +374,7 @@ the student's Blinn-Phong GLSL (blinn_phong.frag's main) in both: pipelens' \
             ..RenderSettings::default()
         };
         for threads in [1usize, 2] {
-            let pool = rayon::ThreadPoolBuilder::new()
-                .num_threads(threads)
-                .build()?;
+            let pool = super::pool(threads)?;
             let (mut builtin, mut ours, mut theirs) = (Vec::new(), Vec::new(), Vec::new());
             for _ in 0..rounds {
                 let ms = |t: pipeline::StageTimes| t.total().as_secs_f64() * 1e3;

@@ -61,10 +61,7 @@ fn measure_case(
     frames: usize,
 ) -> anyhow::Result<f64> {
     let ms = |d: Duration| d.as_secs_f64() * 1e3;
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(n)
-        .build()
-        .map_err(|e| anyhow::anyhow!("cannot start {n} threads: {e}"))?;
+    let pool = super::pool(n)?;
     pool.install(|| {
         let t = measure(case.scene, &case.settings, frames)?;
         Ok(match case.part {

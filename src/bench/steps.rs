@@ -40,13 +40,7 @@ pub fn run(
     let steps = lesson.steps.len();
     let doc = crate::lesson::Document::Lesson(Box::new(lesson));
     let mut session = Session::with_document(doc, "bench", None);
-    let pool = |n: usize| {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .build()
-            .map_err(|e| anyhow::anyhow!("cannot start {n} threads: {e}"))
-    };
-    let (one, all) = (pool(1)?, pool(threads)?);
+    let (one, all) = (super::pool(1)?, super::pool(threads)?);
     writeln!(
         out,
         "{file}, each step as the app renders it on entering it (the view's capture; \
