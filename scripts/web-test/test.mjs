@@ -327,8 +327,9 @@ if (await waitForTitle(zh2, /^pipelens — 07-rasterization — 第 1\/6 步$/, 
   await zh2.waitForTimeout(2000);
   await zh2.screenshot({ path: `${out}/editor-zh.png` });
   // The editor is docked at the right edge, 480 points wide at 1920: "删除" (delete) in the
-  // row under the six steps; "保存（下载）" (save) beside Undo and Redo.
-  await zh2.mouse.click(1739, 260);
+  // row under the six steps; "保存（下载）" (save) beside Undo and Redo (every control 24
+  // points high: issue 60).
+  await zh2.mouse.click(1739, 286);
   await zh2.waitForTimeout(2500);
   await zh2.screenshot({ path: `${out}/editor-zh-deleted.png` });
   const unsaved = await zh2.evaluate(() => localStorage.getItem("pipelens-unsaved:my-lesson.toml.unsaved") ?? "");
@@ -372,8 +373,9 @@ if (await waitForTitle(sh, /^pipelens — 24-shader-programs — step 5\/12$/, "
 const ans = await open("?lesson=14-mipmaps&step=3", "answer");
 if (await waitForTitle(ans, /^pipelens — 14-mipmaps — step 3\/6$/, "the mipmap lesson opens on its question")) {
   await ans.waitForTimeout(3000);
-  // The box is at y = 996; once a verdict is written under it, the card grows upwards by a line.
-  for (const [typed, y] of [["2", 996], ["3", 976]]) {
+  // The box is at y = 980; once a verdict is written under it, the card grows upwards by a line
+  // (every control 24 points high: issue 60).
+  for (const [typed, y] of [["2", 980], ["3", 961]]) {
     await ans.mouse.click(55, y);
     await ans.waitForTimeout(500);
     await ans.keyboard.press("Control+A");
