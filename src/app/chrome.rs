@@ -139,10 +139,14 @@ impl PipelensApp {
                         .add(crate::app::style::glyph_button(ui, "×", None))
                         .on_hover_text(lang.t("chrome-close-this-message"))
                         .clicked();
-                    ui.label(
-                        RichText::new(format!("{heading}\n{e}"))
-                            .monospace()
-                            .color(Color32::LIGHT_RED),
+                    // Wrapped to the window: on a phone a line of it was cut off at the edge.
+                    ui.add(
+                        egui::Label::new(
+                            RichText::new(format!("{heading}\n{e}"))
+                                .monospace()
+                                .color(Color32::LIGHT_RED),
+                        )
+                        .wrap(),
                     );
                     close
                 })

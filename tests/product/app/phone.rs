@@ -144,3 +144,24 @@ fn on_a_touch_screen_the_narration_speaks_of_taps_and_swipes() {
     assert!(h.query_by_label_contains("Click any pixel").is_none());
     assert!(h.query_by_label_contains("Press →").is_none());
 }
+
+/// A dropped file's message on a 360-point phone is wrapped to the screen: its heading and the
+/// reader's error (as long as a real one) are whole, no line running past the edge.
+#[test]
+fn a_dropped_file_s_message_fits_a_phone() {
+    let path = crate::support::repo().join("lessons/00-tour.toml");
+    let mut h = super::sized_lesson_harness(&path, [360.0, 640.0]);
+    super::touch(&mut h, Pos2::new(2.0, 2.0));
+    h.state_mut().session.dropped_error = Some(
+        "truncated.obj:1:3: a mesh becomes a new lesson in the lesson editor on the desktop; \
+         the page opens lessons, scenes and shaders"
+            .to_owned(),
+    );
+    h.run_steps(3);
+    let message = h.get_by_label_contains("The dropped file did not open");
+    let rect = message.rect();
+    assert!(
+        rect.max.x <= 360.0 && rect.height() > 60.0,
+        "the message wraps inside the screen: {rect:?}"
+    );
+}
