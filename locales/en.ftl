@@ -11,7 +11,6 @@ chrome-switch-the-language = Switch the language
 chrome-classroom = Classroom
 chrome-large-type-and-high-contrast = Large type and high contrast for a projector; the picture first (C). F11: full screen, Ctrl +/−: text size, ←/→: steps or stages, Space: play.
 chrome-the-file-changed-on-disk = The file changed on disk and no longer loads; the last good version keeps running:
-chrome-the-dropped-file-did-not = The dropped file did not open; what was open keeps running:
 chrome-close-this-message = Close this message
 chrome-close-the-keyboard-shortcuts = Close the keyboard shortcuts (F1)
 chrome-previous-step = Previous step
@@ -70,6 +69,8 @@ chrome-a-shader-s-colour-was = A shader's colour was not a finite number, e.g. n
 compact-menu = Menu
 compact-keys = Keys (?)
 compact-stage = Stage
+compact-picture = Picture
+compact-code = Code
 
 ## src/app/editor/file.rs
 
@@ -183,6 +184,7 @@ layout-resize-panel = Resize panel: { $panel }
 
 ## src/app/library.rs
 
+library-could-not-be-opened = { $file } could not be opened; what was open keeps running:
 library-a-mesh-opens-on-the-desktop = { $name }: a mesh becomes a new lesson in the desktop app (drop it on its window); the page opens lessons and scenes (.toml) and shaders (.vert, .frag)
 library-not-a-kind-pipelens-opens = { $name }: pipelens opens lessons and scenes (.toml), shaders (.vert, .frag, .glsl) and meshes (.obj), not .{ $extension } files
 library-not-text = the file is not UTF-8 text: drop a lesson or scene .toml file
@@ -308,6 +310,10 @@ geometry-normals = Normals
 geometry-each-vertex-s-normal-n = Each vertex's normal n in world space, the one lighting uses (n_world = (M^(−1))^T·n).
 geometry-replay-transition = ▶ Replay transition
 geometry-space = Space
+
+## src/app/views/glsl_keys.rs
+
+glsl-keys-types = Types { $key } where the cursor is
 
 ## src/app/views/inspector/matrices.rs
 
@@ -582,6 +588,7 @@ pixels-pixel-view = pixel view
 
 ## src/app/views/shader.rs
 
+shader-debugger = Debugger
 shader-apply = Apply
 shader-compile-and-draw-with-these = Compile and draw with these shaders (Ctrl+Enter)
 shader-save = Save

@@ -11,7 +11,6 @@ chrome-switch-the-language = 切换语言
 chrome-classroom = 课堂模式
 chrome-large-type-and-high-contrast = 投影用的大字号与高对比度，画面优先（C）。F11：全屏，Ctrl +/−：字号，←/→：步骤或阶段，空格：播放。
 chrome-the-file-changed-on-disk = 文件在磁盘上被修改后无法加载；继续运行上一个正确的版本：
-chrome-the-dropped-file-did-not = 拖入的文件未能打开；继续运行原来打开的内容：
 chrome-close-this-message = 关闭此消息
 chrome-close-the-keyboard-shortcuts = 关闭键盘快捷键（F1）
 chrome-previous-step = 上一步
@@ -70,6 +69,8 @@ chrome-a-shader-s-colour-was = 着色器输出的颜色不是有限数，例如 
 compact-menu = 菜单
 compact-keys = 快捷键（?）
 compact-stage = 阶段
+compact-picture = 画面
+compact-code = 代码
 
 ## src/app/editor/file.rs
 
@@ -177,6 +178,7 @@ layout-resize-panel = 调整面板大小：{ $panel }
 
 ## src/app/library.rs
 
+library-could-not-be-opened = 无法打开 { $file }；已打开的内容继续运行：
 library-a-mesh-opens-on-the-desktop = { $name }：网格在桌面应用中成为一节新课程（把它拖到应用的窗口上）；网页打开课程和场景（.toml）以及着色器（.vert、.frag）
 library-not-a-kind-pipelens-opens = { $name }：pipelens 打开课程和场景（.toml）、着色器（.vert、.frag、.glsl）和网格（.obj），不打开 .{ $extension } 文件
 library-not-text = 该文件不是 UTF-8 文本：请拖入课程或场景的 .toml 文件
@@ -302,6 +304,10 @@ geometry-normals = 法线
 geometry-each-vertex-s-normal-n = 每个顶点在世界空间中的法线 n，即光照所用的法线（n_world = (M^(−1))^T·n）。
 geometry-replay-transition = ▶ 重播变换
 geometry-space = 空格键
+
+## src/app/views/glsl_keys.rs
+
+glsl-keys-types = 在光标处输入 { $key }
 
 ## src/app/views/inspector/matrices.rs
 
@@ -576,6 +582,7 @@ pixels-pixel-view = 像素视图
 
 ## src/app/views/shader.rs
 
+shader-debugger = 调试器
 shader-apply = 应用
 shader-compile-and-draw-with-these = 编译并用这些着色器绘制（Ctrl+Enter）
 shader-save = 保存

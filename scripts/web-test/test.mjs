@@ -15,7 +15,9 @@
 //  8. a lab (lesson 07's inside test) passes, is kept over a reload, and Download my work gives
 //     the file that the native `pipelens grade` ($PIPELENS_BIN) passes;
 //  9. on a phone (390×844, touch) the picture covers half the page or more, and a swipe across
-//     the narration sheet goes to the next step; landscape and tablet screenshots.
+//     the narration sheet goes to the next step; landscape and tablet screenshots; 9c. a lab on
+//     a phone: the Code tab with the verdict in sight, a source with line breaks typed as a
+//     phone's keyboard sends it, passed, the Picture tab;
 // 10b. the debugger's variable picture (lesson 24 step 8) is the view's picture at 1920×1080 and
 //     on a phone;
 //  0. (first) the service worker takes the page over and makes it cross-origin isolated (this
@@ -595,6 +597,73 @@ for (const [w, h, name] of [[390, 844, "phone-portrait"], [844, 390, "phone-land
         await page.screenshot({ path: `${out}/phone-portrait-step2.png` });
       }
     }
+  }
+  await device.close();
+}
+
+// 9c. A lab on a phone (390×844, touch): lesson 10's specular lab. The Code tab (one tap)
+// puts the code over the screen with the verdict above it, in sight; a tap in the code gives it
+// the keyboard, and the solved source arrives as a phone's keyboard may send it, one text with
+// its line breaks (eframe's one-line input would drop them: the page hands them over as a
+// paste, or every line after the first comment would be a comment and nothing would pass). The
+// verdict over the code turns from amber to green, the page's words say it passed, and the
+// Picture tab brings the three pictures back.
+// Measured on the page's screenshots at 390×844 (touch): the tabs' row, a point in the code, the
+// verdict's rows over the code.
+const PHONE_TABS_Y = 72, PHONE_CODE = [200, 560], PHONE_VERDICT = [96, 150];
+/** The pixels of `png` in the rows [top, bottom) of the colour `is` (r, g, b). */
+function colored(png, [top, bottom], is) {
+  let n = 0;
+  for (let y = top; y < bottom; y++) {
+    for (let x = 0; x < png.width; x++) {
+      const i = (y * png.width + x) * 4;
+      if (is(png.data[i], png.data[i + 1], png.data[i + 2])) n += 1;
+    }
+  }
+  return n;
+}
+const amber = (r, g, b) => r > 220 && g > 140 && g < 200 && b < 130;
+const green = (r, g, b) => g > 190 && r > 90 && r < 160 && b > 90 && b < 160;
+{
+  const device = await browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 1, isMobile: true, hasTouch: true });
+  const page = await device.newPage();
+  page.on("pageerror", (e) => errors.push(`phone lab: ${e.message}`));
+  page.on("console", (m) => { if (m.type() === "error") errors.push(`phone lab: ${m.text()}`); });
+  await page.goto(url + "?lesson=10-blinn-phong&step=8");
+  if (await waitForTitle(page, /^pipelens — 10-blinn-phong — step 8\/9$/, "the specular lab opens on a phone")) {
+    await page.waitForTimeout(4000);
+    await page.screenshot({ path: `${out}/phone-lab-picture.png` });
+    const cdp = await device.newCDPSession(page);
+    const tap = async (x, y) => {
+      await cdp.send("Input.dispatchTouchEvent", { type: "touchStart", touchPoints: [{ x, y }] });
+      await page.waitForTimeout(60);
+      await cdp.send("Input.dispatchTouchEvent", { type: "touchEnd", touchPoints: [] });
+      await page.waitForTimeout(600);
+    };
+    await tap(292, PHONE_TABS_Y);
+    await page.waitForTimeout(1500);
+    const starter = PNG.sync.read(await page.screenshot({ path: `${out}/phone-lab-code.png` }));
+    const notYet = await words(page);
+    const before = colored(starter, PHONE_VERDICT, amber);
+    check(notYet.verdict.startsWith("Not yet") && before > 200,
+      `with the code open the verdict is in sight above it, in amber (${before} pixels): "${notYet.verdict.slice(0, 40)}…"`);
+    await tap(...PHONE_CODE);
+    await page.keyboard.press("Control+A");
+    await page.keyboard.insertText(solved);
+    let passedWords = notYet;
+    for (let k = 0; k < 20 && !passedWords.verdict.startsWith("Passed"); k++) {
+      await page.waitForTimeout(1500);
+      passedWords = await words(page);
+    }
+    const done = PNG.sync.read(await page.screenshot({ path: `${out}/phone-lab-passed.png` }));
+    const after = colored(done, PHONE_VERDICT, green);
+    check(passedWords.verdict.startsWith("Passed") && after > 200,
+      `the source typed with its line breaks passes, and the verdict over the code says so in green (${after} pixels): "${passedWords.verdict.slice(0, 40)}…"`);
+    await tap(98, PHONE_TABS_Y);
+    await page.waitForTimeout(2000);
+    await page.screenshot({ path: `${out}/phone-lab-picture-passed.png` });
+    const share = Number(await page.evaluate(() => document.documentElement.dataset.pictureShare));
+    check(share >= 0.3, `the Picture tab shows the pictures again (${Math.round(share * 100)} % of the page)`);
   }
   await device.close();
 }

@@ -121,18 +121,16 @@ impl PipelensApp {
     /// Under the bar: why the file on disk no longer loads, why a dropped file did not open
     /// (each with × to close it), what an export did.
     pub(super) fn bar_messages(&mut self, ui: &mut egui::Ui, lang: Lang) {
+        // A dropped file's message names the file itself (`library.rs`).
         let said = [
-            (
-                self.session.reload_error.clone(),
-                lang.t("chrome-the-file-changed-on-disk"),
-            ),
-            (
-                self.session.dropped_error.clone(),
-                lang.t("chrome-the-dropped-file-did-not"),
-            ),
+            self.session
+                .reload_error
+                .as_ref()
+                .map(|e| format!("{}\n{e}", lang.t("chrome-the-file-changed-on-disk"))),
+            self.session.dropped_error.clone(),
         ];
-        for (k, (error, heading)) in said.into_iter().enumerate() {
-            let Some(e) = error else { continue };
+        for (k, words) in said.into_iter().enumerate() {
+            let Some(words) = words else { continue };
             let closed = ui
                 .horizontal_top(|ui| {
                     let close = ui
@@ -142,9 +140,7 @@ impl PipelensApp {
                     // Wrapped to the window: on a phone a line of it was cut off at the edge.
                     ui.add(
                         egui::Label::new(
-                            RichText::new(format!("{heading}\n{e}"))
-                                .monospace()
-                                .color(Color32::LIGHT_RED),
+                            RichText::new(words).monospace().color(Color32::LIGHT_RED),
                         )
                         .wrap(),
                     );

@@ -23,6 +23,9 @@ impl PipelensApp {
     /// arrows, the stage as a drop-down; a message under it when there is one.
     pub(super) fn compact_bar(&mut self, ui: &mut egui::Ui) {
         let lang = self.session.lang;
+        let tabs = self.code_tab_offered();
+        let screen = ui.ctx().content_rect();
+        let wide = screen.width() > screen.height();
         egui::Panel::top("top").show(ui, |ui| {
             super::style::chrome_style(ui);
             ui.spacing_mut().item_spacing.x = 4.0;
@@ -38,8 +41,58 @@ impl PipelensApp {
                 });
                 self.step_controls(ui, lang);
                 self.stage_menu(ui, lang);
+                // On a phone held sideways the tabs share the bar's row: height is what the
+                // picture lacks there.
+                if tabs && wide {
+                    self.picture_or_code(ui, lang);
+                }
             });
+            if tabs && !wide {
+                self.picture_or_code(ui, lang);
+            }
             self.bar_messages(ui, lang);
+        });
+    }
+
+    /// Whether the step has code to show: a lab, a step that names the shader's lines or
+    /// draws a variable over the frame or opens the shader panel, or the code already open.
+    fn code_tab_offered(&self) -> bool {
+        let step = self.session.lesson.as_ref().map(|p| p.current());
+        self.panels.shader
+            || self.session.current_exercise().is_some()
+            || self.session.selection.watch.is_some()
+            || step.is_some_and(|s| {
+                s.shader_lines.is_some()
+                    || s.panels.contains(&crate::lesson::script::StepPanel::Shader)
+            })
+    }
+
+    /// The picture and the code as two tabs across the screen, one tap apart: the Code tab
+    /// is the shader panel over the whole screen (`code_screen`), marked "(!)" while the code
+    /// does not compile.
+    fn picture_or_code(&mut self, ui: &mut egui::Ui, lang: Lang) {
+        let failed = !self.shader_editor.compiles();
+        ui.horizontal(|ui| {
+            let gap = ui.spacing().item_spacing.x;
+            let size = egui::vec2(
+                (ui.available_width() - gap) / 2.0,
+                ui.spacing().interact_size.y,
+            );
+            let code = if failed {
+                format!("{} (!)", lang.t("compact-code"))
+            } else {
+                lang.t("compact-code").to_owned()
+            };
+            let tabs = [(false, lang.t("compact-picture").to_owned()), (true, code)];
+            for (shader, name) in tabs {
+                let tab = ui.add_sized(
+                    size,
+                    egui::Button::selectable(self.panels.shader == shader, name),
+                );
+                if tab.clicked() {
+                    self.panels.shader = shader;
+                }
+            }
         });
     }
 

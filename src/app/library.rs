@@ -102,7 +102,7 @@ impl PipelensApp {
                 |n| n.to_string_lossy().into_owned(),
             );
             if let Some(why) = not_opened(&name, path.is_absolute(), self.session.lang) {
-                self.session.dropped_error = Some(why);
+                self.refused(&name, &why);
             } else if path.is_absolute()
                 && path
                     .extension()
@@ -179,8 +179,24 @@ impl PipelensApp {
                     self.commands.push(c);
                 }
             }
-            Err(e) => self.session.dropped_error = Some(e),
+            Err(e) => self.refused(name, &e),
         }
+    }
+
+    /// Says under the bar that the dropped file `name` did not open, and `why`: "lesson.toml
+    /// could not be opened; what was open keeps running:" over the reader's words.
+    fn refused(&mut self, name: &str, why: &str) {
+        let file = std::path::Path::new(name)
+            .file_name()
+            .map_or_else(|| name.to_owned(), |n| n.to_string_lossy().into_owned());
+        let heading = self
+            .session
+            .lang
+            .t_with("library-could-not-be-opened", &[("file", &file)]);
+        self.session.dropped_error = Some(format!(
+            "{heading}
+{why}"
+        ));
     }
 
     /// Opens what was loaded, or shows why it was not.
@@ -192,10 +208,33 @@ impl PipelensApp {
     ) {
         match loaded {
             Ok(doc) => self.open(doc, name, path),
-            Err(e) => self.session.dropped_error = Some(e.to_string()),
+            Err(e) => self.refused(name, &e.to_string()),
         }
     }
 
+    /// The editor's part of a frame: a drag that ended recorded, the lesson open followed, the
+    /// window, and a lesson just made opened.
+    pub(super) fn edit_lesson(&mut self, ui: &mut egui::Ui) {
+        if !self.session.drafting
+            && let Some(from) = self.session.drag_from.take()
+        {
+            self.editor.dragged(&from, &self.session.spec);
+        }
+        let file = self.watched.as_ref().map(|w| w.path().to_path_buf());
+        self.editor.follow(&self.session, file.as_deref());
+        let room = self.room();
+        let commands = self.editor.ui(ui, &self.session, room);
+        self.commands.extend(commands);
+        if let Some(made) = self.editor.made.take() {
+            self.open(made.doc, &made.source, made.file.clone());
+            self.editor.adopt(
+                &made.source,
+                made.file.as_deref(),
+                made.text,
+                self.session.lang,
+            );
+        }
+    }
     /// Puts `doc` (named `source`) in place of what is open; a file on disk is watched.
     pub(super) fn open(&mut self, doc: Document, source: &str, path: Option<std::path::PathBuf>) {
         self.session.open(doc, source);

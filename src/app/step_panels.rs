@@ -10,13 +10,7 @@ impl PipelensApp {
     /// variable picture left out while the view draws it).
     pub(super) fn shader_panel(&mut self, ui: &mut egui::Ui) {
         let lang = self.session.lang;
-        // The variable picture the view draws (last frame) is left out of the panel.
-        let sel = &self.session.selection;
-        let in_view = self.pixel_view.drew_watch && sel.stage.space().is_none();
-        let debugger = &mut self.shader_editor.debugger;
-        debugger.watch.in_view = in_view && sel.watch.is_some();
-        debugger.vertex_watch.in_view = debugger.watch.in_view;
-        debugger.cost.in_view = in_view && sel.watch.is_none() && sel.cost;
+        self.variable_picture_in_view(self.pixel_view.drew_watch);
         // Wide enough for an 80-column line of code where the window allows it (at 1920
         // points, 760 leave the picture more than half), narrower in a smaller one. A lab shows
         // three pictures (the student's frame, pipelens' own and their difference), so its code
@@ -47,10 +41,55 @@ impl PipelensApp {
                     ui,
                     &mut self.shader_editor,
                     &self.session,
-                    std::path::Path::new(self.export_dir.trim()),
+                    (std::path::Path::new(self.export_dir.trim()), None),
                 ));
             });
         super::layout::name_divider(ui, id, lang.t("chrome-shader"), lang);
+    }
+
+    /// A small screen's Code tab (`compact.rs`): the code over the whole screen, a lab's verdict
+    /// above it, always in sight, and on a touch screen the keys GLSL needs below it (above the
+    /// phone's keyboard).
+    pub(super) fn code_screen(&mut self, ui: &mut egui::Ui) {
+        // No view is drawn here: the panel shows the variable picture itself.
+        self.variable_picture_in_view(false);
+        if self.session.current_exercise().is_some() {
+            egui::Panel::top("verdict-strip").show(ui, |ui| {
+                crate::app::style::chrome_style(ui);
+                crate::app::views::exercise::strip(ui, &self.session);
+            });
+        }
+        // The keys across the whole width (a finger's size each on a 360-point phone), read
+        // before the source they type into.
+        let lang = self.session.lang;
+        let key = crate::app::style::is_touch(ui.ctx())
+            .then(|| {
+                egui::Panel::bottom("glsl-keys")
+                    .frame(egui::Frame::NONE.inner_margin(egui::Margin::symmetric(0, 4)))
+                    .show(ui, |ui| crate::app::views::glsl_keys::row(ui, lang))
+                    .inner
+            })
+            .flatten();
+        egui::CentralPanel::default().show(ui, |ui| {
+            crate::app::style::chrome_style(ui);
+            self.commands.extend(crate::app::views::shader::ui(
+                ui,
+                &mut self.shader_editor,
+                &self.session,
+                (std::path::Path::new(self.export_dir.trim()), Some(key)),
+            ));
+        });
+    }
+
+    /// The variable picture the view draws (`drawn`: it did last frame) is left out of the
+    /// shader panel.
+    fn variable_picture_in_view(&mut self, drawn: bool) {
+        let sel = &self.session.selection;
+        let in_view = drawn && sel.stage.space().is_none();
+        let debugger = &mut self.shader_editor.debugger;
+        debugger.watch.in_view = in_view && sel.watch.is_some();
+        debugger.vertex_watch.in_view = debugger.watch.in_view;
+        debugger.cost.in_view = in_view && sel.watch.is_none() && sel.cost;
     }
 
     /// On entering a step, the panels it needs: a step that draws a variable over the frame

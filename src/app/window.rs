@@ -224,7 +224,9 @@ impl PipelensApp {
         if band {
             self.narration_band(ui);
         }
-        if self.panels.parameters {
+        // A small screen's Code tab: the code fills the screen under the verdict.
+        let code_screen = compact && self.panels.shader;
+        if self.panels.parameters && !code_screen {
             egui::Panel::left("parameters")
                 .default_size(300.0)
                 .resizable(true)
@@ -238,6 +240,7 @@ impl PipelensApp {
         self.edit_lesson(ui);
         let capture = self.session.capture.clone();
         if self.panels.inspector
+            && !code_screen
             && let Some(capture) = &capture
         {
             // Beside another panel, narrower: a fifth of the window, 320 points beside a lab
@@ -261,6 +264,38 @@ impl PipelensApp {
                 });
             super::layout::name_divider(ui, id, lang.t("chrome-inspector"), lang);
         }
+        if code_screen {
+            self.code_screen(ui);
+            views::card_placement::set_narration_card(ui.ctx(), None);
+        } else {
+            self.picture_screen(ui, capture.as_ref(), (compact, narrated, band));
+        }
+        self.animate(ui.ctx());
+        self.page_words(ui.ctx());
+        // A parameter dragged (a slider, a number): drafts until the pointer is let go, then the
+        // full frame.
+        if !ui.ctx().input(|i| i.pointer.any_down()) {
+            self.session.set_drafting(false);
+        } else if self
+            .commands
+            .iter()
+            .any(|c| matches!(c, Command::Scene(SceneCommand::SetSpec(_))))
+        {
+            self.session.set_drafting(true);
+        }
+        self.apply_commands(ui.ctx(), started);
+    }
+
+    /// The picture's screen: the shader panel at the right where it is open, a small screen's
+    /// narration sheet, the views, and the narration's card over them (`narrated`: a lesson
+    /// with its narration shown; `band`: the narration is in a band across the foot).
+    fn picture_screen(
+        &mut self,
+        ui: &mut egui::Ui,
+        capture: Option<&std::sync::Arc<pipeline::capture::FrameCapture>>,
+        (compact, narrated, band): (bool, bool, bool),
+    ) {
+        let lang = self.session.lang;
         if self.panels.shader {
             self.shader_panel(ui);
         }
@@ -268,7 +303,7 @@ impl PipelensApp {
             self.narration_sheet(ui);
         }
         let central = egui::CentralPanel::default()
-            .show(ui, |ui| match &capture {
+            .show(ui, |ui| match capture {
                 Some(capture) => self.main_view(ui, capture),
                 None => {
                     ui.centered_and_justified(|ui| {
@@ -289,20 +324,6 @@ impl PipelensApp {
             let out = views::lesson::card(ui.ctx(), central, &self.session);
             self.narrated(out);
         }
-        self.animate(ui.ctx());
-        self.page_words(ui.ctx());
-        // A parameter dragged (a slider, a number): drafts until the pointer is let go, then the
-        // full frame.
-        if !ui.ctx().input(|i| i.pointer.any_down()) {
-            self.session.set_drafting(false);
-        } else if self
-            .commands
-            .iter()
-            .any(|c| matches!(c, Command::Scene(SceneCommand::SetSpec(_))))
-        {
-            self.session.set_drafting(true);
-        }
-        self.apply_commands(ui.ctx(), started);
     }
 
     /// Applies the frame's commands, then renders what the view needs that the capture shown
@@ -566,30 +587,6 @@ impl PipelensApp {
             apply_style(ctx, self.classroom, true);
             self.commands
                 .push(Command::View(ViewCommand::SetTouch(true)));
-        }
-    }
-
-    /// The editor's part of a frame: a drag that ended recorded, the lesson open followed, the
-    /// window, and a lesson just made opened.
-    pub(super) fn edit_lesson(&mut self, ui: &mut egui::Ui) {
-        if !self.session.drafting
-            && let Some(from) = self.session.drag_from.take()
-        {
-            self.editor.dragged(&from, &self.session.spec);
-        }
-        let file = self.watched.as_ref().map(|w| w.path().to_path_buf());
-        self.editor.follow(&self.session, file.as_deref());
-        let room = self.room();
-        let commands = self.editor.ui(ui, &self.session, room);
-        self.commands.extend(commands);
-        if let Some(made) = self.editor.made.take() {
-            self.open(made.doc, &made.source, made.file.clone());
-            self.editor.adopt(
-                &made.source,
-                made.file.as_deref(),
-                made.text,
-                self.session.lang,
-            );
         }
     }
 }

@@ -17,8 +17,8 @@ const PHRASES: [(&str, &str); 16] = [
         "Press → to",
         "Swipe the narration left (or tap ▶ at the top) to",
     ),
-    ("Press **S**", "Open **Menu → Show → Shader**"),
-    ("(key S)", "(Menu → Show → Shader)"),
+    ("Press **S**", "Tap **Code** at the top"),
+    ("(key S)", "(the Code tab at the top)"),
     (
         "in the inspector on the right",
         "in the inspector (Menu → Show → Inspector)",
@@ -28,8 +28,8 @@ const PHRASES: [(&str, &str); 16] = [
     ("clicks", "taps"),
     ("按空格键", "点「▶ 播放」"),
     ("按 → ", "在讲解上向左滑动（或点上方的 ▶）"),
-    ("按 **S**", "打开**菜单 → 显示 → 着色器**"),
-    ("（S 键）", "（菜单 → 显示 → 着色器）"),
+    ("按 **S**", "点顶部的**代码**"),
+    ("（S 键）", "（顶部的「代码」标签）"),
     ("（空格）", "（「▶ 播放」）"),
     ("右侧的检查器", "检查器（菜单 → 显示 → 检查器）"),
     ("单击", "点按"),
@@ -104,7 +104,11 @@ mod tests {
         );
         assert_eq!(
             for_device("着色器面板（S 键）中的片元着色器", true),
-            "着色器面板（菜单 → 显示 → 着色器）中的片元着色器"
+            "着色器面板（顶部的「代码」标签）中的片元着色器"
+        );
+        assert_eq!(
+            for_device("the Shader panel (key S): Press **S**.", true),
+            "the Shader panel (the Code tab at the top): Tap **Code** at the top."
         );
         assert_eq!(
             for_device("a click on a line number, two clicks", true),

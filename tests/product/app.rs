@@ -22,6 +22,7 @@ mod own_uniforms;
 mod panels;
 mod params;
 mod phone;
+mod phone_lab;
 mod pseudo_locale;
 mod recording;
 mod steps;

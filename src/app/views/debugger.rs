@@ -167,12 +167,8 @@ impl Debugger {
         let breakpoints = self.breakpoints.of(stage).iter().map(|b| b.line).collect();
         let Some(last) = run.len().checked_sub(1) else {
             return Marks {
-                current: None,
                 breakpoints,
-                beside: Vec::new(),
-                reveal: false,
-                watched: None,
-                lines: None,
+                ..Marks::default()
             };
         };
         let at = self.at.unwrap_or(last).min(last);
@@ -382,15 +378,7 @@ pub fn panel(
     session: &Session,
 ) -> (Marks, Option<Command>) {
     let Some(stage) = stage else {
-        let none = Marks {
-            current: None,
-            breakpoints: Vec::new(),
-            beside: Vec::new(),
-            reveal: false,
-            watched: None,
-            lines: None,
-        };
-        return (none, None);
+        return (Marks::default(), None);
     };
     let (mut marks, step_line) = stepped(ui, debugger, stage, session);
     marks.watched = session

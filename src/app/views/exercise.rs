@@ -335,30 +335,23 @@ pub fn card_part(
     } else {
         lang.t("exercise-write-your-code-in-the-3")
     };
+    let how = crate::vocabulary::touch::for_device(how, session.touch);
     ui.label(RichText::new(how).size(style.size * 0.85));
     let passed_before = session
         .lesson
         .as_ref()
         .is_some_and(|p| session.progress.passed(&p.lesson, p.step));
-    if let Some(s) = &session.exercise.findings.shortcut {
-        let verdict = s.words(lang);
-        super::alt::announce(
-            &not_yet(ui, verdict.clone(), style),
-            (super::alt::Part::Verdict, &verdict),
-        );
-        return false;
-    }
-    if let Some(c) = &session.exercise.findings.curve {
-        let color = if c.passed() { PASSED } else { NOT_YET };
-        let verdict = words::curve_verdict(c, lang);
+    if let Some((verdict, color)) = verdict(session)
+        && session.exercise.findings.difference.is_none()
+    {
+        // A shortcut taken, or a curve's or a surface's points: the verdict alone.
         let shown = ui.label(RichText::new(&verdict).size(style.size * 0.9).color(color));
         super::alt::announce(&shown, (super::alt::Part::Verdict, &verdict));
         return false;
     }
     match &session.exercise.findings.difference {
         Some(d) => {
-            let color = if d.passed() { PASSED } else { NOT_YET };
-            let verdict = words::verdict(d, lang);
+            let (verdict, color) = verdict(session).unwrap_or_default();
             let shown = ui.label(RichText::new(&verdict).size(style.size * 0.9).color(color));
             super::alt::announce(&shown, (super::alt::Part::Verdict, &verdict));
             if !d.passed()
@@ -402,4 +395,45 @@ pub fn card_part(
         None => {}
     }
     false
+}
+
+/// The lab's verdict in one line with its colour (green passed, amber not yet): a shortcut
+/// taken, else a curve's or a surface's points against pipelens', else the frame against
+/// pipelens' own; none before the first comparison.
+#[must_use]
+pub fn verdict(session: &Session) -> Option<(String, Color32)> {
+    let lang = session.lang;
+    let findings = &session.exercise.findings;
+    let colour = |passed: bool| if passed { PASSED } else { NOT_YET };
+    if let Some(s) = &findings.shortcut {
+        return Some((s.words(lang), NOT_YET));
+    }
+    if let Some(c) = &findings.curve {
+        return Some((words::curve_verdict(c, lang), colour(c.passed())));
+    }
+    let d = findings.difference.as_ref()?;
+    Some((words::verdict(d, lang), colour(d.passed())))
+}
+
+/// The verdict as a strip over the code on a small screen's Code tab (`app::compact`), where
+/// the narration is out of sight: the words, or "Passed before." when the lab was passed on an
+/// earlier visit, or what it waits for.
+pub fn strip(ui: &mut Ui, session: &Session) {
+    let lang = session.lang;
+    let passed_before = session
+        .lesson
+        .as_ref()
+        .is_some_and(|p| session.progress.passed(&p.lesson, p.step));
+    let (text, color) = verdict(session).unwrap_or_else(|| {
+        if passed_before {
+            (lang.t("exercise-passed-before").to_owned(), PASSED)
+        } else {
+            (
+                lang.t("exercise-drawing-pipelens-own-frame").to_owned(),
+                ui.visuals().text_color(),
+            )
+        }
+    });
+    let shown = ui.add(egui::Label::new(RichText::new(&text).strong().color(color)).wrap());
+    super::alt::announce(&shown, (super::alt::Part::Verdict, &text));
 }

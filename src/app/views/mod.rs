@@ -10,6 +10,8 @@ pub mod compare;
 pub mod debugger;
 pub mod exercise;
 pub mod geometry;
+pub mod glsl_keys;
+pub use glsl_keys::KEYS as GLSL_KEYS;
 pub mod inspector;
 pub mod lesson;
 mod matrix;

@@ -130,8 +130,14 @@ impl ShaderEditor {
                 Err(e) => h.errors = e,
             }
         }
-        (self.errors.is_empty() && self.hooks.iter().all(|h| h.errors.is_empty()))
+        self.compiles()
             .then(|| Command::Scene(SceneCommand::SetSpec(Box::new(spec))))
+    }
+
+    /// Whether every source compiled when last applied (no messages).
+    #[must_use]
+    pub fn compiles(&self) -> bool {
+        self.errors.is_empty() && self.hooks.iter().all(|h| h.errors.is_empty())
     }
 
     /// Puts `source` in the tab of the function `kind` (opening it), to be applied.
@@ -245,13 +251,16 @@ impl ShaderEditor {
 
 /// The panel. Returns the command that applies the shaders, when they changed and compile,
 /// and the debugger's (a watch, a pixel inspected). Save writes the sources into `save_dir`
-/// (in the browser: downloads them).
+/// (in the browser: downloads them). `small`: on a small screen's Code tab, with the key of
+/// the GLSL row tapped this frame (`glsl_keys`), typed into the source shown.
 pub fn ui(
     ui: &mut Ui,
     editor: &mut ShaderEditor,
     session: &Session,
-    save_dir: &std::path::Path,
+    (save_dir, small): (&std::path::Path, Option<Option<&str>>),
 ) -> Vec<Command> {
+    let key = small.flatten();
+    let small = small.is_some();
     let lang = session.lang;
     editor.load(session);
     let mut apply = false;
@@ -270,16 +279,7 @@ pub fn ui(
             editor.saved = Some(save(editor, save_dir, lang));
         }
     });
-    match &editor.saved {
-        Some(Ok(files)) => {
-            ui.label(format!("{} {files}", lang.t("shader-saved")));
-        }
-        Some(Err(e)) => {
-            ui.colored_label(ui.visuals().error_fg_color, e);
-        }
-        None => {}
-    }
-    messages(ui, editor, session, lang);
+    message_space(ui, editor, session);
     let tuned = super::own_uniforms::controls(ui, session);
     let tab = editor.tab;
     let hook = match tab {
@@ -321,20 +321,20 @@ pub fn ui(
         Tab::Shader(stage) => Some(stage),
         Tab::Hook(_) => None,
     };
-    let (marks, watched) = super::debugger::panel(ui, &mut editor.debugger, stage, session);
+    let (marks, watched) = debugger(ui, &mut editor.debugger, (stage, session), small);
     let name = format!(
         "{}{}",
         tab_name(tab, session.lang),
         session.lang.t("shader-source")
     );
-    let touched = super::shader_source::code(
+    let (touched, typed) = typed_code(
         ui,
         (source, &format!("{tab:?}"), &name),
-        &errors,
-        &marks,
+        (&errors, &marks),
+        key,
         session.lang,
     );
-    let edited = touched.changed;
+    let edited = touched.changed || typed;
     if touched.cursor_line.is_some() {
         editor.debugger.cursor_line = touched.cursor_line;
     }
@@ -355,6 +355,81 @@ pub fn ui(
         None
     };
     applied.into_iter().chain(watched).chain(tuned).collect()
+}
+
+/// The debugger over the source of `stage` (see `debugger::panel`); on a small screen's Code
+/// tab (`small`) folded away, one tap to open: the code is what that screen is for.
+fn debugger(
+    ui: &mut Ui,
+    debugger: &mut super::debugger::Debugger,
+    (stage, session): (Option<Stage>, &Session),
+    small: bool,
+) -> (super::shader_source::Marks, Option<Command>) {
+    if !small {
+        return super::debugger::panel(ui, debugger, stage, session);
+    }
+    egui::CollapsingHeader::new(session.lang.t("shader-debugger"))
+        .id_salt("debugger-fold")
+        .default_open(false)
+        .show(ui, |ui| {
+            super::debugger::panel(ui, debugger, stage, session)
+        })
+        .body_returned
+        .unwrap_or_default()
+}
+
+/// The source of the tab `tab` (named `name`), with its messages and marks; `key`, a key of
+/// the GLSL row tapped this frame, typed into it first where its cursor is. The tap on the key
+/// is not a tap away from the source: it keeps the keyboard. Returns what the reader did in
+/// the source, and whether the key typed.
+fn typed_code(
+    ui: &mut Ui,
+    (source, tab, name): (&mut String, &str, &str),
+    (errors, marks): (&[(usize, &str)], &super::shader_source::Marks),
+    key: Option<&str>,
+    lang: Lang,
+) -> (super::shader_source::Touched, bool) {
+    let id = super::shader_source::source_id(tab);
+    let typed = key.is_some_and(|k| super::glsl_keys::type_into(ui.ctx(), id, source, k));
+    let surrender = ui.ctx().options(|o| o.input_options.surrender_focus_on);
+    if key.is_some() {
+        ui.ctx().options_mut(|o| {
+            o.input_options.surrender_focus_on = egui::SurrenderFocusOn::Never;
+        });
+    }
+    let touched = super::shader_source::code(ui, (source, tab, name), errors, marks, lang);
+    ui.ctx()
+        .options_mut(|o| o.input_options.surrender_focus_on = surrender);
+    (touched, typed)
+}
+
+/// The messages (a Save's, the last compile's) in a space of their own, two lines high and
+/// scrolled beyond: the code under them never moves as they come and go, and a tap lands on
+/// the line it aims at.
+fn message_space(ui: &mut Ui, editor: &ShaderEditor, session: &Session) {
+    let lang = session.lang;
+    let height = 2.0 * ui.text_style_height(&egui::TextStyle::Body) + ui.spacing().item_spacing.y;
+    let (space, _) = ui.allocate_exact_size(
+        egui::vec2(ui.available_width(), height),
+        egui::Sense::hover(),
+    );
+    ui.scope_builder(egui::UiBuilder::new().max_rect(space), |ui| {
+        egui::ScrollArea::vertical()
+            .id_salt("shader messages")
+            .auto_shrink([false, false])
+            .show(ui, |ui| {
+                match &editor.saved {
+                    Some(Ok(files)) => {
+                        ui.label(format!("{} {files}", lang.t("shader-saved")));
+                    }
+                    Some(Err(e)) => {
+                        ui.colored_label(ui.visuals().error_fg_color, e);
+                    }
+                    None => {}
+                }
+                messages(ui, editor, session, lang);
+            });
+    });
 }
 
 /// "pipelens' own": the shading of the current settings as GLSL in place of the student's,
@@ -500,7 +575,7 @@ fn messages(ui: &mut Ui, editor: &ShaderEditor, session: &Session, lang: Lang) {
         );
         return;
     }
-    if editor.errors.is_empty() && editor.hooks.iter().all(|h| h.errors.is_empty()) {
+    if editor.compiles() {
         // Until the source is applied (or edited), pipelens' own shading draws the picture.
         let text = if !editor.hooks.is_empty() && !session.spec.scene.has_shaders() {
             lang.t("shader-compiled-the-pipeline-calls-these")

@@ -7,6 +7,7 @@ use egui::{Color32, RichText, Ui};
 
 /// What the source shows of the run at the step shown: the line highlighted, the breakpoints,
 /// and beside each line the value it last wrote (with a swatch for a colour).
+#[derive(Default)]
 pub struct Marks {
     /// The line of the step shown.
     pub current: Option<usize>,
@@ -92,7 +93,13 @@ pub(super) fn code(
         scroll_to: None,
         cursor_moved_to: None,
     };
-    egui::ScrollArea::vertical()
+    // A finger's drag on the code is the vertical area's (the sideways one inside it takes
+    // none, or it would swallow every drag and move only sideways); its sideways part moves
+    // the sideways area the next frame.
+    let sideways_id = egui::Id::unique(("shader source sideways", tab));
+    let sideways_to: Option<f32> = ui.data_mut(|d| d.remove_temp(sideways_id));
+    let mut sideways = (0.0, 0.0);
+    let vertical = egui::ScrollArea::vertical()
         .id_salt(("shader source", tab))
         .show(ui, |ui| {
             ui.horizontal_top(|ui| {
@@ -141,18 +148,29 @@ pub(super) fn code(
                     ..egui::WidgetInfo::labeled(egui::Role::Button, true, &said)
                 });
                 // The text scrolls sideways by itself: a long line never hides the numbers.
-                egui::ScrollArea::horizontal()
+                let mut columns = egui::ScrollArea::horizontal()
                     .id_salt(("shader source columns", tab))
-                    .show(ui, |ui| {
-                        text(
-                            ui,
-                            (source, tab, name),
-                            errors,
-                            marks,
-                            &mut touched,
-                            &numbers,
-                        );
+                    .scroll_source(egui::containers::scroll_area::ScrollSource {
+                        drag: egui::containers::scroll_area::DragScroll::Never,
+                        ..Default::default()
                     });
+                if let Some(x) = sideways_to {
+                    columns = columns.horizontal_scroll_offset(x);
+                }
+                let shown = columns.show(ui, |ui| {
+                    text(
+                        ui,
+                        (source, tab, name),
+                        errors,
+                        marks,
+                        &mut touched,
+                        &numbers,
+                    );
+                });
+                sideways = (
+                    shown.state.clamped_offset().x,
+                    (shown.content_size.x - shown.inner_rect.width()).max(0.0),
+                );
                 // Asked here, outside the sideways area: a scroll area takes both axes'
                 // targets, so one asked inside it would never reach this vertical one.
                 if let Some(start) = touched.scroll_to.take() {
@@ -162,6 +180,14 @@ pub(super) fn code(
                 }
             });
         });
+    if ui.ctx().is_being_dragged(vertical.id.with("area")) {
+        let dx = ui.input(|i| i.pointer.delta().x);
+        if dx != 0.0 {
+            let (at, most) = sideways;
+            ui.data_mut(|d| d.insert_temp(sideways_id, (at - dx).clamp(0.0, most)));
+            ui.ctx().request_repaint();
+        }
+    }
     touched
 }
 
@@ -181,6 +207,37 @@ fn cursor_moved(ui: &Ui, out: &egui::text_edit::TextEditOutput) -> Option<egui::
         let at = out.galley.pos_from_cursor(r.primary);
         at.translate(out.galley_pos.to_vec2()).expand(4.0)
     })
+}
+
+/// The id of the text edit of the source of `tab` (a tab's name), the same from frame to frame
+/// whatever is drawn before it (the keys of `glsl_keys` type into it by this id).
+pub(super) fn source_id(tab: &str) -> egui::Id {
+    egui::Id::unique(("shader source", tab))
+}
+
+/// The cursor where the source was tapped, when that tap gave it the keyboard. On a touch
+/// screen egui lets a finger's drag scroll the code until the source has the keyboard, so its
+/// first tap is a click that only focuses, and the cursor would start at the end of the file
+/// (text typed next landed after the last `}`). With a mouse it is where egui put it already.
+fn cursor_where_tapped(
+    ctx: &egui::Context,
+    id: egui::Id,
+    out: &egui::text_edit::TextEditOutput,
+    had_keyboard: bool,
+) {
+    let response = &out.response.response;
+    if had_keyboard || !response.clicked() {
+        return;
+    }
+    let Some(at) = response.interact_pointer_pos() else {
+        return;
+    };
+    let cursor = out.galley.cursor_from_pos(at - out.galley_pos);
+    let mut state = out.state.clone();
+    state
+        .cursor
+        .set_char_range(Some(egui::text::CCursorRange::one(cursor)));
+    egui::TextEdit::store_state(ctx, id, state);
 }
 
 /// The text itself, its step highlighted, with the messages and values painted after the lines.
@@ -215,8 +272,10 @@ fn text(
     };
     // A fixed id: the messages above come and go as one types, and an id counted from the
     // widgets before it would change with them, taking the focus away.
+    let id = source_id(tab);
+    let had_keyboard = ui.memory(|m| m.has_focus(id));
     let out = egui::TextEdit::multiline(source)
-        .id_salt(("shader source", tab))
+        .id(id)
         .code_editor()
         .desired_rows(lines.max(24))
         .desired_width(f32::INFINITY)
@@ -225,6 +284,7 @@ fn text(
         .show(ui);
     // Named after its tab: a screen reader reads "Fragment shader: source".
     let _ = out.response.response.clone().accessible_name(name);
+    cursor_where_tapped(ui.ctx(), id, &out, had_keyboard);
     touched.changed = out.response.changed();
     touched.cursor_line = out
         .cursor_range

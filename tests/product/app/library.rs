@@ -102,9 +102,10 @@ fn a_dropped_lesson_opens_from_its_bytes_and_a_broken_one_says_where() {
         error.contains("mine.toml:") && error.contains("viewport"),
         "{error}"
     );
-    // It says the dropped file did not open (nothing changed on disk), and × closes it.
+    // It says the dropped file, by its name, did not open (nothing changed on disk), and ×
+    // closes it.
     assert!(
-        h.query_by_label_contains("The dropped file did not open")
+        h.query_by_label_contains("mine.toml could not be opened; what was open keeps running:")
             .is_some()
     );
     assert!(h.query_by_label_contains("changed on disk").is_none());
@@ -120,7 +121,8 @@ fn a_dropped_lesson_opens_from_its_bytes_and_a_broken_one_says_where() {
     h.run_steps(4);
     let error = h.state().session.dropped_error.clone().unwrap_or_default();
     assert!(
-        error.starts_with("bunny.obj: a mesh becomes a new lesson in the desktop app"),
+        error.starts_with("bunny.obj could not be opened")
+            && error.contains("\nbunny.obj: a mesh becomes a new lesson in the desktop app"),
         "{error}"
     );
     assert_eq!(lesson_id(&h), "07-rasterization");
@@ -138,7 +140,10 @@ fn a_dropped_lesson_opens_from_its_bytes_and_a_broken_one_says_where() {
     // Each said in the language shown: a picture, a lesson and a shader that are not text.
     h.state_mut().session.lang = pipelens::vocabulary::Lang::ZH;
     for (name, said) in [
-        ("brick.png", "brick.png：pipelens 打开课程和场景（.toml）"),
+        (
+            "brick.png",
+            "无法打开 brick.png；已打开的内容继续运行：\nbrick.png：pipelens 打开课程和场景（.toml）",
+        ),
         ("broken.toml", "该文件不是 UTF-8 文本"),
         ("mine.frag", "mine.frag 不是 UTF-8 文本"),
     ] {

@@ -153,12 +153,13 @@ fn a_dropped_file_s_message_fits_a_phone() {
     let mut h = super::sized_lesson_harness(&path, [360.0, 640.0]);
     super::touch(&mut h, Pos2::new(2.0, 2.0));
     h.state_mut().session.dropped_error = Some(
-        "truncated.obj:1:3: a mesh becomes a new lesson in the lesson editor on the desktop; \
+        "truncated.obj could not be opened; what was open keeps running:\n\
+         truncated.obj:1:3: a mesh becomes a new lesson in the lesson editor on the desktop; \
          the page opens lessons, scenes and shaders"
             .to_owned(),
     );
     h.run_steps(3);
-    let message = h.get_by_label_contains("The dropped file did not open");
+    let message = h.get_by_label_contains("truncated.obj could not be opened");
     let rect = message.rect();
     assert!(
         rect.max.x <= 360.0 && rect.height() > 60.0,

@@ -1,0 +1,249 @@
+//! A lab on a phone, done by touch as a student does it (issue 60): at 390×844 the Code tab
+//! puts the code over the screen with the verdict above it, a drag scrolls the code, the first
+//! tap puts the cursor where it lands, the row of GLSL keys types without taking the keyboard
+//! away, the messages never move the code, and the lab passes; the Picture tab brings the
+//! picture back.
+
+use egui::{Event, Key, Modifiers, PointerButton, Pos2, Rect, TouchDeviceId, TouchId, TouchPhase};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable as _;
+use pipelens::app::PipelensApp;
+
+const SCREEN: [f32; 2] = [390.0, 844.0];
+
+/// A finger down at `from`, moved to `to` in steps, lifted: as a phone's browser sends it,
+/// touch events and the pointer events made of them. `from == to` is a tap.
+fn finger(h: &mut Harness<'_, PipelensApp>, from: Pos2, to: Pos2) {
+    let touch = |phase, pos| Event::Touch {
+        device_id: TouchDeviceId(1),
+        id: TouchId(0),
+        phase,
+        pos,
+        force: None,
+    };
+    let button = |pos, pressed| Event::PointerButton {
+        pos,
+        button: PointerButton::Primary,
+        pressed,
+        modifiers: Modifiers::NONE,
+    };
+    let events = &mut h.input_mut().events;
+    events.push(touch(TouchPhase::Start, from));
+    events.push(Event::PointerMoved(from));
+    events.push(button(from, true));
+    h.run_steps(1);
+    if from != to {
+        for k in 1..=6 {
+            let at = from + (to - from) * (k as f32 / 6.0);
+            h.input_mut().events.push(touch(TouchPhase::Move, at));
+            h.input_mut().events.push(Event::PointerMoved(at));
+            h.run_steps(1);
+        }
+    }
+    h.input_mut().events.push(touch(TouchPhase::End, to));
+    h.input_mut().events.push(button(to, false));
+    h.input_mut().events.push(Event::PointerGone);
+    h.run_steps(3);
+}
+
+fn tap(h: &mut Harness<'_, PipelensApp>, at: Pos2) {
+    finger(h, at, at);
+}
+
+/// The rect of the widget named `label`.
+fn rect_of(h: &Harness<'_, PipelensApp>, label: &str) -> Rect {
+    h.get_by_label(label).rect()
+}
+
+/// The rect of the source's row whose text holds `text`.
+fn row_of(h: &Harness<'_, PipelensApp>, text: &str) -> Rect {
+    h.get_by(|n| {
+        n.role() == egui::accesskit::Role::TextRun && n.value().is_some_and(|v| v.contains(text))
+    })
+    .rect()
+}
+
+/// Types `text` as a phone's keyboard and the key row do: each of the row's keys tapped on the
+/// row, a line break with Enter, the rest as the keyboard's text.
+fn type_text(h: &mut Harness<'_, PipelensApp>, text: &str) {
+    let mut plain = String::new();
+    let flush = |h: &mut Harness<'_, PipelensApp>, plain: &mut String| {
+        if !plain.is_empty() {
+            h.input_mut()
+                .events
+                .push(Event::Text(std::mem::take(plain)));
+            h.run_steps(1);
+        }
+    };
+    for c in text.chars() {
+        let key = c.to_string();
+        if pipelens::app::views::GLSL_KEYS.contains(&key.as_str()) {
+            flush(h, &mut plain);
+            let at = rect_of(h, &key).center();
+            tap(h, at);
+        } else if c == '\n' {
+            flush(h, &mut plain);
+            for pressed in [true, false] {
+                h.input_mut().events.push(Event::Key {
+                    key: Key::Enter,
+                    physical_key: None,
+                    pressed,
+                    repeat: false,
+                    modifiers: Modifiers::NONE,
+                });
+            }
+            h.run_steps(1);
+        } else {
+            plain.push(c);
+        }
+    }
+    flush(h, &mut plain);
+}
+
+/// Drags the code until the line holding `todo` is in sight between `top` and `bottom` (the
+/// source's top and the key row's), then sideways until its end is, and taps just past its end:
+/// as a student puts the cursor there.
+fn tap_at_the_end_of(h: &mut Harness<'_, PipelensApp>, todo: &str, (top, bottom): (f32, f32)) {
+    // Drag the code up until the TODO's line is in sight above the key row.
+    for _ in 0..12 {
+        let row = row_of(h, todo);
+        if row.top() > top + 40.0 && row.bottom() < bottom - 40.0 {
+            break;
+        }
+        finger(h, Pos2::new(200.0, 600.0), Pos2::new(200.0, 400.0));
+    }
+    let row = row_of(h, todo);
+    assert!(
+        row.top() > top && row.bottom() < bottom,
+        "the drag scrolled the TODO into sight: {row:?}"
+    );
+    assert_eq!(
+        h.state().shader_editor.debugger.cursor_line,
+        None,
+        "a drag scrolls the code: it puts no cursor in it"
+    );
+    // The line runs past the screen's edge: a drag to the left brings its end in sight.
+    let past = row.right() + 40.0 - SCREEN[0];
+    if past > 0.0 {
+        let y = row.center().y;
+        finger(h, Pos2::new(300.0, y), Pos2::new(300.0 - past, y));
+        h.run_steps(3);
+    }
+    let row = row_of(h, todo);
+    assert!(
+        row.right() + 20.0 < SCREEN[0],
+        "a drag sideways scrolled the line's end into sight: {row:?}"
+    );
+    // The first tap, just past the end of the TODO's line: the cursor goes to that line's end.
+    tap(h, Pos2::new(row.right() + 12.0, row.center().y));
+}
+
+/// Lesson 10's specular lab on a 390×844 phone, by touch alone: the student opens the Code tab
+/// (the verdict above the code says "Not yet"), drags the code up to the TODO, taps at the end
+/// of its line (the cursor goes there, not to the end of the file), and types the specular
+/// term with the keyboard and the row of GLSL keys. While the half-typed code does not
+/// compile the code stays where it was (the message has a fixed place); the finished code
+/// passes, the verdict above the code says so, and the Picture tab shows the picture again
+/// with the code kept.
+#[test]
+fn lesson_10_s_lab_is_solved_on_a_phone_by_touch() {
+    let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
+    let mut h = super::sized_lesson_harness(&path, SCREEN);
+    super::touch(&mut h, Pos2::new(2.0, 2.0));
+    super::go_to_step_titled(&mut h, super::SPECULAR_LAB);
+    h.run_steps(8);
+    let screen = Rect::from_min_size(Pos2::ZERO, SCREEN.into());
+    assert!(!h.state().panels.shader, "the step opens on the picture");
+
+    let code_tab = rect_of(&h, "Code");
+    assert!(code_tab.height() >= 44.0, "a finger's tab: {code_tab:?}");
+    tap(&mut h, code_tab.center());
+    h.run_steps(4);
+    assert!(h.state().panels.shader, "one tap opens the code");
+    let verdict = h.get_by_label_contains("Not yet:").rect();
+    let source = rect_of(&h, "Fragment shader: source");
+    assert!(
+        screen.contains_rect(verdict) && verdict.bottom() <= source.top(),
+        "the verdict is in sight above the code: {verdict:?}, code {source:?}"
+    );
+    let keys = rect_of(&h, ";");
+    assert!(
+        keys.bottom() <= SCREEN[1] && keys.width() >= 44.0 && keys.height() >= 44.0,
+        "the key row is on the screen with a finger's keys: {keys:?}"
+    );
+
+    let todo = "TODO: the specular term";
+    tap_at_the_end_of(&mut h, todo, (source.top(), keys.top()));
+    h.run_steps(2);
+    let line = h
+        .state()
+        .shader_editor
+        .fragment
+        .lines()
+        .position(|l| l.contains(todo))
+        .expect("the TODO's line")
+        + 1;
+    assert_eq!(
+        h.state().shader_editor.debugger.cursor_line,
+        Some(line),
+        "the first tap puts the cursor on the line tapped"
+    );
+    let source_top = rect_of(&h, "Fragment shader: source").top();
+
+    // Half a line: it does not compile, and the code has not moved.
+    type_text(&mut h, "\n        vec3 h = normalize(l + v");
+    h.run_steps(4);
+    assert!(
+        !h.state().shader_editor.compiles(),
+        "half a line does not compile"
+    );
+    assert!(h.query_by_label("Code (!)").is_some(), "the tab says so");
+    assert_eq!(
+        rect_of(&h, "Fragment shader: source").top(),
+        source_top,
+        "the message does not move the code"
+    );
+    type_text(
+        &mut h,
+        ");\n        if (n_dot_l > 0.0) {\n            sum += f * ks * light.intensity * \
+         pow(max(dot(n, h), 0.0), shininess);\n        }",
+    );
+    for _ in 0..40 {
+        h.run_steps(5);
+        if h.query_by_label_contains("Passed:").is_some() {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+    let fragment = &h.state().shader_editor.fragment;
+    assert!(
+        fragment.contains(&format!(
+            "{todo}, where n·l > 0.\n        vec3 h = normalize(l + v);\n        if (n_dot_l"
+        )),
+        "typed after the TODO, at the cursor:\n{fragment}"
+    );
+    let passed = h
+        .get_by_label_contains("Passed: all 172800 pixels match")
+        .rect();
+    assert!(
+        screen.contains_rect(passed),
+        "the verdict is in sight: {passed:?}"
+    );
+
+    // Back to the picture: one tap; the student's frame, pipelens' own and the difference.
+    let picture_tab = rect_of(&h, "Picture").center();
+    tap(&mut h, picture_tab);
+    h.run_steps(6);
+    assert!(!h.state().panels.shader);
+    assert!(
+        h.state().picture_share(screen) > 0.3,
+        "the picture is back: {}",
+        h.state().picture_share(screen)
+    );
+    assert!(
+        h.state()
+            .shader_editor
+            .fragment
+            .contains("if (n_dot_l > 0.0)")
+    );
+}
