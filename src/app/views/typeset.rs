@@ -95,6 +95,17 @@ fn shift(op: Op, d: Vec2) -> Op {
     }
 }
 
+/// The least size of a script or a fraction's terms (points), unless the formula's own is less:
+/// on a touch screen 12 (at 0.7 of a phone's 14-point narration a subscript was under 10
+/// points), elsewhere 7 (a desktop's narration shrunk to fit its card or band).
+fn least(painter: &Painter) -> f32 {
+    if crate::app::style::is_touch(painter.ctx()) {
+        12.0
+    } else {
+        7.0
+    }
+}
+
 /// A run of text at `size` (monospace for code).
 fn text(painter: &Painter, s: &str, size: f32, color: Color32, mono: bool) -> Boxed {
     let family = if mono {
@@ -123,7 +134,7 @@ fn layout(painter: &Painter, nodes: &[Node], size: f32, color: Color32, style: &
             Node::Formula(inner) => layout(painter, inner, size, style.accent, style),
             Node::Script { base, sub, sup } => {
                 let mut b = layout(painter, base, size, color, style);
-                let small = (size * 0.7).max(7.0);
+                let small = (size * 0.7).max(least(painter).min(size));
                 let at = b.width;
                 let mut widest = 0.0f32;
                 for (script, rise) in [(sup, size * 0.42), (sub, -size * 0.2)] {
@@ -146,7 +157,7 @@ fn layout(painter: &Painter, nodes: &[Node], size: f32, color: Color32, style: &
                 b
             }
             Node::Frac { num, den } => {
-                let small = (size * 0.82).max(7.0);
+                let small = (size * 0.82).max(least(painter).min(size));
                 let n = layout(painter, num, small, color, style);
                 let d = layout(painter, den, small, color, style);
                 let pad = size * 0.12;

@@ -166,3 +166,48 @@ fn a_dropped_file_s_message_fits_a_phone() {
         "the message wraps inside the screen: {rect:?}"
     );
 }
+
+/// On a phone no word or number is under 12 points (WCAG's reading size, and the floor
+/// for a phone held at arm's length): every text the frame paints, on every step of the tour
+/// and of the perspective lesson (the matrix card's digits were the view's width ÷ 36, 10
+/// points on a 390-point phone), upright and on its side, touched.
+#[test]
+fn on_a_phone_no_text_is_under_12_points() {
+    let mut small = Vec::new();
+    for size in [[390.0, 844.0], [844.0, 390.0]] {
+        for name in ["00-tour", "05-perspective"] {
+            let path = crate::support::repo().join(format!("lessons/{name}.toml"));
+            let mut h = super::sized_lesson_harness(&path, size);
+            super::touch(&mut h, Pos2::new(2.0, 2.0));
+            for k in 0..super::lesson_of(&h).steps.len() {
+                super::go_to_step(&mut h, k);
+                for (_, shape) in super::flatten(&h) {
+                    let egui::Shape::Text(t) = shape else {
+                        continue;
+                    };
+                    let least = t
+                        .galley
+                        .job
+                        .sections
+                        .iter()
+                        .map(|s| s.format.font_id.size)
+                        .fold(f32::INFINITY, f32::min);
+                    if least < 12.0 && !t.galley.text().trim().is_empty() {
+                        small.push(format!(
+                            "{name} step {} at {size:?}: {least:.1} pt {:?}",
+                            k + 1,
+                            t.galley.text().chars().take(30).collect::<String>()
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    small.dedup();
+    assert!(
+        small.is_empty(),
+        "{} texts under 12 points:\n{}",
+        small.len(),
+        small.join("\n")
+    );
+}

@@ -12,6 +12,26 @@ use crate::app::views::{FATES, Projector, label_with_background, palette, place_
 use crate::spaces::position;
 use crate::vocabulary::{Lang, Space, num, vec3, vec4};
 
+/// The least size of the matrix card's digits (points): a phone's view is 340–380 points
+/// wide, and its reader holds it at arm's length.
+pub(super) const MATRIX_LEAST: f32 = 12.0;
+
+/// The matrix card's type size in a view `width` points wide: in classroom mode the
+/// narration's size, the room reads its digits (the subject is framed clear of the card);
+/// otherwise as the view's width allows, 13 to 24 points, and never under 12 (a phone's view,
+/// 360 points wide, would make its digits 10 points).
+fn card_type(ctx: &egui::Context, width: f32) -> f32 {
+    let scale = picture_scale(ctx);
+    if scale > 1.0 {
+        15.0 * scale
+    } else {
+        (width / 42.0)
+            .clamp(13.0, 24.0)
+            .min(width / 36.0)
+            .max(MATRIX_LEAST)
+    }
+}
+
 /// What the picture shows, so that the legend names only that.
 pub(super) struct Shown {
     /// Which fates (by `fate_index`) some drawn triangle met.
@@ -195,16 +215,7 @@ pub(super) fn matrix_card(
         (Space::Window, _) => (m.viewport.name.clone(), Some(&m.viewport)),
         _ => return None,
     };
-    // In classroom mode the narration's size, the room reads its digits (the subject is
-    // framed clear of the card); otherwise as the view's width allows, 13 to 24 points.
-    let scale = picture_scale(painter.ctx());
-    let size = if scale > 1.0 {
-        15.0 * scale
-    } else {
-        (rect.width() / 42.0)
-            .clamp(13.0, 24.0)
-            .min(rect.width() / 36.0)
-    };
+    let size = card_type(painter.ctx(), rect.width());
     let style = typeset::Style {
         size,
         color: Color32::WHITE,
