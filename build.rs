@@ -5,7 +5,10 @@ use std::{env, fs, path::Path};
 
 fn main() {
     println!("cargo:rerun-if-changed=locales");
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("locales");
+    // Read when the script runs, not when it was compiled: a build script compiled in another
+    // checkout (a target folder copied or shared) would embed that checkout's catalogs.
+    let manifest = env::var("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR");
+    let dir = Path::new(&manifest).join("locales");
     let mut found: Vec<(String, String)> = fs::read_dir(&dir)
         .expect("the locales/ folder is read")
         .filter_map(Result::ok)
