@@ -152,14 +152,25 @@ async function frameTimes(page, step, steps) {
   return { median: times[2], all: times };
 }
 
+const chromiumArgs = [
+  "--no-sandbox", "--disable-gpu-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+  "--disable-quic", "--no-first-run", "--disable-background-networking",
+  "--disable-component-update", "--disable-sync",
+];
 const browser = await chromium.launch({
   executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
-  args: [
-    "--no-sandbox", "--disable-gpu-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-    "--disable-quic", "--no-first-run", "--disable-background-networking",
-    "--disable-component-update", "--disable-sync",
-  ],
+  args: chromiumArgs,
 });
+// A phone's browser: three device pixels a CSS pixel, as the browser's own (not only emulated:
+// with the emulation alone Chromium reports the canvas's size in CSS pixels, which eframe sizes
+// the canvas by, so the page drew at a third of its size). The canvas of a 390×844 page is
+// 1170×2532, as on the phone. The checks read screenshots in CSS pixels (`scale: "css"`).
+const phones = await chromium.launch({
+  executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
+  args: [...chromiumArgs, "--force-device-scale-factor=3"],
+});
+/** A phone's context: `w`×`h` CSS pixels, three device pixels each, touch. */
+const phone = (w, h) => phones.newContext({ viewport: { width: w, height: h }, deviceScaleFactor: 3, isMobile: true, hasTouch: true });
 const context = await browser.newContext({ viewport: { width: 1920, height: 1080 } });
 const errors = [];
 
@@ -570,10 +581,11 @@ if (await waitForTitle(mat, /^pipelens — 25-lab-model-projection — step 3\/5
 // leftwards across the sheet goes to the next step. On its side and on a tablet, screenshots
 // for a person to look at.
 for (const [w, h, name] of [[390, 844, "phone-portrait"], [844, 390, "phone-landscape"], [820, 1180, "tablet-portrait"]]) {
-  // One device pixel a CSS pixel: headless Chromium's emulation of a denser screen reports the
-  // canvas's devicePixelContentBoxSize in CSS pixels, which eframe sizes the canvas by (a phone's
-  // own browser reports device pixels), so the page would draw at a third of its size.
-  const device = await browser.newContext({ viewport: { width: w, height: h }, deviceScaleFactor: 1, isMobile: true, hasTouch: true });
+  // The phones as a phone's browser is (three device pixels a CSS pixel, the canvas that size);
+  // the tablet at one, a tablet's canvas at two or three would be slow in SwiftShader.
+  const device = w < 1000 && h < 1000
+    ? await phone(w, h)
+    : await browser.newContext({ viewport: { width: w, height: h }, deviceScaleFactor: 1, isMobile: true, hasTouch: true });
   const page = await device.newPage();
   page.on("pageerror", (e) => errors.push(`${name}: ${e.message}`));
   page.on("console", (m) => { if (m.type() === "error") errors.push(`${name}: ${m.text()}`); });
@@ -584,6 +596,9 @@ for (const [w, h, name] of [[390, 844, "phone-portrait"], [844, 390, "phone-land
     if (name === "phone-portrait") {
       const share = Number(await page.evaluate(() => document.documentElement.dataset.pictureShare));
       check(share >= 0.5, `the picture covers ${Math.round(share * 100)} % of the phone's page`);
+      const canvas = await page.evaluate(() => [devicePixelRatio, document.getElementById("pipelens").width, document.getElementById("pipelens").height]);
+      check(canvas[0] === 3 && canvas[1] === 1170 && canvas[2] === 2532,
+        `the phone's canvas has its device pixels: ${canvas[1]}×${canvas[2]} at ${canvas[0]} a CSS pixel`);
       const cdp = await device.newCDPSession(page);
       const touch = (type, x, y) => cdp.send("Input.dispatchTouchEvent", { type, touchPoints: type === "touchEnd" ? [] : [{ x, y }] });
       await touch("touchStart", 330, 730);
@@ -625,7 +640,7 @@ function colored(png, [top, bottom], is) {
 const amber = (r, g, b) => r > 220 && g > 140 && g < 200 && b < 130;
 const green = (r, g, b) => g > 190 && r > 90 && r < 160 && b > 90 && b < 160;
 {
-  const device = await browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 1, isMobile: true, hasTouch: true });
+  const device = await phone(390, 844);
   const page = await device.newPage();
   page.on("pageerror", (e) => errors.push(`phone lab: ${e.message}`));
   page.on("console", (m) => { if (m.type() === "error") errors.push(`phone lab: ${m.text()}`); });
@@ -642,7 +657,7 @@ const green = (r, g, b) => g > 190 && r > 90 && r < 160 && b > 90 && b < 160;
     };
     await tap(292, PHONE_TABS_Y);
     await page.waitForTimeout(1500);
-    const starter = PNG.sync.read(await page.screenshot({ path: `${out}/phone-lab-code.png` }));
+    const starter = PNG.sync.read(await page.screenshot({ path: `${out}/phone-lab-code.png`, scale: "css" }));
     const notYet = await words(page);
     const before = colored(starter, PHONE_VERDICT, amber);
     check(notYet.verdict.startsWith("Not yet") && before > 200,
@@ -655,7 +670,7 @@ const green = (r, g, b) => g > 190 && r > 90 && r < 160 && b > 90 && b < 160;
       await page.waitForTimeout(1500);
       passedWords = await words(page);
     }
-    const done = PNG.sync.read(await page.screenshot({ path: `${out}/phone-lab-passed.png` }));
+    const done = PNG.sync.read(await page.screenshot({ path: `${out}/phone-lab-passed.png`, scale: "css" }));
     const after = colored(done, PHONE_VERDICT, green);
     check(passedWords.verdict.startsWith("Passed") && after > 200,
       `the source typed with its line breaks passes, and the verdict over the code says so in green (${after} pixels): "${passedWords.verdict.slice(0, 40)}…"`);
@@ -679,7 +694,7 @@ function yellow(png) {
   return n;
 }
 for (const [w, h, name, least] of [[1920, 1080, "variable-picture", 5000], [390, 844, "variable-picture-phone", 1000]]) {
-  const device = await browser.newContext({ viewport: { width: w, height: h }, deviceScaleFactor: 1, isMobile: w < 700, hasTouch: w < 700 });
+  const device = w < 700 ? await phone(w, h) : await browser.newContext({ viewport: { width: w, height: h }, deviceScaleFactor: 1 });
   const page = await device.newPage();
   page.on("pageerror", (e) => errors.push(`${name}: ${e.message}`));
   page.on("console", (m) => { if (m.type() === "error") errors.push(`${name}: ${m.text()}`); });
@@ -688,7 +703,7 @@ for (const [w, h, name, least] of [[1920, 1080, "variable-picture", 5000], [390,
     let found = 0;
     for (let k = 0; k < 15 && found < least; k++) {
       await page.waitForTimeout(2000);
-      found = yellow(PNG.sync.read(await page.screenshot({ path: `${out}/${name}.png` })));
+      found = yellow(PNG.sync.read(await page.screenshot({ path: `${out}/${name}.png`, scale: "css" })));
     }
     check(found >= least, `the view draws the crescent where n·l < 0 at ${w}×${h} (${found} yellow pixels)`);
   }
@@ -725,6 +740,7 @@ if (firstVisit && process.env.ISOLATED_PID) {
 
 check(errors.length === 0, `no errors in the pages${errors.length ? ": " + errors.join(" | ") : ""}`);
 await browser.close();
+await phones.close();
 writeFileSync(`${out}/result.txt`, `${passed} passed, ${failures.length} failed\n`);
 console.log(`${passed} passed, ${failures.length} failed`);
 process.exit(failures.length === 0 ? 0 : 1);
