@@ -313,7 +313,7 @@ geometry-space = Space
 
 ## src/app/views/glsl_keys.rs
 
-glsl-keys-types = Types { $key } where the cursor is
+code-keys-types = Types { $key } where the cursor is
 
 ## src/app/views/inspector/matrices.rs
 

@@ -307,7 +307,7 @@ geometry-space = 空格键
 
 ## src/app/views/glsl_keys.rs
 
-glsl-keys-types = 在光标处输入 { $key }
+code-keys-types = 在光标处输入 { $key }
 
 ## src/app/views/inspector/matrices.rs
 

@@ -29,7 +29,7 @@ pub fn row(ui: &mut Ui, lang: crate::vocabulary::Lang) -> Option<&'static str> {
                 let button = egui::Button::new(egui::RichText::new(*key).monospace().strong());
                 let typed = ui
                     .add_sized(size, button)
-                    .on_hover_text(lang.t_with("glsl-keys-types", &[("key", key)]));
+                    .on_hover_text(lang.t_with("code-keys-types", &[("key", key)]));
                 if typed.clicked() {
                     tapped = Some(*key);
                 }

@@ -28,6 +28,7 @@ pub mod plot_legend;
 mod projector;
 pub mod shader;
 mod shader_source;
+mod shader_tabs;
 pub mod typeset;
 pub mod watch_list;
 pub mod watch_picture;

@@ -16,14 +16,7 @@ use crate::app::command::SceneCommand;
 use crate::app::session::{Command, Session};
 use crate::vocabulary::Lang;
 
-/// A tab of the panel: a shader, or a function the pipeline calls.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Tab {
-    /// A shader stage.
-    Shader(Stage),
-    /// The rasterizer's inside or depth test.
-    Hook(HookKind),
-}
+pub use super::shader_tabs::Tab;
 
 /// The panel's state: the sources, the tab shown, the messages of the last compile.
 pub struct ShaderEditor {
@@ -264,7 +257,14 @@ pub fn ui(
     let lang = session.lang;
     editor.load(session);
     let mut apply = false;
-    tabs(ui, editor, lang);
+    let tabs: Vec<(Tab, bool)> = (editor.hooks.iter())
+        .map(|h| (Tab::Hook(h.kind), !h.errors.is_empty()))
+        .chain([Stage::Vertex, Stage::Fragment].map(|stage| {
+            let failed = editor.errors.iter().any(|e| e.stage == stage);
+            (Tab::Shader(stage), failed)
+        }))
+        .collect();
+    super::shader_tabs::tabs(ui, &mut editor.tab, &tabs, lang);
     ui.horizontal(|ui| {
         apply |= ui
             .button(lang.t("shader-apply"))
@@ -324,7 +324,7 @@ pub fn ui(
     let (marks, watched) = debugger(ui, &mut editor.debugger, (stage, session), small);
     let name = format!(
         "{}{}",
-        tab_name(tab, session.lang),
+        super::shader_tabs::tab_name(tab, session.lang),
         session.lang.t("shader-source")
     );
     let (touched, typed) = typed_code(
@@ -478,67 +478,6 @@ fn own_or_back(ui: &mut Ui, editor: &mut ShaderEditor, session: &Session) -> boo
     }
     editor.shaders_in_use = true;
     true
-}
-
-/// What a function's tab says when hovered, in English and Chinese.
-fn hook_tip(kind: HookKind, lang: Lang) -> String {
-    let what = match kind {
-        HookKind::Inside => lang.t("shader-the-rasterizer-calls-it-for"),
-        HookKind::DepthTest => lang.t("shader-the-rasterizer-calls-it-for-2"),
-        HookKind::Curve => lang.t("shader-a-b-zier-curve-s"),
-        HookKind::ShadowMatrix => lang.t("shader-the-shadow-pass-calls-it"),
-        HookKind::Patch => lang.t("shader-a-b-zier-patch-s"),
-    };
-    format!("{}\n{what}", kind.signature())
-}
-
-/// A function's tab's name.
-fn hook_label(kind: HookKind, lang: Lang) -> &'static str {
-    match kind {
-        HookKind::Inside => lang.t("shader-inside-test"),
-        HookKind::DepthTest => lang.t("shader-depth-test"),
-        HookKind::Curve => lang.t("shader-de-casteljau"),
-        HookKind::ShadowMatrix => lang.t("shader-shadow-matrix"),
-        HookKind::Patch => lang.t("shader-b-zier-patch"),
-    }
-}
-
-/// The tabs: the functions the pipeline calls (those the scene runs), the vertex and the
-/// fragment shader, each marked when its source does not compile.
-fn tabs(ui: &mut Ui, editor: &mut ShaderEditor, lang: Lang) {
-    let marked = |label: &str, failed: bool| {
-        if failed {
-            format!("{label} (!)")
-        } else {
-            label.to_owned()
-        }
-    };
-    ui.horizontal(|ui| {
-        for (kind, failed) in editor
-            .hooks
-            .iter()
-            .map(|h| (h.kind, !h.errors.is_empty()))
-            .collect::<Vec<_>>()
-        {
-            let label = marked(hook_label(kind, lang), failed);
-            ui.selectable_value(&mut editor.tab, Tab::Hook(kind), label)
-                .on_hover_text(hook_tip(kind, lang));
-        }
-        for stage in [Stage::Vertex, Stage::Fragment] {
-            let failed = editor.errors.iter().any(|e| e.stage == stage);
-            let label = marked(&tab_name(Tab::Shader(stage), lang), failed);
-            ui.selectable_value(&mut editor.tab, Tab::Shader(stage), label);
-        }
-    });
-}
-
-/// A tab's name, as its button shows it and a screen reader names its source.
-fn tab_name(tab: Tab, lang: Lang) -> String {
-    match tab {
-        Tab::Hook(kind) => hook_label(kind, lang).to_owned(),
-        Tab::Shader(Stage::Vertex) => lang.t("shader-vertex-shader").to_owned(),
-        Tab::Shader(Stage::Fragment) => lang.t("shader-fragment-shader").to_owned(),
-    }
 }
 
 /// Both sources as files (downloads in the browser): what was written, or why not.

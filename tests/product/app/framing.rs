@@ -95,8 +95,9 @@ fn overlap(a: &egui::Rect, b: &egui::Rect) -> bool {
     i.width() > 0.5 && i.height() > 0.5
 }
 
-/// Every run of words the last frame painted: where, at what font size, what it says.
-fn texts(
+/// Every run of words the last frame painted: where, at what font size (its least), what it
+/// says.
+pub(super) fn texts(
     h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>,
 ) -> Vec<(egui::Rect, f32, String)> {
     fn walk(shape: &egui::Shape, out: &mut Vec<(egui::Rect, f32, String)>) {

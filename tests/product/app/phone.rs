@@ -181,22 +181,12 @@ fn on_a_phone_no_text_is_under_12_points() {
             super::touch(&mut h, Pos2::new(2.0, 2.0));
             for k in 0..super::lesson_of(&h).steps.len() {
                 super::go_to_step(&mut h, k);
-                for (_, shape) in super::flatten(&h) {
-                    let egui::Shape::Text(t) = shape else {
-                        continue;
-                    };
-                    let least = t
-                        .galley
-                        .job
-                        .sections
-                        .iter()
-                        .map(|s| s.format.font_id.size)
-                        .fold(f32::INFINITY, f32::min);
-                    if least < 12.0 && !t.galley.text().trim().is_empty() {
+                for (_, least, text) in super::framing::texts(&h) {
+                    if least < 12.0 {
                         small.push(format!(
                             "{name} step {} at {size:?}: {least:.1} pt {:?}",
                             k + 1,
-                            t.galley.text().chars().take(30).collect::<String>()
+                            text.chars().take(30).collect::<String>()
                         ));
                     }
                 }
