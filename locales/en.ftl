@@ -116,6 +116,8 @@ new-make-the-lesson = Make the lesson
 new-nothing-on-screen = nothing on screen to start from
 new-choose-a-built-in-lesson = choose a built-in lesson
 new-name-the-mesh-file = name the mesh file (.obj)
+new-from-a-mesh-dropped = from a mesh dropped on the page (.obj):
+new-drop-the-mesh = drop the mesh (.obj) on the page first
 new-exists-already = { $file } exists already: choose another name (it was left as it is)
 new-cannot-create = cannot create { $dir }: { $why }
 new-made = New lesson: { $source }
@@ -185,7 +187,6 @@ layout-resize-panel = Resize panel: { $panel }
 ## src/app/library.rs
 
 library-could-not-be-opened = { $file } could not be opened; what was open keeps running:
-library-a-mesh-opens-on-the-desktop = { $name }: a mesh becomes a new lesson in the desktop app (drop it on its window); the page opens lessons and scenes (.toml) and shaders (.vert, .frag)
 library-not-a-kind-pipelens-opens = { $name }: pipelens opens lessons and scenes (.toml), shaders (.vert, .frag, .glsl) and meshes (.obj), not .{ $extension } files
 library-not-text = the file is not UTF-8 text: drop a lesson or scene .toml file
 library-shader-not-text = { $name } is not UTF-8 text
@@ -196,7 +197,7 @@ library-d-n-questions-you-answered = d/n: questions you answered right, of those
 library-edit-this-lesson-or-make = Edit this lesson, or make one… (R)
 library-record-what-is-on-screen = Record what is on screen as steps, word them in both languages, arrange them, save the file
 library-your-own-lesson-or-scene = Your own lesson or scene: drop its .toml file on the window; it reloads when you save it.
-library-your-own-lesson-or-scene-2 = Your own lesson or scene: drop its .toml file on the page. A page cannot watch files: after an edit, drop it again.
+library-your-own-lesson-or-scene-2 = Your own lesson or scene: drop its .toml file on the page, with the meshes (.obj) it names; a mesh dropped alone becomes a new lesson. A page cannot watch files: after an edit, drop it again.
 library-open-another-built-in-lesson = Open another built-in lesson
 
 ## src/app/platform.rs

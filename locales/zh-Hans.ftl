@@ -116,6 +116,8 @@ new-make-the-lesson = 新建课程
 new-nothing-on-screen = 屏幕上没有可作为起点的内容
 new-choose-a-built-in-lesson = 请选择一个内置课程
 new-name-the-mesh-file = 请写出网格文件（.obj）的名字
+new-from-a-mesh-dropped = 从拖放到页面上的网格开始（.obj）：
+new-drop-the-mesh = 请先把网格文件（.obj）拖放到页面上
 new-exists-already = { $file } 已经存在：请换一个名字（原文件保持不变）
 new-cannot-create = 无法创建 { $dir }：{ $why }
 new-made = 新课程：{ $source }
@@ -179,7 +181,6 @@ layout-resize-panel = 调整面板大小：{ $panel }
 ## src/app/library.rs
 
 library-could-not-be-opened = 无法打开 { $file }；已打开的内容继续运行：
-library-a-mesh-opens-on-the-desktop = { $name }：网格在桌面应用中成为一节新课程（把它拖到应用的窗口上）；网页打开课程和场景（.toml）以及着色器（.vert、.frag）
 library-not-a-kind-pipelens-opens = { $name }：pipelens 打开课程和场景（.toml）、着色器（.vert、.frag、.glsl）和网格（.obj），不打开 .{ $extension } 文件
 library-not-text = 该文件不是 UTF-8 文本：请拖入课程或场景的 .toml 文件
 library-shader-not-text = { $name } 不是 UTF-8 文本
@@ -190,7 +191,7 @@ library-d-n-questions-you-answered = d/n：需要填写数值的思考题中你�
 library-edit-this-lesson-or-make = 编辑本课程或新建课程…（R）
 library-record-what-is-on-screen = 把屏幕上的内容录制为步骤，用两种语言撰写文字，调整顺序，保存文件
 library-your-own-lesson-or-scene = 自己的课程或场景：把它的 .toml 文件拖放到窗口上；保存后自动重新加载。
-library-your-own-lesson-or-scene-2 = 自己的课程或场景：把它的 .toml 文件拖放到页面上。网页无法监视文件：修改后请重新拖放。
+library-your-own-lesson-or-scene-2 = 自己的课程或场景：把它的 .toml 文件连同它用到的网格（.obj）一起拖放到页面上；单独拖放的网格会成为一节新课程。网页无法监视文件：修改后请重新拖放。
 library-open-another-built-in-lesson = 打开另一个内置课程
 
 ## src/app/platform.rs

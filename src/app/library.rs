@@ -92,27 +92,22 @@ impl PipelensApp {
     /// watches it); in the browser from its bytes, read in the background and opened on a later
     /// frame. A file that does not load keeps the current one running and says why. A shader
     /// (`.vert`, `.frag`) goes into the shader panel instead — a student's saved exercise code
-    /// loaded back — and runs when it compiles.
+    /// loaded back — and runs when it compiles. A mesh (`.obj`) becomes a new lesson in the
+    /// editor; in the browser it is also kept for the lessons dropped with it or after it that
+    /// name it.
     pub(super) fn open_dropped(&mut self, ctx: &egui::Context) {
         let dropped = ctx.input(|i| i.raw.dropped_files.clone());
-        if let Some(file) = dropped.into_iter().next() {
+        for file in dropped {
             let path = file.path().to_path_buf();
             let name = path.file_name().map_or_else(
                 || path.display().to_string(),
                 |n| n.to_string_lossy().into_owned(),
             );
-            if let Some(why) = not_opened(&name, path.is_absolute(), self.session.lang) {
+            if let Some(why) = not_opened(&name, self.session.lang) {
                 self.refused(&name, &why);
-            } else if path.is_absolute()
-                && path
-                    .extension()
-                    .is_some_and(|e| e.eq_ignore_ascii_case("obj"))
-            {
+            } else if path.is_absolute() && is_mesh(&name) {
                 // A mesh of one's own: a new lesson on it, in the editor.
-                self.editor.new.from = super::editor::From::Mesh;
-                self.editor.new.mesh = path.display().to_string();
-                self.editor.new.show = true;
-                self.editor.open = true;
+                self.offer_lesson_from_mesh(&path.display().to_string());
             } else if path.is_absolute() && shader_stage(&path.display().to_string()).is_some() {
                 let name = path.display().to_string();
                 let text = std::fs::read(&path).map_err(|e| cannot_read(&e, self.session.lang));
@@ -124,7 +119,15 @@ impl PipelensApp {
                 self.inbox.read(file, ctx);
             }
         }
-        for (name, bytes) in self.inbox.take() {
+        let mut read = self.inbox.take();
+        // The meshes first: a lesson dropped with its mesh names it.
+        read.sort_by_key(|(name, _)| !is_mesh(name));
+        let with_lesson = read.iter().any(|(name, _)| !is_mesh(name));
+        for (name, bytes) in read {
+            if is_mesh(&name) {
+                self.keep_mesh(&name, bytes, !with_lesson);
+                continue;
+            }
             if shader_stage(&name).is_some() {
                 self.load_shader(&name, bytes.map_err(|e| cannot_read(&e, self.session.lang)));
                 continue;
@@ -136,17 +139,49 @@ impl PipelensApp {
                         .map_err(|_| self.session.lang.t("library-not-text").to_owned())
                 })
                 .map_err(|e| lesson::Diagnostics(vec![lesson::Diagnostic::whole_file(&name, e)]));
+            let folder = lesson::Folder::of_page(self.session.given.clone());
             let loaded = text
                 .as_ref()
                 .map_err(Clone::clone)
-                .and_then(|text| lesson::parse_document(text, &name, std::path::Path::new(".")));
+                .and_then(|text| lesson::parse_document_in(text, &name, &folder));
             let is_lesson = matches!(loaded, Ok(Document::Lesson(_)));
             self.opened(loaded, &name, None);
             // In the browser the editor edits the dropped text; saving it is a download.
             if let (true, Ok(text)) = (is_lesson, text) {
-                self.editor.adopt(&name, None, text, self.session.lang);
+                let lang = self.session.lang;
+                self.editor
+                    .adopt(&name, None, text, &self.session.given, lang);
             }
         }
+    }
+
+    /// Keeps a mesh dropped on the page for the lessons that name it, when it reads as one;
+    /// `offer`: the editor opens on a new lesson made from it (it was dropped alone).
+    fn keep_mesh(&mut self, name: &str, bytes: Result<Vec<u8>, String>, offer: bool) {
+        let lang = self.session.lang;
+        let read = bytes.map_err(|e| cannot_read(&e, lang)).and_then(|b| {
+            pipeline::mesh::Mesh::parse_obj(&mut b.as_slice(), name, name)
+                .map(|_| b)
+                .map_err(|e| e.to_string())
+        });
+        match read {
+            Ok(bytes) => {
+                self.session.given.insert(name.to_owned(), bytes.into());
+                if offer {
+                    self.offer_lesson_from_mesh(name);
+                }
+            }
+            Err(e) => self.refused(name, &e),
+        }
+    }
+
+    /// Opens the editor on "New lesson" from the mesh `mesh` (a path on the desktop, the name
+    /// of a mesh dropped on a page), for the teacher to name the lesson and make it.
+    fn offer_lesson_from_mesh(&mut self, mesh: &str) {
+        self.editor.new.from = super::editor::From::Mesh;
+        self.editor.new.mesh = mesh.to_owned();
+        self.editor.new.show = true;
+        self.editor.open = true;
     }
 
     /// Puts a dropped shader file's source in the shader panel's tab for its stage and runs it
@@ -231,6 +266,7 @@ impl PipelensApp {
                 &made.source,
                 made.file.as_deref(),
                 made.text,
+                &self.session.given,
                 self.session.lang,
             );
         }
@@ -247,25 +283,29 @@ impl PipelensApp {
 }
 
 /// Why a file named `name` dropped on the window is not opened, when its kind is one pipelens
-/// does not open there (`on_disk`: the desktop, which has its path): a lesson or scene is a
-/// `.toml` file, a shader a `.vert`, `.frag` or pipeline-function `.glsl`, and a mesh (`.obj`)
-/// becomes a new lesson in the editor, which reads it from disk. A name without an extension is
-/// read as a lesson. Said in `lang`.
-fn not_opened(name: &str, on_disk: bool, lang: Lang) -> Option<String> {
+/// does not open: a lesson or scene is a `.toml` file, a shader a `.vert`, `.frag` or
+/// pipeline-function `.glsl`, and a mesh (`.obj`) becomes a new lesson in the editor. A name
+/// without an extension is read as a lesson. Said in `lang`.
+fn not_opened(name: &str, lang: Lang) -> Option<String> {
     let lower = name.to_ascii_lowercase();
     let extension = std::path::Path::new(&lower)
         .extension()
         .and_then(|e| e.to_str())?
         .to_owned();
     match extension.as_str() {
-        "toml" | "vert" | "frag" | "glsl" => None,
-        "obj" if on_disk => None,
-        "obj" => Some(lang.t_with("library-a-mesh-opens-on-the-desktop", &[("name", &name)])),
+        "toml" | "vert" | "frag" | "glsl" | "obj" => None,
         _ => Some(lang.t_with(
             "library-not-a-kind-pipelens-opens",
             &[("name", &name), ("extension", &extension)],
         )),
     }
+}
+
+/// Whether the file named `name` is a mesh (`.obj`).
+fn is_mesh(name: &str) -> bool {
+    std::path::Path::new(name)
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("obj"))
 }
 
 /// The shader stage a file's name says (`.vert`, `.frag`), if it names one.

@@ -11,6 +11,7 @@ pub mod answer;
 pub mod describe;
 mod diagnostic;
 pub mod edit;
+pub mod folder;
 pub mod forbid;
 pub mod library;
 pub mod param;
@@ -22,6 +23,7 @@ mod syntax;
 mod typed;
 pub mod validate;
 
+pub use folder::{Folder, Given};
 pub use script::{Lesson, Step};
 pub use validate::shaders::SHADER_FILE_ENDINGS;
 
@@ -173,6 +175,14 @@ pub fn read_text(path: &Path) -> Result<String, Diagnostics> {
 /// # Errors
 /// Every problem found, each with its position.
 pub fn parse_scene(text: &str, file: &str, base: &Path) -> Result<SceneSpec, Diagnostics> {
+    parse_scene_in(text, file, &Folder::on_disk(base))
+}
+
+/// Parses and validates scene text, the files it names read from `base`.
+///
+/// # Errors
+/// Every problem found, each with its position.
+pub fn parse_scene_in(text: &str, file: &str, base: &Folder) -> Result<SceneSpec, Diagnostics> {
     let raw: raw::RawSceneFile = parse_toml(text, file)?;
     validate::scene(&raw.scene, text, file, base)
 }
@@ -218,10 +228,19 @@ pub fn load_file(path: &Path) -> Result<Document, Diagnostics> {
 /// # Errors
 /// Every problem found, each with its position.
 pub fn parse_document(text: &str, file: &str, base: &Path) -> Result<Document, Diagnostics> {
+    parse_document_in(text, file, &Folder::on_disk(base))
+}
+
+/// Parses scene or lesson text, the files it names read from `base` (a page's: the files it
+/// was given).
+///
+/// # Errors
+/// Every problem found, each with its position.
+pub fn parse_document_in(text: &str, file: &str, base: &Folder) -> Result<Document, Diagnostics> {
     if script::is_lesson(text) {
-        script::parse_lesson(text, file, base).map(|l| Document::Lesson(Box::new(l)))
+        script::parse_lesson_in(text, file, base).map(|l| Document::Lesson(Box::new(l)))
     } else {
-        parse_scene(text, file, base).map(|s| Document::Scene(Box::new(s)))
+        parse_scene_in(text, file, base).map(|s| Document::Scene(Box::new(s)))
     }
 }
 

@@ -7,7 +7,7 @@ mod animation;
 mod expect_and_exercise;
 mod read;
 
-pub use read::{is_lesson, parse_lesson};
+pub use read::{is_lesson, parse_lesson, parse_lesson_in};
 
 use pipeline::buffers::BufferKind;
 

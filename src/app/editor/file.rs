@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use crate::app::platform;
 use crate::lesson::edit::Draft;
-use crate::lesson::library;
+use crate::lesson::{Folder, Given, library};
 use crate::vocabulary::Lang;
 
 /// A lesson being edited, with where it is saved.
@@ -47,7 +47,8 @@ pub(super) fn recovery_path(file: &Path) -> PathBuf {
 impl Edited {
     /// The lesson named `source` as the editor starts from it: the file `file` on disk (a
     /// recovery copy beside it offered), or the built-in lesson of that name, or `text` (a
-    /// file dropped on the page, or a lesson just made).
+    /// file dropped on the page, or a lesson just made: the meshes it names are among those
+    /// `given` to the page).
     ///
     /// # Errors
     /// When there is no text to edit, or it is not a lesson file's.
@@ -55,6 +56,7 @@ impl Edited {
         source: &str,
         file: Option<&Path>,
         text: Option<String>,
+        given: &Given,
         lang: Lang,
     ) -> Result<Self, String> {
         let disk = match file {
@@ -67,11 +69,13 @@ impl Edited {
             .or_else(|| disk.clone())
             .or_else(|| builtin_text(source).map(str::to_owned))
             .ok_or_else(|| lang.t_with("file-no-text-to-edit", &[("source", &source)]))?;
-        let base = file
-            .and_then(Path::parent)
-            .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
+        let base = match file {
+            Some(f) => Folder::on_disk(f.parent().unwrap_or(Path::new("."))),
+            None if builtin_text(source).is_some() => Folder::on_disk(Path::new(".")),
+            None => Folder::of_page(given.clone()),
+        };
         let name = file.map_or_else(|| source.to_owned(), |f| f.display().to_string());
-        let draft = Draft::new(&text, &name, &base)?;
+        let draft = Draft::in_folder(&text, &name, base)?;
         let recovery_key = match file {
             Some(f) => Some(recovery_path(f)),
             None if builtin_text(source).is_none() => Some(recovery_path(Path::new(source))),

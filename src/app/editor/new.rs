@@ -103,20 +103,33 @@ impl NewLesson {
                     }
                 });
         }
-        // A page cannot read a mesh from a path: the browser has the other two.
-        if crate::app::platform::WRITES_FILES {
+        // A page cannot read a mesh from a path: it offers the meshes dropped on it.
+        let on_disk = crate::app::platform::WRITES_FILES;
+        if on_disk || !session.given.is_empty() {
             ui.radio_value(
                 &mut self.from,
                 From::Mesh,
-                lang.t("new-from-a-mesh-of-your"),
+                lang.t(if on_disk {
+                    "new-from-a-mesh-of-your"
+                } else {
+                    "new-from-a-mesh-dropped"
+                }),
             );
         }
-        if self.from == From::Mesh {
+        if self.from == From::Mesh && on_disk {
             ui.add(
                 egui::TextEdit::singleline(&mut self.mesh)
                     .hint_text("/path/to/model.obj")
                     .desired_width(f32::INFINITY),
             );
+        } else if self.from == From::Mesh {
+            egui::ComboBox::from_id_salt("new-lesson-mesh")
+                .selected_text(self.mesh.as_str())
+                .show_ui(ui, |ui| {
+                    for name in session.given.keys() {
+                        ui.selectable_value(&mut self.mesh, name.clone(), name);
+                    }
+                });
         }
         ui.horizontal(|ui| {
             ui.label(if crate::app::platform::WRITES_FILES {
@@ -154,7 +167,13 @@ impl NewLesson {
                 if self.mesh.trim().is_empty() {
                     return Err(lang.t("new-name-the-mesh-file").to_owned());
                 }
-                start::from_mesh(&file, &super::file::mesh_from(&file, mesh))?
+                if crate::app::platform::WRITES_FILES {
+                    start::from_mesh(&file, &super::file::mesh_from(&file, mesh))?
+                } else if session.given.contains_key(self.mesh.trim()) {
+                    start::from_mesh(&file, self.mesh.trim())?
+                } else {
+                    return Err(lang.t("new-drop-the-mesh").to_owned());
+                }
             }
         };
         let (doc, file) = if crate::app::platform::WRITES_FILES {
@@ -176,7 +195,8 @@ impl NewLesson {
                 .map_err(|e| format!("{e:#}"))?;
             (doc, Some(file))
         } else {
-            let doc = lesson::parse_document(&text, &file.display().to_string(), Path::new("."))
+            let folder = lesson::Folder::of_page(session.given.clone());
+            let doc = lesson::parse_document_in(&text, &file.display().to_string(), &folder)
                 .map_err(|e| e.to_string())?;
             (doc, None)
         };

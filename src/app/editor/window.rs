@@ -66,7 +66,7 @@ impl Editor {
         self.words_for = None;
         self.marks = None;
         self.drags.clear();
-        match Edited::open(&session.source, file, None, session.lang) {
+        match Edited::open(&session.source, file, None, &session.given, session.lang) {
             Ok(doc) => {
                 if doc.recovery.is_some() {
                     self.open = true;
@@ -90,11 +90,12 @@ impl Editor {
         source: &str,
         file: Option<&std::path::Path>,
         text: String,
+        given: &crate::lesson::Given,
         lang: Lang,
     ) {
         self.words_for = None;
         self.marks = None;
-        match Edited::open(source, file, Some(text), lang) {
+        match Edited::open(source, file, Some(text), given, lang) {
             Ok(doc) => self.doc = Some(doc),
             Err(e) => self.said = Some(Err(e)),
         }

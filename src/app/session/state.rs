@@ -75,6 +75,9 @@ pub struct Session {
     /// Why a file dropped on the window (or page) did not open: shown until it is closed, a
     /// step is entered or something else opens.
     pub dropped_error: Option<String>,
+    /// The meshes dropped on the page, by name: where a lesson opened in a page finds the
+    /// meshes it names (a page cannot read a path).
+    pub given: crate::lesson::Given,
     /// Where the results come from: a worker thread, or (tests) this thread.
     worker: Option<RenderWorker>,
     /// Counts the steps entered: a view that frames or opens something per step resets when it
@@ -143,6 +146,7 @@ impl Session {
             lesson: None,
             reload_error: None,
             dropped_error: None,
+            given: crate::lesson::Given::new(),
             worker,
             step_entered: 0,
             step_generation: generation,
@@ -169,9 +173,12 @@ impl Session {
         let worker = self.worker.take();
         let lang = self.lang;
         let progress = std::mem::take(&mut self.progress);
+        // The meshes a page was given stay for the next lesson that names them.
+        let given = std::mem::take(&mut self.given);
         *self = Self::document_at(doc, source, worker, self.generation + 1);
         self.lang = lang;
         self.progress = progress;
+        self.given = given;
     }
 
     fn document_at(

@@ -8,14 +8,15 @@
 
 mod order;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use toml_edit::{DocumentMut, Item, Table, value};
 
+use super::folder::Folder;
 use super::record::{
     VIEW_KEYS, commented, document as parse, put_step, replace, step_table, steps_mut, view_items,
 };
-use super::script::{Lesson, parse_lesson};
+use super::script::{Lesson, parse_lesson_in};
 use super::{Diagnostics, Step};
 use crate::vocabulary::{Lang, Text};
 use order::{in_order, renumber};
@@ -92,7 +93,7 @@ pub struct Draft {
     revision: u64,
     /// The name diagnostics give the file, and the folder its meshes and shaders are read from.
     name: String,
-    base: PathBuf,
+    base: Folder,
 }
 
 impl Draft {
@@ -102,6 +103,15 @@ impl Draft {
     /// # Errors
     /// When `text` is not TOML or has no `[[steps]]`.
     pub fn new(text: &str, name: &str, base: &Path) -> Result<Self, String> {
+        Self::in_folder(text, name, Folder::on_disk(base))
+    }
+
+    /// A draft of the lesson file `text` whose files are read from `base` (a page's: the files
+    /// it was given).
+    ///
+    /// # Errors
+    /// When `text` is not TOML or has no `[[steps]]`.
+    pub fn in_folder(text: &str, name: &str, base: Folder) -> Result<Self, String> {
         let n = steps_of(&parse(text)?)?.len();
         let mut d = Self {
             now: State {
@@ -116,7 +126,7 @@ impl Draft {
             next_id: n as u64,
             revision: 0,
             name: name.to_owned(),
-            base: base.to_owned(),
+            base,
         };
         d.mark_saved();
         Ok(d)
@@ -164,7 +174,7 @@ impl Draft {
     /// # Errors
     /// The diagnostics, file:line:column, when the text is not a valid lesson.
     pub fn lesson(&self) -> Result<Lesson, Diagnostics> {
-        parse_lesson(&self.now.text, &self.name, &self.base)
+        parse_lesson_in(&self.now.text, &self.name, &self.base)
     }
 
     /// Whether the text differs from the last save.

@@ -1,7 +1,7 @@
 //! What a step asks of the student, checked when the lesson is read: `expect = …` and
 //! `tolerance`, the value its question asks to type; `exercise = { … }`, code to write.
 
-use std::path::Path;
+use crate::lesson::folder::Folder;
 
 use toml::Spanned;
 
@@ -114,7 +114,7 @@ impl Checker<'_> {
 
     /// A step's `exercise`: the task in both languages, a starter that compiles (its messages
     /// point into the lesson or the shader's file), a tolerance of 0 to 255 colour steps.
-    pub(super) fn exercise(&mut self, e: &Spanned<RawExercise>, base: &Path) -> Option<Exercise> {
+    pub(super) fn exercise(&mut self, e: &Spanned<RawExercise>, base: &Folder) -> Option<Exercise> {
         let r = e.get_ref();
         let task = self.text_of("task", &r.task);
         let starter = super::super::validate::shaders::shader(self, &r.starter, base)?;

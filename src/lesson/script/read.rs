@@ -4,6 +4,8 @@
 
 use std::path::Path;
 
+use crate::lesson::folder::Folder;
+
 use pipeline::buffers::BufferKind;
 use toml::Spanned;
 
@@ -94,6 +96,14 @@ pub fn is_lesson(text: &str) -> bool {
 /// # Errors
 /// Every problem found, each with its position.
 pub fn parse_lesson(text: &str, file: &str, base: &Path) -> Result<Lesson, Diagnostics> {
+    parse_lesson_in(text, file, &Folder::on_disk(base))
+}
+
+/// Parses and validates lesson text, the files it names read from `base`.
+///
+/// # Errors
+/// Every problem found, each with its position.
+pub fn parse_lesson_in(text: &str, file: &str, base: &Folder) -> Result<Lesson, Diagnostics> {
     let raw: RawLessonFile = super::super::parse_toml(text, file)?;
     let scene = super::super::validate::scene(&raw.scene, text, file, base);
     let mut c = Checker::new(text, file);
@@ -200,7 +210,7 @@ impl Checker<'_> {
         })
     }
 
-    fn step(&mut self, s: &Spanned<RawStep>, spec: &mut SceneSpec, base: &Path) -> Step {
+    fn step(&mut self, s: &Spanned<RawStep>, spec: &mut SceneSpec, base: &Folder) -> Step {
         let r = s.get_ref();
         let title = self.text_of("title", &r.title);
         let narration = self.text_of("narration", &r.narration);

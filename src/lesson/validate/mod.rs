@@ -11,8 +11,8 @@ mod render;
 pub mod shaders;
 mod shapes;
 
+use super::folder::{File, Folder};
 use std::ops::Range;
-use std::path::Path;
 
 use glam::Vec3;
 use pipeline::camera::{Camera, Projection};
@@ -169,53 +169,16 @@ impl<'a> Checker<'a> {
         Diagnostic::at(self.file, self.text, at..at, "").line
     }
 
-    /// The file `written` names, resolved against `base` (the lesson's folder); if there is no
-    /// such file, a diagnostic with the resolved path, the rule, and a similar name in that
-    /// folder if there is one.
-    pub(super) fn file_beside(
+    /// The file `written` names, read from `base` (the lesson's folder, or the files a page
+    /// was given); if there is none, a diagnostic saying where it was looked for, the rule, and
+    /// a similar name there if there is one.
+    pub(super) fn read_beside(
         &mut self,
         span: Range<usize>,
-        base: &Path,
+        base: &Folder,
         written: &str,
-    ) -> Option<std::path::PathBuf> {
-        let path = base.join(written);
-        if path.is_file() {
-            return Some(path);
-        }
-        let resolved = std::path::absolute(&path).unwrap_or_else(|_| path.clone());
-        let here = if base.as_os_str().is_empty() {
-            Path::new(".")
-        } else {
-            base
-        };
-        let folder = std::path::absolute(here).unwrap_or_else(|_| here.to_path_buf());
-        let files = path
-            .parent()
-            .and_then(|dir| std::fs::read_dir(dir).ok())
-            .into_iter()
-            .flatten()
-            .filter_map(|e| e.ok()?.file_name().into_string().ok())
-            .collect::<Vec<_>>();
-        let wanted = path
-            .file_name()
-            .map(|f| f.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        use pipeline::shader::suggest;
-        let hint = suggest::nearest(&wanted, files.iter().map(String::as_str))
-            .map(|n| {
-                let beside = Path::new(written).with_file_name(n);
-                suggest::hint(&beside.display().to_string(), suggest::Quote::Value)
-            })
-            .unwrap_or_default();
-        self.error(
-            span,
-            format!(
-                "there is no file {} (paths are relative to the folder of the lesson or scene file, {}){hint}",
-                resolved.display(),
-                folder.display()
-            ),
-        );
-        None
+    ) -> Option<File> {
+        base.read(written).map_err(|e| self.error(span, e)).ok()
     }
 
     /// A finite number, else a diagnostic naming the key.
@@ -278,7 +241,7 @@ pub fn scene(
     raw: &Spanned<RawScene>,
     text: &str,
     file: &str,
-    base: &Path,
+    base: &Folder,
 ) -> Result<SceneSpec, Diagnostics> {
     let mut c = Checker::new(text, file);
     let s = raw.get_ref();

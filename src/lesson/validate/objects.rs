@@ -12,6 +12,7 @@ use pipeline::texture::{CubeMap, Displacement, Environment, SurfaceDetail, Textu
 use toml::Spanned;
 
 use super::{Checker, triple};
+use crate::lesson::folder::Folder;
 use crate::lesson::raw::{RawColor, RawMaterial, RawMesh, RawMeshTable, RawObject, RawScale};
 use crate::vocabulary::Text;
 
@@ -19,7 +20,7 @@ pub(super) fn object(
     c: &mut Checker<'_>,
     o: &Spanned<RawObject>,
     index: usize,
-    base: &Path,
+    base: &Folder,
 ) -> Option<(Object, Option<Text>)> {
     let raw = o.get_ref();
     let (mut mesh, source) = mesh(c, &raw.mesh, base)?;
@@ -109,7 +110,7 @@ pub(super) fn object(
 }
 
 /// Bump, normal and displacement maps of an object.
-fn surface_maps(c: &mut Checker<'_>, o: &Spanned<RawObject>, object: &mut Object, base: &Path) {
+fn surface_maps(c: &mut Checker<'_>, o: &Spanned<RawObject>, object: &mut Object, base: &Folder) {
     let raw = o.get_ref();
     if let Some(bump) = &raw.bump {
         let b = bump.get_ref();
@@ -200,7 +201,7 @@ fn surface_maps(c: &mut Checker<'_>, o: &Spanned<RawObject>, object: &mut Object
 fn mesh(
     c: &mut Checker<'_>,
     m: &Spanned<RawMesh>,
-    base: &Path,
+    base: &Folder,
 ) -> Option<(Mesh, Option<BuiltinMesh>)> {
     let span = m.span();
     let table = match m.get_ref() {
@@ -250,9 +251,12 @@ fn mesh(
 }
 
 /// The OBJ file `written`, relative to the lesson's folder `base`.
-fn load_obj(c: &mut Checker<'_>, span: Range<usize>, base: &Path, written: &str) -> Option<Mesh> {
-    let path = c.file_beside(span.clone(), base, written)?;
-    match Mesh::load_obj(&path) {
+fn load_obj(c: &mut Checker<'_>, span: Range<usize>, base: &Folder, written: &str) -> Option<Mesh> {
+    let file = c.read_beside(span.clone(), base, written)?;
+    let name = Path::new(&file.shown)
+        .file_name()
+        .map_or_else(|| file.shown.clone(), |n| n.to_string_lossy().into_owned());
+    match Mesh::parse_obj(&mut &*file.bytes, &file.shown, &name) {
         Ok(m) => Some(m),
         Err(e) => {
             c.error(span, e.to_string());
@@ -396,7 +400,7 @@ fn material(c: &mut Checker<'_>, m: &Spanned<RawMaterial>) -> Material {
 }
 
 /// A built-in texture by name, or an image file relative to the scene file.
-fn texture(c: &mut Checker<'_>, t: &Spanned<String>, base: &Path) -> Option<Texture> {
+fn texture(c: &mut Checker<'_>, t: &Spanned<String>, base: &Folder) -> Option<Texture> {
     match t.get_ref().as_str() {
         "checkerboard" => Some(Texture::checkerboard(512, 16)),
         "checkerboard_wide" => Some(Texture::checker_cells("checkerboard_wide", (512, 128), 32)),
@@ -406,7 +410,10 @@ fn texture(c: &mut Checker<'_>, t: &Spanned<String>, base: &Path) -> Option<Text
         "relief" => Some(Texture::relief(512, 256, 64)),
         "relief_normals" => Some(Texture::relief_normals(512, 256, 64, 6.0)),
         "bump_normals" => Some(Texture::bump_normals(512, 8, 6.0)),
-        written => match Texture::load(&c.file_beside(t.span(), base, written)?) {
+        written => match c
+            .read_beside(t.span(), base, written)
+            .map(|f| Texture::decode(&f.shown, &f.bytes))?
+        {
             Ok(t) => Some(t),
             Err(e) => {
                 c.error(

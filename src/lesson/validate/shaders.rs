@@ -5,7 +5,6 @@
 //! file it is in.
 
 use std::ops::Range;
-use std::path::Path;
 use std::sync::Arc;
 
 use std::collections::BTreeMap;
@@ -17,6 +16,7 @@ use toml::Spanned;
 
 use super::Checker;
 use crate::lesson::Diagnostic;
+use crate::lesson::folder::Folder;
 use crate::lesson::raw::{RawShader, RawUniformValue};
 
 /// The endings of a shader file's name: a value ending so (on one line) names a file.
@@ -32,7 +32,7 @@ enum Origin {
 }
 
 /// One stage's source, read from its file or taken as written.
-fn source(c: &mut Checker<'_>, v: &Spanned<String>, base: &Path) -> Option<(String, Origin)> {
+fn source(c: &mut Checker<'_>, v: &Spanned<String>, base: &Folder) -> Option<(String, Origin)> {
     let written = v.get_ref();
     let one_line = !written.trim().contains('\n');
     if one_line
@@ -40,11 +40,14 @@ fn source(c: &mut Checker<'_>, v: &Spanned<String>, base: &Path) -> Option<(Stri
             .iter()
             .any(|e| written.trim().ends_with(e))
     {
-        let path = c.file_beside(v.span(), base, written.trim())?;
-        return match std::fs::read_to_string(&path) {
-            Ok(text) => Some((text, Origin::File(path.display().to_string()))),
-            Err(e) => {
-                c.error(v.span(), format!("cannot read {}: {e}", path.display()));
+        let file = c.read_beside(v.span(), base, written.trim())?;
+        return match String::from_utf8(file.bytes.to_vec()) {
+            Ok(text) => Some((text, Origin::File(file.shown))),
+            Err(_) => {
+                c.error(
+                    v.span(),
+                    format!("cannot read {}: it is not UTF-8 text", file.shown),
+                );
                 None
             }
         };
@@ -62,7 +65,7 @@ fn source(c: &mut Checker<'_>, v: &Spanned<String>, base: &Path) -> Option<(Stri
 pub(in crate::lesson) fn shader(
     c: &mut Checker<'_>,
     raw: &Spanned<RawShader>,
-    base: &Path,
+    base: &Folder,
 ) -> Option<StudentCode> {
     let r = raw.get_ref();
     if r.vertex.is_none()

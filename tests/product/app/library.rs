@@ -112,18 +112,22 @@ fn a_dropped_lesson_opens_from_its_bytes_and_a_broken_one_says_where() {
     h.get_by_label("×").click();
     h.run_steps(2);
     assert!(h.state().session.dropped_error.is_none());
-    // A mesh dropped on the page (no path on disk) is not read as a lesson: the message says
-    // where a mesh opens; it goes when a step is entered.
+    // A broken mesh dropped on the page (no path on disk) is read as a mesh, not as a lesson:
+    // the message says which line is wrong; it goes when a step is entered.
     h.input_mut().dropped_files.push(Arc::new(Dropped {
         path: PathBuf::from("bunny.obj"),
-        bytes: b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n".to_vec(),
+        bytes: b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n".to_vec(),
     }));
     h.run_steps(4);
     let error = h.state().session.dropped_error.clone().unwrap_or_default();
     assert!(
         error.starts_with("bunny.obj could not be opened")
-            && error.contains("\nbunny.obj: a mesh becomes a new lesson in the desktop app"),
+            && error.contains("\nbunny.obj:4: `7`: v index 7, but the file has 3 `v` line(s)"),
         "{error}"
+    );
+    assert!(
+        h.state().session.given.is_empty(),
+        "a broken mesh is not kept"
     );
     assert_eq!(lesson_id(&h), "07-rasterization");
     h.key_press(egui::Key::ArrowRight);
@@ -155,6 +159,108 @@ fn a_dropped_lesson_opens_from_its_bytes_and_a_broken_one_says_where() {
         let error = h.state().session.dropped_error.clone().unwrap_or_default();
         assert!(error.contains(said), "{name}: {error}");
     }
+}
+
+/// A triangle with a colour at each corner, as an OBJ file (`v x y z r g b`).
+const TRIANGLE_OBJ: &[u8] = b"v -1 -1 0 1 0 0\nv 1 -1 0 0 1 0\nv 0 1 0 0 0 1\nf 1 2 3\n";
+
+/// Lesson 07, its triangle the mesh `mesh` names.
+fn lesson_07_on(mesh: &str) -> String {
+    std::fs::read_to_string(crate::support::repo().join("lessons/07-rasterization.toml"))
+        .expect("the lesson file")
+        .replacen("mesh = \"triangle\"", &format!("mesh = \"{mesh}\""), 1)
+}
+
+/// The mesh of the object named "triangle" in the scene on screen.
+fn triangle_mesh(h: &Harness<'_, PipelensApp>) -> (String, usize) {
+    let spec = &h.state().session.spec;
+    let names = spec.scene.objects.iter().map(|o| o.name.as_str());
+    let k = names
+        .clone()
+        .position(|n| n == "triangle")
+        .unwrap_or_else(|| panic!("no triangle among {:?}", names.collect::<Vec<_>>()));
+    let mesh = &spec.scene.objects[k].mesh;
+    (mesh.name.clone(), mesh.positions.len())
+}
+
+/// A mesh dropped on the page (a name and bytes: a page cannot read a path) is read as a mesh
+/// and offered as a new lesson in the editor; a lesson dropped after it, or with it, that
+/// names it opens on it; a lesson naming a mesh the page was not given says which it has.
+#[test]
+fn a_mesh_dropped_on_the_page_is_kept_for_the_lessons_that_name_it() {
+    let mut h = lesson_harness(None);
+    h.run_steps(3);
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("tri.obj"),
+        bytes: TRIANGLE_OBJ.to_vec(),
+    }));
+    h.run_steps(4);
+    assert!(h.state().session.dropped_error.is_none());
+    assert!(h.state().session.given.contains_key("tri.obj"));
+    // Offered as a new lesson: the editor is open on "New lesson", the mesh filled in.
+    assert!(
+        h.query_by_label("Make the lesson").is_some(),
+        "the editor offers a lesson"
+    );
+    assert!(
+        h.query_all_by_value("tri.obj").count() >= 1,
+        "the mesh's name is filled in"
+    );
+    h.key_press(egui::Key::Escape);
+    h.run_steps(2);
+    // A lesson naming it, dropped after it.
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("mine.toml"),
+        bytes: lesson_07_on("tri.obj").into_bytes(),
+    }));
+    h.run_steps(4);
+    assert!(
+        h.state().session.dropped_error.is_none(),
+        "{:?}",
+        h.state().session.dropped_error
+    );
+    assert_eq!(lesson_id(&h), "07-rasterization");
+    assert_eq!(triangle_mesh(&h), ("tri.obj".to_owned(), 3));
+    // A lesson and its mesh dropped together (the lesson first): the mesh is read first.
+    let quad = b"v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n";
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("again.toml"),
+        bytes: lesson_07_on("./quad.obj")
+            .replacen("color = \"vertex\"", "color = [1, 1, 1]", 1)
+            .into_bytes(),
+    }));
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("quad.obj"),
+        bytes: quad.to_vec(),
+    }));
+    h.run_steps(4);
+    assert!(
+        h.state().session.dropped_error.is_none(),
+        "{:?}",
+        h.state().session.dropped_error
+    );
+    assert_eq!(triangle_mesh(&h), ("quad.obj".to_owned(), 4));
+    // A lesson naming a mesh the page was not given: which it has, and how to give it.
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("third.toml"),
+        bytes: lesson_07_on("models/trj.obj").into_bytes(),
+    }));
+    h.run_steps(4);
+    let error = h.state().session.dropped_error.clone().unwrap_or_default();
+    assert!(
+        error.starts_with("third.toml could not be opened")
+            && error.contains(
+                "there is no file models/trj.obj among the files dropped on the page (quad.obj, tri.obj): \
+                 a page cannot read a path, so drop trj.obj on the page with the lesson"
+            )
+            && error.contains("\"models/tri.obj\""),
+        "{error}"
+    );
+    assert_eq!(
+        triangle_mesh(&h),
+        ("quad.obj".to_owned(), 4),
+        "the lesson open keeps running"
+    );
 }
 
 #[test]

@@ -414,6 +414,18 @@ impl Texture {
         Self::from_image(&shown, &img)
     }
 
+    /// Decodes a PNG or JPEG file's bytes (a file a page was given); `shown` names it.
+    ///
+    /// # Errors
+    /// A [`TextureError`] naming `shown`.
+    pub fn decode(shown: &str, bytes: &[u8]) -> Result<Self, TextureError> {
+        let img = image::load_from_memory(bytes).map_err(|e| TextureError::Image {
+            path: shown.to_owned(),
+            reason: e.to_string(),
+        })?;
+        Self::from_image(shown, &img)
+    }
+
     /// Level `k` as an image (top row first), for display and export.
     #[must_use]
     pub fn level_image(&self, k: usize) -> RgbaImage {
