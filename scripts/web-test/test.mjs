@@ -8,7 +8,8 @@
 //     reached the same way;
 //  4. (see 0) the frame times the page reports in <html data-frame-ms>;
 //  5. a lesson file dropped on the page opens, is edited (a step deleted, the edit kept in the
-//     page's storage) and saved as a download;
+//     page's storage) and saved as a download; 5c. a mesh dropped on the page becomes a new
+//     lesson through the editor, and a lesson dropped with the mesh it names opens on it;
 //  6. the shader lesson runs the student's GLSL in the page, and S opens the shader panel;
 //  7. a typed answer (lesson 14's mip level) is checked, kept in the page's local storage, and
 //     still there after a reload.
@@ -360,6 +361,36 @@ if (await waitForTitle(zh2, /^pipelens — 07-rasterization — 第 1\/6 步$/, 
   await zh2.waitForTimeout(1500);
   const after = await zh2.evaluate(() => localStorage.getItem("pipelens-unsaved:my-lesson.toml.unsaved"));
   check(after === null, "saved: nothing is kept as unsaved any more");
+}
+
+// 5c. A mesh dropped on the page is read as a mesh (a page cannot read a path): the lesson
+// editor opens on "New lesson" from it, and "Make the lesson" opens a lesson on it; a lesson
+// dropped with the mesh it names opens on that mesh.
+const mesh = await open("?lesson=07-rasterization", "mesh");
+if (await waitForTitle(mesh, /^pipelens — 07-rasterization — step 1\/6$/, "lesson 07 opens for the mesh drop")) {
+  await mesh.waitForTimeout(2000);
+  const drop = (files) => mesh.evaluate((fs) => {
+    const dt = new DataTransfer();
+    for (const [name, text] of fs) dt.items.add(new File([text], name, { type: "text/plain" }));
+    const canvas = document.getElementById("pipelens");
+    canvas.dispatchEvent(new DragEvent("dragover", { dataTransfer: dt, bubbles: true, cancelable: true }));
+    canvas.dispatchEvent(new DragEvent("drop", { dataTransfer: dt, bubbles: true, cancelable: true }));
+  }, files);
+  await drop([["tetra.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"]]);
+  await mesh.waitForTimeout(3000);
+  await mesh.screenshot({ path: `${out}/mesh-dropped.png` });
+  // The editor at the right edge: under the built-in lesson's three-line note, "New lesson…"
+  // unfolded, "from a mesh dropped on the page" chosen, tetra.obj, the name, and the button.
+  await mesh.mouse.click(1528, 356);
+  if (await waitForTitle(mesh, /^pipelens — my-lesson — step 1\/1$/, "Make the lesson opens a new lesson on the dropped mesh")) {
+    await mesh.waitForTimeout(2000);
+    await mesh.screenshot({ path: `${out}/mesh-lesson.png` });
+  }
+  const tri = "v -1 -1 0 1 0 0\nv 1 -1 0 0 1 0\nv 0 1 0 0 0 1\nf 1 2 3\n";
+  const on = text.replace('mesh = "triangle"', 'mesh = "tri.obj"');
+  check(on !== text, "lesson 07's triangle is named as a mesh file for the drop");
+  await drop([["on-tri.toml", on], ["tri.obj", tri]]);
+  await waitForTitle(mesh, /^pipelens — 07-rasterization — step 1\/6$/, "a lesson dropped with the mesh it names opens");
 }
 
 // 6. The shader lesson: GLSL compiled by naga and run by pipelens' interpreter in the page; S

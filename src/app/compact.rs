@@ -54,12 +54,14 @@ impl PipelensApp {
         });
     }
 
-    /// Whether the step has code to show: a lab, a step that names the shader's lines or
-    /// draws a variable over the frame or opens the shader panel, or the code already open.
+    /// Whether the step has code to show: a lab, a scene that runs GLSL (a step of lesson 24
+    /// whose narration asks for an edit), a step that names the shader's lines or draws a
+    /// variable over the frame or opens the shader panel, or the code already open.
     fn code_tab_offered(&self) -> bool {
         let step = self.session.lesson.as_ref().map(|p| p.current());
         self.panels.shader
             || self.session.current_exercise().is_some()
+            || self.session.spec.scene.has_shaders()
             || self.session.selection.watch.is_some()
             || step.is_some_and(|s| {
                 s.shader_lines.is_some()

@@ -104,6 +104,14 @@ fn type_text(h: &mut Harness<'_, PipelensApp>, text: &str) {
 /// source's top and the key row's), then sideways until its end is, and taps just past its end:
 /// as a student puts the cursor there.
 fn tap_at_the_end_of(h: &mut Harness<'_, PipelensApp>, todo: &str, (top, bottom): (f32, f32)) {
+    let row = into_sight(h, todo, (top, bottom));
+    // The first tap, just past the end of the TODO's line: the cursor goes to that line's end.
+    tap(h, Pos2::new(row.right() + 12.0, row.center().y));
+}
+
+/// Drags the code until the line holding `todo` is in sight between `top` and `bottom`, then
+/// sideways until its end is: the line's rect.
+fn into_sight(h: &mut Harness<'_, PipelensApp>, todo: &str, (top, bottom): (f32, f32)) -> Rect {
     // Drag the code up until the TODO's line is in sight above the key row.
     for _ in 0..12 {
         let row = row_of(h, todo);
@@ -134,8 +142,7 @@ fn tap_at_the_end_of(h: &mut Harness<'_, PipelensApp>, todo: &str, (top, bottom)
         row.right() + 20.0 < SCREEN[0],
         "a drag sideways scrolled the line's end into sight: {row:?}"
     );
-    // The first tap, just past the end of the TODO's line: the cursor goes to that line's end.
-    tap(h, Pos2::new(row.right() + 12.0, row.center().y));
+    row
 }
 
 /// Lesson 10's specular lab on a 390×844 phone, by touch alone: the student opens the Code tab
@@ -245,5 +252,99 @@ fn lesson_10_s_lab_is_solved_on_a_phone_by_touch() {
             .shader_editor
             .fragment
             .contains("if (n_dot_l > 0.0)")
+    );
+}
+
+/// The frame's highlight: its pixels whose blue is over 140 of 255, more than the ambient and
+/// diffuse terms can give the sphere's blue (c = 0.25: 0.25·(0.2·0.2 + 0.8·1) = 0.21 of the
+/// white light, 54 of 255, or 127 sRGB-encoded): only the specular term reaches it.
+fn highlight(h: &Harness<'_, PipelensApp>) -> usize {
+    let capture = h.state().session.capture.as_ref().expect("a frame");
+    capture
+        .image(pipeline::buffers::BufferKind::Color)
+        .pixels()
+        .filter(|p| p.0[2] > 140)
+        .count()
+}
+
+/// Runs frames until the one on screen is of the code as it is now.
+fn settle(h: &mut Harness<'_, PipelensApp>) {
+    for _ in 0..40 {
+        h.run_steps(5);
+        if !h.state().session.rendering() {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+    h.run_steps(4);
+}
+
+/// Lesson 24's first edit on a 390×844 phone, by touch: the step runs GLSL, so the Code tab is
+/// there; the student drags the code until `float p = 8.0;` is in sight, taps between the `8`
+/// and the `.`, deletes the `8` and types `200` (the narration's "Try 200 in the panel"), and
+/// the Picture tab shows the highlight shrunk: the area where max(n·h, 0)^p stays above a
+/// level is a cap of angular radius θ with cos θ = level^(1/p), 1 − cos θ ≈ −ln(level)/p, so
+/// its area falls as 1/p: from p = 8 to p = 200 to about 1/25 (asserted: under 1/4).
+#[test]
+fn lesson_24_s_exponent_is_edited_on_a_phone_by_touch() {
+    let path = crate::support::repo().join("lessons/24-shader-programs.toml");
+    let mut h = super::sized_lesson_harness(&path, SCREEN);
+    super::touch(&mut h, Pos2::new(2.0, 2.0));
+    super::go_to_step_titled(&mut h, "Edit: change the exponent");
+    settle(&mut h);
+    let before = highlight(&h);
+    assert!(before > 200, "p = 8: a wide highlight ({before} pixels)");
+
+    let code_tab = rect_of(&h, "Code").center();
+    tap(&mut h, code_tab);
+    h.run_steps(4);
+    assert!(h.state().panels.shader, "one tap opens the code");
+    let source = rect_of(&h, "Fragment shader: source");
+    let keys = rect_of(&h, ";");
+    let line = "float p = 8.0;";
+    let row = into_sight(&mut h, line, (source.top(), keys.top()));
+    // The row is the line's text in a monospace font: the gap after the `8` is found by its
+    // characters.
+    let text = h
+        .get_by(|n| {
+            n.role() == egui::accesskit::Role::TextRun
+                && n.value().is_some_and(|v| v.contains(line))
+        })
+        .value()
+        .unwrap_or_default();
+    let chars = text.chars().count() as f32;
+    let eight = text[..text.find("8.0").expect("the 8")].chars().count() as f32 + 1.0;
+    tap(
+        &mut h,
+        Pos2::new(row.left() + row.width() * eight / chars, row.center().y),
+    );
+    for pressed in [true, false] {
+        h.input_mut().events.push(Event::Key {
+            key: Key::Backspace,
+            physical_key: None,
+            pressed,
+            repeat: false,
+            modifiers: Modifiers::NONE,
+        });
+    }
+    h.run_steps(1);
+    type_text(&mut h, "200");
+    assert!(
+        h.state()
+            .shader_editor
+            .fragment
+            .contains("float p = 200.0;"),
+        "the 8 became 200 where it was tapped:\n{}",
+        h.state().shader_editor.fragment
+    );
+    settle(&mut h);
+    let picture_tab = rect_of(&h, "Picture").center();
+    tap(&mut h, picture_tab);
+    settle(&mut h);
+    assert!(!h.state().panels.shader, "the picture is back");
+    let after = highlight(&h);
+    assert!(
+        after * 4 < before,
+        "p = 200's highlight is a fraction of p = 8's: {after} pixels against {before}"
     );
 }
