@@ -16,7 +16,9 @@
 //  8. a lab (lesson 07's inside test) passes, is kept over a reload, and Download my work gives
 //     the file that the native `pipelens grade` ($PIPELENS_BIN) passes;
 //  9. on a phone (390×844, touch) the picture covers half the page or more, and a swipe across
-//     the narration sheet goes to the next step; landscape and tablet screenshots; 9c. a lab on
+//     the narration sheet goes to the next step; at 360×640, 844×390, 768×1024 and 820×1180 the
+//     picture's share, and on each no text under 12 CSS pixels and no control under 44 (as the
+//     app measures them and reports on the page); 9c. a lab on
 //     a phone: the Code tab with the verdict in sight, a source with line breaks typed as a
 //     phone's keyboard sends it, passed, the Picture tab;
 // 10b. the debugger's variable picture (lesson 24 step 8) is the view's picture at 1920×1080 and
@@ -608,11 +610,29 @@ if (await waitForTitle(mat, /^pipelens — 25-lab-model-projection — step 3\/5
   check(/25-lab-model-projection[^)]*passed:\[3\]/.test(kept), `the rotation lab passes and is kept (${at < 0 ? "not in the storage" : kept.slice(at, at + 120)})`);
 }
 
+/** The frame's smallest text and control in CSS pixels, as the app measures them from what
+ * egui laid out and reports on the page (`app::sizes`): the page has no AccessKit tree. */
+async function least(page) {
+  return page.evaluate(() => ({
+    text: Number(document.documentElement.dataset.leastText),
+    target: document.documentElement.dataset.leastTarget ?? "",
+  }));
+}
+/** On a touch screen no text under 12 CSS pixels and no control under 44 (issue 60). */
+async function fitsAFinger(page, what) {
+  const l = await least(page);
+  check(l.text >= 12, `${what}: no text under 12 CSS pixels (the smallest ${l.text})`);
+  check(Number.parseFloat(l.target) >= 44, `${what}: no control under 44 CSS pixels (the smallest ${l.target})`);
+}
+
 // 9. A phone, upright (390×844, touch): the bar is one row and the
 // narration a sheet under the picture, which covers at least half of the page; a finger swiped
-// leftwards across the sheet goes to the next step. On its side and on a tablet, screenshots
-// for a person to look at.
-for (const [w, h, name] of [[390, 844, "phone-portrait"], [844, 390, "phone-landscape"], [820, 1180, "tablet-portrait"]]) {
+// leftwards across the sheet goes to the next step. On its side and on tablets, screenshots
+// for a person to look at. On each, touched, no text under 12 CSS pixels and no control under
+// 44, and the picture's share of the page (the tour's first step: the picture over the
+// observer, both as wide as the page; at 360×640 the bar and the sheet leave the view half the
+// page; on tablets, whose upright screen the wide picture cannot fill, a third and more).
+for (const [w, h, name, share] of [[390, 844, "phone-portrait", 0.5], [360, 640, "phone-small", 0.4], [844, 390, "phone-landscape", 0.33], [768, 1024, "tablet-768", 0.35], [820, 1180, "tablet-portrait", 0.35]]) {
   // The phones as a phone's browser is (three device pixels a CSS pixel, the canvas that size);
   // the tablet at one, a tablet's canvas at two or three would be slow in SwiftShader.
   const device = w < 1000 && h < 1000
@@ -625,9 +645,10 @@ for (const [w, h, name] of [[390, 844, "phone-portrait"], [844, 390, "phone-land
   if (await waitForTitle(page, /^pipelens — 00-tour — step 1\/10$/, `the tour opens on a ${name.replace("-", " ")} (${w}×${h})`)) {
     await page.waitForTimeout(3000);
     await page.screenshot({ path: `${out}/${name}.png` });
+    const covers = Number(await page.evaluate(() => document.documentElement.dataset.pictureShare));
+    check(covers >= share, `the picture covers ${Math.round(covers * 100)} % of the ${name.replace("-", " ")}'s page (at least ${Math.round(share * 100)} %)`);
+    await fitsAFinger(page, `the tour at ${w}×${h}`);
     if (name === "phone-portrait") {
-      const share = Number(await page.evaluate(() => document.documentElement.dataset.pictureShare));
-      check(share >= 0.5, `the picture covers ${Math.round(share * 100)} % of the phone's page`);
       const canvas = await page.evaluate(() => [devicePixelRatio, document.getElementById("pipelens").width, document.getElementById("pipelens").height]);
       check(canvas[0] === 3 && canvas[1] === 1170 && canvas[2] === 2532,
         `the phone's canvas has its device pixels: ${canvas[1]}×${canvas[2]} at ${canvas[0]} a CSS pixel`);
@@ -697,6 +718,7 @@ const green = (r, g, b) => g > 190 && r > 90 && r < 160 && b > 90 && b < 160;
       before = colored(starter, PHONE_VERDICT, amber);
     }
     const notYet = await words(page);
+    await fitsAFinger(page, "the phone lab's Code tab");
     check(notYet.verdict.startsWith("Not yet") && before > 200,
       `with the code open the verdict is in sight above it, in amber (${before} pixels): "${notYet.verdict.slice(0, 40)}…"`);
     let passedWords = notYet;

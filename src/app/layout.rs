@@ -5,11 +5,15 @@
 /// The space left in `ui` cut in two with a gap: `(all, first, second)`, beside each other, or
 /// (in a portrait space, a phone's) one over the other. With the `aspect` of the image in the
 /// first part, it is as large as the image needs to fill the other side, but no more than two
-/// thirds; the second part (the observer, which renders at any aspect) takes the rest.
+/// thirds; the second part (the observer, which renders at any aspect) takes the rest. On a
+/// small screen a space about as high as wide is cut the way that gives the image more area
+/// (`stacks`): a 360-point phone's 640×400 picture is 320×200 over the observer, not 205×128
+/// beside it.
 pub(super) fn split(ui: &egui::Ui, aspect: Option<f32>) -> (egui::Rect, egui::Rect, egui::Rect) {
     let area = ui.available_rect_before_wrap();
     let gap = 8.0;
-    if area.height() > area.width() * 1.1 {
+    let small = super::window_size::is_compact(ui.ctx());
+    if area.height() > area.width() * 1.1 || (small && stacks(area.size(), aspect, gap)) {
         let height = area.height() - gap;
         let top = aspect.map_or(height / 2.0, |a| {
             (area.width() / a).clamp(height * 0.4, height * 0.64)
@@ -26,6 +30,24 @@ pub(super) fn split(ui: &egui::Ui, aspect: Option<f32>) -> (egui::Rect, egui::Re
     let left = egui::Rect::from_min_size(area.min, egui::vec2(left_width, area.height()));
     let right = egui::Rect::from_min_max(egui::pos2(left.right() + gap, area.top()), area.max);
     (area, left, right)
+}
+
+/// Whether an image of `aspect` gets more area over the second part than beside it, in a space
+/// of `size`, each cut as [`split`] cuts it.
+fn stacks(size: egui::Vec2, aspect: Option<f32>, gap: f32) -> bool {
+    let Some(a) = aspect.filter(|a| a.is_finite() && *a > 0.0) else {
+        return false;
+    };
+    // The image fitted into a part `w`×`h`: its area.
+    let fitted = |w: f32, h: f32| {
+        let (w, h) = (w.min(h * a), h.min(w / a));
+        w * h
+    };
+    let height = size.y - gap;
+    let over = fitted(size.x, (size.x / a).clamp(height * 0.4, height * 0.64));
+    let width = size.x - gap;
+    let beside = fitted((size.y * a).clamp(width * 0.4, width * 0.64), size.y);
+    over > beside
 }
 
 /// The room the panels at the right start with (see [`super::PipelensApp::room`]).

@@ -18,6 +18,7 @@ mod reload;
 pub mod selection;
 pub mod session;
 pub mod shortcuts;
+pub mod sizes;
 mod start;
 mod step_panels;
 mod style;

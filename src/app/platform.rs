@@ -57,10 +57,17 @@ impl Inbox {
 }
 
 /// Shows `title` as the window's title (the browser tab's in a page) when it changed; in a page
-/// also the latest frame's render time in milliseconds and the share of the page the picture
-/// covers, as `<html data-frame-ms="…" data-picture-share="…">`, for the browser test and the
-/// benchmark to read.
-pub fn report(ctx: &egui::Context, title: &str, frame_ms: Option<f64>, share: f32) {
+/// also the latest frame's render time in milliseconds, the share of the page the picture
+/// covers and the frame's smallest text and control in CSS pixels, as `<html
+/// data-frame-ms="…" data-picture-share="…" data-least-text="…" data-least-target="…">`, for
+/// the browser test and the benchmark to read.
+pub fn report(
+    ctx: &egui::Context,
+    title: &str,
+    frame_ms: Option<f64>,
+    share: f32,
+    least: super::sizes::Least,
+) {
     #[cfg(target_arch = "wasm32")]
     if let Some(root) = web_sys::window()
         .and_then(|w| w.document())
@@ -70,10 +77,23 @@ pub fn report(ctx: &egui::Context, title: &str, frame_ms: Option<f64>, share: f3
             let _ = root.set_attribute("data-frame-ms", &format!("{ms:.1}"));
         }
         let _ = root.set_attribute("data-picture-share", &format!("{share:.2}"));
+        let _ = root.set_attribute("data-least-text", &format!("{:.1}", least.text));
+        let r = least.target_rect;
+        let _ = root.set_attribute(
+            "data-least-target",
+            &format!(
+                "{:.1} at {:.0},{:.0} {:.0}×{:.0}",
+                least.target,
+                r.min.x,
+                r.min.y,
+                r.width(),
+                r.height()
+            ),
+        );
     }
     #[cfg(not(target_arch = "wasm32"))]
     {
-        let _ = share;
+        let _ = (share, least);
         log_frame(ctx, title, frame_ms);
     }
     let id = egui::Id::unique("pipelens-title");

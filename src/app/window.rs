@@ -63,6 +63,8 @@ pub struct PipelensApp {
     /// Where this frame drew words over the picture (a view's header, matrix card, legend),
     /// which must leave the subject clear too.
     pub overlays: Vec<egui::Rect>,
+    /// This frame's smallest text and control (`sizes`), which a page reports.
+    pub least: super::sizes::Least,
     pub(super) pixel_view: PixelView,
     pub(super) geometry_view: GeometryView,
     pub(super) observer_view: ObserverView,
@@ -108,6 +110,7 @@ impl PipelensApp {
             picture: Vec::new(),
             subject: Vec::new(),
             overlays: Vec::new(),
+            least: super::sizes::Least::default(),
             pixel_view: PixelView::default(),
             geometry_view: GeometryView::default(),
             observer_view: ObserverView::default(),
@@ -272,6 +275,7 @@ impl PipelensApp {
         }
         self.animate(ui.ctx());
         self.page_words(ui.ctx());
+        self.least = super::sizes::least(ui.ctx());
         // A parameter dragged (a slider, a number): drafts until the pointer is let go, then the
         // full frame.
         if !ui.ctx().input(|i| i.pointer.any_down()) {
@@ -549,7 +553,7 @@ impl eframe::App for PipelensApp {
         }
         let ms = self.session.times.map(|t| t.total().as_secs_f64() * 1e3);
         let share = self.picture_share(ui.ctx().content_rect());
-        platform::report(ui.ctx(), &self.title(), ms, share);
+        platform::report(ui.ctx(), &self.title(), ms, share, self.least);
     }
 
     /// Keeps the student's progress (eframe calls this on closing and every

@@ -337,10 +337,7 @@ pub fn card_part(
     };
     let how = crate::vocabulary::touch::for_device(how, session.touch);
     ui.label(RichText::new(how).size(style.size * 0.85));
-    let passed_before = session
-        .lesson
-        .as_ref()
-        .is_some_and(|p| session.progress.passed(&p.lesson, p.step));
+    let passed_before = passed_before(session);
     if let Some((verdict, color)) = verdict(session)
         && session.exercise.findings.difference.is_none()
     {
@@ -415,15 +412,20 @@ pub fn verdict(session: &Session) -> Option<(String, Color32)> {
     Some((words::verdict(d, lang), colour(d.passed())))
 }
 
+/// Whether the student passed the lab on screen on an earlier visit (kept in the progress).
+fn passed_before(session: &Session) -> bool {
+    session
+        .lesson
+        .as_ref()
+        .is_some_and(|p| session.progress.passed(&p.lesson, p.step))
+}
+
 /// The verdict as a strip over the code on a small screen's Code tab (`app::compact`), where
 /// the narration is out of sight: the words, or "Passed before." when the lab was passed on an
 /// earlier visit, or what it waits for.
 pub fn strip(ui: &mut Ui, session: &Session) {
     let lang = session.lang;
-    let passed_before = session
-        .lesson
-        .as_ref()
-        .is_some_and(|p| session.progress.passed(&p.lesson, p.step));
+    let passed_before = passed_before(session);
     let (text, color) = verdict(session).unwrap_or_else(|| {
         if passed_before {
             (lang.t("exercise-passed-before").to_owned(), PASSED)

@@ -85,6 +85,17 @@ fn every_control_is_big_enough_to_hit() {
                         .into_iter()
                         .map(|s| format!("{size:?} {name} step {}: {s}", step + 1)),
                 );
+                // What a page reports of the frame for the browser test, measured by the app
+                // from egui's widgets (a page has no AccessKit tree), agrees.
+                let own = h.state().least;
+                if own.target < least || !own.target.is_finite() {
+                    small.push(format!(
+                        "{size:?} {name} step {}: the app's own measure, {:.1} at {:?}",
+                        step + 1,
+                        own.target,
+                        own.target_rect
+                    ));
+                }
             }
         }
     }
