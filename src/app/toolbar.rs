@@ -44,7 +44,8 @@ impl PipelensApp {
         });
     }
 
-    /// The buffer and overlays (pixel stages), the depth ramp, the comparison, the observer.
+    /// The buffer and overlays (pixel stages), the depth ramp, the comparison, the observer; on
+    /// a small screen the geometry view's own buttons (Front view, Reset view, normals).
     pub(super) fn view_controls(
         &mut self,
         ui: &mut egui::Ui,
@@ -64,6 +65,13 @@ impl PipelensApp {
                 self.commands.push(c);
             }
             self.comparison_choice(ui);
+        }
+        // A small screen's geometry view has its buttons here, off the picture.
+        if let Some(space) = space
+            && super::window_size::is_compact(ui.ctx())
+        {
+            let c = self.geometry_view.view_buttons(ui, &self.session, space);
+            self.commands.extend(c);
         }
         if space.is_some() || sel.comparison.is_none() {
             let mut obs = sel.show_observer;

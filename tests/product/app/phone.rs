@@ -213,3 +213,46 @@ fn on_a_phone_no_text_is_under_12_points() {
         small.join("\n")
     );
 }
+
+/// On a phone the geometry view's own buttons (Front view, Reset view) are in the View menu,
+/// not a row of finger-sized buttons over the picture: on its side (844×390), lesson 05's
+/// clip step left the subject a corner under the matrix card, the header's two rows and the
+/// legend. Over the picture only the space's name stays; the View menu has both buttons.
+#[test]
+fn on_a_phone_the_geometry_view_s_buttons_are_in_the_view_menu() {
+    let path = crate::support::repo().join("lessons/05-perspective.toml");
+    for size in [[844.0, 390.0], [390.0, 844.0]] {
+        let mut h = super::sized_lesson_harness(&path, size);
+        super::touch(&mut h, Pos2::new(2.0, 2.0));
+        super::go_to_step(&mut h, 2);
+        h.run_steps(6);
+        assert_eq!(
+            h.state().session.selection.stage,
+            pipelens::vocabulary::Stage::Clip,
+            "lesson 05's third step is on the clip stage"
+        );
+        assert!(
+            h.query_by_label("Front view").is_none() && h.query_by_label("Reset view").is_none(),
+            "{size:?}: no view buttons over the picture"
+        );
+        h.get_by_label("View ▾").click();
+        h.run_steps(3);
+        assert!(
+            h.query_by_label("Reset view").is_some(),
+            "{size:?}: the View menu has Reset view"
+        );
+        h.get_by_label("Front view").click();
+        h.run_steps(4);
+        // The view's header is one card: the space's name, a row or two of words.
+        let header = h
+            .state()
+            .overlays
+            .first()
+            .copied()
+            .unwrap_or(egui::Rect::NOTHING);
+        assert!(
+            header.is_positive() && header.height() < 60.0,
+            "{size:?}: the header over the picture is the space's name alone: {header:?}"
+        );
+    }
+}

@@ -444,6 +444,12 @@ impl GeometryView {
             Color32::WHITE,
             (right - rect.left() - 30.0).max(size * 6.0),
         );
+        // On a small screen the view's buttons are in the View menu (`view_buttons`): a row of
+        // finger-sized buttons over a phone's picture covered its subject.
+        let small = crate::app::window_size::is_compact(ui.ctx());
+        if small && !animated {
+            return label;
+        }
         // Left of the matrix card, wrapped onto more rows when they do not fit.
         let buttons = Rect::from_min_size(
             Pos2::new(rect.left() + 8.0, label.bottom() + 6.0),
@@ -451,28 +457,8 @@ impl GeometryView {
         );
         let row = ui.scope_builder(egui::UiBuilder::new().max_rect(buttons), |ui| {
             ui.horizontal_wrapped(|ui| {
-                if ui.button(lang.t("geometry-front-view")).clicked() {
-                    (self.yaw, self.pitch) = (0.0, 0.0);
-                }
-                if ui
-                    .button(lang.t("geometry-reset-view"))
-                    .on_hover_text(lang.t("geometry-or-double-click-the-picture"))
-                    .clicked()
-                {
-                    *self = Self {
-                        reset_for: self.reset_for,
-                        ..Self::default()
-                    };
-                }
-                if space == Space::World {
-                    let mut on = session.selection.show_normals;
-                    if ui
-                        .checkbox(&mut on, lang.t("geometry-normals"))
-                        .on_hover_text(lang.t("geometry-each-vertex-s-normal-n"))
-                        .changed()
-                    {
-                        cmds.push(Command::View(ViewCommand::ToggleNormals));
-                    }
+                if !small {
+                    cmds.extend(self.view_buttons(ui, session, space));
                 }
                 if animated
                     && ui
@@ -487,6 +473,37 @@ impl GeometryView {
             .rect
         });
         label.union(row.inner)
+    }
+
+    /// The view's own buttons: Front view, Reset view, and in world space the normals. Over
+    /// the picture on a large screen (`header`); in the View menu on a small one.
+    pub fn view_buttons(&mut self, ui: &mut Ui, session: &Session, space: Space) -> Vec<Command> {
+        let lang = session.lang;
+        let mut cmds = Vec::new();
+        if ui.button(lang.t("geometry-front-view")).clicked() {
+            (self.yaw, self.pitch) = (0.0, 0.0);
+        }
+        if ui
+            .button(lang.t("geometry-reset-view"))
+            .on_hover_text(lang.t("geometry-or-double-click-the-picture"))
+            .clicked()
+        {
+            *self = Self {
+                reset_for: self.reset_for,
+                ..Self::default()
+            };
+        }
+        if space == Space::World {
+            let mut on = session.selection.show_normals;
+            if ui
+                .checkbox(&mut on, lang.t("geometry-normals"))
+                .on_hover_text(lang.t("geometry-each-vertex-s-normal-n"))
+                .changed()
+            {
+                cmds.push(Command::View(ViewCommand::ToggleNormals));
+            }
+        }
+        cmds
     }
 
     /// Drag to orbit, scroll to zoom toward the cursor, drag with the right button (or
