@@ -63,6 +63,20 @@ fn row_of(h: &Harness<'_, PipelensApp>, text: &str) -> Rect {
     .rect()
 }
 
+/// A key of the phone's keyboard pressed and let go (Enter, Backspace), and a frame run.
+fn press(h: &mut Harness<'_, PipelensApp>, key: Key) {
+    for pressed in [true, false] {
+        h.input_mut().events.push(Event::Key {
+            key,
+            physical_key: None,
+            pressed,
+            repeat: false,
+            modifiers: Modifiers::NONE,
+        });
+    }
+    h.run_steps(1);
+}
+
 /// Types `text` as a phone's keyboard and the key row do: each of the row's keys tapped on the
 /// row, a line break with Enter, the rest as the keyboard's text.
 fn type_text(h: &mut Harness<'_, PipelensApp>, text: &str) {
@@ -83,16 +97,7 @@ fn type_text(h: &mut Harness<'_, PipelensApp>, text: &str) {
             tap(h, at);
         } else if c == '\n' {
             flush(h, &mut plain);
-            for pressed in [true, false] {
-                h.input_mut().events.push(Event::Key {
-                    key: Key::Enter,
-                    physical_key: None,
-                    pressed,
-                    repeat: false,
-                    modifiers: Modifiers::NONE,
-                });
-            }
-            h.run_steps(1);
+            press(h, Key::Enter);
         } else {
             plain.push(c);
         }
@@ -318,16 +323,7 @@ fn lesson_24_s_exponent_is_edited_on_a_phone_by_touch() {
         &mut h,
         Pos2::new(row.left() + row.width() * eight / chars, row.center().y),
     );
-    for pressed in [true, false] {
-        h.input_mut().events.push(Event::Key {
-            key: Key::Backspace,
-            physical_key: None,
-            pressed,
-            repeat: false,
-            modifiers: Modifiers::NONE,
-        });
-    }
-    h.run_steps(1);
+    press(&mut h, Key::Backspace);
     type_text(&mut h, "200");
     assert!(
         h.state()
