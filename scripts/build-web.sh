@@ -7,9 +7,11 @@
 #                    page that is cross-origin isolated (nightly Rust, `+atomics,+bulk-memory`,
 #                    the standard library rebuilt with them: `-Z build-std`)
 # Installs what is missing first: the wasm32 target, the pinned nightly with its rust-src
-# (rustup), wasm-bindgen-cli at the version Cargo.lock pins (the CLI and the library must
-# agree exactly), and Binaryen's wasm-opt (npm, scripts/web-tools). PIPELENS_WEB_SIMD=0 builds without wasm SIMD (+simd128, on by default);
-# PIPELENS_WEB_THREADS=0 skips the threaded build. Prints each wasm's size, raw and gzipped.
+# (rustup), and wasm-bindgen-cli at the version Cargo.lock pins (the CLI and the library must
+# agree exactly). The two builds compile side by side: after a change to pipelens alone each is
+# mostly its one-unit link-time optimization, which runs on one core. PIPELENS_WEB_SIMD=0
+# builds without wasm SIMD (+simd128, on by default); PIPELENS_WEB_THREADS=0 skips the threaded
+# build. Prints each phase's time and each wasm's size, raw and gzipped.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-dist}
@@ -26,21 +28,16 @@ if [ "$threads" = 1 ] \
   echo "installing $nightly with rust-src (for the threaded build)"
   rustup toolchain install "$nightly" --profile minimal --component rust-src
 fi
-if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
-  echo "installing nodejs and npm (for Binaryen's wasm-opt)"
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get update -qq
-  apt-get install -y -qq --no-install-recommends nodejs npm >/dev/null
-fi
-if [ ! -x scripts/web-tools/node_modules/.bin/wasm-opt ]; then
-  echo "installing Binaryen's wasm-opt (scripts/web-tools)"
-  (cd scripts/web-tools && npm ci --no-audit --no-fund --silent)
-fi
 want=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/"/, "", $3); print $3; exit }' Cargo.lock)
 have=$(wasm-bindgen --version 2>/dev/null | awk '{ print $2 }' || true)
 if [ "$have" != "$want" ]; then
   echo "installing wasm-bindgen-cli $want (found: ${have:-none})"
-  cargo install --quiet wasm-bindgen-cli --version "$want"
+  # Optimized lightly, in parallel units, without link-time optimization: 1 min 51 s to
+  # compile on two cores instead of 14 min, and its output is the same bytes, as fast (1.3
+  # against 1.2 s on pipelens' wasm; BENCHMARKS.md).
+  CARGO_PROFILE_RELEASE_OPT_LEVEL=1 CARGO_PROFILE_RELEASE_CODEGEN_UNITS=16 \
+    CARGO_PROFILE_RELEASE_LTO=false CARGO_PROFILE_RELEASE_DEBUG=0 \
+    cargo install --quiet wasm-bindgen-cli --version "$want"
 fi
 
 simd=""
@@ -52,17 +49,22 @@ else
   suffix="-nosimd"
 fi
 
+started=$SECONDS
+took() { # took WHAT: prints WHAT with the minutes and seconds since the build started
+  local t=$((SECONDS - started))
+  printf '%s: %d min %02d s\n' "$1" $((t / 60)) $((t % 60))
+}
+
 # The `web` profile: one code unit optimized across crates, no debug tables (Cargo.toml).
-build() { # build NAME DIR: compiles, runs wasm-bindgen into DIR, prints the size
+# No Binaryen `wasm-opt -Os` pass after wasm-bindgen: through npm's binaryen.js it took 2 min
+# 25 s a build on two cores (8 min without SIMD), for a wasm 8 % smaller raw but 2 % larger
+# gzipped, as a host sends it (BENCHMARKS.md).
+bindgen() { # bindgen NAME DIR WASM: wasm-bindgen's glue and wasm into DIR, their sizes printed
   local name=$1 dir=$2 wasm
   # No function names: 1.5 MB that only a debugger reads (a panic's message still says where).
   wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section \
     --out-dir "$dir" "$3"
   wasm="$dir/pipelens_web_bg.wasm"
-  # Binaryen's size passes: 10.5 → 9.7 MB, the frame times unchanged (BENCHMARKS.md). The
-  # features are those the wasm declares (its target_features section).
-  node scripts/web-tools/node_modules/binaryen/bin/wasm-opt -Os "$wasm" -o "$wasm.opt"
-  mv "$wasm.opt" "$wasm"
   local raw gz
   raw=$(stat -c %s "$wasm")
   gz=$(gzip -9 -c "$wasm" | wc -c)
@@ -72,17 +74,18 @@ build() { # build NAME DIR: compiles, runs wasm-bindgen into DIR, prints the siz
 
 rm -rf "$out"
 mkdir -p "$out"
-CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C target-feature=+bulk-memory$simd" \
-  cargo build --quiet -p pipelens-web --profile web --target wasm32-unknown-unknown \
-  --target-dir "target/web$suffix"
-build "$out (one thread)" "$out" "target/web$suffix/wasm32-unknown-unknown/web/pipelens_web.wasm"
-
-if [ "$threads" = 1 ]; then
+one_thread_build() {
+  CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C target-feature=+bulk-memory$simd" \
+    cargo build --quiet -p pipelens-web --profile web --target wasm32-unknown-unknown \
+    --target-dir "target/web$suffix"
+  took "compiled the one-thread build"
+}
+threaded_build() {
   # Shared memory (imported, so that every worker gets the same), up to the 4 GiB a wasm32
   # address space has: a capture at 1080p with 4 samples is a quarter of a gigabyte, and a page
   # may hold several. The thread-local storage's symbols are what wasm-bindgen's thread
   # set-up calls in each worker.
-  link=""
+  local link="" arg
   for arg in --shared-memory --import-memory --max-memory=4294967296 --export=__wasm_init_tls \
     --export=__tls_size --export=__tls_align --export=__tls_base; do
     link="$link -C link-arg=$arg"
@@ -91,7 +94,22 @@ if [ "$threads" = 1 ]; then
     cargo "+$nightly" build --quiet -p pipelens-web --features threads --profile web \
     --target wasm32-unknown-unknown -Z build-std=panic_abort,std \
     --target-dir "target/web-threads$suffix"
-  build "$out/threads" "$out/threads" \
+  took "compiled the threaded build"
+}
+if [ "$threads" = 1 ]; then
+  threaded_build &
+  pending=$!
+  # A failed one-thread build leaves no compile behind it.
+  trap 'pkill -P "$pending" 2>/dev/null || true' EXIT
+  one_thread_build
+  # `wait` returns the background build's status: a failed compile stops here (set -e).
+  wait "$pending"
+else
+  one_thread_build
+fi
+bindgen "$out (one thread)" "$out" "target/web$suffix/wasm32-unknown-unknown/web/pipelens_web.wasm"
+if [ "$threads" = 1 ]; then
+  bindgen "$out/threads" "$out/threads" \
     "target/web-threads$suffix/wasm32-unknown-unknown/web/pipelens_web.wasm"
 fi
 
@@ -105,3 +123,4 @@ list() { # list FIND-ARGS...: the files, as "a","b"
 one=$(list ! -path './threads/*' ! -name index.html)
 threaded=$(list -path './threads/*')
 sed -e "s/@BUILD@/$version/" -e "s|\"@ONE@\"|$one|" -e "s|\"@THREADS@\"|$threaded|" web/sw.js >"$out/sw.js"
+took "built $out"
