@@ -34,10 +34,11 @@ if [ "$have" != "$want" ]; then
   echo "installing wasm-bindgen-cli $want (found: ${have:-none})"
   # Optimized lightly, in parallel units, without link-time optimization: 1 min 51 s to
   # compile on two cores instead of 14 min, and its output is the same bytes, as fast (1.3
-  # against 1.2 s on pipelens' wasm; BENCHMARKS.md).
+  # against 1.2 s on pipelens' wasm; BENCHMARKS.md). Forced: cargo skips a version it has
+  # installed before, even when its program was removed since.
   CARGO_PROFILE_RELEASE_OPT_LEVEL=1 CARGO_PROFILE_RELEASE_CODEGEN_UNITS=16 \
     CARGO_PROFILE_RELEASE_LTO=false CARGO_PROFILE_RELEASE_DEBUG=0 \
-    cargo install --quiet wasm-bindgen-cli --version "$want"
+    cargo install --quiet --force wasm-bindgen-cli --version "$want"
 fi
 
 simd=""
