@@ -307,6 +307,8 @@ geometry-nothing-to-show-in-this = nothing to show in this space
 geometry-front-view = Front view
 geometry-reset-view = Reset view
 geometry-or-double-click-the-picture = Or double-click the picture.
+geometry-legend = Legend
+geometry-legend-what = What the picture's colours and dashes mean: tap to show or hide it.
 geometry-normals = Normals
 geometry-each-vertex-s-normal-n = Each vertex's normal n in world space, the one lighting uses (n_world = (M^(−1))^T·n).
 geometry-replay-transition = ▶ Replay transition

@@ -301,6 +301,8 @@ geometry-nothing-to-show-in-this = 此空间中没有可显示的顶点
 geometry-front-view = 正视图
 geometry-reset-view = 重置视角
 geometry-or-double-click-the-picture = 或双击画面。
+geometry-legend = 图例
+geometry-legend-what = 图中各颜色与虚线的含义：点按以显示或隐藏。
 geometry-normals = 法线
 geometry-each-vertex-s-normal-n = 每个顶点在世界空间中的法线 n，即光照所用的法线（n_world = (M^(−1))^T·n）。
 geometry-replay-transition = ▶ 重播变换

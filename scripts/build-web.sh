@@ -13,6 +13,7 @@
 # builds without wasm SIMD (+simd128, on by default); PIPELENS_WEB_THREADS=0 skips the threaded
 # build. Prints each phase's time and each wasm's size, raw and gzipped.
 set -euo pipefail
+started=$SECONDS
 cd "$(dirname "$0")/.."
 out=${1:-dist}
 # The nightly the threaded build is made with: pinned, so that a new nightly cannot break it.
@@ -50,8 +51,7 @@ else
   suffix="-nosimd"
 fi
 
-started=$SECONDS
-took() { # took WHAT: prints WHAT with the minutes and seconds since the build started
+took() { # took WHAT: prints WHAT with the minutes and seconds since the script started
   local t=$((SECONDS - started))
   printf '%s: %d min %02d s\n' "$1" $((t / 60)) $((t % 60))
 }

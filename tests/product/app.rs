@@ -391,6 +391,46 @@ pub(crate) fn touch(h: &mut Harness<'_, PipelensApp>, pos: egui::Pos2) {
     }
 }
 
+/// A finger down at `from`, moved to `to` in steps, lifted: as a phone's browser sends it,
+/// touch events and the pointer events made of them. `from == to` is a tap.
+pub(crate) fn finger(h: &mut Harness<'_, PipelensApp>, from: egui::Pos2, to: egui::Pos2) {
+    let touch = |phase, pos| egui::Event::Touch {
+        device_id: egui::TouchDeviceId(1),
+        id: egui::TouchId(0),
+        phase,
+        pos,
+        force: None,
+    };
+    let button = |pos, pressed| egui::Event::PointerButton {
+        pos,
+        button: egui::PointerButton::Primary,
+        pressed,
+        modifiers: egui::Modifiers::NONE,
+    };
+    let events = &mut h.input_mut().events;
+    events.push(touch(egui::TouchPhase::Start, from));
+    events.push(egui::Event::PointerMoved(from));
+    events.push(button(from, true));
+    h.run_steps(1);
+    if from != to {
+        for k in 1..=6 {
+            let at = from + (to - from) * (k as f32 / 6.0);
+            h.input_mut().events.push(touch(egui::TouchPhase::Move, at));
+            h.input_mut().events.push(egui::Event::PointerMoved(at));
+            h.run_steps(1);
+        }
+    }
+    h.input_mut().events.push(touch(egui::TouchPhase::End, to));
+    h.input_mut().events.push(button(to, false));
+    h.input_mut().events.push(egui::Event::PointerGone);
+    h.run_steps(3);
+}
+
+/// A finger's tap at `at` ([`finger`] without a move).
+pub(crate) fn tap(h: &mut Harness<'_, PipelensApp>, at: egui::Pos2) {
+    finger(h, at, at);
+}
+
 pub(crate) fn sized_lesson_harness(
     path: &std::path::Path,
     size: [f32; 2],

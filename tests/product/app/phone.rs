@@ -2,7 +2,7 @@
 //! (landscape) the bar is one row, the narration a sheet under the picture, the picture at least
 //! half of the screen on every step of a lesson, and a swipe across the sheet moves the steps.
 
-use egui::{Event, Modifiers, PointerButton, Pos2};
+use egui::{Event, Modifiers, PointerButton, Pos2, Rect};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use pipelens::app::PipelensApp;
@@ -214,23 +214,29 @@ fn on_a_phone_no_text_is_under_12_points() {
     );
 }
 
+/// Lesson 05's clip step (its third) in a window of `size`, touched: a phone's.
+fn clip_step_touched(size: [f32; 2]) -> Harness<'static, PipelensApp> {
+    let path = crate::support::repo().join("lessons/05-perspective.toml");
+    let mut h = super::sized_lesson_harness(&path, size);
+    super::touch(&mut h, Pos2::new(2.0, 2.0));
+    super::go_to_step(&mut h, 2);
+    h.run_steps(6);
+    assert_eq!(
+        h.state().session.selection.stage,
+        pipelens::vocabulary::Stage::Clip,
+        "lesson 05's third step is on the clip stage"
+    );
+    h
+}
+
 /// On a phone the geometry view's own buttons (Front view, Reset view) are in the View menu,
 /// not a row of finger-sized buttons over the picture: on its side (844×390), lesson 05's
 /// clip step left the subject a corner under the matrix card, the header's two rows and the
 /// legend. Over the picture only the space's name stays; the View menu has both buttons.
 #[test]
 fn on_a_phone_the_geometry_view_s_buttons_are_in_the_view_menu() {
-    let path = crate::support::repo().join("lessons/05-perspective.toml");
     for size in [[844.0, 390.0], [390.0, 844.0]] {
-        let mut h = super::sized_lesson_harness(&path, size);
-        super::touch(&mut h, Pos2::new(2.0, 2.0));
-        super::go_to_step(&mut h, 2);
-        h.run_steps(6);
-        assert_eq!(
-            h.state().session.selection.stage,
-            pipelens::vocabulary::Stage::Clip,
-            "lesson 05's third step is on the clip stage"
-        );
+        let mut h = clip_step_touched(size);
         assert!(
             h.query_by_label("Front view").is_none() && h.query_by_label("Reset view").is_none(),
             "{size:?}: no view buttons over the picture"
@@ -255,4 +261,69 @@ fn on_a_phone_the_geometry_view_s_buttons_are_in_the_view_menu() {
             "{size:?}: the header over the picture is the space's name alone: {header:?}"
         );
     }
+}
+
+/// On a small screen the geometry view's legend is a chip at the view's bottom-right that a
+/// tap opens above itself and a second tap closes: on a landscape phone its five rows took a
+/// fifth of lesson 05's clip view, for a key the student reads once.
+#[test]
+fn on_a_small_screen_the_legend_is_a_chip_that_a_tap_opens() {
+    for size in [[844.0, 390.0], [390.0, 844.0]] {
+        let mut h = clip_step_touched(size);
+        let chip = h.get_by_label("Legend").rect();
+        let picture = h
+            .state()
+            .picture
+            .iter()
+            .copied()
+            .find(|p| p.contains_rect(chip))
+            .expect("the chip is on a picture");
+        assert!(
+            chip.width() >= 44.0 && chip.height() >= 44.0,
+            "{size:?}: the chip is a finger's target: {chip:?}"
+        );
+        assert!(
+            picture.right() - chip.right() < 20.0 && picture.bottom() - chip.bottom() < 20.0,
+            "{size:?}: the chip is at the view's bottom-right corner: {chip:?} in {picture:?}"
+        );
+        let legend = |h: &Harness<'_, PipelensApp>| {
+            h.state().overlays.get(2).copied().unwrap_or(Rect::NOTHING)
+        };
+        assert!(
+            legend(&h).area() < 1.2 * chip.area(),
+            "{size:?}: folded, the legend is the chip alone: {:?}",
+            legend(&h)
+        );
+        super::tap(&mut h, chip.center());
+        h.run_steps(4);
+        let open = legend(&h);
+        // Lesson 05's clip step shows drawn, clipped and outside triangles, the near and the
+        // far plane: five keys, one a row at least in a column, a few a row in a strip.
+        assert!(
+            open.contains_rect(h.get_by_label("Legend").rect()) && open.area() > 3.0 * chip.area(),
+            "{size:?}: a tap opens the legend over its chip: {open:?}"
+        );
+        assert!(
+            (h.get_by_label("Legend").rect().max - chip.max).length() < 1.0,
+            "{size:?}: the chip stays where it was as the legend opens above it"
+        );
+        super::tap(&mut h, chip.center());
+        h.run_steps(4);
+        assert!(
+            legend(&h).area() < 1.2 * chip.area(),
+            "{size:?}: a second tap folds it again: {:?}",
+            legend(&h)
+        );
+    }
+    // A desktop's view has the room: its legend is open, with no chip.
+    let path = crate::support::repo().join("lessons/05-perspective.toml");
+    let mut h = super::sized_lesson_harness(&path, [1366.0, 768.0]);
+    super::go_to_step(&mut h, 2);
+    h.run_steps(6);
+    assert!(h.query_by_label("Legend").is_none(), "no chip on a desktop");
+    let legend = h.state().overlays.get(2).copied().unwrap_or(Rect::NOTHING);
+    assert!(
+        legend.height() > 60.0,
+        "a desktop's legend shows its keys: {legend:?}"
+    );
 }

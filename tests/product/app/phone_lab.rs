@@ -4,51 +4,13 @@
 //! away, the messages never move the code, and the lab passes; the Picture tab brings the
 //! picture back.
 
-use egui::{Event, Key, Modifiers, PointerButton, Pos2, Rect, TouchDeviceId, TouchId, TouchPhase};
+use super::{finger, tap};
+use egui::{Event, Key, Modifiers, Pos2, Rect};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use pipelens::app::PipelensApp;
 
 const SCREEN: [f32; 2] = [390.0, 844.0];
-
-/// A finger down at `from`, moved to `to` in steps, lifted: as a phone's browser sends it,
-/// touch events and the pointer events made of them. `from == to` is a tap.
-fn finger(h: &mut Harness<'_, PipelensApp>, from: Pos2, to: Pos2) {
-    let touch = |phase, pos| Event::Touch {
-        device_id: TouchDeviceId(1),
-        id: TouchId(0),
-        phase,
-        pos,
-        force: None,
-    };
-    let button = |pos, pressed| Event::PointerButton {
-        pos,
-        button: PointerButton::Primary,
-        pressed,
-        modifiers: Modifiers::NONE,
-    };
-    let events = &mut h.input_mut().events;
-    events.push(touch(TouchPhase::Start, from));
-    events.push(Event::PointerMoved(from));
-    events.push(button(from, true));
-    h.run_steps(1);
-    if from != to {
-        for k in 1..=6 {
-            let at = from + (to - from) * (k as f32 / 6.0);
-            h.input_mut().events.push(touch(TouchPhase::Move, at));
-            h.input_mut().events.push(Event::PointerMoved(at));
-            h.run_steps(1);
-        }
-    }
-    h.input_mut().events.push(touch(TouchPhase::End, to));
-    h.input_mut().events.push(button(to, false));
-    h.input_mut().events.push(Event::PointerGone);
-    h.run_steps(3);
-}
-
-fn tap(h: &mut Harness<'_, PipelensApp>, at: Pos2) {
-    finger(h, at, at);
-}
 
 /// The rect of the widget named `label`.
 fn rect_of(h: &Harness<'_, PipelensApp>, label: &str) -> Rect {

@@ -1,16 +1,16 @@
-//! What the geometry view draws over the wireframe: the legend, the card with the stage's
-//! matrix, the selected vertex with its coordinates.
+//! What the geometry view draws over the wireframe: the card with the stage's matrix, the
+//! selected vertex with its coordinates (the legend is `legend.rs`).
 
-use crate::app::views::{picture_font, picture_mono, picture_scale};
+use crate::app::views::{picture_mono, picture_scale};
 use egui::{Align2, Color32, FontId, Pos2, Rect, Stroke, Vec2};
 use glam::Vec3;
 use pipeline::capture::FrameCapture;
 use pipeline::transform::{self, NamedMatrix};
 
 use crate::app::session::{Session, Teaching};
-use crate::app::views::{FATES, Projector, label_with_background, palette, place_label, typeset};
+use crate::app::views::{Projector, palette, place_label, typeset};
 use crate::spaces::position;
-use crate::vocabulary::{Lang, Space, num, vec3, vec4};
+use crate::vocabulary::{Space, num, vec3, vec4};
 
 /// The least size of the matrix card's digits (points): a phone's view is 340–380 points
 /// wide, and its reader holds it at arm's length.
@@ -29,145 +29,6 @@ fn card_type(ctx: &egui::Context, width: f32) -> f32 {
             .clamp(13.0, 24.0)
             .min(width / 36.0)
             .max(MATRIX_LEAST)
-    }
-}
-
-/// What the picture shows, so that the legend names only that.
-pub(super) struct Shown {
-    /// Which fates (by `fate_index`) some drawn triangle met.
-    pub fates: [bool; FATES.len()],
-    /// Every how many triangles one is drawn.
-    pub stride: usize,
-    /// Whether the triangles are dashed by their fate (few enough of them to be).
-    pub dashed: bool,
-    /// Whether the view volume's edges are drawn.
-    pub volume: bool,
-    /// Whether a light is drawn.
-    pub lights: bool,
-}
-
-/// The legend, measured before the picture is framed so that the subject can be framed clear
-/// of it: what each colour drawn means, one item a row (a column) or as many a row as the
-/// view's width holds (a strip along the foot).
-pub(super) struct Legend {
-    /// Each item's colour, words, and the fate whose dashes its line shows (by `fate_index`).
-    items: Vec<(Color32, &'static str, Option<usize>)>,
-    /// Each item's width (the widest's), its line and words.
-    item_w: f32,
-    row: f32,
-    /// "showing triangles 1/n" when only every n-th triangle is drawn.
-    note: Option<String>,
-}
-
-impl Legend {
-    /// The legend of what `shown` says is drawn.
-    pub(super) fn new(painter: &egui::Painter, shown: &Shown, lang: Lang) -> Self {
-        let stride = shown.stride;
-        let mut items: Vec<(Color32, &'static str, Option<usize>)> = FATES
-            .iter()
-            .zip(shown.fates)
-            .enumerate()
-            .filter(|(_, (_, drawn))| *drawn)
-            .map(|(k, ((color, name), _))| (*color, lang.t(name), shown.dashed.then_some(k)))
-            .collect();
-        if shown.volume {
-            items.push((palette::NEAR, lang.t("cards-near-plane"), None));
-            items.push((palette::FAR, lang.t("cards-far-plane"), None));
-        }
-        if shown.lights {
-            items.push((palette::LIGHT, lang.t("cards-light"), None));
-        }
-        let font = picture_font(painter.ctx(), 14.0);
-        let item_w = items
-            .iter()
-            .map(|(_, text, _)| {
-                let g = painter.layout_no_wrap((*text).to_owned(), font.clone(), Color32::WHITE);
-                g.size().x
-            })
-            .fold(0.0f32, f32::max)
-            + 40.0 * picture_scale(painter.ctx());
-        let note = (stride > 1 && !items.is_empty())
-            .then(|| format!("{} 1/{stride}", lang.t("cards-showing-triangles")));
-        Self {
-            items,
-            item_w,
-            row: font.size * 1.3,
-            note,
-        }
-    }
-
-    /// How many items a row holds in a strip `width` wide (at least one).
-    pub(super) fn per_row(&self, width: f32) -> usize {
-        ((width - 8.0) / self.item_w).floor().max(1.0) as usize
-    }
-
-    /// The legend's size with `per_row` items a row, its note below included; zero when it
-    /// has nothing to say.
-    pub(super) fn size(&self, per_row: usize) -> Vec2 {
-        if self.items.is_empty() {
-            return Vec2::ZERO;
-        }
-        let per_row = per_row.clamp(1, self.items.len());
-        let rows = self.items.len().div_ceil(per_row);
-        let note = if self.note.is_some() {
-            self.row + 6.0
-        } else {
-            0.0
-        };
-        Vec2::new(
-            self.item_w * per_row as f32 + 4.0,
-            self.row * rows as f32 + 8.0 + note,
-        )
-    }
-
-    /// Draws the legend in `at` (from [`Self::size`] with `per_row`); returns where it is.
-    pub(super) fn paint(&self, painter: &egui::Painter, at: Rect, per_row: usize) -> Rect {
-        if self.items.is_empty() {
-            return Rect::NOTHING;
-        }
-        let per_row = per_row.clamp(1, self.items.len());
-        let scale = picture_scale(painter.ctx());
-        let note = if self.note.is_some() {
-            self.row + 6.0
-        } else {
-            0.0
-        };
-        let back = Rect::from_min_max(at.min, at.max - Vec2::new(0.0, note));
-        painter.rect_filled(back, 4.0, Color32::from_black_alpha(150));
-        for (k, (color, text, fate)) in self.items.iter().enumerate() {
-            let (r, c) = (k / per_row, k % per_row);
-            let p = Pos2::new(
-                back.left() + 8.0 + self.item_w * c as f32,
-                back.top() + 4.0 + self.row * (r as f32 + 0.5),
-            );
-            // The line as the picture draws it: a fate's in its dashes, a little longer so
-            // that the pattern shows.
-            let ends = [p, p + Vec2::new(18.0 * scale, 0.0)];
-            palette::fate_segment(
-                painter,
-                ends,
-                Stroke::new(3.0, *color),
-                (*fate, scale * 0.8),
-            );
-            painter.text(
-                p + Vec2::new(24.0 * scale, 0.0),
-                Align2::LEFT_CENTER,
-                *text,
-                picture_font(painter.ctx(), 14.0),
-                Color32::from_gray(230),
-            );
-        }
-        match &self.note {
-            Some(note) => back.union(label_with_background(
-                painter,
-                back.left_bottom() + Vec2::new(0.0, 6.0),
-                Align2::LEFT_TOP,
-                note,
-                &picture_font(painter.ctx(), 13.0),
-                Color32::YELLOW,
-            )),
-            None => back,
-        }
     }
 }
 

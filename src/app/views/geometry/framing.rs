@@ -5,7 +5,7 @@
 use egui::{Pos2, Rect, Vec2};
 use glam::Vec3;
 
-use super::cards;
+use super::legend;
 use crate::vocabulary::Space;
 
 /// The step entered, the space, the orbit's yaw and pitch (their bits): while they stay the
@@ -110,13 +110,14 @@ impl SubjectBox {
 /// the view's own cards drawn last frame (`own`: the header, the matrix card, the legend) and
 /// of the narration card, with the legend where it leaves the largest one — one item a row
 /// below the matrix card or at the bottom-right, or a strip along the foot — of the places the
-/// narration card leaves in sight. Returns the rectangle and the legend's place and items a
+/// narration card leaves in sight; a legend folded into a chip (a small screen's) only at the
+/// foot, the chip at the bottom-right. Returns the rectangle and the legend's place and items a
 /// row; reports the share of the rectangle the narration card left.
 pub(super) fn clear_of_cards(
     ctx: &egui::Context,
     rect: Rect,
     own: &[Rect],
-    legend: &cards::Legend,
+    legend: &legend::Legend,
     aspect: f32,
 ) -> (Rect, (Rect, usize)) {
     let narration = super::super::card_placement::narration_card(ctx);
@@ -131,7 +132,7 @@ pub(super) fn clear_of_cards(
         .fold(rect.top() + 10.0, f32::max);
     let per_row = legend.per_row(rect.width() - 20.0);
     let strip = legend.size(per_row);
-    let places = [
+    let all_places = [
         (
             Rect::from_min_size(Pos2::new(right - column.x, top), column),
             1,
@@ -145,6 +146,14 @@ pub(super) fn clear_of_cards(
             per_row,
         ),
     ];
+    // A folded legend's chip is always at the bottom-right corner, where a student finds it
+    // from step to step; opened, the legend grows from there (a column or the strip along the
+    // foot), so that the chip stays under the finger.
+    let places = match legend.chip() {
+        Some(false) => &all_places[1..2],
+        Some(true) => &all_places[1..],
+        None => &all_places[..],
+    };
     let square = |legend: Rect, narration: Option<Rect>| {
         let mut all = vec![header, card, legend];
         all.extend(narration);

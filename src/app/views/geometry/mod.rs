@@ -6,14 +6,13 @@
 
 mod cards;
 mod framing;
+mod legend;
 
 use egui::{Align2, Color32, FontId, Pos2, Rect, Stroke, Ui, Vec2};
 use glam::Vec3;
 use pipeline::capture::FrameCapture;
 
-use super::{
-    FATES, Projector, draw_lights, fate_color, fate_index, palette, picture_font, wrapped_label,
-};
+use super::{Projector, draw_lights, fate_color, fate_index, palette, picture_font, wrapped_label};
 use crate::app::command::{SelectionCommand, ViewCommand};
 use crate::app::session::{Command, Session};
 use crate::spaces::{between, space_name, volume, world_into};
@@ -43,6 +42,8 @@ pub struct GeometryView {
     /// The square the framing camera's picture filled last frame: zooming toward the cursor
     /// keeps the point under it where it is.
     square: Option<Rect>,
+    /// Whether the legend, folded into a chip on a small screen, was opened.
+    legend_open: bool,
 }
 
 impl Default for GeometryView {
@@ -58,6 +59,7 @@ impl Default for GeometryView {
             cards: Vec::new(),
             seen: None,
             square: None,
+            legend_open: false,
         }
     }
 }
@@ -136,7 +138,7 @@ fn draw_triangles(
     cam: &Projector,
     capture: &FrameCapture,
     points: &[Option<Vec3>],
-    (subject, shown): (&[bool], &cards::Shown),
+    (subject, shown): (&[bool], &legend::Shown),
 ) -> Rect {
     let (stride, dashed) = (shown.stride, shown.dashed);
     let mut seen = Rect::NOTHING;
@@ -167,42 +169,6 @@ fn draw_triangles(
         }
     }
     seen
-}
-
-/// What the legend names: the fates of the triangles drawn (every `stride`-th, as many as
-/// [`MAX_TRIANGLES`] allows), the view
-/// volume when drawn, the lights when this space has the world's lights and one has a gizmo
-/// around the subject's `sphere`.
-fn shown(
-    capture: &FrameCapture,
-    space: Space,
-    sphere: Option<(Vec3, f32)>,
-    volume: bool,
-) -> cards::Shown {
-    let stride = capture.primitives.len().div_ceil(MAX_TRIANGLES).max(1);
-    let met = crate::spaces::fates_met(capture, stride);
-    let fates = met.map(|n| n > 0);
-    let patterned: usize = (0..FATES.len())
-        .filter(|&k| !crate::spaces::FATE_DASHES[k].is_empty())
-        .map(|k| met[k])
-        .sum();
-    let lights = match (world_into(capture, space), sphere) {
-        (Some(m), Some((centre, radius))) => {
-            let world_centre = m.inverse().transform_point3(centre);
-            capture
-                .lights
-                .iter()
-                .any(|l| l.gizmo(world_centre, radius.max(1e-3) * 2.0).is_some())
-        }
-        _ => false,
-    };
-    cards::Shown {
-        fates,
-        stride,
-        dashed: patterned <= MOST_DASHED,
-        volume,
-        lights,
-    }
 }
 
 /// The camera a geometry view draws through, with the framed sphere's radius and centre.
@@ -284,8 +250,8 @@ impl GeometryView {
         let framed_points = crate::spaces::framed_points(capture, [space, from], &subject);
         let sphere = crate::spaces::sphere_around(&framed_points);
         let view_volume = volume(capture, space).filter(|_| t >= 1.0);
-        let shown = shown(capture, space, sphere, view_volume.is_some());
-        let legend = cards::Legend::new(&painter, &shown, lang);
+        let shown = legend::shown(capture, space, sphere, view_volume.is_some());
+        let legend = legend::Legend::for_view(ui, &painter, &shown, (self.legend_open, lang));
         let keys = self.navigate(ui, &response, self.square.unwrap_or(rect));
         let mut cmds: Vec<Command> = vertex_keys(keys, session, capture).into_iter().collect();
         let in_view = (rect, own.as_slice(), &legend);
@@ -336,7 +302,11 @@ impl GeometryView {
             right: header.right(),
         };
         let title = self.header(ui, &painter, &header, session, capture, &mut cmds);
+        let chip = legend.chip_at(legend_at.0);
         let legend = legend.paint(&painter, legend_at.0, legend_at.1);
+        if legend::chip(ui, chip, lang) {
+            self.legend_open = !self.legend_open;
+        }
         self.cards = vec![title, card.unwrap_or(Rect::NOTHING), legend];
         let moved = |a: &Rect, b: &Rect| (a.min - b.min).length() + (a.max - b.max).length() > 0.5;
         if own.len() != self.cards.len() || own.iter().zip(&self.cards).any(|(a, b)| moved(a, b)) {
@@ -373,7 +343,7 @@ impl GeometryView {
         (session, capture): (&Session, &FrameCapture),
         space: Space,
         mut points: Vec<Vec3>,
-        (rect, own, legend): (Rect, &[Rect], &cards::Legend),
+        (rect, own, legend): (Rect, &[Rect], &legend::Legend),
     ) -> (Option<Framed>, (Rect, usize)) {
         let key = (
             session.step_entered,
@@ -490,6 +460,7 @@ impl GeometryView {
         {
             *self = Self {
                 reset_for: self.reset_for,
+                legend_open: self.legend_open,
                 ..Self::default()
             };
         }
