@@ -187,9 +187,11 @@ layout-resize-panel = Resize panel: { $panel }
 ## src/app/library.rs
 
 library-could-not-be-opened = { $file } could not be opened; what was open keeps running:
-library-not-a-kind-pipelens-opens = { $name }: pipelens opens lessons and scenes (.toml), shaders (.vert, .frag, .glsl) and meshes (.obj), not .{ $extension } files
+library-not-a-kind-pipelens-opens = { $name }: pipelens opens lessons and scenes (.toml), shaders (.vert, .frag, .glsl), meshes (.obj) and textures (.png, .jpg), not .{ $extension } files
 library-not-text = the file is not UTF-8 text: drop a lesson or scene .toml file
 library-shader-not-text = { $name } is not UTF-8 text
+library-a-texture-on-the-desktop = { $name }: a texture is read by the lesson that names it (texture = "{ $name }"), from the lesson's folder: open that lesson instead
+library-texture-kept = { $name } is kept for the lessons that name it (texture = "{ $name }"): drop such a lesson now, or a lesson and its textures together.
 library-cannot-read-the-file = cannot read the file: { $why }
 library-lessons = Lessons
 library-all-right = all right
@@ -197,7 +199,7 @@ library-d-n-questions-you-answered = d/n: questions you answered right, of those
 library-edit-this-lesson-or-make = Edit this lesson, or make one… (R)
 library-record-what-is-on-screen = Record what is on screen as steps, word them in both languages, arrange them, save the file
 library-your-own-lesson-or-scene = Your own lesson or scene: drop its .toml file on the window; it reloads when you save it.
-library-your-own-lesson-or-scene-2 = Your own lesson or scene: drop its .toml file on the page, with the meshes (.obj) it names; a mesh dropped alone becomes a new lesson. A page cannot watch files: after an edit, drop it again.
+library-your-own-lesson-or-scene-2 = Your own lesson or scene: drop its .toml file on the page, with the meshes (.obj) and textures (.png, .jpg) it names; a mesh dropped alone becomes a new lesson. A page cannot watch files: after an edit, drop it again.
 library-open-another-built-in-lesson = Open another built-in lesson
 
 ## src/app/platform.rs

@@ -181,9 +181,11 @@ layout-resize-panel = 调整面板大小：{ $panel }
 ## src/app/library.rs
 
 library-could-not-be-opened = 无法打开 { $file }；已打开的内容继续运行：
-library-not-a-kind-pipelens-opens = { $name }：pipelens 打开课程和场景（.toml）、着色器（.vert、.frag、.glsl）和网格（.obj），不打开 .{ $extension } 文件
+library-not-a-kind-pipelens-opens = { $name }：pipelens 打开课程和场景（.toml）、着色器（.vert、.frag、.glsl）、网格（.obj）和纹理（.png、.jpg），不打开 .{ $extension } 文件
 library-not-text = 该文件不是 UTF-8 文本：请拖入课程或场景的 .toml 文件
 library-shader-not-text = { $name } 不是 UTF-8 文本
+library-a-texture-on-the-desktop = { $name }：纹理由引用它的课程（texture = "{ $name }"）从课程所在的文件夹读取：请改为打开那节课程
+library-texture-kept = 已保留 { $name }，供引用它的课程使用（texture = "{ $name }"）：现在拖放这样的课程，或把课程和它的纹理一起拖放。
 library-cannot-read-the-file = 无法读取文件：{ $why }
 library-lessons = 课程
 library-all-right = 全对
@@ -191,7 +193,7 @@ library-d-n-questions-you-answered = d/n：需要填写数值的思考题中你�
 library-edit-this-lesson-or-make = 编辑本课程或新建课程…（R）
 library-record-what-is-on-screen = 把屏幕上的内容录制为步骤，用两种语言撰写文字，调整顺序，保存文件
 library-your-own-lesson-or-scene = 自己的课程或场景：把它的 .toml 文件拖放到窗口上；保存后自动重新加载。
-library-your-own-lesson-or-scene-2 = 自己的课程或场景：把它的 .toml 文件连同它用到的网格（.obj）一起拖放到页面上；单独拖放的网格会成为一节新课程。网页无法监视文件：修改后请重新拖放。
+library-your-own-lesson-or-scene-2 = 自己的课程或场景：把它的 .toml 文件连同它用到的网格（.obj）和纹理（.png、.jpg）一起拖放到页面上；单独拖放的网格会成为一节新课程。网页无法监视文件：修改后请重新拖放。
 library-open-another-built-in-lesson = 打开另一个内置课程
 
 ## src/app/platform.rs

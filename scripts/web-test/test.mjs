@@ -373,7 +373,10 @@ if (await waitForTitle(mesh, /^pipelens — 07-rasterization — step 1\/6$/, "l
   await mesh.waitForTimeout(2000);
   const drop = (files) => mesh.evaluate((fs) => {
     const dt = new DataTransfer();
-    for (const [name, text] of fs) dt.items.add(new File([text], name, { type: "text/plain" }));
+    // A file's text, or its bytes as an array of numbers (a picture).
+    for (const [name, body] of fs) {
+      dt.items.add(new File([typeof body === "string" ? body : new Uint8Array(body)], name));
+    }
     const canvas = document.getElementById("pipelens");
     canvas.dispatchEvent(new DragEvent("dragover", { dataTransfer: dt, bubbles: true, cancelable: true }));
     canvas.dispatchEvent(new DragEvent("drop", { dataTransfer: dt, bubbles: true, cancelable: true }));
@@ -393,6 +396,17 @@ if (await waitForTitle(mesh, /^pipelens — 07-rasterization — step 1\/6$/, "l
   check(on !== text, "lesson 07's triangle is named as a mesh file for the drop");
   await drop([["on-tri.toml", on], ["tri.obj", tri]]);
   await waitForTitle(mesh, /^pipelens — 07-rasterization — step 1\/6$/, "a lesson dropped with the mesh it names opens");
+  // And one dropped with the texture it names (a PNG: a page cannot read its path either).
+  const grid = new PNG({ width: 8, height: 8 });
+  for (let k = 0; k < 64; k++) grid.data.set((k + (k >> 3)) % 2 ? [230, 60, 40, 255] : [250, 240, 200, 255], 4 * k);
+  const lesson13 = readFileSync(new URL("../../lessons/13-texture-mapping.toml", import.meta.url), "utf8");
+  const textured = lesson13.replace('texture = "uv_grid"', 'texture = "textures/mine.png"');
+  check(textured !== lesson13, "lesson 13's cube names a PNG file for the drop");
+  await drop([["textured.toml", textured], ["mine.png", [...PNG.sync.write(grid)]]]);
+  if (await waitForTitle(mesh, /^pipelens — 13-texture-mapping — step 1\/7$/, "a lesson dropped with the texture it names opens")) {
+    await mesh.waitForTimeout(2500);
+    await mesh.screenshot({ path: `${out}/texture-dropped.png` });
+  }
 }
 
 // 6. The shader lesson: GLSL compiled by naga and run by pipelens' interpreter in the page; S

@@ -118,19 +118,32 @@ impl PipelensApp {
         }
     }
 
-    /// Under the bar: why the file on disk no longer loads, why a dropped file did not open
-    /// (each with × to close it), what an export did.
+    /// Under the bar: why the file on disk no longer loads, why a dropped file did not open,
+    /// what an export or a kept file did — each with × to close it.
     pub(super) fn bar_messages(&mut self, ui: &mut egui::Ui, lang: Lang) {
+        let bad = (Color32::LIGHT_RED, true);
         // A dropped file's message names the file itself (`library.rs`).
         let said = [
-            self.session
-                .reload_error
-                .as_ref()
-                .map(|e| format!("{}\n{e}", lang.t("chrome-the-file-changed-on-disk"))),
-            self.session.dropped_error.clone(),
+            self.session.reload_error.as_ref().map(|e| {
+                (
+                    format!("{}\n{e}", lang.t("chrome-the-file-changed-on-disk")),
+                    bad,
+                )
+            }),
+            self.session.dropped_error.clone().map(|e| (e, bad)),
+            self.note.as_ref().map(|(ok, words)| {
+                let color = if *ok {
+                    Color32::LIGHT_GREEN
+                } else {
+                    Color32::LIGHT_RED
+                };
+                (words.clone(), (color, false))
+            }),
         ];
-        for (k, words) in said.into_iter().enumerate() {
-            let Some(words) = words else { continue };
+        for (k, said) in said.into_iter().enumerate() {
+            let Some((words, (color, mono))) = said else {
+                continue;
+            };
             let closed = ui
                 .horizontal_top(|ui| {
                     let close = ui
@@ -138,28 +151,19 @@ impl PipelensApp {
                         .on_hover_text(lang.t("chrome-close-this-message"))
                         .clicked();
                     // Wrapped to the window: on a phone a line of it was cut off at the edge.
-                    ui.add(
-                        egui::Label::new(
-                            RichText::new(words).monospace().color(Color32::LIGHT_RED),
-                        )
-                        .wrap(),
-                    );
+                    let text = RichText::new(words).color(color);
+                    let text = if mono { text.monospace() } else { text };
+                    ui.add(egui::Label::new(text).wrap());
                     close
                 })
                 .inner;
             if closed {
                 match k {
                     0 => self.session.reload_error = None,
-                    _ => self.session.dropped_error = None,
+                    1 => self.session.dropped_error = None,
+                    _ => self.note = None,
                 }
             }
-        }
-        if let Some((ok, msg)) = &self.export_message {
-            ui.label(RichText::new(msg).color(if *ok {
-                Color32::LIGHT_GREEN
-            } else {
-                Color32::LIGHT_RED
-            }));
         }
     }
 

@@ -93,7 +93,7 @@ impl PipelensApp {
             .and_then(|html| {
                 super::platform::download(&name, html.as_bytes(), "text/html", (&opts.out, lang))
             });
-        self.export_message = Some(match result {
+        self.note = Some(match result {
             Ok(file) => (
                 true,
                 lang.t_with("export-task-handout-saved", &[("file", &file)]),
@@ -136,7 +136,7 @@ impl PipelensApp {
             return;
         };
         let lang = self.session.lang;
-        self.export_message = Some(match result {
+        self.note = Some(match result {
             Ok(files) => (
                 true,
                 lang.t_with(
@@ -176,7 +176,7 @@ impl PipelensApp {
         let result = work.to_text().and_then(|text| {
             super::platform::download(&name, text.as_bytes(), "application/toml", (&dir, lang))
         });
-        self.export_message = Some(match result {
+        self.note = Some(match result {
             Ok(file) => (
                 true,
                 lang.t_with(

@@ -94,7 +94,7 @@ impl PipelensApp {
     /// (`.vert`, `.frag`) goes into the shader panel instead — a student's saved exercise code
     /// loaded back — and runs when it compiles. A mesh (`.obj`) becomes a new lesson in the
     /// editor; in the browser it is also kept for the lessons dropped with it or after it that
-    /// name it.
+    /// name it, as a texture (`.png`, `.jpg`) is.
     pub(super) fn open_dropped(&mut self, ctx: &egui::Context) {
         let dropped = ctx.input(|i| i.raw.dropped_files.clone());
         for file in dropped {
@@ -104,6 +104,13 @@ impl PipelensApp {
                 |n| n.to_string_lossy().into_owned(),
             );
             if let Some(why) = not_opened(&name, self.session.lang) {
+                self.refused(&name, &why);
+            } else if path.is_absolute() && is_texture(&name) {
+                // On the desktop a lesson reads its texture from beside it.
+                let why = self
+                    .session
+                    .lang
+                    .t_with("library-a-texture-on-the-desktop", &[("name", &name)]);
                 self.refused(&name, &why);
             } else if path.is_absolute() && is_mesh(&name) {
                 // A mesh of one's own: a new lesson on it, in the editor.
@@ -120,12 +127,17 @@ impl PipelensApp {
             }
         }
         let mut read = self.inbox.take();
-        // The meshes first: a lesson dropped with its mesh names it.
-        read.sort_by_key(|(name, _)| !is_mesh(name));
-        let with_lesson = read.iter().any(|(name, _)| !is_mesh(name));
+        // The meshes and textures first: a lesson dropped with them names them.
+        let named = |name: &str| is_mesh(name) || is_texture(name);
+        read.sort_by_key(|(name, _)| !named(name));
+        let with_lesson = read.iter().any(|(name, _)| !named(name));
         for (name, bytes) in read {
             if is_mesh(&name) {
                 self.keep_mesh(&name, bytes, !with_lesson);
+                continue;
+            }
+            if is_texture(&name) {
+                self.keep_texture(&name, bytes, !with_lesson);
                 continue;
             }
             if shader_stage(&name).is_some() {
@@ -155,23 +167,53 @@ impl PipelensApp {
         }
     }
 
-    /// Keeps a mesh dropped on the page for the lessons that name it, when it reads as one;
-    /// `offer`: the editor opens on a new lesson made from it (it was dropped alone).
-    fn keep_mesh(&mut self, name: &str, bytes: Result<Vec<u8>, String>, offer: bool) {
+    /// Keeps a file dropped on the page in the session's `given`, for the lessons dropped with
+    /// it or after it that name it, when `reads` reads its bytes (a mesh, a texture); says why
+    /// not otherwise. Whether it was kept.
+    fn keep_given(
+        &mut self,
+        name: &str,
+        bytes: Result<Vec<u8>, String>,
+        reads: impl FnOnce(&[u8]) -> Result<(), String>,
+    ) -> bool {
         let lang = self.session.lang;
-        let read = bytes.map_err(|e| cannot_read(&e, lang)).and_then(|b| {
-            pipeline::mesh::Mesh::parse_obj(&mut b.as_slice(), name, name)
-                .map(|_| b)
-                .map_err(|e| e.to_string())
-        });
+        let read = bytes
+            .map_err(|e| cannot_read(&e, lang))
+            .and_then(|b| reads(&b).map(|()| b));
         match read {
             Ok(bytes) => {
                 self.session.given.insert(name.to_owned(), bytes.into());
-                if offer {
-                    self.offer_lesson_from_mesh(name);
-                }
+                true
             }
-            Err(e) => self.refused(name, &e),
+            Err(e) => {
+                self.refused(name, &e);
+                false
+            }
+        }
+    }
+
+    /// Keeps a mesh dropped on the page when it reads as one; `offer`: the editor opens on a
+    /// new lesson made from it (it was dropped alone).
+    fn keep_mesh(&mut self, name: &str, bytes: Result<Vec<u8>, String>, offer: bool) {
+        let parse = |b: &[u8]| {
+            let mesh = pipeline::mesh::Mesh::parse_obj(&mut &b[..], name, name);
+            mesh.map(|_| ()).map_err(|e| e.to_string())
+        };
+        if self.keep_given(name, bytes, parse) && offer {
+            self.offer_lesson_from_mesh(name);
+        }
+    }
+
+    /// Keeps a texture (PNG, JPEG) dropped on the page when it decodes; `alone` (no lesson
+    /// dropped with it): a note under the bar says so, since nothing else on the screen changes.
+    fn keep_texture(&mut self, name: &str, bytes: Result<Vec<u8>, String>, alone: bool) {
+        let decode = |b: &[u8]| {
+            let texture = pipeline::texture::Texture::decode(name, b);
+            texture.map(|_| ()).map_err(|e| e.to_string())
+        };
+        if self.keep_given(name, bytes, decode) && alone {
+            let words = (self.session.lang).t_with("library-texture-kept", &[("name", &name)]);
+            self.note = Some((true, words));
         }
     }
 
@@ -274,6 +316,7 @@ impl PipelensApp {
     /// Puts `doc` (named `source`) in place of what is open; a file on disk is watched.
     pub(super) fn open(&mut self, doc: Document, source: &str, path: Option<std::path::PathBuf>) {
         self.session.open(doc, source);
+        self.note = None;
         self.panels = super::Panels::for_mode(self.presenting());
         self.watched = None;
         if let Some(path) = path {
@@ -284,8 +327,9 @@ impl PipelensApp {
 
 /// Why a file named `name` dropped on the window is not opened, when its kind is one pipelens
 /// does not open: a lesson or scene is a `.toml` file, a shader a `.vert`, `.frag` or
-/// pipeline-function `.glsl`, and a mesh (`.obj`) becomes a new lesson in the editor. A name
-/// without an extension is read as a lesson. Said in `lang`.
+/// pipeline-function `.glsl`, a mesh (`.obj`) becomes a new lesson in the editor, and a page
+/// keeps a texture (`.png`, `.jpg`) for the lesson that names it. A name without an extension
+/// is read as a lesson. Said in `lang`.
 fn not_opened(name: &str, lang: Lang) -> Option<String> {
     let lower = name.to_ascii_lowercase();
     let extension = std::path::Path::new(&lower)
@@ -293,12 +337,24 @@ fn not_opened(name: &str, lang: Lang) -> Option<String> {
         .and_then(|e| e.to_str())?
         .to_owned();
     match extension.as_str() {
-        "toml" | "vert" | "frag" | "glsl" | "obj" => None,
+        "toml" | "vert" | "frag" | "glsl" | "obj" | "png" | "jpg" | "jpeg" => None,
         _ => Some(lang.t_with(
             "library-not-a-kind-pipelens-opens",
             &[("name", &name), ("extension", &extension)],
         )),
     }
+}
+
+/// Whether the file named `name` is a texture pipelens decodes (`.png`, `.jpg`, `.jpeg`).
+fn is_texture(name: &str) -> bool {
+    std::path::Path::new(name)
+        .extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| {
+            ["png", "jpg", "jpeg"]
+                .iter()
+                .any(|t| e.eq_ignore_ascii_case(t))
+        })
 }
 
 /// Whether the file named `name` is a mesh (`.obj`).

@@ -76,7 +76,9 @@ pub struct PipelensApp {
     pub(super) classroom: bool,
     pub(super) export_dir: String,
     pub(super) export_result: Option<Receiver<Result<Vec<PathBuf>, String>>>,
-    pub(super) export_message: Option<(bool, String)>,
+    /// Under the bar, what an export or a kept file did: done (green) or not (red), until
+    /// closed or the next lesson opens.
+    pub(super) note: Option<(bool, String)>,
     /// Stops the export under way.
     pub(super) export_cancel: Option<crate::export::Cancel>,
     pub(super) commands: Vec<Command>,
@@ -122,7 +124,7 @@ impl PipelensApp {
             classroom: false,
             export_dir: "pipelens-export".to_owned(),
             export_result: None,
-            export_message: None,
+            note: None,
             export_cancel: None,
             commands: Vec::new(),
             step_opened: 0,

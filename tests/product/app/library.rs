@@ -133,20 +133,21 @@ fn a_dropped_lesson_opens_from_its_bytes_and_a_broken_one_says_where() {
     h.key_press(egui::Key::ArrowRight);
     h.run_steps(2);
     assert!(h.state().session.dropped_error.is_none());
-    // Nor is a picture.
+    // Nor is a picture of a kind a lesson cannot name (PNG and JPEG are textures: the test
+    // after this one).
     h.input_mut().dropped_files.push(Arc::new(Dropped {
-        path: PathBuf::from("brick.png"),
-        bytes: vec![0x89, b'P', b'N', b'G'],
+        path: PathBuf::from("brick.webp"),
+        bytes: b"RIFF\0\0\0\0WEBP".to_vec(),
     }));
     h.run_steps(4);
     let error = h.state().session.dropped_error.clone().unwrap_or_default();
-    assert!(error.contains("not .png files"), "{error}");
+    assert!(error.contains("not .webp files"), "{error}");
     // Each said in the language shown: a picture, a lesson and a shader that are not text.
     h.state_mut().session.lang = pipelens::vocabulary::Lang::ZH;
     for (name, said) in [
         (
-            "brick.png",
-            "无法打开 brick.png；已打开的内容继续运行：\nbrick.png：pipelens 打开课程和场景（.toml）",
+            "brick.webp",
+            "无法打开 brick.webp；已打开的内容继续运行：\nbrick.webp：pipelens 打开课程和场景（.toml）",
         ),
         ("broken.toml", "该文件不是 UTF-8 文本"),
         ("mine.frag", "mine.frag 不是 UTF-8 文本"),
@@ -353,5 +354,108 @@ fn a_dropped_depth_test_loads_into_its_tab_and_runs() {
         h.query_by_label_contains("Passed: all 256000 pixels match")
             .is_some(),
         "the dropped depth test runs and passes"
+    );
+}
+
+/// A PNG `w`×`h` of one colour, as a file's bytes.
+fn png(w: u32, h: u32) -> Vec<u8> {
+    let img = image::RgbaImage::from_pixel(w, h, image::Rgba([200, 40, 40, 255]));
+    let mut bytes = std::io::Cursor::new(Vec::new());
+    img.write_to(&mut bytes, image::ImageFormat::Png)
+        .expect("a PNG encodes");
+    bytes.into_inner()
+}
+
+/// The texture of the object named "cube" in the scene on screen: its name and size.
+fn cube_texture(h: &Harness<'_, PipelensApp>) -> Option<(String, [f32; 2])> {
+    let spec = &h.state().session.spec;
+    let cube = spec.scene.objects.iter().find(|o| o.name == "cube")?;
+    let t = cube.texture.as_ref()?;
+    let size = t.levels.first()?.size();
+    Some((t.name.clone(), [size.x, size.y]))
+}
+
+/// In a page a texture cannot be read from a path: dropped on it, it is kept for the lessons
+/// that name it (alone, a note under the bar says so and how to use it; it goes away when the
+/// lesson opens); dropped together with its lesson, it is read first. A file that does not
+/// decode is refused with the decoder's words.
+#[test]
+fn a_texture_dropped_on_the_page_is_kept_for_the_lessons_that_name_it() {
+    let lesson_13_on = |texture: &str| {
+        std::fs::read_to_string(crate::support::repo().join("lessons/13-texture-mapping.toml"))
+            .expect("the lesson file")
+            .replacen(
+                "texture = \"uv_grid\"",
+                &format!("texture = \"{texture}\""),
+                1,
+            )
+    };
+    let mut h = lesson_harness(None);
+    h.run_steps(3);
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("mine.png"),
+        bytes: png(4, 2),
+    }));
+    h.run_steps(4);
+    assert!(
+        h.state().session.dropped_error.is_none(),
+        "{:?}",
+        h.state().session.dropped_error
+    );
+    assert!(h.state().session.given.contains_key("mine.png"));
+    assert!(
+        h.query_by_label_contains("mine.png is kept for the lessons that name it")
+            .is_some(),
+        "a note says the texture is kept"
+    );
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("mine.toml"),
+        bytes: lesson_13_on("textures/mine.png").into_bytes(),
+    }));
+    h.run_steps(4);
+    assert!(
+        h.state().session.dropped_error.is_none(),
+        "{:?}",
+        h.state().session.dropped_error
+    );
+    assert_eq!(lesson_id(&h), "13-texture-mapping");
+    assert_eq!(cube_texture(&h), Some(("mine.png".to_owned(), [4.0, 2.0])));
+    assert!(
+        h.query_by_label_contains("is kept for the lessons")
+            .is_none(),
+        "the note went away when the lesson opened"
+    );
+    // A lesson dropped with its texture (the lesson first in the drop).
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("again.toml"),
+        bytes: lesson_13_on("./wide.png").into_bytes(),
+    }));
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("wide.png"),
+        bytes: png(8, 2),
+    }));
+    h.run_steps(4);
+    assert_eq!(cube_texture(&h), Some(("wide.png".to_owned(), [8.0, 2.0])));
+    assert!(
+        h.query_by_label_contains("is kept for the lessons")
+            .is_none(),
+        "no note when the lesson came with it"
+    );
+    // Bytes that are no image.
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: PathBuf::from("broken.png"),
+        bytes: b"not a picture".to_vec(),
+    }));
+    h.run_steps(4);
+    let error = h.state().session.dropped_error.clone().unwrap_or_default();
+    assert!(
+        error.starts_with("broken.png could not be opened") && error.contains("broken.png"),
+        "{error}"
+    );
+    assert!(!h.state().session.given.contains_key("broken.png"));
+    assert_eq!(
+        lesson_id(&h),
+        "13-texture-mapping",
+        "the lesson keeps running"
     );
 }
