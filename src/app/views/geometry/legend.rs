@@ -64,7 +64,7 @@ impl Legend {
     }
 
     /// The legend of what `shown` says is drawn.
-    pub(super) fn new(painter: &egui::Painter, shown: &Shown, lang: Lang) -> Self {
+    fn new(painter: &egui::Painter, shown: &Shown, lang: Lang) -> Self {
         let stride = shown.stride;
         let mut items: Vec<(Color32, &'static str, Option<usize>)> = FATES
             .iter()
@@ -103,7 +103,7 @@ impl Legend {
     /// The legend folded into a chip named `name` that opens it (`open`), at least `least`
     /// points high and as wide: over a landscape phone's view (250 × 260 points) its rows took
     /// a fifth of the picture beside the matrix card, for a key the student reads once.
-    pub(super) fn folded(
+    fn folded(
         mut self,
         painter: &egui::Painter,
         name: &'static str,
