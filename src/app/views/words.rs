@@ -170,8 +170,9 @@ pub fn moved_inside(r: Rect, view: Rect) -> Rect {
 /// `view`: the first place around the anchor, a little farther each round, that does neither;
 /// else the first such place that covers the subject but no card (the label has its own dark
 /// box: a label far from its point, with a leader line across the picture, reads worse); else
-/// the view's corner farthest from the subject that covers nothing else; else the corner
-/// farthest from the subject.
+/// the view's corner farthest from the subject that covers nothing else; else the place along
+/// the view's edges nearest the anchor that covers nothing else; else the corner farthest from
+/// the subject.
 #[must_use]
 pub fn place_label(anchor: Pos2, size: egui::Vec2, avoid: &[Rect], view: Rect) -> Rect {
     let around = |avoid: &[Rect]| {
@@ -212,11 +213,35 @@ pub fn place_label(anchor: Pos2, size: egui::Vec2, avoid: &[Rect], view: Rect) -
             .distance(subject)
             .total_cmp(&a.center().distance(subject))
     });
-    corners
-        .iter()
-        .find(|r| avoid.iter().skip(1).all(|a| !r.intersects(*a)))
-        .or(corners.first())
-        .copied()
+    let clear_of_cards = |r: &Rect| avoid.iter().skip(1).all(|a| !r.intersects(*a));
+    if let Some(r) = corners.iter().find(|r| clear_of_cards(r)) {
+        return *r;
+    }
+    // Every corner has a card (a small view: the header, the matrix card, the legend, the
+    // narration): along the edges, the free place nearest the anchor.
+    let steps = 24;
+    let along = |from: Pos2, to: Pos2| {
+        (0..=steps).map(move |k| {
+            let at = from + (to - from) * (k as f32 / steps as f32);
+            moved_inside(Rect::from_center_size(at, size), view)
+        })
+    };
+    let (lt, rt, lb, rb) = (
+        view.left_top(),
+        view.right_top(),
+        view.left_bottom(),
+        view.right_bottom(),
+    );
+    along(lt, rt)
+        .chain(along(lb, rb))
+        .chain(along(lt, lb))
+        .chain(along(rt, rb))
+        .filter(clear_of_cards)
+        .min_by(|a, b| {
+            let d = |r: &Rect| r.center().distance(anchor);
+            d(a).total_cmp(&d(b))
+        })
+        .or(corners.first().copied())
         .unwrap_or(view)
 }
 

@@ -241,4 +241,25 @@ fn a_label_keeps_off_the_subject_and_the_cards() {
         r.right() > 799.0 && r.top() < 1.0,
         "the top-right corner: {r:?}"
     );
+    // A card in every corner (a small view: the header, the matrix card, the legend, the
+    // narration) and a vertex far off the view at its upper left: along an edge, clear of
+    // every card, as near the vertex as that allows — the left edge just under the header
+    // (which ends at y = 60; the places along an edge are 25 points apart, so the first free
+    // one is centred at y = 75: 63 to 87 for 24 high). The top edge's first free place, right
+    // of the header, is farther from the vertex: its centre (280, 12) is 712 away, against
+    // 553 for (80, 75).
+    let header = Rect::from_min_max(Pos2::ZERO, Pos2::new(200.0, 60.0));
+    let legend = Rect::from_min_max(Pos2::new(600.0, 480.0), Pos2::new(800.0, 600.0));
+    let narration = Rect::from_min_max(Pos2::new(0.0, 450.0), Pos2::new(300.0, 600.0));
+    let cards = [subject, header, card, legend, narration];
+    let r = place_label(Pos2::new(-400.0, -200.0), size, &cards, view);
+    assert!(view.contains_rect(r), "{r:?}");
+    assert!(
+        cards[1..].iter().all(|c| !r.intersects(*c)),
+        "{r:?} over a card"
+    );
+    assert!(
+        r.left() < 1.0 && (r.top() - 63.0).abs() < 0.5,
+        "on the left edge just under the header: {r:?}"
+    );
 }
