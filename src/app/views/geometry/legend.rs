@@ -9,6 +9,13 @@ use crate::app::views::{FATES, label_with_background, palette, picture_font, pic
 use crate::spaces::world_into;
 use crate::vocabulary::{Lang, Space};
 
+/// The most triangles drawn as wireframe (every k-th beyond that).
+const MAX_TRIANGLES: usize = 30_000;
+
+/// The most triangles drawn dashed (their fate's pattern, `spaces::FATE_DASHES`): each dashed
+/// edge is a dozen segments, so past this the fates are told by colour and the legend alone.
+const MOST_DASHED: usize = 4_000;
+
 /// What the picture shows, so that the legend names only that.
 pub(super) struct Shown {
     /// Which fates (by `fate_index`) some drawn triangle met.
@@ -232,7 +239,7 @@ impl Legend {
 }
 
 /// What the legend names: the fates of the triangles drawn (every `stride`-th, as many as
-/// [`super::MAX_TRIANGLES`] allows), the view
+/// [`MAX_TRIANGLES`] allows), the view
 /// volume when drawn, the lights when this space has the world's lights and one has a gizmo
 /// around the subject's `sphere`.
 pub(super) fn shown(
@@ -244,7 +251,7 @@ pub(super) fn shown(
     let stride = capture
         .primitives
         .len()
-        .div_ceil(super::MAX_TRIANGLES)
+        .div_ceil(MAX_TRIANGLES)
         .max(1);
     let met = crate::spaces::fates_met(capture, stride);
     let fates = met.map(|n| n > 0);
@@ -265,7 +272,7 @@ pub(super) fn shown(
     Shown {
         fates,
         stride,
-        dashed: patterned <= super::MOST_DASHED,
+        dashed: patterned <= MOST_DASHED,
         volume,
         lights,
     }

@@ -64,13 +64,6 @@ impl Default for GeometryView {
     }
 }
 
-/// The most triangles drawn as wireframe (every k-th beyond that).
-const MAX_TRIANGLES: usize = 30_000;
-
-/// The most triangles drawn dashed (their fate's pattern, `spaces::FATE_DASHES`): each dashed
-/// edge is a dozen segments, so past this the fates are told by colour and the legend alone.
-const MOST_DASHED: usize = 4_000;
-
 /// Which vertex rows are the subject (see [`crate::spaces::subject`]).
 fn subject(capture: &FrameCapture, session: &Session, space: Space) -> Vec<bool> {
     let focus = session.selection.focus.as_deref().unwrap_or_default();
