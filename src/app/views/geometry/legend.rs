@@ -248,11 +248,7 @@ pub(super) fn shown(
     sphere: Option<(Vec3, f32)>,
     volume: bool,
 ) -> Shown {
-    let stride = capture
-        .primitives
-        .len()
-        .div_ceil(MAX_TRIANGLES)
-        .max(1);
+    let stride = capture.primitives.len().div_ceil(MAX_TRIANGLES).max(1);
     let met = crate::spaces::fates_met(capture, stride);
     let fates = met.map(|n| n > 0);
     let patterned: usize = (0..FATES.len())
