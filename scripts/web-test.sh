@@ -22,7 +22,25 @@ fi
 scripts/build-web.sh target/web-dist
 (cd scripts/web-test && npm ci --no-audit --no-fund --silent)
 
-port=${PORT:-8765}
+# Two free ports on localhost, the page's and the isolating host's: a server left on one of
+# them (a probe started by hand) would answer in place of the test's own, which then tests
+# another folder's build. $PORT names the first; without it the first free pair from 8765.
+port_free() {
+  python3 -c "import socket,sys; s=socket.socket(); s.bind(('127.0.0.1', int(sys.argv[1])))" "$1" 2>/dev/null
+}
+if [ -n "${PORT:-}" ]; then
+  port=$PORT
+  for p in "$port" $((port + 1)); do
+    port_free "$p" || { echo "web-test: port $p is in use (PORT=$PORT); stop what listens there or pick another PORT" >&2; exit 1; }
+  done
+else
+  port=8765
+  until port_free "$port" && port_free $((port + 1)); do
+    port=$((port + 2))
+    [ "$port" -lt 8865 ] || { echo "web-test: no two free ports between 8765 and 8864" >&2; exit 1; }
+  done
+fi
+echo "serving on ports $port and $((port + 1))"
 python3 -m http.server "$port" --bind 127.0.0.1 --directory target/web-dist >target/web-serve.log 2>&1 &
 server=$!
 # The same build from a host that isolates the page itself (scripts/serve-web.sh sends the
@@ -39,6 +57,9 @@ for p in "$port" $((port + 1)); do
     python3 -c "import urllib.request; urllib.request.urlopen('http://127.0.0.1:$p/index.html')" 2>/dev/null && break
     sleep 0.2
   done
+done
+for pid in "$server" "$isolated"; do
+  kill -0 "$pid" 2>/dev/null || { echo "web-test: a server died at start (target/web-serve*.log):" >&2; cat target/web-serve*.log >&2; exit 1; }
 done
 # The native frame times of the same steps, printed beside the page's: the render alone
 # (bench --steps), and the app as it runs, its window painting under Xvfb at 1920×1080 as the
