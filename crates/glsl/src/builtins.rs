@@ -5,6 +5,7 @@
 use glam::{Mat2, Mat3, Mat4};
 use naga::MathFunction as M;
 
+use crate::lanes::LANES;
 use crate::ops::{f, map, zipf};
 use crate::power;
 use crate::register_form::{Kind, Reg};
@@ -59,6 +60,27 @@ fn dot_lane(a: &[&[u32]], b: &[&[u32]], l: usize) -> f32 {
     sum
 }
 
+/// `out[l] = Σ_c g(a_c[l], b_c[l])` for the first `n` lanes, the terms added over the
+/// components in order from −0, as [`dot_lane`] adds them, a component row at a time.
+fn sums_into(a: &[&[u32]], b: &[&[u32]], n: usize, g: impl Fn(f32, f32) -> f32, out: &mut [u32]) {
+    let mut sum = [-0.0f32; LANES];
+    for (x, y) in a.iter().zip(b) {
+        for ((s, &x), &y) in sum[..n].iter_mut().zip(&x[..n]).zip(&y[..n]) {
+            *s += g(f(x), f(y));
+        }
+    }
+    for (o, s) in out.iter_mut().zip(&sum[..n]) {
+        *o = s.to_bits();
+    }
+}
+
+/// `x[l] = g(x[l])` for every lane of `x`, a float's bits in place.
+fn map_in_place(x: &mut [u32], g: impl Fn(f32) -> f32) {
+    for v in x {
+        *v = g(f(*v)).to_bits();
+    }
+}
+
 /// GLSL's `smoothstep`: `t = clamp((x − e0)/(e1 − e0), 0, 1)`, `t²(3 − 2t)`.
 fn smoothstep(e0: f32, e1: f32, x: f32) -> f32 {
     let t = ((x - e0) / (e1 - e0)).clamp(0.0, 1.0);
@@ -87,32 +109,46 @@ pub fn math<'a>(
     };
     let a0 = args[0];
     let stride = crate::lanes::LANES;
-    // Component by component, floats.
-    let each1 = |out: &mut [u32], g: &dyn Fn(f32) -> f32| {
+    // Component by component, floats: `g` is a generic parameter, so each function's loop is
+    // compiled with it inlined (called through a `dyn Fn`, every lane paid an indirect call).
+    fn each1<'r>(
+        out: &mut [u32],
+        x: impl Fn(usize, u32) -> &'r [u32],
+        width: u32,
+        n: usize,
+        g: impl Fn(f32) -> f32,
+    ) {
         for c in 0..width {
-            map(arg(0, c), &mut out[c as usize * stride..][..n], |v| {
+            map(x(0, c), &mut out[c as usize * LANES..][..n], |v| {
                 g(f(v)).to_bits()
             });
         }
-    };
-    let each2 = |out: &mut [u32], g: &dyn Fn(f32, f32) -> f32| {
+    }
+    fn each2<'r>(
+        out: &mut [u32],
+        x: impl Fn(usize, u32) -> &'r [u32],
+        width: u32,
+        n: usize,
+        g: impl Fn(f32, f32) -> f32,
+    ) {
         for c in 0..width {
-            zipf(
-                arg(0, c),
-                arg(1, c),
-                &mut out[c as usize * stride..][..n],
-                g,
-            );
+            zipf(x(0, c), x(1, c), &mut out[c as usize * LANES..][..n], &g);
         }
-    };
-    let each3 = |out: &mut [u32], g: &dyn Fn(f32, f32, f32) -> f32| {
+    }
+    fn each3<'r>(
+        out: &mut [u32],
+        x: impl Fn(usize, u32) -> &'r [u32],
+        width: u32,
+        n: usize,
+        g: impl Fn(f32, f32, f32) -> f32,
+    ) {
         for c in 0..width {
-            let (x, y, z) = (arg(0, c), arg(1, c), arg(2, c));
-            for (l, o) in out[c as usize * stride..][..n].iter_mut().enumerate() {
-                *o = g(f(x[l]), f(y[l]), f(z[l])).to_bits();
+            let (a, b, d) = (x(0, c), x(1, c), x(2, c));
+            for (l, o) in out[c as usize * LANES..][..n].iter_mut().enumerate() {
+                *o = g(f(a[l]), f(b[l]), f(d[l])).to_bits();
             }
         }
-    };
+    }
     // An argument's component rows (a vector has at most four).
     let rows_of = |i: usize| -> Vec4Rows<'a> {
         let mut r = Vec4Rows::new();
@@ -173,35 +209,35 @@ pub fn math<'a>(
                 });
             }
         }
-        (M::Abs, _) => each1(out, &f32::abs),
-        (M::Min, _) => each2(out, &f32::min),
-        (M::Max, _) => each2(out, &f32::max),
-        (M::Clamp, _) => each3(out, &|x, lo, hi| x.max(lo).min(hi)),
-        (M::Saturate, _) => each1(out, &|x| x.clamp(0.0, 1.0)),
-        (M::Cos, _) => each1(out, &f32::cos),
-        (M::Cosh, _) => each1(out, &f32::cosh),
-        (M::Sin, _) => each1(out, &f32::sin),
-        (M::Sinh, _) => each1(out, &f32::sinh),
-        (M::Tan, _) => each1(out, &f32::tan),
-        (M::Tanh, _) => each1(out, &f32::tanh),
-        (M::Acos, _) => each1(out, &f32::acos),
-        (M::Asin, _) => each1(out, &f32::asin),
-        (M::Atan, _) => each1(out, &f32::atan),
-        (M::Atan2, _) => each2(out, &f32::atan2),
-        (M::Asinh, _) => each1(out, &f32::asinh),
-        (M::Acosh, _) => each1(out, &f32::acosh),
-        (M::Atanh, _) => each1(out, &f32::atanh),
-        (M::Radians, _) => each1(out, &f32::to_radians),
-        (M::Degrees, _) => each1(out, &f32::to_degrees),
-        (M::Ceil, _) => each1(out, &f32::ceil),
-        (M::Floor, _) => each1(out, &f32::floor),
-        (M::Round, _) => each1(out, &f32::round_ties_even),
-        (M::Fract, _) => each1(out, &|x| x - x.floor()),
-        (M::Trunc, _) => each1(out, &f32::trunc),
-        (M::Exp, _) => each1(out, &f32::exp),
-        (M::Exp2, _) => each1(out, &f32::exp2),
-        (M::Log, _) => each1(out, &f32::ln),
-        (M::Log2, _) => each1(out, &f32::log2),
+        (M::Abs, _) => each1(out, arg, width, n, f32::abs),
+        (M::Min, _) => each2(out, arg, width, n, f32::min),
+        (M::Max, _) => each2(out, arg, width, n, f32::max),
+        (M::Clamp, _) => each3(out, arg, width, n, |x, lo, hi| x.max(lo).min(hi)),
+        (M::Saturate, _) => each1(out, arg, width, n, |x| x.clamp(0.0, 1.0)),
+        (M::Cos, _) => each1(out, arg, width, n, f32::cos),
+        (M::Cosh, _) => each1(out, arg, width, n, f32::cosh),
+        (M::Sin, _) => each1(out, arg, width, n, f32::sin),
+        (M::Sinh, _) => each1(out, arg, width, n, f32::sinh),
+        (M::Tan, _) => each1(out, arg, width, n, f32::tan),
+        (M::Tanh, _) => each1(out, arg, width, n, f32::tanh),
+        (M::Acos, _) => each1(out, arg, width, n, f32::acos),
+        (M::Asin, _) => each1(out, arg, width, n, f32::asin),
+        (M::Atan, _) => each1(out, arg, width, n, f32::atan),
+        (M::Atan2, _) => each2(out, arg, width, n, f32::atan2),
+        (M::Asinh, _) => each1(out, arg, width, n, f32::asinh),
+        (M::Acosh, _) => each1(out, arg, width, n, f32::acosh),
+        (M::Atanh, _) => each1(out, arg, width, n, f32::atanh),
+        (M::Radians, _) => each1(out, arg, width, n, f32::to_radians),
+        (M::Degrees, _) => each1(out, arg, width, n, f32::to_degrees),
+        (M::Ceil, _) => each1(out, arg, width, n, f32::ceil),
+        (M::Floor, _) => each1(out, arg, width, n, f32::floor),
+        (M::Round, _) => each1(out, arg, width, n, f32::round_ties_even),
+        (M::Fract, _) => each1(out, arg, width, n, |x| x - x.floor()),
+        (M::Trunc, _) => each1(out, arg, width, n, f32::trunc),
+        (M::Exp, _) => each1(out, arg, width, n, f32::exp),
+        (M::Exp2, _) => each1(out, arg, width, n, f32::exp2),
+        (M::Log, _) => each1(out, arg, width, n, f32::ln),
+        (M::Log2, _) => each1(out, arg, width, n, f32::log2),
         // The lighting's polynomial power (its error is stated in `power.rs`), eight lanes
         // at a time.
         (M::Pow, _) => {
@@ -209,9 +245,9 @@ pub fn math<'a>(
                 power::pow_bits(arg(0, c), arg(1, c), &mut out[c as usize * stride..][..n]);
             }
         }
-        (M::Sqrt, _) => each1(out, &f32::sqrt),
-        (M::InverseSqrt, _) => each1(out, &|x| 1.0 / x.sqrt()),
-        (M::Sign, _) => each1(out, &|x| {
+        (M::Sqrt, _) => each1(out, arg, width, n, f32::sqrt),
+        (M::InverseSqrt, _) => each1(out, arg, width, n, |x| 1.0 / x.sqrt()),
+        (M::Sign, _) => each1(out, arg, width, n, |x| {
             if x > 0.0 {
                 1.0
             } else if x < 0.0 {
@@ -220,43 +256,51 @@ pub fn math<'a>(
                 0.0
             }
         }),
-        (M::Fma, _) => each3(out, &|a, b, c| a.mul_add(b, c)),
-        (M::Mix, _) => each3(out, &|a, b, t| a * (1.0 - t) + b * t),
-        (M::Step, _) => each2(out, &|edge, x| if x < edge { 0.0 } else { 1.0 }),
-        (M::SmoothStep, _) => each3(out, &smoothstep),
-        // The geometric functions lane by lane, on the stack (no vector allocated per lane),
-        // each argument's component rows fetched once; every sum runs over the components in
-        // order, as `dot` above does.
+        (M::Fma, _) => each3(out, arg, width, n, |a, b, c| a.mul_add(b, c)),
+        (M::Mix, _) => each3(out, arg, width, n, |a, b, t| a * (1.0 - t) + b * t),
+        (M::Step, _) => each2(
+            out,
+            arg,
+            width,
+            n,
+            |edge, x| if x < edge { 0.0 } else { 1.0 },
+        ),
+        (M::SmoothStep, _) => each3(out, arg, width, n, smoothstep),
+        // The geometric functions: their sums row by row over every lane at once, each
+        // lane's terms added over the components in order from −0 (`dot_lane`'s order, so the
+        // same bits), then the square root and the division row by row.
         (M::Dot, _) => {
             let (a, b) = (rows_of(0), rows_of(1));
-            for (l, o) in out[..n].iter_mut().enumerate() {
-                *o = dot_lane(&a, &b, l).to_bits();
-            }
+            sums_into(&a, &b, n, |x, y| x * y, &mut out[..n]);
         }
         (M::Length, _) => {
             let a = rows_of(0);
-            for (l, o) in out[..n].iter_mut().enumerate() {
-                *o = dot_lane(&a, &a, l).sqrt().to_bits();
-            }
+            sums_into(&a, &a, n, |x, y| x * y, &mut out[..n]);
+            map_in_place(&mut out[..n], f32::sqrt);
         }
         (M::Distance, _) => {
             let (a, b) = (rows_of(0), rows_of(1));
-            for (l, o) in out[..n].iter_mut().enumerate() {
-                let mut sum = -0.0f32;
-                for (x, y) in a.iter().zip(&b) {
-                    let d = f(x[l]) - f(y[l]);
-                    sum += d * d;
-                }
-                *o = sum.sqrt().to_bits();
-            }
+            sums_into(
+                &a,
+                &b,
+                n,
+                |x, y| {
+                    let d = x - y;
+                    d * d
+                },
+                &mut out[..n],
+            );
+            map_in_place(&mut out[..n], f32::sqrt);
         }
         (M::Normalize, _) => {
             let a = rows_of(0);
-            for l in 0..n {
-                let len = dot_lane(&a, &a, l).sqrt();
-                for (c, x) in a.iter().enumerate() {
-                    out[c * stride + l] = (f(x[l]) / len).to_bits();
-                }
+            let mut len = [0u32; LANES];
+            sums_into(&a, &a, n, |x, y| x * y, &mut len[..n]);
+            map_in_place(&mut len[..n], f32::sqrt);
+            for (c, x) in a.iter().enumerate() {
+                zipf(&x[..n], &len[..n], &mut out[c * stride..][..n], |v, l| {
+                    v / l
+                });
             }
         }
         (M::Cross, _) => {
