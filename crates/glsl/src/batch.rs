@@ -181,6 +181,7 @@ impl Machine<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::machine::Machine;
     use crate::{Stage, compile};
 
     /// One quad: inputs set lane by lane, a discarded lane, a helper whose index past the
@@ -212,6 +213,68 @@ mod tests {
         }
         let e = machine.run_batch(&batch, &()).expect_err("a[3]");
         assert_eq!(program.run_error(&e).line, 9);
+    }
+
+    /// Places indexed by a loop's counter, alike in every lane (read and written with one
+    /// offset for all lanes), beside places indexed by each lane's own value; and an index out
+    /// of range alike in every lane: an error while a lane is live, none when every lane is a
+    /// helper. The lights' intensities' x are k = (2, 3, 5) (a light is 15 components: kind,
+    /// position, direction, intensity from the 8th, …); by hand, with a[i] = k[i]·x:
+    /// Σ a = 10x, a[int x] = k[int x]·x, and k[light_count] = k[1] = 3.
+    #[test]
+    fn a_place_indexed_alike_in_every_lane_reads_and_writes_as_lane_by_lane() {
+        let src = "#version 330 core\nuniform Light lights[MAX_LIGHTS];\nuniform int light_count;\nin float x;\nout vec4 color;\nvoid main() {\n    float a[3];\n    for (int i = 0; i < 3; i++) {\n        a[i] = lights[i].intensity.x * x;\n    }\n    int j = int(x);\n    color = vec4(a[0] + a[1] + a[2], a[j], lights[j].intensity.x, lights[light_count].intensity.x);\n}\n";
+        let program = compile(Stage::Fragment, src).expect("compiles");
+        let mut machine = program.machine();
+        let set = |machine: &mut Machine<'_>, name: &str, values: &[(usize, u32)]| {
+            let (_, reg) = program
+                .uniforms
+                .iter()
+                .find(|(n, _)| n == name)
+                .expect("declared");
+            let mut bits = vec![0; reg.len as usize];
+            for &(at, v) in values {
+                bits[at] = v;
+            }
+            machine.set_uniform(*reg, &bits);
+        };
+        let k = [2f32, 3.0, 5.0];
+        let intensities: Vec<(usize, u32)> = (0..3).map(|i| (i * 15 + 7, k[i].to_bits())).collect();
+        set(&mut machine, "lights", &intensities);
+        set(&mut machine, "light_count", &[(0, 1)]);
+        let mut batch = Batch::new(&program);
+        let start = |batch: &mut Batch| {
+            batch.start(4);
+            for (l, x) in [0.0f32, 1.0, 2.0, 1.0].into_iter().enumerate() {
+                batch.set(0, l, &[x]);
+            }
+        };
+        start(&mut batch);
+        let ran = machine.run_batch(&batch, &()).expect("runs");
+        assert_eq!(ran.outputs::<4>(0), [0.0, 0.0, 2.0, 3.0]);
+        assert_eq!(ran.outputs::<4>(1), [10.0, 3.0, 3.0, 3.0]);
+        assert_eq!(ran.outputs::<4>(2), [20.0, 10.0, 5.0, 3.0]);
+        assert_eq!(ran.outputs::<4>(3), [10.0, 3.0, 3.0, 3.0]);
+        // lights[light_count] with light_count = 8 in every lane: out of range (line 12).
+        set(&mut machine, "lights", &intensities);
+        set(&mut machine, "light_count", &[(0, 8)]);
+        start(&mut batch);
+        let e = machine.run_batch(&batch, &()).expect_err("lights[8]");
+        assert_eq!(program.run_error(&e).line, 12);
+        assert!(
+            e.message.contains("index 8 is out of range"),
+            "{}",
+            e.message
+        );
+        // Every lane a helper: no error, and the lanes still ran.
+        start(&mut batch);
+        for l in 0..4 {
+            batch.helper(l);
+        }
+        let ran = machine
+            .run_batch(&batch, &())
+            .expect("helpers report nothing");
+        assert_eq!(ran.outputs::<3>(2), [20.0, 10.0, 5.0]);
     }
 
     /// Each lane's cost is the length of its own trace: the counter and the recorder agree lane

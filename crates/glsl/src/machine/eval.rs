@@ -9,7 +9,7 @@ use super::events::RunError;
 use super::run::{Machine, Res};
 use super::textures::Textures;
 use crate::complaint::Complaint;
-use crate::lanes::{LANES, bit, masked_copy};
+use crate::lanes::{LANES, bit, copy_lanes, masked_copy};
 use crate::ops;
 use crate::register_form::{Function, Kind, Op, Place, Reg, Root, Shape};
 
@@ -27,20 +27,20 @@ impl Machine<'_> {
             .get(value as usize)
             .copied()
             .unwrap_or(0);
-        if place.dynamic.is_empty() {
+        let fixed = if place.dynamic.is_empty() {
+            Some(place.offset)
+        } else {
+            self.same_offset(fi, place, live & mask, at)?
+        };
+        if let Some(o) = fixed {
             for c in 0..place.len as usize {
-                let (dst, src) = (
-                    (place.offset as usize + c) * LANES,
-                    (value as usize + c) * LANES,
-                );
-                let row: [u32; LANES] = self.regs[fi][src..src + LANES]
-                    .try_into()
-                    .unwrap_or([0; LANES]);
+                let (dst, src) = ((o as usize + c) * LANES, (value as usize + c) * LANES);
+                let row = &self.regs[fi][src..src + LANES];
                 let storage = match place.root {
                     Root::Local => &mut self.locals[fi],
                     _ => &mut self.privates,
                 };
-                masked_copy(&mut storage[dst..dst + LANES], &row, mask, self.n);
+                masked_copy(&mut storage[dst..dst + LANES], row, mask, self.n);
             }
             return Ok(());
         }
@@ -59,6 +59,22 @@ impl Machine<'_> {
             }
         }
         Ok(())
+    }
+
+    /// The first component of `place` when its dynamic indices hold one value in every one of
+    /// the `n` lanes (a loop's counter that every lane runs alike), checked once: an index out
+    /// of range is an error when any lane of `live` runs, as lane by lane. `None` when the
+    /// lanes' indices differ, or the place has none (its offset is fixed).
+    fn same_offset(&self, fi: usize, place: &Place, live: u64, at: usize) -> Res<Option<u32>> {
+        let n = self.n;
+        let alike = |&(index, _, _): &(u32, u32, u32)| {
+            let row = &self.regs[fi][index as usize * LANES..][..n];
+            row.iter().all(|&x| x == row[0])
+        };
+        if place.dynamic.is_empty() || n == 0 || !place.dynamic.iter().all(alike) {
+            return Ok(None);
+        }
+        self.offset_checked(fi, place, 0, live != 0, at).map(Some)
     }
 
     /// Evaluates the invariant expressions (see `invariants_ready`) over all lanes.
@@ -103,18 +119,20 @@ impl Machine<'_> {
             // Evaluated once over every lane by `prepare_invariants`.
             op @ Op::Load(_) if self.invariants_ready && is_fixed_uniform_load(op) => {}
             Op::Load(place) => {
-                // Each lane's offset when the place has a dynamic index (`lights[i]`).
+                // One offset for every lane: a place with no dynamic index, or one indexed
+                // alike in every lane (`lights[i]` in a loop every lane runs the same way);
+                // else each lane's own (`offsets`).
+                let fixed = if place.dynamic.is_empty() {
+                    Some(place.offset)
+                } else {
+                    self.same_offset(fi, place, live, at)?
+                };
                 let mut offsets = [0u32; LANES];
-                if !place.dynamic.is_empty() {
+                if fixed.is_none() {
                     for (l, o) in offsets.iter_mut().enumerate().take(n) {
                         *o = self.offset_checked(fi, place, l, live & bit(l) != 0, at)?;
                     }
                 }
-                let o = if place.dynamic.is_empty() {
-                    &offsets[..0]
-                } else {
-                    &offsets[..n]
-                };
                 let root = place.root;
                 let (src, regs) = match root {
                     Root::Local => (&self.locals[fi], &mut self.regs[fi]),
@@ -122,22 +140,18 @@ impl Machine<'_> {
                     Root::Uniform => (&self.uniforms, &mut self.regs[fi]),
                 };
                 for c in 0..place.len as usize {
-                    let row = &mut regs[(dst.first as usize + c) * LANES..][..n];
-                    match (root, o.is_empty()) {
-                        (Root::Uniform, _) if o.is_empty() => {
-                            row.fill(src[place.offset as usize + c])
-                        }
-                        (Root::Uniform, _) => {
-                            for (l, x) in row.iter_mut().enumerate() {
-                                *x = src[o[l] as usize + c];
+                    let row = &mut regs[(dst.first as usize + c) * LANES..];
+                    match (root, fixed) {
+                        (Root::Uniform, Some(o)) => row[..n].fill(src[o as usize + c]),
+                        (Root::Uniform, None) => {
+                            for (l, x) in row[..n].iter_mut().enumerate() {
+                                *x = src[offsets[l] as usize + c];
                             }
                         }
-                        (_, true) => {
-                            row.copy_from_slice(&src[(place.offset as usize + c) * LANES..][..n])
-                        }
-                        (_, false) => {
-                            for (l, x) in row.iter_mut().enumerate() {
-                                *x = src[(o[l] as usize + c) * LANES + l];
+                        (_, Some(o)) => copy_lanes(row, &src[(o as usize + c) * LANES..], n),
+                        (_, None) => {
+                            for (l, x) in row[..n].iter_mut().enumerate() {
+                                *x = src[(offsets[l] as usize + c) * LANES + l];
                             }
                         }
                     }
@@ -154,30 +168,32 @@ impl Machine<'_> {
                 );
                 let (src, out) = self.regs[fi].split_at_mut(dst.first as usize * LANES);
                 let row = |r: u32, c: u32| &src[(r + c) as usize * LANES..][..n];
+                // A whole row of lanes, for a copy (every operand's row lies below `dst`).
+                let whole = |r: u32, c: u32| &src[(r + c) as usize * LANES..][..LANES];
                 let out = &mut out[..dst.len as usize * LANES];
                 match op {
                     Op::Compose(parts) => {
                         let mut c = 0;
                         for p in parts {
                             for k in 0..p.len {
-                                out[c * LANES..][..n].copy_from_slice(row(p.first, k));
+                                copy_lanes(&mut out[c * LANES..], whole(p.first, k), n);
                                 c += 1;
                             }
                         }
                     }
                     Op::Copy { from, n: count } => {
                         for k in 0..*count {
-                            out[k as usize * LANES..][..n].copy_from_slice(row(*from, k));
+                            copy_lanes(&mut out[k as usize * LANES..], whole(*from, k), n);
                         }
                     }
                     Op::Splat { from, n: count } => {
                         for k in 0..*count as usize {
-                            out[k * LANES..][..n].copy_from_slice(row(*from, 0));
+                            copy_lanes(&mut out[k * LANES..], whole(*from, 0), n);
                         }
                     }
                     Op::Swizzle { from, pattern } => {
                         for (k, &p) in pattern.iter().enumerate() {
-                            out[k * LANES..][..n].copy_from_slice(row(*from, p));
+                            copy_lanes(&mut out[k * LANES..], whole(*from, p), n);
                         }
                     }
                     Op::Index {
@@ -378,12 +394,11 @@ impl Machine<'_> {
                         convert,
                     } => {
                         for k in 0..a.len {
-                            let y = &mut out[k as usize * LANES..][..n];
-                            let x = row(a.first, k);
+                            let y = &mut out[k as usize * LANES..];
                             if *convert {
-                                ops::convert(*from, *to, x, y);
+                                ops::convert(*from, *to, row(a.first, k), &mut y[..n]);
                             } else {
-                                y.copy_from_slice(x);
+                                copy_lanes(y, whole(a.first, k), n);
                             }
                         }
                     }
