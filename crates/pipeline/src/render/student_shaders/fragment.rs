@@ -448,9 +448,8 @@ impl FragmentShading<'_> {
         });
         // The inverse of the triangle's doubled area, for the four lanes' weights.
         let inv_area = t.inv_area2();
-        let rows = inputs.rows_mut();
-        for j in 0..4 {
-            let l = first + j;
+        // Each lane's pixel, its centre, its λ and its weights, once a lane.
+        let lanes: [_; 4] = std::array::from_fn(|j| {
             let (px, py) = (i64::from(job.x) + (j % 2) as i64, y + (j / 2) as i64);
             let centre = I64Vec2::new(px * ONE + ONE / 2, py * ONE + ONE / 2);
             let lambda = t.lambda_with(inv_area, centre);
@@ -458,42 +457,50 @@ impl FragmentShading<'_> {
                 perspective: t.original_bary(&bary, lambda, perspective),
                 linear: t.original_bary(&bary, lambda, false),
             };
-            for ((input, link), rows) in programs
-                .fragment
-                .inputs
-                .iter()
-                .zip(&programs.links)
-                .zip(rows.iter_mut())
-            {
-                match (link, input.builtin) {
-                    (Some(link), _) => {
-                        let (Some(r), Some(corners)) = (results, corner_rows) else {
-                            continue;
-                        };
-                        for c in 0..link.components as usize {
-                            let v = corners.map(|at| r.values[at + link.from as usize + c]);
-                            rows[c * LANES + l] = weights.at(input.interpolate, &v).to_bits();
+            (px, py, centre, lambda, weights)
+        });
+        let rows = inputs.rows_mut();
+        // Input by input, a component's corner values read once for the quad's four lanes.
+        for ((input, link), rows) in programs
+            .fragment
+            .inputs
+            .iter()
+            .zip(&programs.links)
+            .zip(rows.iter_mut())
+        {
+            match (link, input.builtin) {
+                (Some(link), _) => {
+                    let (Some(r), Some(corners)) = (results, corner_rows) else {
+                        continue;
+                    };
+                    for c in 0..link.components as usize {
+                        let v = corners.map(|at| r.values[at + link.from as usize + c]);
+                        for (j, (.., weights)) in lanes.iter().enumerate() {
+                            rows[c * LANES + first + j] =
+                                weights.at(input.interpolate, &v).to_bits();
                         }
                     }
-                    (None, Some(naga::BuiltIn::Position { .. })) => {
+                }
+                (None, Some(naga::BuiltIn::Position { .. })) => {
+                    for (j, &(px, py, centre, lambda, _)) in lanes.iter().enumerate() {
                         // gl_FragCoord = (x + ½, y + ½, z_w, 1/w_clip).
                         let inv_w = lambda.dot(Vec3::from(t.inv_w));
                         let v = [px as f32 + 0.5, py as f32 + 0.5, t.depth_at(centre), inv_w];
                         for (c, x) in v.iter().enumerate() {
-                            rows[c * LANES + l] = x.to_bits();
+                            rows[c * LANES + first + j] = x.to_bits();
                         }
                     }
-                    (None, Some(naga::BuiltIn::FrontFacing)) => {
-                        // The piece's corners are counter-clockwise on screen; its barycentric
-                        // corners keep the original order, so their determinant is negative
-                        // when the original triangle ran clockwise (a back face), even when
-                        // one of its vertices is behind the eye and has no window position.
-                        let [b0, b1, b2] = bary;
-                        let front = glam::Mat3::from_cols(b0, b1, b2).determinant() >= 0.0;
-                        rows[l] = u32::from(front);
-                    }
-                    _ => {}
                 }
+                (None, Some(naga::BuiltIn::FrontFacing)) => {
+                    // The piece's corners are counter-clockwise on screen; its barycentric
+                    // corners keep the original order, so their determinant is negative when
+                    // the original triangle ran clockwise (a back face), even when one of its
+                    // vertices is behind the eye and has no window position.
+                    let [b0, b1, b2] = bary;
+                    let front = glam::Mat3::from_cols(b0, b1, b2).determinant() >= 0.0;
+                    rows[first..first + 4].fill(u32::from(front));
+                }
+                _ => {}
             }
         }
         for j in (0..4).filter(|&j| job.samples[j] == 0) {
