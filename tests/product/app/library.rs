@@ -459,3 +459,35 @@ fn a_texture_dropped_on_the_page_is_kept_for_the_lessons_that_name_it() {
         "the lesson keeps running"
     );
 }
+
+/// A texture dropped on the desktop window (a file with a path) is refused, and the message
+/// says where a texture comes from there: the lesson that names it reads it from the lesson's
+/// folder. Nothing is kept and the lesson open keeps running.
+#[test]
+fn a_texture_dropped_on_the_desktop_says_a_lesson_reads_it_from_its_folder() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let file = dir.path().join("brick.png");
+    std::fs::write(&file, png(4, 2)).expect("the texture written");
+    let mut h = lesson_harness(None);
+    h.run_steps(3);
+    let before = lesson_id(&h);
+    h.input_mut().dropped_files.push(Arc::new(Dropped {
+        path: file,
+        bytes: Vec::new(),
+    }));
+    h.run_steps(4);
+    let error = h.state().session.dropped_error.clone().unwrap_or_default();
+    assert!(
+        error.starts_with("brick.png could not be opened")
+            && error.contains("texture = \"brick.png\"")
+            && error.contains("from the lesson's folder: open that lesson instead"),
+        "{error}"
+    );
+    assert!(
+        h.query_by_label_contains("a texture is read by the lesson that names it")
+            .is_some(),
+        "the window shows why"
+    );
+    assert!(!h.state().session.given.contains_key("brick.png"));
+    assert_eq!(lesson_id(&h), before, "the lesson keeps running");
+}
