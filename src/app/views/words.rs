@@ -111,8 +111,9 @@ pub fn boxed_galley(
 /// Where a box (a legend) goes in `view`, and which of its shapes `sizes` (in the order they
 /// are preferred: a wide one, then narrower ones) it takes: each shape in the corners of
 /// `view` 10 points in, then 4 points in — top-left, top-right, bottom-left, bottom-right — the
-/// first place that covers nothing in `avoid` (the subject on screen) and is not under `card`
-/// (the narration card, which would hide it), else the one least under the card and then
+/// first place that fits in `view`, covers nothing in `avoid` (the subject on screen) and is
+/// not under `card` (the narration card, which would hide it); else the one least out of the
+/// view (a shape wider than a phone's view is cut at its edge), then least under the card, then
 /// covering the least of the subject (the first of those). Returns the shape's index and its
 /// box.
 #[must_use]
@@ -136,13 +137,23 @@ pub fn clear_corner(
     // The covered areas are never negative: the first minimum is the first clear place, if any.
     places
         .map(|(k, r)| {
+            let outside = r.area() - r.intersect(view).area();
             (
                 k,
                 r,
-                (covered_area(r, card.as_slice()), covered_area(r, avoid)),
+                [
+                    outside,
+                    covered_area(r, card.as_slice()),
+                    covered_area(r, avoid),
+                ],
             )
         })
-        .min_by(|a, b| a.2.0.total_cmp(&b.2.0).then(a.2.1.total_cmp(&b.2.1)))
+        .min_by(|a, b| {
+            let [x, y] = [a.2, b.2];
+            x[0].total_cmp(&y[0])
+                .then(x[1].total_cmp(&y[1]))
+                .then(x[2].total_cmp(&y[2]))
+        })
         .map_or((0, view), |(k, r, _)| (k, r))
 }
 
@@ -255,4 +266,36 @@ pub fn fit_rect(outer: Rect, aspect: f32) -> Rect {
         egui::vec2(w, w / aspect)
     };
     Rect::from_center_size(outer.center(), size)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rect(x0: f32, y0: f32, x1: f32, y1: f32) -> Rect {
+        Rect::from_min_max(egui::pos2(x0, y0), egui::pos2(x1, y1))
+    }
+
+    /// A legend's wide shape where it fits, its narrow one where the view is narrower than the
+    /// wide one (a phone's pixel view: the wide one was cut at the edge), and where neither
+    /// fits the one least out of the view. Worked by hand: shapes 240×50 and 120×90; a 180-wide
+    /// view holds the narrow one at its top-left corner 10 in; in a 100-wide view the wide one
+    /// is 7200 out at best (4 in), the narrow one 2160 (4 in: 120·90 − 96·90).
+    #[test]
+    fn a_legend_takes_the_shape_that_fits_in_the_view() {
+        let sizes = [egui::vec2(240.0, 50.0), egui::vec2(120.0, 90.0)];
+        let fits = |view: Rect| clear_corner(&sizes, view, (&[], None));
+        assert_eq!(
+            fits(rect(0.0, 0.0, 400.0, 300.0)),
+            (0, rect(10.0, 10.0, 250.0, 60.0))
+        );
+        assert_eq!(
+            fits(rect(0.0, 0.0, 180.0, 300.0)),
+            (1, rect(10.0, 10.0, 130.0, 100.0))
+        );
+        assert_eq!(
+            fits(rect(0.0, 0.0, 100.0, 300.0)),
+            (1, rect(4.0, 4.0, 124.0, 94.0))
+        );
+    }
 }
