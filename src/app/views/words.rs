@@ -148,12 +148,8 @@ pub fn clear_corner(
                 ],
             )
         })
-        .min_by(|a, b| {
-            let [x, y] = [a.2, b.2];
-            x[0].total_cmp(&y[0])
-                .then(x[1].total_cmp(&y[1]))
-                .then(x[2].total_cmp(&y[2]))
-        })
+        // In that order: out of the view, under the card, over the subject (areas, never NaN).
+        .min_by(|a, b| a.2.partial_cmp(&b.2).unwrap_or(std::cmp::Ordering::Equal))
         .map_or((0, view), |(k, r, _)| (k, r))
 }
 

@@ -27,12 +27,7 @@ impl Machine<'_> {
             .get(value as usize)
             .copied()
             .unwrap_or(0);
-        let fixed = if place.dynamic.is_empty() {
-            Some(place.offset)
-        } else {
-            self.same_offset(fi, place, live & mask, at)?
-        };
-        if let Some(o) = fixed {
+        if let Some(o) = self.one_offset(fi, place, live & mask, at)? {
             for c in 0..place.len as usize {
                 let (dst, src) = ((o as usize + c) * LANES, (value as usize + c) * LANES);
                 let row = &self.regs[fi][src..src + LANES];
@@ -61,17 +56,21 @@ impl Machine<'_> {
         Ok(())
     }
 
-    /// The first component of `place` when its dynamic indices hold one value in every one of
-    /// the `n` lanes (a loop's counter that every lane runs alike), checked once: an index out
-    /// of range is an error when any lane of `live` runs, as lane by lane. `None` when the
-    /// lanes' indices differ, or the place has none (its offset is fixed).
-    fn same_offset(&self, fi: usize, place: &Place, live: u64, at: usize) -> Res<Option<u32>> {
+    /// The first component of `place` when it is the same in every one of the `n` lanes: its
+    /// fixed offset where it has no dynamic index, or where its dynamic indices hold one value
+    /// in every lane (a loop's counter that every lane runs alike), that offset checked once —
+    /// an index out of range is an error when any lane of `live` runs, as lane by lane. `None`
+    /// when the lanes' indices differ: each lane's own offset is needed.
+    fn one_offset(&self, fi: usize, place: &Place, live: u64, at: usize) -> Res<Option<u32>> {
+        if place.dynamic.is_empty() {
+            return Ok(Some(place.offset));
+        }
         let n = self.n;
         let alike = |&(index, _, _): &(u32, u32, u32)| {
             let row = &self.regs[fi][index as usize * LANES..][..n];
             row.iter().all(|&x| x == row[0])
         };
-        if place.dynamic.is_empty() || n == 0 || !place.dynamic.iter().all(alike) {
+        if n == 0 || !place.dynamic.iter().all(alike) {
             return Ok(None);
         }
         self.offset_checked(fi, place, 0, live != 0, at).map(Some)
@@ -122,11 +121,7 @@ impl Machine<'_> {
                 // One offset for every lane: a place with no dynamic index, or one indexed
                 // alike in every lane (`lights[i]` in a loop every lane runs the same way);
                 // else each lane's own (`offsets`).
-                let fixed = if place.dynamic.is_empty() {
-                    Some(place.offset)
-                } else {
-                    self.same_offset(fi, place, live, at)?
-                };
+                let fixed = self.one_offset(fi, place, live, at)?;
                 let mut offsets = [0u32; LANES];
                 if fixed.is_none() {
                     for (l, o) in offsets.iter_mut().enumerate().take(n) {
