@@ -13,8 +13,8 @@ use serde::Serialize;
 /// buffers hold zeros and the texturing buffers no lookup ([`NO_LOOKUP`]), and the colour and
 /// depth are the background's ([`Self::background`]). The resolve relies on it when it renders
 /// into the storage of the frame before: a background pixel's primitive, owner and terms are
-/// written only where that frame covered the pixel ([`Stored::Kept`]), its colour and depth
-/// also only where the background changed.
+/// written only in the background spans where that frame covered a pixel, its colour and
+/// depth also only where the background changed.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct PixelBuffers {
     /// Number of the pixel's samples that a primitive covers (after the depth test).
@@ -97,17 +97,16 @@ impl InspectedPixel {
         terms: Option<&crate::lighting::ShadeTerms>,
         texture: Option<&PixelTexture>,
     ) -> Self {
-        let mut halves = Vec::new();
         let lighting = lit.then(|| {
             let mut b = ShadingBuffers::default().resized(1);
-            let floats = terms.map_or([0.0; LIGHTING_HALVES], ShadingRow::flatten);
-            b.rows(1)[0].store(&[Stored::Terms], &floats, &mut halves);
+            if let Some(t) = terms {
+                b.rows(1)[0].store(0, t);
+            }
             b.at(0)
         });
         let texture = texture.map(|t| {
             let mut b = TextureBuffers::default().resized(1);
-            let (uv, floats) = TextureRow::flatten(t);
-            b.rows(1)[0].store(&[Stored::Terms], &[uv], &floats, &mut halves);
+            b.rows(1)[0].store(0, t);
             b.at(0)
         });
         Self {
@@ -322,43 +321,23 @@ impl TextureRow<'_> {
         (t.uv, [t.lod, t.level, a, b, c, d, e, f, g])
     }
 
-    /// Stores a row: pixel `x` has a lookup when `read[x]` is [`Stored::Terms`], the lookups'
-    /// `uvs` and `floats` ([`TEXTURE_HALVES`] each, from [`Self::flatten`]) in order, converted
-    /// to half floats in one pass (vectorised where the processor converts in hardware) through
-    /// the reused `halves`. A pixel with no lookup (an untextured surface, the background: most
-    /// of a frame) stores zeros with the level −1, so that it is told apart from level 0
-    /// ([`NO_LOOKUP`]), without a conversion, unless it holds them already ([`Stored::Kept`]).
-    pub fn store(
-        &mut self,
-        read: &[Stored],
-        uvs: &[[f32; 2]],
-        floats: &[f32],
-        halves: &mut Vec<f16>,
-    ) {
-        let mut lookups = uvs
-            .iter()
-            .zip(convert(floats, halves).chunks_exact(TEXTURE_HALVES));
-        for (read, span) in written_spans(read) {
-            if !read {
-                self.none(span);
-                continue;
-            }
-            for x in span {
-                let Some((uv, h)) = lookups.next() else {
-                    self.none(x..x + 1);
-                    continue;
-                };
-                self.uv[x] = *uv;
-                self.lod[x] = h[0];
-                self.level[x] = h[1];
-                self.texel[x] = [h[2], h[3], h[4]];
-                self.footprint[x] = [h[5], h[6], h[7], h[8]];
-            }
-        }
+    /// Stores pixel `x`'s lookup: its uv at 32 bits, its [`TEXTURE_HALVES`] values
+    /// ([`Self::flatten`]) converted to half floats together (in vector instructions where the
+    /// processor converts in hardware).
+    #[inline]
+    pub fn store(&mut self, x: usize, t: &PixelTexture) {
+        let (uv, floats) = Self::flatten(t);
+        let h = to_halves(&floats);
+        self.uv[x] = uv;
+        self.lod[x] = h[0];
+        self.level[x] = h[1];
+        self.texel[x] = [h[2], h[3], h[4]];
+        self.footprint[x] = [h[5], h[6], h[7], h[8]];
     }
 
-    /// Pixels `span` read no texture: [`NO_LOOKUP`].
-    fn none(&mut self, span: Range<usize>) {
+    /// Pixels `span` read no texture (an untextured surface, the background): [`NO_LOOKUP`],
+    /// zeros with the level −1, so that they are told apart from level 0.
+    pub fn none(&mut self, span: Range<usize>) {
         self.uv[span.clone()].fill([0.0; 2]);
         self.lod[span.clone()].fill(f16::ZERO);
         self.level[span.clone()].fill(f16::from_f32(NO_LOOKUP[1]));
@@ -367,53 +346,13 @@ impl TextureRow<'_> {
     }
 }
 
-/// What a row's store writes at a pixel of the term buffers.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Stored {
-    /// Its terms: the next of the row's values.
-    Terms,
-    /// No terms (zeros; for a lookup, the level −1), written.
-    Nothing,
-    /// No terms, which the reused storage holds already (the frame before had the background
-    /// there; see [`PixelBuffers`]): nothing is written.
-    Kept,
-}
-
-impl Stored {
-    /// [`Stored::Terms`] for a pixel that has terms, else [`Stored::Nothing`].
-    #[must_use]
-    pub fn given(terms: bool) -> Self {
-        if terms { Self::Terms } else { Self::Nothing }
-    }
-}
-
-/// The maximal runs of equal flags, each with its flag: a row's pixels with and without terms
-/// (the background is one long run, written with fills or left as it is).
-fn spans<T: Copy + PartialEq>(flags: &[T]) -> impl Iterator<Item = (T, Range<usize>)> + '_ {
-    let mut x = 0;
-    std::iter::from_fn(move || {
-        let &first = flags.get(x)?;
-        let n = flags[x..]
-            .iter()
-            .position(|&f| f != first)
-            .unwrap_or(flags.len() - x);
-        x += n;
-        Some((first, x - n..x))
-    })
-}
-
-/// The spans of a row's pixels that the store writes, each with whether its pixels have terms:
-/// the [`Stored::Kept`] spans are left out.
-fn written_spans(flags: &[Stored]) -> impl Iterator<Item = (bool, Range<usize>)> + '_ {
-    spans(flags)
-        .filter(|(stored, _)| *stored != Stored::Kept)
-        .map(|(stored, span)| (stored == Stored::Terms, span))
-}
-
-/// `floats` as half floats, in `halves`' storage.
-fn convert<'a>(floats: &[f32], halves: &'a mut Vec<f16>) -> &'a [f16] {
+/// `floats` as half floats, converted together (the `half` crate converts in vector
+/// instructions where the processor has them, F16C on x86-64; rounding to nearest, ties to
+/// even, either way).
+#[inline]
+fn to_halves<const N: usize>(floats: &[f32; N]) -> [f16; N] {
     use half::slice::HalfFloatSliceExt;
-    halves.resize(floats.len(), f16::ZERO);
+    let mut halves = [f16::ZERO; N];
     halves.convert_from_f32_slice(floats);
     halves
 }
@@ -444,36 +383,22 @@ impl ShadingRow<'_> {
         out
     }
 
-    /// Stores a row: pixel `x` is lit when `lit[x]` is [`Stored::Terms`], the lit pixels'
-    /// terms in `floats` ([`LIGHTING_HALVES`] each, from [`Self::flatten`]) in order, converted
-    /// to half floats in one pass through the reused `halves`. A pixel not lit (unlit there, the
-    /// background: most of a frame) stores zeros, without a conversion, unless it holds them
-    /// already ([`Stored::Kept`]).
-    pub fn store(&mut self, lit: &[Stored], floats: &[f32], halves: &mut Vec<f16>) {
-        let mut terms = convert(floats, halves).chunks_exact(LIGHTING_HALVES);
-        for (lit, span) in written_spans(lit) {
-            if !lit {
-                self.unlit(span);
-                continue;
-            }
-            for x in span {
-                let Some(h) = terms.next() else {
-                    self.unlit(x..x + 1);
-                    continue;
-                };
-                self.ambient[x] = [h[0], h[1], h[2]];
-                self.diffuse[x] = [h[3], h[4], h[5]];
-                self.specular[x] = [h[6], h[7], h[8]];
-                self.normal[x] = [h[9], h[10], h[11]];
-                self.reflected[x] = [h[12], h[13], h[14]];
-                self.n_dot_l[x] = h[15];
-                self.n_dot_h[x] = h[16];
-            }
-        }
+    /// Stores pixel `x`'s lighting terms, their [`LIGHTING_HALVES`] values ([`Self::flatten`])
+    /// converted to half floats together.
+    #[inline]
+    pub fn store(&mut self, x: usize, t: &crate::lighting::ShadeTerms) {
+        let h = to_halves(&Self::flatten(t));
+        self.ambient[x] = [h[0], h[1], h[2]];
+        self.diffuse[x] = [h[3], h[4], h[5]];
+        self.specular[x] = [h[6], h[7], h[8]];
+        self.normal[x] = [h[9], h[10], h[11]];
+        self.reflected[x] = [h[12], h[13], h[14]];
+        self.n_dot_l[x] = h[15];
+        self.n_dot_h[x] = h[16];
     }
 
-    /// Pixels `span` are not lit: zeros.
-    fn unlit(&mut self, span: Range<usize>) {
+    /// Pixels `span` are not lit (unlit there, the background): zeros.
+    pub fn unlit(&mut self, span: Range<usize>) {
         for v in [
             &mut self.ambient,
             &mut self.diffuse,

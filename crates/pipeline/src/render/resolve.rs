@@ -6,10 +6,9 @@
 mod fragment;
 
 use glam::{Vec2, Vec3};
-use half::f16;
 use rayon::prelude::*;
 
-use crate::capture::{PixelBuffers, PixelTexture, PrimitiveRecord, ShadingRow, Stored, TextureRow};
+use crate::capture::{PixelBuffers, PixelTexture, PrimitiveRecord, ShadingRow, TextureRow};
 use crate::lighting::lanes::LANES;
 use crate::lighting::{Frequency, ShadeTerms};
 use crate::raster::{CoveredRows, NONE, RasterTriangle, SampleBuffers};
@@ -46,17 +45,10 @@ struct RowOut<'a> {
     texturing: Option<TextureRow<'a>>,
 }
 
-/// A resolve task's reused storage: a row's lighting terms and lookups as 32-bit floats, before
-/// they are converted to half floats; with coarse shading, the shading of each 2×2 block of the
+/// A resolve task's reused storage: with coarse shading, the shading of each 2×2 block of the
 /// row pair being resolved.
 #[derive(Default)]
 struct RowScratch {
-    lighting: Vec<f32>,
-    lit: Vec<Stored>,
-    uvs: Vec<[f32; 2]>,
-    texturing: Vec<f32>,
-    read: Vec<Stored>,
-    halves: Vec<f16>,
     blocks: Vec<Option<BlockShade>>,
 }
 
@@ -78,11 +70,6 @@ impl RowOut<'_> {
     /// holds nothing of the frame before.
     fn resolve(&mut self, ctx: &ResolveContext<'_>, row: usize, y: u32, s: &mut RowScratch) {
         let w = self.color.len();
-        s.lighting.clear();
-        s.lit.clear();
-        s.uvs.clear();
-        s.texturing.clear();
-        s.read.clear();
         let (coarse, per_sample) = (ctx.settings.coarse_shading, ctx.settings.per_sample_shading);
         // Runs of pixels, each covered by triangles of one object, are shaded together, unless
         // every sample is shaded by itself. With coarse shading, at one sample, a run of up to
@@ -103,7 +90,7 @@ impl RowOut<'_> {
                 0
             };
             if empty > 0 {
-                self.store_background(ctx, x, i, empty, s);
+                self.store_background(ctx, x, i, empty);
                 last_background = Some((x, x + empty));
                 x += empty;
                 continue;
@@ -118,7 +105,7 @@ impl RowOut<'_> {
                 if n >= 4 {
                     let x0 = x;
                     x += ctx.resolve_coarse_run(&span[..n], at, i, &mut blocks, |k, r| {
-                        self.store(x0 + k, r, s);
+                        self.store(x0 + k, r);
                     });
                     continue;
                 }
@@ -127,7 +114,7 @@ impl RowOut<'_> {
                 let run = runs.then(|| ctx.run_at(i, w - x)).flatten();
                 if let Some(run) = run.filter(|r| r.len >= 4) {
                     ctx.resolve_run(&run, at, i, |k, r, kept| {
-                        self.store_with(x + k, r, kept, s);
+                        self.store_with(x + k, r, kept);
                     });
                     x += run.pixels;
                     continue;
@@ -141,7 +128,7 @@ impl RowOut<'_> {
                     None
                 };
                 let r = ctx.pixel(x as u32, y, row * w + x, block);
-                self.store(x, &r, s);
+                self.store(x, &r);
             }
             x += len;
         }
@@ -153,45 +140,18 @@ impl RowOut<'_> {
         };
         self.covered = first.map_or((0, 0), |first| (first as u32, end as u32));
         s.blocks = blocks;
-        if let Some(out) = &mut self.shading {
-            out.store(&s.lit, &s.lighting, &mut s.halves);
-        }
-        if let Some(out) = &mut self.texturing {
-            out.store(&s.read, &s.uvs, &s.texturing, &mut s.halves);
-        }
     }
 
     /// Writes the `n` background pixels from `x` on (image index `i` on): no coverage, no
     /// owner, the background colour, the mean of the cleared sample depths, no terms and no
     /// lookup — what [`ResolveContext::pixel`] gives for each of them.
-    fn store_background(
-        &mut self,
-        ctx: &ResolveContext<'_>,
-        x: usize,
-        i: usize,
-        n: usize,
-        s: &mut RowScratch,
-    ) {
+    fn store_background(&mut self, ctx: &ResolveContext<'_>, x: usize, i: usize, n: usize) {
         let span = x..x + n;
-        // Where the frame before (whose storage this is) had the background too, the term
-        // buffers hold no terms already (see `PixelBuffers`).
-        let stored = |&c: &u8| {
-            if c == 0 {
-                Stored::Kept
-            } else {
-                Stored::Nothing
-            }
-        };
-        if self.shading.is_some() {
-            s.lit.extend(self.coverage[span.clone()].iter().map(stored));
-        }
-        if self.texturing.is_some() {
-            s.read
-                .extend(self.coverage[span.clone()].iter().map(stored));
-        }
-        // So do its primitive and owner buffers, where it had the background all along, and
-        // its colour and depth buffers when its background was this frame's (an OR over the
-        // span, without a branch a pixel: the span is usually all zeros).
+        // Where the frame before (whose storage this is) had the background too, the buffers
+        // hold the background's primitive, owner and terms already (see `PixelBuffers`); so
+        // they are written only in a span it covered somewhere (an OR over the span, without
+        // a branch a pixel: the span is usually all zeros), and its colour and depth buffers
+        // also when its background was not this frame's.
         let covered_before = self.coverage[span.clone()]
             .iter()
             .fold(0, |any, &c| any | c)
@@ -200,6 +160,12 @@ impl RowOut<'_> {
             self.coverage[span.clone()].fill(0);
             self.primitive[span.clone()].fill(NONE);
             self.owner[span.clone()].fill(NONE);
+            if let Some(out) = &mut self.shading {
+                out.unlit(span.clone());
+            }
+            if let Some(out) = &mut self.texturing {
+                out.none(span.clone());
+            }
         }
         // A sample no triangle covers holds the depth it was cleared to (every writer of a
         // sample's depth writes its triangle too), so the span's depths are one value, the mean
@@ -219,41 +185,33 @@ impl RowOut<'_> {
         }
     }
 
-    /// Writes pixel `x`'s resolve into the row's buffers, its terms and lookup into the
-    /// scratch rows when their buffers are kept.
+    /// Writes pixel `x`'s resolve into the row's buffers, its terms and lookup where their
+    /// buffers are kept.
     #[inline]
-    fn store(&mut self, x: usize, r: &ResolvedPixel, s: &mut RowScratch) {
-        self.store_with(x, r, (r.terms.as_ref(), r.texture.as_ref()), s);
+    fn store(&mut self, x: usize, r: &ResolvedPixel) {
+        self.store_with(x, r, (r.terms.as_ref(), r.texture.as_ref()));
     }
 
     /// [`Self::store`] with the pixel's terms and lookup given apart, where they are (a run's
     /// shading), rather than in `r`: read where they were written, not copied into `r` first
     /// (a copy that a read of the same bytes right after stalls on).
     #[inline]
-    fn store_with(
-        &mut self,
-        x: usize,
-        r: &ResolvedPixel,
-        (terms, texture): Kept<'_>,
-        s: &mut RowScratch,
-    ) {
+    fn store_with(&mut self, x: usize, r: &ResolvedPixel, (terms, texture): Kept<'_>) {
         self.coverage[x] = r.coverage;
         self.depth[x] = r.depth;
         self.primitive[x] = r.primitive;
         self.owner[x] = r.owner;
         self.color[x] = super::stored_color(glam::Vec3::from(r.color)).to_array();
-        if self.shading.is_some() {
-            s.lit.push(Stored::given(terms.is_some()));
-            if let Some(t) = terms {
-                s.lighting.extend_from_slice(&ShadingRow::flatten(t));
+        if let Some(out) = &mut self.shading {
+            match terms {
+                Some(t) => out.store(x, t),
+                None => out.unlit(x..x + 1),
             }
         }
-        if self.texturing.is_some() {
-            s.read.push(Stored::given(texture.is_some()));
-            if let Some((uv, l)) = texture {
-                let (uv, halves) = TextureRow::flatten(&PixelTexture::new(*uv, l));
-                s.uvs.push(uv);
-                s.texturing.extend_from_slice(&halves);
+        if let Some(out) = &mut self.texturing {
+            match texture {
+                Some((uv, l)) => out.store(x, &PixelTexture::new(*uv, l)),
+                None => out.none(x..x + 1),
             }
         }
     }
