@@ -20,6 +20,7 @@
 //! [`generated`], the samplers in [`sampler`], what textures add to a surface (bump, normal, displacement and
 //! environment mapping) in [`detail`].
 
+mod bytes;
 mod detail;
 mod generated;
 pub mod ripmap_sat_ewa;
@@ -122,29 +123,29 @@ impl Level {
     /// Nearest filtering at `(u, v)`.
     #[must_use]
     pub fn nearest(&self, uv: Vec2, wrap: Wrap) -> Vec3 {
-        self.texels[self.nearest_index(uv, wrap)]
+        let (i, j) = self.nearest_place(uv, wrap);
+        self.texels[j * self.width as usize + i]
     }
 
-    /// Where the texel nearest filtering reads at `(u, v)` is: `(⌊u·w⌋, ⌊v·h⌋)`, wrapped.
-    fn nearest_index(&self, uv: Vec2, wrap: Wrap) -> usize {
+    /// The texel nearest filtering reads at `(u, v)`: `(⌊u·w⌋, ⌊v·h⌋)`, wrapped.
+    fn nearest_place(&self, uv: Vec2, wrap: Wrap) -> (usize, usize) {
         let x = (f64::from(uv.x) * f64::from(self.width)).floor() as i64;
         let y = (f64::from(uv.y) * f64::from(self.height)).floor() as i64;
-        self.texel_index(x, y, wrap)
+        (wrap.index(x, self.width), wrap.index(y, self.height))
     }
 
     /// Bilinear filtering at `(u, v)`.
     #[must_use]
     pub fn bilinear(&self, uv: Vec2, wrap: Wrap) -> Vec3 {
-        self.bilinear_of(uv, wrap, |k| self.texels[k])
+        let w = self.width as usize;
+        self.bilinear_of(uv, wrap, |i, j| self.texels[j * w + i])
     }
 
-    /// Bilinear filtering at `(u, v)` of the texels `texel(k)` gives for index `k` of
-    /// [`Self::texels`] (the texels themselves, or their 8-bit copy).
+    /// Bilinear filtering at `(u, v)` of the texels `at(i, j)` gives for column `i` and row
+    /// `j` (the texels themselves, or their 8-bit copy).
     #[inline]
-    fn bilinear_of(&self, uv: Vec2, wrap: Wrap, texel: impl Fn(usize) -> Vec3) -> Vec3 {
+    fn bilinear_of(&self, uv: Vec2, wrap: Wrap, at: impl Fn(usize, usize) -> Vec3) -> Vec3 {
         let b = self.bilinear_taps(uv, wrap);
-        let w = self.width as usize;
-        let at = |i: usize, j: usize| texel(j * w + i);
         let ([i0, i1], [j0, j1]) = (b.columns, b.rows);
         let bottom = at(i0, j0).lerp(at(i1, j0), b.s);
         let top = at(i0, j1).lerp(at(i1, j1), b.s);
@@ -228,47 +229,6 @@ fn floor_and_fraction(x: f32) -> (i64, f32) {
     (i, x - i as f32)
 }
 
-/// `k/255` for each 8-bit value `k`: the `f32` that `image` makes of an 8-bit component, so
-/// that an 8-bit texel read through this table is the `f32` texel, bit for bit.
-const UNIT_OF_BYTE: [f32; 256] = {
-    let mut table = [0.0; 256];
-    let mut k = 0;
-    while k < 256 {
-        table[k] = k as f32 / 255.0;
-        k += 1;
-    }
-    table
-};
-
-impl Level {
-    /// The texels as 8-bit RGB (and a byte of padding) when every component is exactly a
-    /// `k/255` (a level loaded from an 8-bit image): 4 bytes a texel instead of 12, so a
-    /// minified lookup, which strides across the level, misses the cache a third as often.
-    fn as_bytes(&self) -> Option<Box<[[u8; 4]]>> {
-        let byte = |c: f32| {
-            let k = (c * 255.0).round();
-            (0.0..=255.0)
-                .contains(&k)
-                .then_some(k as u8)
-                .filter(|&k| UNIT_OF_BYTE[usize::from(k)].to_bits() == c.to_bits())
-        };
-        self.texels
-            .iter()
-            .map(|t| Some([byte(t.x)?, byte(t.y)?, byte(t.z)?, 0]))
-            .collect()
-    }
-}
-
-/// An 8-bit texel as the `f32` texel it copies.
-#[inline]
-fn unpack(b: [u8; 4]) -> Vec3 {
-    Vec3::new(
-        UNIT_OF_BYTE[usize::from(b[0])],
-        UNIT_OF_BYTE[usize::from(b[1])],
-        UNIT_OF_BYTE[usize::from(b[2])],
-    )
-}
-
 /// The texels a bilinear lookup reads: columns `i0, i1`, rows `j0, j1` (from the bottom), and
 /// the weights `s` (towards `i1`) and `t` (towards `j1`): the result is
 /// `lerp(lerp(T(i0,j0), T(i1,j0), s), lerp(T(i0,j1), T(i1,j1), s), t)`.
@@ -293,9 +253,9 @@ pub struct Texture {
     pub levels: Vec<Level>,
     /// The ripmap and the summed-area table, built on first use (see [`ripmap_sat_ewa`]).
     prefiltered: std::sync::OnceLock<Box<ripmap_sat_ewa::Prefiltered>>,
-    /// Level 0's texels in 8 bits when they are exact (see [`Level::as_bytes`]); the lookups
-    /// of level 0 read them.
-    level0_bytes: Option<Box<[[u8; 4]]>>,
+    /// Level 0's texels in 8 bits, tile by tile, when they are exact (see [`bytes`]); the
+    /// lookups of level 0 read them.
+    level0_bytes: Option<bytes::TiledBytes>,
 }
 
 /// Why a texture could not be loaded.
@@ -326,7 +286,7 @@ impl Texture {
     /// must not change afterwards: its 8-bit copy, made here, would no longer match it.
     #[must_use]
     pub fn from_level(name: &str, base: Level) -> Self {
-        let level0_bytes = base.as_bytes();
+        let level0_bytes = bytes::TiledBytes::of(&base);
         let mut levels = vec![base];
         while let Some(last) = levels.last() {
             if last.width == 1 && last.height == 1 {
@@ -343,7 +303,7 @@ impl Texture {
         }
     }
 
-    /// Whether level 0 is also kept in 8 bits (see [`Level::as_bytes`]).
+    /// Whether level 0 is also kept in 8 bits (see [`bytes`]).
     #[must_use]
     pub fn has_8_bit_level0(&self) -> bool {
         self.level0_bytes.is_some()
@@ -357,10 +317,11 @@ impl Texture {
         let level = &self.levels[k];
         match (&self.level0_bytes, filter) {
             (Some(bytes), Filter::Bilinear) if k == 0 => {
-                level.bilinear_of(uv, wrap, |i| unpack(bytes[i]))
+                level.bilinear_of(uv, wrap, |i, j| bytes.texel(i, j))
             }
             (Some(bytes), Filter::Nearest) if k == 0 => {
-                unpack(bytes[level.nearest_index(uv, wrap)])
+                let (i, j) = level.nearest_place(uv, wrap);
+                bytes.texel(i, j)
             }
             (_, Filter::Nearest) => level.nearest(uv, wrap),
             (_, Filter::Bilinear) => level.bilinear(uv, wrap),
