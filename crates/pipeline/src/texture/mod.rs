@@ -111,20 +111,20 @@ impl Level {
     /// Texel `(i, j)` with wrapping.
     #[must_use]
     pub fn texel(&self, i: i64, j: i64, wrap: Wrap) -> Vec3 {
-        self.texels[self.texel_index(i, j, wrap)]
+        self.at(wrap.index(i, self.width), wrap.index(j, self.height))
     }
 
-    /// Where texel `(i, j)`, wrapped, is in [`Self::texels`].
-    fn texel_index(&self, i: i64, j: i64, wrap: Wrap) -> usize {
-        let (i, j) = (wrap.index(i, self.width), wrap.index(j, self.height));
-        j * self.width as usize + i
+    /// Texel `(i, j)` of the level (column, row from the bottom): [`Self::texels`]`[j·w + i]`.
+    #[inline]
+    fn at(&self, i: usize, j: usize) -> Vec3 {
+        self.texels[j * self.width as usize + i]
     }
 
     /// Nearest filtering at `(u, v)`.
     #[must_use]
     pub fn nearest(&self, uv: Vec2, wrap: Wrap) -> Vec3 {
         let (i, j) = self.nearest_place(uv, wrap);
-        self.texels[j * self.width as usize + i]
+        self.at(i, j)
     }
 
     /// The texel nearest filtering reads at `(u, v)`: `(⌊u·w⌋, ⌊v·h⌋)`, wrapped.
@@ -137,8 +137,7 @@ impl Level {
     /// Bilinear filtering at `(u, v)`.
     #[must_use]
     pub fn bilinear(&self, uv: Vec2, wrap: Wrap) -> Vec3 {
-        let w = self.width as usize;
-        self.bilinear_of(uv, wrap, |i, j| self.texels[j * w + i])
+        self.bilinear_of(uv, wrap, |i, j| self.at(i, j))
     }
 
     /// Bilinear filtering at `(u, v)` of the texels `at(i, j)` gives for column `i` and row
