@@ -23,11 +23,13 @@
 mod bytes;
 mod detail;
 mod generated;
+mod lanes;
 pub mod ripmap_sat_ewa;
 mod sampler;
 
 pub use detail::*;
 pub use generated::level_color;
+pub use lanes::LANES;
 pub use sampler::*;
 
 use std::path::Path;

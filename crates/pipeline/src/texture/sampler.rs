@@ -101,6 +101,20 @@ pub struct Lookup {
     pub footprint: [Vec2; 2],
 }
 
+impl Lookup {
+    /// The record of a lookup that read `color` from level 0 with no footprint
+    /// ([`Texture::sample_level0`]): λ left −∞, one tap.
+    #[must_use]
+    pub fn of_level0(color: Vec3) -> Self {
+        Self {
+            color,
+            lod: f32::NEG_INFINITY,
+            taps: 1,
+            ..Self::default()
+        }
+    }
+}
+
 impl Texture {
     /// The footprint of a pixel in texels from the screen derivatives of `(u, v)`:
     /// `(|∂/∂x|, |∂/∂y|)` of `(u·w, v·h)`, and the axis (in uv) of the longer one.
@@ -128,12 +142,7 @@ impl Texture {
     #[must_use]
     pub fn sample_level0(&self, uv: Vec2, s: &Sampler) -> Lookup {
         debug_assert!(!s.uses_footprint());
-        Lookup {
-            color: self.sample_lod(uv, f32::NEG_INFINITY, s, IVec2::ZERO).0,
-            lod: f32::NEG_INFINITY,
-            taps: 1,
-            ..Lookup::default()
-        }
+        Lookup::of_level0(self.sample_lod(uv, f32::NEG_INFINITY, s, IVec2::ZERO).0)
     }
 
     /// Samples at `uv` with the given screen derivatives of `uv`.
@@ -158,21 +167,8 @@ impl Texture {
         if s.mipmap.beyond_the_pyramid() {
             return self.sample_beyond(uv, duv_dx, duv_dy, s);
         }
-        let (major, minor, axis) = self.footprint(duv_dx, duv_dy);
-        // Anisotropic: N taps along the major axis, each with the footprint major/N.
-        let taps = if s.anisotropy > 1 && minor > 0.0 {
-            ((major / minor).ceil() as u32).clamp(1, s.anisotropy)
-        } else {
-            1
-        };
-        let lod = (major / taps as f32).max(1e-12).log2() + s.lod_bias;
-        let size = self.levels[0].size();
-        let mut out = Lookup {
-            lod,
-            taps,
-            footprint: [duv_dx * size, duv_dy * size],
-            ..Lookup::default()
-        };
+        let (mut out, axis) = self.footprint_record(duv_dx, duv_dy, s);
+        let (lod, taps) = (out.lod, out.taps);
         let mut sum = Vec3::ZERO;
         for k in 0..taps {
             let tap = if taps > 1 {
@@ -184,8 +180,38 @@ impl Texture {
             sum += c;
             (out.level, out.level_blend) = (level, blend);
         }
-        out.color = sum / taps as f32;
+        // One tap is its own mean (`c / 1 = c`): no division waiting on the texels.
+        out.color = if taps == 1 { sum } else { sum / taps as f32 };
         out
+    }
+
+    /// What a lookup within the pyramid records of its footprint `(duv_dx, duv_dy)`, before
+    /// it reads a texel: the taps along the major axis (`⌈major/minor⌉`, at most the sampler's
+    /// anisotropy), `λ = log₂(major/taps) + bias`, the footprint in texels; and the major
+    /// axis in uv, along which the taps lie.
+    #[must_use]
+    pub(crate) fn footprint_record(
+        &self,
+        duv_dx: Vec2,
+        duv_dy: Vec2,
+        s: &Sampler,
+    ) -> (Lookup, Vec2) {
+        let (major, minor, axis) = self.footprint(duv_dx, duv_dy);
+        // Anisotropic: N taps along the major axis, each with the footprint major/N.
+        let taps = if s.anisotropy > 1 && minor > 0.0 {
+            ((major / minor).ceil() as u32).clamp(1, s.anisotropy)
+        } else {
+            1
+        };
+        let lod = (major / taps as f32).max(1e-12).log2() + s.lod_bias;
+        let size = self.levels[0].size();
+        let record = Lookup {
+            lod,
+            taps,
+            footprint: [duv_dx * size, duv_dy * size],
+            ..Lookup::default()
+        };
+        (record, axis)
     }
 
     /// A ripmap, summed-area or EWA lookup (the filter within a level and the anisotropic taps
@@ -223,7 +249,6 @@ impl Texture {
         s: &Sampler,
         offset: IVec2,
     ) -> (Vec3, u32, f32) {
-        let max = (self.levels.len() - 1) as f32;
         let read = |k: usize| {
             let at = if offset == IVec2::ZERO {
                 uv
@@ -232,21 +257,34 @@ impl Texture {
             };
             self.read_level(k, at, s.filter, s.wrap)
         };
+        let (k, f) = self.levels_at(lod, s);
+        let color = if f > 0.0 {
+            read(k).lerp(read(k + 1), f)
+        } else {
+            read(k)
+        };
+        (color, k as u32, f)
+    }
+
+    /// The levels an isotropic lookup at level of detail `lod` reads: level `k`, and when
+    /// `f > 0` level `k + 1` too, blended `lerp(T_k, T_{k+1}, f)`. Magnification (`λ ≤ 0`)
+    /// and no mipmap: level 0; nearest level: `⌊λ + ½⌋`; trilinear: `k = ⌊λ⌋`, `f = λ − k`
+    /// (λ clamped to the pyramid).
+    #[must_use]
+    pub(crate) fn levels_at(&self, lod: f32, s: &Sampler) -> (usize, f32) {
+        let max = (self.levels.len() - 1) as f32;
         match s.mipmap {
-            _ if lod <= 0.0 => (read(0), 0, 0.0),
-            Mipmap::None => (read(0), 0, 0.0),
-            Mipmap::Nearest => {
-                let k = (lod + 0.5).floor().clamp(0.0, max) as usize;
-                (read(k), k as u32, 0.0)
-            }
+            _ if lod <= 0.0 => (0, 0.0),
+            Mipmap::None => (0, 0.0),
+            Mipmap::Nearest => ((lod + 0.5).floor().clamp(0.0, max) as usize, 0.0),
             Mipmap::Linear | Mipmap::Ripmap | Mipmap::SummedArea | Mipmap::Ewa => {
                 let l = lod.clamp(0.0, max);
                 let k = l.floor() as usize;
                 let f = l - k as f32;
                 if k + 1 < self.levels.len() && f > 0.0 {
-                    (read(k).lerp(read(k + 1), f), k as u32, f)
+                    (k, f)
                 } else {
-                    (read(k), k as u32, 0.0)
+                    (k, 0.0)
                 }
             }
         }

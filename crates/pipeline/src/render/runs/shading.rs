@@ -1,7 +1,8 @@
 //! A run's fragments shaded together: each fragment's barycentric weights at its pixel's
-//! centre, its texels (the uv's x derivative taken from its right neighbour where that is the
-//! same triangle), its points and normals, then Phong lighting eight fragments at a time in
-//! SIMD lanes — each value what [`ResolveContext::shade_at`] gives at that pixel, bit for bit.
+//! centre, its texels (the uv's derivatives those of its 2×2 quad; the bilinear reads of the
+//! run's one-tap lookups eight at a time in SIMD lanes), its points and normals, then Phong
+//! lighting eight fragments at a time in lanes — each value what
+//! [`ResolveContext::shade_at`] gives at that pixel, bit for bit.
 
 use glam::{I64Vec2, Vec2, Vec3};
 use wide::f32x8;
@@ -12,7 +13,7 @@ use crate::lighting::lanes::{LANES, Lighting, shade_lanes, shade_lanes_color};
 use crate::lighting::{Frequency, ShadeTerms};
 use crate::raster::{RasterTriangle, quad_offset};
 use crate::render::resolve::ResolveContext;
-use crate::texture::Lookup;
+use crate::texture::{Filter, Lookup, Texture, Wrap};
 
 impl ResolveContext<'_> {
     /// The colours, lighting terms and texture lookups of `run`'s fragments (whose pixels
@@ -118,7 +119,10 @@ impl ResolveContext<'_> {
     /// The texture lookups of a run's fragments at original-triangle weights `b` (fragment
     /// `f` at its pixel's fixed-point centre `centre(f)`), as [`Self::texture_lookup`] makes
     /// each: `uv` interpolated from the same weights; its derivatives those of its 2×2 quad,
-    /// taken once for the two fragments of one triangle in a quad's row.
+    /// taken once for the two fragments of one triangle in a quad's row; its footprint and λ
+    /// fragment by fragment, and then, where the lookup is one bilinear tap (no anisotropic
+    /// taps, no range query beyond the pyramid), the levels it reads read for the whole run
+    /// together ([`Texture::bilinear_lanes`]).
     fn run_texels(
         &self,
         run: &Run,
@@ -148,37 +152,64 @@ impl ResolveContext<'_> {
             }
         }
         let sampler = &self.settings.sampler;
-        // The last derivatives taken: the triangle, its quad's lower-left place, the pair.
-        let mut last: Option<(u32, I64Vec2, (Vec2, Vec2))> = None;
-        for f in 0..b.len() {
-            let Some(uvs) = uvs[f] else {
-                continue;
-            };
-            if !self.derivatives {
-                let lookup = texture.sample_level0(uv[f], sampler);
-                colors[f] = Some(lookup.color);
-                if keep {
-                    out[f] = Some((uv[f], lookup));
-                }
-                continue;
-            }
-            let c = centre(f);
-            let o = c - quad_offset(c, self.settings.height);
-            let (dx, dy) = match last {
-                Some((t, at, d)) if t == run.triangle[f] && at == o => d,
-                _ => {
-                    let t: &RasterTriangle = &self.triangles[run.triangle[f] as usize];
-                    let bary = self.primitives[t.primitive as usize].bary_corners(t);
-                    let d = t.uv_derivatives(&bary, uvs, o, pc);
-                    last = Some((run.triangle[f], o, d));
-                    d
-                }
-            };
-            let lookup = texture.sample(uv[f], dx, dy, sampler);
+        let n = b.len();
+        // Bilinear lookups of one tap are read in lanes: each one's record (its colour still
+        // to come), the uv it reads at, its finer level and the next one's weight.
+        let in_lanes = sampler.filter == Filter::Bilinear;
+        let mut reads = LaneReads {
+            summed: self.derivatives,
+            ..LaneReads::default()
+        };
+        // Fragment `f`'s lookup made: its colour, and the lookup where the frame keeps it.
+        let mut put = |f: usize, lookup: Lookup| {
             colors[f] = Some(lookup.color);
             if keep {
                 out[f] = Some((uv[f], lookup));
             }
+        };
+        if !self.derivatives {
+            // Level 0 alone, no footprint: what `sample_level0` reads.
+            for f in (0..n).filter(|&f| uvs[f].is_some()) {
+                if in_lanes {
+                    reads.add(f, Lookup::of_level0(Vec3::ZERO), uv[f], (0, 0.0));
+                    continue;
+                }
+                put(f, texture.sample_level0(uv[f], sampler));
+            }
+        } else {
+            let in_lanes = in_lanes && !sampler.mipmap.beyond_the_pyramid();
+            // The last derivatives taken: the triangle, its quad's lower-left place, the pair.
+            let mut last: Option<(u32, I64Vec2, (Vec2, Vec2))> = None;
+            for f in 0..n {
+                let Some(uvs) = uvs[f] else {
+                    continue;
+                };
+                let c = centre(f);
+                let o = c - quad_offset(c, self.settings.height);
+                let (dx, dy) = match last {
+                    Some((t, at, d)) if t == run.triangle[f] && at == o => d,
+                    _ => {
+                        let t: &RasterTriangle = &self.triangles[run.triangle[f] as usize];
+                        let bary = self.primitives[t.primitive as usize].bary_corners(t);
+                        let d = t.uv_derivatives(&bary, uvs, o, pc);
+                        last = Some((run.triangle[f], o, d));
+                        d
+                    }
+                };
+                if in_lanes {
+                    let (record, axis) = texture.footprint_record(dx, dy, sampler);
+                    if record.taps == 1 {
+                        // One tap, at `uv + axis·0` as `sample_shifted` places it.
+                        let levels = texture.levels_at(record.lod, sampler);
+                        reads.add(f, record, uv[f] + axis * 0.0, levels);
+                        continue;
+                    }
+                }
+                put(f, texture.sample(uv[f], dx, dy, sampler));
+            }
+        }
+        for (f, lookup) in reads.read(texture, n, sampler.wrap) {
+            put(f, lookup);
         }
         colors
     }
@@ -196,5 +227,59 @@ impl ResolveContext<'_> {
                 + v[2].world.truncate() * w.z;
             normal[f] = v[0].normal_world * w.x + v[1].normal_world * w.y + v[2].normal_world * w.z;
         }
+    }
+}
+
+/// A run's bilinear lookups of one tap each, to be read together in lanes
+/// ([`crate::texture::Texture::bilinear_lanes`]).
+#[derive(Default)]
+struct LaneReads {
+    /// Lookup `f`'s record without its colour, where it is read here.
+    record: [Option<Lookup>; LANES],
+    /// Where it reads.
+    at: [Vec2; LANES],
+    /// Its finer level `k`.
+    finer: [usize; LANES],
+    /// The weight of level `k + 1` (0: level `k` alone).
+    blend: [f32; LANES],
+    /// Whether the colours are one tap's mean, summed from zero (`sample_shifted`: `0 + c`,
+    /// +0 where `c` is −0), or level 0's texel as read (`sample_level0`).
+    summed: bool,
+}
+
+impl LaneReads {
+    /// Lookup `f`, `record` without its colour, reading at `at` the levels `(k, f)` of
+    /// [`crate::texture::Texture::levels_at`].
+    fn add(&mut self, f: usize, record: Lookup, at: Vec2, (k, blend): (usize, f32)) {
+        self.record[f] = Some(record);
+        self.at[f] = at;
+        (self.finer[f], self.blend[f]) = (k, blend);
+    }
+
+    /// The lookups among the first `n`, each with the colour and levels `sample_shifted` (or
+    /// `sample_level0`) gives it: `lerp(T_k, T_{k+1}, f)` where it blends, `T_k` elsewhere.
+    fn read(
+        &self,
+        texture: &Texture,
+        n: usize,
+        wrap: Wrap,
+    ) -> impl Iterator<Item = (usize, Lookup)> + '_ {
+        let any = self.record[..n].iter().any(Option::is_some);
+        let finer = any.then(|| texture.bilinear_lanes(&self.finer, &self.at, n, wrap));
+        let coarser = self.blend[..n].iter().any(|&f| f > 0.0).then(|| {
+            let next = std::array::from_fn(|f| self.finer[f] + usize::from(self.blend[f] > 0.0));
+            texture.bilinear_lanes(&next, &self.at, n, wrap)
+        });
+        (0..n).filter_map(move |f| {
+            let mut lookup = self.record[f]?;
+            let c = finer.as_ref()?[f];
+            let c = match &coarser {
+                Some(next) if self.blend[f] > 0.0 => c.lerp(next[f], self.blend[f]),
+                _ => c,
+            };
+            lookup.color = if self.summed { Vec3::ZERO + c } else { c };
+            (lookup.level, lookup.level_blend) = (self.finer[f] as u32, self.blend[f]);
+            Some((f, lookup))
+        })
     }
 }
