@@ -122,7 +122,7 @@ mod tests {
         ];
         for tex in [&bytes, &any] {
             for wrap in [Wrap::Repeat, Wrap::Clamp] {
-                for round in 0..400 {
+                for round in 0..2000 {
                     let n = round % (LANES + 1);
                     let level: [usize; LANES] =
                         std::array::from_fn(|_| rng.usize(..tex.levels.len()));
