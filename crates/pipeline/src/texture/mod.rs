@@ -74,7 +74,8 @@ impl Wrap {
         let second = match self {
             Self::Repeat if first + 1 == n as usize => 0,
             Self::Repeat => first + 1,
-            Self::Clamp => self.index(i + 1, n),
+            // Saturating: a place past i64's end (a coordinate of +∞) stays at the last texel.
+            Self::Clamp => self.index(i.saturating_add(1), n),
         };
         (first, second)
     }
@@ -399,7 +400,25 @@ impl Texture {
 
 #[cfg(test)]
 mod tests {
-    use super::floor_and_fraction;
+    use super::{Wrap, floor_and_fraction};
+
+    /// The pair of columns a bilinear lookup reads, wrapped: inside the level `(i, i + 1)`; at
+    /// the last column, repeating goes round to 0 and clamping stays; far outside, at the ends
+    /// of i64 (where `floor_and_fraction` puts ±∞), clamping gives the first or last column
+    /// twice (by hand: a level 5 wide has columns 0 to 4) and does not overflow.
+    #[test]
+    fn a_pair_of_columns_wraps_and_clamps_at_every_place() {
+        assert_eq!(Wrap::Repeat.pair(2, 5), (2, 3));
+        assert_eq!(Wrap::Clamp.pair(2, 5), (2, 3));
+        assert_eq!(Wrap::Repeat.pair(4, 5), (4, 0));
+        assert_eq!(Wrap::Clamp.pair(4, 5), (4, 4));
+        assert_eq!(Wrap::Repeat.pair(-1, 5), (4, 0));
+        assert_eq!(Wrap::Clamp.pair(-1, 5), (0, 0));
+        assert_eq!(Wrap::Clamp.pair(i64::MAX, 5), (4, 4));
+        assert_eq!(Wrap::Clamp.pair(i64::MIN, 5), (0, 0));
+        // i64::MAX = 5·1844674407370955161 + 2, so column 2, then 3.
+        assert_eq!(Wrap::Repeat.pair(i64::MAX, 5), (2, 3));
+    }
 
     /// The floor and fraction equal `f32::floor`'s and `x − ⌊x⌋` for whole numbers, halves,
     /// values a hair either side of a whole number, negative values, values past 2²³ and the
