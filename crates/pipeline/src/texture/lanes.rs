@@ -6,10 +6,8 @@
 use glam::{Vec2, Vec3};
 use wide::f32x8;
 
-use super::{Texture, Wrap, floor_and_fraction};
-
-/// Lookups read together.
-pub const LANES: usize = 8;
+use super::{Texture, Wrap};
+use crate::lighting::lanes::LANES;
 
 impl Texture {
     /// Level `level[f]` read by bilinear filtering at `uv[f]`, for each lookup `f < n`: with
@@ -25,29 +23,20 @@ impl Texture {
         n: usize,
         wrap: Wrap,
     ) -> [Vec3; LANES] {
-        // Each lookup's weights, and its four texels' places: corners (i0, j0), (i1, j0),
-        // (i0, j1), (i1, j1).
+        // Each lookup's weights and its four texels (as `Level::bilinear_taps` places them),
+        // [corner][channel] a lane a lookup: corners (i0, j0), (i1, j0), (i0, j1), (i1, j1).
         let (mut s_of, mut t_of) = ([0.0; LANES], [0.0; LANES]);
-        let mut places = [[(0, 0); 4]; LANES];
-        for f in 0..n {
-            let l = &self.levels[level[f]];
-            let (i, s) = floor_and_fraction(uv[f].x * l.width as f32 - 0.5);
-            let (j, t) = floor_and_fraction(uv[f].y * l.height as f32 - 0.5);
-            let (i0, i1) = wrap.pair(i, l.width);
-            let (j0, j1) = wrap.pair(j, l.height);
-            (s_of[f], t_of[f]) = (s, t);
-            places[f] = [(i0, j0), (i1, j0), (i0, j1), (i1, j1)];
-        }
-        // The texels, [corner][channel] a lane a lookup, gathered one lookup at a time.
         let mut t = [[[0.0; LANES]; 3]; 4];
         for f in 0..n {
-            let l = &self.levels[level[f]];
-            for (c, &(i, j)) in places[f].iter().enumerate() {
-                let texel = match &self.level0_bytes {
-                    Some(bytes) if level[f] == 0 => bytes.texel(i, j),
-                    _ => l.at(i, j),
-                };
-                [t[c][0][f], t[c][1][f], t[c][2][f]] = texel.to_array();
+            let k = level[f];
+            let taps = self.levels[k].bilinear_taps(uv[f], wrap);
+            let ([i0, i1], [j0, j1]) = (taps.columns, taps.rows);
+            (s_of[f], t_of[f]) = (taps.s, taps.t);
+            for (c, (i, j)) in [(i0, j0), (i1, j0), (i0, j1), (i1, j1)]
+                .into_iter()
+                .enumerate()
+            {
+                [t[c][0][f], t[c][1][f], t[c][2][f]] = self.texel_of_level(k, i, j).to_array();
             }
         }
         let texels = t.map(|c| c.map(f32x8::new));
@@ -67,7 +56,7 @@ impl Texture {
 mod tests {
     use glam::{Vec2, Vec3};
 
-    use super::LANES;
+    use crate::lighting::lanes::LANES;
     use crate::texture::{Filter, Level, Texture, Wrap};
 
     /// A `w × h` texture whose texels are `value(i, j)`.

@@ -29,7 +29,6 @@ mod sampler;
 
 pub use detail::*;
 pub use generated::level_color;
-pub use lanes::LANES;
 pub use sampler::*;
 
 use std::path::Path;
@@ -317,16 +316,22 @@ impl Texture {
     #[inline]
     pub fn read_level(&self, k: usize, uv: Vec2, filter: Filter, wrap: Wrap) -> Vec3 {
         let level = &self.levels[k];
-        match (&self.level0_bytes, filter) {
-            (Some(bytes), Filter::Bilinear) if k == 0 => {
-                level.bilinear_of(uv, wrap, |i, j| bytes.texel(i, j))
-            }
-            (Some(bytes), Filter::Nearest) if k == 0 => {
+        match filter {
+            Filter::Bilinear => level.bilinear_of(uv, wrap, |i, j| self.texel_of_level(k, i, j)),
+            Filter::Nearest => {
                 let (i, j) = level.nearest_place(uv, wrap);
-                bytes.texel(i, j)
+                self.texel_of_level(k, i, j)
             }
-            (_, Filter::Nearest) => level.nearest(uv, wrap),
-            (_, Filter::Bilinear) => level.bilinear(uv, wrap),
+        }
+    }
+
+    /// Texel `(i, j)` of level `k` (within it): from level 0's 8-bit copy where it has one
+    /// (the same values), from the level's own texels otherwise.
+    #[inline]
+    fn texel_of_level(&self, k: usize, i: usize, j: usize) -> Vec3 {
+        match &self.level0_bytes {
+            Some(bytes) if k == 0 => bytes.texel(i, j),
+            _ => self.levels[k].at(i, j),
         }
     }
 
