@@ -7,7 +7,10 @@ use glam::{Vec2, Vec3};
 use wide::f32x8;
 
 use super::{Texture, Wrap};
-use crate::lighting::lanes::LANES;
+
+/// Lookups read together (a run's fragments: the lighting's lanes, which `texture`, below
+/// `lighting` in ARCHITECTURE.md's table, does not use).
+pub const LANES: usize = 8;
 
 impl Texture {
     /// Level `level[f]` read by bilinear filtering at `uv[f]`, for each lookup `f < n`: with
@@ -56,7 +59,7 @@ impl Texture {
 mod tests {
     use glam::{Vec2, Vec3};
 
-    use crate::lighting::lanes::LANES;
+    use super::LANES;
     use crate::texture::{Filter, Level, Texture, Wrap};
 
     /// A `w × h` texture whose texels are `value(i, j)`.
