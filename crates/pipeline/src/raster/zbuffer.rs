@@ -103,6 +103,88 @@ impl std::fmt::Debug for Bins {
     }
 }
 
+/// Triangles are binned in runs of this many, each run in parallel.
+const RUN: usize = 1 << 16;
+
+impl Bins {
+    /// Binning, in parallel over runs of triangles: each band of `rows_per` image rows (of an
+    /// image `size` pixels) gets the triangles whose bounding box reaches its rows, run after
+    /// run, so in order. A triangle whose box holds no sample position covers none and is left
+    /// out (its counts stay zero).
+    fn bin(
+        &mut self,
+        tris: &[RasterTriangle],
+        offsets: &[I64Vec2],
+        (width, height): (u32, u32),
+        rows_per: usize,
+    ) {
+        use rayon::prelude::*;
+        let bands = (height as usize).div_ceil(rows_per).max(1);
+        let grid = crate::grid::Grid::new(width, height);
+        let runs = &mut self.runs;
+        runs.resize_with(tris.len().div_ceil(RUN), Vec::new);
+        runs.par_iter_mut()
+            .zip(tris.par_chunks(RUN))
+            .enumerate()
+            .for_each(|(r, (bins, run))| {
+                bins.resize_with(bands, Vec::new);
+                bins.iter_mut().for_each(Vec::clear);
+                for (k, t) in run.iter().enumerate() {
+                    if !t.box_holds_a_sample(offsets) {
+                        continue;
+                    }
+                    let [_, y0, _, y1] = t.bbox;
+                    // Image rows of the box: from window row y1's (top) to y0's (bottom).
+                    let (r0, r1) = (
+                        grid.row(u32::from(y1)) as usize,
+                        grid.row(u32::from(y0)) as usize,
+                    );
+                    for bin in &mut bins[r0 / rows_per..=r1 / rows_per] {
+                        bin.push((r * RUN + k) as u32);
+                    }
+                }
+            });
+    }
+
+    /// What each of the `triangles` did over all bands: each run's triangles summed over the
+    /// bands' counts, in parallel over runs (run `r`'s entries in band `b`'s counts follow
+    /// those of the runs before it).
+    fn total(&mut self, triangles: usize) -> &[RasterCounts] {
+        use rayon::prelude::*;
+        let Self {
+            runs,
+            counts,
+            total,
+        } = self;
+        let bands = counts.len();
+        let counts = &*counts;
+        let mut firsts: Vec<Vec<usize>> = Vec::with_capacity(runs.len());
+        let mut at = vec![0usize; bands];
+        for bins in runs.iter() {
+            firsts.push(at.clone());
+            for (a, bin) in at.iter_mut().zip(bins) {
+                *a += bin.len();
+            }
+        }
+        total.clear();
+        total.resize(triangles, RasterCounts::default());
+        total
+            .par_chunks_mut(RUN)
+            .zip(runs.par_iter().zip(firsts))
+            .enumerate()
+            .for_each(|(r, (total, (bins, firsts)))| {
+                for ((bin, first), counts) in bins.iter().zip(firsts).zip(counts) {
+                    for (&i, c) in bin.iter().zip(&counts[first..]) {
+                        let t = &mut total[i as usize - r * RUN];
+                        t.covered += c.covered;
+                        t.written += c.written;
+                    }
+                }
+            });
+        total
+    }
+}
+
 /// What rasterizing one triangle did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 pub struct RasterCounts {
@@ -112,7 +194,53 @@ pub struct RasterCounts {
     pub written: u32,
 }
 
+/// Consecutive image rows of the sample buffers, read: the samples from index `first` of the
+/// whole buffers on (sample `s` of image pixel `i` is at `i·samples + s`, as in
+/// [`SampleBuffers`]).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct SampleRows<'a> {
+    depth: &'a [f32],
+    triangle: &'a [u32],
+    first: usize,
+    offsets: &'a [I64Vec2],
+}
+
+impl<'a> SampleRows<'a> {
+    /// The owning triangles of samples `range` (indices of the whole buffers), which must lie
+    /// in these rows.
+    #[must_use]
+    #[inline]
+    pub fn triangles(&self, range: std::ops::Range<usize>) -> &'a [u32] {
+        &self.triangle[range.start - self.first..range.end - self.first]
+    }
+
+    /// The depths of samples `range` (indices of the whole buffers), which must lie in these
+    /// rows.
+    #[must_use]
+    #[inline]
+    pub fn depths(&self, range: std::ops::Range<usize>) -> &'a [f32] {
+        &self.depth[range.start - self.first..range.end - self.first]
+    }
+
+    /// The position of sample `s` within a pixel, from its bottom-left corner, in fixed point.
+    #[must_use]
+    pub fn offset(&self, s: usize) -> I64Vec2 {
+        self.offsets[s]
+    }
+}
+
 impl SampleBuffers {
+    /// Every row, read.
+    #[must_use]
+    pub fn rows(&self) -> SampleRows<'_> {
+        SampleRows {
+            depth: &self.depth,
+            triangle: &self.triangle,
+            first: 0,
+            offsets: &self.offsets,
+        }
+    }
+
     /// The position of sample `s` within a pixel, from its bottom-left corner, in fixed point.
     #[must_use]
     pub fn offset(&self, s: usize) -> I64Vec2 {
@@ -149,99 +277,94 @@ impl SampleBuffers {
     /// triangles one after another over the whole image ([`Self::rasterize_reference`] checks
     /// it in the tests).
     pub fn rasterize_all(&mut self, tris: &[RasterTriangle], test: DepthTest) -> &[RasterCounts] {
+        let rows_per = self.band_rows(1);
+        self.rasterize_all_then::<()>(tris, test, rows_per, &mut [], |_, _| ())
+    }
+
+    /// What each triangle did in the last [`Self::rasterize_all`] (or
+    /// [`Self::rasterize_all_then`]) on these buffers: scratch kept with them, empty in a clone.
+    #[must_use]
+    pub fn drawn(&self) -> &[RasterCounts] {
+        &self.bins.total
+    }
+
+    /// How many image rows each band of [`Self::rasterize_all`] takes: the image cut into four
+    /// bands a thread, each a multiple of `align` rows (`align` ≥ 1).
+    #[must_use]
+    pub fn band_rows(&self, align: usize) -> usize {
+        let h = self.height as usize;
+        let bands = (rayon::current_num_threads() * 4).clamp(1, h.max(1));
+        h.div_ceil(bands).max(1).next_multiple_of(align.max(1))
+    }
+
+    /// [`Self::rasterize_all`] in bands of `rows_per` image rows, where each band, as soon as
+    /// it has drawn every triangle over its rows, calls `then(&mut each[b], rows)` with its
+    /// rows as drawn (band `b`; `each` holds one value a band, or none at all): what is done
+    /// with a band's samples is done while they are in the cache of the core that wrote them.
+    /// The samples are those [`Self::rasterize_all`] gives, however the rows are cut.
+    pub fn rasterize_all_then<T: Send>(
+        &mut self,
+        tris: &[RasterTriangle],
+        test: DepthTest,
+        rows_per: usize,
+        each: &mut [T],
+        then: impl Fn(&mut T, SampleRows<'_>) + Sync,
+    ) -> &[RasterCounts] {
         use rayon::prelude::*;
         let (w, n) = (self.width as usize, self.offsets.len());
         let h = self.height as usize;
-        let bands = (rayon::current_num_threads() * 4).clamp(1, h.max(1));
-        let rows_per = h.div_ceil(bands).max(1);
-        let bands = h.div_ceil(rows_per);
-        // Binning, in parallel over runs of triangles: each band gets the triangles whose
-        // bounding box reaches its rows, run after run, so in order. A triangle whose box holds
-        // no sample position covers none and is left out (its counts stay zero).
-        const RUN: usize = 1 << 16;
-        let Bins {
-            runs,
-            counts,
-            total,
-        } = &mut self.bins;
+        let rows_per = rows_per.max(1);
+        let bands = h.div_ceil(rows_per).max(1);
+        debug_assert!(each.is_empty() || each.len() == bands);
+        self.bins
+            .bin(tris, &self.offsets, (self.width, self.height), rows_per);
+        let Bins { runs, counts, .. } = &mut self.bins;
         let offsets = &self.offsets;
-        let grid = crate::grid::Grid::new(self.width, self.height);
-        runs.resize_with(tris.len().div_ceil(RUN), Vec::new);
-        runs.par_iter_mut()
-            .zip(tris.par_chunks(RUN))
-            .enumerate()
-            .for_each(|(r, (bins, run))| {
-                bins.resize_with(bands, Vec::new);
-                bins.iter_mut().for_each(Vec::clear);
-                for (k, t) in run.iter().enumerate() {
-                    if !t.box_holds_a_sample(offsets) {
-                        continue;
-                    }
-                    let [_, y0, _, y1] = t.bbox;
-                    // Image rows of the box: from window row y1's (top) to y0's (bottom).
-                    let (r0, r1) = (
-                        grid.row(u32::from(y1)) as usize,
-                        grid.row(u32::from(y0)) as usize,
-                    );
-                    for bin in &mut bins[r0 / rows_per..=r1 / rows_per] {
-                        bin.push((r * RUN + k) as u32);
-                    }
-                }
-            });
         let chunk = rows_per * w * n;
         let height = self.height;
         counts.resize_with(bands, Vec::new);
         let runs = &*runs;
-        self.depth
+        let draw = |b: usize, depth: &mut [f32], owner: &mut [u32], counts: &mut Vec<_>| {
+            let rows = depth.len() / (w * n);
+            let mut band = Band {
+                depth,
+                owner,
+                width: w,
+                height,
+                first_row: b * rows_per,
+                rows,
+                offsets,
+            };
+            counts.clear();
+            counts.extend(
+                runs.iter()
+                    .flat_map(|bins| &bins[b])
+                    .map(|&i| band.rasterize(&tris[i as usize], i, test)),
+            );
+        };
+        let buffers = self
+            .depth
             .par_chunks_mut(chunk)
             .zip(self.triangle.par_chunks_mut(chunk))
             .zip(counts.par_iter_mut())
-            .enumerate()
-            .for_each(|(b, ((depth, owner), counts))| {
-                let rows = depth.len() / (w * n);
-                let mut band = Band {
-                    depth,
-                    owner,
-                    width: w,
-                    height,
-                    first_row: b * rows_per,
-                    rows,
-                    offsets,
-                };
-                counts.clear();
-                counts.extend(
-                    runs.iter()
-                        .flat_map(|bins| &bins[b])
-                        .map(|&i| band.rasterize(&tris[i as usize], i, test)),
-                );
-            });
-        // Each run's triangles summed over the bands, in parallel over runs: run `r`'s entries
-        // in band `b`'s counts follow those of the runs before it.
-        let counts = &*counts;
-        let mut firsts: Vec<Vec<usize>> = Vec::with_capacity(runs.len());
-        let mut at = vec![0usize; bands];
-        for bins in runs {
-            firsts.push(at.clone());
-            for (a, bin) in at.iter_mut().zip(bins) {
-                *a += bin.len();
-            }
+            .enumerate();
+        if each.is_empty() {
+            buffers.for_each(|(b, ((depth, owner), counts))| draw(b, depth, owner, counts));
+        } else {
+            buffers
+                .zip(each.par_iter_mut())
+                .for_each(|((b, ((depth, owner), counts)), each)| {
+                    draw(b, depth, owner, counts);
+                    let rows = SampleRows {
+                        depth,
+                        triangle: owner,
+                        first: b * chunk,
+                        offsets,
+                    };
+                    then(each, rows);
+                });
         }
-        total.clear();
-        total.resize(tris.len(), RasterCounts::default());
-        total
-            .par_chunks_mut(RUN)
-            .zip(runs.par_iter().zip(firsts))
-            .enumerate()
-            .for_each(|(r, (total, (bins, firsts)))| {
-                for ((bin, first), counts) in bins.iter().zip(firsts).zip(counts) {
-                    for (&i, c) in bin.iter().zip(&counts[first..]) {
-                        let t = &mut total[i as usize - r * RUN];
-                        t.covered += c.covered;
-                        t.written += c.written;
-                    }
-                }
-            });
-        total
+        self.bins.total(tris.len())
     }
 
     /// The simple rasterizer the fast one is checked against: every sample of the bounding box

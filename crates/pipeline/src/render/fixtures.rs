@@ -152,7 +152,7 @@ pub(crate) fn context<'a>(
         face_shading: &frame.face_shading,
         scene,
         settings,
-        samples: &frame.samples,
+        samples: frame.samples.rows(),
         triangles: &frame.triangles,
         primitives: &frame.primitives,
         vertices: &frame.vertices,

@@ -249,19 +249,9 @@ fn render_stages(
     }
     times.clip_setup = t.elapsed();
 
-    let t = Instant::now();
-    let (width, height) = (settings.width, settings.height);
-    let mut samples = rasterize(
-        scene,
-        settings,
-        storage.samples.take(),
-        &triangles,
-        &mut primitives,
-    )?;
-    times.raster = t.elapsed();
-    // Fragments a shader discards are taken out of the depth test, layer by layer.
-    let mut peeled = student_shaders::Peeled::default();
-    if let Some(results) = &vertex_results {
+    let in_bands = drawn_in_bands(scene, path, vertex_results.is_some());
+    let spare = (storage.samples.take(), storage.pixels);
+    let (mut samples, pixels, covered, shaders) = if in_bands {
         let frame = student_shaders::Frame {
             scene,
             settings,
@@ -272,30 +262,45 @@ fn render_stages(
             vertex_shading: &vertex_shading,
             face_shading: &face_shading,
         };
-        peeled = student_shaders::peel_discarded(&frame, results, &mut samples)?;
-    }
-
-    let t = Instant::now();
-    let ctx = ResolveContext {
-        path,
-        derivatives: settings.capture.texturing || settings.sampler.uses_footprint(),
-        scene,
-        settings,
-        samples: &samples,
-        triangles: &triangles,
-        primitives: &primitives,
-        vertices: &vertices,
-        vertex_shading: &vertex_shading,
-        face_shading: &face_shading,
+        let (samples, pixels, covered) = draw_in_bands(&frame, spare, &mut times);
+        (samples, pixels, covered, None)
+    } else {
+        let t = Instant::now();
+        let mut samples = rasterize(scene, settings, spare.0, &triangles, &mut primitives)?;
+        times.raster = t.elapsed();
+        let frame = student_shaders::Frame {
+            scene,
+            settings,
+            matrices: &matrices,
+            triangles: &triangles,
+            primitives: &primitives,
+            vertices: &vertices,
+            vertex_shading: &vertex_shading,
+            face_shading: &face_shading,
+        };
+        // Fragments a shader discards are taken out of the depth test, layer by layer.
+        let mut peeled = student_shaders::Peeled::default();
+        if let Some(results) = &vertex_results {
+            peeled = student_shaders::peel_discarded(&frame, results, &mut samples)?;
+        }
+        let t = Instant::now();
+        let ctx = frame.context(path, samples.rows());
+        let (mut pixels, covered) = resolve(&ctx, spare.1);
+        let shaders =
+            student_shaders::record(&ctx, &matrices, vertex_results, &mut pixels.color, peeled)?;
+        times.resolve = t.elapsed();
+        (samples, pixels, covered, shaders)
     };
-    let (mut pixels, covered) = resolve(&ctx, storage.pixels);
-    let shaders =
-        student_shaders::record(&ctx, &matrices, vertex_results, &mut pixels.color, peeled)?;
-    times.resolve = t.elapsed();
+    if in_bands {
+        // Each primitive's counts, from its raster triangles' (the bands read the records).
+        let t = Instant::now();
+        rasterization::record_counts(&mut primitives, samples.drawn());
+        times.raster += t.elapsed();
+    }
     // The next frame drawn into this storage clears only what this one covered.
     samples.covered.0 = Some(covered);
 
-    let labels = matrices.screen_labels(&scene.objects, width, height);
+    let labels = matrices.screen_labels(&scene.objects, settings.width, settings.height);
     let capture = FrameCapture {
         settings: *settings,
         camera: scene.camera,
@@ -319,8 +324,63 @@ fn render_stages(
     Ok((capture, times))
 }
 
-/// What `of` finds on each object that has it, with the object's name: the textures and the
-/// cube maps a frame read.
+/// Whether a frame is rasterized and resolved band by band, shading right after coverage
+/// ([`draw_in_bands`]): wherever nothing between the two reads or changes the whole image's
+/// samples — no student's inside or depth test (drawn triangle after triangle), no student's
+/// shader (whose discards are peeled from the whole image before the resolve) — on the fast
+/// paths (the reference path is what the bands are checked against).
+fn drawn_in_bands(scene: &Scene, path: Path, shaders: bool) -> bool {
+    path == Path::Fast && !shaders && !rasterization::has_hooks(scene)
+}
+
+/// Rasterization with the depth test and the resolve, band by band
+/// ([`resolve::rasterize_and_resolve`]), into `spare`'s storage; the inspected pixel's terms
+/// and lookup after them (they read every row). What each triangle drew is left in the
+/// samples ([`crate::raster::SampleBuffers::drawn`]).
+fn draw_in_bands(
+    frame: &student_shaders::Frame<'_>,
+    spare: (
+        Option<crate::raster::SampleBuffers>,
+        crate::capture::PixelBuffers,
+    ),
+    times: &mut StageTimes,
+) -> (
+    crate::raster::SampleBuffers,
+    crate::capture::PixelBuffers,
+    crate::raster::CoveredRows,
+) {
+    let (settings, path) = (frame.settings, Path::Fast);
+    let t = Instant::now();
+    let mut samples = rasterization::cleared_samples(settings, spare.0);
+    let cleared = t.elapsed();
+    let ctx = frame.context(path, crate::raster::SampleRows::default());
+    let (mut pixels, covered, [raster, resolving]) =
+        resolve::rasterize_and_resolve(&ctx, &mut samples, settings.depth_test, spare.1);
+    let t = Instant::now();
+    pixels.inspected = resolve::inspected(&frame.context(path, samples.rows()), &pixels);
+    times.raster = cleared + raster;
+    times.resolve = resolving + t.elapsed();
+    (samples, pixels, covered)
+}
+
+impl<'a> student_shaders::Frame<'a> {
+    /// What the resolve reads of this frame: its records and `samples`, taking `path`.
+    fn context(&self, path: Path, samples: crate::raster::SampleRows<'a>) -> ResolveContext<'a> {
+        ResolveContext {
+            path,
+            derivatives: self.settings.capture.texturing || self.settings.sampler.uses_footprint(),
+            scene: self.scene,
+            settings: self.settings,
+            samples,
+            triangles: self.triangles,
+            primitives: self.primitives,
+            vertices: self.vertices,
+            vertex_shading: self.vertex_shading,
+            face_shading: self.face_shading,
+        }
+    }
+}
+
 /// What a sample of the colour buffer keeps of a fragment's colour: each channel clamped to
 /// [0, 1], as a fixed-point colour buffer stores it (OpenGL 3.3 §4.1.8: colours are clamped
 /// before they are written to a fixed-point buffer). Multisampling averages the samples *after*
@@ -331,6 +391,8 @@ pub(super) fn stored_color(c: glam::Vec3) -> glam::Vec3 {
     c.clamp(glam::Vec3::ZERO, glam::Vec3::ONE)
 }
 
+/// What `of` finds on each object that has it, with the object's name: the textures and the
+/// cube maps a frame read.
 fn by_object<T>(scene: &Scene, of: impl Fn(&Object) -> Option<T>) -> Vec<(String, T)> {
     scene
         .objects

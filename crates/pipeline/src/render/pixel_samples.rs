@@ -9,7 +9,7 @@ impl ResolveContext<'_> {
     /// covered: the background.
     pub(super) fn background_run(&self, i: usize, room: usize) -> usize {
         let s = self.settings.samples.count();
-        let tris = &self.samples.triangle[i * s..(i + room) * s];
+        let tris = self.samples.triangles(i * s..(i + room) * s);
         if tris.first().is_some_and(|&t| t != NONE) {
             return 0;
         }
@@ -50,7 +50,7 @@ impl ResolveContext<'_> {
     /// The mean of image pixel `i`'s sample depths.
     pub(super) fn mean_depth(&self, i: usize) -> f32 {
         let s = self.settings.samples.count();
-        mean(&self.samples.depth[i * s..(i + 1) * s])
+        mean(self.samples.depths(i * s..(i + 1) * s))
     }
 
     /// The mean depth of a pixel no triangle covers: [`Self::mean_depth`] of its samples, each

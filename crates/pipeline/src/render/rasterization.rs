@@ -22,24 +22,44 @@ pub(super) fn rasterize(
     triangles: &[RasterTriangle],
     primitives: &mut [PrimitiveRecord],
 ) -> Result<SampleBuffers, RenderError> {
-    use rayon::prelude::*;
-    let clear = settings.depth_test.clear_value();
-    let (width, height) = (settings.width, settings.height);
-    let mut samples = match spare {
-        Some(s) => s.cleared(width, height, settings.samples, clear),
-        None => SampleBuffers::new(width, height, settings.samples, clear),
-    };
+    let mut samples = cleared_samples(settings, spare);
     let hooked;
-    let hooks = scene.objects.iter().any(|o| {
-        o.code.hooks.get(HookKind::Inside).is_some()
-            || o.code.hooks.get(HookKind::DepthTest).is_some()
-    });
-    let counts = if hooks {
+    let counts = if has_hooks(scene) {
         hooked = rasterize_with_hooks(scene, settings, triangles, primitives, &mut samples)?;
         &hooked[..]
     } else {
         samples.rasterize_all(triangles, settings.depth_test)
     };
+    record_counts(primitives, counts);
+    Ok(samples)
+}
+
+/// The sample buffers of a frame of `settings`, in `spare`'s storage, cleared.
+pub(super) fn cleared_samples(
+    settings: &RenderSettings,
+    spare: Option<SampleBuffers>,
+) -> SampleBuffers {
+    let clear = settings.depth_test.clear_value();
+    let (width, height) = (settings.width, settings.height);
+    match spare {
+        Some(s) => s.cleared(width, height, settings.samples, clear),
+        None => SampleBuffers::new(width, height, settings.samples, clear),
+    }
+}
+
+/// Whether an object carries the student's inside test or depth test (so that its triangles
+/// are drawn one after another, each sample asked of the student's function).
+pub(super) fn has_hooks(scene: &Scene) -> bool {
+    scene.objects.iter().any(|o| {
+        o.code.hooks.get(HookKind::Inside).is_some()
+            || o.code.hooks.get(HookKind::DepthTest).is_some()
+    })
+}
+
+/// Each primitive's counts: the sum of what its raster triangles drew (`counts`, one a raster
+/// triangle).
+pub(super) fn record_counts(primitives: &mut [PrimitiveRecord], counts: &[RasterCounts]) {
+    use rayon::prelude::*;
     primitives.par_iter_mut().with_min_len(1024).for_each(|p| {
         let own = &counts[p.triangles[0] as usize..p.triangles[1] as usize];
         p.counts = own
@@ -49,7 +69,6 @@ pub(super) fn rasterize(
                 written: a.written + c.written,
             });
     });
-    Ok(samples)
 }
 
 /// Rasterization where some objects carry the student's inside test or depth test: triangle

@@ -5,13 +5,18 @@
 
 mod fragment;
 
+use std::time::Duration;
+
 use glam::{Vec2, Vec3};
 use rayon::prelude::*;
+use web_time::Instant;
 
-use crate::capture::{PixelBuffers, PixelTexture, PrimitiveRecord, ShadingRow, TextureRow};
+use crate::capture::{
+    InspectedPixel, PixelBuffers, PixelTexture, PrimitiveRecord, ShadingRow, TextureRow,
+};
 use crate::lighting::lanes::LANES;
 use crate::lighting::{Frequency, ShadeTerms};
-use crate::raster::{CoveredRows, NONE, RasterTriangle, SampleBuffers};
+use crate::raster::{CoveredRows, NONE, RasterTriangle, SampleBuffers, SampleRows};
 use crate::scene::Scene;
 use crate::settings::RenderSettings;
 use crate::texture::Lookup;
@@ -265,6 +270,88 @@ pub(super) fn resolve(
     ctx: &ResolveContext<'_>,
     spare: PixelBuffers,
 ) -> (PixelBuffers, CoveredRows) {
+    let (w, h) = (ctx.settings.width as usize, ctx.settings.height as usize);
+    let (mut px, background) = kept_buffers(ctx, spare);
+    let mut rows = split_rows(&mut px, w, h, background);
+    let pair = row_pair(ctx.settings);
+    rows.par_chunks_mut(pair)
+        .enumerate()
+        .for_each_init(RowScratch::default, |scratch, (k, outs)| {
+            resolve_rows(ctx, outs, k * pair, scratch)
+        });
+    let covered = covered_rows(ctx.settings, &rows);
+    drop(rows);
+    px.background = Some(background.0);
+    px.inspected = inspected(ctx, &px);
+    (px, covered)
+}
+
+/// Rasterization with the depth test and the resolve together, band by band
+/// ([`SampleBuffers::rasterize_all_then`]): each band of image rows resolves its pixels as
+/// soon as it has drawn every triangle over them, on the core that drew them, while its samples
+/// are in that core's cache — shading right after coverage, where [`resolve`] waits for the
+/// whole image's coverage and then reads every sample again. A pixel's resolve reads its own
+/// samples only (and coarse shading a 2×2 block's, so bands are whole row pairs), so the
+/// buffers are those of rasterizing everything and then resolving. `ctx`'s samples are not
+/// read: each band resolves with its own rows (what each triangle drew is left in
+/// [`SampleBuffers::drawn`]). Also gives how long the rasterization and the resolve took: the
+/// wall time shared out between them, the resolve's share its time summed over the bands and
+/// divided by the cores.
+pub(super) fn rasterize_and_resolve(
+    ctx: &ResolveContext<'_>,
+    samples: &mut SampleBuffers,
+    test: crate::raster::DepthTest,
+    spare: PixelBuffers,
+) -> (PixelBuffers, CoveredRows, [Duration; 2]) {
+    let (w, h) = (ctx.settings.width as usize, ctx.settings.height as usize);
+    let (mut px, background) = kept_buffers(ctx, spare);
+    let mut rows = split_rows(&mut px, w, h, background);
+    let pair = row_pair(ctx.settings);
+    let rows_per = samples.band_rows(pair);
+    // Each band: its first row, its rows, how long its resolve took.
+    let mut bands: Vec<_> = rows
+        .chunks_mut(rows_per)
+        .enumerate()
+        .map(|(b, outs)| (b * rows_per, outs, Duration::ZERO))
+        .collect();
+    let start = Instant::now();
+    samples.rasterize_all_then(
+        ctx.triangles,
+        test,
+        rows_per,
+        &mut bands,
+        |(first, outs, resolving), drawn| {
+            let t = Instant::now();
+            let band = ResolveContext {
+                samples: drawn,
+                ..*ctx
+            };
+            let mut scratch = RowScratch::default();
+            for (k, outs) in outs.chunks_mut(pair).enumerate() {
+                resolve_rows(&band, outs, *first + k * pair, &mut scratch);
+            }
+            *resolving = t.elapsed();
+        },
+    );
+    let wall = start.elapsed();
+    // The resolve's share of the wall time: its time summed over the bands, over the cores
+    // that ran them (each busy from start to end).
+    let resolving: Duration = bands.iter().map(|b| b.2).sum();
+    let cores = rayon::current_num_threads().clamp(1, bands.len().max(1)) as u32;
+    let resolving = (resolving / cores).min(wall);
+    drop(bands);
+    let covered = covered_rows(ctx.settings, &rows);
+    drop(rows);
+    px.background = Some(background.0);
+    (px, covered, [wall - resolving, resolving])
+}
+
+/// The per-pixel buffers the settings keep, in `spare`'s storage, and this frame's background
+/// colour and depth with whether the storage holds them already where its frame was not covered.
+fn kept_buffers(
+    ctx: &ResolveContext<'_>,
+    spare: PixelBuffers,
+) -> (PixelBuffers, (([f32; 3], f32), bool)) {
     let settings = ctx.settings;
     let (w, h) = (settings.width as usize, settings.height as usize);
     let lit = settings.shading != Frequency::Unlit && settings.capture.lighting;
@@ -274,39 +361,57 @@ pub(super) fn resolve(
             .objects
             .iter()
             .any(|o| o.texture.is_some() && !o.mesh.uvs.is_empty());
-    let mut px = spare.reused(w * h, lit, textured);
+    let px = spare.reused(w * h, lit, textured);
     let background = (settings.background.to_array(), ctx.background_depth());
     let kept = px.background.is_some_and(|b| b == background);
-    let mut rows = split_rows(&mut px, w, h, (background, kept));
-    // Coarse shading shares a 2×2 block's shading between two rows: they are resolved in pairs.
-    let pair = if settings.coarse_shading { 2 } else { 1 };
-    let grid = crate::grid::Grid::new(w as u32, h as u32);
-    rows.par_chunks_mut(pair).enumerate().for_each_init(
-        RowScratch::default,
-        |scratch, (k, outs)| {
-            if settings.coarse_shading {
-                scratch.blocks.clear();
-                scratch.blocks.resize(w.div_ceil(2), None);
-            }
-            for (j, out) in outs.iter_mut().enumerate() {
-                let row = k * pair + j;
-                out.resolve(ctx, row, grid.row(row as u32), scratch);
-            }
-        },
-    );
-    let covered = CoveredRows {
+    (px, (background, kept))
+}
+
+/// How many image rows are resolved together: coarse shading shares a 2×2 block's shading
+/// between two rows, so they are resolved in pairs.
+fn row_pair(settings: &RenderSettings) -> usize {
+    if settings.coarse_shading { 2 } else { 1 }
+}
+
+/// Resolves `outs`, consecutive image rows from `first` on (one row, or a pair with coarse
+/// shading).
+fn resolve_rows(
+    ctx: &ResolveContext<'_>,
+    outs: &mut [RowOut<'_>],
+    first: usize,
+    s: &mut RowScratch,
+) {
+    let grid = crate::grid::Grid::new(ctx.settings.width, ctx.settings.height);
+    if ctx.settings.coarse_shading {
+        s.blocks.clear();
+        s.blocks
+            .resize((ctx.settings.width as usize).div_ceil(2), None);
+    }
+    for (j, out) in outs.iter_mut().enumerate() {
+        let row = first + j;
+        out.resolve(ctx, row, grid.row(row as u32), s);
+    }
+}
+
+/// Where the resolved rows' samples are covered, for the next clear of their buffers.
+fn covered_rows(settings: &RenderSettings, rows: &[RowOut<'_>]) -> CoveredRows {
+    CoveredRows {
         clear: settings.depth_test.clear_value(),
         spans: rows.iter().map(|r| r.covered).collect(),
-    };
-    drop(rows);
-    px.background = Some(background);
-    if px.shading.is_none() || px.texturing.is_none() {
-        px.inspected = settings.capture.pixel.and_then(|at| ctx.inspected(at));
     }
-    (px, covered)
+}
+
+/// The inspected pixel's terms and lookup, where the frame does not keep their buffers
+/// (`ctx` reads every row of the samples).
+pub(super) fn inspected(ctx: &ResolveContext<'_>, px: &PixelBuffers) -> Option<InspectedPixel> {
+    if px.shading.is_some() && px.texturing.is_some() {
+        return None;
+    }
+    ctx.settings.capture.pixel.and_then(|at| ctx.inspected(at))
 }
 
 /// What the resolve of one pixel reads.
+#[derive(Clone, Copy)]
 pub(super) struct ResolveContext<'a> {
     /// The fast paths, or every pixel by itself ([`super::render_reference`]).
     pub(super) path: super::Path,
@@ -317,8 +422,103 @@ pub(super) struct ResolveContext<'a> {
     pub(super) face_shading: &'a [ShadeTerms],
     pub(super) scene: &'a Scene,
     pub(super) settings: &'a RenderSettings,
-    pub(super) samples: &'a SampleBuffers,
+    pub(super) samples: SampleRows<'a>,
     pub(super) triangles: &'a [RasterTriangle],
     pub(super) primitives: &'a [PrimitiveRecord],
     pub(super) vertices: &'a [VertexRecord],
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::buffers::Capture;
+    use crate::lighting::Frequency;
+    use crate::raster::Samples;
+    use crate::render::fixtures::scene;
+    use crate::settings::RenderSettings;
+
+    /// Rasterized and resolved band by band, on pools of 1, 3 and 5 threads (so bands of
+    /// different heights, which with coarse shading are whole row pairs), frames of odd and
+    /// even heights hold the bits the reference path gives — every sample, every pixel buffer,
+    /// every primitive's counts, the inspected pixel — whether the storage they are written
+    /// into is fresh or a frame of other settings.
+    #[test]
+    fn bands_rasterize_and_resolve_as_the_whole_image_does() {
+        let scene = scene();
+        let mut compared = 0;
+        for threads in [1, 3, 5] {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .expect("a pool");
+            pool.install(|| {
+                let mut spare = None;
+                for (k, (height, samples, coarse, shading)) in [
+                    (97, Samples::X1, true, Frequency::Phong),
+                    (61, Samples::X4, false, Frequency::Gouraud),
+                    (96, Samples::X1, false, Frequency::Phong),
+                    (97, Samples::X4, true, Frequency::Flat),
+                ]
+                .into_iter()
+                .enumerate()
+                {
+                    let settings = RenderSettings {
+                        width: 150,
+                        height,
+                        samples,
+                        coarse_shading: coarse,
+                        shading,
+                        capture: Capture {
+                            pixel: Some((40 + k as u32, 50)),
+                            ..if k % 2 == 0 {
+                                Capture::FULL
+                            } else {
+                                Capture::COLOR
+                            }
+                        },
+                        ..RenderSettings::default()
+                    };
+                    let reference =
+                        crate::render::render_reference(&scene, &settings).expect("renders");
+                    let (fast, _) =
+                        crate::render::render_reusing(&scene, &settings, spare).expect("renders");
+                    let at = format!("{threads} threads, case {k}");
+                    let bits = |c: &[[f32; 3]]| -> Vec<[u32; 3]> {
+                        c.iter().map(|c| c.map(f32::to_bits)).collect()
+                    };
+                    assert_eq!(
+                        bits(&fast.pixels.color),
+                        bits(&reference.pixels.color),
+                        "{at}"
+                    );
+                    let depth = |d: &[f32]| -> Vec<u32> { d.iter().map(|d| d.to_bits()).collect() };
+                    assert_eq!(
+                        depth(&fast.pixels.depth),
+                        depth(&reference.pixels.depth),
+                        "{at}"
+                    );
+                    assert_eq!(fast.pixels, reference.pixels, "{at}");
+                    assert_eq!(fast.samples.triangle, reference.samples.triangle, "{at}");
+                    assert_eq!(
+                        depth(&fast.samples.depth),
+                        depth(&reference.samples.depth),
+                        "{at}"
+                    );
+                    assert_eq!(fast.primitives, reference.primitives, "{at}");
+                    assert!(
+                        fast.primitives
+                            .iter()
+                            .map(|p| p.counts.written)
+                            .sum::<u32>()
+                            > 1000,
+                        "{at}: little drawn"
+                    );
+                    // Where the frame keeps no terms, the inspected pixel's are resolved apart.
+                    assert_eq!(fast.pixels.inspected.is_some(), k % 2 == 1, "{at}");
+                    compared += 1;
+                    spare = Some(fast);
+                }
+            });
+        }
+        assert_eq!(compared, 12);
+    }
 }

@@ -122,7 +122,9 @@ impl ResolveContext<'_> {
         // The run's object, and the last triangle found on it.
         let mut on: Option<(u32, u32)> = None;
         while run.pixels < room.min(LANES) {
-            let px = &self.samples.triangle[(i + run.pixels) * s..(i + run.pixels + 1) * s];
+            let px = self
+                .samples
+                .triangles((i + run.pixels) * s..(i + run.pixels + 1) * s);
             if px.contains(&NONE) {
                 break;
             }
@@ -186,7 +188,12 @@ impl ResolveContext<'_> {
     ) -> ([u32; N], usize) {
         let mut span = [NONE; N];
         let (mut object, mut last) = (NONE, NONE);
-        for (k, &t) in self.samples.triangle[i..i + room.min(N)].iter().enumerate() {
+        for (k, &t) in self
+            .samples
+            .triangles(i..i + room.min(N))
+            .iter()
+            .enumerate()
+        {
             if t == NONE {
                 return (span, k);
             }

@@ -176,7 +176,7 @@ impl ResolveContext<'_> {
         block: Option<&mut Option<BlockShade>>,
     ) -> ResolvedPixel {
         let s = self.settings.samples.count();
-        let tris = &self.samples.triangle[i * s..(i + 1) * s];
+        let tris = self.samples.triangles(i * s..(i + 1) * s);
         let background = self.settings.background;
         let mut out = ResolvedPixel {
             terms: None,

@@ -64,7 +64,7 @@ pub(in crate::render) fn peel_discarded(
             derivatives: true,
             scene: frame.scene,
             settings,
-            samples,
+            samples: samples.rows(),
             triangles: frame.triangles,
             primitives: frame.primitives,
             vertices: frame.vertices,

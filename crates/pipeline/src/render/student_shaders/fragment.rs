@@ -228,7 +228,7 @@ impl FragmentShading<'_> {
                 let Some(i) = self.index(px, py) else {
                     continue;
                 };
-                for &t in &self.ctx.samples.triangle[i * s..(i + 1) * s] {
+                for &t in self.ctx.samples.triangles(i * s..(i + 1) * s) {
                     if t == NONE
                         || self.ctx.scene.objects[self.object_of(t)]
                             .code
