@@ -6,8 +6,9 @@
 
 use rayon::prelude::*;
 
+use super::bins::Bins;
 use super::covered::Covered;
-use super::zbuffer::{Bins, SampleBuffers};
+use super::zbuffer::SampleBuffers;
 use super::{NONE, Samples, sample_offsets_fixed};
 
 impl SampleBuffers {

@@ -26,6 +26,7 @@
 //! Triangle setup and the inside test are here; the sample patterns in [`samples`]; the sample
 //! buffers (the z-buffer), the depth test and rasterizing into them in [`zbuffer`].
 
+mod bins;
 mod cleared;
 mod covered;
 mod samples;

@@ -6,6 +6,7 @@ use glam::I64Vec2;
 use serde::Serialize;
 use wide::i64x4;
 
+use super::bins::Bins;
 use super::covered::Covered;
 use super::{ONE, RasterTriangle, Samples};
 
@@ -69,120 +70,6 @@ pub struct SampleBuffers {
     /// Where the frame resolved from these buffers covered samples, so that the next clear
     /// clears there only ([`Self::cleared`]).
     pub(crate) covered: Covered,
-}
-
-/// The working lists of [`SampleBuffers::rasterize_all`], kept with the buffers so that a frame
-/// drawn into the storage of the one before takes no memory from the system for them (a million
-/// triangles fill some 20 MB of lists a frame). Scratch, not content: a clone starts empty and
-/// any two compare equal.
-#[derive(Default)]
-pub(super) struct Bins {
-    /// `runs[r][b]`: the triangles of run `r` whose bounding box reaches band `b`, in order.
-    runs: Vec<Vec<Vec<u32>>>,
-    /// `counts[b]`: what each triangle band `b` drew did there, in the order of its lists.
-    counts: Vec<Vec<RasterCounts>>,
-    /// What each triangle did over all bands.
-    total: Vec<RasterCounts>,
-}
-
-impl Clone for Bins {
-    fn clone(&self) -> Self {
-        Self::default()
-    }
-}
-
-impl PartialEq for Bins {
-    fn eq(&self, _: &Self) -> bool {
-        true
-    }
-}
-
-impl std::fmt::Debug for Bins {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("Bins")
-    }
-}
-
-/// Triangles are binned in runs of this many, each run in parallel.
-const RUN: usize = 1 << 16;
-
-impl Bins {
-    /// Binning, in parallel over runs of triangles: each band of `rows_per` image rows (of an
-    /// image `size` pixels) gets the triangles whose bounding box reaches its rows, run after
-    /// run, so in order. A triangle whose box holds no sample position covers none and is left
-    /// out (its counts stay zero).
-    fn bin(
-        &mut self,
-        tris: &[RasterTriangle],
-        offsets: &[I64Vec2],
-        (width, height): (u32, u32),
-        rows_per: usize,
-    ) {
-        use rayon::prelude::*;
-        let bands = (height as usize).div_ceil(rows_per).max(1);
-        let grid = crate::grid::Grid::new(width, height);
-        let runs = &mut self.runs;
-        runs.resize_with(tris.len().div_ceil(RUN), Vec::new);
-        runs.par_iter_mut()
-            .zip(tris.par_chunks(RUN))
-            .enumerate()
-            .for_each(|(r, (bins, run))| {
-                bins.resize_with(bands, Vec::new);
-                bins.iter_mut().for_each(Vec::clear);
-                for (k, t) in run.iter().enumerate() {
-                    if !t.box_holds_a_sample(offsets) {
-                        continue;
-                    }
-                    let [_, y0, _, y1] = t.bbox;
-                    // Image rows of the box: from window row y1's (top) to y0's (bottom).
-                    let (r0, r1) = (
-                        grid.row(u32::from(y1)) as usize,
-                        grid.row(u32::from(y0)) as usize,
-                    );
-                    for bin in &mut bins[r0 / rows_per..=r1 / rows_per] {
-                        bin.push((r * RUN + k) as u32);
-                    }
-                }
-            });
-    }
-
-    /// What each of the `triangles` did over all bands: each run's triangles summed over the
-    /// bands' counts, in parallel over runs (run `r`'s entries in band `b`'s counts follow
-    /// those of the runs before it).
-    fn total(&mut self, triangles: usize) -> &[RasterCounts] {
-        use rayon::prelude::*;
-        let Self {
-            runs,
-            counts,
-            total,
-        } = self;
-        let bands = counts.len();
-        let counts = &*counts;
-        let mut firsts: Vec<Vec<usize>> = Vec::with_capacity(runs.len());
-        let mut at = vec![0usize; bands];
-        for bins in runs.iter() {
-            firsts.push(at.clone());
-            for (a, bin) in at.iter_mut().zip(bins) {
-                *a += bin.len();
-            }
-        }
-        total.clear();
-        total.resize(triangles, RasterCounts::default());
-        total
-            .par_chunks_mut(RUN)
-            .zip(runs.par_iter().zip(firsts))
-            .enumerate()
-            .for_each(|(r, (total, (bins, firsts)))| {
-                for ((bin, first), counts) in bins.iter().zip(firsts).zip(counts) {
-                    for (&i, c) in bin.iter().zip(&counts[first..]) {
-                        let t = &mut total[i as usize - r * RUN];
-                        t.covered += c.covered;
-                        t.written += c.written;
-                    }
-                }
-            });
-        total
-    }
 }
 
 /// What rasterizing one triangle did.
