@@ -1,14 +1,14 @@
 //! The binning of the banded rasterizer: each triangle listed for the bands of rows its
-//! bounding box reaches, in order, and what each triangle drew summed over the bands.
+//! bounding box reaches, in order; what a triangle drew (`RasterCounts`), summed over the bands.
 
 use glam::I64Vec2;
+use serde::Serialize;
 
 use super::RasterTriangle;
-use super::zbuffer::RasterCounts;
 
-/// The working lists of [`SampleBuffers::rasterize_all`](super::SampleBuffers::rasterize_all), kept with the buffers so that a frame
-/// drawn into the storage of the one before takes no memory from the system for them (a million
-/// triangles fill some 20 MB of lists a frame). Scratch, not content: a clone starts empty and
+/// The working lists of [`super::SampleBuffers::rasterize_all`], kept with the buffers so that
+/// a frame drawn into the storage of the one before takes no memory from the system for them
+/// (a million triangles fill some 20 MB of lists a frame). Scratch, not content: a clone starts empty and
 /// any two compare equal.
 #[derive(Default)]
 pub(super) struct Bins {
@@ -118,4 +118,13 @@ impl Bins {
             });
         total
     }
+}
+
+/// What rasterizing one triangle did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct RasterCounts {
+    /// Samples inside the triangle.
+    pub covered: u32,
+    /// Samples that passed the depth test and were written.
+    pub written: u32,
 }

@@ -33,6 +33,7 @@ mod samples;
 mod student_functions;
 mod zbuffer;
 
+pub use bins::RasterCounts;
 pub(crate) use covered::CoveredRows;
 pub use samples::*;
 pub use zbuffer::*;

@@ -6,7 +6,8 @@
 use glam::I64Vec2;
 
 use super::RasterTriangle;
-use super::zbuffer::{RasterCounts, SampleBuffers};
+use super::bins::RasterCounts;
+use super::zbuffer::SampleBuffers;
 
 impl SampleBuffers {
     /// The samples of `tri`'s bounding box that `covers(k, p)` says are covered (`k` the

@@ -6,7 +6,7 @@ use glam::I64Vec2;
 use serde::Serialize;
 use wide::i64x4;
 
-use super::bins::Bins;
+use super::bins::{Bins, RasterCounts};
 use super::covered::Covered;
 use super::{ONE, RasterTriangle, Samples};
 
@@ -70,15 +70,6 @@ pub struct SampleBuffers {
     /// Where the frame resolved from these buffers covered samples, so that the next clear
     /// clears there only ([`Self::cleared`]).
     pub(crate) covered: Covered,
-}
-
-/// What rasterizing one triangle did.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
-pub struct RasterCounts {
-    /// Samples inside the triangle.
-    pub covered: u32,
-    /// Samples that passed the depth test and were written.
-    pub written: u32,
 }
 
 /// Consecutive image rows of the sample buffers, read: the samples from index `first` of the

@@ -251,33 +251,23 @@ fn render_stages(
 
     let in_bands = drawn_in_bands(scene, path, vertex_results.is_some());
     let spare = (storage.samples.take(), storage.pixels);
-    let (mut samples, pixels, covered, shaders) = if in_bands {
-        let frame = student_shaders::Frame {
-            scene,
-            settings,
-            matrices: &matrices,
-            triangles: &triangles,
-            primitives: &primitives,
-            vertices: &vertices,
-            vertex_shading: &vertex_shading,
-            face_shading: &face_shading,
-        };
+    let frame = student_shaders::Frame {
+        scene,
+        settings,
+        matrices: &matrices,
+        triangles: &triangles,
+        primitives: &primitives,
+        vertices: &vertices,
+        vertex_shading: &vertex_shading,
+        face_shading: &face_shading,
+    };
+    let (mut samples, pixels, covered, shaders, hooked) = if in_bands {
         let (samples, pixels, covered) = draw_in_bands(&frame, spare, &mut times);
-        (samples, pixels, covered, None)
+        (samples, pixels, covered, None, None)
     } else {
         let t = Instant::now();
-        let mut samples = rasterize(scene, settings, spare.0, &triangles, &mut primitives)?;
+        let (mut samples, hooked) = rasterize(scene, settings, spare.0, &triangles, &primitives)?;
         times.raster = t.elapsed();
-        let frame = student_shaders::Frame {
-            scene,
-            settings,
-            matrices: &matrices,
-            triangles: &triangles,
-            primitives: &primitives,
-            vertices: &vertices,
-            vertex_shading: &vertex_shading,
-            face_shading: &face_shading,
-        };
         // Fragments a shader discards are taken out of the depth test, layer by layer.
         let mut peeled = student_shaders::Peeled::default();
         if let Some(results) = &vertex_results {
@@ -289,14 +279,16 @@ fn render_stages(
         let shaders =
             student_shaders::record(&ctx, &matrices, vertex_results, &mut pixels.color, peeled)?;
         times.resolve = t.elapsed();
-        (samples, pixels, covered, shaders)
+        (samples, pixels, covered, shaders, hooked)
     };
-    if in_bands {
-        // Each primitive's counts, from its raster triangles' (the bands read the records).
-        let t = Instant::now();
-        rasterization::record_counts(&mut primitives, samples.drawn());
-        times.raster += t.elapsed();
-    }
+    // Each primitive's counts, from its raster triangles', written once the resolve (which
+    // reads the records) is done with them.
+    let t = Instant::now();
+    rasterization::record_counts(
+        &mut primitives,
+        hooked.as_deref().unwrap_or(samples.drawn()),
+    );
+    times.raster += t.elapsed();
     // The next frame drawn into this storage clears only what this one covered.
     samples.covered.0 = Some(covered);
 

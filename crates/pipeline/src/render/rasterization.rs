@@ -1,7 +1,7 @@
 //! Rasterization with the depth test into the sample buffers: pipelens' own, banded and in
 //! parallel, or — where an object carries the student's inside test or depth test — triangle
 //! after triangle, each sample asked of the student's function. Each primitive's counts (the
-//! samples its raster triangles covered and wrote) are recorded either way.
+//! samples its raster triangles covered and wrote) are recorded either way ([`record_counts`]).
 
 use super::{CodePart, RenderError};
 use crate::capture::PrimitiveRecord;
@@ -10,8 +10,10 @@ use crate::scene::Scene;
 use crate::settings::RenderSettings;
 use crate::shader::HookKind;
 
-/// Rasterization with the depth test into the sample buffers (`spare`'s storage, cleared),
-/// and each primitive's counts: the samples its raster triangles covered and wrote.
+/// Rasterization with the depth test into the sample buffers (`spare`'s storage, cleared).
+/// What each raster triangle drew — the samples it covered and wrote — is returned where the
+/// student's tests drew the frame, and left in the samples ([`SampleBuffers::drawn`])
+/// otherwise: [`record_counts`] adds them up for each primitive.
 ///
 /// # Errors
 /// A run-time error of an object's inside test (the student's `inside`).
@@ -20,18 +22,15 @@ pub(super) fn rasterize(
     settings: &RenderSettings,
     spare: Option<SampleBuffers>,
     triangles: &[RasterTriangle],
-    primitives: &mut [PrimitiveRecord],
-) -> Result<SampleBuffers, RenderError> {
+    primitives: &[PrimitiveRecord],
+) -> Result<(SampleBuffers, Option<Vec<RasterCounts>>), RenderError> {
     let mut samples = cleared_samples(settings, spare);
-    let hooked;
-    let counts = if has_hooks(scene) {
-        hooked = rasterize_with_hooks(scene, settings, triangles, primitives, &mut samples)?;
-        &hooked[..]
-    } else {
-        samples.rasterize_all(triangles, settings.depth_test)
-    };
-    record_counts(primitives, counts);
-    Ok(samples)
+    if has_hooks(scene) {
+        let counts = rasterize_with_hooks(scene, settings, triangles, primitives, &mut samples)?;
+        return Ok((samples, Some(counts)));
+    }
+    samples.rasterize_all(triangles, settings.depth_test);
+    Ok((samples, None))
 }
 
 /// The sample buffers of a frame of `settings`, in `spare`'s storage, cleared.
