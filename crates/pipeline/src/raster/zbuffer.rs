@@ -149,7 +149,7 @@ impl SampleBuffers {
     }
 
     /// Rasterizes every triangle, in order, and returns what each did. The image rows are cut
-    /// into bands (four per thread) rasterized in parallel; each triangle is first binned into
+    /// into bands ([`BANDS_A_THREAD`] a thread) rasterized in parallel; each triangle is first binned into
     /// the bands its bounding box reaches, and each band draws its triangles in order over its
     /// own rows. A sample belongs to one band, so the result is the same as drawing the
     /// triangles one after another over the whole image ([`Self::rasterize_reference`] checks
@@ -166,12 +166,12 @@ impl SampleBuffers {
         &self.bins.total
     }
 
-    /// How many image rows each band of [`Self::rasterize_all`] takes: the image cut into four
-    /// bands a thread, each a multiple of `align` rows (`align` ≥ 1).
+    /// How many image rows each band of [`Self::rasterize_all`] takes: the image cut into
+    /// [`BANDS_A_THREAD`] bands a thread, each a multiple of `align` rows (`align` ≥ 1).
     #[must_use]
     pub fn band_rows(&self, align: usize) -> usize {
         let h = self.height as usize;
-        let bands = (rayon::current_num_threads() * 4).clamp(1, h.max(1));
+        let bands = (rayon::current_num_threads() * BANDS_A_THREAD).clamp(1, h.max(1));
         h.div_ceil(bands).max(1).next_multiple_of(align.max(1))
     }
 
@@ -391,6 +391,14 @@ struct Band<'a> {
     rows: usize,
     offsets: &'a [I64Vec2],
 }
+
+/// How many bands of rows the image is cut into for each thread. A band is a task: bands
+/// resolved right after they are drawn ([`SampleBuffers::rasterize_all_then`]) cost as their
+/// rows do — the sky little, a textured floor much — and with four bands a thread, one thread
+/// was left with the dearer ones (the lit textured floor's every-buffer frame on 2 threads
+/// 0.61× its one-thread time, against 0.52× with sixteen; the rasterization alone is the same
+/// with 4 to 32, BENCHMARKS.md).
+pub const BANDS_A_THREAD: usize = 16;
 
 /// Boxes at least this many pixels wide are scanned only over each row's span.
 const SPAN_MIN_WIDTH: u32 = 16;

@@ -109,9 +109,11 @@ pub struct StageTimes {
     pub vertex: Duration,
     /// Primitive assembly, clipping, division, viewport and triangle setup.
     pub clip_setup: Duration,
-    /// Rasterization and the depth test.
+    /// Rasterization and the depth test. Where a frame is rasterized and resolved band by
+    /// band, the two run together: this is their wall time less the resolve's share.
     pub raster: Duration,
-    /// Resolve of samples to pixels (barycentrics, colour).
+    /// Resolve of samples to pixels (barycentrics, colour). Band by band, its share of the
+    /// two's wall time: the bands' resolves timed, summed, divided by the cores.
     pub resolve: Duration,
 }
 
