@@ -149,14 +149,16 @@ impl SampleBuffers {
     }
 
     /// Rasterizes every triangle, in order, and returns what each did. The image rows are cut
-    /// into bands ([`BANDS_A_THREAD`] a thread) rasterized in parallel; each triangle is first binned into
-    /// the bands its bounding box reaches, and each band draws its triangles in order over its
-    /// own rows. A sample belongs to one band, so the result is the same as drawing the
+    /// into bands ([`BANDS_A_THREAD`] a thread) rasterized in parallel; each triangle is first
+    /// binned into the bands its bounding box reaches, and each band draws its triangles in
+    /// order over its own rows. A sample belongs to one band, so the result is the same as drawing the
     /// triangles one after another over the whole image ([`Self::rasterize_reference`] checks
     /// it in the tests).
     pub fn rasterize_all(&mut self, tris: &[RasterTriangle], test: DepthTest) -> &[RasterCounts] {
         let rows_per = self.band_rows(1);
-        self.rasterize_all_then::<()>(tris, test, rows_per, &mut [], |_, _| ())
+        // Nothing to do with a band once drawn (a `()` a band takes no memory).
+        let mut bands = vec![(); (self.height as usize).div_ceil(rows_per).max(1)];
+        self.rasterize_all_then(tris, test, rows_per, &mut bands, |(), _| ())
     }
 
     /// What each triangle did in the last [`Self::rasterize_all`] (or
@@ -177,7 +179,7 @@ impl SampleBuffers {
 
     /// [`Self::rasterize_all`] in bands of `rows_per` image rows, where each band, as soon as
     /// it has drawn every triangle over its rows, calls `then(&mut each[b], rows)` with its
-    /// rows as drawn (band `b`; `each` holds one value a band, or none at all): what is done
+    /// rows as drawn (band `b`; `each` holds one value a band): what is done
     /// with a band's samples is done while they are in the cache of the core that wrote them.
     /// The samples are those [`Self::rasterize_all`] gives, however the rows are cut.
     pub fn rasterize_all_then<T: Send>(
@@ -193,7 +195,7 @@ impl SampleBuffers {
         let h = self.height as usize;
         let rows_per = rows_per.max(1);
         let bands = h.div_ceil(rows_per).max(1);
-        debug_assert!(each.is_empty() || each.len() == bands);
+        debug_assert_eq!(each.len(), bands);
         self.bins
             .bin(tris, &self.offsets, (self.width, self.height), rows_per);
         let Bins { runs, counts, .. } = &mut self.bins;
@@ -202,46 +204,37 @@ impl SampleBuffers {
         let height = self.height;
         counts.resize_with(bands, Vec::new);
         let runs = &*runs;
-        let draw = |b: usize, depth: &mut [f32], owner: &mut [u32], counts: &mut Vec<_>| {
-            let rows = depth.len() / (w * n);
-            let mut band = Band {
-                depth,
-                owner,
-                width: w,
-                height,
-                first_row: b * rows_per,
-                rows,
-                offsets,
-            };
-            counts.clear();
-            counts.extend(
-                runs.iter()
-                    .flat_map(|bins| &bins[b])
-                    .map(|&i| band.rasterize(&tris[i as usize], i, test)),
-            );
-        };
-        let buffers = self
-            .depth
+        self.depth
             .par_chunks_mut(chunk)
             .zip(self.triangle.par_chunks_mut(chunk))
             .zip(counts.par_iter_mut())
-            .enumerate();
-        if each.is_empty() {
-            buffers.for_each(|(b, ((depth, owner), counts))| draw(b, depth, owner, counts));
-        } else {
-            buffers
-                .zip(each.par_iter_mut())
-                .for_each(|((b, ((depth, owner), counts)), each)| {
-                    draw(b, depth, owner, counts);
-                    let rows = SampleRows {
-                        depth,
-                        triangle: owner,
-                        first: b * chunk,
-                        offsets,
-                    };
-                    then(each, rows);
-                });
-        }
+            .zip(each.par_iter_mut())
+            .enumerate()
+            .for_each(|(b, (((depth, owner), counts), each))| {
+                let rows = depth.len() / (w * n);
+                let mut band = Band {
+                    depth,
+                    owner,
+                    width: w,
+                    height,
+                    first_row: b * rows_per,
+                    rows,
+                    offsets,
+                };
+                counts.clear();
+                counts.extend(
+                    runs.iter()
+                        .flat_map(|bins| &bins[b])
+                        .map(|&i| band.rasterize(&tris[i as usize], i, test)),
+                );
+                let rows = SampleRows {
+                    depth: band.depth,
+                    triangle: band.owner,
+                    first: b * chunk,
+                    offsets,
+                };
+                then(each, rows);
+            });
         self.bins.total(tris.len())
     }
 

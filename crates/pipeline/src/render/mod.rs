@@ -349,7 +349,7 @@ fn draw_in_bands(
     let cleared = t.elapsed();
     let ctx = frame.context(path, crate::raster::SampleRows::default());
     let (mut pixels, covered, [raster, resolving]) =
-        resolve::rasterize_and_resolve(&ctx, &mut samples, settings.depth_test, spare.1);
+        resolve::rasterize_and_resolve(&ctx, &mut samples, spare.1);
     let t = Instant::now();
     pixels.inspected = resolve::inspected(&frame.context(path, samples.rows()), &pixels);
     times.raster = cleared + raster;

@@ -300,7 +300,6 @@ pub(super) fn resolve(
 pub(super) fn rasterize_and_resolve(
     ctx: &ResolveContext<'_>,
     samples: &mut SampleBuffers,
-    test: crate::raster::DepthTest,
     spare: PixelBuffers,
 ) -> (PixelBuffers, CoveredRows, [Duration; 2]) {
     let (w, h) = (ctx.settings.width as usize, ctx.settings.height as usize);
@@ -317,7 +316,7 @@ pub(super) fn rasterize_and_resolve(
     let start = Instant::now();
     samples.rasterize_all_then(
         ctx.triangles,
-        test,
+        ctx.settings.depth_test,
         rows_per,
         &mut bands,
         |(first, outs, resolving), drawn| {
