@@ -178,32 +178,38 @@ impl ResolveContext<'_> {
             }
         } else {
             let in_lanes = in_lanes && !sampler.mipmap.beyond_the_pyramid();
-            // The last derivatives taken: the triangle, its quad's lower-left place, the pair.
-            let mut last: Option<(u32, I64Vec2, (Vec2, Vec2))> = None;
+            // The last derivatives taken: the triangle, its quad's lower-left place, the pair,
+            // and (read in lanes) the one-tap lookup's record, axis and levels, which depend on
+            // the pair alone: the two fragments of a triangle in a quad's row share them.
+            type Quad = ((Vec2, Vec2), Option<(Lookup, Vec2, (usize, f32))>);
+            let mut last: Option<(u32, I64Vec2, Quad)> = None;
             for f in 0..n {
                 let Some(uvs) = uvs[f] else {
                     continue;
                 };
                 let c = centre(f);
                 let o = c - quad_offset(c, self.settings.height);
-                let (dx, dy) = match last {
-                    Some((t, at, d)) if t == run.triangle[f] && at == o => d,
+                let ((dx, dy), one_tap) = match last {
+                    Some((t, at, quad)) if t == run.triangle[f] && at == o => quad,
                     _ => {
                         let t: &RasterTriangle = &self.triangles[run.triangle[f] as usize];
                         let bary = self.primitives[t.primitive as usize].bary_corners(t);
-                        let d = t.uv_derivatives(&bary, uvs, o, pc);
-                        last = Some((run.triangle[f], o, d));
-                        d
+                        let (dx, dy) = t.uv_derivatives(&bary, uvs, o, pc);
+                        let one_tap = in_lanes
+                            .then(|| texture.footprint_record(dx, dy, sampler))
+                            .filter(|(record, _)| record.taps == 1)
+                            .map(|(record, axis)| {
+                                (record, axis, texture.levels_at(record.lod, sampler))
+                            });
+                        let quad = ((dx, dy), one_tap);
+                        last = Some((run.triangle[f], o, quad));
+                        quad
                     }
                 };
-                if in_lanes {
-                    let (record, axis) = texture.footprint_record(dx, dy, sampler);
-                    if record.taps == 1 {
-                        // One tap, at `uv + axis·0` as `sample_shifted` places it.
-                        let levels = texture.levels_at(record.lod, sampler);
-                        reads.add(f, record, uv[f] + axis * 0.0, levels);
-                        continue;
-                    }
+                if let Some((record, axis, levels)) = one_tap {
+                    // One tap, at `uv + axis·0` as `sample_shifted` places it.
+                    reads.add(f, record, uv[f] + axis * 0.0, levels);
+                    continue;
                 }
                 put(f, texture.sample(uv[f], dx, dy, sampler));
             }
