@@ -18,6 +18,9 @@ pub(super) struct Bins {
     pub(super) counts: Vec<Vec<RasterCounts>>,
     /// What each triangle did over all bands.
     pub(super) total: Vec<RasterCounts>,
+    /// `scanned[r]`: the pixels `lo..hi` of image row `r` the last banded rasterization scanned
+    /// (see [`super::SampleRows::scanned`]).
+    pub(super) scanned: Vec<(u32, u32)>,
 }
 
 impl Clone for Bins {
@@ -90,6 +93,7 @@ impl Bins {
             runs,
             counts,
             total,
+            ..
         } = self;
         let bands = counts.len();
         let counts = &*counts;

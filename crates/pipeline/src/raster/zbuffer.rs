@@ -81,6 +81,10 @@ pub struct SampleRows<'a> {
     triangle: &'a [u32],
     first: usize,
     offsets: &'a [I64Vec2],
+    /// The pixels of each row the rasterizer scanned, from image row `first_row` on; empty
+    /// where it is not known.
+    scanned: &'a [(u32, u32)],
+    first_row: usize,
 }
 
 impl<'a> SampleRows<'a> {
@@ -105,6 +109,15 @@ impl<'a> SampleRows<'a> {
     pub fn offset(&self, s: usize) -> I64Vec2 {
         self.offsets[s]
     }
+
+    /// The pixels `lo..hi` of image row `row` where the rasterizer looked for covered samples:
+    /// no sample of the row's other pixels is covered (`lo ≥ hi` when no triangle reached the
+    /// row). `None` where these rows were not drawn by [`SampleBuffers::rasterize_all_then`].
+    #[must_use]
+    #[inline]
+    pub fn scanned(&self, row: usize) -> Option<(u32, u32)> {
+        self.scanned.get(row.wrapping_sub(self.first_row)).copied()
+    }
 }
 
 impl SampleBuffers {
@@ -116,6 +129,8 @@ impl SampleBuffers {
             triangle: &self.triangle,
             first: 0,
             offsets: &self.offsets,
+            scanned: &[],
+            first_row: 0,
         }
     }
 
@@ -136,9 +151,11 @@ impl SampleBuffers {
     /// sample that passes the depth test takes the triangle's depth and index.
     pub fn rasterize(&mut self, tri: &RasterTriangle, index: u32, test: DepthTest) -> RasterCounts {
         let rows = self.height as usize;
+        self.bins.scanned.resize(rows, (u32::MAX, 0));
         let mut band = Band {
             depth: &mut self.depth,
             owner: &mut self.triangle,
+            scanned: &mut self.bins.scanned,
             width: self.width as usize,
             height: self.height,
             first_row: 0,
@@ -198,23 +215,32 @@ impl SampleBuffers {
         debug_assert_eq!(each.len(), bands);
         self.bins
             .bin(tris, &self.offsets, (self.width, self.height), rows_per);
-        let Bins { runs, counts, .. } = &mut self.bins;
+        let Bins {
+            runs,
+            counts,
+            scanned,
+            ..
+        } = &mut self.bins;
         let offsets = &self.offsets;
         let chunk = rows_per * w * n;
         let height = self.height;
         counts.resize_with(bands, Vec::new);
+        scanned.clear();
+        scanned.resize(h, (u32::MAX, 0));
         let runs = &*runs;
         self.depth
             .par_chunks_mut(chunk)
             .zip(self.triangle.par_chunks_mut(chunk))
+            .zip(scanned.par_chunks_mut(rows_per))
             .zip(counts.par_iter_mut())
             .zip(each.par_iter_mut())
             .enumerate()
-            .for_each(|(b, (((depth, owner), counts), each))| {
+            .for_each(|(b, ((((depth, owner), scanned), counts), each))| {
                 let rows = depth.len() / (w * n);
                 let mut band = Band {
                     depth,
                     owner,
+                    scanned,
                     width: w,
                     height,
                     first_row: b * rows_per,
@@ -232,6 +258,8 @@ impl SampleBuffers {
                     triangle: band.owner,
                     first: b * chunk,
                     offsets,
+                    scanned: band.scanned,
+                    first_row: band.first_row,
                 };
                 then(each, rows);
             });
@@ -328,12 +356,14 @@ struct BandRows<'a> {
 }
 
 impl BandRows<'_> {
-    /// Calls `row(r, y, (xs, xe), e)` for each window row `y` (image row `r`) of the band that
-    /// `tri` can cover a sample of, `xs..=xe` its pixels that can be covered and `e` the
-    /// biased edge values ([`RasterTriangle::biased_edge_values`]) of pixel `xs`'s `N` samples.
+    /// Calls `row(r, y, (xs, xe), e)` for each window row `y` (row `r` of the band) that `tri`
+    /// can cover a sample of, `xs..=xe` its pixels that can be covered and `e` the biased edge
+    /// values ([`RasterTriangle::biased_edge_values`]) of pixel `xs`'s `N` samples; and widens
+    /// `scanned[r]` to hold `xs..=xe`.
     fn each<const N: usize>(
         self,
         tri: &RasterTriangle,
+        scanned: &mut [(u32, u32)],
         mut row: impl FnMut(usize, u32, (u32, u32), &[[i64; 3]; N]),
     ) {
         let [x0, mut y0, x1, mut y1] = tri.bbox.map(u32::from);
@@ -369,7 +399,10 @@ impl BandRows<'_> {
             } else {
                 (x0, x1)
             };
-            row(top - y as usize, y, span, &e);
+            let r = top - y as usize;
+            let seen = &mut scanned[r];
+            *seen = (seen.0.min(span.0), seen.1.max(span.1 + 1));
+            row(r, y, span, &e);
         }
     }
 }
@@ -378,6 +411,8 @@ impl BandRows<'_> {
 struct Band<'a> {
     depth: &'a mut [f32],
     owner: &'a mut [u32],
+    /// Each row's pixels scanned ([`SampleRows::scanned`]).
+    scanned: &'a mut [(u32, u32)],
     width: usize,
     height: u32,
     first_row: usize,
@@ -463,7 +498,7 @@ impl<'a> Band<'a> {
         let band = self.geometry();
         let (depth, owner, width) = (&mut *self.depth, &mut *self.owner, self.width);
         let centre = self.offsets[0];
-        band.each::<1>(tri, |row, y, (xs, xe), &[mut e]| {
+        band.each::<1>(tri, self.scanned, |row, y, (xs, xe), &[mut e]| {
             for x in xs..=xe {
                 if (e[0] | e[1] | e[2]) >= 0 {
                     let z = plane
@@ -536,9 +571,9 @@ impl<'a> Band<'a> {
             }
         };
         match G {
-            1 => band.each::<4>(tri, |r, y, span, e| scan(r, y, span, e)),
-            2 => band.each::<8>(tri, |r, y, span, e| scan(r, y, span, e)),
-            _ => band.each::<16>(tri, |r, y, span, e| scan(r, y, span, e)),
+            1 => band.each::<4>(tri, self.scanned, |r, y, span, e| scan(r, y, span, e)),
+            2 => band.each::<8>(tri, self.scanned, |r, y, span, e| scan(r, y, span, e)),
+            _ => band.each::<16>(tri, self.scanned, |r, y, span, e| scan(r, y, span, e)),
         }
         counts
     }

@@ -5,9 +5,27 @@ use super::resolve::ResolveContext;
 use crate::raster::NONE;
 
 impl ResolveContext<'_> {
-    /// How many consecutive pixels from image index `i` on (at most `room`) have no sample
-    /// covered: the background.
+    /// How many consecutive pixels from image index `i` on (at most `room`, which ends at or
+    /// before the row's end) have no sample covered: the background. Pixels of the row that
+    /// the rasterizer did not scan ([`SampleRows::scanned`](crate::raster::SampleRows::scanned))
+    /// are not looked at: they are background.
     pub(super) fn background_run(&self, i: usize, room: usize) -> usize {
+        let w = self.settings.width as usize;
+        let (row, x) = (i / w, i % w);
+        let (lo, hi) = self
+            .samples
+            .scanned(row)
+            .map_or((0, w), |(lo, hi)| (lo as usize, hi as usize));
+        // The scanned pixels from x on, `from..end`; before `from` and from `end` on, the
+        // background.
+        let end = hi.min(x + room);
+        let from = lo.max(x).min(end);
+        let n = self.scan_background(row * w + from, end - from);
+        if from + n == end { room } else { from - x + n }
+    }
+
+    /// [`Self::background_run`] looking at every pixel's samples.
+    fn scan_background(&self, i: usize, room: usize) -> usize {
         let s = self.settings.samples.count();
         let tris = self.samples.triangles(i * s..(i + room) * s);
         if tris.first().is_some_and(|&t| t != NONE) {
