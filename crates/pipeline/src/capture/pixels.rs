@@ -316,7 +316,7 @@ impl TextureRow<'_> {
     /// A lookup as the row stores it: its uv (kept at 32 bits) and its [`TEXTURE_HALVES`]
     /// values in storage order.
     #[must_use]
-    pub fn flatten(t: &PixelTexture) -> ([f32; 2], [f32; TEXTURE_HALVES]) {
+    pub(crate) fn flatten(t: &PixelTexture) -> ([f32; 2], [f32; TEXTURE_HALVES]) {
         let ([a, b, c], [d, e, f, g]) = (t.texel, t.footprint);
         (t.uv, [t.lod, t.level, a, b, c, d, e, f, g])
     }
@@ -371,7 +371,7 @@ pub struct ShadingRow<'a> {
 impl ShadingRow<'_> {
     /// Lighting terms as the row stores them, in storage order.
     #[must_use]
-    pub fn flatten(t: &crate::lighting::ShadeTerms) -> [f32; LIGHTING_HALVES] {
+    pub(crate) fn flatten(t: &crate::lighting::ShadeTerms) -> [f32; LIGHTING_HALVES] {
         let mut out = [0.0; LIGHTING_HALVES];
         for (k, v) in [t.ambient, t.diffuse, t.specular, t.normal, t.reflected]
             .into_iter()

@@ -105,7 +105,7 @@ impl Lookup {
     /// The record of a lookup that read `color` from level 0 with no footprint
     /// ([`Texture::sample_level0`]): λ left −∞, one tap.
     #[must_use]
-    pub fn of_level0(color: Vec3) -> Self {
+    pub(crate) fn of_level0(color: Vec3) -> Self {
         Self {
             color,
             lod: f32::NEG_INFINITY,
