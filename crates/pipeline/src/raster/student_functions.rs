@@ -28,7 +28,7 @@ impl SampleBuffers {
 
     /// Writes triangle `index` into the `covered` samples (from [`Self::covered_samples`])
     /// where `passes[k]` (another depth test's answer for the `k`-th); counts them as
-    /// [`Self::rasterize`] does.
+    /// [`Self::rasterize_all`] does.
     pub fn write_samples(
         &mut self,
         covered: &[(usize, f32)],

@@ -147,24 +147,6 @@ impl SampleBuffers {
         crate::grid::Grid::new(self.width, self.height).index(x, y) * self.samples.count() + s
     }
 
-    /// Rasterizes `tri` (whose index in the capture's triangle list is `index`): every covered
-    /// sample that passes the depth test takes the triangle's depth and index.
-    pub fn rasterize(&mut self, tri: &RasterTriangle, index: u32, test: DepthTest) -> RasterCounts {
-        let rows = self.height as usize;
-        self.bins.scanned.resize(rows, (u32::MAX, 0));
-        let mut band = Band {
-            depth: &mut self.depth,
-            owner: &mut self.triangle,
-            scanned: &mut self.bins.scanned,
-            width: self.width as usize,
-            height: self.height,
-            first_row: 0,
-            rows,
-            offsets: &self.offsets,
-        };
-        band.rasterize(tri, index, test)
-    }
-
     /// Rasterizes every triangle, in order, and returns what each did. The image rows are cut
     /// into bands ([`BANDS_A_THREAD`] a thread) rasterized in parallel; each triangle is first
     /// binned into the bands its bounding box reaches, and each band draws its triangles in
