@@ -330,8 +330,9 @@ def main():
             if f and not os.path.exists(f):
                 sys.exit(f"reference check: {f} is missing (the shared data folder)")
     peer = Peer(a.peer)
-    # The exports take about 2 GB: a folder of our own is removed at the end, pass or fail (keep
-    # them with --work / PIPELENS_REFERENCE_OUT to look at a failure's images).
+    # The exports of all cases take about 2 GB: in a folder of our own each case's are removed once
+    # compared and the folder at the end, pass or fail (keep them all with --work /
+    # PIPELENS_REFERENCE_OUT to look at a failure's images).
     work = a.work or tempfile.mkdtemp(prefix="pipelens-reference-")
     os.makedirs(work, exist_ok=True)
     try:
@@ -356,6 +357,12 @@ def compare(a, peer, work, cases, shader_cases):
         runs = [r for r in runs if a.only.lower() in r[0][0].lower()]
     for case, size, samples in runs:
         r = run_case(a.pipelens, peer, work, case, size, samples)
+        if not a.work:
+            # One case's exports at a time in a folder of our own (a 1280×720 capture at 4 samples
+            # is tens of MB, all cases together about 2 GB — more than a nearly full disk has).
+            for name in os.listdir(work):
+                path = os.path.join(work, name)
+                shutil.rmtree(path) if os.path.isdir(path) else os.remove(path)
         rows.append(r)
         print(f"| {r['case']:<40} | {r['size']:>9} | {r['samples']:>7} | {r['covered']:>10} | "
               f"{r['coverage_diff']:>10} | {r['depth_max']:>11.2e} | {r['color_share']:>14.4%} | "
