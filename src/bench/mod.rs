@@ -218,6 +218,12 @@ pub fn run(quick: bool, frames: Option<usize>, out: &mut dyn std::io::Write) -> 
             )?;
         }
     }
+    writeln!(
+        out,
+        "(these frames are rasterized and resolved band by band, the two at once: the frame is \
+         timed whole; resolve is the bands' resolve times summed and divided by the threads, \
+         raster the rest)"
+    )?;
     shader_rows(frames.unwrap_or(if quick { 1 } else { 5 }), out)?;
     slider_drag(frames.unwrap_or(if quick { 1 } else { 15 }), out)?;
     memory(out)
