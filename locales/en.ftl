@@ -278,6 +278,7 @@ debugger-several-fragments-reached-this-pixel = Several fragments reached this p
 ## src/app/views/exercise.rs
 
 list-separator = { ", " }
+sentence-separator = { " " }
 exercise-drawing-pipelens-own-frame = Drawing pipelens' own frame…
 exercise-pipelens-own = pipelens' own
 exercise-difference = difference:{ " " }
@@ -1016,7 +1017,7 @@ lab-words-not-yet =
         [one] 1 differs
        *[other] { $differ } differ
     } ({ $how }). The first, reading from the top, is { $first }.
-lab-words-at-the-pixel = At the inspected pixel your `{ $name }` (line { $line }) is { $yours }; pipelens' own shader has { $theirs }.
+lab-words-at-the-pixel = At the inspected pixel { $pixel } your `{ $name }` (line { $line }) is { $yours }; pipelens' own shader has { $theirs }.
 lab-words-at-the-vertex = At vertex { $row } (a corner of the first wrong pixel's triangle) your vertex shader's `{ $name }` (line { $line }) is { $yours }; pipelens' own has { $theirs }.
 lab-words-not-normalized = {" "}Yours has length { $length }, pipelens' 1: is it normalized?
 lab-words-first-vertex = The first vertex off is row { $row }: your clip position { $yours }, pipelens' { $theirs }.
@@ -1117,12 +1118,12 @@ describe-group-part-latin = { $group } { $part }
 
 ## src/lab/quantity.rs
 
-quantity-uv-differs = At the inspected pixel your `{ $name }` (line { $line }) is { $yours }; pipelens' uv there, interpolated perspective-correctly, is { $theirs }.
-quantity-lod-differs = At the inspected pixel your `{ $name }` (line { $line }) gives λ = { $yours }; pipelens' λ there is { $theirs }: the footprint is L = 2^λ = { $footprint } texels a pixel step (uv { $uv }).
-quantity-texel-differs = At the inspected pixel your `{ $name }` (line { $line }) gives { $yours }; pipelens' filter reads { $theirs } there (uv { $uv }).
+quantity-uv-differs = At the inspected pixel { $pixel } your `{ $name }` (line { $line }) is { $yours }; pipelens' uv there, interpolated perspective-correctly, is { $theirs }.
+quantity-lod-differs = At the inspected pixel { $pixel } your `{ $name }` (line { $line }) gives λ = { $yours }; pipelens' λ there is { $theirs }: the footprint is L = 2^λ = { $footprint } texels a pixel step (uv { $uv }).
+quantity-texel-differs = At the inspected pixel { $pixel } your `{ $name }` (line { $line }) gives { $yours }; pipelens' filter reads { $theirs } there (uv { $uv }).
 quantity-the-texture = the { $w } × { $h } texture
 quantity-the-level = level { $k } ({ $w } × { $h })
-quantity-bilinear-differs = At the inspected pixel your `{ $name }` (line { $line }) gives { $yours }; pipelens' bilinear filter reads { $theirs } there: uv { $uv } on { $on } is (x, y) = ({ $x }, { $y }) (x = u·w − ½, y = v·h − ½), between texels ({ $i }, { $j }) and ({ $i1 }, { $j1 }), mixed by s = { $s } and t = { $t }.
+quantity-bilinear-differs = At the inspected pixel { $pixel } your `{ $name }` (line { $line }) gives { $yours }; pipelens' bilinear filter reads { $theirs } there: uv { $uv } on { $on } is (x, y) = ({ $x }, { $y }) (x = u·w − ½, y = v·h − ½), between texels ({ $i }, { $j }) and ({ $i1 }, { $j1 }), mixed by s = { $s } and t = { $t }.
 
 ## src/lesson/answer.rs
 

@@ -272,6 +272,7 @@ debugger-several-fragments-reached-this-pixel = 有多个片元到达此像素�
 ## src/app/views/exercise.rs
 
 list-separator = 、
+sentence-separator = { "" }
 exercise-drawing-pipelens-own-frame = 正在绘制 pipelens 自带的画面…
 exercise-pipelens-own = pipelens 自带
 exercise-difference = 差异：
@@ -983,7 +984,7 @@ lab-words-at-another-depth = { $n } 个深度不同
 lab-words-another-triangle = { $n } 个属于另一个三角形
 lab-words-clause-separator = ；
 lab-words-not-yet = 还没有通过：{ $total } 个像素中 { $matching } 个一致，{ $differ } 个不同（{ $how }）。从上往下读，第一个是 { $first }。
-lab-words-at-the-pixel = 在所检查的像素处，你的 `{ $name }`（第 { $line } 行）是 { $yours }；pipelens 自带的着色器得到 { $theirs }。
+lab-words-at-the-pixel = 在所检查的像素 { $pixel } 处，你的 `{ $name }`（第 { $line } 行）是 { $yours }；pipelens 自带的着色器得到 { $theirs }。
 lab-words-at-the-vertex = 在顶点 { $row }（第一个错误像素所在三角形的一个角）处，你的顶点着色器中的 `{ $name }`（第 { $line } 行）是 { $yours }；pipelens 自带的得到 { $theirs }。
 lab-words-not-normalized = 你的长度是 { $length }，pipelens 的是 1：它归一化了吗？
 lab-words-first-vertex = 第一个出错的顶点在第 { $row } 行：你的裁剪坐标 { $yours }，pipelens 的 { $theirs }。
@@ -1079,12 +1080,12 @@ describe-group-part-latin = { $group }的 { $part }
 
 ## src/lab/quantity.rs
 
-quantity-uv-differs = 在所检查的像素处，你的 `{ $name }`（第 { $line } 行）是 { $yours }；pipelens 在此处经透视校正插值的 uv 是 { $theirs }。
-quantity-lod-differs = 在所检查的像素处，你的 `{ $name }`（第 { $line } 行）给出 λ = { $yours }；pipelens 在此处的 λ 是 { $theirs }：像素每走一步，覆盖区域是 L = 2^λ = { $footprint } 个纹素（uv { $uv }）。
-quantity-texel-differs = 在所检查的像素处，你的 `{ $name }`（第 { $line } 行）给出 { $yours }；pipelens 的过滤在此处读出 { $theirs }（uv { $uv }）。
+quantity-uv-differs = 在所检查的像素 { $pixel } 处，你的 `{ $name }`（第 { $line } 行）是 { $yours }；pipelens 在此处经透视校正插值的 uv 是 { $theirs }。
+quantity-lod-differs = 在所检查的像素 { $pixel } 处，你的 `{ $name }`（第 { $line } 行）给出 λ = { $yours }；pipelens 在此处的 λ 是 { $theirs }：像素每走一步，覆盖区域是 L = 2^λ = { $footprint } 个纹素（uv { $uv }）。
+quantity-texel-differs = 在所检查的像素 { $pixel } 处，你的 `{ $name }`（第 { $line } 行）给出 { $yours }；pipelens 的过滤在此处读出 { $theirs }（uv { $uv }）。
 quantity-the-texture = { " " }{ $w } × { $h } 的纹理
 quantity-the-level = 第 { $k } 层（{ $w } × { $h }）
-quantity-bilinear-differs = 在所检查的像素处，你的 `{ $name }`（第 { $line } 行）给出 { $yours }；pipelens 的双线性过滤在此处读出 { $theirs }：uv { $uv } 在{ $on }上是 (x, y) = ({ $x }, { $y })（x = u·w − ½，y = v·h − ½），位于纹素 ({ $i }, { $j }) 与 ({ $i1 }, { $j1 }) 之间，按 s = { $s }、t = { $t } 混合。
+quantity-bilinear-differs = 在所检查的像素 { $pixel } 处，你的 `{ $name }`（第 { $line } 行）给出 { $yours }；pipelens 的双线性过滤在此处读出 { $theirs }：uv { $uv } 在{ $on }上是 (x, y) = ({ $x }, { $y })（x = u·w − ½，y = v·h − ½），位于纹素 ({ $i }, { $j }) 与 ({ $i1 }, { $j1 }) 之间，按 s = { $s }、t = { $t } 混合。
 
 ## src/lesson/answer.rs
 

@@ -93,7 +93,7 @@ pub fn run(req: &GradeRequest) -> Result<()> {
     drop(bar);
     print_table(&rows, req.lang);
     if let Some(csv) = &req.csv {
-        crate::export::write_atomically(csv, csv_text(&rows).as_bytes(), req.lang)?;
+        crate::export::write_atomically(csv, csv_text(&rows, req.lang).as_bytes(), req.lang)?;
         say!("Wrote {}", csv.display());
     }
     if let Some(json) = &req.gradescope {
@@ -297,9 +297,10 @@ fn read_source(path: &Path, name: &str) -> Result<String, Unreadable> {
     String::from_utf8(bytes).map_err(|_| Unreadable::NotText(name.to_owned()))
 }
 
-/// Everything the check says of a hand-in, as one paragraph: the verdict, then what is off.
-fn feedback(grade: &Grade) -> String {
-    grade.sentences.join(" ")
+/// Everything the check says of a hand-in, as one paragraph: the verdict, then what is off
+/// (sentences apart by a space in English, none in Chinese, whose full stop ends them).
+fn feedback(grade: &Grade, lang: Lang) -> String {
+    grade.sentences.join(lang.t("sentence-separator"))
 }
 
 /// The table on stdout: student, step, passed, matching pixels, the feedback.
@@ -350,7 +351,7 @@ fn print_table(rows: &[Row], lang: Lang) {
             &r.step.to_string(),
             passed,
             &matching,
-            &feedback(&r.grade),
+            &feedback(&r.grade, lang),
         ]);
     }
     let students: std::collections::BTreeSet<&str> =
@@ -386,7 +387,7 @@ fn field(text: &str) -> String {
 }
 
 /// The grades as CSV: one row per student and step.
-fn csv_text(rows: &[Row]) -> String {
+fn csv_text(rows: &[Row], lang: Lang) -> String {
     let mut out = String::from("student,step,title,passed,matching,total,feedback\n");
     for r in rows {
         let (m, t) = r
@@ -401,7 +402,7 @@ fn csv_text(rows: &[Row]) -> String {
             r.step,
             field(&r.title),
             r.grade.passed,
-            field(&feedback(&r.grade))
+            field(&feedback(&r.grade, lang))
         ));
     }
     out
@@ -418,7 +419,7 @@ fn gradescope_results(rows: &[Row], lang: Lang) -> serde_json::Value {
                 "score": if r.grade.passed { 1.0 } else { 0.0 },
                 "max_score": 1.0,
                 "status": if r.grade.passed { "passed" } else { "failed" },
-                "output": feedback(&r.grade),
+                "output": feedback(&r.grade, lang),
                 "visibility": "visible",
             })
         })

@@ -28,6 +28,9 @@ pub struct Mismatch {
     /// For a vector that points pipelens' way: its length in each run (a normal not
     /// normalized shows here).
     pub lengths: Option<(f64, f64)>,
+    /// The pixel whose runs were compared (the inspected one; `pipelens grade` inspects the
+    /// first that differs), for a fragment shader's runs.
+    pub pixel: Option<(u32, u32)>,
     /// Where the runs were compared: the vertex shader's at this row of the vertex table (a
     /// corner of the first wrong pixel's triangle), or `None` for the fragment shader's at the
     /// inspected pixel.
@@ -168,6 +171,7 @@ pub fn first_difference(mine: &[TraceLine], theirs: &[TraceLine]) -> Option<Mism
             lengths: lengths_along(yours, theirs),
             yours: y,
             theirs: t,
+            pixel: None,
             vertex: None,
         }
     };

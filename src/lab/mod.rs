@@ -123,6 +123,10 @@ impl Findings {
                 fragment_changed
                     .then(|| first_mismatch(traced(mine), traced(reference)))
                     .flatten()
+                    .map(|m| Mismatch {
+                        pixel: mine.settings.capture.pixel,
+                        ..m
+                    })
                     .or_else(|| {
                         let first = difference.as_ref()?.first?;
                         vertex_changed.then(|| vertex_mismatch(scene, (mine, reference), first))?

@@ -25,6 +25,8 @@ pub struct QuantityMismatch {
     /// The texture's level 0 in texels, `(w, h)`, where the quantity is a texel (to say where
     /// the bilinear filter reads).
     pub size: Option<(u32, u32)>,
+    /// The inspected pixel, where both were read.
+    pub pixel: (u32, u32),
 }
 
 /// pipelens' value of `quantity` in `lookup`, as numbers.
@@ -99,6 +101,7 @@ pub fn quantity_mismatch(
         yours,
         theirs: lookup,
         size,
+        pixel: (x, y),
     })
 }
 
@@ -118,11 +121,13 @@ impl QuantityMismatch {
         let t = &self.theirs;
         let theirs = numbers(&pipelens_value(self.quantity, t));
         let uv = numbers(&t.uv.map(f64::from));
+        let pixel = super::words::pixel(self.pixel);
         let args = [
             ("name", name as &dyn std::fmt::Display),
             ("line", &line),
             ("yours", &yours),
             ("theirs", &theirs),
+            ("pixel", &pixel),
         ];
         match self.quantity {
             Quantity::Uv => lang.t_with("quantity-uv-differs", &args),
@@ -142,6 +147,7 @@ impl QuantityMismatch {
     /// A texel's finding: both colours, and the four texels and weights pipelens mixes.
     fn texel_words(&self, yours: &str, theirs: &str, uv: &str, lang: Lang) -> String {
         let (name, line) = (&self.name, self.line);
+        let pixel = super::words::pixel(self.pixel);
         // The filter reads one level (bilinear): its size; a blend of two levels (trilinear) is
         // said without the texels.
         let level = self.theirs.level;
@@ -158,6 +164,7 @@ impl QuantityMismatch {
                     ("yours", &yours),
                     ("theirs", &theirs),
                     ("uv", &uv),
+                    ("pixel", &pixel),
                 ],
             );
         };
@@ -194,6 +201,7 @@ impl QuantityMismatch {
                 ("j1", &j1),
                 ("s", &s),
                 ("t", &t),
+                ("pixel", &pixel),
             ],
         )
     }
@@ -217,6 +225,7 @@ mod tests {
                 texel: [0.5, 0.25, 0.0],
             },
             size: Some((64, 32)),
+            pixel: (120, 45),
         }
     }
 
@@ -227,7 +236,7 @@ mod tests {
         let texel = mismatch(Quantity::Texel, vec![1.0, 0.0, 0.0], 1.0);
         assert_eq!(
             texel.words(Lang::EN),
-            "At the inspected pixel your `texel` (line 12) gives (1.000, 0.000, 0.000); pipelens' \
+            "At the inspected pixel (120, 45) your `texel` (line 12) gives (1.000, 0.000, 0.000); pipelens' \
              bilinear filter reads (0.500, 0.250, 0.000) there: uv (0.250, 0.500) on level 1 \
              (32 × 16) is (x, y) = (7.500, 7.500) (x = u·w − ½, y = v·h − ½), between texels \
              (7, 7) and (8, 8), mixed by s = 0.500 and t = 0.500."
@@ -236,7 +245,7 @@ mod tests {
         let level0 = mismatch(Quantity::Texel, vec![1.0, 0.0, 0.0], 0.0);
         assert_eq!(
             level0.words(Lang::ZH),
-            "在所检查的像素处，你的 `texel`（第 12 行）给出 (1.000, 0.000, 0.000)；pipelens 的双线性\
+            "在所检查的像素 (120, 45) 处，你的 `texel`（第 12 行）给出 (1.000, 0.000, 0.000)；pipelens 的双线性\
              过滤在此处读出 (0.500, 0.250, 0.000)：uv (0.250, 0.500) 在 64 × 32 的纹理上是 (x, y) = \
              (15.500, 15.500)（x = u·w − ½，y = v·h − ½），位于纹素 (15, 15) 与 (16, 16) 之间，按 \
              s = 0.500、t = 0.500 混合。"
@@ -245,13 +254,13 @@ mod tests {
         let blend = mismatch(Quantity::Texel, vec![1.0, 0.0, 0.0], 1.5);
         assert_eq!(
             blend.words(Lang::EN),
-            "At the inspected pixel your `texel` (line 12) gives (1.000, 0.000, 0.000); pipelens' \
+            "At the inspected pixel (120, 45) your `texel` (line 12) gives (1.000, 0.000, 0.000); pipelens' \
              filter reads (0.500, 0.250, 0.000) there (uv (0.250, 0.500))."
         );
         let lod = mismatch(Quantity::Lod, vec![1.0], 1.0);
         assert_eq!(
             lod.words(Lang::EN),
-            "At the inspected pixel your `texel` (line 12) gives λ = 1.000; pipelens' λ there is \
+            "At the inspected pixel (120, 45) your `texel` (line 12) gives λ = 1.000; pipelens' λ there is \
              2.000: the footprint is L = 2^λ = 4.00 texels a pixel step (uv (0.250, 0.500))."
         );
     }

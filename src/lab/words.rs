@@ -18,10 +18,7 @@ pub fn verdict(d: &Difference, lang: Lang) -> String {
             &[("total", &d.total), ("tolerance", &tolerance)],
         );
     }
-    let first = d
-        .first
-        .map(|(x, y)| format!("({x}, {y})"))
-        .unwrap_or_default();
+    let first = d.first.map(pixel).unwrap_or_default();
     // What differs, each clause only where some pixel differs so.
     let mut how = Vec::new();
     if d.largest > d.criteria.tolerance {
@@ -49,8 +46,15 @@ pub fn verdict(d: &Difference, lang: Lang) -> String {
     )
 }
 
-/// A mismatch in words: the variable, its line, both values, and a vector's length when only
-/// pipelens' is 1 (a normal not normalized).
+/// A pixel as the sentences name it, `(x, y)`, in the coordinates of the verdict's first
+/// difference and of the Inspector.
+#[must_use]
+pub fn pixel((x, y): (u32, u32)) -> String {
+    format!("({x}, {y})")
+}
+
+/// A mismatch in words: the pixel or vertex, the variable, its line, both values, and a
+/// vector's length when only pipelens' is 1 (a normal not normalized).
 #[must_use]
 pub fn mismatch_words(m: &Mismatch, lang: Lang) -> String {
     let values: [(&'static str, &dyn std::fmt::Display); 4] = [
@@ -60,7 +64,12 @@ pub fn mismatch_words(m: &Mismatch, lang: Lang) -> String {
         ("theirs", &m.theirs),
     ];
     let mut text = match m.vertex {
-        None => lang.t_with("lab-words-at-the-pixel", &values),
+        None => {
+            let at = m.pixel.map(pixel).unwrap_or_default();
+            let mut at_pixel = values.to_vec();
+            at_pixel.push(("pixel", &at));
+            lang.t_with("lab-words-at-the-pixel", &at_pixel)
+        }
         Some(row) => {
             let mut at_vertex = values.to_vec();
             at_vertex.push(("row", &row));
@@ -252,11 +261,16 @@ mod tests {
             yours: "(0, 2, 0)".to_owned(),
             theirs: "(0, 1, 0)".to_owned(),
             lengths: Some((2.0, 1.0)),
+            pixel: Some((31, 7)),
             vertex: None,
         };
         assert_eq!(
             mismatch_words(&m, Lang::EN),
-            "At the inspected pixel your `n` (line 12) is (0, 2, 0); pipelens' own shader has (0, 1, 0). Yours has length 2.0000, pipelens' 1: is it normalized?"
+            "At the inspected pixel (31, 7) your `n` (line 12) is (0, 2, 0); pipelens' own shader has (0, 1, 0). Yours has length 2.0000, pipelens' 1: is it normalized?"
+        );
+        assert_eq!(
+            mismatch_words(&m, Lang::ZH),
+            "在所检查的像素 (31, 7) 处，你的 `n`（第 12 行）是 (0, 2, 0)；pipelens 自带的着色器得到 (0, 1, 0)。你的长度是 2.0000，pipelens 的是 1：它归一化了吗？"
         );
         let at_vertex = Mismatch {
             vertex: Some(5),

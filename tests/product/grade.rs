@@ -247,6 +247,10 @@ fn the_gradescope_autograder_writes_results_json() {
     assert_eq!(tests[0]["status"], "failed");
     let output = tests[0]["output"].as_str().expect("output");
     assert!(output.starts_with("还没有通过"), "{output}");
+    // Its sentences (the verdict, the value at the first wrong pixel) follow one another as
+    // Chinese sentences do, the full stop with no space after it.
+    assert!(output.matches('。').count() >= 2, "{output}");
+    assert!(!output.contains("。 "), "{output}");
     assert!(
         tests[0]["name"]
             .as_str()

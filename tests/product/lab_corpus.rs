@@ -118,6 +118,20 @@ fn every_lab_s_corpus_is_graded_as_a_teacher_would() {
                         "{lesson_id} / {title}: {said:?} lacks {w:?}\n{code}"
                     ));
                 }
+                // A value compared at a pixel is compared at the first that differs, the one
+                // the verdict names ("… is (x, y).").
+                let named = |after: &str| {
+                    let rest = &said[said.find(after)? + after.len()..];
+                    Some(rest[..=rest.find(')')?].to_owned())
+                };
+                if let Some(at) = named("At the inspected pixel ")
+                    && named("reading from the top, is ") != Some(at.clone())
+                {
+                    faults.push(format!(
+                        "{lesson_id} / {title}: the value is read at {at}, not at the first \
+                         difference: {said}"
+                    ));
+                }
                 // Both languages say it: the Chinese verdict in Chinese, every sentence of it.
                 let zh = grade(&lesson, k, &hand_in(&lesson, k, code), Lang::ZH);
                 assert_eq!(zh.passed, g.passed);

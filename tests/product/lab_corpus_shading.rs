@@ -21,7 +21,7 @@ pub(crate) const CORPUS: &[(&str, &str, &str, Want)] = &[
                 float cos_phi = dot(-l, normalize(light.direction));
                 f *= cos_phi < light.cutoff_cos ? 0.0 : pow(max(cos_phi, 0.0), light.exponent);
             }
-        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        }", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("10-blinn-phong", "Lab: light casters", "        vec3 l;
         float f = 1.0;
         if (light.kind == LIGHT_DIRECTIONAL) {
@@ -39,7 +39,7 @@ pub(crate) const CORPUS: &[(&str, &str, &str, Want)] = &[
                 float cos_phi = dot(-l, normalize(light.direction));
                 f *= cos_phi < light.cutoff_cos ? 0.0 : pow(max(cos_phi, 0.0), light.exponent);
             }
-        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        }", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("10-blinn-phong", "Lab: light casters", "        vec3 l;
         float f = 1.0;
         if (light.kind == LIGHT_DIRECTIONAL) {
@@ -50,7 +50,7 @@ pub(crate) const CORPUS: &[(&str, &str, &str, Want)] = &[
             l = normalize(to_light);
             vec3 abc = light.attenuation;
             f = 1.0 / (abc.x + abc.y * d + abc.z * d * d);
-        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        }", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("10-blinn-phong", "Lab: light casters", "        vec3 l;
         float f = 1.0;
         if (light.kind == LIGHT_DIRECTIONAL) {
@@ -65,7 +65,7 @@ pub(crate) const CORPUS: &[(&str, &str, &str, Want)] = &[
                 float cos_phi = dot(l, normalize(light.direction));
                 f *= cos_phi < light.cutoff_cos ? 0.0 : pow(max(cos_phi, 0.0), light.exponent);
             }
-        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        }", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("10-blinn-phong", "Lab: light casters", "        vec3 l;
         float f = 1.0;
         if (light.kind == LIGHT_DIRECTIONAL) {
@@ -80,7 +80,7 @@ pub(crate) const CORPUS: &[(&str, &str, &str, Want)] = &[
                 float cos_phi = dot(-l, normalize(light.direction));
                 f *= cos_phi < light.cutoff_cos ? 0.0 : 1.0;
             }
-        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        }", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("10-blinn-phong", "Lab: light casters", "        vec3 l;
         float f = 1.0;
         if (light.kind == LIGHT_DIRECTIONAL) {
@@ -95,7 +95,7 @@ pub(crate) const CORPUS: &[(&str, &str, &str, Want)] = &[
                 vec3 abc = light.attenuation;
                 f = 1.0 / (abc.x + abc.y * d + abc.z * d * d);
             }
-        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        }", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("10-blinn-phong", "Lab: light casters", "        vec3 l = light.kind == LIGHT_DIRECTIONAL ? normalize(-light.direction) : normalize(light.position - w_pos);
         float f = 1.0;
         if (light.kind != LIGHT_DIRECTIONAL) {
@@ -141,23 +141,23 @@ float cone(vec3 axis, vec3 l, float cutoff_cos, float e) {
         }", Right),
     // 10-blinn-phong: Lab: the specular term in a fragment shader.
     ("10-blinn-phong", "Lab: the specular term in a fragment shader", "        vec3 h = normalize(l + v);
-        sum += f * ks * light.intensity * pow(max(dot(n, h), 0.0), shininess);", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        sum += f * ks * light.intensity * pow(max(dot(n, h), 0.0), shininess);", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("10-blinn-phong", "Lab: the specular term in a fragment shader", "        vec3 r = reflect(-l, n);
         if (n_dot_l > 0.0) {
             sum += f * ks * light.intensity * pow(max(dot(r, v), 0.0), shininess);
-        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        }", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("10-blinn-phong", "Lab: the specular term in a fragment shader", "        vec3 h = normalize(l + v);
         if (n_dot_l > 0.0) {
             sum += ks * light.intensity * pow(max(dot(n, h), 0.0), shininess);
-        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        }", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("10-blinn-phong", "Lab: the specular term in a fragment shader", "        vec3 h = l + v;
         if (n_dot_l > 0.0) {
             sum += f * ks * light.intensity * pow(max(dot(n, h), 0.0), shininess);
-        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        }", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("10-blinn-phong", "Lab: the specular term in a fragment shader", "        vec3 h = normalize(l + v);
         if (n_dot_l > 0.0) {
             sum += f * ks * c * light.intensity * pow(max(dot(n, h), 0.0), shininess);
-        }", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        }", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("10-blinn-phong", "Lab: the specular term in a fragment shader", "        vec3 half_vector = (l + v) / length(l + v);
         float lit = n_dot_l > 0.0 ? 1.0 : 0.0;
         sum += lit * f * light.intensity * ks * pow(max(dot(half_vector, n), 0.0), shininess);", Right),
@@ -283,26 +283,26 @@ float cone(vec3 axis, vec3 l, float cutoff_cos, float e) {
         float here = height(uv);
         float du = bump_strength * (height(uv + vec2(1.0 / size.y, 0.0)) - here);
         float dv = bump_strength * (height(uv + vec2(0.0, 1.0 / size.x)) - here);
-        local = vec3(-du, -dv, 1.0);", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        local = vec3(-du, -dv, 1.0);", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("15-surface-detail", "Lab: the bump map in a fragment shader", "        vec2 size = vec2(textureSize(detail, 0));
         float here = height(uv);
         float du = height(uv + vec2(1.0 / size.x, 0.0)) - here;
         float dv = height(uv + vec2(0.0, 1.0 / size.y)) - here;
-        local = vec3(-du, -dv, 1.0);", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        local = vec3(-du, -dv, 1.0);", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("15-surface-detail", "Lab: the bump map in a fragment shader", "        vec2 size = vec2(textureSize(detail, 0));
         float here = height(uv);
         float du = bump_strength * (height(uv + vec2(1.0 / size.x, 0.0)) - here);
         float dv = bump_strength * (height(uv + vec2(0.0, 1.0 / size.y)) - here);
-        local = vec3(du, dv, 1.0);", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        local = vec3(du, dv, 1.0);", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("15-surface-detail", "Lab: the bump map in a fragment shader", "        vec2 size = vec2(textureSize(detail, 0));
         float here = textureLod(detail, uv, 0.0).r;
         float du = bump_strength * (textureLod(detail, uv + vec2(1.0 / size.x, 0.0), 0.0).r - here);
         float dv = bump_strength * (textureLod(detail, uv + vec2(0.0, 1.0 / size.y), 0.0).r - here);
-        local = vec3(-du, -dv, 1.0);", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        local = vec3(-du, -dv, 1.0);", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("15-surface-detail", "Lab: the bump map in a fragment shader", "        float here = height(uv);
         float du = bump_strength * (height(uv + vec2(1.0, 0.0)) - here);
         float dv = bump_strength * (height(uv + vec2(0.0, 1.0)) - here);
-        local = vec3(-du, -dv, 1.0);", Wrong(&["Not yet", "At the inspected pixel your `"])),
+        local = vec3(-du, -dv, 1.0);", Wrong(&["Not yet", "At the inspected pixel ("])),
     ("15-surface-detail", "Lab: the bump map in a fragment shader", "        vec2 texel_step = 1.0 / vec2(textureSize(detail, 0));
         float h0 = height(uv);
         vec2 d = bump_strength * (vec2(height(uv + vec2(texel_step.x, 0.0)), height(uv + vec2(0.0, texel_step.y))) - h0);

@@ -244,11 +244,28 @@ fn a_mismatch_names_the_first_value_that_differs_and_an_unnormalized_normal() {
     h.run_steps(4);
     h.get_by_label("Inspect the first wrong pixel").click();
     h.run_steps(6);
-    // The starter has no specular term: its sum parts from pipelens' where that term is added.
+    // The starter has no specular term: its sum parts from pipelens' where that term is added,
+    // at the pixel now inspected — the first wrong one, which the sentence names.
+    let first = |h: &egui_kittest::Harness<'_, pipelens::app::PipelensApp>| {
+        let session = &h.state().session;
+        let first = session
+            .exercise
+            .findings
+            .difference
+            .as_ref()
+            .and_then(|d| d.first);
+        assert_eq!(
+            session.selection.pixel, first,
+            "the first wrong pixel is inspected"
+        );
+        let (x, y) = first.expect("a wrong pixel");
+        format!("At the inspected pixel ({x}, {y}) your ")
+    };
+    let at = first(&h);
     assert!(
-        h.query_by_label_contains("At the inspected pixel your `sum` (line")
+        h.query_by_label_contains(&format!("{at}`sum` (line"))
             .is_some(),
-        "the starter's mismatch is named"
+        "the starter's mismatch is named at {at:?}"
     );
     let vertex = h
         .state()
@@ -272,8 +289,9 @@ fn a_mismatch_names_the_first_value_that_differs_and_an_unnormalized_normal() {
     assert!(h.query_by_label_contains("Not yet").is_some());
     h.get_by_label("Inspect the first wrong pixel").click();
     h.run_steps(6);
+    let at = first(&h);
     assert!(
-        h.query_by_label_contains("At the inspected pixel your `n` (line 23)")
+        h.query_by_label_contains(&format!("{at}`n` (line 23)"))
             .is_some()
     );
     assert!(h.query_by_label_contains("is it normalized?").is_some());
