@@ -701,7 +701,7 @@ grade-student = student
 grade-step = step
 grade-passed = passed
 grade-matching = matching
-grade-first-difference = first difference
+grade-feedback = feedback
 grade-yes = yes
 grade-no = no
 

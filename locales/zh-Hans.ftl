@@ -689,7 +689,7 @@ grade-student = 学生
 grade-step = 步骤
 grade-passed = 通过
 grade-matching = 一致
-grade-first-difference = 第一处差异
+grade-feedback = 反馈
 grade-yes = 是
 grade-no = 否
 

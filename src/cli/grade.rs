@@ -334,7 +334,7 @@ fn print_table(rows: &[Row], lang: Lang) {
         lang.t("grade-step"),
         lang.t("grade-passed"),
         lang.t("grade-matching"),
-        lang.t("grade-first-difference"),
+        lang.t("grade-feedback"),
     ]);
     for r in rows {
         let matching = r

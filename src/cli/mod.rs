@@ -141,7 +141,8 @@ pub enum Command {
     },
     /// Grade a class's lab hand-ins with no window, exactly as the app checks a lab: each
     /// student's code drawn and compared with pipelens' own, pixel by pixel. Prints a table
-    /// (student, step, passed, matching pixels, the first difference in words).
+    /// (student, step, passed, matching pixels, and the feedback: the verdict, where the first
+    /// difference is and what was found there).
     Grade {
         /// The lesson: a lesson file, or a built-in lesson's name such as 10-blinn-phong.
         lesson: String,
