@@ -96,16 +96,31 @@ impl ExerciseView {
         let captions = captions(kind, lang, &picture_font(ui.ctx(), 14.0));
         let height = caption_height(ui.ctx(), session);
         let pair = crate::app::layout::lab_pair(rect, aspect, &height);
-        for (i, texture) in [Some(reference_texture), difference_texture]
+        let wrapped_captions: [_; 2] = std::array::from_fn(|i| {
+            ui.painter()
+                .layout_job(wrapped(&captions[i], pair[i].space.width()))
+        });
+        // Side by side, both pictures leave the room of the higher caption (the difference's
+        // key wraps to three lines on a phone), so that they stand at one size and one top;
+        // one over the other, each its own caption's (a landscape phone's view is short).
+        let beside = (pair[0].space.top() - pair[1].space.top()).abs() < 0.5;
+        let highest = wrapped_captions
+            .iter()
+            .map(|c| c.size().y + 6.0)
+            .fold(0.0, f32::max);
+        for ((i, texture), caption) in [Some(reference_texture), difference_texture]
             .into_iter()
             .enumerate()
+            .zip(wrapped_captions)
         {
             let Some(texture) = texture else { continue };
             let space = pair[i].space;
-            let caption = ui
-                .painter()
-                .layout_job(wrapped(&captions[i], space.width()));
-            let (at, above) = captioned(space, aspect, caption.size().y + 6.0);
+            let room = if beside {
+                highest
+            } else {
+                caption.size().y + 6.0
+            };
+            let (at, above) = captioned(space, aspect, room);
             self.picture.push(at);
             let (pick, boxed) = picture(
                 ui,

@@ -327,3 +327,45 @@ fn on_a_small_screen_the_legend_is_a_chip_that_a_tap_opens() {
         "a desktop's legend shows its keys: {legend:?}"
     );
 }
+
+/// A lab's two companion pictures — pipelens' own and the difference — side by side stand at
+/// one size and one top (one over the other, centred on one line): the difference's key ("colour,
+/// coverage, depth, another triangle") wraps to three lines on a phone, and the difference was
+/// drawn lower than pipelens' own beside it.
+#[test]
+fn a_lab_s_two_pictures_side_by_side_match_in_size_and_top() {
+    let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
+    let mut beside_seen = 0;
+    for size in [
+        [360.0, 640.0],
+        [390.0, 844.0],
+        [844.0, 390.0],
+        [768.0, 1024.0],
+        [1366.0, 768.0],
+    ] {
+        let mut h = super::sized_lesson_harness(&path, size);
+        super::go_to_step_titled(&mut h, super::SPECULAR_LAB);
+        h.run_steps(8);
+        let pictures = &h.state().picture;
+        let [.., own, difference] = pictures.as_slice() else {
+            panic!("{size:?}: the lab's two pictures: {pictures:?}");
+        };
+        let (own, difference) = (*own, *difference);
+        assert!(own.is_positive(), "{size:?}: {own:?}");
+        if own.max.x <= difference.min.x + 0.5 {
+            beside_seen += 1;
+            assert!(
+                (own.size() - difference.size()).length() < 0.5
+                    && (own.top() - difference.top()).abs() < 0.5,
+                "{size:?}: side by side at one size and one top: {own:?} and {difference:?}"
+            );
+        } else {
+            assert!(
+                own.max.y <= difference.min.y + 0.5
+                    && (own.center().x - difference.center().x).abs() < 0.5,
+                "{size:?}: one over the other, centred on one line: {own:?} and {difference:?}"
+            );
+        }
+    }
+    assert!(beside_seen >= 1, "the pair stands side by side on an upright phone");
+}
