@@ -445,10 +445,13 @@ fn buffer_with_shapes(
     } else {
         capture.image_with_shapes(kind, gain, &shapes, zoom)
     };
-    for a in &arrows {
-        let (dx, dy) = (a.to[0] - a.from[0], a.to[1] - a.from[1]);
-        let len = dx.hypot(dy).max(1e-6);
-        let at = [a.to[0] * z + dx / len * 12.0, a.to[1] * z + dy / len * 12.0];
+    // Each letter beyond its arrow's head, clear of the others (as the app places them).
+    let ends: Vec<([f32; 2], [f32; 2])> = arrows
+        .iter()
+        .map(|a| (a.from.map(|v| v * z), a.to.map(|v| v * z)))
+        .collect();
+    let places = pipeline::overlay::spread_labels(&ends, [14.0, 20.0], 12.0, &[]);
+    for (a, at) in arrows.iter().zip(places) {
         let [r, g, b, _] = a.color;
         text::draw(&mut img, at[0] - 5.0, at[1] + 7.0, 20.0, [r, g, b], a.name);
     }

@@ -117,6 +117,68 @@ pub fn arrow_head(a: [f32; 2], b: [f32; 2], size: f32) -> [[f32; 2]; 2] {
     ]
 }
 
+/// Where the labels of arrows drawn from one point go, so that none covers another nor a box
+/// of `avoid` (`[min, max]`, a legend): label `i`, a box `size` across, centred `gap` beyond the
+/// head of arrow `arrows[i]` = `(from, to)` along its shaft; where that box meets one placed
+/// before it, beside that place (a box across the shaft, on its left, then its right), then
+/// further out along the shaft by half a box at a time, and so on up to a few boxes away; for
+/// an arrow too short to have a direction (a vector pointing at the eye), round the point.
+/// Arrows of close directions (`l` and `h` at a grazing light) then keep their letters apart,
+/// in the order given. Where no place is clear of both, the first clear of the other labels (a
+/// letter over the legend's edge hides less than one over another letter); else the first.
+#[must_use]
+pub fn spread_labels(
+    arrows: &[([f32; 2], [f32; 2])],
+    size: [f32; 2],
+    gap: f32,
+    avoid: &[[[f32; 2]; 2]],
+) -> Vec<[f32; 2]> {
+    let meets =
+        |a: [f32; 2], b: [f32; 2]| (a[0] - b[0]).abs() < size[0] && (a[1] - b[1]).abs() < size[1];
+    let covers = |c: [f32; 2], [min, max]: [[f32; 2]; 2]| {
+        let h = [size[0] / 2.0, size[1] / 2.0];
+        c[0] + h[0] > min[0] && c[0] - h[0] < max[0] && c[1] + h[1] > min[1] && c[1] - h[1] < max[1]
+    };
+    let step = 0.5 * size[0].max(size[1]);
+    let mut placed: Vec<[f32; 2]> = Vec::with_capacity(arrows.len());
+    for &(from, to) in arrows {
+        let (dx, dy) = (to[0] - from[0], to[1] - from[1]);
+        let len = dx.hypot(dy);
+        let candidates: Vec<[f32; 2]> = if len >= 1.0 {
+            let (ux, uy) = (dx / len, dy / len);
+            // Across the shaft, a box's extent that way.
+            let (px, py) = (-uy, ux);
+            let across = px.abs() * size[0] + py.abs() * size[1];
+            (0..6)
+                .flat_map(|k| {
+                    let d = gap + k as f32 * step;
+                    let at = [to[0] + ux * d, to[1] + uy * d];
+                    [0.0, 1.0, -1.0, 2.0, -2.0]
+                        .map(|side| [at[0] + px * across * side, at[1] + py * across * side])
+                })
+                .collect()
+        } else {
+            // Eight places round the point, then eight further out.
+            (0..16)
+                .map(|k| {
+                    let a = (k % 8) as f32 * std::f32::consts::FRAC_PI_4;
+                    let d = gap + (k / 8) as f32 * 2.0 * step;
+                    [to[0] + a.cos() * d, to[1] - a.sin() * d]
+                })
+                .collect()
+        };
+        let apart = |c: &[f32; 2]| placed.iter().all(|p| !meets(*c, *p));
+        let clear = |c: &[f32; 2]| apart(c) && avoid.iter().all(|r| !covers(*c, *r));
+        let at = candidates
+            .iter()
+            .find(|c| clear(c))
+            .or_else(|| candidates.iter().find(|c| apart(c)))
+            .unwrap_or(&candidates[0]);
+        placed.push(*at);
+    }
+    placed
+}
+
 /// Strokes the path built in `pb` with round caps.
 fn stroke_round(pixmap: &mut Pixmap, pb: PathBuilder, color: Rgba, width: f32) {
     if let Some(path) = pb.finish() {
@@ -227,4 +289,53 @@ pub fn magnified_with_shapes(base: &RgbaImage, shapes: &[Shape], zoom: u32) -> R
             image::Rgba([c.red(), c.green(), c.blue(), c.alpha()])
         })
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::spread_labels;
+
+    /// Boxes 20 × 20, 10 beyond the heads; each place worked out by hand.
+    #[test]
+    fn labels_that_would_cover_one_another_are_moved_apart() {
+        let size = [20.0, 20.0];
+        let right = ([0.0, 0.0], [100.0, 0.0]);
+        // Two directions: each label where it would be alone.
+        let apart = spread_labels(&[right, ([0.0, 0.0], [0.0, 100.0])], size, 10.0, &[]);
+        assert_eq!(apart, [[110.0, 0.0], [0.0, 110.0]]);
+        // One direction twice: the second goes beside the first, a box across the shaft (on
+        // its left as the arrow points: +y, image rows going down).
+        let same = spread_labels(&[right, right], size, 10.0, &[]);
+        assert_eq!(same, [[110.0, 0.0], [110.0, 20.0]]);
+        // Three times: the third on the right side (−y).
+        let three = spread_labels(&[right, right, right], size, 10.0, &[]);
+        assert_eq!(three[2], [110.0, -20.0]);
+        // A fourth and a fifth: two boxes across, (110, 40) and (110, −40).
+        let five = spread_labels(&[right; 5], size, 10.0, &[]);
+        assert_eq!(five[3..], [[110.0, 40.0], [110.0, -40.0]]);
+        // A sixth: its five places at 110 are taken; half a box out, (120, 0) meets the
+        // first (10 apart), (120, ±20) the second and third, (120, ±40) the fourth and fifth;
+        // at 130, (130, 0) touches them.
+        let six = spread_labels(&[right; 6], size, 10.0, &[]);
+        assert_eq!(six[5], [130.0, 0.0]);
+        // A legend over (100..200, −50..5) covers the first place; (110, 20) is clear of it.
+        let legend = [[100.0, -50.0], [200.0, 5.0]];
+        let avoided = spread_labels(&[right], size, 10.0, &[legend]);
+        assert_eq!(avoided, [[110.0, 20.0]]);
+        // A legend over everything near the second arrow: it goes where it covers the legend
+        // but not the first label, beside it at (110, 20).
+        let everywhere = [[0.0, -500.0], [500.0, 500.0]];
+        let crowded = spread_labels(&[right, right], size, 10.0, &[everywhere]);
+        assert_eq!(crowded, [[110.0, 0.0], [110.0, 20.0]]);
+        // An arrow with no length (a vector at the eye) beside a label at (50, 50): the eight
+        // places 10 round (40.5, 50) all meet it; the first of the next ring, 30 to the right
+        // at (70.5, 50), is 20.5 from it.
+        let short = spread_labels(
+            &[([0.0, 50.0], [40.0, 50.0]), ([40.0, 50.0], [40.5, 50.0])],
+            size,
+            10.0,
+            &[],
+        );
+        assert_eq!(short, [[50.0, 50.0], [70.5, 50.0]]);
+    }
 }

@@ -367,5 +367,8 @@ fn a_lab_s_two_pictures_side_by_side_match_in_size_and_top() {
             );
         }
     }
-    assert!(beside_seen >= 1, "the pair stands side by side on an upright phone");
+    assert!(
+        beside_seen >= 1,
+        "the pair stands side by side on an upright phone"
+    );
 }

@@ -166,9 +166,7 @@ pub(super) fn draw_light_vectors(
     if arrows.is_empty() {
         return None;
     }
-    for arrow in arrows {
-        let [r, g, b, _] = arrow.color;
-        let color = Color32::from_rgb(r, g, b);
+    for arrow in &arrows {
         let shape = Shape::Arrow {
             from: arrow.from,
             to: arrow.to,
@@ -176,16 +174,6 @@ pub(super) fn draw_light_vectors(
             width: 2.5,
         };
         draw_shape(painter, &shape, &|p| view.to_screen(p));
-        let (a, b) = (view.to_screen(arrow.from), view.to_screen(arrow.to));
-        // On its box: the letter lies on the lit surface, which may be as light as it is.
-        crate::app::views::label_with_background(
-            painter,
-            b + (b - a).normalized() * 14.0,
-            egui::Align2::CENTER_CENTER,
-            arrow.name,
-            &picture_font(painter.ctx(), 18.0),
-            color,
-        );
     }
     // The legend, typeset, on a dark box in a corner clear of the subject and of the narration.
     let card = crate::app::views::card_placement::narration_card(painter.ctx());
@@ -222,6 +210,34 @@ pub(super) fn draw_light_vectors(
             &style,
         );
         at.y = r.bottom() + 4.0;
+    }
+    // The letters over every shaft, each on its box (it lies on the lit surface, which may be
+    // as light as it is), clear of one another and of the legend: on a small picture the
+    // arrows are short and their letters met at the pixel.
+    let font = picture_font(painter.ctx(), 18.0);
+    let letter = painter
+        .layout_no_wrap("h".to_owned(), font.clone(), Color32::WHITE)
+        .size()
+        + Vec2::splat(6.0);
+    let ends: Vec<([f32; 2], [f32; 2])> = arrows
+        .iter()
+        .map(|a| {
+            let (from, to) = (view.to_screen(a.from), view.to_screen(a.to));
+            ([from.x, from.y], [to.x, to.y])
+        })
+        .collect();
+    let avoid = [[legend.min, legend.max].map(|p| [p.x, p.y])];
+    let places = pipeline::overlay::spread_labels(&ends, [letter.x, letter.y], 14.0, &avoid);
+    for (arrow, [x, y]) in arrows.iter().zip(places) {
+        let [r, g, b, _] = arrow.color;
+        crate::app::views::label_with_background(
+            painter,
+            Pos2::new(x, y),
+            egui::Align2::CENTER_CENTER,
+            arrow.name,
+            &font,
+            Color32::from_rgb(r, g, b),
+        );
     }
     Some(legend)
 }
