@@ -140,14 +140,14 @@ impl QuantityMismatch {
                 ]);
                 lang.t_with("quantity-lod-differs", &args)
             }
-            Quantity::Texel => self.texel_words(&yours, &theirs, &uv, lang),
+            Quantity::Texel => self.texel_words([&yours, &theirs, &uv, &pixel], lang),
         }
     }
 
     /// A texel's finding: both colours, and the four texels and weights pipelens mixes.
-    fn texel_words(&self, yours: &str, theirs: &str, uv: &str, lang: Lang) -> String {
+    /// `yours`, `theirs`, `uv` and `pixel` as [`Self::words`] wrote them.
+    fn texel_words(&self, [yours, theirs, uv, pixel]: [&str; 4], lang: Lang) -> String {
         let (name, line) = (&self.name, self.line);
-        let pixel = super::words::pixel(self.pixel);
         // The filter reads one level (bilinear): its size; a blend of two levels (trilinear) is
         // said without the texels.
         let level = self.theirs.level;
