@@ -11,42 +11,55 @@
 /// beside it.
 pub(super) fn split(ui: &egui::Ui, aspect: Option<f32>) -> (egui::Rect, egui::Rect, egui::Rect) {
     let area = ui.available_rect_before_wrap();
-    let gap = 8.0;
     let small = super::window_size::is_compact(ui.ctx());
-    if area.height() > area.width() * 1.1 || (small && stacks(area.size(), aspect, gap)) {
-        let height = area.height() - gap;
-        let top = aspect.map_or(height / 2.0, |a| {
-            (area.width() / a).clamp(height * 0.4, height * 0.64)
-        });
-        let first = egui::Rect::from_min_size(area.min, egui::vec2(area.width(), top));
-        let second =
-            egui::Rect::from_min_max(egui::pos2(area.left(), first.bottom() + gap), area.max);
+    if area.height() > area.width() * 1.1 || (small && stacks(area, aspect)) {
+        let (first, second) = portrait_cut(area, aspect);
         return (area, first, second);
     }
-    let width = area.width() - gap;
+    let width = area.width() - GAP;
     let left_width = aspect.map_or(width / 2.0, |a| {
         (area.height() * a).clamp(width * 0.4, width * 0.64)
     });
     let left = egui::Rect::from_min_size(area.min, egui::vec2(left_width, area.height()));
-    let right = egui::Rect::from_min_max(egui::pos2(left.right() + gap, area.top()), area.max);
+    let right = egui::Rect::from_min_max(egui::pos2(left.right() + GAP, area.top()), area.max);
     (area, left, right)
 }
 
+/// [`split`]'s cut of `area` one part over the other: the first as high as an image of `aspect`
+/// as wide as the space, but between 40 % and 64 % of the height (half without an image).
+fn portrait_cut(area: egui::Rect, aspect: Option<f32>) -> (egui::Rect, egui::Rect) {
+    let height = area.height() - GAP;
+    let top = aspect.map_or(height / 2.0, |a| {
+        (area.width() / a).clamp(height * 0.4, height * 0.64)
+    });
+    over(area, top)
+}
+
+/// `area` cut one part over the other: the first `top` high, the second under it after the gap.
+fn over(area: egui::Rect, top: f32) -> (egui::Rect, egui::Rect) {
+    let first = egui::Rect::from_min_size(area.min, egui::vec2(area.width(), top));
+    let second = egui::Rect::from_min_max(egui::pos2(area.left(), first.bottom() + GAP), area.max);
+    (first, second)
+}
+
+/// The gap between two parts of a cut.
+const GAP: f32 = 8.0;
+
 /// Whether an image of `aspect` gets more area over the second part than beside it, in a space
-/// of `size`, each cut as [`split`] cuts it.
-fn stacks(size: egui::Vec2, aspect: Option<f32>, gap: f32) -> bool {
+/// `area`, each cut as [`split`] cuts it.
+fn stacks(area: egui::Rect, aspect: Option<f32>) -> bool {
     let Some(a) = aspect.filter(|a| a.is_finite() && *a > 0.0) else {
         return false;
     };
-    // The image fitted into a part `w`×`h`: its area.
-    let fitted = |w: f32, h: f32| {
-        let (w, h) = (w.min(h * a), h.min(w / a));
-        w * h
-    };
-    let height = size.y - gap;
-    let over = fitted(size.x, (size.x / a).clamp(height * 0.4, height * 0.64));
-    let width = size.x - gap;
-    let beside = fitted((size.y * a).clamp(width * 0.4, width * 0.64), size.y);
+    let over = fitted(portrait_cut(area, Some(a)).0.size(), a);
+    let width = area.width() - GAP;
+    let beside = fitted(
+        egui::vec2(
+            (area.height() * a).clamp(width * 0.4, width * 0.64),
+            area.height(),
+        ),
+        a,
+    );
     over > beside
 }
 
@@ -69,33 +82,93 @@ pub(super) enum Room {
 /// side by side as [`lab_pair`] arranges them: in a wide, low space (a projector with the
 /// narration band) the student's frame is large beside two smaller ones side by side, each
 /// under its whole caption; in a tall one (beside the code at 1920 points) the three are the
-/// same size, one beside two.
+/// same size, one beside two. On a phone held upright, where the picture covers its view
+/// (cropped rather than shrunk), a space about as high as wide (a 360-point phone's, between its
+/// bar and its sheet) puts the student's frame over the two where, cut as [`split`] cuts a
+/// portrait space, that crops less of it:
+/// beside the two, a 4:3 frame in a column 196 × 273 points showed 54 % of its width, the
+/// sphere cut at both sides; over them, 336 × 170, 67 % of its height. The frame's height is
+/// then the one that gives the three the most area ([`lab_over`]).
 pub(super) fn lab_split(
     ui: &egui::Ui,
     aspect: f32,
     caption: &dyn Fn(f32) -> f32,
 ) -> (egui::Rect, egui::Rect, egui::Rect) {
     let area = ui.available_rect_before_wrap();
-    let gap = 8.0;
     if area.height() > area.width() * 1.1 || aspect <= 0.0 || !aspect.is_finite() {
         return split(ui, Some(aspect));
     }
-    let (w, h) = (area.width() - gap, area.height());
+    let (left, right) = lab_beside(area, aspect, caption);
+    if super::window_size::is_narrow(ui.ctx()) {
+        let (top, _) = portrait_cut(area, Some(aspect));
+        if covered_share(top, aspect) > covered_share(left, aspect) {
+            let (top, bottom) = lab_over(area, aspect, caption);
+            return (area, top, bottom);
+        }
+    }
+    (area, left, right)
+}
+
+/// [`lab_split`]'s cut of `area` on a phone with the student's frame over the two companions:
+/// between 58 % and 64 % of the height (64 % as [`split`] cuts a portrait space), as high as
+/// gives the three pictures the most area — the frame covering its whole space, as the pixel
+/// view draws it there, the companions each under its caption. The least was found on a
+/// 360 × 640 phone: at half the height lesson 07's square, kept whole, left its frame 289 of
+/// 328 points wide; from three fifths lesson 10's difference has no room for its three-line
+/// key above it, which then covers the picture's top.
+fn lab_over(
+    area: egui::Rect,
+    aspect: f32,
+    caption: &dyn Fn(f32) -> f32,
+) -> (egui::Rect, egui::Rect) {
+    let h = area.height() - GAP;
+    let total = |top: f32| {
+        let (first, second) = over(area, top);
+        first.area() + pair_area(second, aspect, caption)
+    };
+    over(area, best(h * 0.58, h * 0.64, total))
+}
+
+/// Of 33 values evenly spaced from `lo` to `hi`, the one that gives the largest `total`.
+fn best(lo: f32, hi: f32, total: impl Fn(f32) -> f32) -> f32 {
+    (0..=32)
+        .map(|k| lo + (hi - lo) * k as f32 / 32.0)
+        .max_by(|a, b| total(*a).total_cmp(&total(*b)))
+        .unwrap_or(lo)
+}
+
+/// The area of the two companions' pictures in `rect` ([`lab_pair`]).
+fn pair_area(rect: egui::Rect, aspect: f32, caption: &dyn Fn(f32) -> f32) -> f32 {
+    lab_pair(rect, aspect, caption).iter().map(|p| p.area).sum()
+}
+
+/// How much of a picture of `aspect` a phone's view shows when the picture covers `rect`
+/// (the pixel view's `cover`: as large as needed to fill it, the rest cropped): the rect's
+/// aspect over the picture's, or the inverse, whichever is at most 1.
+fn covered_share(rect: egui::Rect, aspect: f32) -> f32 {
+    let r = rect.width() / rect.height();
+    (r / aspect).min(aspect / r)
+}
+
+/// [`lab_split`]'s cut of `area` with the student's frame at the left: its space and the two
+/// companions'.
+fn lab_beside(
+    area: egui::Rect,
+    aspect: f32,
+    caption: &dyn Fn(f32) -> f32,
+) -> (egui::Rect, egui::Rect) {
+    let (w, h) = (area.width() - GAP, area.height());
     let right_of = |left: f32| {
-        egui::Rect::from_min_max(egui::pos2(area.left() + left + gap, area.top()), area.max)
+        egui::Rect::from_min_max(egui::pos2(area.left() + left + GAP, area.top()), area.max)
     };
     let total = |left: f32| {
-        let pair = lab_pair(right_of(left), aspect, caption);
-        fitted(egui::vec2(left, h), aspect) + pair.iter().map(|p| p.area).sum::<f32>()
+        fitted(egui::vec2(left, h), aspect) + pair_area(right_of(left), aspect, caption)
     };
     // The right pictures, as wide as they can be: no wider than the left.
-    let least = (w / 2.0).min(((h - gap) / 2.0) * aspect).min(w * 0.64);
-    let left = (0..=32)
-        .map(|k| least + (w * 0.64 - least) * k as f32 / 32.0)
-        .max_by(|a, b| total(*a).total_cmp(&total(*b)))
-        .unwrap_or(w / 2.0);
+    let least = (w / 2.0).min(((h - GAP) / 2.0) * aspect).min(w * 0.64);
+    let left = best(least, w * 0.64, total);
     let left_rect = egui::Rect::from_min_size(area.min, egui::vec2(left, area.height()));
-    (area, left_rect, right_of(left))
+    (left_rect, right_of(left))
 }
 
 /// One of a lab's two companion pictures: its space (caption included) and the area its
@@ -115,7 +188,6 @@ pub(super) fn lab_pair(
     aspect: f32,
     caption: &dyn Fn(f32) -> f32,
 ) -> [Companion; 2] {
-    let gap = 8.0;
     let companion = |space: egui::Rect| {
         let room = egui::vec2(space.width(), space.height() - caption(space.width()));
         Companion {
@@ -123,7 +195,7 @@ pub(super) fn lab_pair(
             area: fitted(room, aspect),
         }
     };
-    let (w, h) = ((rect.width() - gap) / 2.0, (rect.height() - gap) / 2.0);
+    let (w, h) = ((rect.width() - GAP) / 2.0, (rect.height() - GAP) / 2.0);
     let stacked = [
         egui::Rect::from_min_size(rect.min, egui::vec2(rect.width(), h)),
         egui::Rect::from_min_max(egui::pos2(rect.left(), rect.bottom() - h), rect.max),

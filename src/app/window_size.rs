@@ -10,5 +10,12 @@ use egui::Context;
 #[must_use]
 pub fn is_compact(ctx: &Context) -> bool {
     let r = ctx.content_rect();
-    r.width() < 700.0 || r.height() < 480.0 || super::style::is_touch(ctx) && r.width() < 1100.0
+    is_narrow(ctx) || r.height() < 480.0 || super::style::is_touch(ctx) && r.width() < 1100.0
+}
+
+/// Whether the window is narrower than 700 points: a phone held upright (a tablet in portrait
+/// is wider).
+#[must_use]
+pub fn is_narrow(ctx: &Context) -> bool {
+    ctx.content_rect().width() < 700.0
 }

@@ -372,3 +372,30 @@ fn a_lab_s_two_pictures_side_by_side_match_in_size_and_top() {
         "the pair stands side by side on an upright phone"
     );
 }
+
+/// On a 360×640 phone the lab's view is about as high as wide: beside its two companions the
+/// student's frame was a column half the screen wide, the sphere cropped at its sides. It stands
+/// over the two, as wide as the screen but for the view's margins (322 points, where beside the
+/// two its column was 196), cropped less; the companions keep their place under it.
+#[test]
+fn on_a_small_phone_the_lab_s_frame_stands_over_its_companions() {
+    let path = crate::support::repo().join("lessons/10-blinn-phong.toml");
+    let mut h = super::sized_lesson_harness(&path, [360.0, 640.0]);
+    super::touch(&mut h, Pos2::new(2.0, 2.0));
+    super::go_to_step_titled(&mut h, super::SPECULAR_LAB);
+    h.run_steps(8);
+    let pictures = &h.state().picture;
+    let [frame, .., own, difference] = pictures.as_slice() else {
+        panic!("the lab's three pictures: {pictures:?}");
+    };
+    assert!(
+        frame.width() >= 0.85 * 360.0,
+        "as wide as the screen but for the margins: {frame:?}"
+    );
+    for companion in [own, difference] {
+        assert!(
+            frame.bottom() <= companion.top() + 0.5,
+            "over its companions: {frame:?}, {companion:?}"
+        );
+    }
+}
