@@ -91,6 +91,9 @@ pub fn content_aspect(session: &crate::app::session::Session) -> f32 {
 /// The card's shape this frame over `over`: in the corner; for the rest of the step (and this
 /// window size), once a view's subject kept less than [`LEAST_KEPT`] of its size beside the
 /// corner card, a band or a column, whichever leaves the subject larger ([`band_or_column`]).
+/// The shares the views report in the first frame of a step or a size were measured against
+/// the card of the layout before (the card's rect of the last frame): they decide nothing, and
+/// the next frame measures against the card placed for this one.
 pub fn shape(ctx: &Context, over: Rect, session: &crate::app::session::Session) -> Shape {
     let id = Id::unique("pipelens-narration-shape");
     let kept = take_kept(ctx);
@@ -102,13 +105,16 @@ pub fn shape(ctx: &Context, over: Rect, session: &crate::app::session::Session) 
     let kept_shape = ctx
         .data(|d| d.get_temp::<((u64, i64, i64), Shape)>(id))
         .filter(|(k, _)| *k == key)
-        .map_or(Shape::Corner, |(_, s)| s);
-    let shape = if kept_shape == Shape::Corner && kept < LEAST_KEPT {
+        .map(|(_, s)| s);
+    if kept_shape.is_none() {
+        ctx.request_repaint();
+    }
+    let shape = if kept_shape == Some(Shape::Corner) && kept < LEAST_KEPT {
         ctx.request_repaint();
         let words = narration_card(ctx).map_or(0.0, |c| c.area());
         band_or_column(over, content_aspect(session), words)
     } else {
-        kept_shape
+        kept_shape.unwrap_or(Shape::Corner)
     };
     ctx.data_mut(|d| d.insert_temp(id, (key, shape)));
     shape

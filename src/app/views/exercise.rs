@@ -121,6 +121,7 @@ impl ExerciseView {
                 caption.size().y + 6.0
             };
             let (at, above) = captioned(space, aspect, room);
+            report_uncovered(ui.ctx(), at);
             self.picture.push(at);
             let (pick, boxed) = picture(
                 ui,
@@ -133,6 +134,20 @@ impl ExerciseView {
             self.captions.push(boxed);
         }
         cmds
+    }
+}
+
+/// Reports how much of a companion picture at `at` the narration card in its corner leaves
+/// uncovered (the card of the last frame), so that a card over it becomes a band or a column
+/// ([`super::card_placement::shape`]): the two are drawn whole, not framed around the card as
+/// the student's frame is.
+fn report_uncovered(ctx: &egui::Context, at: Rect) {
+    let Some(card) = super::card_placement::narration_card(ctx) else {
+        return;
+    };
+    let hidden = at.intersect(card);
+    if hidden.is_positive() && at.is_positive() {
+        super::card_placement::report_kept(ctx, 1.0 - hidden.area() / at.area());
     }
 }
 

@@ -263,3 +263,50 @@ fn a_label_keeps_off_the_subject_and_the_cards() {
         "on the left edge just under the header: {r:?}"
     );
 }
+
+/// In an upright window a mouse drives (a portrait monitor, a browser window 768 points wide:
+/// the desktop's card, not a phone's sheet) a lab's three pictures stand one over two, and the
+/// narration card in the bottom-left corner lay over pipelens' own picture (lesson 07's lab at
+/// 768×1024: the whole companion under it). The card leaves each of the three clear, in
+/// every lab of lessons 07 and 10, at 768×1024 and 900×1200.
+#[test]
+fn in_an_upright_window_the_card_leaves_a_lab_s_pictures_clear() {
+    let mut covered = Vec::new();
+    let mut labs = 0;
+    for size in [[768.0, 1024.0], [900.0, 1200.0]] {
+        for name in ["07-rasterization", "10-blinn-phong"] {
+            let path = crate::support::repo().join(format!("lessons/{name}.toml"));
+            let mut h = super::sized_lesson_harness(&path, size);
+            for k in 0..super::step_count(&h) {
+                super::go_to_step(&mut h, k);
+                if h.state().session.current_exercise().is_none() {
+                    continue;
+                }
+                h.run_steps(6);
+                labs += 1;
+                let card = pipelens::app::views::card_placement::narration_card(&h.ctx);
+                let state = h.state();
+                assert!(card.is_some(), "{name} step {}: the card", k + 1);
+                // The student's frame's subject (its image may run under the card where it
+                // shows nothing: the view frames its subject clear of the card) and the two
+                // companions, pictures whole.
+                assert_eq!(
+                    state.subject.len(),
+                    3,
+                    "{name} step {}: three subjects",
+                    k + 1
+                );
+                for p in &state.subject {
+                    if let Some(c) = card.filter(|c| overlap(p, c)) {
+                        covered.push(format!(
+                            "{name} step {} at {size:?}: {p:?} under {c:?}",
+                            k + 1
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    assert!(labs >= 4, "only {labs} labs were seen");
+    assert!(covered.is_empty(), "{}", covered.join("\n"));
+}
