@@ -379,6 +379,29 @@ pub(super) fn draw_selection(
     }
 }
 
+/// Where the edges' labels go so that none covers one placed before it: label `i`, its text
+/// `size` across (its box 3 points more each side), centred at `at` beside its edge of
+/// direction `along`; where its box meets an earlier one, slid along its edge by its own
+/// extent along the edge and a gap, one way then the other, up to three times (it stays beside
+/// its edge); where no place is clear, where it was.
+fn apart_along_edges(labels: &[(Pos2, Vec2, Vec2)]) -> Vec<Pos2> {
+    let mut boxes: Vec<Rect> = Vec::with_capacity(labels.len());
+    let mut out = Vec::with_capacity(labels.len());
+    for &(at, size, along) in labels {
+        let boxed = |p: Pos2| Rect::from_center_size(p, size).expand(3.0);
+        let step = along.x.abs() * (size.x + 6.0) + along.y.abs() * (size.y + 6.0) + 4.0;
+        let step = if step.is_finite() { step } else { 0.0 };
+        let place = [0.0, 1.0, -1.0, 2.0, -2.0, 3.0, -3.0]
+            .into_iter()
+            .map(|k| at + along * step * k)
+            .find(|p| p.is_finite() && !boxes.iter().any(|b| b.intersects(boxed(*p))))
+            .unwrap_or(at);
+        boxes.push(boxed(place));
+        out.push(place);
+    }
+    out
+}
+
 /// The inside test of the inspected pixel's owning triangle, on the pixel grid: its three edges
 /// in the colours of `E_0`, `E_1`, `E_2` with their values at the pixel centre, each sample
 /// filled when covered, ringed where it lies exactly on an edge (the fill rule decided).
@@ -451,8 +474,9 @@ pub(super) fn draw_edge_test(
             } else {
                 Vec2::ZERO
             };
-        labels.push((at, text, edge_color));
+        labels.push((at, size, along, text, edge_color));
     }
+    let places = apart_along_edges(&labels.iter().map(|l| (l.0, l.1, l.2)).collect::<Vec<_>>());
     let radius = (view.zoom / 10.0).clamp(3.0, 7.0);
     for s in &e.samples {
         let p = view.window_to_screen(s.position);
@@ -464,7 +488,7 @@ pub(super) fn draw_edge_test(
             painter.circle_stroke(p, radius + 3.0, Stroke::new(2.0, EDGE[k]));
         }
     }
-    for (at, text, color) in labels {
+    for ((_, _, _, text, color), at) in labels.into_iter().zip(places) {
         crate::app::views::label_with_background(
             painter,
             at,
@@ -472,6 +496,37 @@ pub(super) fn draw_edge_test(
             &text,
             &font,
             color,
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::apart_along_edges;
+    use egui::{pos2, vec2};
+
+    /// Labels 80 × 20 (boxes 86 × 26): one on a horizontal edge slides along it by 86 + 4;
+    /// one on a vertical edge clear of the others stays; one on a vertical edge over the first
+    /// slides by 26 + 4 — one step down meets the vertical one's box (122–148 against
+    /// 117–143), one up the first's (62–88 against 87–113), so two steps down, to 165. Worked
+    /// by hand.
+    #[test]
+    fn edge_labels_slide_along_their_edges_until_clear() {
+        let size = vec2(80.0, 20.0);
+        let places = apart_along_edges(&[
+            (pos2(100.0, 100.0), size, vec2(1.0, 0.0)),
+            (pos2(110.0, 100.0), size, vec2(1.0, 0.0)),
+            (pos2(100.0, 130.0), size, vec2(0.0, 1.0)),
+            (pos2(100.0, 105.0), size, vec2(0.0, 1.0)),
+        ]);
+        assert_eq!(
+            places,
+            vec![
+                pos2(100.0, 100.0),
+                pos2(200.0, 100.0),
+                pos2(100.0, 130.0),
+                pos2(100.0, 165.0),
+            ]
         );
     }
 }
