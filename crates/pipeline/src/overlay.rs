@@ -124,7 +124,9 @@ pub fn arrow_head(a: [f32; 2], b: [f32; 2], size: f32) -> [[f32; 2]; 2] {
 /// further out along the shaft by half a box at a time, and so on up to a few boxes away; for
 /// an arrow too short to have a direction (a vector pointing at the eye), round the point.
 /// Arrows of close directions (`l` and `h` at a grazing light) then keep their letters apart,
-/// in the order given. Where no place is clear of both, the first clear of the other labels (a
+/// in the order given. Each goes to the first place clear of the other labels, of `avoid` and
+/// of the other arrows' shafts (on the desktop tour `h` sat over the end of `l`); where none
+/// is, the first clear of the labels and `avoid`, then the first clear of the other labels (a
 /// letter over the legend's edge hides less than one over another letter); else the first.
 #[must_use]
 pub fn spread_labels(
@@ -169,14 +171,42 @@ pub fn spread_labels(
         };
         let apart = |c: &[f32; 2]| placed.iter().all(|p| !meets(*c, *p));
         let clear = |c: &[f32; 2]| apart(c) && avoid.iter().all(|r| !covers(*c, *r));
+        // The other arrows with a direction: a label over one hides where it goes.
+        let shafts = arrows
+            .iter()
+            .filter(|&&(a, b)| (a, b) != (from, to) && (b[0] - a[0]).hypot(b[1] - a[1]) >= 1.0);
+        let off_shafts = |c: &[f32; 2]| shafts.clone().all(|&(a, b)| !crosses(*c, size, a, b));
         let at = candidates
             .iter()
-            .find(|c| clear(c))
+            .find(|c| clear(c) && off_shafts(c))
+            .or_else(|| candidates.iter().find(|c| clear(c)))
             .or_else(|| candidates.iter().find(|c| apart(c)))
             .unwrap_or(&candidates[0]);
         placed.push(*at);
     }
     placed
+}
+
+/// Whether the segment from `a` to `b` runs through the inside of a box `size` across centred
+/// at `c` (along its edge or through a corner does not count): the segment's parameters
+/// `t ∈ [0, 1]` within the box's slab on each axis, `(min − a)/(b − a)` to `(max − a)/(b − a)`,
+/// share an interval of some length (Liang and Barsky's clipping).
+fn crosses(c: [f32; 2], size: [f32; 2], a: [f32; 2], b: [f32; 2]) -> bool {
+    let (mut lo, mut hi) = (0.0f32, 1.0f32);
+    for k in 0..2 {
+        let (min, max) = (c[k] - size[k] / 2.0, c[k] + size[k] / 2.0);
+        let d = b[k] - a[k];
+        if d == 0.0 {
+            if a[k] <= min || a[k] >= max {
+                return false;
+            }
+        } else {
+            let (t0, t1) = ((min - a[k]) / d, (max - a[k]) / d);
+            lo = lo.max(t0.min(t1));
+            hi = hi.min(t0.max(t1));
+        }
+    }
+    lo < hi
 }
 
 /// Strokes the path built in `pb` with round caps.
@@ -337,5 +367,42 @@ mod tests {
             &[],
         );
         assert_eq!(short, [[50.0, 50.0], [70.5, 50.0]]);
+        // An arrow pointing at the shaft of another, (50, −40) to (50, −15) towards y = 0:
+        // its label 10 beyond the head, (50, −5), and beside it, (30 | 70 | 10 | 90, −5), all
+        // straddle the first shaft; half a box further, (50, 5) still does (−5..15); a box
+        // further, (50, 15), is clear (5..25). Alone, it would stay at (50, −5).
+        let across = ([50.0, -40.0], [50.0, -15.0]);
+        let off = spread_labels(&[right, across], size, 10.0, &[]);
+        assert_eq!(off, [[110.0, 0.0], [50.0, 15.0]]);
+        assert_eq!(spread_labels(&[across], size, 10.0, &[]), [[50.0, -5.0]]);
+    }
+
+    /// A segment through a box's inside crosses it; one along its edge, ending at its edge or
+    /// passing by does not.
+    #[test]
+    fn a_shaft_crosses_a_box_only_through_its_inside() {
+        let (c, size) = ([0.0, 0.0], [20.0, 20.0]);
+        assert!(super::crosses(c, size, [-50.0, 0.0], [50.0, 0.0]));
+        assert!(super::crosses(c, size, [-50.0, -50.0], [50.0, 50.0]));
+        assert!(
+            super::crosses(c, size, [1.0, 1.0], [2.0, 2.0]),
+            "wholly inside"
+        );
+        assert!(
+            !super::crosses(c, size, [-50.0, 10.0], [50.0, 10.0]),
+            "along the edge"
+        );
+        assert!(
+            !super::crosses(c, size, [-50.0, 0.0], [-10.0, 0.0]),
+            "ending at the edge"
+        );
+        assert!(
+            !super::crosses(c, size, [-50.0, 30.0], [50.0, 11.0]),
+            "passing by"
+        );
+        assert!(
+            !super::crosses(c, size, [-20.0, 0.0], [0.0, 20.0]),
+            "through a corner"
+        );
     }
 }
