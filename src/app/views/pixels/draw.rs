@@ -389,8 +389,8 @@ fn apart_along_edges(labels: &[(Pos2, Vec2, Vec2)]) -> Vec<Pos2> {
     let mut out = Vec::with_capacity(labels.len());
     for &(at, size, along) in labels {
         let boxed = |p: Pos2| Rect::from_center_size(p, size).expand(3.0);
+        // A degenerate edge has no direction (`along` NaN): every place is NaN, so it stays.
         let step = along.x.abs() * (size.x + 6.0) + along.y.abs() * (size.y + 6.0) + 4.0;
-        let step = if step.is_finite() { step } else { 0.0 };
         let place = [0.0, 1.0, -1.0, 2.0, -2.0, 3.0, -3.0]
             .into_iter()
             .map(|k| at + along * step * k)
