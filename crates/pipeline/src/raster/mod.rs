@@ -259,8 +259,8 @@ impl RasterTriangle {
             _ => {}
         }
         // Counter-clockwise: a clockwise triangle's last two corners swapped, each array read
-        // once in that order (swapped in place instead, the 1M sphere's setup measured 2–5 ms
-        // slower a frame in the same build; BENCHMARKS.md, session 67).
+        // once in that order (swapped in place instead, the 1M sphere's setup measured up to
+        // 7 ms slower a frame in the same build; BENCHMARKS.md, session 67).
         let order = if front { [0, 1, 2] } else { [0, 2, 1] };
         let fixed = order.map(|k| fixed[k]);
         let window = order.map(|k| window[k]);
